@@ -9,14 +9,18 @@ invalid Scenario cannot exist either way.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Iterator
+from typing import Annotated, Any, Iterator
 
 import networkx as nx
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from ttsgc import vocabulary as V
 
 Path = tuple[Any, ...]
+
+# Lengths, times and speeds are kept to three decimals (millimetres, milliseconds): the language writes
+# plain decimals, so every value a Scenario can hold has an exact spelling in a .tsg.
+Decimal3 = Annotated[float, AfterValidator(lambda x: round(float(x), 3) + 0.0)]
 
 
 class _Model(BaseModel):
@@ -40,7 +44,7 @@ class RoadSpec(_Model):
 
 
 class Speed(_Model):
-    value: float
+    value: Decimal3
     unit: str = "km/h"
 
     @property
@@ -51,8 +55,8 @@ class Speed(_Model):
 class Trigger(_Model):
     """When the agent's action starts: after a delay, when an entity comes within a distance, or both."""
 
-    after_s: float | None = None
-    within_m: float | None = None
+    after_s: Decimal3 | None = None
+    within_m: Decimal3 | None = None
     of: str = "ego"
 
 
@@ -66,7 +70,7 @@ class Agent(_Model):
     road_type: str = "driving"
     behind: str | None = None
     order: int | None = None  # the paper's pos_id among agents at one position
-    gap_m: float | None = None
+    gap_m: Decimal3 | None = None
     speed: Speed | None = None
     trigger: Trigger | None = None
 
@@ -92,6 +96,11 @@ class Scenario(_Model):
     # Anchors: "scenario", "weather", "seed", "road", "road.lanes", "road.junction", "road.has",
     # "road.without", "road.end", "stage.NAME", "stage.NAME.end", "agent.NAME", "end".
     comments: dict[str, Comment] = Field(default_factory=dict, exclude=True)
+
+    @field_validator("comments")
+    @classmethod
+    def _drop_empty_comments(cls, comments: dict[str, Comment]) -> dict[str, Comment]:
+        return {k: c for k, c in sorted(comments.items()) if c.leading or c.trailing is not None}
 
     @model_validator(mode="after")
     def _check(self) -> "Scenario":
@@ -203,7 +212,7 @@ def _agent_problems(s: Scenario, add) -> None:
 
     for i, j, a in located:
         at = ("stages", i, "agents", j)
-        if a.name in by_name:
+        if a.name in by_name and not (a.is_ego and by_name[a.name].is_ego):  # a second ego is reported above
             add(at + ("name",), f"the name '{a.name}' is used twice")
         by_name.setdefault(a.name, a)
         if a.name in V.RESERVED_WORDS and not a.is_ego:
@@ -214,18 +223,25 @@ def _agent_problems(s: Scenario, add) -> None:
         if a.is_ego:
             if a.type not in V.EGO_TYPES:
                 add(at + ("type",), f"the ego cannot be a {a.type}; it must be one of: {_choices(V.EGO_TYPES)}")
+                continue
             if a.relative_to_ego is not None:
                 add(at + ("relative_to_ego",), "the ego has no position relative to itself")
         elif a.relative_to_ego is None:
             add(at + ("name",), f"agent '{a.name}' has no position; add e.g. 'at front' (one of: {_choices(V.POSITIONS)})")
         elif a.relative_to_ego not in V.POSITIONS:
             add(at + ("relative_to_ego",), _unknown("position", a.relative_to_ego, V.POSITIONS))
+        action_ok = False
         if a.action not in V.ACTIONS:
             add(at + ("action",), _unknown("action", a.action, V.ACTIONS))
         elif a.action not in V.ACTIONS_BY_TYPE[a.type]:
-            add(at + ("action",), f"a {a.type} cannot {a.action}; it can: {_choices(V.ACTIONS_BY_TYPE[a.type])}")
+            able = [t for t in V.AGENT_TYPES if a.action in V.ACTIONS_BY_TYPE[t]]
+            only = f"only a {' or '.join(able)} can {a.action}; " if len(able) <= 2 else ""
+            add(at + ("action",), f"a {a.type} cannot {a.action}; {only}a {a.type} can: "
+                                  f"{_choices(V.ACTIONS_BY_TYPE[a.type])}")
         elif a.is_ego and a.action not in V.EGO_ACTIONS:
             add(at + ("action",), f"the ego cannot {a.action}")
+        else:
+            action_ok = True
         if a.behavior not in V.BEHAVIORS:
             add(at + ("behavior",), _unknown("behaviour", a.behavior, V.BEHAVIORS))
         if a.road_type not in V.ROAD_TYPES:
@@ -234,7 +250,7 @@ def _agent_problems(s: Scenario, add) -> None:
             allowed = {"driving"} if a.is_ego else V.ROAD_TYPES_BY_TYPE[a.type]
             add(at + ("road_type",), f"a {'ego' if a.is_ego else a.type} cannot stand on the {a.road_type}; "
                                      f"it can stand on: {_choices(allowed)}")
-        elif a.action == "on_the_sidewalk" and a.road_type != "sidewalk":
+        elif action_ok and a.action == "on_the_sidewalk" and a.road_type != "sidewalk":
             add(at + ("road_type",), "on_the_sidewalk needs the agent on the sidewalk ('on sidewalk')")
         if s.road.junction is False and (a.action in V.TURN_ACTIONS or a.relative_to_ego in V.JUNCTION_POSITIONS):
             word = a.action if a.action in V.TURN_ACTIONS else a.relative_to_ego
@@ -298,5 +314,5 @@ def _trigger_problems(a: Agent, at: Path, by_name_all: set[str], add) -> None:
 
 
 def format_number(x: float) -> str:
-    """A number as the language writes it: 8 rather than 8.0."""
-    return str(int(x)) if float(x).is_integer() else repr(float(x))
+    """A number as the language writes it: 8 rather than 8.0, at most three decimals, never an exponent."""
+    return f"{x:.3f}".rstrip("0").rstrip(".")

@@ -168,7 +168,9 @@ def nearest(word: str, candidates, n: int = 2) -> list[str]:
         return [lowered]
     return difflib.get_close_matches(lowered, pool, n=n, cutoff=0.6)
 
-# The keywords of grammar/scenario.lark; they cannot name an agent or a stage (a test keeps this in step).
+# The keywords of grammar/scenario.lark, which cannot name an agent or a stage, and the unit words that
+# follow a number (free as names: they are keywords only right after a number). A test keeps both in step.
 RESERVED_WORDS = frozenset({
     "scenario", "weather", "seed", "road", "lanes", "at", "junction", "not", "has", "without", "stage", "ego",
-    "on", "behind", "order", "gap", "m", "speed", "after", "s", "when", "within"})
+    "on", "behind", "order", "gap", "speed", "after", "when", "within"})
+UNIT_WORDS = frozenset({"m", "s"})

@@ -406,6 +406,7 @@ class _Builder(Transformer):
             self.where[("stages", i, "name")] = name_token
             for j, draft in enumerate(drafts):
                 at = ("stages", i, "agents", j)
+                self.where[at] = draft.tokens["name"]  # where a problem of the agent as a whole is shown
                 for key, token in draft.tokens.items():
                     if token is not None:
                         self.where[at + (key if isinstance(key, tuple) else (key,))] = token
