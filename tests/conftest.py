@@ -20,3 +20,12 @@ def shared() -> Path:
     if not SHARED.is_dir():
         pytest.skip("../shared is not present")
     return SHARED
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _private_cache(tmp_path_factory):
+    """Every test run indexes into a fresh cache of its own, never the user's."""
+    import os
+
+    os.environ["TTSGC_CACHE_DIR"] = str(tmp_path_factory.mktemp("cache"))
+    yield

@@ -12,6 +12,7 @@ from ttsgc import __version__
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.files import write_atomic
 from ttsgc.language import ScenarioError, format_scenario, parse_file
+from ttsgc.scenario import RoadSpec
 
 
 def _check(args) -> int:
@@ -56,6 +57,74 @@ def _fmt(args) -> int:
     return ExitCode.NOT_FORMATTED if unformatted else ExitCode.OK
 
 
+def table(headers: list[str], rows: list[list[str]]) -> str:
+    """Plain aligned columns, for terminals and for pasting into notes."""
+    widths = [max(len(str(x)) for x in column) for column in zip(headers, *rows)]
+    lines = ["  ".join(str(x).ljust(w) for x, w in zip(row, widths)).rstrip() for row in [headers, *rows]]
+    return "\n".join([lines[0], "  ".join("-" * w for w in widths), *lines[1:]])
+
+
+def _approach_row(a) -> list[str]:
+    turns = " ".join(f"{t.direction[0].upper() if t.direction != 'uturn' else 'U'}>{t.to_road}"
+                     for t in a.turns if t.direction)
+    edge = "+".join(x for x, present in (("shoulder", a.shoulder), ("sidewalk", a.sidewalk)) if present) or "-"
+    return [a.map, a.id, str(a.lanes), str(a.opposite_lanes), f"{a.length:.0f}", edge, a.junction or "-",
+            " ".join(dict.fromkeys(turns.split())) or "-", ",".join(a.signals) or "-", ",".join(a.objects) or "-",
+            f"{a.speed_limit_kmh:g}" if a.speed_limit_kmh else "-"]
+
+
+APPROACH_HEADERS = ["map", "approach", "lanes", "opp", "length", "edge", "junction", "turns", "signals", "objects",
+                    "km/h"]
+
+
+def _maps(args) -> int:
+    from ttsgc.roads.retrieve import load_library, retrieve
+
+    library = load_library(args.maps)
+    if args.maps_command == "list":
+        rows = [[m.name, str(m.roads), str(m.junctions), str(len(m.approaches)),
+                 str(sum(a.junction is not None for a in m.approaches)), m.path] for m in library]
+        print(table(["map", "roads", "junctions", "approaches", "at junction", "file"], rows))
+        return ExitCode.OK
+    if args.maps_command == "show":
+        chosen = [m for m in library if m.name == args.name or Path(m.path).stem == args.name]
+        if not chosen:
+            from ttsgc.roads.opendrive import MapError
+            names = [m.name for m in library]
+            from ttsgc.vocabulary import either, nearest
+            hint = nearest(args.name, names)
+            raise MapError(f"no map named '{args.name}' in the library"
+                           + (f"; did you mean {either(hint)}?" if hint else f" (maps: {', '.join(names)})"))
+        approaches = list(chosen[0].approaches)
+    else:
+        spec = RoadSpec(lanes=args.lanes, junction=args.junction,
+                        required_signals=tuple(w for w in args.has if w in _signals()),
+                        required_objects=tuple(w for w in args.has if w not in _signals()),
+                        without_signals=tuple(w for w in args.without if w in _signals()),
+                        without_objects=tuple(w for w in args.without if w not in _signals()))
+        approaches = retrieve(library, spec)
+    if args.json:
+        print(json.dumps([a.model_dump(mode="json") for a in approaches], indent=2))
+    else:
+        print(table(APPROACH_HEADERS, [_approach_row(a) for a in approaches]))
+        print(f"{len(approaches)} approach(es)")
+    return ExitCode.OK
+
+
+def _signals() -> set[str]:
+    from ttsgc.vocabulary import SIGNALS
+    return set(SIGNALS)
+
+
+def _road_word(text: str) -> str:
+    from ttsgc import vocabulary as V
+    if text in V.SIGNALS or V.is_object(text):
+        return text
+    hint = V.nearest(text, list(V.SIGNALS) + V.object_words())
+    raise argparse.ArgumentTypeError(f"unknown signal or object '{text}'"
+                                     + (f"; did you mean {V.either(hint)}?" if hint else ""))
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="ttsgc", description="A traffic-scenario compiler: English or the "
                                      "scenario language in, validated OpenSCENARIO out.")
@@ -72,6 +141,28 @@ def build_parser() -> argparse.ArgumentParser:
     fmt.add_argument("files", nargs="+", metavar="FILE")
     fmt.add_argument("--check", action="store_true", help="change nothing; exit 7 if a file would change")
     fmt.set_defaults(run=_fmt)
+
+    maps_options = argparse.ArgumentParser(add_help=False)
+    maps_options.add_argument("--maps", action="append", metavar="PATH",
+                              help="an OpenDRIVE file or folder (repeatable); 'builtin' is the built-in library, "
+                                   "the default when no --maps is given")
+    maps_options.add_argument("--json", action="store_true", help="print JSON")
+    maps = commands.add_parser("maps", help="the map library: list maps, show one, query approaches")
+    maps_commands = maps.add_subparsers(dest="maps_command", required=True, metavar="SUBCOMMAND")
+    maps_commands.add_parser("list", parents=[maps_options], help="the maps of the library")
+    show = maps_commands.add_parser("show", parents=[maps_options], help="every approach of one map")
+    show.add_argument("name", help="the map's name or file stem")
+    query = maps_commands.add_parser("query", parents=[maps_options], help="the approaches that meet conditions")
+    query.add_argument("--lanes", type=int, default=1, help="at least this many lanes in the driving direction")
+    junction = query.add_mutually_exclusive_group()
+    junction.add_argument("--junction", dest="junction", action="store_true", default=None,
+                          help="ends at a junction")
+    junction.add_argument("--no-junction", dest="junction", action="store_false", help="does not end at a junction")
+    query.add_argument("--has", action="append", default=[], type=_road_word, metavar="WORD",
+                       help="a required signal or object (repeatable)")
+    query.add_argument("--without", action="append", default=[], type=_road_word, metavar="WORD",
+                       help="a forbidden signal or object (repeatable)")
+    maps.set_defaults(run=_maps)
     return parser
 
 

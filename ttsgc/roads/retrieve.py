@@ -1,0 +1,113 @@
+"""Road retrieval: the approaches of a map library that meet a scene's road conditions.
+
+Conditions apply one at a time, in the order a person reads the road block, so that when nothing is left the
+error can name the condition that emptied the set and what the library offers instead.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Iterable
+
+from ttsgc import vocabulary as V
+from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.resources import resource_dir
+from ttsgc.roads.index import Approach, MapIndex, load_index
+from ttsgc.roads.opendrive import MapError
+from ttsgc.scenario import RoadSpec
+
+
+class NoRoadError(TtsgcError):
+    """No road of the library can host the scene."""
+
+    exit_code = ExitCode.NO_ROAD
+
+
+@dataclass(frozen=True)
+class Condition:
+    text: str  # as the road block writes it
+    test: Callable[[Approach], bool]
+
+
+def builtin_maps() -> list[Path]:
+    return sorted(resource_dir("maps").glob("*.xodr"))
+
+
+BUILTIN = "builtin"
+
+
+def map_files(maps: Iterable[str | Path] | None = None) -> list[Path]:
+    """The OpenDRIVE files of a library: files and folders as given, the word 'builtin' standing for the
+    built-in library; no list at all means the built-in library alone."""
+    files: list[Path] = []
+    for item in maps or (BUILTIN,):
+        path = Path(item)
+        if str(item) == BUILTIN:
+            files += builtin_maps()
+        elif path.is_dir():
+            found = sorted(path.glob("*.xodr"))
+            if not found:
+                raise MapError(f"{path}: the folder holds no .xodr file")
+            files += found
+        elif path.is_file():
+            files.append(path)
+        else:
+            raise MapError(f"{path}: no such map file or folder")
+    unique = list(dict.fromkeys(p.resolve() for p in files))
+    if not unique:
+        raise MapError("the map library is empty")
+    return unique
+
+
+def load_library(maps: Iterable[str | Path] | None = None) -> list[MapIndex]:
+    return [load_index(path) for path in map_files(maps)]
+
+
+def _has(word: str) -> Callable[[Approach], bool]:
+    if word in V.SIGNALS:
+        return lambda a: word in a.signals
+    return lambda a: word in a.objects
+
+
+def conditions(road: RoadSpec) -> list[Condition]:
+    """The road block as a list of tests, in reading order."""
+    out = [Condition(f"lanes >= {road.lanes}", lambda a: a.lanes >= road.lanes)]
+    if road.junction is True:
+        out.append(Condition("at junction", lambda a: a.junction is not None))
+    elif road.junction is False:
+        out.append(Condition("not at junction", lambda a: a.junction is None))
+    for word in road.required_signals + road.required_objects:
+        out.append(Condition(f"has {word}", _has(word)))
+    for word in road.without_signals + road.without_objects:
+        test = _has(word)
+        out.append(Condition(f"without {word}", lambda a, test=test: not test(a)))
+    return out
+
+
+def retrieve(library: list[MapIndex], road: RoadSpec) -> list[Approach]:
+    """Every approach that meets all conditions; NoRoadError names the first condition that left none."""
+    candidates = [a for index in library for a in index.approaches]
+    total = len(candidates)
+    passed: list[str] = []
+    for condition in conditions(road):
+        remaining = [a for a in candidates if condition.test(a)]
+        if not remaining:
+            before = f"{len(candidates)} of {total} approaches met {' and '.join(passed)}" if passed else \
+                f"none of the {total} approaches of {_library_name(library)}"
+            raise NoRoadError(f"no road can host the scene: {before}, but none meets '{condition.text}'"
+                              f"{_offer(candidates, condition.text)}")
+        passed.append(f"'{condition.text}'")
+        candidates = remaining
+    return candidates
+
+
+def _library_name(library: list[MapIndex]) -> str:
+    return f"the map {library[0].name}" if len(library) == 1 else f"the {len(library)} maps"
+
+
+def _offer(candidates: list[Approach], text: str) -> str:
+    """What the library has instead, for the condition that failed."""
+    if text.startswith("lanes"):
+        return f" (the most lanes there: {max(a.lanes for a in candidates)})"
+    return ""
