@@ -57,6 +57,28 @@ def _fmt(args) -> int:
     return ExitCode.NOT_FORMATTED if unformatted else ExitCode.OK
 
 
+def _compile(args) -> int:
+    from ttsgc.pipeline import compile_scenario, write
+
+    source = Path(args.input)
+    kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt") else "tsg")
+    if kind == "text":
+        raise TtsgcError("English prompts are lowered by 'ttsgc lower'; this installation cannot lower them yet: "
+                         "write the scene in the scenario language (.tsg)")
+    scenario = parse_file(source)
+    out = Path(args.output) if args.output else source.with_suffix(".xosc")
+    compiled = compile_scenario(scenario, out, maps=args.maps, seed=args.seed, version=args.osc_version)
+    scene = compiled.scene
+    if args.explain:
+        print(scene.explanation)
+    write(compiled, out)
+    print(f"{out}: {scene.map_name} approach {scene.approach} ({scene.score}/{scene.requirements} requirements, "
+          f"seed {scene.seed}), OpenSCENARIO {args.osc_version}; map copied as {out.parent / compiled.map_name}")
+    if scene.unmet:
+        print(f"ttsgc: warning: the chosen road does not meet: {', '.join(scene.unmet)}", file=sys.stderr)
+    return ExitCode.OK
+
+
 def table(headers: list[str], rows: list[list[str]]) -> str:
     """Plain aligned columns, for terminals and for pasting into notes."""
     widths = [max(len(str(x)) for x in column) for column in zip(headers, *rows)]
@@ -141,6 +163,21 @@ def build_parser() -> argparse.ArgumentParser:
     fmt.add_argument("files", nargs="+", metavar="FILE")
     fmt.add_argument("--check", action="store_true", help="change nothing; exit 7 if a file would change")
     fmt.set_defaults(run=_fmt)
+
+    compile_ = commands.add_parser("compile", help="compile a scene (.tsg) to OpenSCENARIO on a fitting road")
+    compile_.add_argument("input", metavar="INPUT", help="a .tsg scene")
+    compile_.add_argument("-o", "--output", metavar="OUT.xosc", help="where to write (default: INPUT with .xosc)")
+    compile_.add_argument("--from", dest="source_kind", choices=["text", "tsg"],
+                          help="the input's kind (default: by extension, .txt is English)")
+    compile_.add_argument("--maps", action="append", metavar="PATH",
+                          help="an OpenDRIVE file or folder (repeatable); 'builtin' is the built-in library")
+    compile_.add_argument("--seed", type=int, help="pins the choice among equally ranked roads "
+                                                   "(default: the scene's seed, else 0)")
+    compile_.add_argument("--explain", action="store_true", help="print the ranking table of candidate roads")
+    compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"], default="1.3",
+                          help="OpenSCENARIO version (1.0 is what CARLA ScenarioRunner reads; default 1.3)")
+    compile_.add_argument("--no-simulate", action="store_true", help="skip the simulation check")
+    compile_.set_defaults(run=_compile)
 
     maps_options = argparse.ArgumentParser(add_help=False)
     maps_options.add_argument("--maps", action="append", metavar="PATH",

@@ -174,3 +174,10 @@ RESERVED_WORDS = frozenset({
     "scenario", "weather", "seed", "road", "lanes", "at", "junction", "not", "has", "without", "stage", "ego",
     "on", "behind", "order", "gap", "speed", "after", "when", "within"})
 UNIT_WORDS = frozenset({"m", "s"})
+
+# Body of each agent type, metres: length, width, height (what placement keeps apart and the emitter declares).
+BODIES: dict[str, tuple[float, float, float]] = {
+    "car": (4.5, 1.8, 1.5), "truck": (8.0, 2.5, 3.2), "bus": (12.0, 2.55, 3.2), "motorcycle": (2.2, 0.8, 1.4),
+    "cyclist": (1.8, 0.6, 1.7), "pedestrian": (0.5, 0.6, 1.8), "ambulance": (6.0, 2.2, 2.6),
+    "police": (4.8, 1.9, 1.5), "firetruck": (9.0, 2.5, 3.3),
+}

@@ -25,7 +25,7 @@ from ttsgc import vocabulary as V
 from ttsgc.files import write_atomic
 from ttsgc.roads.opendrive import MapError, OpenDrive, Road, read_opendrive
 
-INDEX_VERSION = 3
+INDEX_VERSION = 5
 STRAIGHT_LIMIT_DEG = 45.0  # an exit within this of straight ahead is straight, unless another is straighter
 STRAIGHTER_BY_DEG = 5.0
 UTURN_DEG = 160.0
@@ -43,6 +43,7 @@ class Turn(_Data):
     to_road: str
     to_direction: Direction
     from_lanes: tuple[int, ...]  # lanes of this approach that can take the turn
+    via_lanes: tuple[int, ...]  # the connecting road's lanes they enter, in the same order
     heading_change_deg: float  # counter-clockwise positive
 
 
@@ -52,6 +53,7 @@ class Approach(_Data):
     road: str
     direction: Direction
     length: float
+    run_up: float  # length plus the roads leading into it without a junction between (capped)
     lanes: int  # driving lanes in this direction, minimum over lane sections
     lane_ids: tuple[int, ...]  # driving lanes at the approach's end, innermost first
     opposite_lanes: int
@@ -189,7 +191,8 @@ def build_index(odr: OpenDrive, sha256: str) -> MapIndex:
                          if l.type == "driving"]
             end_pose = road.lane_point(end_s, end_lanes[0]) if end_lanes else road.pose(end_s)
             skeleton[aid] = dict(
-                id=aid, map=odr.name, road=road.id, direction=direction, length=round(road.length, 3), lanes=lanes,
+                id=aid, map=odr.name, road=road.id, direction=direction, length=round(road.length, 3),
+                run_up=round(sum(r.length for r, _ in upstream_chain(odr, road.id, direction)), 3), lanes=lanes,
                 lane_ids=tuple(end_lanes), opposite_lanes=_driving_lane_count(road, _other(direction)),
                 shoulder=_edge_coverage(road, sign, "shoulder") >= 0.5,
                 sidewalk=_edge_coverage(road, sign, "sidewalk") >= 0.5,
@@ -212,6 +215,36 @@ def build_index(odr: OpenDrive, sha256: str) -> MapIndex:
             speed_limit_kmh=speed_kmh, turns=tuple(turns.get(aid, ())), entering=entering.get(aid, {})))
     return MapIndex(version=INDEX_VERSION, name=odr.name, path=odr.path, sha256=sha256, roads=len(roads),
                     junctions=len(odr.junctions), approaches=tuple(approaches))
+
+
+RUN_UP_LIMIT_M = 300.0
+
+
+def upstream_chain(odr: OpenDrive, road_id: str, direction: str,
+                   limit: float = RUN_UP_LIMIT_M) -> list[tuple[Road, str]]:
+    """The approach's road and the roads that lead into it with no junction between, nearest first, as
+    (road, driving direction), until `limit` metres or a junction, a dead end or a loop."""
+    chain: list[tuple[Road, str]] = []
+    seen: set[str] = set()
+    total = 0.0
+    while road_id in odr.roads and road_id not in seen and total < limit:
+        road = odr.roads[road_id]
+        if road.junction != "-1" or _driving_lane_count(road, direction) == 0:
+            break
+        chain.append((road, direction))
+        seen.add(road_id)
+        total += road.length
+        link = road.predecessor if direction == "forward" else road.successor
+        if link is None or link.element_type != "road":
+            break
+        default = "end" if direction == "forward" else "start"
+        road_id, direction = link.element_id, ("forward" if (link.contact_point or default) == "end" else "backward")
+    return chain
+
+
+def natural_key(text: str):
+    """Sort key that orders '2' before '10'."""
+    return _natural_key(text)
 
 
 def _natural_key(text: str):
@@ -335,34 +368,45 @@ def _turns(odr: OpenDrive, skeleton: dict) -> dict[str, list[Turn]]:
             h_in = entry.hdg if along else entry.hdg + math.pi
             h_out = leave.hdg if along else leave.hdg + math.pi
             change = math.degrees(math.atan2(math.sin(h_out - h_in), math.cos(h_out - h_in)))
-            by_side: dict[str, list[int]] = defaultdict(list)
-            for from_lane, _ in c.lane_links:
-                by_side["forward" if from_lane < 0 else "backward"].append(from_lane)
-            for direction, lanes in by_side.items():
+            by_side: dict[str, dict[int, int]] = defaultdict(dict)
+            end_section = incoming.section_at(incoming.length if along_incoming_end(incoming, junction.id) else 0.0)
+            for from_lane, to_lane in c.lane_links:
+                lane = end_section.lanes.get(from_lane)
+                if lane is None or lane.type != "driving":
+                    continue  # shoulders and sidewalks linked through the junction are not turns
+                by_side["forward" if from_lane < 0 else "backward"].setdefault(from_lane, to_lane)
+            for direction, links in by_side.items():
                 aid = approach_id(c.incoming_road, direction)
                 if aid not in skeleton:
                     continue
                 exits[aid].append(dict(via_road=connecting.id, to_road=out_link.element_id, to_direction=to_direction,
-                                       from_lanes=tuple(sorted(set(lanes), key=abs)), change=change,
-                                       uturn=out_link.element_id == c.incoming_road))
+                                       links=links, change=change, uturn=out_link.element_id == c.incoming_road))
     result: dict[str, list[Turn]] = {}
     for aid, options in exits.items():
         merged: dict[tuple, dict] = {}
         for o in options:  # one turn per (connecting road, target); lanes merged
             key = (o["via_road"], o["to_road"], o["to_direction"])
             if key in merged:
-                merged[key]["from_lanes"] = tuple(sorted(set(merged[key]["from_lanes"]) | set(o["from_lanes"]), key=abs))
+                merged[key]["links"] = {**o["links"], **merged[key]["links"]}
             else:
                 merged[key] = dict(o)
         options = list(merged.values())
         changes = [o["change"] for o in options if not o["uturn"]]
         turns = []
         for o in options:
+            from_lanes = tuple(sorted(o["links"], key=abs))
             turns.append(Turn(direction=_classify_turn(o["change"], o["uturn"], changes), via_road=o["via_road"],
-                              to_road=o["to_road"], to_direction=o["to_direction"], from_lanes=o["from_lanes"],
+                              to_road=o["to_road"], to_direction=o["to_direction"], from_lanes=from_lanes,
+                              via_lanes=tuple(o["links"][lane] for lane in from_lanes),
                               heading_change_deg=round(o["change"], 2)))
         result[aid] = sorted(turns, key=lambda t: (t.direction, _natural_key(t.to_road), _natural_key(t.via_road)))
     return result
+
+
+def along_incoming_end(road: Road, junction_id: str) -> bool:
+    """Whether a road meets the junction at its end (else at its start)."""
+    return road.successor is not None and road.successor.element_type == "junction" and \
+        road.successor.element_id == junction_id
 
 
 def _classify_turn(change: float, uturn: bool, all_changes: list[float]) -> str:

@@ -1,0 +1,478 @@
+"""Placement: every agent of a scene gets a lane position that exists on the chosen road, with no two bodies
+overlapping at t = 0, and a route where it crosses a junction.
+
+Positions along an approach are measured by u, metres from the approach's start in its driving direction
+(s = u on a forward approach, s = length - u on a backward one). Agents queue in lanes: `order 1` is nearest
+the ego (or, on a road entering the junction, nearest the junction), and `behind X` stands just upstream of
+X in X's driving direction. `gap` is the free distance to whatever is next in the queue towards that
+reference (X, the ego or the junction). A slot search moves a body outward until it overlaps nothing.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from pydantic import BaseModel, ConfigDict
+
+from ttsgc import vocabulary as V
+from ttsgc.binding.rank import DEFAULT_GAP_M, JUNCTION_SIDE, LEFT_SIDE, RIGHT_SIDE, TURN_OF_ACTION, ego_movement
+from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.roads.index import Approach, MapIndex, Turn, approach_id, object_words, upstream_chain
+from ttsgc.roads.opendrive import OpenDrive, Road
+from ttsgc.scenario import Agent, Scenario, Trigger
+
+CLEARANCE_M = 1.0
+PEDESTRIAN_SPEED = {"cautious": 1.0, "normal": 1.4, "aggressive": 2.5}
+CYCLIST_SPEED = {"cautious": 3.5, "normal": 5.0, "aggressive": 7.0}
+SPEED_FACTOR = {"cautious": 0.6, "normal": 0.85, "aggressive": 1.1}
+DEFAULT_LIMIT_KMH = 50.0
+
+
+class PlacementError(TtsgcError):
+    exit_code = ExitCode.NO_ROAD
+
+
+class _Data(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class LanePos(_Data):
+    road: str
+    lane: int
+    s: float
+    offset: float = 0.0
+
+
+class RelativePos(_Data):
+    """Where a later-stage agent appears, relative to the ego when its stage starts."""
+
+    dlane: int  # +1: one lane to the ego's left
+    ds: float  # metres ahead of the ego (negative: behind)
+
+
+class BoundAgent(_Data):
+    name: str
+    type: str
+    is_ego: bool
+    action: str
+    behavior: str
+    relative_to_ego: str | None
+    road_type: str
+    stage: int
+    start: LanePos | None  # None: appears relative to the ego when its stage starts
+    appear: RelativePos | None = None
+    speed_mps: float
+    length: float
+    width: float
+    height: float
+    movement: str | None = None  # left / right / straight through a junction
+    route: tuple[LanePos, ...] = ()
+    target_road: str | None = None  # where its movement ends, by the index
+    lane_change: int | None = None  # +1 left, -1 right
+    cross_to: LanePos | None = None
+    walk_to: LanePos | None = None
+    trigger: Trigger | None = None
+
+
+@dataclass(frozen=True)
+class LaneRef:
+    """A lane by what it is rather than by id, so that it can be followed across roads and lane sections:
+    the n-th lane of a type counted from the centre (-1: the outermost), on this side or the far side."""
+
+    type: str = "driving"
+    rank: int = 0
+    far_side: bool = False
+
+
+@dataclass
+class _Frame:
+    """An approach and the roads leading into it, as one stretch measured by u: metres from the upstream
+    start of the stretch, in the driving direction, to the approach's end (its junction, if any)."""
+
+    approach: Approach
+    segments: list[tuple[Road, str, float]]  # upstream first: (road, direction, u where it starts)
+    length: float
+
+    @classmethod
+    def build(cls, approach: Approach, odr: OpenDrive) -> "_Frame":
+        chain = list(reversed(upstream_chain(odr, approach.road, approach.direction)))
+        segments, u = [], 0.0
+        for road, direction in chain:
+            segments.append((road, direction, u))
+            u += road.length
+        return cls(approach, segments, u)
+
+    @property
+    def road(self) -> Road:
+        return self.segments[-1][0]
+
+    def locate(self, u: float) -> tuple[Road, str, float]:
+        """The road, direction and s at u."""
+        for road, direction, start in reversed(self.segments):
+            if u >= start - 1e-9:
+                local = min(max(u - start, 0.0), road.length)
+                return road, direction, local if direction == "forward" else road.length - local
+        road, direction, _ = self.segments[0]
+        return road, direction, 0.0 if direction == "forward" else road.length
+
+    def u_on_approach(self, s: float) -> float:
+        """u of a point at s on the approach's own road."""
+        road, direction, start = self.segments[-1]
+        return start + (s if direction == "forward" else road.length - s)
+
+    def lanes_at(self, u: float, lane_type: str = "driving", far_side: bool = False) -> list[int]:
+        """Lane ids of one type at u, innermost first, on this direction's side (or the far side)."""
+        road, direction, s = self.locate(u)
+        sign = -1 if direction == "forward" else 1
+        section = road.section_at(s)
+        return [l.id for l in section.side(-sign if far_side else sign) if l.type == lane_type]
+
+    def resolve(self, ref: LaneRef, u: float) -> LanePos:
+        road, _, s = self.locate(u)
+        lanes = self.lanes_at(u, ref.type, ref.far_side)
+        if not lanes or not -len(lanes) <= ref.rank < len(lanes):
+            raise PlacementError(f"road {road.id} has no {ref.type} lane {ref.rank + 1} at s={s:.1f}")
+        return LanePos(road=road.id, lane=lanes[ref.rank], s=round(s, 3))
+
+
+@dataclass
+class _Occupancy:
+    """Bodies already placed, per stretch and lane, as intervals of u."""
+
+    taken: dict[tuple[str, LaneRef], list[tuple[float, float]]] = field(default_factory=dict)
+
+    def slot(self, frame: _Frame, lane: LaneRef, u: float, length: float, outward: int) -> float:
+        """The first free centre at or beyond u (moving outward) within the stretch, where the lane exists."""
+        lo_limit, hi_limit = length / 2 + 0.5, frame.length - length / 2 - 0.5
+        spans = self.taken.setdefault((frame.approach.id, lane), [])
+        step = 0.5 * (outward or 1)
+        for _ in range(4000):
+            if not lo_limit <= u <= hi_limit:
+                break
+            free = all(u + length / 2 + CLEARANCE_M <= a or u - length / 2 - CLEARANCE_M >= b for a, b in spans)
+            if free and _lane_exists(frame, lane, u):
+                spans.append((u - length / 2, u + length / 2))
+                return u
+            u += step
+        raise PlacementError(f"no room for a {length:.1f} m body in the {lane.type} lane of approach "
+                             f"{frame.approach.id} (the stretch leading to it is {frame.length:.0f} m)")
+
+
+def _lane_exists(frame: _Frame, lane: LaneRef, u: float) -> bool:
+    n = len(frame.lanes_at(u, lane.type, lane.far_side))
+    return n > 0 and -n <= lane.rank < n
+
+
+def _queue(agents: list[Agent], downstream: bool = False) -> list[Agent]:
+    """Agents at one position in placing order, from the reference outward. Heads by order, then as
+    written; each is followed by the chain of agents behind it. Behind means upstream, so on a queue that
+    grows downstream (ahead of the ego) a chain is placed from its last follower to its head."""
+    names = {a.name for a in agents}
+    heads = [a for a in agents if a.behind not in names]
+    heads.sort(key=lambda a: (a.order if a.order is not None else 1000, agents.index(a)))
+    out: list[Agent] = []
+    for head in heads:
+        chain = [head]
+        while nxt := next((a for a in agents if a.behind == chain[-1].name and a not in chain), None):
+            chain.append(nxt)
+        out += reversed(chain) if downstream else chain
+    return out
+
+
+def _spacing(previous: Agent | None, agent: Agent) -> float:
+    """Free distance between consecutive bodies of a queue: the gap of whichever one is behind the other."""
+    if previous is not None and previous.behind == agent.name:
+        return _gap(previous)
+    if agent.behind is not None and (previous is None or agent.behind != previous.name):
+        return DEFAULT_GAP_M[agent.behavior] if agent.type != "pedestrian" else 2.0  # its gap is to the one ahead
+    return _gap(agent)
+
+
+def _gap(agent: Agent) -> float:
+    if agent.gap_m is not None:
+        return agent.gap_m
+    return 2.0 if agent.type == "pedestrian" else DEFAULT_GAP_M[agent.behavior]
+
+
+def _speed(agent: Agent, limit_kmh: float | None) -> float:
+    if agent.speed is not None:
+        return agent.speed.mps
+    if agent.type == "pedestrian":
+        return PEDESTRIAN_SPEED[agent.behavior]
+    if agent.type == "cyclist":
+        return CYCLIST_SPEED[agent.behavior]
+    if agent.road_type == "shoulder" and agent.action == "stop":
+        return 0.0  # already stopped on the shoulder
+    return round((limit_kmh or DEFAULT_LIMIT_KMH) / 3.6 * SPEED_FACTOR[agent.behavior], 3)
+
+
+class Placer:
+    """Places one scenario on one approach of one map."""
+
+    def __init__(self, scenario: Scenario, approach: Approach, index: MapIndex, odr: OpenDrive):
+        self.scenario, self.index, self.odr = scenario, index, odr
+        self.frames: dict[str, _Frame] = {}
+        self.frame = self.frame_of(approach)
+        self.occupied = _Occupancy()
+        self.last_in_queue: dict[tuple, tuple[Agent, float, float]] = {}  # (stretch, lane, outward) -> last body
+        self._later: list[tuple[str, Agent, float]] = []  # later-stage agents placed so far
+        self.movement = ego_movement(scenario)
+        self.ego_turn = self._pick_turn(approach, self.movement) if self.movement else None
+        if self.movement and self.ego_turn is None:
+            raise PlacementError(f"approach {approach.id} of {index.name} has no {self.movement} turn")
+
+    def frame_of(self, approach: Approach) -> _Frame:
+        if approach.id not in self.frames:
+            self.frames[approach.id] = _Frame.build(approach, self.odr)
+        return self.frames[approach.id]
+
+    @staticmethod
+    def _pick_turn(approach: Approach, movement: str) -> Turn | None:
+        turns = approach.turns_to(movement)
+        if not turns:
+            return None
+        if movement == "right":
+            return sorted(turns, key=lambda t: (-max(map(abs, t.from_lanes)), t.via_road))[0]
+        return sorted(turns, key=lambda t: (min(map(abs, t.from_lanes)), t.via_road))[0]
+
+    # -- the ego ------------------------------------------------------------------------------------------
+    def place(self) -> list[BoundAgent]:
+        s = self.scenario
+        by_position: dict[str, list[Agent]] = {}
+        for a in s.stages[0].agents:
+            if not a.is_ego:
+                by_position.setdefault(a.relative_to_ego, []).append(a)
+        ego = s.ego
+        ego_len = V.BODIES[ego.type][0]
+        in_lane = lambda p: [a for a in by_position.get(p, []) if a.road_type == "driving"]  # noqa: E731
+        front_space = sum(V.BODIES[a.type][0] + _gap(a) for a in in_lane("front"))
+        back_space = sum(V.BODIES[a.type][0] + _gap(a) for a in in_lane("back"))
+        frame = self.frame
+        need = ego_len + front_space + back_space + 4.0
+        if need > frame.length:
+            raise PlacementError(f"approach {frame.approach.id} of {self.index.name} and the roads leading to it are "
+                                 f"{frame.length:.0f} m long; the ego's lane needs {need:.0f} m")
+        lowest = back_space + ego_len / 2 + 1.0
+        if self.movement is not None:  # reach the junction within a few seconds
+            u_ego = frame.length - max(25.0, front_space + 12.0)
+        else:  # on the chosen road itself when it is long enough, leaving the road ahead free
+            u_ego = min(frame.segments[-1][2] + back_space + ego_len / 2 + 10.0,
+                        frame.length - front_space - ego_len / 2 - 20.0)
+        crosswalk = self._crosswalk_u()
+        if crosswalk is not None and "near_the_crosswalk" in by_position:
+            u_ego = min(u_ego, crosswalk - 25.0)
+        self.u_ego = max(u_ego, lowest)
+        self.ego_lane = LaneRef("driving", self._ego_lane_rank())
+        self.u_ego = self.occupied.slot(frame, self.ego_lane, self.u_ego, ego_len, -1)
+        placed = [self._bound(ego, 0, frame.resolve(self.ego_lane, self.u_ego), frame)]
+        for position in sorted(by_position, key=lambda p: list(V.POSITIONS).index(p)):
+            downstream = position in ("front", "front_left", "front_right")
+            for agent in _queue(by_position[position], downstream):
+                placed.append(self._place_agent(agent, 0))
+        for k, stage in enumerate(s.stages[1:], start=1):
+            groups: dict[str, list[Agent]] = {}
+            for agent in stage.agents:
+                groups.setdefault(agent.relative_to_ego, []).append(agent)
+            for position, group in groups.items():
+                for agent in _queue(group, position in ("front", "front_left", "front_right")):
+                    placed.append(self._place_later(agent, k))
+        order = {a.name: n for n, a in enumerate(s.agents())}
+        return sorted(placed, key=lambda b: order[b.name])
+
+    def _ego_lane_rank(self) -> int:
+        from ttsgc.binding.rank import lane_needs
+
+        approach = self.frame.approach
+        n = len(approach.lane_ids)
+        need_left, need_right = lane_needs(self.scenario)
+        allowed = list(range(n))
+        if self.ego_turn is not None:
+            allowed = [i for i in allowed if approach.lane_ids[i] in self.ego_turn.from_lanes] or allowed
+        if self.movement == "right":
+            allowed.reverse()
+        fits = [i for i in allowed if (not need_left or i >= 1) and (not need_right or i <= n - 2)]
+        return (fits or allowed)[0]
+
+    def _crosswalk_u(self) -> float | None:
+        road = self.frame.road
+        spots = [self.frame.u_on_approach(o.s) for o in road.objects
+                 if "crosswalk" in object_words(o.type, o.subtype, o.name)]
+        if not spots:
+            return self.frame.length if "crosswalk" in self.frame.approach.objects else None
+        return max(spots)  # the one nearest the end of the approach
+
+    # -- other agents -------------------------------------------------------------------------------------
+    def _place_agent(self, agent: Agent, stage: int) -> BoundAgent:
+        where = agent.relative_to_ego
+        side = JUNCTION_SIDE.get(where)
+        if side is not None:
+            return self._on_entering_road(agent, side, stage)
+        if where == "at_the_destination":
+            return self._at_destination(agent, stage)
+        frame, ego_len = self.frame, V.BODIES[self.scenario.ego.type][0]
+        length = V.BODIES[agent.type][0]
+        lane = self._lane_for(agent, frame)
+        if where == "near_the_crosswalk":
+            crosswalk = self._crosswalk_u()
+            target = (crosswalk - 1.5 - length / 2) if crosswalk is not None else min(
+                self.u_ego + 20.0, frame.length - length)
+            outward = -1
+        elif where in ("front", "front_left", "front_right"):
+            target, outward = self._after(frame, lane, self.u_ego + ego_len / 2, agent, +1), +1
+        elif where in ("back", "back_left", "back_right"):
+            target, outward = self._after(frame, lane, self.u_ego - ego_len / 2, agent, -1), -1
+        else:  # left / right: beside the ego
+            target, outward = self.u_ego, -1
+        return self._put(agent, stage, frame, lane, target, outward)
+
+    def _put(self, agent: Agent, stage: int, frame: _Frame, lane: LaneRef, target: float, outward: int,
+             turn: Turn | None = None) -> BoundAgent:
+        length = V.BODIES[agent.type][0]
+        u = self.occupied.slot(frame, lane, target, length, outward)
+        self.last_in_queue[(frame.approach.id, lane, outward)] = (agent, u, length)
+        return self._bound(agent, stage, frame.resolve(lane, u), frame, turn=turn, far_side=lane.far_side)
+
+    def _after(self, frame: _Frame, lane: LaneRef, edge: float, agent: Agent, outward: int) -> float:
+        """Desired centre of the next body in a queue: beyond the previous one (or the given edge) by the gap."""
+        previous = self.last_in_queue.get((frame.approach.id, lane, outward))
+        if previous is not None:
+            _, u, length = previous
+            edge = u + outward * length / 2
+        return edge + outward * (_spacing(previous[0] if previous else None, agent) + V.BODIES[agent.type][0] / 2)
+
+    def _lane_for(self, agent: Agent, frame: _Frame, rank: int | None = None) -> LaneRef:
+        """The lane an agent stands in: people and parked vehicles at the road's edge, others by position."""
+        where = agent.relative_to_ego
+        if agent.road_type in ("sidewalk", "shoulder"):
+            far = where in LEFT_SIDE
+            u = self.u_ego if frame is self.frame else frame.length - 1.0
+            for lane_type in (agent.road_type, "sidewalk", "shoulder"):
+                if frame.lanes_at(u, lane_type, far_side=far):
+                    return LaneRef(lane_type, -1, far)
+            return LaneRef("driving", -1, far)  # no edge lane: the outermost driving lane
+        if rank is not None:
+            return LaneRef("driving", rank)
+        rank = self.ego_lane.rank if frame is self.frame else 0
+        if where in LEFT_SIDE:
+            rank -= 1
+        elif where in RIGHT_SIDE:
+            rank += 1
+        if rank < 0 or rank >= len(frame.lanes_at(self.u_ego if frame is self.frame else frame.length - 1.0)):
+            raise PlacementError(f"approach {frame.approach.id} has no lane to the "
+                                 f"{'left' if where in LEFT_SIDE else 'right'} of the ego's lane for '{agent.name}'")
+        return LaneRef("driving", rank)
+
+    def _on_entering_road(self, agent: Agent, side: str, stage: int) -> BoundAgent:
+        ids = self.frame.approach.entering.get(side, ())
+        if not ids:
+            raise PlacementError(f"no road enters junction {self.frame.approach.junction} from the {side} of "
+                                 f"approach {self.frame.approach.id} for '{agent.name}'")
+        entering = self.index.by_id[ids[0]]
+        frame = self.frame_of(entering)
+        movement = TURN_OF_ACTION.get(agent.action)
+        turn = self._pick_turn(entering, movement) if movement and agent.road_type == "driving" else None
+        rank = None
+        if agent.road_type == "driving":
+            ranks = [i for i, lane in enumerate(entering.lane_ids) if turn is None or lane in turn.from_lanes] or [0]
+            rank = ranks[-1] if movement == "right" else ranks[0]
+        lane = self._lane_for(agent, frame, rank)
+        target = self._after(frame, lane, frame.length, agent, -1)
+        return self._put(agent, stage, frame, lane, target, -1, turn=turn)
+
+    def _at_destination(self, agent: Agent, stage: int) -> BoundAgent:
+        length = V.BODIES[agent.type][0]
+        if self.ego_turn is None:  # no junction: far ahead on the ego's road
+            lane = self._lane_for(agent, self.frame) if agent.road_type != "driving" else self.ego_lane
+            target = min(self.u_ego + 60.0, self.frame.length - length)
+            return self._put(agent, stage, self.frame, lane, target, -1)
+        destination = self.index.by_id.get(approach_id(self.ego_turn.to_road, self.ego_turn.to_direction))
+        if destination is None:
+            raise PlacementError(f"the ego's {self.movement} turn leads to road {self.ego_turn.to_road}, which has "
+                                 f"no driving lanes in that direction")
+        frame = self.frame_of(destination)
+        lane = self._lane_for(agent, frame, -1 if self.movement == "right" else 0)
+        start = frame.segments[-1][2]  # the destination road begins at the junction
+        return self._put(agent, stage, frame, lane, start + 15.0 + length / 2, +1)
+
+    def _place_later(self, agent: Agent, stage: int) -> BoundAgent:
+        """A later-stage agent: relative to the ego when its stage starts, or at a fixed junction road."""
+        where = agent.relative_to_ego
+        if where in JUNCTION_SIDE or where in ("at_the_destination", "near_the_crosswalk"):
+            return self._place_agent(agent, stage)
+        length, ego_len = V.BODIES[agent.type][0], V.BODIES[self.scenario.ego.type][0]
+        dlane = 1 if where in LEFT_SIDE else -1 if where in RIGHT_SIDE else 0
+        ahead = where in ("front", "front_left", "front_right")
+        behind = where in ("back", "back_left", "back_right")
+        previous = [(a, l) for w, a, l in self._later if w == where]
+        extra = sum(l + _spacing(p, a) for (p, _), (a, l) in zip([(None, 0)] + previous, previous))
+        last = previous[-1][0] if previous else None
+        ds = (ego_len / 2 + extra + _spacing(last, agent) + length / 2) * (1 if ahead else -1 if behind else 0)
+        self._later.append((where, agent, length))
+        return self._bound(agent, stage, None, self.frame, appear=RelativePos(dlane=dlane, ds=round(ds, 3)))
+
+    # -- building the record ------------------------------------------------------------------------------
+    def _bound(self, agent: Agent, stage: int, start: LanePos | None, frame: _Frame, turn: Turn | None = None,
+               far_side: bool = False, appear: RelativePos | None = None) -> BoundAgent:
+        length, width, height = V.BODIES[agent.type]
+        movement = target_road = None
+        route: list[LanePos] = []
+        if agent.is_ego:
+            turn = self.ego_turn
+        if turn is not None and start is not None and agent.road_type == "driving":
+            movement, target_road = turn.direction, turn.to_road
+            route = self._route(start, frame, turn)
+        lane_change = {"change_lane_to_left": 1, "change_lane_to_right": -1}.get(agent.action)
+        if agent.action == "block_the_ego" and agent.relative_to_ego in LEFT_SIDE | RIGHT_SIDE:
+            lane_change = -1 if agent.relative_to_ego in LEFT_SIDE else 1  # into the ego's lane
+        cross_to = walk_to = None
+        if start is not None and agent.action == "cross_the_road":
+            cross_to = self._far_side(start)
+        if start is not None and agent.action == "on_the_sidewalk":
+            walk_to = LanePos(road=start.road, lane=start.lane, s=start.s)
+            road = self.odr.roads[start.road]
+            ahead = 30.0 if (start.lane < 0) else -30.0  # along its side's driving direction
+            walk_to = walk_to.model_copy(update={"s": round(min(max(start.s + ahead, 0.5), road.length - 0.5), 3)})
+        return BoundAgent(
+            name=agent.name, type=agent.type, is_ego=agent.is_ego, action=agent.action, behavior=agent.behavior,
+            relative_to_ego=agent.relative_to_ego, road_type=agent.road_type, stage=stage, start=start,
+            appear=appear, speed_mps=_speed(agent, frame.approach.speed_limit_kmh), length=length, width=width,
+            height=height, movement=movement, route=tuple(route), target_road=target_road, lane_change=lane_change,
+            cross_to=cross_to, walk_to=walk_to, trigger=agent.trigger)
+
+    def _route(self, start: LanePos, frame: _Frame, turn: Turn) -> list[LanePos]:
+        """Start, the middle of the connecting road in the junction, and a point on the road it leads to."""
+        via = self.odr.roads[turn.via_road]
+        approach_lanes = list(frame.approach.lane_ids)
+        rank = approach_lanes.index(start.lane) if start.lane in approach_lanes else 0
+        k = next((i for i, lane in enumerate(turn.from_lanes) if lane == start.lane), 0)
+        points = [start, LanePos(road=via.id, lane=turn.via_lanes[k], s=round(via.length / 2, 3))]
+        target = self.index.by_id.get(approach_id(turn.to_road, turn.to_direction))
+        if target is not None:
+            out = self.frame_of(target)
+            u = out.segments[-1][2] + min(20.0, target.length / 2)
+            lanes = out.lanes_at(u)
+            lane = lanes[-1] if turn.direction == "right" else lanes[min(rank, len(lanes) - 1)]
+            points.append(LanePos(road=turn.to_road, lane=lane, s=out.resolve(LaneRef(), u).s))
+        return points
+
+    def _far_side(self, start: LanePos) -> LanePos:
+        """The outermost lane on the other side of the road, across from a start position."""
+        road = self.odr.roads[start.road]
+        section = road.section_at(start.s)
+        lanes = section.side(1 if start.lane < 0 else -1) or section.side(-1 if start.lane < 0 else 1)
+        return LanePos(road=road.id, lane=lanes[-1].id, s=start.s)
+
+
+def place(scenario: Scenario, approach: Approach, index: MapIndex, odr: OpenDrive) -> list[BoundAgent]:
+    return Placer(scenario, approach, index, odr).place()
+
+
+def heading_of(odr: OpenDrive, pos: LanePos) -> float:
+    """World heading of a body standing in a lane, facing its driving direction."""
+    return odr.roads[pos.road].lane_point(pos.s, pos.lane).hdg
+
+
+def distance(odr: OpenDrive, a: LanePos, b: LanePos) -> float:
+    pa, pb = odr.roads[a.road].lane_point(a.s, a.lane), odr.roads[b.road].lane_point(b.s, b.lane)
+    return math.hypot(pa.x - pb.x, pa.y - pb.y)

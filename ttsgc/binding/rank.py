@@ -1,0 +1,148 @@
+"""Plan-aware road ranking (TTSG section 3.2): score each candidate approach by the agent requirements it meets.
+
+Every requirement is one column of the explanation table: the turns the ego and the agents need exist, the
+roads where agents stand exist, adjacent lanes exist for side positions and lane changes, a shoulder or
+sidewalk exists for agents standing there, a crosswalk for near_the_crosswalk, and the ego's lane is long
+enough for every agent queued in it. The best total wins; ties are broken by a seeded random choice.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from typing import Callable
+
+from ttsgc import vocabulary as V
+from ttsgc.roads.index import Approach, MapIndex, natural_key
+from ttsgc.scenario import Agent, Scenario
+
+LEFT_SIDE = {"left", "front_left", "back_left"}
+RIGHT_SIDE = {"right", "front_right", "back_right"}
+JUNCTION_SIDE = {"road_of_left_turn": "left", "road_of_right_turn": "right", "road_of_straight": "straight"}
+TURN_OF_ACTION = {"turn_left": "left", "turn_right": "right", "go_straight": "straight"}
+DEFAULT_GAP_M = {"cautious": 12.0, "normal": 8.0, "aggressive": 4.0}
+
+
+@dataclass(frozen=True)
+class Requirement:
+    column: str  # header of the explanation table
+    test: Callable[[Approach, MapIndex], bool]
+
+
+def ego_movement(scenario: Scenario) -> str | None:
+    """The junction movement the ego makes: left, right or straight (straight only at a junction)."""
+    ego = scenario.ego
+    if ego.action in ("turn_left", "turn_right"):
+        return TURN_OF_ACTION[ego.action]
+    if scenario.road.junction or any(a.relative_to_ego in JUNCTION_SIDE or a.relative_to_ego == "at_the_destination"
+                                     for a in scenario.agents()):
+        return "straight"
+    return None
+
+
+def lane_needs(scenario: Scenario) -> tuple[bool, bool]:
+    """Whether the ego's lane needs a neighbour on its left and on its right."""
+    left = right = False
+    for a in scenario.agents():
+        where = "ego" if a.is_ego else a.relative_to_ego
+        if a.road_type != "driving":
+            continue
+        left |= where in LEFT_SIDE or (where in ("ego", "front", "back") and a.action == "change_lane_to_left")
+        right |= where in RIGHT_SIDE or (where in ("ego", "front", "back") and a.action == "change_lane_to_right")
+    return left, right
+
+
+def lane_space_needed(scenario: Scenario) -> float:
+    """Metres of the ego's lane the ego and the agents queued in it occupy, with their gaps."""
+    total = V.BODIES[scenario.ego.type][0] + 4.0  # as placement reckons it
+    for a in scenario.stages[0].agents:
+        if not a.is_ego and a.relative_to_ego in ("front", "back") and a.road_type == "driving":
+            total += V.BODIES[a.type][0] + (a.gap_m if a.gap_m is not None else DEFAULT_GAP_M[a.behavior])
+    return total
+
+
+def entering(approach: Approach, index: MapIndex, side: str) -> Approach | None:
+    ids = approach.entering.get(side, ())
+    return index.by_id.get(ids[0]) if ids else None
+
+
+def requirements(scenario: Scenario) -> list[Requirement]:
+    out: list[Requirement] = []
+    movement = ego_movement(scenario)
+    if movement is not None:
+        out.append(Requirement(f"ego {movement}", lambda a, i, m=movement: bool(a.turns_to(m))))
+    need_left, need_right = lane_needs(scenario)
+    if need_left or need_right:
+        lanes = 1 + need_left + need_right
+        out.append(Requirement(f"lanes>={lanes}", lambda a, i, n=lanes: a.lanes >= n))
+    queued: dict[str, float] = {}  # metres each junction road needs for the agents standing on it
+    for agent in scenario.agents():
+        if agent.is_ego:
+            continue
+        where = agent.relative_to_ego
+        if where in JUNCTION_SIDE and agent.road_type == "driving":
+            queued[where] = queued.get(where, 2.0) + V.BODIES[agent.type][0] + (
+                agent.gap_m if agent.gap_m is not None else DEFAULT_GAP_M[agent.behavior])
+        out += _agent_requirements(agent, movement, queued)
+    space = lane_space_needed(scenario)
+    out.append(Requirement(f"length>={space:.0f}m", lambda a, i, n=space: a.run_up >= n))
+    return out
+
+
+def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, float]) -> list[Requirement]:
+    out = []
+    where, name = agent.relative_to_ego, agent.name
+    side = JUNCTION_SIDE.get(where or "")
+    if side is not None:  # the road exists and is long enough for everyone queued on it
+        out.append(Requirement(f"{where} ({name})",
+                               lambda a, i, s=side, w=where: (e := entering(a, i, s)) is not None
+                               and e.run_up >= queued.get(w, 0.0)))
+        turn = TURN_OF_ACTION.get(agent.action)
+        if turn is not None and agent.road_type == "driving":
+            out.append(Requirement(f"{turn} from {where} ({name})",
+                                   lambda a, i, s=side, t=turn: (e := entering(a, i, s)) is not None
+                                   and bool(e.turns_to(t))))
+    elif where == "at_the_destination":
+        out.append(Requirement(f"destination ({name})",
+                               lambda a, i, m=movement: a.junction is None if m is None else bool(a.turns_to(m))))
+    elif where == "near_the_crosswalk":
+        out.append(Requirement(f"crosswalk ({name})", lambda a, i: "crosswalk" in a.objects))
+    if agent.road_type == "shoulder" and side is None:
+        out.append(Requirement(f"shoulder ({name})", lambda a, i: a.shoulder))
+    elif agent.road_type == "sidewalk" and side is None:  # people stand on a sidewalk, else on a shoulder
+        out.append(Requirement(f"kerb ({name})", lambda a, i: a.sidewalk or a.shoulder))
+    return out
+
+
+@dataclass(frozen=True)
+class Ranked:
+    approach: Approach
+    index: MapIndex
+    met: tuple[bool, ...]
+
+    @property
+    def score(self) -> int:
+        return sum(self.met)
+
+
+def rank(scenario: Scenario, candidates: list[tuple[Approach, MapIndex]], seed: int
+         ) -> tuple[list[Requirement], list[Ranked]]:
+    """Candidates best first. Equal scores are shuffled by the seed, so the order is reproducible and
+    different seeds spread scenes over equally good roads."""
+    reqs = requirements(scenario)
+    scored = [Ranked(a, i, tuple(r.test(a, i) for r in reqs)) for a, i in candidates]
+    scored.sort(key=lambda r: (r.index.name, natural_key(r.approach.id)))
+    random.Random(seed).shuffle(scored)
+    scored.sort(key=lambda r: -r.score)  # stable: the seeded order survives within a score
+    return reqs, scored
+
+
+def explain(reqs: list[Requirement], ranked: list[Ranked], limit: int = 15) -> str:
+    """The paper's table: one row per candidate, one column per requirement, and the total."""
+    headers = ["#", "map", "approach"] + [r.column for r in reqs] + ["total"]
+    rows = [[str(k), r.index.name, r.approach.id] + ["✓" if m else "✗" for m in r.met] + [f"{r.score}/{len(reqs)}"]
+            for k, r in enumerate(ranked[:limit], start=1)]
+    widths = [max(len(str(x)) for x in col) for col in zip(headers, *rows)]
+    lines = ["  ".join(str(x).ljust(w) for x, w in zip(row, widths)).rstrip() for row in [headers, *rows]]
+    more = f"\n... and {len(ranked) - limit} more candidate(s)" if len(ranked) > limit else ""
+    return "\n".join(lines) + more

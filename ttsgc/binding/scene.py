@@ -1,0 +1,79 @@
+"""Scenario + map library -> BoundScene: retrieve, rank, then place on the best candidate that fits."""
+
+from __future__ import annotations
+
+from pydantic import BaseModel, ConfigDict
+
+from ttsgc.binding.place import BoundAgent, PlacementError, place
+from ttsgc.binding.rank import Ranked, Requirement, explain, rank
+from ttsgc.roads.index import MapIndex
+from ttsgc.roads.opendrive import OpenDrive, read_opendrive
+from ttsgc.roads.retrieve import NoRoadError, retrieve
+from ttsgc.scenario import Scenario
+
+DEFAULT_SEED = 0
+MAX_PLACEMENT_TRIES = 10
+
+
+class BoundScene(BaseModel):
+    """A scene on a road: every agent with a lane position on the map, plus how the road was chosen."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, arbitrary_types_allowed=True)
+
+    scenario: Scenario
+    seed: int
+    map_name: str
+    map_path: str
+    map_sha256: str
+    approach: str
+    score: int
+    requirements: int
+    agents: tuple[BoundAgent, ...]
+    unmet: tuple[str, ...]  # requirements the chosen road does not meet (another candidate meets each)
+    explanation: str
+
+    def agent(self, name: str) -> BoundAgent:
+        return next(a for a in self.agents if a.name == name)
+
+
+def bind(scenario: Scenario, library: list[MapIndex], seed: int | None = None, skip: int = 0) -> BoundScene:
+    """Bind a scenario to the best-ranked approach that placement can realise.
+
+    seed: --seed, else the scenario's seed, else 0. skip: leave out the first `skip` placeable candidates
+    (the simulator's retry asks for the next-ranked road)."""
+    seed = seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
+    approaches = retrieve(library, scenario.road)
+    index_of = {a.id + "@" + m.path: m for m in library for a in m.approaches}
+    candidates = [(a, index_of[a.id + "@" + m.path]) for m in library for a in m.approaches if a in approaches]
+    requirements, ranked = rank(scenario, candidates, seed)
+    unmeetable = [r.column for j, r in enumerate(requirements) if not any(c.met[j] for c in ranked)]
+    if unmeetable:
+        raise NoRoadError(f"no road can host the scene: of the {len(ranked)} approaches that meet the road block, "
+                          f"none meets {', '.join(repr(c) for c in unmeetable)}\n"
+                          + explain(requirements, ranked, limit=5))
+    maps: dict[str, OpenDrive] = {}
+    reasons: list[str] = []
+    for candidate in ranked[: MAX_PLACEMENT_TRIES + skip]:
+        odr = maps.get(candidate.index.path) or maps.setdefault(candidate.index.path,
+                                                                read_opendrive(candidate.index.path))
+        try:
+            agents = place(scenario, candidate.approach, candidate.index, odr)
+        except PlacementError as exc:
+            reasons.append(f"{candidate.index.name} {candidate.approach.id}: {exc}")
+            continue
+        if skip:
+            skip -= 1
+            continue
+        return _scene(scenario, seed, candidate, requirements, ranked, agents)
+    if not reasons:
+        raise NoRoadError(f"no further candidate road for '{scenario.name}'")
+    raise NoRoadError("no candidate road can host the scene; the best candidates failed:\n  " + "\n  ".join(reasons))
+
+
+def _scene(scenario: Scenario, seed: int, chosen: Ranked, requirements: list[Requirement], ranked: list[Ranked],
+           agents: list[BoundAgent]) -> BoundScene:
+    unmet = tuple(r.column for r, met in zip(requirements, chosen.met) if not met)
+    return BoundScene(scenario=scenario, seed=seed, map_name=chosen.index.name, map_path=chosen.index.path,
+                      map_sha256=chosen.index.sha256, approach=chosen.approach.id, score=chosen.score,
+                      requirements=len(requirements), agents=tuple(agents), unmet=unmet,
+                      explanation=explain(requirements, ranked))

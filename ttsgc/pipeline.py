@@ -1,0 +1,47 @@
+"""The compiler's stages chained: parse -> bind -> emit -> write. Each stage stays a pure function; this
+module only connects them and writes the outputs."""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from pathlib import Path
+
+from ttsgc.binding import BoundScene, bind
+from ttsgc.emit.xosc import DEFAULT_VERSION, emit
+from ttsgc.files import write_atomic
+from ttsgc.roads.retrieve import load_library
+from ttsgc.scenario import Scenario
+
+
+@dataclass(frozen=True)
+class Compiled:
+    scene: BoundScene
+    xosc: bytes
+    map_name: str  # the map file's name beside the .xosc
+
+
+def map_file_name(scene: BoundScene, out_dir: Path) -> str:
+    """The copy of the map beside the output: <map>.xodr, or <map>-<hash>.xodr when another file has that name."""
+    source = Path(scene.map_path)
+    name = source.name
+    existing = out_dir / name
+    if existing.exists() and hashlib.sha256(existing.read_bytes()).hexdigest() != scene.map_sha256:
+        name = f"{source.stem}-{scene.map_sha256[:8]}{source.suffix}"
+    return name
+
+
+def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
+                     version: str = DEFAULT_VERSION, skip: int = 0) -> Compiled:
+    scene = bind(scenario, load_library(maps), seed=seed, skip=skip)
+    map_name = map_file_name(scene, out.parent)
+    return Compiled(scene, emit(scene, map_name, version), map_name)
+
+
+def write(compiled: Compiled, out: Path) -> None:
+    """Write the map copy, then the .xosc, each atomically: a reader never sees half a file."""
+    out.parent.mkdir(parents=True, exist_ok=True)
+    copy = out.parent / compiled.map_name
+    if not copy.exists():
+        write_atomic(copy, Path(compiled.scene.map_path).read_bytes())
+    write_atomic(out, compiled.xosc)
