@@ -29,3 +29,13 @@ def _private_cache(tmp_path_factory):
 
     os.environ["TTSGC_CACHE_DIR"] = str(tmp_path_factory.mktemp("cache"))
     yield
+
+
+def pytest_addoption(parser):
+    parser.addoption("--regen-golden", action="store_true",
+                     help="rewrite examples/golden/*.xosc from the current compiler (review the diff!)")
+
+
+@pytest.fixture
+def regen_golden(request) -> bool:
+    return request.config.getoption("--regen-golden")

@@ -18,7 +18,7 @@ from pydantic import BaseModel, ConfigDict
 from ttsgc import vocabulary as V
 from ttsgc.binding.rank import DEFAULT_GAP_M, JUNCTION_SIDE, LEFT_SIDE, RIGHT_SIDE, TURN_OF_ACTION, ego_movement
 from ttsgc.errors import ExitCode, TtsgcError
-from ttsgc.roads.index import Approach, MapIndex, Turn, approach_id, object_words, upstream_chain
+from ttsgc.roads.index import Approach, MapIndex, Turn, approach_id, upstream_chain
 from ttsgc.roads.opendrive import OpenDrive, Road
 from ttsgc.scenario import Agent, Scenario, Trigger
 
@@ -245,9 +245,10 @@ class Placer:
                 by_position.setdefault(a.relative_to_ego, []).append(a)
         ego = s.ego
         ego_len = V.BODIES[ego.type][0]
-        in_lane = lambda p: [a for a in by_position.get(p, []) if a.road_type == "driving"]  # noqa: E731
-        front_space = sum(V.BODIES[a.type][0] + _gap(a) for a in in_lane("front"))
-        back_space = sum(V.BODIES[a.type][0] + _gap(a) for a in in_lane("back"))
+        def space(positions: tuple[str, ...]) -> float:  # the longest queue ahead of (or behind) the ego
+            return max(sum(V.BODIES[a.type][0] + _gap(a) for a in by_position.get(p, ())) for p in positions)
+        front_space = space(("front", "front_left", "front_right"))
+        back_space = space(("back", "back_left", "back_right"))
         frame = self.frame
         need = ego_len + front_space + back_space + 4.0
         if need > frame.length:
@@ -295,12 +296,10 @@ class Placer:
         return (fits or allowed)[0]
 
     def _crosswalk_u(self) -> float | None:
-        road = self.frame.road
-        spots = [self.frame.u_on_approach(o.s) for o in road.objects
-                 if "crosswalk" in object_words(o.type, o.subtype, o.name)]
-        if not spots:
-            return self.frame.length if "crosswalk" in self.frame.approach.objects else None
-        return max(spots)  # the one nearest the end of the approach
+        """The crossing nearest the approach's end, in stretch coordinates."""
+        start = self.frame.segments[-1][2]
+        spots = [start + u for u in self.frame.approach.crosswalks]
+        return max(spots) if spots else None
 
     # -- other agents -------------------------------------------------------------------------------------
     def _place_agent(self, agent: Agent, stage: int) -> BoundAgent:

@@ -20,6 +20,7 @@ LEFT_SIDE = {"left", "front_left", "back_left"}
 RIGHT_SIDE = {"right", "front_right", "back_right"}
 JUNCTION_SIDE = {"road_of_left_turn": "left", "road_of_right_turn": "right", "road_of_straight": "straight"}
 TURN_OF_ACTION = {"turn_left": "left", "turn_right": "right", "go_straight": "straight"}
+CROSSWALK_RUN_UP_M = 20.0
 DEFAULT_GAP_M = {"cautious": 12.0, "normal": 8.0, "aggressive": 4.0}
 
 
@@ -105,8 +106,9 @@ def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, fl
     elif where == "at_the_destination":
         out.append(Requirement(f"destination ({name})",
                                lambda a, i, m=movement: a.junction is None if m is None else bool(a.turns_to(m))))
-    elif where == "near_the_crosswalk":
-        out.append(Requirement(f"crosswalk ({name})", lambda a, i: "crosswalk" in a.objects))
+    elif where == "near_the_crosswalk":  # a crossing the ego has yet to reach
+        out.append(Requirement(f"crosswalk ({name})",
+                               lambda a, i: any(a.run_up - a.length + u >= CROSSWALK_RUN_UP_M for u in a.crosswalks)))
     if agent.road_type == "shoulder" and side is None:
         out.append(Requirement(f"shoulder ({name})", lambda a, i: a.shoulder))
     elif agent.road_type == "sidewalk" and side is None:  # people stand on a sidewalk, else on a shoulder

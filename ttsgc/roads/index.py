@@ -25,7 +25,7 @@ from ttsgc import vocabulary as V
 from ttsgc.files import write_atomic
 from ttsgc.roads.opendrive import MapError, OpenDrive, Road, read_opendrive
 
-INDEX_VERSION = 5
+INDEX_VERSION = 6
 STRAIGHT_LIMIT_DEG = 45.0  # an exit within this of straight ahead is straight, unless another is straighter
 STRAIGHTER_BY_DEG = 5.0
 UTURN_DEG = 160.0
@@ -61,6 +61,7 @@ class Approach(_Data):
     sidewalk: bool
     signals: tuple[str, ...]  # vocabulary words
     objects: tuple[str, ...]
+    crosswalks: tuple[float, ...]  # where crossings are, metres from the approach's start (its end if in the junction)
     speed_limit_kmh: float | None
     junction: str | None  # the junction the approach ends at
     turns: tuple[Turn, ...]
@@ -197,7 +198,7 @@ def build_index(odr: OpenDrive, sha256: str) -> MapIndex:
                 shoulder=_edge_coverage(road, sign, "shoulder") >= 0.5,
                 sidewalk=_edge_coverage(road, sign, "sidewalk") >= 0.5,
                 junction=ends.get(aid), end=(round(end_pose.x, 3), round(end_pose.y, 3), round(end_pose.hdg, 6)),
-                signals=set(), objects=set(), speed=_lane_speed(road, sign))
+                signals=set(), objects=set(), crosswalks=set(), speed=_lane_speed(road, sign))
 
     _assign_signals_and_objects(odr, skeleton)
     turns = _turns(odr, skeleton)
@@ -209,7 +210,8 @@ def build_index(odr: OpenDrive, sha256: str) -> MapIndex:
         speed_kmh = float(signs[0][6:]) if len(signs) == 1 else (
             round(fields["speed"] * 3.6, 1) if fields["speed"] else None)
         approaches.append(Approach(
-            **{k: v for k, v in fields.items() if k not in ("signals", "objects", "speed")},
+            **{k: v for k, v in fields.items() if k not in ("signals", "objects", "crosswalks", "speed")},
+            crosswalks=tuple(sorted(fields["crosswalks"])),
             signals=tuple(sorted(fields["signals"] - {"stop_line"} - set(signs))),
             objects=tuple(sorted(fields["objects"] | (fields["signals"] & {"stop_line"}) | set(signs))),
             speed_limit_kmh=speed_kmh, turns=tuple(turns.get(aid, ())), entering=entering.get(aid, {})))
@@ -328,7 +330,12 @@ def _assign_signals_and_objects(odr: OpenDrive, skeleton: dict) -> None:
                 targets = {approach_id(road.id, d) for d in _side_of(obj.orientation, obj.t)}
             for aid in targets:
                 if aid in skeleton:
-                    skeleton[aid]["objects"] |= words
+                    fields = skeleton[aid]
+                    fields["objects"] |= words
+                    if "crosswalk" in words:
+                        at = fields["length"] if road.junction != "-1" else (
+                            obj.s if fields["direction"] == "forward" else fields["length"] - obj.s)
+                        fields["crosswalks"].add(round(min(max(at, 0.0), fields["length"]), 3))
 
     for junction in odr.junctions.values():
         signals = [by_id[sid] for cid in junction.controllers for sid in odr.controllers.get(cid, ()) if sid in by_id]
