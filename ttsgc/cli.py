@@ -58,7 +58,7 @@ def _fmt(args) -> int:
 
 
 def _compile(args) -> int:
-    from ttsgc.pipeline import compile_scenario, write
+    from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 
     source = Path(args.input)
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt") else "tsg")
@@ -67,16 +67,42 @@ def _compile(args) -> int:
                          "write the scene in the scenario language (.tsg)")
     scenario = parse_file(source)
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
-    compiled = compile_scenario(scenario, out, maps=args.maps, seed=args.seed, version=args.osc_version)
+    log = lambda message: print(message, file=sys.stderr)  # noqa: E731
+    if args.no_simulate:
+        compiled, report = compile_scenario(scenario, out, maps=args.maps, seed=args.seed,
+                                            version=args.osc_version), None
+    else:
+        compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=args.seed,
+                                             version=args.osc_version, log=log)
     scene = compiled.scene
     if args.explain:
         print(scene.explanation)
+    if report is not None:
+        if args.report:
+            write_atomic(args.report, report.model_dump_json(indent=2) + "\n")
+        if not report.ok:
+            print(report.table(), file=sys.stderr)
+            print(f"ttsgc: error: the scene does not do what it says on any of the roads tried; nothing was "
+                  f"written (--no-simulate writes it unchecked)", file=sys.stderr)
+            return ExitCode.SIMULATION_FAILED
     write(compiled, out)
+    checked = f"; proven in SUMO ({report.simulated_s:.0f} s simulated)" if report is not None else ""
     print(f"{out}: {scene.map_name} approach {scene.approach} ({scene.score}/{scene.requirements} requirements, "
-          f"seed {scene.seed}), OpenSCENARIO {args.osc_version}; map copied as {out.parent / compiled.map_name}")
+          f"seed {scene.seed}), OpenSCENARIO {args.osc_version}; map copied as {out.parent / compiled.map_name}"
+          f"{checked}")
     if scene.unmet:
         print(f"ttsgc: warning: the chosen road does not meet: {', '.join(scene.unmet)}", file=sys.stderr)
     return ExitCode.OK
+
+
+def _validate(args) -> int:
+    from ttsgc.simulate.sumo import simulate
+
+    report = simulate(args.scene)
+    print(report.table())
+    if args.report:
+        write_atomic(args.report, report.model_dump_json(indent=2) + "\n")
+    return ExitCode.OK if report.ok else ExitCode.SIMULATION_FAILED
 
 
 def table(headers: list[str], rows: list[list[str]]) -> str:
@@ -177,7 +203,14 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"], default="1.3",
                           help="OpenSCENARIO version (1.0 is what CARLA ScenarioRunner reads; default 1.3)")
     compile_.add_argument("--no-simulate", action="store_true", help="skip the simulation check")
+    compile_.add_argument("--report", metavar="REPORT.json", help="write the simulation report as JSON")
     compile_.set_defaults(run=_compile)
+
+    validate = commands.add_parser("validate", help="run a .xosc in SUMO and check that every agent does "
+                                                    "what its intent says")
+    validate.add_argument("scene", metavar="SCENE.xosc")
+    validate.add_argument("--report", metavar="REPORT.json", help="write the report as JSON")
+    validate.set_defaults(run=_validate)
 
     maps_options = argparse.ArgumentParser(add_help=False)
     maps_options.add_argument("--maps", action="append", metavar="PATH",

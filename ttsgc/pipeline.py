@@ -9,6 +9,7 @@ from pathlib import Path
 
 from ttsgc.binding import BoundScene, bind
 from ttsgc.emit.xosc import DEFAULT_VERSION, emit
+from ttsgc.errors import TtsgcError
 from ttsgc.files import write_atomic
 from ttsgc.roads.retrieve import load_library
 from ttsgc.scenario import Scenario
@@ -36,6 +37,45 @@ def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None 
     scene = bind(scenario, load_library(maps), seed=seed, skip=skip)
     map_name = map_file_name(scene, out.parent)
     return Compiled(scene, emit(scene, map_name, version), map_name)
+
+
+MAX_SIMULATION_TRIES = 3
+
+
+def simulate_compiled(compiled: Compiled, out: Path):
+    """Run a compiled scene in SUMO from a scratch folder (the file as it will be written, map beside it)."""
+    import tempfile
+
+    from ttsgc.simulate.sumo import simulate
+
+    with tempfile.TemporaryDirectory(prefix="ttsgc-") as scratch:
+        trial = Path(scratch) / out.name
+        write(compiled, trial)
+        report = simulate(trial)
+    return report.model_copy(update={"scenario": str(out), "map": str(out.parent / compiled.map_name)})
+
+
+def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
+                      version: str = DEFAULT_VERSION, tries: int = MAX_SIMULATION_TRIES, log=print):
+    """Compile, then simulate; when the scene fails on its road, compile onto the next-ranked road, at most
+    `tries` roads in all. Returns (compiled, report) of the first that passes, else of the last tried."""
+    compiled = report = None
+    for attempt in range(tries):
+        try:
+            compiled = compile_scenario(scenario, out, maps, seed, version, skip=attempt)
+        except TtsgcError:
+            if attempt == 0:
+                raise
+            break  # no further candidate road
+        report = simulate_compiled(compiled, out)
+        if report.ok:
+            break
+        failed = [f"{a.name} ({a.reason})" for a in report.agents if not a.achieved] + \
+            [f"collision {c.a}/{c.b}" for c in report.collisions if not c.asked_for]
+        log(f"ttsgc: {compiled.scene.map_name} {compiled.scene.approach}: the scene failed in simulation: "
+            f"{'; '.join(failed) or '; '.join(report.problems)}"
+            + ("; trying the next-ranked road" if attempt + 1 < tries else ""))
+    return compiled, report
 
 
 def write(compiled: Compiled, out: Path) -> None:

@@ -73,6 +73,7 @@ class BoundAgent(_Data):
     cross_to: LanePos | None = None
     walk_to: LanePos | None = None
     trigger: Trigger | None = None
+    distance_to_ego_m: float = 0.0  # at the start, centre to centre
 
 
 @dataclass(frozen=True)
@@ -217,6 +218,7 @@ class Placer:
         self.occupied = _Occupancy()
         self.last_in_queue: dict[tuple, tuple[Agent, float, float]] = {}  # (stretch, lane, outward) -> last body
         self._later: list[tuple[str, Agent, float]] = []  # later-stage agents placed so far
+        self.ego_start: LanePos | None = None
         self.movement = ego_movement(scenario)
         self.ego_turn = self._pick_turn(approach, self.movement) if self.movement else None
         if self.movement and self.ego_turn is None:
@@ -266,7 +268,8 @@ class Placer:
         self.u_ego = max(u_ego, lowest)
         self.ego_lane = LaneRef("driving", self._ego_lane_rank())
         self.u_ego = self.occupied.slot(frame, self.ego_lane, self.u_ego, ego_len, -1)
-        placed = [self._bound(ego, 0, frame.resolve(self.ego_lane, self.u_ego), frame)]
+        self.ego_start = frame.resolve(self.ego_lane, self.u_ego)
+        placed = [self._bound(ego, 0, self.ego_start, frame)]
         for position in sorted(by_position, key=lambda p: list(V.POSITIONS).index(p)):
             downstream = position in ("front", "front_left", "front_right")
             for agent in _queue(by_position[position], downstream):
@@ -421,6 +424,11 @@ class Placer:
         if turn is not None and start is not None and agent.road_type == "driving":
             movement, target_road = turn.direction, turn.to_road
             route = self._route(start, frame, turn)
+        elif (start is not None and frame is self.frame and agent.road_type == "driving"
+              and self.frame.approach.junction is not None):
+            through = self._pick_turn(self.frame.approach, "straight") or self.ego_turn
+            if through is not None:  # traffic on the ego's road carries on through the junction
+                route = self._route(start, frame, through)
         lane_change = {"change_lane_to_left": 1, "change_lane_to_right": -1}.get(agent.action)
         if agent.action == "block_the_ego" and agent.relative_to_ego in LEFT_SIDE | RIGHT_SIDE:
             lane_change = -1 if agent.relative_to_ego in LEFT_SIDE else 1  # into the ego's lane
@@ -432,7 +440,11 @@ class Placer:
             road = self.odr.roads[start.road]
             ahead = 30.0 if (start.lane < 0) else -30.0  # along its side's driving direction
             walk_to = walk_to.model_copy(update={"s": round(min(max(start.s + ahead, 0.5), road.length - 0.5), 3)})
+        distance = 0.0
+        if start is not None and not agent.is_ego and self.ego_start is not None:
+            distance = round(distance_between(self.odr, start, self.ego_start), 3)
         return BoundAgent(
+            distance_to_ego_m=distance,
             name=agent.name, type=agent.type, is_ego=agent.is_ego, action=agent.action, behavior=agent.behavior,
             relative_to_ego=agent.relative_to_ego, road_type=agent.road_type, stage=stage, start=start,
             appear=appear, speed_mps=_speed(agent, frame.approach.speed_limit_kmh), length=length, width=width,
@@ -472,6 +484,6 @@ def heading_of(odr: OpenDrive, pos: LanePos) -> float:
     return odr.roads[pos.road].lane_point(pos.s, pos.lane).hdg
 
 
-def distance(odr: OpenDrive, a: LanePos, b: LanePos) -> float:
+def distance_between(odr: OpenDrive, a: LanePos, b: LanePos) -> float:
     pa, pb = odr.roads[a.road].lane_point(a.s, a.lane), odr.roads[b.road].lane_point(b.s, b.lane)
     return math.hypot(pa.x - pb.x, pa.y - pb.y)

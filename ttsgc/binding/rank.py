@@ -35,6 +35,8 @@ def ego_movement(scenario: Scenario) -> str | None:
     ego = scenario.ego
     if ego.action in ("turn_left", "turn_right"):
         return TURN_OF_ACTION[ego.action]
+    if ego.action != "go_straight":
+        return None
     if scenario.road.junction or any(a.relative_to_ego in JUNCTION_SIDE or a.relative_to_ego == "at_the_destination"
                                      for a in scenario.agents()):
         return "straight"

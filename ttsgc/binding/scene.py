@@ -26,6 +26,7 @@ class BoundScene(BaseModel):
     map_path: str
     map_sha256: str
     approach: str
+    approach_signals: tuple[str, ...]  # the signals controlling the chosen approach
     score: int
     requirements: int
     agents: tuple[BoundAgent, ...]
@@ -74,6 +75,7 @@ def _scene(scenario: Scenario, seed: int, chosen: Ranked, requirements: list[Req
            agents: list[BoundAgent]) -> BoundScene:
     unmet = tuple(r.column for r, met in zip(requirements, chosen.met) if not met)
     return BoundScene(scenario=scenario, seed=seed, map_name=chosen.index.name, map_path=chosen.index.path,
-                      map_sha256=chosen.index.sha256, approach=chosen.approach.id, score=chosen.score,
+                      map_sha256=chosen.index.sha256, approach=chosen.approach.id,
+                      approach_signals=chosen.approach.signals, score=chosen.score,
                       requirements=len(requirements), agents=tuple(agents), unmet=unmet,
                       explanation=explain(requirements, ranked))

@@ -128,23 +128,32 @@ def _environment(condition: str, time: str, minor: int) -> xosc.Environment:
                             xosc.RoadCondition(FRICTION[condition]))
 
 
+SIGNAL_WAIT_S = 50.0  # a red light can hold a junction movement for most of a signal cycle
+
+
 def stage_durations(scene: BoundScene) -> list[float]:
-    """How long each stage takes: the slowest agent's action, bounded; the next stage starts after it."""
+    """How long each stage takes: its slowest agent's action, waiting for its trigger included, bounded;
+    the next stage starts after it and the stop trigger after them all."""
+    ego = next(a for a in scene.agents if a.is_ego)
+    signalised = "traffic_light" in scene.approach_signals
     durations = []
     for k, _ in enumerate(scene.scenario.stages):
         longest = 4.0
         for agent in scene.agents:
             if agent.stage != k:
                 continue
-            delay = agent.trigger.after_s if agent.trigger and agent.trigger.after_s else 0.0
+            wait = agent.trigger.after_s if agent.trigger and agent.trigger.after_s else 0.0
+            if agent.trigger and agent.trigger.within_m is not None:
+                wait += max(0.0, agent.distance_to_ego_m - agent.trigger.within_m) / max(ego.speed_mps, 1.0)
             speed = max(agent.speed_mps, 1.0)
             if agent.movement:
-                longest = max(longest, delay + 45.0 / speed)
+                action = 45.0 / speed + (SIGNAL_WAIT_S if signalised else 0.0)
             elif agent.cross_to is not None:
-                longest = max(longest, delay + 20.0 / speed)
+                action = 25.0 / speed
             else:
-                longest = max(longest, delay + 6.0)
-        durations.append(round(min(longest, 40.0), 3))
+                action = 6.0
+            longest = max(longest, wait + action)
+        durations.append(round(min(longest, 120.0), 3))
     return durations
 
 
@@ -155,10 +164,17 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
                                   xosc.SimulationTimeCondition(0, xosc.Rule.greaterOrEqual if minor >= 1
                                                                else xosc.Rule.greaterThan))
     else:
-        start = xosc.ValueTrigger(f"{name}_start", durations[k - 1], xosc.ConditionEdge.rising,
-                                  xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.act,
-                                                                       acts[k - 1].name,
-                                                                       xosc.StoryboardElementState.endTransition))
+        ego = next(a for a in scene.agents if a.is_ego)
+        if k == 1 and ego.route:  # the ego's movement ends the first stage: when it reaches the far road
+            start = xosc.EntityTrigger(f"{name}_start", 0, xosc.ConditionEdge.rising,
+                                       xosc.DistanceCondition(10.0, xosc.Rule.lessThan, _lane_position(ego.route[-1]),
+                                                              alongroute=False, freespace=False,
+                                                              distance_type=_EUCLIDEAN[minor >= 1]), ego.name)
+        else:
+            start = xosc.ValueTrigger(f"{name}_start", durations[k - 1], xosc.ConditionEdge.rising,
+                                      xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.act,
+                                                                           acts[k - 1].name,
+                                                                           xosc.StoryboardElementState.endTransition))
     act = xosc.Act(name, start)
     priority = xosc.Priority.override if minor >= 2 else xosc.Priority.overwrite
     for agent in scene.agents:
@@ -223,11 +239,15 @@ def _events(agent: BoundAgent, scene: BoundScene, stage_name: str, minor: int):
     label = f"{agent.name}_{agent.action}"
     start = _start_trigger(agent, stage_name, label, minor)
     actions = []
-    if agent.route:
+    if agent.route:  # where it drives is set at once; the action itself may wait for its trigger
         route = xosc.Route(f"{agent.name}_route")
         for point in agent.route:
             route.add_waypoint(_lane_position(point), xosc.RouteStrategy.shortest)
-        actions.append(("route", xosc.AssignRouteAction(route)))
+        route_action = ("route", xosc.AssignRouteAction(route))
+        if agent.trigger is None:
+            actions.append(route_action)
+        else:
+            events.append((f"{agent.name}_route", [route_action], now))
     if agent.lane_change is not None:
         actions.append(("lane_change", xosc.RelativeLaneChangeAction(
             agent.lane_change, agent.name,

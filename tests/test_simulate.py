@@ -1,0 +1,218 @@
+"""The SUMO backend: every example proves itself, each action's check passes and fails when it should,
+collisions are reported, unsupported content is named, the commands' exit codes."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+from conftest import EXAMPLES, example_scenarios
+from ttsgc.cli import main
+from ttsgc.language import parse_file
+from ttsgc.pipeline import compile_and_prove, compile_scenario, write
+from ttsgc.simulate.sumo import simulate
+
+
+def _compiled(name: str, folder: Path) -> Path:
+    out = folder / f"{name}.xosc"
+    write(compile_scenario(parse_file(EXAMPLES / f"{name}.tsg"), out), out)
+    return out
+
+
+def _edit(path: Path, change) -> Path:
+    tree = etree.parse(str(path))
+    change(tree.getroot())
+    tree.write(str(path))
+    return path
+
+
+def _result(report, name):
+    return next(a for a in report.agents if a.name == name)
+
+
+@pytest.mark.parametrize("path", example_scenarios(), ids=lambda p: p.stem)
+def test_every_example_proves_itself_in_sumo(path, tmp_path):
+    report = simulate(_compiled(path.stem, tmp_path))
+    assert report.ok, report.table()
+    assert not report.unsupported and not report.problems
+
+
+def test_simulation_is_deterministic(tmp_path):
+    scene = _compiled("intersection", tmp_path)
+    first, second = simulate(scene), simulate(scene)
+    assert first.model_dump() == second.model_dump()
+
+
+# -- each action: it passes, and an edited file fails it ------------------------------------------------
+
+def _last_waypoint(root, name):
+    return root.find(f".//ManeuverGroup[@name='{name}_group']//Route").findall(".//LanePosition")[-1]
+
+
+def test_turn_left_fails_when_the_car_goes_straight_instead(tmp_path):
+    scene = _compiled("left_turn_oncoming", tmp_path)
+    assert _result(simulate(scene), "ego").achieved
+    # send the ego where the oncoming cars come from: straight across instead of left
+    def straight(root):
+        oncoming = _last_waypoint(root, "oncoming1")
+        road_ego = root.find(".//Private[@entityRef='ego']//LanePosition").get("roadId")
+        target = _last_waypoint(root, "ego")
+        target.set("roadId", root.find(".//Private[@entityRef='oncoming1']//LanePosition").get("roadId"))
+        target.set("laneId", str(-int(root.find(".//Private[@entityRef='oncoming1']//LanePosition").get("laneId"))))
+        assert road_ego != target.get("roadId") and oncoming is not None
+        for waypoint in root.find(".//ManeuverGroup[@name='ego_group']//Route").findall("Waypoint")[1:-1]:
+            waypoint.getparent().remove(waypoint)
+    result = _result(simulate(_edit(scene, straight)), "ego")
+    assert not result.achieved and "where its left movement leads" in result.reason
+
+
+def test_lane_change_and_its_failure(tmp_path):
+    scene = _compiled("cut_off", tmp_path)
+    assert "changed 1 lane(s) to the right" in _result(simulate(scene), "cutter").reason
+    def no_change(root):
+        change = root.find(".//Event[@name='cutter_change_lane_to_right']//LaneChangeAction")
+        change.getparent().getparent().getparent().remove(change.getparent().getparent())
+    result = _result(simulate(_edit(scene, no_change)), "cutter")
+    assert not result.achieved and "did not change to the right" in result.reason
+
+
+def test_stop_and_its_failure(tmp_path):
+    scene = _compiled("yield_sudden_stop", tmp_path)
+    assert _result(simulate(scene), "lead").achieved
+    def keep_going(root):
+        for target in root.find(".//Event[@name='lead_stop']").iter("AbsoluteTargetSpeed"):
+            target.set("value", "6.0")
+    result = _result(simulate(_edit(scene, keep_going)), "lead")
+    assert not result.achieved and "never stood still" in result.reason
+
+
+def test_block_the_ego_and_its_failure(tmp_path):
+    scene = _compiled("blocking", tmp_path)
+    assert "the ego slowed" in _result(simulate(scene), "blocker").reason
+    def drive_off(root):
+        for target in root.find(".//Event[@name='blocker_block_the_ego']").iter("AbsoluteTargetSpeed"):
+            target.set("value", "15.0")
+    assert not _result(simulate(_edit(scene, drive_off)), "blocker").achieved
+
+
+def test_cross_the_road_and_its_failure(tmp_path):
+    scene = _compiled("crushing", tmp_path)
+    assert "crossed road" in _result(simulate(scene), "walker").reason
+    def stay(root):
+        start = root.find(".//Private[@entityRef='walker']//LanePosition")
+        target = root.find(".//Event[@name='walker_cross_the_road']//AcquirePositionAction//LanePosition")
+        target.set("laneId", start.get("laneId"))
+    result = _result(simulate(_edit(scene, stay)), "walker")
+    assert not result.achieved and "stayed on the" in result.reason
+
+
+def test_on_the_sidewalk_and_its_failure(tmp_path):
+    scene = _compiled("daily_traffic", tmp_path)
+    assert "along the sidewalk" in _result(simulate(scene), "p1").reason
+    def into_the_road(root):
+        target = root.find(".//Event[@name='p1_on_the_sidewalk']//AcquirePositionAction//LanePosition")
+        target.set("laneId", "-1" if int(target.get("laneId")) < 0 else "1")
+    result = _result(simulate(_edit(scene, into_the_road)), "p1")
+    assert not result.achieved and "straying" in result.reason
+
+
+def test_go_straight_through_a_junction_and_its_failure(tmp_path):
+    scene = _compiled("emergency", tmp_path)
+    assert "went straight" in _result(simulate(scene), "a1").reason
+    def turn_instead(root):  # into the side road the police car comes from, leaving the junction
+        side_road = root.find(".//Private[@entityRef='p1']//LanePosition").get("roadId")
+        target = _last_waypoint(root, "a1")
+        target.set("roadId", side_road)
+        target.set("laneId", "-1")
+        for waypoint in root.find(".//ManeuverGroup[@name='a1_group']//Route").findall("Waypoint")[1:-1]:
+            waypoint.getparent().remove(waypoint)
+    result = _result(simulate(_edit(scene, turn_instead)), "a1")
+    assert not result.achieved and "where its straight movement leads" in result.reason
+
+
+def test_a_spawn_on_a_lane_that_does_not_exist_fails(tmp_path):
+    scene = _compiled("cut_off", tmp_path)
+    def bad_lane(root):
+        root.find(".//Private[@entityRef='lead']//LanePosition").set("laneId", "-9")
+    result = _result(simulate(_edit(scene, bad_lane)), "lead")
+    assert not result.achieved and "could not be spawned" in result.reason
+
+
+# -- collisions, unsupported content, criticality --------------------------------------------------------
+
+def test_collisions_are_reported_with_who_when_where(tmp_path):
+    report = simulate(_compiled("intersection", tmp_path))
+    hit = [c for c in report.collisions if {c.a, c.b} == {"ego", "p1"}]
+    assert hit and hit[0].asked_for and hit[0].time_s > 0 and isinstance(hit[0].x, float)
+    assert report.ok  # a crossing pedestrian aims at the ego's path: the scene asked for it
+
+
+def test_an_unasked_collision_fails_the_scene(tmp_path):
+    scene = _compiled("daily_traffic", tmp_path)
+    def walk_into_the_ego(root):  # a fast walker stops in the ego's lane just before the ego gets there
+        ego = root.find(".//Private[@entityRef='ego']//LanePosition")
+        target = root.find(".//Event[@name='p1_on_the_sidewalk']//AcquirePositionAction//LanePosition")
+        for key in ("roadId", "laneId"):
+            target.set(key, ego.get(key))
+        target.set("s", str(float(ego.get("s")) + 45))
+        root.find(".//Private[@entityRef='p1']//AbsoluteTargetSpeed").set("value", "12")
+    report = simulate(_edit(scene, walk_into_the_ego))
+    assert any(not c.asked_for for c in report.collisions) and not report.ok
+
+
+def test_unsupported_content_is_reported_by_name(tmp_path):
+    scene = _compiled("cut_off", tmp_path)
+    def visibility(root):
+        private = root.find(".//Event[@name='lead_go_straight']//PrivateAction")
+        action = etree.SubElement(private.getparent(), "PrivateAction")
+        etree.SubElement(action, "VisibilityAction", graphics="false", traffic="true", sensors="true")
+    report = simulate(_edit(scene, visibility))
+    assert "action VisibilityAction" in report.unsupported
+
+
+def test_criticality_to_the_ego(tmp_path):
+    report = simulate(_compiled("cut_off", tmp_path))
+    assert report.min_distance_to_ego is not None and report.min_distance_agent in ("cutter", "lead")
+    assert report.min_ttc_to_ego is not None and report.min_ttc_to_ego > 0
+
+
+# -- commands -------------------------------------------------------------------------------------------
+
+def test_validate_command_and_its_report(tmp_path, capsys):
+    scene = _compiled("stop_sign_right_turn", tmp_path)
+    report_path = tmp_path / "report.json"
+    assert main(["validate", str(scene), "--report", str(report_path)]) == 0
+    assert "✓" in capsys.readouterr().out
+    data = json.loads(report_path.read_text())
+    assert data["ok"] is True and {"name", "action", "achieved", "reason"} <= set(data["agents"][0])
+    assert "collisions" in data and "min_ttc_to_ego" in data
+    _edit(scene, lambda root: root.find(".//Private[@entityRef='k1']//LanePosition").set("laneId", "-9"))
+    assert main(["validate", str(scene)]) == 5
+
+
+def test_compile_proves_the_scene_and_writes_the_report(tmp_path):
+    out, report = tmp_path / "s.xosc", tmp_path / "r.json"
+    assert main(["compile", str(EXAMPLES / "left_turn_oncoming.tsg"), "-o", str(out), "--report", str(report)]) == 0
+    data = json.loads(report.read_text())
+    assert data["ok"] and data["scenario"] == str(out)
+
+
+def test_compile_tries_the_next_road_when_the_scene_fails(tmp_path, monkeypatch):
+    import ttsgc.pipeline as pipeline
+
+    real = pipeline.simulate_compiled
+    seen = []
+
+    def failing_first(compiled, out):
+        report = real(compiled, out)
+        seen.append(compiled.scene.approach)
+        return report.model_copy(update={"ok": len(seen) > 1})
+    monkeypatch.setattr(pipeline, "simulate_compiled", failing_first)
+    messages = []
+    compiled, report = compile_and_prove(parse_file(EXAMPLES / "intersection.tsg"), tmp_path / "x.xosc",
+                                         log=messages.append)
+    assert report.ok and len(seen) == 2 and seen[0] != seen[1]
+    assert "trying the next-ranked road" in messages[0]
