@@ -285,7 +285,7 @@ def test_compile_writes_the_map_beside_the_output_and_runs_anywhere(tmp_path, mo
 def test_compile_explain_prints_the_ranking_table(tmp_path, capsys):
     assert main(["compile", str(EXAMPLES / "emergency.tsg"), "-o", str(tmp_path / "e.xosc"), "--explain"]) == 0
     out = capsys.readouterr().out
-    assert "road_of_left_turn (p1)" in out and "total" in out and "8/8" in out
+    assert "road_of_left_turn (po1)" in out and "total" in out and "8/8" in out
 
 
 def test_no_road_is_its_own_exit_code_and_leaves_outputs_alone(tmp_path, capsys):

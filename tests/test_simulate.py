@@ -57,11 +57,11 @@ def test_turn_left_fails_when_the_car_goes_straight_instead(tmp_path):
     assert _result(simulate(scene), "ego").achieved
     # send the ego where the oncoming cars come from: straight across instead of left
     def straight(root):
-        oncoming = _last_waypoint(root, "oncoming1")
+        oncoming = _last_waypoint(root, "c1")
         road_ego = root.find(".//Private[@entityRef='ego']//LanePosition").get("roadId")
         target = _last_waypoint(root, "ego")
-        target.set("roadId", root.find(".//Private[@entityRef='oncoming1']//LanePosition").get("roadId"))
-        target.set("laneId", str(-int(root.find(".//Private[@entityRef='oncoming1']//LanePosition").get("laneId"))))
+        target.set("roadId", root.find(".//Private[@entityRef='c1']//LanePosition").get("roadId"))
+        target.set("laneId", str(-int(root.find(".//Private[@entityRef='c1']//LanePosition").get("laneId"))))
         assert road_ego != target.get("roadId") and oncoming is not None
         for waypoint in root.find(".//ManeuverGroup[@name='ego_group']//Route").findall("Waypoint")[1:-1]:
             waypoint.getparent().remove(waypoint)
@@ -71,41 +71,41 @@ def test_turn_left_fails_when_the_car_goes_straight_instead(tmp_path):
 
 def test_lane_change_and_its_failure(tmp_path):
     scene = _compiled("cut_off", tmp_path)
-    assert "changed 1 lane(s) to the right" in _result(simulate(scene), "cutter").reason
+    assert "changed 1 lane(s) to the right" in _result(simulate(scene), "c1").reason
     def no_change(root):
-        change = root.find(".//Event[@name='cutter_change_lane_to_right']//LaneChangeAction")
+        change = root.find(".//Event[@name='c1_change_lane_to_right']//LaneChangeAction")
         change.getparent().getparent().getparent().remove(change.getparent().getparent())
-    result = _result(simulate(_edit(scene, no_change)), "cutter")
+    result = _result(simulate(_edit(scene, no_change)), "c1")
     assert not result.achieved and "did not change to the right" in result.reason
 
 
 def test_stop_and_its_failure(tmp_path):
     scene = _compiled("yield_sudden_stop", tmp_path)
-    assert _result(simulate(scene), "lead").achieved
+    assert _result(simulate(scene), "c1").achieved
     def keep_going(root):
-        for target in root.find(".//Event[@name='lead_stop']").iter("AbsoluteTargetSpeed"):
+        for target in root.find(".//Event[@name='c1_stop']").iter("AbsoluteTargetSpeed"):
             target.set("value", "6.0")
-    result = _result(simulate(_edit(scene, keep_going)), "lead")
+    result = _result(simulate(_edit(scene, keep_going)), "c1")
     assert not result.achieved and "never stood still" in result.reason
 
 
 def test_block_the_ego_and_its_failure(tmp_path):
     scene = _compiled("blocking", tmp_path)
-    assert "the ego slowed" in _result(simulate(scene), "blocker").reason
+    assert "the ego slowed" in _result(simulate(scene), "c1").reason
     def drive_off(root):
-        for target in root.find(".//Event[@name='blocker_block_the_ego']").iter("AbsoluteTargetSpeed"):
+        for target in root.find(".//Event[@name='c1_block_the_ego']").iter("AbsoluteTargetSpeed"):
             target.set("value", "15.0")
-    assert not _result(simulate(_edit(scene, drive_off)), "blocker").achieved
+    assert not _result(simulate(_edit(scene, drive_off)), "c1").achieved
 
 
 def test_cross_the_road_and_its_failure(tmp_path):
     scene = _compiled("crushing", tmp_path)
-    assert "crossed road" in _result(simulate(scene), "walker").reason
+    assert "crossed road" in _result(simulate(scene), "p1").reason
     def stay(root):
-        start = root.find(".//Private[@entityRef='walker']//LanePosition")
-        target = root.find(".//Event[@name='walker_cross_the_road']//AcquirePositionAction//LanePosition")
+        start = root.find(".//Private[@entityRef='p1']//LanePosition")
+        target = root.find(".//Event[@name='p1_cross_the_road']//AcquirePositionAction//LanePosition")
         target.set("laneId", start.get("laneId"))
-    result = _result(simulate(_edit(scene, stay)), "walker")
+    result = _result(simulate(_edit(scene, stay)), "p1")
     assert not result.achieved and "stayed on the" in result.reason
 
 
@@ -123,7 +123,7 @@ def test_go_straight_through_a_junction_and_its_failure(tmp_path):
     scene = _compiled("emergency", tmp_path)
     assert "went straight" in _result(simulate(scene), "a1").reason
     def turn_instead(root):  # into the side road the police car comes from, leaving the junction
-        side_road = root.find(".//Private[@entityRef='p1']//LanePosition").get("roadId")
+        side_road = root.find(".//Private[@entityRef='po1']//LanePosition").get("roadId")
         target = _last_waypoint(root, "a1")
         target.set("roadId", side_road)
         target.set("laneId", "-1")
@@ -136,8 +136,8 @@ def test_go_straight_through_a_junction_and_its_failure(tmp_path):
 def test_a_spawn_on_a_lane_that_does_not_exist_fails(tmp_path):
     scene = _compiled("cut_off", tmp_path)
     def bad_lane(root):
-        root.find(".//Private[@entityRef='lead']//LanePosition").set("laneId", "-9")
-    result = _result(simulate(_edit(scene, bad_lane)), "lead")
+        root.find(".//Private[@entityRef='c2']//LanePosition").set("laneId", "-9")
+    result = _result(simulate(_edit(scene, bad_lane)), "c2")
     assert not result.achieved and "could not be spawned" in result.reason
 
 
@@ -166,7 +166,7 @@ def test_an_unasked_collision_fails_the_scene(tmp_path):
 def test_unsupported_content_is_reported_by_name(tmp_path):
     scene = _compiled("cut_off", tmp_path)
     def visibility(root):
-        private = root.find(".//Event[@name='lead_go_straight']//PrivateAction")
+        private = root.find(".//Event[@name='c2_go_straight']//PrivateAction")
         action = etree.SubElement(private.getparent(), "PrivateAction")
         etree.SubElement(action, "VisibilityAction", graphics="false", traffic="true", sensors="true")
     report = simulate(_edit(scene, visibility))
@@ -175,7 +175,7 @@ def test_unsupported_content_is_reported_by_name(tmp_path):
 
 def test_criticality_to_the_ego(tmp_path):
     report = simulate(_compiled("cut_off", tmp_path))
-    assert report.min_distance_to_ego is not None and report.min_distance_agent in ("cutter", "lead")
+    assert report.min_distance_to_ego is not None and report.min_distance_agent in ("c1", "c2")
     assert report.min_ttc_to_ego is not None and report.min_ttc_to_ego > 0
 
 

@@ -57,34 +57,87 @@ def _fmt(args) -> int:
     return ExitCode.NOT_FORMATTED if unformatted else ExitCode.OK
 
 
+def _read_prompt(path: Path) -> str:
+    from ttsgc.lowering import LoweringError
+
+    try:
+        return path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise LoweringError(f"{path}: cannot read the prompt: {exc}") from None
+
+
+def _lower_file(args, source: Path, seed: int):
+    from ttsgc.lowering import lower_prompt
+    from ttsgc.lowering.llm import LlmSettings
+
+    prompt = _read_prompt(source)
+    settings = LlmSettings.from_env(args.model, args.temperature, args.max_tokens)
+    lowering = lower_prompt(prompt, args.llm, seed=seed, settings=settings)
+    if lowering.unknown:
+        print(f"ttsgc: warning: {source}: words not understood: {', '.join(lowering.unknown)}", file=sys.stderr)
+    return prompt, lowering
+
+
+def _lower(args) -> int:
+    source = Path(args.input)
+    prompt, lowering = _lower_file(args, source, args.seed or 0)
+    text = lowering.tsg(prompt)
+    if args.output:
+        write_atomic(args.output, text)
+        print(f"{args.output}: lowered ({lowering.method}, {lowering.tries} tr{'y' if lowering.tries == 1 else 'ies'})")
+    else:
+        print(text, end="")
+    return ExitCode.OK
+
+
 def _compile(args) -> int:
     from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 
     source = Path(args.input)
-    kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt") else "tsg")
-    if kind == "text":
-        raise TtsgcError("English prompts are lowered by 'ttsgc lower'; this installation cannot lower them yet: "
-                         "write the scene in the scenario language (.tsg)")
-    scenario = parse_file(source)
+    kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
+    base_seed = args.seed
+    status = ExitCode.OK
+    for k in range(args.variants):
+        seed = None if base_seed is None and args.variants == 1 else (base_seed or 0) + k
+        target = out if args.variants == 1 else out.with_name(f"{out.stem}-{k + 1}{out.suffix}")
+        lowering = None
+        if kind == "text":
+            prompt, lowering = _lower_file(args, source, seed or 0)
+            scenario = lowering.scenario
+            write_atomic(target.with_suffix(".tsg"), lowering.tsg(prompt))  # to edit and compile again
+        else:
+            scenario = parse_file(source)
+        status = max(status, _compile_one(args, scenario, target, seed, lowering))
+    return status
+
+
+def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
+    from ttsgc.pipeline import compile_and_prove, compile_scenario, write
+
     log = lambda message: print(message, file=sys.stderr)  # noqa: E731
     if args.no_simulate:
-        compiled, report = compile_scenario(scenario, out, maps=args.maps, seed=args.seed,
+        compiled, report = compile_scenario(scenario, out, maps=args.maps, seed=seed,
                                             version=args.osc_version), None
     else:
-        compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=args.seed,
+        compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=seed,
                                              version=args.osc_version, log=log)
     scene = compiled.scene
     if args.explain:
         print(scene.explanation)
-    if report is not None:
-        if args.report:
-            write_atomic(args.report, report.model_dump_json(indent=2) + "\n")
-        if not report.ok:
-            print(report.table(), file=sys.stderr)
-            print(f"ttsgc: error: the scene does not do what it says on any of the roads tried; nothing was "
-                  f"written (--no-simulate writes it unchecked)", file=sys.stderr)
-            return ExitCode.SIMULATION_FAILED
+    if args.report:
+        data = report.model_dump(mode="json") if report is not None else {"ok": None, "simulated": False}
+        if lowering is not None:
+            data["lowering"] = lowering.summary()
+        report_path = Path(args.report)
+        if args.variants > 1:
+            report_path = report_path.with_name(f"{report_path.stem}-{out.stem.rsplit('-', 1)[-1]}{report_path.suffix}")
+        write_atomic(report_path, json.dumps(data, indent=2) + "\n")
+    if report is not None and not report.ok:
+        print(report.table(), file=sys.stderr)
+        print(f"ttsgc: error: {out}: the scene does not do what it says on any of the roads tried; nothing was "
+              f"written (--no-simulate writes it unchecked)", file=sys.stderr)
+        return ExitCode.SIMULATION_FAILED
     write(compiled, out)
     checked = f"; proven in SUMO ({report.simulated_s:.0f} s simulated)" if report is not None else ""
     print(f"{out}: {scene.map_name} approach {scene.approach} ({scene.score}/{scene.requirements} requirements, "
@@ -190,11 +243,28 @@ def build_parser() -> argparse.ArgumentParser:
     fmt.add_argument("--check", action="store_true", help="change nothing; exit 7 if a file would change")
     fmt.set_defaults(run=_fmt)
 
-    compile_ = commands.add_parser("compile", help="compile a scene (.tsg) to OpenSCENARIO on a fitting road")
-    compile_.add_argument("input", metavar="INPUT", help="a .tsg scene")
+    llm_options = argparse.ArgumentParser(add_help=False)
+    llm_options.add_argument("--llm", choices=["auto", "offline", "anthropic"], default="auto",
+                             help="how English is lowered: the offline rules, or Claude through the anthropic SDK "
+                                  "(auto: anthropic when ANTHROPIC_API_KEY is set, else offline)")
+    llm_options.add_argument("--model", help="the LLM model (default: $TTSGC_MODEL, else a current Claude model)")
+    llm_options.add_argument("--temperature", type=float, help="LLM temperature (default: $TTSGC_TEMPERATURE, else 0)")
+    llm_options.add_argument("--max-tokens", type=int, help="LLM answer limit (default: $TTSGC_MAX_TOKENS, else 2048)")
+
+    lower_ = commands.add_parser("lower", parents=[llm_options], help="lower an English prompt into a .tsg scene")
+    lower_.add_argument("input", metavar="PROMPT.txt")
+    lower_.add_argument("-o", "--output", metavar="SCENE.tsg", help="where to write (default: print it)")
+    lower_.add_argument("--seed", type=int, help="picks among a scene kind's variants")
+    lower_.set_defaults(run=_lower)
+
+    compile_ = commands.add_parser("compile", parents=[llm_options],
+                                   help="compile English (.txt) or a scene (.tsg) to OpenSCENARIO on a fitting road")
+    compile_.add_argument("input", metavar="INPUT", help="a prompt (.txt) or a scene (.tsg)")
     compile_.add_argument("-o", "--output", metavar="OUT.xosc", help="where to write (default: INPUT with .xosc)")
     compile_.add_argument("--from", dest="source_kind", choices=["text", "tsg"],
                           help="the input's kind (default: by extension, .txt is English)")
+    compile_.add_argument("--variants", type=int, default=1, metavar="N",
+                          help="compile N different scenes (seeds N..N+k: other roads, other agent choices)")
     compile_.add_argument("--maps", action="append", metavar="PATH",
                           help="an OpenDRIVE file or folder (repeatable); 'builtin' is the built-in library")
     compile_.add_argument("--seed", type=int, help="pins the choice among equally ranked roads "

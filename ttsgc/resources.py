@@ -1,4 +1,4 @@
-"""Where the top-level data folders (grammar/, templates/, maps/) are, installed or in a checkout.
+"""Where the top-level data folders (grammar/, templates/, maps/, examples/) are, installed or in a checkout.
 
 A wheel carries them inside the package (ttsgc/grammar, ...); a source checkout or an editable install
 finds them beside the package at the repository's top level.
@@ -12,7 +12,7 @@ _PACKAGE = Path(__file__).resolve().parent
 
 
 def resource_dir(name: str) -> Path:
-    """The folder `name` (grammar, templates or maps), wherever this installation keeps it."""
+    """The folder `name` (grammar, templates, maps or examples), wherever this installation keeps it."""
     for candidate in (_PACKAGE / name, _PACKAGE.parent / name):
         if candidate.is_dir():
             return candidate
