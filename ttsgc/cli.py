@@ -148,6 +148,65 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
     return ExitCode.OK
 
 
+def _eval(args) -> int:
+    from ttsgc.evaluate import evaluate, progress_bar, report_json, table
+    from ttsgc.lowering import choose_method
+
+    runs = evaluate(Path(args.suite), seeds=args.seeds, maps=args.maps, method=choose_method(args.llm),
+                    simulate=not args.no_simulate, progress=progress_bar)
+    print(table(runs))
+    failed = [r for r in runs if not r.ok]
+    for r in failed[: args.show_failures]:
+        print(f"  failed: {r.case} seed {r.seed} at {r.failed_at}: {r.reason}")
+    if len(failed) > args.show_failures:
+        print(f"  ... and {len(failed) - args.show_failures} more failed run(s) (see --report)")
+    if args.report:
+        write_atomic(args.report, report_json(runs) + "\n")
+    return ExitCode.OK
+
+
+def _import_ttsg(args) -> int:
+    from ttsgc.pipeline import compile_and_prove, write
+    from ttsgc.roads.retrieve import load_library
+    from ttsgc.ttsg_import import import_plan
+
+    imported = import_plan(args.plan, args.road_info)
+    text = format_scenario(imported.scenario)
+    write_atomic(args.output, text)
+    print(f"{args.output}: imported" + (f" ({len(imported.notes)} repair(s) noted in the file)"
+                                        if imported.notes else ""))
+    for note in imported.notes:
+        print(f"ttsgc: note: {note}", file=sys.stderr)
+    if not args.xosc:
+        return ExitCode.OK
+    out, only = Path(args.xosc), None
+    paper = imported.paper_road
+    if paper is not None:
+        towns = {m.name for m in load_library(args.maps)}
+        if paper.town not in towns:
+            print(f"the paper's road: {paper.town} road {paper.road} ({paper.direction}); {paper.town} is not in the "
+                  f"map library, ranking as usual")
+        else:
+            try:
+                compiled, report = compile_and_prove(imported.scenario, out, args.maps, log=lambda m: None,
+                                                     only=(paper.town, paper.approach), tries=1)
+                fits = report.ok
+                print(f"the paper's road: {paper.town} {paper.approach}: "
+                      f"{'fits and validates' if fits else 'compiles but fails in simulation'}")
+                only = (paper.town, paper.approach) if fits else None
+            except TtsgcError as exc:
+                print(f"the paper's road: {paper.town} {paper.approach}: does not fit ({str(exc).splitlines()[0]})")
+    compiled, report = compile_and_prove(imported.scenario, out, args.maps, only=only,
+                                         log=lambda m: print(m, file=sys.stderr))
+    if not report.ok:
+        print(report.table(), file=sys.stderr)
+        return ExitCode.SIMULATION_FAILED
+    write(compiled, out)
+    print(f"{out}: {compiled.scene.map_name} {compiled.scene.approach}"
+          f"{' (the paper' + chr(39) + 's road)' if only else ' (ranked)'}; proven in SUMO")
+    return ExitCode.OK
+
+
 def _validate(args) -> int:
     from ttsgc.simulate.sumo import simulate
 
@@ -281,6 +340,26 @@ def build_parser() -> argparse.ArgumentParser:
     validate.add_argument("scene", metavar="SCENE.xosc")
     validate.add_argument("--report", metavar="REPORT.json", help="write the report as JSON")
     validate.set_defaults(run=_validate)
+
+    eval_ = commands.add_parser("eval", parents=[llm_options],
+                                help="the paper's metrics (AA, RA, SA, AD, RD, failure rate) on a suite")
+    eval_.add_argument("suite", metavar="SUITE", help="a folder of prompts (*.txt, gold *.tsg beside) or TTSG plans")
+    eval_.add_argument("--seeds", type=int, default=5, help="generations per case (default 5)")
+    eval_.add_argument("--maps", action="append", metavar="PATH", help="map files or folders ('builtin' for the "
+                                                                       "built-in library)")
+    eval_.add_argument("--report", metavar="EVAL.json", help="write every run and the summaries as JSON")
+    eval_.add_argument("--no-simulate", action="store_true", help="compile only (SA then counts compiles)")
+    eval_.add_argument("--show-failures", type=int, default=10, metavar="N", help="list up to N failed runs")
+    eval_.set_defaults(run=_eval)
+
+    importer = commands.add_parser("import-ttsg", help="turn a TTSG plan (agent_output.json) into a .tsg scene")
+    importer.add_argument("plan", metavar="agent_output.json")
+    importer.add_argument("road_info", nargs="?", metavar="road_info.json", help="the road the paper chose")
+    importer.add_argument("-o", "--output", required=True, metavar="SCENE.tsg")
+    importer.add_argument("--xosc", metavar="OUT.xosc", help="also compile it: onto the paper's road when its town "
+                                                              "is in --maps and the scene fits, else ranked")
+    importer.add_argument("--maps", action="append", metavar="PATH")
+    importer.set_defaults(run=_import_ttsg)
 
     maps_options = argparse.ArgumentParser(add_help=False)
     maps_options.add_argument("--maps", action="append", metavar="PATH",

@@ -1,4 +1,4 @@
-"""The paper's quality figures (TTSG appendix, "Metrics Definition"), computed on scenarios.
+"""The paper's quality figures (TTSG appendix, "Metrics Definition"), and suites to measure them on.
 
 AA, agent accuracy: agents matched on (type, action, position) / max(#gold, #predicted).
 RA, road accuracy: road properties matched (lanes, junction, required and forbidden signals and objects)
@@ -7,8 +7,17 @@ RA, road accuracy: road properties matched (lanes, junction, required and forbid
 
 from __future__ import annotations
 
+import json
+import statistics
+import sys
+import tempfile
+import time
+import tomllib
 from collections import Counter
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
 
+from ttsgc.errors import TtsgcError
 from ttsgc.scenario import Scenario
 
 
@@ -34,3 +43,193 @@ def agent_accuracy(gold: Scenario, predicted: Scenario) -> float:
 def road_accuracy(gold: Scenario, predicted: Scenario) -> float:
     g, p = road_keys(gold), road_keys(predicted)
     return len(g & p) / max(len(g), len(p), 1)
+
+
+# -- suites ---------------------------------------------------------------------------------------------
+
+PAPER_BEST = {"AA": 0.975, "RA": 0.940, "SA": 0.800, "AD": 0.686, "RD": 0.975}
+KINDS_OF_TTSG = {"blocking": "critical", "crushing": "critical", "cut_off": "critical", "daily_traffic": "normal",
+                 "intersection": "normal", "two_wheels": "normal", "emergency": "conditional",
+                 "weather": "conditional"}
+
+
+@dataclass
+class Case:
+    name: str
+    kind: str  # normal | critical | conditional
+    group: str = ""  # the prompt it is a generation of (diversity is measured over a group)
+    prompt: Path | None = None  # English, lowered
+    plan: Path | None = None  # a TTSG plan, imported
+    road_info: Path | None = None
+    gold: Path | None = None  # the hand-written scene
+
+
+@dataclass
+class Run:
+    case: str
+    kind: str
+    seed: int
+    group: str = ""
+    ok: bool = False
+    failed_at: str | None = None  # lower | compile | simulate
+    reason: str = ""
+    road: str | None = None  # map + approach
+    agents: list = field(default_factory=list)
+    aa: float | None = None
+    ra: float | None = None
+    seconds: dict = field(default_factory=dict)
+    paper_road: str | None = None  # the TTSG plan's own road, and whether the scene fit it
+    paper_road_fit: bool | None = None
+
+
+def load_suite(folder: Path) -> list[Case]:
+    """A suite: prompts (*.txt, with a gold *.tsg beside where there is one) or TTSG plan folders."""
+    folder = Path(folder)
+    kinds = {}
+    if (folder / "suite.toml").is_file():
+        kinds = tomllib.loads((folder / "suite.toml").read_text()).get("kinds", {})
+    cases = []
+    for plan in sorted(folder.glob("**/agent_output.json")):
+        group = plan.parent.parent.name
+        info = plan.with_name("road_info.json")
+        cases.append(Case(f"{group}/{plan.parent.name}", kinds.get(group, KINDS_OF_TTSG.get(group, "normal")),
+                          group=group, plan=plan, road_info=info if info.is_file() else None))
+    for prompt in sorted(folder.glob("*.txt")):
+        gold = prompt.with_suffix(".tsg")
+        cases.append(Case(prompt.stem, kinds.get(prompt.stem, "normal"), group=prompt.stem, prompt=prompt,
+                          gold=gold if gold.is_file() else None))
+    if not cases:
+        raise TtsgcError(f"{folder}: no cases (prompts *.txt or TTSG plans agent_output.json)")
+    return cases
+
+
+def run_case(case: Case, seed: int, maps, method: str = "offline", simulate: bool = True) -> Run:
+    from ttsgc.language import parse_file
+    from ttsgc.lowering import lower_prompt
+    from ttsgc.pipeline import compile_and_prove, compile_scenario
+    from ttsgc.ttsg_import import import_plan
+
+    run = Run(case.name, case.kind, seed, case.group)
+    t = time.perf_counter()
+    try:
+        if case.plan is not None:
+            imported = import_plan(case.plan, case.road_info)
+            scenario, paper = imported.scenario, imported.paper_road
+        else:
+            scenario, paper = lower_prompt(case.prompt.read_text(), method, seed=seed).scenario, None
+    except TtsgcError as exc:
+        run.failed_at, run.reason = "lower", str(exc).splitlines()[0]
+        return run
+    run.seconds["lower"] = time.perf_counter() - t
+    run.agents = [list(k) for k in agent_keys(scenario).elements()]
+    if case.gold is not None:
+        gold = parse_file(case.gold)
+        run.aa, run.ra = agent_accuracy(gold, scenario), road_accuracy(gold, scenario)
+    with tempfile.TemporaryDirectory(prefix="ttsgc-eval-") as scratch:
+        out = Path(scratch) / "scene.xosc"
+        only = None
+        if paper is not None:
+            run.paper_road = f"{paper.town} {paper.approach}"
+            run.paper_road_fit = False
+            try:  # the road the paper chose, when its town is in the library and the scene fits it
+                compile_scenario(scenario, out, maps, seed, only=(paper.town, paper.approach))
+                only, run.paper_road_fit = (paper.town, paper.approach), True
+            except TtsgcError:
+                pass
+        t = time.perf_counter()
+        try:
+            if simulate:
+                compiled, report = compile_and_prove(scenario, out, maps, seed, log=lambda m: None, only=only,
+                                                     tries=1 if only else 3)
+            else:
+                compiled, report = compile_scenario(scenario, out, maps, seed, only=only), None
+        except TtsgcError as exc:
+            run.failed_at, run.reason = "compile", str(exc).splitlines()[0]
+            return run
+        elapsed = time.perf_counter() - t
+        run.road = f"{compiled.scene.map_name} {compiled.scene.approach}"
+        if report is None:
+            run.seconds["compile"] = elapsed
+            run.ok = True
+            return run
+        run.seconds["compile+simulate"] = elapsed
+        run.ok = report.ok
+        if not report.ok:
+            failed = [f"{a.name}: {a.reason}" for a in report.agents if not a.achieved]
+            failed += [f"collision {c.a}/{c.b}" for c in report.collisions if not c.asked_for] + report.problems
+            run.failed_at, run.reason = "simulate", "; ".join(failed)[:300]
+    return run
+
+
+def summarize(runs: list[Run]) -> dict:
+    """AA, RA (first seed of each case against its gold), SA, failure rate, and AD, RD over the generations of
+    each prompt (its seeds, or for TTSG plans the runs of one scenario kind)."""
+    by_case: dict[str, list[Run]] = {}
+    by_group: dict[str, list[Run]] = {}
+    for r in runs:
+        by_case.setdefault(r.case, []).append(r)
+        by_group.setdefault(r.group or r.case, []).append(r)
+    firsts = [rs[0] for rs in by_case.values()]
+    aa = [r.aa for r in firsts if r.aa is not None]
+    ra = [r.ra for r in firsts if r.ra is not None]
+    ad, rd = [], []
+    for rs in by_group.values():
+        agents = [tuple(a) for r in rs for a in r.agents]
+        if agents:
+            ad.append(len(set(agents)) / len(agents))
+        rd.append(len({r.road for r in rs if r.road}) / len(rs))
+    mean = lambda xs: round(statistics.mean(xs), 3) if xs else None  # noqa: E731
+    return {"cases": len(by_case), "runs": len(runs), "AA": mean(aa), "RA": mean(ra),
+            "SA": mean([1.0 if r.ok else 0.0 for r in runs]), "AD": mean(ad), "RD": mean(rd),
+            "failure_rate": mean([0.0 if r.ok else 1.0 for r in runs])}
+
+
+def table(runs: list[Run]) -> str:
+    kinds = sorted({r.kind for r in runs}, key=lambda k: ("normal", "critical", "conditional").index(k)
+                   if k in ("normal", "critical", "conditional") else 9)
+    rows = [(k, summarize([r for r in runs if r.kind == k])) for k in kinds] + [("all", summarize(runs))]
+    fmt = lambda v: "  -  " if v is None else f"{v:.3f}"  # noqa: E731
+    lines = [f"{'kind':12} {'cases':>5} {'runs':>5}   AA     RA     SA     AD     RD    fail",
+             "-" * 72]
+    for kind, s in rows:
+        lines.append(f"{kind:12} {s['cases']:5} {s['runs']:5}  " + " ".join(
+            fmt(s[m]) for m in ("AA", "RA", "SA", "AD", "RD", "failure_rate")))
+    lines.append(f"{'paper, best':24} " + " ".join(f"{PAPER_BEST[m]:.3f}" for m in ("AA", "RA", "SA", "AD", "RD")))
+    times: dict[str, list[float]] = {}
+    for r in runs:
+        for stage, seconds in r.seconds.items():
+            times.setdefault(stage, []).append(seconds)
+    lines.append("median time per run: " + ", ".join(f"{stage} {statistics.median(v) * 1000:.0f} ms"
+                                                      for stage, v in times.items()))
+    return "\n".join(lines)
+
+
+def evaluate(folder: Path, seeds: int = 5, maps=None, method: str = "offline", simulate: bool = True,
+             progress=None) -> list[Run]:
+    cases = load_suite(folder)
+    runs = []
+    total = len(cases) * seeds
+    for case in cases:
+        for seed in range(seeds):
+            runs.append(run_case(case, seed, maps, method, simulate))
+            if progress:
+                progress(len(runs), total, case.name)
+    return runs
+
+
+def report_json(runs: list[Run]) -> str:
+    kinds = sorted({r.kind for r in runs})
+    return json.dumps({"summary": summarize(runs), "by_kind": {k: summarize([r for r in runs if r.kind == k])
+                                                               for k in kinds},
+                       "paper_best": PAPER_BEST, "runs": [asdict(r) for r in runs]}, indent=2)
+
+
+def progress_bar(done: int, total: int, label: str) -> None:
+    """One line that rewrites itself on a terminal, one line per tenth elsewhere."""
+    width = 30
+    filled = width * done // total
+    line = f"[{'#' * filled}{'.' * (width - filled)}] {done}/{total} {label}"
+    if sys.stderr.isatty():
+        print("\r" + line.ljust(90), end="" if done < total else "\n", file=sys.stderr, flush=True)
+    elif done == total or done % max(1, total // 10) == 0:
+        print(line, file=sys.stderr, flush=True)

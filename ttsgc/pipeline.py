@@ -33,8 +33,8 @@ def map_file_name(scene: BoundScene, out_dir: Path) -> str:
 
 
 def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
-                     version: str = DEFAULT_VERSION, skip: int = 0) -> Compiled:
-    scene = bind(scenario, load_library(maps), seed=seed, skip=skip)
+                     version: str = DEFAULT_VERSION, skip: int = 0, only: tuple[str, str] | None = None) -> Compiled:
+    scene = bind(scenario, load_library(maps), seed=seed, skip=skip, only=only)
     map_name = map_file_name(scene, out.parent)
     return Compiled(scene, emit(scene, map_name, version), map_name)
 
@@ -56,13 +56,14 @@ def simulate_compiled(compiled: Compiled, out: Path):
 
 
 def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
-                      version: str = DEFAULT_VERSION, tries: int = MAX_SIMULATION_TRIES, log=print):
+                      version: str = DEFAULT_VERSION, tries: int = MAX_SIMULATION_TRIES, log=print,
+                      only: tuple[str, str] | None = None):
     """Compile, then simulate; when the scene fails on its road, compile onto the next-ranked road, at most
     `tries` roads in all. Returns (compiled, report) of the first that passes, else of the last tried."""
     compiled = report = None
     for attempt in range(tries):
         try:
-            compiled = compile_scenario(scenario, out, maps, seed, version, skip=attempt)
+            compiled = compile_scenario(scenario, out, maps, seed, version, skip=attempt, only=only)
         except TtsgcError:
             if attempt == 0:
                 raise

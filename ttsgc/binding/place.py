@@ -426,9 +426,15 @@ class Placer:
             route = self._route(start, frame, turn)
         elif (start is not None and frame is self.frame and agent.road_type == "driving"
               and self.frame.approach.junction is not None):
-            through = self._pick_turn(self.frame.approach, "straight") or self.ego_turn
-            if through is not None:  # traffic on the ego's road carries on through the junction
-                route = self._route(start, frame, through)
+            own = TURN_OF_ACTION.get(agent.action) if agent.action in ("turn_left", "turn_right") else None
+            turn = self._pick_turn(self.frame.approach, own) if own else None
+            if turn is not None:  # it turns at the ego's junction
+                movement, target_road = turn.direction, turn.to_road
+                route = self._route(start, frame, turn)
+            else:  # traffic on the ego's road carries on through the junction
+                through = self._pick_turn(self.frame.approach, "straight") or self.ego_turn
+                if through is not None:
+                    route = self._route(start, frame, through)
         lane_change = {"change_lane_to_left": 1, "change_lane_to_right": -1}.get(agent.action)
         if agent.action == "block_the_ego" and agent.relative_to_ego in LEFT_SIDE | RIGHT_SIDE:
             lane_change = -1 if agent.relative_to_ego in LEFT_SIDE else 1  # into the ego's lane
@@ -471,8 +477,11 @@ class Placer:
         """The outermost lane on the other side of the road, across from a start position."""
         road = self.odr.roads[start.road]
         section = road.section_at(start.s)
-        lanes = section.side(1 if start.lane < 0 else -1) or section.side(-1 if start.lane < 0 else 1)
-        return LanePos(road=road.id, lane=lanes[-1].id, s=start.s)
+        other = section.side(1 if start.lane < 0 else -1)
+        if other:
+            return LanePos(road=road.id, lane=other[-1].id, s=start.s)
+        # a one-way road: its other edge is the innermost lane of this side
+        return LanePos(road=road.id, lane=section.side(-1 if start.lane < 0 else 1)[0].id, s=start.s)
 
 
 def place(scenario: Scenario, approach: Approach, index: MapIndex, odr: OpenDrive) -> list[BoundAgent]:

@@ -37,15 +37,20 @@ class BoundScene(BaseModel):
         return next(a for a in self.agents if a.name == name)
 
 
-def bind(scenario: Scenario, library: list[MapIndex], seed: int | None = None, skip: int = 0) -> BoundScene:
+def bind(scenario: Scenario, library: list[MapIndex], seed: int | None = None, skip: int = 0,
+         only: tuple[str, str] | None = None) -> BoundScene:
     """Bind a scenario to the best-ranked approach that placement can realise.
 
     seed: --seed, else the scenario's seed, else 0. skip: leave out the first `skip` placeable candidates
-    (the simulator's retry asks for the next-ranked road)."""
+    (the simulator's retry asks for the next-ranked road). only: (map name, approach id) to bind to that
+    road alone (a TTSG plan's own road), or fail."""
     seed = seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
     approaches = retrieve(library, scenario.road)
-    index_of = {a.id + "@" + m.path: m for m in library for a in m.approaches}
-    candidates = [(a, index_of[a.id + "@" + m.path]) for m in library for a in m.approaches if a in approaches]
+    candidates = [(a, m) for m in library for a in m.approaches if a in approaches]
+    if only is not None:
+        candidates = [(a, m) for a, m in candidates if (m.name, a.id) == only]
+        if not candidates:
+            raise NoRoadError(f"{only[0]} {only[1]} does not meet the scene's road block")
     requirements, ranked = rank(scenario, candidates, seed)
     unmeetable = [r.column for j, r in enumerate(requirements) if not any(c.met[j] for c in ranked)]
     if unmeetable:

@@ -145,6 +145,8 @@ def _check_agent(plan: Plan, run: Run, odr: OpenDrive, name: str, ego: str | Non
     movement = entity.intent.get("movement", "")
     if movement:
         return result(*_movement(after, movement, entity.intent.get("target_road", "")))
+    if action in ("turn_left", "turn_right"):
+        return result(False, "was given no junction to turn at (its road does not lead to one)")
     if action == "go_straight":
         travelled = sum(math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(after, after[1:]))
         return result(travelled >= 5.0, f"drove {travelled:.0f} m" + ("" if travelled >= 5 else ", too little"))

@@ -104,7 +104,7 @@ def _lanes(net_path: str) -> tuple[dict[str, SumoLane], dict[str, list[SumoLane]
             continue
         for lane in edge.iter("lane"):
             orig = next((p.get("value") for p in lane.iter("param") if p.get("key") == "origId"), "")
-            shape = tuple(tuple(float(v) for v in point.split(",")) for point in lane.get("shape").split())
+            shape = tuple(tuple(float(v) for v in point.split(",")[:2]) for point in lane.get("shape").split())
             allow = lane.get("allow", "")
             record = SumoLane(lane.get("id"), edge.get("id"), int(lane.get("index")), shape, tuple(orig.split()),
                               "pedestrian" in allow)
@@ -216,7 +216,7 @@ class Executor:
             ts.vehicletype.setWidth(type_id, entity.width)
             ts.vehicletype.setMinGap(type_id, 1.0)
             ts.vehicletype.setMaxSpeed(type_id, max(speed, 1.0) * 1.5 + 5)
-            ts.route.add(f"route_{entity.name}", [sumo_lane.edge])
+            ts.route.add(f"route_{entity.name}", self._ahead(sumo_lane.id))
             # SUMO places a vehicle by its front bumper
             front = min(pos + entity.length / 2, _length(sumo_lane.shape) - 0.05)
             ts.vehicle.add(entity.name, f"route_{entity.name}", typeID=type_id, depart="now",
@@ -280,6 +280,25 @@ class Executor:
                 mover.speed = 1.0
         else:
             self.run.problems.append(f"{event.name}: {action.kind} is not possible off the SUMO lanes")
+
+    def _ahead(self, lane_id: str, limit_m: float = 1000.0) -> list[str]:
+        """Until the file gives it a route, a vehicle carries on straight ahead (else the way its lane leads),
+        rather than leave the network at the end of its first, perhaps very short, road."""
+        import libsumo as ts
+
+        edges, total, lane = [self.by_id[lane_id].edge], 0.0, lane_id
+        for _ in range(60):
+            links = ts.lane.getLinks(lane)
+            if not links or total > limit_m:
+                break
+            link = next((k for k in links if k[6] == "s"), links[0])
+            lane = link[0]
+            edge = lane.rpartition("_")[0]
+            if edge in edges or lane not in self.by_id:
+                break
+            edges.append(edge)
+            total += _length(self.by_id[lane].shape)
+        return edges
 
     def _drivable(self, edge: str, index: int, actor: str) -> bool:
         lane = self.by_id.get(f"{edge}_{index}")
@@ -461,10 +480,30 @@ class Executor:
             road = self.odr.roads[mover.road]
             s = mover.s + (step if mover.lane < 0 else -step)
             if not 0.0 <= s <= road.length:
-                mover.speed = 0.0  # the end of its road: it stands
+                if not self._next_road(mover, s - road.length if s > road.length else -s):
+                    mover.speed = 0.0  # the end of its way: it stands
                 continue
             pose = road.lane_point(s, mover.lane)
             mover.x, mover.y, mover.heading, mover.s = pose.x, pose.y, pose.hdg, s
+
+    def _next_road(self, mover: Mover, overshoot: float) -> bool:
+        """Carry a body moved along its lane onto the next road, in the same kind of lane at the same side."""
+        road = self.odr.roads[mover.road]
+        link = road.successor if mover.lane < 0 else road.predecessor
+        if link is None or link.element_type != "road" or link.element_id not in self.odr.roads:
+            return False
+        nxt = self.odr.roads[link.element_id]
+        at_start = (link.contact_point or ("start" if mover.lane < 0 else "end")) == "start"
+        s = min(overshoot, nxt.length) if at_start else max(nxt.length - overshoot, 0.0)
+        kind = road.section_at(mover.s if 0 <= mover.s <= road.length else 0).lanes.get(mover.lane)
+        side = nxt.section_at(s).side(-1 if at_start else 1)
+        same = [lane for lane in side if kind is None or lane.type == kind.type]
+        if not same:
+            return False
+        pose = nxt.lane_point(s, same[-1].id)
+        mover.road, mover.lane, mover.s = nxt.id, same[-1].id, s
+        mover.x, mover.y, mover.heading = pose.x, pose.y, pose.hdg
+        return True
 
     def _sample(self, t: float) -> None:
         import libsumo as ts
