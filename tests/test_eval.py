@@ -1,0 +1,89 @@
+"""The evaluation harness and the TTSG plan importer."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from conftest import EXAMPLES
+from ttsgc.cli import main
+from ttsgc.evaluate import agent_accuracy, load_suite, road_accuracy, summarize, Run
+from ttsgc.language import format_scenario, parse
+from ttsgc.ttsg_import import import_plan, weather_of
+
+
+def test_metrics_use_the_larger_count_as_denominator():
+    gold = parse('scenario "g"\nroad {\n    lanes >= 2\n    has stop\n}\nstage s {\n    ego car go_straight\n'
+                 '    car c1 at front stop\n    bus b1 at back go_straight\n}\n')
+    predicted = parse('scenario "p"\nroad {\n    lanes >= 2\n}\nstage s {\n    ego car go_straight\n'
+                      '    car c1 at front stop\n    car c2 at front stop\n    bus b1 at left go_straight\n}\n')
+    assert agent_accuracy(gold, predicted) == pytest.approx(2 / 4)  # ego and c1 match, of max(3, 4)
+    assert road_accuracy(gold, predicted) == pytest.approx(1 / 2)  # lanes match; 'has stop' missing
+
+
+def test_diversity_counts_unique_agents_and_roads_over_the_generations():
+    runs = [Run("a", "normal", k, "a", ok=True, road=road, agents=[["car", "go_straight", "ego"], agent])
+            for k, (road, agent) in enumerate([("m 1:fwd", ["car", "stop", "front"]),
+                                               ("m 2:fwd", ["car", "stop", "front"]),
+                                               ("m 1:fwd", ["bus", "stop", "back"])])]
+    summary = summarize(runs)
+    assert summary["AD"] == pytest.approx(3 / 6, abs=1e-3) and summary["RD"] == pytest.approx(2 / 3, abs=1e-3)
+    assert summary["SA"] == 1.0 and summary["failure_rate"] == 0.0
+
+
+def test_eval_of_the_examples_prints_the_table_and_writes_json(tmp_path, capsys):
+    report = tmp_path / "eval.json"
+    assert main(["eval", str(EXAMPLES), "--seeds", "2", "--report", str(report)]) == 0
+    out = capsys.readouterr().out
+    for word in ("normal", "critical", "conditional", "all", "paper, best", "median time per run"):
+        assert word in out
+    data = json.loads(report.read_text())
+    assert data["summary"]["cases"] == 18 and data["summary"]["runs"] == 36
+    assert data["summary"]["AA"] == 1.0 and data["summary"]["SA"] == 1.0
+    assert set(data["by_kind"]) == {"normal", "critical", "conditional"}
+
+
+def test_suite_kinds_come_from_suite_toml():
+    kinds = {c.name: c.kind for c in load_suite(EXAMPLES)}
+    assert kinds["blocking"] == "critical" and kinds["emergency"] == "conditional"
+    assert kinds["daily_traffic"] == "normal"
+
+
+@pytest.mark.parametrize("preset, expected", [("ClearNoon", ("clear", "noon")),
+                                              ("MidRainSunset", ("mid_rain", "sunset")),
+                                              ("MidRainyNoon", ("mid_rain", "noon")),
+                                              ("WetCloudyNight", ("wet_cloudy", "night"))])
+def test_weather_presets(preset, expected):
+    weather, note = weather_of(preset)
+    assert (weather.condition, weather.time) == expected and note is None
+
+
+def test_all_forty_ttsg_plans_import_with_their_repairs_noted(shared):
+    plans = sorted((shared / "ttsg-plans").glob("*/*/agent_output.json"))
+    assert len(plans) == 40
+    for plan in plans:
+        imported = import_plan(plan, plan.with_name("road_info.json"))
+        assert parse(format_scenario(imported.scenario)) == imported.scenario
+        assert imported.paper_road is not None
+    crushing = import_plan(shared / "ttsg-plans" / "crushing" / "3" / "agent_output.json")
+    assert any("also marked as the ego" in n for n in crushing.notes)
+    assert [a.is_ego for a in crushing.scenario.agents()].count(True) == 1
+
+
+def test_import_and_compile_on_the_papers_own_road(shared, tmp_path, capsys):
+    plan = shared / "ttsg-plans" / "blocking" / "1"
+    out = tmp_path / "b.tsg"
+    assert main(["import-ttsg", str(plan / "agent_output.json"), str(plan / "road_info.json"), "-o", str(out),
+                 "--xosc", str(tmp_path / "b.xosc"), "--maps", str(shared / "maps" / "carla")]) == 0
+    printed = capsys.readouterr().out
+    assert "the paper's road: Town07 52:bwd" in printed and (tmp_path / "b.xosc").is_file()
+    assert main(["check", str(out)]) == 0
+
+
+def test_ttsg_plans_suite_on_the_carla_towns(shared, tmp_path):
+    report = tmp_path / "ttsg.json"
+    assert main(["eval", str(shared / "ttsg-plans"), "--seeds", "1", "--maps", str(shared / "maps" / "carla"),
+                 "--report", str(report)]) == 0
+    summary = json.loads(report.read_text())["summary"]
+    assert summary["runs"] == 40 and summary["SA"] >= 0.7
