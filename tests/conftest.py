@@ -11,6 +11,28 @@ EXAMPLES = ROOT / "examples"
 SHARED = ROOT.parent / "shared"
 
 
+def asam_errors(tool: str, bundle: str, document: Path, folder: Path) -> list[str]:
+    """Run an ASAM quality checker (qc_opendrive / xodrBundle, qc_openscenario / xoscBundle) on a file and
+    return the descriptions of its error-level issues; skips when the checker is not installed."""
+    import subprocess
+    import sys
+
+    from lxml import etree
+
+    checker = Path(sys.executable).parent / tool
+    if not checker.exists():
+        pytest.skip(f"{tool} is not installed")
+    report = folder / f"{document.stem}.{bundle}.xqar"
+    config = folder / f"{document.stem}.{bundle}.xml"
+    config.write_text(f'<?xml version="1.0" encoding="UTF-8"?><Config><Param name="InputFile" value="{document}"/>'
+                      f'<CheckerBundle application="{bundle}"><Param name="resultFile" value="{report}"/>'
+                      f'</CheckerBundle></Config>')
+    subprocess.run([str(checker), "-c", str(config)], capture_output=True, check=True, cwd=folder)
+    results = etree.parse(str(report))
+    assert [c for c in results.iter("Checker") if c.get("status") == "completed"], "no check ran"
+    return [i.get("description") or "" for i in results.iter("Issue") if i.get("level") == "1"]
+
+
 def example_scenarios() -> list[Path]:
     return sorted(EXAMPLES.glob("*.tsg"))
 

@@ -4,22 +4,18 @@ from __future__ import annotations
 
 import math
 import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 from lxml import etree
 
-from conftest import EXAMPLES, ROOT, example_scenarios
-from ttsgc import vocabulary as V
+from conftest import EXAMPLES, asam_errors, example_scenarios
 from ttsgc.binding import bind
 from ttsgc.cli import main
 from ttsgc.emit.xosc import VERSIONS, emit
 from ttsgc.language import parse, parse_file
-from ttsgc.pipeline import compile_scenario, write
+from ttsgc.pipeline import compile_scenario
 from ttsgc.roads import load_library
-from ttsgc.roads.index import approach_id
 from ttsgc.roads.opendrive import read_opendrive
 
 GOLDEN = EXAMPLES / "golden"
@@ -53,21 +49,6 @@ def test_compiling_is_deterministic(tmp_path):
     assert first == second
 
 
-def _qc_openscenario(xosc: Path, tmp_path: Path) -> list[str]:
-    checker = Path(sys.executable).parent / "qc_openscenario"
-    if not checker.exists():
-        pytest.skip("qc_openscenario is not installed")
-    report = tmp_path / f"{xosc.stem}.xqar"
-    config = tmp_path / f"{xosc.stem}.qc.xml"
-    config.write_text(f'<?xml version="1.0" encoding="UTF-8"?><Config><Param name="InputFile" value="{xosc}"/>'
-                      f'<CheckerBundle application="xoscBundle"><Param name="resultFile" value="{report}"/>'
-                      f'</CheckerBundle></Config>')
-    subprocess.run([str(checker), "-c", str(config)], capture_output=True, check=True, cwd=tmp_path)
-    results = etree.parse(str(report))
-    assert [c for c in results.iter("Checker") if c.get("status") == "completed"]
-    return [i.get("description") or "" for i in results.iter("Issue") if i.get("level") == "1"]
-
-
 @pytest.mark.parametrize("version", VERSIONS)
 def test_every_example_is_xsd_and_checker_clean_in_every_version(version, tmp_path, library):
     for path in example_scenarios():
@@ -76,7 +57,7 @@ def test_every_example_is_xsd_and_checker_clean_in_every_version(version, tmp_pa
         shutil.copy(scene.map_path, tmp_path / Path(scene.map_path).name)
         out.write_bytes(emit(scene, Path(scene.map_path).name, version))  # emit validates against the XSD
         assert etree.parse(str(out)).getroot().find("FileHeader").get("revMinor") == version[-1]
-        assert _qc_openscenario(out, tmp_path) == [], (path.name, version)
+        assert asam_errors("qc_openscenario", "xoscBundle", out, tmp_path) == [], (path.name, version)
 
 
 def test_all_examples_compile_on_the_carla_towns(shared, tmp_path):

@@ -3,14 +3,13 @@
 from __future__ import annotations
 
 import math
-import shutil
 from collections import Counter
 from pathlib import Path
 
 import pytest
 from lxml import etree
 
-from conftest import ROOT
+from conftest import ROOT, asam_errors
 from ttsgc import vocabulary as V
 from ttsgc.roads import MapError, NoRoadError, load_index, load_library, read_opendrive, retrieve
 from ttsgc.roads import index as index_module
@@ -112,22 +111,8 @@ def test_builtin_maps_convert_without_netconvert_warnings(tmp_path):
 
 
 def test_builtin_maps_pass_the_asam_opendrive_checker(tmp_path):
-    checker = shutil.which("qc_opendrive") or (Path(__import__("sys").executable).parent / "qc_opendrive")
-    if not Path(checker).exists():
-        pytest.skip("qc_opendrive (asam-qc-opendrive) is not installed")
-    import subprocess
-
     for path in sorted(MAPS.glob("*.xodr")):
-        report = tmp_path / f"{path.stem}.xqar"
-        config = tmp_path / f"{path.stem}.xml"
-        config.write_text(f'<?xml version="1.0" encoding="UTF-8"?><Config><Param name="InputFile" value="{path}"/>'
-                          f'<CheckerBundle application="xodrBundle"><Param name="resultFile" value="{report}"/>'
-                          f'</CheckerBundle></Config>')
-        subprocess.run([str(checker), "-c", str(config)], capture_output=True, check=True, cwd=tmp_path)
-        results = etree.parse(str(report))
-        completed = [c for c in results.iter("Checker") if c.get("status") == "completed"]
-        errors = [i.get("description") for i in results.iter("Issue") if i.get("level") == "1"]
-        assert completed and not errors, (path.name, errors)
+        assert asam_errors("qc_opendrive", "xodrBundle", path, tmp_path) == [], path.name
 
 
 # -- real maps (../shared) --------------------------------------------------------------------------------

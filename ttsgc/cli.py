@@ -91,7 +91,6 @@ def _lower(args) -> int:
 
 
 def _compile(args) -> int:
-    from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 
     source = Path(args.input)
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")

@@ -488,11 +488,6 @@ def place(scenario: Scenario, approach: Approach, index: MapIndex, odr: OpenDriv
     return Placer(scenario, approach, index, odr).place()
 
 
-def heading_of(odr: OpenDrive, pos: LanePos) -> float:
-    """World heading of a body standing in a lane, facing its driving direction."""
-    return odr.roads[pos.road].lane_point(pos.s, pos.lane).hdg
-
-
 def distance_between(odr: OpenDrive, a: LanePos, b: LanePos) -> float:
     pa, pb = odr.roads[a.road].lane_point(a.s, a.lane), odr.roads[b.road].lane_point(b.s, b.lane)
     return math.hypot(pa.x - pb.x, pa.y - pb.y)

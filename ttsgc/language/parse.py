@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from lark import Lark, Token, Transformer, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken, VisitError
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
 
 from ttsgc import vocabulary as V
 from ttsgc.language.diagnostics import Diagnostic, ScenarioError
@@ -52,7 +52,7 @@ def parse_file(path: str | Path) -> Scenario:
     try:
         data = path.read_bytes()
     except OSError as exc:
-        raise ScenarioError([Diagnostic(1, 1, f"cannot read the file: {exc.strerror or exc}", file=str(path))])
+        raise ScenarioError([Diagnostic(1, 1, f"cannot read the file: {exc.strerror or exc}", file=str(path))]) from None
     if len(data) > MAX_FILE_BYTES:
         raise ScenarioError([Diagnostic(1, 1, f"the file is {len(data)} bytes; a scenario is at most "
                                               f"{MAX_FILE_BYTES} bytes", file=str(path))])
@@ -61,7 +61,7 @@ def parse_file(path: str | Path) -> Scenario:
     except UnicodeDecodeError as exc:
         line = data[: exc.start].count(b"\n") + 1
         column = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
-        raise ScenarioError([Diagnostic(line, column, "the file is not UTF-8 text", file=str(path))])
+        raise ScenarioError([Diagnostic(line, column, "the file is not UTF-8 text", file=str(path))]) from None
     return parse(text, str(path))
 
 

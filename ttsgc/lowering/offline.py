@@ -208,7 +208,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     junction_context = road.junction is True or bool(text.find(JUNCTION, mark=False))
     stages, names = [], _Namer()
     ego: Agent | None = None
-    for k, ((a, b), mentions) in enumerate(zip(segments, mentions_by_segment)):
+    for (_, b), mentions in zip(segments, mentions_by_segment):
         agents: list[Agent] = []
         for i, m in enumerate(mentions):
             clause_end = mentions[i + 1].start if i + 1 < len(mentions) else b
@@ -318,7 +318,7 @@ def _road(text: _Text) -> RoadSpec:
         elif tokens[i] not in ("and", "or", "a", "an", "any", "nor", "sign", "signs"):
             negated = False
         i += 1
-    for i, n, limit in _speed_limits(text):
+    for limit in _speed_limits(text):
         word = f"speed_{limit}"
         if V.is_object(word) and word not in fields["required_objects"]:
             fields["required_objects"].append(word)
@@ -342,7 +342,7 @@ def _speed_limits(text: _Text):
                 or (window[:1] == ["zone"])):
             text.used.update(j for j in range(max(0, i - 3), min(len(tokens), i + 5))
                              if tokens[j] in ("speed", "limit", "sign", "kmh", "zone", "of") or j == i)
-            out.append((i, 1, int(float(t))))
+            out.append(int(float(t)))
     return out
 
 
@@ -486,7 +486,7 @@ def _agents(text: _Text, m: _Mention, clause: tuple[int, int], names: _Namer, ju
     trigger = _trigger(text, a, b)
     speed = _speed(text, a, b)
     out: list[Agent] = []
-    for k in range(m.count):
+    for _ in range(m.count):
         out.append(Agent(name=names(m.type), type=m.type, action=action, behavior=behavior,
                          relative_to_ego=position, road_type=road_type,
                          behind=out[-1].name if out else None, trigger=trigger, speed=speed))

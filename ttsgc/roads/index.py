@@ -204,7 +204,7 @@ def build_index(odr: OpenDrive, sha256: str) -> MapIndex:
     turns = _turns(odr, skeleton)
     entering = _entering(skeleton)
     approaches = []
-    for aid in sorted(skeleton, key=_natural_key):
+    for aid in sorted(skeleton, key=natural_key):
         fields = skeleton[aid]
         signs = sorted(w for w in fields["objects"] | fields["signals"] if w.startswith("speed_"))
         speed_kmh = float(signs[0][6:]) if len(signs) == 1 else (
@@ -246,10 +246,6 @@ def upstream_chain(odr: OpenDrive, road_id: str, direction: str,
 
 def natural_key(text: str):
     """Sort key that orders '2' before '10'."""
-    return _natural_key(text)
-
-
-def _natural_key(text: str):
     return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", text)]
 
 
@@ -343,7 +339,7 @@ def _assign_signals_and_objects(odr: OpenDrive, skeleton: dict) -> None:
             for aid in ending_at.get(junction.id, ()):
                 skeleton[aid]["signals"].add("traffic_light")
 
-    for aid, fields in skeleton.items():  # lane lines between same-direction lanes
+    for fields in skeleton.values():  # lane lines between same-direction lanes
         road = odr.roads[fields["road"]]
         if fields["lanes"] < 2:
             continue
@@ -406,7 +402,7 @@ def _turns(odr: OpenDrive, skeleton: dict) -> dict[str, list[Turn]]:
                               to_road=o["to_road"], to_direction=o["to_direction"], from_lanes=from_lanes,
                               via_lanes=tuple(o["links"][lane] for lane in from_lanes),
                               heading_change_deg=round(o["change"], 2)))
-        result[aid] = sorted(turns, key=lambda t: (t.direction, _natural_key(t.to_road), _natural_key(t.via_road)))
+        result[aid] = sorted(turns, key=lambda t: (t.direction, natural_key(t.to_road), natural_key(t.via_road)))
     return result
 
 
@@ -451,7 +447,7 @@ def _entering(skeleton: dict) -> dict[str, dict[str, tuple[str, ...]]]:
                 sides["right"].append(other)
             elif abs(rel) > 135:
                 sides["straight"].append(other)
-        result[aid] = {k: tuple(sorted(v, key=_natural_key)) for k, v in sides.items()}
+        result[aid] = {k: tuple(sorted(v, key=natural_key)) for k, v in sides.items()}
     return result
 
 

@@ -116,7 +116,7 @@ def _lanes(net_path: str) -> tuple[dict[str, SumoLane], dict[str, list[SumoLane]
 
 def _project(shape, x: float, y: float) -> tuple[float, float]:
     """(distance from the polyline, position along it) of a point."""
-    best, along, total = (math.inf, 0.0), 0.0, 0.0
+    best, total = (math.inf, 0.0), 0.0
     for (ax, ay), (bx, by) in zip(shape, shape[1:]):
         dx, dy = bx - ax, by - ay
         seg = math.hypot(dx, dy)
@@ -256,7 +256,7 @@ class Executor:
             elif action.kind == "lane_change":
                 index = ts.vehicle.getLaneIndex(actor) + int(action.value)
                 lanes = ts.edge.getLaneNumber(ts.vehicle.getRoadID(actor))
-                if not 0 <= index < lanes or not self._drivable(ts.vehicle.getRoadID(actor), index, actor):
+                if not 0 <= index < lanes or not self._drivable(ts.vehicle.getRoadID(actor), index):
                     self.run.problems.append(f"{event.name}: '{actor}' has no lane {int(action.value):+d} to change to")
                 else:
                     ts.vehicle.changeLane(actor, index, 60.0)
@@ -300,7 +300,7 @@ class Executor:
             total += _length(self.by_id[lane].shape)
         return edges
 
-    def _drivable(self, edge: str, index: int, actor: str) -> bool:
+    def _drivable(self, edge: str, index: int) -> bool:
         lane = self.by_id.get(f"{edge}_{index}")
         return lane is not None and not lane.allow_pedestrians
 
