@@ -108,6 +108,16 @@ def test_compile_of_a_prompt_writes_the_lowered_scene_beside_the_output(tmp_path
     assert main(["compile", str(tmp_path / "scene.tsg"), "-o", str(tmp_path / "again.xosc")]) == 0
 
 
+def test_a_hand_written_scene_beside_the_output_is_never_overwritten(tmp_path):
+    prompt = tmp_path / "blocking.txt"
+    prompt.write_text((EXAMPLES / "blocking.txt").read_text())
+    mine = tmp_path / "blocking.tsg"
+    mine.write_text('scenario "mine"\nstage s {\n    ego car go_straight\n}\n')
+    assert main(["compile", str(prompt), "--no-simulate"]) == 0
+    assert mine.read_text().startswith('scenario "mine"')
+    assert (tmp_path / "blocking.lowered.tsg").read_text().startswith("# Lowered (offline)")
+
+
 def test_variants_differ_in_roads_or_agents(tmp_path):
     out = tmp_path / "v.xosc"
     assert main(["compile", str(EXAMPLES / "daily_traffic.txt"), "-o", str(out), "--variants", "3"]) == 0

@@ -91,7 +91,6 @@ def _lower(args) -> int:
 
 
 def _compile(args) -> int:
-
     source = Path(args.input)
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
@@ -104,11 +103,21 @@ def _compile(args) -> int:
         if kind == "text":
             prompt, lowering = _lower_file(args, source, seed or 0)
             scenario = lowering.scenario
-            write_atomic(target.with_suffix(".tsg"), lowering.tsg(prompt))  # to edit and compile again
+            write_atomic(_lowered_path(target), lowering.tsg(prompt))  # to edit and compile again
         else:
             scenario = parse_file(source)
         status = max(status, _compile_one(args, scenario, target, seed, lowering))
     return status
+
+
+def _lowered_path(out: Path) -> Path:
+    """Where the lowered scene goes: beside the output, unless a scene a person wrote is already there."""
+    path = out.with_suffix(".tsg")
+    if path.exists() and not path.read_text(encoding="utf-8", errors="replace").startswith("# Lowered ("):
+        path = out.with_suffix(".lowered.tsg")
+        print(f"ttsgc: note: {out.with_suffix('.tsg')} was not written by ttsgc; the lowered scene goes to {path}",
+              file=sys.stderr)
+    return path
 
 
 def _compile_one(args, scenario, out: Path, seed, lowering) -> int:

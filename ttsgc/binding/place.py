@@ -1,8 +1,10 @@
 """Placement: every agent of a scene gets a lane position that exists on the chosen road, with no two bodies
 overlapping at t = 0, and a route where it crosses a junction.
 
-Positions along an approach are measured by u, metres from the approach's start in its driving direction
-(s = u on a forward approach, s = length - u on a backward one). Agents queue in lanes: `order 1` is nearest
+Positions are measured by u, metres along the stretch that leads to the chosen approach (the approach and
+the roads running into it, which real maps cut into short pieces) in its driving direction; lanes are named by
+kind and rank, and resolved to a road, lane id and s wherever a body stands. Agents queue in lanes: `order 1`
+is nearest
 the ego (or, on a road entering the junction, nearest the junction), and `behind X` stands just upstream of
 X in X's driving direction. `gap` is the free distance to whatever is next in the queue towards that
 reference (X, the ego or the junction). A slot search moves a body outward until it overlaps nothing.

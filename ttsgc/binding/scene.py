@@ -18,7 +18,7 @@ MAX_PLACEMENT_TRIES = 10
 class BoundScene(BaseModel):
     """A scene on a road: every agent with a lane position on the map, plus how the road was chosen."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True, arbitrary_types_allowed=True)
+    model_config = ConfigDict(extra="forbid", frozen=True)
 
     scenario: Scenario
     seed: int
