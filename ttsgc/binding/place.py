@@ -4,10 +4,9 @@ overlapping at t = 0, and a route where it crosses a junction.
 Positions are measured by u, metres along the stretch that leads to the chosen approach (the approach and
 the roads running into it, which real maps cut into short pieces) in its driving direction; lanes are named by
 kind and rank, and resolved to a road, lane id and s wherever a body stands. Agents queue in lanes: `order 1`
-is nearest
-the ego (or, on a road entering the junction, nearest the junction), and `behind X` stands just upstream of
-X in X's driving direction. `gap` is the free distance to whatever is next in the queue towards that
-reference (X, the ego or the junction). A slot search moves a body outward until it overlaps nothing.
+is nearest the ego (or, on a road entering the junction, nearest the junction), and `behind X` stands just
+upstream of X in X's driving direction. `gap` is the free distance to whatever is next in the queue towards
+that reference (X, the ego or the junction). A slot search moves a body outward until it overlaps nothing.
 """
 
 from __future__ import annotations
