@@ -127,22 +127,23 @@ def run_case(case: Case, seed: int, maps, method: str = "offline", simulate: boo
         run.aa, run.ra = agent_accuracy(gold, scenario), road_accuracy(gold, scenario)
     with tempfile.TemporaryDirectory(prefix="ttsgc-eval-") as scratch:
         out = Path(scratch) / "scene.xosc"
-        only = None
+
+        def compile_run(only):
+            if simulate:
+                return compile_and_prove(scenario, out, maps, seed, log=lambda m: None, only=only,
+                                         tries=1 if only else 3)
+            return compile_scenario(scenario, out, maps, seed, only=only), None
+        t = time.perf_counter()
+        outcome = None
         if paper is not None:
             run.paper_road = f"{paper.town} {paper.approach}"
-            run.paper_road_fit = False
-            try:  # the road the paper chose, when its town is in the library and the scene fits it
-                compile_scenario(scenario, out, maps, seed, only=(paper.town, paper.approach))
-                only, run.paper_road_fit = (paper.town, paper.approach), True
+            try:  # the road the paper chose, when its town is in the library and the scene compiles on it
+                outcome = compile_run((paper.town, paper.approach))
             except TtsgcError:
-                pass
-        t = time.perf_counter()
+                t = time.perf_counter()
+            run.paper_road_fit = outcome is not None
         try:
-            if simulate:
-                compiled, report = compile_and_prove(scenario, out, maps, seed, log=lambda m: None, only=only,
-                                                     tries=1 if only else 3)
-            else:
-                compiled, report = compile_scenario(scenario, out, maps, seed, only=only), None
+            compiled, report = outcome or compile_run(None)
         except TtsgcError as exc:
             run.failed_at, run.reason = "compile", str(exc).splitlines()[0]
             return run

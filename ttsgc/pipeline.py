@@ -11,6 +11,7 @@ from ttsgc.binding import BoundScene, bind
 from ttsgc.emit.xosc import DEFAULT_VERSION, emit
 from ttsgc.errors import TtsgcError
 from ttsgc.files import write_atomic
+from ttsgc.roads.index import MapIndex
 from ttsgc.roads.retrieve import load_library
 from ttsgc.scenario import Scenario
 
@@ -33,8 +34,10 @@ def map_file_name(scene: BoundScene, out_dir: Path) -> str:
 
 
 def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
-                     version: str = DEFAULT_VERSION, skip: int = 0, only: tuple[str, str] | None = None) -> Compiled:
-    scene = bind(scenario, load_library(maps), seed=seed, skip=skip, only=only)
+                     version: str = DEFAULT_VERSION, skip: int = 0, only: tuple[str, str] | None = None,
+                     library: list[MapIndex] | None = None) -> Compiled:
+    """maps: files and folders as `--maps` takes them; library: the same, already loaded (wins over maps)."""
+    scene = bind(scenario, library if library is not None else load_library(maps), seed=seed, skip=skip, only=only)
     map_name = map_file_name(scene, out.parent)
     return Compiled(scene, emit(scene, map_name, version), map_name)
 
@@ -61,9 +64,11 @@ def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None
     """Compile, then simulate; when the scene fails on its road, compile onto the next-ranked road, at most
     `tries` roads in all. Returns (compiled, report) of the first that passes, else of the last tried."""
     compiled = report = None
+    library = load_library(maps)
     for attempt in range(tries):
         try:
-            compiled = compile_scenario(scenario, out, maps, seed, version, skip=attempt, only=only)
+            compiled = compile_scenario(scenario, out, seed=seed, version=version, skip=attempt, only=only,
+                                        library=library)
         except TtsgcError:
             if attempt == 0:
                 raise

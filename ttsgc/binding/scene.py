@@ -7,7 +7,7 @@ from pydantic import BaseModel, ConfigDict
 from ttsgc.binding.place import BoundAgent, PlacementError, place
 from ttsgc.binding.rank import Ranked, Requirement, explain, rank
 from ttsgc.roads.index import MapIndex
-from ttsgc.roads.opendrive import OpenDrive, read_opendrive
+from ttsgc.roads.opendrive import load_opendrive
 from ttsgc.roads.retrieve import NoRoadError, retrieve
 from ttsgc.scenario import Scenario
 
@@ -57,11 +57,9 @@ def bind(scenario: Scenario, library: list[MapIndex], seed: int | None = None, s
         raise NoRoadError(f"no road can host the scene: of the {len(ranked)} approaches that meet the road block, "
                           f"none meets {', '.join(repr(c) for c in unmeetable)}\n"
                           + explain(requirements, ranked, limit=5))
-    maps: dict[str, OpenDrive] = {}
     reasons: list[str] = []
     for candidate in ranked[: MAX_PLACEMENT_TRIES + skip]:
-        odr = maps.get(candidate.index.path) or maps.setdefault(candidate.index.path,
-                                                                read_opendrive(candidate.index.path))
+        odr = load_opendrive(candidate.index.path)
         try:
             agents = place(scenario, candidate.approach, candidate.index, odr)
         except PlacementError as exc:

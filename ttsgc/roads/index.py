@@ -23,7 +23,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ttsgc import vocabulary as V
 from ttsgc.files import write_atomic
-from ttsgc.roads.opendrive import MapError, OpenDrive, Road, read_opendrive
+from ttsgc.roads.opendrive import OpenDrive, Road, read_map_bytes, read_opendrive
 
 INDEX_VERSION = 6
 STRAIGHT_LIMIT_DEG = 45.0  # an exit within this of straight ahead is straight, unless another is straighter
@@ -461,10 +461,7 @@ def cache_dir() -> Path:
 def load_index(path: str | Path, use_cache: bool = True) -> MapIndex:
     """The index of one map, from the cache when a valid entry for this exact content exists."""
     path = Path(path)
-    try:
-        data = path.read_bytes()
-    except OSError as exc:
-        raise MapError(f"{path}: cannot read the map: {exc.strerror or exc}") from None
+    data = read_map_bytes(path)
     sha = hashlib.sha256(data).hexdigest()
     entry = cache_dir() / f"{sha}.v{INDEX_VERSION}.json"
     if use_cache and entry.is_file():

@@ -8,8 +8,9 @@ evaluated, so headings and lane positions come from the file alone, for any map.
 from __future__ import annotations
 
 import bisect
+import hashlib
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from lxml import etree
@@ -304,17 +305,40 @@ def _wrap(angle: float) -> float:
 
 # -- reading ----------------------------------------------------------------------------------------------
 
+def read_map_bytes(path: str | Path) -> bytes:
+    """A map file's bytes, refusing one over the size limit before reading it."""
+    path = Path(path)
+    try:
+        size = path.stat().st_size
+        if size > MAX_MAP_BYTES:
+            raise MapError(f"{path}: the map is {size} bytes; the limit is {MAX_MAP_BYTES}")
+        return path.read_bytes()
+    except OSError as exc:
+        raise MapError(f"{path}: cannot read the map: {exc.strerror or exc}") from None
+
+
+_PARSED: dict[str, OpenDrive] = {}  # by content hash, the most recent last
+PARSED_KEPT = 8
+
+
+def load_opendrive(path: str | Path) -> OpenDrive:
+    """read_opendrive, remembered by content: binding, retries and simulation of one scene read the same map
+    several times, and a CARLA town takes about 0.1 s to parse."""
+    path = Path(path)
+    data = read_map_bytes(path)
+    sha = hashlib.sha256(data).hexdigest()
+    odr = _PARSED.pop(sha, None) or read_opendrive(path, data)
+    _PARSED[sha] = odr
+    while len(_PARSED) > PARSED_KEPT:
+        del _PARSED[next(iter(_PARSED))]
+    return replace(odr, path=str(path))
+
+
 def read_opendrive(path: str | Path, data: bytes | None = None) -> OpenDrive:
     """Parse an OpenDRIVE file safely; MapError names the file, the line and what is wrong."""
     path = Path(path)
     if data is None:
-        try:
-            size = path.stat().st_size
-        except OSError as exc:
-            raise MapError(f"{path}: cannot read the map: {exc.strerror or exc}") from None
-        if size > MAX_MAP_BYTES:
-            raise MapError(f"{path}: the map is {size} bytes; the limit is {MAX_MAP_BYTES}")
-        data = path.read_bytes()
+        data = read_map_bytes(path)
     elif len(data) > MAX_MAP_BYTES:
         raise MapError(f"{path}: the map is {len(data)} bytes; the limit is {MAX_MAP_BYTES}")
     prolog = data[: data.find(b"<OpenDRIVE")] if b"<OpenDRIVE" in data[:65536] else data[:65536]

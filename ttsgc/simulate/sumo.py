@@ -17,7 +17,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from ttsgc.roads.opendrive import OpenDrive, read_opendrive
+from ttsgc.roads.opendrive import OpenDrive, load_opendrive
 from ttsgc.simulate.network import Network, network_for
 from ttsgc.simulate.xosc_plan import Action, Condition, Entity, Event, Plan
 
@@ -149,7 +149,7 @@ class Executor:
     def __init__(self, plan: Plan, network: Network | None = None, odr: OpenDrive | None = None, seed: int = 1):
         self.plan = plan
         self.network = network or network_for(plan.xodr)
-        self.odr = odr or read_opendrive(plan.xodr)
+        self.odr = odr or load_opendrive(plan.xodr)
         self.seed = seed
         self.by_id, self.by_orig = _lanes(str(self.network.path))
         self.run = Run()
