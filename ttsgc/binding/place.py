@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 from pydantic import BaseModel, ConfigDict
 
 from ttsgc import vocabulary as V
-from ttsgc.binding.rank import DEFAULT_GAP_M, JUNCTION_SIDE, LEFT_SIDE, RIGHT_SIDE, TURN_OF_ACTION, ego_movement
+from ttsgc.binding.rank import (AHEAD, BEHIND, DEFAULT_GAP_M, JUNCTION_SIDE, LEFT_SIDE, RIGHT_SIDE, TURN_OF_ACTION,
+                                ego_movement)
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.roads.index import Approach, MapIndex, Turn, approach_id, upstream_chain
 from ttsgc.roads.opendrive import OpenDrive, Road
@@ -130,12 +131,17 @@ class _Frame:
         section = road.section_at(s)
         return [l.id for l in section.side(-sign if far_side else sign) if l.type == lane_type]
 
+    def lane_id(self, ref: LaneRef, u: float) -> int | None:
+        """The id of a referenced lane at u, None where the road has no such lane."""
+        lanes = self.lanes_at(u, ref.type, ref.far_side)
+        return lanes[ref.rank] if -len(lanes) <= ref.rank < len(lanes) else None
+
     def resolve(self, ref: LaneRef, u: float) -> LanePos:
         road, _, s = self.locate(u)
-        lanes = self.lanes_at(u, ref.type, ref.far_side)
-        if not lanes or not -len(lanes) <= ref.rank < len(lanes):
+        lane = self.lane_id(ref, u)
+        if lane is None:
             raise PlacementError(f"road {road.id} has no {ref.type} lane {ref.rank + 1} at s={s:.1f}")
-        return LanePos(road=road.id, lane=lanes[ref.rank], s=round(s, 3))
+        return LanePos(road=road.id, lane=lane, s=round(s, 3))
 
 
 @dataclass
@@ -153,17 +159,12 @@ class _Occupancy:
             if not lo_limit <= u <= hi_limit:
                 break
             free = all(u + length / 2 + CLEARANCE_M <= a or u - length / 2 - CLEARANCE_M >= b for a, b in spans)
-            if free and _lane_exists(frame, lane, u):
+            if free and frame.lane_id(lane, u) is not None:
                 spans.append((u - length / 2, u + length / 2))
                 return u
             u += step
         raise PlacementError(f"no room for a {length:.1f} m body in the {lane.type} lane of approach "
                              f"{frame.approach.id} (the stretch leading to it is {frame.length:.0f} m)")
-
-
-def _lane_exists(frame: _Frame, lane: LaneRef, u: float) -> bool:
-    n = len(frame.lanes_at(u, lane.type, lane.far_side))
-    return n > 0 and -n <= lane.rank < n
 
 
 def _queue(agents: list[Agent], downstream: bool = False) -> list[Agent]:
@@ -187,13 +188,15 @@ def _spacing(previous: Agent | None, agent: Agent) -> float:
     if previous is not None and previous.behind == agent.name:
         return _gap(previous)
     if agent.behind is not None and (previous is None or agent.behind != previous.name):
-        return DEFAULT_GAP_M[agent.behavior] if agent.type != "pedestrian" else 2.0  # its gap is to the one ahead
+        return _default_gap(agent)  # its own gap is to the one it is behind, elsewhere in the queue
     return _gap(agent)
 
 
 def _gap(agent: Agent) -> float:
-    if agent.gap_m is not None:
-        return agent.gap_m
+    return agent.gap_m if agent.gap_m is not None else _default_gap(agent)
+
+
+def _default_gap(agent: Agent) -> float:
     return 2.0 if agent.type == "pedestrian" else DEFAULT_GAP_M[agent.behavior]
 
 
@@ -250,8 +253,8 @@ class Placer:
         ego_len = V.BODIES[ego.type][0]
         def space(positions: tuple[str, ...]) -> float:  # the longest queue ahead of (or behind) the ego
             return max(sum(V.BODIES[a.type][0] + _gap(a) for a in by_position.get(p, ())) for p in positions)
-        front_space = space(("front", "front_left", "front_right"))
-        back_space = space(("back", "back_left", "back_right"))
+        front_space = space(AHEAD)
+        back_space = space(BEHIND)
         frame = self.frame
         need = ego_len + front_space + back_space + 4.0
         if need > frame.length:
@@ -272,7 +275,7 @@ class Placer:
         self.ego_start = frame.resolve(self.ego_lane, self.u_ego)
         placed = [self._bound(ego, 0, self.ego_start, frame)]
         for position in sorted(by_position, key=lambda p: list(V.POSITIONS).index(p)):
-            downstream = position in ("front", "front_left", "front_right")
+            downstream = position in AHEAD
             for agent in _queue(by_position[position], downstream):
                 placed.append(self._place_agent(agent, 0))
         for k, stage in enumerate(s.stages[1:], start=1):
@@ -280,7 +283,7 @@ class Placer:
             for agent in stage.agents:
                 groups.setdefault(agent.relative_to_ego, []).append(agent)
             for position, group in groups.items():
-                for agent in _queue(group, position in ("front", "front_left", "front_right")):
+                for agent in _queue(group, position in AHEAD):
                     placed.append(self._place_later(agent, k))
         order = {a.name: n for n, a in enumerate(s.agents())}
         return sorted(placed, key=lambda b: order[b.name])
@@ -321,9 +324,9 @@ class Placer:
             target = (crosswalk - 1.5 - length / 2) if crosswalk is not None else min(
                 self.u_ego + 20.0, frame.length - length)
             outward = -1
-        elif where in ("front", "front_left", "front_right"):
+        elif where in AHEAD:
             target, outward = self._after(frame, lane, self.u_ego + ego_len / 2, agent, +1), +1
-        elif where in ("back", "back_left", "back_right"):
+        elif where in BEHIND:
             target, outward = self._after(frame, lane, self.u_ego - ego_len / 2, agent, -1), -1
         else:  # left / right: beside the ego
             target, outward = self.u_ego, -1
@@ -405,8 +408,8 @@ class Placer:
             return self._place_agent(agent, stage)
         length, ego_len = V.BODIES[agent.type][0], V.BODIES[self.scenario.ego.type][0]
         dlane = 1 if where in LEFT_SIDE else -1 if where in RIGHT_SIDE else 0
-        ahead = where in ("front", "front_left", "front_right")
-        behind = where in ("back", "back_left", "back_right")
+        ahead = where in AHEAD
+        behind = where in BEHIND
         previous = [(a, l) for w, a, l in self._later if w == where]
         extra = sum(l + _spacing(p, a) for (p, _), (a, l) in zip([(None, 0)] + previous, previous))
         last = previous[-1][0] if previous else None
@@ -443,10 +446,9 @@ class Placer:
         if start is not None and agent.action == "cross_the_road":
             cross_to = self._far_side(start)
         if start is not None and agent.action == "on_the_sidewalk":
-            walk_to = LanePos(road=start.road, lane=start.lane, s=start.s)
-            road = self.odr.roads[start.road]
-            ahead = 30.0 if (start.lane < 0) else -30.0  # along its side's driving direction
-            walk_to = walk_to.model_copy(update={"s": round(min(max(start.s + ahead, 0.5), road.length - 0.5), 3)})
+            road_length = self.odr.roads[start.road].length
+            ahead = 30.0 if start.lane < 0 else -30.0  # along its side's driving direction
+            walk_to = start.model_copy(update={"s": round(min(max(start.s + ahead, 0.5), road_length - 0.5), 3)})
         distance = 0.0
         if start is not None and not agent.is_ego and self.ego_start is not None:
             distance = round(distance_between(self.odr, start, self.ego_start), 3)

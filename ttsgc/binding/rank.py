@@ -18,6 +18,8 @@ from ttsgc.scenario import Agent, Scenario
 
 LEFT_SIDE = {"left", "front_left", "back_left"}
 RIGHT_SIDE = {"right", "front_right", "back_right"}
+AHEAD = ("front", "front_left", "front_right")
+BEHIND = ("back", "back_left", "back_right")
 JUNCTION_SIDE = {"road_of_left_turn": "left", "road_of_right_turn": "right", "road_of_straight": "straight"}
 TURN_OF_ACTION = {"turn_left": "left", "turn_right": "right", "go_straight": "straight"}
 CROSSWALK_RUN_UP_M = 20.0
