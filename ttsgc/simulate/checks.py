@@ -157,6 +157,8 @@ def _check_agent(plan: Plan, run: Run, odr: OpenDrive, name: str, ego: str | Non
     if action == "block_the_ego":
         return result(*_blocked(after, run.samples.get(ego, []) if ego else [], entity))
     road = spawn.intended[0] if spawn is not None and spawn.intended else samples[0].road
+    if action in ("cross_the_road", "on_the_sidewalk") and road not in odr.roads:
+        return result(False, "its road could not be told")
     if action == "cross_the_road":
         return result(*_crossed(odr, road, samples[0], after))
     if action == "on_the_sidewalk":
@@ -226,8 +228,6 @@ def _blocked(after: list[Sample], ego: list[Sample], entity) -> tuple[bool, str]
 
 
 def _crossed(odr: OpenDrive, road: str, first: Sample, after: list[Sample]) -> tuple[bool, str]:
-    if not road or road not in odr.roads:
-        return False, "its road could not be told"
     _, t0 = _lateral(odr, road, first.x, first.y)
     _, t1 = _lateral(odr, road, after[-1].x, after[-1].y)
     sides = lambda t: "left" if t > 0 else "right"  # noqa: E731
@@ -237,8 +237,6 @@ def _crossed(odr: OpenDrive, road: str, first: Sample, after: list[Sample]) -> t
 
 
 def _walked_on_sidewalk(odr: OpenDrive, road: str, first: Sample, after: list[Sample]) -> tuple[bool, str]:
-    if not road or road not in odr.roads:
-        return False, "its road could not be told"
     _, t0 = _lateral(odr, road, first.x, first.y)
     walked = math.hypot(after[-1].x - first.x, after[-1].y - first.y)
     drift = max(abs(_lateral(odr, road, s.x, s.y)[1] - t0) for s in after[:: 10] + [after[-1]])
