@@ -191,7 +191,7 @@ def stage_durations(scene: BoundScene) -> list[float]:
             if agent.movement:
                 action = 45.0 / speed + (SIGNAL_WAIT_S if signalised else 0.0)
             elif agent.cross_to is not None:
-                action = 25.0 / speed
+                action = 40.0 / speed  # wide roads: a crossing may be 30 m and more
             else:
                 action = 6.0
             longest = max(longest, wait + action)
@@ -314,10 +314,20 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     if _trajectory_bound(agent):
         actions += [("walk_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step)),
                     ("path", _trajectory(agent, minor))]
+    braking = []
     if agent.action in ("stop", "block_the_ego"):
         brake = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}[agent.behavior]
-        actions.append(("brake", xosc.AbsoluteSpeedAction(
+        braking.append(("brake", xosc.AbsoluteSpeedAction(
             0, xosc.TransitionDynamics(xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, brake))))
+    if braking and actions:  # into the ego's lane first, then stop there
+        after_change = xosc.ValueTrigger(f"{agent.name}_in_lane", 0, xosc.ConditionEdge.none,
+                                         xosc.StoryboardElementStateCondition(
+                                             xosc.StoryboardElementType.event, f"{agent.name}_{agent.action}",
+                                             xosc.StoryboardElementState.completeState))
+        later = [(f"{agent.name}_brakes", braking, after_change)]
+    else:
+        actions += braking
+        later = []
     if not actions and agent.stage == 0:  # go_straight: hold the speed (a later agent enters with it)
         actions.append(("keep_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step)))
     if setup and (agent.trigger is not None or agent.stage > 0):  # entering and the route at once; the action
@@ -326,6 +336,7 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
                        _always(f"{agent.name}_setup", 0.0, minor)))
         setup = []
     events.append((label, setup + actions, _start_trigger(agent, label, minor)))
+    events += later
     return events
 
 

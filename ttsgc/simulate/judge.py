@@ -226,6 +226,11 @@ def seeks_danger(plan: Plan, name: str) -> bool:
             or (action.startswith("change_lane") and intent.get(I.IS_EGO) != "true"))
 
 
+def asked_for(plan: Plan, a: str, b: str) -> bool:
+    """A collision the scene asks for: one of the two seeks danger."""
+    return any(n in plan.entities and seeks_danger(plan, n) for n in (a, b))
+
+
 def judge(plan: Plan, trace: Trace, odr: OpenDrive) -> Verdict:
     ego = ego_of(plan)
     bodies = {n: trace.bodies.get(n) or Body(e.length, e.width) for n, e in plan.entities.items()}
@@ -237,7 +242,7 @@ def judge(plan: Plan, trace: Trace, odr: OpenDrive) -> Verdict:
     collisions = []
     for t, a, b, x, y, road in find_collisions(trace, bodies):
         collisions.append(CollisionResult(a=a, b=b, time_s=round(t, 3), x=round(x, 2), y=round(y, 2), road=road,
-                                          asked_for=seeks_danger(plan, a) or seeks_danger(plan, b)))
+                                          asked_for=asked_for(plan, a, b)))
     distance, distance_agent, ttc, ttc_agent = criticality(trace, bodies, ego)
     problems = list(trace.problems)
     if not trace.stopped_by_trigger:
@@ -301,7 +306,7 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
     if action == "stop":
         return result(*_stopped(after))
     if action == "block_the_ego":
-        return result(*_blocked(after, trace.samples.get(ego, []) if ego else [], bodies.get(ego)))
+        return result(*_blocked(after, trace.samples.get(ego, []) if ego else [], bodies.get(ego), bodies[name]))
     position = _start_position(plan, name)
     road = position[0] if position else samples[0].road
     if action in ("cross_the_road", "on_the_sidewalk") and road not in odr.roads:
@@ -360,22 +365,23 @@ def _stopped(after: list[Sample]) -> tuple[bool, str]:
     return False, f"never stood still (slowest {min(s.speed for s in after):.1f} m/s)"
 
 
-def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None) -> tuple[bool, str]:
-    """Stopped, and then stood in front of the ego in its lane."""
+def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body: Body) -> tuple[bool, str]:
+    """Stood still in front of the ego in its lane (or in the ego: a player whose ego does not brake runs
+    into it, a collision the scene asks for)."""
     since = _standstill(after)
     if since is None:
         return False, f"never stood still (slowest {min(s.speed for s in after):.1f} m/s)"
     agent_at = {round(s.t, 3): s for s in after}
-    half = ego_body.length / 2 if ego_body else 2.0
+    reach = (ego_body.length if ego_body else 4.5) / 2 + body.length / 2
     ahead_of_ego = []
     for e in ego:
         agent = agent_at.get(round(e.t, 3))
-        if e.t < since or agent is None:
+        if e.t < since or agent is None or agent.speed >= STOPPED_MPS:
             continue
         dx, dy = agent.x - e.x, agent.y - e.y
         ahead = dx * math.cos(e.h) + dy * math.sin(e.h)
         side = -dx * math.sin(e.h) + dy * math.cos(e.h)
-        if -half < ahead < 40 and abs(side) < 2.0:
+        if -reach < ahead < 40 and abs(side) < 2.0:
             ahead_of_ego.append(e)
     if not ahead_of_ego:
         return False, "stopped, but never in front of the ego"

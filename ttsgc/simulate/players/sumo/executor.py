@@ -390,8 +390,8 @@ class Executor:
 
         edges, total, lane = [self.by_id[lane_id].edge], 0.0, lane_id
         for _ in range(60):
-            links = ts.lane.getLinks(lane)
-            if not links or total > limit_m:
+            links = [k for k in ts.lane.getLinks(lane) if k[6] != "t"]  # never the U-turn netconvert adds
+            if not links or total > limit_m:  # at a map's edge: it leaves there, as a player's vehicle does
                 break
             link = next((k for k in links if k[6] == "s"), links[0])
             lane = link[0]
@@ -495,7 +495,8 @@ class Executor:
             ended = self.run.act_end.get(ref, self.run.event_end.get(ref))
             started = self.run.act_start.get(ref, self.run.fired.get(ref))
             if state in ("endTransition", "completeState", "stopTransition"):
-                return ended is not None and (state == "completeState" or t - ended < STEP_S + 1e-9)
+                return ended is not None and t >= ended - 1e-9 and (state == "completeState"
+                                                                     or t - ended < STEP_S + 1e-9)
             if state in ("startTransition", "runningState"):
                 return started is not None and (state == "runningState" and ended is None
                                                 or state == "startTransition" and t - started < STEP_S + 1e-9)
@@ -603,8 +604,10 @@ class Executor:
                 for action in event.actions:
                     self.execute(event.actor, action, t, event)
                 if not any(m.path_event == event.name for m in self.movers.values()):
-                    self.run.event_end[event.name] = t  # its actions are commands: done when given
-            if all(e.name in self.run.event_end for e in act.events):
+                    # its actions are commands, done when given; a lane change when its time is up
+                    self.run.event_end[event.name] = t + max([a.duration for a in event.actions
+                                                              if a.kind == "lane_change"], default=0.0)
+            if all(self.run.event_end.get(e.name, math.inf) <= t for e in act.events):
                 self.run.act_end[act.name] = t
 
     def _move(self, t: float) -> None:
