@@ -63,6 +63,8 @@ def test_every_agent_of_every_example_does_its_action_in_esmini_and_sumo_agrees(
         assert in_esmini.achieved, report.table()
         assert in_sumo.achieved == in_esmini.achieved, report.table()
     assert played.simulated_s > 0 and not played.problems, report.table()
+    assert all(c.asked_for for c in played.collisions), report.table()  # nobody yields in esmini: turns are taken
+    assert report.ok, report.table()
 
 
 @pytest.mark.parametrize("path", example_scenarios(), ids=lambda p: p.stem)
@@ -141,6 +143,18 @@ def test_a_lane_change_happens_as_written_with_a_vehicle_alongside(esmini, tmp_p
     report = validate(_compiled("rainy_night_cut_in", tmp_path), "all")
     for player in ("esmini", "sumo"):
         assert "changed 1 lane(s) to the left" in _agent(report, player, "c1").reason
+
+
+def test_junction_traffic_takes_turns_and_a_walker_lets_the_ego_pass():
+    """Windows in which each road's vehicles are in the junction do not overlap the ego road's; a walker with
+    no trigger steps out once the ego has gone by."""
+    from ttsgc.binding import bind
+    from ttsgc.roads.retrieve import load_library
+
+    scene = bind(parse_file(EXAMPLES / "intersection.tsg"), load_library(None))
+    waiting = {a.name: a.start_delay_s for a in scene.agents}
+    assert waiting["ego"] == 0.0 and waiting["p1"] > 0
+    assert len({waiting[n] for n in ("c1", "b1", "m1")}) == 3 and min(waiting[n] for n in ("c1", "b1", "m1")) > 0
 
 
 def test_emitted_states_and_edges_are_those_every_player_accepts(tmp_path):

@@ -25,7 +25,7 @@ STOPPED_FOR_S = 1.0
 TURN_MIN_DEG = 30.0
 SETTLE_S = 1.0  # how long after reaching its target road a turning body's heading is read
 GRID_M = 10.0  # cell size of the collision broad phase: larger than any body's half diagonal plus its step
-SETUP_EVENTS = ("_enters", "_route", "_appears", "_leaves")  # events that are not the agent's own action
+SETUP_EVENTS = ("_enters", "_route", "_appears", "_leaves", "_arrives", "_sets_off")  # events that are not the agent's own action
 
 
 class AgentResult(BaseModel):
@@ -366,35 +366,37 @@ def _stopped(after: list[Sample]) -> tuple[bool, str]:
 
 
 def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body: Body) -> tuple[bool, str]:
-    """Stood still in front of the ego in its lane (or in the ego: a player whose ego does not brake runs
-    into it, a collision the scene asks for)."""
+    """Ahead of the ego when its action started, it came to stand on the ego's path: the ego then stopped
+    behind it, or (a player whose ego does not brake) ran into it or through its place."""
     since = _standstill(after)
     if since is None:
         return False, f"never stood still (slowest {min(s.speed for s in after):.1f} m/s)"
-    agent_at = {round(s.t, 3): s for s in after}
+    stop = next(s for s in after if s.t >= since)
+    ego_after = [e for e in ego if e.t >= after[0].t - 1e-9]
+    if not ego_after:
+        return False, "stopped, but the ego was not in the scene"
+    first = ego_after[0]
+    if (after[0].x - first.x) * math.cos(first.h) + (after[0].y - first.y) * math.sin(first.h) <= 0:
+        return False, "was not ahead of the ego when its action started"
     reach = (ego_body.length if ego_body else 4.5) / 2 + body.length / 2
-    ahead_of_ego = []
-    for e in ego:
-        agent = agent_at.get(round(e.t, 3))
-        if e.t < since or agent is None or agent.speed >= STOPPED_MPS:
-            continue
-        dx, dy = agent.x - e.x, agent.y - e.y
+    on_path = []
+    for e in ego_after:
+        dx, dy = stop.x - e.x, stop.y - e.y
         ahead = dx * math.cos(e.h) + dy * math.sin(e.h)
         side = -dx * math.sin(e.h) + dy * math.cos(e.h)
-        if -reach < ahead < 40 and abs(side) < 2.0:
-            ahead_of_ego.append(e)
-    if not ahead_of_ego:
+        if abs(side) < 2.0 and (-reach < ahead < reach or (e.t >= since and 0 < ahead < 40)):
+            on_path.append(e)
+    if not on_path:
         return False, "stopped, but never in front of the ego"
-    initial = ego[0].speed if ego else 0.0
-    slowest = min(e.speed for e in ahead_of_ego)
-    return True, f"stopped in the ego's path (the ego went from {initial:.1f} to {slowest:.1f} m/s behind it)"
+    initial, slowest = first.speed, min(e.speed for e in on_path)
+    return True, f"stopped in the ego's path (the ego went from {initial:.1f} to {slowest:.1f} m/s there)"
 
 
 def _crossed(odr: OpenDrive, road: str, first: Sample, after: list[Sample]) -> tuple[bool, str]:
     _, t0 = _lateral(odr, road, first.x, first.y)
     _, t1 = _lateral(odr, road, after[-1].x, after[-1].y)
     sides = lambda t: "left" if t > 0 else "right"  # noqa: E731
-    if t0 * t1 < 0 and abs(t1) > 1.0:
+    if t0 * t1 < 0 and abs(t1) > 0.5:
         return True, f"crossed road {road} from its {sides(t0)} side to its {sides(t1)} side"
     return False, f"stayed on the {sides(t0)} side of road {road} (t {t0:+.1f} -> {t1:+.1f} m)"
 
