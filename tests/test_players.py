@@ -157,6 +157,28 @@ def test_junction_traffic_takes_turns_and_a_walker_lets_the_ego_pass():
     assert len({waiting[n] for n in ("c1", "b1", "m1")}) == 3 and min(waiting[n] for n in ("c1", "b1", "m1")) > 0
 
 
+def test_agents_of_a_later_stage_at_the_junction_do_their_action(esmini, tmp_path):
+    """They enter with their route when their stage starts, and take turns through the junction."""
+    source = tmp_path / "later.tsg"
+    source.write_text('scenario "later at the junction"\nroad {\n    at junction\n}\nstage first {\n'
+                      '    ego car go_straight\n}\nstage second {\n    car c1 at road_of_left_turn turn_left\n'
+                      '    car c2 at road_of_straight go_straight\n}\n')
+    out = tmp_path / "later.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    report = validate(out, "all")
+    assert report.ok, report.table()
+
+
+def test_two_walkers_queued_on_one_sidewalk_keep_their_distance(esmini, tmp_path):
+    source = tmp_path / "walkers.tsg"
+    source.write_text('scenario "two walkers"\nstage main {\n    ego car go_straight\n'
+                      '    pedestrian p1 at right on_the_sidewalk\n    pedestrian p2 at right on_the_sidewalk behind p1\n}\n')
+    out = tmp_path / "walkers.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    report = validate(out, "all")
+    assert report.ok and not report.collisions, report.table()
+
+
 def test_emitted_states_and_edges_are_those_every_player_accepts(tmp_path):
     """CARLA ScenarioRunner accepts startTransition, stopTransition, endTransition and completeState only;
     a start condition that may hold at the first evaluation must not wait for a rising edge."""

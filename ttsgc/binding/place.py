@@ -500,41 +500,47 @@ def stagger_at_junction(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundA
     """Traffic from different roads takes turns through the junction: a road's vehicles that would be in the
     junction while the ego's road's (or an earlier road's) are there wait at their start. A scene file has no
     right of way, and a player whose drivers do not yield (esmini) would otherwise play a crash no scene asked
-    for. Vehicles of one road and direction share a delay, so that none waits in front of its follower."""
-    windows: dict[tuple[str, bool], list[float]] = {}
-    ego = next((a for a in agents if a.is_ego), None)
+    for. Vehicles of one road and direction share a delay, so that none waits in front of its follower. Each
+    stage takes turns on its own, from its start (a later stage's agents enter together)."""
+    delays: dict[tuple[int, str, bool], float] = {}
+    for stage in sorted({a.stage for a in agents}):
+        delays.update(_turns(agents, stage, odr))
+    out = []
     for agent in agents:
-        if agent.stage != 0 or agent.start is None or len(agent.route) < 2 or agent.speed_mps <= 0:
+        key = (agent.stage, agent.start.road, agent.start.lane > 0) if agent.start is not None else None
+        delay = delays.get(key, 0.0) if len(agent.route) >= 2 else 0.0
+        out.append(agent.model_copy(update={"start_delay_s": delay}) if delay else agent)
+    return out
+
+
+def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[int, str, bool], float]:
+    windows: dict[tuple[int, str, bool], list[float]] = {}
+    first = None  # the ego's road goes first in its stage
+    for agent in agents:
+        if agent.stage != stage or agent.start is None or len(agent.route) < 2 or agent.speed_mps <= 0:
             continue
         via = agent.route[1]
         road = odr.roads[via.road]
-        entry = odr.roads[via.road].lane_point(0.0 if via.lane < 0 else road.length, via.lane)
+        entry = road.lane_point(0.0 if via.lane < 0 else road.length, via.lane)
         here = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
         arrive = max(0.0, math.hypot(entry.x - here.x, entry.y - here.y) - agent.length / 2) / agent.speed_mps
         leave = arrive + (road.length + agent.length + 2.0) / agent.speed_mps
-        key = (agent.start.road, agent.start.lane > 0)
-        window = windows.setdefault(key, [arrive, leave, 0.0])
+        key = (stage, agent.start.road, agent.start.lane > 0)
+        window = windows.setdefault(key, [arrive, leave])
         window[0], window[1] = min(window[0], arrive), max(window[1], leave)
-    if ego is None or len(windows) < 2:
-        return agents
-    ego_key = (ego.start.road, ego.start.lane > 0) if ego.start is not None and len(ego.route) >= 2 else None
-    order = sorted(windows, key=lambda k: (k != ego_key, windows[k][0], k))
+        if agent.is_ego:
+            first = key
+    delays: dict[tuple[int, str, bool], float] = {}
     taken: list[tuple[float, float]] = []
-    for key in order:
-        arrive, leave, _ = windows[key]
+    for key in sorted(windows, key=lambda k: (k != first, windows[k][0], k)):
+        arrive, leave = windows[key]
         delay = 0.0
-        if key != ego_key:
-            for start, end in sorted(taken):
-                if arrive + delay < end + JUNCTION_GAP_S and leave + delay > start - JUNCTION_GAP_S:
-                    delay = end + JUNCTION_GAP_S - arrive
-        windows[key][2] = round(delay, 2)
+        for start, end in sorted(taken):
+            if arrive + delay < end + JUNCTION_GAP_S and leave + delay > start - JUNCTION_GAP_S:
+                delay = end + JUNCTION_GAP_S - arrive
+        delays[key] = round(delay, 2)
         taken.append((arrive + delay, leave + delay))
-    out = []
-    for agent in agents:
-        key = (agent.start.road, agent.start.lane > 0) if agent.start is not None else None
-        delay = windows[key][2] if key in windows and agent.stage == 0 and len(agent.route) >= 2 else 0.0
-        out.append(agent.model_copy(update={"start_delay_s": delay}) if delay else agent)
-    return out
+    return delays
 
 
 def let_the_ego_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:

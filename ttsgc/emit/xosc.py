@@ -331,8 +331,8 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     if not actions and agent.stage == 0 and not agent.start_delay_s:  # go_straight: hold the speed (a later
         # agent enters with it, a waiting one sets off with it)
         actions.append(("keep_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step)))
-    if setup and (agent.trigger is not None or agent.stage > 0):  # entering and the route at once; the action
-        # waits for its trigger, or for the body to be in the scene
+    if setup and (agent.trigger is not None or (agent.stage > 0 and actions)):  # entering and the route at
+        # once; the action waits for its trigger, or for the body to be in the scene
         events.append((f"{agent.name}_{'enters' if agent.stage > 0 else 'route'}", setup,
                        _always(f"{agent.name}_setup", 0.0, minor)))
         setup = []

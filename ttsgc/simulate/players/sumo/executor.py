@@ -175,6 +175,7 @@ class Executor:
         self.since: dict[int, float] = {}  # condition (by identity) -> when its edge was met (its delay runs)
         self.commanded: dict[str, float] = {}  # vehicle -> the speed the file last set
         self.yielding: set[str] = set()  # vehicles slowed for a moved body in their path
+        self.pending_routes: dict[str, tuple[Action, Event]] = {}  # routes given before SUMO inserted the vehicle
 
     # -- coordinates --------------------------------------------------------------------------------------
     def world(self, road: str, lane: int, s: float) -> tuple[float, float, float]:
@@ -309,6 +310,8 @@ class Executor:
                     self.run.problems.append(f"{event.name}: '{actor}' has no lane {int(action.value):+d} to change to")
                 else:
                     ts.vehicle.changeLane(actor, index, 60.0)
+            elif action.kind == "route" and actor not in self.active:
+                self.pending_routes[actor] = (action, event)  # added, not yet inserted: routed once it is
             elif action.kind == "route":
                 self._route(entity, action, event)
             elif action.kind == "acquire":
@@ -740,6 +743,12 @@ class Executor:
             else:  # added, not yet inserted
                 continue
             self.active.add(name)
+            if name in self.pending_routes:
+                action, event = self.pending_routes.pop(name)
+                try:
+                    self._route(entity, action, event)
+                except Exception as exc:  # noqa: BLE001 - a route SUMO refuses is a failed action, reported
+                    self.run.problems.append(f"{event.name}: route failed in SUMO: {exc}")
             road, lane = self.odr_of(lane_id)
             edge, _, index = lane_id.rpartition("_")
             self.run.samples.setdefault(name, []).append(Sample(
