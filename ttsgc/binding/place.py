@@ -288,6 +288,7 @@ class Placer:
                     placed.append(self._place_later(agent, k))
         order = {a.name: n for n, a in enumerate(s.agents())}
         placed = sorted(placed, key=lambda b: order[b.name])
+        placed = no_faster_than_the_one_ahead(placed)
         return let_the_ego_pass(stagger_at_junction(placed, self.odr), self.odr)
 
     def _ego_lane_rank(self) -> int:
@@ -541,6 +542,28 @@ def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[i
         delays[key] = round(delay, 2)
         taken.append((arrive + delay, leave + delay))
     return delays
+
+
+def no_faster_than_the_one_ahead(agents: list[BoundAgent]) -> list[BoundAgent]:
+    """In one lane, a vehicle drives no faster than the one ahead of it, unless it is aggressive (its
+    collisions are asked for) or the one ahead leaves the lane or stops on purpose: a player whose drivers
+    do not follow (esmini) would otherwise play a rear-end crash no scene asked for."""
+    lanes: dict[tuple[str, int], list[BoundAgent]] = {}
+    for agent in agents:
+        if agent.stage == 0 and agent.start is not None and agent.type not in ("pedestrian",) and \
+                agent.road_type == "driving":
+            lanes.setdefault((agent.start.road, agent.start.lane), []).append(agent)
+    capped: dict[str, float] = {}
+    for (_, lane), queue in lanes.items():
+        queue.sort(key=lambda a: -a.start.s if lane < 0 else a.start.s)  # the front first
+        limit = None
+        for agent in queue:
+            speed = agent.speed_mps
+            if limit is not None and agent.behavior != "aggressive" and speed > limit:
+                speed = capped[agent.name] = limit
+            leaves = agent.lane_change is not None or agent.action in ("stop", "block_the_ego")
+            limit = None if leaves else speed
+    return [a.model_copy(update={"speed_mps": capped[a.name]}) if a.name in capped else a for a in agents]
 
 
 def let_the_ego_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
