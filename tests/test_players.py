@@ -179,6 +179,21 @@ def test_two_walkers_queued_on_one_sidewalk_keep_their_distance(esmini, tmp_path
     assert report.ok and not report.collisions, report.table()
 
 
+def test_in_one_lane_nobody_drives_faster_than_the_one_ahead_unless_aggressive(tmp_path):
+    from ttsgc.binding import bind
+    from ttsgc.roads.retrieve import load_library
+
+    def speeds(ego_behavior: str) -> dict[str, float]:
+        source = tmp_path / "queue.tsg"
+        source.write_text(f'scenario "queue"\nroad {{\n    not at junction\n}}\nstage main {{\n'
+                          f'    ego car go_straight {ego_behavior}\n    car a1 at front go_straight cautious\n}}\n')
+        return {a.name: a.speed_mps for a in bind(parse_file(source), load_library(None)).agents}
+    normal = speeds("normal")
+    assert normal["ego"] == normal["a1"]  # would be 0.85 / 0.6 of the limit: a rear-end crash in esmini
+    aggressive = speeds("aggressive")
+    assert aggressive["ego"] > aggressive["a1"]
+
+
 def test_emitted_states_and_edges_are_those_every_player_accepts(tmp_path):
     """CARLA ScenarioRunner accepts startTransition, stopTransition, endTransition and completeState only;
     a start condition that may hold at the first evaluation must not wait for a rising edge."""
