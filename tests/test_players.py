@@ -172,7 +172,8 @@ def test_agents_of_a_later_stage_at_the_junction_do_their_action(esmini, tmp_pat
 def test_two_walkers_queued_on_one_sidewalk_keep_their_distance(esmini, tmp_path):
     source = tmp_path / "walkers.tsg"
     source.write_text('scenario "two walkers"\nstage main {\n    ego car go_straight\n'
-                      '    pedestrian p1 at right on_the_sidewalk\n    pedestrian p2 at right on_the_sidewalk behind p1\n}\n')
+                      '    pedestrian p1 at right on_the_sidewalk\n'
+                      '    pedestrian p2 at right on_the_sidewalk behind p1\n}\n')
     out = tmp_path / "walkers.xosc"
     write(compile_scenario(parse_file(source), out), out)
     report = validate(out, "all")
