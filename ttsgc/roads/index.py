@@ -17,7 +17,6 @@ from functools import cached_property
 from pathlib import Path
 from typing import Literal
 
-import networkx as nx
 from platformdirs import user_cache_dir
 from pydantic import BaseModel, ConfigDict, ValidationError
 
@@ -89,8 +88,11 @@ class MapIndex(_Data):
         return {a.id: a for a in self.approaches}
 
     @cached_property
-    def graph(self) -> nx.DiGraph:
-        """Approaches as nodes; an edge for every turn, labelled with its direction and connecting road."""
+    def graph(self) -> "networkx.DiGraph":  # noqa: F821
+        """Approaches as nodes; an edge for every turn, labelled with its direction and connecting road.
+        networkx is imported here, for route searches, so that no command pays for it at start-up."""
+        import networkx as nx
+
         g = nx.DiGraph()
         for a in self.approaches:
             g.add_node(a.id, approach=a)
