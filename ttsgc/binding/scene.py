@@ -45,8 +45,8 @@ def bind(scenario: Scenario, library: list[MapIndex], seed: int | None = None, s
     (the simulator's retry asks for the next-ranked road). only: (map name, approach id) to bind to that
     road alone (a TTSG plan's own road), or fail."""
     seed = seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
-    approaches = retrieve(library, scenario.road)
-    candidates = [(a, m) for m in library for a in m.approaches if a in approaches]
+    retrieved = {id(a) for a in retrieve(library, scenario.road)}  # by identity: equality compares every field
+    candidates = [(a, m) for m in library for a in m.approaches if id(a) in retrieved]
     if only is not None:
         candidates = [(a, m) for a, m in candidates if (m.name, a.id) == only]
         if not candidates:
