@@ -11,11 +11,14 @@ from pathlib import Path
 from ttsgc import __version__
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.files import write_atomic
-from ttsgc.language import ScenarioError, format_scenario, parse_file
-from ttsgc.scenario import RoadSpec
+
+# Each command imports what it uses inside its function: `ttsgc validate` needs neither the language nor the
+# compiler, `ttsgc check` no simulator; a start-up that loads everything costs every command.
 
 
 def _check(args) -> int:
+    from ttsgc.language import ScenarioError, parse_file
+
     results, failed = [], False
     for path in args.files:
         try:
@@ -34,6 +37,8 @@ def _check(args) -> int:
 
 
 def _fmt(args) -> int:
+    from ttsgc.language import ScenarioError, format_scenario, parse_file
+
     invalid = unformatted = False
     for path in args.files:
         try:
@@ -91,6 +96,8 @@ def _lower(args) -> int:
 
 
 def _compile(args) -> int:
+    from ttsgc.language import parse_file
+
     source = Path(args.input)
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
@@ -176,6 +183,7 @@ def _eval(args) -> int:
 def _import_ttsg(args) -> int:
     from ttsgc.pipeline import compile_and_prove, write
     from ttsgc.roads.retrieve import load_library
+    from ttsgc.language import format_scenario
     from ttsgc.ttsg_import import import_plan
 
     imported = import_plan(args.plan, args.road_info)
@@ -247,6 +255,7 @@ APPROACH_HEADERS = ["map", "approach", "lanes", "opp", "length", "edge", "juncti
 
 def _maps(args) -> int:
     from ttsgc.roads.retrieve import load_library, retrieve
+    from ttsgc.scenario import RoadSpec
 
     library = load_library(args.maps)
     if args.maps_command == "list":

@@ -11,8 +11,6 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 
-import jinja2
-
 from ttsgc import vocabulary as V
 from ttsgc.language import ScenarioError, parse
 from ttsgc.lowering.offline import LoweringError
@@ -48,7 +46,9 @@ class LlmLowered:
     usage: dict[str, int] = field(default_factory=dict)
 
 
-def _environment() -> jinja2.Environment:
+def _environment() -> jinja2.Environment:  # noqa: F821
+    import jinja2  # here, not at the top: the offline lowering and every other command do without it
+
     return jinja2.Environment(loader=jinja2.FileSystemLoader(str(resource_dir("templates"))),
                               undefined=jinja2.StrictUndefined, keep_trailing_newline=True, autoescape=False)
 
