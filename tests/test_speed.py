@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -57,3 +58,79 @@ def test_the_lean_writer_has_every_name_the_package_import_gives():
     lean = fresh(f"import ttsgc.emit.xosc\nfrom scenariogeneration import xosc\nxosc.ParseOpenScenario\n{names}")
     plain = fresh(f"from scenariogeneration import xosc\n{names}")
     assert lean == plain and len(plain) > 200
+
+
+# -- caches across processes ------------------------------------------------------------------------------
+
+MAP = ROOT / "maps" / "town_row.xodr"
+
+
+def _fresh_process_memory(monkeypatch):
+    """Forget what this process parsed, as a new process would, and fail on any parse from the file."""
+    from ttsgc.roads import opendrive
+
+    monkeypatch.setattr(opendrive, "_PARSED", {})
+    return opendrive
+
+
+def test_a_parsed_map_is_cached_by_content_and_loads_without_parsing(tmp_path, monkeypatch):
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path))
+    opendrive = _fresh_process_memory(monkeypatch)
+    first = opendrive.load_opendrive(MAP)
+    assert len(list((tmp_path / "index").glob("*.pickle"))) == 1
+    _fresh_process_memory(monkeypatch)
+    monkeypatch.setattr(opendrive, "read_opendrive", lambda *a: (_ for _ in ()).throw(AssertionError("parsed")))
+    copy = tmp_path / "elsewhere.xodr"
+    copy.write_bytes(MAP.read_bytes())
+    again = opendrive.load_opendrive(copy)
+    assert again == replace(first, path=str(copy))
+
+
+def test_a_corrupt_parsed_map_entry_is_parsed_again_and_rewritten(tmp_path, monkeypatch):
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path))
+    opendrive = _fresh_process_memory(monkeypatch)
+    first = opendrive.load_opendrive(MAP)
+    entry = next((tmp_path / "index").glob("*.pickle"))
+    good = entry.read_bytes()
+    for damaged in (b"", good[: len(good) // 2], b"not a pickle at all", good.replace(b"Road", b"Rope")):
+        entry.write_bytes(damaged)
+        _fresh_process_memory(monkeypatch)
+        assert opendrive.load_opendrive(MAP) == first
+        assert entry.read_bytes() == good  # rewritten
+
+
+CALLED: list[str] = []
+
+
+def _payload():
+    CALLED.append("ran")
+
+
+class _Hostile:
+    def __reduce__(self):
+        return _payload, ()
+
+
+def test_a_cache_entry_cannot_make_the_loader_run_other_code(tmp_path, monkeypatch):
+    import pickle
+
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path))
+    opendrive = _fresh_process_memory(monkeypatch)
+    first = opendrive.load_opendrive(MAP)
+    entry = next((tmp_path / "index").glob("*.pickle"))
+    sha = opendrive.hashlib.sha256(MAP.read_bytes()).hexdigest()
+    entry.write_bytes(pickle.dumps((sha, _Hostile())))
+    _fresh_process_memory(monkeypatch)
+    assert opendrive.load_opendrive(MAP) == first
+    assert CALLED == []
+
+
+def test_the_net_offset_is_read_from_the_head_of_the_file(tmp_path):
+    from ttsgc.simulate.network import net_offset
+
+    net = tmp_path / "x.net.xml"
+    net.write_text('<?xml version="1.0"?>\n<net version="1.20"><location netOffset="116.00,-390.50" '
+                   'convBoundary="0,0,1,1"/><edge id="e"><lane id="e_0" index="0" shape="0,0 1,1"/></edge></net>')
+    assert net_offset(net) == (116.0, -390.5)
+    net.write_text('<net version="1.20"><edge id="e"/></net>')
+    assert net_offset(net) == (0.0, 0.0)

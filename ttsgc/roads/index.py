@@ -22,7 +22,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ttsgc import vocabulary as V
 from ttsgc.files import write_atomic
-from ttsgc.roads.opendrive import OpenDrive, Road, read_map_bytes, read_opendrive
+from ttsgc.roads.opendrive import OpenDrive, Road, parsed_map, read_map_bytes
 
 INDEX_VERSION = 6
 STRAIGHT_LIMIT_DEG = 45.0  # an exit within this of straight ahead is straight, unless another is straighter
@@ -473,7 +473,7 @@ def load_index(path: str | Path, use_cache: bool = True) -> MapIndex:
                 return index.model_copy(update={"path": str(path)})
         except (ValidationError, ValueError, OSError):
             pass  # corrupt or foreign: rebuilt below
-    index = build_index(read_opendrive(path, data), sha)
+    index = build_index(parsed_map(path, data, sha, use_cache), sha)  # the parsed map is cached too
     index = index.model_copy(update={"path": str(path)})
     if use_cache:
         try:

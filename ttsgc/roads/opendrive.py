@@ -10,7 +10,9 @@ from __future__ import annotations
 import bisect
 import hashlib
 import math
+import pickle
 from dataclasses import dataclass, field, replace
+from functools import cache
 from pathlib import Path
 
 from lxml import etree
@@ -303,6 +305,10 @@ def _wrap(angle: float) -> float:
     return math.atan2(math.sin(angle), math.cos(angle))
 
 
+_CACHED_CLASSES = {c.__name__: c for c in (Pose, Geometry, Cubic, Lane, LaneSection, Link, Signal, RoadObject, Road,
+                                            Connection, Junction, OpenDrive)}
+
+
 # -- reading ----------------------------------------------------------------------------------------------
 
 def read_map_bytes(path: str | Path) -> bytes:
@@ -321,17 +327,71 @@ _PARSED: dict[str, OpenDrive] = {}  # by content hash, the most recent last
 PARSED_KEPT = 8
 
 
-def load_opendrive(path: str | Path) -> OpenDrive:
+def load_opendrive(path: str | Path, use_cache: bool = True) -> OpenDrive:
     """read_opendrive, remembered by content: binding, retries and simulation of one scene read the same map
-    several times, and a CARLA town takes about 0.1 s to parse."""
+    several times, and a CARLA town takes about 0.15 s to parse. The parsed map is also kept beside the road
+    index's cache entries for later processes, where it loads several times faster than it parses."""
     path = Path(path)
     data = read_map_bytes(path)
-    sha = hashlib.sha256(data).hexdigest()
-    odr = _PARSED.pop(sha, None) or read_opendrive(path, data)
+    return parsed_map(path, data, hashlib.sha256(data).hexdigest(), use_cache)
+
+
+def parsed_map(path: Path, data: bytes, sha: str, use_cache: bool = True) -> OpenDrive:
+    """load_opendrive for a caller that has already read and hashed the file."""
+    odr = _PARSED.pop(sha, None)
+    if odr is None:
+        entry = _parsed_entry(sha) if use_cache else None
+        odr = _read_parsed(entry, sha) if entry is not None else None
+        if odr is None:
+            odr = read_opendrive(path, data)
+            if entry is not None:
+                _write_parsed(entry, sha, odr)
     _PARSED[sha] = odr
     while len(_PARSED) > PARSED_KEPT:
         del _PARSED[next(iter(_PARSED))]
     return replace(odr, path=str(path))
+
+
+@cache
+def _reader_fingerprint() -> str:
+    """Any change to this module (the reader or the classes) makes the cached parsed maps someone else's."""
+    return hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:12]
+
+
+def _parsed_entry(sha: str) -> Path:
+    from ttsgc.roads.index import cache_dir  # the index's cache folder; imported here, index imports this module
+
+    return cache_dir() / f"{sha}.parsed-{_reader_fingerprint()}.pickle"
+
+
+class _MapUnpickler(pickle.Unpickler):
+    """Builds only this module's map classes (and the tuples, lists and dicts they hold): a cache entry
+    written by anyone else cannot run foreign code, it can only fail to load, and is then rebuilt."""
+
+    def find_class(self, module: str, name: str):
+        if module == __name__ and name in _CACHED_CLASSES:
+            return _CACHED_CLASSES[name]
+        raise pickle.UnpicklingError(f"{module}.{name} is not part of a parsed map")
+
+
+def _read_parsed(entry: Path, sha: str) -> OpenDrive | None:
+    try:
+        with entry.open("rb") as f:
+            stored_sha, odr = _MapUnpickler(f).load()
+    except Exception:  # noqa: BLE001 - absent, corrupt, truncated or foreign: parsed again and rewritten
+        # (pickle raises many kinds of error on damaged input; none of them may stop a compile)
+        return None
+    return odr if stored_sha == sha and isinstance(odr, OpenDrive) else None
+
+
+def _write_parsed(entry: Path, sha: str, odr: OpenDrive) -> None:
+    from ttsgc.files import write_atomic
+
+    try:
+        entry.parent.mkdir(parents=True, exist_ok=True)
+        write_atomic(entry, pickle.dumps((sha, odr), protocol=pickle.HIGHEST_PROTOCOL))
+    except OSError:
+        pass  # a read-only cache only costs speed
 
 
 def read_opendrive(path: str | Path, data: bytes | None = None) -> OpenDrive:

@@ -110,6 +110,12 @@ def network_for(xodr: str | Path) -> Network:
                      f"{xodr} (stop signs)")
                 first = second
             write_atomic(net, first.read_bytes())
-    location = etree.parse(str(net)).find("location")
-    dx, dy = (float(v) for v in location.get("netOffset", "0,0").split(","))
-    return Network(net, (dx, dy))
+    return Network(net, net_offset(net))
+
+
+def net_offset(net: Path) -> tuple[float, float]:
+    """The net's offset, from its <location> element: the first in the file, so the rest is never parsed."""
+    for _, element in etree.iterparse(str(net), events=("start",), tag="location"):
+        dx, dy = (float(v) for v in element.get("netOffset", "0,0").split(","))
+        return dx, dy
+    return 0.0, 0.0
