@@ -18,6 +18,7 @@ from pathlib import Path
 from lxml import etree
 
 from ttsgc.roads.opendrive import OpenDrive, load_opendrive
+from ttsgc.simulate.lean_libsumo import load_libsumo
 from ttsgc.simulate.network import Network, network_for
 from ttsgc.simulate.xosc_plan import Action, Condition, Entity, Event, Plan
 
@@ -405,7 +406,7 @@ class Executor:
         return samples[-1] if samples and name in self.present and name in self.active else None
 
     def execute_plan(self) -> Run:
-        import libsumo as ts
+        ts = load_libsumo()  # the first import of libsumo in the process: see lean_libsumo
 
         ts.start(["sumo", "-n", str(self.network.path), "--step-length", str(STEP_S), "--no-step-log", "true",
                   "--seed", str(self.seed), "--collision.action", "none", "--time-to-teleport", "-1",
