@@ -8,6 +8,7 @@ checkouts alternate, so a load that comes and goes on a shared machine falls on 
 from __future__ import annotations
 
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -15,6 +16,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import NamedTuple
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -36,17 +38,24 @@ def environment(checkout: Path, cache: Path) -> dict[str, str]:
     return env
 
 
+class Sample(NamedTuple):
+    wall: float  # seconds, start-up included
+    cpu: float  # user + system seconds of the process: far less sensitive than wall time to a loaded machine
+
+
 def timed(command: list[str], env: dict[str, str] | None = None, cwd: Path | None = None, timeout: float = 600,
-          check: bool = True) -> float:
-    """Wall seconds of one process, start-up included. It runs in a neutral folder by default: `python -m`
-    puts the working folder first on the path, which would hide the checkout's PYTHONPATH."""
+          check: bool = True) -> Sample:
+    """One process, timed. It runs in a neutral folder by default: `python -m` puts the working folder first
+    on the path, which would hide the checkout's PYTHONPATH."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     done = subprocess.run(command, env=env, cwd=cwd or tempfile.gettempdir(), capture_output=True, timeout=timeout)
     elapsed = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if check and done.returncode != 0:
         raise SystemExit(f"failed ({done.returncode}): {' '.join(map(str, command))}\n"
                          f"{done.stderr.decode(errors='replace')[-2000:]}")
-    return elapsed
+    return Sample(elapsed, after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime)
 
 
 def ttsgc(*args: str) -> list[str]:
@@ -66,6 +75,10 @@ def cold_cache(primed: Path, into: Path) -> Path:
 
 def median(samples: list[float]) -> float:
     return statistics.median(samples)
+
+
+def medians(samples: list[Sample]) -> Sample:
+    return Sample(median([s.wall for s in samples]), median([s.cpu for s in samples]))
 
 
 def ms(seconds: float) -> str:
