@@ -94,6 +94,7 @@ def _compile(args) -> int:
     source = Path(args.input)
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
+    args.osc_version = _target_version(args)
     base_seed = args.seed
     status = ExitCode.OK
     for k in range(args.variants):
@@ -126,10 +127,10 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
     log = lambda message: print(message, file=sys.stderr)  # noqa: E731
     if args.no_simulate:
         compiled, report = compile_scenario(scenario, out, maps=args.maps, seed=seed,
-                                            version=args.osc_version), None
+                                            version=args.osc_version, target=args.target), None
     else:
         compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=seed,
-                                             version=args.osc_version, log=log)
+                                             version=args.osc_version, log=log, target=args.target)
     scene = compiled.scene
     if args.explain:
         print(scene.explanation)
@@ -154,6 +155,32 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
     if scene.unmet:
         print(f"ttsgc: warning: the chosen road does not meet: {', '.join(scene.unmet)}", file=sys.stderr)
     return ExitCode.OK
+
+
+def _target_version(args) -> str:
+    from ttsgc.emit.xosc import DEFAULT_VERSION
+    from ttsgc.targets import choose_version
+
+    return choose_version(args.target, args.osc_version, DEFAULT_VERSION)
+
+
+def _lint(args) -> int:
+    from ttsgc.targets.coverage import coverage, errors, lint_file
+
+    title = coverage(args.target).title
+    failed = False
+    for path in args.files:
+        findings = lint_file(path, args.target)
+        shown = findings if args.all else errors(findings)
+        for finding in shown:
+            print(finding.render(path, title))
+        unsupported = len(errors(findings))
+        failed = failed or unsupported > 0
+        hidden = len(findings) - len(shown)
+        print(f"{path}: {unsupported} element(s) {title} does not support"
+              + (f" ({hidden} warning(s) and note(s) not shown; --all shows them)" if hidden else ""),
+              file=sys.stderr)
+    return ExitCode.UNSUPPORTED_BY_TARGET if failed else ExitCode.OK
 
 
 def _eval(args) -> int:
@@ -337,8 +364,11 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--seed", type=int, help="pins the choice among equally ranked roads "
                                                    "(default: the scene's seed, else 0)")
     compile_.add_argument("--explain", action="store_true", help="print the ranking table of candidate roads")
-    compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"], default="1.3",
-                          help="OpenSCENARIO version (1.0 is what CARLA ScenarioRunner reads; default 1.3)")
+    compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"],
+                          help="OpenSCENARIO version (default 1.3; --target carla writes 1.0)")
+    compile_.add_argument("--target", choices=["generic", "esmini", "carla"], default="generic",
+                          help="the player the file is written for: generic OpenSCENARIO, esmini (held against its "
+                               "coverage), carla (the 1.0 subset CARLA ScenarioRunner reads); default generic")
     compile_.add_argument("--no-simulate", action="store_true", help="skip the simulation check")
     compile_.add_argument("--report", metavar="REPORT.json", help="write the simulation report as JSON")
     compile_.set_defaults(run=_compile)
@@ -348,6 +378,13 @@ def build_parser() -> argparse.ArgumentParser:
     validate.add_argument("scene", metavar="SCENE.xosc")
     validate.add_argument("--report", metavar="REPORT.json", help="write the report as JSON")
     validate.set_defaults(run=_validate)
+
+    lint = commands.add_parser("lint", help="list every element of .xosc files that a player does not support, "
+                                            "from its documented coverage")
+    lint.add_argument("files", nargs="+", metavar="FILE.xosc")
+    lint.add_argument("--target", choices=["carla", "esmini"], required=True, help="the player")
+    lint.add_argument("--all", action="store_true", help="also list what is supported with a limit, or read past")
+    lint.set_defaults(run=_lint)
 
     eval_ = commands.add_parser("eval", parents=[llm_options],
                                 help="the paper's metrics (AA, RA, SA, AD, RD, failure rate) on a suite")

@@ -14,6 +14,7 @@ from ttsgc.files import write_atomic
 from ttsgc.roads.index import MapIndex
 from ttsgc.roads.retrieve import load_library
 from ttsgc.scenario import Scenario
+from ttsgc.targets import GENERIC, check_scenario, retarget, written_version
 
 
 @dataclass(frozen=True)
@@ -35,11 +36,21 @@ def map_file_name(scene: BoundScene, out_dir: Path) -> str:
 
 def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
                      version: str = DEFAULT_VERSION, skip: int = 0, only: tuple[str, str] | None = None,
-                     library: list[MapIndex] | None = None) -> Compiled:
-    """maps: files and folders as `--maps` takes them; library: the same, already loaded (wins over maps)."""
+                     library: list[MapIndex] | None = None, target: str = GENERIC) -> Compiled:
+    """maps: files and folders as `--maps` takes them; library: the same, already loaded (wins over maps).
+    target: the player the file is written for (ttsgc.targets)."""
+    check_scenario(scenario, target)
+    version = written_version(target, version)
     scene = bind(scenario, library if library is not None else load_library(maps), seed=seed, skip=skip, only=only)
     map_name = map_file_name(scene, out.parent)
-    return Compiled(scene, emit(scene, map_name, version), map_name)
+    return for_target(Compiled(scene, emit(scene, map_name, version), map_name), target)
+
+
+def for_target(compiled: Compiled, target: str) -> Compiled:
+    """The compiled scene with its file made for the target player (the generic file stays what is proven)."""
+    if target == GENERIC:
+        return compiled
+    return Compiled(compiled.scene, retarget(compiled.xosc, compiled.scene, target), compiled.map_name)
 
 
 MAX_SIMULATION_TRIES = 3
@@ -60,9 +71,12 @@ def simulate_compiled(compiled: Compiled, out: Path):
 
 def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
                       version: str = DEFAULT_VERSION, tries: int = MAX_SIMULATION_TRIES, log=print,
-                      only: tuple[str, str] | None = None):
+                      only: tuple[str, str] | None = None, target: str = GENERIC):
     """Compile, then simulate; when the scene fails on its road, compile onto the next-ranked road, at most
-    `tries` roads in all. Returns (compiled, report) of the first that passes, else of the last tried."""
+    `tries` roads in all. Returns (compiled, report) of the first that passes, else of the last tried; the
+    compiled file is the target's, made after the generic file is proven."""
+    check_scenario(scenario, target)
+    version = written_version(target, version)
     compiled = report = None
     library = load_library(maps)
     for attempt in range(tries):
@@ -81,7 +95,7 @@ def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None
         log(f"ttsgc: {compiled.scene.map_name} {compiled.scene.approach}: the scene failed in simulation: "
             f"{'; '.join(failed) or '; '.join(report.problems)}"
             + ("; trying the next-ranked road" if attempt + 1 < tries else ""))
-    return compiled, report
+    return for_target(compiled, target), report
 
 
 def write(compiled: Compiled, out: Path) -> None:
