@@ -95,6 +95,8 @@ def _compile(args) -> int:
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
     args.osc_version = _target_version(args)
+    if args.distribution:
+        return _compile_distribution(args, source, kind, out)
     base_seed = args.seed
     status = ExitCode.OK
     for k in range(args.variants):
@@ -109,6 +111,43 @@ def _compile(args) -> int:
             scenario = parse_file(source)
         status = max(status, _compile_one(args, scenario, target, seed, lowering))
     return status
+
+
+def _compile_distribution(args, source: Path, kind: str, out: Path) -> int:
+    """--variants N --distribution: one scenario with parameters, its distribution, N proven concrete files."""
+    from ttsgc.pipeline import compile_distribution, distribution_paths, write_distribution
+
+    lowering = None
+    if kind == "text":
+        prompt, lowering = _lower_file(args, source, args.seed or 0)
+        scenario = lowering.scenario
+    else:
+        scenario = parse_file(source)
+    log = lambda message: print(message, file=sys.stderr)  # noqa: E731
+    dist, failure = compile_distribution(scenario, out, args.variants, maps=args.maps, seed=args.seed,
+                                         version=args.osc_version, simulate=not args.no_simulate, log=log,
+                                         target=args.target)
+    if failure is not None:
+        print(failure.table(), file=sys.stderr)
+        print(f"ttsgc: error: {out}: the scene or one of its variants does not do what it says; nothing was written",
+              file=sys.stderr)
+        return ExitCode.SIMULATION_FAILED
+    if lowering is not None:
+        write_atomic(_lowered_path(out), lowering.tsg(prompt))
+    write_distribution(dist, out)
+    dist_path, concrete = distribution_paths(out, args.variants)
+    if args.report:
+        data = {"parameters": dist.names, "variants": [
+            {"file": str(path), "values": dict(zip(dist.names, row)),
+             "report": report.model_dump(mode="json") if report is not None else None}
+            for path, row, report in zip(concrete, dist.values, dist.reports)]}
+        write_atomic(args.report, json.dumps(data, indent=2) + "\n")
+    scene = dist.variants[0].scene
+    proven = "; every variant proven" if not args.no_simulate else ""
+    print(f"{out}: {scene.map_name} approach {scene.approach}, OpenSCENARIO {args.osc_version}, "
+          f"{len(dist.names)} parameter(s) ({', '.join(dist.names)}); {dist_path}: {args.variants} variants "
+          f"(Deterministic); concrete files {concrete[0].name} .. {concrete[-1].name}{proven}")
+    return ExitCode.OK
 
 
 def _lowered_path(out: Path) -> Path:
@@ -359,6 +398,10 @@ def build_parser() -> argparse.ArgumentParser:
                           help="the input's kind (default: by extension, .txt is English)")
     compile_.add_argument("--variants", type=int, default=1, metavar="N",
                           help="compile N different scenes (seeds N..N+k: other roads, other agent choices)")
+    compile_.add_argument("--distribution", action="store_true",
+                          help="with --variants N: the variants on one road (speeds, trigger distances, start "
+                               "positions) as one scenario with parameters, OUT.dist.xosc (a Deterministic "
+                               "ParameterValueDistribution) beside it, and the concrete OUT-1..N.xosc")
     compile_.add_argument("--maps", action="append", metavar="PATH",
                           help="an OpenDRIVE file or folder (repeatable); 'builtin' is the built-in library")
     compile_.add_argument("--seed", type=int, help="pins the choice among equally ranked roads "

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ttsgc.binding import BoundScene, bind
-from ttsgc.emit.xosc import DEFAULT_VERSION, emit
+from ttsgc.emit.xosc import CREATION_DATE, DEFAULT_VERSION, emit
 from ttsgc.errors import TtsgcError
 from ttsgc.files import write_atomic
 from ttsgc.roads.index import MapIndex
@@ -105,3 +105,74 @@ def write(compiled: Compiled, out: Path) -> None:
     if not copy.exists():
         write_atomic(copy, Path(compiled.scene.map_path).read_bytes())
     write_atomic(out, compiled.xosc)
+
+
+@dataclass(frozen=True)
+class Distribution:
+    """N variants of one scene on one road: the scenario with parameters, the ParameterValueDistribution that
+    expands it, and each variant's concrete file (the template with its value set), proven."""
+
+    template: bytes
+    distribution: bytes
+    variants: list[Compiled]
+    reports: list  # one per variant; None when not simulated
+    names: list[str]
+    values: list[list[str]]
+
+
+def distribution_paths(out: Path, n: int) -> tuple[Path, list[Path]]:
+    """Where a distribution goes: OUT.dist.xosc beside OUT.xosc, and the concrete OUT-1.xosc .. OUT-N.xosc."""
+    return out.with_name(f"{out.stem}.dist{out.suffix}"), [out.with_name(f"{out.stem}-{k}{out.suffix}")
+                                                          for k in range(1, n + 1)]
+
+
+def compile_distribution(scenario: Scenario, out: Path, n: int, maps=None, seed: int | None = None,
+                         version: str = DEFAULT_VERSION, simulate: bool = True, log=print,
+                         target: str = GENERIC) -> tuple[Distribution | None, object]:
+    """Compile (and prove) the scene, then n variants of it on the same road. Returns (distribution, None), or
+    (None, report) of the first scene or variant that fails in simulation: nothing is to be written then."""
+    from ttsgc.roads.opendrive import load_opendrive
+    from ttsgc.targets import TargetError
+    from ttsgc.variation import DISTRIBUTION_VERSIONS, distribution_file, expand, parameterise, variants
+
+    if target == "carla":
+        raise TargetError("CARLA ScenarioRunner reads OpenSCENARIO 1.0, which has no ParameterValueDistribution: "
+                          "compile the variants without --distribution for carla")
+    if n < 2:
+        raise TtsgcError(f"--distribution needs --variants 2 or more, not {n}")
+    if version not in DISTRIBUTION_VERSIONS:
+        raise TtsgcError(f"a ParameterValueDistribution is OpenSCENARIO 1.1 or later; --osc-version {version} "
+                         f"cannot hold one (choose one of {', '.join(DISTRIBUTION_VERSIONS)})")
+    if simulate:
+        nominal, report = compile_and_prove(scenario, out, maps=maps, seed=seed, version=version, log=log)
+        if not report.ok:
+            return None, report
+    else:
+        nominal = compile_scenario(scenario, out, maps=maps, seed=seed, version=version)
+    scene = nominal.scene
+    lengths = {road.id: road.length for road in load_opendrive(scene.map_path).roads.values()}
+    scenes = variants(scene, n, scene.seed, lengths)
+    found = parameterise([emit(s, nominal.map_name, version) for s in scenes])
+    _, concrete_paths = distribution_paths(out, n)
+    compiled = [for_target(Compiled(s, expand(found.template, found.names, row), nominal.map_name), target)
+                for s, row in zip(scenes, found.values)]
+    reports = []
+    for k, (variant, path) in enumerate(zip(compiled, concrete_paths), start=1):
+        report = simulate_compiled(variant, path) if simulate else None
+        if report is not None and not report.ok:
+            values = ", ".join(f"{name}={value}" for name, value in zip(found.names, found.values[k - 1]))
+            log(f"ttsgc: variant {k} ({values}) failed in simulation")
+            return None, report
+        reports.append(report)
+    data = distribution_file(found, out.name, version, f"{scenario.name}: {n} variants",
+                             CREATION_DATE.isoformat())
+    return Distribution(found.template, data, compiled, reports, found.names, found.values), None
+
+
+def write_distribution(dist: Distribution, out: Path) -> None:
+    """The map, the concrete files, the template, then the distribution, each atomically."""
+    dist_path, concrete_paths = distribution_paths(out, len(dist.variants))
+    for variant, path in zip(dist.variants, concrete_paths):
+        write(variant, path)
+    write_atomic(out, dist.template)
+    write_atomic(dist_path, dist.distribution)
