@@ -126,7 +126,7 @@ def _compile_distribution(args, source: Path, kind: str, out: Path) -> int:
     log = lambda message: print(message, file=sys.stderr)  # noqa: E731
     dist, failure = compile_distribution(scenario, out, args.variants, maps=args.maps, seed=args.seed,
                                          version=args.osc_version, simulate=not args.no_simulate, log=log,
-                                         target=args.target)
+                                         target=args.target, players=args.player)
     if failure is not None:
         print(failure.table(), file=sys.stderr)
         print(f"ttsgc: error: {out}: the scene or one of its variants does not do what it says; nothing was written",
@@ -169,7 +169,8 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
                                             version=args.osc_version, target=args.target), None
     else:
         compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=seed,
-                                             version=args.osc_version, log=log, target=args.target)
+                                             version=args.osc_version, log=log, players=args.player,
+                                             target=args.target)
     scene = compiled.scene
     if args.explain:
         print(scene.explanation)
@@ -187,7 +188,7 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
               f"written (--no-simulate writes it unchecked)", file=sys.stderr)
         return ExitCode.SIMULATION_FAILED
     write(compiled, out)
-    checked = f"; proven in SUMO ({report.simulated_s:.0f} s simulated)" if report is not None else ""
+    checked = f"; {_proven(report)}" if report is not None else ""
     print(f"{out}: {scene.map_name} approach {scene.approach} ({scene.score}/{scene.requirements} requirements, "
           f"seed {scene.seed}), OpenSCENARIO {args.osc_version}; map copied as {out.parent / compiled.map_name}"
           f"{checked}")
@@ -277,14 +278,20 @@ def _import_ttsg(args) -> int:
         return ExitCode.SIMULATION_FAILED
     write(compiled, out)
     print(f"{out}: {compiled.scene.map_name} {compiled.scene.approach}"
-          f"{' (the paper' + chr(39) + 's road)' if only else ' (ranked)'}; proven in SUMO")
+          f"{' (the paper' + chr(39) + 's road)' if only else ' (ranked)'}; {_proven(report)}")
     return ExitCode.OK
 
 
-def _validate(args) -> int:
-    from ttsgc.simulate.sumo import simulate
+def _proven(report) -> str:
+    """"proven in sumo, esmini (36 s played)", and which players were not run."""
+    text = f"proven in {', '.join(report.players)} ({report.simulated_s:.0f} s played)"
+    return text + "".join(f"; not run: {why}" for why in report.not_run)
 
-    report = simulate(args.scene)
+
+def _validate(args) -> int:
+    from ttsgc.simulate.validate import validate
+
+    report = validate(args.scene, args.player)
     print(report.table())
     if args.report:
         write_atomic(args.report, report.model_dump_json(indent=2) + "\n")
@@ -414,11 +421,13 @@ def build_parser() -> argparse.ArgumentParser:
                                "coverage), carla (the 1.0 subset CARLA ScenarioRunner reads); default generic")
     compile_.add_argument("--no-simulate", action="store_true", help="skip the simulation check")
     compile_.add_argument("--report", metavar="REPORT.json", help="write the simulation report as JSON")
+    _player_option(compile_)
     compile_.set_defaults(run=_compile)
 
-    validate = commands.add_parser("validate", help="run a .xosc in SUMO and check that every agent does "
-                                                    "what its intent says")
+    validate = commands.add_parser("validate", help="play a .xosc (SUMO, esmini) and check that every agent "
+                                                    "does what its intent says")
     validate.add_argument("scene", metavar="SCENE.xosc")
+    _player_option(validate)
     validate.add_argument("--report", metavar="REPORT.json", help="write the report as JSON")
     validate.set_defaults(run=_validate)
 
@@ -471,6 +480,12 @@ def build_parser() -> argparse.ArgumentParser:
                        help="a forbidden signal or object (repeatable)")
     maps.set_defaults(run=_maps)
     return parser
+
+
+def _player_option(command) -> None:
+    command.add_argument("--player", choices=["sumo", "esmini", "all"], default="all",
+                         help="which player proves the scene (default all: every player available here; esmini is "
+                              "found through $TTSGC_ESMINI or on PATH)")
 
 
 def main(argv: list[str] | None = None) -> int:

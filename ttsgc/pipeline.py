@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ttsgc.binding import BoundScene, bind
+from ttsgc.binding.scene import candidates
 from ttsgc.emit.xosc import CREATION_DATE, DEFAULT_VERSION, emit
 from ttsgc.errors import TtsgcError
 from ttsgc.files import write_atomic
@@ -56,46 +57,79 @@ def for_target(compiled: Compiled, target: str) -> Compiled:
 MAX_SIMULATION_TRIES = 3
 
 
-def simulate_compiled(compiled: Compiled, out: Path):
-    """Run a compiled scene in SUMO from a scratch folder (the file as it will be written, map beside it)."""
+def simulate_compiled(compiled: Compiled, out: Path, players: str = "all"):
+    """Prove a compiled scene in the players (all available by default) from a scratch folder: the file as it
+    will be written, the map beside it."""
     import tempfile
 
-    from ttsgc.simulate.sumo import simulate
+    from ttsgc.simulate.validate import validate
 
     with tempfile.TemporaryDirectory(prefix="ttsgc-") as scratch:
         trial = Path(scratch) / out.name
         write(compiled, trial)
-        report = simulate(trial)
+        report = validate(trial, players)
     return report.model_copy(update={"scenario": str(out), "map": str(out.parent / compiled.map_name)})
+
+
+def failure_summary(report) -> str:
+    failed = [f"{a.name} ({a.reason})" for a in report.agents if not a.achieved] + \
+        [f"collision {c.a}/{c.b}" for c in report.collisions if not c.asked_for]
+    return "; ".join(failed) or "; ".join(report.problems)
+
+
+def prove_first(scenes, prove, tries: int = MAX_SIMULATION_TRIES, log=print):
+    """The one "try the next road when the scene fails" policy: prove each candidate in turn (scenes is
+    consumed lazily, so roads after the first that passes are never placed) and return (candidate, report)
+    of the first that passes, else of the last tried. The first candidate's error propagates; a later
+    candidate that cannot be built ends the search."""
+    chosen = report = None
+    iterator = iter(scenes)
+    for attempt in range(tries):
+        try:
+            candidate = next(iterator)
+        except StopIteration:
+            break
+        except TtsgcError:
+            if attempt == 0:
+                raise
+            break
+        chosen, report = candidate, prove(candidate)
+        if report.ok:
+            break
+        log(f"ttsgc: {getattr(candidate, 'label', candidate)}: the scene failed: {failure_summary(report)}"
+            + ("; trying the next-ranked road" if attempt + 1 < tries else ""))
+    if chosen is None:
+        raise TtsgcError("no candidate to prove")
+    return chosen, report
 
 
 def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
                       version: str = DEFAULT_VERSION, tries: int = MAX_SIMULATION_TRIES, log=print,
-                      only: tuple[str, str] | None = None, target: str = GENERIC):
-    """Compile, then simulate; when the scene fails on its road, compile onto the next-ranked road, at most
-    `tries` roads in all. Returns (compiled, report) of the first that passes, else of the last tried; the
-    compiled file is the target's, made after the generic file is proven."""
+                      only: tuple[str, str] | None = None, players: str = "all", target: str = GENERIC):
+    """Compile, then prove in the players; when the scene fails on its road, compile onto the next-ranked
+    road, at most `tries` roads in all. Returns (compiled, report) of the first that passes, else of the
+    last tried; the compiled file is the target's, made after the generic file is proven."""
     check_scenario(scenario, target)
     version = written_version(target, version)
-    compiled = report = None
     library = load_library(maps)
-    for attempt in range(tries):
-        try:
-            compiled = compile_scenario(scenario, out, seed=seed, version=version, skip=attempt, only=only,
-                                        library=library)
-        except TtsgcError:
-            if attempt == 0:
-                raise
-            break  # no further candidate road
-        report = simulate_compiled(compiled, out)
-        if report.ok:
-            break
-        failed = [f"{a.name} ({a.reason})" for a in report.agents if not a.achieved] + \
-            [f"collision {c.a}/{c.b}" for c in report.collisions if not c.asked_for]
-        log(f"ttsgc: {compiled.scene.map_name} {compiled.scene.approach}: the scene failed in simulation: "
-            f"{'; '.join(failed) or '; '.join(report.problems)}"
-            + ("; trying the next-ranked road" if attempt + 1 < tries else ""))
-    return for_target(compiled, target), report
+
+    def compiled_scenes():
+        for scene in candidates(scenario, library, seed=seed, only=only):
+            map_name = map_file_name(scene, out.parent)
+            yield _Labelled(Compiled(scene, emit(scene, map_name, version), map_name))
+
+    labelled, report = prove_first(compiled_scenes(), lambda c: simulate_compiled(c.compiled, out, players),
+                                   tries, log)
+    return for_target(labelled.compiled, target), report
+
+
+@dataclass(frozen=True)
+class _Labelled:
+    compiled: Compiled
+
+    @property
+    def label(self) -> str:
+        return f"{self.compiled.scene.map_name} {self.compiled.scene.approach}"
 
 
 def write(compiled: Compiled, out: Path) -> None:
@@ -128,7 +162,7 @@ def distribution_paths(out: Path, n: int) -> tuple[Path, list[Path]]:
 
 def compile_distribution(scenario: Scenario, out: Path, n: int, maps=None, seed: int | None = None,
                          version: str = DEFAULT_VERSION, simulate: bool = True, log=print,
-                         target: str = GENERIC) -> tuple[Distribution | None, object]:
+                         target: str = GENERIC, players: str = "all") -> tuple[Distribution | None, object]:
     """Compile (and prove) the scene, then n variants of it on the same road. Returns (distribution, None), or
     (None, report) of the first scene or variant that fails in simulation: nothing is to be written then."""
     from ttsgc.roads.opendrive import load_opendrive
@@ -144,7 +178,8 @@ def compile_distribution(scenario: Scenario, out: Path, n: int, maps=None, seed:
         raise TtsgcError(f"a ParameterValueDistribution is OpenSCENARIO 1.1 or later; --osc-version {version} "
                          f"cannot hold one (choose one of {', '.join(DISTRIBUTION_VERSIONS)})")
     if simulate:
-        nominal, report = compile_and_prove(scenario, out, maps=maps, seed=seed, version=version, log=log)
+        nominal, report = compile_and_prove(scenario, out, maps=maps, seed=seed, version=version, log=log,
+                                            players=players)
         if not report.ok:
             return None, report
     else:
@@ -158,7 +193,7 @@ def compile_distribution(scenario: Scenario, out: Path, n: int, maps=None, seed:
                 for s, row in zip(scenes, found.values)]
     reports = []
     for k, (variant, path) in enumerate(zip(compiled, concrete_paths), start=1):
-        report = simulate_compiled(variant, path) if simulate else None
+        report = simulate_compiled(variant, path, players) if simulate else None
         if report is not None and not report.ok:
             values = ", ".join(f"{name}={value}" for name, value in zip(found.names, found.values[k - 1]))
             log(f"ttsgc: variant {k} ({values}) failed in simulation")
