@@ -167,15 +167,16 @@ def compile_distribution(scenario: Scenario, out: Path, n: int, maps=None, seed:
     (None, report) of the first scene or variant that fails in simulation: nothing is to be written then."""
     from ttsgc.roads.opendrive import load_opendrive
     from ttsgc.targets import TargetError
-    from ttsgc.variation import DISTRIBUTION_VERSIONS, distribution_file, expand, parameterise, variants
+    from ttsgc.variation import (DISTRIBUTION_VERSIONS, DistributionRequestError, distribution_file, expand,
+                                 parameterise, variants)
 
     if target == "carla":
         raise TargetError("CARLA ScenarioRunner reads OpenSCENARIO 1.0, which has no ParameterValueDistribution: "
                           "compile the variants without --distribution for carla")
     if n < 2:
-        raise TtsgcError(f"--distribution needs --variants 2 or more, not {n}")
+        raise DistributionRequestError(f"--distribution needs --variants 2 or more, not {n}")
     if version not in DISTRIBUTION_VERSIONS:
-        raise TtsgcError(f"a ParameterValueDistribution is OpenSCENARIO 1.1 or later; --osc-version {version} "
+        raise DistributionRequestError(f"a ParameterValueDistribution is OpenSCENARIO 1.1 or later; --osc-version {version} "
                          f"cannot hold one (choose one of {', '.join(DISTRIBUTION_VERSIONS)})")
     if simulate:
         nominal, report = compile_and_prove(scenario, out, maps=maps, seed=seed, version=version, log=log,

@@ -1,5 +1,5 @@
-"""Standard parameter variation: N variants of one bound scene (speeds, trigger distances, start positions
-along the lane), written as one scenario with ParameterDeclarations and a Deterministic
+"""Standard parameter variation: N variants of one bound scene (the scene's speeds, scaled together so that
+no follower outruns its leader; trigger distances; start positions along the lane, which vary the gaps), written as one scenario with ParameterDeclarations and a Deterministic
 ParameterValueDistribution file beside it, plus the concrete files for players that do not read distributions.
 
 The scenario's parameters are found, not guessed: every variant is emitted in full, and each attribute whose
@@ -18,9 +18,9 @@ from lxml import etree
 
 from ttsgc.binding.place import CLEARANCE_M
 from ttsgc.binding.scene import BoundScene
-from ttsgc.errors import TtsgcError
+from ttsgc.errors import ExitCode, TtsgcError
 
-SPEED_SPREAD = 0.15  # each agent's speed times 1 +- this
+SPEED_SPREAD = 0.15  # the scene's speeds times 1 +- this, together: agents queued in a lane keep their order
 TRIGGER_SPREAD = 0.2  # each trigger distance times 1 +- this
 START_SHIFT_M = 1.5  # each vehicle's start moved along its lane by up to this, where the lane has room
 ROAD_END_MARGIN_M = 0.5
@@ -36,15 +36,22 @@ class VariationError(TtsgcError):
     """The variants cannot be written as one parameterised scenario (a fault in ttsgc)."""
 
 
+class DistributionRequestError(TtsgcError):
+    """--distribution asked for with options it cannot go with: a bad command line."""
+
+    exit_code = ExitCode.INVALID_SCENARIO
+
+
 def variants(scene: BoundScene, n: int, seed: int, road_lengths: dict[str, float]) -> list[BoundScene]:
     """n scenes on the scene's road: the first is the scene itself, the others drawn from a generator seeded
     with the seed and the variant's number (deterministic)."""
     scenes = [scene]
     for k in range(2, n + 1):
         rng = random.Random(f"ttsgc-variant:{seed}:{k}")
+        tempo = 1 + rng.uniform(-SPEED_SPREAD, SPEED_SPREAD)
         agents = []
         for agent in scene.agents:
-            update = {"speed_mps": round(agent.speed_mps * (1 + rng.uniform(-SPEED_SPREAD, SPEED_SPREAD)), 3)}
+            update = {"speed_mps": round(agent.speed_mps * tempo, 3)}
             if agent.trigger is not None and agent.trigger.within_m is not None:
                 within = round(max(1.0, agent.trigger.within_m * (1 + rng.uniform(-TRIGGER_SPREAD, TRIGGER_SPREAD))), 3)
                 update["trigger"] = agent.trigger.model_copy(update={"within_m": within})
@@ -155,7 +162,7 @@ def distribution_file(p: Parameterised, scenario_file: str, version: str, descri
     from scenariogeneration.xosc.enumerations import VersionBase
 
     if version not in DISTRIBUTION_VERSIONS:
-        raise TtsgcError(f"a ParameterValueDistribution is OpenSCENARIO 1.1 or later; --osc-version {version} "
+        raise DistributionRequestError(f"a ParameterValueDistribution is OpenSCENARIO 1.1 or later; --osc-version {version} "
                          f"cannot hold one (choose one of {', '.join(DISTRIBUTION_VERSIONS)})")
     minor = int(version.split(".")[1])
     VersionBase().setVersion(1, minor)
