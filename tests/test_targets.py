@@ -72,6 +72,14 @@ def test_carla_entities_are_blueprints_and_the_ego_is_the_hero(carla_files):
     assert "ego" not in refs and "hero" in refs
 
 
+def test_an_agent_called_hero_keeps_its_name_and_the_ego_keeps_its_own(library):
+    scenario = parse('scenario "h"\nstage s {\n    ego car go_straight\n    car hero at front go_straight\n}\n')
+    root = etree.fromstring(compile_scenario(scenario, Path("h.xosc"), library=library, target="carla").xosc)
+    roles = {o.get("name"): [p.get("value") for p in o.iter("Property") if p.get("name") == "type"]
+             for o in root.iter("ScenarioObject")}
+    assert roles == {"ego": ["ego_vehicle"], "hero": ["simulation"]}
+
+
 def test_carla_emergency_vehicles_get_their_blueprints(carla_files):
     names = {v.get("name") for out, _ in carla_files.values() for v in etree.parse(str(out)).iter("Vehicle")}
     assert {"vehicle.ford.ambulance", "vehicle.dodge.charger_police", "vehicle.carlamotors.firetruck"} <= names

@@ -4,18 +4,17 @@
 - the map: a CARLA town (file stem Town01..Town10HD) is named by its town name in LogicFile, so ScenarioRunner
   loads the town itself; any other map keeps its .xodr file;
 - entities: each agent type's CARLA blueprint (Vehicle name, Pedestrian model); the ego is named `hero` (the
-  role name CARLA's clients attach to) and marked with the Property type=ego_vehicle, the others simulation;
-- headings: a LanePosition carries no Orientation (ScenarioRunner adds any h to the lane's own direction);
+  role name CARLA's clients attach to; unless an agent already has that name) and marked with the Property
+  type=ego_vehicle, the others simulation;
 - lane changes: linear over a distance (the speed times the generic file's duration), the only shape read;
-- triggers: a StoryboardElementState of runningState (refused by ScenarioRunner) is written as startTransition,
-  which it keeps true once the element has started;
 - weather: in Init (the only place read); rain's intensity on 1.0's 0..1 scale; snow cannot be expressed;
 - pass/fail: ScenarioRunner's criteria, each a ParameterCondition named criteria_<Test> in a condition group
   of its own in the Storyboard's StopTrigger (the form of ScenarioRunner's own examples): CollisionTest for the
   ego always, RunningRedLightTest on an approach with traffic lights, RunningStopTest on one with a stop sign.
   The group never fires (a criterion never succeeds early), so the scene still ends at its own stop condition.
-The result is validated against the 1.0 XSD and linted against carla.toml; anything left that ScenarioRunner
-does not read is an error naming it, raised before anything is written.
+The generic emitter already writes what both players read alike (no lane-relative headings, trigger states
+ScenarioRunner accepts); the result is validated against the 1.0 XSD and linted against carla.toml, and
+anything left that ScenarioRunner does not read is an error naming it, raised before anything is written.
 """
 
 from __future__ import annotations
@@ -73,12 +72,6 @@ def adapt(generic: bytes, scene: BoundScene) -> tuple[bytes, list[str]]:
     root = etree.fromstring(generic, etree.XMLParser(remove_blank_text=True))  # re-indented when written
     _map(root, scene)
     _entities(root, scene)
-    for orientation in root.iter("Orientation"):
-        if orientation.getparent().tag == "LanePosition":
-            orientation.getparent().remove(orientation)
-    for condition in root.iter("StoryboardElementStateCondition"):
-        if condition.get("state") == "runningState":
-            condition.set("state", "startTransition")
     _lane_changes(root, scene)
     _rain(root, scene)
     _criteria(root, scene)
