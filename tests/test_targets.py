@@ -103,6 +103,19 @@ def test_carla_criteria_and_weather(carla_files):
     assert not [o for o in root.iter("Orientation") if o.getparent().tag == "LanePosition"]
 
 
+def test_criteria_follow_the_signals_of_the_egos_approach(carla_files):
+    seen = set()
+    for out, compiled in carla_files.values():
+        group = etree.parse(str(out)).findall("Storyboard/StopTrigger/ConditionGroup")[-1]
+        names = {c.get("name") for c in group.iter("Condition")}
+        signals = set(compiled.scene.approach_signals)
+        assert ("criteria_RunningStopTest" in names) == ("stop" in signals), out.name
+        assert ("criteria_RunningRedLightTest" in names) == ("traffic_light" in signals), out.name
+        assert "criteria_CollisionTest" in names
+        seen |= signals
+    assert {"stop", "traffic_light"} <= seen  # the examples exercise both
+
+
 def test_a_carla_town_is_named_in_logicfile(shared, tmp_path):
     out = tmp_path / "i.xosc"
     assert main(["compile", str(EXAMPLES / "cut_off.tsg"), "-o", str(out), "--target", "carla", "--maps",

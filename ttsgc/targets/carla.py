@@ -58,11 +58,11 @@ def needs(scenario: Scenario) -> list[str]:
 
 
 def criteria(scene: BoundScene) -> list[str]:
-    names = ["CollisionTest"]
-    if "traffic_light" in scene.approach_signals:
-        names.append("RunningRedLightTest")
-    if "stop" in scene.approach_signals:
-        names.append("RunningStopTest")
+    """ScenarioRunner's tests for this scene (carla.toml [criteria]): always, and per signal of the ego's approach."""
+    table = _data()["criteria"]
+    names = list(table["always"])
+    for signal in scene.approach_signals:
+        names += [n for n in table.get(signal, []) if n not in names]
     return names
 
 
