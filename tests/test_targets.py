@@ -228,6 +228,12 @@ def _swarm(root):
     etree.SubElement(etree.SubElement(etree.SubElement(action, "GlobalAction"), "TrafficAction"), "TrafficSwarmAction")
 
 
+def _variables(root):
+    declarations = etree.Element("VariableDeclarations")
+    etree.SubElement(declarations, "VariableDeclaration", name="v", variableType="double", value="0")
+    root.insert(1, declarations)
+
+
 def _user_condition(root):
     condition = etree.SubElement(root.find(".//Event/StartTrigger/ConditionGroup"), "Condition", name="u",
                                  delay="0", conditionEdge="none")
@@ -248,8 +254,9 @@ def _user_condition(root):
     (_snow, 'Precipitation precipitationType="snow"'),
     (_swarm, "TrafficSwarmAction"),
     (_user_condition, "UserDefinedValueCondition"),
+    (_variables, "VariableDeclarations"),
 ], ids=["runningState", "standbyState", "story-weather", "absolute-lane", "sinusoidal-lane-change",
-        "timed-trajectory", "clothoid", "osc-1.2", "snow", "traffic-swarm", "user-condition"])
+        "timed-trajectory", "clothoid", "osc-1.2", "snow", "traffic-swarm", "user-condition", "variables"])
 def test_carla_lint_names_each_unsupported_construct(carla_files, tmp_path, capsys, change, named):
     path = tmp_path / "m.xosc"
     path.write_bytes(_mutate(_carla_base(carla_files), change))
@@ -304,3 +311,22 @@ def test_every_carla_rule_says_where_it_comes_from():
     for rule in coverage("carla").rules:
         assert re.match(r"\[(support|parser|config)\]", rule.source), rule.source
         assert rule.certainty in ("stated", "recalled"), rule.elements
+
+
+def test_carla_output_is_deterministic(library):
+    scenario = parse_file(EXAMPLES / "boxed_in.tsg")
+    first = compile_scenario(scenario, Path("a.xosc"), library=library, target="carla").xosc
+    assert compile_scenario(scenario, Path("b.xosc"), library=library, target="carla").xosc == first
+
+
+def test_the_esmini_target_is_the_generic_file_held_against_its_coverage(library):
+    scenario = parse_file(EXAMPLES / "two_wheels.tsg")
+    generic = compile_scenario(scenario, Path("g.xosc"), library=library).xosc
+    assert compile_scenario(scenario, Path("g.xosc"), library=library, target="esmini").xosc == generic
+    assert errors(lint_file_bytes(generic, "esmini")) == []
+
+
+def lint_file_bytes(data: bytes, target: str):
+    from ttsgc.targets.coverage import lint_tree
+
+    return lint_tree(etree.fromstring(data), target)
