@@ -24,8 +24,8 @@ from timing import ROOT, checkouts, environment, median, medians, ms, timed, tts
 sys.path.insert(0, str(ROOT))
 from ttsgc.language import parse_file  # noqa: E402 - this checkout, whatever is installed
 from ttsgc.pipeline import compile_scenario, write  # noqa: E402
-from ttsgc.simulate.network import convert  # noqa: E402
-from ttsgc.simulate.sumo import simulate  # noqa: E402
+from ttsgc.simulate.players.sumo.network import convert  # noqa: E402
+from ttsgc.simulate.validate import validate  # noqa: E402
 
 SHARED = ROOT.parent / "shared"
 ESMINI_GOAL, ESMINI_AIM = 3.0, 1.5
@@ -134,11 +134,11 @@ def in_process(repeat: int, scratch: Path) -> None:
     for path in sorted((ROOT / "examples").glob("*.tsg")):
         out = scratch / f"{path.stem}.xosc"
         write(compile_scenario(parse_file(path), out), out)
-        simulate(out)  # builds and caches the network
+        validate(out, players="sumo")  # builds and caches the network
         times = []
         for _ in range(repeat):
             t = time.perf_counter()
-            report = simulate(out)
+            report = validate(out, players="sumo")
             times.append(time.perf_counter() - t)
         medians.append(statistics.median(times))
         print(f"{path.stem:24} {medians[-1] * 1000:15.0f} ms {report.simulated_s:8.1f} s  {report.ok}")

@@ -101,6 +101,9 @@ def _compile(args) -> int:
     source = Path(args.input)
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
+    args.osc_version = _target_version(args)
+    if args.distribution:
+        return _compile_distribution(args, source, kind, out)
     base_seed = args.seed
     status = ExitCode.OK
     for k in range(args.variants):
@@ -115,6 +118,43 @@ def _compile(args) -> int:
             scenario = parse_file(source)
         status = max(status, _compile_one(args, scenario, target, seed, lowering))
     return status
+
+
+def _compile_distribution(args, source: Path, kind: str, out: Path) -> int:
+    """--variants N --distribution: one scenario with parameters, its distribution, N proven concrete files."""
+    from ttsgc.pipeline import compile_distribution, distribution_paths, write_distribution
+
+    lowering = None
+    if kind == "text":
+        prompt, lowering = _lower_file(args, source, args.seed or 0)
+        scenario = lowering.scenario
+    else:
+        scenario = parse_file(source)
+    log = lambda message: print(message, file=sys.stderr)  # noqa: E731
+    dist, failure = compile_distribution(scenario, out, args.variants, maps=args.maps, seed=args.seed,
+                                         version=args.osc_version, simulate=not args.no_simulate, log=log,
+                                         target=args.target, players=args.player)
+    if failure is not None:
+        print(failure.table(), file=sys.stderr)
+        print(f"ttsgc: error: {out}: the scene or one of its variants does not do what it says; nothing was written",
+              file=sys.stderr)
+        return ExitCode.SIMULATION_FAILED
+    if lowering is not None:
+        write_atomic(_lowered_path(out), lowering.tsg(prompt))
+    write_distribution(dist, out)
+    dist_path, concrete = distribution_paths(out, args.variants)
+    if args.report:
+        data = {"parameters": dist.names, "variants": [
+            {"file": str(path), "values": dict(zip(dist.names, row)),
+             "report": report.model_dump(mode="json") if report is not None else None}
+            for path, row, report in zip(concrete, dist.values, dist.reports)]}
+        write_atomic(args.report, json.dumps(data, indent=2) + "\n")
+    scene = dist.variants[0].scene
+    proven = "; every variant proven" if not args.no_simulate else ""
+    print(f"{out}: {scene.map_name} approach {scene.approach}, OpenSCENARIO {args.osc_version}, "
+          f"{len(dist.names)} parameter(s) ({', '.join(dist.names)}); {dist_path}: {args.variants} variants "
+          f"(Deterministic); concrete files {concrete[0].name} .. {concrete[-1].name}{proven}")
+    return ExitCode.OK
 
 
 def _lowered_path(out: Path) -> Path:
@@ -133,10 +173,11 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
     log = lambda message: print(message, file=sys.stderr)  # noqa: E731
     if args.no_simulate:
         compiled, report = compile_scenario(scenario, out, maps=args.maps, seed=seed,
-                                            version=args.osc_version), None
+                                            version=args.osc_version, target=args.target), None
     else:
         compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=seed,
-                                             version=args.osc_version, log=log)
+                                             version=args.osc_version, log=log, players=args.player,
+                                             target=args.target)
     scene = compiled.scene
     if args.explain:
         print(scene.explanation)
@@ -154,13 +195,39 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
               f"written (--no-simulate writes it unchecked)", file=sys.stderr)
         return ExitCode.SIMULATION_FAILED
     write(compiled, out)
-    checked = f"; proven in SUMO ({report.simulated_s:.0f} s simulated)" if report is not None else ""
+    checked = f"; {_proven(report)}" if report is not None else ""
     print(f"{out}: {scene.map_name} approach {scene.approach} ({scene.score}/{scene.requirements} requirements, "
           f"seed {scene.seed}), OpenSCENARIO {args.osc_version}; map copied as {out.parent / compiled.map_name}"
           f"{checked}")
     if scene.unmet:
         print(f"ttsgc: warning: the chosen road does not meet: {', '.join(scene.unmet)}", file=sys.stderr)
     return ExitCode.OK
+
+
+def _target_version(args) -> str:
+    from ttsgc.emit.xosc import DEFAULT_VERSION
+    from ttsgc.targets import choose_version
+
+    return choose_version(args.target, args.osc_version, DEFAULT_VERSION)
+
+
+def _lint(args) -> int:
+    from ttsgc.targets.coverage import coverage, errors, lint_file
+
+    title = coverage(args.target).title
+    failed = False
+    for path in args.files:
+        findings = lint_file(path, args.target)
+        shown = findings if args.all else errors(findings)
+        for finding in shown:
+            print(finding.render(path, title))
+        unsupported = len(errors(findings))
+        failed = failed or unsupported > 0
+        hidden = len(findings) - len(shown)
+        print(f"{path}: {unsupported} element(s) {title} does not support"
+              + (f" ({hidden} warning(s) and note(s) not shown; --all shows them)" if hidden else ""),
+              file=sys.stderr)
+    return ExitCode.UNSUPPORTED_BY_TARGET if failed else ExitCode.OK
 
 
 def _eval(args) -> int:
@@ -219,14 +286,20 @@ def _import_ttsg(args) -> int:
         return ExitCode.SIMULATION_FAILED
     write(compiled, out)
     print(f"{out}: {compiled.scene.map_name} {compiled.scene.approach}"
-          f"{' (the paper' + chr(39) + 's road)' if only else ' (ranked)'}; proven in SUMO")
+          f"{' (the paper' + chr(39) + 's road)' if only else ' (ranked)'}; {_proven(report)}")
     return ExitCode.OK
 
 
-def _validate(args) -> int:
-    from ttsgc.simulate.sumo import simulate
+def _proven(report) -> str:
+    """"proven in sumo, esmini (36 s played)", and which players were not run."""
+    text = f"proven in {', '.join(report.players)} ({report.simulated_s:.0f} s played)"
+    return text + "".join(f"; not run: {why}" for why in report.not_run)
 
-    report = simulate(args.scene)
+
+def _validate(args) -> int:
+    from ttsgc.simulate.validate import validate
+
+    report = validate(args.scene, args.player)
     print(report.table())
     if args.report:
         write_atomic(args.report, report.model_dump_json(indent=2) + "\n")
@@ -341,22 +414,38 @@ def build_parser() -> argparse.ArgumentParser:
                           help="the input's kind (default: by extension, .txt is English)")
     compile_.add_argument("--variants", type=int, default=1, metavar="N",
                           help="compile N different scenes (seeds N..N+k: other roads, other agent choices)")
+    compile_.add_argument("--distribution", action="store_true",
+                          help="with --variants N: the variants on one road (speeds, trigger distances, start "
+                               "positions) as one scenario with parameters, OUT.dist.xosc (a Deterministic "
+                               "ParameterValueDistribution) beside it, and the concrete OUT-1..N.xosc")
     compile_.add_argument("--maps", action="append", metavar="PATH",
                           help="an OpenDRIVE file or folder (repeatable); 'builtin' is the built-in library")
     compile_.add_argument("--seed", type=int, help="pins the choice among equally ranked roads "
                                                    "(default: the scene's seed, else 0)")
     compile_.add_argument("--explain", action="store_true", help="print the ranking table of candidate roads")
-    compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"], default="1.3",
-                          help="OpenSCENARIO version (1.0 is what CARLA ScenarioRunner reads; default 1.3)")
+    compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"],
+                          help="OpenSCENARIO version (default 1.3; --target carla writes 1.0)")
+    compile_.add_argument("--target", choices=["generic", "esmini", "carla"], default="generic",
+                          help="the player the file is written for: generic OpenSCENARIO, esmini (held against its "
+                               "coverage), carla (the 1.0 subset CARLA ScenarioRunner reads); default generic")
     compile_.add_argument("--no-simulate", action="store_true", help="skip the simulation check")
     compile_.add_argument("--report", metavar="REPORT.json", help="write the simulation report as JSON")
+    _player_option(compile_)
     compile_.set_defaults(run=_compile)
 
-    validate = commands.add_parser("validate", help="run a .xosc in SUMO and check that every agent does "
-                                                    "what its intent says")
+    validate = commands.add_parser("validate", help="play a .xosc (SUMO, esmini) and check that every agent "
+                                                    "does what its intent says")
     validate.add_argument("scene", metavar="SCENE.xosc")
+    _player_option(validate)
     validate.add_argument("--report", metavar="REPORT.json", help="write the report as JSON")
     validate.set_defaults(run=_validate)
+
+    lint = commands.add_parser("lint", help="list every element of .xosc files that a player does not support, "
+                                            "from its documented coverage")
+    lint.add_argument("files", nargs="+", metavar="FILE.xosc")
+    lint.add_argument("--target", choices=["carla", "esmini"], required=True, help="the player")
+    lint.add_argument("--all", action="store_true", help="also list what is supported with a limit, or read past")
+    lint.set_defaults(run=_lint)
 
     eval_ = commands.add_parser("eval", parents=[llm_options],
                                 help="the paper's metrics (AA, RA, SA, AD, RD, failure rate) on a suite")
@@ -400,6 +489,12 @@ def build_parser() -> argparse.ArgumentParser:
                        help="a forbidden signal or object (repeatable)")
     maps.set_defaults(run=_maps)
     return parser
+
+
+def _player_option(command) -> None:
+    command.add_argument("--player", choices=["sumo", "esmini", "all"], default="all",
+                         help="which player proves the scene (default all: every player available here; esmini is "
+                              "found through $TTSGC_ESMINI or on PATH)")
 
 
 def main(argv: list[str] | None = None) -> int:

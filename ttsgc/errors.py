@@ -14,6 +14,8 @@ class ExitCode(IntEnum):
     SIMULATION_FAILED = 5  # the scene does not do what it says when run
     LOWERING_FAILED = 6  # the English could not be lowered into a valid scenario
     NOT_FORMATTED = 7  # `fmt --check`: a file is not in the canonical layout
+    UNSUPPORTED_BY_TARGET = 8  # `lint`: the file uses what its player does not support; `compile --target`:
+    # the scene needs what the target player cannot express
 
 
 class TtsgcError(Exception):
