@@ -130,7 +130,7 @@ def test_a_cache_entry_cannot_make_the_loader_run_other_code(tmp_path, monkeypat
 
 
 def test_the_net_offset_is_read_from_the_head_of_the_file(tmp_path):
-    from ttsgc.simulate.network import net_offset
+    from ttsgc.simulate.players.sumo.network import net_offset
 
     net = tmp_path / "x.net.xml"
     net.write_text('<?xml version="1.0"?>\n<net version="1.20"><location netOffset="116.00,-390.50" '
@@ -142,7 +142,7 @@ def test_the_net_offset_is_read_from_the_head_of_the_file(tmp_path):
 
 def test_simulating_loads_libsumo_without_numpy_and_sumolib_keeps_its_numpy_functions():
     code = """
-from ttsgc.simulate.sumo import simulate
+from ttsgc.simulate.players.sumo.executor import play
 from ttsgc.simulate.lean_libsumo import load_libsumo
 loaded = load_libsumo()
 import libsumo

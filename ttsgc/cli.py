@@ -122,6 +122,7 @@ def _compile(args) -> int:
 
 def _compile_distribution(args, source: Path, kind: str, out: Path) -> int:
     """--variants N --distribution: one scenario with parameters, its distribution, N proven concrete files."""
+    from ttsgc.language import parse_file
     from ttsgc.pipeline import compile_distribution, distribution_paths, write_distribution
 
     lowering = None

@@ -777,7 +777,7 @@ def _point_at(shape, pos: float) -> tuple[float, float]:
 def unavailable() -> str:
     """Empty when SUMO can run here (libsumo and the eclipse-sumo netconvert are Python packages)."""
     try:
-        import libsumo  # noqa: F401
+        load_libsumo()
     except ImportError as exc:
         return f"libsumo cannot be imported: {exc}"
     return ""

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import shutil
 import subprocess
 import tempfile
 from dataclasses import dataclass
@@ -30,10 +31,11 @@ def _sumo_home() -> Path:
 
 
 def netconvert_binary() -> str:
-    from sumolib import checkBinary
-
-    os.environ.setdefault("SUMO_HOME", str(_sumo_home()))
-    return checkBinary("netconvert")
+    """The eclipse-sumo wheel's netconvert, else one on PATH (sumolib's checkBinary would import numpy)."""
+    home = _sumo_home()
+    os.environ.setdefault("SUMO_HOME", str(home))
+    bundled = home / "bin" / "netconvert"
+    return str(bundled) if bundled.is_file() else shutil.which("netconvert") or "netconvert"
 
 
 def _run(command: list[str], what: str) -> list[str]:
