@@ -1,0 +1,114 @@
+"""Bad input is normal input: every class of hostile or broken input ends in a clear message and a documented
+exit code, never a traceback (exit 1), a hang, a half-written file or an overwritten input."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import pytest
+
+from conftest import EXAMPLES, ROOT
+from ttsgc.cli import main
+from ttsgc.errors import ExitCode
+from ttsgc.numbers import NumberError, clamped_int, parse_float, parse_int
+
+BUILTIN_MAP = ROOT / "maps" / "fourway_1lane_stop.xodr"
+HUGE = "9" * 5000
+
+
+def _run(capsys, *argv) -> tuple[int, str, str]:
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def _map_with(tmp_path: Path, old: str, new: str, name: str = "m.xodr") -> Path:
+    text = BUILTIN_MAP.read_text()
+    assert old in text
+    path = tmp_path / name
+    path.write_text(text.replace(old, new, 1))
+    return path
+
+
+# -- one number reader with limits -------------------------------------------------------------------------
+
+def test_the_number_reader_refuses_what_no_quantity_needs():
+    start = time.perf_counter()
+    for bad in (HUGE, "nan", "inf", "-Infinity", "1e308", "0x10", "abc", "", "1e999"):
+        with pytest.raises(NumberError):
+            parse_float(bad)
+    with pytest.raises(NumberError, match="5000 digits"):
+        parse_int(HUGE)
+    with pytest.raises(NumberError, match="not an integer"):
+        parse_int("2.5")
+    assert time.perf_counter() - start < 0.5
+    assert parse_float(" 2.5 ") == 2.5 and parse_int("-7", -10, 10) == -7
+    assert clamped_int(HUGE, 99) == 99 and clamped_int("0042", 99) == 42
+
+
+@pytest.mark.parametrize("line", [f"seed {HUGE}", f"road {{\n    lanes >= {HUGE}\n}}"])
+def test_header_numbers_with_thousands_of_digits_are_diagnosed(tmp_path, capsys, line):
+    scene = tmp_path / "s.tsg"
+    scene.write_text(f'scenario "x"\n{line}\nstage a {{\n    ego car go_straight\n}}\n')
+    code, _, err = _run(capsys, "check", scene)
+    assert code == ExitCode.INVALID_SCENARIO
+    assert err.count("error:") == 1 and "5000 digits" in err
+
+
+def test_agent_numbers_with_thousands_of_digits_are_diagnosed(tmp_path, capsys):
+    scene = tmp_path / "s.tsg"
+    scene.write_text(f'scenario "x"\nstage a {{\n    ego car go_straight\n'
+                     f'    car c at front stop order {HUGE} gap {HUGE}m speed {HUGE} km/h after {HUGE}s\n}}\n')
+    code, _, err = _run(capsys, "check", scene)
+    assert code == ExitCode.INVALID_SCENARIO and err.count("5000 digits") == 4
+
+
+def test_english_with_a_400_digit_count_and_speed_limit_is_a_lowering_error(tmp_path, capsys):
+    prompt = tmp_path / "p.txt"
+    n = "9" * 400
+    prompt.write_text(f"There are {n} cars at a junction with a {n} km/h speed limit sign; one cuts in "
+                      f"after {n} seconds at {n} km/h.")
+    code, _, err = _run(capsys, "lower", prompt)
+    assert code == ExitCode.LOWERING_FAILED and "out of range" in err and "internal error" not in err
+
+
+@pytest.mark.parametrize("value", ["nan", "inf", "1e308", "1e300", "-5", "1e12"])
+def test_map_lengths_out_of_bounds_are_refused(tmp_path, capsys, value):
+    bad = _map_with(tmp_path, 'id="1" junction="-1" length="120.0"', f'id="1" junction="-1" length="{value}"')
+    code, _, err = _run(capsys, "maps", "list", "--maps", bad)
+    assert code == ExitCode.MAP_ERROR and f"{bad}:4: <road>: attribute length=" in err
+
+
+def test_a_spiral_of_any_allowed_length_is_evaluated_in_bounded_time():
+    from ttsgc.roads.opendrive import MAX_ROAD_LENGTH_M, Geometry
+
+    spiral = Geometry(0.0, 0.0, 0.0, 0.0, MAX_ROAD_LENGTH_M, "spiral", (0.001, 0.5))
+    start = time.perf_counter()
+    for k in range(200):
+        pose = spiral.at(MAX_ROAD_LENGTH_M * k / 200)
+    assert time.perf_counter() - start < 1.0 and all(map(abs, (pose.x, pose.y))) < 2 * MAX_ROAD_LENGTH_M
+
+
+def test_one_bad_map_in_a_folder_is_named_and_skipped(tmp_path, capsys):
+    _map_with(tmp_path, '<line/>', '<spiral curvStart="0.001" curvEnd="0.5"/>', "bad.xodr")
+    (tmp_path / "bad.xodr").write_text((tmp_path / "bad.xodr").read_text().replace(
+        'length="120.0"', 'length="1e12"'))
+    (tmp_path / "good.xodr").write_bytes((ROOT / "maps" / "avenue_2lane.xodr").read_bytes())
+    start = time.perf_counter()
+    code, out, err = _run(capsys, "maps", "list", "--maps", tmp_path)
+    assert time.perf_counter() - start < 30
+    assert code == ExitCode.OK and "avenue_2lane" in out and "bad.xodr" not in out
+    assert f"warning: {tmp_path / 'bad.xodr'}:" in err and "skipped" in err
+    code, _, err = _run(capsys, "maps", "list", "--maps", tmp_path / "bad.xodr")  # named by itself: an error
+    assert code == ExitCode.MAP_ERROR and "bad.xodr" in err
+
+
+def test_a_map_with_no_driving_lane_is_a_clear_error(tmp_path, capsys):
+    sidewalks = tmp_path / "sidewalks.xodr"
+    sidewalks.write_text(BUILTIN_MAP.read_text().replace('type="driving"', 'type="sidewalk"'))
+    code, _, err = _run(capsys, "maps", "query", "--maps", sidewalks)
+    assert code == ExitCode.NO_ROAD and "has a driving lane" in err
+    code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", tmp_path / "out" / "x.xosc",
+                        "--maps", sidewalks, "--no-simulate")
+    assert code == ExitCode.NO_ROAD and "has a driving lane" in err and not (tmp_path / "out").exists()
