@@ -3,6 +3,7 @@ exit code, never a traceback (exit 1), a hang, a half-written file or an overwri
 
 from __future__ import annotations
 
+import json
 import time
 from pathlib import Path
 
@@ -112,3 +113,126 @@ def test_a_map_with_no_driving_lane_is_a_clear_error(tmp_path, capsys):
     code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", tmp_path / "out" / "x.xosc",
                         "--maps", sidewalks, "--no-simulate")
     assert code == ExitCode.NO_ROAD and "has a driving lane" in err and not (tmp_path / "out").exists()
+
+
+# -- the LLM: deadlines, replies of any shape, settings from the environment --------------------------------
+
+class _RawServer:
+    """A local HTTP server that answers every POST with one raw body (or never, when delay_s is long)."""
+
+    def __init__(self, body: bytes, content_type: str = "application/json", delay_s: float = 0.0):
+        import threading
+        from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+
+        self.requests = 0
+        outer = self
+
+        class Handler(BaseHTTPRequestHandler):
+            def do_POST(self):  # noqa: N802 - the http.server API
+                self.rfile.read(int(self.headers["Content-Length"]))
+                outer.requests += 1
+                time.sleep(delay_s)
+                self.send_response(200)
+                self.send_header("Content-Type", content_type)
+                self.send_header("Content-Length", str(len(body)))
+                self.end_headers()
+                self.wfile.write(body)
+
+            def log_message(self, *args):
+                pass
+
+        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        self.server.daemon_threads = True
+        self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
+
+    @property
+    def url(self) -> str:
+        return f"http://127.0.0.1:{self.server.server_address[1]}"
+
+    def __enter__(self):
+        self.thread.start()
+        return self
+
+    def __exit__(self, *exc):
+        self.server.shutdown()
+        self.server.server_close()
+
+
+_MESSAGE = {"id": "m", "type": "message", "role": "assistant", "model": "m", "stop_reason": "end_turn",
+            "usage": {"input_tokens": 1, "output_tokens": 1}}
+
+
+@pytest.mark.parametrize("body, content_type", [
+    (b"garbage !!", "application/json"),
+    (b"<html><body>502 Bad Gateway</body></html>", "text/html"),
+    (b'{"id": "m", "type": "message", "content": [{"type": "te', "application/json"),
+    (b"{}", "application/json"),
+    (json.dumps({**_MESSAGE, "content": None}).encode(), "application/json"),
+    (json.dumps({**_MESSAGE, "content": [{"type": "text", "text": None}]}).encode(), "application/json"),
+    (b"[1, 2]", "application/json"),
+], ids=["garbage", "html", "truncated", "empty-object", "content-null", "text-null", "a-list"])
+def test_an_llm_reply_of_any_shape_is_a_lowering_error(tmp_path, capsys, monkeypatch, body, content_type):
+    prompt = tmp_path / "p.txt"
+    prompt.write_text("the ego turns left")
+    with _RawServer(body, content_type) as server:
+        monkeypatch.setenv("ANTHROPIC_API_KEY", "test-key")
+        monkeypatch.setenv("ANTHROPIC_BASE_URL", server.url)
+        code, _, err = _run(capsys, "compile", prompt, "-o", tmp_path / "out" / "s.xosc")
+    assert code == ExitCode.LOWERING_FAILED and "the LLM's reply" in err and "internal error" not in err
+    assert not (tmp_path / "out").exists()
+
+
+def test_an_llm_that_never_answers_is_given_up_on_at_the_deadline(tmp_path, capsys, monkeypatch):
+    prompt = tmp_path / "p.txt"
+    prompt.write_text("the ego turns left")
+    with _RawServer(b"{}", delay_s=30) as server:
+        monkeypatch.setenv("ANTHROPIC_API_KEY", "test-key")
+        monkeypatch.setenv("ANTHROPIC_BASE_URL", server.url)
+        monkeypatch.setenv("TTSGC_LLM_TIMEOUT", "2")
+        start = time.perf_counter()
+        code, _, err = _run(capsys, "lower", prompt)
+    assert time.perf_counter() - start < 6
+    assert code == ExitCode.LOWERING_FAILED and "no answer within 2 s" in err and "--llm offline" in err
+
+
+def test_an_unreachable_llm_says_what_to_do_next(tmp_path, capsys, monkeypatch):
+    prompt = tmp_path / "p.txt"
+    prompt.write_text("the ego turns left")
+    monkeypatch.setenv("ANTHROPIC_API_KEY", "test-key")
+    monkeypatch.setenv("ANTHROPIC_BASE_URL", "http://127.0.0.1:9")
+    code, _, err = _run(capsys, "lower", prompt)
+    assert code == ExitCode.LOWERING_FAILED and "use --llm offline" in err
+
+
+@pytest.mark.parametrize("name, value", [("TTSGC_TEMPERATURE", "abc"), ("TTSGC_MAX_TOKENS", "abc"),
+                                         ("TTSGC_MAX_TOKENS", HUGE), ("TTSGC_TEMPERATURE", "nan"),
+                                         ("TTSGC_LLM_TIMEOUT", "-1")])
+def test_an_unusable_environment_variable_is_a_usage_error_naming_it(tmp_path, capsys, monkeypatch, name, value):
+    prompt = tmp_path / "p.txt"
+    prompt.write_text("the ego turns left")
+    monkeypatch.setenv("ANTHROPIC_API_KEY", "test-key")
+    monkeypatch.setenv("ANTHROPIC_BASE_URL", "http://127.0.0.1:9")
+    monkeypatch.setenv(name, value)
+    code, _, err = _run(capsys, "lower", prompt, "--llm", "anthropic")
+    assert code == ExitCode.INVALID_SCENARIO and f"${name}:" in err
+
+
+# -- usage errors ---------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("argv", [["compile", "{tsg}", "--variants", "0"], ["eval", "{empty}", "--seeds", "0"],
+                                  ["compile", "{tsg}", "--seed", HUGE], ["lower", "{tsg}", "--temperature", "nan"],
+                                  ["maps", "query", "--lanes", "-1"]])
+def test_numbers_on_the_command_line_are_read_with_limits(tmp_path, capsys, argv):
+    argv = [a.format(tsg=EXAMPLES / "boxed_in.tsg", empty=tmp_path) for a in argv]
+    with pytest.raises(SystemExit) as exit_:
+        main(argv)
+    assert exit_.value.code == ExitCode.INVALID_SCENARIO and "error: argument" in capsys.readouterr().err
+
+
+def test_eval_on_a_folder_with_no_cases_is_a_usage_error(tmp_path, capsys):
+    code, _, err = _run(capsys, "eval", tmp_path)
+    assert code == ExitCode.INVALID_SCENARIO and "no cases" in err
+    (tmp_path / "case.txt").write_text("a car")
+    (tmp_path / "suite.toml").write_text("kinds = [")
+    code, _, err = _run(capsys, "eval", tmp_path)
+    assert code == ExitCode.INVALID_SCENARIO and "suite.toml" in err

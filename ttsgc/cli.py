@@ -293,6 +293,24 @@ def _road_word(text: str) -> str:
                                      + (f"; did you mean {V.either(hint)}?" if hint else ""))
 
 
+def _number(kind: type, low, high):
+    """An argparse type reading a flag's number through the one bounded reader (nan, inf, 5000 digits and
+    out-of-range values are usage errors, exit 2)."""
+    from ttsgc.numbers import NumberError, parse_float, parse_int
+
+    def read(text: str):
+        try:
+            return (parse_int if kind is int else parse_float)(text, low, high)
+        except NumberError as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    read.__name__ = kind.__name__  # argparse names the type in its message
+    return read
+
+
+SEED = _number(int, 0, 2**32 - 1)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="ttsgc", description="A traffic-scenario compiler: English or the "
                                      "scenario language in, validated OpenSCENARIO out.")
@@ -315,13 +333,13 @@ def build_parser() -> argparse.ArgumentParser:
                              help="how English is lowered: the offline rules, or Claude through the anthropic SDK "
                                   "(auto: anthropic when ANTHROPIC_API_KEY is set, else offline)")
     llm_options.add_argument("--model", help="the LLM model (default: $TTSGC_MODEL, else a current Claude model)")
-    llm_options.add_argument("--temperature", type=float, help="LLM temperature (default: $TTSGC_TEMPERATURE, else 0)")
-    llm_options.add_argument("--max-tokens", type=int, help="LLM answer limit (default: $TTSGC_MAX_TOKENS, else 2048)")
+    llm_options.add_argument("--temperature", type=_number(float, 0.0, 2.0), help="LLM temperature (default: $TTSGC_TEMPERATURE, else 0)")
+    llm_options.add_argument("--max-tokens", type=_number(int, 1, 128_000), help="LLM answer limit (default: $TTSGC_MAX_TOKENS, else 2048)")
 
     lower_ = commands.add_parser("lower", parents=[llm_options], help="lower an English prompt into a .tsg scene")
     lower_.add_argument("input", metavar="PROMPT.txt")
     lower_.add_argument("-o", "--output", metavar="SCENE.tsg", help="where to write (default: print it)")
-    lower_.add_argument("--seed", type=int, help="picks among a scene kind's variants")
+    lower_.add_argument("--seed", type=SEED, help="picks among a scene kind's variants")
     lower_.set_defaults(run=_lower)
 
     compile_ = commands.add_parser("compile", parents=[llm_options],
@@ -330,11 +348,11 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("-o", "--output", metavar="OUT.xosc", help="where to write (default: INPUT with .xosc)")
     compile_.add_argument("--from", dest="source_kind", choices=["text", "tsg"],
                           help="the input's kind (default: by extension, .txt is English)")
-    compile_.add_argument("--variants", type=int, default=1, metavar="N",
+    compile_.add_argument("--variants", type=_number(int, 1, 1000), default=1, metavar="N",
                           help="compile N different scenes (seeds N..N+k: other roads, other agent choices)")
     compile_.add_argument("--maps", action="append", metavar="PATH",
                           help="an OpenDRIVE file or folder (repeatable); 'builtin' is the built-in library")
-    compile_.add_argument("--seed", type=int, help="pins the choice among equally ranked roads "
+    compile_.add_argument("--seed", type=SEED, help="pins the choice among equally ranked roads "
                                                    "(default: the scene's seed, else 0)")
     compile_.add_argument("--explain", action="store_true", help="print the ranking table of candidate roads")
     compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"], default="1.3",
@@ -352,12 +370,12 @@ def build_parser() -> argparse.ArgumentParser:
     eval_ = commands.add_parser("eval", parents=[llm_options],
                                 help="the paper's metrics (AA, RA, SA, AD, RD, failure rate) on a suite")
     eval_.add_argument("suite", metavar="SUITE", help="a folder of prompts (*.txt, gold *.tsg beside) or TTSG plans")
-    eval_.add_argument("--seeds", type=int, default=5, help="generations per case (default 5)")
+    eval_.add_argument("--seeds", type=_number(int, 1, 1000), default=5, help="generations per case (default 5)")
     eval_.add_argument("--maps", action="append", metavar="PATH", help="map files or folders ('builtin' for the "
                                                                        "built-in library)")
     eval_.add_argument("--report", metavar="EVAL.json", help="write every run and the summaries as JSON")
     eval_.add_argument("--no-simulate", action="store_true", help="compile only (SA then counts compiles)")
-    eval_.add_argument("--show-failures", type=int, default=10, metavar="N", help="list up to N failed runs")
+    eval_.add_argument("--show-failures", type=_number(int, 0, 1_000_000), default=10, metavar="N", help="list up to N failed runs")
     eval_.set_defaults(run=_eval)
 
     importer = commands.add_parser("import-ttsg", help="turn a TTSG plan (agent_output.json) into a .tsg scene")
@@ -380,7 +398,7 @@ def build_parser() -> argparse.ArgumentParser:
     show = maps_commands.add_parser("show", parents=[maps_options], help="every approach of one map")
     show.add_argument("name", help="the map's name or file stem")
     query = maps_commands.add_parser("query", parents=[maps_options], help="the approaches that meet conditions")
-    query.add_argument("--lanes", type=int, default=1, help="at least this many lanes in the driving direction")
+    query.add_argument("--lanes", type=_number(int, 1, 100), default=1, help="at least this many lanes in the driving direction")
     junction = query.add_mutually_exclusive_group()
     junction.add_argument("--junction", dest="junction", action="store_true", default=None,
                           help="ends at a junction")

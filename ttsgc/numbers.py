@@ -13,7 +13,7 @@ import math
 import os
 import re
 
-from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.errors import UsageError
 
 MAX_DIGITS = 30  # significant digits of any number ttsgc reads (a seed < 2**32 has 10, a map coordinate ~15)
 MAX_MAGNITUDE = 1e12  # larger than any distance, speed, time or count a scene or a map can mean
@@ -85,10 +85,4 @@ def env_number(name: str, kind: type = float, low=None, high=None):
     try:
         return (parse_int if kind is int else parse_float)(raw, low, high)
     except NumberError as exc:
-        raise EnvironmentValueError(f"${name}: {exc}") from None
-
-
-class EnvironmentValueError(TtsgcError):
-    """An environment variable ttsgc reads holds an unusable value: a usage error, like a bad flag."""
-
-    exit_code = ExitCode.INVALID_SCENARIO
+        raise UsageError(f"${name}: {exc}") from None
