@@ -236,3 +236,87 @@ def test_eval_on_a_folder_with_no_cases_is_a_usage_error(tmp_path, capsys):
     (tmp_path / "suite.toml").write_text("kinds = [")
     code, _, err = _run(capsys, "eval", tmp_path)
     assert code == ExitCode.INVALID_SCENARIO and "suite.toml" in err
+
+
+# -- outputs: never over an input or a read-only file, only on success, one message ----------------------------
+
+@pytest.mark.parametrize("name", ["s.tsg", "p.txt"])
+def test_compile_never_overwrites_its_input(tmp_path, capsys, name):
+    source = tmp_path / name
+    source.write_bytes((EXAMPLES / f"boxed_in{Path(name).suffix}").read_bytes())
+    before = source.read_bytes()
+    code, _, err = _run(capsys, "compile", source, "-o", source, "--no-simulate")
+    assert code == ExitCode.INVALID_SCENARIO and "never overwrites its input" in err
+    assert source.read_bytes() == before and sorted(p.name for p in tmp_path.iterdir()) == [name]
+
+
+def test_an_output_that_is_a_folder_is_a_usage_error(tmp_path, capsys):
+    code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", tmp_path, "--no-simulate")
+    assert code == ExitCode.INVALID_SCENARIO and "is a folder" in err and not list(tmp_path.iterdir())
+
+
+def test_an_output_folder_that_cannot_be_written_is_a_usage_error(tmp_path, capsys):
+    code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", "/proc/ttsgc-test/s.xosc",
+                        "--no-simulate")
+    assert code == ExitCode.INVALID_SCENARIO and "/proc/ttsgc-test" in err and "cannot be written" in err
+
+
+def test_a_read_only_output_folder_is_a_usage_error(tmp_path, capsys):
+    import os
+
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    folder.chmod(0o555)
+    try:
+        if os.access(folder, os.W_OK):
+            pytest.skip("permissions do not bind this user (root)")
+        code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", folder / "s.xosc", "--no-simulate")
+        assert code == ExitCode.INVALID_SCENARIO and "cannot be written" in err and not list(folder.iterdir())
+    finally:
+        folder.chmod(0o755)
+
+
+def test_fmt_refuses_a_read_only_file_and_leaves_it_as_it_was(tmp_path, capsys):
+    scene = tmp_path / "s.tsg"
+    scene.write_text('scenario "x"\nstage a {\n ego   car go_straight\n}\n')
+    scene.chmod(0o444)
+    before = scene.stat()
+    code, _, err = _run(capsys, "fmt", scene)
+    after = scene.stat()
+    assert code == ExitCode.INVALID_SCENARIO and "read-only" in err
+    assert (after.st_ino, after.st_mode, after.st_uid, after.st_mtime_ns) == \
+        (before.st_ino, before.st_mode, before.st_uid, before.st_mtime_ns)
+
+
+def test_the_lowered_scene_is_written_only_when_the_compile_succeeds(tmp_path, capsys):
+    sidewalks = tmp_path / "sidewalks.xodr"
+    sidewalks.write_text(BUILTIN_MAP.read_text().replace('type="driving"', 'type="sidewalk"'))
+    out = tmp_path / "out"
+    code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.txt", "-o", out / "s.xosc", "--maps", sidewalks)
+    assert code == ExitCode.NO_ROAD and not out.exists()
+
+
+def test_a_multi_line_prompt_gives_a_valid_scene_file(tmp_path, capsys):
+    prompt = tmp_path / "p.txt"
+    prompt.write_text("The ego turns left.\n\nThen a car\r\n stops in front # of it.\x0cquoted\u2028end\n")
+    code, _, _ = _run(capsys, "lower", prompt, "-o", tmp_path / "s.tsg")
+    assert code == ExitCode.OK
+    text = (tmp_path / "s.tsg").read_text()
+    assert text.startswith("# Lowered (offline) from: The ego turns left.\n# Then a car\n")
+    assert _run(capsys, "check", tmp_path / "s.tsg")[0] == ExitCode.OK
+
+
+def test_a_folder_given_as_the_scene_is_reported_once(tmp_path, capsys):
+    code, _, err = _run(capsys, "compile", tmp_path)
+    assert code == ExitCode.INVALID_SCENARIO and err.count("error:") == 1 and str(tmp_path) in err
+
+
+def test_output_into_a_closed_pipe_ends_quietly():
+    import subprocess
+    import sys
+
+    child = subprocess.Popen([sys.executable, "-m", "ttsgc", "maps", "list"], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, cwd=ROOT)
+    child.stdout.close()  # as `| head` does once it has read enough
+    err = child.stderr.read()
+    assert child.wait(timeout=60) == 141 and err == b""

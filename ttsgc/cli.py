@@ -10,7 +10,7 @@ from pathlib import Path
 
 from ttsgc import __version__
 from ttsgc.errors import ExitCode, TtsgcError
-from ttsgc.files import write_atomic
+from ttsgc.files import OutputError, check_outputs, protect_inputs, release_inputs, write_output
 from ttsgc.language import ScenarioError, format_scenario, parse_file
 from ttsgc.scenario import RoadSpec
 
@@ -50,7 +50,12 @@ def _fmt(args) -> int:
             print(f"{path}: not in the canonical layout (run 'ttsgc fmt {path}')", file=sys.stderr)
             unformatted = True
         else:
-            write_atomic(path, canonical)
+            try:
+                write_output(path, canonical)
+            except OutputError as exc:
+                print(f"ttsgc: error: {exc}", file=sys.stderr)
+                invalid = True
+                continue
             print(f"{path}: formatted")
     if invalid:
         return ExitCode.INVALID_SCENARIO
@@ -80,10 +85,13 @@ def _lower_file(args, source: Path, seed: int):
 
 def _lower(args) -> int:
     source = Path(args.input)
+    protect_inputs(source)
+    if args.output:
+        check_outputs(args.output)
     prompt, lowering = _lower_file(args, source, args.seed or 0)
     text = lowering.tsg(prompt)
     if args.output:
-        write_atomic(args.output, text)
+        write_output(args.output, text)
         print(f"{args.output}: lowered ({lowering.method}, {lowering.tries} tr{'y' if lowering.tries == 1 else 'ies'})")
     else:
         print(text, end="")
@@ -94,25 +102,43 @@ def _compile(args) -> int:
     source = Path(args.input)
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
+    _protect_compile_inputs(source, args.maps)
+    targets = [out if args.variants == 1 else out.with_name(f"{out.stem}-{k + 1}{out.suffix}")
+               for k in range(args.variants)]
+    lowered_paths = [_lowered_path(target) if kind == "text" else None for target in targets]
+    check_outputs(*targets, *filter(None, lowered_paths), *([args.report] if args.report else []))
     base_seed = args.seed
     status = ExitCode.OK
-    for k in range(args.variants):
+    for k, (target, lowered_path) in enumerate(zip(targets, lowered_paths)):
         seed = None if base_seed is None and args.variants == 1 else (base_seed or 0) + k
-        target = out if args.variants == 1 else out.with_name(f"{out.stem}-{k + 1}{out.suffix}")
-        lowering = None
+        lowering = lowered = None
         if kind == "text":
             prompt, lowering = _lower_file(args, source, seed or 0)
             scenario = lowering.scenario
-            write_atomic(_lowered_path(target), lowering.tsg(prompt))  # to edit and compile again
+            lowered = (lowered_path, lowering.tsg(prompt))  # to edit and compile again; written on success
         else:
             scenario = parse_file(source)
-        status = max(status, _compile_one(args, scenario, target, seed, lowering))
+        status = max(status, _compile_one(args, scenario, target, seed, lowering, lowered))
     return status
+
+
+def _protect_compile_inputs(source: Path, maps) -> None:
+    """The scene or prompt and every map file named are inputs: no output may replace them."""
+    from ttsgc.roads.opendrive import MapError
+    from ttsgc.roads.retrieve import map_files
+
+    protect_inputs(source)
+    try:
+        protect_inputs(*map_files(maps))
+    except MapError:
+        pass  # reported when the library is loaded
 
 
 def _lowered_path(out: Path) -> Path:
     """Where the lowered scene goes: beside the output, unless a scene a person wrote is already there."""
     path = out.with_suffix(".tsg")
+    if path == out:  # -o scene.tsg: the OpenSCENARIO takes that name
+        return out.with_suffix(".lowered.tsg")
     if path.exists() and not path.read_text(encoding="utf-8", errors="replace").startswith("# Lowered ("):
         path = out.with_suffix(".lowered.tsg")
         print(f"ttsgc: note: {out.with_suffix('.tsg')} was not written by ttsgc; the lowered scene goes to {path}",
@@ -120,7 +146,7 @@ def _lowered_path(out: Path) -> Path:
     return path
 
 
-def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
+def _compile_one(args, scenario, out: Path, seed, lowering, lowered: tuple[Path, str] | None = None) -> int:
     from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 
     log = lambda message: print(message, file=sys.stderr)  # noqa: E731
@@ -140,13 +166,15 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
         report_path = Path(args.report)
         if args.variants > 1:
             report_path = report_path.with_name(f"{report_path.stem}-{out.stem.rsplit('-', 1)[-1]}{report_path.suffix}")
-        write_atomic(report_path, json.dumps(data, indent=2) + "\n")
+        write_output(report_path, json.dumps(data, indent=2) + "\n")
     if report is not None and not report.ok:
         print(report.table(), file=sys.stderr)
         print(f"ttsgc: error: {out}: the scene does not do what it says on any of the roads tried; nothing was "
               f"written (--no-simulate writes it unchecked)", file=sys.stderr)
         return ExitCode.SIMULATION_FAILED
     write(compiled, out)
+    if lowered is not None:
+        write_output(*lowered)
     checked = f"; proven in SUMO ({report.simulated_s:.0f} s simulated)" if report is not None else ""
     print(f"{out}: {scene.map_name} approach {scene.approach} ({scene.score}/{scene.requirements} requirements, "
           f"seed {scene.seed}), OpenSCENARIO {args.osc_version}; map copied as {out.parent / compiled.map_name}"
@@ -169,7 +197,7 @@ def _eval(args) -> int:
     if len(failed) > args.show_failures:
         print(f"  ... and {len(failed) - args.show_failures} more failed run(s) (see --report)")
     if args.report:
-        write_atomic(args.report, report_json(runs) + "\n")
+        write_output(args.report, report_json(runs) + "\n")
     return ExitCode.OK
 
 
@@ -178,9 +206,11 @@ def _import_ttsg(args) -> int:
     from ttsgc.roads.retrieve import load_library
     from ttsgc.ttsg_import import import_plan
 
+    protect_inputs(*filter(None, (args.plan, args.road_info)))
+    check_outputs(*filter(None, (args.output, args.xosc)))
     imported = import_plan(args.plan, args.road_info)
     text = format_scenario(imported.scenario)
-    write_atomic(args.output, text)
+    write_output(args.output, text)
     print(f"{args.output}: imported" + (f" ({len(imported.notes)} repair(s) noted in the file)"
                                         if imported.notes else ""))
     for note in imported.notes:
@@ -218,10 +248,13 @@ def _import_ttsg(args) -> int:
 def _validate(args) -> int:
     from ttsgc.simulate.sumo import simulate
 
+    protect_inputs(args.scene)
+    if args.report:
+        check_outputs(args.report)
     report = simulate(args.scene)
     print(report.table())
     if args.report:
-        write_atomic(args.report, report.model_dump_json(indent=2) + "\n")
+        write_output(args.report, report.model_dump_json(indent=2) + "\n")
     return ExitCode.OK if report.ok else ExitCode.SIMULATION_FAILED
 
 
@@ -411,16 +444,33 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised like Ctrl-C so that every temporary folder and child process is cleaned up on the way out."""
+
+
+def _on_sigterm(signum, frame):
+    raise Terminated()
+
+
 def main(argv: list[str] | None = None) -> int:
+    import signal
+    import threading
+
     args = build_parser().parse_args(argv)
+    installed = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGTERM, _on_sigterm) if installed else None
     try:
         return int(args.run(args))
     except TtsgcError as exc:
-        print(f"ttsgc: error: {exc.render()}", file=sys.stderr)
+        text = exc.render()
+        print(text if isinstance(exc, ScenarioError) else f"ttsgc: error: {text}", file=sys.stderr)  # has its own
         return int(exc.exit_code)
-    except KeyboardInterrupt:
-        print("ttsgc: interrupted", file=sys.stderr)
-        return 130
+    except BrokenPipeError:  # the reader went away (| head): stop quietly, as a shell pipeline expects
+        _silence_stdout()
+        return 141
+    except KeyboardInterrupt as exc:
+        print("ttsgc: terminated" if isinstance(exc, Terminated) else "ttsgc: interrupted", file=sys.stderr)
+        return 143 if isinstance(exc, Terminated) else 130
     except Exception as exc:  # noqa: BLE001 - the last line of defence: no traceback unless asked
         if args.debug:
             traceback.print_exc()
@@ -428,6 +478,22 @@ def main(argv: list[str] | None = None) -> int:
             print(f"ttsgc: internal error: {type(exc).__name__}: {exc} (run with --debug for a traceback)",
                   file=sys.stderr)
         return int(ExitCode.INTERNAL)
+    finally:
+        release_inputs()
+        if installed:
+            signal.signal(signal.SIGTERM, previous if previous is not None else signal.SIG_DFL)
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null so the interpreter's last flush does not fail on the closed pipe again."""
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):
+        pass
 
 
 if __name__ == "__main__":

@@ -10,7 +10,7 @@ from pathlib import Path
 from ttsgc.binding import BoundScene, bind
 from ttsgc.emit.xosc import DEFAULT_VERSION, emit
 from ttsgc.errors import TtsgcError
-from ttsgc.files import write_atomic
+from ttsgc.files import check_outputs, write_output
 from ttsgc.roads.index import MapIndex
 from ttsgc.roads.retrieve import load_library
 from ttsgc.scenario import Scenario
@@ -51,10 +51,18 @@ def simulate_compiled(compiled: Compiled, out: Path):
 
     from ttsgc.simulate.sumo import simulate
 
+    from ttsgc.roads.opendrive import MapError
+
     with tempfile.TemporaryDirectory(prefix="ttsgc-") as scratch:
         trial = Path(scratch) / out.name
         write(compiled, trial)
-        report = simulate(trial)
+        try:
+            report = simulate(trial)
+        except MapError as exc:  # name the user's map, not the scratch copy the simulation read
+            message = str(exc)
+            for copy in {str(trial.parent / compiled.map_name), str(trial.parent.resolve() / compiled.map_name)}:
+                message = message.replace(copy, compiled.scene.map_path)
+            raise MapError(message) from None
     return report.model_copy(update={"scenario": str(out), "map": str(out.parent / compiled.map_name)})
 
 
@@ -85,9 +93,10 @@ def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None
 
 
 def write(compiled: Compiled, out: Path) -> None:
-    """Write the map copy, then the .xosc, each atomically: a reader never sees half a file."""
-    out.parent.mkdir(parents=True, exist_ok=True)
+    """Write the map copy, then the .xosc, each atomically: a reader never sees half a file. Both paths are
+    checked before either is written."""
     copy = out.parent / compiled.map_name
+    check_outputs(out, *([] if copy.exists() else [copy]))
     if not copy.exists():
-        write_atomic(copy, Path(compiled.scene.map_path).read_bytes())
-    write_atomic(out, compiled.xosc)
+        write_output(copy, Path(compiled.scene.map_path).read_bytes())
+    write_output(out, compiled.xosc)
