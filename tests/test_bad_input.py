@@ -4,6 +4,7 @@ exit code, never a traceback (exit 1), a hang, a half-written file or an overwri
 from __future__ import annotations
 
 import json
+import re
 import time
 from pathlib import Path
 
@@ -320,3 +321,110 @@ def test_output_into_a_closed_pipe_ends_quietly():
     child.stdout.close()  # as `| head` does once it has read enough
     err = child.stderr.read()
     assert child.wait(timeout=60) == 141 and err == b""
+
+
+# -- the safe map reader before netconvert; netconvert's refusal; caches that check what they read -------------
+
+def _compiled_unchecked(tmp_path: Path, capsys) -> Path:
+    out = tmp_path / "scene" / "s.xosc"
+    assert _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", out, "--no-simulate")[0] == ExitCode.OK
+    return out
+
+
+@pytest.mark.parametrize("map_text", ['<?xml version="1.0"?>\n<!DOCTYPE x [<!ENTITY a "b">]>\n<OpenDRIVE/>\n',
+                                      "root:x:0:0:root:/root:/bin/bash\n"], ids=["doctype", "system-file"])
+def test_validate_reads_the_map_safely_before_netconvert_sees_it(tmp_path, capsys, monkeypatch, map_text):
+    import ttsgc.simulate.network as network
+
+    scene = _compiled_unchecked(tmp_path, capsys)
+    hostile = tmp_path / "hostile.xodr"
+    hostile.write_text(map_text)
+    text = scene.read_text()
+    scene.write_text(text.replace('filepath="fourway_1lane_stop.xodr"', f'filepath="{hostile}"'))
+    monkeypatch.setattr(network, "netconvert_binary", lambda: pytest.fail("netconvert saw the file"))
+    code, _, err = _run(capsys, "validate", scene)
+    assert code == ExitCode.MAP_ERROR and f"{hostile}:" in err
+
+
+def test_a_map_netconvert_refuses_is_a_map_error_naming_the_users_file(tmp_path, capsys, monkeypatch):
+    import ttsgc.simulate.network as network
+
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setattr(network, "netconvert_binary", lambda: "false")  # a netconvert that refuses every map
+    user_map = tmp_path / "mine.xodr"
+    user_map.write_bytes(BUILTIN_MAP.read_bytes())
+    code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", tmp_path / "out" / "s.xosc",
+                        "--maps", user_map)
+    assert code == ExitCode.MAP_ERROR and f"{user_map.resolve()}: netconvert cannot convert the map" in err
+    assert "ttsgc-" not in err and not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("damage", [b"garbage", None, b"<net/>"], ids=["garbage", "truncated", "empty-net"])
+def test_a_corrupt_network_cache_entry_is_rebuilt(tmp_path, monkeypatch, damage):
+    from ttsgc.simulate.network import network_for
+
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path))
+    good = network_for(BUILTIN_MAP)
+    data = good.path.read_bytes()
+    good.path.write_bytes(damage if damage is not None else data[: len(data) // 2])
+    again = network_for(BUILTIN_MAP)
+    assert again.path == good.path and again.offset == good.offset
+    edges = lambda text: re.findall(rb'<edge id="([^"]+)"', text)  # noqa: E731 - netconvert stamps the time
+    assert edges(good.path.read_bytes()) == edges(data) != []
+
+
+def test_a_cache_path_that_is_a_file_falls_back_to_a_temporary_cache(tmp_path, capsys, monkeypatch):
+    blocker = tmp_path / "cache-is-a-file"
+    blocker.write_text("")
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(blocker))
+    code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", tmp_path / "out" / "s.xosc")
+    assert code == ExitCode.OK and "using a temporary one" in err and (tmp_path / "out" / "s.xosc").is_file()
+
+
+# -- SIGTERM: no temporary folder and no child process outlives ttsgc -------------------------------------------
+
+def _children(pid: int) -> set[int]:
+    found = set()
+    for task in Path(f"/proc/{pid}/task").glob("*"):
+        try:
+            found |= {int(c) for c in (task / "children").read_text().split()}
+        except OSError:
+            pass
+    return found | {g for c in found for g in _children(c)}
+
+
+def _alive(pid: int) -> bool:
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().split(") ")[-1][0] not in "ZX"
+    except OSError:
+        return False
+
+
+def test_sigterm_during_compile_leaves_no_temporary_folder_and_no_child(tmp_path):
+    import os
+    import signal
+    import subprocess
+    import sys
+
+    if not Path("/proc/self/task").is_dir():
+        pytest.skip("needs /proc")
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    env = {**os.environ, "TMPDIR": str(scratch), "TTSGC_CACHE_DIR": str(tmp_path / "cache"), "PYTHONPATH": str(ROOT)}
+    child = subprocess.Popen([sys.executable, "-m", "ttsgc", "compile", str(EXAMPLES / "boxed_in.tsg"), "-o",
+                              str(tmp_path / "out" / "s.xosc")], env=env, stderr=subprocess.PIPE)
+    seen: set[int] = set()
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and child.poll() is None:
+        grandchildren = _children(child.pid)
+        seen |= grandchildren
+        if grandchildren and list(scratch.glob("ttsgc-*")):  # netconvert runs, inside the scratch folder's life
+            break
+        time.sleep(0.005)
+    assert child.poll() is None and seen, "the compile ended before netconvert could be caught running"
+    child.send_signal(signal.SIGTERM)
+    err = child.stderr.read().decode()
+    assert child.wait(timeout=60) == 143 and "terminated" in err and "Traceback" not in err
+    time.sleep(0.2)
+    assert not list(scratch.glob("ttsgc-*")) and not [pid for pid in seen if _alive(pid)]
+    assert not (tmp_path / "out").exists()
