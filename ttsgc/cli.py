@@ -210,12 +210,16 @@ def _import_ttsg(args) -> int:
     check_outputs(*filter(None, (args.output, args.xosc)))
     imported = import_plan(args.plan, args.road_info)
     text = format_scenario(imported.scenario)
-    write_output(args.output, text)
-    print(f"{args.output}: imported" + (f" ({len(imported.notes)} repair(s) noted in the file)"
-                                        if imported.notes else ""))
     for note in imported.notes:
         print(f"ttsgc: note: {note}", file=sys.stderr)
+
+    def write_scene() -> None:  # only once everything asked for has succeeded
+        write_output(args.output, text)
+        print(f"{args.output}: imported" + (f" ({len(imported.notes)} repair(s) noted in the file)"
+                                            if imported.notes else ""))
+
     if not args.xosc:
+        write_scene()
         return ExitCode.OK
     out, only = Path(args.xosc), None
     paper = imported.paper_road
@@ -238,8 +242,12 @@ def _import_ttsg(args) -> int:
                                          log=lambda m: print(m, file=sys.stderr))
     if not report.ok:
         print(report.table(), file=sys.stderr)
+        print(f"ttsgc: error: {out}: the scene does not do what it says on any of the roads tried; nothing was "
+              f"written", file=sys.stderr)
         return ExitCode.SIMULATION_FAILED
+    check_outputs(args.output, out)
     write(compiled, out)
+    write_scene()
     print(f"{out}: {compiled.scene.map_name} {compiled.scene.approach}"
           f"{' (the paper' + chr(39) + 's road)' if only else ' (ranked)'}; proven in SUMO")
     return ExitCode.OK
