@@ -18,7 +18,7 @@ from ttsgc.errors import UsageError
 MAX_DIGITS = 30  # significant digits of any number ttsgc reads (a seed < 2**32 has 10, a map coordinate ~15)
 MAX_MAGNITUDE = 1e12  # larger than any distance, speed, time or count a scene or a map can mean
 
-_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")  # ASCII digits only
 
 
 class NumberError(ValueError):
@@ -61,7 +61,7 @@ def parse_float(text: str, low: float | None = -MAX_MAGNITUDE, high: float | Non
 def parse_int(text: str, low: int | None = -int(MAX_MAGNITUDE), high: int | None = int(MAX_MAGNITUDE)) -> int:
     """An integer (plain digits, optional sign) within [low, high]."""
     text = _checked_text(text)
-    if not re.fullmatch(r"[+-]?\d+", text):
+    if not re.fullmatch(r"[+-]?[0-9]+", text):
         raise NumberError(f"{_shown(text)} is not an integer")
     return _in_range(int(text), text, low, high)
 
