@@ -106,7 +106,7 @@ def _compile(args) -> int:
     targets = [out if args.variants == 1 else out.with_name(f"{out.stem}-{k + 1}{out.suffix}")
                for k in range(args.variants)]
     lowered_paths = [_lowered_path(target) if kind == "text" else None for target in targets]
-    check_outputs(*targets, *filter(None, lowered_paths), *([args.report] if args.report else []))
+    check_outputs(*targets, *filter(None, lowered_paths), *(_report_path(args, t) for t in targets if args.report))
     base_seed = args.seed
     status = ExitCode.OK
     for k, (target, lowered_path) in enumerate(zip(targets, lowered_paths)):
@@ -146,6 +146,14 @@ def _lowered_path(out: Path) -> Path:
     return path
 
 
+def _report_path(args, out: Path) -> Path:
+    """--report as given, or REPORT-k.json beside it for the k-th of several variants."""
+    report_path = Path(args.report)
+    if args.variants > 1:
+        report_path = report_path.with_name(f"{report_path.stem}-{out.stem.rsplit('-', 1)[-1]}{report_path.suffix}")
+    return report_path
+
+
 def _compile_one(args, scenario, out: Path, seed, lowering, lowered: tuple[Path, str] | None = None) -> int:
     from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 
@@ -163,10 +171,7 @@ def _compile_one(args, scenario, out: Path, seed, lowering, lowered: tuple[Path,
         data = report.model_dump(mode="json") if report is not None else {"ok": None, "simulated": False}
         if lowering is not None:
             data["lowering"] = lowering.summary()
-        report_path = Path(args.report)
-        if args.variants > 1:
-            report_path = report_path.with_name(f"{report_path.stem}-{out.stem.rsplit('-', 1)[-1]}{report_path.suffix}")
-        write_output(report_path, json.dumps(data, indent=2) + "\n")
+        write_output(_report_path(args, out), json.dumps(data, indent=2) + "\n")
     if report is not None and not report.ok:
         print(report.table(), file=sys.stderr)
         print(f"ttsgc: error: {out}: the scene does not do what it says on any of the roads tried; nothing was "
