@@ -433,3 +433,12 @@ def test_sigterm_during_compile_leaves_no_temporary_folder_and_no_child(tmp_path
     time.sleep(0.2)
     assert not list(scratch.glob("ttsgc-*")) and not [pid for pid in seen if _alive(pid)]
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("lanes", ['"abc"', "Infinity", "1e308", '"9' + "9" * 400 + '"', "2.0"])
+def test_a_plans_lane_count_of_any_shape_is_read_with_limits(tmp_path, capsys, shared, lanes):
+    plan = tmp_path / "agent_output.json"
+    original = (shared / "ttsg-plans" / "daily_traffic" / "3" / "agent_output.json").read_text()
+    plan.write_text(re.sub(r'"number_of_lanes": \d+', f'"number_of_lanes": {lanes}', original))
+    code, _, err = _run(capsys, "import-ttsg", plan, "-o", tmp_path / "s.tsg")
+    assert code == ExitCode.OK and (lanes == "2.0" or "number_of_lanes" in err)

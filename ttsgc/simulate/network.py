@@ -43,7 +43,8 @@ NETCONVERT_TIMEOUT_S = 600
 
 
 def _die_with_parent() -> None:
-    """In the child, before exec: ask Linux to kill it when ttsgc dies, however ttsgc dies."""
+    """In the child, before exec: ask Linux to kill it when ttsgc dies, however ttsgc dies (strictly: when the
+    thread that started it ends; ttsgc starts children from its main thread only)."""
     try:
         import ctypes
 
