@@ -142,8 +142,13 @@ class _RawServer:
             def log_message(self, *args):
                 pass
 
-        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
-        self.server.daemon_threads = True
+        class QuietServer(ThreadingHTTPServer):
+            daemon_threads = True
+
+            def handle_error(self, request, client_address):
+                pass  # a client that gave up (the deadline test) is the point, not a fault
+
+        self.server = QuietServer(("127.0.0.1", 0), Handler)
         self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
 
     @property
@@ -415,7 +420,11 @@ def test_sigterm_during_compile_leaves_no_temporary_folder_and_no_child(tmp_path
         pytest.skip("needs /proc")
     scratch = tmp_path / "tmp"
     scratch.mkdir()
-    env = {**os.environ, "TMPDIR": str(scratch), "TTSGC_CACHE_DIR": str(tmp_path / "cache"), "PYTHONPATH": str(ROOT)}
+    slow_netconvert = tmp_path / "netconvert"  # a netconvert that hangs, so the signal surely finds it running
+    slow_netconvert.write_text("#!/bin/sh\nexec sleep 60\n")
+    slow_netconvert.chmod(0o755)
+    env = {**os.environ, "TMPDIR": str(scratch), "TTSGC_CACHE_DIR": str(tmp_path / "cache"), "PYTHONPATH": str(ROOT),
+           "NETCONVERT_BINARY": str(slow_netconvert)}
     child = subprocess.Popen([sys.executable, "-m", "ttsgc", "compile", str(EXAMPLES / "boxed_in.tsg"), "-o",
                               str(tmp_path / "out" / "s.xosc")], env=env, stderr=subprocess.PIPE)
     seen: set[int] = set()
@@ -425,7 +434,7 @@ def test_sigterm_during_compile_leaves_no_temporary_folder_and_no_child(tmp_path
         seen |= grandchildren
         if grandchildren and list(scratch.glob("ttsgc-*")):  # netconvert runs, inside the scratch folder's life
             break
-        time.sleep(0.005)
+        time.sleep(0.02)
     assert child.poll() is None and seen, "the compile ended before netconvert could be caught running"
     child.send_signal(signal.SIGTERM)
     err = child.stderr.read().decode()
