@@ -197,7 +197,7 @@ def test_an_llm_that_never_answers_is_given_up_on_at_the_deadline(tmp_path, caps
         monkeypatch.setenv("TTSGC_LLM_TIMEOUT", "2")
         start = time.perf_counter()
         code, _, err = _run(capsys, "lower", prompt)
-    assert time.perf_counter() - start < 6
+    assert time.perf_counter() - start < 10  # the deadline plus start-up, on a busy machine
     assert code == ExitCode.LOWERING_FAILED and "no answer within 2 s" in err and "--llm offline" in err
 
 
