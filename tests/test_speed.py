@@ -130,14 +130,15 @@ def test_a_cache_entry_cannot_make_the_loader_run_other_code(tmp_path, monkeypat
 
 
 def test_the_net_offset_is_read_from_the_head_of_the_file(tmp_path):
-    from ttsgc.simulate.players.sumo.network import net_offset
+    from ttsgc.simulate.players.sumo.network import net_head
 
     net = tmp_path / "x.net.xml"
     net.write_text('<?xml version="1.0"?>\n<net version="1.20"><location netOffset="116.00,-390.50" '
-                   'convBoundary="0,0,1,1"/><edge id="e"><lane id="e_0" index="0" shape="0,0 1,1"/></edge></net>')
-    assert net_offset(net) == (116.0, -390.5)
+                   'convBoundary="0,0,1,1"/><edge id="e"><lane id="e_0" index="0" shape="0,0 1,1"/></edge>'
+                   '<broken')  # past the first edge nothing is read
+    assert net_head(net) == ((116.0, -390.5), ["net", "location", "edge"])
     net.write_text('<net version="1.20"><edge id="e"/></net>')
-    assert net_offset(net) == (0.0, 0.0)
+    assert net_head(net) == ((0.0, 0.0), ["net", "edge"])
 
 
 def test_simulating_loads_libsumo_without_numpy_and_sumolib_keeps_its_numpy_functions():

@@ -25,3 +25,9 @@ class TtsgcError(Exception):
 
     def render(self) -> str:
         return str(self)
+
+
+class UsageError(TtsgcError):
+    """A bad command line: a path, a number or an environment variable that is not what the command needs."""
+
+    exit_code = ExitCode.INVALID_SCENARIO

@@ -11,7 +11,7 @@ from ttsgc.binding import BoundScene, bind
 from ttsgc.binding.scene import candidates
 from ttsgc.emit.xosc import CREATION_DATE, DEFAULT_VERSION, emit
 from ttsgc.errors import TtsgcError
-from ttsgc.files import write_atomic
+from ttsgc.files import check_outputs, write_output
 from ttsgc.roads.index import MapIndex
 from ttsgc.roads.retrieve import load_library
 from ttsgc.scenario import Scenario
@@ -64,10 +64,18 @@ def simulate_compiled(compiled: Compiled, out: Path, players: str = "all"):
 
     from ttsgc.simulate.validate import validate
 
+    from ttsgc.roads.opendrive import MapError
+
     with tempfile.TemporaryDirectory(prefix="ttsgc-") as scratch:
         trial = Path(scratch) / out.name
         write(compiled, trial)
-        report = validate(trial, players)
+        try:
+            report = validate(trial, players)
+        except MapError as exc:  # name the user's map, not the scratch copy the simulation read
+            message = str(exc)
+            for copy in {str(trial.parent / compiled.map_name), str(trial.parent.resolve() / compiled.map_name)}:
+                message = message.replace(copy, compiled.scene.map_path)
+            raise MapError(message) from None
     return report.model_copy(update={"scenario": str(out), "map": str(out.parent / compiled.map_name)})
 
 
@@ -133,12 +141,13 @@ class _Labelled:
 
 
 def write(compiled: Compiled, out: Path) -> None:
-    """Write the map copy, then the .xosc, each atomically: a reader never sees half a file."""
-    out.parent.mkdir(parents=True, exist_ok=True)
+    """Write the map copy, then the .xosc, each atomically: a reader never sees half a file. Both paths are
+    checked before either is written."""
     copy = out.parent / compiled.map_name
+    check_outputs(out, *([] if copy.exists() else [copy]))
     if not copy.exists():
-        write_atomic(copy, Path(compiled.scene.map_path).read_bytes())
-    write_atomic(out, compiled.xosc)
+        write_output(copy, Path(compiled.scene.map_path).read_bytes())
+    write_output(out, compiled.xosc)
 
 
 @dataclass(frozen=True)
@@ -210,5 +219,6 @@ def write_distribution(dist: Distribution, out: Path) -> None:
     dist_path, concrete_paths = distribution_paths(out, len(dist.variants))
     for variant, path in zip(dist.variants, concrete_paths):
         write(variant, path)
-    write_atomic(out, dist.template)
-    write_atomic(dist_path, dist.distribution)
+    check_outputs(out, dist_path)
+    write_output(out, dist.template)
+    write_output(dist_path, dist.distribution)
