@@ -300,3 +300,21 @@ def test_the_report_order_does_not_depend_on_the_order_of_the_trace():
     second = _trace({n: (k * 3.0, 0, 0) for k, n in reversed(list(enumerate(names)))})
     assert J.find_collisions(first, first.bodies) == J.find_collisions(second, second.bodies)
     assert J.criticality(first, first.bodies, "ego") == J.criticality(second, second.bodies, "ego")
+
+
+def test_prove_first_takes_candidates_lazily_and_stops_at_the_first_proven():
+    from types import SimpleNamespace
+
+    from ttsgc.pipeline import prove_first
+
+    made = []
+
+    def candidates():
+        for k in range(10):
+            made.append(k)
+            yield k
+    verdicts = {0: False, 1: True}
+    chosen, report = prove_first(candidates(), lambda k: SimpleNamespace(ok=verdicts.get(k, False), agents=[],
+                                                                         collisions=[], problems=["no"]),
+                                 log=lambda message: None)
+    assert chosen == 1 and report.ok and made == [0, 1]  # the third road was never placed
