@@ -169,6 +169,19 @@ def test_agents_of_a_later_stage_at_the_junction_do_their_action(esmini, tmp_pat
     assert report.ok, report.table()
 
 
+def test_a_turn_with_a_trigger_is_judged_from_where_the_car_appeared(esmini, tmp_path):
+    """Its route is its action: a car that reached its road before its trigger fired still turned left."""
+    source = tmp_path / "triggered.tsg"
+    source.write_text('scenario "triggered"\nroad {\n    at junction\n}\nstage main {\n    ego car go_straight\n'
+                      '    car c1 at road_of_left_turn turn_left when ego within 30m\n'
+                      '    car c2 at road_of_straight go_straight\n}\n')
+    out = tmp_path / "triggered.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    report = validate(out, "all")
+    for player in ("sumo", "esmini"):
+        assert "went left onto road" in _agent(report, player, "c1").reason, report.table()
+
+
 def test_two_walkers_queued_on_one_sidewalk_keep_their_distance(esmini, tmp_path):
     source = tmp_path / "walkers.tsg"
     source.write_text('scenario "two walkers"\nstage main {\n    ego car go_straight\n'
