@@ -336,13 +336,14 @@ def _movement(after: list[Sample], movement: str, target: str) -> tuple[bool, st
 def _lane_change(after: list[Sample], direction: int) -> tuple[bool, str]:
     """Net lanes moved to the left: on either side of a road the lane nearer the centre line is to the left
     of the driving direction, so a move to the left lowers |lane id|."""
-    net = 0
+    net = most = 0  # most: the furthest it got the named way (a lane section further on may renumber lanes)
     for a, b in zip(after, after[1:]):
         if a.road and a.road == b.road and a.lane and b.lane and (a.lane > 0) == (b.lane > 0):
             net += abs(a.lane) - abs(b.lane)
+            most = max(most, net * direction)
     side = "left" if direction > 0 else "right"
-    if net * direction >= 1:
-        return True, f"changed {abs(net)} lane(s) to the {side}"
+    if most >= 1:
+        return True, f"changed {most} lane(s) to the {side}"
     return False, f"did not change to the {side} (net lane change {net:+d})"
 
 
