@@ -12,7 +12,7 @@ from ttsgc.emit.xosc import DEFAULT_VERSION, emit
 from ttsgc.errors import TtsgcError
 from ttsgc.files import write_atomic
 from ttsgc.roads.index import MapIndex
-from ttsgc.roads.retrieve import load_library
+from ttsgc.roads.retrieve import NoRoadError, load_library
 from ttsgc.scenario import Scenario
 
 
@@ -35,11 +35,45 @@ def map_file_name(scene: BoundScene, out_dir: Path) -> str:
 
 def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
                      version: str = DEFAULT_VERSION, skip: int = 0, only: tuple[str, str] | None = None,
-                     library: list[MapIndex] | None = None) -> Compiled:
+                     library: list[MapIndex] | None = None, synthesize: str = "never", log=print) -> Compiled:
     """maps: files and folders as `--maps` takes them; library: the same, already loaded (wins over maps)."""
-    scene = bind(scenario, library if library is not None else load_library(maps), seed=seed, skip=skip, only=only)
+    if library is None:
+        library = library_for(scenario, maps, seed, synthesize, log)
+    scene = bind(scenario, library, seed=seed, skip=skip, only=only)
     map_name = map_file_name(scene, out.parent)
     return Compiled(scene, emit(scene, map_name, version), map_name)
+
+
+SYNTHESIZE_CHOICES = ("auto", "never", "always")
+
+
+def library_for(scenario: Scenario, maps=None, seed: int | None = None, synthesize: str = "never",
+                log=print) -> list[MapIndex]:
+    """The roads a scene is bound to: the map library, or a map synthesised for the scene when `synthesize`
+    is 'always', or 'auto' and binding on the library fails or leaves a requirement unmet (said through log)."""
+    from ttsgc.binding.scene import DEFAULT_SEED
+    from ttsgc.roads.index import cache_dir, load_index
+
+    reason = "--synthesize always"
+    if synthesize != "always":
+        library = load_library(maps)
+        if synthesize == "never":
+            return library
+        try:
+            unmet = bind(scenario, library, seed=seed).unmet
+        except NoRoadError as exc:
+            reason = str(exc).splitlines()[0]
+        else:
+            if not unmet:
+                return library
+            reason = f"the best road of the library does not meet {', '.join(unmet)}"
+    from ttsgc.roads.synth import synthesize_map
+
+    seed = seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
+    key = hashlib.sha256(f"{scenario.model_dump_json()}|{seed}".encode()).hexdigest()[:16]
+    path = synthesize_map(scenario, seed, cache_dir().parent / "synth" / key)
+    log(f"ttsgc: note: {reason}; synthesised {path.name} for the scene")
+    return [load_index(path)]
 
 
 MAX_SIMULATION_TRIES = 3
@@ -60,11 +94,11 @@ def simulate_compiled(compiled: Compiled, out: Path):
 
 def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
                       version: str = DEFAULT_VERSION, tries: int = MAX_SIMULATION_TRIES, log=print,
-                      only: tuple[str, str] | None = None):
+                      only: tuple[str, str] | None = None, synthesize: str = "never"):
     """Compile, then simulate; when the scene fails on its road, compile onto the next-ranked road, at most
     `tries` roads in all. Returns (compiled, report) of the first that passes, else of the last tried."""
     compiled = report = None
-    library = load_library(maps)
+    library = library_for(scenario, maps, seed, synthesize, log)
     for attempt in range(tries):
         try:
             compiled = compile_scenario(scenario, out, seed=seed, version=version, skip=attempt, only=only,

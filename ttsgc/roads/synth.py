@@ -12,8 +12,10 @@ junction along s (approach "1:fwd") past a mid-block crossing when the scene has
 the junction (or the crossing) carries the same signals and markings, so whichever one the ranker picks has
 exactly what was asked, and nothing forbidden is placed anywhere on the map.
 
-scenariogeneration has no junction controllers and no lane speeds, stamps the current date into the header,
-and netconvert cannot compute constant-curvature spirals: `finish` fixes those on the XML.
+scenariogeneration has no junction controllers, stamps the current date into the header, and netconvert
+cannot compute constant-curvature spirals: `finish` fixes those on the XML. Speed limits are the roads' type
+speed, as in the built-in maps (lane speeds would make netconvert warn of fast turns and SUMO refuse fast
+departures).
 """
 
 from __future__ import annotations
@@ -105,7 +107,11 @@ class Numbering:
 
 class Fittings:
     """Signs, signals and markings for the traffic that drives towards s = 0 (at_start) or towards the road's
-    end; distances are metres before that end."""
+    end; distances are metres before that end.
+
+    They go straight into the road's lists: Road.add_signal / add_object renumber any id used before anywhere
+    in the process, so a second map built in one process would get other ids. Numbering keeps them unique
+    within a file, which is all OpenDRIVE asks."""
 
     def __init__(self, road: xodr.Road, side: Side, ids: Numbering, at_start: bool = True, length: float = 0.0):
         self.road, self.side, self._id = road, side, ids
@@ -115,7 +121,7 @@ class Fittings:
 
     def _signal(self, distance: float, type_code: str, name: str, value=None, dynamic=False, subtype="-1") -> str:
         sid = self._id()
-        self.road.add_signal(xodr.Signal(
+        self.road.signals.append(xodr.Signal(
             s=self.at(distance), t=self.sign * (self.side.width - 0.5), country="DEU", Type=type_code,
             subtype=subtype, id=sid, name=name, value=value, unit="km/h" if value else None,
             dynamic=xodr.Dynamic.yes if dynamic else xodr.Dynamic.no, orientation=self.orientation,
@@ -136,13 +142,13 @@ class Fittings:
 
     def stop_line(self, distance: float = 1.0):
         half = self.side.lanes * self.side.lane_width
-        self.road.add_object(xodr.Object(
+        self.road.objects.append(xodr.Object(
             s=self.at(distance), t=self.sign * half / 2, Type=xodr.ObjectType.roadMark, subtype="stopLine",
             id=self._id(), name="StopLine", orientation=self.orientation, hdg=math.pi / 2, width=0.4, length=half,
             height=0.0))
 
     def stencil_stop(self, distance: float = 8.0):
-        self.road.add_object(xodr.Object(
+        self.road.objects.append(xodr.Object(
             s=self.at(distance), t=self.sign * self.side.lane_width / 2, Type=xodr.ObjectType.roadMark,
             subtype="text", id=self._id(), name="Stencil_STOP", orientation=self.orientation, width=2.5, length=2.5,
             height=0.0))
@@ -151,7 +157,7 @@ class Fittings:
         """A crossing over the whole carriageway; kind: ladder, continental, parallel_open or plain."""
         span = 2 * self.side.carriageway
         name = "".join(part.capitalize() for part in kind.split("_")) + "Crosswalk" if kind != "plain" else "Crosswalk"
-        self.road.add_object(xodr.Object(
+        self.road.objects.append(xodr.Object(
             s=self.at(distance), t=0.0, Type=xodr.ObjectType.crosswalk, subtype=kind, id=self._id(), name=name,
             orientation=xodr.Orientation.none, hdg=math.pi / 2, width=4.0, length=span, height=0.0))
 
@@ -170,17 +176,31 @@ def junction(jid: int, arms: list[tuple[xodr.Road, float, str]], lanes: dict[int
     def incoming(rid: int, k: int) -> int:  # lane +k drives into the junction at a road's start, -k at its end
         return k if end_of[rid] == "predecessor" else -k
 
-    connections = []
+    pairs: dict[tuple[int, int], list[tuple[int, int]]] = {}
     for a in angle_of:
         for b in angle_of:
             if a == b:
                 continue
             turn = turn_angle(angle_of[a], angle_of[b])
             if abs(turn) < 0.3:
-                pairs = [(k, k) for k in range(1, min(lanes[a], lanes[b]) + 1)]
+                pairs[a, b] = [(k, k) for k in range(1, min(lanes[a], lanes[b]) + 1)]
             else:
-                pairs = [(1, 1)] if turn > 0 else [(lanes[a], lanes[b])]
-            connections.append((a, b, [incoming(a, i) for i, _ in pairs], [-incoming(b, j) for _, j in pairs]))
+                pairs[a, b] = [(1, 1)] if turn > 0 else [(lanes[a], lanes[b])]
+    # Every lane into and out of the junction gets a connection (netconvert warns of one without): a lane the
+    # rules above leave out joins the straightest movement from (or into) its road.
+    straightest = lambda a, b: abs(turn_angle(angle_of[a], angle_of[b]))  # noqa: E731
+    for a in angle_of:
+        for i in range(1, lanes[a] + 1):
+            if not any(x == i for (src, _), links in pairs.items() if src == a for x, _ in links):
+                b = min((b for b in angle_of if b != a), key=lambda b: straightest(a, b))
+                pairs[a, b].append((i, min(i, lanes[b])))
+    for b in angle_of:
+        for j in range(1, lanes[b] + 1):
+            if not any(y == j for (_, dst), links in pairs.items() if dst == b for _, y in links):
+                a = min((a for a in angle_of if a != b), key=lambda a: straightest(a, b))
+                pairs[a, b].append((min(j, lanes[a]), j))
+    connections = [(a, b, [incoming(a, i) for i, _ in sorted(links)], [-incoming(b, j) for _, j in sorted(links)])
+                   for (a, b), links in pairs.items()]
     connections.sort(key=lambda c: (min(abs(x) for x in c[2]), c[0], c[1]))
     for c in connections:
         creator.add_connection(*c)
@@ -192,9 +212,9 @@ def turn_angle(from_arm: float, to_arm: float) -> float:
     return (to_arm - (from_arm + math.pi) + math.pi) % (2 * math.pi) - math.pi
 
 
-def finish(odr: xodr.OpenDrive, controls: dict[int, list[str]], lane_speed_kmh: float | None = None) -> bytes:
-    """The file's bytes, with what scenariogeneration cannot express: a fixed date, junction controllers,
-    lane speeds (what SUMO reads), and arcs or lines instead of constant-curvature spirals."""
+def finish(odr: xodr.OpenDrive, controls: dict[int, list[str]]) -> bytes:
+    """The file's bytes, with what scenariogeneration cannot express: a fixed date, junction controllers, and
+    arcs or lines instead of constant-curvature spirals."""
     root = etree.fromstring(ET.tostring(odr.get_element()), etree.XMLParser(remove_blank_text=True))
     root.find("header").set("date", FIXED_DATE)
     for spiral in list(root.iter("spiral")):
@@ -216,12 +236,6 @@ def finish(odr: xodr.OpenDrive, controls: dict[int, list[str]], lane_speed_kmh: 
         for j in root.iter("junction"):
             if j.get("id") == str(jid):
                 etree.SubElement(j, "controller", id=controller_id, type="0", sequence="0")
-    if lane_speed_kmh is not None:
-        for lane in root.iter("lane"):
-            if lane.get("type") == "driving":
-                speed = etree.Element("speed", sOffset="0.0", max=f"{lane_speed_kmh:g}", unit="km/h")
-                marks = lane.findall("roadMark")
-                (marks[-1].addnext if marks else lane.append)(speed)
     return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
 
 
@@ -322,7 +336,7 @@ class Design:
     arms: tuple[Arm, ...]  # road ids 1, 2, ... in this order; arms[0] is the ego's road
     side: Side  # of the ego's road; other arms differ in lanes only
     radius: float  # of the junction
-    speed_kmh: int  # the lane speed
+    speed_kmh: int  # the roads' speed limit (their type's speed; a speed sign says it too when asked)
     speed_signs: tuple[int, ...]
     signals: tuple[str, ...]  # on every approach towards the junction or the crossing
     crosswalks: tuple[str, ...]  # kinds, each a crossing on every such approach
@@ -377,7 +391,7 @@ def _words(needs: Needs, rng: random.Random) -> tuple[tuple[str, ...], list[int]
         allowed = [m for w, m in (("dashed_single_white", "broken"), ("solid_single_white", "solid"))
                    if w not in needs.forbidden]
         lines = [rng.choice(allowed)] if allowed else ["none"]
-    speeds = sorted(int(w[6:]) for w in required if V.SPEED_SIGN_PATTERN.fullmatch(w))
+    speeds = [int(w[6:]) for w in needs.objects if V.SPEED_SIGN_PATTERN.fullmatch(w)]  # as the block lists them
     if contradictions:
         raise SynthesisError("cannot synthesise a road for the scene: " + "; ".join(contradictions))
     signals = tuple(w for w in SIGNAL_WORDS if w in required)
@@ -479,24 +493,21 @@ def build(d: Design) -> bytes:
     ids = Numbering()
     roads = [make_road(k + 1, arm.length, replace(d.side, lanes=arm.lanes), d.speed_kmh, _geometry(arm))
              for k, arm in enumerate(d.arms)]
-    controls: dict[int, list[str]] = {}
     if d.layout == "straight":
         road, arm = roads[0], d.arms[0]
         road.planview.set_start_point(0.0, 0.0, arm.angle)
         gap = 5.0 * max(len(d.crosswalks) - 1, 0)
         for at_start in (False, True):  # the ego's direction first: along s, towards the road's end
             f = Fittings(road, d.side, ids, at_start=at_start, length=arm.length)
-            if d.crossing_s is not None:
+            if d.crossing_s is not None:  # a light at a mid-block crossing needs no junction controller
                 crossing = (arm.length - d.crossing_s) if not at_start else d.crossing_s + gap
-                light = _fit(f, d, crossing, crossings=not at_start)
-                if light:
-                    controls.setdefault(0, []).append(light)
+                _fit(f, d, crossing, crossings=not at_start)
             elif d.speed_signs:
                 for kmh in d.speed_signs:
                     f.speed(kmh, arm.length - 30.0 - 5.0 * d.speed_signs.index(kmh))
         odr.add_road(road)
         odr.adjust_roads_and_lanes()
-        return finish(odr, {}, d.speed_kmh)
+        return finish(odr, {})
     lights = []
     for road, arm in zip(roads, d.arms):
         light = _fit(Fittings(road, replace(d.side, lanes=arm.lanes), ids), d, 5.0 + 5.0 * max(len(d.crosswalks) - 1, 0))
@@ -506,7 +517,7 @@ def build(d: Design) -> bytes:
     odr.add_junction_creator(junction(1, [(r, a.angle, "predecessor") for r, a in zip(roads, d.arms)],
                                       {r.id: a.lanes for r, a in zip(roads, d.arms)}, d.radius))
     odr.adjust_roads_and_lanes()
-    return finish(odr, {1: sorted(lights)} if lights else {}, d.speed_kmh)
+    return finish(odr, {1: sorted(lights)} if lights else {})
 
 
 def synthesize(scenario, seed: int, name: str | None = None) -> tuple[Design, bytes]:
