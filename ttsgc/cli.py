@@ -286,7 +286,8 @@ def _maps_synth(args) -> int:
     scenario = parse_file(args.scene)
     out = Path(args.output)
     if out.exists() and out.resolve() == Path(args.scene).resolve():
-        raise TtsgcError(f"{out}: the output would overwrite the scene it is made from")
+        print(f"ttsgc: error: {out}: the map would overwrite the scene it is made from", file=sys.stderr)
+        return ExitCode.INVALID_SCENARIO
     seed = args.seed if args.seed is not None else scenario.seed if scenario.seed is not None else 0
     design, data = synthesize(scenario, seed)
     write_atomic(out, data)

@@ -62,7 +62,7 @@ def library_for(scenario: Scenario, maps=None, seed: int | None = None, synthesi
         try:
             unmet = bind(scenario, library, seed=seed).unmet
         except NoRoadError as exc:
-            reason = str(exc).splitlines()[0]
+            reason = str(exc).splitlines()[0].rstrip(": ")
         else:
             if not unmet:
                 return library

@@ -163,10 +163,10 @@ class Fittings:
 
 
 def junction(jid: int, arms: list[tuple[xodr.Road, float, str]], lanes: dict[int, int],
-             radius: float = JUNCTION_RADIUS) -> xodr.CommonJunctionCreator:
+             radius: float = JUNCTION_RADIUS, turn_lanes: int = 1) -> xodr.CommonJunctionCreator:
     """A junction of roads at the given angles (lanes: driving lanes a direction, by road id). Straight from
-    every lane, left from the inner lane into the inner lane, right from the outer lane into the outer lane.
-    Inner-lane connections go first: scenariogeneration misplaces a road otherwise."""
+    every lane, left from the `turn_lanes` inner lanes into the inner lanes, right from the outer ones into the
+    outer ones. Inner-lane connections go first: scenariogeneration misplaces a road otherwise."""
     creator = xodr.CommonJunctionCreator(id=jid, name=f"junction{jid}", startnum=jid * 100)
     for road, angle, end in arms:
         creator.add_incoming_road_circular_geometry(road, radius, angle, end)
@@ -184,8 +184,10 @@ def junction(jid: int, arms: list[tuple[xodr.Road, float, str]], lanes: dict[int
             turn = turn_angle(angle_of[a], angle_of[b])
             if abs(turn) < 0.3:
                 pairs[a, b] = [(k, k) for k in range(1, min(lanes[a], lanes[b]) + 1)]
+            elif turn > 0:  # each into a lane of its own: netconvert drops one of two joining a lane
+                pairs[a, b] = [(k, k) for k in range(1, min(turn_lanes, lanes[a], lanes[b]) + 1)]
             else:
-                pairs[a, b] = [(1, 1)] if turn > 0 else [(lanes[a], lanes[b])]
+                pairs[a, b] = [(lanes[a] - k, lanes[b] - k) for k in range(min(turn_lanes, lanes[a], lanes[b]))]
     # Every lane into and out of the junction gets a connection (netconvert warns of one without): a lane the
     # rules above leave out joins the straightest movement from (or into) its road.
     straightest = lambda a, b: abs(turn_angle(angle_of[a], angle_of[b]))  # noqa: E731
@@ -193,7 +195,8 @@ def junction(jid: int, arms: list[tuple[xodr.Road, float, str]], lanes: dict[int
         for i in range(1, lanes[a] + 1):
             if not any(x == i for (src, _), links in pairs.items() if src == a for x, _ in links):
                 b = min((b for b in angle_of if b != a), key=lambda b: straightest(a, b))
-                pairs[a, b].append((i, min(i, lanes[b])))
+                free = [j for j in range(1, lanes[b] + 1) if all(y != j for _, y in pairs[a, b])]
+                pairs[a, b].append((i, min(free or [lanes[b]], key=lambda j: abs(j - i))))
     for b in angle_of:
         for j in range(1, lanes[b] + 1):
             if not any(y == j for (_, dst), links in pairs.items() if dst == b for _, y in links):
@@ -255,6 +258,8 @@ class Needs:
     """What the road must offer, from the road block and the ranker's agent requirements."""
 
     lanes: int
+    neighbour_left: bool  # the ego's lane needs a lane on its left, or on its right
+    neighbour_right: bool
     junction: bool | None  # True: the ego's approach ends at one; False: it must not; None: either
     movement: str | None  # the ego's turn at the junction
     sides: frozenset[str]  # roads entering from the ego's left / right / straight where agents stand
@@ -304,8 +309,15 @@ def needs_of(scenario) -> Needs:
     junction = road.junction
     if movement is not None or sides:
         junction = True
+    if movement is None and any(a.relative_to_ego == "at_the_destination" for a in scenario.agents()):
+        if junction:  # the ego does not cross the junction, so its destination is further along its road
+            why = "the road block says 'at junction'" if road.junction else "agents stand on roads at a junction"
+            raise SynthesisError(f"cannot synthesise a road for the scene: the ego does not cross a junction, so "
+                                 f"'at_the_destination' needs a road without one, but {why}")
+        junction = False
     return Needs(
-        lanes=max(road.lanes, 1 + need_left + need_right), junction=junction, movement=movement,
+        lanes=max(road.lanes, 1 + need_left + need_right), neighbour_left=need_left, neighbour_right=need_right,
+        junction=junction, movement=movement,
         sides=frozenset(sides), side_turns=frozenset(side_turns), queued=queued,
         ahead_m=max((queues.get(p, 0.0) for p in AHEAD), default=0.0),
         behind_m=max((queues.get(p, 0.0) for p in BEHIND), default=0.0),
@@ -424,7 +436,10 @@ def design(scenario, seed: int, name: str | None = None) -> Design:
         layout = rng.choice(fitting)
         rotation = rng.uniform(0, 2 * math.pi)
         angles = [a + (rng.uniform(-0.2, 0.2) if k else 0.0) + rotation for k, a in enumerate(LAYOUTS[layout])]
-        side_lanes = rng.randint(1, min(lanes, 3))
+        # a turn made from the second lane (the ego's neighbour kept on the turn's side) needs two lanes to enter
+        neighbour = needs.movement in ("left", "right") and lanes > 1 and min(lanes, 3) > 1 and \
+            (needs.neighbour_left if needs.movement == "left" else needs.neighbour_right)
+        side_lanes = rng.randint(2 if neighbour else 1, min(lanes, 3))
         arms = []
         for k, angle in enumerate(angles):
             role = "ego" if k == 0 else _classify(turn_angle(angles[0], angle))
@@ -515,7 +530,7 @@ def build(d: Design) -> bytes:
             lights.append(light)
         odr.add_road(road)
     odr.add_junction_creator(junction(1, [(r, a.angle, "predecessor") for r, a in zip(roads, d.arms)],
-                                      {r.id: a.lanes for r, a in zip(roads, d.arms)}, d.radius))
+                                      {r.id: a.lanes for r, a in zip(roads, d.arms)}, d.radius, turn_lanes=2))
     odr.adjust_roads_and_lanes()
     return finish(odr, {1: sorted(lights)} if lights else {})
 
