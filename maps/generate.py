@@ -23,7 +23,10 @@ from ttsgc.files import write_atomic
 from ttsgc.roads.synth import Fittings, Numbering, Side, finish, junction, make_road
 
 HERE = Path(__file__).resolve().parent
-def single_junction(name: str, angles: list[float], side: Side, speed: int, fit, ids: Numbering) -> tuple[xodr.OpenDrive, dict]:
+
+
+def single_junction(name: str, angles: list[float], side: Side, speed: int, fit,
+                    ids: Numbering) -> tuple[xodr.OpenDrive, dict]:
     odr = xodr.OpenDrive(name, revMajor="1", revMinor="6")
     roads = [make_road(i + 1, 120.0, side, speed) for i in range(len(angles))]
     controls = {}

@@ -16,7 +16,7 @@ from ttsgc.cli import main
 from ttsgc.language import parse, parse_file
 from ttsgc.pipeline import compile_and_prove
 from ttsgc.roads import load_index, retrieve
-from ttsgc.roads.synth import SynthesisError, design, needs_of, synthesize
+from ttsgc.roads.synth import design, needs_of, synthesize
 from ttsgc.scenario import Agent, RoadSpec, Scenario, Stage
 
 LINES = ("dashed_single_white", "solid_single_white")
@@ -68,6 +68,8 @@ def scenes(draw) -> Scenario:
                 action=draw(st.sampled_from(ego_actions)))
     if ego.action not in ("go_straight", "turn_left", "turn_right"):  # its destination is no junction road
         kinds = [k for k in kinds if k[2] != "at_the_destination"]
+    if ego.action == "stop":  # followers at up to 200 km/h would run into it
+        kinds = [k for k in kinds if not k[2].startswith("back")]
     agents = [ego]
     for k, kind in enumerate(draw(st.lists(st.sampled_from(kinds), max_size=3, unique=True))):
         agents.append(Agent(name=f"a{k}", type=kind[0], action=kind[1], relative_to_ego=kind[2],

@@ -281,14 +281,14 @@ def _maps(args) -> int:
 
 def _maps_synth(args) -> int:
     from ttsgc.roads.index import load_index
-    from ttsgc.roads.synth import synthesize
+    from ttsgc.roads.synth import chosen_seed, synthesize
 
     scenario = parse_file(args.scene)
     out = Path(args.output)
     if out.exists() and out.resolve() == Path(args.scene).resolve():
         print(f"ttsgc: error: {out}: the map would overwrite the scene it is made from", file=sys.stderr)
         return ExitCode.INVALID_SCENARIO
-    seed = args.seed if args.seed is not None else scenario.seed if scenario.seed is not None else 0
+    seed = chosen_seed(scenario, args.seed)
     design, data = synthesize(scenario, seed)
     write_atomic(out, data)
     approaches = load_index(out).approaches

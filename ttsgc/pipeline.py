@@ -44,14 +44,10 @@ def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None 
     return Compiled(scene, emit(scene, map_name, version), map_name)
 
 
-SYNTHESIZE_CHOICES = ("auto", "never", "always")
-
-
 def library_for(scenario: Scenario, maps=None, seed: int | None = None, synthesize: str = "never",
                 log=print) -> list[MapIndex]:
     """The roads a scene is bound to: the map library, or a map synthesised for the scene when `synthesize`
     is 'always', or 'auto' and binding on the library fails or leaves a requirement unmet (said through log)."""
-    from ttsgc.binding.scene import DEFAULT_SEED
     from ttsgc.roads.index import cache_dir, load_index
 
     reason = "--synthesize always"
@@ -67,9 +63,9 @@ def library_for(scenario: Scenario, maps=None, seed: int | None = None, synthesi
             if not unmet:
                 return library
             reason = f"the best road of the library does not meet {', '.join(unmet)}"
-    from ttsgc.roads.synth import synthesize_map
+    from ttsgc.roads.synth import chosen_seed, synthesize_map
 
-    seed = seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
+    seed = chosen_seed(scenario, seed)
     key = hashlib.sha256(f"{scenario.model_dump_json()}|{seed}".encode()).hexdigest()[:16]
     path = synthesize_map(scenario, seed, cache_dir().parent / "synth" / key)
     log(f"ttsgc: note: {reason}; synthesised {path.name} for the scene")

@@ -24,7 +24,7 @@ import math
 import random
 import re
 import xml.etree.ElementTree as ET
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from lxml import etree
@@ -278,6 +278,7 @@ class Needs:
 
 
 def needs_of(scenario) -> Needs:
+    """Reads the scene as the ranker does (rank.py's requirements), so the map meets every column of its table."""
     from ttsgc.binding.rank import (AHEAD, BEHIND, DEFAULT_GAP_M, JUNCTION_SIDE, TURN_OF_ACTION, ego_movement,
                                     lane_needs)
 
@@ -356,7 +357,6 @@ class Design:
     stencil: bool
     crossing_s: float | None = None  # a road without a junction: where its crossing and signs stand
     ego_approach: str = "1:bwd"
-    notes: tuple[str, ...] = field(default=(), compare=False)
 
 
 LAYOUTS = {  # arm angles with the ego's arm at 0; the ego drives in towards the centre (heading pi)
@@ -387,11 +387,11 @@ def _layout_fits(angles: tuple[float, ...], needs: Needs) -> bool:
 def _words(needs: Needs, rng: random.Random) -> tuple[tuple[str, ...], list[int], tuple[str, ...], bool, bool, tuple]:
     """Signals, speed signs, crossing kinds, stop line, stencil and lane lines for the ego's approach."""
     required = set(needs.signals) | set(needs.objects)
-    contradictions = []
     kinds = [CROSSWALK_KINDS[w] for w in sorted(required) if w in CROSSWALK_KINDS]
-    if "crosswalk" in needs.forbidden and (kinds or needs.crossing or "crosswalk" in required):
+    if "crosswalk" in needs.forbidden and (kinds or needs.crossing):
         what = ", ".join(sorted(w for w in required if w in CROSSWALK_KINDS)) or "a crossing near the ego"
-        contradictions.append(f"the road block forbids any crosswalk, but the scene needs {what}")
+        raise SynthesisError(f"cannot synthesise a road for the scene: the road block forbids any crosswalk, but "
+                             f"the scene needs {what}")
     if ("crosswalk" in required or needs.crossing) and not kinds:
         allowed = [k for w, k in sorted(CROSSWALK_KINDS.items()) if w not in needs.forbidden]
         kinds = [rng.choice(allowed) if allowed else "plain"]
@@ -404,8 +404,6 @@ def _words(needs: Needs, rng: random.Random) -> tuple[tuple[str, ...], list[int]
                    if w not in needs.forbidden]
         lines = [rng.choice(allowed)] if allowed else ["none"]
     speeds = [int(w[6:]) for w in needs.objects if V.SPEED_SIGN_PATTERN.fullmatch(w)]  # as the block lists them
-    if contradictions:
-        raise SynthesisError("cannot synthesise a road for the scene: " + "; ".join(contradictions))
     signals = tuple(w for w in SIGNAL_WORDS if w in required)
     return signals, speeds, tuple(kinds), "stop_line" in required, "stop_sign_on_road" in required, tuple(lines)
 
@@ -437,8 +435,8 @@ def design(scenario, seed: int, name: str | None = None) -> Design:
         rotation = rng.uniform(0, 2 * math.pi)
         angles = [a + (rng.uniform(-0.2, 0.2) if k else 0.0) + rotation for k, a in enumerate(LAYOUTS[layout])]
         # a turn made from the second lane (the ego's neighbour kept on the turn's side) needs two lanes to enter
-        neighbour = needs.movement in ("left", "right") and lanes > 1 and min(lanes, 3) > 1 and \
-            (needs.neighbour_left if needs.movement == "left" else needs.neighbour_right)
+        neighbour = needs.neighbour_left if needs.movement == "left" else \
+            needs.neighbour_right if needs.movement == "right" else False
         side_lanes = rng.randint(2 if neighbour else 1, min(lanes, 3))
         arms = []
         for k, angle in enumerate(angles):
@@ -497,8 +495,8 @@ def _fit(f: Fittings, d: Design, crossing_at: float, crossings: bool = True) -> 
         f.stop_line(crossing_at + 2.5 if d.crosswalks else 1.0)
     if d.stencil:
         f.stencil_stop(crossing_at + 8.0 if d.crosswalks else 8.0)
-    for kmh in d.speed_signs:
-        f.speed(kmh, crossing_at + 30.0 + 5.0 * d.speed_signs.index(kmh))
+    for k, kmh in enumerate(d.speed_signs):
+        f.speed(kmh, crossing_at + 30.0 + 5.0 * k)
     return light
 
 
@@ -517,15 +515,16 @@ def build(d: Design) -> bytes:
             if d.crossing_s is not None:  # a light at a mid-block crossing needs no junction controller
                 crossing = (arm.length - d.crossing_s) if not at_start else d.crossing_s + gap
                 _fit(f, d, crossing, crossings=not at_start)
-            elif d.speed_signs:
-                for kmh in d.speed_signs:
-                    f.speed(kmh, arm.length - 30.0 - 5.0 * d.speed_signs.index(kmh))
+            else:  # signs soon after the road begins
+                for k, kmh in enumerate(d.speed_signs):
+                    f.speed(kmh, arm.length - 30.0 - 5.0 * k)
         odr.add_road(road)
         odr.adjust_roads_and_lanes()
         return finish(odr, {})
     lights = []
     for road, arm in zip(roads, d.arms):
-        light = _fit(Fittings(road, replace(d.side, lanes=arm.lanes), ids), d, 5.0 + 5.0 * max(len(d.crosswalks) - 1, 0))
+        first_crossing = 5.0 + 5.0 * max(len(d.crosswalks) - 1, 0)
+        light = _fit(Fittings(road, replace(d.side, lanes=arm.lanes), ids), d, first_crossing)
         if light:
             lights.append(light)
         odr.add_road(road)
@@ -533,6 +532,13 @@ def build(d: Design) -> bytes:
                                       {r.id: a.lanes for r, a in zip(roads, d.arms)}, d.radius, turn_lanes=2))
     odr.adjust_roads_and_lanes()
     return finish(odr, {1: sorted(lights)} if lights else {})
+
+
+def chosen_seed(scenario, seed: int | None) -> int:
+    """The seed binding uses too: --seed, else the scene's seed, else 0."""
+    from ttsgc.binding.scene import DEFAULT_SEED
+
+    return seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
 
 
 def synthesize(scenario, seed: int, name: str | None = None) -> tuple[Design, bytes]:
