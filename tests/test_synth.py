@@ -71,7 +71,10 @@ def scenes(draw) -> Scenario:
     if ego.action == "stop":  # followers at up to 200 km/h would run into it
         kinds = [k for k in kinds if not k[2].startswith("back")]
     agents = [ego]
-    for k, kind in enumerate(draw(st.lists(st.sampled_from(kinds), max_size=3, unique=True))):
+    drawn = draw(st.lists(st.sampled_from(kinds), max_size=3, unique=True))
+    if any(kind[1].startswith("change_lane") for kind in drawn):  # it changes into the ego's lane: keep that free
+        drawn = [kind for kind in drawn if kind[2] not in ("front", "back")]
+    for k, kind in enumerate(drawn):
         agents.append(Agent(name=f"a{k}", type=kind[0], action=kind[1], relative_to_ego=kind[2],
                             road_type=kind[3] if len(kind) > 3 else V.default_road_type(kind[0])))
     road = RoadSpec(lanes=draw(st.integers(*V.LANES_RANGE)), junction=junction,

@@ -416,9 +416,6 @@ def design(scenario, seed: int, name: str | None = None) -> Design:
     lanes = needs.lanes
     if len(lines) == 2 or "dashed_single_white" in needs.objects or "solid_single_white" in needs.objects:
         lanes = max(lanes, len(lines) + 1)  # the index sees lane lines between lanes of one direction
-    if lanes > V.LANES_RANGE[1]:
-        raise SynthesisError(f"cannot synthesise a road for the scene: it needs {lanes} lanes a direction, "
-                             f"at most {V.LANES_RANGE[1]} are built")
     junction = needs.junction if needs.junction is not None else bool(signals)
     speed = speeds[0] if speeds else rng.choice((30, 40, 50, 60) if junction else (50, 60, 80, 100))
     side = Side(lanes, shoulder=needs.shoulder or rng.random() < 0.5, sidewalk=needs.sidewalk or rng.random() < 0.6,
