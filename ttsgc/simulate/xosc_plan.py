@@ -9,6 +9,7 @@ from pathlib import Path
 from lxml import etree
 
 from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.simulate.xosc_check import load_scenario
 
 PREFIX = "ttsgc:"
 
@@ -74,6 +75,7 @@ class Plan:
     acts: list[Act]
     stop: list[list[Condition]]
     unsupported: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)  # what the file does that the standard does not, read leniently
 
 
 def _lane(position) -> tuple[str, int, float] | None:
@@ -176,16 +178,8 @@ class _Reader:
 
 def read_plan(path: str | Path) -> Plan:
     path = Path(path)
-    try:
-        root = etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True)).getroot()
-    except (OSError, etree.XMLSyntaxError) as exc:
-        raise ScenarioFileError(f"{path}: cannot read the OpenSCENARIO file: {exc}") from None
-    logic = root.find("RoadNetwork/LogicFile")
-    if logic is None:
-        raise ScenarioFileError(f"{path}: the file names no road network (RoadNetwork/LogicFile)")
-    xodr = (path.parent / logic.get("filepath")).resolve()
-    if not xodr.is_file():
-        raise ScenarioFileError(f"{path}: its road network {logic.get('filepath')} does not exist at {xodr}")
+    scenario = load_scenario(path)  # checked, parameters and catalogs resolved; raises with file:line
+    root, xodr = scenario.root, scenario.xodr
     reader = _Reader()
     entities = {}
     for obj in root.findall("Entities/ScenarioObject"):
@@ -220,5 +214,6 @@ def read_plan(path: str | Path) -> Plan:
                 events.append(Event(event.get("name"), actors[0] if actors else "",
                                     [a for a in actions if a is not None], reader.trigger(event.find("StartTrigger"))))
         acts.append(Act(act.get("name"), reader.trigger(act.find("StartTrigger")), events))
-    stop = reader.trigger(root.find("Storyboard/StopTrigger"))
-    return Plan(path, xodr, entities, init, acts, stop, reader.unsupported)
+    stop_trigger = root.find("Storyboard/StopTrigger")
+    stop = reader.trigger(stop_trigger) if stop_trigger is not None else []  # none: only the time limit ends it
+    return Plan(path, xodr, entities, init, acts, stop, reader.unsupported, list(scenario.notes))
