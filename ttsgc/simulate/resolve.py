@@ -139,12 +139,13 @@ def text_of(value: object, target: str, where: str, what: str) -> str:
     """A value written for an attribute of XSD type `target` (Double, Int, Boolean, String, an enumeration...)."""
     if target in NUMERIC_TYPES:
         if isinstance(value, bool) or isinstance(value, str) and not DOUBLE.fullmatch(value.strip()):
-            raise ParameterError(f"{where}: {what} gives '{_plain(value)}', not a number, for a {target} attribute")
+            raise ParameterError(f"{where}: {what} gives '{_plain(value)}', not a number, for an attribute of type "
+                                 f"{target}")
         number = float(value)
         if target in INTEGER_TYPES:
             if not number.is_integer():
-                raise ParameterError(f"{where}: {what} gives {_plain(value)}, not a whole number, for a {target} "
-                                     f"attribute")
+                raise ParameterError(f"{where}: {what} gives {_plain(value)}, not a whole number, for an attribute "
+                                     f"of type {target}")
             return str(int(number))
         return _plain(number)
     if target == "Boolean" and not isinstance(value, bool) and _plain(value) not in ("true", "false"):

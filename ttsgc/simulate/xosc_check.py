@@ -68,6 +68,8 @@ class Scenario:
 
 def bounded_number(text: str, where: str, what: str, low: float = -ANY_NUMBER, high: float = ANY_NUMBER) -> float:
     """A finite number within [low, high], or an error that names where and what."""
+    if text is not None and text.strip() in ("NaN", "INF", "+INF", "-INF"):
+        raise XoscFileError(f"{where}: {what} = '{text}' is not a finite number")
     if text is None or not DOUBLE.fullmatch(text.strip()):
         raise XoscFileError(f"{where}: {what} = '{text}' is not a number")
     value = float(text)
