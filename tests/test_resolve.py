@@ -117,12 +117,14 @@ def test_1_0_integer_is_int(tmp_path):
 
 def test_an_expression_into_an_integer_attribute_must_be_whole(tmp_path):
     text = document('<Entities>\n<ManeuverGroup maximumExecutionCount="${5 / 2}"/></Entities>\n')
-    with pytest.raises(ParameterError, match=r"scene.xosc:7: .*2.5, not a whole number, for an attribute of type UnsignedInt"):
+    with pytest.raises(ParameterError, match=r"scene.xosc:7: .*2.5, not a whole number, for an attribute of type "
+                                             r"UnsignedInt"):
         resolved(tmp_path, text)
 
 
 def test_a_boolean_parameter_in_a_number_attribute_is_a_type_mismatch(tmp_path):
-    text = document('<Entities>\n<LanePosition s="$On"/></Entities>\n', declarations=declaration("On", "boolean", "true"))
+    text = document('<Entities>\n<LanePosition s="$On"/></Entities>\n',
+                    declarations=declaration("On", "boolean", "true"))
     with pytest.raises(ParameterError, match=r"scene.xosc:8: LanePosition s '\$On' \(boolean\) gives 'true', not a "
                                              r"number"):
         resolved(tmp_path, text)

@@ -66,7 +66,8 @@ def line_of(scene: Path, fragment: str) -> int:
     ('laneId="-1" ', 'laneId="left" ', "LanePosition laneId = 'left' is not a number"),
     ('laneId="-1" ', 'laneId="-1.5" ', "LanePosition laneId = '-1.5' is not a whole number"),
     ('length="4.5"', 'length="1e9"', "Dimensions length = '1e9' is out of range"),
-    ('<AbsoluteTargetSpeed value="14.167"/>', '<AbsoluteTargetSpeed value="INF"/>', "AbsoluteTargetSpeed value = 'INF' is not a finite number"),
+    ('<AbsoluteTargetSpeed value="14.167"/>', '<AbsoluteTargetSpeed value="INF"/>',
+     "AbsoluteTargetSpeed value = 'INF' is not a finite number"),
 ])
 def test_bad_values_are_refused_with_file_and_line(tmp_path, old, new, message):
     scene = edit(golden_copy(tmp_path), old, new)

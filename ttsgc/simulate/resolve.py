@@ -26,7 +26,7 @@ from datetime import datetime
 from functools import cache
 from pathlib import Path
 
-from lark import Lark, Token, Tree
+from lark import Lark, Tree
 from lark.exceptions import LarkError, UnexpectedInput
 from lxml import etree
 
@@ -52,6 +52,10 @@ XML_PARSER = dict(resolve_entities=False, no_network=True, load_dtd=False)
 
 class ParameterError(XoscFileError):
     """An unknown parameter, a value that is not of its type, a bad expression or one that cannot be computed."""
+
+
+class ExpressionSyntaxError(ParameterError):
+    """Text inside `${...}` that the standard's expression grammar does not read."""
 
 
 class CatalogError(XoscFileError):
@@ -176,12 +180,13 @@ def evaluate(text: str, scope: Scope, where: str, notes: list[str] | None = None
     try:
         tree = _expression_parser().parse(text)
     except UnexpectedInput as exc:
-        raise ParameterError(f"{where}: bad expression '${{{text}}}': unexpected "
-                             f"'{text[exc.pos_in_stream:exc.pos_in_stream + 10] if exc.pos_in_stream is not None else ''}'"
-                             f" at column {exc.column} (operators: + - * / % and or not; functions: round floor "
-                             f"ceil sqrt pow min max; parameters as $name)") from None
+        at = exc.pos_in_stream if exc.pos_in_stream is not None else 0
+        found = f"'{text[at:at + 10]}' at column {exc.column}" if text[at:].strip() else "end"
+        raise ExpressionSyntaxError(f"{where}: bad expression '${{{text}}}': unexpected {found} "
+                                    f"(operators: + - * / % and or not; functions: round floor "
+                                    f"ceil sqrt pow min max; parameters as $name)") from None
     except LarkError as exc:
-        raise ParameterError(f"{where}: bad expression '${{{text}}}': {exc}") from None
+        raise ExpressionSyntaxError(f"{where}: bad expression '${{{text}}}': {exc}") from None
     try:
         return _Evaluator(scope, where, text, notes if notes is not None else []).value(tree)
     except RecursionError:
@@ -355,7 +360,8 @@ class _Resolver:
             return text
         expression = EXPRESSION.fullmatch(text)
         if expression is not None:
-            return text_of(evaluate(expression.group(1), scope, where, self.out.notes), target, where, f"{what} '{text}'")
+            value = evaluate(expression.group(1), scope, where, self.out.notes)
+            return text_of(value, target, where, f"{what} '{text}'")
         reference = REFERENCE.fullmatch(text)
         if reference is not None:
             parameter = scope.lookup(reference.group(1))
@@ -388,13 +394,15 @@ class _Resolver:
             if not text.startswith("$"):
                 continue
             if (element.tag, name) in NAME_ATTRIBUTES:
-                element.set(name, text[1:])  # a name written with its $, as esmini accepts
+                element.set(name, text[1:])
+                self.out.notes.append(f"{where}: {element.tag} {name} '{text}' names a parameter with its $ "
+                                      f"(esmini reads it so; the standard writes the name alone)")
                 continue
             target = self.types.get((element.tag, name), "String")
             try:
                 value = self.substitute_text(text, scope, where, f"{element.tag} {name}", target)
-            except ParameterError:
-                if target == "String" and EXPRESSION.fullmatch(text) and not _mentions_unknown(text, scope):
+            except ExpressionSyntaxError:
+                if target == "String" and not _mentions_unknown(text, scope):
                     self.out.notes.append(f"{where}: {element.tag} {name} '{text}' is not an expression the "
                                           f"standard defines; kept as written")
                     continue
@@ -499,7 +507,8 @@ def _drop_comments(root) -> None:
 
 
 def _declared_target(type_name: str) -> str:
-    return {"double": "Double", "int": "Int", "integer": "Int", "unsignedInt": "UnsignedInt", "unsignedShort": "UnsignedShort",
+    return {"double": "Double", "int": "Int", "integer": "Int", "unsignedInt": "UnsignedInt",
+            "unsignedShort": "UnsignedShort",
             "boolean": "Boolean"}.get(type_name, "String")
 
 

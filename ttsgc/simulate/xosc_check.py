@@ -10,6 +10,7 @@ exit code 2 (3 when the road network is missing), so nothing after it meets a va
 from __future__ import annotations
 
 import copy
+import functools
 import math
 import re
 from dataclasses import dataclass
@@ -94,7 +95,7 @@ def _read(path: Path):
 
 def _raise(problems: list[str]) -> None:
     if problems:
-        more = f"\n... and more" if len(problems) > MAX_ERRORS else ""
+        more = "\n... and more" if len(problems) > MAX_ERRORS else ""
         raise XoscFileError("\n".join(problems[:MAX_ERRORS]) + more)
 
 
@@ -107,13 +108,18 @@ def _schema_problems(resolved: Resolved) -> list[str]:
     for entry, catalog_file in resolved.origins.items():
         if any(ancestor in resolved.origins for ancestor in entry.iterancestors()):
             continue  # a nested entry is judged with the entry that holds it
-        version = version_of(etree.parse(str(catalog_file), etree.XMLParser(**XML_PARSER)).getroot())
+        version = _catalog_version(catalog_file)
         document = etree.Element("OpenSCENARIO")
-        etree.SubElement(document, "FileHeader", revMajor="1", revMinor=version.split(".")[1], date="2000-01-01T00:00:00",
-                         description="", author="")
+        etree.SubElement(document, "FileHeader", revMajor="1", revMinor=version.split(".")[1],
+                         date="2000-01-01T00:00:00", description="", author="")
         etree.SubElement(document, "Catalog", name="entry").append(copy.deepcopy(entry))
         problems += _located(resolved, document.getroottree(), version, origin=catalog_file)
     return problems
+
+
+@functools.lru_cache(maxsize=64)
+def _catalog_version(catalog_file: Path) -> str:
+    return version_of(etree.parse(str(catalog_file), etree.XMLParser(**XML_PARSER)).getroot()) or "1.3"
 
 
 def _located(resolved: Resolved, tree, version: str, skip_entries: bool = False, origin: Path | None = None):

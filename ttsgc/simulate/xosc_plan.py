@@ -196,6 +196,11 @@ def read_plan(path: str | Path) -> Plan:
         entities[obj.get("name")] = Entity(obj.get("name"), kind, body.get("vehicleCategory") or
                                            body.get("pedestrianCategory") or "pedestrian", body.get("role", "none"),
                                            float(dims.get("length")), float(dims.get("width")), intent)
+    for controller in root.iterfind("Entities/ScenarioObject/ObjectController/Controller"):
+        reader.missing(f"controller {controller.get('name')} (SUMO's driver model drives its entity)")
+    for action in root.iterfind("Storyboard/Init/Actions/GlobalAction/*"):
+        if action.tag != "EnvironmentAction":  # weather: written, not simulated (README, known limits)
+            reader.missing(f"initial GlobalAction/{etree.QName(action).localname}")
     init: dict[str, list[Action]] = {}
     for private in root.findall("Storyboard/Init/Actions/Private"):
         for action in private.findall("PrivateAction"):
