@@ -7,6 +7,8 @@ import shutil
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from lxml import etree
 
 from ttsgc.simulate.resolve import CatalogError, ParameterError, Parameter, Scope, evaluate, resolve
@@ -191,3 +193,36 @@ def test_a_catalog_error_names_the_catalog_file(tmp_path):
     edited(scene.parent / "Catalogs" / "Vehicles" / "cars.xosc", 'length="$Length"', 'length="$Lenth"')
     with pytest.raises(ParameterError, match=r"cars.xosc:12: unknown parameter \$Lenth; did you mean \$Length\?"):
         resolve(etree.parse(str(scene)).getroot(), scene)
+
+EXPRESSION_TEXT = st.lists(st.sampled_from(["1", "0", "2.5", "1e308", "$N", "$Flag", "$Name", "$Nope", "+", "-",
+                                            "*", "/", "%", "(", ")", ",", "and", "or", "not", "true", "round(",
+                                            "pow(", "sqrt(", "min(", " ", "pi", "<", "1e999"]),
+                           max_size=25).map("".join)
+
+
+@settings(max_examples=400, deadline=None)
+@given(EXPRESSION_TEXT)
+def test_any_expression_gives_a_finite_value_or_a_parameter_error(text):
+    try:
+        value = evaluate(text, scope(N=4, Flag=True, Name="car"), "f:1")
+    except ParameterError as exc:
+        assert str(exc).startswith("f:1: ")
+    else:
+        assert isinstance(value, bool) or value == value and abs(value) < float("inf")
+
+
+def test_the_files_parameters_can_be_assigned_from_outside(tmp_path):
+    text = document('<E s="$S" n="$N"/>\n', declarations=declaration("S", "double", "10") +
+                    declaration("N", "int", "${$S / 5}"))
+    out = resolved_with(tmp_path, text, {"S": "25"})
+    assert (out.root.find("E").get("s"), out.root.find("E").get("n")) == ("25", "5")
+    with pytest.raises(ParameterError, match=r"declared double but its value is 'fast'"):
+        resolved_with(tmp_path, text, {"S": "fast"})
+    with pytest.raises(ParameterError, match=r"the file declares no parameter Speed to assign \(it declares N, S\)"):
+        resolved_with(tmp_path, text, {"Speed": "3"})
+
+
+def resolved_with(tmp_path: Path, text: str, assign: dict[str, str]):
+    path = tmp_path / "scene.xosc"
+    path.write_text(text)
+    return resolve(etree.parse(str(path)).getroot(), path, assign=assign)

@@ -312,6 +312,7 @@ class _Resolver:
         self.catalog_dirs: list[tuple[Path, str]] | None = None
         self.catalogs: dict[str, dict[str, tuple[etree._Element, Path]]] | None = None
         self.file_scope: Scope | None = None  # the file's own parameters, which esmini lets catalog entries see
+        self.overrides: dict[str, tuple[str, str]] = {}  # values assigned to the file's parameters from outside
 
     def where(self, element) -> str:
         return self.out.where(element)
@@ -372,9 +373,17 @@ class _Resolver:
 
     def visit(self, element, scope: Scope, depth: int = 0) -> None:
         declarations = element.find("ParameterDeclarations")
+        at_root = element is self.out.root
+        if at_root:
+            declared = {d.get("name") for d in declarations.iter("ParameterDeclaration")} \
+                if declarations is not None else set()
+            unknown = sorted(set(self.overrides) - declared)
+            if unknown:
+                raise ParameterError(f"{self.out.path}: the file declares no parameter {', '.join(unknown)} to "
+                                     f"assign (it declares {', '.join(sorted(declared)) or 'none'})")
         if declarations is not None:
-            scope = self.declare(declarations, scope)
-        if element is self.out.root:
+            scope = self.declare(declarations, scope, self.overrides if at_root else None)
+        if at_root:
             self.file_scope = scope
         self.attributes(element, scope)
         self.children(element, scope, depth)
@@ -516,10 +525,12 @@ def _mentions_unknown(text: str, scope: Scope) -> bool:
     return any(scope.lookup(name) is None for name in REFERENCE.findall(text))
 
 
-def resolve(root, path: str | Path, version: str | None = None) -> Resolved:
+def resolve(root, path: str | Path, version: str | None = None, assign: dict[str, str] | None = None) -> Resolved:
     """A copy of the document with every parameter, expression and catalog reference written out.
 
-    Raises ParameterError or CatalogError (exit 2) naming the file and line."""
+    `assign` gives the file's own (global) parameters other values, as a ParameterValueDistribution's
+    parameter sets do; each value is checked against its declared type. Raises ParameterError or
+    CatalogError (exit 2) naming the file and line."""
     path = Path(path)
     version = version or version_of(root)
     if version is None:
@@ -527,5 +538,8 @@ def resolve(root, path: str | Path, version: str | None = None) -> Resolved:
                             f"(revMajor 1, revMinor 0 to 3)")
     resolved = Resolved(copy.deepcopy(root), path, version)
     _drop_comments(resolved.root)
-    _Resolver(resolved).visit(resolved.root, Scope())
+    resolver = _Resolver(resolved)
+    resolver.overrides = {name: (str(value), f"{path}: the value assigned to {name}")
+                          for name, value in (assign or {}).items()}
+    resolver.visit(resolved.root, Scope())
     return resolved

@@ -193,8 +193,10 @@ def road_network(resolved: Resolved) -> Path:
     return xodr
 
 
-def load_scenario(path: str | Path) -> Scenario:
-    """Read, check and resolve a scenario file; the one entry point for every reader of .xosc files."""
+def load_scenario(path: str | Path, assign: dict[str, str] | None = None) -> Scenario:
+    """Read, check and resolve a scenario file; the one entry point for every reader of .xosc files.
+
+    `assign` sets the file's own parameters (a variant of a ParameterValueDistribution)."""
     path = Path(path)
     root = _read(path)
     if not isinstance(root.tag, str) or root.tag != "OpenSCENARIO":
@@ -210,7 +212,7 @@ def load_scenario(path: str | Path) -> Scenario:
         named = f"; play the scenario it varies, {scenario.get('filepath')}" if scenario is not None else ""
         raise XoscFileError(f"{path}: this is a ParameterValueDistribution, not a scenario that can be played{named}")
     _raise([f"{path}:{line}: {message}" for line, message, _ in errors(root.getroottree(), version, MAX_ERRORS + 1)])
-    resolved = resolve(root, path, version)
+    resolved = resolve(root, path, version, assign)
     _raise(_schema_problems(resolved))
     _raise(_number_problems(resolved) + _reference_problems(resolved))
     return Scenario(resolved, road_network(resolved))
