@@ -100,6 +100,16 @@ def test_references_to_what_does_not_exist_are_refused(tmp_path):
     assert error.value.exit_code == 3
 
 
+def test_what_is_not_a_scenario_file_is_refused_by_name(tmp_path):
+    scene = edit(golden_copy(tmp_path), "<OpenSCENARIO", '<!DOCTYPE OpenSCENARIO [<!ENTITY a "aa">]>\n<OpenSCENARIO')
+    with pytest.raises(XoscFileError, match="has a DOCTYPE"):
+        load_scenario(scene)
+    with pytest.raises(XoscFileError, match="is a folder"):
+        load_scenario(tmp_path)
+    with pytest.raises(XoscFileError, match="the root element is <OpenDRIVE>"):
+        load_scenario(ROOT / "maps" / "town_row.xodr")
+
+
 def test_a_missing_stop_trigger_means_no_end_not_stop_now(tmp_path):
     scene = golden_copy(tmp_path)
     text, count = re.subn(r"<StopTrigger>.*?</StopTrigger>", "", scene.read_text(), flags=re.DOTALL)

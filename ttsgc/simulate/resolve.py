@@ -487,6 +487,8 @@ class _Resolver:
             root = etree.parse(str(file), etree.XMLParser(**XML_PARSER)).getroot()
         except (OSError, etree.XMLSyntaxError) as exc:
             raise CatalogError(f"{file}: cannot read the catalog: {exc}") from None
+        if root.getroottree().docinfo.doctype:
+            raise CatalogError(f"{file}: the catalog has a DOCTYPE, which OpenSCENARIO never needs; refused")
         catalog = root.find("Catalog")
         if catalog is None:
             return

@@ -80,6 +80,8 @@ def bounded_number(text: str, where: str, what: str, low: float = -ANY_NUMBER, h
 
 
 def _read(path: Path):
+    if path.is_dir():
+        raise XoscFileError(f"{path}: is a folder, not an OpenSCENARIO file")
     try:
         size = path.stat().st_size
     except OSError as exc:
@@ -88,9 +90,13 @@ def _read(path: Path):
         raise XoscFileError(f"{path}: {size} bytes is larger than an OpenSCENARIO file ttsgc reads "
                             f"({MAX_FILE_BYTES} bytes)")
     try:
-        return etree.parse(str(path), etree.XMLParser(**XML_PARSER)).getroot()
+        tree = etree.parse(str(path), etree.XMLParser(**XML_PARSER))
     except (OSError, etree.XMLSyntaxError) as exc:
         raise XoscFileError(f"{path}: cannot read the OpenSCENARIO file: {exc}") from None
+    if tree.docinfo.doctype:
+        raise XoscFileError(f"{path}: the file has a DOCTYPE, which OpenSCENARIO never needs; refused (entities "
+                            f"could read other files or grow without bound)")
+    return tree.getroot()
 
 
 def _raise(problems: list[str]) -> None:
