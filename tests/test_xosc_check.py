@@ -90,6 +90,32 @@ def test_empty_or_missing_elements_are_refused(tmp_path, pattern, what):
         load_scenario(scene)
 
 
+def test_an_empty_private_action_is_refused_in_versions_whose_xsd_lets_it_pass(tmp_path):
+    scene = foreign_copy(tmp_path)  # OpenSCENARIO 1.2: the XSD's choice has optional members
+    text, count = re.subn(r"<PrivateAction>\s*<TeleportAction>.*?</TeleportAction>\s*</PrivateAction>",
+                          "<PrivateAction/>", scene.read_text(), count=1, flags=re.DOTALL)
+    assert count == 1
+    scene.write_text(text)
+    line = line_of(scene, "<PrivateAction/>")
+    with pytest.raises(XoscFileError, match=rf"follow.xosc:{line}: PrivateAction is empty; it must hold one"):
+        load_scenario(scene)
+
+
+def test_an_intent_the_checks_do_not_know_is_refused(tmp_path):
+    scene = edit(golden_copy(tmp_path, "left_turn_oncoming"), 'name="ttsgc:movement" value="left"',
+                 'name="ttsgc:movement" value="sideways"')
+    with pytest.raises(XoscFileError, match=r"the intent ttsgc:movement = 'sideways' is not one ttsgc knows "
+                                            r"\('', left, right, straight\)"):
+        load_scenario(scene)
+
+
+def test_a_negative_target_speed_is_listed_not_played(tmp_path):
+    scene = edit(foreign_copy(tmp_path), 'value="${$SpeedKmh / 3.6}"', 'value="${-$SpeedKmh / 3.6}"')
+    plan = read_plan(scene)
+    assert "SpeedAction to a negative speed (driving backwards)" in plan.unsupported
+    assert [a.kind for a in plan.init["Ego"]] == ["teleport"]
+
+
 def test_references_to_what_does_not_exist_are_refused(tmp_path):
     scene = edit(golden_copy(tmp_path), 'entityRef="ego"', 'entityRef="egg"')
     with pytest.raises(XoscFileError, match=r"names the entity 'egg', which the file does not declare"):
@@ -169,11 +195,9 @@ EXTREMES = st.sampled_from(["", "abc", "nan", "NaN", "INF", "-INF", "1e308", "-1
                             "4294967296", "99999999999999999999", "$Nope", "${1/0}", "${", "$Lane", "true", " 5 "])
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(data=st.data())
-def test_validate_survives_mutated_files(tmp_path_factory, data):
-    folder = tmp_path_factory.mktemp("mutated")
-    scene = foreign_copy(folder)
+def mutate_and_validate(scene: Path, data) -> None:
+    """One random edit (an element removed, or an attribute set to an extreme), then `validate`."""
+    folder = scene.parent.parent if scene.parent.name == "foreign" else scene.parent
     root = etree.parse(str(scene)).getroot()
     elements = [e for e in root.iter() if isinstance(e.tag, str) and e is not root]
     target = data.draw(st.sampled_from(elements), label="element")
@@ -189,3 +213,15 @@ def test_validate_survives_mutated_files(tmp_path_factory, data):
     assert code in DOCUMENTED_EXITS
     assert time.monotonic() - start < 120
     assert _digest(folder) == before
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(data=st.data())
+def test_validate_survives_mutated_files(tmp_path_factory, data):
+    mutate_and_validate(foreign_copy(tmp_path_factory.mktemp("mutated")), data)
+
+
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(data=st.data())
+def test_validate_survives_mutated_emitted_files(tmp_path_factory, data):
+    mutate_and_validate(golden_copy(tmp_path_factory.mktemp("mutated")), data)

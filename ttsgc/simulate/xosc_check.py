@@ -20,7 +20,8 @@ from lxml import etree
 
 from ttsgc.errors import ExitCode
 from ttsgc.simulate.resolve import DOUBLE, XML_PARSER, Resolved, resolve
-from ttsgc.simulate.xosc_schema import NUMERIC_TYPES, XoscFileError, attribute_types, errors, version_of
+from ttsgc.simulate.xosc_schema import (NUMERIC_TYPES, XoscFileError, attribute_types, errors, one_of_tags,
+                                        version_of)
 
 MAX_FILE_BYTES = 64 * 2**20
 MAX_ERRORS = 10
@@ -169,6 +170,35 @@ def _number_problems(resolved: Resolved) -> list[str]:
     return problems
 
 
+def _empty_choice_problems(resolved: Resolved) -> list[str]:
+    tags = one_of_tags(resolved.version)
+    return [f"{resolved.where(e)}: {e.tag} is empty; it must hold one of its kinds of element"
+            for e in resolved.root.iter() if isinstance(e.tag, str) and e.tag in tags and
+            not any(isinstance(child.tag, str) for child in e)]
+
+
+def _intent_values() -> dict[str, frozenset[str]]:
+    from ttsgc import vocabulary as words
+
+    return {"action": frozenset(words.ACTIONS) | {""}, "movement": frozenset({"", "left", "right", "straight"}),
+            "is_ego": frozenset({"true", "false"}), "behavior": frozenset(words.BEHAVIORS),
+            "type": frozenset(words.AGENT_TYPES), "road_type": frozenset(words.ROAD_TYPES),
+            "position": frozenset(words.POSITIONS) | {"ego"}}
+
+
+def _intent_problems(resolved: Resolved) -> list[str]:
+    """The ttsgc:* properties the intent checks act on must hold words the checks know."""
+    allowed = _intent_values()
+    problems = []
+    for prop in resolved.root.iterfind("Entities/ScenarioObject/*/Properties/Property"):
+        key = (prop.get("name") or "").removeprefix("ttsgc:")
+        if prop.get("name", "").startswith("ttsgc:") and key in allowed and prop.get("value") not in allowed[key]:
+            known = ", ".join(sorted(value or "''" for value in allowed[key]))
+            problems.append(f"{resolved.where(prop)}: the intent {prop.get('name')} = '{prop.get('value')}' is not "
+                            f"one ttsgc knows ({known})")
+    return problems
+
+
 def _reference_problems(resolved: Resolved) -> list[str]:
     root = resolved.root
     entities = {o.get("name") for o in root.iterfind("Entities/ScenarioObject")} | \
@@ -220,5 +250,6 @@ def load_scenario(path: str | Path, assign: dict[str, str] | None = None) -> Sce
     _raise([f"{path}:{line}: {message}" for line, message, _ in errors(root.getroottree(), version, MAX_ERRORS + 1)])
     resolved = resolve(root, path, version, assign)
     _raise(_schema_problems(resolved))
-    _raise(_number_problems(resolved) + _reference_problems(resolved))
+    _raise(_empty_choice_problems(resolved) + _number_problems(resolved) + _reference_problems(resolved) +
+           _intent_problems(resolved))
     return Scenario(resolved, road_network(resolved))

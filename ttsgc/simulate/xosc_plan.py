@@ -150,6 +150,9 @@ class _Reader:
             if target is None:
                 self.missing("SpeedAction with a relative target")
                 return None
+            if float(target.get("value")) < 0:
+                self.missing("SpeedAction to a negative speed (driving backwards)")
+                return None
             dynamics = speed.find("SpeedActionDynamics")
             rate = None
             if dynamics is not None and dynamics.get("dynamicsDimension") == "rate" and float(dynamics.get("value")) > 0:

@@ -59,6 +59,21 @@ def attribute_types(version: str) -> dict[tuple[str, str], str]:
     return table
 
 
+@functools.cache
+def one_of_tags(version: str) -> frozenset[str]:
+    """Tags whose content is "one of" several elements. Before 1.3 the XSD wrote some of these choices
+    with optional members (an empty PrivateAction validated); the standard always meant exactly one, and
+    1.3's XSD says so, so ttsgc holds every version to it."""
+    root = etree.parse(str(_xsd_path(version))).getroot()
+    choice_types = set()
+    for complex_type in root.iter(f"{XSD}complexType"):
+        content = [c for c in complex_type if c.tag != f"{XSD}annotation"]
+        if complex_type.get("name") and content and content[0].tag == f"{XSD}choice" and \
+                content[0].get("minOccurs") != "0":
+            choice_types.add(complex_type.get("name"))
+    return frozenset(e.get("name") for e in root.iter(f"{XSD}element") if e.get("type") in choice_types)
+
+
 def errors(tree, version: str, limit: int = 10) -> list[tuple[int, str, str | None]]:
     """(line, message, XPath of the element) of the first `limit` XSD violations; empty when it is valid."""
     validator = schema(version)
