@@ -36,6 +36,7 @@ from ttsgc.roads.retrieve import NoRoadError
 DRIVING_WIDTH, SHOULDER_WIDTH, SIDEWALK_WIDTH = 3.5, 1.5, 2.0
 JUNCTION_RADIUS = 18.0
 FIXED_DATE = "2026-01-01T00:00:00"
+SLOW_KMH = 20  # at or below, junctions are as compact as their roads allow
 
 
 # -- building blocks (the built-in library uses these too) ------------------------------------------------
@@ -448,7 +449,8 @@ def design(scenario, seed: int, name: str | None = None) -> Design:
                             round(rng.choice((-1, 1)) * rng.uniform(0.0, 1 / 400), 6)))
         widest = max(replace(side, lanes=a.lanes).width for a in arms)
         closest = min(abs(turn_angle(a.angle + math.pi, b.angle)) for a in arms for b in arms if a is not b)
-        radius = max(rng.uniform(14.0, 20.0), widest / math.tan(closest / 2) + 3.0)
+        # as small as the roads allow when slow: players allow about 45 m for a junction movement
+        radius = max(rng.uniform(14.0, 20.0) if speed > SLOW_KMH else 0.0, widest / math.tan(closest / 2) + 3.0)
         return Design(name, "fourway" if layout == "fourway" else "tee", tuple(arms), side, round(radius, 3), speed,
                       tuple(speeds), signals, kinds, stop_line, stencil)
     # a road without a junction; a crossing (with whatever signs stand there) ahead of the ego
