@@ -112,7 +112,7 @@ def test_a_map_with_no_driving_lane_is_a_clear_error(tmp_path, capsys):
     code, _, err = _run(capsys, "maps", "query", "--maps", sidewalks)
     assert code == ExitCode.NO_ROAD and "has a driving lane" in err
     code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", tmp_path / "out" / "x.xosc",
-                        "--maps", sidewalks, "--no-simulate")
+                        "--maps", sidewalks, "--no-simulate", "--synthesize", "never")
     assert code == ExitCode.NO_ROAD and "has a driving lane" in err and not (tmp_path / "out").exists()
 
 
@@ -303,7 +303,8 @@ def test_the_lowered_scene_is_written_only_when_the_compile_succeeds(tmp_path, c
     sidewalks = tmp_path / "sidewalks.xodr"
     sidewalks.write_text(BUILTIN_MAP.read_text().replace('type="driving"', 'type="sidewalk"'))
     out = tmp_path / "out"
-    code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.txt", "-o", out / "s.xosc", "--maps", sidewalks)
+    code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.txt", "-o", out / "s.xosc", "--maps", sidewalks,
+                        "--synthesize", "never")
     assert code == ExitCode.NO_ROAD and not out.exists()
 
 

@@ -104,6 +104,16 @@ def test_side_positions_are_on_the_right_lane_and_side(library, position, ahead,
         assert 2.5 < (y if left == "+" else -y) < 4.5  # one lane width over
 
 
+def test_a_neighbour_lane_beside_an_ego_crossing_the_junction(library):
+    """Each lane has its own connecting road: the ego keeps a lane free beside it and turns from its own lane."""
+    scene = parse('scenario "t"\nroad {\n    at junction\n}\nstage s {\n    ego car go_straight\n'
+                  '    car c at left go_straight\n}\n')
+    bound = bind(scene, library)
+    ego, c = bound.agent("ego"), bound.agent("c")
+    assert c.start.road == ego.start.road and abs(c.start.lane) == abs(ego.start.lane) - 1 >= 1  # nearer the centre
+    assert ego.movement == "straight" and ego.route[1].road != c.route[1].road
+
+
 @pytest.mark.parametrize("position, side", [("road_of_left_turn", "left"), ("road_of_right_turn", "right"),
                                             ("road_of_straight", "straight")])
 def test_junction_positions_stand_on_the_road_entering_from_that_side(library, position, side):
@@ -277,7 +287,7 @@ def test_no_road_is_its_own_exit_code_and_leaves_outputs_alone(tmp_path, capsys)
     src.write_text(_scene("ego car go_straight", "road {\n    lanes >= 6\n}\n"))
     out = tmp_path / "x.xosc"
     out.write_text("previous")
-    assert main(["compile", str(src), "-o", str(out)]) == 4
+    assert main(["compile", str(src), "-o", str(out), "--synthesize", "never"]) == 4
     assert "none meets 'lanes >= 6'" in capsys.readouterr().err
     assert out.read_text() == "previous" and sorted(p.name for p in tmp_path.iterdir()) == ["x.tsg", "x.xosc"]
 
@@ -286,7 +296,7 @@ def test_requirement_no_candidate_meets_is_named(tmp_path, capsys):
     src = tmp_path / "x.tsg"
     src.write_text(_scene("ego car go_straight\n    truck t at front_right on shoulder stop",
                           "road {\n    not at junction\n    has solid_single_white\n}\n"))
-    assert main(["compile", str(src), "-o", str(tmp_path / "x.xosc")]) == 4
+    assert main(["compile", str(src), "-o", str(tmp_path / "x.xosc"), "--synthesize", "never"]) == 4
     assert "none meets 'shoulder (t)'" in capsys.readouterr().err
 
 

@@ -76,9 +76,8 @@ def test_turn_left_fails_when_the_car_goes_straight_instead(tmp_path):
 def test_lane_change_and_its_failure(tmp_path):
     scene = _compiled("cut_off", tmp_path)
     assert "changed 1 lane(s) to the right" in _result(simulate(scene), "c1").reason
-    def no_change(root):
-        change = root.find(".//Event[@name='c1_change_lane_to_right']//LaneChangeAction")
-        change.getparent().getparent().getparent().remove(change.getparent().getparent())
+    def no_change(root):  # the same event, now changing no lane (the file stays valid)
+        root.find(".//Event[@name='c1_change_lane_to_right']//RelativeTargetLane").set("value", "0")
     result = _result(simulate(_edit(scene, no_change)), "c1")
     assert not result.achieved and "did not change to the right" in result.reason
 
@@ -158,10 +157,12 @@ def test_a_normal_crossing_is_no_crash_the_ego_slows_for_the_walker(tmp_path):
 
 def test_unsupported_content_is_reported_by_name(tmp_path):
     scene = _compiled("cut_off", tmp_path)
-    def visibility(root):
-        private = root.find(".//Event[@name='c2_go_straight']//PrivateAction")
-        action = etree.SubElement(private.getparent(), "PrivateAction")
-        etree.SubElement(action, "VisibilityAction", graphics="false", traffic="true", sensors="true")
+    def visibility(root):  # a second Action of the event (an Action holds one PrivateAction)
+        first = root.find(".//Event[@name='c2_go_straight']/Action")
+        action = etree.Element("Action", name="c2_visibility")
+        first.addnext(action)
+        private = etree.SubElement(action, "PrivateAction")
+        etree.SubElement(private, "VisibilityAction", graphics="false", traffic="true", sensors="true")
     report = simulate(_edit(scene, visibility))
     assert "action VisibilityAction" in report.unsupported
 

@@ -207,12 +207,12 @@ def _compile_one(args, scenario, out: Path, seed, lowering, lowered: tuple[Path,
 
     log = lambda message: print(message, file=sys.stderr)  # noqa: E731
     if args.no_simulate:
-        compiled, report = compile_scenario(scenario, out, maps=args.maps, seed=seed,
-                                            version=args.osc_version, target=args.target), None
+        compiled, report = compile_scenario(scenario, out, maps=args.maps, seed=seed, version=args.osc_version,
+                                            target=args.target, synthesize=args.synthesize, log=log), None
     else:
-        compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=seed,
-                                             version=args.osc_version, log=log, players=args.player,
-                                             target=args.target)
+        compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=seed, version=args.osc_version,
+                                             log=log, players=args.player, target=args.target,
+                                             synthesize=args.synthesize)
     scene = compiled.scene
     if args.explain:
         print(scene.explanation)
@@ -408,6 +408,29 @@ def _maps(args) -> int:
     return ExitCode.OK
 
 
+def _maps_synth(args) -> int:
+    from ttsgc.roads.index import load_index
+    from ttsgc.roads.synth import chosen_seed, synthesize
+
+    scenario = parse_file(args.scene)
+    out = Path(args.output)
+    if out.exists() and out.resolve() == Path(args.scene).resolve():
+        print(f"ttsgc: error: {out}: the map would overwrite the scene it is made from", file=sys.stderr)
+        return ExitCode.INVALID_SCENARIO
+    seed = chosen_seed(scenario, args.seed)
+    design, data = synthesize(scenario, seed)
+    write_atomic(out, data)
+    approaches = load_index(out).approaches
+    if args.json:
+        print(json.dumps([a.model_dump(mode="json") for a in approaches], indent=2))
+        return ExitCode.OK
+    print(table(APPROACH_HEADERS, [_approach_row(a) for a in approaches]))
+    arms = len(design.arms)
+    print(f"{out}: {design.name}, {design.layout if design.layout == 'straight' else f'{design.layout} junction'} "
+          f"({arms} road{'s' if arms > 1 else ''}), seed {seed}; the scene's approach is {design.ego_approach}")
+    return ExitCode.OK
+
+
 def _signals() -> set[str]:
     from ttsgc.vocabulary import SIGNALS
     return set(SIGNALS)
@@ -496,6 +519,9 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--no-simulate", action="store_true", help="skip the simulation check")
     compile_.add_argument("--report", metavar="REPORT.json", help="write the simulation report as JSON")
     _player_option(compile_)
+    compile_.add_argument("--synthesize", choices=["auto", "never", "always"], default="auto",
+                          help="build an OpenDRIVE map for the scene: when no road of the library fits (auto, the "
+                               "default), never (no fitting road is exit 4), or always (skip the library)")
     compile_.set_defaults(run=_compile)
 
     validate = commands.add_parser("validate", help="play a .xosc (SUMO, esmini) and check that every agent "
@@ -553,6 +579,13 @@ def build_parser() -> argparse.ArgumentParser:
     query.add_argument("--without", action="append", default=[], type=_road_word, metavar="WORD",
                        help="a forbidden signal or object (repeatable)")
     maps.set_defaults(run=_maps)
+    synth = maps_commands.add_parser("synth", help="build an OpenDRIVE map with what a scene needs")
+    synth.add_argument("scene", metavar="SCENE.tsg")
+    synth.add_argument("-o", "--output", required=True, metavar="ROAD.xodr")
+    synth.add_argument("--seed", type=int, help="varies angles, lengths and curvature (default: the scene's seed, "
+                                                "else 0)")
+    synth.add_argument("--json", action="store_true", help="print the map's approaches as JSON")
+    synth.set_defaults(run=_maps_synth)
     return parser
 
 

@@ -13,7 +13,7 @@ from ttsgc.emit.xosc import CREATION_DATE, DEFAULT_VERSION, emit
 from ttsgc.errors import TtsgcError
 from ttsgc.files import check_outputs, write_output
 from ttsgc.roads.index import MapIndex
-from ttsgc.roads.retrieve import load_library
+from ttsgc.roads.retrieve import NoRoadError, load_library
 from ttsgc.scenario import Scenario
 from ttsgc.targets import GENERIC, check_scenario, retarget, written_version
 
@@ -37,12 +37,15 @@ def map_file_name(scene: BoundScene, out_dir: Path) -> str:
 
 def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
                      version: str = DEFAULT_VERSION, skip: int = 0, only: tuple[str, str] | None = None,
-                     library: list[MapIndex] | None = None, target: str = GENERIC) -> Compiled:
+                     library: list[MapIndex] | None = None, target: str = GENERIC, synthesize: str = "never",
+                     log=print) -> Compiled:
     """maps: files and folders as `--maps` takes them; library: the same, already loaded (wins over maps).
-    target: the player the file is written for (ttsgc.targets)."""
+    target: the player the file is written for (ttsgc.targets); synthesize: see library_for."""
     check_scenario(scenario, target)
     version = written_version(target, version)
-    scene = bind(scenario, library if library is not None else load_library(maps), seed=seed, skip=skip, only=only)
+    if library is None:
+        library = library_for(scenario, maps, seed, synthesize, log)
+    scene = bind(scenario, library, seed=seed, skip=skip, only=only)
     map_name = map_file_name(scene, out.parent)
     return for_target(Compiled(scene, emit(scene, map_name, version), map_name), target)
 
@@ -52,6 +55,34 @@ def for_target(compiled: Compiled, target: str) -> Compiled:
     if target == GENERIC:
         return compiled
     return Compiled(compiled.scene, retarget(compiled.xosc, compiled.scene, target), compiled.map_name)
+
+
+def library_for(scenario: Scenario, maps=None, seed: int | None = None, synthesize: str = "never",
+                log=print) -> list[MapIndex]:
+    """The roads a scene is bound to: the map library, or a map synthesised for the scene when `synthesize`
+    is 'always', or 'auto' and binding on the library fails or leaves a requirement unmet (said through log)."""
+    from ttsgc.roads.index import cache_dir, load_index
+
+    reason = "--synthesize always"
+    if synthesize != "always":
+        library = load_library(maps)
+        if synthesize == "never":
+            return library
+        try:
+            unmet = bind(scenario, library, seed=seed).unmet
+        except NoRoadError as exc:
+            reason = str(exc).splitlines()[0].rstrip(": ")
+        else:
+            if not unmet:
+                return library
+            reason = f"the best road of the library does not meet {', '.join(unmet)}"
+    from ttsgc.roads.synth import chosen_seed, synthesize_map
+
+    seed = chosen_seed(scenario, seed)
+    key = hashlib.sha256(f"{scenario.model_dump_json()}|{seed}".encode()).hexdigest()[:16]
+    path = synthesize_map(scenario, seed, cache_dir().parent / "synth" / key)
+    log(f"ttsgc: note: {reason}; synthesised {path.name} for the scene")
+    return [load_index(path)]
 
 
 MAX_SIMULATION_TRIES = 3
@@ -113,13 +144,14 @@ def prove_first(scenes, prove, tries: int = MAX_SIMULATION_TRIES, log=print):
 
 def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
                       version: str = DEFAULT_VERSION, tries: int = MAX_SIMULATION_TRIES, log=print,
-                      only: tuple[str, str] | None = None, players: str = "all", target: str = GENERIC):
+                      only: tuple[str, str] | None = None, players: str = "all", target: str = GENERIC,
+                      synthesize: str = "never"):
     """Compile, then prove in the players; when the scene fails on its road, compile onto the next-ranked
     road, at most `tries` roads in all. Returns (compiled, report) of the first that passes, else of the
     last tried; the compiled file is the target's, made after the generic file is proven."""
     check_scenario(scenario, target)
     version = written_version(target, version)
-    library = load_library(maps)
+    library = library_for(scenario, maps, seed, synthesize, log)
 
     def compiled_scenes():
         for scene in candidates(scenario, library, seed=seed, only=only):

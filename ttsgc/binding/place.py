@@ -272,6 +272,11 @@ class Placer:
             u_ego = min(u_ego, crosswalk - 25.0)
         self.u_ego = max(u_ego, lowest)
         self.ego_lane = LaneRef("driving", self._ego_lane_rank())
+        if self.ego_turn is not None:  # the turn taken from the ego's own lane
+            lane = frame.approach.lane_ids[self.ego_lane.rank] if self.ego_lane.rank < len(frame.approach.lane_ids) \
+                else None
+            self.ego_turn = next((t for t in frame.approach.turns_to(self.movement) if lane in t.from_lanes),
+                                 self.ego_turn)
         self.u_ego = self.occupied.slot(frame, self.ego_lane, self.u_ego, ego_len, -1)
         self.ego_start = frame.resolve(self.ego_lane, self.u_ego)
         placed = [self._bound(ego, 0, self.ego_start, frame)]
@@ -298,8 +303,9 @@ class Placer:
         n = len(approach.lane_ids)
         need_left, need_right = lane_needs(self.scenario)
         allowed = list(range(n))
-        if self.ego_turn is not None:
-            allowed = [i for i in allowed if approach.lane_ids[i] in self.ego_turn.from_lanes] or allowed
+        if self.ego_turn is not None:  # any lane the movement can be made from (maps give each lane its own turn)
+            turning = {lane for turn in approach.turns_to(self.movement) for lane in turn.from_lanes}
+            allowed = [i for i in allowed if approach.lane_ids[i] in turning] or allowed
         if self.movement == "right":
             allowed.reverse()
         fits = [i for i in allowed if (not need_left or i >= 1) and (not need_right or i <= n - 2)]

@@ -18,15 +18,13 @@ written into its Properties (ttsgc.intent) so a judge can read it from the file 
 from __future__ import annotations
 
 import datetime as dt
-import functools
 import math
-import importlib.util
-from pathlib import Path
 from xml.etree import ElementTree
 
 from lxml import etree
 
 from ttsgc import intent as I
+from ttsgc import xsd
 from ttsgc import vocabulary as V
 from ttsgc.binding.place import BoundAgent, LanePos
 from ttsgc.binding.scene import BoundScene
@@ -358,18 +356,9 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     return events
 
 
-@functools.cache
-def _schema(version: str) -> etree.XMLSchema:
-    folder = {"1.0": "1.0.0", "1.1": "1.1.0", "1.2": "1.2.0", "1.3": "1.3.0"}[version]
-    # the package's folder, found without importing it (its __init__ loads the whole checker bundle)
-    package = Path(importlib.util.find_spec("qc_openscenario").submodule_search_locations[0])
-    path = package / "schema" / folder / "OpenSCENARIO.xsd"
-    return etree.XMLSchema(etree.parse(str(path)))
-
-
 def validate(data: bytes, version: str) -> None:
     """Validate against the official ASAM XSD of the version; a failure is a fault in ttsgc."""
-    schema = _schema(version)
+    schema = xsd.schema(version)
     document = etree.fromstring(data)
     if not schema.validate(document):
         errors = "; ".join(f"line {e.line}: {e.message}" for e in list(schema.error_log)[:5])

@@ -17,6 +17,8 @@ from pydantic import BaseModel
 
 from ttsgc import intent as I
 from ttsgc.roads.opendrive import OpenDrive
+from ttsgc.simulate.general_verdict import (NO_INTENTS, NONE_DECLARED, declares_intents, entity_result,
+                                             file_failures)
 from ttsgc.simulate.plan import Plan
 from ttsgc.simulate.trace import Body, Sample, Trace
 
@@ -73,6 +75,8 @@ class Report(BaseModel):
     not_run: list[str]  # players that could not be run here, with why
     contradictions: list[str]  # properties of the file that say different things
     unsupported: list[str]
+    intents_declared: bool = True  # False: a file not written by ttsgc, judged on what every scene must do
+    notes: list[str] = []  # what the file does that the standard does not, read as esmini reads it
 
     @property
     def agents(self) -> list[AgentResult]:
@@ -110,7 +114,7 @@ class Report(BaseModel):
         width = max([len(n) for n in names] + [5])
         actions = [a.action for a in self.verdicts[0].agents] if self.verdicts else []
         action = max([len(a) for a in actions] + [6])
-        lines = []
+        lines = [] if self.intents_declared else [NO_INTENTS, ""]
         for problem in self.contradictions:
             lines.append(f"error in the file: {problem}")
         head = f"{'agent'.ljust(width)}  {'action'.ljust(action)}  " + "  ".join(v.player for v in self.verdicts)
@@ -134,13 +138,17 @@ class Report(BaseModel):
                              f"({v.min_ttc_agent})")
             for item in v.problems:
                 lines.append(f"{tag}problem: {item}")
+        for item in self.notes:
+            lines.append(f"note: {item}")
         for item in self.unsupported:
             lines.append(f"not read from the file: {item}")
         for item in self.not_run:
             lines.append(f"not run: {item}")
         for v in self.verdicts:
+            done = "agents did what they were told" if self.intents_declared else \
+                "entities entered the road and stayed on it (no intents declared)"
             lines.append(f"{v.player}: {'OK' if v.ok else 'FAILED'}: {sum(a.achieved for a in v.agents)}/"
-                         f"{len(v.agents)} agents did what they were told, {v.simulated_s:.1f} s played")
+                         f"{len(v.agents)} {done}, {v.simulated_s:.1f} s played")
         lines.append("OK" if self.ok else "FAILED")
         return "\n".join(lines)
 
@@ -149,7 +157,8 @@ def report(plan: Plan, verdicts: list[Verdict], not_run: list[str] | None = None
     wrong = contradictions(plan)
     ok = bool(verdicts) and all(v.ok for v in verdicts) and not wrong
     return Report(ok=ok, scenario=str(plan.xosc), map=str(plan.xodr), verdicts=verdicts, not_run=not_run or [],
-                  contradictions=wrong, unsupported=list(plan.unsupported))
+                  contradictions=wrong, unsupported=list(plan.unsupported), intents_declared=declares_intents(plan),
+                  notes=list(plan.notes))
 
 
 def contradictions(plan: Plan) -> list[str]:
@@ -235,7 +244,12 @@ def asked_for(plan: Plan, a: str, b: str) -> bool:
 def judge(plan: Plan, trace: Trace, odr: OpenDrive) -> Verdict:
     ego = ego_of(plan)
     bodies = {n: trace.bodies.get(n) or Body(e.length, e.width) for n, e in plan.entities.items()}
-    results = [_check_agent(plan, trace, odr, name, ego, bodies) for name in plan.entities]
+    intents = declares_intents(plan)
+    if intents:
+        results = [_check_agent(plan, trace, odr, name, ego, bodies) for name in plan.entities]
+    else:  # a file not written by ttsgc: each entity is judged only on entering the road and staying on it
+        results = [AgentResult(name=name, type=e.category, action=NONE_DECLARED, achieved=ok, reason=why)
+                   for name, e in plan.entities.items() for ok, why in [entity_result(trace, name)]]
     overlaps = _spawn_overlaps(trace, bodies)
     for r in results:
         if r.name in overlaps and r.achieved:
@@ -246,7 +260,9 @@ def judge(plan: Plan, trace: Trace, odr: OpenDrive) -> Verdict:
                                           asked_for=asked_for(plan, a, b)))
     distance, distance_agent, ttc, ttc_agent = criticality(trace, bodies, ego)
     problems = list(trace.problems)
-    if not trace.stopped_by_trigger:
+    if not intents:
+        problems += file_failures(plan, trace, odr)
+    elif not trace.stopped_by_trigger:
         problems.append("the stop trigger never fired (the player's time limit ended the run)")
     ok = all(r.achieved for r in results) and all(c.asked_for for c in collisions) and not problems
     return Verdict(player=trace.player, ok=ok, agents=results, collisions=collisions,

@@ -11,6 +11,7 @@ from lxml import etree
 
 from ttsgc import intent as I
 from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.simulate.xosc_check import load_scenario
 
 
 class ScenarioFileError(TtsgcError):
@@ -81,6 +82,7 @@ class Plan:
     acts: list[Act]
     stop: list[list[Condition]]
     unsupported: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)  # what the file does that the standard does not, read leniently
 
 
 def _lane(position) -> tuple[str, int, float] | None:
@@ -196,6 +198,9 @@ class _Reader:
             if target is None:
                 self.missing("SpeedAction with a relative target")
                 return None
+            if float(target.get("value")) < 0:
+                self.missing("SpeedAction to a negative speed (driving backwards)")
+                return None
             dynamics = speed.find("SpeedActionDynamics")
             rate = None
             if dynamics is not None and dynamics.get("dynamicsDimension") == "rate" and float(dynamics.get("value")) > 0:
@@ -234,11 +239,8 @@ class _Reader:
 
 def read_plan(path: str | Path) -> Plan:
     path = Path(path)
-    try:
-        root = etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True)).getroot()
-    except (OSError, etree.XMLSyntaxError) as exc:
-        raise ScenarioFileError(f"{path}: cannot read the OpenSCENARIO file: {exc}") from None
-    return plan_of(root, path)
+    scenario = load_scenario(path)  # checked, parameters and catalogs resolved; raises with file:line
+    return plan_of(scenario.root, path, scenario.xodr, scenario.notes)
 
 
 def _float(element, name: str, default: float) -> float:
@@ -266,14 +268,16 @@ def _event_action(reader: _Reader, element) -> Action | None:
     return None
 
 
-def plan_of(root, path: Path) -> Plan:
-    """The Plan of a parsed OpenSCENARIO tree (lxml root); path is where the file lies (the map is relative)."""
-    logic = root.find("RoadNetwork/LogicFile")
-    if logic is None or not logic.get("filepath"):
-        raise ScenarioFileError(f"{path}: the file names no road network (RoadNetwork/LogicFile)")
-    xodr = (path.parent / logic.get("filepath")).resolve()
-    if not xodr.is_file():
-        raise ScenarioFileError(f"{path}: its road network {logic.get('filepath')} does not exist at {xodr}")
+def plan_of(root, path: Path, xodr: Path | None = None, notes=()) -> Plan:
+    """The Plan of a parsed OpenSCENARIO tree (lxml root); path is where the file lies (the map is relative);
+    xodr: the map, when the caller has found it already; notes: what the file does that the standard does not."""
+    if xodr is None:
+        logic = root.find("RoadNetwork/LogicFile")
+        if logic is None or not logic.get("filepath"):
+            raise ScenarioFileError(f"{path}: the file names no road network (RoadNetwork/LogicFile)")
+        xodr = (path.parent / logic.get("filepath")).resolve()
+        if not xodr.is_file():
+            raise ScenarioFileError(f"{path}: its road network {logic.get('filepath')} does not exist at {xodr}")
     reader = _Reader()
     entities = {}
     for obj in root.findall("Entities/ScenarioObject"):
@@ -291,6 +295,11 @@ def plan_of(root, path: Path) -> Plan:
                                            body.get("pedestrianCategory") or "pedestrian", body.get("role", "none"),
                                            _float(dims, "length", 4.5), _float(dims, "width", 1.8), intent,
                                            _float(centre, "x", 0.0))
+    for controller in root.iterfind("Entities/ScenarioObject/ObjectController/Controller"):
+        reader.missing(f"controller {controller.get('name')} (SUMO's driver model drives its entity)")
+    for action in root.iterfind("Storyboard/Init/Actions/GlobalAction/*"):
+        if action.tag != "EnvironmentAction":  # weather: written, not simulated (README, known limits)
+            reader.missing(f"initial GlobalAction/{etree.QName(action).localname}")
     init: dict[str, list[Action]] = {}
     for private in root.findall("Storyboard/Init/Actions/Private"):
         for action in private.findall("PrivateAction"):
@@ -310,5 +319,6 @@ def plan_of(root, path: Path) -> Plan:
                 events.append(Event(event.get("name"), actors[0] if actors else "",
                                     [a for a in actions if a is not None], reader.trigger(event.find("StartTrigger"))))
         acts.append(Act(act.get("name"), reader.trigger(act.find("StartTrigger")), events))
-    stop = reader.trigger(root.find("Storyboard/StopTrigger"))
-    return Plan(path, xodr, entities, init, acts, stop, reader.unsupported)
+    stop_trigger = root.find("Storyboard/StopTrigger")
+    stop = reader.trigger(stop_trigger) if stop_trigger is not None else []  # none: only the time limit ends it
+    return Plan(path, xodr, entities, init, acts, stop, reader.unsupported, list(notes))

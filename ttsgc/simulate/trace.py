@@ -18,6 +18,7 @@ class Sample:
     road: str = ""  # OpenDRIVE road id where the player knows it ("" when unknown)
     lane: int | None = None  # OpenDRIVE lane id where the player knows it
     s: float | None = None  # position along the road where the player knows it
+    on_road: bool | None = None  # the player's word on whether the body is on a road or junction (None: unsaid)
 
 
 @dataclass(frozen=True)

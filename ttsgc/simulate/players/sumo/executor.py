@@ -569,6 +569,7 @@ class Executor:
             ts.simulationStep()  # SUMO inserts what was added on the next step
             t = round(ts.simulation.getTime(), 3)
             self._sample(t)
+            self._storyboard(0.0)  # the first evaluation is of the initial state, at t=0, as in esmini
             while t < TIME_LIMIT_S:
                 self._storyboard(t)
                 if self.triggered(self.plan.stop, t):
@@ -806,7 +807,8 @@ def play(plan: Plan, seed: int = 1) -> T.Trace:
         if not spawn.ok:
             trace.problems.append(f"'{name}' could not be placed: {spawn.reason}")
     for name, samples in run.samples.items():
-        trace.samples[name] = [T.Sample(s.t, s.x, s.y, s.heading, s.speed, s.road, s.lane) for s in samples]
+        trace.samples[name] = [T.Sample(s.t, s.x, s.y, s.heading, s.speed, s.road, s.lane,
+                                      on_road=bool(s.road) or s.edge.startswith(":")) for s in samples]
     trace.started.update(run.act_start)
     trace.started.update(run.fired)
     trace.ended.update(run.act_end)
