@@ -409,6 +409,7 @@ def _maps(args) -> int:
 
 
 def _maps_synth(args) -> int:
+    from ttsgc.language import parse_file
     from ttsgc.roads.index import load_index
     from ttsgc.roads.synth import chosen_seed, synthesize
 

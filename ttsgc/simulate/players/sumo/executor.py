@@ -30,6 +30,7 @@ TIME_LIMIT_S = 180.0
 LOOK_AHEAD_M = 30.0  # how far ahead a driver watches for a body the player moves
 PATH_HALF_WIDTH_M = 1.8  # a moved body this close to a vehicle's line of travel is in its path
 COMFORT_BRAKE = 4.0  # m/s2
+ANTICIPATION_S = 2.0  # how far ahead in time a driver reads a moved body's course
 VCLASS = {"car": "passenger", "van": "delivery", "truck": "truck", "bus": "bus", "motorbike": "motorcycle",
           "bicycle": "bicycle", "semitrailer": "trailer"}
 
@@ -687,11 +688,14 @@ class Executor:
             body = self.plan.entities[name]
             gap = None
             for other, mover in self.movers.items():
-                dx, dy = mover.x - last.x, mover.y - last.y
-                ahead = dx * math.cos(last.heading) + dy * math.sin(last.heading) - body.length / 2
-                side = -dx * math.sin(last.heading) + dy * math.cos(last.heading)
-                if 0 < ahead < LOOK_AHEAD_M and abs(side) < PATH_HALF_WIDTH_M + body.width / 2:
-                    gap = ahead if gap is None else min(gap, ahead)
+                # where it is, and where it will be soon: a walker stepping towards the lane is seen in time
+                for lead in (0.0, ANTICIPATION_S):
+                    dx = mover.x + math.cos(mover.heading) * mover.speed * lead - last.x
+                    dy = mover.y + math.sin(mover.heading) * mover.speed * lead - last.y
+                    ahead = dx * math.cos(last.heading) + dy * math.sin(last.heading) - body.length / 2
+                    side = -dx * math.sin(last.heading) + dy * math.cos(last.heading)
+                    if -1.0 < ahead < LOOK_AHEAD_M and abs(side) < PATH_HALF_WIDTH_M + body.width / 2:
+                        gap = max(ahead, 0.0) if gap is None else min(gap, max(ahead, 0.0))
             commanded = self.commanded[name]
             if gap is not None:
                 safe = math.sqrt(max(0.0, 2 * COMFORT_BRAKE * (gap - 2.5)))
