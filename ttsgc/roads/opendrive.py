@@ -185,6 +185,8 @@ class Lane:
 class LaneSection:
     s: float
     lanes: dict[int, Lane]  # lane id -> lane, centre lane 0 excluded
+    center_mark: str | None = None  # type of the centre lane's road mark (the line between the two directions)
+    center_mark_color: str | None = None
 
     def side(self, sign: int) -> list[Lane]:
         """Lanes of one side ordered from the centre outwards (sign -1: right, +1: left)."""
@@ -222,6 +224,10 @@ class RoadObject:
     type: str
     subtype: str
     name: str
+    hdg: float = 0.0  # relative to the road's heading at s
+    length: float = 0.0  # extent along the object's own heading (u)
+    width: float = 0.0  # extent across it (v)
+    outline: tuple[tuple[float, float], ...] = ()  # cornerLocal (u, v) points, where the map gives them
 
 
 @dataclass
@@ -496,7 +502,11 @@ class _Reader:
                 lanes[lane_id] = Lane(lane_id, lane_el.get("type", "none"), widths,
                                       mark.get("type") if mark is not None else None,
                                       mark.get("color") if mark is not None else None, speed)
-        return LaneSection(self.num(element, "s"), lanes)
+        center = self.child(element, "center")
+        center_lane = self.child(center, "lane") if center is not None else None
+        mark = self.child(center_lane, "roadMark") if center_lane is not None else None
+        return LaneSection(self.num(element, "s"), lanes, mark.get("type") if mark is not None else None,
+                           mark.get("color") if mark is not None else None)
 
     def link(self, element) -> Link | None:
         if element is None:
@@ -521,9 +531,13 @@ class _Reader:
                       element.get("orientation", "none"), "", "", "", None, None, "", is_reference=True)
 
     def road_object(self, element) -> RoadObject:
+        outline = self.child(element, "outline")
+        corners = tuple((self.num(c, "u"), self.num(c, "v")) for c in self.children(outline, "cornerLocal")) \
+            if outline is not None else ()
         return RoadObject(element.get("id", ""), self.num(element, "s", 0.0), self.num(element, "t", 0.0),
                           element.get("orientation", "none"), element.get("type", ""), element.get("subtype", ""),
-                          element.get("name", ""))
+                          element.get("name", ""), self.num(element, "hdg", 0.0), self.num(element, "length", 0.0),
+                          self.num(element, "width", 0.0), corners)
 
     def junction(self, element) -> Junction:
         connections = []
