@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import json
 import statistics
-import sys
 import tempfile
 import time
 import tomllib
@@ -18,6 +17,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from ttsgc.errors import TtsgcError
+from ttsgc.runner import progress_bar  # noqa: F401 - the one progress bar, also used from here
 from ttsgc.scenario import Scenario
 
 
@@ -205,16 +205,22 @@ def table(runs: list[Run]) -> str:
     return "\n".join(lines)
 
 
+def _run_job(job: tuple) -> Run:
+    return run_case(*job)
+
+
 def evaluate(folder: Path, seeds: int = 5, maps=None, method: str = "offline", simulate: bool = True,
-             progress=None) -> list[Run]:
+             progress=None, workers: int | None = None) -> list[Run]:
+    """Every case and seed on the runner (every core by default); runs in case-then-seed order."""
+    from ttsgc import runner
+
     cases = load_suite(folder)
-    runs = []
-    total = len(cases) * seeds
-    for case in cases:
-        for seed in range(seeds):
-            runs.append(run_case(case, seed, maps, method, simulate))
-            if progress:
-                progress(len(runs), total, case.name)
+    jobs = [(case, seed, maps, method, simulate) for case in cases for seed in range(seeds)]
+    runs: list[Run | None] = [None] * len(jobs)
+    for done, (index, run) in enumerate(runner.run(_run_job, jobs, workers), 1):
+        runs[index] = run
+        if progress:
+            progress(done, len(jobs), jobs[index][0].name)
     return runs
 
 
@@ -223,14 +229,3 @@ def report_json(runs: list[Run]) -> str:
     return json.dumps({"summary": summarize(runs), "by_kind": {k: summarize([r for r in runs if r.kind == k])
                                                                for k in kinds},
                        "paper_best": PAPER_BEST, "runs": [asdict(r) for r in runs]}, indent=2)
-
-
-def progress_bar(done: int, total: int, label: str) -> None:
-    """One line that rewrites itself on a terminal, one line per tenth elsewhere."""
-    width = 30
-    filled = width * done // total
-    line = f"[{'#' * filled}{'.' * (width - filled)}] {done}/{total} {label}"
-    if sys.stderr.isatty():
-        print("\r" + line.ljust(90), end="" if done < total else "\n", file=sys.stderr, flush=True)
-    elif done == total or done % max(1, total // 10) == 0:
-        print(line, file=sys.stderr, flush=True)
