@@ -256,7 +256,10 @@ def run_batch(jobs: list[Job], out_dir: Path, workers: int | None = None, ray_ad
     done = 0
     if progress and skipped:
         progress(skipped, len(jobs), f"{skipped} already finished")
-    for index, outcome in runner.run(make_scene, todo, workers, ray_address):
+    import functools
+
+    warm_up = functools.partial(runner.warm_pipeline, jobs[0].maps if jobs else None)
+    for index, outcome in runner.run(make_scene, todo, workers, ray_address, warm_up=warm_up):
         store(out_dir, outcome)
         rows[todo[index].id] = outcome.row
         if not outcome.finished:

@@ -7,6 +7,7 @@ RA, road accuracy: road properties matched (lanes, junction, required and forbid
 
 from __future__ import annotations
 
+import functools
 import json
 import statistics
 import tempfile
@@ -217,7 +218,8 @@ def evaluate(folder: Path, seeds: int = 5, maps=None, method: str = "offline", s
     cases = load_suite(folder)
     jobs = [(case, seed, maps, method, simulate) for case in cases for seed in range(seeds)]
     runs: list[Run | None] = [None] * len(jobs)
-    for done, (index, run) in enumerate(runner.run(_run_job, jobs, workers), 1):
+    warm_up = functools.partial(runner.warm_pipeline, maps)
+    for done, (index, run) in enumerate(runner.run(_run_job, jobs, workers, warm_up=warm_up), 1):
         runs[index] = run
         if progress:
             progress(done, len(jobs), jobs[index][0].name)

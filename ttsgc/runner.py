@@ -4,6 +4,10 @@ Workers are processes, never threads: libsumo holds one simulation per process. 
 top-level function and its argument; results come back as they finish, tagged with the job's index, and the
 callers order them by that index, so what they write does not depend on the number of workers or on who
 finished first.
+
+A warm scene takes a tenth of a second; starting a process that imports the pipeline and loads the map
+library takes seconds. So where the system can fork, this process warms up once (imports, map library) and
+the workers are forked from it, starting warm; elsewhere each spawned worker warms up itself.
 """
 
 from __future__ import annotations
@@ -28,8 +32,19 @@ def default_workers() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+def warm_pipeline(maps=None) -> None:
+    """Import every stage and load the map library: what each worker would otherwise do on its first scene."""
+    import ttsgc.language  # noqa: F401
+    import ttsgc.lowering  # noqa: F401
+    import ttsgc.pipeline  # noqa: F401
+    import ttsgc.simulate.sumo  # noqa: F401 - the player (libsumo is loaded, no simulation is started)
+    from ttsgc.roads.retrieve import load_library
+
+    load_library(list(maps) if maps else None)
+
+
 def run(function: Callable[[Any], Any], jobs: Sequence[Any], workers: int | None = None,
-        ray_address: str | None = None) -> Iterator[tuple[int, Any]]:
+        ray_address: str | None = None, warm_up: Callable[[], None] | None = None) -> Iterator[tuple[int, Any]]:
     """Yield (index in jobs, function(job)) as each job finishes. One worker runs in this process; more run
     in a pool of spawned processes; ray_address ('local' starts a private Ray instance) sends them to Ray."""
     if workers is not None and workers < 1:
@@ -40,15 +55,22 @@ def run(function: Callable[[Any], Any], jobs: Sequence[Any], workers: int | None
         for index, job in enumerate(jobs):
             yield index, function(job)
     else:
-        yield from _on_pool(function, jobs, workers or default_workers())
+        yield from _on_pool(function, jobs, workers or default_workers(), warm_up)
 
 
-def _on_pool(function, jobs, workers: int) -> Iterator[tuple[int, Any]]:
+def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]:
     import multiprocessing
+    import threading
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    context = multiprocessing.get_context("spawn")  # no inherited simulator state, locks or threads
-    pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)), mp_context=context)
+    forkable = "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
+    if forkable:  # warm once here; no simulation has been started in this process, so none is inherited
+        if warm_up is not None:
+            warm_up()
+        pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)), mp_context=multiprocessing.get_context("fork"))
+    else:
+        pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)),
+                                   mp_context=multiprocessing.get_context("spawn"), initializer=warm_up)
     try:
         pending = {pool.submit(function, job): index for index, job in enumerate(jobs)}
         while pending:
