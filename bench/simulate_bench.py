@@ -17,7 +17,7 @@ from pathlib import Path
 
 from ttsgc.language import parse_file
 from ttsgc.pipeline import compile_scenario, write
-from ttsgc.simulate.network import convert
+from ttsgc.simulate.players.sumo.network import convert
 from ttsgc.simulate.sumo import simulate
 
 ROOT = Path(__file__).resolve().parents[1]

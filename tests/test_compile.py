@@ -204,11 +204,12 @@ def test_triggers_and_stages(library):
     delayed = root.find(".//Event[@name='b_stop']//Condition")
     assert delayed.get("delay") == "2.5"
     acts = root.findall(".//Act")
-    assert [a.get("name") for a in acts] == ["one", "two"]
+    assert [a.get("name") for a in acts] == ["one", "two", "map_edge"]
     follows = acts[1].find("StartTrigger//StoryboardElementStateCondition")
-    assert follows.get("storyboardElementRef") == "one" and follows.get("state") == "endTransition"
-    appear = root.find(".//Event[@name='c_appears']//RelativeLanePosition")
+    assert follows.get("storyboardElementRef") == "one" and follows.get("state") == "completeState"
+    appear = root.find(".//Event[@name='c_enters']//AddEntityAction//RelativeLanePosition")
     assert appear.get("entityRef") == "ego" and appear.get("dLane") == "1"
+    assert root.find(".//Init//Private[@entityRef='c']") is None  # inactive until its stage adds it
     assert root.find(".//StopTrigger//SimulationTimeCondition") is not None
 
 

@@ -104,7 +104,7 @@ def test_generation_is_deterministic_and_matches_the_committed_maps(tmp_path):
 
 
 def test_builtin_maps_convert_without_netconvert_warnings(tmp_path):
-    from ttsgc.simulate.network import convert
+    from ttsgc.simulate.players.sumo.network import convert
 
     for path in sorted(MAPS.glob("*.xodr")):
         assert convert(path, tmp_path / f"{path.stem}.net.xml") == [], path.name
@@ -130,7 +130,7 @@ def _net_connections(net_path: Path):
 
 
 def _agreement(town_path: Path, tmp_path: Path) -> tuple[int, list]:
-    from ttsgc.simulate.network import convert
+    from ttsgc.simulate.players.sumo.network import convert
 
     net = tmp_path / f"{town_path.stem}.net.xml"
     convert(town_path, net, pedestrians=False)

@@ -1,5 +1,5 @@
-"""The SUMO backend: every example proves itself, each action's check passes and fails when it should,
-collisions are reported, unsupported content is named, the commands' exit codes."""
+"""The SUMO player and the judge: every example proves itself, each action's check passes and fails when it
+should, collisions are reported, unsupported content is named, the commands' exit codes."""
 
 from __future__ import annotations
 
@@ -13,7 +13,11 @@ from conftest import EXAMPLES, example_scenarios
 from ttsgc.cli import main
 from ttsgc.language import parse_file
 from ttsgc.pipeline import compile_and_prove, compile_scenario, write
-from ttsgc.simulate.sumo import simulate
+from ttsgc.simulate.validate import validate
+
+
+def simulate(path):
+    return validate(path, "sumo")
 
 
 def _compiled(name: str, folder: Path) -> Path:
@@ -37,7 +41,7 @@ def _result(report, name):
 def test_every_example_proves_itself_in_sumo(path, tmp_path):
     report = simulate(_compiled(path.stem, tmp_path))
     assert report.ok, report.table()
-    assert not report.unsupported and not report.problems
+    assert not report.unsupported and not report.problems and report.players == ["sumo"]
 
 
 def test_simulation_is_deterministic(tmp_path):
@@ -66,7 +70,7 @@ def test_turn_left_fails_when_the_car_goes_straight_instead(tmp_path):
         for waypoint in root.find(".//ManeuverGroup[@name='ego_group']//Route").findall("Waypoint")[1:-1]:
             waypoint.getparent().remove(waypoint)
     result = _result(simulate(_edit(scene, straight)), "ego")
-    assert not result.achieved and "where its left movement leads" in result.reason
+    assert not result.achieved and "where a left movement leads" in result.reason
 
 
 def test_lane_change_and_its_failure(tmp_path):
@@ -91,7 +95,7 @@ def test_stop_and_its_failure(tmp_path):
 
 def test_block_the_ego_and_its_failure(tmp_path):
     scene = _compiled("blocking", tmp_path)
-    assert "the ego slowed" in _result(simulate(scene), "c1").reason
+    assert "stopped in the ego's path" in _result(simulate(scene), "c1").reason
     def drive_off(root):
         for target in root.find(".//Event[@name='c1_block_the_ego']").iter("AbsoluteTargetSpeed"):
             target.set("value", "15.0")
@@ -103,7 +107,7 @@ def test_cross_the_road_and_its_failure(tmp_path):
     assert "crossed road" in _result(simulate(scene), "p1").reason
     def stay(root):
         start = root.find(".//Private[@entityRef='p1']//LanePosition")
-        target = root.find(".//Event[@name='p1_cross_the_road']//AcquirePositionAction//LanePosition")
+        target = root.find(".//Event[@name='p1_cross_the_road']//Polyline").findall(".//LanePosition")[-1]
         target.set("laneId", start.get("laneId"))
     result = _result(simulate(_edit(scene, stay)), "p1")
     assert not result.achieved and "stayed on the" in result.reason
@@ -113,8 +117,8 @@ def test_on_the_sidewalk_and_its_failure(tmp_path):
     scene = _compiled("daily_traffic", tmp_path)
     assert "along the sidewalk" in _result(simulate(scene), "p1").reason
     def into_the_road(root):
-        target = root.find(".//Event[@name='p1_on_the_sidewalk']//AcquirePositionAction//LanePosition")
-        target.set("laneId", "-1" if int(target.get("laneId")) < 0 else "1")
+        for target in root.find(".//Event[@name='p1_on_the_sidewalk']//Polyline").findall(".//LanePosition")[1:]:
+            target.set("laneId", "-1" if int(target.get("laneId")) < 0 else "1")
     result = _result(simulate(_edit(scene, into_the_road)), "p1")
     assert not result.achieved and "straying" in result.reason
 
@@ -130,37 +134,26 @@ def test_go_straight_through_a_junction_and_its_failure(tmp_path):
         for waypoint in root.find(".//ManeuverGroup[@name='a1_group']//Route").findall("Waypoint")[1:-1]:
             waypoint.getparent().remove(waypoint)
     result = _result(simulate(_edit(scene, turn_instead)), "a1")
-    assert not result.achieved and "where its straight movement leads" in result.reason
+    assert not result.achieved and "where a straight movement leads" in result.reason
 
 
 def test_a_spawn_on_a_lane_that_does_not_exist_fails(tmp_path):
     scene = _compiled("cut_off", tmp_path)
     def bad_lane(root):
         root.find(".//Private[@entityRef='c2']//LanePosition").set("laneId", "-9")
-    result = _result(simulate(_edit(scene, bad_lane)), "c2")
-    assert not result.achieved and "could not be spawned" in result.reason
+    report = simulate(_edit(scene, bad_lane))
+    result = _result(report, "c2")
+    assert not result.achieved and "never appeared" in result.reason
+    assert any("road" in p and "no lane -9" in p for p in report.problems)
 
 
 # -- collisions, unsupported content, criticality --------------------------------------------------------
 
-def test_collisions_are_reported_with_who_when_where(tmp_path):
+def test_a_normal_crossing_is_no_crash_the_ego_slows_for_the_walker(tmp_path):
     report = simulate(_compiled("intersection", tmp_path))
-    hit = [c for c in report.collisions if {c.a, c.b} == {"ego", "p1"}]
-    assert hit and hit[0].asked_for and hit[0].time_s > 0 and isinstance(hit[0].x, float)
-    assert report.ok  # a crossing pedestrian aims at the ego's path: the scene asked for it
-
-
-def test_an_unasked_collision_fails_the_scene(tmp_path):
-    scene = _compiled("daily_traffic", tmp_path)
-    def walk_into_the_ego(root):  # a fast walker stops in the ego's lane just before the ego gets there
-        ego = root.find(".//Private[@entityRef='ego']//LanePosition")
-        target = root.find(".//Event[@name='p1_on_the_sidewalk']//AcquirePositionAction//LanePosition")
-        for key in ("roadId", "laneId"):
-            target.set(key, ego.get(key))
-        target.set("s", str(float(ego.get("s")) + 45))
-        root.find(".//Private[@entityRef='p1']//AbsoluteTargetSpeed").set("value", "12")
-    report = simulate(_edit(scene, walk_into_the_ego))
-    assert any(not c.asked_for for c in report.collisions) and not report.ok
+    assert report.ok and not report.collisions, report.table()
+    ego = report.verdicts[0]
+    assert ego.min_distance_to_ego is not None and ego.min_distance_to_ego > 0
 
 
 def test_unsupported_content_is_reported_by_name(tmp_path):
@@ -174,9 +167,9 @@ def test_unsupported_content_is_reported_by_name(tmp_path):
 
 
 def test_criticality_to_the_ego(tmp_path):
-    report = simulate(_compiled("cut_off", tmp_path))
-    assert report.min_distance_to_ego is not None and report.min_distance_agent in ("c1", "c2")
-    assert report.min_ttc_to_ego is not None and report.min_ttc_to_ego > 0
+    verdict = simulate(_compiled("cut_off", tmp_path)).verdicts[0]
+    assert verdict.min_distance_to_ego is not None and verdict.min_distance_agent in ("c1", "c2")
+    assert verdict.min_ttc_to_ego is not None and verdict.min_ttc_to_ego > 0
 
 
 # -- commands -------------------------------------------------------------------------------------------
@@ -184,13 +177,14 @@ def test_criticality_to_the_ego(tmp_path):
 def test_validate_command_and_its_report(tmp_path, capsys):
     scene = _compiled("stop_sign_right_turn", tmp_path)
     report_path = tmp_path / "report.json"
-    assert main(["validate", str(scene), "--report", str(report_path)]) == 0
+    assert main(["validate", str(scene), "--player", "sumo", "--report", str(report_path)]) == 0
     assert "✓" in capsys.readouterr().out
     data = json.loads(report_path.read_text())
-    assert data["ok"] is True and {"name", "action", "achieved", "reason"} <= set(data["agents"][0])
-    assert "collisions" in data and "min_ttc_to_ego" in data
+    verdict = data["verdicts"][0]
+    assert data["ok"] is True and {"name", "action", "achieved", "reason"} <= set(verdict["agents"][0])
+    assert verdict["player"] == "sumo" and "collisions" in verdict and "min_ttc_to_ego" in verdict
     _edit(scene, lambda root: root.find(".//Private[@entityRef='k1']//LanePosition").set("laneId", "-9"))
-    assert main(["validate", str(scene)]) == 5
+    assert main(["validate", str(scene), "--player", "sumo"]) == 5
 
 
 def test_compile_proves_the_scene_and_writes_the_report(tmp_path):
@@ -206,8 +200,8 @@ def test_compile_tries_the_next_road_when_the_scene_fails(tmp_path, monkeypatch)
     real = pipeline.simulate_compiled
     seen = []
 
-    def failing_first(compiled, out):
-        report = real(compiled, out)
+    def failing_first(compiled, out, players="all"):
+        report = real(compiled, out, "sumo")
         seen.append(compiled.scene.approach)
         return report.model_copy(update={"ok": len(seen) > 1})
     monkeypatch.setattr(pipeline, "simulate_compiled", failing_first)

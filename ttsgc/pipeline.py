@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ttsgc.binding import BoundScene, bind
+from ttsgc.binding.scene import candidates
 from ttsgc.emit.xosc import DEFAULT_VERSION, emit
 from ttsgc.errors import TtsgcError
 from ttsgc.files import write_atomic
@@ -45,43 +46,77 @@ def compile_scenario(scenario: Scenario, out: Path, maps=None, seed: int | None 
 MAX_SIMULATION_TRIES = 3
 
 
-def simulate_compiled(compiled: Compiled, out: Path):
-    """Run a compiled scene in SUMO from a scratch folder (the file as it will be written, map beside it)."""
+def simulate_compiled(compiled: Compiled, out: Path, players: str = "all"):
+    """Prove a compiled scene in the players (all available by default) from a scratch folder: the file as it
+    will be written, the map beside it."""
     import tempfile
 
-    from ttsgc.simulate.sumo import simulate
+    from ttsgc.simulate.validate import validate
 
     with tempfile.TemporaryDirectory(prefix="ttsgc-") as scratch:
         trial = Path(scratch) / out.name
         write(compiled, trial)
-        report = simulate(trial)
+        report = validate(trial, players)
     return report.model_copy(update={"scenario": str(out), "map": str(out.parent / compiled.map_name)})
+
+
+def failure_summary(report) -> str:
+    failed = [f"{a.name} ({a.reason})" for a in report.agents if not a.achieved] + \
+        [f"collision {c.a}/{c.b}" for c in report.collisions if not c.asked_for]
+    return "; ".join(failed) or "; ".join(report.problems)
+
+
+def prove_first(scenes, prove, tries: int = MAX_SIMULATION_TRIES, log=print):
+    """The one "try the next road when the scene fails" policy: prove each candidate in turn (scenes is
+    consumed lazily, so roads after the first that passes are never placed) and return (candidate, report)
+    of the first that passes, else of the last tried. The first candidate's error propagates; a later
+    candidate that cannot be built ends the search."""
+    chosen = report = None
+    iterator = iter(scenes)
+    for attempt in range(tries):
+        try:
+            candidate = next(iterator)
+        except StopIteration:
+            break
+        except TtsgcError:
+            if attempt == 0:
+                raise
+            break
+        chosen, report = candidate, prove(candidate)
+        if report.ok:
+            break
+        log(f"ttsgc: {getattr(candidate, 'label', candidate)}: the scene failed: {failure_summary(report)}"
+            + ("; trying the next-ranked road" if attempt + 1 < tries else ""))
+    if chosen is None:
+        raise TtsgcError("no candidate to prove")
+    return chosen, report
 
 
 def compile_and_prove(scenario: Scenario, out: Path, maps=None, seed: int | None = None,
                       version: str = DEFAULT_VERSION, tries: int = MAX_SIMULATION_TRIES, log=print,
-                      only: tuple[str, str] | None = None):
-    """Compile, then simulate; when the scene fails on its road, compile onto the next-ranked road, at most
-    `tries` roads in all. Returns (compiled, report) of the first that passes, else of the last tried."""
-    compiled = report = None
+                      only: tuple[str, str] | None = None, players: str = "all"):
+    """Compile, then prove in the players; when the scene fails on its road, compile onto the next-ranked
+    road, at most `tries` roads in all. Returns (compiled, report) of the first that passes, else of the
+    last tried."""
     library = load_library(maps)
-    for attempt in range(tries):
-        try:
-            compiled = compile_scenario(scenario, out, seed=seed, version=version, skip=attempt, only=only,
-                                        library=library)
-        except TtsgcError:
-            if attempt == 0:
-                raise
-            break  # no further candidate road
-        report = simulate_compiled(compiled, out)
-        if report.ok:
-            break
-        failed = [f"{a.name} ({a.reason})" for a in report.agents if not a.achieved] + \
-            [f"collision {c.a}/{c.b}" for c in report.collisions if not c.asked_for]
-        log(f"ttsgc: {compiled.scene.map_name} {compiled.scene.approach}: the scene failed in simulation: "
-            f"{'; '.join(failed) or '; '.join(report.problems)}"
-            + ("; trying the next-ranked road" if attempt + 1 < tries else ""))
-    return compiled, report
+
+    def compiled_scenes():
+        for scene in candidates(scenario, library, seed=seed, only=only):
+            map_name = map_file_name(scene, out.parent)
+            yield _Labelled(Compiled(scene, emit(scene, map_name, version), map_name))
+
+    labelled, report = prove_first(compiled_scenes(), lambda c: simulate_compiled(c.compiled, out, players),
+                                   tries, log)
+    return labelled.compiled, report
+
+
+@dataclass(frozen=True)
+class _Labelled:
+    compiled: Compiled
+
+    @property
+    def label(self) -> str:
+        return f"{self.compiled.scene.map_name} {self.compiled.scene.approach}"
 
 
 def write(compiled: Compiled, out: Path) -> None:

@@ -44,6 +44,15 @@ SURFACE = {  # lane type -> fill
 }
 JUNCTION_SURFACE = "#5a5a60"
 GROUND = "#dfe8d3"
+SIGNAL_STYLE = {  # matplotlib marker styles of the signals drawn on the map
+    "light": dict(marker="s", markersize=9, color="#111111"),
+    "stop": dict(marker="8", markersize=12, color="#c8102e", markeredgecolor="white", markeredgewidth=1.5),
+    "yield": dict(marker="v", markersize=11, color="white", markeredgecolor="#c8102e", markeredgewidth=2),
+    "speed": dict(marker="o", markersize=13, color="white", markeredgecolor="#c8102e", markeredgewidth=2),
+    "other": dict(marker="o", markersize=5, color="#555555"),
+}
+SIGNAL_WORDS = {"light": "traffic light", "stop": "stop sign", "yield": "yield sign", "speed": "speed limit",
+                "other": "other signal"}
 MARK_COLOURS = {"yellow": "#f2c230", "white": "#f5f5f5", "standard": "#f5f5f5", "red": "#d03030", "blue": "#3050d0"}
 
 
@@ -333,6 +342,8 @@ class _Canvas:
         for spine in ax.spines.values():
             spine.set_visible(False)
         shapes = map_shapes(odr, view)
+        self.signal_kinds = sorted({kind for kind, x, y, _ in shapes.signals
+                                    if view.x0 <= x <= view.x0 + view.size and view.y0 <= y <= view.y0 + view.size})
         if shapes.surfaces:
             ax.add_collection(PolyCollection([p for _, p in shapes.surfaces], facecolors=[f for f, _ in shapes.surfaces],
                                              edgecolors=[f for f, _ in shapes.surfaces], linewidths=0.3, zorder=1))
@@ -347,20 +358,11 @@ class _Canvas:
         for kind, x, y, text in shapes.signals:
             if not (view.x0 <= x <= view.x0 + view.size and view.y0 <= y <= view.y0 + view.size):
                 continue
+            ax.plot([x], [y], zorder=3, **SIGNAL_STYLE[kind])
             if kind == "light":
-                ax.plot([x], [y], marker="s", markersize=9, color="#111111", zorder=3)
                 ax.plot([x], [y], marker="o", markersize=4, color="#f5b400", zorder=3.1)
-            elif kind == "stop":
-                ax.plot([x], [y], marker="8", markersize=10, color="#c8102e", markeredgecolor="white", zorder=3)
-            elif kind == "yield":
-                ax.plot([x], [y], marker="v", markersize=10, color="white", markeredgecolor="#c8102e",
-                        markeredgewidth=2, zorder=3)
             elif kind == "speed":
-                ax.plot([x], [y], marker="o", markersize=13, color="white", markeredgecolor="#c8102e",
-                        markeredgewidth=2, zorder=3)
                 ax.text(x, y, text, fontsize=6, ha="center", va="center", zorder=3.1)
-            else:
-                ax.plot([x], [y], marker="o", markersize=5, color="#555555", zorder=3)
         bar = 10.0 if view.size < 150 else 50.0  # a scale bar in the lower left
         bx, by = view.x0 + view.size * 0.03, view.y0 + view.size * 0.03
         ax.plot([bx, bx + bar], [by, by], color="black", linewidth=3, solid_capstyle="butt", zorder=6)
@@ -468,6 +470,8 @@ class _Canvas:
                               label="stage change"))
         handles.append(Line2D([], [], marker="X", color=COLLISION_COLOUR, markeredgecolor="black", markersize=10,
                               linestyle="none", label="collision"))
+        for kind in self.signal_kinds:
+            handles.append(Line2D([], [], linestyle="none", label=SIGNAL_WORDS[kind], **SIGNAL_STYLE[kind]))
         panel.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.03, y), fontsize=9, frameon=False)
         self.clock = panel.text(0.06, 0.03, f"{self.trace.end_time:.1f} s played", fontsize=10, color="#333333",
                                 transform=panel.transAxes)
@@ -597,3 +601,63 @@ def render_bytes(odr: OpenDrive, trace: Trace, cast: Cast, verdict: Verdict, suf
         return mp4_bytes(frames(odr, trace, cast, verdict))
     raise RenderError(f"cannot draw into a '{suffix or 'nameless'}' file; the output must end in "
                       f"{', '.join(FORMATS)}")
+
+
+# -- a scene file, played and drawn -----------------------------------------------------------------------
+
+def cast_of(plan) -> Cast:
+    """Types, ego and stages from a Plan (the file as read), with the file's description as the title."""
+    from lxml import etree
+
+    from ttsgc import intent as I
+
+    types, ego = {}, None
+    for name, entity in plan.entities.items():
+        declared = entity.intent.get(I.TYPE, "")
+        if declared:
+            types[name] = declared
+        elif entity.kind == "pedestrian":
+            types[name] = "pedestrian"
+        else:  # a hand-written file: its role (ambulance, police, ...) or category says what it is
+            types[name] = entity.role if entity.role in TYPE_COLOURS else {"van": "car", "bicycle": "cyclist"}.get(
+                entity.category, entity.category)
+        if entity.intent.get(I.IS_EGO) == "true":
+            ego = name
+    if ego is None:  # without ttsgc intents: the entity named ego, else the first one
+        ego = "ego" if "ego" in plan.entities else next(iter(plan.entities), None)
+    title = Path(plan.xosc).stem
+    try:
+        parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+        header = etree.parse(str(plan.xosc), parser).find("FileHeader")
+        if header is not None and (header.get("description") or "").strip():
+            title = header.get("description").strip()
+    except (OSError, etree.XMLSyntaxError):
+        pass
+    stages = [int(e.intent[I.STAGE]) for e in plan.entities.values() if e.intent.get(I.STAGE, "").isdigit()]
+    acts = [act.name for act in plan.acts]  # stage acts come first; acts after them only tidy up (map_edge)
+    return Cast(title, types, ego, tuple(acts[: max(stages) + 1] if stages else acts))
+
+
+def render_scene(xosc: str | Path, out: str | Path, player: str = "sumo", seed: int = 1) -> Verdict:
+    """Play a scene file in one player, judge the trace, and draw it into out (.png, .gif or .mp4)."""
+    from ttsgc.files import write_atomic
+    from ttsgc.roads.opendrive import load_opendrive
+    from ttsgc.simulate.judge import judge, report
+    from ttsgc.simulate.plan import read_plan
+    from ttsgc.simulate.players import player as player_module
+    from ttsgc.simulate.validate import chosen_players
+
+    out = Path(out)
+    if out.suffix.lower() not in FORMATS:
+        raise RenderError(f"{out}: cannot draw into a '{out.suffix or 'nameless'}' file; the output must end in "
+                          f"{', '.join(FORMATS)}")
+    if out.resolve() == Path(xosc).resolve():
+        raise RenderError(f"{out}: the picture would overwrite the scene itself")
+    plan = read_plan(Path(xosc))
+    chosen_players(player)  # a clear error when that player cannot run here
+    odr = load_opendrive(plan.xodr)
+    trace = player_module(player).play(plan, seed=seed)
+    judged = report(plan, [judge(plan, trace, odr)])
+    verdict = verdict_from_report(judged, player)
+    write_atomic(out, render_bytes(odr, trace, cast_of(plan), verdict, out.suffix))
+    return verdict

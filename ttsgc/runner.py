@@ -37,7 +37,8 @@ def warm_pipeline(maps=None) -> None:
     import ttsgc.language  # noqa: F401
     import ttsgc.lowering  # noqa: F401
     import ttsgc.pipeline  # noqa: F401
-    import ttsgc.simulate.sumo  # noqa: F401 - the player (libsumo is loaded, no simulation is started)
+    import ttsgc.simulate.players.sumo  # noqa: F401 - libsumo is loaded; no simulation is started
+    import ttsgc.simulate.validate  # noqa: F401
     from ttsgc.roads.retrieve import load_library
 
     load_library(list(maps) if maps else None)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from pydantic import BaseModel, ConfigDict
 
 from ttsgc.binding.place import BoundAgent, PlacementError, place
@@ -41,37 +43,52 @@ def bind(scenario: Scenario, library: list[MapIndex], seed: int | None = None, s
          only: tuple[str, str] | None = None) -> BoundScene:
     """Bind a scenario to the best-ranked approach that placement can realise.
 
-    seed: --seed, else the scenario's seed, else 0. skip: leave out the first `skip` placeable candidates
-    (the simulator's retry asks for the next-ranked road). only: (map name, approach id) to bind to that
-    road alone (a TTSG plan's own road), or fail."""
+    seed: --seed, else the scenario's seed, else 0. skip: leave out the first `skip` placeable candidates.
+    only: (map name, approach id) to bind to that road alone (a TTSG plan's own road), or fail."""
+    for k, scene in enumerate(candidates(scenario, library, seed, only)):
+        if k == skip:
+            return scene
+    raise NoRoadError(f"no further candidate road for '{scenario.name}'")
+
+
+def candidates(scenario: Scenario, library: list[MapIndex], seed: int | None = None,
+               only: tuple[str, str] | None = None) -> Iterator[BoundScene]:
+    """The scene bound to each placeable approach, best-ranked first, placed only when asked for (lazily):
+    the caller takes the next when the scene fails on a road. Raises NoRoadError when no road can host the
+    scene at all (naming why), before yielding anything."""
     seed = seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
     approaches = retrieve(library, scenario.road)
-    candidates = [(a, m) for m in library for a in m.approaches if a in approaches]
+    pool = [(a, m) for m in library for a in m.approaches if a in approaches]
     if only is not None:
-        candidates = [(a, m) for a, m in candidates if (m.name, a.id) == only]
-        if not candidates:
+        pool = [(a, m) for a, m in pool if (m.name, a.id) == only]
+        if not pool:
             raise NoRoadError(f"{only[0]} {only[1]} does not meet the scene's road block")
-    requirements, ranked = rank(scenario, candidates, seed)
+    requirements, ranked = rank(scenario, pool, seed)
     unmeetable = [r.column for j, r in enumerate(requirements) if not any(c.met[j] for c in ranked)]
     if unmeetable:
         raise NoRoadError(f"no road can host the scene: of the {len(ranked)} approaches that meet the road block, "
                           f"none meets {', '.join(repr(c) for c in unmeetable)}\n"
                           + explain(requirements, ranked, limit=5))
+    return _placed(scenario, seed, requirements, ranked)
+
+
+def _placed(scenario: Scenario, seed: int, requirements: list[Requirement], ranked: list[Ranked]):
     reasons: list[str] = []
-    for candidate in ranked[: MAX_PLACEMENT_TRIES + skip]:
+    placed = 0
+    for candidate in ranked:
+        if placed == 0 and len(reasons) >= MAX_PLACEMENT_TRIES:
+            break
         odr = load_opendrive(candidate.index.path)
         try:
             agents = place(scenario, candidate.approach, candidate.index, odr)
         except PlacementError as exc:
             reasons.append(f"{candidate.index.name} {candidate.approach.id}: {exc}")
             continue
-        if skip:
-            skip -= 1
-            continue
-        return _scene(scenario, seed, candidate, requirements, ranked, agents)
-    if not reasons:
-        raise NoRoadError(f"no further candidate road for '{scenario.name}'")
-    raise NoRoadError("no candidate road can host the scene; the best candidates failed:\n  " + "\n  ".join(reasons))
+        placed += 1
+        yield _scene(scenario, seed, candidate, requirements, ranked, agents)
+    if not placed:
+        raise NoRoadError("no candidate road can host the scene; the best candidates failed:\n  "
+                          + "\n  ".join(reasons))
 
 
 def _scene(scenario: Scenario, seed: int, chosen: Ranked, requirements: list[Requirement], ranked: list[Ranked],

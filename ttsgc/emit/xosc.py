@@ -1,10 +1,18 @@
 """BoundScene -> OpenSCENARIO XML (1.0 to 1.3) with scenariogeneration.xosc, validated against the ASAM XSD.
 
-Entities carry a category and body per type (and their role from 1.2 on); Init teleports every first-stage
-agent to its lane position and sets its speed; one Story holds one Act per stage, each starting a stage's
-estimated duration after the previous act ends; every action is an Event triggered at once, after a delay or
-when an entity comes within a distance; the weather is an EnvironmentAction; a stop trigger always fires.
-Each agent's intent is written into its Properties (ttsgc:*) so a checker can read it from the file alone.
+A file means what the standard and the real players read in it, not what ttsgc's own player meant:
+- a lane position faces along its lane's driving direction with no Orientation of its own (esmini reads a
+  relative heading against the lane's direction, CARLA ScenarioRunner adds any h to it whatever its type);
+- Init places the first stage's agents; the agents of a later stage get no Init action (so they are inactive)
+  and enter with an AddEntityAction when their stage starts;
+- every trigger can fire: edge `none` on conditions that may already hold at the first evaluation, and
+  StoryboardElementStates CARLA accepts (completeState, endTransition);
+- people and bikes that cross or walk follow a polyline trajectory at their speed, standing until their trigger
+  (AcquirePositionAction is routing and collapses to no movement across a road);
+- the events of one maneuver run in parallel, so a later one never stops an earlier one.
+One Story holds one Act per stage, each starting when the previous act completes, a stage's estimated
+duration later; the weather is an EnvironmentAction; a stop trigger always fires. Each agent's intent is
+written into its Properties (ttsgc.intent) so a judge can read it from the file alone.
 """
 
 from __future__ import annotations
@@ -19,6 +27,7 @@ from lxml import etree
 from scenariogeneration import xosc
 from scenariogeneration.xosc.enumerations import VersionBase
 
+from ttsgc import intent as I
 from ttsgc import vocabulary as V
 from ttsgc.binding.place import BoundAgent, LanePos
 from ttsgc.binding.scene import BoundScene
@@ -27,7 +36,6 @@ from ttsgc.errors import TtsgcError
 VERSIONS = ("1.0", "1.1", "1.2", "1.3")
 DEFAULT_VERSION = "1.3"
 CREATION_DATE = dt.datetime(2026, 1, 1, 0, 0, 0)
-PROPERTY_PREFIX = "ttsgc:"
 
 CATEGORY = {"car": "car", "police": "car", "truck": "truck", "firetruck": "truck", "ambulance": "van", "bus": "bus",
             "motorcycle": "motorbike", "cyclist": "bicycle"}
@@ -64,11 +72,14 @@ def emit(scene: BoundScene, roadfile: str, version: str = DEFAULT_VERSION) -> by
     for agent in scene.agents:
         if agent.stage == 0 and agent.start is not None:
             init.add_init_action(agent.name, xosc.TeleportAction(_lane_position(agent.start)))
-            init.add_init_action(agent.name, xosc.AbsoluteSpeedAction(agent.speed_mps, step))
+            init.add_init_action(agent.name, xosc.AbsoluteSpeedAction(_initial_speed(agent), step))
     story = xosc.Story("story")
     durations = stage_durations(scene)
     for k, stage in enumerate(scene.scenario.stages):
         story.add_act(_act(scene, k, stage.name, durations, minor))
+    edge = _map_edge_act(scene, minor)
+    if edge is not None:
+        story.add_act(edge)
     stop = xosc.ValueTrigger("end", 0, xosc.ConditionEdge.rising,
                              xosc.SimulationTimeCondition(round(sum(durations) + 10.0, 3), xosc.Rule.greaterThan),
                              "stop")
@@ -84,10 +95,41 @@ def emit(scene: BoundScene, roadfile: str, version: str = DEFAULT_VERSION) -> by
 
 
 def _lane_position(pos: LanePos) -> xosc.LanePosition:
-    # Left lanes (ids > 0) drive against s: face along the lane's driving direction.
-    heading = xosc.Orientation(h=math.pi, reference=xosc.ReferenceContext.relative) if pos.lane > 0 else None
-    return xosc.LanePosition(pos.s, pos.offset, pos.lane, pos.road, heading) if heading else \
-        xosc.LanePosition(pos.s, pos.offset, pos.lane, pos.road)
+    """No Orientation: every player then faces the body along its lane's driving direction (left lanes,
+    ids > 0, included); any h would be added to that direction by esmini and CARLA alike."""
+    return xosc.LanePosition(pos.s, pos.offset, pos.lane, pos.road)
+
+
+def _map_edge_act(scene: BoundScene, minor: int) -> xosc.Act | None:
+    """A vehicle that runs out of road leaves the scene (DeleteEntityAction), as it leaves SUMO's network:
+    at a map's edge esmini stops it dead, and whoever follows would pile into it. An act of its own, never
+    waited for, so the stages do not wait for a vehicle to reach the edge."""
+    vehicles = [a for a in scene.agents if a.type != "pedestrian"]
+    if not vehicles:
+        return None
+    act = xosc.Act("map_edge", _always("map_edge_start", 0.0, minor))
+    for agent in vehicles:
+        event = xosc.Event(f"{agent.name}_leaves", xosc.Priority.parallel)
+        event.add_action("leave", xosc.DeleteEntityAction(agent.name))
+        event.add_trigger(xosc.EntityTrigger(f"{agent.name}_out_of_road", 0, xosc.ConditionEdge.none,
+                                             xosc.EndOfRoadCondition(0), agent.name))
+        maneuver = xosc.Maneuver(f"{agent.name}_edge")
+        maneuver.add_event(event)
+        group = xosc.ManeuverGroup(f"{agent.name}_edge_group")
+        group.add_actor(agent.name)
+        group.add_maneuver(maneuver)
+        act.add_maneuver_group(group)
+    return act
+
+
+def _trajectory_bound(agent: BoundAgent) -> bool:
+    """Whether the agent moves along a trajectory of its own (crossing, or walking the sidewalk)."""
+    return agent.cross_to is not None or agent.walk_to is not None
+
+
+def _initial_speed(agent: BoundAgent) -> float:
+    """Bodies that follow a trajectory stand until their action starts; the rest drive at their speed."""
+    return 0.0 if _trajectory_bound(agent) else agent.speed_mps
 
 
 def _entity(agent: BoundAgent, scene: BoundScene, minor: int):
@@ -103,12 +145,12 @@ def _entity(agent: BoundAgent, scene: BoundScene, minor: int):
         max_speed = 10.0 if agent.type == "cyclist" else 70.0
         entity = xosc.Vehicle(agent.name, getattr(xosc.VehicleCategory, CATEGORY[agent.type]), box, front, rear,
                               max_speed, 6.0, 9.0, role=role)
-    intent = {"action": agent.action, "position": agent.relative_to_ego or "ego", "road_type": agent.road_type,
-              "behavior": agent.behavior, "type": agent.type, "stage": str(agent.stage),
-              "is_ego": str(agent.is_ego).lower(), "movement": agent.movement or "",
-              "target_road": agent.target_road or "", "map": scene.map_name, "approach": scene.approach}
-    for key, value in intent.items():
-        entity.add_property(PROPERTY_PREFIX + key, value)
+    intent = {I.ACTION: agent.action, I.POSITION: agent.relative_to_ego or "ego", I.ROAD_TYPE: agent.road_type,
+              I.BEHAVIOR: agent.behavior, I.TYPE: agent.type, I.STAGE: str(agent.stage),
+              I.IS_EGO: str(agent.is_ego).lower(), I.MOVEMENT: agent.movement or "",
+              I.TARGET_ROAD: agent.target_road or "", I.MAP: scene.map_name, I.APPROACH: scene.approach}
+    for name, value in I.properties(intent):
+        entity.add_property(name, value)
     return entity
 
 
@@ -160,29 +202,26 @@ def stage_durations(scene: BoundScene) -> list[float]:
 def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: int) -> xosc.Act:
     acts = scene.scenario.stages
     if k == 0:
-        start = xosc.ValueTrigger(f"{name}_start", 0, xosc.ConditionEdge.none,
-                                  xosc.SimulationTimeCondition(0, xosc.Rule.greaterOrEqual if minor >= 1
-                                                               else xosc.Rule.greaterThan))
+        start = _always(f"{name}_start", 0.0, minor)
     else:
         ego = next(a for a in scene.agents if a.is_ego)
         if k == 1 and ego.route:  # the ego's movement ends the first stage: when it reaches the far road
-            start = xosc.EntityTrigger(f"{name}_start", 0, xosc.ConditionEdge.rising,
+            start = xosc.EntityTrigger(f"{name}_start", 0, xosc.ConditionEdge.none,
                                        xosc.DistanceCondition(10.0, xosc.Rule.lessThan, _lane_position(ego.route[-1]),
                                                               alongroute=False, freespace=False,
                                                               distance_type=_EUCLIDEAN[minor >= 1]), ego.name)
         else:
-            start = xosc.ValueTrigger(f"{name}_start", durations[k - 1], xosc.ConditionEdge.rising,
+            start = xosc.ValueTrigger(f"{name}_start", durations[k - 1], xosc.ConditionEdge.none,
                                       xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.act,
                                                                            acts[k - 1].name,
-                                                                           xosc.StoryboardElementState.endTransition))
+                                                                           xosc.StoryboardElementState.completeState))
     act = xosc.Act(name, start)
-    priority = xosc.Priority.override if minor >= 2 else xosc.Priority.overwrite
     for agent in scene.agents:
         if agent.stage != k:
             continue
         maneuver = xosc.Maneuver(f"{agent.name}_maneuver")
-        for event_name, actions, trigger in _events(agent, scene, name, minor):
-            event = xosc.Event(event_name, priority)
+        for event_name, actions, trigger in _events(agent, scene, minor):
+            event = xosc.Event(event_name, xosc.Priority.parallel)
             for action_name, action in actions:
                 event.add_action(action_name, action)
             event.add_trigger(trigger)
@@ -194,22 +233,28 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
     return act
 
 
-def _start_trigger(agent: BoundAgent, stage_name: str, label: str, minor: int):
-    """When the agent's action starts: at once, after a delay, when someone is within reach, or both."""
+def _always(label: str, delay: float, minor: int) -> xosc.ValueTrigger:
+    """A condition true from the moment it is first evaluated (when its act runs), firing `delay` s later.
+    1.0 has no greaterOrEqual: there it holds from the first step after t = 0."""
+    rule = xosc.Rule.greaterOrEqual if minor >= 1 else xosc.Rule.greaterThan
+    return xosc.ValueTrigger(label, delay, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, rule))
+
+
+def _start_trigger(agent: BoundAgent, label: str, minor: int):
+    """When the agent's action starts: at once, after a delay, when someone is within reach, or both. Edge
+    `none`: someone already within reach at the first evaluation starts the action then (a rising edge
+    would wait for ever)."""
     t = agent.trigger
     conditions = []
     if t is not None and t.within_m is not None:
-        conditions.append(xosc.EntityTrigger(f"{label}_near", 0, xosc.ConditionEdge.rising,
+        conditions.append(xosc.EntityTrigger(f"{label}_near", 0, xosc.ConditionEdge.none,
                                              xosc.RelativeDistanceCondition(t.within_m, xosc.Rule.lessThan,
                                                                             _EUCLIDEAN[minor >= 1],
                                                                             t.of, alongroute=False, freespace=False),
                                              agent.name))
     delay = t.after_s if t is not None and t.after_s is not None else 0.0
     if delay or not conditions:
-        conditions.append(xosc.ValueTrigger(f"{label}_time", delay, xosc.ConditionEdge.none,
-                                            xosc.StoryboardElementStateCondition(
-                                                xosc.StoryboardElementType.act, stage_name,
-                                                xosc.StoryboardElementState.runningState)))
+        conditions.append(_always(f"{label}_time", delay, minor))
     if len(conditions) == 1:
         return conditions[0]
     group = xosc.ConditionGroup()
@@ -221,48 +266,66 @@ def _start_trigger(agent: BoundAgent, stage_name: str, label: str, minor: int):
 
 
 _EUCLIDEAN = {False: xosc.RelativeDistanceType.cartesianDistance, True: xosc.RelativeDistanceType.euclidianDistance}
+WALK_VERTEX_M = 5.0  # vertex spacing of a walk along a sidewalk, so the polyline follows a curved road
 
 
-def _events(agent: BoundAgent, scene: BoundScene, stage_name: str, minor: int):
-    """(event name, [(action name, action)], trigger) for each step of the agent's action."""
-    now = xosc.ValueTrigger(f"{agent.name}_at_once", 0, xosc.ConditionEdge.none,
-                            xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.act, stage_name,
-                                                                 xosc.StoryboardElementState.runningState))
+def _trajectory(agent: BoundAgent, minor: int) -> xosc.FollowTrajectoryAction:
+    """A polyline from where it stands to where it goes, followed at the body's own speed (TimeReference None;
+    1.0 requires a time on every vertex: their order, which the players then ignore)."""
+    start = agent.start
+    if agent.cross_to is not None:
+        points = [start, agent.cross_to]
+    else:
+        end = agent.walk_to
+        steps = max(1, math.ceil(abs(end.s - start.s) / WALK_VERTEX_M))
+        points = [start.model_copy(update={"s": round(start.s + (end.s - start.s) * k / steps, 3)})
+                  for k in range(steps + 1)]
+    trajectory = xosc.Trajectory(f"{agent.name}_path", False)
+    times = [float(k) for k in range(len(points))] if minor == 0 else []
+    trajectory.add_shape(xosc.Polyline(times, [_lane_position(p) for p in points]))
+    return xosc.FollowTrajectoryAction(trajectory, xosc.FollowingMode.position)
+
+
+def _events(agent: BoundAgent, scene: BoundScene, minor: int):
+    """(event name, [(action name, action)], trigger) for each step of the agent's action; the events of one
+    maneuver run in parallel."""
     step = xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0)
     events = []
-    if agent.appear is not None:  # joins the scene now, beside the ego as it is at this moment
-        ego = next(a.name for a in scene.agents if a.is_ego)
-        position = xosc.RelativeLanePosition(agent.appear.dlane, ego, 0, ds=agent.appear.ds)
-        events.append((f"{agent.name}_appears", [("appear", xosc.TeleportAction(position)),
-                                                 ("set_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step))],
-                       now))
-    label = f"{agent.name}_{agent.action}"
-    start = _start_trigger(agent, stage_name, label, minor)
-    actions = []
-    if agent.route:  # where it drives is set at once; the action itself may wait for its trigger
+    setup = []  # done when its act starts: entering (later stages) and the route
+    if agent.stage > 0:  # inactive until its stage: it enters now, where it stands or beside the ego as it is now
+        if agent.appear is not None:
+            ego = next(a.name for a in scene.agents if a.is_ego)
+            position = xosc.RelativeLanePosition(agent.appear.dlane, ego, 0, ds=agent.appear.ds)
+        else:
+            position = _lane_position(agent.start)
+        setup += [("enter", xosc.AddEntityAction(agent.name, position)),
+                  ("set_speed", xosc.AbsoluteSpeedAction(_initial_speed(agent), step))]
+    if agent.route:
         route = xosc.Route(f"{agent.name}_route")
         for point in agent.route:
             route.add_waypoint(_lane_position(point), xosc.RouteStrategy.shortest)
-        route_action = ("route", xosc.AssignRouteAction(route))
-        if agent.trigger is None:
-            actions.append(route_action)
-        else:
-            events.append((f"{agent.name}_route", [route_action], now))
+        setup.append(("route", xosc.AssignRouteAction(route)))
+    label = f"{agent.name}_{agent.action}"
+    actions = []
     if agent.lane_change is not None:
         actions.append(("lane_change", xosc.RelativeLaneChangeAction(
             agent.lane_change, agent.name,
             xosc.TransitionDynamics(xosc.DynamicsShapes.sinusoidal, xosc.DynamicsDimension.time, 3.0))))
-    if agent.cross_to is not None:
-        actions.append(("cross", xosc.AcquirePositionAction(_lane_position(agent.cross_to))))
-    if agent.walk_to is not None:
-        actions.append(("walk", xosc.AcquirePositionAction(_lane_position(agent.walk_to))))
+    if _trajectory_bound(agent):
+        actions += [("walk_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step)),
+                    ("path", _trajectory(agent, minor))]
     if agent.action in ("stop", "block_the_ego"):
         brake = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}[agent.behavior]
         actions.append(("brake", xosc.AbsoluteSpeedAction(
             0, xosc.TransitionDynamics(xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, brake))))
-    if not actions:  # go_straight on an open road: hold the speed
+    if not actions and agent.stage == 0:  # go_straight: hold the speed (a later agent enters with it)
         actions.append(("keep_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step)))
-    events.append((label, actions, start))
+    if setup and (agent.trigger is not None or agent.stage > 0):  # entering and the route at once; the action
+        # waits for its trigger, or for the body to be in the scene
+        events.append((f"{agent.name}_{'enters' if agent.stage > 0 else 'route'}", setup,
+                       _always(f"{agent.name}_setup", 0.0, minor)))
+        setup = []
+    events.append((label, setup + actions, _start_trigger(agent, label, minor)))
     return events
 
 

@@ -1,1 +1,1 @@
-"""Running scenes in SUMO: the network (netconvert of the scene's OpenDRIVE map)."""
+"""Proving scenes: read a file into a Plan, play it (players/), judge the traces (judge.py)."""

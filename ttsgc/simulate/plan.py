@@ -1,5 +1,6 @@
-""".xosc -> a plan the SUMO executor can run, read from the file itself (not from the compiler's data), so
-hand-edited files run too. Everything the executor cannot do is listed by name instead of being ignored."""
+""".xosc -> Plan: what the file says, read from the file itself (not from the compiler's data), so hand-edited
+files play too. Players turn a Plan into a Trace; the judge reads the Plan's intents. The reader is tolerant:
+what it cannot read is listed by name in `unsupported` instead of being ignored or raising."""
 
 from __future__ import annotations
 
@@ -8,9 +9,8 @@ from pathlib import Path
 
 from lxml import etree
 
+from ttsgc import intent as I
 from ttsgc.errors import ExitCode, TtsgcError
-
-PREFIX = "ttsgc:"
 
 
 class ScenarioFileError(TtsgcError):
@@ -19,24 +19,30 @@ class ScenarioFileError(TtsgcError):
 
 @dataclass(frozen=True)
 class Condition:
-    kind: str  # time | state | distance | reach | never
+    kind: str  # time | state | distance | reach | end_of_road | never
     delay: float = 0.0
     value: float = 0.0
     ref: str = ""  # act name (state) or entity (distance)
     state: str = ""
     triggering: str = ""  # the entity whose distance counts
     position: tuple[str, int, float] | None = None  # reach: the lane position to come within value of
+    rule: str = "greaterThan"  # time: how the simulation time compares with value
+    edge: str = "none"  # none | rising | falling | risingOrFalling: which change of the condition counts
+    entities: tuple[str, ...] = ()  # every triggering entity (any of them)
 
 
 @dataclass(frozen=True)
 class Action:
-    kind: str  # teleport | appear | speed | lane_change | route | acquire | environment
+    kind: str  # teleport | add | delete | speed | lane_change | route | acquire | trajectory
     lane: tuple[str, int, float] | None = None  # (road, lane, s)
     relative: tuple[str, int, float] | None = None  # (entity, dlane, ds)
     value: float = 0.0
     rate: float | None = None  # m/s2 for linear speed changes
     duration: float = 0.0
-    waypoints: tuple[tuple[str, int, float], ...] = ()
+    waypoints: tuple[tuple[str, int, float], ...] = ()  # a route's waypoints, a trajectory's vertices
+    absolute: bool = False  # lane_change: value is a target lane id, not a number of lanes to the left
+    entity: str = ""  # add: the entity an AddEntityAction brings in (a global action names it itself)
+    orientation: tuple[str, float] | None = None  # a lane position's Orientation: (type, h), None when absent
 
 
 @dataclass
@@ -63,6 +69,7 @@ class Entity:
     length: float
     width: float
     intent: dict[str, str]
+    x_offset: float = 0.0  # the bounding box centre ahead of the entity's reference point
 
 
 @dataclass
@@ -80,7 +87,35 @@ def _lane(position) -> tuple[str, int, float] | None:
     lane = position.find("LanePosition") if position is not None else None
     if lane is None:
         return None
-    return lane.get("roadId"), int(lane.get("laneId")), float(lane.get("s"))
+    try:
+        return lane.get("roadId"), int(lane.get("laneId")), float(lane.get("s"))
+    except (TypeError, ValueError):
+        return None
+
+
+def _relative(position) -> tuple[str, int, float] | None:
+    relative = position.find("RelativeLanePosition") if position is not None else None
+    if relative is None:
+        return None
+    try:
+        return relative.get("entityRef"), int(relative.get("dLane")), float(relative.get("ds", "0") or 0)
+    except (TypeError, ValueError):
+        return None
+
+
+def _placing(kind: str, position, entity: str = "") -> Action | None:
+    """A teleport or an AddEntityAction to a lane position or beside another entity (appear)."""
+    lane = _lane(position)
+    if lane is not None:
+        turn = position.find("LanePosition/Orientation")
+        orientation = None
+        if turn is not None and turn.get("h") is not None:
+            orientation = (turn.get("type", "relative"), _float(turn, "h", 0.0))
+        return Action(kind, lane=lane, entity=entity, orientation=orientation)
+    relative = _relative(position)
+    if relative is not None:
+        return Action(kind, relative=relative, entity=entity)
+    return None
 
 
 class _Reader:
@@ -100,48 +135,61 @@ class _Reader:
         return groups
 
     def condition(self, c) -> Condition:
+        """One Condition; anything unreadable becomes a named `never` (the trigger then waits for ever, as a
+        player would, and the report says why)."""
+        try:
+            return self._condition(c)
+        except (TypeError, ValueError, IndexError, AttributeError):
+            self.missing(f"condition '{c.get('name', '?')}' (unreadable values)")
+            return Condition("never")
+
+    def _condition(self, c) -> Condition:
         delay = float(c.get("delay", "0") or 0)
+        edge = c.get("conditionEdge", "none")
         value_condition = c.find("ByValueCondition")
         entity_condition = c.find("ByEntityCondition")
         if value_condition is not None:
             inner = value_condition[0]
             tag = etree.QName(inner).localname
             if tag == "SimulationTimeCondition":
-                return Condition("time", delay, float(inner.get("value")))
+                return Condition("time", delay, float(inner.get("value")), rule=inner.get("rule", "greaterThan"),
+                                 edge=edge)
             if tag == "StoryboardElementStateCondition":
-                return Condition("state", delay, ref=inner.get("storyboardElementRef"), state=inner.get("state"))
+                return Condition("state", delay, ref=inner.get("storyboardElementRef"), state=inner.get("state"),
+                                 edge=edge)
             self.missing(f"condition {tag}")
             return Condition("never")
         if entity_condition is not None:
             triggering = entity_condition.find("TriggeringEntities/EntityRef")
             inner = entity_condition.find("EntityCondition")[0]
             tag = etree.QName(inner).localname
+            who = triggering.get("entityRef") if triggering is not None else ""
+            everyone = tuple(e.get("entityRef") for e in entity_condition.findall("TriggeringEntities/EntityRef"))
+            if tag == "EndOfRoadCondition":
+                return Condition("end_of_road", delay, float(inner.get("duration", "0") or 0), edge=edge,
+                                 entities=everyone)
             if tag == "DistanceCondition" and inner.get("rule") in ("lessThan", "lessOrEqual") and \
                     _lane(inner.find("Position")) is not None:
                 return Condition("reach", delay, float(inner.get("value")), position=_lane(inner.find("Position")),
-                                 triggering=triggering.get("entityRef") if triggering is not None else "")
+                                 triggering=who, edge=edge)
             if tag == "RelativeDistanceCondition" and inner.get("rule") in ("lessThan", "lessOrEqual"):
                 return Condition("distance", delay, float(inner.get("value")), ref=inner.get("entityRef"),
-                                 triggering=triggering.get("entityRef") if triggering is not None else "")
+                                 triggering=who, edge=edge)
             self.missing(f"condition {tag}")
             return Condition("never")
         self.missing("condition of unknown kind")
         return Condition("never")
 
     def action(self, private) -> Action | None:
+        if not len(private):
+            return None
         first = private[0]
         tag = etree.QName(first).localname
         if tag == "TeleportAction":
-            position = first.find("Position")
-            lane = _lane(position)
-            if lane is not None:
-                return Action("teleport", lane=lane)
-            relative = position.find("RelativeLanePosition") if position is not None else None
-            if relative is not None:
-                return Action("appear", relative=(relative.get("entityRef"), int(relative.get("dLane")),
-                                                  float(relative.get("ds", "0"))))
-            self.missing("TeleportAction to a position other than LanePosition / RelativeLanePosition")
-            return None
+            placed = _placing("teleport", first.find("Position"))
+            if placed is None:
+                self.missing("TeleportAction to a position other than LanePosition / RelativeLanePosition")
+            return placed
         if tag == "LongitudinalAction" and first.find("SpeedAction") is not None:
             speed = first.find("SpeedAction")
             target = speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
@@ -155,13 +203,15 @@ class _Reader:
             return Action("speed", value=float(target.get("value")), rate=rate)
         if tag == "LateralAction" and first.find("LaneChangeAction") is not None:
             change = first.find("LaneChangeAction")
-            target = change.find("LaneChangeTarget/RelativeTargetLane")
-            if target is None:
-                self.missing("LaneChangeAction with an absolute target lane")
-                return None
             dynamics = change.find("LaneChangeActionDynamics")
-            return Action("lane_change", value=float(target.get("value")),
-                          duration=float(dynamics.get("value", "3")) if dynamics is not None else 3.0)
+            duration = float(dynamics.get("value", "3")) if dynamics is not None else 3.0
+            relative = change.find("LaneChangeTarget/RelativeTargetLane")
+            absolute = change.find("LaneChangeTarget/AbsoluteTargetLane")
+            if relative is not None:
+                return Action("lane_change", value=float(relative.get("value")), duration=duration,
+                              entity=relative.get("entityRef", ""))
+            if absolute is not None:
+                return Action("lane_change", value=float(absolute.get("value")), duration=duration, absolute=True)
         if tag == "RoutingAction":
             route = first.find("AssignRouteAction/Route")
             if route is not None:
@@ -170,6 +220,14 @@ class _Reader:
             acquire = first.find("AcquirePositionAction/Position")
             if acquire is not None and _lane(acquire) is not None:
                 return Action("acquire", lane=_lane(acquire))
+            follow = first.find("FollowTrajectoryAction")
+            vertices = follow.findall(".//Trajectory/Shape/Polyline/Vertex") if follow is not None else []
+            if vertices:
+                points = tuple(_lane(v.find("Position")) for v in vertices)
+                if all(points):
+                    return Action("trajectory", waypoints=points)
+                self.missing("a trajectory vertex other than a LanePosition")
+                return None
         self.missing(f"action {tag}" + (f"/{etree.QName(first[0]).localname}" if len(first) else ""))
         return None
 
@@ -180,8 +238,38 @@ def read_plan(path: str | Path) -> Plan:
         root = etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True)).getroot()
     except (OSError, etree.XMLSyntaxError) as exc:
         raise ScenarioFileError(f"{path}: cannot read the OpenSCENARIO file: {exc}") from None
+    return plan_of(root, path)
+
+
+def _float(element, name: str, default: float) -> float:
+    try:
+        return float(element.get(name)) if element is not None and element.get(name) is not None else default
+    except ValueError:
+        return default
+
+
+def _event_action(reader: _Reader, element) -> Action | None:
+    """One action of an event: a private action for the event's actors, or an entity's entering or leaving."""
+    tag = etree.QName(element).localname if isinstance(element.tag, str) else ""
+    if tag == "PrivateAction":
+        return reader.action(element)
+    entity_action = element.find("EntityAction") if tag == "GlobalAction" else None
+    if entity_action is not None and entity_action.find("AddEntityAction") is not None:
+        placed = _placing("add", entity_action.find("AddEntityAction/Position"), entity_action.get("entityRef", ""))
+        if placed is None:
+            reader.missing("AddEntityAction to a position other than LanePosition / RelativeLanePosition")
+        return placed
+    if entity_action is not None and entity_action.find("DeleteEntityAction") is not None:
+        return Action("delete", entity=entity_action.get("entityRef", ""))
+    if tag:
+        reader.missing(f"{tag} inside an event" + (f" ({etree.QName(element[0]).localname})" if len(element) else ""))
+    return None
+
+
+def plan_of(root, path: Path) -> Plan:
+    """The Plan of a parsed OpenSCENARIO tree (lxml root); path is where the file lies (the map is relative)."""
     logic = root.find("RoadNetwork/LogicFile")
-    if logic is None:
+    if logic is None or not logic.get("filepath"):
         raise ScenarioFileError(f"{path}: the file names no road network (RoadNetwork/LogicFile)")
     xodr = (path.parent / logic.get("filepath")).resolve()
     if not xodr.is_file():
@@ -197,11 +285,12 @@ def read_plan(path: str | Path) -> Plan:
             reader.missing("a ScenarioObject that is neither Vehicle nor Pedestrian (catalog references)")
             continue
         dims = body.find("BoundingBox/Dimensions")
-        intent = {p.get("name")[len(PREFIX):]: p.get("value") for p in body.findall("Properties/Property")
-                  if p.get("name", "").startswith(PREFIX)}
+        centre = body.find("BoundingBox/Center")
+        intent = I.read({p.get("name", ""): p.get("value", "") for p in body.findall("Properties/Property")})
         entities[obj.get("name")] = Entity(obj.get("name"), kind, body.get("vehicleCategory") or
                                            body.get("pedestrianCategory") or "pedestrian", body.get("role", "none"),
-                                           float(dims.get("length")), float(dims.get("width")), intent)
+                                           _float(dims, "length", 4.5), _float(dims, "width", 1.8), intent,
+                                           _float(centre, "x", 0.0))
     init: dict[str, list[Action]] = {}
     for private in root.findall("Storyboard/Init/Actions/Private"):
         for action in private.findall("PrivateAction"):
@@ -214,9 +303,10 @@ def read_plan(path: str | Path) -> Plan:
         for group in act.findall("ManeuverGroup"):
             actors = [e.get("entityRef") for e in group.findall("Actors/EntityRef")]
             for event in group.iter("Event"):
-                actions = [reader.action(a) for a in event.iter("PrivateAction")]
-                if any(etree.QName(a).localname == "GlobalAction" for a in event.iter("Action") for a in a):
-                    reader.missing("a GlobalAction inside an event")
+                actions = []
+                for action in event.findall("Action"):
+                    for kind in action:
+                        actions.append(_event_action(reader, kind))
                 events.append(Event(event.get("name"), actors[0] if actors else "",
                                     [a for a in actions if a is not None], reader.trigger(event.find("StartTrigger"))))
         acts.append(Act(act.get("name"), reader.trigger(act.find("StartTrigger")), events))

@@ -1,11 +1,13 @@
-"""Run a .xosc in SUMO through libsumo: fixed 0.1 s steps, one simulation at a time, deterministic.
+"""Play a Plan in SUMO through libsumo: fixed 0.1 s steps, one simulation at a time, deterministic.
 
-OpenDRIVE lane positions become SUMO lanes through the lanes' original ids (road_lane) and the net offset;
-vehicles drive SUMO's car-following model with the speeds, routes and lane changes the file commands.
-Bodies SUMO has no lane for are moved by the executor itself: people (along their sidewalk, or in a
-straight line across the road, mid-block included) and anything on a shoulder, which SUMO's OpenDRIVE
-import discards. SUMO's drivers do not see those bodies; the checks and the collision test do.
-The run records every body's position, heading and speed.
+The file means what the standard says: lane positions face along their lane, an entity without Init actions
+waits for its AddEntityAction, condition edges and delays count, routes are routed, lane changes happen as
+written (whoever is alongside). OpenDRIVE lane positions become SUMO lanes through the lanes' original ids
+(road_lane) and the net offset; vehicles drive SUMO's car-following model with the speeds and routes the file
+commands. Bodies SUMO has no lane for are moved by the player itself: people (along their sidewalk, or along
+their trajectory), anything on a shoulder (SUMO's OpenDRIVE import discards shoulders) and anything given a
+trajectory. SUMO's drivers do not see those bodies, so the player makes them: a vehicle slows for a moved body
+in its path. The run becomes a Trace of every body's position, heading and speed.
 """
 
 from __future__ import annotations
@@ -18,11 +20,16 @@ from pathlib import Path
 from lxml import etree
 
 from ttsgc.roads.opendrive import OpenDrive, load_opendrive
-from ttsgc.simulate.network import Network, network_for
-from ttsgc.simulate.xosc_plan import Action, Condition, Entity, Event, Plan
+from ttsgc.simulate import trace as T
+from ttsgc.simulate.plan import Action, Condition, Entity, Event, Plan
+from ttsgc.simulate.players.sumo.network import Network, network_for
 
+NAME = "sumo"
 STEP_S = 0.1
 TIME_LIMIT_S = 180.0
+LOOK_AHEAD_M = 30.0  # how far ahead a driver watches for a body the player moves
+PATH_HALF_WIDTH_M = 1.8  # a moved body this close to a vehicle's line of travel is in its path
+COMFORT_BRAKE = 4.0  # m/s2
 VCLASS = {"car": "passenger", "van": "delivery", "truck": "truck", "bus": "bus", "motorbike": "motorcycle",
           "bicycle": "bicycle", "semitrailer": "trailer"}
 
@@ -54,6 +61,9 @@ class Mover:
     target: tuple[float, float] | None = None
     target_speed: float | None = None
     rate: float | None = None
+    path: list[tuple[float, float]] = field(default_factory=list)  # trajectory vertices still ahead
+    path_event: str = ""  # the event whose trajectory it follows (ends when the path does)
+    goal_s: float | None = None  # routed along its lane to this s of its road (AcquirePositionAction)
 
 
 @dataclass
@@ -81,6 +91,9 @@ class Run:
     fired: dict[str, float] = field(default_factory=dict)  # event -> time
     act_start: dict[str, float] = field(default_factory=dict)
     act_end: dict[str, float] = field(default_factory=dict)
+    event_end: dict[str, float] = field(default_factory=dict)
+    stopped_by_trigger: bool = False
+    out_of_road: set[str] = field(default_factory=set)  # left the network at a dead end, or stood at its end
     collisions: list[Collision] = field(default_factory=list)
     problems: list[str] = field(default_factory=list)  # actions that could not be carried out
     end_time: float = 0.0
@@ -158,6 +171,10 @@ class Executor:
         self.present: set[str] = set()  # added to SUMO (perhaps not yet inserted)
         self.joined: set[tuple[str, str]] = set()  # (event, entity) that brought the entity in
         self.active: set[str] = set()  # seen in the simulation at least once
+        self.previous: dict[int, bool] = {}  # condition (by identity) -> its value at the last evaluation
+        self.since: dict[int, float] = {}  # condition (by identity) -> when its edge was met (its delay runs)
+        self.commanded: dict[str, float] = {}  # vehicle -> the speed the file last set
+        self.yielding: set[str] = set()  # vehicles slowed for a moved body in their path
 
     # -- coordinates --------------------------------------------------------------------------------------
     def world(self, road: str, lane: int, s: float) -> tuple[float, float, float]:
@@ -187,12 +204,30 @@ class Executor:
         return road, int(lane_number)
 
     # -- spawning -----------------------------------------------------------------------------------------
-    def spawn(self, entity: Entity, position: tuple[str, int, float], speed: float, t: float) -> None:
+    def against_its_lane(self, position: tuple[str, int, float], orientation: tuple[str, float] | None) -> bool:
+        """Whether an Orientation turns a body on a lane position against the lane's driving direction: a
+        relative h is read against the lane's direction (as esmini and CARLA do), an absolute one in the world."""
+        if orientation is None:
+            return False
+        kind, h = orientation
+        if kind == "relative":
+            return math.cos(h) < 0
+        road, lane, s = position
+        lane_heading = self.odr.roads[road].lane_point(s, lane).hdg + (math.pi if lane > 0 else 0.0)
+        return math.cos(h - lane_heading) < 0
+
+    def spawn(self, entity: Entity, position: tuple[str, int, float], speed: float, t: float,
+              orientation: tuple[str, float] | None = None) -> None:
         import libsumo as ts
 
         road, lane, s = position
         if road not in self.odr.roads or lane not in self.odr.roads[road].section_at(s).lanes:
             self.run.spawns[entity.name] = Spawn(False, f"road {road} has no lane {lane} at s={s:g}", (road, lane))
+            return
+        if entity.kind == "vehicle" and entity.intent.get("road_type", "driving") == "driving" and \
+                self.against_its_lane(position, orientation):
+            self.run.spawns[entity.name] = Spawn(False, f"its Orientation turns it against the driving direction "
+                                                        f"of road {road} lane {lane}", (road, lane))
             return
         if entity.kind == "pedestrian" or entity.intent.get("road_type") == "shoulder":
             pose = self.odr.roads[road].lane_point(s, lane)
@@ -221,8 +256,10 @@ class Executor:
             front = min(pos + entity.length / 2, _length(sumo_lane.shape) - 0.05)
             ts.vehicle.add(entity.name, f"route_{entity.name}", typeID=type_id, depart="now",
                            departLane=str(sumo_lane.index), departPos=f"{front:.2f}", departSpeed=f"{speed:.3f}")
-            ts.vehicle.setLaneChangeMode(entity.name, 0b000100000000)  # no lane changes of its own
+            # no lane changes of its own; the file's lane changes happen as written, whoever is alongside
+            ts.vehicle.setLaneChangeMode(entity.name, 0)
             ts.vehicle.setSpeed(entity.name, speed)
+            self.commanded[entity.name] = speed
         self.present.add(entity.name)
         got = self.odr_of(sumo_lane.id)
         ok = got == (road, lane)
@@ -238,14 +275,24 @@ class Executor:
             self.run.problems.append(f"{event.name}: no entity '{actor}'")
             return
         try:
-            if action.kind == "teleport" and actor not in self.present:
-                speed = next((a.value for a in event.actions if a.kind == "speed"), 0.0)
-                self.spawn(entity, action.lane, speed, t)
-                self.joined.add((event.name, actor))
-            elif action.kind == "appear":
-                self._appear(entity, action, event, t)
-                self.joined.add((event.name, actor))
-            elif action.kind == "speed" and (event.name, actor) in self.joined:
+            if action.kind == "add":
+                added = self.plan.entities.get(action.entity or actor)
+                if added is None:
+                    self.run.problems.append(f"{event.name}: no entity '{action.entity}' to add")
+                elif added.name in self.present:
+                    self.run.problems.append(f"{event.name}: '{added.name}' is already in the scene")
+                elif action.lane is not None:
+                    speed = next((a.value for a in event.actions if a.kind == "speed"), 0.0)
+                    self.spawn(added, action.lane, speed, t, action.orientation)
+                else:
+                    self._appear(added, action, event, t)
+                self.joined.add((event.name, added.name) if added is not None else (event.name, actor))
+            elif action.kind == "delete":
+                self._delete(action.entity or actor)
+            elif action.kind == "teleport" and actor not in self.present:
+                self.run.problems.append(f"{event.name}: '{actor}' has no Init action, so it is not in the scene "
+                                         f"until an AddEntityAction brings it in; a TeleportAction cannot")
+            elif action.kind == "speed" and not action.rate and (event.name, actor) in self.joined:
                 return  # it entered with this speed
             elif actor not in self.present:
                 self.run.problems.append(f"{event.name}: '{actor}' is not in the simulation")
@@ -253,8 +300,10 @@ class Executor:
                 self._move_order(self.movers[actor], action, event)
             elif action.kind == "speed":
                 self._speed(entity, action, t)
+            elif action.kind == "trajectory":
+                self._follow(entity, action, event)
             elif action.kind == "lane_change":
-                index = ts.vehicle.getLaneIndex(actor) + int(action.value)
+                index = self._target_index(actor, action)
                 lanes = ts.edge.getLaneNumber(ts.vehicle.getRoadID(actor))
                 if not 0 <= index < lanes or not self._drivable(ts.vehicle.getRoadID(actor), index):
                     self.run.problems.append(f"{event.name}: '{actor}' has no lane {int(action.value):+d} to change to")
@@ -267,15 +316,68 @@ class Executor:
         except Exception as exc:  # noqa: BLE001 - a command SUMO refuses is a failed action, reported
             self.run.problems.append(f"{event.name}: {action.kind} failed in SUMO: {exc}")
 
+    def _delete(self, name: str) -> None:
+        import libsumo as ts
+
+        if name in self.movers:
+            del self.movers[name]
+        elif name in self.present and name in ts.vehicle.getIDList():
+            ts.vehicle.remove(name)
+        self.present.discard(name)
+
+    def _target_index(self, actor: str, action: Action) -> int:
+        """The SUMO lane index a lane change aims at: relative (lanes to the left) or an OpenDRIVE lane id."""
+        import libsumo as ts
+
+        index = ts.vehicle.getLaneIndex(actor)
+        if not action.absolute:
+            return index + int(action.value)
+        edge = ts.vehicle.getRoadID(actor)
+        road, _ = self.odr_of(ts.vehicle.getLaneID(actor))
+        target = next((lane for lane in self.by_orig.get(f"{road}_{int(action.value)}", []) if lane.edge == edge), None)
+        return target.index if target is not None else -1
+
+    def _follow(self, entity: Entity, action: Action, event: Event) -> None:
+        """A trajectory: the player moves the body along its vertices at its own speed (a SUMO vehicle leaves
+        SUMO's hands for it)."""
+        import libsumo as ts
+
+        points = []
+        for road, lane, s in action.waypoints:
+            if road not in self.odr.roads:
+                self.run.problems.append(f"{event.name}: the trajectory names road {road}, which does not exist")
+                return
+            pose = self.odr.roads[road].lane_point(min(max(s, 0.0), self.odr.roads[road].length), lane)
+            points.append((pose.x, pose.y))
+        mover = self.movers.get(entity.name)
+        if mover is None:  # a vehicle: take it out of SUMO where it is
+            last = self.last(entity.name)
+            if last is None:
+                self.run.problems.append(f"{event.name}: '{entity.name}' is not on a road to leave from")
+                return
+            speed = ts.vehicle.getSpeed(entity.name)
+            ts.vehicle.remove(entity.name)
+            mover = Mover(last.x, last.y, last.heading, speed, last.road, last.lane or -1, 0.0)
+            self.movers[entity.name] = mover
+        if points and math.hypot(points[0][0] - mover.x, points[0][1] - mover.y) < 0.5:
+            points = points[1:]
+        mover.path, mover.target, mover.path_event = points, None, event.name
+        if mover.speed <= 0.01 and not mover.target_speed:
+            mover.speed = 1.0
+
     def _move_order(self, mover: Mover, action: Action, event: Event) -> None:
         """An action for a body the executor moves: a speed, or a position to walk (or roll) to."""
         if action.kind == "speed":
             mover.target_speed, mover.rate = action.value, action.rate
             if not action.rate:
                 mover.speed = action.value
+        elif action.kind == "trajectory":
+            self._follow(self.plan.entities[event.actor], action, event)
         elif action.kind == "acquire":
-            pose = self.odr.roads[action.lane[0]].lane_point(action.lane[2], action.lane[1])
-            mover.target = (pose.x, pose.y)
+            # routing, as the standard says: along its own lane to the target's s on the same road (a target
+            # across the road at the same s is reached where it stands); elsewhere, on along its lane
+            road, _, s = action.lane
+            mover.goal_s = s if road == mover.road else None
             if mover.speed <= 0.01:
                 mover.speed = 1.0
         else:
@@ -314,6 +416,7 @@ class Executor:
             self.holds.append((t + duration, entity.name, action.value))
         else:
             ts.vehicle.setSpeed(entity.name, action.value)
+        self.commanded[entity.name] = action.value
 
     def _route(self, entity: Entity, action: Action, event: Event) -> None:
         import libsumo as ts
@@ -321,9 +424,11 @@ class Executor:
         current = ts.vehicle.getRoadID(entity.name)
         if current.startswith(":"):
             current = ts.vehicle.getRoute(entity.name)[ts.vehicle.getRouteIndex(entity.name)]
-        edges = [current]
+        edges, last_lane = [current], None
         for point in action.waypoints:
             mapped = self.to_sumo(*point)
+            if mapped is not None:
+                last_lane = mapped[0].id
             if mapped is None or mapped[0].edge == edges[-1]:
                 continue
             found = ts.simulation.findRoute(edges[-1], mapped[0].edge, vType=ts.vehicle.getTypeID(entity.name))
@@ -331,13 +436,15 @@ class Executor:
                 self.run.problems.append(f"{event.name}: no route from {edges[-1]} to {mapped[0].edge}")
                 return
             edges += list(found.edges[1:])
+        if last_lane is not None:  # after its last waypoint it carries on, as every player's vehicles do
+            edges += [e for e in self._ahead(last_lane)[1:] if e not in edges]
         ts.vehicle.setRoute(entity.name, edges)
 
     def _can_appear(self, event: Event) -> bool:
         import libsumo as ts
 
         for action in event.actions:
-            ref = action.relative[0] if action.kind == "appear" else None
+            ref = action.relative[0] if action.kind == "add" and action.relative else None
             if ref in self.present and ref in self.active and ref not in self.movers:
                 if ts.vehicle.getRoadID(ref).startswith(":"):
                     return False
@@ -376,18 +483,28 @@ class Executor:
 
     # -- the loop -----------------------------------------------------------------------------------------
     def holds_true(self, condition: Condition, t: float, actor: str = "") -> bool:
+        """The condition's own value now, before its edge and delay."""
         if condition.kind == "time":
-            return t >= condition.value + condition.delay - 1e-9
+            rule = condition.rule
+            return {"greaterThan": t > condition.value + 1e-9, "greaterOrEqual": t >= condition.value - 1e-9,
+                    "lessThan": t < condition.value - 1e-9, "lessOrEqual": t <= condition.value + 1e-9,
+                    "equalTo": abs(t - condition.value) < STEP_S / 2,
+                    "notEqualTo": abs(t - condition.value) >= STEP_S / 2}.get(rule, False)
         if condition.kind == "state":
-            times = self.run.act_end if condition.state == "endTransition" else self.run.act_start
-            if condition.ref in times:
-                return t >= times[condition.ref] + condition.delay - 1e-9
-            if condition.ref in self.run.fired and condition.state in ("endTransition", "completeState"):
-                return t >= self.run.fired[condition.ref] + condition.delay - 1e-9
+            ref, state = condition.ref, condition.state
+            ended = self.run.act_end.get(ref, self.run.event_end.get(ref))
+            started = self.run.act_start.get(ref, self.run.fired.get(ref))
+            if state in ("endTransition", "completeState", "stopTransition"):
+                return ended is not None and (state == "completeState" or t - ended < STEP_S + 1e-9)
+            if state in ("startTransition", "runningState"):
+                return started is not None and (state == "runningState" and ended is None
+                                                or state == "startTransition" and t - started < STEP_S + 1e-9)
+            if state == "standbyState":
+                return False
             return False
         if condition.kind == "reach":
             a = self.last(condition.triggering or actor)
-            if a is None:
+            if a is None or condition.position[0] not in self.odr.roads:
                 return False
             p = self.odr.roads[condition.position[0]].lane_point(condition.position[2], condition.position[1])
             return math.hypot(a.x - p.x, a.y - p.y) < condition.value
@@ -395,10 +512,33 @@ class Executor:
             who = condition.triggering or actor
             a, b = self.last(who), self.last(condition.ref)
             return a is not None and b is not None and math.hypot(a.x - b.x, a.y - b.y) < condition.value
+        if condition.kind == "end_of_road":
+            return any(name in self.run.out_of_road for name in condition.entities)
         return False
 
+    def _met(self, condition: Condition, t: float, actor: str) -> bool:
+        """The condition with its edge (a change since the last evaluation) and delay (from when it was met)."""
+        key = id(condition)
+        if condition.edge == "none" and not condition.delay:
+            self.previous[key] = self.holds_true(condition, t, actor)
+            return self.previous[key]
+        if key not in self.since:
+            now = self.holds_true(condition, t, actor)
+            before = self.previous.get(key)
+            self.previous[key] = now
+            edge = {"none": now, "rising": before is False and now, "falling": before is True and not now,
+                    "risingOrFalling": before is not None and before != now}.get(condition.edge, now)
+            if not edge:
+                return False
+            self.since[key] = t
+        return t >= self.since[key] + condition.delay - 1e-9
+
     def triggered(self, groups: list[list[Condition]], t: float, actor: str = "") -> bool:
-        return any(all(self.holds_true(c, t, actor) for c in group) for group in groups)
+        met = False
+        for group in groups:
+            results = [self._met(c, t, actor) for c in group]  # every condition is evaluated: edges need it
+            met = met or (bool(results) and all(results))
+        return met
 
     def last(self, name: str) -> Sample | None:
         samples = self.run.samples.get(name)
@@ -418,15 +558,20 @@ class Executor:
                 if entity is None or teleport is None:
                     continue
                 speed = next((a.value for a in actions if a.kind == "speed"), 0.0)
-                self.spawn(entity, teleport.lane, speed, 0.0)
+                if teleport.relative is not None:
+                    self.run.problems.append(f"'{name}': an Init position beside another entity is not supported")
+                    continue
+                self.spawn(entity, teleport.lane, speed, 0.0, teleport.orientation)
             ts.simulationStep()  # SUMO inserts what was added on the next step
             t = round(ts.simulation.getTime(), 3)
             self._sample(t)
             while t < TIME_LIMIT_S:
                 self._storyboard(t)
                 if self.triggered(self.plan.stop, t):
+                    self.run.stopped_by_trigger = True
                     break
-                self._move()
+                self._move(t)
+                self._yield_to_moved_bodies()
                 for when, vehicle, speed in list(self.holds):
                     if t >= when and vehicle in self.present:
                         ts.vehicle.setSpeed(vehicle, speed)
@@ -451,21 +596,47 @@ class Executor:
                     continue
                 if not self._can_appear(event):
                     continue  # wait until the entity it appears beside is on a road
+                if event.actor in self.present and event.actor not in self.active and \
+                        not any(a.kind in ("add", "teleport") for a in event.actions):
+                    continue  # added, not yet inserted: it cannot act before it is on the road
                 self.run.fired[event.name] = t
                 for action in event.actions:
                     self.execute(event.actor, action, t, event)
-            if all(e.name in self.run.fired for e in act.events):
+                if not any(m.path_event == event.name for m in self.movers.values()):
+                    self.run.event_end[event.name] = t  # its actions are commands: done when given
+            if all(e.name in self.run.event_end for e in act.events):
                 self.run.act_end[act.name] = t
 
-    def _move(self) -> None:
-        """Advance the bodies the executor moves: towards their target, else along their lane."""
-        for mover in self.movers.values():
+    def _move(self, t: float) -> None:
+        """Advance the bodies the player moves: along their trajectory, towards their target, else along
+        their lane."""
+        for name, mover in self.movers.items():
             if mover.target_speed is not None and mover.rate:
                 delta = mover.rate * STEP_S
                 mover.speed = max(mover.target_speed, mover.speed - delta) if mover.speed > mover.target_speed \
                     else min(mover.target_speed, mover.speed + delta)
             step = mover.speed * STEP_S
             if step <= 0:
+                continue
+            if mover.path_event and not mover.path:  # its trajectory is done: it stands where it ends
+                continue
+            if mover.path:
+                while step > 0 and mover.path:
+                    tx, ty = mover.path[0]
+                    d = math.hypot(tx - mover.x, ty - mover.y)
+                    if d > 1e-9:
+                        mover.heading = math.atan2(ty - mover.y, tx - mover.x)
+                    if d <= step:
+                        mover.x, mover.y = tx, ty
+                        mover.path.pop(0)
+                        step -= d
+                    else:
+                        mover.x += (tx - mover.x) * step / d
+                        mover.y += (ty - mover.y) * step / d
+                        step = 0
+                if not mover.path:
+                    mover.speed = mover.target_speed = 0.0
+                    self.run.event_end[mover.path_event] = t
                 continue
             if mover.target is not None:
                 tx, ty = mover.target
@@ -478,13 +649,50 @@ class Executor:
                 mover.y += (ty - mover.y) * step / d
                 continue
             road = self.odr.roads[mover.road]
-            s = mover.s + (step if mover.lane < 0 else -step)
+            if mover.goal_s is not None:
+                if abs(mover.goal_s - mover.s) <= step:
+                    mover.s, mover.speed, mover.goal_s = mover.goal_s, 0.0, None
+                    pose = road.lane_point(mover.s, mover.lane)
+                    mover.x, mover.y = pose.x, pose.y
+                    continue
+                s = mover.s + (step if mover.goal_s > mover.s else -step)
+            else:
+                s = mover.s + (step if mover.lane < 0 else -step)
             if not 0.0 <= s <= road.length:
                 if not self._next_road(mover, s - road.length if s > road.length else -s):
                     mover.speed = 0.0  # the end of its way: it stands
+                    self.run.out_of_road.add(name)
                 continue
             pose = road.lane_point(s, mover.lane)
             mover.x, mover.y, mover.heading, mover.s = pose.x, pose.y, pose.hdg, s
+
+    def _yield_to_moved_bodies(self) -> None:
+        """SUMO's drivers do not see the bodies this player moves: a vehicle with one in its path, ahead within
+        LOOK_AHEAD_M, slows to stop short of it, and takes up its commanded speed again once the way is clear."""
+        import libsumo as ts
+
+        if not self.movers:
+            return
+        for name in sorted(self.commanded):
+            last = self.last(name)
+            if last is None or name in self.movers:
+                continue
+            body = self.plan.entities[name]
+            gap = None
+            for other, mover in self.movers.items():
+                dx, dy = mover.x - last.x, mover.y - last.y
+                ahead = dx * math.cos(last.heading) + dy * math.sin(last.heading) - body.length / 2
+                side = -dx * math.sin(last.heading) + dy * math.cos(last.heading)
+                if 0 < ahead < LOOK_AHEAD_M and abs(side) < PATH_HALF_WIDTH_M + body.width / 2:
+                    gap = ahead if gap is None else min(gap, ahead)
+            commanded = self.commanded[name]
+            if gap is not None:
+                safe = math.sqrt(max(0.0, 2 * COMFORT_BRAKE * (gap - 2.5)))
+                ts.vehicle.setSpeed(name, min(commanded, safe))
+                self.yielding.add(name)
+            elif name in self.yielding:
+                ts.vehicle.setSpeed(name, commanded)
+                self.yielding.discard(name)
 
     def _next_road(self, mover: Mover, overshoot: float) -> bool:
         """Carry a body moved along its lane onto the next road, in the same kind of lane at the same side."""
@@ -524,6 +732,7 @@ class Executor:
                 speed, lane_id = ts.vehicle.getSpeed(name), ts.vehicle.getLaneID(name)
             elif name in self.active:  # left the network at the end of its route
                 self.present.discard(name)
+                self.run.out_of_road.add(name)  # routes run on to the network's end (see _route)
                 continue
             else:  # added, not yet inserted
                 continue
@@ -564,12 +773,30 @@ def _point_at(shape, pos: float) -> tuple[float, float]:
     return shape[-1]
 
 
-def simulate(xosc: str | Path, seed: int = 1):
-    """Read, run and check a scenario file; returns the report (see checks.Report)."""
-    from ttsgc.simulate.checks import check
-    from ttsgc.simulate.xosc_plan import read_plan
+def unavailable() -> str:
+    """Empty when SUMO can run here (libsumo and the eclipse-sumo netconvert are Python packages)."""
+    try:
+        import libsumo  # noqa: F401
+    except ImportError as exc:
+        return f"libsumo cannot be imported: {exc}"
+    return ""
 
-    plan = read_plan(Path(xosc))
+
+def play(plan: Plan, seed: int = 1) -> T.Trace:
+    """Play a plan in SUMO; the Trace every player hands the judge."""
     executor = Executor(plan, seed=seed)
     run = executor.execute_plan()
-    return check(plan, run, executor.odr)
+    trace = T.Trace(player=NAME, step_s=STEP_S, end_time=run.end_time, stopped_by_trigger=run.stopped_by_trigger,
+                    problems=list(run.problems))
+    for name, entity in plan.entities.items():
+        trace.bodies[name] = T.Body(entity.length, entity.width, entity.x_offset)
+    for name, spawn in sorted(run.spawns.items()):
+        if not spawn.ok:
+            trace.problems.append(f"'{name}' could not be placed: {spawn.reason}")
+    for name, samples in run.samples.items():
+        trace.samples[name] = [T.Sample(s.t, s.x, s.y, s.heading, s.speed, s.road, s.lane) for s in samples]
+    trace.started.update(run.act_start)
+    trace.started.update(run.fired)
+    trace.ended.update(run.act_end)
+    trace.ended.update(run.event_end)
+    return trace
