@@ -129,3 +129,29 @@ def test_an_empty_trace_is_refused(scene):
     odr, road, trace, cast, verdict = scene
     with pytest.raises(R.RenderError, match="no samples"):
         R.view_of(Trace("test", 0.1))
+
+
+def test_every_example_has_a_picture():
+    from conftest import example_scenarios
+
+    pictures = ROOT / "examples" / "pictures"
+    missing = [p.stem for p in example_scenarios() if not (pictures / f"{p.stem}.png").is_file()]
+    assert not missing, f"no picture for {missing}: run python examples/pictures/draw.py and look at them"
+    for picture in pictures.glob("*.png"):
+        assert Image.open(picture).size == (R.WIDTH_PX, R.HEIGHT_PX)
+
+
+def test_render_command_draws_a_played_scene_and_refuses_bad_outputs(tmp_path, capsys):
+    from ttsgc.cli import main
+
+    scene = tmp_path / "blocking.xosc"
+    assert main(["compile", str(ROOT / "examples" / "blocking.tsg"), "-o", str(scene), "--player", "sumo"]) == 0
+    assert main(["render", str(scene), "-o", str(tmp_path / "blocking.png"), "--player", "sumo"]) == 0
+    first = (tmp_path / "blocking.png").read_bytes()
+    assert "verdict ok" in capsys.readouterr().out
+    assert main(["render", str(scene), "-o", str(tmp_path / "again.png")]) == 0
+    assert (tmp_path / "again.png").read_bytes() == first  # played again, drawn again: the same bytes
+    assert main(["render", str(scene), "-o", str(tmp_path / "blocking.jpg")]) == 2
+    assert "must end in .png, .gif, .mp4" in capsys.readouterr().err
+    assert not (tmp_path / "blocking.jpg").exists()
+    assert main(["render", str(tmp_path / "missing.xosc")]) == 2
