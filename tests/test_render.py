@@ -117,6 +117,8 @@ def test_animation_steps_through_the_trace(scene):
     gif = R.gif_bytes(frames[:5])
     assert gif == R.gif_bytes(frames[:5])
     assert Image.open(io.BytesIO(gif)).n_frames == 5
+    video = R.mp4_bytes(frames[:3])
+    assert video[4:8] == b"ftyp" and video == R.mp4_bytes(frames[:3])
 
 
 def test_an_unknown_output_kind_is_refused(scene):
