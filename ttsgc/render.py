@@ -395,19 +395,33 @@ class _Canvas:
         self.ax.add_patch(patch)
         return [patch]
 
-    def label(self, name: str, sample: Sample, animated: bool = False):
-        ego = name == self.cast.ego
-        text = self.ax.text(sample.x, sample.y, f" {name} ", fontsize=9 if ego else 8, ha="left", va="bottom",
-                            fontweight="bold" if ego else "normal", zorder=8, animated=animated, clip_on=True,
-                            bbox=dict(boxstyle="round,pad=0.15", facecolor="white", edgecolor="#333333",
-                                      linewidth=0.6, alpha=0.85))
-        text.set_transform(self._label_transform())
-        return [text]
-
-    def _label_transform(self):
+    def label(self, name: str, sample: Sample, placed: list, animated: bool = False):
+        """The name beside the body, in the first corner around it whose box overlaps no label placed yet."""
         from matplotlib.transforms import offset_copy
 
-        return offset_copy(self.ax.transData, fig=self.figure, x=8, y=8, units="points")
+        ego = name == self.cast.ego
+        size = 9 if ego else 8
+        col, row = self.view.pixel(sample.x, sample.y)
+        width, height, gap = size * 0.75 * (len(name) + 2), size * 2.0, 11
+        chosen = None
+        for dx, dy in ((1, 1), (1, -1), (-1, 1), (-1, -1), (1, 2.6), (-1, -2.6)):
+            left = col + gap if dx > 0 else col - gap - width
+            top = row - gap * abs(dy) - height if dy > 0 else row + gap * abs(dy)
+            box = (left, top, left + width, top + height)
+            if chosen is None:
+                chosen = (dx, dy, box)
+            if not any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3] and b[1] < box[3] for b in placed):
+                chosen = (dx, dy, box)
+                break
+        dx, dy, box = chosen
+        placed.append(box)
+        text = self.ax.text(sample.x, sample.y, f" {name} ", fontsize=size, ha="left" if dx > 0 else "right",
+                            va="bottom" if dy > 0 else "top", fontweight="bold" if ego else "normal", zorder=8,
+                            animated=animated, clip_on=True,
+                            bbox=dict(boxstyle="round,pad=0.15", facecolor="white", edgecolor="#333333",
+                                      linewidth=0.6, alpha=0.85))
+        text.set_transform(offset_copy(self.ax.transData, fig=self.figure, x=8 * dx, y=8 * dy, units="points"))
+        return [text]
 
     def marks(self, until: float | None = None, animated: bool = False):
         artists = []
@@ -496,10 +510,11 @@ def picture(odr: OpenDrive, trace: Trace, cast: Cast, verdict: Verdict):
         canvas.paths()
         for name in _draw_order(trace, cast):
             canvas.box(name, trace.samples[name][-1], filled=False)
-        for name in _draw_order(trace, cast):
+        placed: list = []
+        for name in _draw_order(trace, cast)[::-1]:  # the ego's label first, where it reads best
             first = trace.samples[name][0]
             canvas.box(name, first)
-            canvas.label(name, first)
+            canvas.label(name, first, placed)
         canvas.marks()
         return canvas.rgba(), view
 
@@ -521,16 +536,16 @@ def frames(odr: OpenDrive, trace: Trace, cast: Cast, verdict: Verdict):
         for i in range(count):
             t = round(i * step, 6)
             canvas.canvas.restore_region(background)
-            artists = []
-            for name in _draw_order(trace, cast):
+            artists, placed = [], []
+            for name in _draw_order(trace, cast)[::-1]:
                 at = sample_at(trace.samples[name], t, trace.step_s)
                 if at is None:
                     continue
                 artists += canvas.box(name, at, animated=True)
-                artists += canvas.label(name, at, animated=True)
+                artists += canvas.label(name, at, placed, animated=True)
             artists += canvas.marks(until=t, animated=True)
             canvas.clock.set_text(f"t = {t:5.1f} s")
-            for artist in artists + [canvas.clock]:
+            for artist in sorted(artists, key=lambda a: a.get_zorder()) + [canvas.clock]:
                 artist.axes.draw_artist(artist) if artist.axes is not None else canvas.figure.draw_artist(artist)
             canvas.canvas.blit(canvas.figure.bbox)
             yield np.asarray(canvas.canvas.buffer_rgba()).copy()
