@@ -100,13 +100,16 @@ def test_a_finished_batch_is_skipped(one_worker, tmp_path, capsys):
     assert before == {p.name: p.stat().st_mtime_ns for p in copy.iterdir() if p.suffix == ".xosc"}
 
 
-def test_a_killed_batch_resumes_to_the_same_summary(one_worker, tmp_path):
+@pytest.mark.parametrize("how, workers", [(signal.SIGKILL, "1"), (signal.SIGINT, "2")], ids=["kill", "ctrl-c"])
+def test_an_interrupted_batch_resumes_to_the_same_summary(one_worker, tmp_path, how, workers):
+    """SIGKILL: no chance to tidy up, the harshest interruption. SIGINT to the whole process group, as Ctrl-C
+    sends it: the batch stops at once with exit 130 and no traceback."""
     prompts, out = one_worker
     resumed = tmp_path / "resumed"
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    command = [sys.executable, "-m", "ttsgc", "batch", str(prompts), "-o", str(resumed), "--workers", "1"]
-    process = subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                               start_new_session=True)
+    command = [sys.executable, "-m", "ttsgc", "batch", str(prompts), "-o", str(resumed), "--workers", workers]
+    process = subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                               start_new_session=True, preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 120
     try:
         while time.monotonic() < deadline and process.poll() is None:
@@ -115,8 +118,10 @@ def test_a_killed_batch_resumes_to_the_same_summary(one_worker, tmp_path):
             time.sleep(0.05)
     finally:
         if process.poll() is None:
-            os.killpg(process.pid, signal.SIGKILL)  # no chance to tidy up: the harshest interruption
-        process.wait()
+            os.killpg(process.pid, how)
+        _, errors = process.communicate(timeout=60)
+    if how == signal.SIGINT:
+        assert process.returncode == 130 and "interrupted" in errors and "Traceback" not in errors
     finished = len(list(resumed.glob("*.result.json")))
     assert 2 <= finished < 5, "the batch was not caught part-way"
     assert not (resumed / "summary.json").exists()

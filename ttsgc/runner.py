@@ -68,10 +68,12 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
     if forkable:  # warm once here; no simulation has been started in this process, so none is inherited
         if warm_up is not None:
             warm_up()
-        pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)), mp_context=multiprocessing.get_context("fork"))
+        pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)), mp_context=multiprocessing.get_context("fork"),
+                                   initializer=_worker_start)
     else:
         pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)),
-                                   mp_context=multiprocessing.get_context("spawn"), initializer=warm_up)
+                                   mp_context=multiprocessing.get_context("spawn"), initializer=_worker_start,
+                                   initargs=(warm_up,))
     try:
         pending = {pool.submit(function, job): index for index, job in enumerate(jobs)}
         while pending:
@@ -79,8 +81,22 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
             for future in sorted(done, key=pending.get):
                 index = pending.pop(future)
                 yield index, future.result()
-    finally:  # on an interrupt or an error: drop what has not started, wait for nothing
+    except BaseException:  # interrupted, or the caller stopped: workers only compute, so end them at once
+        for process in list((getattr(pool, "_processes", None) or {}).values()):
+            process.terminate()
+        raise
+    finally:
         pool.shutdown(wait=False, cancel_futures=True)
+
+
+def _worker_start(warm_up=None) -> None:
+    """Ctrl-C reaches every process of the terminal's group: the main process alone answers it (it stops
+    handing out jobs), and a worker finishes the scene it is on instead of dying with a traceback."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if warm_up is not None:
+        warm_up()
 
 
 def _on_ray(function, jobs, workers: int | None, address: str) -> Iterator[tuple[int, Any]]:
