@@ -46,6 +46,7 @@ class Job:
     method: str  # how English is lowered: offline | anthropic
     osc_version: str
     out_dir: str
+    players: str = "all"  # who proves it: sumo, esmini, or every player available
 
 
 @dataclass
@@ -119,7 +120,7 @@ def read_inputs(prompts: Path) -> list[tuple[str, str, str, str]]:
 
 
 def plan_jobs(prompts: Path, out_dir: Path, variants: int = 1, maps=None, method: str = "offline",
-              osc_version: str = "1.3") -> list[Job]:
+              osc_version: str = "1.3", players: str = "all") -> list[Job]:
     """Every scene of the batch in a fixed order: inputs in order, then variants (seeds 0..N-1, as compile
     --variants does: scene-1, scene-2...; one variant keeps the scene's own seed)."""
     if variants < 1:
@@ -129,7 +130,7 @@ def plan_jobs(prompts: Path, out_dir: Path, variants: int = 1, maps=None, method
         for k in range(variants):
             jobs.append(Job(ident if variants == 1 else f"{ident}-{k + 1}", source, kind, text,
                             None if variants == 1 else k, tuple(maps) if maps else None, method, osc_version,
-                            str(out_dir)))
+                            str(out_dir), players))
     return jobs
 
 
@@ -157,7 +158,8 @@ def make_scene(job: Job) -> Outcome:
         middle, stage = time.perf_counter(), "compile"
         out = Path(job.out_dir) / f"{job.id}.xosc"
         compiled, report = compile_and_prove(scenario, out, maps=list(job.maps) if job.maps else None,
-                                             seed=job.seed, version=job.osc_version, log=lambda message: None)
+                                             seed=job.seed, version=job.osc_version, log=lambda message: None,
+                                             players=job.players)
         row["seconds_compile_prove"] = round(time.perf_counter() - middle, 3)
     except TtsgcError as exc:
         row.update(verdict="error", failed_at=stage, reason=str(exc).splitlines()[0][:300],

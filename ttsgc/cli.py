@@ -254,7 +254,7 @@ def _batch(args) -> int:
 
     out = Path(args.output)
     jobs = plan_jobs(Path(args.prompts), out, variants=args.variants, maps=args.maps,
-                     method=choose_method(args.llm), osc_version=args.osc_version)
+                     method=choose_method(args.llm), osc_version=args.osc_version, players=args.player)
     result = run_batch(jobs, out, workers=args.workers, ray_address=args.ray, progress=progress_bar)
     counts = {v: sum(r["verdict"] == v for r in result.rows) for v in ("ok", "failed", "error")}
     print(f"{out}: {len(result.rows)} scene(s): {counts['ok']} ok, {counts['failed']} failed in simulation, "
@@ -286,6 +286,7 @@ def _add_render_and_batch(commands, llm_options) -> None:
                                                         "needs pip install 'ttsgc[ray]')")
     batch.add_argument("--maps", action="append", metavar="PATH")
     batch.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"], default="1.3")
+    _player_option(batch)
     batch.set_defaults(run=_batch)
 
 
