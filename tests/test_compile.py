@@ -176,11 +176,13 @@ def test_lane_changes(library, action, value):
 def test_stop_and_block_the_ego_brake_to_zero(library):
     root, _ = _xosc(_scene("ego car go_straight\n    car a at front stop\n    car b at front_left block_the_ego",
                            "road {\n    lanes >= 2\n}\n"), library)
-    for event in ("a_stop", "b_block_the_ego"):
+    for event in ("a_stop", "b_brakes"):  # b brakes once it is in the ego's lane
         speeds = [float(t.get("value")) for t in root.find(f".//Event[@name='{event}']").iter("AbsoluteTargetSpeed")]
         assert speeds == [0.0]
     block = root.find(".//Event[@name='b_block_the_ego']")
     assert block.find(".//RelativeTargetLane").get("value") == "-1"  # from the left lane into the ego's
+    after = root.find(".//Event[@name='b_brakes']//StoryboardElementStateCondition")
+    assert after.get("storyboardElementRef") == "b_block_the_ego" and after.get("state") == "completeState"
 
 
 def test_cross_the_road_goes_to_the_far_side(library):

@@ -76,6 +76,7 @@ class BoundAgent(_Data):
     walk_to: LanePos | None = None
     trigger: Trigger | None = None
     distance_to_ego_m: float = 0.0  # at the start, centre to centre
+    start_delay_s: float = 0.0  # stands this long before it sets off, so that junction traffic takes turns
 
 
 @dataclass(frozen=True)
@@ -286,7 +287,9 @@ class Placer:
                 for agent in _queue(group, position in AHEAD):
                     placed.append(self._place_later(agent, k))
         order = {a.name: n for n, a in enumerate(s.agents())}
-        return sorted(placed, key=lambda b: order[b.name])
+        placed = sorted(placed, key=lambda b: order[b.name])
+        placed = no_faster_than_the_one_ahead(placed)
+        return let_the_ego_pass(stagger_at_junction(placed, self.odr), self.odr)
 
     def _ego_lane_rank(self) -> int:
         from ttsgc.binding.rank import lane_needs
@@ -489,6 +492,108 @@ class Placer:
 
 def place(scenario: Scenario, approach: Approach, index: MapIndex, odr: OpenDrive) -> list[BoundAgent]:
     return Placer(scenario, approach, index, odr).place()
+
+
+JUNCTION_GAP_S = 1.5  # between one road's traffic leaving the junction and the next road's entering it
+
+
+def stagger_at_junction(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
+    """Traffic from different roads takes turns through the junction: a road's vehicles that would be in the
+    junction while the ego's road's (or an earlier road's) are there wait at their start. A scene file has no
+    right of way, and a player whose drivers do not yield (esmini) would otherwise play a crash no scene asked
+    for. Vehicles of one road and direction share a delay, so that none waits in front of its follower. Each
+    stage takes turns on its own, from its start (a later stage's agents enter together)."""
+    delays: dict[tuple[int, str, bool], float] = {}
+    for stage in sorted({a.stage for a in agents}):
+        delays.update(_turns(agents, stage, odr))
+    out = []
+    for agent in agents:
+        key = (agent.stage, agent.start.road, agent.start.lane > 0) if agent.start is not None else None
+        delay = delays.get(key, 0.0) if len(agent.route) >= 2 else 0.0
+        out.append(agent.model_copy(update={"start_delay_s": delay}) if delay else agent)
+    return out
+
+
+def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[int, str, bool], float]:
+    windows: dict[tuple[int, str, bool], list[float]] = {}
+    first = None  # the ego's road goes first in its stage
+    for agent in agents:
+        if agent.stage != stage or agent.start is None or len(agent.route) < 2 or agent.speed_mps <= 0:
+            continue
+        via = agent.route[1]
+        road = odr.roads[via.road]
+        entry = road.lane_point(0.0 if via.lane < 0 else road.length, via.lane)
+        here = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
+        arrive = max(0.0, math.hypot(entry.x - here.x, entry.y - here.y) - agent.length / 2) / agent.speed_mps
+        leave = arrive + (road.length + agent.length + 2.0) / agent.speed_mps
+        key = (stage, agent.start.road, agent.start.lane > 0)
+        window = windows.setdefault(key, [arrive, leave])
+        window[0], window[1] = min(window[0], arrive), max(window[1], leave)
+        if agent.is_ego:
+            first = key
+    delays: dict[tuple[int, str, bool], float] = {}
+    taken: list[tuple[float, float]] = []
+    for key in sorted(windows, key=lambda k: (k != first, windows[k][0], k)):
+        arrive, leave = windows[key]
+        delay = 0.0
+        for start, end in sorted(taken):
+            if arrive + delay < end + JUNCTION_GAP_S and leave + delay > start - JUNCTION_GAP_S:
+                delay = end + JUNCTION_GAP_S - arrive
+        delays[key] = round(delay, 2)
+        taken.append((arrive + delay, leave + delay))
+    return delays
+
+
+def no_faster_than_the_one_ahead(agents: list[BoundAgent]) -> list[BoundAgent]:
+    """In one lane, a vehicle drives no faster than the one ahead of it, unless it is aggressive (its
+    collisions are asked for) or the one ahead leaves the lane or stops on purpose: a player whose drivers
+    do not follow (esmini) would otherwise play a rear-end crash no scene asked for."""
+    lanes: dict[tuple[str, int], list[BoundAgent]] = {}
+    for agent in agents:
+        if agent.stage == 0 and agent.start is not None and agent.type not in ("pedestrian",) and \
+                agent.road_type == "driving":
+            lanes.setdefault((agent.start.road, agent.start.lane), []).append(agent)
+    capped: dict[str, float] = {}
+    for (_, lane), queue in lanes.items():
+        queue.sort(key=lambda a: -a.start.s if lane < 0 else a.start.s)  # the front first
+        limit = None
+        for agent in queue:
+            speed = agent.speed_mps
+            if limit is not None and agent.behavior != "aggressive" and speed > limit:
+                speed = capped[agent.name] = limit
+            leaves = agent.lane_change is not None or agent.action in ("stop", "block_the_ego")
+            limit = None if leaves else speed
+    return [a.model_copy(update={"speed_mps": capped[a.name]}) if a.name in capped else a for a in agents]
+
+
+def let_the_ego_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
+    """A walker or rider told to cross with no trigger of its own steps out once the ego has passed, when it
+    would otherwise be on the road as the ego drives by: nothing in a file makes the ego brake for it (a
+    crossing that asks for danger says so with a trigger: `when ego within 20m`)."""
+    ego = next((a for a in agents if a.is_ego and a.start is not None), None)
+    if ego is None or ego.speed_mps <= 0:
+        return agents
+    here = odr.roads[ego.start.road].lane_point(ego.start.s, ego.start.lane)
+    out = []
+    for agent in agents:
+        if agent.cross_to is None or agent.trigger is not None or agent.stage != 0 or agent.speed_mps <= 0:
+            out.append(agent)
+            continue
+        start = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
+        end = odr.roads[agent.cross_to.road].lane_point(agent.cross_to.s, agent.cross_to.lane)
+        width = math.hypot(end.x - start.x, end.y - start.y)
+        ahead = (start.x - here.x) * math.cos(here.hdg) + (start.y - here.y) * math.sin(here.hdg)  # hdg: its lane's
+        # driving direction
+        if ahead <= 0:  # behind the ego: it crosses where the ego has been
+            out.append(agent)
+            continue
+        passes = (ahead - ego.length / 2 - agent.width) / ego.speed_mps
+        gone = (ahead + ego.length / 2 + agent.width) / ego.speed_mps
+        on_road = (0.0, width / agent.speed_mps)
+        if on_road[0] < gone + JUNCTION_GAP_S and on_road[1] > passes - JUNCTION_GAP_S:
+            agent = agent.model_copy(update={"start_delay_s": round(gone + JUNCTION_GAP_S, 2)})
+        out.append(agent)
+    return out
 
 
 def distance_between(odr: OpenDrive, a: LanePos, b: LanePos) -> float:

@@ -129,7 +129,7 @@ def _trajectory_bound(agent: BoundAgent) -> bool:
 
 def _initial_speed(agent: BoundAgent) -> float:
     """Bodies that follow a trajectory stand until their action starts; the rest drive at their speed."""
-    return 0.0 if _trajectory_bound(agent) else agent.speed_mps
+    return 0.0 if _trajectory_bound(agent) or agent.start_delay_s else agent.speed_mps
 
 
 def _entity(agent: BoundAgent, scene: BoundScene, minor: int):
@@ -184,14 +184,14 @@ def stage_durations(scene: BoundScene) -> list[float]:
         for agent in scene.agents:
             if agent.stage != k:
                 continue
-            wait = agent.trigger.after_s if agent.trigger and agent.trigger.after_s else 0.0
+            wait = agent.start_delay_s + (agent.trigger.after_s if agent.trigger and agent.trigger.after_s else 0.0)
             if agent.trigger and agent.trigger.within_m is not None:
                 wait += max(0.0, agent.distance_to_ego_m - agent.trigger.within_m) / max(ego.speed_mps, 1.0)
             speed = max(agent.speed_mps, 1.0)
             if agent.movement:
                 action = 45.0 / speed + (SIGNAL_WAIT_S if signalised else 0.0)
             elif agent.cross_to is not None:
-                action = 25.0 / speed
+                action = 40.0 / speed  # wide roads: a crossing may be 30 m and more
             else:
                 action = 6.0
             longest = max(longest, wait + action)
@@ -240,7 +240,7 @@ def _always(label: str, delay: float, minor: int) -> xosc.ValueTrigger:
     return xosc.ValueTrigger(label, delay, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, rule))
 
 
-def _start_trigger(agent: BoundAgent, label: str, minor: int):
+def _start_trigger(agent: BoundAgent, label: str, minor: int, wait: float = 0.0):
     """When the agent's action starts: at once, after a delay, when someone is within reach, or both. Edge
     `none`: someone already within reach at the first evaluation starts the action then (a rising edge
     would wait for ever)."""
@@ -252,7 +252,7 @@ def _start_trigger(agent: BoundAgent, label: str, minor: int):
                                                                             _EUCLIDEAN[minor >= 1],
                                                                             t.of, alongroute=False, freespace=False),
                                              agent.name))
-    delay = t.after_s if t is not None and t.after_s is not None else 0.0
+    delay = wait + (t.after_s if t is not None and t.after_s is not None else 0.0)
     if delay or not conditions:
         conditions.append(_always(f"{label}_time", delay, minor))
     if len(conditions) == 1:
@@ -314,18 +314,40 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     if _trajectory_bound(agent):
         actions += [("walk_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step)),
                     ("path", _trajectory(agent, minor))]
+    braking = []
     if agent.action in ("stop", "block_the_ego"):
         brake = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}[agent.behavior]
-        actions.append(("brake", xosc.AbsoluteSpeedAction(
+        braking.append(("brake", xosc.AbsoluteSpeedAction(
             0, xosc.TransitionDynamics(xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, brake))))
-    if not actions and agent.stage == 0:  # go_straight: hold the speed (a later agent enters with it)
+    if braking and actions:  # into the ego's lane first, then stop there
+        after_change = xosc.ValueTrigger(f"{agent.name}_in_lane", 0, xosc.ConditionEdge.none,
+                                         xosc.StoryboardElementStateCondition(
+                                             xosc.StoryboardElementType.event, f"{agent.name}_{agent.action}",
+                                             xosc.StoryboardElementState.completeState))
+        later = [(f"{agent.name}_brakes", braking, after_change)]
+    else:
+        actions += braking
+        later = []
+    if not actions and agent.stage == 0 and not agent.start_delay_s:  # go_straight: hold the speed (a later
+        # agent enters with it, a waiting one sets off with it)
         actions.append(("keep_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step)))
-    if setup and (agent.trigger is not None or agent.stage > 0):  # entering and the route at once; the action
-        # waits for its trigger, or for the body to be in the scene
+    if setup and (agent.trigger is not None or (agent.stage > 0 and actions)):  # entering and the route at
+        # once; the action waits for its trigger, or for the body to be in the scene
         events.append((f"{agent.name}_{'enters' if agent.stage > 0 else 'route'}", setup,
                        _always(f"{agent.name}_setup", 0.0, minor)))
         setup = []
-    events.append((label, setup + actions, _start_trigger(agent, label, minor)))
+    walker_waits = agent.start_delay_s if _trajectory_bound(agent) else 0.0  # steps out when its turn comes
+    events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits)))
+    if _trajectory_bound(agent):  # it stands where its path ends (a player would walk on along the lane)
+        events.append((f"{agent.name}_arrives", [("stand", xosc.AbsoluteSpeedAction(0.0, step))],
+                       xosc.ValueTrigger(f"{agent.name}_path_done", 0, xosc.ConditionEdge.none,
+                                         xosc.StoryboardElementStateCondition(
+                                             xosc.StoryboardElementType.event, label,
+                                             xosc.StoryboardElementState.completeState))))
+    events += later
+    if agent.start_delay_s and not walker_waits:  # it waits for its turn through the junction, then sets off
+        events.append((f"{agent.name}_sets_off", [("set_off", xosc.AbsoluteSpeedAction(agent.speed_mps, step))],
+                       _always(f"{agent.name}_waited", agent.start_delay_s, minor)))
     return events
 
 

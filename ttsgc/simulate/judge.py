@@ -25,7 +25,7 @@ STOPPED_FOR_S = 1.0
 TURN_MIN_DEG = 30.0
 SETTLE_S = 1.0  # how long after reaching its target road a turning body's heading is read
 GRID_M = 10.0  # cell size of the collision broad phase: larger than any body's half diagonal plus its step
-SETUP_EVENTS = ("_enters", "_route", "_appears", "_leaves")  # events that are not the agent's own action
+SETUP_EVENTS = ("_enters", "_route", "_appears", "_leaves", "_arrives", "_sets_off")  # events that are not the agent's own action
 
 
 class AgentResult(BaseModel):
@@ -226,6 +226,11 @@ def seeks_danger(plan: Plan, name: str) -> bool:
             or (action.startswith("change_lane") and intent.get(I.IS_EGO) != "true"))
 
 
+def asked_for(plan: Plan, a: str, b: str) -> bool:
+    """A collision the scene asks for: one of the two seeks danger."""
+    return any(n in plan.entities and seeks_danger(plan, n) for n in (a, b))
+
+
 def judge(plan: Plan, trace: Trace, odr: OpenDrive) -> Verdict:
     ego = ego_of(plan)
     bodies = {n: trace.bodies.get(n) or Body(e.length, e.width) for n, e in plan.entities.items()}
@@ -237,7 +242,7 @@ def judge(plan: Plan, trace: Trace, odr: OpenDrive) -> Verdict:
     collisions = []
     for t, a, b, x, y, road in find_collisions(trace, bodies):
         collisions.append(CollisionResult(a=a, b=b, time_s=round(t, 3), x=round(x, 2), y=round(y, 2), road=road,
-                                          asked_for=seeks_danger(plan, a) or seeks_danger(plan, b)))
+                                          asked_for=asked_for(plan, a, b)))
     distance, distance_agent, ttc, ttc_agent = criticality(trace, bodies, ego)
     problems = list(trace.problems)
     if not trace.stopped_by_trigger:
@@ -301,7 +306,7 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
     if action == "stop":
         return result(*_stopped(after))
     if action == "block_the_ego":
-        return result(*_blocked(after, trace.samples.get(ego, []) if ego else [], bodies.get(ego)))
+        return result(*_blocked(after, trace.samples.get(ego, []) if ego else [], bodies.get(ego), bodies[name]))
     position = _start_position(plan, name)
     road = position[0] if position else samples[0].road
     if action in ("cross_the_road", "on_the_sidewalk") and road not in odr.roads:
@@ -360,35 +365,38 @@ def _stopped(after: list[Sample]) -> tuple[bool, str]:
     return False, f"never stood still (slowest {min(s.speed for s in after):.1f} m/s)"
 
 
-def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None) -> tuple[bool, str]:
-    """Stopped, and then stood in front of the ego in its lane."""
+def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body: Body) -> tuple[bool, str]:
+    """Ahead of the ego when its action started, it came to stand on the ego's path: the ego then stopped
+    behind it, or (a player whose ego does not brake) ran into it or through its place."""
     since = _standstill(after)
     if since is None:
         return False, f"never stood still (slowest {min(s.speed for s in after):.1f} m/s)"
-    agent_at = {round(s.t, 3): s for s in after}
-    half = ego_body.length / 2 if ego_body else 2.0
-    ahead_of_ego = []
-    for e in ego:
-        agent = agent_at.get(round(e.t, 3))
-        if e.t < since or agent is None:
-            continue
-        dx, dy = agent.x - e.x, agent.y - e.y
+    stop = next(s for s in after if s.t >= since)
+    ego_after = [e for e in ego if e.t >= after[0].t - 1e-9]
+    if not ego_after:
+        return False, "stopped, but the ego was not in the scene"
+    first = ego_after[0]
+    if (after[0].x - first.x) * math.cos(first.h) + (after[0].y - first.y) * math.sin(first.h) <= 0:
+        return False, "was not ahead of the ego when its action started"
+    reach = (ego_body.length if ego_body else 4.5) / 2 + body.length / 2
+    on_path = []
+    for e in ego_after:
+        dx, dy = stop.x - e.x, stop.y - e.y
         ahead = dx * math.cos(e.h) + dy * math.sin(e.h)
         side = -dx * math.sin(e.h) + dy * math.cos(e.h)
-        if -half < ahead < 40 and abs(side) < 2.0:
-            ahead_of_ego.append(e)
-    if not ahead_of_ego:
+        if abs(side) < 2.0 and (-reach < ahead < reach or (e.t >= since and 0 < ahead < 40)):
+            on_path.append(e)
+    if not on_path:
         return False, "stopped, but never in front of the ego"
-    initial = ego[0].speed if ego else 0.0
-    slowest = min(e.speed for e in ahead_of_ego)
-    return True, f"stopped in the ego's path (the ego went from {initial:.1f} to {slowest:.1f} m/s behind it)"
+    initial, slowest = first.speed, min(e.speed for e in on_path)
+    return True, f"stopped in the ego's path (the ego went from {initial:.1f} to {slowest:.1f} m/s there)"
 
 
 def _crossed(odr: OpenDrive, road: str, first: Sample, after: list[Sample]) -> tuple[bool, str]:
     _, t0 = _lateral(odr, road, first.x, first.y)
     _, t1 = _lateral(odr, road, after[-1].x, after[-1].y)
     sides = lambda t: "left" if t > 0 else "right"  # noqa: E731
-    if t0 * t1 < 0 and abs(t1) > 1.0:
+    if t0 * t1 < 0 and abs(t1) > 0.5:
         return True, f"crossed road {road} from its {sides(t0)} side to its {sides(t1)} side"
     return False, f"stayed on the {sides(t0)} side of road {road} (t {t0:+.1f} -> {t1:+.1f} m)"
 

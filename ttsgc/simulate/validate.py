@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ttsgc.errors import TtsgcError
+from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.roads.opendrive import load_opendrive
 from ttsgc.simulate.judge import Report, judge, report
 from ttsgc.simulate.plan import read_plan
@@ -16,7 +16,9 @@ ALL = "all"
 
 
 class PlayerUnavailable(TtsgcError):
-    """A player asked for by name cannot run here."""
+    """A player asked for by name cannot run here (a command line asking for what is not there)."""
+
+    exit_code = ExitCode.INVALID_SCENARIO
 
 
 def chosen_players(choice: str = ALL) -> tuple[list[str], list[str]]:

@@ -175,6 +175,7 @@ class Executor:
         self.since: dict[int, float] = {}  # condition (by identity) -> when its edge was met (its delay runs)
         self.commanded: dict[str, float] = {}  # vehicle -> the speed the file last set
         self.yielding: set[str] = set()  # vehicles slowed for a moved body in their path
+        self.pending_routes: dict[str, tuple[Action, Event]] = {}  # routes given before SUMO inserted the vehicle
 
     # -- coordinates --------------------------------------------------------------------------------------
     def world(self, road: str, lane: int, s: float) -> tuple[float, float, float]:
@@ -309,6 +310,8 @@ class Executor:
                     self.run.problems.append(f"{event.name}: '{actor}' has no lane {int(action.value):+d} to change to")
                 else:
                     ts.vehicle.changeLane(actor, index, 60.0)
+            elif action.kind == "route" and actor not in self.active:
+                self.pending_routes[actor] = (action, event)  # added, not yet inserted: routed once it is
             elif action.kind == "route":
                 self._route(entity, action, event)
             elif action.kind == "acquire":
@@ -390,8 +393,8 @@ class Executor:
 
         edges, total, lane = [self.by_id[lane_id].edge], 0.0, lane_id
         for _ in range(60):
-            links = ts.lane.getLinks(lane)
-            if not links or total > limit_m:
+            links = [k for k in ts.lane.getLinks(lane) if k[6] != "t"]  # never the U-turn netconvert adds
+            if not links or total > limit_m:  # at a map's edge: it leaves there, as a player's vehicle does
                 break
             link = next((k for k in links if k[6] == "s"), links[0])
             lane = link[0]
@@ -495,7 +498,8 @@ class Executor:
             ended = self.run.act_end.get(ref, self.run.event_end.get(ref))
             started = self.run.act_start.get(ref, self.run.fired.get(ref))
             if state in ("endTransition", "completeState", "stopTransition"):
-                return ended is not None and (state == "completeState" or t - ended < STEP_S + 1e-9)
+                return ended is not None and t >= ended - 1e-9 and (state == "completeState"
+                                                                     or t - ended < STEP_S + 1e-9)
             if state in ("startTransition", "runningState"):
                 return started is not None and (state == "runningState" and ended is None
                                                 or state == "startTransition" and t - started < STEP_S + 1e-9)
@@ -603,8 +607,10 @@ class Executor:
                 for action in event.actions:
                     self.execute(event.actor, action, t, event)
                 if not any(m.path_event == event.name for m in self.movers.values()):
-                    self.run.event_end[event.name] = t  # its actions are commands: done when given
-            if all(e.name in self.run.event_end for e in act.events):
+                    # its actions are commands, done when given; a lane change when its time is up
+                    self.run.event_end[event.name] = t + max([a.duration for a in event.actions
+                                                              if a.kind == "lane_change"], default=0.0)
+            if all(self.run.event_end.get(e.name, math.inf) <= t for e in act.events):
                 self.run.act_end[act.name] = t
 
     def _move(self, t: float) -> None:
@@ -737,6 +743,12 @@ class Executor:
             else:  # added, not yet inserted
                 continue
             self.active.add(name)
+            if name in self.pending_routes:
+                action, event = self.pending_routes.pop(name)
+                try:
+                    self._route(entity, action, event)
+                except Exception as exc:  # noqa: BLE001 - a route SUMO refuses is a failed action, reported
+                    self.run.problems.append(f"{event.name}: route failed in SUMO: {exc}")
             road, lane = self.odr_of(lane_id)
             edge, _, index = lane_id.rpartition("_")
             self.run.samples.setdefault(name, []).append(Sample(

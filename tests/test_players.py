@@ -1,0 +1,301 @@
+"""Proven means proven in a real player: every example played in esmini (../shared/tools/esmini, skipped when
+absent) does what it says and SUMO agrees agent by agent; each standard semantic the emitter relies on has a
+test that fails on a file written the way an emitter that ignored it wrote it; the judge's contradictions,
+collisions and distances."""
+
+from __future__ import annotations
+
+import math
+import time
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+from conftest import EXAMPLES, SHARED, example_scenarios
+from ttsgc.cli import main
+from ttsgc.language import parse_file
+from ttsgc.pipeline import compile_scenario, write
+from ttsgc.simulate import judge as J
+from ttsgc.simulate.trace import Body, Sample, Trace
+from ttsgc.simulate.validate import validate
+
+ESMINI = SHARED / "tools" / "esmini" / "esmini"
+
+
+@pytest.fixture
+def esmini(monkeypatch):
+    if not ESMINI.is_file():
+        pytest.skip("../shared/tools/esmini is not present")
+    monkeypatch.setenv("TTSGC_ESMINI", str(ESMINI))
+    return ESMINI
+
+
+def _compiled(name: str, folder: Path, version: str = "1.3") -> Path:
+    out = folder / f"{name}.xosc"
+    write(compile_scenario(parse_file(EXAMPLES / f"{name}.tsg"), out, version=version), out)
+    return out
+
+
+def _edit(path: Path, change) -> Path:
+    tree = etree.parse(str(path))
+    change(tree.getroot())
+    tree.write(str(path))
+    return path
+
+
+def _verdict(report, player: str):
+    return next(v for v in report.verdicts if v.player == player)
+
+
+def _agent(report, player: str, name: str):
+    return next(a for a in _verdict(report, player).agents if a.name == name)
+
+
+# -- every example, in esmini, judged from esmini's own trace -----------------------------------------------
+
+@pytest.mark.parametrize("path", example_scenarios(), ids=lambda p: p.stem)
+def test_every_agent_of_every_example_does_its_action_in_esmini_and_sumo_agrees(path, esmini, tmp_path):
+    report = validate(_compiled(path.stem, tmp_path), "all")
+    assert report.players == ["sumo", "esmini"]
+    played, proven = _verdict(report, "esmini"), _verdict(report, "sumo")
+    for in_esmini, in_sumo in zip(played.agents, proven.agents):
+        assert in_esmini.achieved, report.table()
+        assert in_sumo.achieved == in_esmini.achieved, report.table()
+    assert played.simulated_s > 0 and not played.problems, report.table()
+    assert all(c.asked_for for c in played.collisions), report.table()  # nobody yields in esmini: turns are taken
+    assert report.ok, report.table()
+
+
+@pytest.mark.parametrize("path", example_scenarios(), ids=lambda p: p.stem)
+def test_every_example_in_openscenario_1_0_does_its_action_in_esmini(path, esmini, tmp_path):
+    report = validate(_compiled(path.stem, tmp_path, "1.0"), "esmini")
+    assert all(a.achieved for a in report.verdicts[0].agents), report.table()
+
+
+# -- each semantic, and a file written without it ------------------------------------------------------------
+
+def test_a_lane_position_faces_along_its_lane_without_an_orientation(esmini, tmp_path):
+    """A relative h=pi on a left lane turns the body against the traffic (esmini, CARLA): the ego then
+    leaves the junction behind instead of turning left."""
+    scene = _compiled("left_turn_oncoming", tmp_path)
+    assert _agent(validate(scene, "all"), "esmini", "ego").achieved
+
+    def turned(root):
+        for lane in root.iter("LanePosition"):
+            if int(lane.get("laneId")) > 0:
+                etree.SubElement(lane, "Orientation", h=str(math.pi), type="relative")
+    report = validate(_edit(scene, turned), "all")
+    assert not _agent(report, "esmini", "ego").achieved and not _agent(report, "sumo", "ego").achieved
+    assert any("against the driving direction" in p for p in _verdict(report, "sumo").problems)
+
+
+def test_agents_of_a_later_stage_enter_with_an_add_entity_action(esmini, tmp_path):
+    scene = _compiled("boxed_in", tmp_path)
+    assert _agent(validate(scene, "all"), "esmini", "c2").achieved
+
+    def teleported(root):  # no Init action and a TeleportAction: the entity stays inactive
+        for action in root.iter("Action"):
+            added = action.find("GlobalAction/EntityAction/AddEntityAction")
+            if added is not None:
+                action.remove(action[0])
+                teleport = etree.SubElement(etree.SubElement(action, "PrivateAction"), "TeleportAction")
+                teleport.append(added.find("Position"))
+    report = validate(_edit(scene, teleported), "all")
+    for player in ("esmini", "sumo"):
+        result = _agent(report, player, "c2")
+        assert not result.achieved and "never appeared" in result.reason
+
+
+def test_a_trigger_already_true_at_the_start_fires_with_edge_none(esmini, tmp_path):
+    scene = _compiled("cut_off", tmp_path)  # the ego is within 15 m of c1 from the first step
+    assert _agent(validate(scene, "all"), "esmini", "c1").achieved
+
+    def rising(root):
+        root.find(".//Condition[@name='c1_change_lane_to_right_near']").set("conditionEdge", "rising")
+    report = validate(_edit(scene, rising), "all")
+    for player in ("esmini", "sumo"):
+        result = _agent(report, player, "c1")
+        assert not result.achieved and "never started" in result.reason
+
+
+def test_a_walker_crosses_along_a_trajectory_and_stands_until_its_trigger(esmini, tmp_path):
+    scene = _compiled("crushing", tmp_path)
+    report = validate(scene, "all")
+    for player in ("esmini", "sumo"):
+        assert "crossed road" in _agent(report, player, "p1").reason
+
+    def acquired(root):  # routing to the far lane at the same s, with a walking speed from the start
+        path = root.find(".//Event[@name='p1_cross_the_road']//FollowTrajectoryAction")
+        far = path.findall(".//LanePosition")[-1]
+        routing = path.getparent()
+        routing.remove(path)
+        etree.SubElement(etree.SubElement(routing, "AcquirePositionAction"), "Position").append(far)
+        root.find(".//Private[@entityRef='p1']//AbsoluteTargetSpeed").set("value", "1.4")
+    report = validate(_edit(scene, acquired), "all")
+    for player in ("esmini", "sumo"):
+        result = _agent(report, player, "p1")
+        assert not result.achieved and "stayed on the" in result.reason, report.table()
+
+
+def test_a_lane_change_happens_as_written_with_a_vehicle_alongside(esmini, tmp_path):
+    """c1 starts right beside the ego and changes into its lane: both players carry it out."""
+    report = validate(_compiled("rainy_night_cut_in", tmp_path), "all")
+    for player in ("esmini", "sumo"):
+        assert "changed 1 lane(s) to the left" in _agent(report, player, "c1").reason
+
+
+def test_junction_traffic_takes_turns_and_a_walker_lets_the_ego_pass():
+    """Windows in which each road's vehicles are in the junction do not overlap the ego road's; a walker with
+    no trigger steps out once the ego has gone by."""
+    from ttsgc.binding import bind
+    from ttsgc.roads.retrieve import load_library
+
+    scene = bind(parse_file(EXAMPLES / "intersection.tsg"), load_library(None))
+    waiting = {a.name: a.start_delay_s for a in scene.agents}
+    assert waiting["ego"] == 0.0 and waiting["p1"] > 0
+    assert len({waiting[n] for n in ("c1", "b1", "m1")}) == 3 and min(waiting[n] for n in ("c1", "b1", "m1")) > 0
+
+
+def test_agents_of_a_later_stage_at_the_junction_do_their_action(esmini, tmp_path):
+    """They enter with their route when their stage starts, and take turns through the junction."""
+    source = tmp_path / "later.tsg"
+    source.write_text('scenario "later at the junction"\nroad {\n    at junction\n}\nstage first {\n'
+                      '    ego car go_straight\n}\nstage second {\n    car c1 at road_of_left_turn turn_left\n'
+                      '    car c2 at road_of_straight go_straight\n}\n')
+    out = tmp_path / "later.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    report = validate(out, "all")
+    assert report.ok, report.table()
+
+
+def test_two_walkers_queued_on_one_sidewalk_keep_their_distance(esmini, tmp_path):
+    source = tmp_path / "walkers.tsg"
+    source.write_text('scenario "two walkers"\nstage main {\n    ego car go_straight\n'
+                      '    pedestrian p1 at right on_the_sidewalk\n    pedestrian p2 at right on_the_sidewalk behind p1\n}\n')
+    out = tmp_path / "walkers.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    report = validate(out, "all")
+    assert report.ok and not report.collisions, report.table()
+
+
+def test_in_one_lane_nobody_drives_faster_than_the_one_ahead_unless_aggressive(tmp_path):
+    from ttsgc.binding import bind
+    from ttsgc.roads.retrieve import load_library
+
+    def speeds(ego_behavior: str) -> dict[str, float]:
+        source = tmp_path / "queue.tsg"
+        source.write_text(f'scenario "queue"\nroad {{\n    not at junction\n}}\nstage main {{\n'
+                          f'    ego car go_straight {ego_behavior}\n    car a1 at front go_straight cautious\n}}\n')
+        return {a.name: a.speed_mps for a in bind(parse_file(source), load_library(None)).agents}
+    normal = speeds("normal")
+    assert normal["ego"] == normal["a1"]  # would be 0.85 / 0.6 of the limit: a rear-end crash in esmini
+    aggressive = speeds("aggressive")
+    assert aggressive["ego"] > aggressive["a1"]
+
+
+def test_emitted_states_and_edges_are_those_every_player_accepts(tmp_path):
+    """CARLA ScenarioRunner accepts startTransition, stopTransition, endTransition and completeState only;
+    a start condition that may hold at the first evaluation must not wait for a rising edge."""
+    for path in example_scenarios():
+        root = etree.parse(str(_compiled(path.stem, tmp_path, "1.0"))).getroot()
+        states = {c.get("state") for c in root.iter("StoryboardElementStateCondition")}
+        assert states <= {"startTransition", "stopTransition", "endTransition", "completeState"}, path.stem
+        for trigger in root.iter("StartTrigger"):
+            assert {c.get("conditionEdge") for c in trigger.iter("Condition")} <= {"none"}, path.stem
+        assert root.find(".//Orientation") is None
+        assert {e.get("priority") for e in root.iter("Event")} == {"parallel"}
+
+
+def test_the_flipped_action_fails_validation_naming_the_contradiction(tmp_path, capsys):
+    scene = _compiled("left_turn_oncoming", tmp_path)
+
+    def flipped(root):
+        obj = root.find(".//ScenarioObject[@name='ego']")
+        obj.find(".//Property[@name='ttsgc:action']").set("value", "turn_right")
+    assert main(["validate", str(_edit(scene, flipped)), "--player", "sumo"]) == 5
+    out = capsys.readouterr().out
+    assert "ttsgc:action is turn_right but ttsgc:movement is left" in out and "error in the file" in out
+
+
+def test_a_walker_on_a_lane_that_is_no_sidewalk_does_not_walk_on_the_sidewalk(tmp_path):
+    scene = _compiled("daily_traffic", tmp_path)
+
+    def onto_the_shoulder(root):  # k1 rides the shoulder of the same road
+        shoulder = root.find(".//Private[@entityRef='k1']//LanePosition").get("laneId")
+        for lane in [root.find(".//Private[@entityRef='p1']//LanePosition")] + \
+                root.find(".//Event[@name='p1_on_the_sidewalk']//Polyline").findall(".//LanePosition"):
+            lane.set("laneId", shoulder)
+    result = next(a for a in validate(_edit(scene, onto_the_shoulder), "sumo").agents if a.name == "p1")
+    assert not result.achieved and "not a sidewalk" in result.reason
+
+
+def test_without_esmini_the_report_says_it_was_not_run(tmp_path, monkeypatch, capsys):
+    monkeypatch.setenv("TTSGC_ESMINI", str(tmp_path / "no-esmini"))
+    scene = _compiled("stop_sign_right_turn", tmp_path)
+    report = validate(scene)
+    assert report.ok and report.players == ["sumo"] and "esmini" in report.not_run[0]
+    assert main(["validate", str(scene)]) == 0
+    assert "not run: esmini" in capsys.readouterr().out
+    assert main(["validate", str(scene), "--player", "esmini"]) == 2
+
+
+# -- the judge on traces made by hand --------------------------------------------------------------------------
+
+def _trace(bodies: dict[str, list[tuple[float, float, float]]], steps: int = 1, dx: float = 0.0) -> Trace:
+    """Bodies at (x, y, h), moving dx per 0.1 s step."""
+    trace = Trace(player="hand", step_s=0.1)
+    for name, (x, y, h) in bodies.items():
+        trace.bodies[name] = Body(4.0, 2.0)
+        trace.samples[name] = [Sample(k * 0.1, x + k * dx, y, h, dx / 0.1) for k in range(steps)]
+    return trace
+
+
+def test_box_distance_is_exact_for_oriented_boxes():
+    body, origin = Body(4.0, 2.0), Sample(0, 0, 0, 0, 0)  # spans x -2..2, y -1..1
+    assert J.box_distance(origin, body, Sample(0, 0, 2.5, 0, 0), body) == pytest.approx(0.5)
+    across = Sample(0, 2.0 + 1.0 + 0.7, 0, math.pi / 2, 0)  # turned 90°: its side faces our front
+    assert J.box_distance(origin, body, across, body) == pytest.approx(0.7)
+    corner_first = Sample(0, 2.0 + 3.0 / math.sqrt(2) + 0.5, 0, math.pi / 4, 0)  # a corner 0.5 m from our front
+    assert J.box_distance(origin, body, corner_first, body) == pytest.approx(0.5)
+    assert J.box_distance(origin, body, Sample(0, 3.9, 0, 0, 0), body) == 0.0
+
+
+def test_collisions_are_asked_for_only_with_an_agent_that_seeks_danger():
+    from ttsgc.simulate.plan import Entity, Plan
+
+    def entity(name, action, behavior="normal", ego=False):
+        return Entity(name, "vehicle", "car", "none", 4.0, 2.0,
+                      {"action": action, "behavior": behavior, "is_ego": str(ego).lower()})
+    plan = Plan(Path("x.xosc"), Path("x.xodr"), {"ego": entity("ego", "go_straight", ego=True),
+                                                 "a": entity("a", "go_straight", "aggressive"),
+                                                 "b": entity("b", "go_straight"),
+                                                 "w": entity("w", "cross_the_road")}, {}, [], [])
+    assert J.asked_for(plan, "a", "ego") and J.asked_for(plan, "b", "a")
+    assert not J.asked_for(plan, "ego", "w") and not J.asked_for(plan, "b", "w")  # a walker crossing: no
+    trace = _trace({"ego": (0, 0, 0), "a": (3, 0, 0), "b": (100, 0, 0), "w": (103, 0, 0)})
+    found = J.find_collisions(trace, trace.bodies)
+    assert [(a, b) for _, a, b, *_ in found] == [("a", "ego"), ("b", "w")]
+
+
+def test_the_collision_check_is_linear_in_the_number_of_agents():
+    def pairs(n):  # agents in a row 12 m apart: only neighbours are near
+        return len(J._near_pairs([(f"a{k}", Sample(0, 12.0 * k, 0, 0, 0)) for k in range(n)]))
+    assert pairs(20) < 2 * 20 and pairs(100) < 2 * 100
+
+    def seconds(n):
+        trace = _trace({f"a{k:03}": (12.0 * k, 0, 0) for k in range(n)}, steps=200, dx=1.0)
+        t = time.perf_counter()
+        J.find_collisions(trace, trace.bodies)
+        J.criticality(trace, trace.bodies, "a000")
+        return time.perf_counter() - t
+    small, large = min(seconds(20) for _ in range(3)), min(seconds(100) for _ in range(3))
+    assert large < 8 * small  # 5x the agents; linear with slack for a shared machine
+
+
+def test_the_report_order_does_not_depend_on_the_order_of_the_trace():
+    names = ["c", "a", "ego", "b"]
+    first = _trace({n: (k * 3.0, 0, 0) for k, n in enumerate(names)})
+    second = _trace({n: (k * 3.0, 0, 0) for k, n in reversed(list(enumerate(names)))})
+    assert J.find_collisions(first, first.bodies) == J.find_collisions(second, second.bodies)
+    assert J.criticality(first, first.bodies, "ego") == J.criticality(second, second.bodies, "ego")
