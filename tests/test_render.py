@@ -147,11 +147,11 @@ def test_render_command_draws_a_played_scene_and_refuses_bad_outputs(tmp_path, c
     from ttsgc.cli import main
 
     scene = tmp_path / "blocking.xosc"
-    assert main(["compile", str(ROOT / "examples" / "blocking.tsg"), "-o", str(scene), "--player", "sumo"]) == 0
-    assert main(["render", str(scene), "-o", str(tmp_path / "blocking.png"), "--player", "sumo"]) == 0
-    first = (tmp_path / "blocking.png").read_bytes()
+    assert main(["compile", str(ROOT / "examples" / "blocking.tsg"), "-o", str(scene), "--player", "sumo",
+                 "--render"]) == 0
+    first = (tmp_path / "blocking.png").read_bytes()  # compile --render: the picture beside the scene
     assert "verdict ok" in capsys.readouterr().out
-    assert main(["render", str(scene), "-o", str(tmp_path / "again.png")]) == 0
+    assert main(["render", str(scene), "-o", str(tmp_path / "again.png"), "--player", "sumo"]) == 0
     assert (tmp_path / "again.png").read_bytes() == first  # played again, drawn again: the same bytes
     assert main(["render", str(scene), "-o", str(tmp_path / "blocking.jpg")]) == 2
     assert "must end in .png, .gif, .mp4" in capsys.readouterr().err
