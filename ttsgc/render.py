@@ -365,21 +365,24 @@ class _Canvas:
                 ax.text(x, y, text, fontsize=6, ha="center", va="center", zorder=3.1)
         bar = 10.0 if view.size < 150 else 50.0  # a scale bar in the lower left
         bx, by = view.x0 + view.size * 0.03, view.y0 + view.size * 0.03
-        ax.plot([bx, bx + bar], [by, by], color="black", linewidth=3, solid_capstyle="butt", zorder=6)
-        ax.text(bx + bar / 2, by + view.size * 0.012, f"{bar:g} m", ha="center", va="bottom", fontsize=9, zorder=6)
+        ax.plot([bx, bx + bar], [by, by], color="black", linewidth=3, solid_capstyle="butt", zorder=6,
+                path_effects=self._outline(3, "white"))
+        ax.text(bx + bar / 2, by + view.size * 0.012, f"{bar:g} m", ha="center", va="bottom", fontsize=9, zorder=6,
+                bbox=dict(boxstyle="round,pad=0.1", facecolor="white", edgecolor="none", alpha=0.8))
 
     def paths(self, alpha: float = 0.9) -> None:
         for name in _draw_order(self.trace, self.cast):
             samples = self.trace.samples[name]
-            ego = name == self.cast.ego
+            width = 3.0 if name == self.cast.ego else 1.8
             self.ax.plot([s.x for s in samples], [s.y for s in samples], color=colour_of(name, self.cast),
-                         linewidth=3.0 if ego else 1.8, alpha=alpha, zorder=4, solid_capstyle="round",
-                         path_effects=self._outline(1.0))
+                         linewidth=width, alpha=alpha, zorder=4, solid_capstyle="round",
+                         path_effects=self._outline(width))
 
-    def _outline(self, width: float):
+    def _outline(self, linewidth: float, colour: str = "#222222"):
+        """A rim around a line of that width, so it reads on asphalt and on grass alike."""
         from matplotlib import patheffects
 
-        return [patheffects.Stroke(linewidth=width + 2.2 * (width > 0) + 1.2, foreground="#222222"), patheffects.Normal()]
+        return [patheffects.Stroke(linewidth=linewidth + 2.0, foreground=colour), patheffects.Normal()]
 
     def box(self, name: str, sample: Sample, filled: bool = True, animated: bool = False):
         from matplotlib.patches import Polygon
@@ -473,7 +476,7 @@ class _Canvas:
             wrapped = "\n".join(textwrap.wrap(line, 38)[:3])
             panel.text(0.06, y, wrapped, fontsize=8, va="top", color="#333333", transform=panel.transAxes)
             y -= 0.028 * (wrapped.count("\n") + 1) + 0.006
-        handles = [Patch(facecolor=EGO_COLOUR, edgecolor="black", linewidth=2.0, label=f"ego ({self.cast.ego})")]
+        handles = [Patch(facecolor=EGO_COLOUR, edgecolor="black", linewidth=2.0, label="ego" if self.cast.ego in (None, "ego") else f"ego ({self.cast.ego})")]
         present = sorted({self.cast.types.get(n, "") for n in self.trace.samples if n != self.cast.ego})
         for kind in present:
             handles.append(Patch(facecolor=TYPE_COLOURS.get(kind, OTHER_COLOUR), edgecolor="black",
