@@ -150,6 +150,18 @@ def test_json_lines_inputs_and_their_errors(tmp_path):
     assert main(["batch", str(tmp_path / "missing"), "-o", str(tmp_path / "o")]) == 2
 
 
+def test_a_batch_never_writes_over_its_inputs(tmp_path, capsys):
+    shutil.copy(EXAMPLES / "cut_off.txt", tmp_path / "cut_off.txt")
+    shutil.copy(EXAMPLES / "cut_off.tsg", tmp_path / "cut_off.tsg")
+    before = (tmp_path / "cut_off.tsg").read_bytes()
+    assert main(["batch", str(tmp_path), "-o", str(tmp_path)]) == 2
+    assert "is the prompts folder" in capsys.readouterr().err
+    assert (tmp_path / "cut_off.tsg").read_bytes() == before and not list(tmp_path.glob("*.xosc"))
+    (tmp_path / "file").write_text("")
+    assert main(["batch", str(tmp_path), "-o", str(tmp_path / "file")]) == 2
+    assert "must be a folder" in capsys.readouterr().err
+
+
 def test_folder_inputs_of_one_stem_keep_apart(tmp_path):
     for suffix in (".txt", ".tsg"):
         shutil.copy(EXAMPLES / f"blocking{suffix}", tmp_path / f"blocking{suffix}")

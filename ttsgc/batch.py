@@ -125,6 +125,15 @@ def plan_jobs(prompts: Path, out_dir: Path, variants: int = 1, maps=None, method
     --variants does: scene-1, scene-2...; one variant keeps the scene's own seed)."""
     if variants < 1:
         raise BatchError(f"--variants must be at least 1, not {variants}")
+    out_dir, prompts = Path(out_dir), Path(prompts)
+    if out_dir.exists() and not out_dir.is_dir():
+        raise BatchError(f"{out_dir}: the output must be a folder, and this is a file")
+    if prompts.is_dir() and out_dir.resolve() == prompts.resolve():
+        raise BatchError(f"{out_dir}: the output folder is the prompts folder; the lowered scenes would overwrite "
+                         f"the hand-written ones (choose another -o)")
+    if prompts.is_file() and prompts.resolve().parent == out_dir.resolve() and (
+            prompts.name in (SUMMARY_JSON, SUMMARY_CSV) or prompts.suffix in (".xosc", ".tsg", ".xodr")):
+        raise BatchError(f"{prompts}: the batch would write over its own input (choose another -o)")
     jobs = []
     for ident, source, kind, text in read_inputs(prompts):
         for k in range(variants):
