@@ -207,9 +207,7 @@ def _road_order(road_id: str):
 
 
 def _offset(road: Road, s: float) -> float:
-    from ttsgc.roads.opendrive import _piecewise
-
-    return _piecewise(road.lane_offsets, s)
+    return road.lane_offset(s)
 
 
 def _mark(kind: str, colour: str | None, line) -> tuple[str, str, float, list]:

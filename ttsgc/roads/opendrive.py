@@ -254,6 +254,10 @@ class Road:
         g = self.geometry[i]
         return g.at(s - g.s)
 
+    def lane_offset(self, s: float) -> float:
+        """Lateral offset of the centre lane (the line between the two directions) from the reference line."""
+        return _piecewise(self.lane_offsets, s)
+
     def section_at(self, s: float) -> LaneSection:
         starts = [sec.s for sec in self.sections]
         return self.sections[max(0, bisect.bisect_right(starts, s + 1e-9) - 1)]
