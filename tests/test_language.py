@@ -12,7 +12,7 @@ from ttsgc import vocabulary as V
 from ttsgc.cli import main
 from ttsgc.language import ScenarioError, format_scenario, parse, parse_file
 from ttsgc.language.parse import grammar_parser
-from ttsgc.scenario import Agent, Scenario, Stage
+from ttsgc.scenario import Agent, Scenario, Stage, behind_cycles
 
 SKETCH = """\
 # Unprotected left turn with oncoming traffic, then the ego is boxed in.
@@ -130,6 +130,26 @@ def test_semantic_rules(agent_line, message):
     with pytest.raises(ScenarioError) as err:
         parse(text)
     assert any(message in d.message for d in err.value.diagnostics), err.value.render()
+
+
+def test_behind_cycles_are_each_reported_once_and_chains_into_them_are_not_cycles():
+    text = ('scenario "x"\nstage s {\n    ego car go_straight\n'
+            '    car a at front go_straight behind b\n    car b at front go_straight behind c\n'
+            '    car c at front go_straight behind a\n    car d at front go_straight behind a\n'
+            '    car e at front go_straight behind d\n'
+            '    car f at back go_straight behind g\n    car g at back go_straight behind f\n}\n')
+    with pytest.raises(ScenarioError) as err:
+        parse(text)
+    cycles = [d.message for d in err.value.diagnostics if "cycle" in d.message]
+    assert cycles == ["'behind' forms a cycle: a -> b -> c", "'behind' forms a cycle: f -> g"]
+
+
+def test_behind_cycles_walks_each_link_once():
+    follows = {f"c{k}": f"c{k + 1}" for k in range(20000)}  # one long chain: no cycle, no quadratic walk
+    follows["c20000"] = "c0"
+    assert [len(c) for c in behind_cycles(follows)] == [20001]
+    del follows["c20000"]
+    assert behind_cycles(follows) == []
 
 
 def test_the_ego_cannot_block_itself():

@@ -10,12 +10,15 @@ from pathlib import Path
 
 from ttsgc import __version__
 from ttsgc.errors import ExitCode, TtsgcError
-from ttsgc.files import write_atomic
-from ttsgc.language import ScenarioError, format_scenario, parse_file
-from ttsgc.scenario import RoadSpec
+from ttsgc.files import OutputError, check_outputs, protect_inputs, release_inputs, write_atomic, write_output
+
+# Each command imports what it uses inside its function: `ttsgc validate` needs neither the language nor the
+# compiler, `ttsgc check` no simulator; a start-up that loads everything costs every command.
 
 
 def _check(args) -> int:
+    from ttsgc.language import ScenarioError, parse_file
+
     results, failed = [], False
     for path in args.files:
         try:
@@ -34,6 +37,8 @@ def _check(args) -> int:
 
 
 def _fmt(args) -> int:
+    from ttsgc.language import ScenarioError, format_scenario, parse_file
+
     invalid = unformatted = False
     for path in args.files:
         try:
@@ -50,7 +55,12 @@ def _fmt(args) -> int:
             print(f"{path}: not in the canonical layout (run 'ttsgc fmt {path}')", file=sys.stderr)
             unformatted = True
         else:
-            write_atomic(path, canonical)
+            try:
+                write_output(path, canonical)
+            except OutputError as exc:
+                print(f"ttsgc: error: {exc}", file=sys.stderr)
+                invalid = True
+                continue
             print(f"{path}: formatted")
     if invalid:
         return ExitCode.INVALID_SCENARIO
@@ -80,10 +90,13 @@ def _lower_file(args, source: Path, seed: int):
 
 def _lower(args) -> int:
     source = Path(args.input)
+    protect_inputs(source)
+    if args.output:
+        check_outputs(args.output)
     prompt, lowering = _lower_file(args, source, args.seed or 0)
     text = lowering.tsg(prompt)
     if args.output:
-        write_atomic(args.output, text)
+        write_output(args.output, text)
         print(f"{args.output}: lowered ({lowering.method}, {lowering.tries} tr{'y' if lowering.tries == 1 else 'ies'})")
     else:
         print(text, end="")
@@ -91,28 +104,89 @@ def _lower(args) -> int:
 
 
 def _compile(args) -> int:
+    from ttsgc.language import parse_file
+
     source = Path(args.input)
     kind = args.source_kind or ("text" if source.suffix.lower() in (".txt", ".prompt", ".md") else "tsg")
     out = Path(args.output) if args.output else source.with_suffix(".xosc")
+    _protect_compile_inputs(source, args.maps)
+    args.osc_version = _target_version(args)
+    if args.distribution:
+        return _compile_distribution(args, source, kind, out)
+    targets = [out if args.variants == 1 else out.with_name(f"{out.stem}-{k + 1}{out.suffix}")
+               for k in range(args.variants)]
+    lowered_paths = [_lowered_path(target) if kind == "text" else None for target in targets]
+    check_outputs(*targets, *filter(None, lowered_paths), *(_report_path(args, t) for t in targets if args.report))
     base_seed = args.seed
     status = ExitCode.OK
-    for k in range(args.variants):
+    for k, (target, lowered_path) in enumerate(zip(targets, lowered_paths)):
         seed = None if base_seed is None and args.variants == 1 else (base_seed or 0) + k
-        target = out if args.variants == 1 else out.with_name(f"{out.stem}-{k + 1}{out.suffix}")
-        lowering = None
+        lowering = lowered = None
         if kind == "text":
             prompt, lowering = _lower_file(args, source, seed or 0)
             scenario = lowering.scenario
-            write_atomic(_lowered_path(target), lowering.tsg(prompt))  # to edit and compile again
+            lowered = (lowered_path, lowering.tsg(prompt))  # to edit and compile again; written on success
         else:
             scenario = parse_file(source)
-        status = max(status, _compile_one(args, scenario, target, seed, lowering))
+        status = max(status, _compile_one(args, scenario, target, seed, lowering, lowered))
     return status
+
+
+def _compile_distribution(args, source: Path, kind: str, out: Path) -> int:
+    """--variants N --distribution: one scenario with parameters, its distribution, N proven concrete files."""
+    from ttsgc.language import parse_file
+    from ttsgc.pipeline import compile_distribution, distribution_paths, write_distribution
+
+    lowering = None
+    if kind == "text":
+        prompt, lowering = _lower_file(args, source, args.seed or 0)
+        scenario = lowering.scenario
+    else:
+        scenario = parse_file(source)
+    log = lambda message: print(message, file=sys.stderr)  # noqa: E731
+    dist, failure = compile_distribution(scenario, out, args.variants, maps=args.maps, seed=args.seed,
+                                         version=args.osc_version, simulate=not args.no_simulate, log=log,
+                                         target=args.target, players=args.player)
+    if failure is not None:
+        print(failure.table(), file=sys.stderr)
+        print(f"ttsgc: error: {out}: the scene or one of its variants does not do what it says; nothing was written",
+              file=sys.stderr)
+        return ExitCode.SIMULATION_FAILED
+    if lowering is not None:
+        write_output(_lowered_path(out), lowering.tsg(prompt))
+    write_distribution(dist, out)
+    dist_path, concrete = distribution_paths(out, args.variants)
+    if args.report:
+        data = {"parameters": dist.names, "variants": [
+            {"file": str(path), "values": dict(zip(dist.names, row)),
+             "report": report.model_dump(mode="json") if report is not None else None}
+            for path, row, report in zip(concrete, dist.values, dist.reports)]}
+        write_output(args.report, json.dumps(data, indent=2) + "\n")
+    scene = dist.variants[0].scene
+    proven = "; every variant proven" if not args.no_simulate else ""
+    print(f"{out}: {scene.map_name} approach {scene.approach}, OpenSCENARIO {args.osc_version}, "
+          f"{len(dist.names)} parameter(s) ({', '.join(dist.names)}); {dist_path}: {args.variants} variants "
+          f"(Deterministic); concrete files {concrete[0].name} .. {concrete[-1].name}{proven}")
+    return ExitCode.OK
+
+
+def _protect_compile_inputs(source: Path, maps) -> None:
+    """The scene or prompt and every map file named are inputs: no output may replace them."""
+    from ttsgc.roads.opendrive import MapError
+    from ttsgc.roads.retrieve import map_files
+
+    protect_inputs(source)
+    try:
+        protect_inputs(*map_files(maps))
+    except MapError:
+        pass  # reported when the library is loaded
 
 
 def _lowered_path(out: Path) -> Path:
     """Where the lowered scene goes: beside the output, unless a scene a person wrote is already there."""
     path = out.with_suffix(".tsg")
+    if path == out:  # -o scene.tsg: the OpenSCENARIO takes that name
+        return out.with_suffix(".lowered.tsg")
     if path.exists() and not path.read_text(encoding="utf-8", errors="replace").startswith("# Lowered ("):
         path = out.with_suffix(".lowered.tsg")
         print(f"ttsgc: note: {out.with_suffix('.tsg')} was not written by ttsgc; the lowered scene goes to {path}",
@@ -120,16 +194,25 @@ def _lowered_path(out: Path) -> Path:
     return path
 
 
-def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
+def _report_path(args, out: Path) -> Path:
+    """--report as given, or REPORT-k.json beside it for the k-th of several variants."""
+    report_path = Path(args.report)
+    if args.variants > 1:
+        report_path = report_path.with_name(f"{report_path.stem}-{out.stem.rsplit('-', 1)[-1]}{report_path.suffix}")
+    return report_path
+
+
+def _compile_one(args, scenario, out: Path, seed, lowering, lowered: tuple[Path, str] | None = None) -> int:
     from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 
     log = lambda message: print(message, file=sys.stderr)  # noqa: E731
     if args.no_simulate:
         compiled, report = compile_scenario(scenario, out, maps=args.maps, seed=seed,
-                                            version=args.osc_version), None
+                                            version=args.osc_version, target=args.target), None
     else:
         compiled, report = compile_and_prove(scenario, out, maps=args.maps, seed=seed,
-                                             version=args.osc_version, log=log, players=args.player)
+                                             version=args.osc_version, log=log, players=args.player,
+                                             target=args.target)
     scene = compiled.scene
     if args.explain:
         print(scene.explanation)
@@ -137,16 +220,15 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
         data = report.model_dump(mode="json") if report is not None else {"ok": None, "simulated": False}
         if lowering is not None:
             data["lowering"] = lowering.summary()
-        report_path = Path(args.report)
-        if args.variants > 1:
-            report_path = report_path.with_name(f"{report_path.stem}-{out.stem.rsplit('-', 1)[-1]}{report_path.suffix}")
-        write_atomic(report_path, json.dumps(data, indent=2) + "\n")
+        write_output(_report_path(args, out), json.dumps(data, indent=2) + "\n")
     if report is not None and not report.ok:
         print(report.table(), file=sys.stderr)
         print(f"ttsgc: error: {out}: the scene does not do what it says on any of the roads tried; nothing was "
               f"written (--no-simulate writes it unchecked)", file=sys.stderr)
         return ExitCode.SIMULATION_FAILED
     write(compiled, out)
+    if lowered is not None:
+        write_output(*lowered)
     checked = f"; {_proven(report)}" if report is not None else ""
     print(f"{out}: {scene.map_name} approach {scene.approach} ({scene.score}/{scene.requirements} requirements, "
           f"seed {scene.seed}), OpenSCENARIO {args.osc_version}; map copied as {out.parent / compiled.map_name}"
@@ -156,6 +238,32 @@ def _compile_one(args, scenario, out: Path, seed, lowering) -> int:
     if getattr(args, "render", False):
         _render_file(out, out.with_suffix(".png"), "sumo" if args.player == "all" else args.player)
     return ExitCode.OK
+
+
+def _target_version(args) -> str:
+    from ttsgc.emit.xosc import DEFAULT_VERSION
+    from ttsgc.targets import choose_version
+
+    return choose_version(args.target, args.osc_version, DEFAULT_VERSION)
+
+
+def _lint(args) -> int:
+    from ttsgc.targets.coverage import coverage, errors, lint_file
+
+    title = coverage(args.target).title
+    failed = False
+    for path in args.files:
+        findings = lint_file(path, args.target)
+        shown = findings if args.all else errors(findings)
+        for finding in shown:
+            print(finding.render(path, title))
+        unsupported = len(errors(findings))
+        failed = failed or unsupported > 0
+        hidden = len(findings) - len(shown)
+        print(f"{path}: {unsupported} element(s) {title} does not support"
+              + (f" ({hidden} warning(s) and note(s) not shown; --all shows them)" if hidden else ""),
+              file=sys.stderr)
+    return ExitCode.UNSUPPORTED_BY_TARGET if failed else ExitCode.OK
 
 
 def _eval(args) -> int:
@@ -171,23 +279,30 @@ def _eval(args) -> int:
     if len(failed) > args.show_failures:
         print(f"  ... and {len(failed) - args.show_failures} more failed run(s) (see --report)")
     if args.report:
-        write_atomic(args.report, report_json(runs) + "\n")
+        write_output(args.report, report_json(runs) + "\n")
     return ExitCode.OK
 
 
 def _import_ttsg(args) -> int:
     from ttsgc.pipeline import compile_and_prove, write
     from ttsgc.roads.retrieve import load_library
+    from ttsgc.language import format_scenario
     from ttsgc.ttsg_import import import_plan
 
+    protect_inputs(*filter(None, (args.plan, args.road_info)))
+    check_outputs(*filter(None, (args.output, args.xosc)))
     imported = import_plan(args.plan, args.road_info)
     text = format_scenario(imported.scenario)
-    write_atomic(args.output, text)
-    print(f"{args.output}: imported" + (f" ({len(imported.notes)} repair(s) noted in the file)"
-                                        if imported.notes else ""))
     for note in imported.notes:
         print(f"ttsgc: note: {note}", file=sys.stderr)
+
+    def write_scene() -> None:  # only once everything asked for has succeeded
+        write_output(args.output, text)
+        print(f"{args.output}: imported" + (f" ({len(imported.notes)} repair(s) noted in the file)"
+                                            if imported.notes else ""))
+
     if not args.xosc:
+        write_scene()
         return ExitCode.OK
     out, only = Path(args.xosc), None
     paper = imported.paper_road
@@ -210,8 +325,12 @@ def _import_ttsg(args) -> int:
                                          log=lambda m: print(m, file=sys.stderr))
     if not report.ok:
         print(report.table(), file=sys.stderr)
+        print(f"ttsgc: error: {out}: the scene does not do what it says on any of the roads tried; nothing was "
+              f"written", file=sys.stderr)
         return ExitCode.SIMULATION_FAILED
+    check_outputs(args.output, out)
     write(compiled, out)
+    write_scene()
     print(f"{out}: {compiled.scene.map_name} {compiled.scene.approach}"
           f"{' (the paper' + chr(39) + 's road)' if only else ' (ranked)'}; {_proven(report)}")
     return ExitCode.OK
@@ -226,10 +345,13 @@ def _proven(report) -> str:
 def _validate(args) -> int:
     from ttsgc.simulate.validate import validate
 
+    protect_inputs(args.scene)
+    if args.report:
+        check_outputs(args.report)
     report = validate(args.scene, args.player)
     print(report.table())
     if args.report:
-        write_atomic(args.report, report.model_dump_json(indent=2) + "\n")
+        write_output(args.report, report.model_dump_json(indent=2) + "\n")
     return ExitCode.OK if report.ok else ExitCode.SIMULATION_FAILED
 
 
@@ -280,8 +402,9 @@ def _add_render_and_batch(commands, llm_options) -> None:
     batch.add_argument("prompts", metavar="PROMPTS", help="a folder of .txt/.tsg, or a JSON Lines file of "
                                                           '{"prompt": ...} or {"tsg": ...}')
     batch.add_argument("-o", "--output", required=True, metavar="OUTDIR")
-    batch.add_argument("--variants", type=int, default=1, metavar="N", help="scenes per input (seeds 0..N-1)")
-    batch.add_argument("--workers", type=int, metavar="N", help="processes at once (default: every core)")
+    batch.add_argument("--variants", type=_number(int, 1, 1000), default=1, metavar="N",
+                       help="scenes per input (seeds 0..N-1)")
+    batch.add_argument("--workers", type=_number(int, 1, 1024), metavar="N", help="processes at once (default: every core)")
     batch.add_argument("--ray", metavar="ADDRESS", help="run on a Ray cluster ('local' starts one on this machine; "
                                                         "needs pip install 'ttsgc[ray]')")
     batch.add_argument("--maps", action="append", metavar="PATH")
@@ -312,6 +435,7 @@ APPROACH_HEADERS = ["map", "approach", "lanes", "opp", "length", "edge", "juncti
 
 def _maps(args) -> int:
     from ttsgc.roads.retrieve import load_library, retrieve
+    from ttsgc.scenario import RoadSpec
 
     library = load_library(args.maps)
     if args.maps_command == "list":
@@ -358,6 +482,24 @@ def _road_word(text: str) -> str:
                                      + (f"; did you mean {V.either(hint)}?" if hint else ""))
 
 
+def _number(kind: type, low, high):
+    """An argparse type reading a flag's number through the one bounded reader (nan, inf, 5000 digits and
+    out-of-range values are usage errors, exit 2)."""
+    from ttsgc.numbers import NumberError, parse_float, parse_int
+
+    def read(text: str):
+        try:
+            return (parse_int if kind is int else parse_float)(text, low, high)
+        except NumberError as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    read.__name__ = kind.__name__  # argparse names the type in its message
+    return read
+
+
+SEED = _number(int, 0, 2**32 - 1)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="ttsgc", description="A traffic-scenario compiler: English or the "
                                      "scenario language in, validated OpenSCENARIO out.")
@@ -380,13 +522,13 @@ def build_parser() -> argparse.ArgumentParser:
                              help="how English is lowered: the offline rules, or Claude through the anthropic SDK "
                                   "(auto: anthropic when ANTHROPIC_API_KEY is set, else offline)")
     llm_options.add_argument("--model", help="the LLM model (default: $TTSGC_MODEL, else a current Claude model)")
-    llm_options.add_argument("--temperature", type=float, help="LLM temperature (default: $TTSGC_TEMPERATURE, else 0)")
-    llm_options.add_argument("--max-tokens", type=int, help="LLM answer limit (default: $TTSGC_MAX_TOKENS, else 2048)")
+    llm_options.add_argument("--temperature", type=_number(float, 0.0, 2.0), help="LLM temperature (default: $TTSGC_TEMPERATURE, else 0)")
+    llm_options.add_argument("--max-tokens", type=_number(int, 1, 128_000), help="LLM answer limit (default: $TTSGC_MAX_TOKENS, else 2048)")
 
     lower_ = commands.add_parser("lower", parents=[llm_options], help="lower an English prompt into a .tsg scene")
     lower_.add_argument("input", metavar="PROMPT.txt")
     lower_.add_argument("-o", "--output", metavar="SCENE.tsg", help="where to write (default: print it)")
-    lower_.add_argument("--seed", type=int, help="picks among a scene kind's variants")
+    lower_.add_argument("--seed", type=SEED, help="picks among a scene kind's variants")
     lower_.set_defaults(run=_lower)
 
     compile_ = commands.add_parser("compile", parents=[llm_options],
@@ -395,15 +537,22 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("-o", "--output", metavar="OUT.xosc", help="where to write (default: INPUT with .xosc)")
     compile_.add_argument("--from", dest="source_kind", choices=["text", "tsg"],
                           help="the input's kind (default: by extension, .txt is English)")
-    compile_.add_argument("--variants", type=int, default=1, metavar="N",
+    compile_.add_argument("--variants", type=_number(int, 1, 1000), default=1, metavar="N",
                           help="compile N different scenes (seeds N..N+k: other roads, other agent choices)")
+    compile_.add_argument("--distribution", action="store_true",
+                          help="with --variants N: the variants on one road (speeds, trigger distances, start "
+                               "positions) as one scenario with parameters, OUT.dist.xosc (a Deterministic "
+                               "ParameterValueDistribution) beside it, and the concrete OUT-1..N.xosc")
     compile_.add_argument("--maps", action="append", metavar="PATH",
                           help="an OpenDRIVE file or folder (repeatable); 'builtin' is the built-in library")
-    compile_.add_argument("--seed", type=int, help="pins the choice among equally ranked roads "
+    compile_.add_argument("--seed", type=SEED, help="pins the choice among equally ranked roads "
                                                    "(default: the scene's seed, else 0)")
     compile_.add_argument("--explain", action="store_true", help="print the ranking table of candidate roads")
-    compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"], default="1.3",
-                          help="OpenSCENARIO version (1.0 is what CARLA ScenarioRunner reads; default 1.3)")
+    compile_.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"],
+                          help="OpenSCENARIO version (default 1.3; --target carla writes 1.0)")
+    compile_.add_argument("--target", choices=["generic", "esmini", "carla"], default="generic",
+                          help="the player the file is written for: generic OpenSCENARIO, esmini (held against its "
+                               "coverage), carla (the 1.0 subset CARLA ScenarioRunner reads); default generic")
     compile_.add_argument("--no-simulate", action="store_true", help="skip the simulation check")
     compile_.add_argument("--report", metavar="REPORT.json", help="write the simulation report as JSON")
     compile_.add_argument("--render", action="store_true", help="also draw the scene, as a .png beside the .xosc")
@@ -417,16 +566,24 @@ def build_parser() -> argparse.ArgumentParser:
     validate.add_argument("--report", metavar="REPORT.json", help="write the report as JSON")
     validate.set_defaults(run=_validate)
 
+    lint = commands.add_parser("lint", help="list every element of .xosc files that a player does not support, "
+                                            "from its documented coverage")
+    lint.add_argument("files", nargs="+", metavar="FILE.xosc")
+    lint.add_argument("--target", choices=["carla", "esmini"], required=True, help="the player")
+    lint.add_argument("--all", action="store_true", help="also list what is supported with a limit, or read past")
+    lint.set_defaults(run=_lint)
+
     eval_ = commands.add_parser("eval", parents=[llm_options],
                                 help="the paper's metrics (AA, RA, SA, AD, RD, failure rate) on a suite")
     eval_.add_argument("suite", metavar="SUITE", help="a folder of prompts (*.txt, gold *.tsg beside) or TTSG plans")
-    eval_.add_argument("--seeds", type=int, default=5, help="generations per case (default 5)")
+    eval_.add_argument("--seeds", type=_number(int, 1, 1000), default=5, help="generations per case (default 5)")
     eval_.add_argument("--maps", action="append", metavar="PATH", help="map files or folders ('builtin' for the "
                                                                        "built-in library)")
     eval_.add_argument("--report", metavar="EVAL.json", help="write every run and the summaries as JSON")
     eval_.add_argument("--no-simulate", action="store_true", help="compile only (SA then counts compiles)")
-    eval_.add_argument("--show-failures", type=int, default=10, metavar="N", help="list up to N failed runs")
-    eval_.add_argument("--workers", type=int, metavar="N", help="processes running cases at once (default: every core)")
+    eval_.add_argument("--show-failures", type=_number(int, 0, 1_000_000), default=10, metavar="N", help="list up to N failed runs")
+    eval_.add_argument("--workers", type=_number(int, 1, 1024), metavar="N",
+                       help="processes running cases at once (default: every core)")
     eval_.set_defaults(run=_eval)
 
     importer = commands.add_parser("import-ttsg", help="turn a TTSG plan (agent_output.json) into a .tsg scene")
@@ -451,7 +608,7 @@ def build_parser() -> argparse.ArgumentParser:
     show = maps_commands.add_parser("show", parents=[maps_options], help="every approach of one map")
     show.add_argument("name", help="the map's name or file stem")
     query = maps_commands.add_parser("query", parents=[maps_options], help="the approaches that meet conditions")
-    query.add_argument("--lanes", type=int, default=1, help="at least this many lanes in the driving direction")
+    query.add_argument("--lanes", type=_number(int, 1, 100), default=1, help="at least this many lanes in the driving direction")
     junction = query.add_mutually_exclusive_group()
     junction.add_argument("--junction", dest="junction", action="store_true", default=None,
                           help="ends at a junction")
@@ -470,16 +627,35 @@ def _player_option(command) -> None:
                               "found through $TTSGC_ESMINI or on PATH)")
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised like Ctrl-C so that every temporary folder and child process is cleaned up on the way out."""
+
+
+def _on_sigterm(signum, frame):
+    raise Terminated()
+
+
 def main(argv: list[str] | None = None) -> int:
+    import signal
+    import threading
+
     args = build_parser().parse_args(argv)
+    installed = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGTERM, _on_sigterm) if installed else None
     try:
         return int(args.run(args))
     except TtsgcError as exc:
-        print(f"ttsgc: error: {exc.render()}", file=sys.stderr)
+        from ttsgc.language.diagnostics import ScenarioError
+
+        text = exc.render()
+        print(text if isinstance(exc, ScenarioError) else f"ttsgc: error: {text}", file=sys.stderr)  # has its own
         return int(exc.exit_code)
-    except KeyboardInterrupt:
-        print("ttsgc: interrupted", file=sys.stderr)
-        return 130
+    except BrokenPipeError:  # the reader went away (| head): stop quietly, as a shell pipeline expects
+        _silence_stdout()
+        return 141
+    except KeyboardInterrupt as exc:
+        print("ttsgc: terminated" if isinstance(exc, Terminated) else "ttsgc: interrupted", file=sys.stderr)
+        return 143 if isinstance(exc, Terminated) else 130
     except Exception as exc:  # noqa: BLE001 - the last line of defence: no traceback unless asked
         if args.debug:
             traceback.print_exc()
@@ -487,6 +663,22 @@ def main(argv: list[str] | None = None) -> int:
             print(f"ttsgc: internal error: {type(exc).__name__}: {exc} (run with --debug for a traceback)",
                   file=sys.stderr)
         return int(ExitCode.INTERNAL)
+    finally:
+        release_inputs()
+        if installed:
+            signal.signal(signal.SIGTERM, previous if previous is not None else signal.SIG_DFL)
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null so the interpreter's last flush does not fail on the closed pipe again."""
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):
+        pass
 
 
 if __name__ == "__main__":

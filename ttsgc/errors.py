@@ -14,6 +14,8 @@ class ExitCode(IntEnum):
     SIMULATION_FAILED = 5  # the scene does not do what it says when run
     LOWERING_FAILED = 6  # the English could not be lowered into a valid scenario
     NOT_FORMATTED = 7  # `fmt --check`: a file is not in the canonical layout
+    UNSUPPORTED_BY_TARGET = 8  # `lint`: the file uses what its player does not support; `compile --target`:
+    # the scene needs what the target player cannot express
 
 
 class TtsgcError(Exception):
@@ -23,3 +25,9 @@ class TtsgcError(Exception):
 
     def render(self) -> str:
         return str(self)
+
+
+class UsageError(TtsgcError):
+    """A bad command line: a path, a number or an environment variable that is not what the command needs."""
+
+    exit_code = ExitCode.INVALID_SCENARIO

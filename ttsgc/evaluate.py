@@ -17,7 +17,7 @@ from collections import Counter
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
-from ttsgc.errors import TtsgcError
+from ttsgc.errors import TtsgcError, UsageError
 from ttsgc.runner import progress_bar  # noqa: F401 - the one progress bar, also used from here
 from ttsgc.scenario import Scenario
 
@@ -86,9 +86,16 @@ class Run:
 def load_suite(folder: Path) -> list[Case]:
     """A suite: prompts (*.txt, with a gold *.tsg beside where there is one) or TTSG plan folders."""
     folder = Path(folder)
+    if not folder.is_dir():
+        raise UsageError(f"{folder}: not a folder (a suite is a folder of prompts or TTSG plans)")
     kinds = {}
     if (folder / "suite.toml").is_file():
-        kinds = tomllib.loads((folder / "suite.toml").read_text()).get("kinds", {})
+        try:
+            kinds = tomllib.loads((folder / "suite.toml").read_text(encoding="utf-8")).get("kinds", {})
+        except (tomllib.TOMLDecodeError, OSError, UnicodeDecodeError) as exc:
+            raise UsageError(f"{folder / 'suite.toml'}: cannot be read: {exc}") from None
+        if not isinstance(kinds, dict):
+            raise UsageError(f"{folder / 'suite.toml'}: 'kinds' must be a table of case = kind")
     cases = []
     for plan in sorted(folder.glob("**/agent_output.json")):
         group = plan.parent.parent.name
@@ -100,7 +107,7 @@ def load_suite(folder: Path) -> list[Case]:
         cases.append(Case(prompt.stem, kinds.get(prompt.stem, "normal"), group=prompt.stem, prompt=prompt,
                           gold=gold if gold.is_file() else None))
     if not cases:
-        raise TtsgcError(f"{folder}: no cases (prompts *.txt or TTSG plans agent_output.json)")
+        raise UsageError(f"{folder}: no cases (prompts *.txt or TTSG plans agent_output.json)")
     return cases
 
 

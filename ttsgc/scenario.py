@@ -11,7 +11,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Annotated, Any, Iterator
 
-import networkx as nx
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from ttsgc import vocabulary as V
@@ -288,11 +287,28 @@ def _agent_problems(s: Scenario, add) -> None:
             add(at, f"'{a.name}' can only be behind an agent of the same stage at the same position "
                     f"('{a.behind}' is at {target.relative_to_ego} in stage '{s.stages[stage_of[a.behind]].name}')")
 
-    graph = nx.DiGraph((a.name, a.behind) for _, _, a in located if a.behind and a.behind in by_name)
-    for cycle in nx.simple_cycles(graph):
+    follows = {a.name: a.behind for _, _, a in located if a.behind and a.behind in by_name}
+    for cycle in behind_cycles(follows):
         if len(cycle) > 1:
             i, j, _ = next(x for x in located if x[2].name == min(cycle))
             add(("stages", i, "agents", j, "behind"), "'behind' forms a cycle: " + " -> ".join(sorted(cycle)))
+
+
+def behind_cycles(follows: dict[str, str]) -> list[list[str]]:
+    """The cycles of 'behind' links (agent -> the agent it stands behind), each once. An agent stands behind
+    at most one other, so walking the links from every agent finds them all in linear time."""
+    cycles, walked = [], set()
+    for start in follows:
+        path, at = [], {}
+        name = start
+        while name in follows and name not in walked and name not in at:
+            at[name] = len(path)
+            path.append(name)
+            name = follows[name]
+        if name in at:
+            cycles.append(path[at[name]:])
+        walked.update(path)
+    return cycles
 
 
 def _trigger_problems(a: Agent, at: Path, by_name_all: set[str], add) -> None:

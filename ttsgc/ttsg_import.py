@@ -15,6 +15,7 @@ from pathlib import Path
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.offline import NAME_PREFIX
+from ttsgc.numbers import NumberError, parse_int
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Stage, Weather, find_problems
 
 CONDITIONS = {"Clear": "clear", "Cloudy": "cloudy", "Wet": "wet", "WetCloudy": "wet_cloudy", "SoftRain": "soft_rain",
@@ -98,7 +99,13 @@ def _road(retrieval: dict, env: dict, notes: list[str]) -> RoadSpec:
         return tuple(dict.fromkeys(out))
     required = words("required_signals") + words("required_objects")
     forbidden = words("without_signals") + words("without_objects")
-    lanes = int(retrieval.get("number_of_lanes") or 1)
+    raw_lanes = retrieval.get("number_of_lanes") or 1
+    try:  # a plan written by an LLM: "2", 2, 2.0, "two", 1e308 and Infinity all occur
+        lanes = parse_int(str(int(raw_lanes)) if isinstance(raw_lanes, float) and raw_lanes.is_integer()
+                          else str(raw_lanes), -10**6, 10**6)
+    except NumberError as exc:
+        notes.append(f"number_of_lanes: {exc}, used 1")
+        lanes = 1
     if not 1 <= lanes <= 6:
         notes.append(f"number_of_lanes {lanes} is out of 1..6, used {min(max(lanes, 1), 6)}")
         lanes = min(max(lanes, 1), 6)

@@ -57,8 +57,8 @@ def candidates(scenario: Scenario, library: list[MapIndex], seed: int | None = N
     the caller takes the next when the scene fails on a road. Raises NoRoadError when no road can host the
     scene at all (naming why), before yielding anything."""
     seed = seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
-    approaches = retrieve(library, scenario.road)
-    pool = [(a, m) for m in library for a in m.approaches if a in approaches]
+    retrieved = {id(a) for a in retrieve(library, scenario.road)}  # by identity: equality compares every field
+    pool = [(a, m) for m in library for a in m.approaches if id(a) in retrieved]
     if only is not None:
         pool = [(a, m) for a, m in pool if (m.name, a.id) == only]
         if not pool:

@@ -20,18 +20,21 @@ from __future__ import annotations
 import datetime as dt
 import functools
 import math
-from importlib import resources
+import importlib.util
+from pathlib import Path
 from xml.etree import ElementTree
 
 from lxml import etree
-from scenariogeneration import xosc
-from scenariogeneration.xosc.enumerations import VersionBase
 
 from ttsgc import intent as I
 from ttsgc import vocabulary as V
 from ttsgc.binding.place import BoundAgent, LanePos
 from ttsgc.binding.scene import BoundScene
+from ttsgc.emit.lean_import import openscenario_writer
 from ttsgc.errors import TtsgcError
+
+xosc = openscenario_writer()
+VersionBase = xosc.VersionBase
 
 VERSIONS = ("1.0", "1.1", "1.2", "1.3")
 DEFAULT_VERSION = "1.3"
@@ -128,8 +131,12 @@ def _trajectory_bound(agent: BoundAgent) -> bool:
 
 
 def _initial_speed(agent: BoundAgent) -> float:
-    """Bodies that follow a trajectory stand until their action starts; the rest drive at their speed."""
-    return 0.0 if _trajectory_bound(agent) or agent.start_delay_s else agent.speed_mps
+    """Bodies that follow a trajectory or wait for their turn through a junction stand until then; the rest
+    drive at their speed (a vehicle routed through the junction drives on whatever its trigger: its route is
+    its action)."""
+    if _trajectory_bound(agent) or agent.start_delay_s:
+        return 0.0
+    return agent.speed_mps
 
 
 def _entity(agent: BoundAgent, scene: BoundScene, minor: int):
@@ -354,7 +361,9 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
 @functools.cache
 def _schema(version: str) -> etree.XMLSchema:
     folder = {"1.0": "1.0.0", "1.1": "1.1.0", "1.2": "1.2.0", "1.3": "1.3.0"}[version]
-    path = resources.files("qc_openscenario") / "schema" / folder / "OpenSCENARIO.xsd"
+    # the package's folder, found without importing it (its __init__ loads the whole checker bundle)
+    package = Path(importlib.util.find_spec("qc_openscenario").submodule_search_locations[0])
+    path = package / "schema" / folder / "OpenSCENARIO.xsd"
     return etree.XMLSchema(etree.parse(str(path)))
 
 

@@ -18,6 +18,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 from ttsgc import vocabulary as V
 from ttsgc.language.diagnostics import Diagnostic, ScenarioError
+from ttsgc.numbers import NumberError, parse_float, parse_int
 from ttsgc.resources import resource_dir
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -168,10 +169,6 @@ class _Clause:
     extra: dict[str, Any] = field(default_factory=dict)
 
 
-def _number(token: Token) -> float:
-    return float(token)
-
-
 @v_args(meta=True)
 class _Builder(Transformer):
     """One pass over the tree: words classified by the vocabulary, the model assembled, tokens remembered."""
@@ -194,6 +191,15 @@ class _Builder(Transformer):
             if token is not None:
                 return Diagnostic(token.line, token.column, message, width=len(str(token)), file=self.file)
         return Diagnostic(1, 1, message, file=self.file)
+
+    def number(self, token: Token, placeholder: float, integer: bool = False):
+        """A number through the one bounded reader; one unreadable is reported here and stands in as an
+        in-range placeholder, so the range rules do not report it a second time."""
+        try:
+            return (parse_int if integer else parse_float)(str(token), None, None)
+        except NumberError as exc:
+            self.error(token, f"unusable number: {exc}")
+            return placeholder
 
     # -- header ------------------------------------------------------------------------------------------
     def scenario_line(self, meta, children):
@@ -233,12 +239,12 @@ class _Builder(Transformer):
     def seed(self, meta, children):
         self.statements.append((meta.line, "seed"))
         self.where[("seed",)] = children[0]
-        return ("seed", int(children[0]), children[0])
+        return ("seed", self.number(children[0], 0, integer=True), children[0])
 
     # -- road --------------------------------------------------------------------------------------------
     def lanes(self, meta, children):
         self.statements.append((meta.line, "road.lanes"))
-        return ("lanes", int(children[0]), children[0])
+        return ("lanes", self.number(children[0], V.LANES_RANGE[0], integer=True), children[0])
 
     def at_junction(self, meta, children):
         self.statements.append((meta.line, "road.junction"))
@@ -297,19 +303,19 @@ class _Builder(Transformer):
         return _Clause("behind", str(c[0]), c[0])
 
     def order(self, meta, c):
-        return _Clause("order", int(c[0]), c[0])
+        return _Clause("order", self.number(c[0], V.ORDER_RANGE[0], integer=True), c[0])
 
     def gap(self, meta, c):
-        return _Clause("gap_m", _number(c[0]), c[0])
+        return _Clause("gap_m", self.number(c[0], V.GAP_RANGE_M[0]), c[0])
 
     def speed(self, meta, c):
-        return _Clause("speed", Speed.model_construct(value=_number(c[0]), unit=str(c[1])), c[0])
+        return _Clause("speed", Speed.model_construct(value=self.number(c[0], 0.0), unit=str(c[1])), c[0])
 
     def after(self, meta, c):
-        return _Clause("after_s", _number(c[0]), c[0])
+        return _Clause("after_s", self.number(c[0], V.TRIGGER_TIME_RANGE_S[0]), c[0])
 
     def within(self, meta, c):
-        return _Clause("within_m", _number(c[1]), c[1], {"of": c[0]})
+        return _Clause("within_m", self.number(c[1], V.TRIGGER_DISTANCE_RANGE_M[0]), c[1], {"of": c[0]})
 
     def word(self, meta, c):
         return _Clause("word", str(c[0]), c[0])

@@ -23,7 +23,10 @@ class Lowering:
 
     def tsg(self, prompt: str) -> str:
         """The scene as an editable .tsg, headed by the prompt it came from."""
-        lines = [f"Lowered ({self.method}) from: {prompt.strip()}"]
+        # One comment line per prompt line: a line break of any kind inside a comment would end it.
+        prompt_lines = [" ".join(line.split()) for line in prompt.strip().splitlines()]
+        prompt_lines = [line for line in prompt_lines if line] or [""]
+        lines = [f"Lowered ({self.method}) from: {prompt_lines[0]}", *prompt_lines[1:]]
         if self.unknown:
             lines.append(f"Words not understood: {', '.join(self.unknown)}")
         comments = dict(self.scenario.comments)

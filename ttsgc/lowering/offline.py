@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.numbers import clamped_int
 from ttsgc.language import parse
 from ttsgc.resources import resource_dir
 from ttsgc.scenario import Agent, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
@@ -51,6 +52,7 @@ COUNTS = {"a": 1, "an": 1, "one": 1, "another": 1, "two": 2, "three": 3, "four":
           "seven": 7, "eight": 8, "nine": 9, "ten": 10, "several": 3, "some": 2, "few": 2, "couple": 2, "many": 6,
           "both": 2}
 MAX_AGENTS_PER_MENTION = 12
+MAX_READ_NUMBER = 10**6  # a number in prose above this is read as this; the scene's range rules judge it
 
 ACTIONS = _phrases({
     "cross|crosses|crossing|crossed;runs|run|walks|walk|dashes across;jaywalks|jaywalking": "cross_the_road",
@@ -342,7 +344,7 @@ def _speed_limits(text: _Text):
                 or (window[:1] == ["zone"])):
             text.used.update(j for j in range(max(0, i - 3), min(len(tokens), i + 5))
                              if tokens[j] in ("speed", "limit", "sign", "kmh", "zone", "of") or j == i)
-            out.append(int(float(t)))
+            out.append(clamped_int(t, MAX_READ_NUMBER))
     return out
 
 
@@ -350,7 +352,7 @@ def _lanes(text: _Text) -> int | None:
     tokens = text.tokens
     for i, t in enumerate(tokens):
         if t in ("lane", "lanes") and i > 0:
-            n = NUMBER_WORDS.get(tokens[i - 1]) or (int(tokens[i - 1]) if tokens[i - 1].isdigit() else None)
+            n = NUMBER_WORDS.get(tokens[i - 1]) or (clamped_int(tokens[i - 1], MAX_READ_NUMBER) if tokens[i - 1].isdigit() else None)
             if n is not None and 1 <= n <= 6:
                 text.used.update((i - 1, i))
                 return n
@@ -415,7 +417,7 @@ def _mentions(text: _Text, start: int, stop: int, skip: set[int]) -> list[_Menti
         count = 1
         counted = j >= start and (tokens[j] in COUNTS or tokens[j].isdigit())
         if counted:
-            count = COUNTS.get(tokens[j]) or int(float(tokens[j]))
+            count = COUNTS.get(tokens[j]) or clamped_int(tokens[j], MAX_READ_NUMBER)
             if j > start and tokens[j - 1] == "than":  # more than ten
                 count += 1
                 text.used.update(k for k in (j - 2, j - 1) if k >= start and tokens[k] in ("more", "than"))
@@ -497,10 +499,10 @@ def _trigger(text: _Text, a: int, b: int) -> Trigger | None:
     tokens, within, after = text.tokens, None, None
     for i in range(a, b):
         if tokens[i] == "within" and i + 1 < b and tokens[i + 1].isdigit():
-            within = float(tokens[i + 1])
+            within = float(clamped_int(tokens[i + 1], MAX_READ_NUMBER))
             text.used.update((i, i + 1))
         if tokens[i] == "after" and i + 1 < b and tokens[i + 1].isdigit():
-            after = float(tokens[i + 1])
+            after = float(clamped_int(tokens[i + 1], MAX_READ_NUMBER))
             text.used.update((i, i + 1))
     return Trigger(after_s=after, within_m=within) if within or after else None
 
@@ -510,7 +512,7 @@ def _speed(text: _Text, a: int, b: int) -> Speed | None:
     for i in range(a, b - 1):
         if tokens[i].isdigit() and tokens[i + 1] in ("kmh", "mph"):
             text.used.update((i, i + 1))
-            return Speed(value=float(tokens[i]), unit="km/h" if tokens[i + 1] == "kmh" else "mph")
+            return Speed(value=float(clamped_int(tokens[i], MAX_READ_NUMBER)), unit="km/h" if tokens[i + 1] == "kmh" else "mph")
     return None
 
 

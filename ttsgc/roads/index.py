@@ -17,13 +17,12 @@ from functools import cached_property
 from pathlib import Path
 from typing import Literal
 
-import networkx as nx
 from platformdirs import user_cache_dir
 from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ttsgc import vocabulary as V
 from ttsgc.files import write_atomic
-from ttsgc.roads.opendrive import OpenDrive, Road, read_map_bytes, read_opendrive
+from ttsgc.roads.opendrive import OpenDrive, Road, parsed_map, read_map_bytes
 
 INDEX_VERSION = 6
 STRAIGHT_LIMIT_DEG = 45.0  # an exit within this of straight ahead is straight, unless another is straighter
@@ -89,8 +88,11 @@ class MapIndex(_Data):
         return {a.id: a for a in self.approaches}
 
     @cached_property
-    def graph(self) -> nx.DiGraph:
-        """Approaches as nodes; an edge for every turn, labelled with its direction and connecting road."""
+    def graph(self) -> "networkx.DiGraph":  # noqa: F821
+        """Approaches as nodes; an edge for every turn, labelled with its direction and connecting road.
+        networkx is imported here, for route searches, so that no command pays for it at start-up."""
+        import networkx as nx
+
         g = nx.DiGraph()
         for a in self.approaches:
             g.add_node(a.id, approach=a)
@@ -471,7 +473,7 @@ def load_index(path: str | Path, use_cache: bool = True) -> MapIndex:
                 return index.model_copy(update={"path": str(path)})
         except (ValidationError, ValueError, OSError):
             pass  # corrupt or foreign: rebuilt below
-    index = build_index(read_opendrive(path, data), sha)
+    index = build_index(parsed_map(path, data, sha, use_cache), sha)  # the parsed map is cached too
     index = index.model_copy(update={"path": str(path)})
     if use_cache:
         try:

@@ -10,14 +10,24 @@ from __future__ import annotations
 import bisect
 import hashlib
 import math
+import pickle
 from dataclasses import dataclass, field, replace
+from functools import cache, cached_property
 from pathlib import Path
 
 from lxml import etree
 
 from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.numbers import MAX_MAGNITUDE, NumberError, parse_float, parse_int
 
 MAX_MAP_BYTES = 256 << 20
+# Geometry is evaluated by sampling (the index, placement, the simulation's checks every 0.5 m), so its size is
+# bounded where it is read: any real road is far shorter, and a map past these is refused, not sampled for minutes.
+MAX_ROAD_LENGTH_M = 100_000.0
+MAX_MAP_ROAD_LENGTH_M = 2_000_000.0  # all roads of one map together (CARLA's Town04: 11 km)
+MAX_COORDINATE_M = 1e7
+MAX_LANES_A_SIDE = 100
+MAX_SPIRAL_STEPS = 64  # Simpson steps per clothoid evaluation: one every 0.5 m up to 32 m, then fixed
 
 
 class MapError(TtsgcError):
@@ -67,7 +77,7 @@ class Geometry:
         k0, k1 = self.params
         rate = (k1 - k0) / self.length if self.length > 0 else 0.0
         heading = lambda u: self.hdg + k0 * u + 0.5 * rate * u * u  # noqa: E731
-        steps = max(8, 2 * math.ceil(ds / 0.5))
+        steps = min(MAX_SPIRAL_STEPS, max(8, 2 * math.ceil(ds / 0.5)))
         h = ds / steps
         sx = sy = 0.0
         for i in range(steps + 1):
@@ -93,7 +103,7 @@ class Geometry:
                 bu + 2 * cu * p + 3 * du * p * p, bv + 2 * cv * p + 3 * dv * p * p)
 
     def _parameter_at(self, ds: float) -> float:
-        table = self._arc_table()
+        table = self._arc_table
         lengths = [t[0] for t in table]
         i = bisect.bisect_left(lengths, ds)
         if i <= 0:
@@ -103,6 +113,7 @@ class Geometry:
         (l0, p0), (l1, p1) = table[i - 1], table[i]
         return p0 + (p1 - p0) * ((ds - l0) / (l1 - l0) if l1 > l0 else 0.0)
 
+    @cached_property
     def _arc_table(self) -> list[tuple[float, float]]:
         end = self._parameter_end()
         n = 64
@@ -313,6 +324,10 @@ def _wrap(angle: float) -> float:
     return math.atan2(math.sin(angle), math.cos(angle))
 
 
+_CACHED_CLASSES = {c.__name__: c for c in (Pose, Geometry, Cubic, Lane, LaneSection, Link, Signal, RoadObject, Road,
+                                            Connection, Junction, OpenDrive)}
+
+
 # -- reading ----------------------------------------------------------------------------------------------
 
 def read_map_bytes(path: str | Path) -> bytes:
@@ -331,17 +346,71 @@ _PARSED: dict[str, OpenDrive] = {}  # by content hash, the most recent last
 PARSED_KEPT = 8
 
 
-def load_opendrive(path: str | Path) -> OpenDrive:
+def load_opendrive(path: str | Path, use_cache: bool = True) -> OpenDrive:
     """read_opendrive, remembered by content: binding, retries and simulation of one scene read the same map
-    several times, and a CARLA town takes about 0.1 s to parse."""
+    several times, and a CARLA town takes about 0.15 s to parse. The parsed map is also kept beside the road
+    index's cache entries for later processes, where it loads several times faster than it parses."""
     path = Path(path)
     data = read_map_bytes(path)
-    sha = hashlib.sha256(data).hexdigest()
-    odr = _PARSED.pop(sha, None) or read_opendrive(path, data)
+    return parsed_map(path, data, hashlib.sha256(data).hexdigest(), use_cache)
+
+
+def parsed_map(path: Path, data: bytes, sha: str, use_cache: bool = True) -> OpenDrive:
+    """load_opendrive for a caller that has already read and hashed the file."""
+    odr = _PARSED.pop(sha, None)
+    if odr is None:
+        entry = _parsed_entry(sha) if use_cache else None
+        odr = _read_parsed(entry, sha) if entry is not None else None
+        if odr is None:
+            odr = read_opendrive(path, data)
+            if entry is not None:
+                _write_parsed(entry, sha, odr)
     _PARSED[sha] = odr
     while len(_PARSED) > PARSED_KEPT:
         del _PARSED[next(iter(_PARSED))]
     return replace(odr, path=str(path))
+
+
+@cache
+def _reader_fingerprint() -> str:
+    """Any change to this module (the reader or the classes) makes the cached parsed maps someone else's."""
+    return hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:12]
+
+
+def _parsed_entry(sha: str) -> Path:
+    from ttsgc.roads.index import cache_dir  # the index's cache folder; imported here, index imports this module
+
+    return cache_dir() / f"{sha}.parsed-{_reader_fingerprint()}.pickle"
+
+
+class _MapUnpickler(pickle.Unpickler):
+    """Builds only this module's map classes (and the tuples, lists and dicts they hold): a cache entry
+    written by anyone else cannot run foreign code, it can only fail to load, and is then rebuilt."""
+
+    def find_class(self, module: str, name: str):
+        if module == __name__ and name in _CACHED_CLASSES:
+            return _CACHED_CLASSES[name]
+        raise pickle.UnpicklingError(f"{module}.{name} is not part of a parsed map")
+
+
+def _read_parsed(entry: Path, sha: str) -> OpenDrive | None:
+    try:
+        with entry.open("rb") as f:
+            stored_sha, odr = _MapUnpickler(f).load()
+    except Exception:  # noqa: BLE001 - absent, corrupt, truncated or foreign: parsed again and rewritten
+        # (pickle raises many kinds of error on damaged input; none of them may stop a compile)
+        return None
+    return odr if stored_sha == sha and isinstance(odr, OpenDrive) else None
+
+
+def _write_parsed(entry: Path, sha: str, odr: OpenDrive) -> None:
+    from ttsgc.files import write_atomic
+
+    try:
+        entry.parent.mkdir(parents=True, exist_ok=True)
+        write_atomic(entry, pickle.dumps((sha, odr), protocol=pickle.HIGHEST_PROTOCOL))
+    except OSError:
+        pass  # a read-only cache only costs speed
 
 
 def read_opendrive(path: str | Path, data: bytes | None = None) -> OpenDrive:
@@ -381,19 +450,30 @@ class _Reader:
     def fail(self, element, message: str):
         raise MapError(f"{self.path}:{element.sourceline}: <{_local(element.tag)}>: {message}")
 
-    def num(self, element, name: str, default: float | None = None) -> float:
+    def num(self, element, name: str, default: float | None = None, low: float = -MAX_MAGNITUDE,
+            high: float = MAX_MAGNITUDE) -> float:
         raw = element.get(name)
         if raw is None:
             if default is None:
                 self.fail(element, f"missing attribute '{name}'")
             return default
         try:
-            value = float(raw)
-        except ValueError:
-            self.fail(element, f"attribute {name}={raw!r} is not a number")
-        if not math.isfinite(value):
-            self.fail(element, f"attribute {name}={raw!r} is not a finite number")
-        return value
+            return parse_float(raw, low, high)
+        except NumberError as exc:
+            self.fail(element, f"attribute {name}={exc}")
+
+    def length(self, element, name: str, default: float | None = None) -> float:
+        """A length or an s along a road: 0..MAX_ROAD_LENGTH_M."""
+        return self.num(element, name, default, 0.0, MAX_ROAD_LENGTH_M)
+
+    def lane_id(self, element, name: str) -> int:
+        try:
+            return parse_int(element.get(name, ""), -MAX_LANES_A_SIDE, MAX_LANES_A_SIDE)
+        except NumberError as exc:
+            self.fail(element, f"lane {name}={exc}")
+
+    def coordinate(self, element, name: str) -> float:
+        return self.num(element, name, None, -MAX_COORDINATE_M, MAX_COORDINATE_M)
 
     def children(self, element, name: str):
         return [c for c in element if _local(c.tag) == name]
@@ -416,6 +496,10 @@ class _Reader:
             roads[road.id] = road
         if not roads:
             raise MapError(f"{self.path}:{root.sourceline}: the map has no <road>")
+        total = sum(road.length for road in roads.values())
+        if total > MAX_MAP_ROAD_LENGTH_M:
+            raise MapError(f"{self.path}: refused: its roads are {total:.0f} m long in all; the limit is "
+                           f"{MAX_MAP_ROAD_LENGTH_M:.0f} m")
         junctions = {}
         for element in self.children(root, "junction"):
             junction = self.junction(element)
@@ -426,7 +510,7 @@ class _Reader:
         rid = element.get("id")
         if rid is None:
             self.fail(element, "missing attribute 'id'")
-        length = self.num(element, "length")
+        length = self.length(element, "length")
         plan = self.child(element, "planView")
         if plan is None:
             self.fail(element, f"road {rid} has no <planView>")
@@ -463,9 +547,8 @@ class _Reader:
         return road
 
     def geometry(self, g) -> Geometry:
-        base = (self.num(g, "s"), self.num(g, "x"), self.num(g, "y"), self.num(g, "hdg"), self.num(g, "length"))
-        if base[4] < 0:
-            self.fail(g, "negative length")
+        base = (self.length(g, "s"), self.coordinate(g, "x"), self.coordinate(g, "y"), self.num(g, "hdg"),
+                self.length(g, "length"))
         for shape in g:
             kind = _local(shape.tag)
             if kind == "line":
@@ -482,7 +565,7 @@ class _Reader:
         self.fail(g, "has no line, arc, spiral, poly3 or paramPoly3")
 
     def cubic(self, element, s_name: str) -> Cubic:
-        return Cubic(self.num(element, s_name), self.num(element, "a", 0.0), self.num(element, "b", 0.0),
+        return Cubic(self.length(element, s_name), self.num(element, "a", 0.0), self.num(element, "b", 0.0),
                      self.num(element, "c", 0.0), self.num(element, "d", 0.0))
 
     def section(self, element) -> LaneSection:
@@ -492,10 +575,7 @@ class _Reader:
             if holder is None:
                 continue
             for lane_el in self.children(holder, "lane"):
-                try:
-                    lane_id = int(lane_el.get("id", ""))
-                except ValueError:
-                    self.fail(lane_el, f"lane id {lane_el.get('id')!r} is not an integer")
+                lane_id = self.lane_id(lane_el, "id")
                 if (side == "left") != (lane_id > 0) or lane_id == 0:
                     self.fail(lane_el, f"lane id {lane_id} does not belong on the {side} side")
                 widths = sorted((self.cubic(w, "sOffset") for w in self.children(lane_el, "width")),
@@ -509,7 +589,7 @@ class _Reader:
         center = self.child(element, "center")
         center_lane = self.child(center, "lane") if center is not None else None
         mark = self.child(center_lane, "roadMark") if center_lane is not None else None
-        return LaneSection(self.num(element, "s"), lanes, mark.get("type") if mark is not None else None,
+        return LaneSection(self.length(element, "s"), lanes, mark.get("type") if mark is not None else None,
                            mark.get("color") if mark is not None else None)
 
     def link(self, element) -> Link | None:
@@ -523,9 +603,9 @@ class _Reader:
     def signal(self, element) -> Signal:
         raw_value = element.get("value")
         try:
-            value = float(raw_value) if raw_value not in (None, "") else None
-        except ValueError:
-            value = None
+            value = parse_float(raw_value) if raw_value not in (None, "") else None
+        except NumberError:
+            value = None  # a sign's value is optional; one that is not a number says nothing
         return Signal(element.get("id", ""), self.num(element, "s", 0.0), self.num(element, "t", 0.0),
                       element.get("orientation", "none"), element.get("type", ""), element.get("subtype", ""),
                       element.get("name", ""), value, element.get("unit"), element.get("country", ""))
@@ -548,10 +628,7 @@ class _Reader:
         for c in self.children(element, "connection"):
             links = []
             for ll in self.children(c, "laneLink"):
-                try:
-                    links.append((int(ll.get("from", "")), int(ll.get("to", ""))))
-                except ValueError:
-                    self.fail(ll, "laneLink from/to are not integers")
+                links.append((self.lane_id(ll, "from"), self.lane_id(ll, "to")))
             connections.append(Connection(c.get("id", ""), c.get("incomingRoad", ""), c.get("connectingRoad", ""),
                                           c.get("contactPoint", "start"), links))
         controllers = [c.get("id", "") for c in self.children(element, "controller")]

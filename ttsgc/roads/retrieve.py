@@ -6,6 +6,7 @@ error can name the condition that emptied the set and what the library offers in
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Iterable
@@ -40,28 +41,55 @@ BUILTIN = "builtin"
 def map_files(maps: Iterable[str | Path] | None = None) -> list[Path]:
     """The OpenDRIVE files of a library: files and folders as given, the word 'builtin' standing for the
     built-in library; no list at all means the built-in library alone."""
-    files: list[Path] = []
+    return list(_map_sources(maps))
+
+
+def _map_sources(maps: Iterable[str | Path] | None) -> dict[Path, Path | None]:
+    """Each map file of the library -> the folder it was found in (None when it was named itself)."""
+    files: list[tuple[Path, Path | None]] = []
     for item in maps or (BUILTIN,):
         path = Path(item)
         if str(item) == BUILTIN:
-            files += builtin_maps()
+            files += [(p, None) for p in builtin_maps()]
         elif path.is_dir():
             found = sorted(path.glob("*.xodr"))
             if not found:
                 raise MapError(f"{path}: the folder holds no .xodr file")
-            files += found
+            files += [(p, path) for p in found]
         elif path.is_file():
-            files.append(path)
+            files.append((path, None))
         else:
             raise MapError(f"{path}: no such map file or folder")
-    unique = list(dict.fromkeys(p.resolve() for p in files))
+    unique: dict[Path, Path | None] = {}
+    for file, folder in files:
+        resolved = file.resolve()
+        unique[resolved] = None if resolved in unique and unique[resolved] is None else folder
     if not unique:
         raise MapError("the map library is empty")
     return unique
 
 
+_REPORTED: set[str] = set()  # skipped maps already reported in this process
+
+
 def load_library(maps: Iterable[str | Path] | None = None) -> list[MapIndex]:
-    return [load_index(path) for path in map_files(maps)]
+    """The indexes of a library. A map named by itself must load; a bad map found in a folder is reported by
+    name and skipped, so one broken file does not take the folder's other maps with it."""
+    library, skipped = [], []
+    for path, folder in _map_sources(maps).items():
+        try:
+            library.append(load_index(path))
+        except MapError as exc:
+            if folder is None:
+                raise
+            skipped.append(exc)
+            if str(exc) not in _REPORTED:
+                _REPORTED.add(str(exc))
+                print(f"ttsgc: warning: {exc}; skipped", file=sys.stderr)
+    if not library:
+        raise MapError(f"no map of the library could be read: {skipped[0]}" + (
+            f" (and {len(skipped) - 1} more)" if len(skipped) > 1 else ""))
+    return library
 
 
 def _has(word: str) -> Callable[[Approach], bool]:
@@ -89,6 +117,8 @@ def retrieve(library: list[MapIndex], road: RoadSpec) -> list[Approach]:
     """Every approach that meets all conditions; NoRoadError names the first condition that left none."""
     candidates = [a for index in library for a in index.approaches]
     total = len(candidates)
+    if not total:
+        raise NoRoadError(f"no road can host the scene: no road of {_library_name(library)} has a driving lane")
     passed: list[str] = []
     for condition in conditions(road):
         remaining = [a for a in candidates if condition.test(a)]

@@ -25,7 +25,8 @@ STOPPED_FOR_S = 1.0
 TURN_MIN_DEG = 30.0
 SETTLE_S = 1.0  # how long after reaching its target road a turning body's heading is read
 GRID_M = 10.0  # cell size of the collision broad phase: larger than any body's half diagonal plus its step
-SETUP_EVENTS = ("_enters", "_route", "_appears", "_leaves", "_arrives", "_sets_off")  # events that are not the agent's own action
+# events that are not the agent's own action
+SETUP_EVENTS = ("_enters", "_route", "_appears", "_leaves", "_arrives", "_sets_off")
 
 
 class AgentResult(BaseModel):
@@ -294,8 +295,8 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
         return result(False, f"left the scene before its action started at t={start:.1f} s")
     movement = entity.intent.get(I.MOVEMENT, "")
     expected = I.MOVEMENT_OF_ACTION.get(action)
-    if movement and expected:
-        return result(*_movement(after, expected, entity.intent.get(I.TARGET_ROAD, "")))
+    if movement and expected:  # its route is its action: read from where it appeared
+        return result(*_movement(samples, expected, entity.intent.get(I.TARGET_ROAD, "")))
     if action in ("turn_left", "turn_right"):
         return result(False, "was given no junction to turn at (its road does not lead to one)")
     if action == "go_straight":

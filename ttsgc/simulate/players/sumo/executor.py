@@ -15,12 +15,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cache
-from pathlib import Path
 
 from lxml import etree
 
 from ttsgc.roads.opendrive import OpenDrive, load_opendrive
 from ttsgc.simulate import trace as T
+from ttsgc.simulate.lean_libsumo import load_libsumo
 from ttsgc.simulate.plan import Action, Condition, Entity, Event, Plan
 from ttsgc.simulate.players.sumo.network import Network, network_for
 
@@ -549,7 +549,7 @@ class Executor:
         return samples[-1] if samples and name in self.present and name in self.active else None
 
     def execute_plan(self) -> Run:
-        import libsumo as ts
+        ts = load_libsumo()  # the first import of libsumo in the process: see lean_libsumo
 
         ts.start(["sumo", "-n", str(self.network.path), "--step-length", str(STEP_S), "--no-step-log", "true",
                   "--seed", str(self.seed), "--collision.action", "none", "--time-to-teleport", "-1",
@@ -788,7 +788,7 @@ def _point_at(shape, pos: float) -> tuple[float, float]:
 def unavailable() -> str:
     """Empty when SUMO can run here (libsumo and the eclipse-sumo netconvert are Python packages)."""
     try:
-        import libsumo  # noqa: F401
+        load_libsumo()
     except ImportError as exc:
         return f"libsumo cannot be imported: {exc}"
     return ""
