@@ -1,42 +1,133 @@
-"""netconvert time per map (built-in and, when ../shared is there, the CARLA towns), and the time to
-validate each example scene in each player available (SUMO; esmini through $TTSGC_ESMINI or PATH) once
-its network is cached, beside esmini's own time to play the same file alone (no reading, no judging).
+"""netconvert time per map (built-in and, when ../shared is there, the CARLA towns), the time to validate
+each example scene in each player available (SUMO; esmini through $TTSGC_ESMINI or PATH) once its network
+is cached beside esmini's own play of the same file alone (no reading, no judging), and `ttsgc validate` as
+a whole process against esmini's own play of the same file (../shared/tools/esmini, or $ESMINI), process
+start included.
 
-    python bench/simulate_bench.py [--repeat 3]
+    python bench/simulate_bench.py [--repeat 3] [--against OTHER_CHECKOUT]... [--only-esmini]
 
-Prints medians; these machines are shared and noisy.
+Prints medians; these machines are shared and noisy. Goal: validate within 3x of esmini (1.5x to aim for).
 """
 
 from __future__ import annotations
 
 import argparse
+import os
+import shutil
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
-from ttsgc.language import parse_file
-from ttsgc.pipeline import compile_scenario, write
-from ttsgc.simulate.players import esmini
-from ttsgc.simulate.players.sumo.network import convert
-from ttsgc.simulate.validate import chosen_players, validate
+from timing import ROOT, checkouts, environment, median, medians, ms, timed, ttsgc
 
-ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+from ttsgc.language import parse_file  # noqa: E402 - this checkout, whatever is installed
+from ttsgc.pipeline import compile_scenario, write  # noqa: E402
+from ttsgc.simulate.players.sumo.network import convert  # noqa: E402
+from ttsgc.simulate.players import esmini as esmini_player  # noqa: E402
+from ttsgc.simulate.validate import chosen_players, validate  # noqa: E402
+
+SHARED = ROOT.parent / "shared"
+ESMINI_GOAL, ESMINI_AIM = 3.0, 1.5
+VALIDATE_SCENES = ["left_turn_oncoming", "blocking", "daily_traffic", "school_zone"]
+
+
+def esmini_binary() -> Path | None:
+    path = Path(os.environ.get("ESMINI") or SHARED / "tools" / "esmini" / "esmini")
+    return path if path.is_file() else None
+
+
+def esmini_play(binary: Path, xosc: Path) -> list[str]:
+    """The play its README gives: headless, 0.05 s steps, collisions, a CSV trace to judge from."""
+    return [str(binary), "--headless", "--osc", str(xosc), "--fixed_timestep", "0.05", "--collision",
+            "--csv_logger", str(xosc.with_suffix(".csv")), "--disable_log"]
+
+
+def validate_command(tree: Path) -> list[str]:
+    """`ttsgc validate --player sumo` where the checkout has players, else plain `ttsgc validate`."""
+    done = subprocess.run(ttsgc("validate", "--help"), env=environment(tree, Path(tempfile.gettempdir())),
+                          capture_output=True, text=True, cwd=tempfile.gettempdir())
+    return ["validate", "--player", "sumo"] if "--player" in done.stdout else ["validate"]
+
+
+def against_esmini(trees: dict[str, Path], repeat: int, scratch: Path) -> None:
+    binary = esmini_binary()
+    if binary is None:
+        print("\n(esmini not found: set $ESMINI or provide ../shared/tools/esmini)")
+        return
+    scenes = []
+    for name in VALIDATE_SCENES:
+        out = scratch / "esmini" / f"{name}.xosc"
+        write(compile_scenario(parse_file(ROOT / "examples" / f"{name}.tsg"), out), out)
+        scenes.append(out)
+    town = SHARED / "maps" / "carla" / "Town10HD.xodr"
+    if town.is_file():
+        out = scratch / "esmini-town" / "left_turn_oncoming_Town10HD.xosc"
+        write(compile_scenario(parse_file(ROOT / "examples" / "left_turn_oncoming.tsg"), out, maps=[town]), out)
+        scenes.append(out)
+    commands = {label: validate_command(tree) for label, tree in trees.items()}
+    caches = {label: scratch / f"cache-{label}" for label in trees}
+    for label, tree in trees.items():  # networks and parsed maps built once, outside the timing
+        for xosc in scenes:
+            timed(ttsgc(*commands[label], xosc), environment(tree, caches[label]), check=False)
+    print(f"\n== `ttsgc validate` against esmini's play of the same file, whole processes, x {repeat}")
+    print(f"esmini: {' '.join(esmini_play(binary, Path('SCENE.xosc')))}")
+    for label in trees:
+        print(f"{label}: ttsgc {' '.join(commands[label])} SCENE.xosc")
+    print("wall time (CPU time, user + system, in brackets: it suffers less from a loaded machine)")
+    print(f"{'scene':30} {'esmini':>18}" + "".join(f" {label:>18} {'ratio':>6}" for label in trees))
+    ratios = {label: [] for label in trees}
+    cpu_ratios = {label: [] for label in trees}
+    for xosc in scenes:
+        times = {"esmini": []} | {label: [] for label in trees}
+        for _ in range(repeat):
+            times["esmini"].append(timed(["timeout", "120", *esmini_play(binary, xosc)], cwd=xosc.parent,
+                                         check=False))
+            for label, tree in trees.items():
+                times[label].append(timed(ttsgc(*commands[label], xosc), environment(tree, caches[label]),
+                                          cwd=xosc.parent, check=False))
+        base = medians(times["esmini"])
+        row = f"{xosc.stem:30} {ms(base.wall)} ({ms(base.cpu).strip():>6})"
+        for label in trees:
+            ours = medians(times[label])
+            ratios[label].append(ours.wall / base.wall)
+            cpu_ratios[label].append(ours.cpu / max(base.cpu, 0.001))
+            row += f" {ms(ours.wall)} ({ms(ours.cpu).strip():>6}) x{ours.wall / base.wall:5.1f}"
+        print(row)
+    for label in trees:
+        value = median(ratios[label])
+        print(f"  {label:>12}: median ratio x{value:.1f} in wall time, x{median(cpu_ratios[label]):.1f} in CPU time "
+              f"({'meets' if value <= ESMINI_GOAL else 'misses'} the goal of x{ESMINI_GOAL:g}; "
+              f"x{ESMINI_AIM:g} is where we want to end up)")
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--against", action="append", metavar="CHECKOUT", help="another checkout to compare with")
+    parser.add_argument("--only-esmini", action="store_true", help="only the comparison with esmini")
     args = parser.parse_args()
     scratch = Path(tempfile.mkdtemp(prefix="ttsgc-bench-"))
+    try:
+        if not args.only_esmini:
+            in_process(args.repeat, scratch)
+        against_esmini(checkouts(args.against), args.repeat, scratch)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+    return 0
+
+
+def in_process(repeat: int, scratch: Path) -> None:
     maps = sorted((ROOT / "maps").glob("*.xodr"))
     carla = ROOT.parent / "shared" / "maps" / "carla"
     maps += sorted(carla.glob("*.xodr")) if carla.is_dir() else []
     print(f"{'map':24} {'netconvert (median)':>20}")
     for path in maps:
         times = []
-        for _ in range(args.repeat):
+        for _ in range(repeat):
             t = time.perf_counter()
             convert(path, scratch / f"{path.stem}.net.xml")
             times.append(time.perf_counter() - t)
@@ -45,44 +136,37 @@ def main() -> int:
     for why in skipped:
         print(f"\nnot run: {why}")
     head = "".join(f"{name + ' validate':>18}" for name in players)
-    own = "esmini" in players
     print(f"\n{'example':24}{head}{'esmini alone':>14}  ok")
-    medians: dict[str, list[float]] = {name: [] for name in players}
+    per_player: dict[str, list[float]] = {name: [] for name in players}
     for path in sorted((ROOT / "examples").glob("*.tsg")):
         out = scratch / f"{path.stem}.xosc"
         write(compile_scenario(parse_file(path), out), out)
-        validate(out, "sumo")  # builds and caches the network
+        validate(out, players="sumo")  # builds and caches the network
         row, ok = "", True
         for name in players:
             times = []
-            for _ in range(args.repeat):
+            for _ in range(repeat):
                 t = time.perf_counter()
-                report = validate(out, name)
+                report = validate(out, players=name)
                 times.append(time.perf_counter() - t)
             ok = ok and report.ok
-            medians[name].append(statistics.median(times))
-            row += f"{medians[name][-1] * 1000:15.0f} ms"
-        alone = ""
-        if own:
-            alone = f"{_esmini_alone(out, args.repeat) * 1000:11.0f} ms"
+            per_player[name].append(statistics.median(times))
+            row += f"{per_player[name][-1] * 1000:15.0f} ms"
+        alone = f"{_esmini_alone(out, repeat) * 1000:11.0f} ms" if "esmini" in players else ""
         print(f"{path.stem:24}{row}{alone}  {ok}")
     for name in players:
         print(f"median validation of an example scene in {name} (network cached): "
-              f"{statistics.median(medians[name]) * 1000:.0f} ms")
-    return 0
+              f"{statistics.median(per_player[name]) * 1000:.0f} ms")
 
 
 def _esmini_alone(xosc: Path, repeat: int) -> float:
-    """Median wall time of esmini itself playing the file headless with the player's own command line."""
-    import subprocess
-
-    binary = esmini.binary()
+    """Median wall time of esmini itself playing the file with the player's own command line."""
+    binary = esmini_player.binary()
     times = []
     for _ in range(repeat):
-        record = xosc.with_suffix(".dat")
         t = time.perf_counter()
-        subprocess.run(esmini.command(binary, xosc, record), cwd=xosc.parent, capture_output=True,
-                       timeout=esmini.WALL_LIMIT_S, check=False)
+        subprocess.run(esmini_player.command(binary, xosc, xosc.with_suffix(".dat")), cwd=xosc.parent,
+                       capture_output=True, timeout=esmini_player.WALL_LIMIT_S, check=False)
         times.append(time.perf_counter() - t)
     return statistics.median(times)
 

@@ -169,6 +169,19 @@ def test_agents_of_a_later_stage_at_the_junction_do_their_action(esmini, tmp_pat
     assert report.ok, report.table()
 
 
+def test_a_turn_with_a_trigger_is_judged_from_where_the_car_appeared(esmini, tmp_path):
+    """Its route is its action: a car that reached its road before its trigger fired still turned left."""
+    source = tmp_path / "triggered.tsg"
+    source.write_text('scenario "triggered"\nroad {\n    at junction\n}\nstage main {\n    ego car go_straight\n'
+                      '    car c1 at road_of_left_turn turn_left when ego within 30m\n'
+                      '    car c2 at road_of_straight go_straight\n}\n')
+    out = tmp_path / "triggered.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    report = validate(out, "all")
+    for player in ("sumo", "esmini"):
+        assert "went left onto road" in _agent(report, player, "c1").reason, report.table()
+
+
 def test_two_walkers_queued_on_one_sidewalk_keep_their_distance(esmini, tmp_path):
     source = tmp_path / "walkers.tsg"
     source.write_text('scenario "two walkers"\nstage main {\n    ego car go_straight\n'
@@ -300,3 +313,21 @@ def test_the_report_order_does_not_depend_on_the_order_of_the_trace():
     second = _trace({n: (k * 3.0, 0, 0) for k, n in reversed(list(enumerate(names)))})
     assert J.find_collisions(first, first.bodies) == J.find_collisions(second, second.bodies)
     assert J.criticality(first, first.bodies, "ego") == J.criticality(second, second.bodies, "ego")
+
+
+def test_prove_first_takes_candidates_lazily_and_stops_at_the_first_proven():
+    from types import SimpleNamespace
+
+    from ttsgc.pipeline import prove_first
+
+    made = []
+
+    def candidates():
+        for k in range(10):
+            made.append(k)
+            yield k
+    verdicts = {0: False, 1: True}
+    chosen, report = prove_first(candidates(), lambda k: SimpleNamespace(ok=verdicts.get(k, False), agents=[],
+                                                                         collisions=[], problems=["no"]),
+                                 log=lambda message: None)
+    assert chosen == 1 and report.ok and made == [0, 1]  # the third road was never placed

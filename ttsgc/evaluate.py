@@ -7,9 +7,9 @@ RA, road accuracy: road properties matched (lanes, junction, required and forbid
 
 from __future__ import annotations
 
+import functools
 import json
 import statistics
-import sys
 import tempfile
 import time
 import tomllib
@@ -18,6 +18,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from ttsgc.errors import TtsgcError, UsageError
+from ttsgc.runner import progress_bar  # noqa: F401 - the one progress bar, also used from here
 from ttsgc.scenario import Scenario
 
 
@@ -212,16 +213,23 @@ def table(runs: list[Run]) -> str:
     return "\n".join(lines)
 
 
+def _run_job(job: tuple) -> Run:
+    return run_case(*job)
+
+
 def evaluate(folder: Path, seeds: int = 5, maps=None, method: str = "offline", simulate: bool = True,
-             progress=None) -> list[Run]:
+             progress=None, workers: int | None = None) -> list[Run]:
+    """Every case and seed on the runner (every core by default); runs in case-then-seed order."""
+    from ttsgc import runner
+
     cases = load_suite(folder)
-    runs = []
-    total = len(cases) * seeds
-    for case in cases:
-        for seed in range(seeds):
-            runs.append(run_case(case, seed, maps, method, simulate))
-            if progress:
-                progress(len(runs), total, case.name)
+    jobs = [(case, seed, maps, method, simulate) for case in cases for seed in range(seeds)]
+    runs: list[Run | None] = [None] * len(jobs)
+    warm_up = functools.partial(runner.warm_pipeline, maps)
+    for done, (index, run) in enumerate(runner.run(_run_job, jobs, workers, warm_up=warm_up), 1):
+        runs[index] = run
+        if progress:
+            progress(done, len(jobs), jobs[index][0].name)
     return runs
 
 
@@ -230,14 +238,3 @@ def report_json(runs: list[Run]) -> str:
     return json.dumps({"summary": summarize(runs), "by_kind": {k: summarize([r for r in runs if r.kind == k])
                                                                for k in kinds},
                        "paper_best": PAPER_BEST, "runs": [asdict(r) for r in runs]}, indent=2)
-
-
-def progress_bar(done: int, total: int, label: str) -> None:
-    """One line that rewrites itself on a terminal, one line per tenth elsewhere."""
-    width = 30
-    filled = width * done // total
-    line = f"[{'#' * filled}{'.' * (width - filled)}] {done}/{total} {label}"
-    if sys.stderr.isatty():
-        print("\r" + line.ljust(90), end="" if done < total else "\n", file=sys.stderr, flush=True)
-    elif done == total or done % max(1, total // 10) == 0:
-        print(line, file=sys.stderr, flush=True)

@@ -524,7 +524,8 @@ def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[i
     windows: dict[tuple[int, str, bool], list[float]] = {}
     first = None  # the ego's road goes first in its stage
     for agent in agents:
-        if agent.stage != stage or agent.start is None or len(agent.route) < 2 or agent.speed_mps <= 0:
+        if agent.stage != stage or agent.start is None or len(agent.route) < 2 or agent.speed_mps <= 0 or \
+                (agent.trigger is not None and not agent.is_ego):  # a trigger times its agent itself
             continue
         via = agent.route[1]
         road = odr.roads[via.road]

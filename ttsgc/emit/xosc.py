@@ -129,8 +129,12 @@ def _trajectory_bound(agent: BoundAgent) -> bool:
 
 
 def _initial_speed(agent: BoundAgent) -> float:
-    """Bodies that follow a trajectory stand until their action starts; the rest drive at their speed."""
-    return 0.0 if _trajectory_bound(agent) or agent.start_delay_s else agent.speed_mps
+    """Bodies that follow a trajectory or wait for their turn through a junction stand until then; the rest
+    drive at their speed (a vehicle routed through the junction drives on whatever its trigger: its route is
+    its action)."""
+    if _trajectory_bound(agent) or agent.start_delay_s:
+        return 0.0
+    return agent.speed_mps
 
 
 def _entity(agent: BoundAgent, scene: BoundScene, minor: int):

@@ -196,6 +196,8 @@ class Lane:
 class LaneSection:
     s: float
     lanes: dict[int, Lane]  # lane id -> lane, centre lane 0 excluded
+    center_mark: str | None = None  # type of the centre lane's road mark (the line between the two directions)
+    center_mark_color: str | None = None
 
     def side(self, sign: int) -> list[Lane]:
         """Lanes of one side ordered from the centre outwards (sign -1: right, +1: left)."""
@@ -233,6 +235,10 @@ class RoadObject:
     type: str
     subtype: str
     name: str
+    hdg: float = 0.0  # relative to the road's heading at s
+    length: float = 0.0  # extent along the object's own heading (u)
+    width: float = 0.0  # extent across it (v)
+    outline: tuple[tuple[float, float], ...] = ()  # cornerLocal (u, v) points, where the map gives them
 
 
 @dataclass
@@ -258,6 +264,10 @@ class Road:
         i = max(0, bisect.bisect_right(starts, s + 1e-9) - 1)
         g = self.geometry[i]
         return g.at(s - g.s)
+
+    def lane_offset(self, s: float) -> float:
+        """Lateral offset of the centre lane (the line between the two directions) from the reference line."""
+        return _piecewise(self.lane_offsets, s)
 
     def section_at(self, s: float) -> LaneSection:
         starts = [sec.s for sec in self.sections]
@@ -576,7 +586,11 @@ class _Reader:
                 lanes[lane_id] = Lane(lane_id, lane_el.get("type", "none"), widths,
                                       mark.get("type") if mark is not None else None,
                                       mark.get("color") if mark is not None else None, speed)
-        return LaneSection(self.length(element, "s"), lanes)
+        center = self.child(element, "center")
+        center_lane = self.child(center, "lane") if center is not None else None
+        mark = self.child(center_lane, "roadMark") if center_lane is not None else None
+        return LaneSection(self.length(element, "s"), lanes, mark.get("type") if mark is not None else None,
+                           mark.get("color") if mark is not None else None)
 
     def link(self, element) -> Link | None:
         if element is None:
@@ -601,9 +615,13 @@ class _Reader:
                       element.get("orientation", "none"), "", "", "", None, None, "", is_reference=True)
 
     def road_object(self, element) -> RoadObject:
+        outline = self.child(element, "outline")
+        corners = tuple((self.num(c, "u"), self.num(c, "v")) for c in self.children(outline, "cornerLocal")) \
+            if outline is not None else ()
         return RoadObject(element.get("id", ""), self.num(element, "s", 0.0), self.num(element, "t", 0.0),
                           element.get("orientation", "none"), element.get("type", ""), element.get("subtype", ""),
-                          element.get("name", ""))
+                          element.get("name", ""), self.num(element, "hdg", 0.0), self.num(element, "length", 0.0),
+                          self.num(element, "width", 0.0), corners)
 
     def junction(self, element) -> Junction:
         connections = []

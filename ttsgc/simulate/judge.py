@@ -311,8 +311,8 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
         return result(False, f"left the scene before its action started at t={start:.1f} s")
     movement = entity.intent.get(I.MOVEMENT, "")
     expected = I.MOVEMENT_OF_ACTION.get(action)
-    if movement and expected:
-        return result(*_movement(after, expected, entity.intent.get(I.TARGET_ROAD, "")))
+    if movement and expected:  # its route is its action: read from where it appeared
+        return result(*_movement(samples, expected, entity.intent.get(I.TARGET_ROAD, "")))
     if action in ("turn_left", "turn_right"):
         return result(False, "was given no junction to turn at (its road does not lead to one)")
     if action == "go_straight":
