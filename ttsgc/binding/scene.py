@@ -59,7 +59,7 @@ def bind(scenario: Scenario, library: list[MapIndex], seed: int | None = None, s
                           + explain(requirements, ranked, limit=5))
     reasons: list[str] = []
     for candidate in ranked[: MAX_PLACEMENT_TRIES + skip]:
-        odr = load_opendrive(candidate.index.path)
+        odr = load_opendrive(candidate.index.path, sha256=candidate.index.sha256)  # the geometry the index saw
         try:
             agents = place(scenario, candidate.approach, candidate.index, odr)
         except PlacementError as exc:
