@@ -181,9 +181,9 @@ def _eval(args) -> int:
 
 
 def _import_ttsg(args) -> int:
+    from ttsgc.language import format_scenario
     from ttsgc.pipeline import compile_and_prove, write
     from ttsgc.roads.retrieve import load_library
-    from ttsgc.language import format_scenario
     from ttsgc.ttsg_import import import_plan
 
     imported = import_plan(args.plan, args.road_info)
