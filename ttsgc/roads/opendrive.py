@@ -371,7 +371,12 @@ def _keep(sha: str, odr: OpenDrive) -> None:
 @cache
 def _reader_fingerprint() -> str:
     """Any change to this module (the reader or the classes) makes the cached parsed maps someone else's."""
-    return hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:12]
+    try:
+        return hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:12]
+    except OSError:  # installed where the source cannot be read: the package version stands for it
+        from ttsgc import __version__
+
+        return f"v{__version__}"
 
 
 def _parsed_entry(sha: str) -> Path:
