@@ -284,9 +284,9 @@ def _eval(args) -> int:
 
 
 def _import_ttsg(args) -> int:
+    from ttsgc.language import format_scenario
     from ttsgc.pipeline import compile_and_prove, write
     from ttsgc.roads.retrieve import load_library
-    from ttsgc.language import format_scenario
     from ttsgc.ttsg_import import import_plan
 
     protect_inputs(*filter(None, (args.plan, args.road_info)))

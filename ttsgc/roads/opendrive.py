@@ -346,35 +346,56 @@ _PARSED: dict[str, OpenDrive] = {}  # by content hash, the most recent last
 PARSED_KEPT = 8
 
 
-def load_opendrive(path: str | Path, use_cache: bool = True) -> OpenDrive:
+def load_opendrive(path: str | Path, use_cache: bool = True, sha256: str | None = None) -> OpenDrive:
     """read_opendrive, remembered by content: binding, retries and simulation of one scene read the same map
     several times, and a CARLA town takes about 0.15 s to parse. The parsed map is also kept beside the road
-    index's cache entries for later processes, where it loads several times faster than it parses."""
+    index's cache entries for later processes, where it loads several times faster than it parses.
+    sha256: the content hash the caller's road index was built from, so that the map the index describes is
+    found without reading and hashing the file again (a large map takes tens of milliseconds)."""
     path = Path(path)
+    odr = _remembered(sha256, use_cache) if sha256 is not None else None
+    if odr is not None:
+        return replace(odr, path=str(path))
     data = read_map_bytes(path)
     return parsed_map(path, data, hashlib.sha256(data).hexdigest(), use_cache)
 
 
 def parsed_map(path: Path, data: bytes, sha: str, use_cache: bool = True) -> OpenDrive:
     """load_opendrive for a caller that has already read and hashed the file."""
-    odr = _PARSED.pop(sha, None)
+    odr = _remembered(sha, use_cache)
     if odr is None:
-        entry = _parsed_entry(sha) if use_cache else None
-        odr = _read_parsed(entry, sha) if entry is not None else None
-        if odr is None:
-            odr = read_opendrive(path, data)
-            if entry is not None:
-                _write_parsed(entry, sha, odr)
+        odr = read_opendrive(path, data)
+        _keep(sha, odr)
+        if use_cache:
+            _write_parsed(_parsed_entry(sha), sha, odr)
+    return replace(odr, path=str(path))
+
+
+def _remembered(sha: str, use_cache: bool) -> OpenDrive | None:
+    """The parse of this content from this process's memory, else from the cache; None when neither has it."""
+    odr = _PARSED.pop(sha, None)
+    if odr is None and use_cache:
+        odr = _read_parsed(_parsed_entry(sha), sha)
+    if odr is not None:
+        _keep(sha, odr)
+    return odr
+
+
+def _keep(sha: str, odr: OpenDrive) -> None:
     _PARSED[sha] = odr
     while len(_PARSED) > PARSED_KEPT:
         del _PARSED[next(iter(_PARSED))]
-    return replace(odr, path=str(path))
 
 
 @cache
 def _reader_fingerprint() -> str:
     """Any change to this module (the reader or the classes) makes the cached parsed maps someone else's."""
-    return hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:12]
+    try:
+        return hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:12]
+    except OSError:  # installed where the source cannot be read: the package version stands for it
+        from ttsgc import __version__
+
+        return f"v{__version__}"
 
 
 def _parsed_entry(sha: str) -> Path:
