@@ -439,7 +439,7 @@ def test_sigterm_during_compile_leaves_no_temporary_folder_and_no_child(tmp_path
     assert child.poll() is None and seen, "the compile ended before netconvert could be caught running"
     child.send_signal(signal.SIGTERM)
     err = child.stderr.read().decode()
-    assert child.wait(timeout=60) == 143 and "terminated" in err and "Traceback" not in err
+    assert child.wait(timeout=60) == 143 and "terminated" in err and "Traceback" not in err, err
     time.sleep(0.2)
     assert not list(scratch.glob("ttsgc-*")) and not [pid for pid in seen if _alive(pid)]
     assert not (tmp_path / "out").exists()
