@@ -15,9 +15,10 @@ import jinja2
 
 from ttsgc import vocabulary as V
 from ttsgc.language import ScenarioError, parse
+from ttsgc.lowering.infer import infer_plan
 from ttsgc.lowering.offline import LoweringError
 from ttsgc.resources import resource_dir
-from ttsgc.scenario import Scenario
+from ttsgc.scenario import Scenario, find_problems
 
 MAX_TRIES = 3
 DEFAULT_MODEL = "claude-sonnet-5-5"  # a current model this SDK knows; --model or TTSGC_MODEL to change
@@ -46,6 +47,7 @@ class LlmLowered:
     text: str  # the accepted scene, as the model wrote it
     tries: int
     usage: dict[str, int] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)  # the plan inference's inferences and repairs
 
 
 def _environment() -> jinja2.Environment:
@@ -104,9 +106,17 @@ def lower_with_llm(prompt: str, settings: LlmSettings | None = None, client=None
         answer = "".join(block.text for block in response.content if getattr(block, "type", "") == "text")
         scene = extract_scene(answer)
         try:
-            return LlmLowered(parse(scene, "<llm answer>"), scene, attempt, usage)
+            answered = parse(scene, "<llm answer>")
         except ScenarioError as exc:
             diagnostics = exc.render()
+        else:
+            inferred = infer_plan(answered)  # the same inference and repairs as the offline rules
+            problems = find_problems(inferred.scenario)
+            if not problems:
+                return LlmLowered(Scenario.model_validate(inferred.scenario.model_dump()
+                                                          | {"comments": inferred.scenario.comments}),
+                                  scene, attempt, usage, inferred.notes)
+            diagnostics = "\n".join(p.message for p in problems)
         messages += [{"role": "assistant", "content": answer},
                      {"role": "user", "content": _environment().get_template("repair.md.j2").render(
                          diagnostics=diagnostics)}]

@@ -1,11 +1,21 @@
-"""English -> Scenario by deterministic rules over the one vocabulary (the default lowering, no API key).
+"""English -> Scenario by a small semantic parser over a data lexicon (the default lowering, no API key).
 
-A small semantic parser: the prompt is split into stages at sequence words ("then", "after that"); road
-conditions (with negation: "no traffic light and stop sign"), weather and time are read from the whole text;
-each agent mention ("two cars", "an ambulance", "the ego") owns the words up to the next mention, from which
-its action, position, behaviour and road type are read through synonym tables. A scene kind the prompt names
-without describing its agents ("daily traffic", "emergency vehicles") is filled from templates/kinds/*.tsg.
-Words no rule can place are returned as `unknown`, never dropped silently.
+The text is read the way a person reads it, not by spotting keywords:
+- words become lexicon units (ttsgc/lowering/lexicon/*.txt: multiword phrases, base forms, British spellings);
+- the text splits into stages at sequence words and conditions ("then", "once the light turns green", "when the
+  ego reaches the junction"), stages into clauses ("while", "and" after a predicate, relative "which/who");
+- each clause has a subject, predicates and objects: passive voice ("is approached by an ambulance"), reduced
+  relatives ("a cyclist riding alongside swerves..."), coordination ("a bus and a truck stop"), possessives
+  ("into the ego's lane");
+- noun phrases are tracked as entities: re-mentions ("the truck", "it", "both", "the other car"), counted groups
+  as constraints ("three cars including the ego" is the ego and two cars, whom "the car in front" and "the car
+  behind" then name);
+- positions are composed once the whole text is read (side x ahead/behind x which road), against the junction
+  context and the ego's manoeuvre;
+- the draft goes through the one plan inference (infer.py), which adds what the agents imply about the road
+  and repairs what cannot be, with a note for each.
+Scene-kind templates (templates/kinds/) fill a scene only when a kind is asked for as the scene ("create a
+scene for daily traffic"). Content words no rule places are reported with the nearest known word.
 """
 
 from __future__ import annotations
@@ -15,255 +25,1046 @@ from dataclasses import dataclass, field
 
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
-from ttsgc.language import parse
-from ttsgc.resources import resource_dir
-from ttsgc.scenario import Agent, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
+from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
+from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, lexicon, matches, read_number, tokenize
+from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
 
 class LoweringError(TtsgcError):
     exit_code = ExitCode.LOWERING_FAILED
 
 
-def _phrases(table: dict[str, str]) -> list[tuple[tuple[frozenset[str], ...], str]]:
-    """'turn|turns left' -> ((turn, turns), (left,)); longest phrases first so they win."""
-    out = []
-    for pattern, meaning in table.items():
-        for variant in pattern.split(";"):
-            out.append((tuple(frozenset(w.split("|")) for w in variant.split()), meaning))
-    return sorted(out, key=lambda p: -len(p[0]))
-
-
-AGENT_WORDS = _phrases({
-    "fire truck|trucks|engine|engines;firetruck|firetrucks;fire brigade": "firetruck",
-    "police car|cars|vehicle;police;cop car|cars": "police",
-    "ambulance|ambulances": "ambulance",
-    "car|cars|vehicle|vehicles|sedan|sedans|suv|suvs|van|vans|taxi|taxis|traffic": "car",
-    "truck|trucks|lorry|lorries": "truck",
-    "bus|buses|coach|coaches": "bus",
-    "motorcycle|motorcycles|motorbike|motorbikes|scooter|scooters|moped|mopeds|motorcyclist|motorcyclists": "motorcycle",
-    "cyclist|cyclists|bicycle|bicycles|bike|bikes|biker|bikers": "cyclist",
-    "pedestrian|pedestrians|person|people|walker|walkers|child|children|kid|kids|man|men|woman|women|boy|girl|"
-    "jogger|joggers": "pedestrian",
-})
-EGO_WORDS = _phrases({"ego|egos;autonomous car|vehicle;self driving car|vehicle;our car|vehicle": "ego"})
-EGO_NOUNS = {"car": "car", "vehicle": "car", "agent": "car", "truck": "truck", "bus": "bus", "motorcycle": "motorcycle"}
-COUNTS = {"a": 1, "an": 1, "one": 1, "another": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6,
-          "seven": 7, "eight": 8, "nine": 9, "ten": 10, "several": 3, "some": 2, "few": 2, "couple": 2, "many": 6,
-          "both": 2}
-MAX_AGENTS_PER_MENTION = 12
-
-ACTIONS = _phrases({
-    "cross|crosses|crossing|crossed;runs|run|walks|walk|dashes across;jaywalks|jaywalking": "cross_the_road",
-    "walks|walk|walking|strolls along the sidewalk|pavement;walks|walk|walking|strolls along;"
-    "on the sidewalk|pavement": "on_the_sidewalk",
-    "block|blocks|blocking|blocked": "block_the_ego",
-    "swerve|swerves|swerving into its|the path|lane;cut|cuts|cutting in|into|off|across;"
-    "swerve|swerves|swerving into;merges|merge in front": "cut_in",
-    "change|changes|changing lane|lanes to the left;moves|move into the left lane;merges|merge left;"
-    "changes|change to the left lane": "change_lane_to_left",
-    "change|changes|changing lane|lanes to the right;moves|move into the right lane;merges|merge right;"
-    "changes|change to the right lane": "change_lane_to_right",
-    "turn|turns|turning|turned left;left turn;turns|turn onto|into the left": "turn_left",
-    "turn|turns|turning|turned right;right turn": "turn_right",
-    "stop|stops|stopped|stopping;brake|brakes|braking;halt|halts;wait|waits|waiting;parked;stationary;"
-    "does|do not move;standing still": "stop",
-    "go|goes|going|drive|drives|driving|ride|rides|riding straight through|ahead;"
-    "go|goes|going|drive|drives|driving straight|through|ahead;pass|passes through;continue|continues;"
-    "ride|rides|riding;"
-    "follow|follows|following;overtake|overtakes|overtaking;come|comes|coming|approach|approaches|approaching;"
-    "drive|drives|driving": "go_straight",
-})
-POSITIONS = _phrases({
-    "front right;ahead on|to the right;in front on the right;right front": "front_right",
-    "front left;ahead on|to the left;in front on the left;left front": "front_left",
-    "back right;behind on the right;rear right": "back_right",
-    "back left;behind on the left;rear left;overtakes|overtaking on the left": "back_left",
-    "from|in the opposite direction;oncoming;towards|toward the ego;head on": "road_of_straight",
-    "from the left;from the road on the left;on the road to the left;from the left road": "from_left",
-    "from the right;from the road on the right;on the road to the right;from the right road": "from_right",
-    "at the destination;where the ego is heading|going": "at_the_destination",
-    "near|at|by the crosswalk|crossing": "near_the_crosswalk",
-    "in front;ahead;leading;in front of the ego": "front",
-    "behind;from behind;following;at the back;behind the ego": "back",
-    "on|to the left;in the left lane;in the lane to the left": "left",
-    "on|to the right;in the right lane;in the lane to the right": "right",
-})
-ROAD_TYPES = _phrases({"on the shoulder;hard shoulder;roadside;side of the road": "shoulder",
-                       "on the sidewalk|pavement": "sidewalk"})
-BEHAVIORS = _phrases({
-    "aggressive|aggressively|dangerous|dangerously|reckless|recklessly|speeding|fast|quickly|suddenly|sudden|"
-    "rushing|rushes|runs|running|dashes|overtake|overtakes|overtaking": "aggressive",
-    "careful|carefully|cautious|cautiously|slow|slowly|gently": "cautious",
-})
-FEATURES = _phrases({
-    "traffic light|lights|signal|signals;signalised|signalized;signal controlled": "traffic_light",
-    "unsignalised|unsignalized|uncontrolled": "!traffic_light",
-    "stop sign|signs;all way stop": "stop",
-    "yield sign|signs;give way sign|signs;yield;give way": "yield",
-    "crosswalk|crosswalks;zebra crossing|crossings;pedestrian crossing|crossings": "crosswalk",
-    "ladder crosswalk": "ladder_crosswalk",
-    "continental crosswalk;zebra": "continental_crosswalk",
-    "stop line|lines": "stop_line",
-})
-JUNCTION = _phrases({"junction|junctions|intersection|intersections|crossroads|crossroad;t junction": "junction"})
-NEGATIONS = {"no", "not", "without", "none", "never"}
-CONDITIONS = _phrases({
-    "heavy|hard|pouring rain;downpour;storm|stormy": "hard_rain",
-    "light|soft rain;drizzle|drizzling": "soft_rain",
-    "rain|rainy|raining": "mid_rain",
-    "puddles|puddle;wet road|roads;wet": "wet",
-    "cloudy|overcast|clouds": "cloudy",
-    "fog|foggy|mist|misty|haze": "fog",
-    "snow|snowy|snowing": "snow",
-    "clear|sunny": "clear",
-})
-TIMES = _phrases({"night|dark|darkness|midnight": "night", "dusk|sunset|evening|twilight": "sunset",
-                  "dawn|sunrise|morning": "dawn", "noon|midday|daytime|afternoon": "noon"})
-STAGE_BREAKS = _phrases({"then;after that;afterwards;after this;next;later;finally;subsequently": "then"})
-KINDS = _phrases({
-    "block|blocks|blocking|blocked": "blocking",
-    "pedestrian crush|crushing;crush|crushing;hit a pedestrian": "crushing",
-    "cut off;cut in;cutoff;cutting in": "cut_off",
-    "daily|everyday|normal|regular|ordinary traffic": "daily_traffic",
-    "emergency vehicles|vehicle;emergency": "emergency",
-    "intersection;junction": "intersection",
-    "two wheel|wheeled|wheelers|wheeler vehicles;two wheelers;only two wheelers": "two_wheels",
-    "rain|rainy|snow|snowy|fog|foggy|bad|wet weather;rain|rainy|snow|snowy|fog|foggy|weather": "weather",
-})
-STOPWORDS = set("""
-a an the of to in on at is are was were be and or while with from for its it that which who as by into onto
-this there where when scene scenario please create make generate build give me show some road roads lane lanes
-street streets way one ego's egos side same other also just then it's their them they he she his her having has
-have
-""".split())
 NAME_PREFIX = {"car": "c", "truck": "t", "bus": "b", "motorcycle": "m", "cyclist": "k", "pedestrian": "p",
                "ambulance": "a", "police": "po", "firetruck": "f"}
-COORDINATION = {"and", "or", "a", "an", "the", "as", "well", "plus", "both"}
-NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "single": 1, "double": 2,
-                "multi": 2, "multiple": 2}
+MAX_AGENTS_PER_MENTION = 12
+BARE_PLURAL_COUNT = 2  # "cars pass", "a crowd of children": the gold conventions' count for an unstated size
+
+DEFINITE = {"the", "this", "that", "these", "those", "said"}
+INDEFINITE = {"a", "an", "another", "some", "any", "one"}
+PRONOUNS = {"it", "they", "them", "he", "she", "him", "her", "itself", "both", "former", "latter"}
+NEGATIONS = {"no", "not", "without", "never", "none", "neither", "nor", "lacking", "absent", "unmarked", "non"}
+AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "am", "will", "would", "can", "could", "does",
+               "do", "did", "has", "have", "had", "should", "must", "may", "might", "shall", "keeps", "keep",
+               "then", "also", "to", "and"}
+CLAUSE_WORDS = {"while", "whilst", "as", "when", "whereas", "but", "although", "though", "because", "so", "where",
+                "and", "or", "which", "who", "that", "whose", "whom", "until", "before", "if"}
+RELATIVES = {"which", "who", "that", "whose", "whom"}
+# Relational verbs: (subject's place relative to the object) when one of them is the ego.
+FOLLOWING = {"follow", "tailgate", "trail", "chase"}
+LEADING = {"lead", "precede"}
+OVERTAKING = {"overtake", "pass"}
+ACTION_RANK = {"block": 8, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 6,
+               "turn_right": 6, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
+               "move": 1}
+SIDES = ("left", "right")
+RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump"}
 
 
 @dataclass
 class Lowered:
     scenario: Scenario
-    unknown: list[str]  # words no rule placed
+    unknown: list[str]  # words no rule placed, each with the nearest known word when there is one
     kind: str | None = None  # the scene kind a template filled in
+    notes: list[str] = field(default_factory=list)  # every inference and repair, also in the scene's comments
 
 
 @dataclass
-class _Mention:
+class Unit:
+    """A lexicon phrase or a single token, in text order."""
+
     start: int
     end: int
-    type: str
-    count: int
-    is_ego: bool
-    adjectives: int = 0  # where the words qualifying the noun begin ("an aggressive car", "an oncoming bus")
+    category: str  # a lexicon category, or "word", "number", "comma"
+    meaning: str
+    tokens: tuple[Token, ...]
+
+    @property
+    def word(self) -> str:
+        return self.tokens[0].word
+
+    @property
+    def base(self) -> str:
+        return " ".join(t.base for t in self.tokens)
 
 
 @dataclass
-class _Text:
-    tokens: list[str]
-    used: set[int] = field(default_factory=set)
-
-    def find(self, table, start: int = 0, stop: int | None = None, mark: bool = True):
-        """Matches of a phrase table in tokens[start:stop]: (index, length, meaning), in text order."""
-        stop = len(self.tokens) if stop is None else stop
-        found, taken = [], set()
-        for words, meaning in table:
-            n = len(words)
-            for i in range(start, stop - n + 1):
-                if any(j in taken for j in range(i, i + n)):
-                    continue
-                if all(self.tokens[i + k] in words[k] for k in range(n)):
-                    found.append((i, n, meaning))
-                    taken.update(range(i, i + n))
-        found.sort()
-        if mark:
-            for i, n, _ in found:
-                self.used.update(range(i, i + n))
-        return found
+class Entity:
+    key: int
+    type: str
+    is_ego: bool
+    stage: int
+    count: int = 1
+    head: str = ""
+    generic: bool = False  # "vehicles", "road users": a group others may be members of
+    group_open: int = 0  # members of a counted group not yet named by a re-mention
+    features: set = field(default_factory=set)  # position features, see positions.txt
+    relative_to: "Entity | None" = None  # "in front of a truck": at the truck's place
+    actions: list = field(default_factory=list)  # (stage, strength, rank, order, class, direction)
+    behavior: str | None = None
+    road_type: str | None = None
+    trigger: Trigger | None = None
+    speed: Speed | None = None
+    gap_m: float | None = None
+    parent: "Entity | None" = None  # the counted group it was taken from
 
 
-def tokenize(text: str) -> list[str]:
-    text = text.lower().replace("km/h", " kmh ").replace("'s", " ")
-    return re.findall(r"[a-z]+|\d+(?:\.\d+)?", text)
+@dataclass
+class _Reader:
+    tokens: list[Token]
+    units: list[Unit]
+    notes: list[str] = field(default_factory=list)
+    used: set = field(default_factory=set)  # token indexes some rule placed
+    entities: list[Entity] = field(default_factory=list)
+    order: int = 0
+
+    def mark(self, unit: Unit) -> None:
+        self.used.update(range(unit.start, unit.end))
+
+    def tick(self) -> int:
+        self.order += 1
+        return self.order
 
 
-def lower(prompt: str, seed: int = 0) -> Lowered:
-    """Lower an English prompt into a Scenario; LoweringError when nothing usable can be read from it."""
-    text = _Text(tokenize(prompt))
-    if not text.tokens:
-        raise LoweringError("the prompt is empty")
-    kinds = text.find(KINDS, mark=False)
-    road = _road(text)
-    weather = _weather(text)
-    segments = _segments(text)
-    kind_tokens = {j for i, n, _ in kinds for j in range(i, i + n)}
-    mentions_by_segment = [_mentions(text, a, b, skip=set(text.used) | kind_tokens) for a, b in segments]
-    others = [m for ms in mentions_by_segment for m in ms if not m.is_ego]
-    kind = None
-    if not others and kinds:
-        i, n, kind = kinds[0]
-        text.used.update(range(max(0, i - 1), i + n))  # the kind and the word that qualifies it
-    junction_context = road.junction is True or bool(text.find(JUNCTION, mark=False))
-    stages, names = [], _Namer()
-    ego: Agent | None = None
-    for (_, b), mentions in zip(segments, mentions_by_segment):
-        agents: list[Agent] = []
-        for i, m in enumerate(mentions):
-            clause_end = mentions[i + 1].start if i + 1 < len(mentions) else b
-            clause = (m.end, clause_end)
-            k = i
-            while all(t in COORDINATION for t in text.tokens[clause[0]:clause[1]]) and k + 1 < len(mentions) \
-                    and not mentions[k + 1].is_ego:  # "an ambulance and a police car drive behind": shared
-                k += 1
-                clause = (mentions[k].end, mentions[k + 1].start if k + 1 < len(mentions) else b)
-            if m.is_ego:
-                if ego is None:
-                    ego = _ego(text, m, clause)
+# -- units --------------------------------------------------------------------------------------------------
+
+def _units(tokens: list[Token]) -> list[Unit]:
+    found = {m.start: m for m in matches(tokens)}
+    out, i = [], 0
+    while i < len(tokens):
+        m = found.get(i)
+        if m is not None:
+            out.extend(_disambiguate(tokens, m))
+            i = m.end
+            continue
+        t = tokens[i]
+        category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
+        out.append(Unit(i, i + 1, category, t.word, (t,)))
+        i += 1
+    return out
+
+
+VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
+                       "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
+                       "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
+                       "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead", "with",
+                       "and", "very", "infront", "one"}
+
+
+def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
+    """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk."""
+    span = tuple(tokens[m.start:m.end])
+    nxt = tokens[m.end].word if m.end < len(tokens) else ""
+    if m.category == "road" and span[-1].word == "crossing" and nxt in VERB_AFTER_CROSSING:
+        out = []
+        if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
+            out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
+        out.append(Unit(m.end - 1, m.end, "actions", "cross", span[-1:]))
+        return out
+    return [Unit(m.start, m.end, m.category, m.meaning, span)]
+
+
+# -- road, weather, kinds -----------------------------------------------------------------------------------
+
+def _road(r: _Reader) -> RoadSpec:
+    fields: dict = {"required_signals": [], "without_signals": [], "required_objects": [], "without_objects": []}
+    junction: bool | None = None
+    lanes: int | None = None
+    negated = False
+    units = r.units
+
+    def put(word: str, forbidden: bool) -> None:
+        group = "signals" if word in V.SIGNALS else "objects"
+        target = fields[f"{'without' if forbidden else 'required'}_{group}"]
+        other = fields[f"{'required' if forbidden else 'without'}_{group}"]
+        if word not in target and word not in other:
+            target.append(word)
+
+    for k, u in enumerate(units):
+        if u.category == "word" and u.word in NEGATIONS or (u.category == "word" and u.word.endswith("n't")):
+            negated = True
+            r.mark(u)
+            continue
+        if u.category == "road":
+            r.mark(u)
+            meaning = u.meaning
+            if meaning == "junction":
+                denied = _denied(units, k)
+                if junction is None or denied:
+                    junction = not denied
+            elif meaning == "no_junction":
+                junction = False if not negated else junction
+            elif meaning == "highway":
+                lanes = max(lanes or 0, 2)
+                junction = False if junction is None else junction
+            elif meaning == "sign":
+                if negated:
+                    put("stop", True)
+                    put("yield", True)
+            elif meaning.startswith("!"):
+                for word in meaning[1:].split("+"):
+                    put(word, True)
+            else:
+                if meaning == "traffic_light" and u.tokens[0].word in ("light", "lights") and not negated and \
+                        k > 0 and units[k - 1].category == "weather":
+                    continue  # "light rain" is read as weather first; a stray "light" after weather is not a signal
+                put(meaning, negated)
+            continue
+        if u.category == "positions" and u.meaning == "crosswalk":  # "near the crosswalk": there is one
+            said = {t.word for t in u.tokens}
+            word = "continental_crosswalk" if "zebra" in said else "crosswalk"
+            if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]):
+                put(word, False)
+        if u.category == "comma" or (u.category == "word" and u.word in
+                                     ("and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic")):
+            continue
+        if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
+            continue
+        negated = False
+    speed_limits = _speed_limits(r)
+    for word in speed_limits:
+        put(word, False)
+    lanes = _lanes(r, lanes)
+    spec: dict = {k: tuple(v) for k, v in fields.items()}
+    if lanes is not None:
+        spec["lanes"] = lanes
+    if junction is not None:
+        spec["junction"] = junction
+    return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+def _denied(units: list[Unit], k: int) -> bool:
+    """'no junction', 'not at a junction', 'without any junctions', 'away from junctions'."""
+    for u in reversed(units[max(0, k - 3):k]):
+        if u.category == "word" and (u.word in NEGATIONS or u.word == "away"):
+            return True
+        if not (u.category == "word" and u.word in ("at", "a", "an", "any", "from", "near", "the")):
+            return False
+    return False
+
+
+LIMIT_WORDS = {"limit", "zone", "sign", "limited", "posted", "restricted", "maximum", "max"}
+
+
+def _speed_limits(r: _Reader) -> list[str]:
+    tokens, out = r.tokens, []
+    for i, t in enumerate(tokens):
+        value = read_number(t.word)
+        if value is None:
+            continue
+        around = {x.word for x in tokens[max(0, i - 4): i + 5]}
+        if not around & LIMIT_WORDS or "lane" in {x.word for x in tokens[i + 1: i + 2]}:
+            continue
+        unit = tokens[i + 1].word if i + 1 < len(tokens) else ""
+        kmh = value * 1.609344 if unit == "mph" else value
+        r.used.update(j for j in range(max(0, i - 4), min(len(tokens), i + 5))
+                      if tokens[j].word in LIMIT_WORDS | {"speed", "kmh", "mph", "of", "km"} or j == i)
+        limit = round(kmh)
+        low, high = V.SPEED_SIGN_LIMITS
+        if not low <= limit <= high:
+            shown = "a number too large to read" if value >= TOO_LARGE else f"{t.word} {unit}".strip()
+            r.notes.append(f"left out: a speed limit of {shown} is outside {low}..{high} km/h")
+            continue
+        if unit == "mph":
+            r.notes.append(f"inferred: {t.word} mph is speed_{limit} (km/h)")
+        out.append(f"speed_{limit}")
+    return out
+
+
+LANE_ROADS = {"road", "roads", "street", "highway", "motorway", "freeway", "carriageway", "avenue", "roadway",
+              "boulevard", "expressway", "lane", "lanes", "way", "section", "stretch", "arterial", "dual"}
+
+
+def _lanes(r: _Reader, lanes: int | None) -> int | None:
+    tokens = r.tokens
+    numbers = lexicon()
+    for i, t in enumerate(tokens):
+        if t.base != "lane" or i == 0:
+            continue
+        prev = tokens[i - 1]
+        n = read_number(prev.word)
+        if n is None:
+            entry = numbers.phrases.get((prev.word,))
+            if entry and entry[0] == "numbers":
+                n = float(entry[1])
+            elif prev.word in ("multi", "multiple", "several", "many"):
+                n = 2.0
+            elif prev.word == "single":
+                n = 1.0
+        if n is None:
+            continue
+        nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
+        if not (t.word == "lanes" or nxt in LANE_ROADS or nxt in ("in", "per", "each", "on", ",", "")):
+            continue
+        r.used.update((i - 1, i))
+        if n >= TOO_LARGE:
+            r.notes.append("repaired: a lane count too large to read; used lanes >= 6")
+            n = 6
+        lanes = max(lanes or 0, int(n))
+    return lanes
+
+
+def _weather(r: _Reader) -> Weather | None:
+    conditions, times = [], []
+    for k, u in enumerate(r.units):
+        if u.category != "weather":
+            continue
+        before = r.units[k - 1] if k else None
+        if before is not None and before.category == "word" and before.word in ("no", "without", "not"):
+            r.mark(u)
+            continue
+        r.mark(u)
+        (times if u.meaning.startswith("time:") else conditions).append(
+            (u.meaning.removeprefix("time:"), " ".join(t.word for t in u.tokens)))
+    if not conditions and not times:
+        return None
+    condition = _one_condition(conditions, r.notes)
+    time = times[0][0] if times else V.DEFAULT_TIME
+    for other, said in times[1:]:
+        if other != time:
+            r.notes.append(f"left out: '{said}' (the scene has one time of day: {time})")
+    return Weather(condition=condition, time=time)
+
+
+FALLING = ("hard_rain", "mid_rain", "soft_rain", "snow", "fog")
+
+
+def _one_condition(conditions: list[tuple[str, str]], notes: list[str]) -> str:
+    """One condition from many words: rain, snow or fog over wet or cloudy; wet and cloudy make wet_cloudy."""
+    words = [c for c, _ in conditions]
+    if not words:
+        return V.DEFAULT_CONDITION
+    falling = [(c, said) for c, said in conditions if c in FALLING]
+    if falling:
+        rain = [c for c, _ in falling if c.endswith("rain")]
+        first = falling[0][0]
+        if first.endswith("rain") and len(set(rain)) > 1:
+            first = next(c for c in ("hard_rain", "soft_rain", "mid_rain") if c in rain)
+        for c, said in falling:
+            if c != first and not (c.endswith("rain") and first.endswith("rain")):
+                notes.append(f"left out: '{said}' (the scene has one weather condition: {first})")
+        return first
+    if "wet_cloudy" in words or ("wet" in words and "cloudy" in words):
+        return "wet_cloudy"
+    for c in ("wet", "cloudy", "clear"):
+        if c in words:
+            return c
+    return words[0]
+
+
+ASKING = {"scene", "scenario", "situation", "simulation", "case", "test"}
+ASKING_LINKS = {"for", "of", "with", "about", "involving", "showing", "featuring", "depicting", "having", "on",
+                "where", "containing", "that", "has", "is", "a", "an", "the", "some", "shows", "covering"}
+
+
+def _asked_kind(tokens: list[Token]) -> tuple[str, range] | None:
+    """The scene kind when the prompt asks for one as the whole scene: 'create a scene for daily traffic',
+    'a daily traffic scene', 'daily traffic'. A passing word ('at an intersection', 'in fog') is not asked."""
+    kinds = lexicon().kinds
+    words = [t.base for t in tokens]
+    content = [i for i, t in enumerate(tokens) if t.word != "," and (t.word not in lexicon().function_words
+                                                                    or t.word in ASKING)]
+
+    def kind_at(i: int):
+        for n in range(6, 0, -1):
+            key = tuple(words[i:i + n])
+            raw = tuple(t.word for t in tokens[i:i + n])
+            if len(key) == n and (key in kinds or raw in kinds):
+                return kinds.get(raw) or kinds[key], n
+        return None
+
+    def nothing_after(end: int) -> bool:  # "... daily traffic at dusk": only weather or road words may follow
+        for t in tokens[end:]:
+            if t.sentence != tokens[end - 1].sentence:
+                break
+            entry = lexicon().phrases.get((t.base,)) or lexicon().phrases.get((t.word,))
+            if entry and entry[0] in ("agents", "actions") and entry[1] != "none":
+                return False
+        return True
+
+    for i, t in enumerate(tokens):
+        if t.word in ASKING:
+            j = i + 1
+            while j < len(tokens) and tokens[j].word in ASKING_LINKS:
+                j += 1
+            if j > i + 1 and (found := kind_at(j)) and nothing_after(j + found[1]):
+                return found[0], range(i, j + found[1])
+            if i > 0:
+                for k in range(max(0, i - 4), i):
+                    found = kind_at(k)
+                    if found and k + found[1] == i and nothing_after(i + 1):
+                        return found[0], range(k, i + 1)
+    if content:
+        first = content[0]
+        found = kind_at(first)
+        if found and first + found[1] > content[-1]:
+            return found[0], range(first, first + found[1])
+    return None
+
+
+# -- stages and clauses -------------------------------------------------------------------------------------
+
+@dataclass
+class Clause:
+    units: list[Unit]
+    stage: int
+    condition: bool = False  # "once the light turns green": sets no action of its own
+    antecedent: Entity | None = None  # a relative clause's noun
+    link: str = ""  # the word that opened it (and, while, which...)
+
+
+def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
+    units = [u for u in r.units if u.start not in skip]
+    out: list[Clause] = []
+    stage, current, condition, link = 0, [], False, ""
+    sentence = units[0].tokens[0].sentence if units else 0
+
+    def close(next_link: str = "", next_condition: bool = False):
+        nonlocal current, condition, link
+        if current:
+            out.append(Clause(current, stage, condition, link=link))
+        current, condition, link = [], next_condition, next_link
+
+    for k, u in enumerate(units):
+        nxt = units[k + 1] if k + 1 < len(units) else None
+        new_sentence = u.tokens[0].sentence != sentence
+        sentence = u.tokens[0].sentence
+        if new_sentence:
+            close()
+        if u.category == "sequence" and not (nxt is not None and nxt.category == "number"):
+            r.mark(u)
+            if out or current:
+                close()
+                stage += 1
+            close(next_condition=u.meaning == "once")
+            continue
+        if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
+            r.mark(u)
+            close()
+            stage += 1
+            condition = True
+            continue
+        if u.category == "comma":
+            if _has_verb(current) or condition:
+                close(",")
+            continue
+        if u.category == "word" and u.word in CLAUSE_WORDS:
+            if u.word in ("and", "or") and not _has_verb(current):
+                current.append(u)
                 continue
-            agents += _agents(text, m, clause, names, junction_context, road)
-        for j, agent in enumerate(agents):  # "in front of a truck": at the truck's position
-            if agent.relative_to_ego == "same_as_next":
-                nxt = next((x.relative_to_ego for x in agents[j + 1:] if x.relative_to_ego != "same_as_next"),
-                           "front")
-                agents[j] = agent.model_copy(update={"relative_to_ego": nxt})
-        stages.append(agents)
-    if kind is not None:
-        template = _template(kind, seed)
-        road = _merge_road(template.road, road)
-        ego = ego or template.ego
-        stages[0] = [a for a in template.stages[0].agents if not a.is_ego] + stages[0]
-    if ego is None:
-        ego = Agent(name="ego", type="car", is_ego=True, action="go_straight")
-    ego = _ego_default_for_obstacles(ego, stages[0])
-    stages[0] = [ego] + stages[0]
-    if not any(stages[1:]) and len(stages) > 1:
-        stages = [stages[0]]
-    stage_models = tuple(Stage(name=_stage_name(k, len(stages)), agents=tuple(agents))
-                         for k, agents in enumerate(stages) if agents)
-    if road.junction is None and any(a.action in V.TURN_ACTIONS or a.relative_to_ego in V.JUNCTION_POSITIONS
-                                     for s in stage_models for a in s.agents):
-        road = road.model_copy(update={"junction": True})
-    name = _name(prompt)
-    candidate = Scenario.model_construct(name=name, seed=None, weather=weather, road=road, stages=stage_models)
-    problems = find_problems(candidate)
-    if problems:
-        raise LoweringError("the prompt lowers to an invalid scene: " + "; ".join(p.message for p in problems))
-    scenario = Scenario.model_validate(candidate.model_dump())
-    unknown = [t for i, t in enumerate(text.tokens) if i not in text.used and t not in STOPWORDS
-               and t not in COUNTS and not t.isdigit()]
-    unknown = list(dict.fromkeys(unknown))
-    said_nothing = (kind is None and len(list(scenario.agents())) == 1 and scenario.road == RoadSpec()
-                    and scenario.weather is None and scenario.ego.action == "go_straight"
-                    and scenario.ego.behavior == V.DEFAULT_BEHAVIOR)
-    if said_nothing:
-        raise LoweringError("nothing in the prompt could be read as a scene"
-                            + (f"; unknown words: {', '.join(unknown)}" if unknown else "")
-                            + ". Name agents (car, pedestrian, bus...), what they do (turns left, crosses, stops...) "
-                              "and where (in front, from the opposite direction...), or write the scene in the "
-                              "scenario language (.tsg)")
-    return Lowered(scenario, unknown, kind)
+            if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
+                current.append(u)
+                continue
+            if u.word == "as" and nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if"):
+                current.append(u)
+                continue
+            close(u.word)
+            continue
+        current.append(u)
+    close()
+    return out
+
+
+def _has_verb(units: list[Unit]) -> bool:
+    return any(u.category == "actions" and u.meaning not in ("try",) for u in units)
+
+
+def _reaching(units: list[Unit], k: int) -> bool:
+    """'when the ego reaches / approaches / enters the junction': the start of a later stage."""
+    window = units[k:k + 5]
+    ego = any(u.category == "agents" and u.meaning == "ego" for u in window[:3])
+    verb = next((u for u in window if u.category == "actions"), None)
+    if not ego or verb is None:
+        return False
+    if verb.meaning == "reach":
+        return True
+    rest = units[units.index(verb) + 1: units.index(verb) + 4]
+    return verb.base in ("approach", "enter") and any(u.category == "road" and u.meaning == "junction" for u in rest)
+
+
+# -- noun phrases and entities ------------------------------------------------------------------------------
+
+@dataclass
+class NounPhrase:
+    entity: Entity | None  # None: names no agent
+    index: int  # where in the clause's units its head is
+    first: int  # its first unit (determiner)
+    introduced: bool = False  # a new entity (indefinite)
+    plural: bool = False
+    group: list = field(default_factory=list)  # several entities ("both", "they")
+
+
+def _agent_type(u: Unit) -> tuple[str, bool]:
+    """(type, is_ego) of an agent unit; the ego's type from its noun ('the ego truck')."""
+    if u.meaning == "ego":
+        words = [t.base for t in u.tokens]
+        for kind in ("truck", "bus", "motorcycle"):
+            if kind in words:
+                return kind, True
+        return "car", True
+    if u.meaning == "generic":
+        return "car", False
+    return u.meaning, False
+
+
+ADJECTIVE_POSITIONS = {"oncoming", "opposing", "leading", "lead", "following", "trailing", "adjacent", "preceding",
+                       "opposite", "front", "rear", "back"}
+DETERMINERS = DEFINITE | INDEFINITE | {"other", "both", "all", "each", "every", "more", "than", "over", "of", "second",
+                                       "third", "first", "same", "further", "additional", "extra", "its", "their"}
+
+
+def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, int, set[str], list[Unit]]:
+    """The count, determiner words and premodifiers in front of a noun: 'the two dangerous oncoming cars'.
+    Modifiers stand between the determiner and the noun; the determiner ends the phrase on the left."""
+    count, first, words, modifiers = None, head, set(), []
+    k = head - 1
+    in_determiner = False
+    while k >= lo:
+        u = units[k]
+        if u.category == "numbers":
+            count = int(u.meaning) if count is None else count
+            in_determiner = True
+        elif u.category == "number":
+            value = read_number(u.word) or 0
+            count = int(min(value, TOO_LARGE)) if count is None else count
+            in_determiner = True
+        elif u.category == "word" and u.word in DETERMINERS:
+            words.add(u.word)
+            in_determiner = True
+        elif in_determiner:
+            break
+        elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)) or \
+                (u.category == "positions" and len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS) or \
+                (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS):
+            modifiers.append(u)
+        else:
+            break
+        first = k
+        k -= 1
+    # a premodifier run without a determiner in front of it belongs to what came before
+    if not words and count is None and modifiers and any(m.category == "actions" for m in modifiers):
+        first = head
+        modifiers = []
+    return count, first, words, modifiers
+
+
+def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
+    u = units[head]
+    r.mark(u)
+    kind, is_ego = _agent_type(u)
+    count, first, words, modifiers = _count_before(units, head, lo)
+    for k in range(first, head):
+        if units[k].category in ("word", "numbers", "number"):
+            r.mark(units[k])
+    plural = u.tokens[-1].plural and not is_ego
+    if is_ego:
+        ego = next((e for e in r.entities if e.is_ego), None)
+        if ego is None:
+            ego = Entity(len(r.entities), kind, True, stage, head=u.base)
+            r.entities.append(ego)
+        elif kind != "car" and ego.type == "car":
+            ego.type = kind
+        return NounPhrase(ego, head, first)
+    if u.meaning == "none":
+        return NounPhrase(None, head, first)
+    definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
+    if "more" in words and "than" in words and count is not None:
+        count += 1
+    if definite and count is None:
+        found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
+                          "both" in words, recent)
+        if found:
+            if len(found) == 1:
+                return NounPhrase(found[0], head, first, plural=plural)
+            return NounPhrase(found[0], head, first, plural=True, group=found)
+    if count is None:
+        count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
+    if count >= TOO_LARGE:
+        r.notes.append(f"repaired: a count too large to read for {u.base}; used {MAX_AGENTS_PER_MENTION}")
+        count = MAX_AGENTS_PER_MENTION
+    elif count > MAX_AGENTS_PER_MENTION:
+        r.notes.append(f"repaired: {count} {u.base}s is more than {MAX_AGENTS_PER_MENTION} in one mention; "
+                       f"used {MAX_AGENTS_PER_MENTION}")
+        count = MAX_AGENTS_PER_MENTION
+    entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
+                    generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1))
+    if _including_ego(units, head):
+        entity.count = max(0, count - 1)
+    if entity.count > 1 or entity.generic:
+        entity.group_open = entity.count
+    if not _absorbed(r, entity):
+        r.entities.append(entity)
+    for m in modifiers:
+        _modify(r, entity, m, stage, strength=1)
+    return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
+
+
+def _including_ego(units: list[Unit], head: int) -> bool:
+    window = units[head + 1: head + 4]
+    return (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting")
+            and any(u.category == "agents" and u.meaning == "ego" for u in window[1:]))
+
+
+def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
+              recent: list[Entity]) -> list[Entity]:
+    """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
+    pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
+                                                        or (e.generic and kind in V.EGO_TYPES))]
+    if not pool:
+        return []
+    if both or plural:
+        groups = [e for e in pool if e.count > 1]
+        return [groups[-1]] if groups else pool[-2:]
+    groups = [e for e in pool if e.group_open > 0]
+    if groups:
+        group = groups[-1]
+        member = Entity(len(r.entities), group.type if not group.generic else kind, False, group.stage,
+                        head=group.head, parent=group, features=set(group.features),
+                        actions=list(group.actions), behavior=group.behavior)
+        group.group_open -= 1
+        group.count -= 1
+        r.entities.append(member)
+        return [member]
+    singles = [e for e in pool if e.parent is None or e.count == 1]
+    if other:
+        last = recent[-1] if recent and recent[-1] in singles else (singles[-1] if singles else None)
+        others = [e for e in singles if e is not last]
+        return [others[-1]] if others else []
+    mentioned = [e for e in recent if e in singles]
+    return [mentioned[-1]] if mentioned else [singles[-1]]
+
+
+def _absorbed(r: _Reader, entity: Entity) -> bool:
+    """A new agent of a counted group already introduced ('four vehicles: a car, a bus...') is one of it."""
+    for group in reversed(r.entities):
+        if group.is_ego or group is entity or group.group_open <= 0:
+            continue
+        if group.generic or group.type == entity.type:
+            taken = min(entity.count, group.group_open)
+            group.group_open -= taken
+            group.count -= taken
+            return False
+    return False
+
+
+# -- clause reading -----------------------------------------------------------------------------------------
+
+def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_units: list[Unit] | None = None,
+            k: int | None = None) -> None:
+    """Give a modifier or a predicate to the entity it belongs to."""
+    r.mark(u)
+    if u.category == "behaviours":
+        e.behavior = e.behavior or u.meaning
+    elif u.category == "positions":
+        if u.meaning in ("shoulder", "sidewalk"):
+            e.road_type = e.road_type or u.meaning
+            if u.meaning == "sidewalk":
+                e.features.add("on_sidewalk")
+        else:
+            e.features.add(u.meaning)
+    elif u.category == "actions":
+        direction = None
+        if clause_units is not None and k is not None and u.meaning in ("turn", "lane_change", "move", "cut_in"):
+            direction = _direction_after(r, clause_units, k)
+        action = u.meaning
+        if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
+            action = "lane_" + direction
+        if action == "move" and e.is_ego is False and u.base in OVERTAKING:
+            e.features.add("overtaking")
+        if u.tokens[0].base in RUSHING and not e.is_ego:
+            e.behavior = e.behavior or "aggressive"
+        e.actions.append((stage, strength, ACTION_RANK.get(action, 0), r.tick(), action, direction))
+    elif u.category == "word" and u.word not in lexicon().function_words:
+        pass
+
+
+def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
+    """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
+    for u in units[k + 1: k + 4]:
+        if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
+                                                        "from_left", "from_right"):
+            if u.tokens[0].word in ("from", "coming"):
+                return None
+            r.mark(u)
+            u.meaning = "used"
+            return "left" if "left" in u.base else "right"
+        if u.category in ("agents", "actions"):
+            return None
+    return None
+
+
+def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], recent: list[Entity]) -> list[Entity]:
+    units = clause.units
+    stage = clause.stage
+    phrases: list[NounPhrase] = []
+    k = 0
+    heads = [i for i, u in enumerate(units) if u.category == "agents"]
+    lo = 0
+    for i in heads:
+        np = _resolve(r, units, i, lo, stage, recent)
+        phrases.append(np)
+        lo = i + 1
+    pronouns = []
+    for i, u in enumerate(units):
+        if u.category == "word" and u.word in PRONOUNS and not any(np.first <= i <= np.index for np in phrases):
+            if u.word == "both" and i + 1 < len(units) and units[i + 1].category in ("agents", "word") and \
+                    (units[i + 1].category == "agents" or units[i + 1].word in DEFINITE):
+                continue  # "both the truck and the pedestrian": coordination, not a pronoun
+            pronouns.append(i)
+    for i in pronouns:
+        u = units[i]
+        r.mark(u)
+        if u.word in ("both", "they", "them"):
+            group = [e for e in recent if not e.is_ego][-2:] or list(previous_subject)
+            if group:
+                phrases.append(NounPhrase(group[0], i, i, plural=True, group=group))
+        elif u.word == "former" or u.word == "latter":
+            pool = [e for e in recent if not e.is_ego][-2:]
+            if pool:
+                phrases.append(NounPhrase(pool[0] if u.word == "former" else pool[-1], i, i))
+        else:
+            target = _pronoun(units, i, phrases, previous_subject, recent)
+            if target is not None:
+                phrases.append(NounPhrase(target, i, i))
+    phrases.sort(key=lambda p: p.index)
+    verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning != "try"
+             and not any(np.first <= i < np.index for np in phrases)]
+    for i, u in enumerate(units):
+        if u.category == "actions" and u.meaning == "try":
+            r.mark(u)
+
+    # the passive: "the ego is approached from behind by an ambulance"
+    by = next((i for i, u in enumerate(units) if u.category == "word" and u.word == "by" and verbs and i > verbs[0]
+               and any(np.index > i for np in phrases)), None)
+    subject: list[Entity] = []
+    objects: list[NounPhrase] = []
+    first_verb = verbs[0] if verbs else len(units)
+    if by is not None:
+        actor = next(np for np in phrases if np.index > by)
+        subject = actor.group or [actor.entity]
+        objects = [np for np in phrases if np is not actor]
+        r.mark(units[by])
+    else:
+        before = [np for np in phrases if np.index < first_verb and np.entity is not None
+                  and not _is_reference(units, np)]
+        for np in before:
+            subject += np.group or [np.entity]
+        objects = [np for np in phrases if np.index > first_verb or _is_reference(units, np)]
+    subject = [e for e in subject if e is not None]
+    if not subject:
+        if clause.antecedent is not None:
+            subject = [clause.antecedent]
+        elif clause.condition:
+            subject = []
+        elif previous_subject and (clause.link in ("and", "or", ",", "but", "then", "") or not phrases):
+            subject = list(previous_subject)
+    if clause.condition:
+        strength = 1
+    else:
+        strength = 2
+
+    main_verbs = []
+    for i in verbs:
+        owner = _participle_owner(units, i, phrases, subject, verbs)
+        if owner is not None:
+            for e in owner.group or [owner.entity]:
+                if e is not None:
+                    _modify(r, e, units[i], stage, 1, units, i)
+        else:
+            main_verbs.append(i)
+    for i in main_verbs:
+        for e in subject:
+            _modify(r, e, units[i], stage, strength, units, i)
+        _relational(units[i], units, i, subject, phrases)
+
+    # positions, behaviours and road types: to the noun they follow, else the subject
+    for i, u in enumerate(units):
+        if u.category not in ("positions", "behaviours") or u.meaning == "used":
+            continue
+        if any(np.first <= i < np.index for np in phrases):
+            continue  # a premodifier, already given
+        owner = _modifier_owner(units, i, phrases, subject, main_verbs)
+        reference = _reference_after(units, i, phrases)
+        targets = owner if owner else []
+        for e in targets:
+            if e.is_ego and u.category == "positions":
+                continue
+            if reference is not None and not reference.is_ego and u.category == "positions" and \
+                    u.meaning in ("ahead", "behind", "level") and reference is not e:
+                e.relative_to = e.relative_to or reference
+                r.mark(u)
+                continue
+            _modify(r, e, u, stage, 1)
+        if not targets:
+            r.mark(u)
+    _numbers(r, units, subject)
+    mentioned = [np.entity for np in phrases if np.entity is not None]
+    for e in mentioned:
+        if e in recent:
+            recent.remove(e)
+        recent.append(e)
+    return subject
+
+
+def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
+    """A noun after 'in front of', 'behind', 'by', 'including': it places another noun, it is not a subject."""
+    k = np.first - 1
+    if k < 0:
+        return False
+    u = units[k]
+    if u.category == "positions" and u.meaning in ("ahead", "behind", "level", "side_left", "side_right",
+                                                    "front_left", "front_right", "back_left", "back_right"):
+        return True
+    return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
+                                               "towards", "toward", "for", "with", "besides", "from", "near")
+
+
+def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
+    """'it' as a subject is the last subject; as an object ('in front of it') the last thing named that is
+    not the subject, usually the ego."""
+    as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
+                           (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind")))
+    if not as_object:
+        if previous_subject:
+            return previous_subject[0]
+        return recent[-1] if recent else None
+    subject = next((np.entity for np in phrases if np.index < i), None) or (previous_subject or [None])[0]
+    for e in reversed(recent):
+        if e is not subject:
+            return e
+    return None
+
+
+def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
+    """A verb right after a noun, with a finite verb after it, modifies that noun: 'a cyclist riding alongside
+    swerves', 'in front of a truck stopped on the shoulder'."""
+    k = i - 1
+    while k >= 0 and units[k].category in ("behaviours",) or (k >= 0 and units[k].category == "word"
+                                                               and units[k].word in ("that", "which", "who")):
+        k -= 1
+    if k < 0:
+        return None
+    np = next((p for p in phrases if p.index == k), None)
+    if np is None:
+        return None
+    aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
+    later = any(v > i for v in verbs)
+    word = units[i].tokens[0].word
+    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood")
+    if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
+        return np
+    return None
+
+
+def _modifier_owner(units, i, phrases, subject, main_verbs) -> list[Entity]:
+    before = [p for p in phrases if p.index < i and p.entity is not None]
+    verb_before = [v for v in main_verbs if v < i]
+    if not verb_before:
+        if before:
+            last = before[-1]
+            if last.entity in subject:
+                return subject
+            return last.group or [last.entity]
+        return subject
+    last_verb = verb_before[-1]
+    objects_between = [p for p in before if p.index > last_verb]
+    if objects_between:
+        last = objects_between[-1]
+        if last.introduced and not last.entity.is_ego:
+            return [last.entity]
+    return subject
+
+
+def _reference_after(units, i, phrases) -> Entity | None:
+    np = next((p for p in phrases if p.first in (i + 1, i + 2) or p.index == i + 1), None)
+    if np is None:
+        return None
+    between = units[i + 1: np.first]
+    if all(u.category == "word" and u.word in ("of", "the", "a", "an", "to") for u in between):
+        return np.entity
+    return None
+
+
+def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
+    """Places implied by verbs between an agent and the ego: following, leading, overtaking."""
+    base = verb.tokens[0].base
+    obj = next((p for p in phrases if p.index > i), None)
+    if obj is None or obj.entity is None:
+        if base in OVERTAKING and base == "overtake":
+            for e in subject:
+                if not e.is_ego:
+                    e.features.add("overtaking")
+        return
+    targets = obj.group or [obj.entity]
+    for e in subject:
+        for t in targets:
+            if t.is_ego and not e.is_ego:
+                if base in FOLLOWING:
+                    e.features.add("behind")
+                elif base in LEADING:
+                    e.features.add("ahead")
+                elif base in OVERTAKING:
+                    e.features.add("overtaking")
+            elif e.is_ego and not t.is_ego:
+                if base in FOLLOWING or base in OVERTAKING:
+                    t.features.add("ahead")
+                elif base in LEADING:
+                    t.features.add("behind")
+
+
+def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
+    """Triggers, speeds and gaps said in numbers: 'within 15 m', 'after 2 seconds', 'at 50 km/h', '10 m ahead'."""
+    for k, u in enumerate(units):
+        if u.category != "number" or not subject:
+            continue
+        value = read_number(u.word)
+        if value is None or value >= TOO_LARGE:
+            continue
+        prev = units[k - 1] if k else None
+        nxt = units[k + 1] if k + 1 < len(units) else None
+        unit_word = nxt.tokens[0].word if nxt is not None else ""
+        targets = [e for e in subject if not e.is_ego] or subject
+        if prev is not None and prev.word == "within" and unit_word in ("m", "meters", "meter", "metres"):
+            low, high = V.TRIGGER_DISTANCE_RANGE_M
+            if low <= value <= high:
+                for e in targets:
+                    e.trigger = Trigger(within_m=value)
+                r.mark(u), r.mark(prev), r.mark(nxt)
+        elif prev is not None and prev.word == "after" and unit_word in ("s", "seconds", "second", "sec", "secs"):
+            if value <= V.TRIGGER_TIME_RANGE_S[1]:
+                for e in targets:
+                    e.trigger = Trigger(after_s=value)
+                r.mark(u), r.mark(prev), r.mark(nxt)
+        elif unit_word in ("kmh", "mph") and not any(t.word in LIMIT_WORDS for t in r.tokens[max(0, u.start - 4):
+                                                                                            u.start + 5]):
+            speed = Speed(value=value, unit="km/h" if unit_word == "kmh" else "mph")
+            if speed.mps <= V.SPEED_RANGE_MPS[1]:
+                for e in subject:
+                    e.speed = speed
+            else:
+                r.notes.append(f"left out: a speed of {u.word} {unit_word} is above what the language allows")
+            r.mark(u), r.mark(nxt)
+        elif unit_word in ("m", "meters", "meter", "metres") and V.GAP_RANGE_M[0] <= value <= V.GAP_RANGE_M[1]:
+            for e in targets:
+                if not e.is_ego:
+                    e.gap_m = value
+            r.mark(u), r.mark(nxt)
+
+
+# -- composing the scene ------------------------------------------------------------------------------------
+
+def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None]:
+    """(action class, direction) of the strongest, most specific predicate (of one stage, if given)."""
+    chosen = [a for a in e.actions if (stage is None or a[0] == stage) and a[2] > 0]
+    if not chosen:
+        return None, None
+    best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
+    classes = {a[4] for a in chosen if a[1] == best[1]}
+    if best[4] == "cut_in" and "stop" in classes:
+        return "block", None
+    return best[4], best[5]
+
+
+def _intro_action(e: Entity) -> tuple[str | None, str | None]:
+    action = _action(e, e.stage)
+    if action[0] is None or not any(a[1] == 2 for a in e.actions if a[0] == e.stage):
+        later = _action(e)
+        if later[0] is not None and (action[0] is None or any(a[1] == 2 for a in e.actions)):
+            return later
+    return action
+
+
+def _side(e: Entity) -> str | None:
+    f = e.features
+    for side in SIDES:
+        if f"side_{side}" in f or f"front_{side}" in f or f"back_{side}" in f or f"from_{side}" in f:
+            return side
+    return None
+
+
+def _position(e: Entity, action: str, junction: bool, has_crosswalk: bool) -> tuple[str, bool]:
+    """(position, oncoming) from the features, once the whole text is read."""
+    f = e.features
+    person = e.type == "pedestrian"
+    side = _side(e)
+    for corner in ("front_left", "front_right", "back_left", "back_right"):
+        if corner in f:
+            return corner, False
+    if "destination" in f:
+        return "at_the_destination", False
+    if "road_straight" in f and not person:
+        return ("road_of_straight", False) if junction else ("front_left", True)
+    for s in SIDES:
+        if f"road_{s}" in f:
+            return f"road_of_{s}_turn", False
+    if "cross_road" in f and not person:
+        return f"road_of_{side or 'left'}_turn", False
+    if "crosswalk" in f and e.type in V.VULNERABLE_TYPES:
+        return "near_the_crosswalk", False
+    from_side = next((s for s in SIDES if f"from_{s}" in f), None)
+    if from_side and not person and junction and action not in ("cut_in", "lane_change", "lane_left", "lane_right") \
+            and not ({"ahead", "behind", "level"} & f):
+        return f"road_of_{from_side}_turn", False
+    ahead, behind = "ahead" in f, "behind" in f or "overtaking" in f
+    if side is None and "overtaking" in f:
+        side = "left"
+    if side is None and action == "cut_in":
+        side = "right" if e.type == "cyclist" else "left"
+        ahead = ahead or not behind
+    if side is None and "level" in f and not ahead and not behind:
+        side = "right" if e.type in V.VULNERABLE_TYPES else "left"
+    if person and action == "cross" and side is None and has_crosswalk and not behind:
+        return "near_the_crosswalk", False
+    if side is not None:
+        if person and action == "cross" and not behind:
+            return (f"front_{side}" if from_side or ahead or "side_" + side in f else "front"), False
+        if ahead:
+            return f"front_{side}", False
+        if behind:
+            return f"back_{side}", False
+        return side, False
+    if behind:
+        return "back", False
+    if ahead:
+        return "front", False
+    if person and action == "walk":
+        return "front_right", False
+    return "front", False
+
+
+def _final_action(e: Entity, action: str | None, direction: str | None, position: str) -> str:
+    side_now = "left" if "left" in position else "right" if "right" in position else None
+    if action is None:
+        if e.type == "pedestrian":
+            return "on_the_sidewalk" if "on_sidewalk" in e.features or e.road_type == "sidewalk" \
+                and "crosswalk" not in e.features else "cross_the_road"
+        return "go_straight"
+    if action in ("turn_left", "turn_right"):
+        return action
+    if action in ("turn", "u_turn"):
+        return f"turn_{direction or 'left'}"
+    if action in ("lane_left", "lane_right"):
+        return f"change_lane_to_{action[5:]}"
+    if action == "lane_change":
+        if direction:
+            return f"change_lane_to_{direction}"
+        return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
+    if action == "cut_in":
+        if e.is_ego:
+            return f"change_lane_to_{direction}" if direction else "go_straight"
+        if side_now is None:
+            return "block_the_ego" if position == "front" and e.type != "pedestrian" else "go_straight"
+        return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
+    if action == "block":
+        return "block_the_ego"
+    if action == "stop":
+        return "stop"
+    if action == "cross":
+        return "cross_the_road" if e.type in V.VULNERABLE_TYPES else "go_straight"
+    if action == "walk":
+        if e.type != "pedestrian":
+            return "go_straight"
+        return "cross_the_road" if "crosswalk" in e.features else "on_the_sidewalk"
+    return "go_straight"
 
 
 class _Namer:
@@ -282,247 +1083,181 @@ def _stage_name(k: int, total: int) -> str:
 
 def _name(prompt: str) -> str:
     words = re.findall(r"[A-Za-z0-9][A-Za-z0-9'-]*", prompt)
-    return (" ".join(words[:10]) or "scene").lower()
+    return (" ".join(words[:10]) or "scene").lower().replace('"', "")
 
 
-def _segments(text: _Text) -> list[tuple[int, int]]:
-    breaks = [i for i, n, _ in text.find(STAGE_BREAKS)] + [len(text.tokens)]
-    out, start = [], 0
-    for b in breaks:
-        if b > start:
-            out.append((start, b))
-        start = b + 1
-    return out or [(0, len(text.tokens))]
+def lower(prompt: str, seed: int = 0) -> Lowered:
+    """Lower an English prompt into a Scenario; LoweringError when nothing in it can be read as a scene."""
+    tokens = tokenize(prompt)
+    if not tokens:
+        raise LoweringError("the prompt is empty")
+    r = _Reader(tokens, _units(tokens))
+    road = _road(r)
+    weather = _weather(r)
+    asked = _asked_kind(tokens)
+    skip: set[int] = set()
+    if asked is not None:
+        skip = set(asked[1])
+        r.used.update(skip)
+    clauses = _clauses(r, skip)
+    previous: list[Entity] = []
+    recent: list[Entity] = []
+    for clause in clauses:
+        if clause.link in RELATIVES and recent:
+            clause.antecedent = recent[-1]
+        subject = _read_clause(r, clause, previous, recent)
+        if subject:
+            previous = subject
+    others = [e for e in r.entities if not e.is_ego and e.count > 0]
+    kind = asked[0] if asked is not None and not others else None
+    if asked is not None and others:
+        r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
+                       "no template used")
+    junction_words = road.junction is True
+    turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities)
+    junction_features = any(f in e.features for e in r.entities for f in ("road_left", "road_right",
+                                                                           "destination", "cross_road"))
+    junction = road.junction is not False and (junction_words or turns or junction_features or
+                                               any("road_straight" in e.features for e in r.entities) and turns)
+    has_crosswalk = any(w in V.CROSSWALK_OBJECTS for w in road.required_objects)
+    stages, oncoming = _compose(r, junction, has_crosswalk)
+    ego = stages[0][0]
+    if kind is not None:
+        template = _template(kind, seed)
+        road = _merge_road(template.road, road)
+        if not any(a.action != "go_straight" for a in [ego]):
+            ego = template.ego if ego.behavior == V.DEFAULT_BEHAVIOR else ego
+        stages[0] = [ego] + [a for a in template.stages[0].agents if not a.is_ego] + stages[0][1:]
+        r.notes.append(f"the scene kind '{kind}' was asked for: its agents come from templates/kinds/{kind}.tsg")
+    stage_models = tuple(Stage(name=_stage_name(k, len(stages)), agents=tuple(agents))
+                         for k, agents in enumerate(stages) if agents)
+    draft = Scenario.model_construct(name=_name(prompt), seed=None, weather=weather, road=road,
+                                     stages=stage_models, comments={})
+    inferred = infer_plan(draft, frozenset(oncoming))
+    notes = r.notes + inferred.notes
+    candidate = inferred.scenario
+    problems = find_problems(candidate)
+    if problems:
+        raise LoweringError("the prompt lowers to an invalid scene: " + "; ".join(p.message for p in problems))
+    comments = {"scenario": Comment(leading=tuple(notes))} if notes else {}
+    scenario = Scenario.model_validate(candidate.model_dump() | {"comments": comments})
+    unknown = _unknown(r)
+    said_nothing = (kind is None and not r.entities and scenario.road == RoadSpec() and scenario.weather is None)
+    if said_nothing:
+        raise LoweringError("nothing in the prompt could be read as a scene"
+                            + (f"; unknown words: {', '.join(unknown)}" if unknown else "")
+                            + ". Name agents (car, pedestrian, bus...), what they do (turns left, crosses, stops...) "
+                              "and where (in front, from the opposite direction...), or write the scene in the "
+                              "scenario language (.tsg)")
+    return Lowered(scenario, unknown, kind, notes)
 
 
-def _road(text: _Text) -> RoadSpec:
-    fields: dict = {"required_signals": [], "without_signals": [], "required_objects": [], "without_objects": []}
-    tokens = text.tokens
-    negated = False
-    features = {i: (n, meaning) for i, n, meaning in text.find(FEATURES)}
-    i = 0
-    while i < len(tokens):
-        if tokens[i] in NEGATIONS:
-            negated = True
-            text.used.add(i)
-        elif i in features:
-            n, meaning = features[i]
-            word = meaning.lstrip("!")
-            group = "signals" if word in V.SIGNALS else "objects"
-            forbidden = negated != meaning.startswith("!")
-            target = fields[f"{'without' if forbidden else 'required'}_{group}"]
-            if word not in target:
-                target.append(word)
-            i += n
+def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list[Agent]], set[str]]:
+    names = _Namer()
+    ego_entity = next((e for e in r.entities if e.is_ego), None)
+    stage_count = 1 + max([e.stage for e in r.entities] + [a[0] for e in r.entities for a in e.actions] + [0])
+    stages: list[list[Agent]] = [[] for _ in range(stage_count)]
+    ego_action, _ = _action(ego_entity, 0) if ego_entity else (None, None)
+    if ego_entity is not None and ego_action is None:
+        first = min((a[0] for a in ego_entity.actions if a[1] == 2), default=None)
+        ego_action = _action(ego_entity, first)[0] if first is not None and first == ego_entity.stage else None
+    ego_type = ego_entity.type if ego_entity else "car"
+    ego = Agent(name="ego", type=ego_type if ego_type in V.EGO_TYPES else "car", is_ego=True,
+                action=_ego_action(ego_entity, ego_action, 0),
+                behavior=(ego_entity.behavior if ego_entity and ego_entity.behavior else V.DEFAULT_BEHAVIOR),
+                speed=ego_entity.speed if ego_entity else None)
+    stages[0].append(ego)
+    if ego_entity is not None:
+        for k in range(1, stage_count):
+            if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
+                action = _ego_action(ego_entity, _action(ego_entity, k)[0], k)
+                if language_allows_later_ego():
+                    stages[k].append(Agent(name="ego", type=ego.type, is_ego=True, action=action))
+                else:
+                    r.notes.append(f"left out: the ego's later action ({action}): the language cannot yet say "
+                                   "that the ego acts in a later stage")
+    positions: dict[int, str] = {}
+    oncoming: set[str] = set()
+    resolved: dict[int, tuple[str, str]] = {}
+    others = [e for e in r.entities if not e.is_ego and e.count > 0]
+    for e in others:
+        action, direction = _intro_action(e)
+        position, is_oncoming = _position(e, action, junction, has_crosswalk)
+        resolved[e.key] = (action, direction)
+        positions[e.key] = position
+        if is_oncoming:
+            oncoming.add(e.key)
+    for e in others:  # "in front of a truck": at the truck's place, unless the text placed it itself
+        t = e.relative_to
+        if t is None or t.key not in positions:
             continue
-        elif tokens[i] not in ("and", "or", "a", "an", "any", "nor", "sign", "signs"):
-            negated = False
-        i += 1
-    for limit in _speed_limits(text):
-        word = f"speed_{limit}"
-        if V.is_object(word) and word not in fields["required_objects"]:
-            fields["required_objects"].append(word)
-    lanes = _lanes(text)
-    if lanes is not None:
-        fields["lanes"] = lanes
-    junction = _junction(text)
-    if junction is not None:
-        fields["junction"] = junction
-    return RoadSpec(**{k: tuple(v) if isinstance(v, list) else v for k, v in fields.items()})
+        if not _placed(e):
+            positions[e.key] = positions[t.key]
+        elif not _placed(t):  # ... and the truck, placed nowhere itself, is where the text put the other
+            positions[t.key] = positions[e.key]
+    oncoming_names: set[str] = set()
+    for e in others:
+        action, direction = resolved[e.key]
+        position = positions[e.key]
+        final = _final_action(e, action, direction, position)
+        road_type = e.road_type or V.default_road_type(e.type)
+        if road_type not in V.ROAD_TYPES_BY_TYPE[e.type]:
+            road_type = V.default_road_type(e.type)
+        if final == "on_the_sidewalk":
+            road_type = "sidewalk"
+        behavior = e.behavior or V.DEFAULT_BEHAVIOR
+        first_name = None
+        for n in range(e.count):
+            name = names(e.type)
+            stages[e.stage].append(Agent(name=name, type=e.type, action=final, behavior=behavior,
+                                         relative_to_ego=position, road_type=road_type, behind=first_name and
+                                         previous_name, trigger=e.trigger, speed=e.speed,
+                                         gap_m=e.gap_m if n == 0 else None))
+            first_name = first_name or name
+            previous_name = name
+            if e.key in oncoming:
+                oncoming_names.add(name)
+    return [s for k, s in enumerate(stages) if s or k == 0], oncoming_names
 
 
-def _speed_limits(text: _Text):
-    tokens, out = text.tokens, []
-    for i, t in enumerate(tokens):
-        if not t.isdigit():
-            continue
-        window = tokens[i + 1: i + 5]
-        before = tokens[max(0, i - 3): i]
-        if ("limit" in before or "speed" in before or ("kmh" in window[:1] and {"limit", "sign", "zone"} & set(window))
-                or (window[:1] == ["zone"])):
-            text.used.update(j for j in range(max(0, i - 3), min(len(tokens), i + 5))
-                             if tokens[j] in ("speed", "limit", "sign", "kmh", "zone", "of") or j == i)
-            out.append(int(float(t)))
-    return out
+def _placed(e: Entity) -> bool:
+    return bool(e.features & {"side_left", "side_right", "front_left", "front_right", "back_left", "back_right",
+                              "road_straight", "road_left", "road_right", "destination", "crosswalk"})
 
 
-def _lanes(text: _Text) -> int | None:
-    tokens = text.tokens
-    for i, t in enumerate(tokens):
-        if t in ("lane", "lanes") and i > 0:
-            n = NUMBER_WORDS.get(tokens[i - 1]) or (int(tokens[i - 1]) if tokens[i - 1].isdigit() else None)
-            if n is not None and 1 <= n <= 6:
-                text.used.update((i - 1, i))
-                return n
-        if t in ("highway", "motorway", "freeway", "expressway"):
-            text.used.add(i)
-            return 2
-    return None
+def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
+    if e is None or action is None:
+        return "go_straight"
+    direction = next((a[5] for a in sorted(e.actions, key=lambda a: -a[1]) if a[0] == stage and a[4] == action),
+                     None)
+    if action in ("turn_left", "turn_right", "stop"):
+        return action
+    if action in ("turn", "u_turn"):
+        return f"turn_{direction or 'left'}"
+    if action in ("lane_left", "lane_right"):
+        return f"change_lane_to_{action[5:]}"
+    if action in ("lane_change", "cut_in"):
+        return f"change_lane_to_{direction or 'left'}"
+    return "go_straight"
 
 
-def _junction(text: _Text) -> bool | None:
-    tokens = text.tokens
-    straight = [i for i, t in enumerate(tokens[:-1]) if t == "straight" and tokens[i + 1] in ("road", "street")]
-    text.used.update(j for i in straight for j in (i, i + 1))
-    for i, _, _ in text.find(JUNCTION):
-        if any(t in NEGATIONS for t in tokens[max(0, i - 2): i]):
-            return False
-        return True
-    for i, t in enumerate(tokens):
-        if t in ("highway", "motorway", "freeway", "expressway"):
-            return False
-        if i in straight:
-            return False
-    return None
-
-
-def _weather(text: _Text) -> Weather | None:
-    conditions = [c for _, _, c in text.find(CONDITIONS)]
-    times = [t for _, _, t in text.find(TIMES)]
-    if not conditions and not times:
-        return None
-    return Weather(condition=conditions[0] if conditions else V.DEFAULT_CONDITION,
-                   time=times[0] if times else V.DEFAULT_TIME)
-
-
-def _mentions(text: _Text, start: int, stop: int, skip: set[int]) -> list[_Mention]:
-    tokens = text.tokens
+def _unknown(r: _Reader) -> list[str]:
+    lex = lexicon()
     out = []
-    egos = text.find(EGO_WORDS, start, stop)
-    ego_spans = set(skip)
-    for i, n, _ in egos:
-        span_end = i + n
-        ego_type = "car"
-        if span_end < stop and tokens[span_end] in EGO_NOUNS:
-            ego_type = EGO_NOUNS[tokens[span_end]]
-            span_end += 1
-            text.used.add(span_end - 1)
-        ego_spans.update(range(i, span_end))
-        referenced = i > 0 and tokens[i - 1] in ("the",) and i > 1 and tokens[i - 2] in (
-            "of", "behind", "block", "blocks", "blocking", "towards", "toward", "beside", "than", "before", "past",
-            "overtake", "overtakes", "to", "for")
-        out.append(_Mention(i, span_end, ego_type, 1, True) if not referenced else None)
-    out = [m for m in out if m is not None]
-    for i, n, agent_type in _find_skipping(text, AGENT_WORDS, start, stop, ego_spans):
-        adjectives = i  # up to two qualifying words before the noun: "an aggressive car", "oncoming traffic"
-        while adjectives > start and i - adjectives < 2 and tokens[adjectives - 1] not in STOPWORDS and \
-                tokens[adjectives - 1] not in COUNTS and not tokens[adjectives - 1].isdigit() and \
-                adjectives - 1 not in skip:
-            adjectives -= 1
-        j = adjectives - 1
-        while j >= start and tokens[j] in ("of", "the"):
-            j -= 1
-        count = 1
-        counted = j >= start and (tokens[j] in COUNTS or tokens[j].isdigit())
-        if counted:
-            count = COUNTS.get(tokens[j]) or int(float(tokens[j]))
-            if j > start and tokens[j - 1] == "than":  # more than ten
-                count += 1
-                text.used.update(k for k in (j - 2, j - 1) if k >= start and tokens[k] in ("more", "than"))
-            text.used.add(j)
-        if tokens[i + n - 1].endswith("s") and not counted and tokens[i + n - 1] not in ("bus", "police"):
-            count = 2  # a bare plural: some
-        if tokens[i + n: i + n + 3] == ["including", "the", "ego"]:
-            count -= 1
-            text.used.update(range(i + n, i + n + 3))
-        out.append(_Mention(i, i + n, agent_type, max(0, min(count, MAX_AGENTS_PER_MENTION)), False,
-                            adjectives=adjectives))
-    return sorted(out, key=lambda m: m.start)
-
-
-def _find_skipping(text: _Text, table, start: int, stop: int, skip: set[int]):
-    return [(i, n, m) for i, n, m in text.find(table, start, stop) if i not in skip]
-
-
-def _first(text: _Text, table, a: int, b: int):
-    found = text.find(table, a, b)
-    return found[0][2] if found else None
-
-
-def _ego(text: _Text, m: _Mention, clause: tuple[int, int]) -> Agent:
-    a, b = clause
-    action = _first(text, ACTIONS, a, b)
-    if action in (None, "cut_in", "cross_the_road", "on_the_sidewalk", "block_the_ego"):
-        action = "go_straight"
-    behavior = _first(text, BEHAVIORS, a, b) or V.DEFAULT_BEHAVIOR
-    return Agent(name="ego", type=m.type if m.type in V.EGO_TYPES else "car", is_ego=True, action=action,
-                 behavior=behavior)
-
-
-def _agents(text: _Text, m: _Mention, clause: tuple[int, int], names: _Namer, junction_context: bool,
-            road: RoadSpec) -> list[Agent]:
-    a, b = clause
-    tokens = text.tokens
-    action = _first(text, ACTIONS, a, b)
-    position = _first(text, POSITIONS, m.adjectives, m.start) or _first(text, POSITIONS, a, b)
-    road_type = _first(text, ROAD_TYPES, a, b)
-    behavior = _first(text, BEHAVIORS, m.adjectives, m.start) or _first(text, BEHAVIORS, a, b) or \
-        V.DEFAULT_BEHAVIOR
-    if m.type == "pedestrian" and action in (None, "go_straight"):
-        action = "on_the_sidewalk" if road_type == "sidewalk" or "sidewalk" in tokens[a:b] else "cross_the_road"
-    if action is None:
-        action = "go_straight"
-    if action in ("on_the_sidewalk", "cross_the_road") and m.type != "pedestrian":
-        action = "go_straight" if m.type != "cyclist" or action == "on_the_sidewalk" else action
-    if position in ("from_left", "from_right"):
-        side = position[5:]
-        position = f"road_of_{side}_turn" if junction_context else side
-    if action == "cut_in":
-        position = position if position in ("left", "right", "front_left", "front_right") else "front_left"
-        action = "change_lane_to_right" if "left" in position else "change_lane_to_left"
-    if action == "cross_the_road" and m.type == "pedestrian" and (
-            "crosswalk" in road.required_objects or position is None) and position not in ("left", "right"):
-        if "crosswalk" in road.required_objects or any(t in ("crosswalk", "crossing") for t in tokens):
-            position = "near_the_crosswalk"
-    if position is None:
-        position = "front_right" if m.type == "pedestrian" else "front"
-    if tuple(tokens[max(a, b - 4):b]) in (("in", "front", "of", "a"), ("in", "front", "of", "the")) or \
-            tuple(tokens[max(a, b - 2):b]) in (("behind", "a"), ("behind", "the"), ("beside", "a"), ("beside", "the")):
-        position = "same_as_next"  # "crosses in front of a truck": where that truck is
-    if road_type is None:
-        road_type = V.default_road_type(m.type)
-    if road_type not in V.ROAD_TYPES_BY_TYPE[m.type]:
-        road_type = V.default_road_type(m.type)
-    trigger = _trigger(text, a, b)
-    speed = _speed(text, a, b)
-    out: list[Agent] = []
-    for _ in range(m.count):
-        out.append(Agent(name=names(m.type), type=m.type, action=action, behavior=behavior,
-                         relative_to_ego=position, road_type=road_type,
-                         behind=out[-1].name if out else None, trigger=trigger, speed=speed))
-    return out
-
-
-def _trigger(text: _Text, a: int, b: int) -> Trigger | None:
-    tokens, within, after = text.tokens, None, None
-    for i in range(a, b):
-        if tokens[i] == "within" and i + 1 < b and tokens[i + 1].isdigit():
-            within = float(tokens[i + 1])
-            text.used.update((i, i + 1))
-        if tokens[i] == "after" and i + 1 < b and tokens[i + 1].isdigit():
-            after = float(tokens[i + 1])
-            text.used.update((i, i + 1))
-    return Trigger(after_s=after, within_m=within) if within or after else None
-
-
-def _speed(text: _Text, a: int, b: int) -> Speed | None:
-    tokens = text.tokens
-    for i in range(a, b - 1):
-        if tokens[i].isdigit() and tokens[i + 1] in ("kmh", "mph"):
-            text.used.update((i, i + 1))
-            return Speed(value=float(tokens[i]), unit="km/h" if tokens[i + 1] == "kmh" else "mph")
-    return None
-
-
-def _ego_default_for_obstacles(ego: Agent, first_stage: list[Agent]) -> Agent:
-    """The ego cannot drive through a car that stops in its lane ahead: then it stops behind it."""
-    stopper = next((a for a in first_stage if a.relative_to_ego == "front" and a.action == "stop"), None)
-    if stopper is not None and ego.action == "go_straight":
-        return ego.model_copy(update={"action": "stop", "trigger": Trigger(within_m=15.0, of=stopper.name)})
-    return ego
+    for t in r.tokens:
+        if t.index in r.used or t.word == "," or read_number(t.word) is not None:
+            continue
+        if t.word in lex.function_words or t.base in lex.vocabulary or t.word in lex.vocabulary:
+            continue
+        near = lex.nearest(t.word)
+        out.append(f"{t.word} (did you mean {near}?)" if near else t.word)
+    return list(dict.fromkeys(out))
 
 
 def _template(kind: str, seed: int) -> Scenario:
+    from ttsgc.language import parse
+    from ttsgc.resources import resource_dir
+
     folder = resource_dir("templates") / "kinds"
     variants = sorted(folder.glob(f"{kind}.tsg")) + sorted(folder.glob(f"{kind}.*.tsg"))
     if not variants:
@@ -538,4 +1273,4 @@ def _merge_road(template: RoadSpec, said: RoadSpec) -> RoadSpec:
     for key, value in said.model_dump().items():
         if value != getattr(default, key):
             merged[key] = value
-    return RoadSpec(**merged)
+    return RoadSpec.model_construct(**merged)

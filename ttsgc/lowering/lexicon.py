@@ -1,0 +1,189 @@
+"""The offline lowering's words, read from data files (ttsgc/lowering/lexicon/*.txt), and the tokenizer.
+
+Why data: the words engineers use grow faster than rules, and a word added to a file is a word the parser
+knows, with no code change. The reader turns text into tokens carrying their base form ("turning" ->
+"turn", "lorries" -> "lorry", "signalised" -> "signalized"), and finds the longest lexicon phrase at each
+place. Numbers are read through a bounded reader: a count of any length is a number or "too large", never an
+overflow.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+FOLDER = Path(__file__).resolve().parent / "lexicon"
+CATEGORIES = ("agents", "actions", "positions", "road", "weather", "behaviours", "numbers", "sequence")
+MAX_DIGITS = 6  # a number with more digits than this is read as "too large"
+TOO_LARGE = 10 ** MAX_DIGITS
+
+
+@dataclass(frozen=True)
+class Token:
+    word: str  # as written, lower case, British spelling made American
+    base: str  # the base form the lexicon knows, else the word
+    index: int  # position in the whole text
+    sentence: int
+    plural: bool = False  # a noun in its plural form ("cars", "children")
+    possessive: bool = False  # followed by 's ("the ego's lane")
+
+    @property
+    def number(self) -> float | None:
+        return read_number(self.word)
+
+
+@dataclass(frozen=True)
+class Match:
+    start: int  # token indexes [start, end)
+    end: int
+    category: str
+    meaning: str
+    phrase: str
+
+
+def read_number(text: str) -> float | None:
+    """A decimal as written, bounded: more than MAX_DIGITS integer digits reads as TOO_LARGE."""
+    if not re.fullmatch(r"\d+(?:\.\d+)?", text):
+        return None
+    whole = text.split(".")[0].lstrip("0")
+    if len(whole) > MAX_DIGITS:
+        return float(TOO_LARGE)
+    return float(text[: MAX_DIGITS + 4])
+
+
+def _entries(name: str):
+    for line in (FOLDER / f"{name}.txt").read_text(encoding="utf-8").splitlines():
+        line = line.split("#", 1)[0].strip()
+        if not line or ":" not in line:
+            continue
+        meaning, phrases = line.rsplit(":", 1)
+        for phrase in phrases.split(","):
+            words = tuple(_normalize(phrase).split())
+            if words:
+                yield meaning.strip(), words
+
+
+def _normalize(text: str) -> str:
+    return re.sub(r"[-_/]", " ", text.lower()).strip()
+
+
+@dataclass(frozen=True)
+class Lexicon:
+    phrases: dict  # words tuple -> (category, meaning)
+    longest: int
+    vocabulary: frozenset  # every word of every phrase, and the function words
+    content_words: tuple  # the words an unknown word is compared with
+    irregular: dict  # inflected -> base
+    spelling: dict  # british -> american
+    function_words: frozenset
+    kinds: dict  # words tuple -> scene kind (read only where a scene is asked for)
+
+    def base(self, word: str) -> tuple[str, bool]:
+        """The base form of a word the lexicon knows, and whether it was a plural or an inflected form."""
+        if word in self.irregular:
+            return self.irregular[word], True
+        if word in self.function_words:
+            return word, False
+        for suffix, replacement in (("ies", "y"), ("ied", "y"), ("es", ""), ("s", ""), ("ed", ""), ("ed", "e"),
+                                    ("d", ""), ("ing", ""), ("ing", "e"), ("'s", "")):
+            if word.endswith(suffix) and len(word) > len(suffix) + 1:
+                stem = word[: -len(suffix)] + replacement
+                if stem in self.vocabulary:
+                    return stem, True
+                if suffix in ("ed", "ing") and len(stem) > 2 and stem[-1] == stem[-2]:  # stopped, running
+                    if stem[:-1] in self.vocabulary:
+                        return stem[:-1], True
+        return word, False  # a base form itself, or a word the lexicon does not know
+
+    def nearest(self, word: str) -> str | None:
+        found = difflib.get_close_matches(word, self.content_words, n=1, cutoff=0.75)
+        return found[0] if found else None
+
+
+@lru_cache(maxsize=1)
+def lexicon() -> Lexicon:
+    phrases: dict = {}
+    for category in CATEGORIES:
+        for meaning, words in _entries(category):
+            phrases.setdefault(words, (category, meaning))  # the first file that names a phrase owns it
+    irregular, spelling = {}, {}
+    for base, words in _entries("inflections"):
+        for word in " ".join(words).split():
+            irregular[word] = base
+    for line in (FOLDER / "spelling.txt").read_text(encoding="utf-8").splitlines():
+        line = line.split("#", 1)[0].strip()
+        if ":" in line:
+            british, american = (x.strip() for x in line.split(":", 1))
+            spelling[british] = american
+    function = frozenset((FOLDER / "function.txt").read_text(encoding="utf-8").split("\n", 1)[1].split())
+    words = {w for phrase in phrases for w in phrase}
+    content = tuple(sorted(w for w in words if len(w) > 3 and w not in function))
+    kinds = {words: meaning for meaning, words in _entries("kinds")}
+    return Lexicon(phrases, max(len(p) for p in phrases), frozenset(words | function | set(irregular.values())),
+                   content, irregular, spelling, function, kinds)
+
+
+TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+(?:'s)?|[,.;:!?()]")
+SENTENCE_ENDS = {".", ";", "!", "?", ":"}
+
+
+def tokenize(text: str) -> list[Token]:
+    """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
+    the sentence number advances at . ; ! ? : and blank lines."""
+    lex = lexicon()
+    text = text.lower().replace("\u2019", "'").replace("`", "'")
+    text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
+    text = re.sub(r"(\d)(kmh|mph|m|s|km|metres|meters|seconds)\b", r"\1 \2", text)
+    text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
+    text = re.sub(r"\n\s*\n", " . ", text)
+    text = re.sub(r"s' ", "s 's ", text)
+    tokens: list[Token] = []
+    sentence = 0
+    for word in TOKEN.findall(text):
+        if word in SENTENCE_ENDS:
+            if tokens and tokens[-1].sentence == sentence:
+                sentence += 1
+            continue
+        if word in "()":
+            word = ","
+        possessive = False
+        if word.endswith("'s"):
+            word, possessive = word[:-2], True
+            if not word:
+                continue
+        for part in lex.spelling.get(word, word).split():
+            base, inflected = lex.base(part)
+            plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
+                and part not in ("is", "was", "has", "does", "goes", "bus")
+            tokens.append(Token(part, base, len(tokens), sentence, plural, possessive))
+    return tokens
+
+
+def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> list[Match]:
+    """The longest lexicon phrase at each place, left to right; tokens no phrase covers are left out."""
+    lex = lexicon()
+    stop = len(tokens) if stop is None else stop
+    out, i = [], start
+    while i < stop:
+        found = None
+        if tokens[i].word != ",":
+            for n in range(min(lex.longest, stop - i), 0, -1):
+                span = tokens[i:i + n]
+                if any(t.word == "," for t in span):
+                    continue
+                for key in (tuple(t.word for t in span), tuple(t.base for t in span)):
+                    entry = lex.phrases.get(key)
+                    if entry is not None:
+                        found = Match(i, i + n, entry[0], entry[1], " ".join(t.word for t in span))
+                        break
+                if found:
+                    break
+        if found:
+            out.append(found)
+            i = found.end
+        else:
+            i += 1
+    return out
