@@ -29,6 +29,8 @@ class Token:
     sentence: int
     plural: bool = False  # a noun in its plural form ("cars", "children")
     possessive: bool = False  # followed by 's ("the ego's lane")
+    label: str = ""  # a name the text gives an agent ("SV1", "POV2")
+    question: bool = False  # in a sentence that asks ("What happens if a truck runs a red light?")
 
     @property
     def number(self) -> float | None:
@@ -109,6 +111,9 @@ def lexicon() -> Lexicon:
     for category in CATEGORIES:
         for meaning, words in _entries(category):
             phrases.setdefault(words, (category, meaning))  # the first file that names a phrase owns it
+    for words, entry in list(phrases.items()):  # terse writing drops articles: "change to left lane"
+        if "the" in words[1:] and len(words) > 2:
+            phrases.setdefault(tuple(w for w in words if w != "the"), entry)
     irregular, spelling = {}, {}
     for base, words in _entries("inflections"):
         for word in " ".join(words).split():
@@ -126,7 +131,7 @@ def lexicon() -> Lexicon:
                    content, irregular, spelling, function, kinds)
 
 
-TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+(?:'s)?|[,.;:!?()]")
+TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#\d|[a-z]+(?:'s)?|[,.;:!?()]")
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 
 
@@ -140,9 +145,26 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
     text = re.sub(r"\n\s*\n", " . ", text)
     text = re.sub(r"s' ", "s 's ", text)
+    text = re.sub(r"\b(left|right) hand\b", r"\1", text)  # "the right-hand lane"
+    text = re.sub(r"\b(that|this|its|our|their) (left|right) lane", r"the \2 lane", text)
+    text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
+    text = re.sub(r"\b([a-z]{2,3})(\d)\b", r"\1#\2", text)  # SV1, POV2: a label, not a count
     tokens: list[Token] = []
     sentence = 0
-    for word in TOKEN.findall(text):
+    raw = TOKEN.findall(text)
+    asks, current = set(), 0
+    for word in raw:  # which sentences are questions
+        if word in SENTENCE_ENDS:
+            if word == "?":
+                asks.add(current)
+            current += 1
+    sentence_of_raw, current = [], 0
+    for word in raw:
+        sentence_of_raw.append(current)
+        if word in SENTENCE_ENDS:
+            current += 1
+    for position, word in enumerate(raw):
+        question = sentence_of_raw[position] in asks
         if word in SENTENCE_ENDS:
             if tokens and tokens[-1].sentence == sentence:
                 sentence += 1
@@ -154,11 +176,14 @@ def tokenize(text: str) -> list[Token]:
             word, possessive = word[:-2], True
             if not word:
                 continue
+        label = ""
+        if "#" in word:
+            word, label = word.split("#")[0], word.replace("#", "")
         for part in lex.spelling.get(word, word).split():
             base, inflected = lex.base(part)
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
                 and part not in ("is", "was", "has", "does", "goes", "bus")
-            tokens.append(Token(part, base, len(tokens), sentence, plural, possessive))
+            tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question))
     return tokens
 
 
@@ -174,12 +199,9 @@ def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> lis
                 span = tokens[i:i + n]
                 if any(t.word == "," for t in span):
                     continue
-                for key in (tuple(t.word for t in span), tuple(t.base for t in span)):
-                    entry = lex.phrases.get(key)
-                    if entry is not None:
-                        found = Match(i, i + n, entry[0], entry[1], " ".join(t.word for t in span))
-                        break
-                if found:
+                entry = _lookup(lex, span)
+                if entry is not None:
+                    found = Match(i, i + n, entry[0], entry[1], " ".join(t.word for t in span))
                     break
         if found:
             out.append(found)
@@ -187,3 +209,17 @@ def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> lis
         else:
             i += 1
     return out
+
+
+def _lookup(lex: Lexicon, span: list[Token]):
+    """The entry of a phrase written with each word as written or in its base form ("dashed white lines")."""
+    keys = [()]
+    for t in span:
+        keys = [k + (w,) for k in keys for w in dict.fromkeys((t.word, t.base))]
+        if len(keys) > 16:
+            keys = keys[:16]
+    for key in keys:
+        entry = lex.phrases.get(key)
+        if entry is not None:
+            return entry
+    return None

@@ -51,12 +51,16 @@ CLAUSE_WORDS = {"while", "whilst", "as", "when", "whereas", "but", "although", "
 RELATIVES = {"which", "who", "that", "whose", "whom"}
 # Relational verbs: (subject's place relative to the object) when one of them is the ego.
 FOLLOWING = {"follow", "tailgate", "trail", "chase"}
+HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
 OVERTAKING = {"overtake", "pass"}
 ACTION_RANK = {"block": 8, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 6,
                "turn_right": 6, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
                "move": 1}
 SIDES = ("left", "right")
+INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
+           "level": "level"}
+STEERING = {"move", "steer", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
 RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump"}
 
 
@@ -106,6 +110,8 @@ class Entity:
     speed: Speed | None = None
     gap_m: float | None = None
     parent: "Entity | None" = None  # the counted group it was taken from
+    label: str = ""  # the name the text gives it ("SV1")
+    includes_ego: bool = False  # "three cars including the ego": the ego shares what the group does
 
 
 @dataclass
@@ -180,14 +186,25 @@ def _road(r: _Reader) -> RoadSpec:
             target.append(word)
 
     for k, u in enumerate(units):
-        if u.category == "word" and u.word in NEGATIONS or (u.category == "word" and u.word.endswith("n't")):
+        if u.category == "word" and u.word in NEGATIONS or (u.category == "word" and u.word.endswith("n't")) \
+                or (u.category == "numbers" and u.meaning == "0"):
             negated = True
             r.mark(u)
             continue
+        if u.category == "actions" and u.base in ("yield", "give way") and (
+                k == 0 or units[k - 1].category in ("comma", "word") and units[k - 1].word in (",", "a", "at", "with")
+                or (k + 1 < len(units) and units[k + 1].word in ("sign", "signs", "junction", "line", "markings"))):
+            put("yield", negated)  # "a give way junction", "roundabout entry, give way": the sign
+            r.mark(u)
+            continue
+        if u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
+            put("traffic_light", False)  # "runs a red light"
         if u.category == "road":
             r.mark(u)
             meaning = u.meaning
-            if meaning == "junction":
+            if meaning == "none":
+                pass
+            elif meaning == "junction":
                 denied = _denied(units, k)
                 if junction is None or denied:
                     junction = not denied
@@ -242,31 +259,39 @@ def _denied(units: list[Unit], k: int) -> bool:
     return False
 
 
-LIMIT_WORDS = {"limit", "zone", "sign", "limited", "posted", "restricted", "maximum", "max"}
+LIMIT_WORDS = {"limit", "zone", "sign", "limited", "posted", "restricted", "maximum", "max", "limits"}
 
 
 def _speed_limits(r: _Reader) -> list[str]:
+    """'a 30 km/h speed limit', 'a speed limit of ninety', 'a limit of forty', 'twenty miles per hour'."""
     tokens, out = r.tokens, []
     for i, t in enumerate(tokens):
-        value = read_number(t.word)
-        if value is None:
+        value = _word_number(t)
+        if value is None or (i + 1 < len(tokens) and _word_number(tokens[i + 1]) is not None
+                             and read_number(t.word) is None):
+            continue  # the tens of "thirty five": read at the units
+        value, first = _number_before(tokens, i)
+        around = {x.word for x in tokens[max(0, first - 4): i + 5]}
+        if not around & LIMIT_WORDS or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
+                                                                                 "seconds", "s", "cars"}:
             continue
-        around = {x.word for x in tokens[max(0, i - 4): i + 5]}
-        if not around & LIMIT_WORDS or "lane" in {x.word for x in tokens[i + 1: i + 2]}:
-            continue
-        unit = tokens[i + 1].word if i + 1 < len(tokens) else ""
-        kmh = value * 1.609344 if unit == "mph" else value
-        r.used.update(j for j in range(max(0, i - 4), min(len(tokens), i + 5))
-                      if tokens[j].word in LIMIT_WORDS | {"speed", "kmh", "mph", "of", "km"} or j == i)
+        rest = [x.word for x in tokens[i + 1: i + 4]]
+        mph = rest[:1] == ["mph"] or rest[:3] == ["miles", "per", "hour"] or rest[:2] == ["miles", "an"]
+        unit = "mph" if mph else "km/h"
+        kmh = value * 1.609344 if mph else value
+        r.used.update(j for j in range(max(0, first - 4), min(len(tokens), i + 5))
+                      if tokens[j].word in LIMIT_WORDS | {"speed", "kmh", "mph", "of", "km", "miles", "kilometers",
+                                                          "per", "hour", "an"} or first <= j <= i)
         limit = round(kmh)
         low, high = V.SPEED_SIGN_LIMITS
         if not low <= limit <= high:
-            shown = "a number too large to read" if value >= TOO_LARGE else f"{t.word} {unit}".strip()
+            shown = "a number too large to read" if value >= TOO_LARGE else f"{value:g} {unit}"
             r.notes.append(f"left out: a speed limit of {shown} is outside {low}..{high} km/h")
             continue
-        if unit == "mph":
-            r.notes.append(f"inferred: {t.word} mph is speed_{limit} (km/h)")
-        out.append(f"speed_{limit}")
+        if mph:
+            r.notes.append(f"inferred: {value:g} mph is speed_{limit} (km/h)")
+        if f"speed_{limit}" not in out:
+            out.append(f"speed_{limit}")
     return out
 
 
@@ -274,33 +299,65 @@ LANE_ROADS = {"road", "roads", "street", "highway", "motorway", "freeway", "carr
               "boulevard", "expressway", "lane", "lanes", "way", "section", "stretch", "arterial", "dual"}
 
 
+PER_DIRECTION = {"per", "each", "every", "in", "a", "one"}
+
+
 def _lanes(r: _Reader, lanes: int | None) -> int | None:
+    """'a two-lane road', 'three lanes in each direction' (which wins over a total: 'a four-lane avenue, two
+    lanes each way'), 'multi-lane'."""
     tokens = r.tokens
-    numbers = lexicon()
+    found: list[tuple[bool, int]] = []
     for i, t in enumerate(tokens):
-        if t.base != "lane" or i == 0:
+        if t.word not in ("lane", "lanes") or i == 0:
             continue
         prev = tokens[i - 1]
-        n = read_number(prev.word)
+        n = _word_number(prev)
         if n is None:
-            entry = numbers.phrases.get((prev.word,))
-            if entry and entry[0] == "numbers":
-                n = float(entry[1])
-            elif prev.word in ("multi", "multiple", "several", "many"):
+            if prev.word in ("multi", "multiple", "several", "many"):
                 n = 2.0
             elif prev.word == "single":
                 n = 1.0
-        if n is None:
+        if n is None or n == 0:
             continue
         nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
         if not (t.word == "lanes" or nxt in LANE_ROADS or nxt in ("in", "per", "each", "on", ",", "")):
             continue
+        after = {x.word for x in tokens[i + 1: i + 4]}
+        per_direction = bool(after & {"direction", "way", "each", "per"}) and bool(after & PER_DIRECTION | after
+                                                                                  & {"direction", "way"})
         r.used.update((i - 1, i))
         if n >= TOO_LARGE:
             r.notes.append("repaired: a lane count too large to read; used lanes >= 6")
             n = 6
-        lanes = max(lanes or 0, int(n))
-    return lanes
+        found.append((per_direction, int(n)))
+    if not found:
+        return lanes
+    per = [n for p, n in found if p]
+    return max(per) if per else max([n for _, n in found] + [lanes or 0])
+
+
+def _word_number(t: Token) -> float | None:
+    """A number written in digits or as one number word ('three', 'forty')."""
+    value = read_number(t.word)
+    if value is not None:
+        return value
+    entry = lexicon().phrases.get((t.word,))
+    if entry and entry[0] == "numbers" and t.word not in ("some", "few", "crowd", "group", "multiple", "various",
+                                                          "bunch", "handful", "several", "couple", "pair"):
+        return float(entry[1])
+    return None
+
+
+def _number_before(tokens: list[Token], i: int) -> tuple[float | None, int]:
+    """The number ending at token i: '50', 'fifty', 'thirty five'; (value, first token)."""
+    value = _word_number(tokens[i]) if 0 <= i < len(tokens) else None
+    if value is None:
+        return None, i
+    if value < 10 and i > 0:
+        tens = _word_number(tokens[i - 1])
+        if tens is not None and tens >= 20 and tens % 10 == 0 and not read_number(tokens[i - 1].word):
+            return tens + value, i - 1
+    return value, i
 
 
 def _weather(r: _Reader) -> Weather | None:
@@ -413,7 +470,7 @@ class Clause:
 
 
 def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
-    units = [u for u in r.units if u.start not in skip]
+    units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u)]
     out: list[Clause] = []
     stage, current, condition, link = 0, [], False, ""
     sentence = units[0].tokens[0].sentence if units else 0
@@ -430,7 +487,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         sentence = u.tokens[0].sentence
         if new_sentence:
             close()
-        if u.category == "sequence" and not (nxt is not None and nxt.category == "number"):
+        if u.category == "sequence" and not (nxt is not None and nxt.category in ("number", "numbers")) and not (
+                u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")):
             r.mark(u)
             if out or current:
                 close()
@@ -444,7 +502,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             condition = True
             continue
         if u.category == "comma":
-            if _has_verb(current) or condition:
+            if _has_verb(current) or condition or (nxt is not None and nxt.category == "word" and nxt.word in
+                                                   ("and", "but", "while", "whilst", "so", "where", "which", "who")
+                                                   and _has_agent(current)):
                 close(",")
             continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
@@ -462,6 +522,23 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         current.append(u)
     close()
     return out
+
+
+def _has_agent(units: list[Unit]) -> bool:
+    return any(u.category == "agents" and u.meaning != "none" for u in units)
+
+
+QUESTION_WORDS = {"what", "how", "why", "where", "which", "who"}
+
+
+def _hypothetical(tokens: list[Token], u: Unit) -> bool:
+    """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
+    sentences after it describe the scene."""
+    t = u.tokens[0]
+    if not t.question:
+        return False
+    first = next(x for x in tokens if x.sentence == t.sentence)
+    return first.word in QUESTION_WORDS and any(x.sentence > t.sentence for x in tokens)
 
 
 def _has_verb(units: list[Unit]) -> bool:
@@ -508,7 +585,7 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
 
 ADJECTIVE_POSITIONS = {"oncoming", "opposing", "leading", "lead", "following", "trailing", "adjacent", "preceding",
                        "opposite", "front", "rear", "back"}
-DETERMINERS = DEFINITE | INDEFINITE | {"other", "both", "all", "each", "every", "more", "than", "over", "of", "second",
+DETERMINERS = DEFINITE | INDEFINITE | {"his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second",
                                        "third", "first", "same", "further", "additional", "extra", "its", "their"}
 
 
@@ -564,8 +641,15 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         elif kind != "car" and ego.type == "car":
             ego.type = kind
         return NounPhrase(ego, head, first)
-    if u.meaning == "none":
+    if u.meaning == "none" or count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
+    label = u.tokens[-1].label
+    if label:
+        named = next((e for e in r.entities if e.label == label), None)
+        if named is not None:
+            return NounPhrase(named, head, first)
+    if count is not None and count > 1 and not plural and words & {"some", "any"}:
+        count = 1  # "some car suddenly cuts in"
     definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
     if "more" in words and "than" in words and count is not None:
         count += 1
@@ -578,6 +662,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(found[0], head, first, plural=True, group=found)
     if count is None:
         count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
+    if count is not None and count > 1 and not plural and u.base in ("group", "crowd", "family"):
+        count = BARE_PLURAL_COUNT
     if count >= TOO_LARGE:
         r.notes.append(f"repaired: a count too large to read for {u.base}; used {MAX_AGENTS_PER_MENTION}")
         count = MAX_AGENTS_PER_MENTION
@@ -586,9 +672,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                        f"used {MAX_AGENTS_PER_MENTION}")
         count = MAX_AGENTS_PER_MENTION
     entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
-                    generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1))
+                    generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
     if _including_ego(units, head):
         entity.count = max(0, count - 1)
+        entity.includes_ego = True
     if entity.count > 1 or entity.generic:
         entity.group_open = entity.count
     if not _absorbed(r, entity):
@@ -599,9 +686,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
 
 
 def _including_ego(units: list[Unit], head: int) -> bool:
-    window = units[head + 1: head + 4]
-    return (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting")
-            and any(u.category == "agents" and u.meaning == "ego" for u in window[1:]))
+    window = [u for u in units[head + 1: head + 5] if u.category != "comma"]
+    return (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting",
+                                                                                 "inc", "with")
+            and any(u.category == "agents" and u.meaning == "ego" for u in window[1:3]))
 
 
 def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
@@ -663,7 +751,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add(u.meaning)
     elif u.category == "actions":
         direction = None
-        if clause_units is not None and k is not None and u.meaning in ("turn", "lane_change", "move", "cut_in"):
+        if clause_units is not None and k is not None and (u.meaning in ("turn", "lane_change", "cut_in") or (
+                u.meaning == "move" and u.tokens[0].base in STEERING)):
             direction = _direction_after(r, clause_units, k)
         action = u.meaning
         if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
@@ -697,7 +786,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     stage = clause.stage
     phrases: list[NounPhrase] = []
     k = 0
-    heads = [i for i, u in enumerate(units) if u.category == "agents"]
+    heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
+        u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
+        and units[i + 1].meaning not in ("ego", "none"))]
     lo = 0
     for i in heads:
         np = _resolve(r, units, i, lo, stage, recent)
@@ -705,6 +796,14 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         lo = i + 1
     pronouns = []
     for i, u in enumerate(units):
+        if u.category == "word" and u.word == "one" and not any(np.first <= i <= np.index for np in phrases) \
+                and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
+                and not (i + 1 < len(units) and units[i + 1].word == "of"):
+            member = _member(r, recent)  # "two cars, one in front and one behind"
+            if member is not None:
+                r.mark(u)
+                phrases.append(NounPhrase(member, i, i))
+            continue
         if u.category == "word" and u.word in PRONOUNS and not any(np.first <= i <= np.index for np in phrases):
             if u.word == "both" and i + 1 < len(units) and units[i + 1].category in ("agents", "word") and \
                     (units[i + 1].category == "agents" or units[i + 1].word in DEFINITE):
@@ -726,6 +825,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if target is not None:
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
+    phrases = _appositions(r, units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning != "try"
              and not any(np.first <= i < np.index for np in phrases)]
     for i, u in enumerate(units):
@@ -733,8 +833,14 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             r.mark(u)
 
     # the passive: "the ego is approached from behind by an ambulance"
-    by = next((i for i, u in enumerate(units) if u.category == "word" and u.word == "by" and verbs and i > verbs[0]
+    by = next((i for i, u in enumerate(units) if u.category == "word" and u.word == "by" and i > 0
+               and (verbs and i > verbs[0] or units[i - 1].word.endswith(("ed", "en")))
                and any(np.index > i for np in phrases)), None)
+    if by is not None and any(u.category == "word" and u.word in ("kept", "held", "forced", "made", "left")
+                              for u in units[:by]) or (by is not None and verbs and units[verbs[0]].base in
+                                                        ("keep waiting", "be kept waiting", "kept waiting", "held up",
+                                                         "stuck", "held")):
+        by = None  # "the ego is kept waiting by two cars": the ego waits
     subject: list[Entity] = []
     objects: list[NounPhrase] = []
     first_verb = verbs[0] if verbs else len(units)
@@ -755,8 +861,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject = [clause.antecedent]
         elif clause.condition:
             subject = []
-        elif previous_subject and (clause.link in ("and", "or", ",", "but", "then", "") or not phrases):
+        elif previous_subject and clause.link in ("and", "or", ",", "but", "so"):
             subject = list(previous_subject)
+        elif verbs:
+            subject = [_implied(r, units, stage, verbs)]
+    if any(e.includes_ego for e in subject):  # "three cars including the ego wait": the ego waits too
+        subject = subject + [_ego_entity(r, stage)]
     if clause.condition:
         strength = 1
     else:
@@ -774,7 +884,17 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in main_verbs:
         for e in subject:
             _modify(r, e, units[i], stage, strength, units, i)
-        _relational(units[i], units, i, subject, phrases)
+        _relational(units[i], units, i, subject, objects if by is not None else
+                    [p for p in phrases if p.index > i])
+    if by is not None and not verbs:  # "the road it turns into is occupied by a parked truck"
+        pass
+    crosswalk = any(u.category == "road" and u.meaning in V.CROSSWALK_OBJECTS for u in units)
+    for e in subject:
+        if crosswalk and any(a[4] in ("cross", "walk") and a[0] == stage for a in e.actions):
+            e.features.add("crosswalk")  # "crosses at the zebra crossing", "the crosswalk is crossed by"
+        if any(u.category == "road" and u.meaning == "junction" for u in units) and not e.is_ego and \
+                any(units[i].base in ("approach", "enter", "reach") for i in main_verbs):
+            e.features.add("junction_approach")  # "a vehicle approaches the intersection"
 
     # positions, behaviours and road types: to the noun they follow, else the subject
     for i, u in enumerate(units):
@@ -787,6 +907,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         targets = owner if owner else []
         for e in targets:
             if e.is_ego and u.category == "positions":
+                if u.meaning == "first_in_line":
+                    e.features.add("first_in_line")
+                if reference is not None and not reference.is_ego and u.meaning in INVERSE:
+                    reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
+                r.mark(u)
                 continue
             if reference is not None and not reference.is_ego and u.category == "positions" and \
                     u.meaning in ("ahead", "behind", "level") and reference is not e:
@@ -805,6 +930,70 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     return subject
 
 
+def _ego_entity(r: _Reader, stage: int) -> Entity:
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None:
+        ego = Entity(len(r.entities), "car", True, stage, head="ego")
+        r.entities.append(ego)
+    return ego
+
+
+def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Entity:
+    """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
+    ('aggressive cut-in from right lane ahead' is a car's)."""
+    placed = any(u.category == "positions" and u.meaning not in ("ego_lane", "used", "target_lane", "first_in_line")
+                 for u in units[verbs[0]:])
+    cutting = any(units[i].meaning in ("cut_in", "block") for i in verbs)
+    if placed and cutting:
+        entity = Entity(len(r.entities), "car", False, stage, head="car")
+        r.entities.append(entity)
+        r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
+        return entity
+    return _ego_entity(r, stage)
+
+
+def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
+    """One member of the last counted group, which the text now describes on its own."""
+    for group in reversed(r.entities):
+        if group.is_ego or group.count < 2:
+            continue
+        member = Entity(len(r.entities), group.type, False, group.stage, head=group.head, parent=group,
+                        features=set(group.features), actions=list(group.actions), behavior=group.behavior)
+        group.count -= 1
+        group.group_open = max(0, group.group_open - 1)
+        r.entities.append(member)
+        return member
+    return None
+
+
+def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> list[NounPhrase]:
+    """'VUT is a bus', 'the ego, a city bus,', 'SV1 is an oncoming truck, SV2 an oncoming car': the second noun
+    says what the first is; it is no new agent."""
+    out: list[NounPhrase] = []
+    for np in phrases:
+        prev = out[-1] if out else None
+        if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
+                and not prev.plural and not np.plural:
+            between = units[prev.index + 1: np.first]
+            if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
+                   u.category == "comma" for u in between) and (prev.entity.is_ego or prev.entity.label
+                                                               or between):
+                a, b = prev.entity, np.entity
+                if a.is_ego:
+                    if b.type in V.EGO_TYPES:
+                        a.type = b.type
+                elif a.label or a.head in ("car", "vehicle", "sv", "pov", "target"):
+                    a.type = b.type
+                    a.features |= b.features
+                    a.actions += b.actions
+                    a.behavior = a.behavior or b.behavior
+                if b in r.entities:
+                    r.entities.remove(b)
+                continue
+        out.append(np)
+    return out
+
+
 def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
     """A noun after 'in front of', 'behind', 'by', 'including': it places another noun, it is not a subject."""
     k = np.first - 1
@@ -820,7 +1009,10 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
 
 def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     """'it' as a subject is the last subject; as an object ('in front of it') the last thing named that is
-    not the subject, usually the ego."""
+    not the subject, usually the ego. 'she', 'him' name people."""
+    if units[i].word in ("she", "her", "he", "him"):
+        people = [e for e in recent if e.type in V.VULNERABLE_TYPES]
+        return people[-1] if people else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
                            (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind")))
     if not as_object:
@@ -885,9 +1077,14 @@ def _reference_after(units, i, phrases) -> Entity | None:
 
 
 def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
-    """Places implied by verbs between an agent and the ego: following, leading, overtaking."""
+    """Places implied by verbs between an agent and the ego: following, leading, overtaking, hiding."""
     base = verb.tokens[0].base
-    obj = next((p for p in phrases if p.index > i), None)
+    obj = next((p for p in phrases if p.entity is not None), None)
+    if base in HIDING and obj is not None:
+        for t in obj.group or [obj.entity]:
+            if not t.is_ego and subject and not subject[0].is_ego:
+                t.relative_to = subject[0]  # "a parked van hides a pedestrian": the pedestrian is at the van
+        return
     if obj is None or obj.entity is None:
         if base in OVERTAKING and base == "overtake":
             for e in subject:
@@ -974,18 +1171,21 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
 
 
 def _side(e: Entity) -> str | None:
-    f = e.features
-    for side in SIDES:
-        if f"side_{side}" in f or f"front_{side}" in f or f"back_{side}" in f or f"from_{side}" in f:
-            return side
-    return None
+    return _side_of(e.features)
 
 
-def _position(e: Entity, action: str, junction: bool, has_crosswalk: bool) -> tuple[str, bool]:
-    """(position, oncoming) from the features, once the whole text is read."""
-    f = e.features
-    person = e.type == "pedestrian"
-    side = _side(e)
+def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool,
+              target_side: str | None = None) -> tuple[str, bool]:
+    """(position, oncoming) from the features, once the whole text is read: side x ahead/behind x which road,
+    against the junction context and the lane the ego moves into (`target_side`)."""
+    f = set(e.features)
+    crossing = action == "cross" and e.type in V.VULNERABLE_TYPES
+    person = e.type == "pedestrian" or crossing
+    walking = e.type == "pedestrian" and not crossing and (
+        action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
+    if "target_lane" in f and target_side and not _side(e):
+        f.add(f"side_{target_side}")
+    side = _side_of(f)
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
@@ -998,25 +1198,31 @@ def _position(e: Entity, action: str, junction: bool, has_crosswalk: bool) -> tu
             return f"road_of_{s}_turn", False
     if "cross_road" in f and not person:
         return f"road_of_{side or 'left'}_turn", False
-    if "crosswalk" in f and e.type in V.VULNERABLE_TYPES:
+    if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
         return "near_the_crosswalk", False
     from_side = next((s for s in SIDES if f"from_{s}" in f), None)
-    if from_side and not person and junction and action not in ("cut_in", "lane_change", "lane_left", "lane_right") \
-            and not ({"ahead", "behind", "level"} & f):
+    lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
+    if from_side and not person and junction and not lane_move:
         return f"road_of_{from_side}_turn", False
+    if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
+        return "road_of_left_turn", False
     ahead, behind = "ahead" in f, "behind" in f or "overtaking" in f
+    if "ego_lane" in f and not lane_move:
+        side = None
     if side is None and "overtaking" in f:
         side = "left"
-    if side is None and action == "cut_in":
-        side = "right" if e.type == "cyclist" else "left"
-        ahead = ahead or not behind
+    if action == "cut_in" and not behind and "level" not in f:
+        side = side or ("right" if e.type == "cyclist" else "left")
+        ahead = True  # a cut-in starts ahead in the lane beside
     if side is None and "level" in f and not ahead and not behind:
         side = "right" if e.type in V.VULNERABLE_TYPES else "left"
-    if person and action == "cross" and side is None and has_crosswalk and not behind:
+    if person and crossing and side is None and has_crosswalk and not behind:
         return "near_the_crosswalk", False
+    if walking:
+        side = side or "right"
     if side is not None:
-        if person and action == "cross" and not behind:
-            return (f"front_{side}" if from_side or ahead or "side_" + side in f else "front"), False
+        if person and crossing and not behind:
+            return f"front_{side}", False
         if ahead:
             return f"front_{side}", False
         if behind:
@@ -1024,11 +1230,14 @@ def _position(e: Entity, action: str, junction: bool, has_crosswalk: bool) -> tu
         return side, False
     if behind:
         return "back", False
-    if ahead:
-        return "front", False
-    if person and action == "walk":
-        return "front_right", False
     return "front", False
+
+
+def _side_of(f: set) -> str | None:
+    for side in SIDES:
+        if f"side_{side}" in f or f"front_{side}" in f or f"back_{side}" in f or f"from_{side}" in f:
+            return side
+    return None
 
 
 def _final_action(e: Entity, action: str | None, direction: str | None, position: str) -> str:
@@ -1095,10 +1304,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     road = _road(r)
     weather = _weather(r)
     asked = _asked_kind(tokens)
-    skip: set[int] = set()
+    skip: set[int] = set(_title(prompt, tokens))
     if asked is not None:
-        skip = set(asked[1])
-        r.used.update(skip)
+        skip |= set(asked[1])
+        r.used.update(asked[1])
     clauses = _clauses(r, skip)
     previous: list[Entity] = []
     recent: list[Entity] = []
@@ -1152,6 +1361,17 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     return Lowered(scenario, unknown, kind, notes)
 
 
+def _title(prompt: str, tokens: list[Token]) -> range:
+    """'Cut-in: a target vehicle ...': a short title before a colon names the case, not its agents."""
+    m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
+    if m is None:
+        return range(0)
+    n = len(tokenize(m.group(1)))
+    if n > 8 or n >= len(tokens):
+        return range(0)
+    return range(n)
+
+
 def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list[Agent]], set[str]]:
     names = _Namer()
     ego_entity = next((e for e in r.entities if e.is_ego), None)
@@ -1180,9 +1400,17 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     oncoming: set[str] = set()
     resolved: dict[int, tuple[str, str]] = {}
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
+    target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
+    if ego_entity is not None and "first_in_line" in ego_entity.features:
+        for e in others:  # "three cars including the ego wait, the ego is first": the others queue behind it
+            group = e.parent or e
+            if group.includes_ego and not e.features & {"ahead", "behind"}:
+                e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
-        position, is_oncoming = _position(e, action, junction, has_crosswalk)
+        if "ego_lane" in e.features and action in ("move", "lane_change"):
+            action = "cut_in"  # "moves from the left lane into the ego's lane"
+        position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
         resolved[e.key] = (action, direction)
         positions[e.key] = position
         if is_oncoming:
