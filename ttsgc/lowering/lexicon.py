@@ -31,6 +31,7 @@ class Token:
     possessive: bool = False  # followed by 's ("the ego's lane")
     label: str = ""  # a name the text gives an agent ("SV1", "POV2")
     question: bool = False  # in a sentence that asks ("What happens if a truck runs a red light?")
+    title: bool = False  # in a title line ("Case: child after ball"): read for the road and weather only
 
     @property
     def number(self) -> float | None:
@@ -131,16 +132,61 @@ def lexicon() -> Lexicon:
                    content, irregular, spelling, function, kinds)
 
 
-TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#\d|[a-z]+(?:'s)?|[,.;:!?()]")
+TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#\d|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
+
+
+KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/-]{0,30}?)\s*[:|]\s*(.*)$")
+TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
+              "description", "goal", "purpose", "report", "note"}
+NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
+
+
+def _lines(text: str) -> str:
+    """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
+    read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
+    'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
+    if "\n" not in text.strip():
+        return text
+    out = []
+    for line in text.splitlines():
+        if not line.strip():
+            continue
+        line = line.replace("->", " and ").replace("\u2192", " and ")
+        m = KEY_LINE.match(line)
+        if m is None:
+            out.append(line.strip().lstrip("-*\u2022 ").rstrip(".") + ".")
+            continue
+        key, value = m.group(1).strip(), m.group(2).strip().rstrip(".")
+        lowered = key.lower()
+        if re.fullmatch(r"stage \d+|step \d+|phase \d+", lowered):
+            out.append(("then " if out else "") + value + ".")
+        elif lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
+            out.append("\u00a7 " + value + ".")  # read for the road and the weather only
+        elif value.lower() in NOTHING:
+            out.append(f"no {key}.")
+        elif not value:
+            continue
+        else:
+            out.append(f"{key} is {value}.")
+    return " ".join(out)
 
 
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = text.lower().replace("\u2019", "'").replace("`", "'")
+    text = _lines(text).lower().replace("\u2019", "'").replace("`", "'")
+    text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
+    text = re.sub(r"\blet's\b", "let us", text)
+    text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
+    text = re.sub(r"'re\b", " are", text)
+    text = re.sub(r"'ll\b", " will", text)
+    text = re.sub(r"'ve\b", " have", text)
+    text = re.sub(r"'m\b", " am", text)
+    text = re.sub(r"'d\b", " would", text)
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
+    text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end
     text = re.sub(r"(\d)(kmh|mph|m|s|km|metres|meters|seconds)\b", r"\1 \2", text)
     text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
     text = re.sub(r"\n\s*\n", " . ", text)
@@ -163,8 +209,11 @@ def tokenize(text: str) -> list[Token]:
         sentence_of_raw.append(current)
         if word in SENTENCE_ENDS:
             current += 1
+    titled = {sentence_of_raw[k] for k, w in enumerate(raw) if w == "\u00a7"}
     for position, word in enumerate(raw):
         question = sentence_of_raw[position] in asks
+        if word == "\u00a7":
+            continue
         if word in SENTENCE_ENDS:
             if tokens and tokens[-1].sentence == sentence:
                 sentence += 1
@@ -183,7 +232,8 @@ def tokenize(text: str) -> list[Token]:
             base, inflected = lex.base(part)
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
                 and part not in ("is", "was", "has", "does", "goes", "bus")
-            tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question))
+            tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question,
+                                sentence_of_raw[position] in titled))
     return tokens
 
 

@@ -39,6 +39,8 @@ NAME_PREFIX = {"car": "c", "truck": "t", "bus": "b", "motorcycle": "m", "cyclist
 MAX_AGENTS_PER_MENTION = 12
 BARE_PLURAL_COUNT = 2  # "cars pass", "a crowd of children": the gold conventions' count for an unstated size
 
+SCENERY_PREPOSITIONS = {"between", "past", "among", "amongst", "through", "around", "beside", "by", "of", "in",
+                        "with"}
 DEFINITE = {"the", "this", "that", "these", "those", "said"}
 INDEFINITE = {"a", "an", "another", "some", "any", "one"}
 PRONOUNS = {"it", "they", "them", "he", "she", "him", "her", "itself", "both", "former", "latter"}
@@ -48,6 +50,7 @@ AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "am", "will", 
                "then", "also", "to", "and"}
 CLAUSE_WORDS = {"while", "whilst", "as", "when", "whereas", "but", "although", "though", "because", "so", "where",
                 "and", "or", "which", "who", "that", "whose", "whom", "until", "before", "if"}
+SUBORDINATE = {"if", "when", "as", "while", "whilst", "because", "although", "though", "until", "before"}
 RELATIVES = {"which", "who", "that", "whose", "whom"}
 # Relational verbs: (subject's place relative to the object) when one of them is the ego.
 FOLLOWING = {"follow", "tailgate", "trail", "chase"}
@@ -58,6 +61,8 @@ ACTION_RANK = {"block": 8, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_c
                "turn_right": 6, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
                "move": 1}
 SIDES = ("left", "right")
+LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
+              "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
 STEERING = {"move", "steer", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
@@ -160,7 +165,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk."""
     span = tuple(tokens[m.start:m.end])
     nxt = tokens[m.end].word if m.end < len(tokens) else ""
-    if m.category == "road" and span[-1].word == "crossing" and nxt in VERB_AFTER_CROSSING:
+    prev = tokens[m.start - 1] if m.start > 0 else None
+    after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
+                                                      "people", "jogger", "man", "woman", "boy", "girl", "student")
+    if m.category == "road" and span[-1].word == "crossing" and (
+            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and after_person)):
         out = []
         if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
             out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
@@ -196,6 +205,7 @@ def _road(r: _Reader) -> RoadSpec:
                 or (k + 1 < len(units) and units[k + 1].word in ("sign", "signs", "junction", "line", "markings"))):
             put("yield", negated)  # "a give way junction", "roundabout entry, give way": the sign
             r.mark(u)
+            u.category, u.meaning = "road", "yield"
             continue
         if u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
             put("traffic_light", False)  # "runs a red light"
@@ -277,6 +287,10 @@ def _speed_limits(r: _Reader) -> list[str]:
             continue
         rest = [x.word for x in tokens[i + 1: i + 4]]
         mph = rest[:1] == ["mph"] or rest[:3] == ["miles", "per", "hour"] or rest[:2] == ["miles", "an"]
+        unitless = not rest or rest[0] not in ("kmh", "km", "kilometers", "kilometer")
+        if unitless and not mph and value % 10 == 5 and 15 <= value <= 85:
+            mph = True  # "25 limit", "Limit's 65": US signs in miles an hour step by five
+            r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (a US sign)")
         unit = "mph" if mph else "km/h"
         kmh = value * 1.609344 if mph else value
         r.used.update(j for j in range(max(0, first - 4), min(len(tokens), i + 5))
@@ -320,7 +334,7 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         if n is None or n == 0:
             continue
         nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
-        if not (t.word == "lanes" or nxt in LANE_ROADS or nxt in ("in", "per", "each", "on", ",", "")):
+        if not (t.word == "lanes" or t.word == "lane" and nxt not in ("change", "changes", "changing")):
             continue
         after = {x.word for x in tokens[i + 1: i + 4]}
         per_direction = bool(after & {"direction", "way", "each", "per"}) and bool(after & PER_DIRECTION | after
@@ -372,6 +386,9 @@ def _weather(r: _Reader) -> Weather | None:
         r.mark(u)
         (times if u.meaning.startswith("time:") else conditions).append(
             (u.meaning.removeprefix("time:"), " ".join(t.word for t in u.tokens)))
+    clock = _clock_time(r)
+    if clock and not times:
+        times.append(clock)
     if not conditions and not times:
         return None
     condition = _one_condition(conditions, r.notes)
@@ -380,6 +397,25 @@ def _weather(r: _Reader) -> Weather | None:
         if other != time:
             r.notes.append(f"left out: '{said}' (the scene has one time of day: {time})")
     return Weather(condition=condition, time=time)
+
+
+def _clock_time(r: _Reader) -> tuple[str, str] | None:
+    """'At 23:10' is night, '12:05' noon, '17:40' sunset, '06:30' dawn; other hours say no time of day."""
+    for i, t in enumerate(r.tokens[:-1]):
+        nxt = r.tokens[i + 1]
+        if read_number(t.word) is None or read_number(nxt.word) is None or nxt.index != t.index + 1:
+            continue
+        if not (len(nxt.word) == 2 and t.word.isdigit() and int(t.word) < 24 and nxt.word.isdigit()):
+            continue
+        hour = int(t.word)
+        said = f"{t.word}:{nxt.word}"
+        r.used.update((t.index, nxt.index))
+        for time, hours in (("night", range(21, 29)), ("dawn", range(5, 8)), ("noon", range(11, 15)),
+                            ("sunset", range(17, 21))):
+            if hour in hours or hour + 24 in hours:
+                return time, said
+        return None
+    return None
 
 
 FALLING = ("hard_rain", "mid_rain", "soft_rain", "snow", "fog")
@@ -467,10 +503,11 @@ class Clause:
     condition: bool = False  # "once the light turns green": sets no action of its own
     antecedent: Entity | None = None  # a relative clause's noun
     link: str = ""  # the word that opened it (and, while, which...)
+    after_subordinate: bool = False  # follows an 'if' / 'when' clause: its subject is its own
 
 
 def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
-    units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u)]
+    units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u) and not u.tokens[0].title]
     out: list[Clause] = []
     stage, current, condition, link = 0, [], False, ""
     sentence = units[0].tokens[0].sentence if units else 0
@@ -478,7 +515,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
     def close(next_link: str = "", next_condition: bool = False):
         nonlocal current, condition, link
         if current:
-            out.append(Clause(current, stage, condition, link=link))
+            subordinate = bool(out) and out[-1].link in SUBORDINATE and link == ","
+            out.append(Clause(current, stage, condition, link=link, after_subordinate=subordinate))
         current, condition, link = [], next_condition, next_link
 
     for k, u in enumerate(units):
@@ -502,7 +540,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             condition = True
             continue
         if u.category == "comma":
-            if _has_verb(current) or condition or (nxt is not None and nxt.category == "word" and nxt.word in
+            if _has_verb(current) or condition or (_has_agent(current) and _starts_noun(units, k + 1)) or (nxt is not None and nxt.category == "word" and nxt.word in
                                                    ("and", "but", "while", "whilst", "so", "where", "which", "who")
                                                    and _has_agent(current)):
                 close(",")
@@ -522,6 +560,18 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         current.append(u)
     close()
     return out
+
+
+def _starts_noun(units: list[Unit], k: int) -> bool:
+    """A noun phrase begins here: determiners, numbers and adjectives, then an agent noun."""
+    for u in units[k:k + 4]:
+        if u.category == "agents":
+            return u.meaning != "none"
+        if not (u.category in ("numbers", "number", "behaviours") or
+                (u.category == "word" and u.word in DETERMINERS | {"and"}) or
+                (u.category == "positions" and u.word in ADJECTIVE_POSITIONS and len(u.tokens) == 1)):
+            return False
+    return False
 
 
 def _has_agent(units: list[Unit]) -> bool:
@@ -617,8 +667,9 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             break
         first = k
         k -= 1
-    # a premodifier run without a determiner in front of it belongs to what came before
-    if not words and count is None and modifiers and any(m.category == "actions" for m in modifiers):
+    # a premodifier run without a determiner in front of it belongs to what came before ("ego following truck")
+    if not words and count is None and modifiers and (any(m.category == "actions" for m in modifiers) or (
+            first > lo and units[first - 1].category == "agents")):
         first = head
         modifiers = []
     return count, first, words, modifiers
@@ -660,6 +711,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             if len(found) == 1:
                 return NounPhrase(found[0], head, first, plural=plural)
             return NounPhrase(found[0], head, first, plural=True, group=found)
+    if count is None and plural and not words and first > lo and units[first - 1].category == "word" and \
+            units[first - 1].word in SCENERY_PREPOSITIONS:
+        return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
     if count is None:
         count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
     if count is not None and count > 1 and not plural and u.base in ("group", "crowd", "family"):
@@ -743,6 +797,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
     if u.category == "behaviours":
         e.behavior = e.behavior or u.meaning
     elif u.category == "positions":
+        if u.meaning in ("side_left", "side_right") and not {t.word for t in u.tokens} & LANE_WORDS:
+            e.features.add("bare_" + u.meaning[5:])
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
@@ -781,7 +837,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     return None
 
 
-def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], recent: list[Entity]) -> list[Entity]:
+def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], recent: list[Entity],
+                 pending: list[Entity] | None = None) -> list[Entity]:
     units = clause.units
     stage = clause.stage
     phrases: list[NounPhrase] = []
@@ -794,6 +851,17 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         np = _resolve(r, units, i, lo, stage, recent)
         phrases.append(np)
         lo = i + 1
+    for i, u in enumerate(units):  # "kids are crossing, three of them": the count of the group just named
+        if u.category in ("numbers", "number") and i + 2 < len(units) and units[i + 1].word == "of" and \
+                units[i + 2].word in ("them", "those", "these"):
+            group = next((np.entity for np in reversed(phrases) if np.entity is not None and np.plural), None)
+            group = group or next((e for e in reversed(recent) if e.count > 1), None)
+            if group is not None:
+                value = _word_number(u.tokens[0])
+                if value is not None and 0 < value <= MAX_AGENTS_PER_MENTION:
+                    group.count = int(value)
+                r.mark(u), r.mark(units[i + 1]), r.mark(units[i + 2])
+                units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     pronouns = []
     for i, u in enumerate(units):
         if u.category == "word" and u.word == "one" and not any(np.first <= i <= np.index for np in phrases) \
@@ -826,8 +894,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
-    verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning != "try"
-             and not any(np.first <= i < np.index for np in phrases)]
+    verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
+             and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)]
+    if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
+            u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
+        verbs = []  # "the light turns red": the subject is a signal, no agent acts
     for i, u in enumerate(units):
         if u.category == "actions" and u.meaning == "try":
             r.mark(u)
@@ -854,6 +925,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                   and not _is_reference(units, np)]
         for np in before:
             subject += np.group or [np.entity]
+        joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
+        if pending and len(before) >= 2 and joined and verbs:  # "an ambulance, a police car and a van approach"
+            subject = list(pending) + subject
         objects = [np for np in phrases if np.index > first_verb or _is_reference(units, np)]
     subject = [e for e in subject if e is not None]
     if not subject:
@@ -861,7 +935,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject = [clause.antecedent]
         elif clause.condition:
             subject = []
-        elif previous_subject and clause.link in ("and", "or", ",", "but", "so"):
+        elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate:
             subject = list(previous_subject)
         elif verbs:
             subject = [_implied(r, units, stage, verbs)]
@@ -881,6 +955,21 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     _modify(r, e, units[i], stage, 1, units, i)
         else:
             main_verbs.append(i)
+    if not main_verbs and not phrases and len(units) > 1 and units[0].category == "positions" and \
+            units[0].meaning in ("side_left", "side_right") and len(units[0].tokens) == 1 and \
+            units[1].category == "word" and units[1].word in ("at", "into", "onto", "on"):
+        ego = _ego_entity(r, stage)  # terse: "right at the stop sign"
+        r.mark(units[0])
+        ego.actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(), "turn_" + units[0].word, None))
+        units[0].meaning = "used"
+    if not main_verbs and len(subject) == 1 and subject[0].is_ego:  # terse: "ego right at lights", "ego left"
+        ego_np = next((p for p in phrases if p.entity is subject[0]), None)
+        after = units[ego_np.index + 1] if ego_np is not None and ego_np.index + 1 < len(units) else None
+        if after is not None and after.category == "positions" and after.meaning in ("side_left", "side_right"):
+            r.mark(after)
+            after.meaning = "used"
+            subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
+                                       "turn_" + after.tokens[-1].word, None))
     for i in main_verbs:
         for e in subject:
             _modify(r, e, units[i], stage, strength, units, i)
@@ -930,6 +1019,18 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     return subject
 
 
+def _denied_verb(units: list[Unit], i: int) -> bool:
+    """'don't try to pass him', 'never overtakes': a verb said not to happen ('does not move' is a phrase)."""
+    for u in reversed(units[max(0, i - 3):i]):
+        if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don"):
+            return True
+        if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
+                                                     "is", "are", "be", "can", "could")) \
+                and u.category != "actions":
+            return False
+    return False
+
+
 def _ego_entity(r: _Reader, stage: int) -> Entity:
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None:
@@ -975,9 +1076,10 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural:
             between = units[prev.index + 1: np.first]
+            copula = any(u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as") for u in between)
             if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
-                   u.category == "comma" for u in between) and (prev.entity.is_ego or prev.entity.label
-                                                               or between):
+                   u.category == "comma" for u in between) and (copula or (between and prev.entity.is_ego)
+                                                               or (prev.entity.label and not between)):
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
@@ -1019,7 +1121,8 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         if previous_subject:
             return previous_subject[0]
         return recent[-1] if recent else None
-    subject = next((np.entity for np in phrases if np.index < i), None) or (previous_subject or [None])[0]
+    owner = [np.entity for np in phrases if np.index < i and np.entity is not None]  # whom "behind it" places
+    subject = owner[-1] if owner else (previous_subject or [None])[0]
     for e in reversed(recent):
         if e is not subject:
             return e
@@ -1030,8 +1133,8 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     """A verb right after a noun, with a finite verb after it, modifies that noun: 'a cyclist riding alongside
     swerves', 'in front of a truck stopped on the shoulder'."""
     k = i - 1
-    while k >= 0 and units[k].category in ("behaviours",) or (k >= 0 and units[k].category == "word"
-                                                               and units[k].word in ("that", "which", "who")):
+    while k >= 0 and (units[k].category in ("behaviours", "positions") or (
+            units[k].category == "word" and units[k].word in ("that", "which", "who"))):
         k -= 1
     if k < 0:
         return None
@@ -1053,8 +1156,10 @@ def _modifier_owner(units, i, phrases, subject, main_verbs) -> list[Entity]:
     if not verb_before:
         if before:
             last = before[-1]
-            if last.entity in subject:
-                return subject
+            copula = any(u.category == "word" and u.word in ("is", "are", "was", "were", "be")
+                         for u in units[last.index + 1:i])
+            if last.entity in subject and copula:
+                return subject  # "both the truck and the pedestrian are in the front right"
             return last.group or [last.entity]
         return subject
     last_verb = verb_before[-1]
@@ -1185,6 +1290,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
     if "target_lane" in f and target_side and not _side(e):
         f.add(f"side_{target_side}")
+    if e.road_type == "shoulder" and not _side_of(f):
+        f.add("side_right")  # the shoulder is at the road's right edge
     side = _side_of(f)
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
@@ -1204,6 +1311,10 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     if from_side and not person and junction and not lane_move:
         return f"road_of_{from_side}_turn", False
+    bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
+    if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level"} \
+            and e.road_type != "shoulder" and "ego_lane" not in f:
+        return f"road_of_{bare}_turn", False
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return "road_of_left_turn", False
     ahead, behind = "ahead" in f, "behind" in f or "overtaking" in f
@@ -1311,18 +1422,28 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     clauses = _clauses(r, skip)
     previous: list[Entity] = []
     recent: list[Entity] = []
-    for clause in clauses:
+    pending: list[Entity] = []
+    for k, clause in enumerate(clauses):
         if clause.link in RELATIVES and recent:
             clause.antecedent = recent[-1]
-        subject = _read_clause(r, clause, previous, recent)
+        before = len(r.entities)
+        subject = _read_clause(r, clause, previous, recent, pending)
+        if clause.link == "where" and k > 0 and any(u.category == "actions" and u.meaning.startswith("lane")
+                                                    for u in clauses[k - 1].units):
+            for e in r.entities[before:]:  # "the ego changes into the left lane, where a van drives ahead"
+                if not e.is_ego:
+                    e.features.add("target_lane")
         if subject:
             previous = subject
+        verbless = not _has_verb(clause.units)
+        pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
+            else []
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
     if asked is not None and others:
         r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
                        "no template used")
-    junction_words = road.junction is True
+    junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals))
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities)
     junction_features = any(f in e.features for e in r.entities for f in ("road_left", "road_right",
                                                                            "destination", "cross_road"))
@@ -1378,9 +1499,6 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     stage_count = 1 + max([e.stage for e in r.entities] + [a[0] for e in r.entities for a in e.actions] + [0])
     stages: list[list[Agent]] = [[] for _ in range(stage_count)]
     ego_action, _ = _action(ego_entity, 0) if ego_entity else (None, None)
-    if ego_entity is not None and ego_action is None:
-        first = min((a[0] for a in ego_entity.actions if a[1] == 2), default=None)
-        ego_action = _action(ego_entity, first)[0] if first is not None and first == ego_entity.stage else None
     ego_type = ego_entity.type if ego_entity else "car"
     ego = Agent(name="ego", type=ego_type if ego_type in V.EGO_TYPES else "car", is_ego=True,
                 action=_ego_action(ego_entity, ego_action, 0),
@@ -1410,6 +1528,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         action, direction = _intro_action(e)
         if "ego_lane" in e.features and action in ("move", "lane_change"):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
+        if action == "cut_in" and direction and "ego_lane" not in e.features:
+            action = "lane_" + direction  # "swings into the right lane"
         position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
         resolved[e.key] = (action, direction)
         positions[e.key] = position
