@@ -977,9 +977,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     [p for p in phrases if p.index > i])
     if by is not None and not verbs:  # "the road it turns into is occupied by a parked truck"
         pass
-    crosswalk = any(u.category == "road" and u.meaning in V.CROSSWALK_OBJECTS for u in units)
+    crosswalk = any(u.category == "road" and u.meaning in V.CROSSWALK_OBJECTS and not _denied(units, k)
+                    for k, u in enumerate(units))
     for e in subject:
-        if crosswalk and any(a[4] in ("cross", "walk") and a[0] == stage for a in e.actions):
+        if crosswalk and any(a[4] == "cross" and a[0] == stage for a in e.actions):
             e.features.add("crosswalk")  # "crosses at the zebra crossing", "the crosswalk is crossed by"
         if any(u.category == "road" and u.meaning == "junction" for u in units) and not e.is_ego and \
                 any(units[i].base in ("approach", "enter", "reach") for i in main_verbs):
