@@ -151,7 +151,8 @@ def _implied_road(road: RoadSpec, stages, oncoming: frozenset[str], notes: list[
     agents = [a for s in stages for a in s.agents]
     update: dict = {}
     beside = next((a for a in agents if a.relative_to_ego in SIDE_POSITIONS and a.name not in oncoming
-                   and a.road_type == "driving"), None)  # on a shoulder or a sidewalk it needs no lane
+                   and a.road_type == "driving" and a.action != "cross_the_road"), None)
+    # on a shoulder or a sidewalk, or crossing the road, it needs no lane of its own
     changer = next((a for a in agents if a.action in LANE_CHANGES), None)
     if road.lanes < 2 and (beside or changer):
         update["lanes"] = 2

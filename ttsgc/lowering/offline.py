@@ -39,6 +39,8 @@ NAME_PREFIX = {"car": "c", "truck": "t", "bus": "b", "motorcycle": "m", "cyclist
 MAX_AGENTS_PER_MENTION = 12
 BARE_PLURAL_COUNT = 2  # "cars pass", "a crowd of children": the gold conventions' count for an unstated size
 
+VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
+DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone"}
 SCENERY_PREPOSITIONS = {"between", "past", "among", "amongst", "through", "around", "beside", "by", "of", "in",
                         "with"}
 DEFINITE = {"the", "this", "that", "these", "those", "said"}
@@ -56,9 +58,9 @@ RELATIVES = {"which", "who", "that", "whose", "whom"}
 FOLLOWING = {"follow", "tailgate", "trail", "chase"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
-OVERTAKING = {"overtake", "pass"}
-ACTION_RANK = {"block": 8, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 6,
-               "turn_right": 6, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
+OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter"}
+ACTION_RANK = {"block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 8,
+               "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
                "move": 1}
 SIDES = ("left", "right")
 LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
@@ -143,6 +145,13 @@ def _units(tokens: list[Token]) -> list[Unit]:
     out, i = [], 0
     while i < len(tokens):
         m = found.get(i)
+        if m is not None and m.category == "agents" and m.meaning == "ego" and tokens[m.end - 1].possessive and \
+                m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front"):
+            span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
+            meaning = "ahead" if span[-1].word == "front" else "ego_lane"
+            out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
+            i = m.end + 1
+            continue
         if m is not None:
             out.extend(_disambiguate(tokens, m))
             i = m.end
@@ -168,7 +177,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     prev = tokens[m.start - 1] if m.start > 0 else None
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student")
-    if m.category == "road" and span[-1].word == "crossing" and (
+    if m.category == "road" and span[-1].word == "crossing" and (len(span) == 1 or span[0].base == "pedestrian") and (
             nxt in VERB_AFTER_CROSSING or (len(span) == 1 and after_person)):
         out = []
         if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
@@ -230,6 +239,9 @@ def _road(r: _Reader) -> RoadSpec:
             elif meaning.startswith("!"):
                 for word in meaning[1:].split("+"):
                     put(word, True)
+            elif meaning == "stop+junction":  # "a four-way stop": a stop sign at a junction
+                put("stop", negated)
+                junction = True if junction is None else junction
             else:
                 if meaning == "traffic_light" and u.tokens[0].word in ("light", "lights") and not negated and \
                         k > 0 and units[k - 1].category == "weather":
@@ -649,6 +661,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         u = units[k]
         if u.category == "numbers":
             count = int(u.meaning) if count is None else count
+            if u.word in VAGUE_COUNTS:
+                words.add("some")
             in_determiner = True
         elif u.category == "number":
             value = read_number(u.word) or 0
@@ -711,6 +725,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             if len(found) == 1:
                 return NounPhrase(found[0], head, first, plural=plural)
             return NounPhrase(found[0], head, first, plural=True, group=found)
+        ego = next((e for e in r.entities if e.is_ego), None)
+        nxt = units[head + 1] if head + 1 < len(units) else None
+        if ego is not None and not plural and kind == ego.type and "other" not in words and u.base in (
+                "car", "vehicle", "truck", "bus") and (nxt is None or nxt.category not in ("positions", "word")
+                                                       or nxt.word in AUXILIARIES):
+            return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
     if count is None and plural and not words and first > lo and units[first - 1].category == "word" and \
             units[first - 1].word in SCENERY_PREPOSITIONS:
         return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
@@ -727,6 +747,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count = MAX_AGENTS_PER_MENTION
     entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
                     generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
+    if u.base.split()[0] in ("lead", "leading"):
+        entity.features.add("ahead")
+    elif u.base == "tailgater":
+        entity.features.add("behind")
     if _including_ego(units, head):
         entity.count = max(0, count - 1)
         entity.includes_ego = True
@@ -780,7 +804,7 @@ def _absorbed(r: _Reader, entity: Entity) -> bool:
     for group in reversed(r.entities):
         if group.is_ego or group is entity or group.group_open <= 0:
             continue
-        if group.generic or group.type == entity.type:
+        if group.generic or (group.includes_ego and group.type == entity.type):
             taken = min(entity.count, group.group_open)
             group.group_open -= taken
             group.count -= taken
@@ -813,7 +837,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         action = u.meaning
         if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
             action = "lane_" + direction
-        if action == "move" and e.is_ego is False and u.base in OVERTAKING:
+        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
             e.features.add("overtaking")
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
@@ -824,10 +848,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
 
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
-    for u in units[k + 1: k + 4]:
+    for j, u in enumerate(units[k + 1: k + 4], start=k + 1):
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
-            if u.tokens[0].word in ("from", "coming"):
+            if u.tokens[0].word in ("from", "coming") or units[j - 1].word == "from":
                 return None
             r.mark(u)
             u.meaning = "used"
@@ -992,6 +1016,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
+        if u.meaning == "ego_lane" and i > 0 and units[i - 1].word in ("into", "onto", "across"):
+            u.meaning = "into_ego_lane"
         owner = _modifier_owner(units, i, phrases, subject, main_verbs)
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
@@ -1057,7 +1083,12 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Ent
 def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
     """One member of the last counted group, which the text now describes on its own."""
     for group in reversed(r.entities):
-        if group.is_ego or group.count < 2:
+        if group.is_ego or group.parent is not None:
+            continue
+        if group.count == 1 and any(m.parent is group for m in r.entities) and not group.label:
+            group.label = "#rest"  # "one from the left and one from the right": the second is what is left
+            return group
+        if group.count < 2:
             continue
         member = Entity(len(r.entities), group.type, False, group.stage, head=group.head, parent=group,
                         features=set(group.features), actions=list(group.actions), behavior=group.behavior)
@@ -1078,6 +1109,12 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 and not prev.plural and not np.plural:
             between = units[prev.index + 1: np.first]
             copula = any(u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as") for u in between)
+            driver = prev.entity.head in DRIVERS and [u.word for u in between] in (["in"], ["driving"], ["on"])
+            if driver:  # "a learner driver in a little hatchback": the hatchback
+                prev.entity.type = np.entity.type
+                if np.entity in r.entities:
+                    r.entities.remove(np.entity)
+                continue
             if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
                    u.category == "comma" for u in between) and (copula or (between and prev.entity.is_ego)
                                                                or (prev.entity.label and not between)):
@@ -1257,13 +1294,13 @@ def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
 
 def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None]:
     """(action class, direction) of the strongest, most specific predicate (of one stage, if given)."""
-    chosen = [a for a in e.actions if (stage is None or a[0] == stage) and a[2] > 0]
+    chosen = [a for a in e.actions if (stage is None or a[0] == stage) and a[2] > 0 and not (
+        e.is_ego and (a[4] in ("block", "cross", "walk") or (a[4] == "cut_in" and not a[5])))]
     if not chosen:
         return None, None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
-    classes = {a[4] for a in chosen if a[1] == best[1]}
-    if best[4] == "cut_in" and "stop" in classes:
-        return "block", None
+    if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
+        return "block", None  # "swerves into its path and stops"
     return best[4], best[5]
 
 
@@ -1318,8 +1355,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         return f"road_of_{bare}_turn", False
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return "road_of_left_turn", False
-    ahead, behind = "ahead" in f, "behind" in f or "overtaking" in f
-    if "ego_lane" in f and not lane_move:
+    ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
+    if "ego_lane" in f and not lane_move and "into_ego_lane" not in f:
         side = None
     if side is None and "overtaking" in f:
         side = "left"
@@ -1331,6 +1368,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if person and crossing and side is None and has_crosswalk and not behind:
         return "near_the_crosswalk", False
     if walking:
+        if has_crosswalk and side is None and not f & {"ahead", "behind"}:
+            return "near_the_crosswalk", False  # standing by the crossing
         side = side or "right"
     if side is not None:
         if person and crossing and not behind:
@@ -1378,6 +1417,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "block":
         return "block_the_ego"
     if action == "stop":
+        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type == "sidewalk"):
+            return "on_the_sidewalk"  # standing on the pavement
         return "stop"
     if action == "cross":
         return "cross_the_road" if e.type in V.VULNERABLE_TYPES else "go_straight"
@@ -1527,7 +1568,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
-        if "ego_lane" in e.features and action in ("move", "lane_change"):
+        if "into_ego_lane" in e.features and e.type == "pedestrian":
+            action = "cross"  # "a child runs into the ego's path"
+        if e.type == "pedestrian" and action in (None, "move") and "on_sidewalk" not in e.features:
+            action = "cross"  # people on foot in the road cross it
+        if "into_ego_lane" in e.features and action in ("move", "lane_change"):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
         if action == "cut_in" and direction and "ego_lane" not in e.features:
             action = "lane_" + direction  # "swings into the right lane"
