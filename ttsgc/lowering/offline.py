@@ -63,6 +63,7 @@ ACTION_RANK = {"block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_c
                "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
                "move": 1}
 SIDES = ("left", "right")
+TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn"}
 LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
               "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
@@ -149,6 +150,8 @@ def _units(tokens: list[Token]) -> list[Unit]:
                 m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front"):
             span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
             meaning = "ahead" if span[-1].word == "front" else "ego_lane"
+            if m.start > 0 and tokens[m.start - 1].word in ("into", "onto", "across"):
+                meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
             out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
             i = m.end + 1
             continue
@@ -519,7 +522,10 @@ class Clause:
 
 
 def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
-    units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u) and not u.tokens[0].title]
+    case_names = {u.tokens[0].sentence for u in r.units if u.category == "agents" and u.meaning == "none"
+                  and u.tokens[0].word in ("car", "vehicle") and len(u.tokens) > 2 and u.tokens[1].word == "to"}
+    units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u) and not u.tokens[0].title
+             and u.tokens[0].sentence not in case_names]  # "car-to-pedestrian farside adult": a test case's name
     out: list[Clause] = []
     stage, current, condition, link = 0, [], False, ""
     sentence = units[0].tokens[0].sentence if units else 0
@@ -552,7 +558,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             condition = True
             continue
         if u.category == "comma":
-            if _has_verb(current) or condition or (_has_agent(current) and _starts_noun(units, k + 1)) or (nxt is not None and nxt.category == "word" and nxt.word in
+            only_ego = all(x.category == "agents" and x.meaning == "ego" or x.category == "word" and x.word == "the"
+                           for x in current)
+            if _has_verb(current) or condition or (_has_agent(current) and not only_ego
+                                                   and _starts_noun(units, k + 1)) or (nxt is not None and nxt.category == "word" and nxt.word in
                                                    ("and", "but", "while", "whilst", "so", "where", "which", "who")
                                                    and _has_agent(current)):
                 close(",")
@@ -600,7 +609,10 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     if not t.question:
         return False
     first = next(x for x in tokens if x.sentence == t.sentence)
-    return first.word in QUESTION_WORDS and any(x.sentence > t.sentence for x in tokens)
+    later = {x.base for x in tokens if x.sentence > t.sentence}
+    agents = {w for words, (category, meaning) in lexicon().phrases.items() if category == "agents"
+              and meaning not in ("none", "ego") and len(words) == 1 for w in words}
+    return first.word in QUESTION_WORDS and bool(later & agents)
 
 
 def _has_verb(units: list[Unit]) -> bool:
@@ -731,8 +743,14 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 "car", "vehicle", "truck", "bus") and (nxt is None or nxt.category not in ("positions", "word")
                                                        or nxt.word in AUXILIARIES):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
-    if count is None and plural and not words and first > lo and units[first - 1].category == "word" and \
-            units[first - 1].word in SCENERY_PREPOSITIONS:
+    before = first - 1
+    while before > lo and units[before].category in ("actions", "behaviours"):
+        before -= 1  # "between parked cars"
+    if count is None and plural and not words and before >= lo and units[before].category == "word" and \
+            units[before].word in SCENERY_PREPOSITIONS:
+        for k in range(before + 1, head):
+            r.mark(units[k])
+            units[k].category = "word"
         return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
     if count is None:
         count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
@@ -823,6 +841,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
     elif u.category == "positions":
         if u.meaning in ("side_left", "side_right") and not {t.word for t in u.tokens} & LANE_WORDS:
             e.features.add("bare_" + u.meaning[5:])
+        if u.meaning in ("side_left", "side_right") and u.tokens[0].word == "from":
+            e.features.add("from_lane")
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
@@ -837,6 +857,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         action = u.meaning
         if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
             action = "lane_" + direction
+        if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
+                any("lane" in x.base for x in clause_units[k + 1:k + 5]):
+            return  # "waiting for the light to change"
         if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
             e.features.add("overtaking")
         if u.tokens[0].base in RUSHING and not e.is_ego:
@@ -1017,7 +1040,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
         if u.meaning == "ego_lane" and i > 0 and units[i - 1].word in ("into", "onto", "across"):
-            u.meaning = "into_ego_lane"
+            u.meaning = "into_ego_lane"  # "moves ... into the ego's lane"
         owner = _modifier_owner(units, i, phrases, subject, main_verbs)
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
@@ -1047,7 +1070,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
 
 
 def _denied_verb(units: list[Unit], i: int) -> bool:
-    """'don't try to pass him', 'never overtakes': a verb said not to happen ('does not move' is a phrase)."""
+    """'don't try to pass him', 'never overtakes', 'must learn how to yield': a verb said not to happen, or
+    only talked about ('does not move' is a phrase of its own)."""
+    if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
+           for u in units[max(0, i - 3):i]):
+        return True
     for u in reversed(units[max(0, i - 3):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don"):
             return True
@@ -1069,7 +1096,8 @@ def _ego_entity(r: _Reader, stage: int) -> Entity:
 def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Entity:
     """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
     ('aggressive cut-in from right lane ahead' is a car's)."""
-    placed = any(u.category == "positions" and u.meaning not in ("ego_lane", "used", "target_lane", "first_in_line")
+    placed = any(u.category == "positions" and u.meaning not in ("ego_lane", "into_ego_lane", "used", "target_lane",
+                                                                 "first_in_line")
                  for u in units[verbs[0]:])
     cutting = any(units[i].meaning in ("cut_in", "block") for i in verbs)
     if placed and cutting:
@@ -1222,7 +1250,7 @@ def _reference_after(units, i, phrases) -> Entity | None:
 def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
     """Places implied by verbs between an agent and the ego: following, leading, overtaking, hiding."""
     base = verb.tokens[0].base
-    obj = next((p for p in phrases if p.entity is not None), None)
+    obj = next((p for p in phrases if p.entity is not None and p.first - i <= 2), None)
     if base in HIDING and obj is not None:
         for t in obj.group or [obj.entity]:
             if not t.is_ego and subject and not subject[0].is_ego:
@@ -1295,7 +1323,7 @@ def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
 def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None]:
     """(action class, direction) of the strongest, most specific predicate (of one stage, if given)."""
     chosen = [a for a in e.actions if (stage is None or a[0] == stage) and a[2] > 0 and not (
-        e.is_ego and (a[4] in ("block", "cross", "walk") or (a[4] == "cut_in" and not a[5])))]
+        e.is_ego and a[4] in ("block", "cross", "walk"))]
     if not chosen:
         return None, None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
@@ -1329,18 +1357,20 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "target_lane" in f and target_side and not _side(e):
         f.add(f"side_{target_side}")
     if e.road_type == "shoulder" and not _side_of(f):
-        f.add("side_right")  # the shoulder is at the road's right edge
+        f.add("side_right")  # the shoulder is at the road's right edge, ahead unless said otherwise
+        if not f & {"behind", "level", "overtaking"}:
+            f.add("ahead")
     side = _side_of(f)
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
-    if "destination" in f:
-        return "at_the_destination", False
-    if "road_straight" in f and not person:
+    if "road_straight" in f and not person:  # where it comes from wins over where it heads
         return ("road_of_straight", False) if junction else ("front_left", True)
     for s in SIDES:
         if f"road_{s}" in f:
             return f"road_of_{s}_turn", False
+    if "destination" in f:
+        return "at_the_destination", False
     if "cross_road" in f and not person:
         return f"road_of_{side or 'left'}_turn", False
     if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
@@ -1360,9 +1390,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = None
     if side is None and "overtaking" in f:
         side = "left"
-    if action == "cut_in" and not behind and "level" not in f:
+    if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f):
         side = side or ("right" if e.type == "cyclist" else "left")
-        ahead = True  # a cut-in starts ahead in the lane beside
+        ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
         side = "right" if e.type in V.VULNERABLE_TYPES else "left"
     if person and crossing and side is None and has_crosswalk and not behind:
@@ -1574,7 +1604,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             action = "cross"  # people on foot in the road cross it
         if "into_ego_lane" in e.features and action in ("move", "lane_change"):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
-        if action == "cut_in" and direction and "ego_lane" not in e.features:
+        if action == "cut_in" and direction and "into_ego_lane" not in e.features:
             action = "lane_" + direction  # "swings into the right lane"
         position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
         resolved[e.key] = (action, direction)
@@ -1631,7 +1661,7 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
-        return f"change_lane_to_{direction or 'left'}"
+        return f"change_lane_to_{direction or 'left'}"  # "pulling out to pass": into the lane on the left
     return "go_straight"
 
 
