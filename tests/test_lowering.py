@@ -32,7 +32,6 @@ CONVENTIONS_DIFFER = {
     "boxed_in": "'oncoming traffic' is a vague group, not an agent",
     "foggy_convoy": "a motorcycle overtaking on the left needs a second lane (lanes >= 2)",
     "yield_sudden_stop": "the ego goes straight when the sentence does not say what it does",
-    "rainy_night_cut_in": "a car cutting in from the lane to the right starts ahead of the ego: front_right",
 }
 
 
