@@ -253,3 +253,19 @@ def test_the_system_prompt_is_rendered_from_templates_with_the_vocabulary():
 def test_auto_method_is_offline_without_a_key(monkeypatch):
     monkeypatch.delenv("ANTHROPIC_API_KEY", raising=False)
     assert lower_prompt("a bus stops in front of the ego").method == "offline"
+
+
+BLOCKING_PEDESTRIAN = ("```tsg\nscenario \"llm\"\nstage main {\n    ego car go_straight\n"
+                       "    pedestrian p1 at front block_the_ego\n    car c1 at left go_straight\n}\n```")
+
+
+def test_the_llm_answer_goes_through_the_same_plan_inference():
+    with _MessagesServer([BLOCKING_PEDESTRIAN]) as server:
+        lowering = lower_prompt("a pedestrian blocks the ego while a car drives beside it", "anthropic",
+                                settings=LlmSettings(model="test-model"), client=_client(server.url))
+    agents = {a.name: a for a in lowering.scenario.agents()}
+    assert agents["p1"].action == "cross_the_road"  # repaired: a pedestrian steps into the path
+    assert lowering.scenario.road.lanes == 2  # inferred: c1 drives beside the ego
+    text = lowering.tsg("a pedestrian blocks the ego")
+    assert "# repaired: a pedestrian cannot block_the_ego" in text and "# inferred: lanes >= 2" in text
+    assert lowering.summary()["tokens"] == 1100

@@ -34,7 +34,8 @@ class Lowering:
 
     def summary(self) -> dict:
         return {"method": self.method, "tries": self.tries, "usage": self.usage, "unknown": self.unknown,
-                "kind": self.kind, "notes": self.notes}
+                "kind": self.kind, "notes": self.notes,
+                "tokens": self.usage.get("input_tokens", 0) + self.usage.get("output_tokens", 0)}
 
 
 def choose_method(requested: str) -> str:

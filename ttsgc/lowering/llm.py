@@ -19,7 +19,7 @@ from ttsgc.language import ScenarioError, parse
 from ttsgc.lowering.infer import infer_plan
 from ttsgc.lowering.offline import LoweringError
 from ttsgc.resources import resource_dir
-from ttsgc.scenario import Scenario, find_problems
+from ttsgc.scenario import Scenario
 
 MAX_TRIES = 3
 DEFAULT_MODEL = "claude-sonnet-5-5"  # a current model this SDK knows; --model or TTSGC_MODEL to change
@@ -106,18 +106,17 @@ def lower_with_llm(prompt: str, settings: LlmSettings | None = None, client=None
             usage[key] = usage.get(key, 0) + (getattr(response.usage, key, 0) or 0)
         answer = "".join(block.text for block in response.content if getattr(block, "type", "") == "text")
         scene = extract_scene(answer)
+        notes: list[str] = []
+
+        def infer(draft: Scenario) -> Scenario:  # the same inference and repairs as the offline rules
+            inferred = infer_plan(draft)
+            notes[:] = inferred.notes
+            return inferred.scenario
+
         try:
-            answered = parse(scene, "<llm answer>")
+            return LlmLowered(parse(scene, "<llm answer>", repair=infer), scene, attempt, usage, notes)
         except ScenarioError as exc:
             diagnostics = exc.render()
-        else:
-            inferred = infer_plan(answered)  # the same inference and repairs as the offline rules
-            problems = find_problems(inferred.scenario)
-            if not problems:
-                return LlmLowered(Scenario.model_validate(inferred.scenario.model_dump()
-                                                          | {"comments": inferred.scenario.comments}),
-                                  scene, attempt, usage, inferred.notes)
-            diagnostics = "\n".join(p.message for p in problems)
         messages += [{"role": "assistant", "content": answer},
                      {"role": "user", "content": _environment().get_template("repair.md.j2").render(
                          diagnostics=diagnostics)}]
