@@ -985,7 +985,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate:
             subject = list(previous_subject)
         elif verbs:
-            subject = [_implied(r, units, stage, verbs)]
+            subject = [e for e in [_implied(r, units, stage, verbs)] if e is not None]
     if any(e.includes_ego for e in subject):  # "three cars including the ego wait": the ego waits too
         subject = subject + [_ego_entity(r, stage)]
     if clause.condition:
@@ -1093,7 +1093,7 @@ def _ego_entity(r: _Reader, stage: int) -> Entity:
     return ego
 
 
-def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Entity:
+def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Entity | None:
     """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
     ('aggressive cut-in from right lane ahead' is a car's)."""
     placed = any(u.category == "positions" and u.meaning not in ("ego_lane", "into_ego_lane", "used", "target_lane",
@@ -1105,6 +1105,8 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Ent
         r.entities.append(entity)
         r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
         return entity
+    if cutting:
+        return None  # "Double cut-in on a motorway ...": the name of the case, not the ego's doing
     return _ego_entity(r, stage)
 
 
@@ -1560,7 +1562,7 @@ def _title(prompt: str, tokens: list[Token]) -> range:
     if m is None:
         return range(0)
     n = len(tokenize(m.group(1)))
-    if n > 8 or n >= len(tokens):
+    if n > 12 or n >= len(tokens):
         return range(0)
     return range(n)
 
