@@ -139,6 +139,8 @@ SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/-]{0,30}?)\s*[:|]\s*(.*)$")
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
               "description", "goal", "purpose", "report", "note"}
+PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
+              "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
 
 
@@ -163,6 +165,8 @@ def _lines(text: str) -> str:
             out.append(("then " if out else "") + value + ".")
         elif lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
+        elif lowered in PLAIN_KEYS:
+            out.append(value + ".")  # "Light: dusk, drizzle" is the weather, not a traffic light
         elif value.lower() in NOTHING:
             out.append(f"no {key}.")
         elif not value:
@@ -247,7 +251,7 @@ def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> lis
         if tokens[i].word != ",":
             for n in range(min(lex.longest, stop - i), 0, -1):
                 span = tokens[i:i + n]
-                if any(t.word == "," for t in span):
+                if any(t.word == "," or t.sentence != span[0].sentence for t in span):
                     continue
                 entry = _lookup(lex, span)
                 if entry is not None:

@@ -543,8 +543,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         sentence = u.tokens[0].sentence
         if new_sentence:
             close()
+        prev_word = units[k - 1].word if k else ""
         if u.category == "sequence" and not (nxt is not None and nxt.category in ("number", "numbers")) and not (
-                u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")):
+                u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
+                and prev_word not in ("for", "at", "all"):  # "for once", "at once"
             r.mark(u)
             if out or current:
                 close()
@@ -695,7 +697,7 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         k -= 1
     # a premodifier run without a determiner in front of it belongs to what came before ("ego following truck")
     if not words and count is None and modifiers and (any(m.category == "actions" for m in modifiers) or (
-            first > lo and units[first - 1].category == "agents")):
+            first > 0 and units[first - 1].category == "agents")):
         first = head
         modifiers = []
     return count, first, words, modifiers
@@ -1559,7 +1561,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
 def _title(prompt: str, tokens: list[Token]) -> range:
     """'Cut-in: a target vehicle ...': a short title before a colon names the case, not its agents."""
     m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
-    if m is None:
+    if m is None or "\n" in prompt.strip():  # notes written a line an item have their titles marked already
         return range(0)
     n = len(tokenize(m.group(1)))
     if n > 12 or n >= len(tokens):
