@@ -73,7 +73,7 @@ def _normalize(text: str) -> str:
     return re.sub(r"[-_/]", " ", text.lower()).strip()
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Lexicon:
     phrases: dict  # words tuple -> (category, meaning)
     longest: int
@@ -83,6 +83,7 @@ class Lexicon:
     spelling: dict  # british -> american
     function_words: frozenset
     kinds: dict  # words tuple -> scene kind (read only where a scene is asked for)
+    starts: dict  # first word -> the length of the longest phrase it starts
 
     def base(self, word: str) -> tuple[str, bool]:
         """The base form of a word the lexicon knows, and whether it was a plural or an inflected form."""
@@ -102,8 +103,15 @@ class Lexicon:
         return word, False  # a base form itself, or a word the lexicon does not know
 
     def nearest(self, word: str) -> str | None:
-        found = difflib.get_close_matches(word, self.content_words, n=1, cutoff=0.75)
-        return found[0] if found else None
+        return _nearest(self, word)
+
+
+@lru_cache(maxsize=4096)
+def _nearest(lex: "Lexicon", word: str) -> str | None:
+    """The closest known content word; only words of about the same length can be close enough."""
+    pool = [w for w in lex.content_words if abs(len(w) - len(word)) <= 2 and (w[0] == word[0] or w[1:2] == word[1:2])]
+    found = difflib.get_close_matches(word, pool, n=1, cutoff=0.75)
+    return found[0] if found else None
 
 
 @lru_cache(maxsize=1)
@@ -128,8 +136,11 @@ def lexicon() -> Lexicon:
     words = {w for phrase in phrases for w in phrase}
     content = tuple(sorted(w for w in words if len(w) > 3 and w not in function))
     kinds = {words: meaning for meaning, words in _entries("kinds")}
+    starts: dict = {}
+    for phrase in phrases:
+        starts[phrase[0]] = max(starts.get(phrase[0], 0), len(phrase))
     return Lexicon(phrases, max(len(p) for p in phrases), frozenset(words | function | set(irregular.values())),
-                   content, irregular, spelling, function, kinds)
+                   content, irregular, spelling, function, kinds, starts)
 
 
 TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#\d|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
@@ -248,8 +259,9 @@ def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> lis
     out, i = [], start
     while i < stop:
         found = None
-        if tokens[i].word != ",":
-            for n in range(min(lex.longest, stop - i), 0, -1):
+        longest = max(lex.starts.get(tokens[i].word, 0), lex.starts.get(tokens[i].base, 0))
+        if tokens[i].word != "," and longest:
+            for n in range(min(longest, stop - i), 0, -1):
                 span = tokens[i:i + n]
                 if any(t.word == "," or t.sentence != span[0].sentence for t in span):
                     continue

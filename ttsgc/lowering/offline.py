@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
@@ -611,10 +612,16 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     if not t.question:
         return False
     first = next(x for x in tokens if x.sentence == t.sentence)
+    if first.word not in QUESTION_WORDS:
+        return False
     later = {x.base for x in tokens if x.sentence > t.sentence}
-    agents = {w for words, (category, meaning) in lexicon().phrases.items() if category == "agents"
-              and meaning not in ("none", "ego") and len(words) == 1 for w in words}
-    return first.word in QUESTION_WORDS and bool(later & agents)
+    return bool(later & _agent_nouns())
+
+
+@lru_cache(maxsize=1)
+def _agent_nouns() -> frozenset[str]:
+    return frozenset(w for words, (category, meaning) in lexicon().phrases.items() if category == "agents"
+                     and meaning not in ("none", "ego") and len(words) == 1 for w in words)
 
 
 def _has_verb(units: list[Unit]) -> bool:
