@@ -284,8 +284,9 @@ def _lookup(lex: Lexicon, span: list[Token]):
         keys = [k + (w,) for k in keys for w in dict.fromkeys((t.word, t.base))]
         if len(keys) > 16:
             keys = keys[:16]
+    raw = keys[0]
     for key in keys:
         entry = lex.phrases.get(key)
-        if entry is not None:
+        if entry is not None and (key == raw or entry[1] != "none"):  # "the bus stops" is no "bus stop"
             return entry
     return None

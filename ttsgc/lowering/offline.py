@@ -880,11 +880,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
 
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
+    turning = units[k].meaning in ("turn", "u_turn")
     for j, u in enumerate(units[k + 1: k + 4], start=k + 1):
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
-            if u.tokens[0].word in ("from", "coming") or units[j - 1].word == "from":
-                return None
+            if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
+                    u.meaning.startswith("road") and not turning):
+                return None  # where it comes from, not where it goes
             r.mark(u)
             u.meaning = "used"
             return "left" if "left" in u.base else "right"
