@@ -212,6 +212,10 @@ def _road(r: _Reader) -> RoadSpec:
                 or (u.category == "numbers" and u.meaning == "0"):
             negated = True
             r.mark(u)
+            if k > 0 and units[k - 1].category == "agents" and units[k - 1].meaning not in ("none", "ego") and \
+                    k + 1 < len(units) and units[k + 1].category == "road" and units[k + 1].meaning == "traffic_light":
+                units[k + 1].category = "word"  # "a cyclist without lights": its own lamps
+                negated = False
             continue
         if u.category == "actions" and u.base in ("yield", "give way") and (
                 k == 0 or units[k - 1].category in ("comma", "word") and units[k - 1].word in (",", "a", "at", "with")
@@ -742,6 +746,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent)
+        if len(found) == 1 and not found[0].parent and _placed_elsewhere(found[0], units, head):
+            found = []  # "a car ahead ... the car behind us": another car
         if found:
             if len(found) == 1:
                 return NounPhrase(found[0], head, first, plural=plural)
@@ -788,6 +794,18 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
+
+
+OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side_left": {"side_right"},
+                   "side_right": {"side_left"}}
+
+
+def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
+    """'the car behind us' names another car than one already placed ahead."""
+    nxt = units[head + 1] if head + 1 < len(units) else None
+    if nxt is None or nxt.category != "positions":
+        return False
+    return bool(OPPOSITE_PLACES.get(nxt.meaning, set()) & e.features)
 
 
 def _including_ego(units: list[Unit], head: int) -> bool:
