@@ -226,6 +226,10 @@ def _road(r: _Reader) -> RoadSpec:
             continue
         if u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
             put("traffic_light", False)  # "runs a red light"
+        if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
+                                                                                          "signaled") \
+                and k > 0 and units[k - 1].category == "agents":
+            continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
         if u.category == "road":
             r.mark(u)
             meaning = u.meaning
@@ -549,7 +553,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if new_sentence:
             close()
         prev_word = units[k - 1].word if k else ""
-        if u.category == "sequence" and not (nxt is not None and nxt.category in ("number", "numbers")) and not (
+        if u.category == "sequence" and not (u.word == "after" and nxt is not None and
+                                             nxt.category in ("number", "numbers")) and not (
                 u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
                 and prev_word not in ("for", "at", "all"):  # "for once", "at once"
             r.mark(u)
@@ -1065,6 +1070,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     # positions, behaviours and road types: to the noun they follow, else the subject
     for i, u in enumerate(units):
         if u.category not in ("positions", "behaviours") or u.meaning == "used":
+            continue
+        after = [x.word for x in units[i + 1:i + 3]]
+        if u.meaning in ("ahead", "behind") and after[:1] == ["the"] and after[1:] and after[1] in (
+                "other", "first", "second", "former", "latter", "lead", "last"):
+            r.mark(u)  # "two trucks, one behind the other": their order, not their place
             continue
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
