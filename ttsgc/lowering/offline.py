@@ -56,7 +56,7 @@ CLAUSE_WORDS = {"while", "whilst", "as", "when", "whereas", "but", "although", "
 SUBORDINATE = {"if", "when", "as", "while", "whilst", "because", "although", "though", "until", "before"}
 RELATIVES = {"which", "who", "that", "whose", "whom"}
 # Relational verbs: (subject's place relative to the object) when one of them is the ego.
-FOLLOWING = {"follow", "tailgate", "trail", "chase"}
+FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
 OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter"}
@@ -553,6 +553,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if new_sentence:
             close()
         prev_word = units[k - 1].word if k else ""
+        if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and \
+                nxt.tokens[0].word.endswith("ing"):
+            continue  # "after braking for a fox": when, not a stage
         if u.category == "sequence" and not (u.word == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers")) and not (
                 u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
@@ -676,7 +679,7 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
 
 
 ADJECTIVE_POSITIONS = {"oncoming", "opposing", "leading", "lead", "following", "trailing", "adjacent", "preceding",
-                       "opposite", "front", "rear", "back"}
+                       "opposite", "front", "rear", "back", "tailgating"}
 DETERMINERS = DEFINITE | INDEFINITE | {"his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second",
                                        "third", "first", "same", "further", "additional", "extra", "its", "their"}
 
@@ -1115,7 +1118,8 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
            for u in units[max(0, i - 3):i]):
         return True
     for u in reversed(units[max(0, i - 3):i]):
-        if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don"):
+        if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
+                                               "failing", "refused", "refuses", "without"):
             return True
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
                                                      "is", "are", "be", "can", "could")) \
@@ -1240,8 +1244,11 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     """A verb right after a noun, with a finite verb after it, modifies that noun: 'a cyclist riding alongside
     swerves', 'in front of a truck stopped on the shoulder'."""
     k = i - 1
+    light = False  # "other cars performing lane changes": the noun's doing, not the sentence's
     while k >= 0 and (units[k].category in ("behaviours", "positions") or (
-            units[k].category == "word" and units[k].word in ("that", "which", "who"))):
+            units[k].category == "word" and units[k].word in ("that", "which", "who", "performing", "making",
+                                                               "doing", "executing", "attempting"))):
+        light = light or units[k].word in ("performing", "making", "doing", "executing", "attempting")
         k -= 1
     if k < 0:
         return None
@@ -1251,7 +1258,7 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
     later = any(v > i for v in verbs)
     word = units[i].tokens[0].word
-    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood")
+    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood") or light
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
         return np
     return None
@@ -1673,6 +1680,13 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         behavior = e.behavior or V.DEFAULT_BEHAVIOR
         first_name = None
         for n in range(e.count):
+            if "both_sides" in e.features:  # "cars cutting in from different directions": one on each side
+                side = SIDES[n % 2]
+                member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"})
+                                | {f"side_{side}", "from_lane", "ahead"}, road_type=e.road_type)
+                position, _ = _position(member, action, junction, has_crosswalk, target_side)
+                final = _final_action(member, action, direction, position)
+                first_name = None
             name = names(e.type)
             stages[e.stage].append(Agent(name=name, type=e.type, action=final, behavior=behavior,
                                          relative_to_ego=position, road_type=road_type, behind=first_name and
