@@ -131,6 +131,8 @@ class _Reader:
     used: set = field(default_factory=set)  # token indexes some rule placed
     entities: list[Entity] = field(default_factory=list)
     order: int = 0
+    surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
+    # overtaken by a motorcycle before it turns": "it" is the ego)
 
     def mark(self, unit: Unit) -> None:
         self.used.update(range(unit.start, unit.end))
@@ -715,8 +717,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         first = k
         k -= 1
     # a premodifier run without a determiner in front of it belongs to what came before ("ego following truck")
-    if not words and count is None and modifiers and (any(m.category == "actions" for m in modifiers) or (
-            first > 0 and units[first - 1].category == "agents")):
+    if not words and count is None and modifiers and first > 0 and units[first - 1].category in ("agents",
+                                                                                                "actions"):
         first = head
         modifiers = []
     return count, first, words, modifiers
@@ -948,7 +950,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     pronouns = []
     for i, u in enumerate(units):
-        if u.category == "word" and u.word == "one" and not any(np.first <= i <= np.index for np in phrases) \
+        if u.word == "one" and u.category in ("word", "numbers") and not any(np.first <= i <= np.index
+                                                                              for np in phrases) \
                 and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
                 and not (i + 1 < len(units) and units[i + 1].word == "of"):
             member = _member(r, recent)  # "two cars, one in front and one behind"
@@ -973,7 +976,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if pool:
                 phrases.append(NounPhrase(pool[0] if u.word == "former" else pool[-1], i, i))
         else:
-            target = _pronoun(units, i, phrases, previous_subject, recent)
+            target = _pronoun(units, i, phrases, r.surface or previous_subject, recent)
             if target is not None:
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
@@ -992,7 +995,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                and (verbs and i > verbs[0] or units[i - 1].word.endswith(("ed", "en")))
                and any(np.index > i for np in phrases)), None)
     if by is not None and any(u.category == "word" and u.word in ("kept", "held", "forced", "made", "left")
-                              for u in units[:by]) or (by is not None and verbs and units[verbs[0]].base in
+                              and k + 1 < by and (units[k + 1].category == "actions" or units[k + 1].word == "to")
+                              for k, u in enumerate(units[:by])) or (by is not None and verbs and units[verbs[0]].base in
                                                         ("keep waiting", "be kept waiting", "kept waiting", "held up",
                                                          "stuck", "held")):
         by = None  # "the ego is kept waiting by two cars": the ego waits
@@ -1103,6 +1107,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if not targets:
             r.mark(u)
     _numbers(r, units, subject)
+    surface = [np.entity for np in phrases if np.entity is not None and np.index < first_verb]
+    r.surface = surface[:1] if by is not None and surface else []
     mentioned = [np.entity for np in phrases if np.entity is not None]
     for e in mentioned:
         if e in recent:
@@ -1289,9 +1295,11 @@ def _reference_after(units, i, phrases) -> Entity | None:
     np = next((p for p in phrases if p.first in (i + 1, i + 2) or p.index == i + 1), None)
     if np is None:
         return None
-    between = units[i + 1: np.first]
-    if all(u.category == "word" and u.word in ("of", "the", "a", "an", "to") for u in between):
-        return np.entity
+    between = units[i + 1: np.first] + units[np.first:np.index]
+    if all((u.category == "word" and (u.word in ("of", "the", "a", "an", "to", "that", "this")
+                                      or u.word not in lexicon().function_words))
+           or u.category in ("actions", "behaviours", "numbers") for u in between):
+        return np.entity  # "from behind a parked bus"
     return None
 
 
@@ -1428,7 +1436,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if from_side and not person and junction and not lane_move:
         return f"road_of_{from_side}_turn", False
     bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
-    if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level"} \
+    if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level", "overtaking"} \
             and e.road_type != "shoulder" and "ego_lane" not in f:
         return f"road_of_{bare}_turn", False
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
@@ -1445,6 +1453,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = "right" if e.type in V.VULNERABLE_TYPES else "left"
     if person and crossing and side is None and has_crosswalk and not behind:
         return "near_the_crosswalk", False
+    if bare and action == "stop" and not person and not f & {"ahead", "behind", "level"}:
+        ahead = True  # "a bus parked on the right": met ahead
     if walking:
         if has_crosswalk and side is None and not f & {"ahead", "behind"}:
             return "near_the_crosswalk", False  # standing by the crossing
