@@ -172,8 +172,8 @@ def _units(tokens: list[Token]) -> list[Unit]:
 VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
                        "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
                        "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
-                       "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead", "with",
-                       "and", "very", "infront", "one"}
+                       "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead",
+                       "very", "infront", "one"}
 
 
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
@@ -370,6 +370,14 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
             r.notes.append("repaired: a lane count too large to read; used lanes >= 6")
             n = 6
         found.append((per_direction, int(n)))
+    if found:
+        for i, t in enumerate(tokens[:-2]):  # "a four-lane road, two in each direction"
+            n = _word_number(t)
+            after = [x.word for x in tokens[i + 1:i + 4]]
+            if n and 0 < n < TOO_LARGE and after[:1] in (["in"], ["each"], ["per"], ["a"]) and (
+                    "direction" in after or "way" in after):
+                found.append((True, int(n)))
+                r.used.add(i)
     if not found:
         return lanes
     per = [n for p, n in found if p]
@@ -429,18 +437,24 @@ def _clock_time(r: _Reader) -> tuple[str, str] | None:
     """'At 23:10' is night, '12:05' noon, '17:40' sunset, '06:30' dawn; other hours say no time of day."""
     for i, t in enumerate(r.tokens[:-1]):
         nxt = r.tokens[i + 1]
+        if t.word.isdigit() and nxt.word in ("am", "pm") and 1 <= int(t.word) <= 12:  # "at 9 pm", "6am"
+            hour = int(t.word) % 12 + (12 if nxt.word == "pm" else 0)
+            r.used.update((t.index, nxt.index))
+            return _hour_time(hour, f"{t.word} {nxt.word}")
         if read_number(t.word) is None or read_number(nxt.word) is None or nxt.index != t.index + 1:
             continue
         if not (len(nxt.word) == 2 and t.word.isdigit() and int(t.word) < 24 and nxt.word.isdigit()):
             continue
-        hour = int(t.word)
-        said = f"{t.word}:{nxt.word}"
         r.used.update((t.index, nxt.index))
-        for time, hours in (("night", range(21, 29)), ("dawn", range(5, 8)), ("noon", range(11, 15)),
-                            ("sunset", range(17, 21))):
-            if hour in hours or hour + 24 in hours:
-                return time, said
-        return None
+        return _hour_time(int(t.word), f"{t.word}:{nxt.word}")
+    return None
+
+
+def _hour_time(hour: int, said: str) -> tuple[str, str] | None:
+    for time, hours in (("night", range(21, 29)), ("dawn", range(5, 8)), ("noon", range(11, 15)),
+                        ("sunset", range(17, 21))):
+        if hour in hours or hour + 24 in hours:
+            return time, said
     return None
 
 
