@@ -64,7 +64,7 @@ ACTION_RANK = {"block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_c
                "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
                "move": 1}
 SIDES = ("left", "right")
-TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn"}
+TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn", "let", "to let"}
 LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
               "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
@@ -596,6 +596,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                                                    ("and", "but", "while", "whilst", "so", "where", "which", "who")
                                                    and _has_agent(current)):
                 close(",")
+            else:
+                current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
             continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
             if u.word in ("and", "or") and not _has_verb(current):
@@ -1075,6 +1077,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in main_verbs:
         for e in subject:
             _modify(r, e, units[i], stage, strength, units, i)
+            if e.is_ego and by is not None and units[i].meaning == "move" and units[i].base in STEERING:
+                side = next((u.meaning[5:] for k, u in enumerate(units[:i]) if u.category == "positions"
+                             and u.meaning in ("side_left", "side_right")
+                             and any(x.word == "lane" for x in units[max(0, k - 3):k])), None)
+                if side:  # "the lane to its right is moved into by the ego"
+                    e.actions.append((stage, strength, ACTION_RANK["lane_left"], r.tick(), "lane_" + side, side))
         _relational(units[i], units, i, subject, objects if by is not None else
                     [p for p in phrases if p.index > i])
     if by is not None and not verbs:  # "the road it turns into is occupied by a parked truck"
@@ -1451,6 +1459,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         return f"road_of_{from_side}_turn", False
     bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
     if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level", "overtaking"} \
+            and e.type not in V.TWO_WHEELER_TYPES \
             and e.road_type != "shoulder" and "ego_lane" not in f:
         return f"road_of_{bare}_turn", False
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
