@@ -771,7 +771,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count += 1
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
-                          "both" in words, recent)
+                          "both" in words, recent, u.base)
         if len(found) == 1 and not found[0].parent and _placed_elsewhere(found[0], units, head):
             found = []  # "a car ahead ... the car behind us": another car
         if found:
@@ -841,11 +841,20 @@ def _including_ego(units: list[Unit], head: int) -> bool:
             and any(u.category == "agents" and u.meaning == "ego" for u in window[1:3]))
 
 
+GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclist", "pedestrian", "person",
+                 "ambulance", "police", "police car", "firetruck", "fire truck", "sv", "pov", "target", "agent",
+                 "people", "child", "kid", "man", "woman", "guy"}
+
+
 def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
-              recent: list[Entity]) -> list[Entity]:
+              recent: list[Entity], head: str = "") -> list[Entity]:
     """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
     pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
                                                         or (e.generic and kind in V.EGO_TYPES))]
+    if head and head not in GENERAL_NOUNS and not both and not plural:
+        same = [e for e in pool if e.head.split()[-1] == head.split()[-1]
+                or e.head in GENERAL_NOUNS and e.head != "vehicle"]
+        pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool:
         return []
     if both or plural:
@@ -865,7 +874,7 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     if other:
         last = recent[-1] if recent and recent[-1] in singles else (singles[-1] if singles else None)
         others = [e for e in singles if e is not last]
-        return [others[-1]] if others else []
+        return [others[-1]] if others else ([last] if last else [])  # "the other vehicle": the one not the ego
     mentioned = [e for e in recent if e in singles]
     return [mentioned[-1]] if mentioned else [singles[-1]]
 
@@ -1171,7 +1180,8 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Ent
                                                                  "first_in_line")
                  for u in units[verbs[0]:])
     cutting = any(units[i].meaning in ("cut_in", "block") for i in verbs)
-    if placed and cutting:
+    named = any(units[i].base in ("cut in", "cut off", "cut across", "cut") for i in verbs)  # "a cut-in", a noun
+    if placed and cutting and named:
         entity = Entity(len(r.entities), "car", False, stage, head="car")
         r.entities.append(entity)
         r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
