@@ -95,7 +95,7 @@ class Lexicon:
                                     ("d", ""), ("ing", ""), ("ing", "e"), ("'s", "")):
             if word.endswith(suffix) and len(word) > len(suffix) + 1:
                 stem = word[: -len(suffix)] + replacement
-                if stem in self.vocabulary:
+                if stem in self.vocabulary and stem not in self.function_words:  # "red" is not "re" + d
                     return stem, True
                 if suffix in ("ed", "ing") and len(stem) > 2 and stem[-1] == stem[-2]:  # stopped, running
                     if stem[:-1] in self.vocabulary:

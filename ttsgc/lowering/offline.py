@@ -60,7 +60,7 @@ FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
 OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter"}
-ACTION_RANK = {"block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 8,
+ACTION_RANK = {"sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 8,
                "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
                "move": 1}
 SIDES = ("left", "right")
@@ -769,6 +769,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
     if "more" in words and "than" in words and count is not None:
         count += 1
+    bare = not words and count is None and not plural and not label and not (
+        head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
+    if bare and any(e.head == u.base and not e.is_ego and e.count == 1 for e in r.entities):
+        definite = True  # "ego behind cyclist, cyclist swerves left": the same cyclist
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
@@ -1060,9 +1064,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         strength = 2
 
     main_verbs = []
+    participles: dict[int, list[Entity]] = {}
     for i in verbs:
         owner = _participle_owner(units, i, phrases, subject, verbs)
         if owner is not None:
+            participles[i] = [e for e in owner.group or [owner.entity] if e is not None]
             for e in owner.group or [owner.entity]:
                 if e is not None:
                     _modify(r, e, units[i], stage, 1, units, i)
@@ -1118,7 +1124,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue  # a premodifier, already given
         if u.meaning == "ego_lane" and i > 0 and units[i - 1].word in ("into", "onto", "across"):
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane"
-        owner = _modifier_owner(units, i, phrases, subject, main_verbs)
+        owner = _modifier_owner(units, i, phrases, subject, main_verbs, participles)
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
         for e in targets:
@@ -1186,7 +1192,7 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Ent
         r.entities.append(entity)
         r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
         return entity
-    if cutting:
+    if cutting and named:
         return None  # "Double cut-in on a motorway ...": the name of the case, not the ego's doing
     return _ego_entity(r, stage)
 
@@ -1272,7 +1278,7 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return recent[-1] if recent else None
     owner = [np.entity for np in phrases if np.index < i and np.entity is not None]  # whom "behind it" places
     subject = owner[-1] if owner else (previous_subject or [None])[0]
-    for e in reversed(recent):
+    for e in reversed(recent + owner[:-1]):
         if e is not subject:
             return e
     return None
@@ -1302,8 +1308,11 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     return None
 
 
-def _modifier_owner(units, i, phrases, subject, main_verbs) -> list[Entity]:
+def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) -> list[Entity]:
     before = [p for p in phrases if p.index < i and p.entity is not None]
+    last_verb = max([v for v in main_verbs if v < i] + [v for v in (participles or {}) if v < i], default=None)
+    if last_verb is not None and participles and last_verb in participles:
+        return participles[last_verb]  # "a van stopped beside it in the right lane": the van's
     verb_before = [v for v in main_verbs if v < i]
     if not verb_before:
         if before:
@@ -1479,7 +1488,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = None
     if side is None and "overtaking" in f:
         side = "left"
-    if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f):
+    if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
+                                                                 or f"bare_{side}" in f):
         side = side or ("right" if e.type == "cyclist" else "left")
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
@@ -1662,6 +1672,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     stage_count = 1 + max([e.stage for e in r.entities] + [a[0] for e in r.entities for a in e.actions] + [0])
     stages: list[list[Agent]] = [[] for _ in range(stage_count)]
     ego_action, _ = _action(ego_entity, 0) if ego_entity else (None, None)
+    ego_action = _sideways(ego_action, junction)
     ego_type = ego_entity.type if ego_entity else "car"
     ego = Agent(name="ego", type=ego_type if ego_type in V.EGO_TYPES else "car", is_ego=True,
                 action=_ego_action(ego_entity, ego_action, 0),
@@ -1671,7 +1682,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     if ego_entity is not None:
         for k in range(1, stage_count):
             if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
-                action = _ego_action(ego_entity, _action(ego_entity, k)[0], k)
+                action = _ego_action(ego_entity, _sideways(_action(ego_entity, k)[0], junction), k)
                 if language_allows_later_ego():
                     stages[k].append(Agent(name="ego", type=ego.type, is_ego=True, action=action))
                 else:
@@ -1689,6 +1700,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
+        action = _sideways(action, junction)
         if "into_ego_lane" in e.features and e.type == "pedestrian":
             action = "cross"  # "a child runs into the ego's path"
         if e.type == "pedestrian" and action in (None, "move") and "on_sidewalk" not in e.features:
@@ -1745,6 +1757,14 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
 def _placed(e: Entity) -> bool:
     return bool(e.features & {"side_left", "side_right", "front_left", "front_right", "back_left", "back_right",
                               "road_straight", "road_left", "road_right", "destination", "crosswalk"})
+
+
+def _sideways(action: str | None, junction: bool) -> str | None:
+    """'goes right': a turn at a junction, a lane change elsewhere."""
+    if action and action.startswith("sideways_"):
+        side = action.rsplit("_", 1)[-1]
+        return f"turn_{side}" if junction else f"lane_{side}"
+    return action
 
 
 def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
