@@ -53,6 +53,8 @@ AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "am", "will", 
                "then", "also", "to", "and"}
 CLAUSE_WORDS = {"while", "whilst", "as", "when", "whereas", "but", "although", "though", "because", "so", "where",
                 "and", "or", "which", "who", "that", "whose", "whom", "until", "before", "if"}
+LIGHT_PARTICIPLES = {"made", "taken", "performed", "executed", "done", "initiated", "attempted", "carried", "out",
+                     "being", "been"}
 SUBORDINATE = {"if", "when", "as", "while", "whilst", "because", "although", "though", "until", "before"}
 RELATIVES = {"which", "who", "that", "whose", "whom"}
 # Relational verbs: (subject's place relative to the object) when one of them is the ego.
@@ -183,8 +185,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     prev = tokens[m.start - 1] if m.start > 0 else None
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student")
+    after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be",
+                                                    "been", "start", "starts", "begin", "begins", "stop", "stops",
+                                                    "finish", "finishes", "while", "when", "still", "already")
     if m.category == "road" and span[-1].word == "crossing" and (len(span) == 1 or span[0].base == "pedestrian") and (
-            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and after_person)):
+            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))):
         out = []
         if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
             out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
@@ -1023,12 +1028,18 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     by = next((i for i, u in enumerate(units) if u.category == "word" and u.word == "by" and i > 0
                and (verbs and i > verbs[0] or units[i - 1].word.endswith(("ed", "en")))
                and any(np.index > i for np in phrases)), None)
+    if by is not None and verbs and units[verbs[0]].tokens[-1].word in ("turn", "change", "stop", "maneuver") and \
+            verbs[0] < by - 1 and \
+            units[by - 1].word not in LIGHT_PARTICIPLES and units[by - 1].category != "actions":
+        by = None  # "a right turn is prevented by a pedestrian": the pedestrian does not turn
     if by is not None and any(u.category == "word" and u.word in ("kept", "held", "forced", "made", "left")
                               and k + 1 < by and (units[k + 1].category == "actions" or units[k + 1].word == "to")
                               for k, u in enumerate(units[:by])) or (by is not None and verbs and units[verbs[0]].base in
                                                         ("keep waiting", "be kept waiting", "kept waiting", "held up",
                                                          "stuck", "held")):
         by = None  # "the ego is kept waiting by two cars": the ego waits
+    if by is not None and verbs and units[verbs[0]].meaning == "stop" and verbs[0] == by - 1:
+        by = None  # "the ego is stopped by a police officer": the ego stops
     subject: list[Entity] = []
     objects: list[NounPhrase] = []
     first_verb = verbs[0] if verbs else len(units)
@@ -1259,7 +1270,8 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
     u = units[k]
     if u.category == "positions" and u.meaning in ("ahead", "behind", "level", "side_left", "side_right",
                                                     "front_left", "front_right", "back_left", "back_right"):
-        return True
+        # "behind the ego a delivery van keeps its distance": the place is complete, the van is the subject
+        return u.tokens[-1].word not in ("ego", "it", "us", "you", "them", "him", "her", "me")
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
 
@@ -1737,8 +1749,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         for n in range(e.count):
             if "both_sides" in e.features:  # "cars cutting in from different directions": one on each side
                 side = SIDES[n % 2]
-                member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"})
-                                | {f"side_{side}", "from_lane", "ahead"}, road_type=e.road_type)
+                placed = {f"from_{side}"} if junction else {f"side_{side}", "from_lane", "ahead"}
+                member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"}) | placed,
+                                road_type=e.road_type)
                 position, _ = _position(member, action, junction, has_crosswalk, target_side)
                 final = _final_action(member, action, direction, position)
                 first_name = None
