@@ -66,6 +66,8 @@ ACTION_RANK = {"sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7,
                "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
                "move": 1}
 SIDES = ("left", "right")
+COMPASS_OPPOSITE = {"compass_north": "compass_south", "compass_south": "compass_north",
+                    "compass_east": "compass_west", "compass_west": "compass_east"}
 TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn", "let", "to let"}
 LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
               "near", "nearside", "side"}
@@ -1140,6 +1142,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         targets = owner if owner else []
         for e in targets:
             if e.is_ego and u.category == "positions":
+                if u.meaning.startswith("compass_"):
+                    e.features.add(u.meaning)
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
                 if reference is not None and not reference.is_ego and u.meaning in INVERSE:
@@ -1705,6 +1709,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     resolved: dict[int, tuple[str, str]] = {}
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
+    heading = next((f for f in (ego_entity.features if ego_entity else ()) if f.startswith("compass_")), None)
+    for e in others:  # "the AV was travelling north ... a van heading south": compass headings against the ego's
+        own = next((f for f in e.features if f.startswith("compass_")), None)
+        if heading and own and own != heading:
+            e.features.add("road_straight" if COMPASS_OPPOSITE[heading] == own else "cross_road")
     if ego_entity is not None and "first_in_line" in ego_entity.features:
         for e in others:  # "three cars including the ego wait, the ego is first": the others queue behind it
             group = e.parent or e
