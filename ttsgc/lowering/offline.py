@@ -237,7 +237,8 @@ def _road(r: _Reader) -> RoadSpec:
             put("traffic_light", False)  # "runs a red light"
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
                                                                                           "signaled") \
-                and k > 0 and units[k - 1].category == "agents":
+                and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
+                    k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
         if u.category == "road":
             r.mark(u)
@@ -945,7 +946,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
     turning = units[k].meaning in ("turn", "u_turn")
-    for j, u in enumerate(units[k + 1: k + 4], start=k + 1):
+    for j, u in enumerate(units[k + 1: k + (6 if turning else 4)], start=k + 1):
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
@@ -954,7 +955,7 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
             r.mark(u)
             u.meaning = "used"
             return "left" if "left" in u.base else "right"
-        if u.category in ("agents", "actions"):
+        if u.category in ("actions",) or (u.category == "agents" and u.meaning != "none"):
             return None
     return None
 
@@ -1124,6 +1125,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 any(units[i].base in ("approach", "enter", "reach") for i in main_verbs):
             e.features.add("junction_approach")  # "a vehicle approaches the intersection"
 
+    for i in main_verbs:  # "turns into a driveway on the left": where it turns, not where it is
+        if units[i].meaning in ("turn_left", "turn_right"):
+            for u in units[i + 1:i + 5]:
+                if u.category == "positions" and u.meaning == "side_" + units[i].meaning[5:]:
+                    r.mark(u)
+                    u.meaning = "used"
     # positions, behaviours and road types: to the noun they follow, else the subject
     for i, u in enumerate(units):
         if u.category not in ("positions", "behaviours") or u.meaning == "used":
@@ -1474,9 +1481,12 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         if not f & {"behind", "level", "overtaking"}:
             f.add("ahead")
     side = _side_of(f)
+    lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
+    if "toward" in f and not lane_move and not (side and f"bare_{side}" not in f):
+        f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no
     if "road_straight" in f and not person:  # where it comes from wins over where it heads
         return ("road_of_straight", False) if junction else ("front_left", True)
     for s in SIDES:
@@ -1489,7 +1499,6 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
         return "near_the_crosswalk", False
     from_side = next((s for s in SIDES if f"from_{s}" in f), None)
-    lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     if from_side and not person and junction and not lane_move:
         return f"road_of_{from_side}_turn", False
     bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
