@@ -1818,6 +1818,9 @@ def _unknown(r: _Reader) -> list[str]:
     lex = lexicon()
     out = []
     for t in r.tokens:
+        if t.misspelt:
+            out.append(f"{t.misspelt} (read as {t.word})")
+            continue
         if t.index in r.used or t.word == "," or read_number(t.word) is not None:
             continue
         if t.word in lex.function_words or t.base in lex.vocabulary or t.word in lex.vocabulary:
