@@ -346,8 +346,9 @@ def test_the_llm_worked_examples_come_from_the_dev_split():
 
 
 def test_misspelt_words_close_to_one_known_word_are_read_as_it_and_reported():
-    lowered = lower("pedestrain crosing infront of the ego, motorcyle oncomming at the interesection")
+    lowered = lower("pedestrain crosses infront of the ego, a motrocycle comes from the oposite direction at the "
+                    "interesection")
     found = sorted((a.type, a.action, a.relative_to_ego or "ego") for a in lowered.scenario.agents())
     assert ("pedestrian", "cross_the_road", "front") in found
     assert ("motorcycle", "go_straight", "road_of_straight") in found
-    assert "oncomming (read as oncoming)" in lowered.unknown
+    assert "motrocycle (read as motorcycle)" in lowered.unknown

@@ -96,7 +96,7 @@ class Lexicon:
                                     ("d", ""), ("ing", ""), ("ing", "e"), ("'s", "")):
             if word.endswith(suffix) and len(word) > len(suffix) + 1:
                 stem = word[: -len(suffix)] + replacement
-                if stem in self.vocabulary and stem not in self.function_words:  # "red" is not "re" + d
+                if stem in self.vocabulary and (len(stem) > 2 or stem not in self.function_words):  # "red" != "re"+d
                     return stem, True
                 if suffix in ("ed", "ing") and len(stem) > 2 and stem[-1] == stem[-2]:  # stopped, running
                     if stem[:-1] in self.vocabulary:
@@ -119,7 +119,7 @@ def _nearest(lex: "Lexicon", word: str) -> str | None:
 def _corrected(lex: "Lexicon", word: str) -> str | None:
     """A misspelling close enough to one known word to be read as it (one or two letters off)."""
     pool = [w for w in lex.content_words if abs(len(w) - len(word)) <= 1 and w[0] == word[0]]
-    found = difflib.get_close_matches(word, pool, n=2, cutoff=0.85)
+    found = difflib.get_close_matches(word, pool, n=2, cutoff=0.86)
     if len(found) == 1 or (len(found) == 2 and difflib.SequenceMatcher(None, word, found[0]).ratio() >
                            difflib.SequenceMatcher(None, word, found[1]).ratio()):
         return found[0]
@@ -258,7 +258,7 @@ def tokenize(text: str) -> list[Token]:
         for part in lex.spelling.get(word, word).split():
             base, inflected = lex.base(part)
             misspelt = ""
-            if base not in lex.vocabulary and len(part) >= 4 and part.isalpha():
+            if base not in lex.vocabulary and len(part) >= 4 and part.isalpha() and not part.endswith("ing"):
                 guess = _corrected(lex, part)
                 if guess is not None:  # "pedestrain", "interesection": read as the word meant
                     misspelt, part = part, guess

@@ -1521,8 +1521,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = "right" if e.type in V.VULNERABLE_TYPES else "left"
     if person and crossing and side is None and has_crosswalk and not behind:
         return "near_the_crosswalk", False
-    if bare and action == "stop" and not person and not f & {"ahead", "behind", "level"}:
-        ahead = True  # "a bus parked on the right": met ahead
+    if side and action == "stop" and not person and not f & {"ahead", "behind", "level", "overtaking"} \
+            and "target_lane" not in f:
+        ahead = True  # "a bus parked on the right", "a lorry parked on the nearside": met ahead
     if walking:
         if has_crosswalk and side is None and not f & {"ahead", "behind"}:
             return "near_the_crosswalk", False  # standing by the crossing
