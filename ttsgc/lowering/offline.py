@@ -800,7 +800,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     while before > lo and units[before].category in ("actions", "behaviours"):
         before -= 1  # "between parked cars"
     if count is None and plural and not words and before >= lo and units[before].category == "word" and \
-            units[before].word in SCENERY_PREPOSITIONS:
+            units[before].word in SCENERY_PREPOSITIONS and kind not in V.VULNERABLE_TYPES:
         for k in range(before + 1, head):
             r.mark(units[k])
             units[k].category = "word"
@@ -950,7 +950,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
-                    u.meaning.startswith("road") and not turning):
+                    u.meaning.startswith("road") and not turning) or (
+                    not turning and any(x.word == "from" for x in units[k + 1:j])):
                 return None  # where it comes from, not where it goes
             r.mark(u)
             u.meaning = "used"
@@ -1069,7 +1070,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate:
             subject = list(previous_subject)
         elif verbs:
-            subject = [e for e in [_implied(r, units, stage, verbs)] if e is not None]
+            inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
+            subject = [e for e in [_implied(r, units, stage, verbs, inside)] if e is not None]
     if any(e.includes_ego for e in subject):  # "three cars including the ego wait": the ego waits too
         subject = subject + [_ego_entity(r, stage)]
     if clause.condition:
@@ -1201,15 +1203,16 @@ def _ego_entity(r: _Reader, stage: int) -> Entity:
     return ego
 
 
-def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Entity | None:
+def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside=frozenset()) -> Entity | None:
     """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
     ('aggressive cut-in from right lane ahead' is a car's)."""
     placed = any(u.category == "positions" and u.meaning not in ("ego_lane", "into_ego_lane", "used", "target_lane",
-                                                                 "first_in_line")
-                 for u in units[verbs[0]:])
+                                                                 "first_in_line", "crosswalk", "destination")
+                 and k not in inside for k, u in enumerate(units) if k > verbs[0])
     cutting = any(units[i].meaning in ("cut_in", "block") for i in verbs)
     named = any(units[i].base in ("cut in", "cut off", "cut across", "cut") for i in verbs)  # "a cut-in", a noun
-    if placed and cutting and named:
+    turning_elsewhere = placed and any(units[i].meaning in ("u_turn",) for i in verbs)
+    if placed and ((cutting and named) or turning_elsewhere):
         entity = Entity(len(r.entities), "car", False, stage, head="car")
         r.entities.append(entity)
         r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
@@ -1514,7 +1517,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if side is None and "overtaking" in f:
         side = "left"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
-                                                                 or f"bare_{side}" in f):
+                                                                 or f"bare_{side}" in f or f"from_{side}" in f):
         side = side or ("right" if e.type == "cyclist" else "left")
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
