@@ -212,6 +212,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"'ve\b", " have", text)
     text = re.sub(r"'m\b", " am", text)
     text = re.sub(r"'d\b", " would", text)
+    text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
     text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end
     text = re.sub(r"(\d)(kmh|mph|m|s|km|metres|meters|seconds)\b", r"\1 \2", text)

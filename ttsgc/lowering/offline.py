@@ -577,6 +577,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if new_sentence:
             close()
         prev_word = units[k - 1].word if k else ""
+        if u.category == "sequence" and prev_word in RELATIVES:
+            r.mark(u)
+            continue  # "a motorcyclist who then overtakes it": the same clause, in order
         if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and \
                 nxt.tokens[0].word.endswith("ing"):
             continue  # "after braking for a fox": when, not a stage
@@ -820,6 +823,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                     generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
+    if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
+        entity.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "a queue of four cars"
     elif u.base == "tailgater":
         entity.features.add("behind")
     if _including_ego(units, head):
