@@ -58,7 +58,7 @@ LIGHT_PARTICIPLES = {"made", "taken", "performed", "executed", "done", "initiate
 SUBORDINATE = {"if", "when", "as", "while", "whilst", "because", "although", "though", "until", "before"}
 RELATIVES = {"which", "who", "that", "whose", "whom"}
 # Relational verbs: (subject's place relative to the object) when one of them is the ego.
-FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear"}
+FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
 OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter"}
@@ -1055,6 +1055,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     if by is not None:
         actor = next(np for np in phrases if np.index > by)
         subject = actor.group or [actor.entity]
+        if any(u.category == "positions" and u.meaning == "ego_lane" for u in units[:by]) and actor.entity:
+            actor.entity.features.add("into_ego_lane")  # "the ego's lane is entered by a motorbike"
         objects = [np for np in phrases if np is not actor]
         r.mark(units[by])
     else:
