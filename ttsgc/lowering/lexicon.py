@@ -119,7 +119,8 @@ def _nearest(lex: "Lexicon", word: str) -> str | None:
 def _corrected(lex: "Lexicon", word: str) -> str | None:
     """A misspelling close enough to one known word to be read as it (one or two letters off)."""
     pool = [w for w in lex.content_words if abs(len(w) - len(word)) <= 1 and w[0] == word[0]]
-    found = difflib.get_close_matches(word, pool, n=2, cutoff=0.86)
+    found = [w for w in difflib.get_close_matches(word, pool, n=2, cutoff=0.86)
+             if not (w.startswith(word) or word.startswith(w))]  # "commute" is no misspelt "commuter"
     if len(found) == 1 or (len(found) == 2 and difflib.SequenceMatcher(None, word, found[0]).ratio() >
                            difflib.SequenceMatcher(None, word, found[1]).ratio()):
         return found[0]

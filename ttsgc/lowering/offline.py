@@ -181,9 +181,13 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
 
 
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
-    """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk."""
+    """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
+    'parked right at the corner' says where exactly, not which side."""
     span = tuple(tokens[m.start:m.end])
     nxt = tokens[m.end].word if m.end < len(tokens) else ""
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and \
+            tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
+        return [Unit(m.start, m.end, "word", "right", span)]
     prev = tokens[m.start - 1] if m.start > 0 else None
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student")
@@ -802,8 +806,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     before = first - 1
     while before > lo and units[before].category in ("actions", "behaviours"):
         before -= 1  # "between parked cars"
-    if count is None and plural and not words and before >= lo and units[before].category == "word" and \
-            units[before].word in SCENERY_PREPOSITIONS and kind not in V.VULNERABLE_TYPES:
+    scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS
+    if scenery and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
+            not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
+            count is None and plural and before >= lo and "of" in words
+            and units[before].word in ("row", "line", "lot", "rows")):  # "a row of parked cars": scenery
         for k in range(before + 1, head):
             r.mark(units[k])
             units[k].category = "word"
@@ -941,6 +948,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "waiting for the light to change"
         if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
             e.features.add("overtaking")
+        if action == "stop" and {t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
+                                                                 "stall", "stalled", "double", "abandon"}:
+            e.features.add("parked")
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
         e.actions.append((stage, strength, ACTION_RANK.get(action, 0), r.tick(), action, direction))
@@ -1107,7 +1117,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     if not main_verbs and len(subject) == 1 and subject[0].is_ego:  # terse: "ego right at lights", "ego left"
         ego_np = next((p for p in phrases if p.entity is subject[0]), None)
         after = units[ego_np.index + 1] if ego_np is not None and ego_np.index + 1 < len(units) else None
-        if after is not None and after.category == "positions" and after.meaning in ("side_left", "side_right"):
+        if after is not None and after.category == "positions" and after.meaning in ("side_left", "side_right") \
+                and len(after.tokens) == 1:
             r.mark(after)
             after.meaning = "used"
             subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
@@ -1335,7 +1346,8 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
     later = any(v > i for v in verbs)
     word = units[i].tokens[0].word
-    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood") or light
+    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood", "stuck",
+                                                                          "broken") or light
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
         return np
     return None
@@ -1531,8 +1543,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = "right" if e.type in V.VULNERABLE_TYPES else "left"
     if person and crossing and side is None and has_crosswalk and not behind:
         return "near_the_crosswalk", False
-    if side and action == "stop" and not person and not f & {"ahead", "behind", "level", "overtaking"} \
-            and "target_lane" not in f:
+    if side and action == "stop" and "parked" in f and not person and \
+            not f & {"ahead", "behind", "level", "overtaking"} and "target_lane" not in f:
         ahead = True  # "a bus parked on the right", "a lorry parked on the nearside": met ahead
     if walking:
         if has_crosswalk and side is None and not f & {"ahead", "behind"}:
