@@ -1204,10 +1204,12 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
         return True
     for u in reversed(units[max(0, i - 3):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
-                                               "failing", "refused", "refuses", "without"):
+                                               "failing", "refused", "refuses", "without", "unable") or (
+                u.category == "numbers" and u.meaning == "0"):
             return True
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
-                                                     "is", "are", "be", "can", "could")) \
+                                                     "is", "are", "be", "can", "could", "room", "space", "chance",
+                                                     "able", "unable", "time")) \
                 and u.category != "actions":
             return False
     return False
