@@ -966,7 +966,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
                                                         "from_left", "from_right"):
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
                     u.meaning.startswith("road") and not turning) or (
-                    not turning and any(x.word == "from" for x in units[k + 1:j])):
+                    not turning and any(x.word == "from" for x in units[k + 1:j])) or (
+                    not turning and "out" in units[k].base.split()):  # "pulling out of a stop on the right"
                 return None  # where it comes from, not where it goes
             r.mark(u)
             u.meaning = "used"
@@ -1107,7 +1108,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     _modify(r, e, units[i], stage, 1, units, i)
         else:
             main_verbs.append(i)
-    if not main_verbs and not phrases and len(units) > 1 and units[0].category == "positions" and \
+    if not main_verbs and not any(np.index < 2 for np in phrases) and len(units) > 1 and \
+            units[0].category == "positions" and \
             units[0].meaning in ("side_left", "side_right") and len(units[0].tokens) == 1 and \
             units[1].category == "word" and units[1].word in ("at", "into", "onto", "on"):
         ego = _ego_entity(r, stage)  # terse: "right at the stop sign"
@@ -1537,6 +1539,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = None
     if side is None and "overtaking" in f:
         side = "left"
+    if action == "block" and side and "from_lane" in f and not behind:
+        ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"bare_{side}" in f or f"from_{side}" in f):
         side = side or ("right" if e.type == "cyclist" else "left")
