@@ -1326,6 +1326,10 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return recent[-1] if recent else None
     owner = [np.entity for np in phrases if np.index < i and np.entity is not None]  # whom "behind it" places
     subject = owner[-1] if owner else (previous_subject or [None])[0]
+    if len(previous_subject) == 1 and previous_subject[0].is_ego and previous_subject[0] is not subject and \
+            not any(np.index < i and np.entity is not None and not np.entity.is_ego and np.entity is not subject
+                    for np in phrases):
+        return previous_subject[0]  # "the ego is tailgated by a truck, and the car in front of it stops"
     for e in reversed(recent + owner[:-1]):
         if e is not subject:
             return e
