@@ -39,6 +39,17 @@ NAME_PREFIX = {"car": "c", "truck": "t", "bus": "b", "motorcycle": "m", "cyclist
                "ambulance": "a", "police": "po", "firetruck": "f"}
 MAX_AGENTS_PER_MENTION = 12
 BARE_PLURAL_COUNT = 2  # "cars pass", "a crowd of children": the gold conventions' count for an unstated size
+# What a sentence leaves open, chosen in one place (the corpus conventions' readings; a seeded sampler of the
+# unspecified can vary these and nothing else).
+UNSPECIFIED = {
+    "side_of_a_crossing_road": "left",  # "a vehicle from a perpendicular direction"
+    "side_of_an_overtaker": "left",
+    "side_of_a_cut_in": "left", "side_of_a_cyclist_cut_in": "right",
+    "side_beside_a_vehicle": "left", "side_beside_a_person": "right",
+    "side_of_a_sidewalk_walker": "right",
+    "turn_direction": "left",  # "turns" with no side
+    "ego_lane_change_direction": "left",  # "the ego pulls out to pass"
+}
 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
 DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone"}
@@ -1525,7 +1536,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "destination" in f:
         return "at_the_destination", False
     if "cross_road" in f and not person:
-        return f"road_of_{side or 'left'}_turn", False
+        return f"road_of_{side or UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
         return "near_the_crosswalk", False
     from_side = next((s for s in SIDES if f"from_{s}" in f), None)
@@ -1537,20 +1548,20 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             and e.road_type != "shoulder" and "ego_lane" not in f:
         return f"road_of_{bare}_turn", False
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
-        return "road_of_left_turn", False
+        return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
     if "ego_lane" in f and not lane_move and "into_ego_lane" not in f:
         side = None
     if side is None and "overtaking" in f:
-        side = "left"
+        side = UNSPECIFIED["side_of_an_overtaker"]
     if action == "block" and side and "from_lane" in f and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"bare_{side}" in f or f"from_{side}" in f):
-        side = side or ("right" if e.type == "cyclist" else "left")
+        side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
-        side = "right" if e.type in V.VULNERABLE_TYPES else "left"
+        side = UNSPECIFIED["side_beside_a_person" if e.type in V.VULNERABLE_TYPES else "side_beside_a_vehicle"]
     if person and crossing and side is None and has_crosswalk and not behind:
         return "near_the_crosswalk", False
     if side and action == "stop" and "parked" in f and not person and \
@@ -1559,7 +1570,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if walking:
         if has_crosswalk and side is None and not f & {"ahead", "behind"}:
             return "near_the_crosswalk", False  # standing by the crossing
-        side = side or "right"
+        side = side or UNSPECIFIED["side_of_a_sidewalk_walker"]
     if side is not None:
         if person and crossing and not behind:
             return f"front_{side}", False
@@ -1590,7 +1601,7 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action in ("turn_left", "turn_right"):
         return action
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or 'left'}"
+        return f"turn_{direction or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action == "lane_change":
@@ -1839,11 +1850,11 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
     if action in ("turn_left", "turn_right", "stop"):
         return action
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or 'left'}"
+        return f"turn_{direction or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
-        return f"change_lane_to_{direction or 'left'}"  # "pulling out to pass": into the lane on the left
+        return f"change_lane_to_{direction or UNSPECIFIED['ego_lane_change_direction']}"  # "pulling out to pass"
     return "go_straight"
 
 
