@@ -1,8 +1,9 @@
 """English -> the scenario language through an LLM (Claude, via the anthropic SDK's Messages API).
 
 The system prompt (language reference, the vocabulary from its one source, the reading conventions, worked
-examples drawn from the lowering corpus's dev split) is rendered from templates/ with jinja2 and cached. A valid
-answer goes through the same plan inference as the offline rules (implied road conditions, repairs, notes). The answer is parsed and checked like any .tsg file; on any error the
+examples drawn from the lowering corpus's dev split) is rendered from templates/ with jinja2 and cached. An
+answer goes through the same plan inference as the offline rules (implied road conditions, repairs, notes)
+before the language's rules check it. The answer is parsed and checked like any .tsg file; on any error the
 diagnostics are sent back and the model tries again, three tries in all. The answer is only ever parsed by the
 language's grammar, never evaluated.
 """

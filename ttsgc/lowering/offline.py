@@ -73,9 +73,11 @@ FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
 OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter"}
-ACTION_RANK = {"sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 8,
-               "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
-               "move": 1}
+ACTION_RANK = {  # the more specific predicate wins among equally strong ones
+    "sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6,
+    "lane_change": 6, "turn_left": 8, "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2,
+    "go_straight": 1, "move": 1,
+}
 SIDES = ("left", "right")
 COMPASS_OPPOSITE = {"compass_north": "compass_south", "compass_south": "compass_north",
                     "compass_east": "compass_west", "compass_west": "compass_east"}
@@ -358,9 +360,6 @@ def _speed_limits(r: _Reader) -> list[str]:
     return out
 
 
-LANE_ROADS = {"road", "roads", "street", "highway", "motorway", "freeway", "carriageway", "avenue", "roadway",
-              "boulevard", "expressway", "lane", "lanes", "way", "section", "stretch", "arterial", "dual"}
-
 
 PER_DIRECTION = {"per", "each", "every", "in", "a", "one"}
 
@@ -617,10 +616,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "comma":
             only_ego = all(x.category == "agents" and x.meaning == "ego" or x.category == "word" and x.word == "the"
                            for x in current)
-            if _has_verb(current) or condition or (_has_agent(current) and not only_ego
-                                                   and _starts_noun(units, k + 1)) or (nxt is not None and nxt.category == "word" and nxt.word in
-                                                   ("and", "but", "while", "whilst", "so", "where", "which", "who")
-                                                   and _has_agent(current)):
+            new_noun = _has_agent(current) and not only_ego and _starts_noun(units, k + 1)
+            joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
+                "and", "but", "while", "whilst", "so", "where", "which", "who")
+            if _has_verb(current) or condition or new_noun or joined:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -724,8 +723,10 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
 
 ADJECTIVE_POSITIONS = {"oncoming", "opposing", "leading", "lead", "following", "trailing", "adjacent", "preceding",
                        "opposite", "front", "rear", "back", "tailgating"}
-DETERMINERS = DEFINITE | INDEFINITE | {"his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second",
-                                       "third", "first", "same", "further", "additional", "extra", "its", "their"}
+DETERMINERS = DEFINITE | INDEFINITE | {
+    "his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second", "third",
+    "first", "same", "further", "additional", "extra", "its", "their",
+}
 
 
 def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, int, set[str], list[Unit]]:
@@ -1063,11 +1064,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             verbs[0] < by - 1 and \
             units[by - 1].word not in LIGHT_PARTICIPLES and units[by - 1].category != "actions":
         by = None  # "a right turn is prevented by a pedestrian": the pedestrian does not turn
-    if by is not None and any(u.category == "word" and u.word in ("kept", "held", "forced", "made", "left")
-                              and k + 1 < by and (units[k + 1].category == "actions" or units[k + 1].word == "to")
-                              for k, u in enumerate(units[:by])) or (by is not None and verbs and units[verbs[0]].base in
-                                                        ("keep waiting", "be kept waiting", "kept waiting", "held up",
-                                                         "stuck", "held")):
+    made_to = by is not None and any(
+        u.category == "word" and u.word in ("kept", "held", "forced", "made", "left") and k + 1 < by
+        and (units[k + 1].category == "actions" or units[k + 1].word == "to") for k, u in enumerate(units[:by]))
+    waiting = by is not None and verbs and units[verbs[0]].base in (
+        "keep waiting", "be kept waiting", "kept waiting", "held up", "stuck", "held")
+    if made_to or waiting:
         by = None  # "the ego is kept waiting by two cars": the ego waits
     if by is not None and verbs and units[verbs[0]].meaning == "stop" and verbs[0] == by - 1:
         by = None  # "the ego is stopped by a police officer": the ego stops
