@@ -223,7 +223,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(left|right) hand\b", r"\1", text)  # "the right-hand lane"
     text = re.sub(r"\b(that|this|its|our|their) (left|right) lane", r"the \2 lane", text)
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
-    text = re.sub(r"\b([a-z]{2,3})(\d)\b", r"\1#\2", text)  # SV1, POV2: a label, not a count
+    text = re.sub(r"\b([a-z]{1,3})(\d)\b", r"\1#\2", text)  # SV1, POV2, V1: a label, not a count
     tokens: list[Token] = []
     sentence = 0
     raw = TOKEN.findall(text)

@@ -72,7 +72,7 @@ RELATIVES = {"which", "who", "that", "whose", "whom"}
 FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
-OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter"}
+OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake"}
 ACTION_RANK = {  # the more specific predicate wins among equally strong ones
     "sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6,
     "lane_change": 6, "turn_left": 8, "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2,
@@ -614,8 +614,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             condition = True
             continue
         if u.category == "comma":
-            only_ego = all(x.category == "agents" and x.meaning == "ego" or x.category == "word" and x.word == "the"
-                           for x in current)
+            only_ego = all(x.category == "agents" and (x.meaning == "ego" or x.tokens[-1].label)
+                           or x.category == "word" and x.word == "the" for x in current)  # appositions follow
             new_noun = _has_agent(current) and not only_ego and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
@@ -1282,6 +1282,14 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
     out: list[NounPhrase] = []
     for np in phrases:
         prev = out[-1] if out else None
+        if prev is not None and np.entity is not None and np.entity.is_ego and prev.entity is not None and \
+                prev.entity.label and not prev.entity.is_ego and \
+                all(u.category == "comma" for u in units[prev.index + 1: np.first]):
+            np.entity.label = prev.entity.label  # "V1 (the AV)": V1 is the ego
+            if prev.entity in r.entities:
+                r.entities.remove(prev.entity)
+            out[-1] = np
+            continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural:
             between = units[prev.index + 1: np.first]
@@ -1294,7 +1302,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
             if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
                    u.category == "comma" for u in between) and (copula or (between and prev.entity.is_ego)
-                                                               or (prev.entity.label and not between)):
+                                                               or prev.entity.label):
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
@@ -1333,6 +1341,11 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return people[-1] if people else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
                            (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind")))
+    if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
+        things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
+        if not things and previous_subject:
+            vehicles = [e for e in recent if e.type not in V.VULNERABLE_TYPES]
+            return vehicles[-1] if vehicles else previous_subject[0]
     if not as_object:
         if previous_subject:
             return previous_subject[0]
@@ -1513,7 +1526,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     """(position, oncoming) from the features, once the whole text is read: side x ahead/behind x which road,
     against the junction context and the lane the ego moves into (`target_side`)."""
     f = set(e.features)
-    crossing = action == "cross" and e.type in V.VULNERABLE_TYPES
+    crossing = (action == "cross" or (action == "walk" and "in_road" in f)) and e.type in V.VULNERABLE_TYPES
     person = e.type == "pedestrian" or crossing
     walking = e.type == "pedestrian" and not crossing and (
         action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
@@ -1627,7 +1640,7 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "walk":
         if e.type != "pedestrian":
             return "go_straight"
-        return "cross_the_road" if "crosswalk" in e.features else "on_the_sidewalk"
+        return "cross_the_road" if e.features & {"crosswalk", "in_road"} else "on_the_sidewalk"
     return "go_straight"
 
 
@@ -1783,6 +1796,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             action = "cross"  # people on foot in the road cross it
         if "into_ego_lane" in e.features and action in ("move", "lane_change"):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
+        if action in ("cut_in", "lane_change") and (_placed(e) and e.features & {"road_left", "road_right",
+                                                                                 "road_straight", "cross_road"}):
+            action = "move"  # "pulled out of a side road on the left": a junction road, no lane change
         if action == "cut_in" and direction and "into_ego_lane" not in e.features:
             action = "lane_" + direction  # "swings into the right lane"
         position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
