@@ -1659,8 +1659,8 @@ def _stage_name(k: int, total: int) -> str:
 
 
 def _name(prompt: str) -> str:
-    words = re.findall(r"[A-Za-z0-9][A-Za-z0-9'-]*", prompt)
-    return (" ".join(words[:10]) or "scene").lower().replace('"', "")
+    words = [w[:20] for w in re.findall(r"[A-Za-z0-9][A-Za-z0-9'-]*", prompt)]
+    return (" ".join(words[:10]) or "scene").lower().replace('"', "")[:80].strip()
 
 
 def lower(prompt: str, seed: int = 0) -> Lowered:
