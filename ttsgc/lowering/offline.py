@@ -1180,6 +1180,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if u.meaning == "ego_lane" and i > 0 and units[i - 1].word in ("into", "onto", "across"):
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane"
         owner = _modifier_owner(units, i, phrases, subject, main_verbs, participles)
+        if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
+                not any(e in subject for e in owner):
+            r.mark(u)
+            continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
         for e in targets:
@@ -1577,8 +1581,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
         side = UNSPECIFIED["side_beside_a_person" if e.type in V.VULNERABLE_TYPES else "side_beside_a_vehicle"]
-    if person and crossing and side is None and has_crosswalk and not behind:
-        return "near_the_crosswalk", False
+    if person and crossing and has_crosswalk and not behind:
+        return "near_the_crosswalk", False  # people crossing where there is a crosswalk cross at it
     if side and action == "stop" and "parked" in f and not person and \
             not f & {"ahead", "behind", "level", "overtaking"} and "target_lane" not in f:
         ahead = True  # "a bus parked on the right", "a lorry parked on the nearside": met ahead
