@@ -815,6 +815,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 "car", "vehicle", "truck", "bus") and (nxt is None or nxt.category not in ("positions", "word")
                                                        or nxt.word in AUXILIARIES):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
+        if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
+                not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions"):
+            ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
+            r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
+            return NounPhrase(ego, head, first)
     before = first - 1
     while before > lo and units[before].category in ("actions", "behaviours"):
         before -= 1  # "between parked cars"
@@ -1551,6 +1556,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         return ("road_of_straight", False) if junction else ("front_left", True)
     for s in SIDES:
         if f"road_{s}" in f:
+            if person and crossing and not junction:  # "crossing from the left" with no junction: from that kerb
+                return f"front_{s}", False
             return f"road_of_{s}_turn", False
     if "destination" in f:
         return "at_the_destination", False
@@ -1707,7 +1714,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals))
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities)
     junction_features = any(f in e.features for e in r.entities for f in ("road_left", "road_right",
-                                                                           "destination", "cross_road"))
+                                                                           "destination", "cross_road")
+                            if not (e.type == "pedestrian" and f.startswith("road_")))  # "crossing from the left"
     junction = road.junction is not False and (junction_words or turns or junction_features or
                                                any("road_straight" in e.features for e in r.entities) and turns)
     has_crosswalk = any(w in V.CROSSWALK_OBJECTS for w in road.required_objects)
