@@ -1716,7 +1716,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
                        "no template used")
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals))
-    turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities)
+    turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
+        (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
+        for st in {a[0] for a in e.actions})  # "once it turns green we turn left": a later turn is at a junction
     junction_features = any(f in e.features for e in r.entities for f in ("road_left", "road_right",
                                                                            "destination", "cross_road")
                             if not (e.type == "pedestrian" and f.startswith("road_")))  # "crossing from the left"
