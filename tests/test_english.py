@@ -352,3 +352,41 @@ def test_misspelt_words_close_to_one_known_word_are_read_as_it_and_reported():
     assert ("pedestrian", "cross_the_road", "front") in found
     assert ("motorcycle", "go_straight", "road_of_straight") in found
     assert "motrocycle (read as motorcycle)" in lowered.unknown
+
+
+# -- general classes: reports, instructions, later stages ------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    # a person crossing from a side with no junction named is ahead on that side, and makes no junction
+    ("jaywalker crossing from the left on a foggy night",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
+    # 'the vehicle' named before anyone else is the report's protagonist, the ego
+    ("The vehicle had been travelling at about 30 km/h when a pedestrian stepped off the kerb on the right "
+     "and crossed in front of it.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
+    # the ego braking without coming to a halt is a reaction, not its action
+    ("The AV was travelling in the right lane when a silver SUV in the lane to its left merged into its lane "
+     "directly ahead. The AV braked to avoid a collision.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    # a bare verb opening a clause and done to the agent just named is an instruction to the ego
+    ("stopped bus ahead, overtake it on the left",
+     [("bus", "stop", "front"), ("car", "change_lane_to_left", "ego")]),
+])
+def test_general_reading_of_reports_and_instructions(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_a_braked_halt_is_still_a_stop():
+    assert ("car", "stop", "ego") in agents("The test car braked to a halt behind a parked van.")
+
+
+def test_heavy_rain_as_an_adverb():
+    assert lower("It was dark and raining heavily; a cyclist rode ahead.").scenario.weather.condition == "hard_rain"
+
+
+def test_a_turn_the_ego_makes_in_a_later_stage_puts_the_scene_at_a_junction():
+    scene = lower("My car is waiting at a red light, and once it turns green we turn left while an oncoming "
+                  "van goes straight.").scenario
+    assert scene.road.junction is True
+    assert ("car", "go_straight", "road_of_straight") in [(a.type, a.action, a.relative_to_ego)
+                                                          for a in scene.agents()]

@@ -963,6 +963,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
                 any("lane" in x.base for x in clause_units[k + 1:k + 5]):
             return  # "waiting for the light to change"
+        if action == "move" and e.is_ego and set(u.base.split()) & OVERTAKING and clause_units is not None \
+                and k is not None:
+            side = _direction_after(r, clause_units, k) or next(
+                (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
+                 and x.meaning in ("side_left", "side_right")), None)
+            if side:
+                action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
         if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
             e.features.add("overtaking")
         if action == "stop" and {t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
@@ -1107,7 +1114,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject = [clause.antecedent]
         elif clause.condition:
             subject = []
-        elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate:
+        elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate \
+                and not _imperative_on(units, verbs, phrases, previous_subject):
             subject = list(previous_subject)
         elif verbs:
             inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
@@ -1241,6 +1249,15 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
                 and u.category != "actions":
             return False
     return False
+
+
+def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase], previous: list[Entity]) -> bool:
+    """'stopped bus ahead, overtake it on the left': a bare verb opening a clause, done to the agent just named,
+    is the ego's (an instruction), not that agent's."""
+    if not verbs or verbs[0] != 0 or units[0].tokens[0].word != units[0].tokens[0].base:
+        return False
+    return any(u.word in ("it", "them", "him", "her") for u in units[1:3]) or any(
+        np.index > 0 and np.entity is not None and np.entity in previous for np in phrases)
 
 
 def _ego_entity(r: _Reader, stage: int) -> Entity:
