@@ -1131,6 +1131,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     participles: dict[int, list[Entity]] = {}
     for i in verbs:
         owner = _participle_owner(units, i, phrases, subject, verbs)
+        if owner is not None and not main_verbs and participles and not any(v > i for v in verbs) and \
+                all(e in subject for owners in participles.values() for e in owners) and owner.entity not in subject:
+            owner = None  # "a cyclist riding ahead of it swerved left": the subject's participle, then its finite verb
         if owner is not None:
             participles[i] = [e for e in owner.group or [owner.entity] if e is not None]
             for e in owner.group or [owner.entity]:
