@@ -219,6 +219,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
 
 # -- road, weather, kinds -----------------------------------------------------------------------------------
 
+POSSESSIVES = {"its", "his", "her", "their"}
+
+
 def _road(r: _Reader) -> RoadSpec:
     fields: dict = {"required_signals": [], "without_signals": [], "required_objects": [], "without_objects": []}
     junction: bool | None = None
@@ -257,6 +260,11 @@ def _road(r: _Reader) -> RoadSpec:
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
+                any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
+                any(x.word in ("flashing", "flash", "flashed") for x in units[max(0, k - 1):k + 2])):
+            r.mark(u)
+            continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
         if u.category == "road":
             r.mark(u)
             meaning = u.meaning
