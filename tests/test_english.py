@@ -398,11 +398,6 @@ def test_a_vehicles_own_lights_are_no_traffic_light():
     assert "traffic_light" in road("The bus in front of you has stopped at a red light.").required_signals
 
 
-def test_a_vehicle_blocking_from_a_side_lane_is_ahead_on_that_side():
-    assert ("car", "block_the_ego", "front_right") in agents(
-        "The ego was cut off by a taxi that had been waiting in the right lane.")
-
-
 def test_a_participle_then_a_past_tense_is_the_subjects_finite_verb():
     assert ("cyclist", "change_lane_to_left", "front") in agents(
         "The test vehicle was travelling along a two-lane road. A cyclist riding ahead of it in the same lane "

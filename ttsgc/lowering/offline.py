@@ -1612,8 +1612,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = None
     if side is None and "overtaking" in f:
         side = UNSPECIFIED["side_of_an_overtaker"]
-    if action == "block" and side and not behind and e.type not in V.VULNERABLE_TYPES:
-        ahead = True  # "cuts off the ego from the right adjacent lane", "a taxi waiting in the right lane cuts it off"
+    if action == "block" and side and "from_lane" in f and not behind:
+        ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"bare_{side}" in f or f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
