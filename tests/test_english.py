@@ -402,3 +402,17 @@ def test_a_participle_then_a_past_tense_is_the_subjects_finite_verb():
     assert ("cyclist", "change_lane_to_left", "front") in agents(
         "The test vehicle was travelling along a two-lane road. A cyclist riding ahead of it in the same lane "
         "swerved left to avoid an opening car door.")
+
+
+@pytest.mark.parametrize("prompt, position", [
+    ("A tractor unit emerged from a junction on its left and turned right in front of the test vehicle.",
+     "road_of_left_turn"),
+    ("A taxi came out of a side street to our right and went straight across.", "road_of_right_turn"),
+])
+def test_a_road_on_a_side_is_a_junction_road_not_the_lane_beside(prompt, position):
+    assert any(p == position for _, _, p in agents(prompt))
+    assert road(prompt).junction is True
+
+
+def test_a_driveway_on_a_side_is_no_junction_road():
+    assert road("A delivery van pulled out of a driveway on the right in front of the test car.").junction is not True

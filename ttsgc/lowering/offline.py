@@ -1017,6 +1017,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                  pending: list[Entity] | None = None) -> list[Entity]:
     units = clause.units
     stage = clause.stage
+    _side_roads(units)
     phrases: list[NounPhrase] = []
     k = 0
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
@@ -1260,6 +1261,26 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
                 and u.category != "actions":
             return False
     return False
+
+
+SIDE_ROAD_NOUNS = {"junction", "road", "street", "turning", "avenue"}  # a driveway is no junction road
+
+
+def _side_roads(units: list[Unit]) -> None:
+    """'emerged from a junction on its left', 'came out of a side street to our right': the road on that side,
+    not the lane beside."""
+    for k, u in enumerate(units):
+        if k < 2 or u.category != "positions" or u.meaning not in ("side_left", "side_right"):
+            continue
+        j = k - 1
+        while j > 1 and units[j].category == "word" and units[j].word in ("to", "on", "the", "our", "its", "your",
+                                                                         "my", "his", "her", "their"):
+            j -= 1  # "a side street to our right"
+        noun = units[j]
+        if not (noun.category == "road" and noun.meaning == "junction" or noun.word.split()[-1] in SIDE_ROAD_NOUNS):
+            continue
+        if any(x.word in ("from", "out", "of") for x in units[max(0, j - 4):j]):
+            u.meaning = "road_" + u.meaning[5:]
 
 
 def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase], previous: list[Entity]) -> bool:
