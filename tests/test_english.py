@@ -416,3 +416,9 @@ def test_a_road_on_a_side_is_a_junction_road_not_the_lane_beside(prompt, positio
 
 def test_a_driveway_on_a_side_is_no_junction_road():
     assert road("A delivery van pulled out of a driveway on the right in front of the test car.").junction is not True
+
+
+def test_parked_vehicles_after_from_between_are_scenery():
+    assert agents("Two children ran out into the road from between parked vehicles on the left.") == sorted([
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left"),
+        ("pedestrian", "cross_the_road", "front_left")])

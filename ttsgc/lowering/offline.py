@@ -831,7 +831,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     before = first - 1
     while before > lo and units[before].category in ("actions", "behaviours"):
         before -= 1  # "between parked cars"
-    scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS
+    scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS or \
+        any(m.category == "word" and m.word in SCENERY_PREPOSITIONS for m in modifiers)  # "from between parked cars"
     if scenery and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
             not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
             count is None and plural and before >= lo and "of" in words
