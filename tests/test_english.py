@@ -422,3 +422,12 @@ def test_parked_vehicles_after_from_between_are_scenery():
     assert agents("Two children ran out into the road from between parked vehicles on the left.") == sorted([
         ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left"),
         ("pedestrian", "cross_the_road", "front_left")])
+
+
+def test_the_narrator_is_the_ego_and_a_lane_named_by_its_side_is_one_of_several():
+    lowered = lower("ugh, rainy evening, I'm in the slow lane and there's a pickup glued to my bumper the whole way")
+    assert agents("I'm in the slow lane and there's a pickup glued to my bumper") == sorted([
+        ("car", "go_straight", "ego"), ("car", "go_straight", "back")])
+    assert lowered.scenario.road.lanes == 2
+    assert any("lanes >= 2" in note for note in lowered.notes)
+    assert road("I'm driving and a pickup is glued to my bumper").lanes < 2

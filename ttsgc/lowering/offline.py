@@ -1222,6 +1222,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.features.add(u.meaning)
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
+                if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS:
+                    e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
                 if reference is not None and not reference.is_ego and u.meaning in INVERSE:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
                 r.mark(u)
@@ -1765,6 +1767,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     if asked is not None and others:
         r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
                        "no template used")
+    road = _ego_lane_road(r, road)
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals))
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
         (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
@@ -1805,6 +1808,15 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                               "and where (in front, from the opposite direction...), or write the scene in the "
                               "scenario language (.tsg)")
     return Lowered(scenario, unknown, kind, notes)
+
+
+def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
+    """'I'm in the slow lane', 'the ego is in the left lane': a lane named by its side is one of several."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or "in_a_side_lane" not in ego.features or (road.lanes or 0) >= 2:
+        return road
+    r.notes.append("inferred: lanes >= 2 (the ego is in a lane named by its side)")
+    return road.model_copy(update={"lanes": 2})
 
 
 def _title(prompt: str, tokens: list[Token]) -> range:
