@@ -431,3 +431,9 @@ def test_the_narrator_is_the_ego_and_a_lane_named_by_its_side_is_one_of_several(
     assert lowered.scenario.road.lanes == 2
     assert any("lanes >= 2" in note for note in lowered.notes)
     assert road("I'm driving and a pickup is glued to my bumper").lanes < 2
+
+
+def test_drifting_towards_the_ego_from_a_side_is_a_lane_change_into_its_lane():
+    scene = lower("Our car was cruising along when a lorry on our left began to drift towards us.").scenario
+    assert ("truck", "change_lane_to_right") in [(a.type, a.action) for a in scene.agents()]
+    assert scene.road.lanes >= 2

@@ -969,6 +969,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         action = u.meaning
         if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
             action = "lane_" + direction
+        if action == "move" and not e.is_ego and u.tokens[0].base in STEERING and clause_units is not None and \
+                k is not None and any(x.category == "positions" and x.meaning == "toward"
+                                      for x in clause_units[k + 1:k + 3]):
+            action = "cut_in"  # "a lorry on our left began to drift towards us": over into the ego's lane
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
                 any("lane" in x.base for x in clause_units[k + 1:k + 5]):
             return  # "waiting for the light to change"
