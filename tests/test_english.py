@@ -437,3 +437,12 @@ def test_drifting_towards_the_ego_from_a_side_is_a_lane_change_into_its_lane():
     scene = lower("Our car was cruising along when a lorry on our left began to drift towards us.").scenario
     assert ("truck", "change_lane_to_right") in [(a.type, a.action) for a in scene.agents()]
     assert scene.road.lanes >= 2
+
+
+@pytest.mark.parametrize("prompt, time_of_day", [
+    ("At 3 pm a bus pulled out in front of the test car.", "noon"),
+    ("The sun was going down when a cyclist crossed in front of the ego.", "sunset"),
+    ("In the early hours a van stopped ahead of the ego.", "night"),
+])
+def test_times_of_day_as_people_write_them(prompt, time_of_day):
+    assert lower(prompt).scenario.weather.time == time_of_day

@@ -464,7 +464,8 @@ def _weather(r: _Reader) -> Weather | None:
 
 
 def _clock_time(r: _Reader) -> tuple[str, str] | None:
-    """'At 23:10' is night, '12:05' noon, '17:40' sunset, '06:30' dawn; other hours say no time of day."""
+    """'At 23:10' is night, '12:05' and '3 pm' noon (the afternoon is daytime), '17:40' sunset, '06:30' dawn;
+    other hours say no time of day."""
     for i, t in enumerate(r.tokens[:-1]):
         nxt = r.tokens[i + 1]
         if t.word.isdigit() and nxt.word in ("am", "pm") and 1 <= int(t.word) <= 12:  # "at 9 pm", "6am"
@@ -481,7 +482,7 @@ def _clock_time(r: _Reader) -> tuple[str, str] | None:
 
 
 def _hour_time(hour: int, said: str) -> tuple[str, str] | None:
-    for time, hours in (("night", range(21, 29)), ("dawn", range(5, 8)), ("noon", range(11, 15)),
+    for time, hours in (("night", range(21, 29)), ("dawn", range(5, 8)), ("noon", range(11, 17)),
                         ("sunset", range(17, 21))):
         if hour in hours or hour + 24 in hours:
             return time, said
