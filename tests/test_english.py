@@ -446,3 +446,16 @@ def test_drifting_towards_the_ego_from_a_side_is_a_lane_change_into_its_lane():
 ])
 def test_times_of_day_as_people_write_them(prompt, time_of_day):
     assert lower(prompt).scenario.weather.time == time_of_day
+
+
+def test_the_pedestrian_crossing_ahead_is_a_crossing_when_a_verb_follows():
+    scene = lower("The pedestrian crossing ahead is blocked by a van that has broken down.").scenario
+    assert [a.type for a in scene.agents() if not a.is_ego] == ["car"]
+    assert "crosswalk" in scene.road.required_objects
+    assert ("pedestrian", "cross_the_road", "front") in agents("A pedestrian crossing ahead of the ego.")
+
+
+def test_a_car_pulled_over_on_the_shoulder_stands_and_the_next_sentences_verb_is_an_instruction():
+    found = agents("A cop car is pulled over on the shoulder up ahead with its lights flashing. "
+                   "Slow down and move over to the left lane.")
+    assert ("police", "stop", "front_right") in found and ("car", "change_lane_to_left", "ego") in found

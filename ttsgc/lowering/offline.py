@@ -207,8 +207,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be",
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
+    nxt2 = tokens[m.end + 1].word if m.end + 1 < len(tokens) else ""
+    place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
     if m.category == "road" and span[-1].word == "crossing" and (len(span) == 1 or span[0].base == "pedestrian") and (
-            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))):
+            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))) and \
+            not place_then_verb:  # "the pedestrian crossing ahead is blocked": the crossing
         out = []
         if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
             out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
