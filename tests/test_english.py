@@ -459,3 +459,8 @@ def test_a_car_pulled_over_on_the_shoulder_stands_and_the_next_sentences_verb_is
     found = agents("A cop car is pulled over on the shoulder up ahead with its lights flashing. "
                    "Slow down and move over to the left lane.")
     assert ("police", "stop", "front_right") in found and ("car", "change_lane_to_left", "ego") in found
+
+
+def test_a_side_after_the_ego_named_as_a_reference_is_the_subjects():
+    assert ("cyclist", "go_straight", "back_right") in agents(
+        "You want to turn right on red. A bicyclist is coming up behind you on your right.")

@@ -1473,6 +1473,9 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
                          for u in units[last.index + 1:i])
             if last.entity in subject and copula:
                 return subject  # "both the truck and the pedestrian are in the front right"
+            if last.entity.is_ego and subject and last.entity not in subject and \
+                    units[last.index - 1].category == "positions":
+                return subject  # "a bicyclist is coming up behind you on your right": the bicyclist's side
             return last.group or [last.entity]
         return subject
     last_verb = verb_before[-1]
