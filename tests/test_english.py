@@ -464,3 +464,8 @@ def test_a_car_pulled_over_on_the_shoulder_stands_and_the_next_sentences_verb_is
 def test_a_side_after_the_ego_named_as_a_reference_is_the_subjects():
     assert ("cyclist", "go_straight", "back_right") in agents(
         "You want to turn right on red. A bicyclist is coming up behind you on your right.")
+
+
+def test_walking_out_into_the_road_is_crossing_it():
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "this dude on his phone just walks straight out into the road in front of me")
