@@ -469,3 +469,9 @@ def test_a_side_after_the_ego_named_as_a_reference_is_the_subjects():
 def test_walking_out_into_the_road_is_crossing_it():
     assert ("pedestrian", "cross_the_road", "front") in agents(
         "this dude on his phone just walks straight out into the road in front of me")
+
+
+def test_those_the_ego_queues_behind_stand_too():
+    found = agents("motorway, night, ego stopped in queue behind two lorries")
+    assert found.count(("truck", "stop", "front")) == 2
+    assert ("truck", "go_straight", "front") in agents("ego stopped behind a lorry that keeps going")

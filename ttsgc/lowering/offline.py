@@ -1189,6 +1189,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     [p for p in phrases if p.index > i])
     if by is not None and not verbs:  # "the road it turns into is occupied by a parked truck"
         pass
+    _queue_ahead(r, units, phrases, subject, stage)
     crosswalk = any(u.category == "road" and u.meaning in V.CROSSWALK_OBJECTS and not _denied(units, k)
                     for k, u in enumerate(units))
     for e in subject:
@@ -1292,6 +1293,23 @@ def _side_roads(units: list[Unit]) -> None:
             continue
         if any(x.word in ("from", "out", "of") for x in units[max(0, j - 4):j]):
             u.meaning = "road_" + u.meaning[5:]
+
+
+QUEUE_WORDS = {"queue", "queued", "queueing", "queuing", "jam", "tailback"}
+
+
+def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subject: list[Entity], stage: int):
+    """'ego stopped in queue behind two lorries': those it queues behind stand too."""
+    if not any(e.is_ego and any(a[4] == "stop" and a[0] == stage for a in e.actions) for e in subject):
+        return
+    if not any(t.word in QUEUE_WORDS for u in units for t in u.tokens):
+        return
+    for np in phrases:
+        e = np.entity
+        if e is None or e.is_ego or e in subject or e.actions or np.first == 0:
+            continue
+        if any(u.category == "positions" and u.meaning == "behind" for u in units[max(0, np.first - 2):np.first]):
+            e.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
 def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase], previous: list[Entity]) -> bool:
