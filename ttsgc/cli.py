@@ -85,6 +85,8 @@ def _lower_file(args, source: Path, seed: int):
     lowering = lower_prompt(prompt, args.llm, seed=seed, settings=settings)
     if lowering.unknown:
         print(f"ttsgc: warning: {source}: words not understood: {', '.join(lowering.unknown)}", file=sys.stderr)
+    for note in lowering.notes:  # every inference and repair of the plan inference, also in the .tsg
+        print(f"ttsgc: note: {source}: {note}", file=sys.stderr)
     return prompt, lowering
 
 
