@@ -1,7 +1,7 @@
 """Compile latency: English -> proven .xosc as a whole CLI run (a fresh process, as a user sees it) with a cold
 and a warm cache, binding on a generated 16x16 grid, and bind + emit in a warm process.
 
-    python bench/compile_bench.py [--repeat 3] [--against OTHER_CHECKOUT]... [--skip-grid]
+    python bench/compile_bench.py [--repeat 3] [--against OTHER_CHECKOUT]... [--skip-grid] [--skip-cli]
 
 --against runs the same measurements on another checkout (e.g. `git worktree add /tmp/base main`), its runs
 alternating with this one's, and prints the ratio. Prints medians; these machines are shared and noisy.
@@ -139,13 +139,15 @@ def main() -> int:
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--against", action="append", metavar="CHECKOUT", help="another checkout to compare with")
     parser.add_argument("--skip-grid", action="store_true", help="leave out the grid (generating it takes a minute)")
+    parser.add_argument("--skip-cli", action="store_true", help="leave out the whole-CLI runs")
     args = parser.parse_args()
     trees = checkouts(args.against)
     keep = Path(tempfile.gettempdir()) / "ttsgc-bench"
     keep.mkdir(exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="ttsgc-bench-") as work:
         scratch = Path(work)
-        whole_cli(trees, args.repeat, scratch)
+        if not args.skip_cli:
+            whole_cli(trees, args.repeat, scratch)
         if not args.skip_grid:
             bind_on_grid(trees, args.repeat, scratch, keep)
         warm_process(args.repeat, scratch)

@@ -66,13 +66,16 @@ def test_agent_numbers_with_thousands_of_digits_are_diagnosed(tmp_path, capsys):
     assert code == ExitCode.INVALID_SCENARIO and err.count("5000 digits") == 4
 
 
-def test_english_with_a_400_digit_count_and_speed_limit_is_a_lowering_error(tmp_path, capsys):
+def test_english_with_a_400_digit_count_and_speed_limit_is_read_with_its_limits(tmp_path, capsys):
+    """A number too large to read is clamped or left out, and said so: never an overflow."""
     prompt = tmp_path / "p.txt"
     n = "9" * 400
     prompt.write_text(f"There are {n} cars at a junction with a {n} km/h speed limit sign; one cuts in "
                       f"after {n} seconds at {n} km/h.")
-    code, _, err = _run(capsys, "lower", prompt)
-    assert code == ExitCode.LOWERING_FAILED and "out of range" in err and "internal error" not in err
+    code, out, err = _run(capsys, "lower", prompt)
+    assert code == ExitCode.OK and "internal error" not in err
+    assert "a count too large to read for car; used 12" in err
+    assert "a speed limit of a number too large to read is outside 5..200 km/h" in err and "speed_" not in out
 
 
 @pytest.mark.parametrize("value", ["nan", "inf", "1e308", "1e300", "-5", "1e12"])
@@ -439,7 +442,7 @@ def test_sigterm_during_compile_leaves_no_temporary_folder_and_no_child(tmp_path
     assert child.poll() is None and seen, "the compile ended before netconvert could be caught running"
     child.send_signal(signal.SIGTERM)
     err = child.stderr.read().decode()
-    assert child.wait(timeout=60) == 143 and "terminated" in err and "Traceback" not in err
+    assert child.wait(timeout=60) == 143 and "terminated" in err and "Traceback" not in err, err
     time.sleep(0.2)
     assert not list(scratch.glob("ttsgc-*")) and not [pid for pid in seen if _alive(pid)]
     assert not (tmp_path / "out").exists()

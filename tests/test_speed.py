@@ -90,6 +90,21 @@ def test_a_parsed_map_is_cached_by_content_and_loads_without_parsing(tmp_path, m
     assert again == replace(first, path=str(copy))
 
 
+def test_the_map_an_index_describes_is_found_by_its_hash_without_reading_the_file(tmp_path, monkeypatch):
+    from ttsgc.roads.index import load_index
+
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path))
+    opendrive = _fresh_process_memory(monkeypatch)
+    index = load_index(MAP)  # indexing parses the map and caches the parse
+    first = opendrive.load_opendrive(MAP)
+    _fresh_process_memory(monkeypatch)
+    read = opendrive.read_map_bytes
+    monkeypatch.setattr(opendrive, "read_map_bytes", lambda *a: (_ for _ in ()).throw(AssertionError("read")))
+    assert opendrive.load_opendrive(MAP, sha256=index.sha256) == first
+    monkeypatch.setattr(opendrive, "read_map_bytes", read)
+    assert opendrive.load_opendrive(MAP, sha256="0" * 64) == first  # a hash nobody cached: the file is read
+
+
 def test_a_corrupt_parsed_map_entry_is_parsed_again_and_rewritten(tmp_path, monkeypatch):
     monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path))
     opendrive = _fresh_process_memory(monkeypatch)

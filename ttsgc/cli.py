@@ -85,6 +85,8 @@ def _lower_file(args, source: Path, seed: int):
     lowering = lower_prompt(prompt, args.llm, seed=seed, settings=settings)
     if lowering.unknown:
         print(f"ttsgc: warning: {source}: words not understood: {', '.join(lowering.unknown)}", file=sys.stderr)
+    for note in lowering.notes:  # every inference and repair of the plan inference, also in the .tsg
+        print(f"ttsgc: note: {source}: {note}", file=sys.stderr)
     return prompt, lowering
 
 
@@ -235,6 +237,8 @@ def _compile_one(args, scenario, out: Path, seed, lowering, lowered: tuple[Path,
           f"{checked}")
     if scene.unmet:
         print(f"ttsgc: warning: the chosen road does not meet: {', '.join(scene.unmet)}", file=sys.stderr)
+    if getattr(args, "render", False):
+        _render_file(out, out.with_suffix(".png"), "sumo" if args.player == "all" else args.player)
     return ExitCode.OK
 
 
@@ -269,7 +273,7 @@ def _eval(args) -> int:
     from ttsgc.lowering import choose_method
 
     runs = evaluate(Path(args.suite), seeds=args.seeds, maps=args.maps, method=choose_method(args.llm),
-                    simulate=not args.no_simulate, progress=progress_bar)
+                    simulate=not args.no_simulate, progress=progress_bar, workers=args.workers)
     print(table(runs))
     failed = [r for r in runs if not r.ok]
     for r in failed[: args.show_failures]:
@@ -282,9 +286,9 @@ def _eval(args) -> int:
 
 
 def _import_ttsg(args) -> int:
+    from ttsgc.language import format_scenario
     from ttsgc.pipeline import compile_and_prove, write
     from ttsgc.roads.retrieve import load_library
-    from ttsgc.language import format_scenario
     from ttsgc.ttsg_import import import_plan
 
     protect_inputs(*filter(None, (args.plan, args.road_info)))
@@ -351,6 +355,64 @@ def _validate(args) -> int:
     if args.report:
         write_output(args.report, report.model_dump_json(indent=2) + "\n")
     return ExitCode.OK if report.ok else ExitCode.SIMULATION_FAILED
+
+
+def _render_file(scene: Path, out: Path, player: str) -> None:
+    from ttsgc.render import render_scene
+
+    verdict = render_scene(scene, out, player)
+    word = "not judged" if verdict.ok is None else ("ok" if verdict.ok else "FAILED")
+    print(f"{out}: drawn ({verdict.player}, verdict {word})")
+
+
+def _render(args) -> int:
+    _render_file(Path(args.scene), Path(args.output) if args.output else Path(args.scene).with_suffix(".png"),
+                 args.player)
+    return ExitCode.OK
+
+
+def _batch(args) -> int:
+    from ttsgc.batch import plan_jobs, run_batch
+    from ttsgc.lowering import choose_method
+    from ttsgc.runner import progress_bar
+
+    out = Path(args.output)
+    jobs = plan_jobs(Path(args.prompts), out, variants=args.variants, maps=args.maps,
+                     method=choose_method(args.llm), osc_version=args.osc_version, players=args.player)
+    result = run_batch(jobs, out, workers=args.workers, ray_address=args.ray, progress=progress_bar)
+    counts = {v: sum(r["verdict"] == v for r in result.rows) for v in ("ok", "failed", "error")}
+    print(f"{out}: {len(result.rows)} scene(s): {counts['ok']} ok, {counts['failed']} failed in simulation, "
+          f"{counts['error']} not compiled; {result.skipped} already finished; summary in "
+          f"{out / 'summary.json'} and {out / 'summary.csv'}")
+    if result.unfinished:
+        print(f"ttsgc: error: {len(result.unfinished)} scene(s) met an internal fault and are left to the next run: "
+              f"{', '.join(result.unfinished[:5])}", file=sys.stderr)
+        return ExitCode.INTERNAL
+    return ExitCode.OK
+
+
+def _add_render_and_batch(commands, llm_options) -> None:
+    render = commands.add_parser("render", help="draw a scene as the player played it: a bird's-eye .png, or an "
+                                                "animation (.gif, .mp4)")
+    render.add_argument("scene", metavar="SCENE.xosc")
+    render.add_argument("-o", "--output", metavar="OUT.png|.gif|.mp4", help="default: the scene with .png")
+    render.add_argument("--player", choices=["sumo", "esmini"], default="sumo", help="who plays it (default sumo)")
+    render.set_defaults(run=_render)
+
+    batch = commands.add_parser("batch", parents=[llm_options], help="compile and prove many scenes on every core "
+                                                                     "(or a Ray cluster); resumes where it stopped")
+    batch.add_argument("prompts", metavar="PROMPTS", help="a folder of .txt/.tsg, or a JSON Lines file of "
+                                                          '{"prompt": ...} or {"tsg": ...}')
+    batch.add_argument("-o", "--output", required=True, metavar="OUTDIR")
+    batch.add_argument("--variants", type=_number(int, 1, 1000), default=1, metavar="N",
+                       help="scenes per input (seeds 0..N-1)")
+    batch.add_argument("--workers", type=_number(int, 1, 1024), metavar="N", help="processes at once (default: every core)")
+    batch.add_argument("--ray", metavar="ADDRESS", help="run on a Ray cluster ('local' starts one on this machine; "
+                                                        "needs pip install 'ttsgc[ray]')")
+    batch.add_argument("--maps", action="append", metavar="PATH")
+    batch.add_argument("--osc-version", choices=["1.0", "1.1", "1.2", "1.3"], default="1.3")
+    _player_option(batch)
+    batch.set_defaults(run=_batch)
 
 
 def table(headers: list[str], rows: list[list[str]]) -> str:
@@ -519,6 +581,7 @@ def build_parser() -> argparse.ArgumentParser:
                                "coverage), carla (the 1.0 subset CARLA ScenarioRunner reads); default generic")
     compile_.add_argument("--no-simulate", action="store_true", help="skip the simulation check")
     compile_.add_argument("--report", metavar="REPORT.json", help="write the simulation report as JSON")
+    compile_.add_argument("--render", action="store_true", help="also draw the scene, as a .png beside the .xosc")
     _player_option(compile_)
     compile_.add_argument("--synthesize", choices=["auto", "never", "always"], default="auto",
                           help="build an OpenDRIVE map for the scene: when no road of the library fits (auto, the "
@@ -548,6 +611,8 @@ def build_parser() -> argparse.ArgumentParser:
     eval_.add_argument("--report", metavar="EVAL.json", help="write every run and the summaries as JSON")
     eval_.add_argument("--no-simulate", action="store_true", help="compile only (SA then counts compiles)")
     eval_.add_argument("--show-failures", type=_number(int, 0, 1_000_000), default=10, metavar="N", help="list up to N failed runs")
+    eval_.add_argument("--workers", type=_number(int, 1, 1024), metavar="N",
+                       help="processes running cases at once (default: every core)")
     eval_.set_defaults(run=_eval)
 
     importer = commands.add_parser("import-ttsg", help="turn a TTSG plan (agent_output.json) into a .tsg scene")
@@ -558,6 +623,8 @@ def build_parser() -> argparse.ArgumentParser:
                                                               "is in --maps and the scene fits, else ranked")
     importer.add_argument("--maps", action="append", metavar="PATH")
     importer.set_defaults(run=_import_ttsg)
+
+    _add_render_and_batch(commands, llm_options)
 
     maps_options = argparse.ArgumentParser(add_help=False)
     maps_options.add_argument("--maps", action="append", metavar="PATH",

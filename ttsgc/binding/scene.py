@@ -78,7 +78,7 @@ def _placed(scenario: Scenario, seed: int, requirements: list[Requirement], rank
     for candidate in ranked:
         if placed == 0 and len(reasons) >= MAX_PLACEMENT_TRIES:
             break
-        odr = load_opendrive(candidate.index.path)
+        odr = load_opendrive(candidate.index.path, sha256=candidate.index.sha256)  # the geometry the index saw
         try:
             agents = place(scenario, candidate.approach, candidate.index, odr)
         except PlacementError as exc:

@@ -196,6 +196,8 @@ class Lane:
 class LaneSection:
     s: float
     lanes: dict[int, Lane]  # lane id -> lane, centre lane 0 excluded
+    center_mark: str | None = None  # type of the centre lane's road mark (the line between the two directions)
+    center_mark_color: str | None = None
 
     def side(self, sign: int) -> list[Lane]:
         """Lanes of one side ordered from the centre outwards (sign -1: right, +1: left)."""
@@ -233,6 +235,10 @@ class RoadObject:
     type: str
     subtype: str
     name: str
+    hdg: float = 0.0  # relative to the road's heading at s
+    length: float = 0.0  # extent along the object's own heading (u)
+    width: float = 0.0  # extent across it (v)
+    outline: tuple[tuple[float, float], ...] = ()  # cornerLocal (u, v) points, where the map gives them
 
 
 @dataclass
@@ -258,6 +264,10 @@ class Road:
         i = max(0, bisect.bisect_right(starts, s + 1e-9) - 1)
         g = self.geometry[i]
         return g.at(s - g.s)
+
+    def lane_offset(self, s: float) -> float:
+        """Lateral offset of the centre lane (the line between the two directions) from the reference line."""
+        return _piecewise(self.lane_offsets, s)
 
     def section_at(self, s: float) -> LaneSection:
         starts = [sec.s for sec in self.sections]
@@ -336,35 +346,56 @@ _PARSED: dict[str, OpenDrive] = {}  # by content hash, the most recent last
 PARSED_KEPT = 8
 
 
-def load_opendrive(path: str | Path, use_cache: bool = True) -> OpenDrive:
+def load_opendrive(path: str | Path, use_cache: bool = True, sha256: str | None = None) -> OpenDrive:
     """read_opendrive, remembered by content: binding, retries and simulation of one scene read the same map
     several times, and a CARLA town takes about 0.15 s to parse. The parsed map is also kept beside the road
-    index's cache entries for later processes, where it loads several times faster than it parses."""
+    index's cache entries for later processes, where it loads several times faster than it parses.
+    sha256: the content hash the caller's road index was built from, so that the map the index describes is
+    found without reading and hashing the file again (a large map takes tens of milliseconds)."""
     path = Path(path)
+    odr = _remembered(sha256, use_cache) if sha256 is not None else None
+    if odr is not None:
+        return replace(odr, path=str(path))
     data = read_map_bytes(path)
     return parsed_map(path, data, hashlib.sha256(data).hexdigest(), use_cache)
 
 
 def parsed_map(path: Path, data: bytes, sha: str, use_cache: bool = True) -> OpenDrive:
     """load_opendrive for a caller that has already read and hashed the file."""
-    odr = _PARSED.pop(sha, None)
+    odr = _remembered(sha, use_cache)
     if odr is None:
-        entry = _parsed_entry(sha) if use_cache else None
-        odr = _read_parsed(entry, sha) if entry is not None else None
-        if odr is None:
-            odr = read_opendrive(path, data)
-            if entry is not None:
-                _write_parsed(entry, sha, odr)
+        odr = read_opendrive(path, data)
+        _keep(sha, odr)
+        if use_cache:
+            _write_parsed(_parsed_entry(sha), sha, odr)
+    return replace(odr, path=str(path))
+
+
+def _remembered(sha: str, use_cache: bool) -> OpenDrive | None:
+    """The parse of this content from this process's memory, else from the cache; None when neither has it."""
+    odr = _PARSED.pop(sha, None)
+    if odr is None and use_cache:
+        odr = _read_parsed(_parsed_entry(sha), sha)
+    if odr is not None:
+        _keep(sha, odr)
+    return odr
+
+
+def _keep(sha: str, odr: OpenDrive) -> None:
     _PARSED[sha] = odr
     while len(_PARSED) > PARSED_KEPT:
         del _PARSED[next(iter(_PARSED))]
-    return replace(odr, path=str(path))
 
 
 @cache
 def _reader_fingerprint() -> str:
     """Any change to this module (the reader or the classes) makes the cached parsed maps someone else's."""
-    return hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:12]
+    try:
+        return hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:12]
+    except OSError:  # installed where the source cannot be read: the package version stands for it
+        from ttsgc import __version__
+
+        return f"v{__version__}"
 
 
 def _parsed_entry(sha: str) -> Path:
@@ -576,7 +607,11 @@ class _Reader:
                 lanes[lane_id] = Lane(lane_id, lane_el.get("type", "none"), widths,
                                       mark.get("type") if mark is not None else None,
                                       mark.get("color") if mark is not None else None, speed)
-        return LaneSection(self.length(element, "s"), lanes)
+        center = self.child(element, "center")
+        center_lane = self.child(center, "lane") if center is not None else None
+        mark = self.child(center_lane, "roadMark") if center_lane is not None else None
+        return LaneSection(self.length(element, "s"), lanes, mark.get("type") if mark is not None else None,
+                           mark.get("color") if mark is not None else None)
 
     def link(self, element) -> Link | None:
         if element is None:
@@ -601,9 +636,13 @@ class _Reader:
                       element.get("orientation", "none"), "", "", "", None, None, "", is_reference=True)
 
     def road_object(self, element) -> RoadObject:
+        outline = self.child(element, "outline")
+        corners = tuple((self.num(c, "u"), self.num(c, "v")) for c in self.children(outline, "cornerLocal")) \
+            if outline is not None else ()
         return RoadObject(element.get("id", ""), self.num(element, "s", 0.0), self.num(element, "t", 0.0),
                           element.get("orientation", "none"), element.get("type", ""), element.get("subtype", ""),
-                          element.get("name", ""))
+                          element.get("name", ""), self.num(element, "hdg", 0.0), self.num(element, "length", 0.0),
+                          self.num(element, "width", 0.0), corners)
 
     def junction(self, element) -> Junction:
         connections = []

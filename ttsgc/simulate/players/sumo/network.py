@@ -12,6 +12,7 @@ import atexit
 import hashlib
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -43,26 +44,45 @@ def netconvert_binary() -> str:
 NETCONVERT_TIMEOUT_S = 600
 
 
-def _die_with_parent() -> None:
+_STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM}
+
+
+def _child_setup() -> None:
     """In the child, before exec: ask Linux to kill it when ttsgc dies, however ttsgc dies (strictly: when the
-    thread that started it ends; ttsgc starts children from its main thread only)."""
+    thread that started it ends; ttsgc starts children from its main thread only), and let it hear the stop
+    signals the parent held back while it forked."""
     try:
         import ctypes
 
         ctypes.CDLL(None, use_errno=True).prctl(1, 9)  # PR_SET_PDEATHSIG, SIGKILL
     except (OSError, AttributeError):
         pass  # not Linux: the child is still killed when ttsgc exits by an exception or a signal it handles
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, _STOP_SIGNALS)
 
 
 def _run(command: list[str], what: str) -> list[str]:
+    # Ctrl-C and SIGTERM are held back while the child is created: Python would otherwise run their handler
+    # inside its after-fork hooks, where the exception is printed and dropped, and the signal lost.
+    posix = hasattr(signal, "pthread_sigmask")
+    held = signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS) if posix else None
     try:
-        done = subprocess.run(command, capture_output=True, text=True, errors="replace",
-                              timeout=NETCONVERT_TIMEOUT_S,
-                              preexec_fn=_die_with_parent if sys.platform.startswith("linux") else None)
-    except subprocess.TimeoutExpired:
-        raise MapError(f"{what}: netconvert did not finish within {NETCONVERT_TIMEOUT_S} s") from None
-    lines = [line for line in (done.stdout + done.stderr).splitlines() if line.strip()]
-    if done.returncode != 0:
+        process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                   errors="replace", preexec_fn=_child_setup if posix else None)
+    finally:
+        if posix:
+            signal.pthread_sigmask(signal.SIG_SETMASK, held)
+    with process:
+        try:
+            stdout, stderr = process.communicate(timeout=NETCONVERT_TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.communicate()
+            raise MapError(f"{what}: netconvert did not finish within {NETCONVERT_TIMEOUT_S} s") from None
+        except BaseException:  # interrupted, terminated: the child goes with us
+            process.kill()
+            raise
+    lines = [line for line in (stdout + stderr).splitlines() if line.strip()]
+    if process.returncode != 0:
         raise MapError(f"{what}: netconvert cannot convert the map: " + " | ".join(lines[-5:]))
     return [line for line in lines if line.startswith("Warning")]
 

@@ -1,0 +1,89 @@
+"""How much faster `ttsgc batch` and `ttsgc eval` get with more workers.
+
+    python bench/batch_bench.py [--repeats 3] [--workers 1 2] [--variants 1 5] [--skip-eval]
+
+Runs `ttsgc batch examples` into a fresh folder with each number of workers, alternating so that a busy
+spell of a shared machine hurts every setting alike, and prints the median wall time of each, the speed-up
+against one worker, and the spread of the runs and the machine's load average (how noisy the figures are).
+Then the same for `ttsgc eval examples --seeds 5`. Caches (map indexes, SUMO networks) are warmed first.
+
+A warm scene takes about 0.1 s, while starting the pipeline (imports, the map library) takes seconds that no
+number of workers shortens; the speed-up therefore grows with the number of scenes (--variants).
+"cores had" is CPU time over wall time: on a shared machine whose kernel shares the CPU between sessions
+(sched_autogroup), a busy neighbour caps what the workers get, and the speed-up with it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def timed(command: list[str]) -> tuple[float, float]:
+    """(wall seconds, CPU seconds of the command and its workers)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    wall = time.perf_counter() - start
+    if done.returncode != 0:
+        raise SystemExit(f"failed ({done.returncode}): {' '.join(command)}")
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+
+
+def measure(name: str, make_command, workers: list[int], repeats: int) -> None:
+    times: dict[int, list[float]] = {w: [] for w in workers}
+    cores: dict[int, list[float]] = {w: [] for w in workers}
+    loads = []
+    for _ in range(repeats):
+        for w in workers:
+            loads.append(os.getloadavg()[0])
+            wall, cpu = timed(make_command(w))
+            times[w].append(wall)
+            cores[w].append(cpu / wall)
+    base = statistics.median(times[workers[0]])
+    print(f"\n{name}: median wall time of {repeats} run(s)")
+    print(f"{'workers':>8} {'median s':>9} {'min s':>7} {'max s':>7} {'speed-up':>9} {'cores had':>10}")
+    for w in workers:
+        median = statistics.median(times[w])
+        print(f"{w:>8} {median:9.1f} {min(times[w]):7.1f} {max(times[w]):7.1f} {base / median:8.2f}x "
+              f"{statistics.median(cores[w]):10.2f}")
+    print(f"load average (1 min) before each run: min {min(loads):.1f}, median {statistics.median(loads):.1f}, "
+          f"max {max(loads):.1f} on {os.cpu_count()} core(s)")
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--workers", type=int, nargs="+", default=[1, 2])
+    parser.add_argument("--variants", type=int, nargs="+", default=[1, 5], help="batch sizes: scenes per input")
+    parser.add_argument("--skip-eval", action="store_true")
+    args = parser.parse_args()
+    ttsgc = [sys.executable, "-m", "ttsgc"]
+    with tempfile.TemporaryDirectory(prefix="ttsgc-bench-") as scratch:
+        runs = iter(range(10**6))
+        timed(ttsgc + ["batch", "examples", "-o", f"{scratch}/warm", "--workers", str(max(args.workers))])
+        scenes = len([p for p in (ROOT / "examples").iterdir() if p.suffix in (".txt", ".tsg")])
+        for variants in args.variants:
+            measure(f"ttsgc batch examples --variants {variants} ({scenes * variants} scenes)",
+                    lambda w, v=variants: ttsgc + ["batch", "examples", "-o", f"{scratch}/batch-{next(runs)}",
+                                                   "--variants", str(v), "--workers", str(w)],
+                    args.workers, args.repeats)
+        if not args.skip_eval:
+            measure("ttsgc eval examples --seeds 5 (90 runs)",
+                    lambda w: ttsgc + ["eval", "examples", "--seeds", "5", "--workers", str(w)],
+                    args.workers, args.repeats)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,145 @@
+"""Independent jobs run on every core, or on a Ray cluster: one runner, used by `batch` and by `eval`.
+
+Workers are processes, never threads: libsumo holds one simulation per process. A job is a picklable
+top-level function and its argument; results come back as they finish, tagged with the job's index, and the
+callers order them by that index, so what they write does not depend on the number of workers or on who
+finished first.
+
+A warm scene takes a tenth of a second; starting a process that imports the pipeline and loads the map
+library takes seconds. So where the system can fork, this process warms up once (imports, map library) and
+the workers are forked from it, starting warm; elsewhere each spawned worker warms up itself.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable, Iterator, Sequence
+from typing import Any
+
+from ttsgc.errors import ExitCode, TtsgcError
+
+
+class RunnerError(TtsgcError):
+    exit_code = ExitCode.INVALID_SCENARIO  # a bad --workers or --ray: a bad command line
+
+
+def default_workers() -> int:
+    """Every core this process may use."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def warm_pipeline(maps=None) -> None:
+    """Import every stage and load the map library: what each worker would otherwise do on its first scene."""
+    import ttsgc.language  # noqa: F401
+    import ttsgc.lowering  # noqa: F401
+    import ttsgc.pipeline  # noqa: F401
+    import ttsgc.simulate.players.sumo  # noqa: F401 - libsumo is loaded; no simulation is started
+    import ttsgc.simulate.validate  # noqa: F401
+    from ttsgc.roads.retrieve import load_library
+
+    load_library(list(maps) if maps else None)
+
+
+def run(function: Callable[[Any], Any], jobs: Sequence[Any], workers: int | None = None,
+        ray_address: str | None = None, warm_up: Callable[[], None] | None = None) -> Iterator[tuple[int, Any]]:
+    """Yield (index in jobs, function(job)) as each job finishes. One worker runs in this process; more run
+    in a pool of spawned processes; ray_address ('local' starts a private Ray instance) sends them to Ray."""
+    if workers is not None and workers < 1:
+        raise RunnerError(f"--workers must be at least 1, not {workers}")
+    if ray_address:
+        yield from _on_ray(function, jobs, workers, ray_address)
+    elif (workers or default_workers()) == 1 or len(jobs) <= 1:
+        for index, job in enumerate(jobs):
+            yield index, function(job)
+    else:
+        yield from _on_pool(function, jobs, workers or default_workers(), warm_up)
+
+
+def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]:
+    import multiprocessing
+    import threading
+    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+
+    forkable = "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
+    if forkable:  # warm once here; no simulation has been started in this process, so none is inherited
+        if warm_up is not None:
+            warm_up()
+        pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)), mp_context=multiprocessing.get_context("fork"),
+                                   initializer=_worker_start)
+    else:
+        pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)),
+                                   mp_context=multiprocessing.get_context("spawn"), initializer=_worker_start,
+                                   initargs=(warm_up,))
+    try:
+        pending = {pool.submit(function, job): index for index, job in enumerate(jobs)}
+        while pending:
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for future in sorted(done, key=pending.get):
+                index = pending.pop(future)
+                yield index, future.result()
+    except BaseException:  # interrupted, or the caller stopped: workers only compute, so end them at once
+        for process in list((getattr(pool, "_processes", None) or {}).values()):
+            process.terminate()
+        raise
+    finally:
+        pool.shutdown(wait=False, cancel_futures=True)
+
+
+def _worker_start(warm_up=None) -> None:
+    """Ctrl-C reaches every process of the terminal's group: the main process alone answers it (it stops
+    handing out jobs), and a worker finishes the scene it is on instead of dying with a traceback."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if warm_up is not None:
+        warm_up()
+
+
+def _on_ray(function, jobs, workers: int | None, address: str) -> Iterator[tuple[int, Any]]:
+    try:
+        import ray
+    except ImportError:
+        raise RunnerError("--ray needs Ray: pip install 'ttsgc[ray]'") from None
+    local = address == "local"
+    try:
+        if local:  # a private instance on this machine, ended when the run ends
+            ray.init(num_cpus=workers or default_workers(), include_dashboard=False, log_to_driver=False,
+                     configure_logging=False, runtime_env={"env_vars": _forwarded_environment()})
+        else:
+            ray.init(address=address, log_to_driver=False, configure_logging=False)
+    except (ConnectionError, RuntimeError, ValueError) as exc:
+        raise RunnerError(f"cannot reach the Ray cluster at {address}: {exc}") from None
+    try:
+        remote = ray.remote(num_cpus=1, max_retries=1)(function)
+        pending = {remote.remote(job): index for index, job in enumerate(jobs)}
+        while pending:
+            done, _ = ray.wait(list(pending), num_returns=1)
+            for ref in done:
+                yield pending.pop(ref), ray.get(ref)
+    finally:
+        ray.shutdown()
+
+
+def _forwarded_environment() -> dict[str, str]:
+    """What a local Ray worker must see as this process does: where ttsgc is and where its caches are."""
+    keep = {"PYTHONPATH": os.pathsep.join(p for p in sys.path if p) or os.environ.get("PYTHONPATH", "")}
+    for name in ("TTSGC_CACHE_DIR", "TTSGC_ESMINI", "SUMO_HOME", "ANTHROPIC_API_KEY", "ANTHROPIC_BASE_URL",
+                 "TTSGC_MODEL", "TTSGC_MAX_TOKENS", "TTSGC_TEMPERATURE"):
+        if os.environ.get(name):
+            keep[name] = os.environ[name]
+    return keep
+
+
+def progress_bar(done: int, total: int, label: str) -> None:
+    """One line that rewrites itself on a terminal, one line per tenth elsewhere."""
+    width = 30
+    filled = width * done // total if total else width
+    line = f"[{'#' * filled}{'.' * (width - filled)}] {done}/{total} {label}"
+    if sys.stderr.isatty():
+        print("\r" + line.ljust(90), end="" if done < total else "\n", file=sys.stderr, flush=True)
+    elif done == total or done % max(1, total // 10) == 0:
+        print(line, file=sys.stderr, flush=True)
