@@ -475,3 +475,8 @@ def test_those_the_ego_queues_behind_stand_too():
     found = agents("motorway, night, ego stopped in queue behind two lorries")
     assert found.count(("truck", "stop", "front")) == 2
     assert ("truck", "go_straight", "front") in agents("ego stopped behind a lorry that keeps going")
+
+
+def test_a_side_after_the_place_an_agent_moves_into_is_the_places():
+    assert ("truck", "go_straight", "front") in agents(
+        "A lorry ahead is reversing into a loading bay on the left, so the ego has to wait behind it.")

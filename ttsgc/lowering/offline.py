@@ -1293,6 +1293,15 @@ def _side_roads(units: list[Unit]) -> None:
             continue
         if any(x.word in ("from", "out", "of") for x in units[max(0, j - 4):j]):
             u.meaning = "road_" + u.meaning[5:]
+    for k, u in enumerate(units):  # "reversing into a loading bay on the left": the bay's side, not the lorry's
+        if k < 3 or u.category != "positions" or u.meaning not in ("side_left", "side_right") or \
+                {t.word for t in u.tokens} & LANE_WORDS:
+            continue
+        noun = units[k - 1]
+        if noun.category == "word" and noun.word not in lexicon().function_words and \
+                noun.word.split()[-1] not in SIDE_ROAD_NOUNS and \
+                any(x.word in ("into", "onto") for x in units[max(0, k - 4):k - 1]):
+            u.meaning = "used"
 
 
 QUEUE_WORDS = {"queue", "queued", "queueing", "queuing", "jam", "tailback"}
