@@ -480,3 +480,12 @@ def test_those_the_ego_queues_behind_stand_too():
 def test_a_side_after_the_place_an_agent_moves_into_is_the_places():
     assert ("truck", "go_straight", "front") in agents(
         "A lorry ahead is reversing into a loading bay on the left, so the ego has to wait behind it.")
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("we enter a roundabout and take the first exit", "turn_right"),
+    ("the ego takes the third exit at the roundabout", "turn_left"),
+    ("the ego takes the second exit at the roundabout", "go_straight"),
+])
+def test_roundabout_exits_are_turns(prompt, action):
+    assert ("car", action, "ego") in agents(prompt)
