@@ -489,3 +489,19 @@ def test_a_side_after_the_place_an_agent_moves_into_is_the_places():
 ])
 def test_roundabout_exits_are_turns(prompt, action):
     assert ("car", action, "ego") in agents(prompt)
+
+
+def test_a_hand_held_stop_sign_is_not_the_roads():
+    assert "stop" not in road("A crossing guard is standing in the crosswalk holding a stop sign.").required_signals
+    assert "stop" in road("The ego waits at a stop sign.").required_signals
+
+
+def test_a_rural_road_says_nothing_about_junctions():
+    assert road("rural road, two cyclists riding abreast ahead, ego overtakes").junction is None
+    assert road("rural road with no junctions, a cyclist ahead").junction is False
+
+
+def test_the_vehicles_possessive_names_the_ego_not_a_new_car():
+    found = agents("The vehicle under test was travelling when a jogger ran across the road and was struck by "
+                   "the vehicle's front left corner.")
+    assert [t for t, _, _ in found].count("car") == 1

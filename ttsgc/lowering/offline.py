@@ -223,6 +223,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
 # -- road, weather, kinds -----------------------------------------------------------------------------------
 
 POSSESSIVES = {"its", "his", "her", "their"}
+HAND_HELD = {"holding", "holds", "held", "carrying", "carries", "waving", "waves", "raising", "raises"}
 
 
 def _road(r: _Reader) -> RoadSpec:
@@ -263,6 +264,10 @@ def _road(r: _Reader) -> RoadSpec:
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road" and u.meaning in ("stop", "yield") and k > 1 and \
+                {units[k - 1].word, units[k - 2].word} & HAND_HELD:
+            r.mark(u)
+            continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
                 any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
                 any(x.word in ("flashing", "flash", "flashed") for x in units[max(0, k - 1):k + 2])):
@@ -825,7 +830,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         nxt = units[head + 1] if head + 1 < len(units) else None
         if ego is not None and not plural and kind == ego.type and "other" not in words and u.base in (
                 "car", "vehicle", "truck", "bus") and (nxt is None or nxt.category not in ("positions", "word")
-                                                       or nxt.word in AUXILIARIES):
+                                                       or nxt.word in AUXILIARIES or u.tokens[-1].possessive):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
         if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions"):
