@@ -505,3 +505,13 @@ def test_the_vehicles_possessive_names_the_ego_not_a_new_car():
     found = agents("The vehicle under test was travelling when a jogger ran across the road and was struck by "
                    "the vehicle's front left corner.")
     assert [t for t, _, _ in found].count("car") == 1
+
+
+def test_an_infinitive_after_a_past_tense_leaves_it_the_main_verb():
+    assert ("car", "change_lane_to_left", "ego") in agents(
+        "A truck was parked partially in the lane ahead, so the test vehicle moved into the left lane to pass it.")
+
+
+def test_reports_and_level_crossings_are_no_agents_or_crosswalks():
+    assert [t for t, _, _ in agents("The police report states that the AV was stopped at a red light.")] == ["car"]
+    assert "crosswalk" not in road("The ego approaches a railroad crossing.").required_objects

@@ -1483,8 +1483,8 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     if np is None:
         return None
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
-    later = any(v > i for v in verbs)
-    word = units[i].tokens[0].word
+    later = any(v > i and not (units[v - 1].category == "word" and units[v - 1].word == "to") for v in verbs)
+    word = units[i].tokens[0].word  # a later finite verb makes this one a participle; 'to pass' is none
     participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood", "stuck",
                                                                           "broken") or light
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
