@@ -515,3 +515,16 @@ def test_an_infinitive_after_a_past_tense_leaves_it_the_main_verb():
 def test_reports_and_level_crossings_are_no_agents_or_crosswalks():
     assert [t for t, _, _ in agents("The police report states that the AV was stopped at a red light.")] == ["car"]
     assert "crosswalk" not in road("The ego approaches a railroad crossing.").required_objects
+
+
+@pytest.mark.parametrize("prompt", [
+    "The police report states that vehicle 1 (the AV) was stopped at a red signal when vehicle 2, a pickup, "
+    "failed to stop and struck it from behind.",
+    "Unit 1, the test vehicle, was stopped at a red light. Unit 2, a pickup, struck it from behind.",
+])
+def test_numbered_vehicles_of_police_reports_are_labels(prompt):
+    assert agents(prompt) == sorted([("car", "stop", "ego"), ("car", "go_straight", "back")])
+
+
+def test_a_vehicle_number_before_a_unit_is_a_quantity():
+    assert [t for t, _, _ in agents("The ego drives 2 km behind a bus.")].count("bus") == 1

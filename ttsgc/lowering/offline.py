@@ -633,7 +633,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "comma":
             only_ego = all(x.category == "agents" and (x.meaning == "ego" or x.tokens[-1].label)
                            or x.category == "word" and x.word == "the" for x in current)  # appositions follow
-            new_noun = _has_agent(current) and not only_ego and _starts_noun(units, k + 1)
+            labelled = bool(current) and current[-1].category == "agents" and bool(current[-1].tokens[-1].label) and \
+                not _has_verb(current)  # "... that vehicle 1, the AV, was stopped": an apposition follows
+            new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
             if _has_verb(current) or condition or new_noun or joined:
