@@ -524,7 +524,3 @@ def test_reports_and_level_crossings_are_no_agents_or_crosswalks():
 ])
 def test_numbered_vehicles_of_police_reports_are_labels(prompt):
     assert agents(prompt) == sorted([("car", "stop", "ego"), ("car", "go_straight", "back")])
-
-
-def test_a_vehicle_number_before_a_unit_is_a_quantity():
-    assert [t for t, _, _ in agents("The ego drives 2 km behind a bus.")].count("bus") == 1
