@@ -524,3 +524,14 @@ def test_reports_and_level_crossings_are_no_agents_or_crosswalks():
 ])
 def test_numbered_vehicles_of_police_reports_are_labels(prompt):
     assert agents(prompt) == sorted([("car", "stop", "ego"), ("car", "go_straight", "back")])
+
+
+def test_people_waiting_at_a_crossing_are_at_it():
+    assert ("pedestrian", "stop", "near_the_crosswalk") in agents(
+        "A woman with a stroller is waiting at the zebra crossing as the ego approaches.")
+
+
+def test_a_bare_noun_after_the_ego_and_a_comma_is_another_agent_not_an_apposition():
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "Scenario: unprotected left turn. Actors: ego, oncoming SUV (going straight), pedestrian on the far crosswalk.")
+    assert [t for t, _, _ in agents("The ego, a city bus, turns left.")] == ["bus"]

@@ -1202,6 +1202,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for e in subject:
         if crosswalk and any(a[4] == "cross" and a[0] == stage for a in e.actions):
             e.features.add("crosswalk")  # "crosses at the zebra crossing", "the crosswalk is crossed by"
+        elif crosswalk and e.type == "pedestrian" and "on_sidewalk" not in e.features and any(
+                a[4] == "stop" and a[0] == stage for a in e.actions) and any(
+                u.category == "actions" and u.meaning == "stop" and any(
+                    x.category == "road" and x.meaning in V.CROSSWALK_OBJECTS for x in units[k + 1:k + 4])
+                for k, u in enumerate(units)):
+            e.features.add("crosswalk")  # "a woman is waiting at the zebra crossing": at it
         if any(u.category == "road" and u.meaning == "junction" for u in units) and not e.is_ego and \
                 any(units[i].base in ("approach", "enter", "reach") for i in main_verbs):
             e.features.add("junction_approach")  # "a vehicle approaches the intersection"
@@ -1408,8 +1414,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     r.entities.remove(np.entity)
                 continue
             if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
-                   u.category == "comma" for u in between) and (copula or (between and prev.entity.is_ego)
-                                                               or prev.entity.label):
+                   u.category == "comma" for u in between) and (
+                    copula or prev.entity.label or (between and prev.entity.is_ego and (
+                        units[np.first].word in ("a", "an") or np.first == np.index))):  # not "ego, oncoming SUV"
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
