@@ -535,3 +535,9 @@ def test_a_bare_noun_after_the_ego_and_a_comma_is_another_agent_not_an_appositio
     assert ("car", "go_straight", "road_of_straight") in agents(
         "Scenario: unprotected left turn. Actors: ego, oncoming SUV (going straight), pedestrian on the far crosswalk.")
     assert [t for t, _, _ in agents("The ego, a city bus, turns left.")] == ["bus"]
+
+
+def test_those_the_ego_waits_behind_in_traffic_or_at_a_red_light_stand_too():
+    assert agents("The ego waits at a red light behind a bus.") == sorted([("car", "stop", "ego"),
+                                                                          ("bus", "stop", "front")])
+    assert agents("The ego vehicle is stuck in traffic behind two cars.").count(("car", "stop", "front")) == 2

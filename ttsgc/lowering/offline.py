@@ -1317,7 +1317,7 @@ def _side_roads(units: list[Unit]) -> None:
             u.meaning = "used"
 
 
-QUEUE_WORDS = {"queue", "queued", "queueing", "queuing", "jam", "tailback"}
+QUEUE_WORDS = {"queue", "queued", "queueing", "queuing", "jam", "tailback", "traffic", "red"}  # "stuck in traffic", "at a red light"
 
 
 def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subject: list[Entity], stage: int):
