@@ -541,3 +541,12 @@ def test_those_the_ego_waits_behind_in_traffic_or_at_a_red_light_stand_too():
     assert agents("The ego waits at a red light behind a bus.") == sorted([("car", "stop", "ego"),
                                                                           ("bus", "stop", "front")])
     assert agents("The ego vehicle is stuck in traffic behind two cars.").count(("car", "stop", "front")) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "Oncoming traffic: a car and a motorcycle. The ego turns left at the lights.",
+    "ego turns left at the lights; oncoming: a car and a motorcycle",
+])
+def test_a_heading_of_places_places_the_agents_listed_after_it(prompt):
+    assert agents(prompt) == sorted([("car", "turn_left", "ego"), ("car", "go_straight", "road_of_straight"),
+                                     ("motorcycle", "go_straight", "road_of_straight")])

@@ -1799,11 +1799,16 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     previous: list[Entity] = []
     recent: list[Entity] = []
     pending: list[Entity] = []
+    header: list[Unit] = []
     for k, clause in enumerate(clauses):
         if clause.link in RELATIVES and recent:
             clause.antecedent = recent[-1]
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
+        for e in r.entities[before:]:
+            for u in header if not e.is_ego else []:
+                _modify(r, e, u, clause.stage, 1)
+        header = _header_of_place(clause.units)
         if clause.link == "where" and k > 0 and any(u.category == "actions" and u.meaning.startswith("lane")
                                                     for u in clauses[k - 1].units):
             for e in r.entities[before:]:  # "the ego changes into the left lane, where a van drives ahead"
@@ -1871,11 +1876,29 @@ def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
     return road.model_copy(update={"lanes": 2})
 
 
+HEADER_OF_PLACE = (r"(oncoming|opposing|crossing|cross|following|leading|lead|adjacent|left|right|behind|ahead|in front"
+                   r"|rear|from the left|from the right|from behind)( (lane|traffic|vehicles?|cars?|agents?|side))*")
+HEADER_FILLER = {"traffic", "vehicle", "vehicles", "car", "cars", "agents", "agent", "and", "lane", "side"}
+
+
+def _header_of_place(units: list[Unit]) -> list[Unit]:
+    """'oncoming: a bus and a van', 'Oncoming traffic: ...': a verbless heading of places for the agents listed next."""
+    places = [u for u in units if u.category == "positions"]
+    if not places or _has_verb(units):
+        return []
+    if all(u.category == "positions" or u.word in HEADER_FILLER or u.category == "comma"
+           or (u.category == "agents" and u.meaning in ("none", "generic") and u.tokens[-1].plural) for u in units):
+        return places
+    return []
+
+
 def _title(prompt: str, tokens: list[Token]) -> range:
     """'Cut-in: a target vehicle ...': a short title before a colon names the case, not its agents."""
     m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
     if m is None or "\n" in prompt.strip():  # notes written a line an item have their titles marked already
         return range(0)
+    if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
+        return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
     n = len(tokenize(m.group(1)))
     if n > 12 or n >= len(tokens):
         return range(0)
