@@ -550,3 +550,13 @@ def test_those_the_ego_waits_behind_in_traffic_or_at_a_red_light_stand_too():
 def test_a_heading_of_places_places_the_agents_listed_after_it(prompt):
     assert agents(prompt) == sorted([("car", "turn_left", "ego"), ("car", "go_straight", "road_of_straight"),
                                      ("motorcycle", "go_straight", "road_of_straight")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("dude, a cop just flew past me on the left with sirens blaring", ("police", "go_straight", "back_left")),
+    ("a cop just passed us on the left", ("police", "go_straight", "back_left")),
+    ("The ego car gets cut off by a black SUV from the left lane.", ("car", "block_the_ego", "front_left")),
+])
+def test_chat_interjections_pronoun_objects_and_cut_offs(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and len(found) == 2

@@ -752,6 +752,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
     """The count, determiner words and premodifiers in front of a noun: 'the two dangerous oncoming cars'.
     Modifiers stand between the determiner and the noun; the determiner ends the phrase on the left."""
     count, first, words, modifiers = None, head, set(), []
+    if units[head].word in ("i", "me", "we", "us", "you"):
+        return count, first, words, modifiers  # a pronoun takes no premodifier: 'just drove past us'
     k = head - 1
     in_determiner = False
     while k >= lo:
