@@ -560,3 +560,13 @@ def test_a_heading_of_places_places_the_agents_listed_after_it(prompt):
 def test_chat_interjections_pronoun_objects_and_cut_offs(prompt, expected):
     found = agents(prompt)
     assert expected in found and len(found) == 2
+
+
+def test_a_speed_and_unit_before_a_road_noun_is_its_limit():
+    assert "speed_64" in road("The AV was doing 45 on a 40 mph road.").required_objects + \
+        road("The AV was doing 45 on a 40 mph road.").required_signals
+    assert not any(w.startswith("speed_") for w in road("The ego drives at 40 km/h behind a bus.").required_objects)
+
+
+def test_traffic_circles_are_junctions():
+    assert road("At the traffic circle, the ego yields to a car.").junction is True

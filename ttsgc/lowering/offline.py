@@ -339,6 +339,10 @@ def _denied(units: list[Unit], k: int) -> bool:
 LIMIT_WORDS = {"limit", "zone", "sign", "limited", "posted", "restricted", "maximum", "max", "limits"}
 
 
+LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "area", "stretch", "section", "lane",
+                  "avenue", "roadway", "carriageway", "route", "limit"}
+
+
 def _speed_limits(r: _Reader) -> list[str]:
     """'a 30 km/h speed limit', 'a speed limit of ninety', 'a limit of forty', 'twenty miles per hour'."""
     tokens, out = r.tokens, []
@@ -349,7 +353,11 @@ def _speed_limits(r: _Reader) -> list[str]:
             continue  # the tens of "thirty five": read at the units
         value, first = _number_before(tokens, i)
         around = {x.word for x in tokens[max(0, first - 4): i + 5]}
-        if not around & LIMIT_WORDS or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
+        after_unit = [x.word for x in tokens[i + 1: i + 5]]
+        unit_then_road = first > 0 and tokens[first - 1].word in ("a", "an", "the") and any(
+            after_unit[:n] in (["mph"], ["km", "h"], ["kmh"], ["kph"], ["miles", "per", "hour"])
+            and after_unit[n:n + 1] and after_unit[n] in LIMITED_PLACES for n in (1, 2, 3))  # "a 40 mph road"
+        if not (around & LIMIT_WORDS or unit_then_road) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
             continue
         rest = [x.word for x in tokens[i + 1: i + 4]]
