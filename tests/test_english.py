@@ -570,3 +570,8 @@ def test_a_speed_and_unit_before_a_road_noun_is_its_limit():
 
 def test_traffic_circles_are_junctions():
     assert road("At the traffic circle, the ego yields to a car.").junction is True
+
+
+def test_an_adverb_between_a_noun_and_its_participle_keeps_it_the_nouns():
+    assert agents("At the traffic circle, the ego yields to a car already circulating from the left.") == sorted([
+        ("car", "stop", "ego"), ("car", "go_straight", "road_of_left_turn")])

@@ -1493,7 +1493,8 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     light = False  # "other cars performing lane changes": the noun's doing, not the sentence's
     while k >= 0 and (units[k].category in ("behaviours", "positions") or (
             units[k].category == "word" and units[k].word in ("that", "which", "who", "performing", "making",
-                                                               "doing", "executing", "attempting"))):
+                                                               "doing", "executing", "attempting", "already",
+                                                               "still", "also", "currently", "slowly", "now"))):
         light = light or units[k].word in ("performing", "making", "doing", "executing", "attempting")
         k -= 1
     if k < 0:
