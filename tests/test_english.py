@@ -575,3 +575,14 @@ def test_traffic_circles_are_junctions():
 def test_an_adverb_between_a_noun_and_its_participle_keeps_it_the_nouns():
     assert agents("At the traffic circle, the ego yields to a car already circulating from the left.") == sorted([
         ("car", "stop", "ego"), ("car", "go_straight", "road_of_left_turn")])
+
+
+def test_a_pronoun_takes_no_participle_so_the_past_tense_after_it_is_finite():
+    assert ("car", "stop", "front") in agents(
+        "A learner driver in front of me stalled at the mini roundabout, and the van behind me nearly went into "
+        "the back of me.")
+
+
+def test_my_lane_is_the_egos_lane():
+    assert ("truck", "change_lane_to_left", "right") in agents(
+        "The lorry in the nearside lane indicated right and started to move across into my lane.")

@@ -1327,7 +1327,7 @@ def _side_roads(units: list[Unit]) -> None:
             u.meaning = "used"
 
 
-QUEUE_WORDS = {"queue", "queued", "queueing", "queuing", "jam", "tailback", "traffic", "red"}  # "stuck in traffic", "at a red light"
+QUEUE_WORDS = {"queue", "queued", "queueing", "queuing", "jam", "tailback", "traffic", "red", "lights"}  # "stuck in traffic", "at a red light"
 
 
 def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subject: list[Entity], stage: int):
@@ -1500,8 +1500,8 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     if k < 0:
         return None
     np = next((p for p in phrases if p.index == k), None)
-    if np is None:
-        return None
+    if np is None or units[k].word in ("me", "us", "you", "him", "her", "them", "it"):
+        return None  # "a learner in front of me stalled": a pronoun takes no participle; the verb is finite
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
     later = any(v > i and not (units[v - 1].category == "word" and units[v - 1].word == "to") for v in verbs)
     word = units[i].tokens[0].word  # a later finite verb makes this one a participle; 'to pass' is none
