@@ -586,3 +586,8 @@ def test_a_pronoun_takes_no_participle_so_the_past_tense_after_it_is_finite():
 def test_my_lane_is_the_egos_lane():
     assert ("truck", "change_lane_to_left", "right") in agents(
         "The lorry in the nearside lane indicated right and started to move across into my lane.")
+
+
+def test_a_verb_with_by_after_a_copula_is_a_passive():
+    assert agents("A parked van is passed by the ego on a narrow street.") == sorted([
+        ("car", "go_straight", "ego"), ("car", "stop", "front")])

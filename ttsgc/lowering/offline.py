@@ -202,6 +202,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     prev = tokens[m.start - 1] if m.start > 0 else None
+    if m.category == "actions" and len(span) > 1 and span[-1].word == "by" and prev is not None and prev.word in (
+            "is", "are", "was", "were", "be", "been", "being", "gets", "got", "get"):
+        return [Unit(m.start, m.end - 1, "actions", m.meaning, span[:-1]),  # "is passed by the ego": a passive
+                Unit(m.end - 1, m.end, "word", "by", span[-1:])]
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student")
     after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be",
