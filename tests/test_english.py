@@ -591,3 +591,8 @@ def test_my_lane_is_the_egos_lane():
 def test_a_verb_with_by_after_a_copula_is_a_passive():
     assert agents("A parked van is passed by the ego on a narrow street.") == sorted([
         ("car", "go_straight", "ego"), ("car", "stop", "front")])
+
+
+def test_a_adjective_one_is_another_agent_of_the_same_kind():
+    found = agents("A red car is being driven in front of the ego, and a blue one behind it.")
+    assert [t for t, _, _ in found].count("car") == 3 and ("car", "go_straight", "front") in found

@@ -1075,6 +1075,18 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                                                                               for np in phrases) \
                 and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
                 and not (i + 1 < len(units) and units[i + 1].word == "of"):
+            j = i - 1
+            while j >= 0 and units[j].category == "word" and units[j].word not in ("a", "an", "another") and \
+                    units[j].word not in lexicon().function_words:
+                j -= 1  # "a blue one", "another red one"
+            kin = next((e for e in reversed(recent) if not e.is_ego), None)
+            if j >= 0 and j < i - 1 and units[j].word in ("a", "an", "another") and kin is not None:
+                member = Entity(len(r.entities), kin.type, False, clause.stage, head=kin.head)
+                r.entities.append(member)  # "a red car in front, and a blue one behind it": another car
+                r.notes.append(f"inferred: 'a ... one' is another {kin.head}")
+                r.mark(u)
+                phrases.append(NounPhrase(member, i, i, introduced=True))
+                continue
             member = _member(r, recent)  # "two cars, one in front and one behind"
             if member is not None:
                 r.mark(u)
