@@ -596,3 +596,8 @@ def test_a_verb_with_by_after_a_copula_is_a_passive():
 def test_a_adjective_one_is_another_agent_of_the_same_kind():
     found = agents("A red car is being driven in front of the ego, and a blue one behind it.")
     assert [t for t, _, _ in found].count("car") == 3 and ("car", "go_straight", "front") in found
+
+
+def test_a_second_agent_after_and_then_by_repeats_the_passive():
+    found = agents("The ego is overtaken on the right by an ambulance and then by a fire engine.")
+    assert ("firetruck", "go_straight", "back_right") in found

@@ -1832,6 +1832,13 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             clause.antecedent = recent[-1]
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
+        if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
+                not any(e.is_ego for e in previous):
+            for e in r.entities[before:]:  # "overtaken on the right by an ambulance and then by a fire engine"
+                if not e.is_ego and not e.actions:
+                    e.features |= set().union(*(p.features for p in previous))
+                    e.actions += [(clause.stage,) + a[1:] for p in previous for a in p.actions]
+                    r.notes.append(f"inferred: '{e.head}' after 'by' does what '{previous[0].head}' did")
         for e in r.entities[before:]:
             for u in header if not e.is_ego else []:
                 _modify(r, e, u, clause.stage, 1)
