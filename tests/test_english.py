@@ -601,3 +601,8 @@ def test_a_adjective_one_is_another_agent_of_the_same_kind():
 def test_a_second_agent_after_and_then_by_repeats_the_passive():
     found = agents("The ego is overtaken on the right by an ambulance and then by a fire engine.")
     assert ("firetruck", "go_straight", "back_right") in found
+
+
+def test_a_place_of_traffic_places_the_vehicles_it_counts():
+    assert agents("unprotected left turn, oncoming traffic two cars").count(("car", "go_straight",
+                                                                            "road_of_straight")) == 2

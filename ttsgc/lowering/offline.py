@@ -894,6 +894,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         r.entities.append(entity)
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
+    if first >= 2 and units[first - 1].category == "agents" and units[first - 1].word == "traffic" and \
+            units[first - 2].category == "positions":
+        _modify(r, entity, units[first - 2], stage, strength=1)  # "oncoming traffic two cars": the cars are oncoming
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
 
 
