@@ -606,3 +606,10 @@ def test_a_second_agent_after_and_then_by_repeats_the_passive():
 def test_a_place_of_traffic_places_the_vehicles_it_counts():
     assert agents("unprotected left turn, oncoming traffic two cars").count(("car", "go_straight",
                                                                             "road_of_straight")) == 2
+
+
+def test_numbered_stage_markers_start_stages_and_count_nothing():
+    scene = lower("Stage 1: the ego follows a bus. Stage 2: the bus stops and a car overtakes the ego on the "
+                  "left.").scenario
+    assert len(scene.stages) == 2
+    assert sorted(a.type for a in scene.agents()) == ["bus", "car", "car"]
