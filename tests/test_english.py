@@ -613,3 +613,8 @@ def test_numbered_stage_markers_start_stages_and_count_nothing():
                   "left.").scenario
     assert len(scene.stages) == 2
     assert sorted(a.type for a in scene.agents()) == ["bus", "car", "car"]
+
+
+def test_a_vague_person_doing_what_only_vehicles_do_drives_a_car():
+    assert ("car", "turn_left", "front") in agents("some guy turns left in front of the ego")
+    assert ("pedestrian", "cross_the_road", "front") in agents("a man crosses the road in front of the ego")

@@ -72,7 +72,7 @@ RELATIVES = {"which", "who", "that", "whose", "whom"}
 FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
-OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake"}
+OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake", "around"}
 ACTION_RANK = {  # the more specific predicate wins among equally strong ones
     "sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6,
     "lane_change": 6, "turn_left": 8, "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2,
@@ -1363,6 +1363,11 @@ def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subje
             e.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
+VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people"}
+VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
+                        "block"}
+
+
 def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase], previous: list[Entity]) -> bool:
     """'stopped bus ahead, overtake it on the left': a bare verb opening a clause, done to the agent just named,
     is the ego's (an instruction), not that agent's."""
@@ -1981,6 +1986,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
+        if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in VEHICLE_ONLY_ACTIONS:
+            e.type = "car"  # "someone's pulling out of a parking spot": someone driving
+            r.notes.append(f"inferred: '{e.head}' who {action.replace('_', ' ')}s drives a car")
         action = _sideways(action, junction)
         if "into_ego_lane" in e.features and e.type == "pedestrian":
             action = "cross"  # "a child runs into the ego's path"
