@@ -619,3 +619,8 @@ def test_numbered_stage_markers_start_stages_and_count_nothing():
 def test_a_vague_person_doing_what_only_vehicles_do_drives_a_car():
     assert ("car", "turn_left", "front") in agents("some guy turns left in front of the ego")
     assert ("pedestrian", "cross_the_road", "front") in agents("a man crosses the road in front of the ego")
+
+
+def test_the_side_the_ego_passes_on_is_its_manoeuvre_not_the_place_of_what_it_passes():
+    assert agents("the ego drives around the parked van on the left") == sorted([
+        ("car", "change_lane_to_left", "ego"), ("car", "stop", "front")])

@@ -1004,13 +1004,18 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
                 any("lane" in x.base for x in clause_units[k + 1:k + 5]):
             return  # "waiting for the light to change"
-        if action == "move" and e.is_ego and set(u.base.split()) & OVERTAKING and clause_units is not None \
-                and k is not None:
+        if action == "move" and e.is_ego and clause_units is not None and k is not None and (
+                set(u.base.split()) & OVERTAKING or k + 1 < len(clause_units)
+                and clause_units[k + 1].word in ("around", "round", "past")):  # "go around it on the left"
             side = _direction_after(r, clause_units, k) or next(
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
+                for x in clause_units[k + 1:k + 6]:
+                    if x.category == "positions" and x.meaning == "side_" + side:
+                        x.meaning = "used"  # the side of the ego's manoeuvre, not of what it passes
+                        break
         if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
             e.features.add("overtaking")
         if action == "stop" and {t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
