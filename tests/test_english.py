@@ -444,6 +444,8 @@ def test_drifting_towards_the_ego_from_a_side_is_a_lane_change_into_its_lane():
     ("The sun was going down when a cyclist crossed in front of the ego.", "sunset"),
     ("In the early hours a van stopped ahead of the ego.", "night"),
     ("The sun had just set when our car rolled up to the crossroads.", "sunset"),
+    ("At approximately 7:45 PM, the test vehicle was struck from behind by a motorcycle.", "sunset"),
+    ("At 12:30 am a bus stopped ahead of the ego.", "night"),
 ])
 def test_times_of_day_as_people_write_them(prompt, time_of_day):
     assert lower(prompt).scenario.weather.time == time_of_day

@@ -497,6 +497,10 @@ def _clock_time(r: _Reader) -> tuple[str, str] | None:
         if not (len(nxt.word) == 2 and t.word.isdigit() and int(t.word) < 24 and nxt.word.isdigit()):
             continue
         r.used.update((t.index, nxt.index))
+        after = r.tokens[i + 2].word if i + 2 < len(r.tokens) else ""
+        if after in ("am", "pm") and 1 <= int(t.word) <= 12:  # "7:45 PM"
+            r.used.add(r.tokens[i + 2].index)
+            return _hour_time(int(t.word) % 12 + (12 if after == "pm" else 0), f"{t.word}:{nxt.word} {after}")
         return _hour_time(int(t.word), f"{t.word}:{nxt.word}")
     return None
 
