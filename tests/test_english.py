@@ -626,3 +626,8 @@ def test_a_vague_person_doing_what_only_vehicles_do_drives_a_car():
 def test_the_side_the_ego_passes_on_is_its_manoeuvre_not_the_place_of_what_it_passes():
     assert agents("the ego drives around the parked van on the left") == sorted([
         ("car", "change_lane_to_left", "ego"), ("car", "stop", "front")])
+
+
+def test_the_verb_after_forced_the_ego_to_is_the_egos():
+    assert agents("A box truck double-parked in the travel lane forced the AV to change lanes to the left.") == \
+        sorted([("car", "change_lane_to_left", "ego"), ("truck", "stop", "front")])

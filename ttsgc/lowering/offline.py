@@ -1222,7 +1222,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
                                        "turn_" + after.tokens[-1].word, None))
     for i in main_verbs:
-        for e in subject:
+        made = _made_to(units, i, phrases)
+        for e in made or subject:
             _modify(r, e, units[i], stage, strength, units, i)
             if e.is_ego and by is not None and units[i].meaning == "move" and units[i].base in STEERING:
                 side = next((u.meaning[5:] for k, u in enumerate(units[:i]) if u.category == "positions"
@@ -1375,6 +1376,20 @@ def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subje
 VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people"}
 VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
                         "block"}
+
+
+CAUSATIVES = {"force", "forced", "forces", "forcing", "cause", "caused", "causes", "causing", "make", "made", "makes",
+              "making", "compel", "compelled", "require", "required", "requires", "oblige", "obliged"}
+
+
+def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entity]:
+    """'a truck forced the AV to change lanes': the verb after 'to' is the object's doing."""
+    if i < 3 or units[i - 1].word != "to":
+        return []
+    np = next((p for p in phrases if p.index == i - 2 and p.entity is not None), None)
+    if np is None or np.first == 0 or units[np.first - 1].word not in CAUSATIVES:
+        return []
+    return np.group or [np.entity]
 
 
 def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase], previous: list[Entity]) -> bool:
