@@ -631,3 +631,9 @@ def test_the_side_the_ego_passes_on_is_its_manoeuvre_not_the_place_of_what_it_pa
 def test_the_verb_after_forced_the_ego_to_is_the_egos():
     assert agents("A box truck double-parked in the travel lane forced the AV to change lanes to the left.") == \
         sorted([("car", "change_lane_to_left", "ego"), ("truck", "stop", "front")])
+
+
+def test_a_vehicle_named_then_said_what_it_is_in_brackets_is_one_agent():
+    found = agents("AV stationary at red light. Third-party vehicle (silver hatchback) made contact with the rear "
+                   "of the AV at low speed.")
+    assert found == sorted([("car", "stop", "ego"), ("car", "go_straight", "back")])

@@ -1474,7 +1474,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
                    u.category == "comma" for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
-                        units[np.first].word in ("a", "an") or np.first == np.index))):  # not "ego, oncoming SUV"
+                        units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
+                    or (between and prev.entity.head.split()[-1] in ("vehicle", "agent", "actor", "user", "party")
+                        and units[np.first].word in ("a", "an"))):  # "a third-party vehicle, a silver hatchback,"
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
