@@ -637,3 +637,10 @@ def test_a_vehicle_named_then_said_what_it_is_in_brackets_is_one_agent():
     found = agents("AV stationary at red light. Third-party vehicle (silver hatchback) made contact with the rear "
                    "of the AV at low speed.")
     assert found == sorted([("car", "stop", "ego"), ("car", "go_straight", "back")])
+
+
+def test_people_crossing_outside_the_crosswalk_are_not_at_it():
+    prompt = ("While proceeding straight through the intersection, a pedestrian entered the roadway from the left "
+              "outside of the crosswalk.")
+    assert ("pedestrian", "cross_the_road", "front_left") in agents(prompt)
+    assert "crosswalk" in road(prompt).required_objects

@@ -307,7 +307,7 @@ def _road(r: _Reader) -> RoadSpec:
                     continue  # "light rain" is read as weather first; a stray "light" after weather is not a signal
                 put(meaning, negated)
             continue
-        if u.category == "positions" and u.meaning == "crosswalk":  # "near the crosswalk": there is one
+        if u.category == "positions" and u.meaning in ("crosswalk", "off_crosswalk"):  # "near the crosswalk": there is one
             said = {t.word for t in u.tokens}
             word = "continental_crosswalk" if "zebra" in said else "crosswalk"
             if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]):
@@ -1757,7 +1757,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
         side = UNSPECIFIED["side_beside_a_person" if e.type in V.VULNERABLE_TYPES else "side_beside_a_vehicle"]
-    if person and crossing and has_crosswalk and not behind:
+    if person and crossing and has_crosswalk and not behind and "off_crosswalk" not in f:
         return "near_the_crosswalk", False  # people crossing where there is a crosswalk cross at it
     if side and action == "stop" and "parked" in f and not person and \
             not f & {"ahead", "behind", "level", "overtaking"} and "target_lane" not in f:
