@@ -2022,6 +2022,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             action = "cross"  # people on foot in the road cross it
         if "into_ego_lane" in e.features and action in ("move", "lane_change"):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
+        bare = next((side for side in SIDES if f"bare_{side}" in e.features), None)
+        if junction and action == "cut_in" and bare and not e.features & {"ahead", "behind", "level", "from_lane",
+                                                                          "into_ego_lane", "overtaking"}:
+            e.features.add(f"road_{bare}")  # at a crossroads, "a taxi on our right waiting to pull out": its road
         if action in ("cut_in", "lane_change") and (_placed(e) and e.features & {"road_left", "road_right",
                                                                                  "road_straight", "cross_road"}):
             action = "move"  # "pulled out of a side road on the left": a junction road, no lane change
