@@ -650,3 +650,8 @@ def test_pulling_out_from_a_side_at_a_junction_comes_from_that_road():
     assert ("car", "go_straight", "road_of_right_turn") in agents(
         "A taxi on our right was waiting to pull out at the crossroads.")
     assert ("cyclist", "go_straight", "right") in agents("a cyclist coming up fast on its inside")
+
+
+def test_a_couple_on_its_own_is_two_people():
+    assert agents("an elderly couple cross the road ahead").count(("pedestrian", "cross_the_road", "front")) == 2
+    assert agents("a couple of cars wait at the light").count(("car", "stop", "front")) == 2
