@@ -655,3 +655,12 @@ def test_pulling_out_from_a_side_at_a_junction_comes_from_that_road():
 def test_a_couple_on_its_own_is_two_people():
     assert agents("an elderly couple cross the road ahead").count(("pedestrian", "cross_the_road", "front")) == 2
     assert agents("a couple of cars wait at the light").count(("car", "stop", "front")) == 2
+
+
+@pytest.mark.parametrize("prompt, condition", [
+    ("Under grey skies after a shower, a cyclist overtakes the ego.", "wet_cloudy"),
+    ("The tarmac was still damp from the morning rain when a bus pulled out.", "wet"),
+])
+def test_rain_that_has_fallen_leaves_the_road_wet(prompt, condition):
+    scene = lower(prompt).scenario
+    assert scene.weather.condition == condition and len(scene.stages) == 1
