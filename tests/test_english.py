@@ -664,3 +664,13 @@ def test_a_couple_on_its_own_is_two_people():
 def test_rain_that_has_fallen_leaves_the_road_wet(prompt, condition):
     scene = lower(prompt).scenario
     assert scene.weather.condition == condition and len(scene.stages) == 1
+
+
+def test_a_manoeuvre_said_to_be_impossible_does_not_happen():
+    assert ("truck", "go_straight", "front") in agents("slow tractor on a country road, overtaking not possible")
+
+
+def test_crossing_from_a_side_through_a_signal_is_at_a_junction():
+    assert ("cyclist", "go_straight", "road_of_left_turn") in agents("cyclist running the red light from the left")
+    assert road("cyclist running the red light from the left").junction is True
+    assert road("a car from the left lane cuts in at a red light").junction is not True

@@ -1314,6 +1314,11 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
     if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
            for u in units[max(0, i - 3):i]):
         return True
+    after = [u.word for u in units[i + 1:i + 4]]
+    if after[:1] and after[0] in ("impossible", "prohibited", "forbidden", "banned") or \
+            after[:2] in (["not", "possible"], ["not", "allowed"], ["not", "permitted"], ["is", "impossible"]) or \
+            after[:3] in (["is", "not", "possible"], ["is", "not", "allowed"], ["not", "an", "option"]):
+        return True  # "overtaking not possible": the manoeuvre is ruled out
     for u in reversed(units[max(0, i - 3):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
                                                "failing", "refused", "refuses", "without", "unable") or (
@@ -1893,7 +1898,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
                        "no template used")
     road = _ego_lane_road(r, road)
-    junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals))
+    junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
+        road.junction is None and "traffic_light" in road.required_signals and any(
+            f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES))
+    # "a cyclist running the red light from the left": crossing traffic at a signalised junction
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
         (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
         for st in {a[0] for a in e.actions})  # "once it turns green we turn left": a later turn is at a junction
