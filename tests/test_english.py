@@ -674,3 +674,10 @@ def test_crossing_from_a_side_through_a_signal_is_at_a_junction():
     assert ("cyclist", "go_straight", "road_of_left_turn") in agents("cyclist running the red light from the left")
     assert road("cyclist running the red light from the left").junction is True
     assert road("a car from the left lane cuts in at a red light").junction is not True
+
+
+def test_oncoming_traffic_at_the_lights_is_at_a_junction_and_without_them_is_not():
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "The ego waits at a red light while an oncoming car goes straight.")
+    assert ("bus", "go_straight", "front_left") in agents(
+        "In snowy conditions, the ego is followed by a truck while a bus coming the other way passes on the left.")

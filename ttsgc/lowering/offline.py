@@ -1899,9 +1899,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                        "no template used")
     road = _ego_lane_road(r, road)
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
-        road.junction is None and "traffic_light" in road.required_signals and any(
-            f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES))
-    # "a cyclist running the red light from the left": crossing traffic at a signalised junction
+        road.junction is None and "traffic_light" in road.required_signals and (any(
+            f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
+            or any("road_straight" in e.features for e in r.entities)))
+    # "a cyclist running the red light from the left", "an oncoming car at the lights": a signalised junction
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
         (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
         for st in {a[0] for a in e.actions})  # "once it turns green we turn left": a later turn is at a junction
