@@ -681,3 +681,15 @@ def test_oncoming_traffic_at_the_lights_is_at_a_junction_and_without_them_is_not
         "The ego waits at a red light while an oncoming car goes straight.")
     assert ("bus", "go_straight", "front_left") in agents(
         "In snowy conditions, the ego is followed by a truck while a bus coming the other way passes on the left.")
+
+
+def test_a_speed_someone_is_doing_is_no_limit():
+    assert [w for w in road("I was stuck behind a learner doing 20 in a 40 zone for ages").required_objects +
+            road("I was stuck behind a learner doing 20 in a 40 zone for ages").required_signals
+            if w.startswith("speed_")] == ["speed_40"]
+
+
+def test_ride_hailing_cars_and_e_scooters_and_the_people_they_pick_up():
+    assert agents("bro the Uber in front of me just stopped dead in the middle of the road to pick someone up") \
+        == sorted([("car", "go_straight", "ego"), ("car", "stop", "front")])
+    assert [t for t, _, _ in agents("this e-scooter guy comes flying down the road")].count("cyclist") == 1

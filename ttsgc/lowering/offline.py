@@ -361,6 +361,11 @@ def _speed_limits(r: _Reader) -> list[str]:
         unit_then_road = first > 0 and tokens[first - 1].word in ("a", "an", "the") and any(
             after_unit[:n] in (["mph"], ["km", "h"], ["kmh"], ["kph"], ["miles", "per", "hour"])
             and after_unit[n:n + 1] and after_unit[n] in LIMITED_PLACES for n in (1, 2, 3))  # "a 40 mph road"
+        speed_of_someone = first > 0 and tokens[first - 1].word in (
+            "doing", "going", "travelling", "traveling", "driving", "at", "about", "around", "approximately",
+            "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES)
+        if speed_of_someone:
+            continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
         if not (around & LIMIT_WORDS or unit_then_road) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
             continue
