@@ -693,3 +693,15 @@ def test_ride_hailing_cars_and_e_scooters_and_the_people_they_pick_up():
     assert agents("bro the Uber in front of me just stopped dead in the middle of the road to pick someone up") \
         == sorted([("car", "go_straight", "ego"), ("car", "stop", "front")])
     assert [t for t, _, _ in agents("this e-scooter guy comes flying down the road")].count("cyclist") == 1
+
+
+def test_a_test_case_name_is_no_agent_but_a_prompt_of_only_a_case_name_is_read():
+    assert agents("Test case CCRs: car-to-car rear stationary, target vehicle stationary in ego lane, VUT "
+                  "approaching at 50 km/h.") == sorted([("car", "go_straight", "ego"), ("car", "stop", "front")])
+    assert "pedestrian" in [t for t, _, _ in agents(
+        "CPLA: car-to-pedestrian longitudinal adult walking along the road in the same direction as the VUT.")]
+
+
+def test_bracketed_descriptions_of_the_ego_and_a_vru():
+    assert agents("Actors: EGO (sedan, turning right), VRU (cyclist, straight, from behind on the right).") == \
+        sorted([("car", "turn_right", "ego"), ("cyclist", "go_straight", "back_right")])

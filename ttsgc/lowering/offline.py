@@ -607,10 +607,21 @@ class Clause:
 
 
 def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
-    case_names = {u.tokens[0].sentence for u in r.units if u.category == "agents" and u.meaning == "none"
-                  and u.tokens[0].word in ("car", "vehicle") and len(u.tokens) > 2 and u.tokens[1].word == "to"}
-    units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u) and not u.tokens[0].title
-             and u.tokens[0].sentence not in case_names]  # "car-to-pedestrian farside adult": a test case's name
+    in_case_name: set[int] = set()  # "car-to-pedestrian farside adult": a test case's name, up to the next comma
+    naming = False
+    for k, u in enumerate(r.units):
+        if u.category == "agents" and u.meaning == "none" and u.tokens[0].word in ("car", "vehicle") and \
+                len(u.tokens) > 2 and u.tokens[1].word == "to":
+            naming = True
+        elif naming and (u.category == "comma" or u.tokens[0].sentence != r.units[k - 1].tokens[0].sentence):
+            naming = False
+        if naming:
+            in_case_name.add(k)
+    units = [u for k, u in enumerate(r.units) if u.start not in skip and not _hypothetical(r.tokens, u)
+             and not u.tokens[0].title and k not in in_case_name]
+    if in_case_name and not any(u.category == "agents" and u.meaning != "none" for u in units):
+        units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u)
+                 and not u.tokens[0].title]  # the case's name is all the prompt says of its agents: read it
     out: list[Clause] = []
     stage, current, condition, link = 0, [], False, ""
     sentence = units[0].tokens[0].sentence if units else 0
@@ -654,8 +665,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "comma":
             only_ego = all(x.category == "agents" and (x.meaning == "ego" or x.tokens[-1].label)
                            or x.category == "word" and x.word == "the" for x in current)  # appositions follow
-            labelled = bool(current) and current[-1].category == "agents" and bool(current[-1].tokens[-1].label) and \
-                not _has_verb(current)  # "... that vehicle 1, the AV, was stopped": an apposition follows
+            labelled = bool(current) and current[-1].category == "agents" and (
+                bool(current[-1].tokens[-1].label) or current[-1].base.split()[-1] in APPOSED_HEADS) and \
+                not _has_verb(current)  # "... that vehicle 1, the AV, was stopped", "VRU, a cyclist,": apposition
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
@@ -1402,6 +1414,9 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
     return np.group or [np.entity]
 
 
+APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv"}  # said what they are
+
+
 def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase], previous: list[Entity]) -> bool:
     """'stopped bus ahead, overtake it on the left': a bare verb opening a clause, done to the agent just named,
     is the ego's (an instruction), not that agent's."""
@@ -1485,13 +1500,13 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                    u.category == "comma" for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
-                    or (between and prev.entity.head.split()[-1] in ("vehicle", "agent", "actor", "user", "party")
+                    or (between and prev.entity.head.split()[-1] in APPOSED_HEADS
                         and units[np.first].word in ("a", "an"))):  # "a third-party vehicle, a silver hatchback,"
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
                         a.type = b.type
-                elif a.label or a.head in ("car", "vehicle", "sv", "pov", "target"):
+                elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS:
                     a.type = b.type
                     a.features |= b.features
                     a.actions += b.actions
