@@ -705,3 +705,13 @@ def test_a_test_case_name_is_no_agent_but_a_prompt_of_only_a_case_name_is_read()
 def test_bracketed_descriptions_of_the_ego_and_a_vru():
     assert agents("Actors: EGO (sedan, turning right), VRU (cyclist, straight, from behind on the right).") == \
         sorted([("car", "turn_right", "ego"), ("cyclist", "go_straight", "back_right")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("50 m ahead a bus stops", [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
+    ("twenty-five metres ahead a lorry sits in the left lane",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front_left")]),
+    ("the ego passes two bus stops", [("car", "go_straight", "ego")]),
+])
+def test_a_fronted_distance_and_place_then_the_subject(prompt, expected):
+    assert agents(prompt) == sorted(expected)

@@ -202,6 +202,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     prev = tokens[m.start - 1] if m.start > 0 else None
+    if m.category == "agents" and m.meaning == "none" and [t.word for t in span] == ["bus", "stops"] and \
+            prev is not None and prev.word in ("a", "the", "this", "that", "city", "school"):
+        return [Unit(m.start, m.start + 1, "agents", "bus", span[:1]),  # "a bus stops": no bus stops
+                Unit(m.start + 1, m.end, "actions", "stop", span[1:])]
     if m.category == "actions" and len(span) > 1 and span[-1].word == "by" and prev is not None and prev.word in (
             "is", "are", "was", "were", "be", "been", "being", "gets", "got", "get"):
         return [Unit(m.start, m.end - 1, "actions", m.meaning, span[:-1]),  # "is passed by the ego": a passive
@@ -1417,6 +1421,9 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
 APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv"}  # said what they are
 
 
+DISTANCE_UNITS = {"m", "metres", "meters", "metre", "meter", "yards", "yard", "feet", "ft", "km", "miles", "mile"}
+
+
 def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase], previous: list[Entity]) -> bool:
     """'stopped bus ahead, overtake it on the left': a bare verb opening a clause, done to the agent just named,
     is the ego's (an instruction), not that agent's."""
@@ -1527,6 +1534,9 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
     if u.category == "positions" and u.meaning in ("ahead", "behind", "level", "side_left", "side_right",
                                                     "front_left", "front_right", "back_left", "back_right"):
         # "behind the ego a delivery van keeps its distance": the place is complete, the van is the subject
+        if u.meaning in ("ahead", "behind") and len(u.tokens) == 1 and k > 0 and (
+                units[k - 1].word in DISTANCE_UNITS or units[k - 1].word in ("up", "further", "way", "just")):
+            return False  # "twenty-five metres ahead a lorry sits", "up ahead a bus": a place, then the subject
         return u.tokens[-1].word not in ("ego", "it", "us", "you", "them", "him", "her", "me")
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
