@@ -715,3 +715,15 @@ def test_bracketed_descriptions_of_the_ego_and_a_vru():
 ])
 def test_a_fronted_distance_and_place_then_the_subject(prompt, expected):
     assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("a van undertakes the ego", ("car", "go_straight", "back_right")),
+    ("Say there's a bus pulling away from a stop on our left.", ("bus", "change_lane_to_right", "front_left")),
+])
+def test_undertaking_is_on_the_kerb_side_and_pulling_away_from_a_stop_is_an_origin(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_an_alternative_said_with_or_maybe_is_no_second_agent():
+    assert len(agents("I think there might be a truck coming from the left, or maybe a van, it's hard to say.")) == 2

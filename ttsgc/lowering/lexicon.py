@@ -222,6 +222,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"s' ", "s 's ", text)
     text = re.sub(r"(^|[.!?]\s+)(dude|man|bro|mate|guys|dude|lol|omg|ok|okay|well|yeah)\s*,\s*", r"\1", text)  # "dude, a cop..."
     text = re.sub(r"\bcouple\b(?! of)", "couple of people", text)  # "a couple were crossing": two people
+    text = re.sub(r",? or (?:maybe|possibly|perhaps|probably) (?:an?|the|some) [a-z ]+?(?=[,.;!?]|$)", "",
+                  text)  # "a truck, or maybe a van,": one agent, not an alternative as well
     text = re.sub(r"\b(left|right) hand\b", r"\1", text)  # "the right-hand lane"
     text = re.sub(r"\b(that|this|its|our|their) (left|right) lane", r"the \2 lane", text)
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")

@@ -1043,6 +1043,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                         break
         if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
             e.features.add("overtaking")
+            if "undertake" in u.base.split():
+                e.features.add("undertaking")  # passing on the kerb side
         if action == "stop" and {t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
                                                                  "stall", "stalled", "double", "abandon"}:
             e.features.add("parked")
@@ -1066,7 +1068,7 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
                     u.meaning.startswith("road") and not turning) or (
                     not turning and any(x.word == "from" for x in units[k + 1:j])) or (
-                    not turning and "out" in units[k].base.split()):  # "pulling out of a stop on the right"
+                    not turning and {"out", "from"} & set(units[k].base.split())):  # "pulling out of a stop on the right"
                 return None  # where it comes from, not where it goes
             r.mark(u)
             u.meaning = "used"
@@ -1783,7 +1785,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "ego_lane" in f and not lane_move and "into_ego_lane" not in f:
         side = None
     if side is None and "overtaking" in f:
-        side = UNSPECIFIED["side_of_an_overtaker"]
+        side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
     if action == "block" and side and "from_lane" in f and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
