@@ -727,3 +727,12 @@ def test_undertaking_is_on_the_kerb_side_and_pulling_away_from_a_stop_is_an_orig
 
 def test_an_alternative_said_with_or_maybe_is_no_second_agent():
     assert len(agents("I think there might be a truck coming from the left, or maybe a van, it's hard to say.")) == 2
+
+
+@pytest.mark.parametrize("prompt, condition", [
+    ("It was a murky morning when a lorry drifted into our lane.", "cloudy"),
+    ("It was mizzling as the ego approached the roundabout.", "soft_rain"),
+    ("The weather was fine and dry; a bus stops.", "clear"),
+])
+def test_british_weather_words(prompt, condition):
+    assert lower(prompt).scenario.weather.condition == condition
