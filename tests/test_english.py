@@ -736,3 +736,16 @@ def test_an_alternative_said_with_or_maybe_is_no_second_agent():
 ])
 def test_british_weather_words(prompt, condition):
     assert lower(prompt).scenario.weather.condition == condition
+
+
+def test_a_flashing_signal_is_a_traffic_light_and_a_vehicles_flashing_lights_are_not():
+    assert "traffic_light" in road("You approach an intersection with a flashing red light.").required_signals
+    assert "traffic_light" not in road("the bus has stopped with flashing lights").required_signals
+    assert ("bus", "stop", "front") in agents("the bus has stopped with flashing lights")
+
+
+def test_a_limit_said_after_the_road_it_belongs_to():
+    assert "speed_105" in road("Four-lane divided highway, 65 mph. A semi is merging.").required_objects + \
+        road("Four-lane divided highway, 65 mph. A semi is merging.").required_signals
+    found = road("The ego drives on the highway at 65 mph.")
+    assert not any(w.startswith("speed_") for w in found.required_objects + found.required_signals)

@@ -278,7 +278,8 @@ def _road(r: _Reader) -> RoadSpec:
             continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
                 any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
-                any(x.word in ("flashing", "flash", "flashed") for x in units[max(0, k - 1):k + 2])):
+                u.tokens[-1].word == "lights" and any(x.word in ("flashing", "flash", "flashed")
+                                                      for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
             r.mark(u)
             continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
         if u.category == "road":
@@ -370,7 +371,9 @@ def _speed_limits(r: _Reader) -> list[str]:
             "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES)
         if speed_of_someone:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
-        if not (around & LIMIT_WORDS or unit_then_road) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
+        road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]} & LIMITED_PLACES and \
+            after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
+        if not (around & LIMIT_WORDS or unit_then_road or road_then_unit) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
             continue
         rest = [x.word for x in tokens[i + 1: i + 4]]
@@ -842,7 +845,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         elif kind != "car" and ego.type == "car":
             ego.type = kind
         return NounPhrase(ego, head, first)
-    if u.meaning == "none" or count == 0:  # "no other vehicles"
+    if u.meaning == "none":  # "stopped with flashing lights": no agent, and no claim on the verb before it
+        return NounPhrase(None, head, head if units[first].category == "actions" else first)
+    if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
     label = u.tokens[-1].label
     if label:
