@@ -749,3 +749,13 @@ def test_a_limit_said_after_the_road_it_belongs_to():
         road("Four-lane divided highway, 65 mph. A semi is merging.").required_signals
     found = road("The ego drives on the highway at 65 mph.")
     assert not any(w.startswith("speed_") for w in found.required_objects + found.required_signals)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("R turn, ped crossing side street", ("car", "turn_right", "ego")),
+    ("motorbike overtaking on R, wet", ("motorcycle", "go_straight", "back_right")),
+    ("jct, no signals, ego straight, car from R turning L", ("car", "turn_left", "road_of_right_turn")),
+    ("ego stopped, amb behind, sirens", ("ambulance", "go_straight", "back")),
+])
+def test_terse_one_letter_sides_and_abbreviations(prompt, expected):
+    assert expected in agents(prompt)
