@@ -759,3 +759,8 @@ def test_a_limit_said_after_the_road_it_belongs_to():
 ])
 def test_terse_one_letter_sides_and_abbreviations(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_car_makes_are_cars_and_the_kerb_is_the_right_side():
+    assert ("car", "go_straight", "back") in agents("a BMW came up behind me flashing its headlights")
+    assert ("car", "change_lane_to_left", "front_right") in agents("a Ford Focus pulls out from the curb ahead")

@@ -1057,6 +1057,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 clause_units is not None and k is not None and any(
                     x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])):
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
+        if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
+            e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
         e.actions.append((stage, strength, ACTION_RANK.get(action, 0), r.tick(), action, direction))
