@@ -443,6 +443,9 @@ def test_drifting_towards_the_ego_from_a_side_is_a_lane_change_into_its_lane():
     ("At 3 pm a bus pulled out in front of the test car.", "noon"),
     ("The sun was going down when a cyclist crossed in front of the ego.", "sunset"),
     ("In the early hours a van stopped ahead of the ego.", "night"),
+    ("The sun had just set when our car rolled up to the crossroads.", "sunset"),
+    ("At approximately 7:45 PM, the test vehicle was struck from behind by a motorcycle.", "sunset"),
+    ("At 12:30 am a bus stopped ahead of the ego.", "night"),
 ])
 def test_times_of_day_as_people_write_them(prompt, time_of_day):
     assert lower(prompt).scenario.weather.time == time_of_day
@@ -475,3 +478,289 @@ def test_those_the_ego_queues_behind_stand_too():
     found = agents("motorway, night, ego stopped in queue behind two lorries")
     assert found.count(("truck", "stop", "front")) == 2
     assert ("truck", "go_straight", "front") in agents("ego stopped behind a lorry that keeps going")
+
+
+def test_a_side_after_the_place_an_agent_moves_into_is_the_places():
+    assert ("truck", "go_straight", "front") in agents(
+        "A lorry ahead is reversing into a loading bay on the left, so the ego has to wait behind it.")
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("we enter a roundabout and take the first exit", "turn_right"),
+    ("the ego takes the third exit at the roundabout", "turn_left"),
+    ("the ego takes the second exit at the roundabout", "go_straight"),
+])
+def test_roundabout_exits_are_turns(prompt, action):
+    assert ("car", action, "ego") in agents(prompt)
+
+
+def test_a_hand_held_stop_sign_is_not_the_roads():
+    assert "stop" not in road("A crossing guard is standing in the crosswalk holding a stop sign.").required_signals
+    assert "stop" in road("The ego waits at a stop sign.").required_signals
+
+
+def test_a_rural_road_says_nothing_about_junctions():
+    assert road("rural road, two cyclists riding abreast ahead, ego overtakes").junction is None
+    assert road("rural road with no junctions, a cyclist ahead").junction is False
+
+
+def test_the_vehicles_possessive_names_the_ego_not_a_new_car():
+    found = agents("The vehicle under test was travelling when a jogger ran across the road and was struck by "
+                   "the vehicle's front left corner.")
+    assert [t for t, _, _ in found].count("car") == 1
+
+
+def test_an_infinitive_after_a_past_tense_leaves_it_the_main_verb():
+    assert ("car", "change_lane_to_left", "ego") in agents(
+        "A truck was parked partially in the lane ahead, so the test vehicle moved into the left lane to pass it.")
+
+
+def test_reports_and_level_crossings_are_no_agents_or_crosswalks():
+    assert [t for t, _, _ in agents("The police report states that the AV was stopped at a red light.")] == ["car"]
+    assert "crosswalk" not in road("The ego approaches a railroad crossing.").required_objects
+
+
+@pytest.mark.parametrize("prompt", [
+    "The police report states that vehicle 1 (the AV) was stopped at a red signal when vehicle 2, a pickup, "
+    "failed to stop and struck it from behind.",
+    "Unit 1, the test vehicle, was stopped at a red light. Unit 2, a pickup, struck it from behind.",
+])
+def test_numbered_vehicles_of_police_reports_are_labels(prompt):
+    assert agents(prompt) == sorted([("car", "stop", "ego"), ("car", "go_straight", "back")])
+
+
+def test_people_waiting_at_a_crossing_are_at_it():
+    assert ("pedestrian", "stop", "near_the_crosswalk") in agents(
+        "A woman with a stroller is waiting at the zebra crossing as the ego approaches.")
+
+
+def test_a_bare_noun_after_the_ego_and_a_comma_is_another_agent_not_an_apposition():
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "Scenario: unprotected left turn. Actors: ego, oncoming SUV (going straight), pedestrian on the far crosswalk.")
+    assert [t for t, _, _ in agents("The ego, a city bus, turns left.")] == ["bus"]
+
+
+def test_those_the_ego_waits_behind_in_traffic_or_at_a_red_light_stand_too():
+    assert agents("The ego waits at a red light behind a bus.") == sorted([("car", "stop", "ego"),
+                                                                          ("bus", "stop", "front")])
+    assert agents("The ego vehicle is stuck in traffic behind two cars.").count(("car", "stop", "front")) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "Oncoming traffic: a car and a motorcycle. The ego turns left at the lights.",
+    "ego turns left at the lights; oncoming: a car and a motorcycle",
+])
+def test_a_heading_of_places_places_the_agents_listed_after_it(prompt):
+    assert agents(prompt) == sorted([("car", "turn_left", "ego"), ("car", "go_straight", "road_of_straight"),
+                                     ("motorcycle", "go_straight", "road_of_straight")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("dude, a cop just flew past me on the left with sirens blaring", ("police", "go_straight", "back_left")),
+    ("a cop just passed us on the left", ("police", "go_straight", "back_left")),
+    ("The ego car gets cut off by a black SUV from the left lane.", ("car", "block_the_ego", "front_left")),
+])
+def test_chat_interjections_pronoun_objects_and_cut_offs(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and len(found) == 2
+
+
+def test_a_speed_and_unit_before_a_road_noun_is_its_limit():
+    assert "speed_64" in road("The AV was doing 45 on a 40 mph road.").required_objects + \
+        road("The AV was doing 45 on a 40 mph road.").required_signals
+    assert not any(w.startswith("speed_") for w in road("The ego drives at 40 km/h behind a bus.").required_objects)
+
+
+def test_traffic_circles_are_junctions():
+    assert road("At the traffic circle, the ego yields to a car.").junction is True
+
+
+def test_an_adverb_between_a_noun_and_its_participle_keeps_it_the_nouns():
+    assert agents("At the traffic circle, the ego yields to a car already circulating from the left.") == sorted([
+        ("car", "stop", "ego"), ("car", "go_straight", "road_of_left_turn")])
+
+
+def test_a_pronoun_takes_no_participle_so_the_past_tense_after_it_is_finite():
+    assert ("car", "stop", "front") in agents(
+        "A learner driver in front of me stalled at the mini roundabout, and the van behind me nearly went into "
+        "the back of me.")
+
+
+def test_my_lane_is_the_egos_lane():
+    assert ("truck", "change_lane_to_left", "right") in agents(
+        "The lorry in the nearside lane indicated right and started to move across into my lane.")
+
+
+def test_a_verb_with_by_after_a_copula_is_a_passive():
+    assert agents("A parked van is passed by the ego on a narrow street.") == sorted([
+        ("car", "go_straight", "ego"), ("car", "stop", "front")])
+
+
+def test_a_adjective_one_is_another_agent_of_the_same_kind():
+    found = agents("A red car is being driven in front of the ego, and a blue one behind it.")
+    assert [t for t, _, _ in found].count("car") == 3 and ("car", "go_straight", "front") in found
+
+
+def test_a_second_agent_after_and_then_by_repeats_the_passive():
+    found = agents("The ego is overtaken on the right by an ambulance and then by a fire engine.")
+    assert ("firetruck", "go_straight", "back_right") in found
+
+
+def test_a_place_of_traffic_places_the_vehicles_it_counts():
+    assert agents("unprotected left turn, oncoming traffic two cars").count(("car", "go_straight",
+                                                                            "road_of_straight")) == 2
+
+
+def test_numbered_stage_markers_start_stages_and_count_nothing():
+    scene = lower("Stage 1: the ego follows a bus. Stage 2: the bus stops and a car overtakes the ego on the "
+                  "left.").scenario
+    assert len(scene.stages) == 2
+    assert sorted(a.type for a in scene.agents()) == ["bus", "car", "car"]
+
+
+def test_a_vague_person_doing_what_only_vehicles_do_drives_a_car():
+    assert ("car", "turn_left", "front") in agents("some guy turns left in front of the ego")
+    assert ("pedestrian", "cross_the_road", "front") in agents("a man crosses the road in front of the ego")
+
+
+def test_the_side_the_ego_passes_on_is_its_manoeuvre_not_the_place_of_what_it_passes():
+    assert agents("the ego drives around the parked van on the left") == sorted([
+        ("car", "change_lane_to_left", "ego"), ("car", "stop", "front")])
+
+
+def test_the_verb_after_forced_the_ego_to_is_the_egos():
+    assert agents("A box truck double-parked in the travel lane forced the AV to change lanes to the left.") == \
+        sorted([("car", "change_lane_to_left", "ego"), ("truck", "stop", "front")])
+
+
+def test_a_vehicle_named_then_said_what_it_is_in_brackets_is_one_agent():
+    found = agents("AV stationary at red light. Third-party vehicle (silver hatchback) made contact with the rear "
+                   "of the AV at low speed.")
+    assert found == sorted([("car", "stop", "ego"), ("car", "go_straight", "back")])
+
+
+def test_people_crossing_outside_the_crosswalk_are_not_at_it():
+    prompt = ("While proceeding straight through the intersection, a pedestrian entered the roadway from the left "
+              "outside of the crosswalk.")
+    assert ("pedestrian", "cross_the_road", "front_left") in agents(prompt)
+    assert "crosswalk" in road(prompt).required_objects
+
+
+def test_pulling_out_from_a_side_at_a_junction_comes_from_that_road():
+    assert ("car", "go_straight", "road_of_right_turn") in agents(
+        "A taxi on our right was waiting to pull out at the crossroads.")
+    assert ("cyclist", "go_straight", "right") in agents("a cyclist coming up fast on its inside")
+
+
+def test_a_couple_on_its_own_is_two_people():
+    assert agents("an elderly couple cross the road ahead").count(("pedestrian", "cross_the_road", "front")) == 2
+    assert agents("a couple of cars wait at the light").count(("car", "stop", "front")) == 2
+
+
+@pytest.mark.parametrize("prompt, condition", [
+    ("Under grey skies after a shower, a cyclist overtakes the ego.", "wet_cloudy"),
+    ("The tarmac was still damp from the morning rain when a bus pulled out.", "wet"),
+])
+def test_rain_that_has_fallen_leaves_the_road_wet(prompt, condition):
+    scene = lower(prompt).scenario
+    assert scene.weather.condition == condition and len(scene.stages) == 1
+
+
+def test_a_manoeuvre_said_to_be_impossible_does_not_happen():
+    assert ("truck", "go_straight", "front") in agents("slow tractor on a country road, overtaking not possible")
+
+
+def test_crossing_from_a_side_through_a_signal_is_at_a_junction():
+    assert ("cyclist", "go_straight", "road_of_left_turn") in agents("cyclist running the red light from the left")
+    assert road("cyclist running the red light from the left").junction is True
+    assert road("a car from the left lane cuts in at a red light").junction is not True
+
+
+def test_oncoming_traffic_at_the_lights_is_at_a_junction_and_without_them_is_not():
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "The ego waits at a red light while an oncoming car goes straight.")
+    assert ("bus", "go_straight", "front_left") in agents(
+        "In snowy conditions, the ego is followed by a truck while a bus coming the other way passes on the left.")
+
+
+def test_a_speed_someone_is_doing_is_no_limit():
+    assert [w for w in road("I was stuck behind a learner doing 20 in a 40 zone for ages").required_objects +
+            road("I was stuck behind a learner doing 20 in a 40 zone for ages").required_signals
+            if w.startswith("speed_")] == ["speed_40"]
+
+
+def test_ride_hailing_cars_and_e_scooters_and_the_people_they_pick_up():
+    assert agents("bro the Uber in front of me just stopped dead in the middle of the road to pick someone up") \
+        == sorted([("car", "go_straight", "ego"), ("car", "stop", "front")])
+    assert [t for t, _, _ in agents("this e-scooter guy comes flying down the road")].count("cyclist") == 1
+
+
+def test_a_test_case_name_is_no_agent_but_a_prompt_of_only_a_case_name_is_read():
+    assert agents("Test case CCRs: car-to-car rear stationary, target vehicle stationary in ego lane, VUT "
+                  "approaching at 50 km/h.") == sorted([("car", "go_straight", "ego"), ("car", "stop", "front")])
+    assert "pedestrian" in [t for t, _, _ in agents(
+        "CPLA: car-to-pedestrian longitudinal adult walking along the road in the same direction as the VUT.")]
+
+
+def test_bracketed_descriptions_of_the_ego_and_a_vru():
+    assert agents("Actors: EGO (sedan, turning right), VRU (cyclist, straight, from behind on the right).") == \
+        sorted([("car", "turn_right", "ego"), ("cyclist", "go_straight", "back_right")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("50 m ahead a bus stops", [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
+    ("twenty-five metres ahead a lorry sits in the left lane",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front_left")]),
+    ("the ego passes two bus stops", [("car", "go_straight", "ego")]),
+])
+def test_a_fronted_distance_and_place_then_the_subject(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("a van undertakes the ego", ("car", "go_straight", "back_right")),
+    ("Say there's a bus pulling away from a stop on our left.", ("bus", "change_lane_to_right", "front_left")),
+])
+def test_undertaking_is_on_the_kerb_side_and_pulling_away_from_a_stop_is_an_origin(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_an_alternative_said_with_or_maybe_is_no_second_agent():
+    assert len(agents("I think there might be a truck coming from the left, or maybe a van, it's hard to say.")) == 2
+
+
+@pytest.mark.parametrize("prompt, condition", [
+    ("It was a murky morning when a lorry drifted into our lane.", "cloudy"),
+    ("It was mizzling as the ego approached the roundabout.", "soft_rain"),
+    ("The weather was fine and dry; a bus stops.", "clear"),
+])
+def test_british_weather_words(prompt, condition):
+    assert lower(prompt).scenario.weather.condition == condition
+
+
+def test_a_flashing_signal_is_a_traffic_light_and_a_vehicles_flashing_lights_are_not():
+    assert "traffic_light" in road("You approach an intersection with a flashing red light.").required_signals
+    assert "traffic_light" not in road("the bus has stopped with flashing lights").required_signals
+    assert ("bus", "stop", "front") in agents("the bus has stopped with flashing lights")
+
+
+def test_a_limit_said_after_the_road_it_belongs_to():
+    assert "speed_105" in road("Four-lane divided highway, 65 mph. A semi is merging.").required_objects + \
+        road("Four-lane divided highway, 65 mph. A semi is merging.").required_signals
+    found = road("The ego drives on the highway at 65 mph.")
+    assert not any(w.startswith("speed_") for w in found.required_objects + found.required_signals)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("R turn, ped crossing side street", ("car", "turn_right", "ego")),
+    ("motorbike overtaking on R, wet", ("motorcycle", "go_straight", "back_right")),
+    ("jct, no signals, ego straight, car from R turning L", ("car", "turn_left", "road_of_right_turn")),
+    ("ego stopped, amb behind, sirens", ("ambulance", "go_straight", "back")),
+])
+def test_terse_one_letter_sides_and_abbreviations(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_car_makes_are_cars_and_the_kerb_is_the_right_side():
+    assert ("car", "go_straight", "back") in agents("a BMW came up behind me flashing its headlights")
+    assert ("car", "change_lane_to_left", "front_right") in agents("a Ford Focus pulls out from the curb ahead")

@@ -220,9 +220,18 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
     text = re.sub(r"\n\s*\n", " . ", text)
     text = re.sub(r"s' ", "s 's ", text)
+    text = re.sub(r"(^|[.!?]\s+)(dude|man|bro|mate|guys|dude|lol|omg|ok|okay|well|yeah)\s*,\s*", r"\1", text)  # "dude, a cop..."
+    text = re.sub(r"\bcouple\b(?! of)", "couple of people", text)  # "a couple were crossing": two people
+    text = re.sub(r",? or (?:maybe|possibly|perhaps|probably) (?:an?|the|some) [a-z ]+?(?=[,.;!?]|$)", "",
+                  text)  # "a truck, or maybe a van,": one agent, not an alternative as well
     text = re.sub(r"\b(left|right) hand\b", r"\1", text)  # "the right-hand lane"
     text = re.sub(r"\b(that|this|its|our|their) (left|right) lane", r"the \2 lane", text)
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
+    text = re.sub(r"\b(v\d|vehicle \d|unit \d) \(([^()]*)\)", r"\1 , \2 ,", text)  # "vehicle 1 (the AV)": apposition
+    text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego) \((?:an? |the )?([a-z ]{2,30})"
+                  r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
+    text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
+                  r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
     text = re.sub(r"\b([a-z]{1,3})(\d)\b", r"\1#\2", text)  # SV1, POV2, V1: a label, not a count
     tokens: list[Token] = []
     sentence = 0

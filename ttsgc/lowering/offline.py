@@ -72,7 +72,7 @@ RELATIVES = {"which", "who", "that", "whose", "whom"}
 FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
-OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake"}
+OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake", "around"}
 ACTION_RANK = {  # the more specific predicate wins among equally strong ones
     "sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6,
     "lane_change": 6, "turn_left": 8, "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2,
@@ -202,6 +202,14 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     prev = tokens[m.start - 1] if m.start > 0 else None
+    if m.category == "agents" and m.meaning == "none" and [t.word for t in span] == ["bus", "stops"] and \
+            prev is not None and prev.word in ("a", "the", "this", "that", "city", "school"):
+        return [Unit(m.start, m.start + 1, "agents", "bus", span[:1]),  # "a bus stops": no bus stops
+                Unit(m.start + 1, m.end, "actions", "stop", span[1:])]
+    if m.category == "actions" and len(span) > 1 and span[-1].word == "by" and prev is not None and prev.word in (
+            "is", "are", "was", "were", "be", "been", "being", "gets", "got", "get"):
+        return [Unit(m.start, m.end - 1, "actions", m.meaning, span[:-1]),  # "is passed by the ego": a passive
+                Unit(m.end - 1, m.end, "word", "by", span[-1:])]
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student")
     after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be",
@@ -223,6 +231,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
 # -- road, weather, kinds -----------------------------------------------------------------------------------
 
 POSSESSIVES = {"its", "his", "her", "their"}
+HAND_HELD = {"holding", "holds", "held", "carrying", "carries", "waving", "waves", "raising", "raises"}
 
 
 def _road(r: _Reader) -> RoadSpec:
@@ -263,9 +272,14 @@ def _road(r: _Reader) -> RoadSpec:
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road" and u.meaning in ("stop", "yield") and k > 1 and \
+                {units[k - 1].word, units[k - 2].word} & HAND_HELD:
+            r.mark(u)
+            continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
                 any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
-                any(x.word in ("flashing", "flash", "flashed") for x in units[max(0, k - 1):k + 2])):
+                u.tokens[-1].word == "lights" and any(x.word in ("flashing", "flash", "flashed")
+                                                      for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
             r.mark(u)
             continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
         if u.category == "road":
@@ -298,7 +312,7 @@ def _road(r: _Reader) -> RoadSpec:
                     continue  # "light rain" is read as weather first; a stray "light" after weather is not a signal
                 put(meaning, negated)
             continue
-        if u.category == "positions" and u.meaning == "crosswalk":  # "near the crosswalk": there is one
+        if u.category == "positions" and u.meaning in ("crosswalk", "off_crosswalk"):  # "near the crosswalk": there is one
             said = {t.word for t in u.tokens}
             word = "continental_crosswalk" if "zebra" in said else "crosswalk"
             if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]):
@@ -334,6 +348,10 @@ def _denied(units: list[Unit], k: int) -> bool:
 LIMIT_WORDS = {"limit", "zone", "sign", "limited", "posted", "restricted", "maximum", "max", "limits"}
 
 
+LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "area", "stretch", "section", "lane",
+                  "avenue", "roadway", "carriageway", "route", "limit"}
+
+
 def _speed_limits(r: _Reader) -> list[str]:
     """'a 30 km/h speed limit', 'a speed limit of ninety', 'a limit of forty', 'twenty miles per hour'."""
     tokens, out = r.tokens, []
@@ -344,7 +362,18 @@ def _speed_limits(r: _Reader) -> list[str]:
             continue  # the tens of "thirty five": read at the units
         value, first = _number_before(tokens, i)
         around = {x.word for x in tokens[max(0, first - 4): i + 5]}
-        if not around & LIMIT_WORDS or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
+        after_unit = [x.word for x in tokens[i + 1: i + 5]]
+        unit_then_road = first > 0 and tokens[first - 1].word in ("a", "an", "the") and any(
+            after_unit[:n] in (["mph"], ["km", "h"], ["kmh"], ["kph"], ["miles", "per", "hour"])
+            and after_unit[n:n + 1] and after_unit[n] in LIMITED_PLACES for n in (1, 2, 3))  # "a 40 mph road"
+        speed_of_someone = first > 0 and tokens[first - 1].word in (
+            "doing", "going", "travelling", "traveling", "driving", "at", "about", "around", "approximately",
+            "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES)
+        if speed_of_someone:
+            continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
+        road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]} & LIMITED_PLACES and \
+            after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
+        if not (around & LIMIT_WORDS or unit_then_road or road_then_unit) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
             continue
         rest = [x.word for x in tokens[i + 1: i + 4]]
@@ -480,6 +509,10 @@ def _clock_time(r: _Reader) -> tuple[str, str] | None:
         if not (len(nxt.word) == 2 and t.word.isdigit() and int(t.word) < 24 and nxt.word.isdigit()):
             continue
         r.used.update((t.index, nxt.index))
+        after = r.tokens[i + 2].word if i + 2 < len(r.tokens) else ""
+        if after in ("am", "pm") and 1 <= int(t.word) <= 12:  # "7:45 PM"
+            r.used.add(r.tokens[i + 2].index)
+            return _hour_time(int(t.word) % 12 + (12 if after == "pm" else 0), f"{t.word}:{nxt.word} {after}")
         return _hour_time(int(t.word), f"{t.word}:{nxt.word}")
     return None
 
@@ -581,10 +614,21 @@ class Clause:
 
 
 def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
-    case_names = {u.tokens[0].sentence for u in r.units if u.category == "agents" and u.meaning == "none"
-                  and u.tokens[0].word in ("car", "vehicle") and len(u.tokens) > 2 and u.tokens[1].word == "to"}
-    units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u) and not u.tokens[0].title
-             and u.tokens[0].sentence not in case_names]  # "car-to-pedestrian farside adult": a test case's name
+    in_case_name: set[int] = set()  # "car-to-pedestrian farside adult": a test case's name, up to the next comma
+    naming = False
+    for k, u in enumerate(r.units):
+        if u.category == "agents" and u.meaning == "none" and u.tokens[0].word in ("car", "vehicle") and \
+                len(u.tokens) > 2 and u.tokens[1].word == "to":
+            naming = True
+        elif naming and (u.category == "comma" or u.tokens[0].sentence != r.units[k - 1].tokens[0].sentence):
+            naming = False
+        if naming:
+            in_case_name.add(k)
+    units = [u for k, u in enumerate(r.units) if u.start not in skip and not _hypothetical(r.tokens, u)
+             and not u.tokens[0].title and k not in in_case_name]
+    if in_case_name and not any(u.category == "agents" and u.meaning != "none" for u in units):
+        units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u)
+                 and not u.tokens[0].title]  # the case's name is all the prompt says of its agents: read it
     out: list[Clause] = []
     stage, current, condition, link = 0, [], False, ""
     sentence = units[0].tokens[0].sentence if units else 0
@@ -628,7 +672,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "comma":
             only_ego = all(x.category == "agents" and (x.meaning == "ego" or x.tokens[-1].label)
                            or x.category == "word" and x.word == "the" for x in current)  # appositions follow
-            new_noun = _has_agent(current) and not only_ego and _starts_noun(units, k + 1)
+            labelled = bool(current) and current[-1].category == "agents" and (
+                bool(current[-1].tokens[-1].label) or current[-1].base.split()[-1] in APPOSED_HEADS) and \
+                not _has_verb(current)  # "... that vehicle 1, the AV, was stopped", "VRU, a cyclist,": apposition
+            new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
             if _has_verb(current) or condition or new_noun or joined:
@@ -745,6 +792,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
     """The count, determiner words and premodifiers in front of a noun: 'the two dangerous oncoming cars'.
     Modifiers stand between the determiner and the noun; the determiner ends the phrase on the left."""
     count, first, words, modifiers = None, head, set(), []
+    if units[head].word in ("i", "me", "we", "us", "you"):
+        return count, first, words, modifiers  # a pronoun takes no premodifier: 'just drove past us'
     k = head - 1
     in_determiner = False
     while k >= lo:
@@ -796,7 +845,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         elif kind != "car" and ego.type == "car":
             ego.type = kind
         return NounPhrase(ego, head, first)
-    if u.meaning == "none" or count == 0:  # "no other vehicles"
+    if u.meaning == "none":  # "stopped with flashing lights": no agent, and no claim on the verb before it
+        return NounPhrase(None, head, head if units[first].category == "actions" else first)
+    if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
     label = u.tokens[-1].label
     if label:
@@ -825,7 +876,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         nxt = units[head + 1] if head + 1 < len(units) else None
         if ego is not None and not plural and kind == ego.type and "other" not in words and u.base in (
                 "car", "vehicle", "truck", "bus") and (nxt is None or nxt.category not in ("positions", "word")
-                                                       or nxt.word in AUXILIARIES):
+                                                       or nxt.word in AUXILIARIES or u.tokens[-1].possessive):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
         if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions"):
@@ -873,6 +924,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         r.entities.append(entity)
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
+    if first >= 2 and units[first - 1].category == "agents" and units[first - 1].word == "traffic" and \
+            units[first - 2].category == "positions":
+        _modify(r, entity, units[first - 2], stage, strength=1)  # "oncoming traffic two cars": the cars are oncoming
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
 
 
@@ -980,15 +1034,22 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
                 any("lane" in x.base for x in clause_units[k + 1:k + 5]):
             return  # "waiting for the light to change"
-        if action == "move" and e.is_ego and set(u.base.split()) & OVERTAKING and clause_units is not None \
-                and k is not None:
+        if action == "move" and e.is_ego and clause_units is not None and k is not None and (
+                set(u.base.split()) & OVERTAKING or k + 1 < len(clause_units)
+                and clause_units[k + 1].word in ("around", "round", "past")):  # "go around it on the left"
             side = _direction_after(r, clause_units, k) or next(
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
+                for x in clause_units[k + 1:k + 6]:
+                    if x.category == "positions" and x.meaning == "side_" + side:
+                        x.meaning = "used"  # the side of the ego's manoeuvre, not of what it passes
+                        break
         if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
             e.features.add("overtaking")
+            if "undertake" in u.base.split():
+                e.features.add("undertaking")  # passing on the kerb side
         if action == "stop" and {t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
                                                                  "stall", "stalled", "double", "abandon"}:
             e.features.add("parked")
@@ -996,6 +1057,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 clause_units is not None and k is not None and any(
                     x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])):
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
+        if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
+            e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
         e.actions.append((stage, strength, ACTION_RANK.get(action, 0), r.tick(), action, direction))
@@ -1012,7 +1075,7 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
                     u.meaning.startswith("road") and not turning) or (
                     not turning and any(x.word == "from" for x in units[k + 1:j])) or (
-                    not turning and "out" in units[k].base.split()):  # "pulling out of a stop on the right"
+                    not turning and {"out", "from"} & set(units[k].base.split())):  # "pulling out of a stop on the right"
                 return None  # where it comes from, not where it goes
             r.mark(u)
             u.meaning = "used"
@@ -1054,6 +1117,18 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                                                                               for np in phrases) \
                 and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
                 and not (i + 1 < len(units) and units[i + 1].word == "of"):
+            j = i - 1
+            while j >= 0 and units[j].category == "word" and units[j].word not in ("a", "an", "another") and \
+                    units[j].word not in lexicon().function_words:
+                j -= 1  # "a blue one", "another red one"
+            kin = next((e for e in reversed(recent) if not e.is_ego), None)
+            if j >= 0 and j < i - 1 and units[j].word in ("a", "an", "another") and kin is not None:
+                member = Entity(len(r.entities), kin.type, False, clause.stage, head=kin.head)
+                r.entities.append(member)  # "a red car in front, and a blue one behind it": another car
+                r.notes.append(f"inferred: 'a ... one' is another {kin.head}")
+                r.mark(u)
+                phrases.append(NounPhrase(member, i, i, introduced=True))
+                continue
             member = _member(r, recent)  # "two cars, one in front and one behind"
             if member is not None:
                 r.mark(u)
@@ -1177,7 +1252,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
                                        "turn_" + after.tokens[-1].word, None))
     for i in main_verbs:
-        for e in subject:
+        made = _made_to(units, i, phrases)
+        for e in made or subject:
             _modify(r, e, units[i], stage, strength, units, i)
             if e.is_ego and by is not None and units[i].meaning == "move" and units[i].base in STEERING:
                 side = next((u.meaning[5:] for k, u in enumerate(units[:i]) if u.category == "positions"
@@ -1195,6 +1271,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for e in subject:
         if crosswalk and any(a[4] == "cross" and a[0] == stage for a in e.actions):
             e.features.add("crosswalk")  # "crosses at the zebra crossing", "the crosswalk is crossed by"
+        elif crosswalk and e.type == "pedestrian" and "on_sidewalk" not in e.features and any(
+                a[4] == "stop" and a[0] == stage for a in e.actions) and any(
+                u.category == "actions" and u.meaning == "stop" and any(
+                    x.category == "road" and x.meaning in V.CROSSWALK_OBJECTS for x in units[k + 1:k + 4])
+                for k, u in enumerate(units)):
+            e.features.add("crosswalk")  # "a woman is waiting at the zebra crossing": at it
         if any(u.category == "road" and u.meaning == "junction" for u in units) and not e.is_ego and \
                 any(units[i].base in ("approach", "enter", "reach") for i in main_verbs):
             e.features.add("junction_approach")  # "a vehicle approaches the intersection"
@@ -1262,6 +1344,11 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
     if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
            for u in units[max(0, i - 3):i]):
         return True
+    after = [u.word for u in units[i + 1:i + 4]]
+    if after[:1] and after[0] in ("impossible", "prohibited", "forbidden", "banned") or \
+            after[:2] in (["not", "possible"], ["not", "allowed"], ["not", "permitted"], ["is", "impossible"]) or \
+            after[:3] in (["is", "not", "possible"], ["is", "not", "allowed"], ["not", "an", "option"]):
+        return True  # "overtaking not possible": the manoeuvre is ruled out
     for u in reversed(units[max(0, i - 3):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
                                                "failing", "refused", "refuses", "without", "unable") or (
@@ -1293,9 +1380,18 @@ def _side_roads(units: list[Unit]) -> None:
             continue
         if any(x.word in ("from", "out", "of") for x in units[max(0, j - 4):j]):
             u.meaning = "road_" + u.meaning[5:]
+    for k, u in enumerate(units):  # "reversing into a loading bay on the left": the bay's side, not the lorry's
+        if k < 3 or u.category != "positions" or u.meaning not in ("side_left", "side_right") or \
+                {t.word for t in u.tokens} & LANE_WORDS:
+            continue
+        noun = units[k - 1]
+        if noun.category == "word" and noun.word not in lexicon().function_words and \
+                noun.word.split()[-1] not in SIDE_ROAD_NOUNS and \
+                any(x.word in ("into", "onto") for x in units[max(0, k - 4):k - 1]):
+            u.meaning = "used"
 
 
-QUEUE_WORDS = {"queue", "queued", "queueing", "queuing", "jam", "tailback"}
+QUEUE_WORDS = {"queue", "queued", "queueing", "queuing", "jam", "tailback", "traffic", "red", "lights"}  # "stuck in traffic", "at a red light"
 
 
 def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subject: list[Entity], stage: int):
@@ -1310,6 +1406,31 @@ def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subje
             continue
         if any(u.category == "positions" and u.meaning == "behind" for u in units[max(0, np.first - 2):np.first]):
             e.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+
+
+VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people"}
+VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
+                        "block"}
+
+
+CAUSATIVES = {"force", "forced", "forces", "forcing", "cause", "caused", "causes", "causing", "make", "made", "makes",
+              "making", "compel", "compelled", "require", "required", "requires", "oblige", "obliged"}
+
+
+def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entity]:
+    """'a truck forced the AV to change lanes': the verb after 'to' is the object's doing."""
+    if i < 3 or units[i - 1].word != "to":
+        return []
+    np = next((p for p in phrases if p.index == i - 2 and p.entity is not None), None)
+    if np is None or np.first == 0 or units[np.first - 1].word not in CAUSATIVES:
+        return []
+    return np.group or [np.entity]
+
+
+APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv"}  # said what they are
+
+
+DISTANCE_UNITS = {"m", "metres", "meters", "metre", "meter", "yards", "yard", "feet", "ft", "km", "miles", "mile"}
 
 
 def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase], previous: list[Entity]) -> bool:
@@ -1392,13 +1513,16 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     r.entities.remove(np.entity)
                 continue
             if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
-                   u.category == "comma" for u in between) and (copula or (between and prev.entity.is_ego)
-                                                               or prev.entity.label):
+                   u.category == "comma" for u in between) and (
+                    copula or prev.entity.label or (between and prev.entity.is_ego and (
+                        units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
+                    or (between and prev.entity.head.split()[-1] in APPOSED_HEADS
+                        and units[np.first].word in ("a", "an"))):  # "a third-party vehicle, a silver hatchback,"
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
                         a.type = b.type
-                elif a.label or a.head in ("car", "vehicle", "sv", "pov", "target"):
+                elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS:
                     a.type = b.type
                     a.features |= b.features
                     a.actions += b.actions
@@ -1419,6 +1543,9 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
     if u.category == "positions" and u.meaning in ("ahead", "behind", "level", "side_left", "side_right",
                                                     "front_left", "front_right", "back_left", "back_right"):
         # "behind the ego a delivery van keeps its distance": the place is complete, the van is the subject
+        if u.meaning in ("ahead", "behind") and len(u.tokens) == 1 and k > 0 and (
+                units[k - 1].word in DISTANCE_UNITS or units[k - 1].word in ("up", "further", "way", "just")):
+            return False  # "twenty-five metres ahead a lorry sits", "up ahead a bus": a place, then the subject
         return u.tokens[-1].word not in ("ego", "it", "us", "you", "them", "him", "her", "me")
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
@@ -1460,17 +1587,18 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     light = False  # "other cars performing lane changes": the noun's doing, not the sentence's
     while k >= 0 and (units[k].category in ("behaviours", "positions") or (
             units[k].category == "word" and units[k].word in ("that", "which", "who", "performing", "making",
-                                                               "doing", "executing", "attempting"))):
+                                                               "doing", "executing", "attempting", "already",
+                                                               "still", "also", "currently", "slowly", "now"))):
         light = light or units[k].word in ("performing", "making", "doing", "executing", "attempting")
         k -= 1
     if k < 0:
         return None
     np = next((p for p in phrases if p.index == k), None)
-    if np is None:
-        return None
+    if np is None or units[k].word in ("me", "us", "you", "him", "her", "them", "it"):
+        return None  # "a learner in front of me stalled": a pronoun takes no participle; the verb is finite
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
-    later = any(v > i for v in verbs)
-    word = units[i].tokens[0].word
+    later = any(v > i and not (units[v - 1].category == "word" and units[v - 1].word == "to") for v in verbs)
+    word = units[i].tokens[0].word  # a later finite verb makes this one a participle; 'to pass' is none
     participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood", "stuck",
                                                                           "broken") or light
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
@@ -1664,7 +1792,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "ego_lane" in f and not lane_move and "into_ego_lane" not in f:
         side = None
     if side is None and "overtaking" in f:
-        side = UNSPECIFIED["side_of_an_overtaker"]
+        side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
     if action == "block" and side and "from_lane" in f and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
@@ -1673,7 +1801,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
         side = UNSPECIFIED["side_beside_a_person" if e.type in V.VULNERABLE_TYPES else "side_beside_a_vehicle"]
-    if person and crossing and has_crosswalk and not behind:
+    if person and crossing and has_crosswalk and not behind and "off_crosswalk" not in f:
         return "near_the_crosswalk", False  # people crossing where there is a crosswalk cross at it
     if side and action == "stop" and "parked" in f and not person and \
             not f & {"ahead", "behind", "level", "overtaking"} and "target_lane" not in f:
@@ -1776,11 +1904,23 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     previous: list[Entity] = []
     recent: list[Entity] = []
     pending: list[Entity] = []
+    header: list[Unit] = []
     for k, clause in enumerate(clauses):
         if clause.link in RELATIVES and recent:
             clause.antecedent = recent[-1]
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
+        if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
+                not any(e.is_ego for e in previous):
+            for e in r.entities[before:]:  # "overtaken on the right by an ambulance and then by a fire engine"
+                if not e.is_ego and not e.actions:
+                    e.features |= set().union(*(p.features for p in previous))
+                    e.actions += [(clause.stage,) + a[1:] for p in previous for a in p.actions]
+                    r.notes.append(f"inferred: '{e.head}' after 'by' does what '{previous[0].head}' did")
+        for e in r.entities[before:]:
+            for u in header if not e.is_ego else []:
+                _modify(r, e, u, clause.stage, 1)
+        header = _header_of_place(clause.units)
         if clause.link == "where" and k > 0 and any(u.category == "actions" and u.meaning.startswith("lane")
                                                     for u in clauses[k - 1].units):
             for e in r.entities[before:]:  # "the ego changes into the left lane, where a van drives ahead"
@@ -1797,7 +1937,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
                        "no template used")
     road = _ego_lane_road(r, road)
-    junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals))
+    junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
+        road.junction is None and "traffic_light" in road.required_signals and (any(
+            f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
+            or any("road_straight" in e.features for e in r.entities)))
+    # "a cyclist running the red light from the left", "an oncoming car at the lights": a signalised junction
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
         (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
         for st in {a[0] for a in e.actions})  # "once it turns green we turn left": a later turn is at a junction
@@ -1848,11 +1992,29 @@ def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
     return road.model_copy(update={"lanes": 2})
 
 
+HEADER_OF_PLACE = (r"(oncoming|opposing|crossing|cross|following|leading|lead|adjacent|left|right|behind|ahead|in front"
+                   r"|rear|from the left|from the right|from behind)( (lane|traffic|vehicles?|cars?|agents?|side))*")
+HEADER_FILLER = {"traffic", "vehicle", "vehicles", "car", "cars", "agents", "agent", "and", "lane", "side"}
+
+
+def _header_of_place(units: list[Unit]) -> list[Unit]:
+    """'oncoming: a bus and a van', 'Oncoming traffic: ...': a verbless heading of places for the agents listed next."""
+    places = [u for u in units if u.category == "positions"]
+    if not places or _has_verb(units):
+        return []
+    if all(u.category == "positions" or u.word in HEADER_FILLER or u.category == "comma"
+           or (u.category == "agents" and u.meaning in ("none", "generic") and u.tokens[-1].plural) for u in units):
+        return places
+    return []
+
+
 def _title(prompt: str, tokens: list[Token]) -> range:
     """'Cut-in: a target vehicle ...': a short title before a colon names the case, not its agents."""
     m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
     if m is None or "\n" in prompt.strip():  # notes written a line an item have their titles marked already
         return range(0)
+    if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
+        return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
     n = len(tokenize(m.group(1)))
     if n > 12 or n >= len(tokens):
         return range(0)
@@ -1898,6 +2060,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
+        if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in VEHICLE_ONLY_ACTIONS:
+            e.type = "car"  # "someone's pulling out of a parking spot": someone driving
+            r.notes.append(f"inferred: '{e.head}' who {action.replace('_', ' ')}s drives a car")
         action = _sideways(action, junction)
         if "into_ego_lane" in e.features and e.type == "pedestrian":
             action = "cross"  # "a child runs into the ego's path"
@@ -1905,6 +2070,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             action = "cross"  # people on foot in the road cross it
         if "into_ego_lane" in e.features and action in ("move", "lane_change"):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
+        bare = next((side for side in SIDES if f"bare_{side}" in e.features), None)
+        if junction and action == "cut_in" and bare and not e.features & {"ahead", "behind", "level", "from_lane",
+                                                                          "into_ego_lane", "overtaking"}:
+            e.features.add(f"road_{bare}")  # at a crossroads, "a taxi on our right waiting to pull out": its road
         if action in ("cut_in", "lane_change") and (_placed(e) and e.features & {"road_left", "road_right",
                                                                                  "road_straight", "cross_road"}):
             action = "move"  # "pulled out of a side road on the left": a junction road, no lane change
