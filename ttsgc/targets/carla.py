@@ -6,12 +6,17 @@
 - entities: each agent type's CARLA blueprint (Vehicle name, Pedestrian model); the ego is named `hero` (the
   role name CARLA's clients attach to; unless an agent already has that name) and marked with the Property
   type=ego_vehicle, the others simulation;
-- lane changes: linear over a distance (the speed times the generic file's duration), the only shape read;
-- weather: in Init (the only place read); rain's intensity on 1.0's 0..1 scale; snow cannot be expressed;
+- lane changes: over a distance (the speed times the generic file's duration), since ScenarioRunner drops a
+  time; the shape is never read (written linear, as its table says);
+- weather: in Init (the only place its table says it is read; every part of it there, as the parser needs); rain's intensity on 1.0's 0..1 scale; snow cannot be expressed;
 - pass/fail: ScenarioRunner's criteria, each a ParameterCondition named criteria_<Test> in a condition group
   of its own in the Storyboard's StopTrigger (the form of ScenarioRunner's own examples): CollisionTest for the
   ego always, RunningRedLightTest on an approach with traffic lights, RunningStopTest on one with a stop sign.
-  The group never fires (a criterion never succeeds early), so the scene still ends at its own stop condition.
+  ScenarioRunner never evaluates the Storyboard's StopTrigger as a trigger (it only takes the criteria from it);
+- the end: a run ends when every Act has ended, so each Act's StopTrigger gets a copy of the scene's stop groups
+  (an Act's group is any-of there, so a group of several conditions is an error);
+- the map edge: the generic file's events that delete a vehicle at the end of its road are dropped, since
+  ScenarioRunner's EndOfRoadCondition fails its trigger as soon as the vehicle leaves its first road.
 The generic emitter already writes what both players read alike (no lane-relative headings, trigger states
 ScenarioRunner accepts); the result is validated against the 1.0 XSD and linted against carla.toml, and
 anything left that ScenarioRunner does not read is an error naming it, raised before anything is written.
