@@ -434,3 +434,12 @@ def test_carla_lint_warns_of_what_scenario_runner_reads_its_own_way(carla_files,
     assert main(["lint", "--target", "carla", str(path), "--all"]) == 0
     lines = [line for line in capsys.readouterr().out.splitlines() if named in line]
     assert lines and "warning" in lines[0], named
+
+
+def test_carla_lint_notes_that_condition_edges_are_not_read(carla_files, tmp_path, capsys):
+    path = tmp_path / "e.xosc"
+    path.write_bytes(_carla_base(carla_files))
+    assert main(["lint", "--target", "carla", str(path), "--all"]) == 0
+    lines = [line for line in capsys.readouterr().out.splitlines() if 'conditionEdge="rising"' in line]
+    assert lines and all("error" not in line and "warning" not in line for line in lines)
+    assert "never its conditionEdge" in lines[0]
