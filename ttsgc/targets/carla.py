@@ -6,12 +6,17 @@
 - entities: each agent type's CARLA blueprint (Vehicle name, Pedestrian model); the ego is named `hero` (the
   role name CARLA's clients attach to; unless an agent already has that name) and marked with the Property
   type=ego_vehicle, the others simulation;
-- lane changes: linear over a distance (the speed times the generic file's duration), the only shape read;
-- weather: in Init (the only place read); rain's intensity on 1.0's 0..1 scale; snow cannot be expressed;
+- lane changes: over a distance (the speed times the generic file's duration), since ScenarioRunner drops a
+  time; the shape is never read (written linear, as its table says);
+- weather: in Init (the only place its table says it is read; every part of it there, as the parser needs); rain's intensity on 1.0's 0..1 scale; snow cannot be expressed;
 - pass/fail: ScenarioRunner's criteria, each a ParameterCondition named criteria_<Test> in a condition group
   of its own in the Storyboard's StopTrigger (the form of ScenarioRunner's own examples): CollisionTest for the
   ego always, RunningRedLightTest on an approach with traffic lights, RunningStopTest on one with a stop sign.
-  The group never fires (a criterion never succeeds early), so the scene still ends at its own stop condition.
+  ScenarioRunner never evaluates the Storyboard's StopTrigger as a trigger (it only takes the criteria from it);
+- the end: a run ends when every Act has ended, so each Act's StopTrigger gets a copy of the scene's stop groups
+  (an Act's group is any-of there, so a group of several conditions is an error);
+- the map edge: the generic file's events that delete a vehicle at the end of its road are dropped, since
+  ScenarioRunner's EndOfRoadCondition fails its trigger as soon as the vehicle leaves its first road.
 The generic emitter already writes what both players read alike (no lane-relative headings, trigger states
 ScenarioRunner accepts); the result is validated against the 1.0 XSD and linted against carla.toml, and
 anything left that ScenarioRunner does not read is an error naming it, raised before anything is written.
@@ -74,11 +79,13 @@ def adapt(generic: bytes, scene: BoundScene) -> tuple[bytes, list[str]]:
     _entities(root, scene)
     _lane_changes(root, scene)
     _rain(root, scene)
+    _drop_map_edge_exits(root)
+    unreadable_stops = _stop_in_acts(root)
     _criteria(root, scene)
     data = etree.tostring(root, xml_declaration=True, encoding="utf-8", pretty_print=True)
     reparsed = etree.fromstring(data)  # line numbers of the file as written
     left = [f"line {f.line}: {f.what}" for f in errors(lint_tree(reparsed, "carla"))]
-    return data, left
+    return data, unreadable_stops + left
 
 
 def _map(root: etree._Element, scene: BoundScene) -> None:
@@ -151,6 +158,48 @@ def _rain(root: etree._Element, scene: BoundScene) -> None:
     for precipitation in root.iter("Precipitation"):
         if precipitation.get("precipitationType") == "rain":
             precipitation.set("intensity", f"{RAIN_INTENSITY.get(condition, 1.0)}")
+
+
+def _drop_map_edge_exits(root: etree._Element) -> None:
+    """Drop the events that delete a vehicle at the end of its road (the generic file's map_edge act), and what
+    they leave empty. ScenarioRunner reads EndOfRoadCondition as an inverted EndofRoadTest: it fires when the
+    entity leaves the road it was on (a junction's connecting road counts), and then returns FAILURE, so the
+    event never runs and the failure ends the story (carla.toml: EndOfRoadCondition)."""
+    for event in list(root.iter("Event")):
+        trigger = event.find("StartTrigger")
+        actions = event.findall("Action")
+        if (trigger is not None and trigger.find(".//EndOfRoadCondition") is not None and actions
+                and all(a.find("GlobalAction/EntityAction/DeleteEntityAction") is not None for a in actions)):
+            event.getparent().remove(event)
+    for tag, child in (("Maneuver", "Event"), ("ManeuverGroup", "Maneuver"), ("Act", "ManeuverGroup")):
+        for element in list(root.iter(tag)):
+            if element.find(child) is None:
+                element.getparent().remove(element)
+
+
+def _stop_in_acts(root: etree._Element) -> list[str]:
+    """Copy the Storyboard's stop conditions into each Act's StopTrigger, and name what cannot be copied.
+    ScenarioRunner never evaluates the Storyboard's StopTrigger (it only takes its criteria_* conditions); it
+    ends a run when every Act has ended, and an Act's StopTrigger ends it. It reads an Act's condition group as
+    any-of, so only groups of one condition keep their meaning (open_scenario.py: _create_behavior,
+    _create_condition_container)."""
+    stop = root.find("Storyboard/StopTrigger")
+    groups = [g for g in stop.findall("ConditionGroup") if g.find("Condition") is not None] if stop is not None else []
+    problems = [f"Storyboard StopTrigger: a ConditionGroup of {len(g.findall('Condition'))} conditions "
+                f"(ScenarioRunner reads an Act's StopTrigger group as any-of, not all-of)"
+                for g in groups if len(g.findall("Condition")) > 1]
+    if problems:
+        return problems
+    for act in root.iter("Act"):
+        act_stop = act.find("StopTrigger")
+        if act_stop is None:
+            act_stop = etree.SubElement(act, "StopTrigger")
+        for group in groups:
+            copy = etree.fromstring(etree.tostring(group))
+            for condition in copy.iter("Condition"):
+                condition.set("name", f"{condition.get('name')}_{act.get('name')}")
+            act_stop.append(copy)
+    return problems
 
 
 def _criteria(root: etree._Element, scene: BoundScene) -> None:
