@@ -12,7 +12,7 @@ import pytest
 
 from conftest import EXAMPLES
 from ttsgc.cli import main
-from ttsgc.evaluate import agent_accuracy, road_accuracy
+from ttsgc.evaluate import agent_accuracy, road_accuracy, weather_accuracy
 from ttsgc.language import parse, parse_file
 from ttsgc.lowering import lower_prompt
 from ttsgc.lowering.llm import LlmSettings, extract_scene, lower_with_llm, system_prompt
@@ -27,10 +27,19 @@ def _same_scene(a, b) -> bool:
     return strip(a) == strip(b)
 
 
+# Hand-written example scenes that predate the corpus's gold conventions, and what the conventions say instead.
+CONVENTIONS_DIFFER = {
+    "foggy_convoy": "a motorcycle overtaking on the left needs a second lane (lanes >= 2)",
+}
+
+
 @pytest.mark.parametrize("prompt", PROMPTS, ids=lambda p: p.stem)
-def test_offline_lowering_of_each_example_gives_its_hand_written_scene(prompt):
+def test_offline_lowering_of_each_example_scores_like_its_hand_written_scene(prompt):
     lowered = lower(prompt.read_text())
-    assert _same_scene(lowered.scenario, parse_file(prompt.with_suffix(".tsg")))
+    gold = parse_file(prompt.with_suffix(".tsg"))
+    exact = (agent_accuracy(gold, lowered.scenario), road_accuracy(gold, lowered.scenario),
+             weather_accuracy(gold, lowered.scenario)) == (1, 1, 1)
+    assert exact != (prompt.stem in CONVENTIONS_DIFFER), CONVENTIONS_DIFFER.get(prompt.stem, lowered.scenario)
 
 
 def test_held_out_paraphrases_score_like_the_paper():
@@ -80,9 +89,10 @@ def test_the_rules_read_paraphrases(prompt, facts):
             assert getattr(agents[name], {"position": "relative_to_ego"}.get(key, key)) == expected, (key, s)
 
 
-def test_unknown_words_are_reported_not_dropped():
-    lowered = lower("A car in front of the ego zigzags wildly")
-    assert {"zigzags", "wildly"} <= set(lowered.unknown)
+def test_unknown_words_are_reported_not_dropped_with_the_nearest_known_word():
+    lowered = lower("A car in front of the ego zigzags and then swervs")
+    assert "zigzags" in lowered.unknown
+    assert "swervs (did you mean swerve?)" in lowered.unknown
 
 
 def test_a_prompt_with_nothing_readable_is_an_error_with_its_own_exit_code(tmp_path, capsys):
@@ -241,3 +251,19 @@ def test_the_system_prompt_is_rendered_from_templates_with_the_vocabulary():
 def test_auto_method_is_offline_without_a_key(monkeypatch):
     monkeypatch.delenv("ANTHROPIC_API_KEY", raising=False)
     assert lower_prompt("a bus stops in front of the ego").method == "offline"
+
+
+BLOCKING_PEDESTRIAN = ("```tsg\nscenario \"llm\"\nstage main {\n    ego car go_straight\n"
+                       "    pedestrian p1 at front block_the_ego\n    car c1 at left go_straight\n}\n```")
+
+
+def test_the_llm_answer_goes_through_the_same_plan_inference():
+    with _MessagesServer([BLOCKING_PEDESTRIAN]) as server:
+        lowering = lower_prompt("a pedestrian blocks the ego while a car drives beside it", "anthropic",
+                                settings=LlmSettings(model="test-model"), client=_client(server.url))
+    agents = {a.name: a for a in lowering.scenario.agents()}
+    assert agents["p1"].action == "cross_the_road"  # repaired: a pedestrian steps into the path
+    assert lowering.scenario.road.lanes == 2  # inferred: c1 drives beside the ego
+    text = lowering.tsg("a pedestrian blocks the ego")
+    assert "# repaired: a pedestrian cannot block_the_ego" in text and "# inferred: lanes >= 2" in text
+    assert lowering.summary()["tokens"] == 1100

@@ -3,7 +3,9 @@
 A plan has three parts: analysis, retrieval (road conditions) and planning (weather preset, at_junction, one
 entry per agent with type, is_ego, action, behavior, pos_id, road_type, relative_to_ego). Plans written by an
 LLM are not always consistent (two egos, a pedestrian that blocks the ego, a pedestrian on a driving lane):
-each repair made to fit the language is recorded as a note, never made silently.
+what is particular to the plan format is repaired here, everything else by the one plan inference
+(ttsgc/lowering/infer.py) that the English lowerings use too; each repair and inference is recorded as a
+note, never made silently.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from pathlib import Path
 
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.lowering.infer import infer_plan
 from ttsgc.lowering.offline import NAME_PREFIX
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Stage, Weather, find_problems
 
@@ -21,7 +24,6 @@ CONDITIONS = {"Clear": "clear", "Cloudy": "cloudy", "Wet": "wet", "WetCloudy": "
               "MidRain": "mid_rain", "MidRainy": "mid_rain", "HardRain": "hard_rain", "SoftRainy": "soft_rain",
               "HardRainy": "hard_rain"}
 TIMES = {"Noon": "noon", "Sunset": "sunset", "Night": "night"}
-ACTION_FALLBACK = {"pedestrian": "stop", "cyclist": "go_straight"}
 
 
 class PlanError(TtsgcError):
@@ -75,10 +77,13 @@ def import_plan(agent_output: str | Path, road_info: str | Path | None = None) -
     road = _road(retrieval, env, notes)
     agents = _agents(agents_in, road, notes)
     name = f"ttsg {path.parent.parent.name} {path.parent.name}".strip()
+    draft = Scenario.model_construct(name=name, seed=None, weather=weather, road=road,
+                                     stages=(Stage(name="main", agents=tuple(agents)),), comments={})
+    inferred = infer_plan(draft)
+    notes += inferred.notes
     comments = {"scenario": Comment(leading=tuple([f"Imported from the TTSG plan {path}"] +
                                                   [f"import: {n}" for n in notes]))}
-    scenario = Scenario.model_construct(name=name, seed=None, weather=weather, road=road,
-                                        stages=(Stage(name="main", agents=tuple(agents)),), comments=comments)
+    scenario = inferred.scenario.model_copy(update={"comments": comments})
     problems = find_problems(scenario)
     if problems:
         raise PlanError(f"{path}: the plan does not make a valid scene: " + "; ".join(p.message for p in problems))
@@ -125,28 +130,17 @@ def _agents(entries: list[dict], road: RoadSpec, notes: list[str]) -> list[Agent
             notes.append(f"agent {index + 1} ({kind}) was also marked as the ego; kept as an agent")
         ego_seen |= is_ego
         action = str(entry.get("action", "go_straight"))
-        allowed = V.EGO_ACTIONS if is_ego else V.ACTIONS_BY_TYPE[kind]
-        if action not in allowed:
-            fallback = ACTION_FALLBACK.get(kind, "go_straight")
-            notes.append(f"agent {index + 1} ({kind}) cannot {action}; it will {fallback}")
-            action = fallback
+        if action not in V.ACTIONS:
+            notes.append(f"agent {index + 1} ({kind}): unknown action '{action}', used go_straight")
+            action = "go_straight"  # a known action a type cannot do is repaired by the plan inference
         position = None if is_ego else str(entry.get("relative_to_ego", "front"))
         if position is not None and position not in V.POSITIONS:
             notes.append(f"agent {index + 1}: position '{position}' is not one of the vocabulary's, used front")
             position = "front"
-        if road.junction is False and position in V.JUNCTION_POSITIONS:
-            notes.append(f"agent {index + 1}: {position} needs a junction, but the plan is not at one; used front")
-            position = "front"
         road_type = str(entry.get("road_type", V.default_road_type(kind)))
-        if road_type not in V.ROAD_TYPES_BY_TYPE[kind] or (is_ego and road_type != "driving"):
-            fixed = "driving" if is_ego else V.default_road_type(kind)
-            notes.append(f"agent {index + 1} ({kind}) cannot stand on the {road_type}; put on the {fixed}")
-            road_type = fixed
-        if action == "on_the_sidewalk":
-            road_type = "sidewalk"
-        if road.junction is False and action in V.TURN_ACTIONS:
-            notes.append(f"agent {index + 1}: {action} needs a junction, but the plan is not at one; goes straight")
-            action = "go_straight"
+        if road_type not in V.ROAD_TYPES:
+            notes.append(f"agent {index + 1} ({kind}): unknown road type '{road_type}', used the default")
+            road_type = V.default_road_type(kind)
         behavior = str(entry.get("behavior", "normal"))
         behavior = behavior if behavior in V.BEHAVIORS else "normal"
         order = entry.get("pos_id")

@@ -65,8 +65,10 @@ def parse_file(path: str | Path) -> Scenario:
     return parse(text, str(path))
 
 
-def parse(text: str, file: str = "<input>") -> Scenario:
-    """Parse scenario text; raises ScenarioError with all diagnostics when it is not a valid scenario."""
+def parse(text: str, file: str = "<input>", repair=None) -> Scenario:
+    """Parse scenario text; raises ScenarioError with all diagnostics when it is not a valid scenario.
+    `repair` (Scenario -> Scenario) may mend the unchecked model before the semantic rules run: a front end
+    that reads scenes written by a model passes its plan inference here."""
     text = text.removeprefix("\ufeff")
     tree, comments, syntax = _parse_tree(text, file)
     if syntax:
@@ -77,6 +79,8 @@ def parse(text: str, file: str = "<input>") -> Scenario:
     except VisitError as exc:  # a bug in a transformer method, not in the input
         raise exc.orig_exc from exc
     scenario = Scenario.model_construct(**draft.fields, comments=_anchor_comments(builder.statements, comments))
+    if repair is not None and not builder.diagnostics:
+        scenario = repair(scenario)
     diagnostics = list(builder.diagnostics)
     for problem in find_problems(scenario):
         if problem.path not in builder.suppressed:

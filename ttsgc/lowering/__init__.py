@@ -20,19 +20,22 @@ class Lowering:
     tries: int = 1
     usage: dict[str, int] = field(default_factory=dict)
     kind: str | None = None
+    notes: list[str] = field(default_factory=list)  # every inference and repair of the plan inference
 
     def tsg(self, prompt: str) -> str:
-        """The scene as an editable .tsg, headed by the prompt it came from."""
-        lines = [f"Lowered ({self.method}) from: {prompt.strip()}"]
+        """The scene as an editable .tsg, headed by the prompt it came from and every inference and repair."""
+        lines = [f"Lowered ({self.method}) from: {' '.join(prompt.split())}"]
         if self.unknown:
             lines.append(f"Words not understood: {', '.join(self.unknown)}")
+        lines += self.notes
         comments = dict(self.scenario.comments)
         comments["scenario"] = Comment(leading=tuple(lines))
         return format_scenario(self.scenario.model_copy(update={"comments": comments}))
 
     def summary(self) -> dict:
         return {"method": self.method, "tries": self.tries, "usage": self.usage, "unknown": self.unknown,
-                "kind": self.kind}
+                "kind": self.kind, "notes": self.notes,
+                "tokens": self.usage.get("input_tokens", 0) + self.usage.get("output_tokens", 0)}
 
 
 def choose_method(requested: str) -> str:
@@ -46,8 +49,8 @@ def lower_prompt(prompt: str, method: str = "auto", seed: int = 0, settings=None
     method = choose_method(method)
     if method == "offline":
         result = lower(prompt, seed=seed)
-        return Lowering(result.scenario, "offline", result.unknown, kind=result.kind)
+        return Lowering(result.scenario, "offline", result.unknown, kind=result.kind, notes=result.notes)
     from ttsgc.lowering.llm import lower_with_llm
 
     result = lower_with_llm(prompt, settings, client)
-    return Lowering(result.scenario, "anthropic", tries=result.tries, usage=result.usage)
+    return Lowering(result.scenario, "anthropic", tries=result.tries, usage=result.usage, notes=result.notes)

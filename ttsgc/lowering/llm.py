@@ -1,7 +1,8 @@
 """English -> the scenario language through an LLM (Claude, via the anthropic SDK's Messages API).
 
-The system prompt (language reference, the vocabulary from its one source, worked examples) is rendered from
-templates/ with jinja2 and cached. The answer is parsed and checked like any .tsg file; on any error the
+The system prompt (language reference, the vocabulary from its one source, the reading conventions, worked
+examples drawn from the lowering corpus's dev split) is rendered from templates/ with jinja2 and cached. A valid
+answer goes through the same plan inference as the offline rules (implied road conditions, repairs, notes). The answer is parsed and checked like any .tsg file; on any error the
 diagnostics are sent back and the model tries again, three tries in all. The answer is only ever parsed by the
 language's grammar, never evaluated.
 """
@@ -13,13 +14,14 @@ from dataclasses import dataclass, field
 
 from ttsgc import vocabulary as V
 from ttsgc.language import ScenarioError, parse
+from ttsgc.lowering.infer import infer_plan
 from ttsgc.lowering.offline import LoweringError
 from ttsgc.resources import resource_dir
 from ttsgc.scenario import Scenario
 
 MAX_TRIES = 3
 DEFAULT_MODEL = "claude-sonnet-5-5"  # a current model this SDK knows; --model or TTSGC_MODEL to change
-EXAMPLES = ("left_turn_oncoming", "truck_on_shoulder", "boxed_in", "school_zone")
+EXAMPLES_FOLDER = "worked_examples"  # templates/worked_examples: prompts with gold scenes from the corpus's dev split
 
 
 @dataclass(frozen=True)
@@ -44,6 +46,7 @@ class LlmLowered:
     text: str  # the accepted scene, as the model wrote it
     tries: int
     usage: dict[str, int] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)  # the plan inference's inferences and repairs
 
 
 def _environment() -> jinja2.Environment:  # noqa: F821
@@ -55,11 +58,11 @@ def _environment() -> jinja2.Environment:  # noqa: F821
 
 def system_prompt() -> str:
     examples = []
-    folder = resource_dir("examples")
-    for name in EXAMPLES:
-        prompt, scene = folder / f"{name}.txt", folder / f"{name}.tsg"
-        if prompt.is_file() and scene.is_file():
-            examples.append({"prompt": prompt.read_text().strip(), "scene": scene.read_text()})
+    for prompt in sorted((resource_dir("templates") / EXAMPLES_FOLDER).glob("*.txt")):
+        scene = prompt.with_suffix(".tsg")
+        if scene.is_file():
+            examples.append({"prompt": prompt.read_text(encoding="utf-8").strip(),
+                             "scene": scene.read_text(encoding="utf-8")})
     return _environment().get_template("system.md.j2").render(
         types=V.AGENT_TYPES, actions=V.ACTIONS,
         actions_by_type={t: sorted(a) for t, a in V.ACTIONS_BY_TYPE.items()}, behaviors=list(V.BEHAVIORS),
@@ -103,8 +106,15 @@ def lower_with_llm(prompt: str, settings: LlmSettings | None = None, client=None
             usage[key] = usage.get(key, 0) + (getattr(response.usage, key, 0) or 0)
         answer = "".join(block.text for block in response.content if getattr(block, "type", "") == "text")
         scene = extract_scene(answer)
+        notes: list[str] = []
+
+        def infer(draft: Scenario) -> Scenario:  # the same inference and repairs as the offline rules
+            inferred = infer_plan(draft)
+            notes[:] = inferred.notes
+            return inferred.scenario
+
         try:
-            return LlmLowered(parse(scene, "<llm answer>"), scene, attempt, usage)
+            return LlmLowered(parse(scene, "<llm answer>", repair=infer), scene, attempt, usage, notes)
         except ScenarioError as exc:
             diagnostics = exc.render()
         messages += [{"role": "assistant", "content": answer},

@@ -1,269 +1,1553 @@
-"""English -> Scenario by deterministic rules over the one vocabulary (the default lowering, no API key).
+"""English -> Scenario by a small semantic parser over a data lexicon (the default lowering, no API key).
 
-A small semantic parser: the prompt is split into stages at sequence words ("then", "after that"); road
-conditions (with negation: "no traffic light and stop sign"), weather and time are read from the whole text;
-each agent mention ("two cars", "an ambulance", "the ego") owns the words up to the next mention, from which
-its action, position, behaviour and road type are read through synonym tables. A scene kind the prompt names
-without describing its agents ("daily traffic", "emergency vehicles") is filled from templates/kinds/*.tsg.
-Words no rule can place are returned as `unknown`, never dropped silently.
+The text is read the way a person reads it, not by spotting keywords:
+- words become lexicon units (ttsgc/lowering/lexicon/*.txt: multiword phrases, base forms, British spellings);
+- the text splits into stages at sequence words and conditions ("then", "once the light turns green", "when the
+  ego reaches the junction"), stages into clauses ("while", "and" after a predicate, relative "which/who");
+- each clause has a subject, predicates and objects: passive voice ("is approached by an ambulance"), reduced
+  relatives ("a cyclist riding alongside swerves..."), coordination ("a bus and a truck stop"), possessives
+  ("into the ego's lane");
+- noun phrases are tracked as entities: re-mentions ("the truck", "it", "both", "the other car"), counted groups
+  as constraints ("three cars including the ego" is the ego and two cars, whom "the car in front" and "the car
+  behind" then name);
+- positions are composed once the whole text is read (side x ahead/behind x which road), against the junction
+  context and the ego's manoeuvre;
+- the draft goes through the one plan inference (infer.py), which adds what the agents imply about the road
+  and repairs what cannot be, with a note for each.
+Scene-kind templates (templates/kinds/) fill a scene only when a kind is asked for as the scene ("create a
+scene for daily traffic"). Content words no rule places are reported with the nearest known word.
 """
 
 from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
-from ttsgc.language import parse
-from ttsgc.resources import resource_dir
-from ttsgc.scenario import Agent, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
+from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
+from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, lexicon, matches, read_number, tokenize
+from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
 
 class LoweringError(TtsgcError):
     exit_code = ExitCode.LOWERING_FAILED
 
 
-def _phrases(table: dict[str, str]) -> list[tuple[tuple[frozenset[str], ...], str]]:
-    """'turn|turns left' -> ((turn, turns), (left,)); longest phrases first so they win."""
-    out = []
-    for pattern, meaning in table.items():
-        for variant in pattern.split(";"):
-            out.append((tuple(frozenset(w.split("|")) for w in variant.split()), meaning))
-    return sorted(out, key=lambda p: -len(p[0]))
-
-
-AGENT_WORDS = _phrases({
-    "fire truck|trucks|engine|engines;firetruck|firetrucks;fire brigade": "firetruck",
-    "police car|cars|vehicle;police;cop car|cars": "police",
-    "ambulance|ambulances": "ambulance",
-    "car|cars|vehicle|vehicles|sedan|sedans|suv|suvs|van|vans|taxi|taxis|traffic": "car",
-    "truck|trucks|lorry|lorries": "truck",
-    "bus|buses|coach|coaches": "bus",
-    "motorcycle|motorcycles|motorbike|motorbikes|scooter|scooters|moped|mopeds|motorcyclist|motorcyclists": "motorcycle",
-    "cyclist|cyclists|bicycle|bicycles|bike|bikes|biker|bikers": "cyclist",
-    "pedestrian|pedestrians|person|people|walker|walkers|child|children|kid|kids|man|men|woman|women|boy|girl|"
-    "jogger|joggers": "pedestrian",
-})
-EGO_WORDS = _phrases({"ego|egos;autonomous car|vehicle;self driving car|vehicle;our car|vehicle": "ego"})
-EGO_NOUNS = {"car": "car", "vehicle": "car", "agent": "car", "truck": "truck", "bus": "bus", "motorcycle": "motorcycle"}
-COUNTS = {"a": 1, "an": 1, "one": 1, "another": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6,
-          "seven": 7, "eight": 8, "nine": 9, "ten": 10, "several": 3, "some": 2, "few": 2, "couple": 2, "many": 6,
-          "both": 2}
-MAX_AGENTS_PER_MENTION = 12
-
-ACTIONS = _phrases({
-    "cross|crosses|crossing|crossed;runs|run|walks|walk|dashes across;jaywalks|jaywalking": "cross_the_road",
-    "walks|walk|walking|strolls along the sidewalk|pavement;walks|walk|walking|strolls along;"
-    "on the sidewalk|pavement": "on_the_sidewalk",
-    "block|blocks|blocking|blocked": "block_the_ego",
-    "swerve|swerves|swerving into its|the path|lane;cut|cuts|cutting in|into|off|across;"
-    "swerve|swerves|swerving into;merges|merge in front": "cut_in",
-    "change|changes|changing lane|lanes to the left;moves|move into the left lane;merges|merge left;"
-    "changes|change to the left lane": "change_lane_to_left",
-    "change|changes|changing lane|lanes to the right;moves|move into the right lane;merges|merge right;"
-    "changes|change to the right lane": "change_lane_to_right",
-    "turn|turns|turning|turned left;left turn;turns|turn onto|into the left": "turn_left",
-    "turn|turns|turning|turned right;right turn": "turn_right",
-    "stop|stops|stopped|stopping;brake|brakes|braking;halt|halts;wait|waits|waiting;parked;stationary;"
-    "does|do not move;standing still": "stop",
-    "go|goes|going|drive|drives|driving|ride|rides|riding straight through|ahead;"
-    "go|goes|going|drive|drives|driving straight|through|ahead;pass|passes through;continue|continues;"
-    "ride|rides|riding;"
-    "follow|follows|following;overtake|overtakes|overtaking;come|comes|coming|approach|approaches|approaching;"
-    "drive|drives|driving": "go_straight",
-})
-POSITIONS = _phrases({
-    "front right;ahead on|to the right;in front on the right;right front": "front_right",
-    "front left;ahead on|to the left;in front on the left;left front": "front_left",
-    "back right;behind on the right;rear right": "back_right",
-    "back left;behind on the left;rear left;overtakes|overtaking on the left": "back_left",
-    "from|in the opposite direction;oncoming;towards|toward the ego;head on": "road_of_straight",
-    "from the left;from the road on the left;on the road to the left;from the left road": "from_left",
-    "from the right;from the road on the right;on the road to the right;from the right road": "from_right",
-    "at the destination;where the ego is heading|going": "at_the_destination",
-    "near|at|by the crosswalk|crossing": "near_the_crosswalk",
-    "in front;ahead;leading;in front of the ego": "front",
-    "behind;from behind;following;at the back;behind the ego": "back",
-    "on|to the left;in the left lane;in the lane to the left": "left",
-    "on|to the right;in the right lane;in the lane to the right": "right",
-})
-ROAD_TYPES = _phrases({"on the shoulder;hard shoulder;roadside;side of the road": "shoulder",
-                       "on the sidewalk|pavement": "sidewalk"})
-BEHAVIORS = _phrases({
-    "aggressive|aggressively|dangerous|dangerously|reckless|recklessly|speeding|fast|quickly|suddenly|sudden|"
-    "rushing|rushes|runs|running|dashes|overtake|overtakes|overtaking": "aggressive",
-    "careful|carefully|cautious|cautiously|slow|slowly|gently": "cautious",
-})
-FEATURES = _phrases({
-    "traffic light|lights|signal|signals;signalised|signalized;signal controlled": "traffic_light",
-    "unsignalised|unsignalized|uncontrolled": "!traffic_light",
-    "stop sign|signs;all way stop": "stop",
-    "yield sign|signs;give way sign|signs;yield;give way": "yield",
-    "crosswalk|crosswalks;zebra crossing|crossings;pedestrian crossing|crossings": "crosswalk",
-    "ladder crosswalk": "ladder_crosswalk",
-    "continental crosswalk;zebra": "continental_crosswalk",
-    "stop line|lines": "stop_line",
-})
-JUNCTION = _phrases({"junction|junctions|intersection|intersections|crossroads|crossroad;t junction": "junction"})
-NEGATIONS = {"no", "not", "without", "none", "never"}
-CONDITIONS = _phrases({
-    "heavy|hard|pouring rain;downpour;storm|stormy": "hard_rain",
-    "light|soft rain;drizzle|drizzling": "soft_rain",
-    "rain|rainy|raining": "mid_rain",
-    "puddles|puddle;wet road|roads;wet": "wet",
-    "cloudy|overcast|clouds": "cloudy",
-    "fog|foggy|mist|misty|haze": "fog",
-    "snow|snowy|snowing": "snow",
-    "clear|sunny": "clear",
-})
-TIMES = _phrases({"night|dark|darkness|midnight": "night", "dusk|sunset|evening|twilight": "sunset",
-                  "dawn|sunrise|morning": "dawn", "noon|midday|daytime|afternoon": "noon"})
-STAGE_BREAKS = _phrases({"then;after that;afterwards;after this;next;later;finally;subsequently": "then"})
-KINDS = _phrases({
-    "block|blocks|blocking|blocked": "blocking",
-    "pedestrian crush|crushing;crush|crushing;hit a pedestrian": "crushing",
-    "cut off;cut in;cutoff;cutting in": "cut_off",
-    "daily|everyday|normal|regular|ordinary traffic": "daily_traffic",
-    "emergency vehicles|vehicle;emergency": "emergency",
-    "intersection;junction": "intersection",
-    "two wheel|wheeled|wheelers|wheeler vehicles;two wheelers;only two wheelers": "two_wheels",
-    "rain|rainy|snow|snowy|fog|foggy|bad|wet weather;rain|rainy|snow|snowy|fog|foggy|weather": "weather",
-})
-STOPWORDS = set("""
-a an the of to in on at is are was were be and or while with from for its it that which who as by into onto
-this there where when scene scenario please create make generate build give me show some road roads lane lanes
-street streets way one ego's egos side same other also just then it's their them they he she his her having has
-have
-""".split())
 NAME_PREFIX = {"car": "c", "truck": "t", "bus": "b", "motorcycle": "m", "cyclist": "k", "pedestrian": "p",
                "ambulance": "a", "police": "po", "firetruck": "f"}
-COORDINATION = {"and", "or", "a", "an", "the", "as", "well", "plus", "both"}
-NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "single": 1, "double": 2,
-                "multi": 2, "multiple": 2}
+MAX_AGENTS_PER_MENTION = 12
+BARE_PLURAL_COUNT = 2  # "cars pass", "a crowd of children": the gold conventions' count for an unstated size
+
+VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
+DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone"}
+SCENERY_PREPOSITIONS = {"between", "past", "among", "amongst", "through", "around", "beside", "by", "of", "in",
+                        "with"}
+DEFINITE = {"the", "this", "that", "these", "those", "said"}
+INDEFINITE = {"a", "an", "another", "some", "any", "one"}
+PRONOUNS = {"it", "they", "them", "he", "she", "him", "her", "itself", "both", "former", "latter"}
+NEGATIONS = {"no", "not", "without", "never", "none", "neither", "nor", "lacking", "absent", "unmarked", "non"}
+AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "am", "will", "would", "can", "could", "does",
+               "do", "did", "has", "have", "had", "should", "must", "may", "might", "shall", "keeps", "keep",
+               "then", "also", "to", "and"}
+CLAUSE_WORDS = {"while", "whilst", "as", "when", "whereas", "but", "although", "though", "because", "so", "where",
+                "and", "or", "which", "who", "that", "whose", "whom", "until", "before", "if"}
+SUBORDINATE = {"if", "when", "as", "while", "whilst", "because", "although", "though", "until", "before"}
+RELATIVES = {"which", "who", "that", "whose", "whom"}
+# Relational verbs: (subject's place relative to the object) when one of them is the ego.
+FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear"}
+HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
+LEADING = {"lead", "precede"}
+OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter"}
+ACTION_RANK = {"block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 8,
+               "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
+               "move": 1}
+SIDES = ("left", "right")
+TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn", "let", "to let"}
+LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
+              "near", "nearside", "side"}
+INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
+           "level": "level"}
+STEERING = {"move", "steer", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
+RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump"}
 
 
 @dataclass
 class Lowered:
     scenario: Scenario
-    unknown: list[str]  # words no rule placed
+    unknown: list[str]  # words no rule placed, each with the nearest known word when there is one
     kind: str | None = None  # the scene kind a template filled in
+    notes: list[str] = field(default_factory=list)  # every inference and repair, also in the scene's comments
 
 
 @dataclass
-class _Mention:
+class Unit:
+    """A lexicon phrase or a single token, in text order."""
+
     start: int
     end: int
-    type: str
-    count: int
-    is_ego: bool
-    adjectives: int = 0  # where the words qualifying the noun begin ("an aggressive car", "an oncoming bus")
+    category: str  # a lexicon category, or "word", "number", "comma"
+    meaning: str
+    tokens: tuple[Token, ...]
+
+    @property
+    def word(self) -> str:
+        return self.tokens[0].word
+
+    @property
+    def base(self) -> str:
+        return " ".join(t.base for t in self.tokens)
 
 
 @dataclass
-class _Text:
-    tokens: list[str]
-    used: set[int] = field(default_factory=set)
-
-    def find(self, table, start: int = 0, stop: int | None = None, mark: bool = True):
-        """Matches of a phrase table in tokens[start:stop]: (index, length, meaning), in text order."""
-        stop = len(self.tokens) if stop is None else stop
-        found, taken = [], set()
-        for words, meaning in table:
-            n = len(words)
-            for i in range(start, stop - n + 1):
-                if any(j in taken for j in range(i, i + n)):
-                    continue
-                if all(self.tokens[i + k] in words[k] for k in range(n)):
-                    found.append((i, n, meaning))
-                    taken.update(range(i, i + n))
-        found.sort()
-        if mark:
-            for i, n, _ in found:
-                self.used.update(range(i, i + n))
-        return found
-
-
-def tokenize(text: str) -> list[str]:
-    text = text.lower().replace("km/h", " kmh ").replace("'s", " ")
-    return re.findall(r"[a-z]+|\d+(?:\.\d+)?", text)
+class Entity:
+    key: int
+    type: str
+    is_ego: bool
+    stage: int
+    count: int = 1
+    head: str = ""
+    generic: bool = False  # "vehicles", "road users": a group others may be members of
+    group_open: int = 0  # members of a counted group not yet named by a re-mention
+    features: set = field(default_factory=set)  # position features, see positions.txt
+    relative_to: "Entity | None" = None  # "in front of a truck": at the truck's place
+    actions: list = field(default_factory=list)  # (stage, strength, rank, order, class, direction)
+    behavior: str | None = None
+    road_type: str | None = None
+    trigger: Trigger | None = None
+    speed: Speed | None = None
+    gap_m: float | None = None
+    parent: "Entity | None" = None  # the counted group it was taken from
+    label: str = ""  # the name the text gives it ("SV1")
+    includes_ego: bool = False  # "three cars including the ego": the ego shares what the group does
 
 
-def lower(prompt: str, seed: int = 0) -> Lowered:
-    """Lower an English prompt into a Scenario; LoweringError when nothing usable can be read from it."""
-    text = _Text(tokenize(prompt))
-    if not text.tokens:
-        raise LoweringError("the prompt is empty")
-    kinds = text.find(KINDS, mark=False)
-    road = _road(text)
-    weather = _weather(text)
-    segments = _segments(text)
-    kind_tokens = {j for i, n, _ in kinds for j in range(i, i + n)}
-    mentions_by_segment = [_mentions(text, a, b, skip=set(text.used) | kind_tokens) for a, b in segments]
-    others = [m for ms in mentions_by_segment for m in ms if not m.is_ego]
-    kind = None
-    if not others and kinds:
-        i, n, kind = kinds[0]
-        text.used.update(range(max(0, i - 1), i + n))  # the kind and the word that qualifies it
-    junction_context = road.junction is True or bool(text.find(JUNCTION, mark=False))
-    stages, names = [], _Namer()
-    ego: Agent | None = None
-    for (_, b), mentions in zip(segments, mentions_by_segment):
-        agents: list[Agent] = []
-        for i, m in enumerate(mentions):
-            clause_end = mentions[i + 1].start if i + 1 < len(mentions) else b
-            clause = (m.end, clause_end)
-            k = i
-            while all(t in COORDINATION for t in text.tokens[clause[0]:clause[1]]) and k + 1 < len(mentions) \
-                    and not mentions[k + 1].is_ego:  # "an ambulance and a police car drive behind": shared
-                k += 1
-                clause = (mentions[k].end, mentions[k + 1].start if k + 1 < len(mentions) else b)
-            if m.is_ego:
-                if ego is None:
-                    ego = _ego(text, m, clause)
+@dataclass
+class _Reader:
+    tokens: list[Token]
+    units: list[Unit]
+    notes: list[str] = field(default_factory=list)
+    used: set = field(default_factory=set)  # token indexes some rule placed
+    entities: list[Entity] = field(default_factory=list)
+    order: int = 0
+    surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
+    # overtaken by a motorcycle before it turns": "it" is the ego)
+
+    def mark(self, unit: Unit) -> None:
+        self.used.update(range(unit.start, unit.end))
+
+    def tick(self) -> int:
+        self.order += 1
+        return self.order
+
+
+# -- units --------------------------------------------------------------------------------------------------
+
+def _units(tokens: list[Token]) -> list[Unit]:
+    found = {m.start: m for m in matches(tokens)}
+    out, i = [], 0
+    while i < len(tokens):
+        m = found.get(i)
+        if m is not None and m.category == "agents" and m.meaning == "ego" and tokens[m.end - 1].possessive and \
+                m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front"):
+            span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
+            meaning = "ahead" if span[-1].word == "front" else "ego_lane"
+            if m.start > 0 and tokens[m.start - 1].word in ("into", "onto", "across"):
+                meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
+            out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
+            i = m.end + 1
+            continue
+        if m is not None:
+            out.extend(_disambiguate(tokens, m))
+            i = m.end
+            continue
+        t = tokens[i]
+        category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
+        out.append(Unit(i, i + 1, category, t.word, (t,)))
+        i += 1
+    return out
+
+
+VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
+                       "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
+                       "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
+                       "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead",
+                       "very", "infront", "one"}
+
+
+def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
+    """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk."""
+    span = tuple(tokens[m.start:m.end])
+    nxt = tokens[m.end].word if m.end < len(tokens) else ""
+    prev = tokens[m.start - 1] if m.start > 0 else None
+    after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
+                                                      "people", "jogger", "man", "woman", "boy", "girl", "student")
+    if m.category == "road" and span[-1].word == "crossing" and (len(span) == 1 or span[0].base == "pedestrian") and (
+            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and after_person)):
+        out = []
+        if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
+            out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
+        out.append(Unit(m.end - 1, m.end, "actions", "cross", span[-1:]))
+        return out
+    return [Unit(m.start, m.end, m.category, m.meaning, span)]
+
+
+# -- road, weather, kinds -----------------------------------------------------------------------------------
+
+def _road(r: _Reader) -> RoadSpec:
+    fields: dict = {"required_signals": [], "without_signals": [], "required_objects": [], "without_objects": []}
+    junction: bool | None = None
+    lanes: int | None = None
+    negated = False
+    units = r.units
+
+    def put(word: str, forbidden: bool) -> None:
+        group = "signals" if word in V.SIGNALS else "objects"
+        target = fields[f"{'without' if forbidden else 'required'}_{group}"]
+        other = fields[f"{'required' if forbidden else 'without'}_{group}"]
+        if word not in target and word not in other:
+            target.append(word)
+
+    for k, u in enumerate(units):
+        if u.category == "word" and u.word in NEGATIONS or (u.category == "word" and u.word.endswith("n't")) \
+                or (u.category == "numbers" and u.meaning == "0"):
+            negated = True
+            r.mark(u)
+            if k > 0 and units[k - 1].category == "agents" and units[k - 1].meaning not in ("none", "ego") and \
+                    k + 1 < len(units) and units[k + 1].category == "road" and units[k + 1].meaning == "traffic_light":
+                units[k + 1].category = "word"  # "a cyclist without lights": its own lamps
+                negated = False
+            continue
+        if u.category == "actions" and u.base in ("yield", "give way") and (
+                k == 0 or units[k - 1].category in ("comma", "word") and units[k - 1].word in (",", "a", "at", "with")
+                or (k + 1 < len(units) and units[k + 1].word in ("sign", "signs", "junction", "line", "markings"))):
+            put("yield", negated)  # "a give way junction", "roundabout entry, give way": the sign
+            r.mark(u)
+            u.category, u.meaning = "road", "yield"
+            continue
+        if u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
+            put("traffic_light", False)  # "runs a red light"
+        if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
+                                                                                          "signaled") \
+                and k > 0 and units[k - 1].category == "agents":
+            continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road":
+            r.mark(u)
+            meaning = u.meaning
+            if meaning == "none":
+                pass
+            elif meaning == "junction":
+                denied = _denied(units, k)
+                if junction is None or denied:
+                    junction = not denied
+            elif meaning == "no_junction":
+                junction = False if not negated else junction
+            elif meaning == "highway":
+                lanes = max(lanes or 0, 2)
+                junction = False if junction is None else junction
+            elif meaning == "sign":
+                if negated:
+                    put("stop", True)
+                    put("yield", True)
+            elif meaning.startswith("!"):
+                for word in meaning[1:].split("+"):
+                    put(word, True)
+            elif meaning == "stop+junction":  # "a four-way stop": a stop sign at a junction
+                put("stop", negated)
+                junction = True if junction is None else junction
+            else:
+                if meaning == "traffic_light" and u.tokens[0].word in ("light", "lights") and not negated and \
+                        k > 0 and units[k - 1].category == "weather":
+                    continue  # "light rain" is read as weather first; a stray "light" after weather is not a signal
+                put(meaning, negated)
+            continue
+        if u.category == "positions" and u.meaning == "crosswalk":  # "near the crosswalk": there is one
+            said = {t.word for t in u.tokens}
+            word = "continental_crosswalk" if "zebra" in said else "crosswalk"
+            if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]):
+                put(word, False)
+        if u.category == "comma" or (u.category == "word" and u.word in
+                                     ("and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic")):
+            continue
+        if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
+            continue
+        negated = False
+    speed_limits = _speed_limits(r)
+    for word in speed_limits:
+        put(word, False)
+    lanes = _lanes(r, lanes)
+    spec: dict = {k: tuple(v) for k, v in fields.items()}
+    if lanes is not None:
+        spec["lanes"] = lanes
+    if junction is not None:
+        spec["junction"] = junction
+    return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+def _denied(units: list[Unit], k: int) -> bool:
+    """'no junction', 'not at a junction', 'without any junctions', 'away from junctions'."""
+    for u in reversed(units[max(0, k - 3):k]):
+        if u.category == "word" and (u.word in NEGATIONS or u.word == "away"):
+            return True
+        if not (u.category == "word" and u.word in ("at", "a", "an", "any", "from", "near", "the")):
+            return False
+    return False
+
+
+LIMIT_WORDS = {"limit", "zone", "sign", "limited", "posted", "restricted", "maximum", "max", "limits"}
+
+
+def _speed_limits(r: _Reader) -> list[str]:
+    """'a 30 km/h speed limit', 'a speed limit of ninety', 'a limit of forty', 'twenty miles per hour'."""
+    tokens, out = r.tokens, []
+    for i, t in enumerate(tokens):
+        value = _word_number(t)
+        if value is None or (i + 1 < len(tokens) and _word_number(tokens[i + 1]) is not None
+                             and read_number(t.word) is None):
+            continue  # the tens of "thirty five": read at the units
+        value, first = _number_before(tokens, i)
+        around = {x.word for x in tokens[max(0, first - 4): i + 5]}
+        if not around & LIMIT_WORDS or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
+                                                                                 "seconds", "s", "cars"}:
+            continue
+        rest = [x.word for x in tokens[i + 1: i + 4]]
+        mph = rest[:1] == ["mph"] or rest[:3] == ["miles", "per", "hour"] or rest[:2] == ["miles", "an"]
+        unitless = not rest or rest[0] not in ("kmh", "km", "kilometers", "kilometer")
+        if unitless and not mph and value % 10 == 5 and 15 <= value <= 85:
+            mph = True  # "25 limit", "Limit's 65": US signs in miles an hour step by five
+            r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (a US sign)")
+        unit = "mph" if mph else "km/h"
+        kmh = value * 1.609344 if mph else value
+        r.used.update(j for j in range(max(0, first - 4), min(len(tokens), i + 5))
+                      if tokens[j].word in LIMIT_WORDS | {"speed", "kmh", "mph", "of", "km", "miles", "kilometers",
+                                                          "per", "hour", "an"} or first <= j <= i)
+        limit = round(kmh)
+        low, high = V.SPEED_SIGN_LIMITS
+        if not low <= limit <= high:
+            shown = "a number too large to read" if value >= TOO_LARGE else f"{value:g} {unit}"
+            r.notes.append(f"left out: a speed limit of {shown} is outside {low}..{high} km/h")
+            continue
+        if mph:
+            r.notes.append(f"inferred: {value:g} mph is speed_{limit} (km/h)")
+        if f"speed_{limit}" not in out:
+            out.append(f"speed_{limit}")
+    return out
+
+
+LANE_ROADS = {"road", "roads", "street", "highway", "motorway", "freeway", "carriageway", "avenue", "roadway",
+              "boulevard", "expressway", "lane", "lanes", "way", "section", "stretch", "arterial", "dual"}
+
+
+PER_DIRECTION = {"per", "each", "every", "in", "a", "one"}
+
+
+def _lanes(r: _Reader, lanes: int | None) -> int | None:
+    """'a two-lane road', 'three lanes in each direction' (which wins over a total: 'a four-lane avenue, two
+    lanes each way'), 'multi-lane'."""
+    tokens = r.tokens
+    found: list[tuple[bool, int]] = []
+    for i, t in enumerate(tokens):
+        if t.word not in ("lane", "lanes") or i == 0:
+            continue
+        prev = tokens[i - 1]
+        n = _word_number(prev)
+        if n is None:
+            if prev.word in ("multi", "multiple", "several", "many"):
+                n = 2.0
+            elif prev.word == "single":
+                n = 1.0
+        if n is None or n == 0:
+            continue
+        nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
+        if not (t.word == "lanes" or t.word == "lane" and nxt not in ("change", "changes", "changing")):
+            continue
+        after = {x.word for x in tokens[i + 1: i + 4]}
+        per_direction = bool(after & {"direction", "way", "each", "per"}) and bool(after & PER_DIRECTION | after
+                                                                                  & {"direction", "way"})
+        r.used.update((i - 1, i))
+        if n >= TOO_LARGE:
+            r.notes.append("repaired: a lane count too large to read; used lanes >= 6")
+            n = 6
+        found.append((per_direction, int(n)))
+    if found:
+        for i, t in enumerate(tokens[:-2]):  # "a four-lane road, two in each direction"
+            n = _word_number(t)
+            after = [x.word for x in tokens[i + 1:i + 4]]
+            if n and 0 < n < TOO_LARGE and after[:1] in (["in"], ["each"], ["per"], ["a"]) and (
+                    "direction" in after or "way" in after):
+                found.append((True, int(n)))
+                r.used.add(i)
+    if not found:
+        return lanes
+    per = [n for p, n in found if p]
+    return max(per) if per else max([n for _, n in found] + [lanes or 0])
+
+
+def _word_number(t: Token) -> float | None:
+    """A number written in digits or as one number word ('three', 'forty')."""
+    value = read_number(t.word)
+    if value is not None:
+        return value
+    entry = lexicon().phrases.get((t.word,))
+    if entry and entry[0] == "numbers" and t.word not in ("some", "few", "crowd", "group", "multiple", "various",
+                                                          "bunch", "handful", "several", "couple", "pair"):
+        return float(entry[1])
+    return None
+
+
+def _number_before(tokens: list[Token], i: int) -> tuple[float | None, int]:
+    """The number ending at token i: '50', 'fifty', 'thirty five'; (value, first token)."""
+    value = _word_number(tokens[i]) if 0 <= i < len(tokens) else None
+    if value is None:
+        return None, i
+    if value < 10 and i > 0:
+        tens = _word_number(tokens[i - 1])
+        if tens is not None and tens >= 20 and tens % 10 == 0 and not read_number(tokens[i - 1].word):
+            return tens + value, i - 1
+    return value, i
+
+
+def _weather(r: _Reader) -> Weather | None:
+    conditions, times = [], []
+    for k, u in enumerate(r.units):
+        if u.category != "weather":
+            continue
+        before = r.units[k - 1] if k else None
+        if before is not None and before.category == "word" and before.word in ("no", "without", "not"):
+            r.mark(u)
+            continue
+        r.mark(u)
+        (times if u.meaning.startswith("time:") else conditions).append(
+            (u.meaning.removeprefix("time:"), " ".join(t.word for t in u.tokens)))
+    clock = _clock_time(r)
+    if clock and not times:
+        times.append(clock)
+    if not conditions and not times:
+        return None
+    condition = _one_condition(conditions, r.notes)
+    time = times[0][0] if times else V.DEFAULT_TIME
+    for other, said in times[1:]:
+        if other != time:
+            r.notes.append(f"left out: '{said}' (the scene has one time of day: {time})")
+    return Weather(condition=condition, time=time)
+
+
+def _clock_time(r: _Reader) -> tuple[str, str] | None:
+    """'At 23:10' is night, '12:05' noon, '17:40' sunset, '06:30' dawn; other hours say no time of day."""
+    for i, t in enumerate(r.tokens[:-1]):
+        nxt = r.tokens[i + 1]
+        if t.word.isdigit() and nxt.word in ("am", "pm") and 1 <= int(t.word) <= 12:  # "at 9 pm", "6am"
+            hour = int(t.word) % 12 + (12 if nxt.word == "pm" else 0)
+            r.used.update((t.index, nxt.index))
+            return _hour_time(hour, f"{t.word} {nxt.word}")
+        if read_number(t.word) is None or read_number(nxt.word) is None or nxt.index != t.index + 1:
+            continue
+        if not (len(nxt.word) == 2 and t.word.isdigit() and int(t.word) < 24 and nxt.word.isdigit()):
+            continue
+        r.used.update((t.index, nxt.index))
+        return _hour_time(int(t.word), f"{t.word}:{nxt.word}")
+    return None
+
+
+def _hour_time(hour: int, said: str) -> tuple[str, str] | None:
+    for time, hours in (("night", range(21, 29)), ("dawn", range(5, 8)), ("noon", range(11, 15)),
+                        ("sunset", range(17, 21))):
+        if hour in hours or hour + 24 in hours:
+            return time, said
+    return None
+
+
+FALLING = ("hard_rain", "mid_rain", "soft_rain", "snow", "fog")
+
+
+def _one_condition(conditions: list[tuple[str, str]], notes: list[str]) -> str:
+    """One condition from many words: rain, snow or fog over wet or cloudy; wet and cloudy make wet_cloudy."""
+    words = [c for c, _ in conditions]
+    if not words:
+        return V.DEFAULT_CONDITION
+    falling = [(c, said) for c, said in conditions if c in FALLING]
+    if falling:
+        rain = [c for c, _ in falling if c.endswith("rain")]
+        first = falling[0][0]
+        if first.endswith("rain") and len(set(rain)) > 1:
+            first = next(c for c in ("hard_rain", "soft_rain", "mid_rain") if c in rain)
+        for c, said in falling:
+            if c != first and not (c.endswith("rain") and first.endswith("rain")):
+                notes.append(f"left out: '{said}' (the scene has one weather condition: {first})")
+        return first
+    if "wet_cloudy" in words or ("wet" in words and "cloudy" in words):
+        return "wet_cloudy"
+    for c in ("wet", "cloudy", "clear"):
+        if c in words:
+            return c
+    return words[0]
+
+
+ASKING = {"scene", "scenario", "situation", "simulation", "case", "test"}
+ASKING_LINKS = {"for", "of", "with", "about", "involving", "showing", "featuring", "depicting", "having", "on",
+                "where", "containing", "that", "has", "is", "a", "an", "the", "some", "shows", "covering"}
+
+
+def _asked_kind(tokens: list[Token]) -> tuple[str, range] | None:
+    """The scene kind when the prompt asks for one as the whole scene: 'create a scene for daily traffic',
+    'a daily traffic scene', 'daily traffic'. A passing word ('at an intersection', 'in fog') is not asked."""
+    kinds = lexicon().kinds
+    words = [t.base for t in tokens]
+    content = [i for i, t in enumerate(tokens) if t.word != "," and (t.word not in lexicon().function_words
+                                                                    or t.word in ASKING)]
+
+    def kind_at(i: int):
+        for n in range(6, 0, -1):
+            key = tuple(words[i:i + n])
+            raw = tuple(t.word for t in tokens[i:i + n])
+            if len(key) == n and (key in kinds or raw in kinds):
+                return kinds.get(raw) or kinds[key], n
+        return None
+
+    def nothing_after(end: int) -> bool:  # "... daily traffic at dusk": only weather or road words may follow
+        for t in tokens[end:]:
+            if t.sentence != tokens[end - 1].sentence:
+                break
+            entry = lexicon().phrases.get((t.base,)) or lexicon().phrases.get((t.word,))
+            if entry and entry[0] in ("agents", "actions") and entry[1] != "none":
+                return False
+        return True
+
+    for i, t in enumerate(tokens):
+        if t.word in ASKING:
+            j = i + 1
+            while j < len(tokens) and tokens[j].word in ASKING_LINKS:
+                j += 1
+            if j > i + 1 and (found := kind_at(j)) and nothing_after(j + found[1]):
+                return found[0], range(i, j + found[1])
+            if i > 0:
+                for k in range(max(0, i - 4), i):
+                    found = kind_at(k)
+                    if found and k + found[1] == i and nothing_after(i + 1):
+                        return found[0], range(k, i + 1)
+    if content:
+        first = content[0]
+        found = kind_at(first)
+        if found and first + found[1] > content[-1]:
+            return found[0], range(first, first + found[1])
+    return None
+
+
+# -- stages and clauses -------------------------------------------------------------------------------------
+
+@dataclass
+class Clause:
+    units: list[Unit]
+    stage: int
+    condition: bool = False  # "once the light turns green": sets no action of its own
+    antecedent: Entity | None = None  # a relative clause's noun
+    link: str = ""  # the word that opened it (and, while, which...)
+    after_subordinate: bool = False  # follows an 'if' / 'when' clause: its subject is its own
+
+
+def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
+    case_names = {u.tokens[0].sentence for u in r.units if u.category == "agents" and u.meaning == "none"
+                  and u.tokens[0].word in ("car", "vehicle") and len(u.tokens) > 2 and u.tokens[1].word == "to"}
+    units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u) and not u.tokens[0].title
+             and u.tokens[0].sentence not in case_names]  # "car-to-pedestrian farside adult": a test case's name
+    out: list[Clause] = []
+    stage, current, condition, link = 0, [], False, ""
+    sentence = units[0].tokens[0].sentence if units else 0
+
+    def close(next_link: str = "", next_condition: bool = False):
+        nonlocal current, condition, link
+        if current:
+            subordinate = bool(out) and out[-1].link in SUBORDINATE and link == ","
+            out.append(Clause(current, stage, condition, link=link, after_subordinate=subordinate))
+        current, condition, link = [], next_condition, next_link
+
+    for k, u in enumerate(units):
+        nxt = units[k + 1] if k + 1 < len(units) else None
+        new_sentence = u.tokens[0].sentence != sentence
+        sentence = u.tokens[0].sentence
+        if new_sentence:
+            close()
+        prev_word = units[k - 1].word if k else ""
+        if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and \
+                nxt.tokens[0].word.endswith("ing"):
+            continue  # "after braking for a fox": when, not a stage
+        if u.category == "sequence" and not (u.word == "after" and nxt is not None and
+                                             nxt.category in ("number", "numbers")) and not (
+                u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
+                and prev_word not in ("for", "at", "all"):  # "for once", "at once"
+            r.mark(u)
+            if out or current:
+                close()
+                stage += 1
+            close(next_condition=u.meaning == "once")
+            continue
+        if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
+            r.mark(u)
+            close()
+            stage += 1
+            condition = True
+            continue
+        if u.category == "comma":
+            only_ego = all(x.category == "agents" and x.meaning == "ego" or x.category == "word" and x.word == "the"
+                           for x in current)
+            if _has_verb(current) or condition or (_has_agent(current) and not only_ego
+                                                   and _starts_noun(units, k + 1)) or (nxt is not None and nxt.category == "word" and nxt.word in
+                                                   ("and", "but", "while", "whilst", "so", "where", "which", "who")
+                                                   and _has_agent(current)):
+                close(",")
+            else:
+                current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
+            continue
+        if u.category == "word" and u.word in CLAUSE_WORDS:
+            if u.word in ("and", "or") and not _has_verb(current):
+                current.append(u)
                 continue
-            agents += _agents(text, m, clause, names, junction_context, road)
-        for j, agent in enumerate(agents):  # "in front of a truck": at the truck's position
-            if agent.relative_to_ego == "same_as_next":
-                nxt = next((x.relative_to_ego for x in agents[j + 1:] if x.relative_to_ego != "same_as_next"),
-                           "front")
-                agents[j] = agent.model_copy(update={"relative_to_ego": nxt})
-        stages.append(agents)
-    if kind is not None:
-        template = _template(kind, seed)
-        road = _merge_road(template.road, road)
-        ego = ego or template.ego
-        stages[0] = [a for a in template.stages[0].agents if not a.is_ego] + stages[0]
+            if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
+                current.append(u)
+                continue
+            if u.word == "as" and nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if"):
+                current.append(u)
+                continue
+            close(u.word)
+            continue
+        current.append(u)
+    close()
+    return out
+
+
+def _starts_noun(units: list[Unit], k: int) -> bool:
+    """A noun phrase begins here: determiners, numbers and adjectives, then an agent noun."""
+    for u in units[k:k + 4]:
+        if u.category == "agents":
+            return u.meaning != "none"
+        if not (u.category in ("numbers", "number", "behaviours") or
+                (u.category == "word" and u.word in DETERMINERS | {"and"}) or
+                (u.category == "positions" and u.word in ADJECTIVE_POSITIONS and len(u.tokens) == 1)):
+            return False
+    return False
+
+
+def _has_agent(units: list[Unit]) -> bool:
+    return any(u.category == "agents" and u.meaning != "none" for u in units)
+
+
+QUESTION_WORDS = {"what", "how", "why", "where", "which", "who"}
+
+
+def _hypothetical(tokens: list[Token], u: Unit) -> bool:
+    """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
+    sentences after it describe the scene."""
+    t = u.tokens[0]
+    if not t.question:
+        return False
+    first = next(x for x in tokens if x.sentence == t.sentence)
+    if first.word not in QUESTION_WORDS:
+        return False
+    later = {x.base for x in tokens if x.sentence > t.sentence}
+    return bool(later & _agent_nouns())
+
+
+@lru_cache(maxsize=1)
+def _agent_nouns() -> frozenset[str]:
+    return frozenset(w for words, (category, meaning) in lexicon().phrases.items() if category == "agents"
+                     and meaning not in ("none", "ego") and len(words) == 1 for w in words)
+
+
+def _has_verb(units: list[Unit]) -> bool:
+    return any(u.category == "actions" and u.meaning not in ("try",) for u in units)
+
+
+def _reaching(units: list[Unit], k: int) -> bool:
+    """'when the ego reaches / approaches / enters the junction': the start of a later stage."""
+    window = units[k:k + 5]
+    ego = any(u.category == "agents" and u.meaning == "ego" for u in window[:3])
+    verb = next((u for u in window if u.category == "actions"), None)
+    if not ego or verb is None:
+        return False
+    if verb.meaning == "reach":
+        return True
+    rest = units[units.index(verb) + 1: units.index(verb) + 4]
+    return verb.base in ("approach", "enter") and any(u.category == "road" and u.meaning == "junction" for u in rest)
+
+
+# -- noun phrases and entities ------------------------------------------------------------------------------
+
+@dataclass
+class NounPhrase:
+    entity: Entity | None  # None: names no agent
+    index: int  # where in the clause's units its head is
+    first: int  # its first unit (determiner)
+    introduced: bool = False  # a new entity (indefinite)
+    plural: bool = False
+    group: list = field(default_factory=list)  # several entities ("both", "they")
+
+
+def _agent_type(u: Unit) -> tuple[str, bool]:
+    """(type, is_ego) of an agent unit; the ego's type from its noun ('the ego truck')."""
+    if u.meaning == "ego":
+        words = [t.base for t in u.tokens]
+        for kind in ("truck", "bus", "motorcycle"):
+            if kind in words:
+                return kind, True
+        return "car", True
+    if u.meaning == "generic":
+        return "car", False
+    return u.meaning, False
+
+
+ADJECTIVE_POSITIONS = {"oncoming", "opposing", "leading", "lead", "following", "trailing", "adjacent", "preceding",
+                       "opposite", "front", "rear", "back", "tailgating"}
+DETERMINERS = DEFINITE | INDEFINITE | {"his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second",
+                                       "third", "first", "same", "further", "additional", "extra", "its", "their"}
+
+
+def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, int, set[str], list[Unit]]:
+    """The count, determiner words and premodifiers in front of a noun: 'the two dangerous oncoming cars'.
+    Modifiers stand between the determiner and the noun; the determiner ends the phrase on the left."""
+    count, first, words, modifiers = None, head, set(), []
+    k = head - 1
+    in_determiner = False
+    while k >= lo:
+        u = units[k]
+        if u.category == "numbers":
+            count = int(u.meaning) if count is None else count
+            if u.word in VAGUE_COUNTS:
+                words.add("some")
+            in_determiner = True
+        elif u.category == "number":
+            value = read_number(u.word) or 0
+            count = int(min(value, TOO_LARGE)) if count is None else count
+            in_determiner = True
+        elif u.category == "word" and u.word in DETERMINERS:
+            words.add(u.word)
+            in_determiner = True
+        elif in_determiner:
+            break
+        elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)) or \
+                (u.category == "positions" and len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS) or \
+                (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS):
+            modifiers.append(u)
+        else:
+            break
+        first = k
+        k -= 1
+    # a premodifier run without a determiner in front of it belongs to what came before ("ego following truck")
+    if not words and count is None and modifiers and first > 0 and units[first - 1].category in ("agents",
+                                                                                                "actions"):
+        first = head
+        modifiers = []
+    return count, first, words, modifiers
+
+
+def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
+    u = units[head]
+    r.mark(u)
+    kind, is_ego = _agent_type(u)
+    count, first, words, modifiers = _count_before(units, head, lo)
+    for k in range(first, head):
+        if units[k].category in ("word", "numbers", "number"):
+            r.mark(units[k])
+    plural = u.tokens[-1].plural and not is_ego
+    if is_ego:
+        ego = next((e for e in r.entities if e.is_ego), None)
+        if ego is None:
+            ego = Entity(len(r.entities), kind, True, stage, head=u.base)
+            r.entities.append(ego)
+        elif kind != "car" and ego.type == "car":
+            ego.type = kind
+        return NounPhrase(ego, head, first)
+    if u.meaning == "none" or count == 0:  # "no other vehicles"
+        return NounPhrase(None, head, first)
+    label = u.tokens[-1].label
+    if label:
+        named = next((e for e in r.entities if e.label == label), None)
+        if named is not None:
+            return NounPhrase(named, head, first)
+    if count is not None and count > 1 and not plural and words & {"some", "any"}:
+        count = 1  # "some car suddenly cuts in"
+    definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
+    if "more" in words and "than" in words and count is not None:
+        count += 1
+    if definite and count is None:
+        found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
+                          "both" in words, recent, u.base)
+        if len(found) == 1 and not found[0].parent and _placed_elsewhere(found[0], units, head):
+            found = []  # "a car ahead ... the car behind us": another car
+        if found:
+            if len(found) == 1:
+                return NounPhrase(found[0], head, first, plural=plural)
+            return NounPhrase(found[0], head, first, plural=True, group=found)
+        ego = next((e for e in r.entities if e.is_ego), None)
+        nxt = units[head + 1] if head + 1 < len(units) else None
+        if ego is not None and not plural and kind == ego.type and "other" not in words and u.base in (
+                "car", "vehicle", "truck", "bus") and (nxt is None or nxt.category not in ("positions", "word")
+                                                       or nxt.word in AUXILIARIES):
+            return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
+    before = first - 1
+    while before > lo and units[before].category in ("actions", "behaviours"):
+        before -= 1  # "between parked cars"
+    if count is None and plural and not words and before >= lo and units[before].category == "word" and \
+            units[before].word in SCENERY_PREPOSITIONS:
+        for k in range(before + 1, head):
+            r.mark(units[k])
+            units[k].category = "word"
+        return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
+    if count is None:
+        count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
+    if count is not None and count > 1 and not plural and u.base in ("group", "crowd", "family"):
+        count = BARE_PLURAL_COUNT
+    if count >= TOO_LARGE:
+        r.notes.append(f"repaired: a count too large to read for {u.base}; used {MAX_AGENTS_PER_MENTION}")
+        count = MAX_AGENTS_PER_MENTION
+    elif count > MAX_AGENTS_PER_MENTION:
+        r.notes.append(f"repaired: {count} {u.base}s is more than {MAX_AGENTS_PER_MENTION} in one mention; "
+                       f"used {MAX_AGENTS_PER_MENTION}")
+        count = MAX_AGENTS_PER_MENTION
+    entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
+                    generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
+    if u.base.split()[0] in ("lead", "leading"):
+        entity.features.add("ahead")
+    elif u.base == "tailgater":
+        entity.features.add("behind")
+    if _including_ego(units, head):
+        entity.count = max(0, count - 1)
+        entity.includes_ego = True
+    if entity.count > 1 or entity.generic:
+        entity.group_open = entity.count
+    if not _absorbed(r, entity):
+        r.entities.append(entity)
+    for m in modifiers:
+        _modify(r, entity, m, stage, strength=1)
+    return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
+
+
+OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side_left": {"side_right"},
+                   "side_right": {"side_left"}}
+
+
+def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
+    """'the car behind us' names another car than one already placed ahead."""
+    nxt = units[head + 1] if head + 1 < len(units) else None
+    if nxt is None or nxt.category != "positions":
+        return False
+    return bool(OPPOSITE_PLACES.get(nxt.meaning, set()) & e.features)
+
+
+def _including_ego(units: list[Unit], head: int) -> bool:
+    window = [u for u in units[head + 1: head + 5] if u.category != "comma"]
+    return (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting",
+                                                                                 "inc", "with")
+            and any(u.category == "agents" and u.meaning == "ego" for u in window[1:3]))
+
+
+GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclist", "pedestrian", "person",
+                 "ambulance", "police", "police car", "firetruck", "fire truck", "sv", "pov", "target", "agent",
+                 "people", "child", "kid", "man", "woman", "guy"}
+
+
+def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
+              recent: list[Entity], head: str = "") -> list[Entity]:
+    """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
+    pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
+                                                        or (e.generic and kind in V.EGO_TYPES))]
+    if head and head not in GENERAL_NOUNS and not both and not plural:
+        same = [e for e in pool if e.head.split()[-1] == head.split()[-1]
+                or e.head in GENERAL_NOUNS and e.head != "vehicle"]
+        pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
+    if not pool:
+        return []
+    if both or plural:
+        groups = [e for e in pool if e.count > 1]
+        return [groups[-1]] if groups else pool[-2:]
+    groups = [e for e in pool if e.group_open > 0]
+    if groups:
+        group = groups[-1]
+        member = Entity(len(r.entities), group.type if not group.generic else kind, False, group.stage,
+                        head=group.head, parent=group, features=set(group.features),
+                        actions=list(group.actions), behavior=group.behavior)
+        group.group_open -= 1
+        group.count -= 1
+        r.entities.append(member)
+        return [member]
+    singles = [e for e in pool if e.parent is None or e.count == 1]
+    if other:
+        last = recent[-1] if recent and recent[-1] in singles else (singles[-1] if singles else None)
+        others = [e for e in singles if e is not last]
+        return [others[-1]] if others else ([last] if last else [])  # "the other vehicle": the one not the ego
+    mentioned = [e for e in recent if e in singles]
+    return [mentioned[-1]] if mentioned else [singles[-1]]
+
+
+def _absorbed(r: _Reader, entity: Entity) -> bool:
+    """A new agent of a counted group already introduced ('four vehicles: a car, a bus...') is one of it."""
+    for group in reversed(r.entities):
+        if group.is_ego or group is entity or group.group_open <= 0:
+            continue
+        if group.generic or (group.includes_ego and group.type == entity.type):
+            taken = min(entity.count, group.group_open)
+            group.group_open -= taken
+            group.count -= taken
+            return False
+    return False
+
+
+# -- clause reading -----------------------------------------------------------------------------------------
+
+def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_units: list[Unit] | None = None,
+            k: int | None = None) -> None:
+    """Give a modifier or a predicate to the entity it belongs to."""
+    r.mark(u)
+    if u.category == "behaviours":
+        e.behavior = e.behavior or u.meaning
+    elif u.category == "positions":
+        if u.meaning in ("side_left", "side_right") and not {t.word for t in u.tokens} & LANE_WORDS:
+            e.features.add("bare_" + u.meaning[5:])
+        if u.meaning in ("side_left", "side_right") and u.tokens[0].word == "from":
+            e.features.add("from_lane")
+        if u.meaning in ("shoulder", "sidewalk"):
+            e.road_type = e.road_type or u.meaning
+            if u.meaning == "sidewalk":
+                e.features.add("on_sidewalk")
+        else:
+            e.features.add(u.meaning)
+    elif u.category == "actions":
+        direction = None
+        if clause_units is not None and k is not None and (u.meaning in ("turn", "lane_change", "cut_in") or (
+                u.meaning == "move" and u.tokens[0].base in STEERING)):
+            direction = _direction_after(r, clause_units, k)
+        action = u.meaning
+        if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
+            action = "lane_" + direction
+        if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
+                any("lane" in x.base for x in clause_units[k + 1:k + 5]):
+            return  # "waiting for the light to change"
+        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
+            e.features.add("overtaking")
+        if u.tokens[0].base in RUSHING and not e.is_ego:
+            e.behavior = e.behavior or "aggressive"
+        e.actions.append((stage, strength, ACTION_RANK.get(action, 0), r.tick(), action, direction))
+    elif u.category == "word" and u.word not in lexicon().function_words:
+        pass
+
+
+def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
+    """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
+    turning = units[k].meaning in ("turn", "u_turn")
+    for j, u in enumerate(units[k + 1: k + 4], start=k + 1):
+        if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
+                                                        "from_left", "from_right"):
+            if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
+                    u.meaning.startswith("road") and not turning):
+                return None  # where it comes from, not where it goes
+            r.mark(u)
+            u.meaning = "used"
+            return "left" if "left" in u.base else "right"
+        if u.category in ("agents", "actions"):
+            return None
+    return None
+
+
+def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], recent: list[Entity],
+                 pending: list[Entity] | None = None) -> list[Entity]:
+    units = clause.units
+    stage = clause.stage
+    phrases: list[NounPhrase] = []
+    k = 0
+    heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
+        u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
+        and units[i + 1].meaning not in ("ego", "none"))]
+    lo = 0
+    for i in heads:
+        np = _resolve(r, units, i, lo, stage, recent)
+        phrases.append(np)
+        lo = i + 1
+    for i, u in enumerate(units):  # "kids are crossing, three of them": the count of the group just named
+        if u.category in ("numbers", "number") and i + 2 < len(units) and units[i + 1].word == "of" and \
+                units[i + 2].word in ("them", "those", "these"):
+            group = next((np.entity for np in reversed(phrases) if np.entity is not None and np.plural), None)
+            group = group or next((e for e in reversed(recent) if e.count > 1), None)
+            if group is not None:
+                value = _word_number(u.tokens[0])
+                if value is not None and 0 < value <= MAX_AGENTS_PER_MENTION:
+                    group.count = int(value)
+                r.mark(u), r.mark(units[i + 1]), r.mark(units[i + 2])
+                units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
+    pronouns = []
+    for i, u in enumerate(units):
+        if u.word == "one" and u.category in ("word", "numbers") and not any(np.first <= i <= np.index
+                                                                              for np in phrases) \
+                and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
+                and not (i + 1 < len(units) and units[i + 1].word == "of"):
+            member = _member(r, recent)  # "two cars, one in front and one behind"
+            if member is not None:
+                r.mark(u)
+                phrases.append(NounPhrase(member, i, i))
+            continue
+        if u.category == "word" and u.word in PRONOUNS and not any(np.first <= i <= np.index for np in phrases):
+            if u.word == "both" and i + 1 < len(units) and units[i + 1].category in ("agents", "word") and \
+                    (units[i + 1].category == "agents" or units[i + 1].word in DEFINITE):
+                continue  # "both the truck and the pedestrian": coordination, not a pronoun
+            pronouns.append(i)
+    for i in pronouns:
+        u = units[i]
+        r.mark(u)
+        if u.word in ("both", "they", "them"):
+            group = [e for e in recent if not e.is_ego][-2:] or list(previous_subject)
+            if group:
+                phrases.append(NounPhrase(group[0], i, i, plural=True, group=group))
+        elif u.word == "former" or u.word == "latter":
+            pool = [e for e in recent if not e.is_ego][-2:]
+            if pool:
+                phrases.append(NounPhrase(pool[0] if u.word == "former" else pool[-1], i, i))
+        else:
+            target = _pronoun(units, i, phrases, r.surface or previous_subject, recent)
+            if target is not None:
+                phrases.append(NounPhrase(target, i, i))
+    phrases.sort(key=lambda p: p.index)
+    phrases = _appositions(r, units, phrases)
+    verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
+             and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)]
+    if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
+            u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
+        verbs = []  # "the light turns red": the subject is a signal, no agent acts
+    for i, u in enumerate(units):
+        if u.category == "actions" and u.meaning == "try":
+            r.mark(u)
+
+    # the passive: "the ego is approached from behind by an ambulance"
+    by = next((i for i, u in enumerate(units) if u.category == "word" and u.word == "by" and i > 0
+               and (verbs and i > verbs[0] or units[i - 1].word.endswith(("ed", "en")))
+               and any(np.index > i for np in phrases)), None)
+    if by is not None and any(u.category == "word" and u.word in ("kept", "held", "forced", "made", "left")
+                              and k + 1 < by and (units[k + 1].category == "actions" or units[k + 1].word == "to")
+                              for k, u in enumerate(units[:by])) or (by is not None and verbs and units[verbs[0]].base in
+                                                        ("keep waiting", "be kept waiting", "kept waiting", "held up",
+                                                         "stuck", "held")):
+        by = None  # "the ego is kept waiting by two cars": the ego waits
+    subject: list[Entity] = []
+    objects: list[NounPhrase] = []
+    first_verb = verbs[0] if verbs else len(units)
+    if by is not None:
+        actor = next(np for np in phrases if np.index > by)
+        subject = actor.group or [actor.entity]
+        objects = [np for np in phrases if np is not actor]
+        r.mark(units[by])
+    else:
+        before = [np for np in phrases if np.index < first_verb and np.entity is not None
+                  and not _is_reference(units, np)]
+        for np in before:
+            subject += np.group or [np.entity]
+        joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
+        if pending and len(before) >= 2 and joined and verbs:  # "an ambulance, a police car and a van approach"
+            subject = list(pending) + subject
+        objects = [np for np in phrases if np.index > first_verb or _is_reference(units, np)]
+    subject = [e for e in subject if e is not None]
+    if not subject:
+        if clause.antecedent is not None:
+            subject = [clause.antecedent]
+        elif clause.condition:
+            subject = []
+        elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate:
+            subject = list(previous_subject)
+        elif verbs:
+            subject = [e for e in [_implied(r, units, stage, verbs)] if e is not None]
+    if any(e.includes_ego for e in subject):  # "three cars including the ego wait": the ego waits too
+        subject = subject + [_ego_entity(r, stage)]
+    if clause.condition:
+        strength = 1
+    else:
+        strength = 2
+
+    main_verbs = []
+    for i in verbs:
+        owner = _participle_owner(units, i, phrases, subject, verbs)
+        if owner is not None:
+            for e in owner.group or [owner.entity]:
+                if e is not None:
+                    _modify(r, e, units[i], stage, 1, units, i)
+        else:
+            main_verbs.append(i)
+    if not main_verbs and not phrases and len(units) > 1 and units[0].category == "positions" and \
+            units[0].meaning in ("side_left", "side_right") and len(units[0].tokens) == 1 and \
+            units[1].category == "word" and units[1].word in ("at", "into", "onto", "on"):
+        ego = _ego_entity(r, stage)  # terse: "right at the stop sign"
+        r.mark(units[0])
+        ego.actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(), "turn_" + units[0].word, None))
+        units[0].meaning = "used"
+    if not main_verbs and len(subject) == 1 and subject[0].is_ego:  # terse: "ego right at lights", "ego left"
+        ego_np = next((p for p in phrases if p.entity is subject[0]), None)
+        after = units[ego_np.index + 1] if ego_np is not None and ego_np.index + 1 < len(units) else None
+        if after is not None and after.category == "positions" and after.meaning in ("side_left", "side_right"):
+            r.mark(after)
+            after.meaning = "used"
+            subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
+                                       "turn_" + after.tokens[-1].word, None))
+    for i in main_verbs:
+        for e in subject:
+            _modify(r, e, units[i], stage, strength, units, i)
+            if e.is_ego and by is not None and units[i].meaning == "move" and units[i].base in STEERING:
+                side = next((u.meaning[5:] for k, u in enumerate(units[:i]) if u.category == "positions"
+                             and u.meaning in ("side_left", "side_right")
+                             and any(x.word == "lane" for x in units[max(0, k - 3):k])), None)
+                if side:  # "the lane to its right is moved into by the ego"
+                    e.actions.append((stage, strength, ACTION_RANK["lane_left"], r.tick(), "lane_" + side, side))
+        _relational(units[i], units, i, subject, objects if by is not None else
+                    [p for p in phrases if p.index > i])
+    if by is not None and not verbs:  # "the road it turns into is occupied by a parked truck"
+        pass
+    crosswalk = any(u.category == "road" and u.meaning in V.CROSSWALK_OBJECTS and not _denied(units, k)
+                    for k, u in enumerate(units))
+    for e in subject:
+        if crosswalk and any(a[4] == "cross" and a[0] == stage for a in e.actions):
+            e.features.add("crosswalk")  # "crosses at the zebra crossing", "the crosswalk is crossed by"
+        if any(u.category == "road" and u.meaning == "junction" for u in units) and not e.is_ego and \
+                any(units[i].base in ("approach", "enter", "reach") for i in main_verbs):
+            e.features.add("junction_approach")  # "a vehicle approaches the intersection"
+
+    # positions, behaviours and road types: to the noun they follow, else the subject
+    for i, u in enumerate(units):
+        if u.category not in ("positions", "behaviours") or u.meaning == "used":
+            continue
+        after = [x.word for x in units[i + 1:i + 3]]
+        if u.meaning in ("ahead", "behind") and after[:1] == ["the"] and after[1:] and after[1] in (
+                "other", "first", "second", "former", "latter", "lead", "last"):
+            r.mark(u)  # "two trucks, one behind the other": their order, not their place
+            continue
+        if any(np.first <= i < np.index for np in phrases):
+            continue  # a premodifier, already given
+        if u.meaning == "ego_lane" and i > 0 and units[i - 1].word in ("into", "onto", "across"):
+            u.meaning = "into_ego_lane"  # "moves ... into the ego's lane"
+        owner = _modifier_owner(units, i, phrases, subject, main_verbs)
+        reference = _reference_after(units, i, phrases)
+        targets = owner if owner else []
+        for e in targets:
+            if e.is_ego and u.category == "positions":
+                if u.meaning == "first_in_line":
+                    e.features.add("first_in_line")
+                if reference is not None and not reference.is_ego and u.meaning in INVERSE:
+                    reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
+                r.mark(u)
+                continue
+            if reference is not None and not reference.is_ego and u.category == "positions" and \
+                    u.meaning in ("ahead", "behind", "level") and reference is not e:
+                e.relative_to = e.relative_to or reference
+                r.mark(u)
+                continue
+            _modify(r, e, u, stage, 1)
+        if not targets:
+            r.mark(u)
+    _numbers(r, units, subject)
+    surface = [np.entity for np in phrases if np.entity is not None and np.index < first_verb]
+    r.surface = surface[:1] if by is not None and surface else []
+    mentioned = [np.entity for np in phrases if np.entity is not None]
+    for e in mentioned:
+        if e in recent:
+            recent.remove(e)
+        recent.append(e)
+    return subject
+
+
+def _denied_verb(units: list[Unit], i: int) -> bool:
+    """'don't try to pass him', 'never overtakes', 'must learn how to yield': a verb said not to happen, or
+    only talked about ('does not move' is a phrase of its own)."""
+    if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
+           for u in units[max(0, i - 3):i]):
+        return True
+    for u in reversed(units[max(0, i - 3):i]):
+        if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
+                                               "failing", "refused", "refuses", "without"):
+            return True
+        if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
+                                                     "is", "are", "be", "can", "could")) \
+                and u.category != "actions":
+            return False
+    return False
+
+
+def _ego_entity(r: _Reader, stage: int) -> Entity:
+    ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None:
-        ego = Agent(name="ego", type="car", is_ego=True, action="go_straight")
-    ego = _ego_default_for_obstacles(ego, stages[0])
-    stages[0] = [ego] + stages[0]
-    if not any(stages[1:]) and len(stages) > 1:
-        stages = [stages[0]]
-    stage_models = tuple(Stage(name=_stage_name(k, len(stages)), agents=tuple(agents))
-                         for k, agents in enumerate(stages) if agents)
-    if road.junction is None and any(a.action in V.TURN_ACTIONS or a.relative_to_ego in V.JUNCTION_POSITIONS
-                                     for s in stage_models for a in s.agents):
-        road = road.model_copy(update={"junction": True})
-    name = _name(prompt)
-    candidate = Scenario.model_construct(name=name, seed=None, weather=weather, road=road, stages=stage_models)
-    problems = find_problems(candidate)
-    if problems:
-        raise LoweringError("the prompt lowers to an invalid scene: " + "; ".join(p.message for p in problems))
-    scenario = Scenario.model_validate(candidate.model_dump())
-    unknown = [t for i, t in enumerate(text.tokens) if i not in text.used and t not in STOPWORDS
-               and t not in COUNTS and not t.isdigit()]
-    unknown = list(dict.fromkeys(unknown))
-    said_nothing = (kind is None and len(list(scenario.agents())) == 1 and scenario.road == RoadSpec()
-                    and scenario.weather is None and scenario.ego.action == "go_straight"
-                    and scenario.ego.behavior == V.DEFAULT_BEHAVIOR)
-    if said_nothing:
-        raise LoweringError("nothing in the prompt could be read as a scene"
-                            + (f"; unknown words: {', '.join(unknown)}" if unknown else "")
-                            + ". Name agents (car, pedestrian, bus...), what they do (turns left, crosses, stops...) "
-                              "and where (in front, from the opposite direction...), or write the scene in the "
-                              "scenario language (.tsg)")
-    return Lowered(scenario, unknown, kind)
+        ego = Entity(len(r.entities), "car", True, stage, head="ego")
+        r.entities.append(ego)
+    return ego
+
+
+def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Entity | None:
+    """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
+    ('aggressive cut-in from right lane ahead' is a car's)."""
+    placed = any(u.category == "positions" and u.meaning not in ("ego_lane", "into_ego_lane", "used", "target_lane",
+                                                                 "first_in_line")
+                 for u in units[verbs[0]:])
+    cutting = any(units[i].meaning in ("cut_in", "block") for i in verbs)
+    named = any(units[i].base in ("cut in", "cut off", "cut across", "cut") for i in verbs)  # "a cut-in", a noun
+    if placed and cutting and named:
+        entity = Entity(len(r.entities), "car", False, stage, head="car")
+        r.entities.append(entity)
+        r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
+        return entity
+    if cutting:
+        return None  # "Double cut-in on a motorway ...": the name of the case, not the ego's doing
+    return _ego_entity(r, stage)
+
+
+def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
+    """One member of the last counted group, which the text now describes on its own."""
+    for group in reversed(r.entities):
+        if group.is_ego or group.parent is not None:
+            continue
+        if group.count == 1 and any(m.parent is group for m in r.entities) and not group.label:
+            group.label = "#rest"  # "one from the left and one from the right": the second is what is left
+            return group
+        if group.count < 2:
+            continue
+        member = Entity(len(r.entities), group.type, False, group.stage, head=group.head, parent=group,
+                        features=set(group.features), actions=list(group.actions), behavior=group.behavior)
+        group.count -= 1
+        group.group_open = max(0, group.group_open - 1)
+        r.entities.append(member)
+        return member
+    return None
+
+
+def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> list[NounPhrase]:
+    """'VUT is a bus', 'the ego, a city bus,', 'SV1 is an oncoming truck, SV2 an oncoming car': the second noun
+    says what the first is; it is no new agent."""
+    out: list[NounPhrase] = []
+    for np in phrases:
+        prev = out[-1] if out else None
+        if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
+                and not prev.plural and not np.plural:
+            between = units[prev.index + 1: np.first]
+            copula = any(u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as") for u in between)
+            driver = prev.entity.head in DRIVERS and [u.word for u in between] in (["in"], ["driving"], ["on"])
+            if driver:  # "a learner driver in a little hatchback": the hatchback
+                prev.entity.type = np.entity.type
+                if np.entity in r.entities:
+                    r.entities.remove(np.entity)
+                continue
+            if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
+                   u.category == "comma" for u in between) and (copula or (between and prev.entity.is_ego)
+                                                               or (prev.entity.label and not between)):
+                a, b = prev.entity, np.entity
+                if a.is_ego:
+                    if b.type in V.EGO_TYPES:
+                        a.type = b.type
+                elif a.label or a.head in ("car", "vehicle", "sv", "pov", "target"):
+                    a.type = b.type
+                    a.features |= b.features
+                    a.actions += b.actions
+                    a.behavior = a.behavior or b.behavior
+                if b in r.entities:
+                    r.entities.remove(b)
+                continue
+        out.append(np)
+    return out
+
+
+def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
+    """A noun after 'in front of', 'behind', 'by', 'including': it places another noun, it is not a subject."""
+    k = np.first - 1
+    if k < 0:
+        return False
+    u = units[k]
+    if u.category == "positions" and u.meaning in ("ahead", "behind", "level", "side_left", "side_right",
+                                                    "front_left", "front_right", "back_left", "back_right"):
+        return True
+    return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
+                                               "towards", "toward", "for", "with", "besides", "from", "near")
+
+
+def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
+    """'it' as a subject is the last subject; as an object ('in front of it') the last thing named that is
+    not the subject, usually the ego. 'she', 'him' name people."""
+    if units[i].word in ("she", "her", "he", "him"):
+        people = [e for e in recent if e.type in V.VULNERABLE_TYPES]
+        return people[-1] if people else None
+    as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
+                           (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind")))
+    if not as_object:
+        if previous_subject:
+            return previous_subject[0]
+        return recent[-1] if recent else None
+    owner = [np.entity for np in phrases if np.index < i and np.entity is not None]  # whom "behind it" places
+    subject = owner[-1] if owner else (previous_subject or [None])[0]
+    for e in reversed(recent):
+        if e is not subject:
+            return e
+    return None
+
+
+def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
+    """A verb right after a noun, with a finite verb after it, modifies that noun: 'a cyclist riding alongside
+    swerves', 'in front of a truck stopped on the shoulder'."""
+    k = i - 1
+    light = False  # "other cars performing lane changes": the noun's doing, not the sentence's
+    while k >= 0 and (units[k].category in ("behaviours", "positions") or (
+            units[k].category == "word" and units[k].word in ("that", "which", "who", "performing", "making",
+                                                               "doing", "executing", "attempting"))):
+        light = light or units[k].word in ("performing", "making", "doing", "executing", "attempting")
+        k -= 1
+    if k < 0:
+        return None
+    np = next((p for p in phrases if p.index == k), None)
+    if np is None:
+        return None
+    aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
+    later = any(v > i for v in verbs)
+    word = units[i].tokens[0].word
+    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood") or light
+    if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
+        return np
+    return None
+
+
+def _modifier_owner(units, i, phrases, subject, main_verbs) -> list[Entity]:
+    before = [p for p in phrases if p.index < i and p.entity is not None]
+    verb_before = [v for v in main_verbs if v < i]
+    if not verb_before:
+        if before:
+            last = before[-1]
+            copula = any(u.category == "word" and u.word in ("is", "are", "was", "were", "be")
+                         for u in units[last.index + 1:i])
+            if last.entity in subject and copula:
+                return subject  # "both the truck and the pedestrian are in the front right"
+            return last.group or [last.entity]
+        return subject
+    last_verb = verb_before[-1]
+    objects_between = [p for p in before if p.index > last_verb]
+    if objects_between:
+        last = objects_between[-1]
+        if last.introduced and not last.entity.is_ego:
+            return [last.entity]
+    return subject
+
+
+def _reference_after(units, i, phrases) -> Entity | None:
+    np = next((p for p in phrases if p.first in (i + 1, i + 2) or p.index == i + 1), None)
+    if np is None:
+        return None
+    between = units[i + 1: np.first] + units[np.first:np.index]
+    if all((u.category == "word" and (u.word in ("of", "the", "a", "an", "to", "that", "this")
+                                      or u.word not in lexicon().function_words))
+           or u.category in ("actions", "behaviours", "numbers") for u in between):
+        return np.entity  # "from behind a parked bus"
+    return None
+
+
+def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
+    """Places implied by verbs between an agent and the ego: following, leading, overtaking, hiding."""
+    base = verb.tokens[0].base
+    obj = next((p for p in phrases if p.entity is not None and p.first - i <= 2), None)
+    if base in HIDING and obj is not None:
+        for t in obj.group or [obj.entity]:
+            if not t.is_ego and subject and not subject[0].is_ego:
+                t.relative_to = subject[0]  # "a parked van hides a pedestrian": the pedestrian is at the van
+        return
+    if obj is None or obj.entity is None:
+        if base in OVERTAKING and base == "overtake":
+            for e in subject:
+                if not e.is_ego:
+                    e.features.add("overtaking")
+        return
+    targets = obj.group or [obj.entity]
+    for e in subject:
+        for t in targets:
+            if t.is_ego and not e.is_ego:
+                if base in FOLLOWING:
+                    e.features.add("behind")
+                elif base in LEADING:
+                    e.features.add("ahead")
+                elif base in OVERTAKING:
+                    e.features.add("overtaking")
+            elif e.is_ego and not t.is_ego:
+                if base in FOLLOWING or base in OVERTAKING:
+                    t.features.add("ahead")
+                elif base in LEADING:
+                    t.features.add("behind")
+
+
+def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
+    """Triggers, speeds and gaps said in numbers: 'within 15 m', 'after 2 seconds', 'at 50 km/h', '10 m ahead'."""
+    for k, u in enumerate(units):
+        if u.category != "number" or not subject:
+            continue
+        value = read_number(u.word)
+        if value is None or value >= TOO_LARGE:
+            continue
+        prev = units[k - 1] if k else None
+        nxt = units[k + 1] if k + 1 < len(units) else None
+        unit_word = nxt.tokens[0].word if nxt is not None else ""
+        targets = [e for e in subject if not e.is_ego] or subject
+        if prev is not None and prev.word == "within" and unit_word in ("m", "meters", "meter", "metres"):
+            low, high = V.TRIGGER_DISTANCE_RANGE_M
+            if low <= value <= high:
+                for e in targets:
+                    e.trigger = Trigger(within_m=value)
+                r.mark(u), r.mark(prev), r.mark(nxt)
+        elif prev is not None and prev.word == "after" and unit_word in ("s", "seconds", "second", "sec", "secs"):
+            if value <= V.TRIGGER_TIME_RANGE_S[1]:
+                for e in targets:
+                    e.trigger = Trigger(after_s=value)
+                r.mark(u), r.mark(prev), r.mark(nxt)
+        elif unit_word in ("kmh", "mph") and not any(t.word in LIMIT_WORDS for t in r.tokens[max(0, u.start - 4):
+                                                                                            u.start + 5]):
+            speed = Speed(value=value, unit="km/h" if unit_word == "kmh" else "mph")
+            if speed.mps <= V.SPEED_RANGE_MPS[1]:
+                for e in subject:
+                    e.speed = speed
+            else:
+                r.notes.append(f"left out: a speed of {u.word} {unit_word} is above what the language allows")
+            r.mark(u), r.mark(nxt)
+        elif unit_word in ("m", "meters", "meter", "metres") and V.GAP_RANGE_M[0] <= value <= V.GAP_RANGE_M[1]:
+            for e in targets:
+                if not e.is_ego:
+                    e.gap_m = value
+            r.mark(u), r.mark(nxt)
+
+
+# -- composing the scene ------------------------------------------------------------------------------------
+
+def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None]:
+    """(action class, direction) of the strongest, most specific predicate (of one stage, if given)."""
+    chosen = [a for a in e.actions if (stage is None or a[0] == stage) and a[2] > 0 and not (
+        e.is_ego and a[4] in ("block", "cross", "walk"))]
+    if not chosen:
+        return None, None
+    best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
+    if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
+        return "block", None  # "swerves into its path and stops"
+    return best[4], best[5]
+
+
+def _intro_action(e: Entity) -> tuple[str | None, str | None]:
+    action = _action(e, e.stage)
+    if action[0] is None or not any(a[1] == 2 for a in e.actions if a[0] == e.stage):
+        later = _action(e)
+        if later[0] is not None and (action[0] is None or any(a[1] == 2 for a in e.actions)):
+            return later
+    return action
+
+
+def _side(e: Entity) -> str | None:
+    return _side_of(e.features)
+
+
+def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool,
+              target_side: str | None = None) -> tuple[str, bool]:
+    """(position, oncoming) from the features, once the whole text is read: side x ahead/behind x which road,
+    against the junction context and the lane the ego moves into (`target_side`)."""
+    f = set(e.features)
+    crossing = action == "cross" and e.type in V.VULNERABLE_TYPES
+    person = e.type == "pedestrian" or crossing
+    walking = e.type == "pedestrian" and not crossing and (
+        action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
+    if "target_lane" in f and target_side and not _side(e):
+        f.add(f"side_{target_side}")
+    if e.road_type == "shoulder" and not _side_of(f):
+        f.add("side_right")  # the shoulder is at the road's right edge, ahead unless said otherwise
+        if not f & {"behind", "level", "overtaking"}:
+            f.add("ahead")
+    side = _side_of(f)
+    for corner in ("front_left", "front_right", "back_left", "back_right"):
+        if corner in f:
+            return corner, False
+    if "road_straight" in f and not person:  # where it comes from wins over where it heads
+        return ("road_of_straight", False) if junction else ("front_left", True)
+    for s in SIDES:
+        if f"road_{s}" in f:
+            return f"road_of_{s}_turn", False
+    if "destination" in f:
+        return "at_the_destination", False
+    if "cross_road" in f and not person:
+        return f"road_of_{side or 'left'}_turn", False
+    if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
+        return "near_the_crosswalk", False
+    from_side = next((s for s in SIDES if f"from_{s}" in f), None)
+    lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
+    if from_side and not person and junction and not lane_move:
+        return f"road_of_{from_side}_turn", False
+    bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
+    if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level", "overtaking"} \
+            and e.type not in V.TWO_WHEELER_TYPES \
+            and e.road_type != "shoulder" and "ego_lane" not in f:
+        return f"road_of_{bare}_turn", False
+    if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
+        return "road_of_left_turn", False
+    ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
+    if "ego_lane" in f and not lane_move and "into_ego_lane" not in f:
+        side = None
+    if side is None and "overtaking" in f:
+        side = "left"
+    if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f):
+        side = side or ("right" if e.type == "cyclist" else "left")
+        ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
+    if side is None and "level" in f and not ahead and not behind:
+        side = "right" if e.type in V.VULNERABLE_TYPES else "left"
+    if person and crossing and side is None and has_crosswalk and not behind:
+        return "near_the_crosswalk", False
+    if bare and action == "stop" and not person and not f & {"ahead", "behind", "level"}:
+        ahead = True  # "a bus parked on the right": met ahead
+    if walking:
+        if has_crosswalk and side is None and not f & {"ahead", "behind"}:
+            return "near_the_crosswalk", False  # standing by the crossing
+        side = side or "right"
+    if side is not None:
+        if person and crossing and not behind:
+            return f"front_{side}", False
+        if ahead:
+            return f"front_{side}", False
+        if behind:
+            return f"back_{side}", False
+        return side, False
+    if behind:
+        return "back", False
+    return "front", False
+
+
+def _side_of(f: set) -> str | None:
+    for side in SIDES:
+        if f"side_{side}" in f or f"front_{side}" in f or f"back_{side}" in f or f"from_{side}" in f:
+            return side
+    return None
+
+
+def _final_action(e: Entity, action: str | None, direction: str | None, position: str) -> str:
+    side_now = "left" if "left" in position else "right" if "right" in position else None
+    if action is None:
+        if e.type == "pedestrian":
+            return "on_the_sidewalk" if "on_sidewalk" in e.features or e.road_type == "sidewalk" \
+                and "crosswalk" not in e.features else "cross_the_road"
+        return "go_straight"
+    if action in ("turn_left", "turn_right"):
+        return action
+    if action in ("turn", "u_turn"):
+        return f"turn_{direction or 'left'}"
+    if action in ("lane_left", "lane_right"):
+        return f"change_lane_to_{action[5:]}"
+    if action == "lane_change":
+        if direction:
+            return f"change_lane_to_{direction}"
+        return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
+    if action == "cut_in":
+        if e.is_ego:
+            return f"change_lane_to_{direction}" if direction else "go_straight"
+        if side_now is None:
+            return "block_the_ego" if position == "front" and e.type != "pedestrian" else "go_straight"
+        return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
+    if action == "block":
+        return "block_the_ego"
+    if action == "stop":
+        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type == "sidewalk"):
+            return "on_the_sidewalk"  # standing on the pavement
+        return "stop"
+    if action == "cross":
+        return "cross_the_road" if e.type in V.VULNERABLE_TYPES else "go_straight"
+    if action == "walk":
+        if e.type != "pedestrian":
+            return "go_straight"
+        return "cross_the_road" if "crosswalk" in e.features else "on_the_sidewalk"
+    return "go_straight"
 
 
 class _Namer:
@@ -282,247 +1566,220 @@ def _stage_name(k: int, total: int) -> str:
 
 def _name(prompt: str) -> str:
     words = re.findall(r"[A-Za-z0-9][A-Za-z0-9'-]*", prompt)
-    return (" ".join(words[:10]) or "scene").lower()
+    return (" ".join(words[:10]) or "scene").lower().replace('"', "")
 
 
-def _segments(text: _Text) -> list[tuple[int, int]]:
-    breaks = [i for i, n, _ in text.find(STAGE_BREAKS)] + [len(text.tokens)]
-    out, start = [], 0
-    for b in breaks:
-        if b > start:
-            out.append((start, b))
-        start = b + 1
-    return out or [(0, len(text.tokens))]
+def lower(prompt: str, seed: int = 0) -> Lowered:
+    """Lower an English prompt into a Scenario; LoweringError when nothing in it can be read as a scene."""
+    tokens = tokenize(prompt)
+    if not tokens:
+        raise LoweringError("the prompt is empty")
+    r = _Reader(tokens, _units(tokens))
+    road = _road(r)
+    weather = _weather(r)
+    asked = _asked_kind(tokens)
+    skip: set[int] = set(_title(prompt, tokens))
+    if asked is not None:
+        skip |= set(asked[1])
+        r.used.update(asked[1])
+    clauses = _clauses(r, skip)
+    previous: list[Entity] = []
+    recent: list[Entity] = []
+    pending: list[Entity] = []
+    for k, clause in enumerate(clauses):
+        if clause.link in RELATIVES and recent:
+            clause.antecedent = recent[-1]
+        before = len(r.entities)
+        subject = _read_clause(r, clause, previous, recent, pending)
+        if clause.link == "where" and k > 0 and any(u.category == "actions" and u.meaning.startswith("lane")
+                                                    for u in clauses[k - 1].units):
+            for e in r.entities[before:]:  # "the ego changes into the left lane, where a van drives ahead"
+                if not e.is_ego:
+                    e.features.add("target_lane")
+        if subject:
+            previous = subject
+        verbless = not _has_verb(clause.units)
+        pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
+            else []
+    others = [e for e in r.entities if not e.is_ego and e.count > 0]
+    kind = asked[0] if asked is not None and not others else None
+    if asked is not None and others:
+        r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
+                       "no template used")
+    junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals))
+    turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities)
+    junction_features = any(f in e.features for e in r.entities for f in ("road_left", "road_right",
+                                                                           "destination", "cross_road"))
+    junction = road.junction is not False and (junction_words or turns or junction_features or
+                                               any("road_straight" in e.features for e in r.entities) and turns)
+    has_crosswalk = any(w in V.CROSSWALK_OBJECTS for w in road.required_objects)
+    stages, oncoming = _compose(r, junction, has_crosswalk)
+    ego = stages[0][0]
+    if kind is not None:
+        template = _template(kind, seed)
+        road = _merge_road(template.road, road)
+        if not any(a.action != "go_straight" for a in [ego]):
+            ego = template.ego if ego.behavior == V.DEFAULT_BEHAVIOR else ego
+        stages[0] = [ego] + [a for a in template.stages[0].agents if not a.is_ego] + stages[0][1:]
+        r.notes.append(f"the scene kind '{kind}' was asked for: its agents come from templates/kinds/{kind}.tsg")
+    stage_models = tuple(Stage(name=_stage_name(k, len(stages)), agents=tuple(agents))
+                         for k, agents in enumerate(stages) if agents)
+    draft = Scenario.model_construct(name=_name(prompt), seed=None, weather=weather, road=road,
+                                     stages=stage_models, comments={})
+    inferred = infer_plan(draft, frozenset(oncoming))
+    notes = r.notes + inferred.notes
+    candidate = inferred.scenario
+    problems = find_problems(candidate)
+    if problems:
+        raise LoweringError("the prompt lowers to an invalid scene: " + "; ".join(p.message for p in problems))
+    comments = {"scenario": Comment(leading=tuple(notes))} if notes else {}
+    scenario = Scenario.model_validate(candidate.model_dump() | {"comments": comments})
+    unknown = _unknown(r)
+    said_nothing = (kind is None and not r.entities and scenario.road == RoadSpec() and scenario.weather is None)
+    if said_nothing:
+        raise LoweringError("nothing in the prompt could be read as a scene"
+                            + (f"; unknown words: {', '.join(unknown)}" if unknown else "")
+                            + ". Name agents (car, pedestrian, bus...), what they do (turns left, crosses, stops...) "
+                              "and where (in front, from the opposite direction...), or write the scene in the "
+                              "scenario language (.tsg)")
+    return Lowered(scenario, unknown, kind, notes)
 
 
-def _road(text: _Text) -> RoadSpec:
-    fields: dict = {"required_signals": [], "without_signals": [], "required_objects": [], "without_objects": []}
-    tokens = text.tokens
-    negated = False
-    features = {i: (n, meaning) for i, n, meaning in text.find(FEATURES)}
-    i = 0
-    while i < len(tokens):
-        if tokens[i] in NEGATIONS:
-            negated = True
-            text.used.add(i)
-        elif i in features:
-            n, meaning = features[i]
-            word = meaning.lstrip("!")
-            group = "signals" if word in V.SIGNALS else "objects"
-            forbidden = negated != meaning.startswith("!")
-            target = fields[f"{'without' if forbidden else 'required'}_{group}"]
-            if word not in target:
-                target.append(word)
-            i += n
+def _title(prompt: str, tokens: list[Token]) -> range:
+    """'Cut-in: a target vehicle ...': a short title before a colon names the case, not its agents."""
+    m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
+    if m is None or "\n" in prompt.strip():  # notes written a line an item have their titles marked already
+        return range(0)
+    n = len(tokenize(m.group(1)))
+    if n > 12 or n >= len(tokens):
+        return range(0)
+    return range(n)
+
+
+def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list[Agent]], set[str]]:
+    names = _Namer()
+    ego_entity = next((e for e in r.entities if e.is_ego), None)
+    stage_count = 1 + max([e.stage for e in r.entities] + [a[0] for e in r.entities for a in e.actions] + [0])
+    stages: list[list[Agent]] = [[] for _ in range(stage_count)]
+    ego_action, _ = _action(ego_entity, 0) if ego_entity else (None, None)
+    ego_type = ego_entity.type if ego_entity else "car"
+    ego = Agent(name="ego", type=ego_type if ego_type in V.EGO_TYPES else "car", is_ego=True,
+                action=_ego_action(ego_entity, ego_action, 0),
+                behavior=(ego_entity.behavior if ego_entity and ego_entity.behavior else V.DEFAULT_BEHAVIOR),
+                speed=ego_entity.speed if ego_entity else None)
+    stages[0].append(ego)
+    if ego_entity is not None:
+        for k in range(1, stage_count):
+            if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
+                action = _ego_action(ego_entity, _action(ego_entity, k)[0], k)
+                if language_allows_later_ego():
+                    stages[k].append(Agent(name="ego", type=ego.type, is_ego=True, action=action))
+                else:
+                    r.notes.append(f"left out: the ego's later action ({action}): the language cannot yet say "
+                                   "that the ego acts in a later stage")
+    positions: dict[int, str] = {}
+    oncoming: set[str] = set()
+    resolved: dict[int, tuple[str, str]] = {}
+    others = [e for e in r.entities if not e.is_ego and e.count > 0]
+    target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
+    if ego_entity is not None and "first_in_line" in ego_entity.features:
+        for e in others:  # "three cars including the ego wait, the ego is first": the others queue behind it
+            group = e.parent or e
+            if group.includes_ego and not e.features & {"ahead", "behind"}:
+                e.features.add("behind")
+    for e in others:
+        action, direction = _intro_action(e)
+        if "into_ego_lane" in e.features and e.type == "pedestrian":
+            action = "cross"  # "a child runs into the ego's path"
+        if e.type == "pedestrian" and action in (None, "move") and "on_sidewalk" not in e.features:
+            action = "cross"  # people on foot in the road cross it
+        if "into_ego_lane" in e.features and action in ("move", "lane_change"):
+            action = "cut_in"  # "moves from the left lane into the ego's lane"
+        if action == "cut_in" and direction and "into_ego_lane" not in e.features:
+            action = "lane_" + direction  # "swings into the right lane"
+        position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
+        resolved[e.key] = (action, direction)
+        positions[e.key] = position
+        if is_oncoming:
+            oncoming.add(e.key)
+    for e in others:  # "in front of a truck": at the truck's place, unless the text placed it itself
+        t = e.relative_to
+        if t is None or t.key not in positions:
             continue
-        elif tokens[i] not in ("and", "or", "a", "an", "any", "nor", "sign", "signs"):
-            negated = False
-        i += 1
-    for limit in _speed_limits(text):
-        word = f"speed_{limit}"
-        if V.is_object(word) and word not in fields["required_objects"]:
-            fields["required_objects"].append(word)
-    lanes = _lanes(text)
-    if lanes is not None:
-        fields["lanes"] = lanes
-    junction = _junction(text)
-    if junction is not None:
-        fields["junction"] = junction
-    return RoadSpec(**{k: tuple(v) if isinstance(v, list) else v for k, v in fields.items()})
+        if not _placed(e):
+            positions[e.key] = positions[t.key]
+        elif not _placed(t):  # ... and the truck, placed nowhere itself, is where the text put the other
+            positions[t.key] = positions[e.key]
+    oncoming_names: set[str] = set()
+    for e in others:
+        action, direction = resolved[e.key]
+        position = positions[e.key]
+        final = _final_action(e, action, direction, position)
+        road_type = e.road_type or V.default_road_type(e.type)
+        if road_type not in V.ROAD_TYPES_BY_TYPE[e.type]:
+            road_type = V.default_road_type(e.type)
+        if final == "on_the_sidewalk":
+            road_type = "sidewalk"
+        behavior = e.behavior or V.DEFAULT_BEHAVIOR
+        first_name = None
+        for n in range(e.count):
+            if "both_sides" in e.features:  # "cars cutting in from different directions": one on each side
+                side = SIDES[n % 2]
+                member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"})
+                                | {f"side_{side}", "from_lane", "ahead"}, road_type=e.road_type)
+                position, _ = _position(member, action, junction, has_crosswalk, target_side)
+                final = _final_action(member, action, direction, position)
+                first_name = None
+            name = names(e.type)
+            stages[e.stage].append(Agent(name=name, type=e.type, action=final, behavior=behavior,
+                                         relative_to_ego=position, road_type=road_type, behind=first_name and
+                                         previous_name, trigger=e.trigger, speed=e.speed,
+                                         gap_m=e.gap_m if n == 0 else None))
+            first_name = first_name or name
+            previous_name = name
+            if e.key in oncoming:
+                oncoming_names.add(name)
+    return [s for k, s in enumerate(stages) if s or k == 0], oncoming_names
 
 
-def _speed_limits(text: _Text):
-    tokens, out = text.tokens, []
-    for i, t in enumerate(tokens):
-        if not t.isdigit():
-            continue
-        window = tokens[i + 1: i + 5]
-        before = tokens[max(0, i - 3): i]
-        if ("limit" in before or "speed" in before or ("kmh" in window[:1] and {"limit", "sign", "zone"} & set(window))
-                or (window[:1] == ["zone"])):
-            text.used.update(j for j in range(max(0, i - 3), min(len(tokens), i + 5))
-                             if tokens[j] in ("speed", "limit", "sign", "kmh", "zone", "of") or j == i)
-            out.append(int(float(t)))
-    return out
+def _placed(e: Entity) -> bool:
+    return bool(e.features & {"side_left", "side_right", "front_left", "front_right", "back_left", "back_right",
+                              "road_straight", "road_left", "road_right", "destination", "crosswalk"})
 
 
-def _lanes(text: _Text) -> int | None:
-    tokens = text.tokens
-    for i, t in enumerate(tokens):
-        if t in ("lane", "lanes") and i > 0:
-            n = NUMBER_WORDS.get(tokens[i - 1]) or (int(tokens[i - 1]) if tokens[i - 1].isdigit() else None)
-            if n is not None and 1 <= n <= 6:
-                text.used.update((i - 1, i))
-                return n
-        if t in ("highway", "motorway", "freeway", "expressway"):
-            text.used.add(i)
-            return 2
-    return None
+def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
+    if e is None or action is None:
+        return "go_straight"
+    direction = next((a[5] for a in sorted(e.actions, key=lambda a: -a[1]) if a[0] == stage and a[4] == action),
+                     None)
+    if action in ("turn_left", "turn_right", "stop"):
+        return action
+    if action in ("turn", "u_turn"):
+        return f"turn_{direction or 'left'}"
+    if action in ("lane_left", "lane_right"):
+        return f"change_lane_to_{action[5:]}"
+    if action in ("lane_change", "cut_in"):
+        return f"change_lane_to_{direction or 'left'}"  # "pulling out to pass": into the lane on the left
+    return "go_straight"
 
 
-def _junction(text: _Text) -> bool | None:
-    tokens = text.tokens
-    straight = [i for i, t in enumerate(tokens[:-1]) if t == "straight" and tokens[i + 1] in ("road", "street")]
-    text.used.update(j for i in straight for j in (i, i + 1))
-    for i, _, _ in text.find(JUNCTION):
-        if any(t in NEGATIONS for t in tokens[max(0, i - 2): i]):
-            return False
-        return True
-    for i, t in enumerate(tokens):
-        if t in ("highway", "motorway", "freeway", "expressway"):
-            return False
-        if i in straight:
-            return False
-    return None
-
-
-def _weather(text: _Text) -> Weather | None:
-    conditions = [c for _, _, c in text.find(CONDITIONS)]
-    times = [t for _, _, t in text.find(TIMES)]
-    if not conditions and not times:
-        return None
-    return Weather(condition=conditions[0] if conditions else V.DEFAULT_CONDITION,
-                   time=times[0] if times else V.DEFAULT_TIME)
-
-
-def _mentions(text: _Text, start: int, stop: int, skip: set[int]) -> list[_Mention]:
-    tokens = text.tokens
+def _unknown(r: _Reader) -> list[str]:
+    lex = lexicon()
     out = []
-    egos = text.find(EGO_WORDS, start, stop)
-    ego_spans = set(skip)
-    for i, n, _ in egos:
-        span_end = i + n
-        ego_type = "car"
-        if span_end < stop and tokens[span_end] in EGO_NOUNS:
-            ego_type = EGO_NOUNS[tokens[span_end]]
-            span_end += 1
-            text.used.add(span_end - 1)
-        ego_spans.update(range(i, span_end))
-        referenced = i > 0 and tokens[i - 1] in ("the",) and i > 1 and tokens[i - 2] in (
-            "of", "behind", "block", "blocks", "blocking", "towards", "toward", "beside", "than", "before", "past",
-            "overtake", "overtakes", "to", "for")
-        out.append(_Mention(i, span_end, ego_type, 1, True) if not referenced else None)
-    out = [m for m in out if m is not None]
-    for i, n, agent_type in _find_skipping(text, AGENT_WORDS, start, stop, ego_spans):
-        adjectives = i  # up to two qualifying words before the noun: "an aggressive car", "oncoming traffic"
-        while adjectives > start and i - adjectives < 2 and tokens[adjectives - 1] not in STOPWORDS and \
-                tokens[adjectives - 1] not in COUNTS and not tokens[adjectives - 1].isdigit() and \
-                adjectives - 1 not in skip:
-            adjectives -= 1
-        j = adjectives - 1
-        while j >= start and tokens[j] in ("of", "the"):
-            j -= 1
-        count = 1
-        counted = j >= start and (tokens[j] in COUNTS or tokens[j].isdigit())
-        if counted:
-            count = COUNTS.get(tokens[j]) or int(float(tokens[j]))
-            if j > start and tokens[j - 1] == "than":  # more than ten
-                count += 1
-                text.used.update(k for k in (j - 2, j - 1) if k >= start and tokens[k] in ("more", "than"))
-            text.used.add(j)
-        if tokens[i + n - 1].endswith("s") and not counted and tokens[i + n - 1] not in ("bus", "police"):
-            count = 2  # a bare plural: some
-        if tokens[i + n: i + n + 3] == ["including", "the", "ego"]:
-            count -= 1
-            text.used.update(range(i + n, i + n + 3))
-        out.append(_Mention(i, i + n, agent_type, max(0, min(count, MAX_AGENTS_PER_MENTION)), False,
-                            adjectives=adjectives))
-    return sorted(out, key=lambda m: m.start)
-
-
-def _find_skipping(text: _Text, table, start: int, stop: int, skip: set[int]):
-    return [(i, n, m) for i, n, m in text.find(table, start, stop) if i not in skip]
-
-
-def _first(text: _Text, table, a: int, b: int):
-    found = text.find(table, a, b)
-    return found[0][2] if found else None
-
-
-def _ego(text: _Text, m: _Mention, clause: tuple[int, int]) -> Agent:
-    a, b = clause
-    action = _first(text, ACTIONS, a, b)
-    if action in (None, "cut_in", "cross_the_road", "on_the_sidewalk", "block_the_ego"):
-        action = "go_straight"
-    behavior = _first(text, BEHAVIORS, a, b) or V.DEFAULT_BEHAVIOR
-    return Agent(name="ego", type=m.type if m.type in V.EGO_TYPES else "car", is_ego=True, action=action,
-                 behavior=behavior)
-
-
-def _agents(text: _Text, m: _Mention, clause: tuple[int, int], names: _Namer, junction_context: bool,
-            road: RoadSpec) -> list[Agent]:
-    a, b = clause
-    tokens = text.tokens
-    action = _first(text, ACTIONS, a, b)
-    position = _first(text, POSITIONS, m.adjectives, m.start) or _first(text, POSITIONS, a, b)
-    road_type = _first(text, ROAD_TYPES, a, b)
-    behavior = _first(text, BEHAVIORS, m.adjectives, m.start) or _first(text, BEHAVIORS, a, b) or \
-        V.DEFAULT_BEHAVIOR
-    if m.type == "pedestrian" and action in (None, "go_straight"):
-        action = "on_the_sidewalk" if road_type == "sidewalk" or "sidewalk" in tokens[a:b] else "cross_the_road"
-    if action is None:
-        action = "go_straight"
-    if action in ("on_the_sidewalk", "cross_the_road") and m.type != "pedestrian":
-        action = "go_straight" if m.type != "cyclist" or action == "on_the_sidewalk" else action
-    if position in ("from_left", "from_right"):
-        side = position[5:]
-        position = f"road_of_{side}_turn" if junction_context else side
-    if action == "cut_in":
-        position = position if position in ("left", "right", "front_left", "front_right") else "front_left"
-        action = "change_lane_to_right" if "left" in position else "change_lane_to_left"
-    if action == "cross_the_road" and m.type == "pedestrian" and (
-            "crosswalk" in road.required_objects or position is None) and position not in ("left", "right"):
-        if "crosswalk" in road.required_objects or any(t in ("crosswalk", "crossing") for t in tokens):
-            position = "near_the_crosswalk"
-    if position is None:
-        position = "front_right" if m.type == "pedestrian" else "front"
-    if tuple(tokens[max(a, b - 4):b]) in (("in", "front", "of", "a"), ("in", "front", "of", "the")) or \
-            tuple(tokens[max(a, b - 2):b]) in (("behind", "a"), ("behind", "the"), ("beside", "a"), ("beside", "the")):
-        position = "same_as_next"  # "crosses in front of a truck": where that truck is
-    if road_type is None:
-        road_type = V.default_road_type(m.type)
-    if road_type not in V.ROAD_TYPES_BY_TYPE[m.type]:
-        road_type = V.default_road_type(m.type)
-    trigger = _trigger(text, a, b)
-    speed = _speed(text, a, b)
-    out: list[Agent] = []
-    for _ in range(m.count):
-        out.append(Agent(name=names(m.type), type=m.type, action=action, behavior=behavior,
-                         relative_to_ego=position, road_type=road_type,
-                         behind=out[-1].name if out else None, trigger=trigger, speed=speed))
-    return out
-
-
-def _trigger(text: _Text, a: int, b: int) -> Trigger | None:
-    tokens, within, after = text.tokens, None, None
-    for i in range(a, b):
-        if tokens[i] == "within" and i + 1 < b and tokens[i + 1].isdigit():
-            within = float(tokens[i + 1])
-            text.used.update((i, i + 1))
-        if tokens[i] == "after" and i + 1 < b and tokens[i + 1].isdigit():
-            after = float(tokens[i + 1])
-            text.used.update((i, i + 1))
-    return Trigger(after_s=after, within_m=within) if within or after else None
-
-
-def _speed(text: _Text, a: int, b: int) -> Speed | None:
-    tokens = text.tokens
-    for i in range(a, b - 1):
-        if tokens[i].isdigit() and tokens[i + 1] in ("kmh", "mph"):
-            text.used.update((i, i + 1))
-            return Speed(value=float(tokens[i]), unit="km/h" if tokens[i + 1] == "kmh" else "mph")
-    return None
-
-
-def _ego_default_for_obstacles(ego: Agent, first_stage: list[Agent]) -> Agent:
-    """The ego cannot drive through a car that stops in its lane ahead: then it stops behind it."""
-    stopper = next((a for a in first_stage if a.relative_to_ego == "front" and a.action == "stop"), None)
-    if stopper is not None and ego.action == "go_straight":
-        return ego.model_copy(update={"action": "stop", "trigger": Trigger(within_m=15.0, of=stopper.name)})
-    return ego
+    for t in r.tokens:
+        if t.index in r.used or t.word == "," or read_number(t.word) is not None:
+            continue
+        if t.word in lex.function_words or t.base in lex.vocabulary or t.word in lex.vocabulary:
+            continue
+        near = lex.nearest(t.word)
+        out.append(f"{t.word} (did you mean {near}?)" if near else t.word)
+    return list(dict.fromkeys(out))
 
 
 def _template(kind: str, seed: int) -> Scenario:
+    from ttsgc.language import parse
+    from ttsgc.resources import resource_dir
+
     folder = resource_dir("templates") / "kinds"
     variants = sorted(folder.glob(f"{kind}.tsg")) + sorted(folder.glob(f"{kind}.*.tsg"))
     if not variants:
@@ -538,4 +1795,4 @@ def _merge_road(template: RoadSpec, said: RoadSpec) -> RoadSpec:
     for key, value in said.model_dump().items():
         if value != getattr(default, key):
             merged[key] = value
-    return RoadSpec(**merged)
+    return RoadSpec.model_construct(**merged)

@@ -1,0 +1,292 @@
+"""The offline lowering's words, read from data files (ttsgc/lowering/lexicon/*.txt), and the tokenizer.
+
+Why data: the words engineers use grow faster than rules, and a word added to a file is a word the parser
+knows, with no code change. The reader turns text into tokens carrying their base form ("turning" ->
+"turn", "lorries" -> "lorry", "signalised" -> "signalized"), and finds the longest lexicon phrase at each
+place. Numbers are read through a bounded reader: a count of any length is a number or "too large", never an
+overflow.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+FOLDER = Path(__file__).resolve().parent / "lexicon"
+CATEGORIES = ("agents", "actions", "positions", "road", "weather", "behaviours", "numbers", "sequence")
+MAX_DIGITS = 6  # a number with more digits than this is read as "too large"
+TOO_LARGE = 10 ** MAX_DIGITS
+
+
+@dataclass(frozen=True)
+class Token:
+    word: str  # as written, lower case, British spelling made American
+    base: str  # the base form the lexicon knows, else the word
+    index: int  # position in the whole text
+    sentence: int
+    plural: bool = False  # a noun in its plural form ("cars", "children")
+    possessive: bool = False  # followed by 's ("the ego's lane")
+    label: str = ""  # a name the text gives an agent ("SV1", "POV2")
+    question: bool = False  # in a sentence that asks ("What happens if a truck runs a red light?")
+    title: bool = False  # in a title line ("Case: child after ball"): read for the road and weather only
+
+    @property
+    def number(self) -> float | None:
+        return read_number(self.word)
+
+
+@dataclass(frozen=True)
+class Match:
+    start: int  # token indexes [start, end)
+    end: int
+    category: str
+    meaning: str
+    phrase: str
+
+
+def read_number(text: str) -> float | None:
+    """A decimal as written, bounded: more than MAX_DIGITS integer digits reads as TOO_LARGE."""
+    if not re.fullmatch(r"\d+(?:\.\d+)?", text):
+        return None
+    whole = text.split(".")[0].lstrip("0")
+    if len(whole) > MAX_DIGITS:
+        return float(TOO_LARGE)
+    return float(text[: MAX_DIGITS + 4])
+
+
+def _entries(name: str):
+    for line in (FOLDER / f"{name}.txt").read_text(encoding="utf-8").splitlines():
+        line = line.split("#", 1)[0].strip()
+        if not line or ":" not in line:
+            continue
+        meaning, phrases = line.rsplit(":", 1)
+        for phrase in phrases.split(","):
+            words = tuple(_normalize(phrase).split())
+            if words:
+                yield meaning.strip(), words
+
+
+def _normalize(text: str) -> str:
+    return re.sub(r"[-_/]", " ", text.lower()).strip()
+
+
+@dataclass(frozen=True, eq=False)
+class Lexicon:
+    phrases: dict  # words tuple -> (category, meaning)
+    longest: int
+    vocabulary: frozenset  # every word of every phrase, and the function words
+    content_words: tuple  # the words an unknown word is compared with
+    irregular: dict  # inflected -> base
+    spelling: dict  # british -> american
+    function_words: frozenset
+    kinds: dict  # words tuple -> scene kind (read only where a scene is asked for)
+    starts: dict  # first word -> the length of the longest phrase it starts
+
+    def base(self, word: str) -> tuple[str, bool]:
+        """The base form of a word the lexicon knows, and whether it was a plural or an inflected form."""
+        if word in self.irregular:
+            return self.irregular[word], True
+        if word in self.function_words:
+            return word, False
+        for suffix, replacement in (("ies", "y"), ("ied", "y"), ("es", ""), ("s", ""), ("ed", ""), ("ed", "e"),
+                                    ("d", ""), ("ing", ""), ("ing", "e"), ("'s", "")):
+            if word.endswith(suffix) and len(word) > len(suffix) + 1:
+                stem = word[: -len(suffix)] + replacement
+                if stem in self.vocabulary:
+                    return stem, True
+                if suffix in ("ed", "ing") and len(stem) > 2 and stem[-1] == stem[-2]:  # stopped, running
+                    if stem[:-1] in self.vocabulary:
+                        return stem[:-1], True
+        return word, False  # a base form itself, or a word the lexicon does not know
+
+    def nearest(self, word: str) -> str | None:
+        return _nearest(self, word)
+
+
+@lru_cache(maxsize=4096)
+def _nearest(lex: "Lexicon", word: str) -> str | None:
+    """The closest known content word; only words of about the same length can be close enough."""
+    pool = [w for w in lex.content_words if abs(len(w) - len(word)) <= 2 and (w[0] == word[0] or w[1:2] == word[1:2])]
+    found = difflib.get_close_matches(word, pool, n=1, cutoff=0.75)
+    return found[0] if found else None
+
+
+@lru_cache(maxsize=1)
+def lexicon() -> Lexicon:
+    phrases: dict = {}
+    for category in CATEGORIES:
+        for meaning, words in _entries(category):
+            phrases.setdefault(words, (category, meaning))  # the first file that names a phrase owns it
+    for words, entry in list(phrases.items()):  # terse writing drops articles: "change to left lane"
+        if "the" in words[1:] and len(words) > 2:
+            phrases.setdefault(tuple(w for w in words if w != "the"), entry)
+    irregular, spelling = {}, {}
+    for base, words in _entries("inflections"):
+        for word in " ".join(words).split():
+            irregular[word] = base
+    for line in (FOLDER / "spelling.txt").read_text(encoding="utf-8").splitlines():
+        line = line.split("#", 1)[0].strip()
+        if ":" in line:
+            british, american = (x.strip() for x in line.split(":", 1))
+            spelling[british] = american
+    function = frozenset((FOLDER / "function.txt").read_text(encoding="utf-8").split("\n", 1)[1].split())
+    words = {w for phrase in phrases for w in phrase}
+    content = tuple(sorted(w for w in words if len(w) > 3 and w not in function))
+    kinds = {words: meaning for meaning, words in _entries("kinds")}
+    starts: dict = {}
+    for phrase in phrases:
+        starts[phrase[0]] = max(starts.get(phrase[0], 0), len(phrase))
+    return Lexicon(phrases, max(len(p) for p in phrases), frozenset(words | function | set(irregular.values())),
+                   content, irregular, spelling, function, kinds, starts)
+
+
+TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#\d|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
+SENTENCE_ENDS = {".", ";", "!", "?", ":"}
+
+
+KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/-]{0,30}?)\s*[:|]\s*(.*)$")
+TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
+              "description", "goal", "purpose", "report", "note"}
+PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
+              "env", "visibility", "daylight", "when"}
+NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
+
+
+def _lines(text: str) -> str:
+    """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
+    read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
+    'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
+    if "\n" not in text.strip():
+        return text
+    out = []
+    for line in text.splitlines():
+        if not line.strip():
+            continue
+        line = line.replace("->", " and ").replace("\u2192", " and ")
+        m = KEY_LINE.match(line)
+        if m is None:
+            out.append(line.strip().lstrip("-*\u2022 ").rstrip(".") + ".")
+            continue
+        key, value = m.group(1).strip(), m.group(2).strip().rstrip(".")
+        lowered = key.lower()
+        if re.fullmatch(r"stage \d+|step \d+|phase \d+", lowered):
+            out.append(("then " if out else "") + value + ".")
+        elif lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
+            out.append("\u00a7 " + value + ".")  # read for the road and the weather only
+        elif lowered in PLAIN_KEYS:
+            out.append(value + ".")  # "Light: dusk, drizzle" is the weather, not a traffic light
+        elif value.lower() in NOTHING:
+            out.append(f"no {key}.")
+        elif not value:
+            continue
+        else:
+            out.append(f"{key} is {value}.")
+    return " ".join(out)
+
+
+def tokenize(text: str) -> list[Token]:
+    """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
+    the sentence number advances at . ; ! ? : and blank lines."""
+    lex = lexicon()
+    text = _lines(text).lower().replace("\u2019", "'").replace("`", "'")
+    text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
+    text = re.sub(r"\blet's\b", "let us", text)
+    text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
+    text = re.sub(r"'re\b", " are", text)
+    text = re.sub(r"'ll\b", " will", text)
+    text = re.sub(r"'ve\b", " have", text)
+    text = re.sub(r"'m\b", " am", text)
+    text = re.sub(r"'d\b", " would", text)
+    text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
+    text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end
+    text = re.sub(r"(\d)(kmh|mph|m|s|km|metres|meters|seconds)\b", r"\1 \2", text)
+    text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
+    text = re.sub(r"\n\s*\n", " . ", text)
+    text = re.sub(r"s' ", "s 's ", text)
+    text = re.sub(r"\b(left|right) hand\b", r"\1", text)  # "the right-hand lane"
+    text = re.sub(r"\b(that|this|its|our|their) (left|right) lane", r"the \2 lane", text)
+    text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
+    text = re.sub(r"\b([a-z]{2,3})(\d)\b", r"\1#\2", text)  # SV1, POV2: a label, not a count
+    tokens: list[Token] = []
+    sentence = 0
+    raw = TOKEN.findall(text)
+    asks, current = set(), 0
+    for word in raw:  # which sentences are questions
+        if word in SENTENCE_ENDS:
+            if word == "?":
+                asks.add(current)
+            current += 1
+    sentence_of_raw, current = [], 0
+    for word in raw:
+        sentence_of_raw.append(current)
+        if word in SENTENCE_ENDS:
+            current += 1
+    titled = {sentence_of_raw[k] for k, w in enumerate(raw) if w == "\u00a7"}
+    for position, word in enumerate(raw):
+        question = sentence_of_raw[position] in asks
+        if word == "\u00a7":
+            continue
+        if word in SENTENCE_ENDS:
+            if tokens and tokens[-1].sentence == sentence:
+                sentence += 1
+            continue
+        if word in "()":
+            word = ","
+        possessive = False
+        if word.endswith("'s"):
+            word, possessive = word[:-2], True
+            if not word:
+                continue
+        label = ""
+        if "#" in word:
+            word, label = word.split("#")[0], word.replace("#", "")
+        for part in lex.spelling.get(word, word).split():
+            base, inflected = lex.base(part)
+            plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
+                and part not in ("is", "was", "has", "does", "goes", "bus")
+            tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question,
+                                sentence_of_raw[position] in titled))
+    return tokens
+
+
+def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> list[Match]:
+    """The longest lexicon phrase at each place, left to right; tokens no phrase covers are left out."""
+    lex = lexicon()
+    stop = len(tokens) if stop is None else stop
+    out, i = [], start
+    while i < stop:
+        found = None
+        longest = max(lex.starts.get(tokens[i].word, 0), lex.starts.get(tokens[i].base, 0))
+        if tokens[i].word != "," and longest:
+            for n in range(min(longest, stop - i), 0, -1):
+                span = tokens[i:i + n]
+                if any(t.word == "," or t.sentence != span[0].sentence for t in span):
+                    continue
+                entry = _lookup(lex, span)
+                if entry is not None:
+                    found = Match(i, i + n, entry[0], entry[1], " ".join(t.word for t in span))
+                    break
+        if found:
+            out.append(found)
+            i = found.end
+        else:
+            i += 1
+    return out
+
+
+def _lookup(lex: Lexicon, span: list[Token]):
+    """The entry of a phrase written with each word as written or in its base form ("dashed white lines")."""
+    keys = [()]
+    for t in span:
+        keys = [k + (w,) for k in keys for w in dict.fromkeys((t.word, t.base))]
+        if len(keys) > 16:
+            keys = keys[:16]
+    raw = keys[0]
+    for key in keys:
+        entry = lex.phrases.get(key)
+        if entry is not None and (key == raw or entry[1] != "none"):  # "the bus stops" is no "bus stop"
+            return entry
+    return None
