@@ -1615,13 +1615,15 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     has_crosswalk = any(w in V.CROSSWALK_OBJECTS for w in road.required_objects)
     stages, oncoming = _compose(r, junction, has_crosswalk)
     ego = stages[0][0]
+    sampled_comments: dict[str, Comment] = {}
     if kind is not None:
-        template = _template(kind, seed)
+        template, sampled_comments = _template(kind, seed, r.notes)
         road = _merge_road(template.road, road)
         if not any(a.action != "go_straight" for a in [ego]):
             ego = template.ego if ego.behavior == V.DEFAULT_BEHAVIOR else ego
+        if ego is not template.ego:
+            sampled_comments.pop("agent.ego", None)
         stages[0] = [ego] + [a for a in template.stages[0].agents if not a.is_ego] + stages[0][1:]
-        r.notes.append(f"the scene kind '{kind}' was asked for: its agents come from templates/kinds/{kind}.tsg")
     stage_models = tuple(Stage(name=_stage_name(k, len(stages)), agents=tuple(agents))
                          for k, agents in enumerate(stages) if agents)
     draft = Scenario.model_construct(name=_name(prompt), seed=None, weather=weather, road=road,
@@ -1632,7 +1634,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     problems = find_problems(candidate)
     if problems:
         raise LoweringError("the prompt lowers to an invalid scene: " + "; ".join(p.message for p in problems))
-    comments = {"scenario": Comment(leading=tuple(notes))} if notes else {}
+    comments = sampled_comments | ({"scenario": Comment(leading=tuple(notes))} if notes else {})
     scenario = Scenario.model_validate(candidate.model_dump() | {"comments": comments})
     unknown = _unknown(r)
     said_nothing = (kind is None and not r.entities and scenario.road == RoadSpec() and scenario.weather is None)
@@ -1776,16 +1778,15 @@ def _unknown(r: _Reader) -> list[str]:
     return list(dict.fromkeys(out))
 
 
-def _template(kind: str, seed: int) -> Scenario:
-    from ttsgc.language import parse
-    from ttsgc.resources import resource_dir
+def _template(kind: str, seed: int, notes: list[str]) -> tuple[Scenario, dict[str, Comment]]:
+    """The kind's scene for this seed, drawn from its distribution (sampling.py), with a comment per choice."""
+    from ttsgc.lowering.sampling import has_distribution, sample_kind
 
-    folder = resource_dir("templates") / "kinds"
-    variants = sorted(folder.glob(f"{kind}.tsg")) + sorted(folder.glob(f"{kind}.*.tsg"))
-    if not variants:
-        raise LoweringError(f"no template for the scene kind '{kind}'")
-    path = variants[seed % len(variants)]
-    return parse(path.read_text(encoding="utf-8"), str(path))
+    if not has_distribution(kind):
+        raise LoweringError(f"no distribution for the scene kind '{kind}' (templates/kinds/{kind}.toml)")
+    sampled = sample_kind(kind, seed)
+    notes += sampled.notes
+    return sampled.scenario, dict(sampled.scenario.comments)
 
 
 def _merge_road(template: RoadSpec, said: RoadSpec) -> RoadSpec:

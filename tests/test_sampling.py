@@ -1,0 +1,84 @@
+"""Seeded sampling of what a prompt leaves open (ttsgc/lowering/sampling.py, templates/kinds/*.toml)."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import EXAMPLES
+from ttsgc import vocabulary as V
+from ttsgc.evaluate import PAPER_DIVERSITY, agent_keys
+from ttsgc.language import parse
+from ttsgc.lowering import lower_prompt
+
+KIND_PROMPTS = sorted(PAPER_DIVERSITY)
+SEEDS = range(5)
+
+
+def lowered(name: str, seed: int):
+    return lower_prompt((EXAMPLES / f"{name}.txt").read_text(), "offline", seed=seed)
+
+
+@pytest.mark.parametrize("name", KIND_PROMPTS)
+def test_a_kind_prompt_over_five_seeds_is_at_least_as_diverse_as_the_paper(name):
+    keys = [k for seed in SEEDS for k in agent_keys(lowered(name, seed).scenario).elements()]
+    assert len(set(keys)) / len(keys) >= PAPER_DIVERSITY[name][0]
+
+
+@pytest.mark.parametrize("name", KIND_PROMPTS)
+def test_the_same_seed_gives_the_same_scene(name):
+    prompt = (EXAMPLES / f"{name}.txt").read_text()
+    assert lowered(name, 3).tsg(prompt) == lowered(name, 3).tsg(prompt)
+    assert lowered(name, 3).tsg(prompt) != lowered(name, 4).tsg(prompt)
+
+
+def test_seed_zero_is_the_kinds_typical_scene():
+    """The hand-written scene beside each kind prompt is the kind's typical one: seed 0 draws it."""
+    for name in KIND_PROMPTS:
+        gold = parse((EXAMPLES / f"{name}.tsg").read_text())
+        assert agent_keys(lowered(name, 0).scenario) == agent_keys(gold), name
+
+
+@pytest.mark.parametrize("name", KIND_PROMPTS)
+def test_every_choice_is_written_beside_its_agent_and_the_file_pins_it(name):
+    prompt = (EXAMPLES / f"{name}.txt").read_text()
+    result = lowered(name, 2)
+    text = result.tsg(prompt)
+    agent_lines = [line for line in text.splitlines() if line.startswith("    ") and not line.strip().startswith(("#", "}"))
+                   and line.split()[0] in set(V.AGENT_TYPES) | {"ego"}]
+    assert agent_lines and all("# sampled " in line for line in agent_lines)
+    again = parse(text)  # compiling the written file gives the drawn scene whatever seed is asked then
+    assert agent_keys(again) == agent_keys(result.scenario)
+
+
+@pytest.mark.parametrize("name, allowed", [("crushing", {"pedestrian"}), ("two_wheels", V.TWO_WHEELER_TYPES),
+                                           ("emergency", V.EMERGENCY_TYPES)])
+def test_what_a_kind_prompt_names_it_keeps(name, allowed):
+    """'pedestrian crushing' always has a pedestrian crossing; 'two-wheel vehicles' and 'emergency vehicles'
+    have no other types beside the ego."""
+    for seed in SEEDS:
+        agents = [a for a in lowered(name, seed).scenario.agents() if not a.is_ego]
+        core = [a for a in agents if a.type in allowed]
+        assert core, (name, seed)
+        if name == "crushing":
+            assert any(a.action == "cross_the_road" for a in core)
+        else:
+            assert all(a.type in allowed for a in agents), (name, seed)
+
+
+NAMING_PROMPTS = sorted(p.stem for p in EXAMPLES.glob("*.txt") if p.stem not in PAPER_DIVERSITY)
+
+
+@pytest.mark.parametrize("name", NAMING_PROMPTS)
+def test_a_prompt_that_names_its_agents_keeps_them_whatever_the_seed(name):
+    """Diversity comes from what a prompt leaves open, never from changing what it says."""
+    scenes = [lowered(name, seed).scenario for seed in SEEDS]
+    assert all(agent_keys(s) == agent_keys(scenes[0]) for s in scenes)
+    assert all(s.road == scenes[0].road and s.weather == scenes[0].weather for s in scenes)
+
+
+def test_a_prompts_own_ego_action_wins_over_the_kind():
+    prompt = "Please create a scene for intersection. The ego turns left."
+    for seed in SEEDS:
+        result = lower_prompt(prompt, "offline", seed=seed)
+        assert result.kind == "intersection" and result.scenario.ego.action == "turn_left"
+        assert "sampled ego" not in result.tsg(prompt)
