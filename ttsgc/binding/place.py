@@ -22,6 +22,7 @@ from ttsgc.binding.rank import (AHEAD, BEHIND, DEFAULT_GAP_M, JUNCTION_SIDE, LEF
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.roads.index import Approach, MapIndex, Turn, approach_id, upstream_chain
 from ttsgc.roads.opendrive import OpenDrive, Road
+from ttsgc.roads.retrieve import JUNCTION_CLEARANCE_M
 from ttsgc.scenario import Agent, Scenario, Trigger
 
 CLEARANCE_M = 1.0
@@ -266,6 +267,11 @@ class Placer:
         else:  # on the chosen road itself when it is long enough, leaving the road ahead free
             u_ego = min(frame.segments[-1][2] + back_space + ego_len / 2 + 10.0,
                         frame.length - front_space - ego_len / 2 - 20.0)
+        if s.road.junction is False and frame.approach.junction is not None:  # well before the junction
+            u_ego = min(u_ego, frame.length - front_space - ego_len / 2 - JUNCTION_CLEARANCE_M)
+            if u_ego < lowest:
+                raise PlacementError(f"approach {frame.approach.id} of {self.index.name} leaves no room for the "
+                                     f"scene {JUNCTION_CLEARANCE_M:.0f} m before its junction")
         crosswalk = self._crosswalk_u()
         if crosswalk is not None and "near_the_crosswalk" in by_position:
             u_ego = min(u_ego, crosswalk - 25.0)

@@ -3,12 +3,13 @@
 Every requirement is one column of the explanation table: the turns the ego and the agents need exist, the
 roads where agents stand exist, adjacent lanes exist for side positions and lane changes, a shoulder or
 sidewalk exists for agents standing there, a crosswalk for near_the_crosswalk, and the ego's lane is long
-enough for every agent queued in it. The best total wins; ties are broken by a seeded random choice.
+enough for every agent queued in it. The best total wins; ties are spread over the library's roads by the seed.
 """
 
 from __future__ import annotations
 
-import random
+import math
+import zlib
 from dataclasses import dataclass
 from typing import Callable
 
@@ -133,14 +134,51 @@ class Ranked:
 
 def rank(scenario: Scenario, candidates: list[tuple[Approach, MapIndex]], seed: int
          ) -> tuple[list[Requirement], list[Ranked]]:
-    """Candidates best first. Equal scores are shuffled by the seed, so the order is reproducible and
-    different seeds spread scenes over equally good roads."""
+    """Candidates best first; equal scores in the order `spread` gives them for this seed."""
     reqs = requirements(scenario)
     scored = [Ranked(a, i, tuple(r.test(a, i) for r in reqs)) for a, i in candidates]
-    scored.sort(key=lambda r: (r.index.name, natural_key(r.approach.id)))
-    random.Random(seed).shuffle(scored)
-    scored.sort(key=lambda r: -r.score)  # stable: the seeded order survives within a score
-    return reqs, scored
+    ranked: list[Ranked] = []
+    for score in sorted({r.score for r in scored}, reverse=True):
+        ranked += spread([r for r in scored if r.score == score], seed, scenario.name)
+    return reqs, ranked
+
+
+def spread(tied: list[Ranked], seed: int, salt: str = "") -> list[Ranked]:
+    """Equally ranked candidates in the order seed `seed` offers them. The roads (both directions of a road
+    are one road, as the paper counts them) are dealt one map at a time in turn, maps and each map's roads
+    in a fixed pseudo-random order (by `salt`, not by the seed), and seed s takes the deal's roads s,
+    s + step, s + 2 step, ... (step about 0.618 of their number, coprime with it): any run of consecutive seeds
+    starts on different roads, spread over every map of the library, and when a road cannot host the scene
+    the next tried is far along the deal, so neighbouring seeds do not all fall back onto one road. The same
+    seed always gives the same order. A road's other direction is offered after every road was once."""
+    def shuffled(*key: str) -> int:  # a fixed pseudo-random order, the same in every subset of the library
+        return zlib.crc32("/".join((salt,) + key).encode())
+
+    roads: dict[tuple[str, str], list[Ranked]] = {}
+    for r in sorted(tied, key=lambda r: (r.index.name, natural_key(r.approach.id))):
+        roads.setdefault((r.index.name, r.approach.road), []).append(r)
+    by_map: dict[str, list[tuple[str, str]]] = {}
+    for key in sorted(roads, key=lambda k: shuffled(*k)):
+        by_map.setdefault(key[0], []).append(key)
+    maps = sorted(by_map, key=shuffled)
+    dealt = [by_map[m][k] for k in range(max((len(v) for v in by_map.values()), default=0))
+             for m in maps if k < len(by_map[m])]
+    if not dealt:
+        return []
+    n = len(dealt)
+    step = _stride(n)
+    turn = seed // n  # seeds beyond the number of roads start on the other direction
+    dealt = [dealt[(seed + k * step) % n] for k in range(n)]
+    directions = [roads[key][turn % len(roads[key]):] + roads[key][:turn % len(roads[key])] for key in dealt]
+    return [d[k] for k in range(max(len(d) for d in directions)) for d in directions if k < len(d)]
+
+
+def _stride(n: int) -> int:
+    """The step near n / golden ratio that visits all n roads."""
+    step = max(1, round(n * 0.618))
+    while math.gcd(step, n) != 1:
+        step += 1
+    return step
 
 
 def explain(reqs: list[Requirement], ranked: list[Ranked], limit: int = 15) -> str:
