@@ -183,15 +183,22 @@ def run_case(case: Case, seed: int, maps, method: str = "offline", simulate: boo
         outcome = None
         if paper is not None:
             run.paper_road = f"{paper.town} {paper.approach}"
-            try:  # the road the paper chose, when its town is in the library and the scene compiles on it
+            try:  # the road the paper chose, when its town is in the library and the scene is proven on it
                 outcome = compile_run((paper.town, paper.approach))
-            except TtsgcError:
+                if outcome[1] is not None and not outcome[1].ok:
+                    outcome = None
+            except Exception:  # noqa: BLE001 - it does not fit there: the ranked roads are tried next
+                outcome = None
+            if outcome is None:
                 t = time.perf_counter()
             run.paper_road_fit = outcome is not None
         try:
             compiled, report = outcome or compile_run(None)
         except TtsgcError as exc:
             run.failed_at, run.reason = "compile", str(exc).splitlines()[0]
+            return run
+        except Exception as exc:  # noqa: BLE001 - a fault of the player on one run is that run's failure
+            run.failed_at, run.reason = "simulate", f"internal error: {type(exc).__name__}: {exc}"[:300]
             return run
         elapsed = time.perf_counter() - t
         run.road = f"{compiled.scene.map_name} {compiled.scene.approach}"

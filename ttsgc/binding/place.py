@@ -26,6 +26,7 @@ from ttsgc.roads.retrieve import JUNCTION_CLEARANCE_M
 from ttsgc.scenario import Agent, Scenario, Trigger
 
 CLEARANCE_M = 1.0
+MIN_DRIVING_WIDTH_M = 2.5  # narrower, a lane is still opening or closing there: no vehicle starts on it
 PEDESTRIAN_SPEED = {"cautious": 1.0, "normal": 1.4, "aggressive": 2.5}
 CYCLIST_SPEED = {"cautious": 3.5, "normal": 5.0, "aggressive": 7.0}
 SPEED_FACTOR = {"cautious": 0.6, "normal": 0.85, "aggressive": 1.1}
@@ -130,7 +131,8 @@ class _Frame:
         road, direction, s = self.locate(u)
         sign = -1 if direction == "forward" else 1
         section = road.section_at(s)
-        return [l.id for l in section.side(-sign if far_side else sign) if l.type == lane_type]
+        return [l.id for l in section.side(-sign if far_side else sign) if l.type == lane_type
+                and (lane_type != "driving" or l.width(s - section.s) >= MIN_DRIVING_WIDTH_M)]
 
     def lane_id(self, ref: LaneRef, u: float) -> int | None:
         """The id of a referenced lane at u, None where the road has no such lane."""

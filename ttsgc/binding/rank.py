@@ -15,6 +15,7 @@ from typing import Callable
 
 from ttsgc import vocabulary as V
 from ttsgc.roads.index import Approach, MapIndex, natural_key
+from ttsgc.roads.retrieve import JUNCTION_CLEARANCE_M
 from ttsgc.scenario import Agent, Scenario
 
 LEFT_SIDE = {"left", "front_left", "back_left"}
@@ -91,7 +92,11 @@ def requirements(scenario: Scenario) -> list[Requirement]:
                 agent.gap_m if agent.gap_m is not None else DEFAULT_GAP_M[agent.behavior])
         out += _agent_requirements(agent, movement, queued)
     space = lane_space_needed(scenario)
-    out.append(Requirement(f"length>={space:.0f}m", lambda a, i, n=space: a.run_up >= n))
+    if scenario.road.junction is False:  # and well before the junction, where the road ends at one
+        out.append(Requirement(f"length>={space:.0f}m", lambda a, i, n=space: a.run_up >= n + (
+            JUNCTION_CLEARANCE_M if a.junction is not None else 0.0)))
+    else:
+        out.append(Requirement(f"length>={space:.0f}m", lambda a, i, n=space: a.run_up >= n))
     return out
 
 

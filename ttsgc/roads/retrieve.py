@@ -66,8 +66,8 @@ def load_library(maps: Iterable[str | Path] | None = None) -> list[MapIndex]:
 
 # `not at junction`: a road that ends at a junction qualifies when it and the roads leading into it leave
 # this much room before the junction (placement keeps the ego JUNCTION_CLEARANCE_M and more before it).
-AWAY_FROM_JUNCTION_RUN_UP_M = 100.0
-JUNCTION_CLEARANCE_M = 60.0
+AWAY_FROM_JUNCTION_RUN_UP_M = 60.0
+JUNCTION_CLEARANCE_M = 40.0
 
 
 def away_from_junction(a: Approach) -> bool:
