@@ -343,3 +343,12 @@ def test_the_llm_worked_examples_come_from_the_dev_split():
     for prompt in examples:
         for path in (prompt, prompt.with_suffix(".tsg")):
             assert path.read_text() == dev[path.name].read_text(), path.name
+
+
+def test_misspelt_words_close_to_one_known_word_are_read_as_it_and_reported():
+    lowered = lower("pedestrain crosses infront of the ego, a motrocycle comes from the oposite direction at the "
+                    "interesection")
+    found = sorted((a.type, a.action, a.relative_to_ego or "ego") for a in lowered.scenario.agents())
+    assert ("pedestrian", "cross_the_road", "front") in found
+    assert ("motorcycle", "go_straight", "road_of_straight") in found
+    assert "motrocycle (read as motorcycle)" in lowered.unknown

@@ -32,6 +32,7 @@ class Token:
     label: str = ""  # a name the text gives an agent ("SV1", "POV2")
     question: bool = False  # in a sentence that asks ("What happens if a truck runs a red light?")
     title: bool = False  # in a title line ("Case: child after ball"): read for the road and weather only
+    misspelt: str = ""  # the word as written, when it was read as the nearest known word ("pedestrain")
 
     @property
     def number(self) -> float | None:
@@ -95,7 +96,7 @@ class Lexicon:
                                     ("d", ""), ("ing", ""), ("ing", "e"), ("'s", "")):
             if word.endswith(suffix) and len(word) > len(suffix) + 1:
                 stem = word[: -len(suffix)] + replacement
-                if stem in self.vocabulary:
+                if stem in self.vocabulary and (len(stem) > 2 or stem not in self.function_words):  # "red" != "re"+d
                     return stem, True
                 if suffix in ("ed", "ing") and len(stem) > 2 and stem[-1] == stem[-2]:  # stopped, running
                     if stem[:-1] in self.vocabulary:
@@ -112,6 +113,18 @@ def _nearest(lex: "Lexicon", word: str) -> str | None:
     pool = [w for w in lex.content_words if abs(len(w) - len(word)) <= 2 and (w[0] == word[0] or w[1:2] == word[1:2])]
     found = difflib.get_close_matches(word, pool, n=1, cutoff=0.75)
     return found[0] if found else None
+
+
+@lru_cache(maxsize=4096)
+def _corrected(lex: "Lexicon", word: str) -> str | None:
+    """A misspelling close enough to one known word to be read as it (one or two letters off)."""
+    pool = [w for w in lex.content_words if abs(len(w) - len(word)) <= 1 and w[0] == word[0]]
+    found = [w for w in difflib.get_close_matches(word, pool, n=2, cutoff=0.86)
+             if not (w.startswith(word) or word.startswith(w))]  # "commute" is no misspelt "commuter"
+    if len(found) == 1 or (len(found) == 2 and difflib.SequenceMatcher(None, word, found[0]).ratio() >
+                           difflib.SequenceMatcher(None, word, found[1]).ratio()):
+        return found[0]
+    return None
 
 
 @lru_cache(maxsize=1)
@@ -200,6 +213,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"'ve\b", " have", text)
     text = re.sub(r"'m\b", " am", text)
     text = re.sub(r"'d\b", " would", text)
+    text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
     text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end
     text = re.sub(r"(\d)(kmh|mph|m|s|km|metres|meters|seconds)\b", r"\1 \2", text)
@@ -245,10 +259,16 @@ def tokenize(text: str) -> list[Token]:
             word, label = word.split("#")[0], word.replace("#", "")
         for part in lex.spelling.get(word, word).split():
             base, inflected = lex.base(part)
+            misspelt = ""
+            if base not in lex.vocabulary and len(part) >= 4 and part.isalpha() and not part.endswith("ing"):
+                guess = _corrected(lex, part)
+                if guess is not None:  # "pedestrain", "interesection": read as the word meant
+                    misspelt, part = part, guess
+                    base, inflected = lex.base(part)
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
                 and part not in ("is", "was", "has", "does", "goes", "bus")
             tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question,
-                                sentence_of_raw[position] in titled))
+                                sentence_of_raw[position] in titled, misspelt))
     return tokens
 
 

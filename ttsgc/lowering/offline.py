@@ -39,6 +39,17 @@ NAME_PREFIX = {"car": "c", "truck": "t", "bus": "b", "motorcycle": "m", "cyclist
                "ambulance": "a", "police": "po", "firetruck": "f"}
 MAX_AGENTS_PER_MENTION = 12
 BARE_PLURAL_COUNT = 2  # "cars pass", "a crowd of children": the gold conventions' count for an unstated size
+# What a sentence leaves open, chosen in one place (the corpus conventions' readings; a seeded sampler of the
+# unspecified can vary these and nothing else).
+UNSPECIFIED = {
+    "side_of_a_crossing_road": "left",  # "a vehicle from a perpendicular direction"
+    "side_of_an_overtaker": "left",
+    "side_of_a_cut_in": "left", "side_of_a_cyclist_cut_in": "right",
+    "side_beside_a_vehicle": "left", "side_beside_a_person": "right",
+    "side_of_a_sidewalk_walker": "right",
+    "turn_direction": "left",  # "turns" with no side
+    "ego_lane_change_direction": "left",  # "the ego pulls out to pass"
+}
 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
 DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone"}
@@ -53,17 +64,21 @@ AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "am", "will", 
                "then", "also", "to", "and"}
 CLAUSE_WORDS = {"while", "whilst", "as", "when", "whereas", "but", "although", "though", "because", "so", "where",
                 "and", "or", "which", "who", "that", "whose", "whom", "until", "before", "if"}
+LIGHT_PARTICIPLES = {"made", "taken", "performed", "executed", "done", "initiated", "attempted", "carried", "out",
+                     "being", "been"}
 SUBORDINATE = {"if", "when", "as", "while", "whilst", "because", "although", "though", "until", "before"}
 RELATIVES = {"which", "who", "that", "whose", "whom"}
 # Relational verbs: (subject's place relative to the object) when one of them is the ego.
-FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear"}
+FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
 OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter"}
-ACTION_RANK = {"block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 8,
+ACTION_RANK = {"sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6, "lane_change": 6, "turn_left": 8,
                "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2, "go_straight": 1,
                "move": 1}
 SIDES = ("left", "right")
+COMPASS_OPPOSITE = {"compass_north": "compass_south", "compass_south": "compass_north",
+                    "compass_east": "compass_west", "compass_west": "compass_east"}
 TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn", "let", "to let"}
 LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
               "near", "nearside", "side"}
@@ -177,14 +192,21 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
 
 
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
-    """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk."""
+    """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
+    'parked right at the corner' says where exactly, not which side."""
     span = tuple(tokens[m.start:m.end])
     nxt = tokens[m.end].word if m.end < len(tokens) else ""
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and \
+            tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
+        return [Unit(m.start, m.end, "word", "right", span)]
     prev = tokens[m.start - 1] if m.start > 0 else None
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student")
+    after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be",
+                                                    "been", "start", "starts", "begin", "begins", "stop", "stops",
+                                                    "finish", "finishes", "while", "when", "still", "already")
     if m.category == "road" and span[-1].word == "crossing" and (len(span) == 1 or span[0].base == "pedestrian") and (
-            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and after_person)):
+            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))):
         out = []
         if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
             out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
@@ -230,7 +252,8 @@ def _road(r: _Reader) -> RoadSpec:
             put("traffic_light", False)  # "runs a red light"
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
                                                                                           "signaled") \
-                and k > 0 and units[k - 1].category == "agents":
+                and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
+                    k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
         if u.category == "road":
             r.mark(u)
@@ -569,6 +592,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if new_sentence:
             close()
         prev_word = units[k - 1].word if k else ""
+        if u.category == "sequence" and prev_word in RELATIVES:
+            r.mark(u)
+            continue  # "a motorcyclist who then overtakes it": the same clause, in order
         if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and \
                 nxt.tokens[0].word.endswith("ing"):
             continue  # "after braking for a fox": when, not a stage
@@ -769,6 +795,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
     if "more" in words and "than" in words and count is not None:
         count += 1
+    bare = not words and count is None and not plural and not label and not (
+        head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
+    if bare and any(e.head == u.base and not e.is_ego and e.count == 1 for e in r.entities):
+        definite = True  # "ego behind cyclist, cyclist swerves left": the same cyclist
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
@@ -787,8 +817,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     before = first - 1
     while before > lo and units[before].category in ("actions", "behaviours"):
         before -= 1  # "between parked cars"
-    if count is None and plural and not words and before >= lo and units[before].category == "word" and \
-            units[before].word in SCENERY_PREPOSITIONS:
+    scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS
+    if scenery and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
+            not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
+            count is None and plural and before >= lo and "of" in words
+            and units[before].word in ("row", "line", "lot", "rows")):  # "a row of parked cars": scenery
         for k in range(before + 1, head):
             r.mark(units[k])
             units[k].category = "word"
@@ -808,6 +841,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                     generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
+    if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
+        entity.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "a queue of four cars"
     elif u.base == "tailgater":
         entity.features.add("behind")
     if _including_ego(units, head):
@@ -924,6 +959,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "waiting for the light to change"
         if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
             e.features.add("overtaking")
+        if action == "stop" and {t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
+                                                                 "stall", "stalled", "double", "abandon"}:
+            e.features.add("parked")
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
         e.actions.append((stage, strength, ACTION_RANK.get(action, 0), r.tick(), action, direction))
@@ -934,16 +972,18 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
     turning = units[k].meaning in ("turn", "u_turn")
-    for j, u in enumerate(units[k + 1: k + 4], start=k + 1):
+    for j, u in enumerate(units[k + 1: k + (6 if turning else 4)], start=k + 1):
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
-                    u.meaning.startswith("road") and not turning):
+                    u.meaning.startswith("road") and not turning) or (
+                    not turning and any(x.word == "from" for x in units[k + 1:j])) or (
+                    not turning and "out" in units[k].base.split()):  # "pulling out of a stop on the right"
                 return None  # where it comes from, not where it goes
             r.mark(u)
             u.meaning = "used"
             return "left" if "left" in u.base else "right"
-        if u.category in ("agents", "actions"):
+        if u.category in ("actions",) or (u.category == "agents" and u.meaning != "none"):
             return None
     return None
 
@@ -1019,18 +1059,26 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     by = next((i for i, u in enumerate(units) if u.category == "word" and u.word == "by" and i > 0
                and (verbs and i > verbs[0] or units[i - 1].word.endswith(("ed", "en")))
                and any(np.index > i for np in phrases)), None)
+    if by is not None and verbs and units[verbs[0]].tokens[-1].word in ("turn", "change", "stop", "maneuver") and \
+            verbs[0] < by - 1 and \
+            units[by - 1].word not in LIGHT_PARTICIPLES and units[by - 1].category != "actions":
+        by = None  # "a right turn is prevented by a pedestrian": the pedestrian does not turn
     if by is not None and any(u.category == "word" and u.word in ("kept", "held", "forced", "made", "left")
                               and k + 1 < by and (units[k + 1].category == "actions" or units[k + 1].word == "to")
                               for k, u in enumerate(units[:by])) or (by is not None and verbs and units[verbs[0]].base in
                                                         ("keep waiting", "be kept waiting", "kept waiting", "held up",
                                                          "stuck", "held")):
         by = None  # "the ego is kept waiting by two cars": the ego waits
+    if by is not None and verbs and units[verbs[0]].meaning == "stop" and verbs[0] == by - 1:
+        by = None  # "the ego is stopped by a police officer": the ego stops
     subject: list[Entity] = []
     objects: list[NounPhrase] = []
     first_verb = verbs[0] if verbs else len(units)
     if by is not None:
         actor = next(np for np in phrases if np.index > by)
         subject = actor.group or [actor.entity]
+        if any(u.category == "positions" and u.meaning == "ego_lane" for u in units[:by]) and actor.entity:
+            actor.entity.features.add("into_ego_lane")  # "the ego's lane is entered by a motorbike"
         objects = [np for np in phrases if np is not actor]
         r.mark(units[by])
     else:
@@ -1051,7 +1099,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate:
             subject = list(previous_subject)
         elif verbs:
-            subject = [e for e in [_implied(r, units, stage, verbs)] if e is not None]
+            inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
+            subject = [e for e in [_implied(r, units, stage, verbs, inside)] if e is not None]
     if any(e.includes_ego for e in subject):  # "three cars including the ego wait": the ego waits too
         subject = subject + [_ego_entity(r, stage)]
     if clause.condition:
@@ -1060,15 +1109,18 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         strength = 2
 
     main_verbs = []
+    participles: dict[int, list[Entity]] = {}
     for i in verbs:
         owner = _participle_owner(units, i, phrases, subject, verbs)
         if owner is not None:
+            participles[i] = [e for e in owner.group or [owner.entity] if e is not None]
             for e in owner.group or [owner.entity]:
                 if e is not None:
                     _modify(r, e, units[i], stage, 1, units, i)
         else:
             main_verbs.append(i)
-    if not main_verbs and not phrases and len(units) > 1 and units[0].category == "positions" and \
+    if not main_verbs and not any(np.index < 2 for np in phrases) and len(units) > 1 and \
+            units[0].category == "positions" and \
             units[0].meaning in ("side_left", "side_right") and len(units[0].tokens) == 1 and \
             units[1].category == "word" and units[1].word in ("at", "into", "onto", "on"):
         ego = _ego_entity(r, stage)  # terse: "right at the stop sign"
@@ -1078,7 +1130,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     if not main_verbs and len(subject) == 1 and subject[0].is_ego:  # terse: "ego right at lights", "ego left"
         ego_np = next((p for p in phrases if p.entity is subject[0]), None)
         after = units[ego_np.index + 1] if ego_np is not None and ego_np.index + 1 < len(units) else None
-        if after is not None and after.category == "positions" and after.meaning in ("side_left", "side_right"):
+        if after is not None and after.category == "positions" and after.meaning in ("side_left", "side_right") \
+                and len(after.tokens) == 1:
             r.mark(after)
             after.meaning = "used"
             subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
@@ -1105,6 +1158,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 any(units[i].base in ("approach", "enter", "reach") for i in main_verbs):
             e.features.add("junction_approach")  # "a vehicle approaches the intersection"
 
+    for i in main_verbs:  # "turns into a driveway on the left": where it turns, not where it is
+        if units[i].meaning in ("turn_left", "turn_right"):
+            for u in units[i + 1:i + 5]:
+                if u.category == "positions" and u.meaning == "side_" + units[i].meaning[5:]:
+                    r.mark(u)
+                    u.meaning = "used"
     # positions, behaviours and road types: to the noun they follow, else the subject
     for i, u in enumerate(units):
         if u.category not in ("positions", "behaviours") or u.meaning == "used":
@@ -1118,11 +1177,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue  # a premodifier, already given
         if u.meaning == "ego_lane" and i > 0 and units[i - 1].word in ("into", "onto", "across"):
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane"
-        owner = _modifier_owner(units, i, phrases, subject, main_verbs)
+        owner = _modifier_owner(units, i, phrases, subject, main_verbs, participles)
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
         for e in targets:
             if e.is_ego and u.category == "positions":
+                if u.meaning.startswith("compass_"):
+                    e.features.add(u.meaning)
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
                 if reference is not None and not reference.is_ego and u.meaning in INVERSE:
@@ -1156,10 +1217,12 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
         return True
     for u in reversed(units[max(0, i - 3):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
-                                               "failing", "refused", "refuses", "without"):
+                                               "failing", "refused", "refuses", "without", "unable") or (
+                u.category == "numbers" and u.meaning == "0"):
             return True
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
-                                                     "is", "are", "be", "can", "could")) \
+                                                     "is", "are", "be", "can", "could", "room", "space", "chance",
+                                                     "able", "unable", "time")) \
                 and u.category != "actions":
             return False
     return False
@@ -1173,20 +1236,21 @@ def _ego_entity(r: _Reader, stage: int) -> Entity:
     return ego
 
 
-def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int]) -> Entity | None:
+def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside=frozenset()) -> Entity | None:
     """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
     ('aggressive cut-in from right lane ahead' is a car's)."""
     placed = any(u.category == "positions" and u.meaning not in ("ego_lane", "into_ego_lane", "used", "target_lane",
-                                                                 "first_in_line")
-                 for u in units[verbs[0]:])
+                                                                 "first_in_line", "crosswalk", "destination")
+                 and k not in inside for k, u in enumerate(units) if k > verbs[0])
     cutting = any(units[i].meaning in ("cut_in", "block") for i in verbs)
     named = any(units[i].base in ("cut in", "cut off", "cut across", "cut") for i in verbs)  # "a cut-in", a noun
-    if placed and cutting and named:
+    turning_elsewhere = placed and any(units[i].meaning in ("u_turn",) for i in verbs)
+    if placed and ((cutting and named) or turning_elsewhere):
         entity = Entity(len(r.entities), "car", False, stage, head="car")
         r.entities.append(entity)
         r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
         return entity
-    if cutting:
+    if cutting and named:
         return None  # "Double cut-in on a motorway ...": the name of the case, not the ego's doing
     return _ego_entity(r, stage)
 
@@ -1253,7 +1317,8 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
     u = units[k]
     if u.category == "positions" and u.meaning in ("ahead", "behind", "level", "side_left", "side_right",
                                                     "front_left", "front_right", "back_left", "back_right"):
-        return True
+        # "behind the ego a delivery van keeps its distance": the place is complete, the van is the subject
+        return u.tokens[-1].word not in ("ego", "it", "us", "you", "them", "him", "her", "me")
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
 
@@ -1272,7 +1337,11 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return recent[-1] if recent else None
     owner = [np.entity for np in phrases if np.index < i and np.entity is not None]  # whom "behind it" places
     subject = owner[-1] if owner else (previous_subject or [None])[0]
-    for e in reversed(recent):
+    if len(previous_subject) == 1 and previous_subject[0].is_ego and previous_subject[0] is not subject and \
+            not any(np.index < i and np.entity is not None and not np.entity.is_ego and np.entity is not subject
+                    for np in phrases):
+        return previous_subject[0]  # "the ego is tailgated by a truck, and the car in front of it stops"
+    for e in reversed(recent + owner[:-1]):
         if e is not subject:
             return e
     return None
@@ -1296,14 +1365,18 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
     later = any(v > i for v in verbs)
     word = units[i].tokens[0].word
-    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood") or light
+    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood", "stuck",
+                                                                          "broken") or light
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
         return np
     return None
 
 
-def _modifier_owner(units, i, phrases, subject, main_verbs) -> list[Entity]:
+def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) -> list[Entity]:
     before = [p for p in phrases if p.index < i and p.entity is not None]
+    last_verb = max([v for v in main_verbs if v < i] + [v for v in (participles or {}) if v < i], default=None)
+    if last_verb is not None and participles and last_verb in participles:
+        return participles[last_verb]  # "a van stopped beside it in the right lane": the van's
     verb_before = [v for v in main_verbs if v < i]
     if not verb_before:
         if before:
@@ -1449,9 +1522,12 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         if not f & {"behind", "level", "overtaking"}:
             f.add("ahead")
     side = _side_of(f)
+    lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
+    if "toward" in f and not lane_move and not (side and f"bare_{side}" not in f):
+        f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no
     if "road_straight" in f and not person:  # where it comes from wins over where it heads
         return ("road_of_straight", False) if junction else ("front_left", True)
     for s in SIDES:
@@ -1460,11 +1536,10 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "destination" in f:
         return "at_the_destination", False
     if "cross_road" in f and not person:
-        return f"road_of_{side or 'left'}_turn", False
+        return f"road_of_{side or UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
         return "near_the_crosswalk", False
     from_side = next((s for s in SIDES if f"from_{s}" in f), None)
-    lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     if from_side and not person and junction and not lane_move:
         return f"road_of_{from_side}_turn", False
     bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
@@ -1473,25 +1548,29 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             and e.road_type != "shoulder" and "ego_lane" not in f:
         return f"road_of_{bare}_turn", False
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
-        return "road_of_left_turn", False
+        return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
     if "ego_lane" in f and not lane_move and "into_ego_lane" not in f:
         side = None
     if side is None and "overtaking" in f:
-        side = "left"
-    if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f):
-        side = side or ("right" if e.type == "cyclist" else "left")
+        side = UNSPECIFIED["side_of_an_overtaker"]
+    if action == "block" and side and "from_lane" in f and not behind:
+        ahead = True  # "cuts off the ego from the right adjacent lane"
+    if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
+                                                                 or f"bare_{side}" in f or f"from_{side}" in f):
+        side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
-        side = "right" if e.type in V.VULNERABLE_TYPES else "left"
+        side = UNSPECIFIED["side_beside_a_person" if e.type in V.VULNERABLE_TYPES else "side_beside_a_vehicle"]
     if person and crossing and side is None and has_crosswalk and not behind:
         return "near_the_crosswalk", False
-    if bare and action == "stop" and not person and not f & {"ahead", "behind", "level"}:
-        ahead = True  # "a bus parked on the right": met ahead
+    if side and action == "stop" and "parked" in f and not person and \
+            not f & {"ahead", "behind", "level", "overtaking"} and "target_lane" not in f:
+        ahead = True  # "a bus parked on the right", "a lorry parked on the nearside": met ahead
     if walking:
         if has_crosswalk and side is None and not f & {"ahead", "behind"}:
             return "near_the_crosswalk", False  # standing by the crossing
-        side = side or "right"
+        side = side or UNSPECIFIED["side_of_a_sidewalk_walker"]
     if side is not None:
         if person and crossing and not behind:
             return f"front_{side}", False
@@ -1522,7 +1601,7 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action in ("turn_left", "turn_right"):
         return action
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or 'left'}"
+        return f"turn_{direction or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action == "lane_change":
@@ -1664,6 +1743,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     stage_count = 1 + max([e.stage for e in r.entities] + [a[0] for e in r.entities for a in e.actions] + [0])
     stages: list[list[Agent]] = [[] for _ in range(stage_count)]
     ego_action, _ = _action(ego_entity, 0) if ego_entity else (None, None)
+    ego_action = _sideways(ego_action, junction)
     ego_type = ego_entity.type if ego_entity else "car"
     ego = Agent(name="ego", type=ego_type if ego_type in V.EGO_TYPES else "car", is_ego=True,
                 action=_ego_action(ego_entity, ego_action, 0),
@@ -1673,7 +1753,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     if ego_entity is not None:
         for k in range(1, stage_count):
             if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
-                action = _ego_action(ego_entity, _action(ego_entity, k)[0], k)
+                action = _ego_action(ego_entity, _sideways(_action(ego_entity, k)[0], junction), k)
                 if language_allows_later_ego():
                     stages[k].append(Agent(name="ego", type=ego.type, is_ego=True, action=action))
                 else:
@@ -1684,6 +1764,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     resolved: dict[int, tuple[str, str]] = {}
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
+    heading = next((f for f in (ego_entity.features if ego_entity else ()) if f.startswith("compass_")), None)
+    for e in others:  # "the AV was travelling north ... a van heading south": compass headings against the ego's
+        own = next((f for f in e.features if f.startswith("compass_")), None)
+        if heading and own and own != heading:
+            e.features.add("road_straight" if COMPASS_OPPOSITE[heading] == own else "cross_road")
     if ego_entity is not None and "first_in_line" in ego_entity.features:
         for e in others:  # "three cars including the ego wait, the ego is first": the others queue behind it
             group = e.parent or e
@@ -1691,6 +1776,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
+        action = _sideways(action, junction)
         if "into_ego_lane" in e.features and e.type == "pedestrian":
             action = "cross"  # "a child runs into the ego's path"
         if e.type == "pedestrian" and action in (None, "move") and "on_sidewalk" not in e.features:
@@ -1727,8 +1813,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         for n in range(e.count):
             if "both_sides" in e.features:  # "cars cutting in from different directions": one on each side
                 side = SIDES[n % 2]
-                member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"})
-                                | {f"side_{side}", "from_lane", "ahead"}, road_type=e.road_type)
+                placed = {f"from_{side}"} if junction else {f"side_{side}", "from_lane", "ahead"}
+                member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"}) | placed,
+                                road_type=e.road_type)
                 position, _ = _position(member, action, junction, has_crosswalk, target_side)
                 final = _final_action(member, action, direction, position)
                 first_name = None
@@ -1749,6 +1836,14 @@ def _placed(e: Entity) -> bool:
                               "road_straight", "road_left", "road_right", "destination", "crosswalk"})
 
 
+def _sideways(action: str | None, junction: bool) -> str | None:
+    """'goes right': a turn at a junction, a lane change elsewhere."""
+    if action and action.startswith("sideways_"):
+        side = action.rsplit("_", 1)[-1]
+        return f"turn_{side}" if junction else f"lane_{side}"
+    return action
+
+
 def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
     if e is None or action is None:
         return "go_straight"
@@ -1757,11 +1852,11 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
     if action in ("turn_left", "turn_right", "stop"):
         return action
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or 'left'}"
+        return f"turn_{direction or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
-        return f"change_lane_to_{direction or 'left'}"  # "pulling out to pass": into the lane on the left
+        return f"change_lane_to_{direction or UNSPECIFIED['ego_lane_change_direction']}"  # "pulling out to pass"
     return "go_straight"
 
 
@@ -1769,6 +1864,9 @@ def _unknown(r: _Reader) -> list[str]:
     lex = lexicon()
     out = []
     for t in r.tokens:
+        if t.misspelt:
+            out.append(f"{t.misspelt} (read as {t.word})")
+            continue
         if t.index in r.used or t.word == "," or read_number(t.word) is not None:
             continue
         if t.word in lex.function_words or t.base in lex.vocabulary or t.word in lex.vocabulary:
