@@ -151,9 +151,9 @@ def rank(scenario: Scenario, candidates: list[tuple[Approach, MapIndex]], seed: 
 def spread(tied: list[Ranked], seed: int, salt: str = "") -> list[Ranked]:
     """Equally ranked candidates in the order seed `seed` offers them. The roads (both directions of a road
     are one road, as the paper counts them) are dealt one map at a time in turn, maps and each map's roads
-    in a fixed pseudo-random order (by `salt`, not by the seed), and seed s takes the deal's roads s,
-    s + step, s + 2 step, ... (step about 0.618 of their number, coprime with it): any run of consecutive seeds
-    starts on different roads, spread over every map of the library, and when a road cannot host the scene
+    in a fixed pseudo-random order (a hash of their names and `salt`, the scene's name; not the seed), and
+    seed s takes the deal's roads s, s + step, s + 2 step, ... (step about 0.618 of their number, coprime with
+    it): any run of consecutive seeds starts on different roads, spread over every map of the library, and when a road cannot host the scene
     the next tried is far along the deal, so neighbouring seeds do not all fall back onto one road. The same
     seed always gives the same order. A road's other direction is offered after every road was once."""
     def shuffled(*key: str) -> int:  # a fixed pseudo-random order, the same in every subset of the library
