@@ -64,3 +64,16 @@ def test_no_vehicle_starts_on_a_lane_still_opening(shared):
     u = frame.u_on_approach(12.25)
     assert -3 not in frame.lanes_at(u) and -4 in frame.lanes_at(u)
     assert -3 in frame.lanes_at(frame.u_on_approach(80.0))
+
+
+def test_a_crossing_away_from_a_junction_is_mid_block():
+    """'not at junction' with a pedestrian by the crossing: a mid-block crossing, never one at a junction's mouth."""
+    from ttsgc.binding.rank import mid_block
+
+    library = load_library()
+    scene_text = ('scenario "mid-block"\nroad {\n    not at junction\n}\nstage s {\n    ego car go_straight\n'
+                  '    pedestrian p1 at near_the_crosswalk cross_the_road when ego within 20m\n}\n')
+    for seed in range(4):
+        scene = bind(parse(scene_text), library, seed=seed)
+        approach = next(m for m in library if m.name == scene.map_name).by_id[scene.approach]
+        assert any(mid_block(approach, u) for u in approach.crosswalks), (scene.map_name, scene.approach)

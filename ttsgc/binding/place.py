@@ -18,7 +18,7 @@ from pydantic import BaseModel, ConfigDict
 
 from ttsgc import vocabulary as V
 from ttsgc.binding.rank import (AHEAD, BEHIND, DEFAULT_GAP_M, JUNCTION_SIDE, LEFT_SIDE, RIGHT_SIDE, TURN_OF_ACTION,
-                                ego_movement)
+                                ego_movement, mid_block)
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.roads.index import Approach, MapIndex, Turn, approach_id, upstream_chain
 from ttsgc.roads.opendrive import OpenDrive, Road
@@ -313,7 +313,9 @@ class Placer:
     def _crosswalk_u(self) -> float | None:
         """The crossing nearest the approach's end, in stretch coordinates."""
         start = self.frame.segments[-1][2]
-        spots = [start + u for u in self.frame.approach.crosswalks]
+        approach = self.frame.approach
+        away = self.scenario.road.junction is False  # then the crossing is mid-block, well before a junction
+        spots = [start + u for u in approach.crosswalks if not away or mid_block(approach, u)]
         return max(spots) if spots else None
 
     # -- other agents -------------------------------------------------------------------------------------

@@ -90,7 +90,7 @@ def requirements(scenario: Scenario) -> list[Requirement]:
         if where in JUNCTION_SIDE and agent.road_type == "driving":
             queued[where] = queued.get(where, 2.0) + V.BODIES[agent.type][0] + (
                 agent.gap_m if agent.gap_m is not None else DEFAULT_GAP_M[agent.behavior])
-        out += _agent_requirements(agent, movement, queued)
+        out += _agent_requirements(agent, movement, queued, away=scenario.road.junction is False)
     space = lane_space_needed(scenario)
     if scenario.road.junction is False:  # and well before the junction, where the road ends at one
         out.append(Requirement(f"length>={space:.0f}m", lambda a, i, n=space: a.run_up >= n + (
@@ -100,7 +100,9 @@ def requirements(scenario: Scenario) -> list[Requirement]:
     return out
 
 
-def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, float]) -> list[Requirement]:
+def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, float], away: bool = False
+                        ) -> list[Requirement]:
+    """away: the scene is not at a junction, so a crossing must be mid-block, well before any junction."""
     out = []
     where, name = agent.relative_to_ego, agent.name
     side = JUNCTION_SIDE.get(where or "")
@@ -117,13 +119,19 @@ def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, fl
         out.append(Requirement(f"destination ({name})",
                                lambda a, i, m=movement: a.junction is None if m is None else bool(a.turns_to(m))))
     elif where == "near_the_crosswalk":  # a crossing the ego has yet to reach
-        out.append(Requirement(f"crosswalk ({name})",
-                               lambda a, i: any(a.run_up - a.length + u >= CROSSWALK_RUN_UP_M for u in a.crosswalks)))
+        out.append(Requirement(f"{'mid-block ' if away else ''}crosswalk ({name})",
+                               lambda a, i: any(a.run_up - a.length + u >= CROSSWALK_RUN_UP_M
+                                                and (not away or mid_block(a, u)) for u in a.crosswalks)))
     if agent.road_type == "shoulder" and side is None:
         out.append(Requirement(f"shoulder ({name})", lambda a, i: a.shoulder))
     elif agent.road_type == "sidewalk" and side is None:  # people stand on a sidewalk, else on a shoulder
         out.append(Requirement(f"kerb ({name})", lambda a, i: a.sidewalk or a.shoulder))
     return out
+
+
+def mid_block(approach: Approach, u: float) -> bool:
+    """A crossing at u (metres from the approach's start) well before the junction the approach ends at."""
+    return approach.junction is None or approach.length - u >= JUNCTION_CLEARANCE_M
 
 
 @dataclass(frozen=True)
