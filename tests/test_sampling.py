@@ -82,3 +82,17 @@ def test_a_prompts_own_ego_action_wins_over_the_kind():
         result = lower_prompt(prompt, "offline", seed=seed)
         assert result.kind == "intersection" and result.scenario.ego.action == "turn_left"
         assert "sampled ego" not in result.tsg(prompt)
+
+
+def test_a_side_the_sentence_leaves_open_is_drawn_and_noted():
+    """'A car cuts in front of the ego': from which side is left open; the car and its cut-in stay."""
+    prompt = "A car cuts in front of the ego."
+    scenes = [lower_prompt(prompt, "offline", seed=seed) for seed in range(4)]
+    cutters = [next(a for a in s.scenario.agents() if not a.is_ego) for s in scenes]
+    assert cutters[0].relative_to_ego == "front_left"  # seed 0: the corpus conventions' reading
+    assert {c.relative_to_ego for c in cutters} == {"front_left", "front_right"}
+    assert all(c.type == "car" and c.action.startswith("change_lane_to_") for c in cutters)
+    assert all(c.action == ("change_lane_to_right" if c.relative_to_ego == "front_left" else "change_lane_to_left")
+               for c in cutters)
+    drawn = [s for s in scenes[1:] if "side of a cut in" in s.tsg(prompt)]
+    assert drawn and "sampled" not in scenes[0].tsg(prompt)

@@ -28,6 +28,7 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, lexicon, matches, read_number, tokenize
+from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
 
@@ -41,7 +42,7 @@ MAX_AGENTS_PER_MENTION = 12
 BARE_PLURAL_COUNT = 2  # "cars pass", "a crowd of children": the gold conventions' count for an unstated size
 # What a sentence leaves open, chosen in one place (the corpus conventions' readings; a seeded sampler of the
 # unspecified can vary these and nothing else).
-UNSPECIFIED = {
+UNSPECIFIED = OpenChoices({  # other seeds draw from templates/unspecified.toml (sampling.py)
     "side_of_a_crossing_road": "left",  # "a vehicle from a perpendicular direction"
     "side_of_an_overtaker": "left",
     "side_of_a_cut_in": "left", "side_of_a_cyclist_cut_in": "right",
@@ -49,7 +50,7 @@ UNSPECIFIED = {
     "side_of_a_sidewalk_walker": "right",
     "turn_direction": "left",  # "turns" with no side
     "ego_lane_change_direction": "left",  # "the ego pulls out to pass"
-}
+})
 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
 DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone"}
@@ -1654,6 +1655,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     if not tokens:
         raise LoweringError("the prompt is empty")
     r = _Reader(tokens, _units(tokens))
+    UNSPECIFIED.draw_for(seed)
     road = _road(r)
     weather = _weather(r)
     asked = _asked_kind(tokens)
@@ -1708,7 +1710,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     draft = Scenario.model_construct(name=_name(prompt), seed=None, weather=weather, road=road,
                                      stages=stage_models, comments={})
     inferred = infer_plan(draft, frozenset(oncoming))
-    notes = r.notes + inferred.notes
+    notes = r.notes + UNSPECIFIED.chosen() + inferred.notes
     candidate = inferred.scenario
     problems = find_problems(candidate)
     if problems:

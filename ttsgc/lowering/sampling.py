@@ -16,6 +16,8 @@ from __future__ import annotations
 import random
 import tomllib
 import zlib
+from collections.abc import Mapping
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 
 from ttsgc.errors import ExitCode, TtsgcError
@@ -139,3 +141,49 @@ def sample_kind(kind: str, seed: int) -> Sampled:
 
 def _of(options: list) -> str:
     return f" (of {len(options)})" if len(options) > 1 else ""
+
+
+# -- what a sentence leaves open, in the lowering's own table ---------------------------------------------
+
+_OPEN_SEED: ContextVar[int] = ContextVar("ttsgc_open_seed", default=0)
+_OPEN_CHOSEN: ContextVar[list | None] = ContextVar("ttsgc_open_chosen", default=None)
+
+
+class OpenChoices(Mapping):
+    """The lowering's table of what a sentence leaves open (which side a crossing road is on when the text
+    does not say, which way "turns" goes...). Seed 0 reads the conventions' values, the table's own; other
+    seeds draw from templates/unspecified.toml, each key cycled in a seeded order like a kind's lists. The
+    lowering reads it as a plain mapping; `draw_for(seed)` starts one lowering (a context variable, so
+    concurrent lowerings do not share a seed) and `chosen()` lists what was drawn, for the scene's comments."""
+
+    def __init__(self, conventions: dict[str, str]):
+        self.conventions = dict(conventions)
+
+    def __getitem__(self, key: str) -> str:
+        default, seed = self.conventions[key], _OPEN_SEED.get()
+        options = [default] + [o for o in _open_options().get(key, []) if o != default]
+        value = default if seed == 0 else _Draw("unspecified", seed).pick(key, options)
+        chosen = _OPEN_CHOSEN.get()
+        if chosen is not None and len(options) > 1 and seed != 0:
+            note = f"sampled (seed {seed}): {key.replace('_', ' ')} {value} (of {', '.join(options)})"
+            if note not in chosen:
+                chosen.append(note)
+        return value
+
+    def __iter__(self):
+        return iter(self.conventions)
+
+    def __len__(self) -> int:
+        return len(self.conventions)
+
+    def draw_for(self, seed: int) -> None:
+        _OPEN_SEED.set(seed)
+        _OPEN_CHOSEN.set([])
+
+    def chosen(self) -> list[str]:
+        return list(_OPEN_CHOSEN.get() or [])
+
+
+def _open_options() -> dict[str, list[str]]:
+    path = resource_dir("templates") / "unspecified.toml"
+    return tomllib.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
