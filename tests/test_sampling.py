@@ -96,3 +96,15 @@ def test_a_side_the_sentence_leaves_open_is_drawn_and_noted():
                for c in cutters)
     drawn = [s for s in scenes[1:] if "side of a cut in" in s.tsg(prompt)]
     assert drawn and "sampled" not in scenes[0].tsg(prompt)
+
+
+def test_a_vague_count_and_a_general_noun_are_drawn_within_their_ranges():
+    few = [lower_prompt("A few cars drive ahead of the ego.", "offline", seed=s).scenario for s in range(5)]
+    counts = [sum(not a.is_ego for a in s.agents()) for s in few]
+    assert counts[0] == 2 and set(counts) == {2, 3, 4}  # seed 0: the conventions' reading; then 2 to 4
+    assert all(a.type == "car" and a.relative_to_ego == "front" for s in few for a in s.agents() if not a.is_ego)
+    vehicles = [lower_prompt("A vehicle is ahead of the ego.", "offline", seed=s).scenario for s in range(5)]
+    types = [next(a for a in s.agents() if not a.is_ego).type for s in vehicles]
+    assert types[0] == "car" and len(set(types)) >= 3 and set(types) <= {"car", "truck", "bus", "motorcycle"}
+    named = [lower_prompt("A truck is ahead of the ego.", "offline", seed=s).scenario for s in range(5)]
+    assert all(next(a for a in s.agents() if not a.is_ego).type == "truck" for s in named)

@@ -796,6 +796,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
     if "more" in words and "than" in words and count is not None:
         count += 1
+    if count is not None and 1 < count < TOO_LARGE and words & {"some", "more"}:  # "a few", "more than ten"
+        count = UNSPECIFIED.vague_count(count, len(r.entities))
     bare = not words and count is None and not plural and not label and not (
         head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
     if bare and any(e.head == u.base and not e.is_ego and e.count == 1 for e in r.entities):
@@ -838,6 +840,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         r.notes.append(f"repaired: {count} {u.base}s is more than {MAX_AGENTS_PER_MENTION} in one mention; "
                        f"used {MAX_AGENTS_PER_MENTION}")
         count = MAX_AGENTS_PER_MENTION
+    if u.meaning == "generic" or u.base == "vehicle":  # "a vehicle": its type is left open
+        kind = UNSPECIFIED.agent_type(kind, len(r.entities))
     entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
                     generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
     if u.base.split()[0] in ("lead", "leading"):

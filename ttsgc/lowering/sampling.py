@@ -176,6 +176,27 @@ class OpenChoices(Mapping):
     def __len__(self) -> int:
         return len(self.conventions)
 
+    def agent_type(self, reading: str, mention: int) -> str:
+        """The type of an agent named by a general noun ("a vehicle"): the reading for seed 0, else drawn."""
+        return self._draw(f"vehicle type {mention}", "type of a vehicle", reading,
+                          _open_options().get("type_of_a_vehicle", []))
+
+    def vague_count(self, reading: int, mention: int) -> int:
+        """A count said vaguely ("a few cars", "more than ten"): the reading for seed 0, else up to
+        `vague_count_spread` more."""
+        spread = int(_open_options().get("vague_count_spread", 0))
+        return int(self._draw(f"vague count {mention}", "vague count", str(reading),
+                              [str(reading + k) for k in range(spread + 1)]))
+
+    def _draw(self, slot: str, what: str, reading: str, options: list[str]) -> str:
+        options = [reading] + [o for o in options if o != reading]
+        seed = _OPEN_SEED.get()
+        value = reading if seed == 0 else _Draw("unspecified", seed).pick(slot, options)
+        chosen = _OPEN_CHOSEN.get()
+        if chosen is not None and len(options) > 1 and seed != 0:
+            chosen.append(f"sampled (seed {seed}): {what} {value} (of {', '.join(options)})")
+        return value
+
     def draw_for(self, seed: int) -> None:
         _OPEN_SEED.set(seed)
         _OPEN_CHOSEN.set([])
