@@ -1711,7 +1711,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         stages[0] = [ego] + [a for a in template.stages[0].agents if not a.is_ego] + stages[0][1:]
     stage_models = tuple(Stage(name=_stage_name(k, len(stages)), agents=tuple(agents))
                          for k, agents in enumerate(stages) if agents)
-    draft = Scenario.model_construct(name=_name(prompt), seed=None, weather=weather, road=road,
+    draft = Scenario.model_construct(name=_name(prompt), seed=seed or None, weather=weather, road=road,
                                      stages=stage_models, comments={})
     inferred = infer_plan(draft, frozenset(oncoming))
     notes = r.notes + UNSPECIFIED.chosen() + inferred.notes
