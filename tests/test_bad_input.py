@@ -353,8 +353,9 @@ def test_validate_reads_the_map_safely_before_netconvert_sees_it(tmp_path, capsy
     scene = _compiled_unchecked(tmp_path, capsys)
     hostile = tmp_path / "hostile.xodr"
     hostile.write_text(map_text)
-    text = scene.read_text()
-    scene.write_text(text.replace('filepath="fourway_1lane_stop.xodr"', f'filepath="{hostile}"'))
+    text, swapped = re.subn(r'(<LogicFile filepath=")[^"]*"', rf'\g<1>{hostile}"', scene.read_text())
+    assert swapped == 1
+    scene.write_text(text)
     monkeypatch.setattr(network, "netconvert_binary", lambda: pytest.fail("netconvert saw the file"))
     code, _, err = _run(capsys, "validate", scene)
     assert code == ExitCode.MAP_ERROR and f"{hostile}:" in err

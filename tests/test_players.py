@@ -15,7 +15,7 @@ from lxml import etree
 from conftest import EXAMPLES, SHARED, example_scenarios
 from ttsgc.cli import main
 from ttsgc.language import parse_file
-from ttsgc.pipeline import compile_scenario, write
+from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 from ttsgc.simulate import judge as J
 from ttsgc.simulate.trace import Body, Sample, Trace
 from ttsgc.simulate.validate import validate
@@ -31,9 +31,10 @@ def esmini(monkeypatch):
     return ESMINI
 
 
-def _compiled(name: str, folder: Path, version: str = "1.3") -> Path:
+def _compiled(name: str, folder: Path, version: str = "1.3", only: tuple[str, str] | None = None) -> Path:
+    """An example on its best-ranked road, or on the road `only` names (a test that needs its geometry)."""
     out = folder / f"{name}.xosc"
-    write(compile_scenario(parse_file(EXAMPLES / f"{name}.tsg"), out, version=version), out)
+    write(compile_scenario(parse_file(EXAMPLES / f"{name}.tsg"), out, version=version, only=only), out)
     return out
 
 
@@ -56,7 +57,10 @@ def _agent(report, player: str, name: str):
 
 @pytest.mark.parametrize("path", example_scenarios(), ids=lambda p: p.stem)
 def test_every_agent_of_every_example_does_its_action_in_esmini_and_sumo_agrees(path, esmini, tmp_path):
-    report = validate(_compiled(path.stem, tmp_path), "all")
+    """The file `ttsgc compile` writes: its best-ranked road, else the next one the players prove it on."""
+    out = tmp_path / f"{path.stem}.xosc"
+    write(compile_and_prove(parse_file(path), out, log=lambda m: None)[0], out)
+    report = validate(out, "all")
     assert report.players == ["sumo", "esmini"]
     played, proven = _verdict(report, "esmini"), _verdict(report, "sumo")
     for in_esmini, in_sumo in zip(played.agents, proven.agents):
@@ -78,7 +82,7 @@ def test_every_example_in_openscenario_1_0_does_its_action_in_esmini(path, esmin
 def test_a_lane_position_faces_along_its_lane_without_an_orientation(esmini, tmp_path):
     """A relative h=pi on a left lane turns the body against the traffic (esmini, CARLA): the ego then
     leaves the junction behind instead of turning left."""
-    scene = _compiled("left_turn_oncoming", tmp_path)
+    scene = _compiled("left_turn_oncoming", tmp_path, only=("town_row", "3:bwd"))  # the ego on a left lane
     assert _agent(validate(scene, "all"), "esmini", "ego").achieved
 
     def turned(root):
@@ -88,6 +92,15 @@ def test_a_lane_position_faces_along_its_lane_without_an_orientation(esmini, tmp
     report = validate(_edit(scene, turned), "all")
     assert not _agent(report, "esmini", "ego").achieved and not _agent(report, "sumo", "ego").achieved
     assert any("against the driving direction" in p for p in _verdict(report, "sumo").problems)
+
+
+def test_a_lane_change_that_starts_with_the_scene_is_seen_from_the_lane_it_was_placed_on(esmini, tmp_path):
+    """esmini reports the lane a body changes to from its first sample on: the change is judged from the lane
+    the file placed it on (here a left lane, driving against s, before a junction)."""
+    scene = _compiled("ambulance_from_behind", tmp_path, only=("fourway_2lane_lights", "3:bwd"))
+    report = validate(scene, "all")
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "ego").reason == "changed 1 lane(s) to the right", report.table()
 
 
 def test_agents_of_a_later_stage_enter_with_an_add_entity_action(esmini, tmp_path):

@@ -43,6 +43,16 @@ def golden_copy(folder: Path, name: str = "rainy_night_cut_in") -> Path:
     return scene
 
 
+def golden_values(scene: Path) -> dict[str, str]:
+    """What the edits below change, read from the file they edit (its road is whichever ranked first): the map,
+    the first lane position's road, lane and s, the first target speed."""
+    root = etree.parse(str(scene)).getroot()
+    first = root.find(".//LanePosition")
+    return {"map": root.find("RoadNetwork/LogicFile").get("filepath"), "road": first.get("roadId"),
+            "lane": first.get("laneId"), "s": first.get("s"),
+            "speed": root.find(".//AbsoluteTargetSpeed").get("value")}
+
+
 def edit(scene: Path, old: str, new: str, count: int = 1) -> Path:
     text = scene.read_text()
     assert old in text, old
@@ -55,23 +65,28 @@ def line_of(scene: Path, fragment: str) -> int:
 
 
 @pytest.mark.parametrize("old, new, message", [
-    ('<LogicFile filepath="fourway_3lane_lights.xodr"/>', "<LogicFile/>", "attribute 'filepath' is required"),
+    ('<LogicFile filepath="{map}"/>', "<LogicFile/>", "attribute 'filepath' is required"),
     ('delay="0.0"', 'delay="soon"', "'soon' is not a valid value"),
-    ('s="12.25"', 's="abc"', "'abc' is not a valid value"),
-    ('s="12.25"', 's="nan"', "'nan' is not a valid value"),
-    ('s="12.25"', 's="NaN"', "LanePosition s = 'NaN' is not a finite number"),
-    ('s="12.25"', 's="1e308"', "LanePosition s = '1e308' is out of range"),
-    ('s="12.25"', 's="-INF"', "LanePosition s = '-INF' is not a finite number"),
-    ('laneId="-1" ', "", "attribute 'laneId' is required"),
-    ('laneId="-1" ', 'laneId="left" ', "LanePosition laneId = 'left' is not a number"),
-    ('laneId="-1" ', 'laneId="-1.5" ', "LanePosition laneId = '-1.5' is not a whole number"),
+    ('s="{s}"', 's="abc"', "'abc' is not a valid value"),
+    ('s="{s}"', 's="nan"', "'nan' is not a valid value"),
+    ('s="{s}"', 's="NaN"', "LanePosition s = 'NaN' is not a finite number"),
+    ('s="{s}"', 's="1e308"', "LanePosition s = '1e308' is out of range"),
+    ('s="{s}"', 's="-INF"', "LanePosition s = '-INF' is not a finite number"),
+    ('roadId="{road}" laneId="{lane}" ', 'roadId="{road}" ', "attribute 'laneId' is required"),
+    ('roadId="{road}" laneId="{lane}" ', 'roadId="{road}" laneId="left" ',
+     "LanePosition laneId = 'left' is not a number"),
+    ('roadId="{road}" laneId="{lane}" ', 'roadId="{road}" laneId="-1.5" ',
+     "LanePosition laneId = '-1.5' is not a whole number"),
     ('length="4.5"', 'length="1e9"', "Dimensions length = '1e9' is out of range"),
-    ('<AbsoluteTargetSpeed value="14.167"/>', '<AbsoluteTargetSpeed value="INF"/>',
+    ('<AbsoluteTargetSpeed value="{speed}"/>', '<AbsoluteTargetSpeed value="INF"/>',
      "AbsoluteTargetSpeed value = 'INF' is not a finite number"),
 ])
 def test_bad_values_are_refused_with_file_and_line(tmp_path, old, new, message):
-    scene = edit(golden_copy(tmp_path), old, new)
-    line = line_of(scene, new.strip() or '<LanePosition roadId="4" s="12.25"')
+    scene = golden_copy(tmp_path)
+    values = golden_values(scene)
+    old, new = old.format(**values), new.format(**values)
+    edit(scene, old, new)
+    line = line_of(scene, new.strip())
     with pytest.raises(XoscFileError, match=rf"{re.escape(str(scene))}:{line}: .*{re.escape(message)}"):
         load_scenario(scene)
 
@@ -120,7 +135,8 @@ def test_references_to_what_does_not_exist_are_refused(tmp_path):
     scene = edit(golden_copy(tmp_path), 'entityRef="ego"', 'entityRef="egg"')
     with pytest.raises(XoscFileError, match=r"names the entity 'egg', which the file does not declare"):
         load_scenario(scene)
-    scene = edit(golden_copy(tmp_path / "b"), 'filepath="fourway_3lane_lights.xodr"', 'filepath="maps/none.xodr"')
+    scene = golden_copy(tmp_path / "b")
+    scene = edit(scene, f'filepath="{golden_values(scene)["map"]}"', 'filepath="maps/none.xodr"')
     with pytest.raises(XoscFileError, match=r"the road network 'maps/none.xodr' does not exist") as error:
         load_scenario(scene)
     assert error.value.exit_code == 3
@@ -170,13 +186,17 @@ def test_a_parameterised_emitted_scene_plays_as_its_concrete_variant(tmp_path):
     concrete = golden_copy(tmp_path)
     parameterised = tmp_path / "parameterised.xosc"
     text = concrete.read_text()
+    values = golden_values(concrete)
+    speed_mm = round(float(values["speed"]) * 1000)
+    whole, fraction = values["s"].split(".") if "." in values["s"] else (values["s"], "0")
+    assert speed_mm / 1000 == float(values["speed"]) and int(whole) + float(f"0.{fraction}") == float(values["s"])
     declarations = ('<ParameterDeclarations>\n'
-                    '    <ParameterDeclaration name="EgoSpeedMm" parameterType="int" value="14167"/>\n'
-                    '    <ParameterDeclaration name="StartS" parameterType="double" value="12"/>\n'
+                    f'    <ParameterDeclaration name="EgoSpeedMm" parameterType="int" value="{speed_mm}"/>\n'
+                    f'    <ParameterDeclaration name="StartS" parameterType="double" value="{whole}"/>\n'
                     '  </ParameterDeclarations>\n  <CatalogLocations/>')
-    for old, new in [("<CatalogLocations/>", declarations), ('<AbsoluteTargetSpeed value="14.167"/>',
+    for old, new in [("<CatalogLocations/>", declarations), (f'<AbsoluteTargetSpeed value="{values["speed"]}"/>',
                                                              '<AbsoluteTargetSpeed value="${$EgoSpeedMm / 1000}"/>'),
-                     ('s="12.25"', 's="${$StartS + 0.25}"')]:
+                     (f's="{values["s"]}"', f's="${{$StartS + 0.{fraction}}}"')]:
         assert old in text
         text = text.replace(old, new, 1)
     parameterised.write_text(text)

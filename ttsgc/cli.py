@@ -641,7 +641,7 @@ def build_parser() -> argparse.ArgumentParser:
     junction = query.add_mutually_exclusive_group()
     junction.add_argument("--junction", dest="junction", action="store_true", default=None,
                           help="ends at a junction")
-    junction.add_argument("--no-junction", dest="junction", action="store_false", help="does not end at a junction")
+    junction.add_argument("--no-junction", dest="junction", action="store_false", help="leaves room for a scene well before any junction")
     query.add_argument("--has", action="append", default=[], type=_road_word, metavar="WORD",
                        help="a required signal or object (repeatable)")
     query.add_argument("--without", action="append", default=[], type=_road_word, metavar="WORD",

@@ -85,6 +85,10 @@ def load_gold(path: Path) -> Scenario:
 # -- suites ---------------------------------------------------------------------------------------------
 
 PAPER_BEST = {"AA": 0.975, "RA": 0.940, "SA": 0.800, "AD": 0.686, "RD": 0.975}
+# The paper's diversity table (Table "Evaluation results for scene diversity"), per scenario.
+PAPER_DIVERSITY = {"daily_traffic": (0.789, 1.0, 1.0), "intersection": (0.833, 1.0, 0.8),
+                   "crushing": (0.5, 1.0, 0.4), "blocking": (0.75, 1.0, 0.8), "cut_off": (0.6, 1.0, 0.8),
+                   "two_wheels": (0.714, 0.8, 0.6), "emergency": (0.5, 1.0, 1.0), "weather": (0.8, 1.0, 1.0)}
 KINDS_OF_TTSG = {"blocking": "critical", "crushing": "critical", "cut_off": "critical", "daily_traffic": "normal",
                  "intersection": "normal", "two_wheels": "normal", "emergency": "conditional",
                  "weather": "conditional"}
@@ -99,6 +103,7 @@ class Case:
     plan: Path | None = None  # a TTSG plan, imported
     road_info: Path | None = None
     gold: Path | None = None  # the hand-written scene
+    generation: int = 0  # its place among the cases of its group (TTSG plans: the kind's runs)
 
 
 @dataclass
@@ -117,6 +122,7 @@ class Run:
     seconds: dict = field(default_factory=dict)
     paper_road: str | None = None  # the TTSG plan's own road, and whether the scene fit it
     paper_road_fit: bool | None = None
+    players: dict = field(default_factory=dict)  # player -> the scene proven in it (SA per player)
 
 
 def load_suite(folder: Path) -> list[Case]:
@@ -133,11 +139,14 @@ def load_suite(folder: Path) -> list[Case]:
         if not isinstance(kinds, dict):
             raise UsageError(f"{folder / 'suite.toml'}: 'kinds' must be a table of case = kind")
     cases = []
+    generations: Counter = Counter()
     for plan in sorted(folder.glob("**/agent_output.json")):
         group = plan.parent.parent.name
         info = plan.with_name("road_info.json")
         cases.append(Case(f"{group}/{plan.parent.name}", kinds.get(group, KINDS_OF_TTSG.get(group, "normal")),
-                          group=group, plan=plan, road_info=info if info.is_file() else None))
+                          group=group, plan=plan, road_info=info if info.is_file() else None,
+                          generation=generations[group]))
+        generations[group] += 1
     for prompt in sorted(folder.glob("*.txt")):
         gold = prompt.with_suffix(".tsg")
         cases.append(Case(prompt.stem, kinds.get(prompt.stem, "normal"), group=prompt.stem, prompt=prompt,
@@ -154,6 +163,7 @@ def run_case(case: Case, seed: int, maps, method: str = "offline", simulate: boo
     from ttsgc.ttsg_import import import_plan
 
     run = Run(case.name, case.kind, seed, case.group)
+    seed = generation_seed(case, seed)
     t = time.perf_counter()
     try:
         if case.plan is not None:
@@ -181,15 +191,22 @@ def run_case(case: Case, seed: int, maps, method: str = "offline", simulate: boo
         outcome = None
         if paper is not None:
             run.paper_road = f"{paper.town} {paper.approach}"
-            try:  # the road the paper chose, when its town is in the library and the scene compiles on it
+            try:  # the road the paper chose, when its town is in the library and the scene is proven on it
                 outcome = compile_run((paper.town, paper.approach))
-            except TtsgcError:
+                if outcome[1] is not None and not outcome[1].ok:
+                    outcome = None
+            except Exception:  # noqa: BLE001 - it does not fit there: the ranked roads are tried next
+                outcome = None
+            if outcome is None:
                 t = time.perf_counter()
             run.paper_road_fit = outcome is not None
         try:
             compiled, report = outcome or compile_run(None)
         except TtsgcError as exc:
             run.failed_at, run.reason = "compile", str(exc).splitlines()[0]
+            return run
+        except Exception as exc:  # noqa: BLE001 - a fault of the player on one run is that run's failure
+            run.failed_at, run.reason = "simulate", f"internal error: {type(exc).__name__}: {exc}"[:300]
             return run
         elapsed = time.perf_counter() - t
         run.road = f"{compiled.scene.map_name} {compiled.scene.approach}"
@@ -199,11 +216,28 @@ def run_case(case: Case, seed: int, maps, method: str = "offline", simulate: boo
             return run
         run.seconds["compile+simulate"] = elapsed
         run.ok = report.ok
+        run.players.update({v.player: v.ok for v in report.verdicts})
         if not report.ok:
             failed = [f"{a.name}: {a.reason}" for a in report.agents if not a.achieved]
             failed += [f"collision {c.a}/{c.b}" for c in report.collisions if not c.asked_for] + report.problems
             run.failed_at, run.reason = "simulate", "; ".join(failed)[:300]
     return run
+
+
+def generation_seed(case: Case, seed: int, per_group: int = 100) -> int:
+    """The seed a run binds with. The TTSG plans of one kind are generations of one request: they take
+    consecutive seeds (seed x 100 + their place in the group), so the ranking spreads them over equally good
+    roads as it spreads the seeds of one prompt."""
+    return seed * per_group + case.generation if case.plan is not None else seed
+
+
+def road_of(road: str | None) -> str | None:
+    """'MAP ROAD:DIRECTION' -> 'MAP ROAD': the paper counts two directions of one road as one road."""
+    return road.rsplit(":", 1)[0] if road else None
+
+
+def players_of(runs: list[Run]) -> list[str]:
+    return sorted({p for r in runs for p in r.players})
 
 
 def summarize(runs: list[Run]) -> dict:
@@ -222,24 +256,21 @@ def summarize(runs: list[Run]) -> dict:
         agents = [tuple(a) for r in rs for a in r.agents]
         if agents:
             ad.append(len(set(agents)) / len(agents))
-        rd.append(len({r.road for r in rs if r.road}) / len(rs))
+        rd.append(len({road_of(r.road) for r in rs if r.road}) / len(rs))
     mean = lambda xs: round(statistics.mean(xs), 3) if xs else None  # noqa: E731
     return {"cases": len(by_case), "runs": len(runs), "AA": mean(aa), "RA": mean(ra),
             "SA": mean([1.0 if r.ok else 0.0 for r in runs]), "AD": mean(ad), "RD": mean(rd),
-            "failure_rate": mean([0.0 if r.ok else 1.0 for r in runs])}
+            "failure_rate": mean([0.0 if r.ok else 1.0 for r in runs]),
+            "SA_by_player": {p: mean([1.0 if r.players.get(p) else 0.0 for r in runs]) for p in players_of(runs)}}
 
 
 def table(runs: list[Run]) -> str:
     kinds = sorted({r.kind for r in runs}, key=lambda k: ("normal", "critical", "conditional").index(k)
                    if k in ("normal", "critical", "conditional") else 9)
     rows = [(k, summarize([r for r in runs if r.kind == k])) for k in kinds] + [("all", summarize(runs))]
-    fmt = lambda v: "  -  " if v is None else f"{v:.3f}"  # noqa: E731
-    lines = [f"{'kind':12} {'cases':>5} {'runs':>5}   AA     RA     SA     AD     RD    fail",
-             "-" * 72]
-    for kind, s in rows:
-        lines.append(f"{kind:12} {s['cases']:5} {s['runs']:5}  " + " ".join(
-            fmt(s[m]) for m in ("AA", "RA", "SA", "AD", "RD", "failure_rate")))
+    lines = _metric_rows("kind", rows, runs)
     lines.append(f"{'paper, best':24} " + " ".join(f"{PAPER_BEST[m]:.3f}" for m in ("AA", "RA", "SA", "AD", "RD")))
+    lines += ["", _by_group(runs)]
     times: dict[str, list[float]] = {}
     for r in runs:
         for stage, seconds in r.seconds.items():
@@ -251,6 +282,36 @@ def table(runs: list[Run]) -> str:
 
 def _run_job(job: tuple) -> Run:
     return run_case(*job)
+
+
+def _fmt(v) -> str:
+    return "  -  " if v is None else f"{v:.3f}"
+
+
+def _metric_rows(title: str, rows: list[tuple[str, dict]], runs: list[Run]) -> list[str]:
+    """One row per kind; SA, then SA in each player that played the scenes (a column per player)."""
+    players = players_of(runs)
+    lines = [f"{title:12} {'cases':>5} {'runs':>5}   AA     RA     SA     AD     RD    fail"
+             + "".join(f"  SA {p:>6}" for p in players), "-" * (72 + 11 * len(players))]
+    for kind, s in rows:
+        lines.append(f"{kind:12} {s['cases']:5} {s['runs']:5}  " + " ".join(
+            _fmt(s[m]) for m in ("AA", "RA", "SA", "AD", "RD", "failure_rate"))
+            + "".join(f"  {_fmt(s['SA_by_player'].get(p)):>9}" for p in players))
+    return lines
+
+
+def _by_group(runs: list[Run]) -> str:
+    """AD, RD and SA side by side for each prompt (or each kind of TTSG plans), the paper's figure beside."""
+    groups = list(dict.fromkeys(r.group or r.case for r in runs))
+    width = max([len(g) for g in groups] + [12])
+    lines = [f"{'generations of':{width}} {'runs':>4}   AD     RD     SA    paper AD  RD    SA",
+             "-" * (width + 50)]
+    for g in groups:
+        s = summarize([r for r in runs if (r.group or r.case) == g])
+        paper = PAPER_DIVERSITY.get(g)
+        lines.append(f"{g:{width}} {s['runs']:4}  {_fmt(s['AD'])} {_fmt(s['RD'])} {_fmt(s['SA'])}"
+                     + (f"   {paper[0]:.3f} {paper[1]:.3f} {paper[2]:.3f}" if paper else ""))
+    return "\n".join(lines)
 
 
 def evaluate(folder: Path, seeds: int = 5, maps=None, method: str = "offline", simulate: bool = True,

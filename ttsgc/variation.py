@@ -56,8 +56,10 @@ def variants(scene: BoundScene, n: int, seed: int, road_lengths: dict[str, float
                 within = round(max(1.0, agent.trigger.within_m * (1 + rng.uniform(-TRIGGER_SPREAD, TRIGGER_SPREAD))), 3)
                 update["trigger"] = agent.trigger.model_copy(update={"within_m": within})
             shift = round(rng.uniform(-START_SHIFT_M, START_SHIFT_M), 2)
-            if agent.start is not None and agent.cross_to is None and agent.walk_to is None and not agent.route:
+            if agent.start is not None and agent.cross_to is None and agent.walk_to is None:
                 update["start"] = agent.start.model_copy(update={"s": round(agent.start.s + shift, 3)})
+                if agent.route:  # a route through a junction begins where its driver starts
+                    update["route"] = (update["start"],) + tuple(agent.route[1:])
             agents.append(agent.model_copy(update=update))
         scenes.append(scene.model_copy(update={"agents": tuple(_keep_room(scene.agents, agents, road_lengths))}))
     return scenes
@@ -80,7 +82,7 @@ def _keep_room(nominal, moved, road_lengths: dict[str, float]):
             if abs(agent.start.s - other.start.s) < room:
                 ok = False
         if not ok:
-            result[i] = agent.model_copy(update={"start": nominal[i].start})
+            result[i] = agent.model_copy(update={"start": nominal[i].start, "route": nominal[i].route})
     return result
 
 

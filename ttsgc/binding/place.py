@@ -18,13 +18,15 @@ from pydantic import BaseModel, ConfigDict
 
 from ttsgc import vocabulary as V
 from ttsgc.binding.rank import (AHEAD, BEHIND, DEFAULT_GAP_M, JUNCTION_SIDE, LEFT_SIDE, RIGHT_SIDE, TURN_OF_ACTION,
-                                ego_movement)
+                                ego_movement, mid_block)
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.roads.index import Approach, MapIndex, Turn, approach_id, upstream_chain
 from ttsgc.roads.opendrive import OpenDrive, Road
+from ttsgc.roads.retrieve import JUNCTION_CLEARANCE_M
 from ttsgc.scenario import Agent, Scenario, Trigger
 
 CLEARANCE_M = 1.0
+MIN_DRIVING_WIDTH_M = 2.5  # narrower, a lane is still opening or closing there: no vehicle starts on it
 PEDESTRIAN_SPEED = {"cautious": 1.0, "normal": 1.4, "aggressive": 2.5}
 CYCLIST_SPEED = {"cautious": 3.5, "normal": 5.0, "aggressive": 7.0}
 SPEED_FACTOR = {"cautious": 0.6, "normal": 0.85, "aggressive": 1.1}
@@ -130,7 +132,8 @@ class _Frame:
         road, direction, s = self.locate(u)
         sign = -1 if direction == "forward" else 1
         section = road.section_at(s)
-        return [l.id for l in section.side(-sign if far_side else sign) if l.type == lane_type]
+        return [l.id for l in section.side(-sign if far_side else sign) if l.type == lane_type
+                and (lane_type != "driving" or l.width(s - section.s) >= MIN_DRIVING_WIDTH_M)]
 
     def lane_id(self, ref: LaneRef, u: float) -> int | None:
         """The id of a referenced lane at u, None where the road has no such lane."""
@@ -267,6 +270,11 @@ class Placer:
         else:  # on the chosen road itself when it is long enough, leaving the road ahead free
             u_ego = min(frame.segments[-1][2] + back_space + ego_len / 2 + 10.0,
                         frame.length - front_space - ego_len / 2 - 20.0)
+        if s.road.junction is False and frame.approach.junction is not None:  # well before the junction
+            u_ego = min(u_ego, frame.length - front_space - ego_len / 2 - JUNCTION_CLEARANCE_M)
+            if u_ego < lowest:
+                raise PlacementError(f"approach {frame.approach.id} of {self.index.name} leaves no room for the "
+                                     f"scene {JUNCTION_CLEARANCE_M:.0f} m before its junction")
         crosswalk = self._crosswalk_u()
         if crosswalk is not None and "near_the_crosswalk" in by_position:
             u_ego = min(u_ego, crosswalk - 25.0)
@@ -314,7 +322,9 @@ class Placer:
     def _crosswalk_u(self) -> float | None:
         """The crossing nearest the approach's end, in stretch coordinates."""
         start = self.frame.segments[-1][2]
-        spots = [start + u for u in self.frame.approach.crosswalks]
+        approach = self.frame.approach
+        away = self.scenario.road.junction is False  # then the crossing is mid-block, well before a junction
+        spots = [start + u for u in approach.crosswalks if not away or mid_block(approach, u)]
         return max(spots) if spots else None
 
     # -- other agents -------------------------------------------------------------------------------------

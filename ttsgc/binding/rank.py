@@ -3,17 +3,19 @@
 Every requirement is one column of the explanation table: the turns the ego and the agents need exist, the
 roads where agents stand exist, adjacent lanes exist for side positions and lane changes, a shoulder or
 sidewalk exists for agents standing there, a crosswalk for near_the_crosswalk, and the ego's lane is long
-enough for every agent queued in it. The best total wins; ties are broken by a seeded random choice.
+enough for every agent queued in it. The best total wins; ties are spread over the library's roads by the seed.
 """
 
 from __future__ import annotations
 
-import random
+import math
+import zlib
 from dataclasses import dataclass
 from typing import Callable
 
 from ttsgc import vocabulary as V
 from ttsgc.roads.index import Approach, MapIndex, natural_key
+from ttsgc.roads.retrieve import JUNCTION_CLEARANCE_M
 from ttsgc.scenario import Agent, Scenario
 
 LEFT_SIDE = {"left", "front_left", "back_left"}
@@ -88,13 +90,19 @@ def requirements(scenario: Scenario) -> list[Requirement]:
         if where in JUNCTION_SIDE and agent.road_type == "driving":
             queued[where] = queued.get(where, 2.0) + V.BODIES[agent.type][0] + (
                 agent.gap_m if agent.gap_m is not None else DEFAULT_GAP_M[agent.behavior])
-        out += _agent_requirements(agent, movement, queued)
+        out += _agent_requirements(agent, movement, queued, away=scenario.road.junction is False)
     space = lane_space_needed(scenario)
-    out.append(Requirement(f"length>={space:.0f}m", lambda a, i, n=space: a.run_up >= n))
+    if scenario.road.junction is False:  # and well before the junction, where the road ends at one
+        out.append(Requirement(f"length>={space:.0f}m", lambda a, i, n=space: a.run_up >= n + (
+            JUNCTION_CLEARANCE_M if a.junction is not None else 0.0)))
+    else:
+        out.append(Requirement(f"length>={space:.0f}m", lambda a, i, n=space: a.run_up >= n))
     return out
 
 
-def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, float]) -> list[Requirement]:
+def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, float], away: bool = False
+                        ) -> list[Requirement]:
+    """away: the scene is not at a junction, so a crossing must be mid-block, well before any junction."""
     out = []
     where, name = agent.relative_to_ego, agent.name
     side = JUNCTION_SIDE.get(where or "")
@@ -111,13 +119,21 @@ def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, fl
         out.append(Requirement(f"destination ({name})",
                                lambda a, i, m=movement: a.junction is None if m is None else bool(a.turns_to(m))))
     elif where == "near_the_crosswalk":  # a crossing the ego has yet to reach
-        out.append(Requirement(f"crosswalk ({name})",
-                               lambda a, i: any(a.run_up - a.length + u >= CROSSWALK_RUN_UP_M for u in a.crosswalks)))
+        out.append(Requirement(f"{'mid-block ' if away else ''}crosswalk ({name})",
+                               lambda a, i: any(a.run_up - a.length + u >= CROSSWALK_RUN_UP_M
+                                                and (not away or mid_block(a, u)) for u in a.crosswalks)))
     if agent.road_type == "shoulder" and side is None:
         out.append(Requirement(f"shoulder ({name})", lambda a, i: a.shoulder))
+    elif agent.action == "on_the_sidewalk" and side is None:  # walking a sidewalk needs one: a shoulder is not
+        out.append(Requirement(f"sidewalk ({name})", lambda a, i: a.sidewalk))
     elif agent.road_type == "sidewalk" and side is None:  # people stand on a sidewalk, else on a shoulder
         out.append(Requirement(f"kerb ({name})", lambda a, i: a.sidewalk or a.shoulder))
     return out
+
+
+def mid_block(approach: Approach, u: float) -> bool:
+    """A crossing at u (metres from the approach's start) well before the junction the approach ends at."""
+    return approach.junction is None or approach.length - u >= JUNCTION_CLEARANCE_M
 
 
 @dataclass(frozen=True)
@@ -133,14 +149,51 @@ class Ranked:
 
 def rank(scenario: Scenario, candidates: list[tuple[Approach, MapIndex]], seed: int
          ) -> tuple[list[Requirement], list[Ranked]]:
-    """Candidates best first. Equal scores are shuffled by the seed, so the order is reproducible and
-    different seeds spread scenes over equally good roads."""
+    """Candidates best first; equal scores in the order `spread` gives them for this seed."""
     reqs = requirements(scenario)
     scored = [Ranked(a, i, tuple(r.test(a, i) for r in reqs)) for a, i in candidates]
-    scored.sort(key=lambda r: (r.index.name, natural_key(r.approach.id)))
-    random.Random(seed).shuffle(scored)
-    scored.sort(key=lambda r: -r.score)  # stable: the seeded order survives within a score
-    return reqs, scored
+    ranked: list[Ranked] = []
+    for score in sorted({r.score for r in scored}, reverse=True):
+        ranked += spread([r for r in scored if r.score == score], seed, scenario.name)
+    return reqs, ranked
+
+
+def spread(tied: list[Ranked], seed: int, salt: str = "") -> list[Ranked]:
+    """Equally ranked candidates in the order seed `seed` offers them. The roads (both directions of a road
+    are one road, as the paper counts them) are dealt one map at a time in turn, maps and each map's roads
+    in a fixed pseudo-random order (a hash of their names and `salt`, the scene's name; not the seed), and
+    seed s takes the deal's roads s, s + step, s + 2 step, ... (step about 0.618 of their number, coprime with
+    it): any run of consecutive seeds starts on different roads, spread over every map of the library, and when a road cannot host the scene
+    the next tried is far along the deal, so neighbouring seeds do not all fall back onto one road. The same
+    seed always gives the same order. A road's other direction is offered after every road was once."""
+    def shuffled(*key: str) -> int:  # a fixed pseudo-random order, the same in every subset of the library
+        return zlib.crc32("/".join((salt,) + key).encode())
+
+    roads: dict[tuple[str, str], list[Ranked]] = {}
+    for r in sorted(tied, key=lambda r: (r.index.name, natural_key(r.approach.id))):
+        roads.setdefault((r.index.name, r.approach.road), []).append(r)
+    by_map: dict[str, list[tuple[str, str]]] = {}
+    for key in sorted(roads, key=lambda k: shuffled(*k)):
+        by_map.setdefault(key[0], []).append(key)
+    maps = sorted(by_map, key=shuffled)
+    dealt = [by_map[m][k] for k in range(max((len(v) for v in by_map.values()), default=0))
+             for m in maps if k < len(by_map[m])]
+    if not dealt:
+        return []
+    n = len(dealt)
+    step = _stride(n)
+    turn = seed // n  # seeds beyond the number of roads start on the other direction
+    dealt = [dealt[(seed + k * step) % n] for k in range(n)]
+    directions = [roads[key][turn % len(roads[key]):] + roads[key][:turn % len(roads[key])] for key in dealt]
+    return [d[k] for k in range(max(len(d) for d in directions)) for d in directions if k < len(d)]
+
+
+def _stride(n: int) -> int:
+    """The step near n / golden ratio that visits all n roads."""
+    step = max(1, round(n * 0.618))
+    while math.gcd(step, n) != 1:
+        step += 1
+    return step
 
 
 def explain(reqs: list[Requirement], ranked: list[Ranked], limit: int = 15) -> str:

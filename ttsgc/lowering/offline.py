@@ -28,6 +28,7 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, lexicon, matches, read_number, tokenize
+from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
 
@@ -41,7 +42,7 @@ MAX_AGENTS_PER_MENTION = 12
 BARE_PLURAL_COUNT = 2  # "cars pass", "a crowd of children": the gold conventions' count for an unstated size
 # What a sentence leaves open, chosen in one place (the corpus conventions' readings; a seeded sampler of the
 # unspecified can vary these and nothing else).
-UNSPECIFIED = {
+UNSPECIFIED = OpenChoices({  # other seeds draw from templates/unspecified.toml (sampling.py)
     "side_of_a_crossing_road": "left",  # "a vehicle from a perpendicular direction"
     "side_of_an_overtaker": "left",
     "side_of_a_cut_in": "left", "side_of_a_cyclist_cut_in": "right",
@@ -49,7 +50,7 @@ UNSPECIFIED = {
     "side_of_a_sidewalk_walker": "right",
     "turn_direction": "left",  # "turns" with no side
     "ego_lane_change_direction": "left",  # "the ego pulls out to pass"
-}
+})
 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
 DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone"}
@@ -859,6 +860,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
     if "more" in words and "than" in words and count is not None:
         count += 1
+    if count is not None and 1 < count < TOO_LARGE and words & {"some", "more"}:  # "a few", "more than ten"
+        count = UNSPECIFIED.vague_count(count, len(r.entities))
     bare = not words and count is None and not plural and not label and not (
         head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
     if bare and any(e.head == u.base and not e.is_ego and e.count == 1 for e in r.entities):
@@ -907,6 +910,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         r.notes.append(f"repaired: {count} {u.base}s is more than {MAX_AGENTS_PER_MENTION} in one mention; "
                        f"used {MAX_AGENTS_PER_MENTION}")
         count = MAX_AGENTS_PER_MENTION
+    if u.meaning == "generic" or u.base == "vehicle":  # "a vehicle": its type is left open
+        kind = UNSPECIFIED.agent_type(kind, len(r.entities))
     entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
                     generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
     if u.base.split()[0] in ("lead", "leading"):
@@ -1893,6 +1898,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     if not tokens:
         raise LoweringError("the prompt is empty")
     r = _Reader(tokens, _units(tokens))
+    UNSPECIFIED.draw_for(seed)
     road = _road(r)
     weather = _weather(r)
     asked = _asked_kind(tokens)
@@ -1953,24 +1959,26 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     has_crosswalk = any(w in V.CROSSWALK_OBJECTS for w in road.required_objects)
     stages, oncoming = _compose(r, junction, has_crosswalk)
     ego = stages[0][0]
+    sampled_comments: dict[str, Comment] = {}
     if kind is not None:
-        template = _template(kind, seed)
+        template, sampled_comments = _template(kind, seed, r.notes)
         road = _merge_road(template.road, road)
         if not any(a.action != "go_straight" for a in [ego]):
             ego = template.ego if ego.behavior == V.DEFAULT_BEHAVIOR else ego
+        if ego is not template.ego:
+            sampled_comments.pop("agent.ego", None)
         stages[0] = [ego] + [a for a in template.stages[0].agents if not a.is_ego] + stages[0][1:]
-        r.notes.append(f"the scene kind '{kind}' was asked for: its agents come from templates/kinds/{kind}.tsg")
     stage_models = tuple(Stage(name=_stage_name(k, len(stages)), agents=tuple(agents))
                          for k, agents in enumerate(stages) if agents)
-    draft = Scenario.model_construct(name=_name(prompt), seed=None, weather=weather, road=road,
+    draft = Scenario.model_construct(name=_name(prompt), seed=seed or None, weather=weather, road=road,
                                      stages=stage_models, comments={})
     inferred = infer_plan(draft, frozenset(oncoming))
-    notes = r.notes + inferred.notes
+    notes = r.notes + UNSPECIFIED.chosen() + inferred.notes
     candidate = inferred.scenario
     problems = find_problems(candidate)
     if problems:
         raise LoweringError("the prompt lowers to an invalid scene: " + "; ".join(p.message for p in problems))
-    comments = {"scenario": Comment(leading=tuple(notes))} if notes else {}
+    comments = sampled_comments | ({"scenario": Comment(leading=tuple(notes))} if notes else {})
     scenario = Scenario.model_validate(candidate.model_dump() | {"comments": comments})
     unknown = _unknown(r)
     said_nothing = (kind is None and not r.entities and scenario.road == RoadSpec() and scenario.weather is None)
@@ -2170,16 +2178,15 @@ def _unknown(r: _Reader) -> list[str]:
     return list(dict.fromkeys(out))
 
 
-def _template(kind: str, seed: int) -> Scenario:
-    from ttsgc.language import parse
-    from ttsgc.resources import resource_dir
+def _template(kind: str, seed: int, notes: list[str]) -> tuple[Scenario, dict[str, Comment]]:
+    """The kind's scene for this seed, drawn from its distribution (sampling.py), with a comment per choice."""
+    from ttsgc.lowering.sampling import has_distribution, sample_kind
 
-    folder = resource_dir("templates") / "kinds"
-    variants = sorted(folder.glob(f"{kind}.tsg")) + sorted(folder.glob(f"{kind}.*.tsg"))
-    if not variants:
-        raise LoweringError(f"no template for the scene kind '{kind}'")
-    path = variants[seed % len(variants)]
-    return parse(path.read_text(encoding="utf-8"), str(path))
+    if not has_distribution(kind):
+        raise LoweringError(f"no distribution for the scene kind '{kind}' (templates/kinds/{kind}.toml)")
+    sampled = sample_kind(kind, seed)
+    notes += sampled.notes
+    return sampled.scenario, dict(sampled.scenario.comments)
 
 
 def _merge_road(template: RoadSpec, said: RoadSpec) -> RoadSpec:

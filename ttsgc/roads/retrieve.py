@@ -92,6 +92,17 @@ def load_library(maps: Iterable[str | Path] | None = None) -> list[MapIndex]:
     return library
 
 
+# `not at junction`: a road that ends at a junction qualifies when it and the roads leading into it leave
+# this much room before the junction (placement keeps the ego JUNCTION_CLEARANCE_M and more before it).
+AWAY_FROM_JUNCTION_RUN_UP_M = 60.0
+JUNCTION_CLEARANCE_M = 40.0
+
+
+def away_from_junction(a: Approach) -> bool:
+    """A road that ends at no junction, or leaves room for a scene well before its junction."""
+    return a.junction is None or a.run_up >= AWAY_FROM_JUNCTION_RUN_UP_M
+
+
 def _has(word: str) -> Callable[[Approach], bool]:
     if word in V.SIGNALS:
         return lambda a: word in a.signals
@@ -103,8 +114,8 @@ def conditions(road: RoadSpec) -> list[Condition]:
     out = [Condition(f"lanes >= {road.lanes}", lambda a: a.lanes >= road.lanes)]
     if road.junction is True:
         out.append(Condition("at junction", lambda a: a.junction is not None))
-    elif road.junction is False:
-        out.append(Condition("not at junction", lambda a: a.junction is None))
+    elif road.junction is False:  # the scene happens well before any junction (placement keeps it there)
+        out.append(Condition("not at junction", away_from_junction))
     for word in road.required_signals + road.required_objects:
         out.append(Condition(f"has {word}", _has(word)))
     for word in road.without_signals + road.without_objects:

@@ -10,6 +10,7 @@ fixed order, so a report is the same from run to run.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections import defaultdict
 
@@ -319,6 +320,11 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
         travelled = sum(math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(after, after[1:]))
         return result(travelled >= 5.0, f"drove {travelled:.0f} m" + ("" if travelled >= 5 else ", too little"))
     if action in ("change_lane_to_left", "change_lane_to_right"):
+        placed = _start_position(plan, name)
+        if placed is not None and after[0] is samples[0]:
+            # a change that starts with the scene: a player (esmini) reports the lane it changes to from its
+            # first sample on, so the lane it was placed on is where the change begins
+            after = [dataclasses.replace(samples[0], road=placed[0], lane=placed[1])] + after
         return result(*_lane_change(after, 1 if action.endswith("left") else -1))
     if action == "stop":
         return result(*_stopped(after))
