@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import EXAMPLES, ROOT
+from conftest import EXAMPLES, ROOT, LocalHttpServer
 from ttsgc.cli import main
 from ttsgc.errors import ExitCode
 from ttsgc.numbers import NumberError, clamped_int, parse_float, parse_int
@@ -121,50 +121,17 @@ def test_a_map_with_no_driving_lane_is_a_clear_error(tmp_path, capsys):
 
 # -- the LLM: deadlines, replies of any shape, settings from the environment --------------------------------
 
-class _RawServer:
-    """A local HTTP server that answers every POST with one raw body (or never, when delay_s is long)."""
+class _RawServer(LocalHttpServer):
+    """Answers every POST with one raw body (or never, when delay_s is long), counting the requests."""
 
     def __init__(self, body: bytes, content_type: str = "application/json", delay_s: float = 0.0):
-        import threading
-        from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
-
         self.requests = 0
-        outer = self
 
-        class Handler(BaseHTTPRequestHandler):
-            def do_POST(self):  # noqa: N802 - the http.server API
-                self.rfile.read(int(self.headers["Content-Length"]))
-                outer.requests += 1
-                time.sleep(delay_s)
-                self.send_response(200)
-                self.send_header("Content-Type", content_type)
-                self.send_header("Content-Length", str(len(body)))
-                self.end_headers()
-                self.wfile.write(body)
+        def reply(_request: bytes):
+            self.requests += 1
+            return content_type, body
 
-            def log_message(self, *args):
-                pass
-
-        class QuietServer(ThreadingHTTPServer):
-            daemon_threads = True
-
-            def handle_error(self, request, client_address):
-                pass  # a client that gave up (the deadline test) is the point, not a fault
-
-        self.server = QuietServer(("127.0.0.1", 0), Handler)
-        self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
-
-    @property
-    def url(self) -> str:
-        return f"http://127.0.0.1:{self.server.server_address[1]}"
-
-    def __enter__(self):
-        self.thread.start()
-        return self
-
-    def __exit__(self, *exc):
-        self.server.shutdown()
-        self.server.server_close()
+        super().__init__(reply, delay_s)
 
 
 _MESSAGE = {"id": "m", "type": "message", "role": "assistant", "model": "m", "stop_reason": "end_turn",

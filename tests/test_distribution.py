@@ -3,7 +3,6 @@ that expands to the N variants, and the concrete files; in esmini every permutat
 
 from __future__ import annotations
 
-import shutil
 import subprocess
 from importlib import resources
 from pathlib import Path

@@ -4,13 +4,11 @@ words, unreadable prompts, the commands, and the LLM path against a local server
 from __future__ import annotations
 
 import json
-import threading
-from http.server import BaseHTTPRequestHandler, HTTPServer
 from pathlib import Path
 
 import pytest
 
-from conftest import EXAMPLES
+from conftest import EXAMPLES, LocalHttpServer
 from ttsgc.cli import main
 from ttsgc.evaluate import agent_accuracy, road_accuracy, weather_accuracy
 from ttsgc.language import parse, parse_file
@@ -138,47 +136,23 @@ def test_variants_differ_in_roads_or_agents(tmp_path):
 
 # -- the LLM path ---------------------------------------------------------------------------------------
 
-class _MessagesServer:
-    """A local HTTP server answering POST /v1/messages with scripted texts, recording every request."""
+class _MessagesServer(LocalHttpServer):
+    """Answers POST /v1/messages with scripted texts, recording every request."""
 
     def __init__(self, answers: list[str]):
         self.answers, self.requests = list(answers), []
-        outer = self
 
-        class Handler(BaseHTTPRequestHandler):
-            def do_POST(self):  # noqa: N802 - the http.server API
-                body = json.loads(self.rfile.read(int(self.headers["Content-Length"])))
-                outer.requests.append(body)
-                text = outer.answers.pop(0) if outer.answers else "still nothing"
-                reply = {"id": f"msg_{len(outer.requests)}", "type": "message", "role": "assistant",
-                         "model": body["model"], "content": [{"type": "text", "text": text}],
-                         "stop_reason": "end_turn", "stop_sequence": None,
-                         "usage": {"input_tokens": 1000, "output_tokens": 100, "cache_read_input_tokens": 900,
-                                   "cache_creation_input_tokens": 0}}
-                data = json.dumps(reply).encode()
-                self.send_response(200)
-                self.send_header("Content-Type", "application/json")
-                self.send_header("Content-Length", str(len(data)))
-                self.end_headers()
-                self.wfile.write(data)
+        def reply(raw: bytes):
+            body = json.loads(raw)
+            self.requests.append(body)
+            text = self.answers.pop(0) if self.answers else "still nothing"
+            return "application/json", json.dumps({
+                "id": f"msg_{len(self.requests)}", "type": "message", "role": "assistant", "model": body["model"],
+                "content": [{"type": "text", "text": text}], "stop_reason": "end_turn", "stop_sequence": None,
+                "usage": {"input_tokens": 1000, "output_tokens": 100, "cache_read_input_tokens": 900,
+                          "cache_creation_input_tokens": 0}}).encode()
 
-            def log_message(self, *args):
-                pass
-
-        self.server = HTTPServer(("127.0.0.1", 0), Handler)
-        self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
-
-    @property
-    def url(self) -> str:
-        return f"http://127.0.0.1:{self.server.server_address[1]}"
-
-    def __enter__(self):
-        self.thread.start()
-        return self
-
-    def __exit__(self, *exc):
-        self.server.shutdown()
-        self.server.server_close()
+        super().__init__(reply)
 
 
 GOOD = "```tsg\nscenario \"llm\"\nstage main {\n    ego car turn_left\n    car c1 at road_of_straight go_straight\n}\n```"

@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
+from conftest import compiled_example as _compiled, edit_xosc as _edit
 from conftest import EXAMPLES, SHARED, example_scenarios
 from ttsgc.cli import main
 from ttsgc.language import parse_file
@@ -31,18 +32,6 @@ def esmini(monkeypatch):
     return ESMINI
 
 
-def _compiled(name: str, folder: Path, version: str = "1.3", only: tuple[str, str] | None = None) -> Path:
-    """An example on its best-ranked road, or on the road `only` names (a test that needs its geometry)."""
-    out = folder / f"{name}.xosc"
-    write(compile_scenario(parse_file(EXAMPLES / f"{name}.tsg"), out, version=version, only=only), out)
-    return out
-
-
-def _edit(path: Path, change) -> Path:
-    tree = etree.parse(str(path))
-    change(tree.getroot())
-    tree.write(str(path))
-    return path
 
 
 def _verdict(report, player: str):

@@ -4,15 +4,15 @@ should, collisions are reported, unsupported content is named, the commands' exi
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
 from lxml import etree
 
+from conftest import compiled_example as _compiled, edit_xosc as _edit
 from conftest import EXAMPLES, example_scenarios
 from ttsgc.cli import main
 from ttsgc.language import parse_file
-from ttsgc.pipeline import compile_and_prove, compile_scenario, write
+from ttsgc.pipeline import compile_and_prove
 from ttsgc.simulate.validate import validate
 
 
@@ -20,19 +20,6 @@ def simulate(path):
     return validate(path, "sumo")
 
 
-def _compiled(name: str, folder: Path, only: tuple[str, str] | None = None) -> Path:
-    """An example compiled onto its best-ranked road, or onto the road `only` names (for a test that needs a
-    particular geometry, whatever the ranking's tie order)."""
-    out = folder / f"{name}.xosc"
-    write(compile_scenario(parse_file(EXAMPLES / f"{name}.tsg"), out, only=only), out)
-    return out
-
-
-def _edit(path: Path, change) -> Path:
-    tree = etree.parse(str(path))
-    change(tree.getroot())
-    tree.write(str(path))
-    return path
 
 
 def _result(report, name):

@@ -269,7 +269,8 @@ def _lint(args) -> int:
 
 
 def _eval(args) -> int:
-    from ttsgc.evaluate import evaluate, progress_bar, report_json, table
+    from ttsgc.evaluate import evaluate, report_json, table
+    from ttsgc.runner import progress_bar
     from ttsgc.lowering import choose_method
 
     runs = evaluate(Path(args.suite), seeds=args.seeds, maps=args.maps, method=choose_method(args.llm),

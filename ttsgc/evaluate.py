@@ -19,7 +19,6 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from ttsgc.errors import TtsgcError, UsageError
-from ttsgc.runner import progress_bar  # noqa: F401 - the one progress bar, also used from here
 from ttsgc.scenario import Scenario
 
 

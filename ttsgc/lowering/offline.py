@@ -1096,7 +1096,6 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     stage = clause.stage
     _side_roads(units)
     phrases: list[NounPhrase] = []
-    k = 0
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
         u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
         and units[i + 1].meaning not in ("ego", "none"))]
