@@ -82,6 +82,10 @@ def _repair_agents(stages, road: RoadSpec, notes: list[str]) -> tuple[Stage, ...
                     notes.append(f"left out: the ego's later action ({agent.action} in stage '{stage.name}'), "
                                  "which the language cannot say here")
                     continue
+                if agent.action in V.TURN_ACTIONS:  # binding lays the ego's one route from its start
+                    notes.append(f"left out: the ego's later {agent.action} (stage '{stage.name}'): ttsgc binds "
+                                 "a turn of the ego only on the first stage's ego line")
+                    continue
                 agent = agent.model_copy(update={"type": ego_type})
             agent = _repair_agent(agent, road, notes)
             if agent.is_ego and ego_type is None:
