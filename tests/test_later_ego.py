@@ -159,3 +159,12 @@ def test_a_later_stop_is_judged_from_its_stage(tmp_path):
     write(compile_scenario(parse(_scene("ego car stop")), out), out)
     row = _ego_row(validate(out, "sumo"))
     assert row.achieved and "standstill" in row.reason
+
+
+def test_a_stage_action_the_checks_do_not_know_is_refused(tmp_path):
+    from ttsgc.simulate.xosc_check import XoscFileError, load_scenario
+
+    scene = _compiled(tmp_path)
+    scene.write_text(scene.read_text().replace('value="1:change_lane_to_left"', 'value="1:fly"'))
+    with pytest.raises(XoscFileError, match=r"ttsgc:stage_actions = '1:fly' is not a list of STAGE:ACTION"):
+        load_scenario(scene)
