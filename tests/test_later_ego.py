@@ -92,9 +92,21 @@ def test_a_later_lane_change_asks_for_the_adjacent_lane_and_adds_no_body():
     assert (step.stage, step.action, step.lane_change) == (1, "change_lane_to_left", 1)
 
 
-def test_a_later_turn_is_refused_with_what_to_write_instead():
-    with pytest.raises(PlacementError, match=r"turn_left in stage 'b'.*first stage's ego line"):
+def test_a_later_turn_is_refused_unless_the_ego_stopped_first_and_says_what_to_write():
+    with pytest.raises(PlacementError, match=r"turn_left in stage 'b'.*ego car stop in the first stage"):
         bind(parse(_scene("ego car turn_left")), load_library(None))
+    twice = _scene("ego car turn_left", first="ego car stop") + "\nstage c {\n    ego car turn_right\n}\n"
+    with pytest.raises(PlacementError, match=r"turn_right in stage 'c'.*is made once"):
+        bind(parse(twice), load_library(None))
+
+
+def test_a_later_turn_after_a_stop_asks_for_the_turn_and_is_proven_in_sumo(tmp_path):
+    s = parse('scenario "x"\n\nstage wait {\n    ego car stop\n}\n\nstage go {\n    ego car turn_right\n}\n')
+    assert "ego right" in [r.column for r in requirements(s)]
+    out = tmp_path / "turn.xosc"
+    write(compile_scenario(s, out), out)
+    row = _ego_row(validate(out, "sumo"))
+    assert row.achieved and "went right" in row.reason
 
 
 # -- the file and the players -------------------------------------------------------------------------------

@@ -232,17 +232,22 @@ LANE_CHANGE_OF_ACTION = {"change_lane_to_left": 1, "change_lane_to_right": -1}
 
 
 def later_actions(scenario: Scenario) -> tuple[LaterAction, ...]:
-    """The ego's `ego TYPE ACTION` lines of later stages. A turn there is refused: the ego's one route through
-    a junction is laid from its start, so the first stage's line must say the turn."""
+    """The ego's `ego TYPE ACTION` lines of later stages. The ego's one route through a junction is laid from
+    its start, so a later turn is bound only after a first-stage stop (it waits before the junction, then
+    turns), and only one."""
     out = []
+    turns = 0
     for k, stage in enumerate(scenario.stages[1:], start=1):
         for a in stage.agents:
             if not a.is_ego:
                 continue
             if a.action in ("turn_left", "turn_right"):
-                raise PlacementError(
-                    f"the ego's {a.action} in stage '{stage.name}' cannot be bound: a turn the ego makes is laid out "
-                    f"from its start, so write it on the first stage's ego line (ego {a.type} {a.action})")
+                turns += 1
+                if scenario.ego.action != "stop" or turns > 1:
+                    raise PlacementError(
+                        f"the ego's {a.action} in stage '{stage.name}' cannot be bound: a later turn of the ego needs "
+                        f"it to stop before the junction first (ego {a.type} stop in the first stage) and is made "
+                        f"once; else write the turn on the first stage's ego line (ego {a.type} {a.action})")
             speed = 0.0 if a.action == "stop" else a.speed.mps if a.speed is not None else None
             out.append(LaterAction(stage=k, action=a.action, behavior=a.behavior, speed_mps=speed,
                                    lane_change=LANE_CHANGE_OF_ACTION.get(a.action), trigger=a.trigger))

@@ -206,7 +206,9 @@ def stage_durations(scene: BoundScene) -> list[float]:
         for step in ego.later:
             if step.stage == k:
                 wait = step.trigger.after_s if step.trigger and step.trigger.after_s else 0.0
-                longest = max(longest, wait + LATER_ACTION_S)
+                turn = 45.0 / max(ego.speed_mps, 1.0) + (SIGNAL_WAIT_S if signalised else 0.0) \
+                    if step.action in V.TURN_ACTIONS else 0.0
+                longest = max(longest, wait + LATER_ACTION_S + turn)
         durations.append(round(min(longest, 120.0), 3))
     return durations
 
@@ -217,7 +219,8 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
         start = _always(f"{name}_start", 0.0, minor)
     else:
         ego = next(a for a in scene.agents if a.is_ego)
-        if k == 1 and ego.route:  # the ego's movement ends the first stage: when it reaches the far road
+        later_turn = any(step.action in V.TURN_ACTIONS for step in ego.later)
+        if k == 1 and ego.route and not later_turn:  # the ego's movement ends the first stage: at the far road
             start = xosc.EntityTrigger(f"{name}_start", 0, xosc.ConditionEdge.none,
                                        xosc.DistanceCondition(10.0, xosc.Rule.lessThan, _lane_position(ego.route[-1]),
                                                               alongroute=False, freespace=False,
@@ -264,6 +267,9 @@ def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int) -> xosc.Man
     if step.action == "stop":
         actions.append(("brake", xosc.AbsoluteSpeedAction(0, xosc.TransitionDynamics(
             xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, BRAKE_RATE[step.behavior]))))
+    elif step.action in V.TURN_ACTIONS:  # it waited before the junction on the route it was given: sets off
+        actions.append(("set_off", xosc.AbsoluteSpeedAction(
+            step.speed_mps if step.speed_mps is not None else ego.speed_mps, step_dynamics)))
     elif step.speed_mps is not None:
         actions.append(("set_speed", xosc.AbsoluteSpeedAction(step.speed_mps, xosc.TransitionDynamics(
             xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, BRAKE_RATE[step.behavior]))))

@@ -343,7 +343,7 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
     return result(False, f"no check for action '{action}'")
 
 
-LATER_CHECKS = ("go_straight", "stop", "change_lane_to_left", "change_lane_to_right")
+LATER_CHECKS = ("go_straight", "stop", "change_lane_to_left", "change_lane_to_right", "turn_left", "turn_right")
 
 
 def _check_later_ego_actions(plan: Plan, trace: Trace, ego: str) -> list[AgentResult]:
@@ -364,6 +364,12 @@ def _check_later_ego_actions(plan: Plan, trace: Trace, ego: str) -> list[AgentRe
             out.append(result(False, "its action in this stage never started: the stage or its trigger never came"))
         elif not after:
             out.append(result(False, f"left the scene before its action started at t={start:.1f} s"))
+        elif action in ("turn_left", "turn_right"):
+            target = entity.intent.get(I.TARGET_ROAD, "")
+            if not target:
+                out.append(result(False, "was given no junction to turn at (its road does not lead to one)"))
+            else:
+                out.append(result(*_movement(after, I.MOVEMENT_OF_ACTION[action], target)))
         elif action == "go_straight":
             travelled = sum(math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(after, after[1:]))
             out.append(result(travelled >= 5.0, f"drove {travelled:.0f} m from t={start:.1f} s"
