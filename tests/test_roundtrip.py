@@ -17,7 +17,8 @@ numbers = lambda lo, hi: st.floats(lo, hi, allow_nan=False, allow_infinity=False
 
 
 @st.composite
-def agents(draw, name: str, is_ego: bool, previous: list[Agent], junction: bool | None) -> Agent:
+def agents(draw, name: str, is_ego: bool, previous: list[Agent], junction: bool | None,
+           later_ego_of: str | None = None) -> Agent:
     agent_type = draw(st.sampled_from(sorted(V.EGO_TYPES if is_ego else V.AGENT_TYPES)))
     actions = V.EGO_ACTIONS if is_ego else V.ACTIONS_BY_TYPE[agent_type]
     if junction is False:
@@ -36,7 +37,9 @@ def agents(draw, name: str, is_ego: bool, previous: list[Agent], junction: bool 
             fields["relative_to_ego"] = others[-1].relative_to_ego
         elif draw(st.booleans()):
             fields["order"] = draw(st.integers(*V.ORDER_RANGE))
-    if draw(st.booleans()):
+    if later_ego_of is not None:  # the ego's action in a later stage: same type, no start of its own
+        fields["type"] = later_ego_of
+    elif draw(st.booleans()):
         fields["gap_m"] = draw(numbers(*V.GAP_RANGE_M))
     if draw(st.booleans()):
         unit = draw(st.sampled_from(sorted(V.SPEED_UNITS)))
@@ -67,11 +70,13 @@ def scenarios(draw) -> Scenario:
     stage_count = draw(st.integers(1, 3))
     stages, placed = [], []
     for i in range(stage_count):
-        count = draw(st.integers(0 if i == 0 else 1, 3))
+        ego_acts = i == 0 or draw(st.booleans())  # a later stage may hold the ego's action there
+        count = draw(st.integers(0 if ego_acts else 1, 3))
         members = []
-        for k in range(count + (1 if i == 0 else 0)):
-            is_ego = i == 0 and k == 0
-            agent = draw(agents("ego" if is_ego else all_names.pop(), is_ego, members, junction))
+        for k in range(count + (1 if ego_acts else 0)):
+            is_ego = ego_acts and k == 0
+            later_ego_of = placed[0].type if is_ego and i > 0 else None
+            agent = draw(agents("ego" if is_ego else all_names.pop(), is_ego, members, junction, later_ego_of))
             members.append(agent)
         placed += members
         stages.append(Stage(name=all_names.pop(), agents=tuple(members)))
@@ -80,6 +85,7 @@ def scenarios(draw) -> Scenario:
     seed = draw(st.none() | st.integers(0, 2**32 - 1))
     anchors = ["scenario", "road", "road.lanes", "road.end"] + [f"stage.{s.name}" for s in stages]
     anchors += [f"stage.{s.name}.end" for s in stages] + [f"agent.{a.name}" for a in placed]
+    anchors += [f"stage.{s.name}.ego" for s in stages[1:] if any(a.is_ego for a in s.agents)]
     anchors += (["weather"] if weather else []) + (["seed"] if seed is not None else [])
     anchors += (["road.junction"] if junction is not None else []) + (["road.has"] if req_sig or req_obj else [])
     anchors += ["road.without"] if road.without_signals or road.without_objects else []

@@ -17,8 +17,12 @@ MOVEMENT = "movement"  # left | right | straight through a junction, "" when it 
 TARGET_ROAD = "target_road"  # the road its movement leads to
 MAP = "map"
 APPROACH = "approach"
+# The ego's actions in later stages, "STAGE:ACTION" comma-separated (0-based stages, e.g. "1:change_lane_to_left");
+# each is the ego event of that stage's act named by later_event_name.
+STAGE_ACTIONS = "stage_actions"
 
-KEYS = (ACTION, POSITION, ROAD_TYPE, BEHAVIOR, TYPE, STAGE, IS_EGO, MOVEMENT, TARGET_ROAD, MAP, APPROACH)
+KEYS = (ACTION, POSITION, ROAD_TYPE, BEHAVIOR, TYPE, STAGE, IS_EGO, MOVEMENT, TARGET_ROAD, MAP, APPROACH,
+        STAGE_ACTIONS)
 
 # The movement through a junction each action implies; a file whose movement says otherwise contradicts itself.
 MOVEMENT_OF_ACTION = {"turn_left": "left", "turn_right": "right", "go_straight": "straight"}
@@ -51,3 +55,22 @@ def contradictions(intent: dict[str, str]) -> list[str]:
     if implied and movement and movement != implied:
         problems.append(f"{property_name(ACTION)} is {action} but {property_name(MOVEMENT)} is {movement}")
     return problems
+
+
+def format_stage_actions(actions: list[tuple[int, str]]) -> str:
+    return ",".join(f"{stage}:{action}" for stage, action in actions)
+
+
+def parse_stage_actions(value: str) -> list[tuple[int, str]]:
+    """The (stage, action) pairs of a STAGE_ACTIONS property; a malformed item is left out."""
+    out = []
+    for item in value.split(","):
+        stage, _, action = item.strip().partition(":")
+        if stage.isdigit() and action:
+            out.append((int(stage), action))
+    return out
+
+
+def later_event_name(entity: str, stage: int, action: str) -> str:
+    """The event that carries the ego's action in a later stage: the judge times the action from its start."""
+    return f"{entity}_{action}_in_stage_{stage}"

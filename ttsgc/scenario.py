@@ -93,7 +93,8 @@ class Scenario(_Model):
     road: RoadSpec = RoadSpec()
     stages: tuple[Stage, ...]
     # Anchors: "scenario", "weather", "seed", "road", "road.lanes", "road.junction", "road.has",
-    # "road.without", "road.end", "stage.NAME", "stage.NAME.end", "agent.NAME", "end".
+    # "road.without", "road.end", "stage.NAME", "stage.NAME.end", "agent.NAME", "end"; the ego's line in a
+    # later stage: "stage.NAME.ego".
     comments: dict[str, Comment] = Field(default_factory=dict, exclude=True)
 
     @field_validator("comments")
@@ -202,11 +203,11 @@ def _agent_problems(s: Scenario, add) -> None:
     egos = [(i, j) for i, j, a in located if a.is_ego]
     if not egos and s.stages:
         add(("stages", 0, "name"), "the scenario has no ego; start an agent line with 'ego', e.g. 'ego car go_straight'")
-    for i, j in egos[1:]:
-        add(("stages", i, "agents", j, "name"), "a second ego; a scenario has exactly one")
     if egos and egos[0][0] != 0:
         i, j = egos[0]
         add(("stages", i, "agents", j, "name"), "the ego must be in the first stage: later agents are placed relative to it")
+    elif egos:
+        _later_ego_problems(s, egos, add)
     stage_of = {a.name: i for i, _, a in located}
 
     for i, j, a in located:
@@ -224,7 +225,8 @@ def _agent_problems(s: Scenario, add) -> None:
                 add(at + ("type",), f"the ego cannot be a {a.type}; it must be one of: {_choices(V.EGO_TYPES)}")
                 continue
             if a.relative_to_ego is not None:
-                add(at + ("relative_to_ego",), "the ego has no position relative to itself")
+                add(at + ("relative_to_ego",), "the ego has no position relative to itself"
+                    + ("; its later action keeps its one start" if i > 0 else ""))
         elif a.relative_to_ego is None:
             add(at + ("name",), f"agent '{a.name}' has no position; add e.g. 'at front' (one of: {_choices(V.POSITIONS)})")
         elif a.relative_to_ego not in V.POSITIONS:
@@ -292,6 +294,26 @@ def _agent_problems(s: Scenario, add) -> None:
         if len(cycle) > 1:
             i, j, _ = next(x for x in located if x[2].name == min(cycle))
             add(("stages", i, "agents", j, "behind"), "'behind' forms a cycle: " + " -> ".join(sorted(cycle)))
+
+
+def _later_ego_problems(s: Scenario, egos: list[tuple[int, int]], add) -> None:
+    """A later stage may hold one `ego TYPE ACTION` line: the ego's action in that stage. The ego keeps its
+    one start, so the line has no position, queue or road type of its own."""
+    first = s.stages[egos[0][0]].agents[egos[0][1]]
+    seen: set[int] = set()
+    for i, j in egos[1:]:
+        a, at = s.stages[i].agents[j], ("stages", i, "agents", j)
+        if i == 0 or i in seen:
+            add(at + ("name",), "a second ego line in one stage; the ego acts once per stage "
+                                "(put a later action in a new stage)")
+            continue
+        seen.add(i)
+        if a.type != first.type:
+            add(at + ("type",), f"the ego is a {first.type} (stage '{s.stages[0].name}'); its later action must "
+                                f"say 'ego {first.type}'")
+        for field, word in (("behind", "behind"), ("order", "order"), ("gap_m", "gap")):
+            if getattr(a, field) is not None:
+                add(at + (field,), f"the ego's later action has no '{word}': the ego keeps its one start")
 
 
 def behind_cycles(follows: dict[str, str]) -> list[list[str]]:

@@ -55,6 +55,17 @@ class RelativePos(_Data):
     ds: float  # metres ahead of the ego (negative: behind)
 
 
+class LaterAction(_Data):
+    """The ego's action in a later stage: it keeps its one start and body, and acts again from there."""
+
+    stage: int
+    action: str
+    behavior: str
+    speed_mps: float | None  # the speed the line sets (0 for a stop), None: it keeps its speed
+    lane_change: int | None = None  # +1 left, -1 right
+    trigger: Trigger | None = None
+
+
 class BoundAgent(_Data):
     name: str
     type: str
@@ -79,6 +90,7 @@ class BoundAgent(_Data):
     trigger: Trigger | None = None
     distance_to_ego_m: float = 0.0  # at the start, centre to centre
     start_delay_s: float = 0.0  # stands this long before it sets off, so that junction traffic takes turns
+    later: tuple[LaterAction, ...] = ()  # the ego's actions in later stages, in stage order
 
 
 @dataclass(frozen=True)
@@ -216,6 +228,32 @@ def _speed(agent: Agent, limit_kmh: float | None) -> float:
     return round((limit_kmh or DEFAULT_LIMIT_KMH) / 3.6 * SPEED_FACTOR[agent.behavior], 3)
 
 
+LANE_CHANGE_OF_ACTION = {"change_lane_to_left": 1, "change_lane_to_right": -1}
+
+
+def later_actions(scenario: Scenario) -> tuple[LaterAction, ...]:
+    """The ego's `ego TYPE ACTION` lines of later stages. The ego's one route through a junction is laid from
+    its start, so a later turn is bound only after a first-stage stop (it waits before the junction, then
+    turns), and only one."""
+    out = []
+    turns = 0
+    for k, stage in enumerate(scenario.stages[1:], start=1):
+        for a in stage.agents:
+            if not a.is_ego:
+                continue
+            if a.action in ("turn_left", "turn_right"):
+                turns += 1
+                if scenario.ego.action != "stop" or turns > 1:
+                    raise PlacementError(
+                        f"the ego's {a.action} in stage '{stage.name}' cannot be bound: a later turn of the ego needs "
+                        f"it to stop before the junction first (ego {a.type} stop in the first stage) and is made "
+                        f"once; else write the turn on the first stage's ego line (ego {a.type} {a.action})")
+            speed = 0.0 if a.action == "stop" else a.speed.mps if a.speed is not None else None
+            out.append(LaterAction(stage=k, action=a.action, behavior=a.behavior, speed_mps=speed,
+                                   lane_change=LANE_CHANGE_OF_ACTION.get(a.action), trigger=a.trigger))
+    return tuple(out)
+
+
 class Placer:
     """Places one scenario on one approach of one map."""
 
@@ -287,7 +325,7 @@ class Placer:
                                  self.ego_turn)
         self.u_ego = self.occupied.slot(frame, self.ego_lane, self.u_ego, ego_len, -1)
         self.ego_start = frame.resolve(self.ego_lane, self.u_ego)
-        placed = [self._bound(ego, 0, self.ego_start, frame)]
+        placed = [self._bound(ego, 0, self.ego_start, frame).model_copy(update={"later": later_actions(s)})]
         for position in sorted(by_position, key=lambda p: list(V.POSITIONS).index(p)):
             downstream = position in AHEAD
             for agent in _queue(by_position[position], downstream):
@@ -295,11 +333,14 @@ class Placer:
         for k, stage in enumerate(s.stages[1:], start=1):
             groups: dict[str, list[Agent]] = {}
             for agent in stage.agents:
-                groups.setdefault(agent.relative_to_ego, []).append(agent)
+                if not agent.is_ego:  # the ego's later action is no new body (later_actions)
+                    groups.setdefault(agent.relative_to_ego, []).append(agent)
             for position, group in groups.items():
                 for agent in _queue(group, position in AHEAD):
                     placed.append(self._place_later(agent, k))
-        order = {a.name: n for n, a in enumerate(s.agents())}
+        order: dict[str, int] = {}
+        for n, a in enumerate(s.agents()):
+            order.setdefault(a.name, n)
         placed = sorted(placed, key=lambda b: order[b.name])
         placed = no_faster_than_the_one_ahead(placed)
         return let_the_ego_pass(stagger_at_junction(placed, self.odr), self.odr)

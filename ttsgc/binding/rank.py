@@ -39,12 +39,21 @@ def ego_movement(scenario: Scenario) -> str | None:
     ego = scenario.ego
     if ego.action in ("turn_left", "turn_right"):
         return TURN_OF_ACTION[ego.action]
+    later_turn = later_ego_turn(scenario)
+    if later_turn is not None and ego.action == "stop":  # it stops before the junction, then turns
+        return TURN_OF_ACTION[later_turn]
     if ego.action != "go_straight":
         return None
     if scenario.road.junction or any(a.relative_to_ego in JUNCTION_SIDE or a.relative_to_ego == "at_the_destination"
                                      for a in scenario.agents()):
         return "straight"
     return None
+
+
+def later_ego_turn(scenario: Scenario) -> str | None:
+    """The turn the ego makes in a later stage, if any (the first such line)."""
+    return next((a.action for st in scenario.stages[1:] for a in st.agents
+                 if a.is_ego and a.action in ("turn_left", "turn_right")), None)
 
 
 def lane_needs(scenario: Scenario) -> tuple[bool, bool]:

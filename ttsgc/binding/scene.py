@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pydantic import BaseModel, ConfigDict
 
-from ttsgc.binding.place import BoundAgent, PlacementError, place
+from ttsgc.binding.place import BoundAgent, PlacementError, later_actions, place
 from ttsgc.binding.rank import Ranked, Requirement, explain, rank
 from ttsgc.roads.index import MapIndex
 from ttsgc.roads.opendrive import load_opendrive
@@ -57,6 +57,7 @@ def candidates(scenario: Scenario, library: list[MapIndex], seed: int | None = N
     the caller takes the next when the scene fails on a road. Raises NoRoadError when no road can host the
     scene at all (naming why), before yielding anything."""
     seed = seed if seed is not None else scenario.seed if scenario.seed is not None else DEFAULT_SEED
+    later_actions(scenario)  # what no road can change is refused before any is tried
     retrieved = {id(a) for a in retrieve(library, scenario.road)}  # by identity: equality compares every field
     pool = [(a, m) for m in library for a in m.approaches if id(a) in retrieved]
     if only is not None:

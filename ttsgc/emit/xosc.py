@@ -26,7 +26,7 @@ from lxml import etree
 from ttsgc import intent as I
 from ttsgc import xsd
 from ttsgc import vocabulary as V
-from ttsgc.binding.place import BoundAgent, LanePos
+from ttsgc.binding.place import BoundAgent, LanePos, LaterAction
 from ttsgc.binding.scene import BoundScene
 from ttsgc.emit.lean_import import openscenario_writer
 from ttsgc.errors import TtsgcError
@@ -154,6 +154,8 @@ def _entity(agent: BoundAgent, scene: BoundScene, minor: int):
               I.BEHAVIOR: agent.behavior, I.TYPE: agent.type, I.STAGE: str(agent.stage),
               I.IS_EGO: str(agent.is_ego).lower(), I.MOVEMENT: agent.movement or "",
               I.TARGET_ROAD: agent.target_road or "", I.MAP: scene.map_name, I.APPROACH: scene.approach}
+    if agent.later:
+        intent[I.STAGE_ACTIONS] = I.format_stage_actions([(step.stage, step.action) for step in agent.later])
     for name, value in I.properties(intent):
         entity.add_property(name, value)
     return entity
@@ -175,6 +177,7 @@ def _environment(condition: str, time: str, minor: int) -> xosc.Environment:
                             xosc.RoadCondition(FRICTION[condition]))
 
 
+LATER_ACTION_S = 8.0  # the ego's lane change (3 s) or stop, and time to see it done
 SIGNAL_WAIT_S = 50.0  # a red light can hold a junction movement for most of a signal cycle
 
 
@@ -200,6 +203,12 @@ def stage_durations(scene: BoundScene) -> list[float]:
             else:
                 action = 6.0
             longest = max(longest, wait + action)
+        for step in ego.later:
+            if step.stage == k:
+                wait = step.trigger.after_s if step.trigger and step.trigger.after_s else 0.0
+                turn = 45.0 / max(ego.speed_mps, 1.0) + (SIGNAL_WAIT_S if signalised else 0.0) \
+                    if step.action in V.TURN_ACTIONS else 0.0
+                longest = max(longest, wait + LATER_ACTION_S + turn)
         durations.append(round(min(longest, 120.0), 3))
     return durations
 
@@ -210,7 +219,8 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
         start = _always(f"{name}_start", 0.0, minor)
     else:
         ego = next(a for a in scene.agents if a.is_ego)
-        if k == 1 and ego.route:  # the ego's movement ends the first stage: when it reaches the far road
+        later_turn = any(step.action in V.TURN_ACTIONS for step in ego.later)
+        if k == 1 and ego.route and not later_turn:  # the ego's movement ends the first stage: at the far road
             start = xosc.EntityTrigger(f"{name}_start", 0, xosc.ConditionEdge.none,
                                        xosc.DistanceCondition(10.0, xosc.Rule.lessThan, _lane_position(ego.route[-1]),
                                                               alongroute=False, freespace=False,
@@ -235,7 +245,47 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
         group.add_actor(agent.name)
         group.add_maneuver(maneuver)
         act.add_maneuver_group(group)
+    ego = next(a for a in scene.agents if a.is_ego)
+    for step in ego.later:
+        if step.stage == k:
+            act.add_maneuver_group(_later_ego_group(ego, step, minor))
     return act
+
+
+BRAKE_RATE = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}  # m/s² of a stop
+
+
+def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int) -> xosc.ManeuverGroup:
+    """The ego's action in a later stage, one event written as any agent's: the lane change relative to
+    itself, a speed it is given, a stop braking at its behaviour's rate; going straight holds its speed."""
+    step_dynamics = xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0)
+    actions = []
+    if step.lane_change is not None:
+        actions.append(("lane_change", xosc.RelativeLaneChangeAction(
+            step.lane_change, ego.name,
+            xosc.TransitionDynamics(xosc.DynamicsShapes.sinusoidal, xosc.DynamicsDimension.time, 3.0))))
+    if step.action == "stop":
+        actions.append(("brake", xosc.AbsoluteSpeedAction(0, xosc.TransitionDynamics(
+            xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, BRAKE_RATE[step.behavior]))))
+    elif step.action in V.TURN_ACTIONS:  # it waited before the junction on the route it was given: sets off
+        actions.append(("set_off", xosc.AbsoluteSpeedAction(
+            step.speed_mps if step.speed_mps is not None else ego.speed_mps, step_dynamics)))
+    elif step.speed_mps is not None:
+        actions.append(("set_speed", xosc.AbsoluteSpeedAction(step.speed_mps, xosc.TransitionDynamics(
+            xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, BRAKE_RATE[step.behavior]))))
+    elif not actions:
+        actions.append(("keep_speed", xosc.AbsoluteSpeedAction(ego.speed_mps, step_dynamics)))
+    label = I.later_event_name(ego.name, step.stage, step.action)
+    event = xosc.Event(label, xosc.Priority.parallel)
+    for action_name, action in actions:
+        event.add_action(action_name, action)
+    event.add_trigger(_start_trigger(ego.model_copy(update={"trigger": step.trigger}), label, minor))
+    maneuver = xosc.Maneuver(f"{ego.name}_maneuver_in_stage_{step.stage}")
+    maneuver.add_event(event)
+    group = xosc.ManeuverGroup(f"{ego.name}_group_in_stage_{step.stage}")
+    group.add_actor(ego.name)
+    group.add_maneuver(maneuver)
+    return group
 
 
 def _always(label: str, delay: float, minor: int) -> xosc.ValueTrigger:
@@ -321,7 +371,7 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
                     ("path", _trajectory(agent, minor))]
     braking = []
     if agent.action in ("stop", "block_the_ego"):
-        brake = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}[agent.behavior]
+        brake = BRAKE_RATE[agent.behavior]
         braking.append(("brake", xosc.AbsoluteSpeedAction(
             0, xosc.TransitionDynamics(xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, brake))))
     if braking and actions:  # into the ego's lane first, then stop there

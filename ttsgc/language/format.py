@@ -28,11 +28,12 @@ def format_scenario(s: Scenario) -> str:
         for anchor, text in road_lines:
             emit.line(anchor, INDENT + text)
         emit.line("road.end", "}", indent=INDENT)
-    for stage in s.stages:
+    for k, stage in enumerate(s.stages):
         out.append("")
         emit.line(f"stage.{stage.name}", f"stage {stage.name} {{")
         for agent in stage.agents:
-            emit.line(f"agent.{agent.name}", INDENT + format_agent(agent))
+            anchor = f"stage.{stage.name}.ego" if agent.is_ego and k > 0 else f"agent.{agent.name}"
+            emit.line(anchor, INDENT + format_agent(agent))
         emit.line(f"stage.{stage.name}.end", "}", indent=INDENT)
     end = s.comments.get("end")
     if end is not None and (end.leading or end.trailing):

@@ -184,6 +184,7 @@ class _Builder(Transformer):
         self.where: dict[tuple, Token] = {}
         self.suppressed: set[tuple] = set()
         self.statements: list[tuple[int, str]] = []  # (line, comment anchor)
+        self._stages_seen = 0
 
     # -- reporting ---------------------------------------------------------------------------------------
     def error(self, token: Token, message: str) -> None:
@@ -391,8 +392,23 @@ class _Builder(Transformer):
         return "unknown"
 
     # -- stages and the whole ----------------------------------------------------------------------------
+    def _later_ego_lines(self, stage: str, drafts: list) -> None:
+        """The ego's action in a later stage: anchored to its stage (the first stage's line owns 'agent.ego'),
+        and without 'on' (the rules see the road type, not whether the line wrote it)."""
+        for draft in drafts:
+            if not draft.agent.is_ego:
+                continue
+            line = draft.tokens["name"].line
+            self.statements = [(n, f"stage.{stage}.ego" if (n, a) == (line, "agent.ego") else a)
+                               for n, a in self.statements]
+            if draft.tokens.get("road_type") is not None:
+                self.error(draft.tokens["road_type"], "the ego's later action has no 'on': the ego keeps its one start")
+
     def stage(self, meta, children):
         name_token, *agents, rbrace = children
+        if self._stages_seen:
+            self._later_ego_lines(str(name_token), agents)
+        self._stages_seen += 1
         self.statements.append((meta.line, f"stage.{name_token}"))
         self.statements.append((rbrace.line, f"stage.{name_token}.end"))
         return ("stage", name_token, agents)

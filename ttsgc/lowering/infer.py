@@ -74,6 +74,7 @@ def _repair_agents(stages, road: RoadSpec, notes: list[str]) -> tuple[Stage, ...
     out = []
     ego_type = None
     later_ego_ok = language_allows_later_ego()
+    turned = False
     for k, stage in enumerate(stages):
         agents = []
         for agent in stage.agents:
@@ -82,6 +83,13 @@ def _repair_agents(stages, road: RoadSpec, notes: list[str]) -> tuple[Stage, ...
                     notes.append(f"left out: the ego's later action ({agent.action} in stage '{stage.name}'), "
                                  "which the language cannot say here")
                     continue
+                first = next((a.action for a in out[0].agents if a.is_ego), "") if out else ""
+                if agent.action in V.TURN_ACTIONS and (first != "stop" or turned):  # binding lays the ego's one
+                    # route from its start: a later turn only after it stopped before the junction, and once
+                    notes.append(f"left out: the ego's later {agent.action} (stage '{stage.name}'): ttsgc binds "
+                                 "a later turn of the ego only after a first-stage stop, and once")
+                    continue
+                turned |= agent.action in V.TURN_ACTIONS
                 agent = agent.model_copy(update={"type": ego_type})
             agent = _repair_agent(agent, road, notes)
             if agent.is_ego and ego_type is None:

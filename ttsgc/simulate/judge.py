@@ -248,6 +248,8 @@ def judge(plan: Plan, trace: Trace, odr: OpenDrive) -> Verdict:
     intents = declares_intents(plan)
     if intents:
         results = [_check_agent(plan, trace, odr, name, ego, bodies) for name in plan.entities]
+        if ego is not None:
+            results += _check_later_ego_actions(plan, trace, ego)
     else:  # a file not written by ttsgc: each entity is judged only on entering the road and staying on it
         results = [AgentResult(name=name, type=e.category, action=NONE_DECLARED, achieved=ok, reason=why)
                    for name, e in plan.entities.items() for ok, why in [entity_result(trace, name)]]
@@ -339,6 +341,45 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
     if action == "on_the_sidewalk":
         return result(*_walked_on_sidewalk(odr, road, position, samples[0], after))
     return result(False, f"no check for action '{action}'")
+
+
+LATER_CHECKS = ("go_straight", "stop", "change_lane_to_left", "change_lane_to_right", "turn_left", "turn_right")
+
+
+def _check_later_ego_actions(plan: Plan, trace: Trace, ego: str) -> list[AgentResult]:
+    """One row per later stage the ego acts in ('ego (stage 2)', stages counted from 1), judged from the start
+    of that stage's ego event."""
+    entity = plan.entities[ego]
+    samples = trace.samples.get(ego, [])
+    out = []
+    for stage, action in I.parse_stage_actions(entity.intent.get(I.STAGE_ACTIONS, "")):
+        result = lambda ok, why: AgentResult(name=f"{ego} (stage {stage + 1})",  # noqa: E731
+                                             type=entity.intent.get(I.TYPE, entity.category), action=action,
+                                             achieved=ok, reason=why)
+        start = trace.started.get(I.later_event_name(ego, stage, action))
+        after = [s for s in samples if start is not None and s.t >= start - 1e-9]
+        if action not in LATER_CHECKS:
+            out.append(result(False, f"no check for a later action '{action}' of the ego"))
+        elif start is None:
+            out.append(result(False, "its action in this stage never started: the stage or its trigger never came"))
+        elif not after:
+            out.append(result(False, f"left the scene before its action started at t={start:.1f} s"))
+        elif action in ("turn_left", "turn_right"):
+            target = entity.intent.get(I.TARGET_ROAD, "")
+            if not target:
+                out.append(result(False, "was given no junction to turn at (its road does not lead to one)"))
+            else:
+                out.append(result(*_movement(after, I.MOVEMENT_OF_ACTION[action], target)))
+        elif action == "go_straight":
+            travelled = sum(math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(after, after[1:]))
+            out.append(result(travelled >= 5.0, f"drove {travelled:.0f} m from t={start:.1f} s"
+                              + ("" if travelled >= 5 else ", too little")))
+        elif action == "stop":
+            out.append(result(*_stopped(after)))
+        else:
+            ok, why = _lane_change(after, 1 if action.endswith("left") else -1)
+            out.append(result(ok, f"{why} from t={start:.1f} s"))
+    return out
 
 
 def _movement(after: list[Sample], movement: str, target: str) -> tuple[bool, str]:

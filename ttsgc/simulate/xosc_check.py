@@ -196,7 +196,18 @@ def _intent_problems(resolved: Resolved) -> list[str]:
             known = ", ".join(sorted(value or "''" for value in allowed[key]))
             problems.append(f"{resolved.where(prop)}: the intent {prop.get('name')} = '{prop.get('value')}' is not "
                             f"one ttsgc knows ({known})")
+        elif key == "stage_actions" and not _stage_actions_known(prop.get("value") or ""):
+            problems.append(f"{resolved.where(prop)}: the intent {prop.get('name')} = '{prop.get('value')}' is not "
+                            "a list of STAGE:ACTION with actions ttsgc knows")
     return problems
+
+
+def _stage_actions_known(value: str) -> bool:
+    from ttsgc import intent as I
+    from ttsgc import vocabulary as words
+
+    pairs = I.parse_stage_actions(value)
+    return len(pairs) == len(value.split(",")) and all(action in words.ACTIONS for _, action in pairs)
 
 
 def _reference_problems(resolved: Resolved) -> list[str]:
