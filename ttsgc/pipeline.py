@@ -93,9 +93,8 @@ def simulate_compiled(compiled: Compiled, out: Path, players: str = "all"):
     will be written, the map beside it."""
     import tempfile
 
-    from ttsgc.simulate.validate import validate
-
     from ttsgc.roads.opendrive import MapError
+    from ttsgc.simulate.validate import validate
 
     with tempfile.TemporaryDirectory(prefix="ttsgc-") as scratch:
         trial = Path(scratch) / out.name

@@ -91,10 +91,13 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
 
 def _worker_start(warm_up=None) -> None:
     """Ctrl-C reaches every process of the terminal's group: the main process alone answers it (it stops
-    handing out jobs), and a worker finishes the scene it is on instead of dying with a traceback."""
+    handing out jobs), and a worker finishes the scene it is on instead of dying with a traceback. The main
+    process ends its workers with SIGTERM: a forked worker must die of it quietly, not inherit the main
+    process's handler that turns SIGTERM into an exception."""
     import signal
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
     if warm_up is not None:
         warm_up()
 
