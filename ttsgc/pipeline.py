@@ -216,8 +216,8 @@ def compile_distribution(scenario: Scenario, out: Path, n: int, maps=None, seed:
     if n < 2:
         raise DistributionRequestError(f"--distribution needs --variants 2 or more, not {n}")
     if version not in DISTRIBUTION_VERSIONS:
-        raise DistributionRequestError(f"a ParameterValueDistribution is OpenSCENARIO 1.1 or later; --osc-version {version} "
-                         f"cannot hold one (choose one of {', '.join(DISTRIBUTION_VERSIONS)})")
+        raise DistributionRequestError(f"a ParameterValueDistribution is OpenSCENARIO 1.1 or later; --osc-version "
+                                       f"{version} cannot hold one (choose one of {', '.join(DISTRIBUTION_VERSIONS)})")
     if simulate:
         nominal, report = compile_and_prove(scenario, out, maps=maps, seed=seed, version=version, log=log,
                                             players=players)

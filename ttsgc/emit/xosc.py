@@ -110,17 +110,27 @@ def _map_edge_act(scene: BoundScene, minor: int) -> xosc.Act | None:
         return None
     act = xosc.Act("map_edge", _always("map_edge_start", 0.0, minor))
     for agent in vehicles:
-        event = xosc.Event(f"{agent.name}_leaves", xosc.Priority.parallel)
-        event.add_action("leave", xosc.DeleteEntityAction(agent.name))
-        event.add_trigger(xosc.EntityTrigger(f"{agent.name}_out_of_road", 0, xosc.ConditionEdge.none,
-                                             xosc.EndOfRoadCondition(0), agent.name))
-        maneuver = xosc.Maneuver(f"{agent.name}_edge")
-        maneuver.add_event(event)
-        group = xosc.ManeuverGroup(f"{agent.name}_edge_group")
-        group.add_actor(agent.name)
-        group.add_maneuver(maneuver)
-        act.add_maneuver_group(group)
+        leaves = (f"{agent.name}_leaves", [("leave", xosc.DeleteEntityAction(agent.name))],
+                  xosc.EntityTrigger(f"{agent.name}_out_of_road", 0, xosc.ConditionEdge.none,
+                                     xosc.EndOfRoadCondition(0), agent.name))
+        act.add_maneuver_group(_group(agent.name, f"{agent.name}_edge", f"{agent.name}_edge_group", [leaves]))
     return act
+
+
+def _group(actor: str, maneuver_name: str, group_name: str, events) -> xosc.ManeuverGroup:
+    """One actor's maneuver group: each (event name, [(action name, action)], trigger) an event of one maneuver,
+    all events parallel (none overrides another)."""
+    maneuver = xosc.Maneuver(maneuver_name)
+    for event_name, actions, trigger in events:
+        event = xosc.Event(event_name, xosc.Priority.parallel)
+        for action_name, action in actions:
+            event.add_action(action_name, action)
+        event.add_trigger(trigger)
+        maneuver.add_event(event)
+    group = xosc.ManeuverGroup(group_name)
+    group.add_actor(actor)
+    group.add_maneuver(maneuver)
+    return group
 
 
 def _trajectory_bound(agent: BoundAgent) -> bool:
@@ -234,17 +244,8 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
     for agent in scene.agents:
         if agent.stage != k:
             continue
-        maneuver = xosc.Maneuver(f"{agent.name}_maneuver")
-        for event_name, actions, trigger in _events(agent, scene, minor):
-            event = xosc.Event(event_name, xosc.Priority.parallel)
-            for action_name, action in actions:
-                event.add_action(action_name, action)
-            event.add_trigger(trigger)
-            maneuver.add_event(event)
-        group = xosc.ManeuverGroup(f"{agent.name}_group")
-        group.add_actor(agent.name)
-        group.add_maneuver(maneuver)
-        act.add_maneuver_group(group)
+        act.add_maneuver_group(_group(agent.name, f"{agent.name}_maneuver", f"{agent.name}_group",
+                                      _events(agent, scene, minor)))
     ego = next(a for a in scene.agents if a.is_ego)
     for step in ego.later:
         if step.stage == k:
@@ -276,16 +277,9 @@ def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int) -> xosc.Man
     elif not actions:
         actions.append(("keep_speed", xosc.AbsoluteSpeedAction(ego.speed_mps, step_dynamics)))
     label = I.later_event_name(ego.name, step.stage, step.action)
-    event = xosc.Event(label, xosc.Priority.parallel)
-    for action_name, action in actions:
-        event.add_action(action_name, action)
-    event.add_trigger(_start_trigger(ego.model_copy(update={"trigger": step.trigger}), label, minor))
-    maneuver = xosc.Maneuver(f"{ego.name}_maneuver_in_stage_{step.stage}")
-    maneuver.add_event(event)
-    group = xosc.ManeuverGroup(f"{ego.name}_group_in_stage_{step.stage}")
-    group.add_actor(ego.name)
-    group.add_maneuver(maneuver)
-    return group
+    trigger = _start_trigger(ego.model_copy(update={"trigger": step.trigger}), label, minor)
+    return _group(ego.name, f"{ego.name}_maneuver_in_stage_{step.stage}", f"{ego.name}_group_in_stage_{step.stage}",
+                  [(label, actions, trigger)])
 
 
 def _always(label: str, delay: float, minor: int) -> xosc.ValueTrigger:
