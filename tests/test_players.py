@@ -34,6 +34,15 @@ def esmini(monkeypatch):
 
 
 
+def _played(folder: Path, name: str, tsg: str):
+    """A scene written in the language, compiled onto its best-ranked road and played in every player."""
+    source = folder / f"{name}.tsg"
+    source.write_text(tsg)
+    out = folder / f"{name}.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    return validate(out, "all")
+
+
 def _verdict(report, player: str):
     return next(v for v in report.verdicts if v.player == player)
 
@@ -161,37 +170,25 @@ def test_junction_traffic_takes_turns_and_a_walker_lets_the_ego_pass():
 
 def test_agents_of_a_later_stage_at_the_junction_do_their_action(esmini, tmp_path):
     """They enter with their route when their stage starts, and take turns through the junction."""
-    source = tmp_path / "later.tsg"
-    source.write_text('scenario "later at the junction"\nroad {\n    at junction\n}\nstage first {\n'
-                      '    ego car go_straight\n}\nstage second {\n    car c1 at road_of_left_turn turn_left\n'
-                      '    car c2 at road_of_straight go_straight\n}\n')
-    out = tmp_path / "later.xosc"
-    write(compile_scenario(parse_file(source), out), out)
-    report = validate(out, "all")
+    report = _played(tmp_path, "later", 'scenario "later at the junction"\nroad {\n    at junction\n}\n'
+                     'stage first {\n    ego car go_straight\n}\nstage second {\n'
+                     '    car c1 at road_of_left_turn turn_left\n    car c2 at road_of_straight go_straight\n}\n')
     assert report.ok, report.table()
 
 
 def test_a_turn_with_a_trigger_is_judged_from_where_the_car_appeared(esmini, tmp_path):
     """Its route is its action: a car that reached its road before its trigger fired still turned left."""
-    source = tmp_path / "triggered.tsg"
-    source.write_text('scenario "triggered"\nroad {\n    at junction\n}\nstage main {\n    ego car go_straight\n'
-                      '    car c1 at road_of_left_turn turn_left when ego within 30m\n'
-                      '    car c2 at road_of_straight go_straight\n}\n')
-    out = tmp_path / "triggered.xosc"
-    write(compile_scenario(parse_file(source), out), out)
-    report = validate(out, "all")
+    report = _played(tmp_path, "triggered", 'scenario "triggered"\nroad {\n    at junction\n}\nstage main {\n'
+                     '    ego car go_straight\n    car c1 at road_of_left_turn turn_left when ego within 30m\n'
+                     '    car c2 at road_of_straight go_straight\n}\n')
     for player in ("sumo", "esmini"):
         assert "went left onto road" in _agent(report, player, "c1").reason, report.table()
 
 
 def test_two_walkers_queued_on_one_sidewalk_keep_their_distance(esmini, tmp_path):
-    source = tmp_path / "walkers.tsg"
-    source.write_text('scenario "two walkers"\nstage main {\n    ego car go_straight\n'
-                      '    pedestrian p1 at right on_the_sidewalk\n'
-                      '    pedestrian p2 at right on_the_sidewalk behind p1\n}\n')
-    out = tmp_path / "walkers.xosc"
-    write(compile_scenario(parse_file(source), out), out)
-    report = validate(out, "all")
+    report = _played(tmp_path, "walkers", 'scenario "two walkers"\nstage main {\n    ego car go_straight\n'
+                     '    pedestrian p1 at right on_the_sidewalk\n'
+                     '    pedestrian p2 at right on_the_sidewalk behind p1\n}\n')
     assert report.ok and not report.collisions, report.table()
 
 

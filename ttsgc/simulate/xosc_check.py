@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import copy
 import functools
-import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -19,7 +18,8 @@ from pathlib import Path
 from lxml import etree
 
 from ttsgc.errors import ExitCode
-from ttsgc.simulate.resolve import DOUBLE, XML_PARSER, Resolved, resolve
+from ttsgc.numbers import NumberError, parse_float
+from ttsgc.simulate.resolve import XML_PARSER, Resolved, resolve
 from ttsgc.xsd import (NUMERIC_TYPES, XoscFileError, attribute_types, errors, one_of_tags,
                                         version_of)
 
@@ -69,15 +69,12 @@ class Scenario:
 
 
 def bounded_number(text: str, where: str, what: str, low: float = -ANY_NUMBER, high: float = ANY_NUMBER) -> float:
-    """A finite number within [low, high], or an error that names where and what."""
-    if text is not None and text.strip() in ("NaN", "INF", "+INF", "-INF"):
-        raise XoscFileError(f"{where}: {what} = '{text}' is not a finite number")
-    if text is None or not DOUBLE.fullmatch(text.strip()):
-        raise XoscFileError(f"{where}: {what} = '{text}' is not a number")
-    value = float(text)
-    if not math.isfinite(value) or not low <= value <= high:
-        raise XoscFileError(f"{where}: {what} = '{text}' is out of range ({low:g} to {high:g})")
-    return value
+    """A finite number within [low, high] (the project's one number reader), or an error that names where and
+    what."""
+    try:
+        return parse_float(text, low, high)
+    except NumberError as exc:
+        raise XoscFileError(f"{where}: {what} = {exc}") from None
 
 
 def _read(path: Path):
