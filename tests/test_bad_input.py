@@ -78,6 +78,19 @@ def test_english_with_a_400_digit_count_and_speed_limit_is_read_with_its_limits(
     assert "a speed limit of a number too large to read is outside 5..200 km/h" in err and "speed_" not in out
 
 
+@pytest.mark.parametrize("sentence, note", [
+    ("the ego drives at 99999999999999999999 km/h", "left out: a speed of a number too large to read"),
+    ("a car cuts in after 999999999999 seconds", "left out: a time of a number too large to read"),
+    ("a pedestrian crosses when the ego is within 9000 m", "left out: a trigger distance of 9000 m is outside"),
+    ("a car cuts in after 99999 seconds", "left out: a trigger time of 99999 s is above"),
+])
+def test_a_quantity_the_english_cannot_use_is_left_out_with_a_note(tmp_path, capsys, sentence, note):
+    prompt = tmp_path / "p.txt"
+    prompt.write_text(sentence)
+    code, out, err = _run(capsys, "lower", prompt)
+    assert code == ExitCode.OK and note in err and f"# {note}" in out
+
+
 def test_a_book_given_as_the_prompt_is_refused_at_once(tmp_path, capsys):
     """Reading is quadratic in the worst case: four megabytes of prose used to take hours."""
     prompt = tmp_path / "p.txt"

@@ -1681,29 +1681,43 @@ def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
                     t.features.add("behind")
 
 
+QUANTITY_UNITS = {"kmh": "speed", "mph": "speed", "m": "distance", "meters": "distance", "meter": "distance",
+                  "metres": "distance", "s": "time", "seconds": "time", "second": "time", "sec": "time",
+                  "secs": "time"}
+
+
 def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
     """Triggers, speeds and gaps said in numbers: 'within 15 m', 'after 2 seconds', 'at 50 km/h', '10 m ahead'."""
     for k, u in enumerate(units):
         if u.category != "number" or not subject:
             continue
         value = read_number(u.word)
-        if value is None or value >= TOO_LARGE:
+        if value is None:
             continue
         prev = units[k - 1] if k else None
         nxt = units[k + 1] if k + 1 < len(units) else None
         unit_word = nxt.tokens[0].word if nxt is not None else ""
+        if value >= TOO_LARGE:
+            if unit_word in QUANTITY_UNITS:
+                r.notes.append(f"left out: a {QUANTITY_UNITS[unit_word]} of a number too large to read")
+                r.mark(u), r.mark(nxt)
+            continue
         targets = [e for e in subject if not e.is_ego] or subject
         if prev is not None and prev.word == "within" and unit_word in ("m", "meters", "meter", "metres"):
             low, high = V.TRIGGER_DISTANCE_RANGE_M
             if low <= value <= high:
                 for e in targets:
                     e.trigger = Trigger(within_m=value)
-                r.mark(u), r.mark(prev), r.mark(nxt)
+            else:
+                r.notes.append(f"left out: a trigger distance of {value:g} m is outside {low:g}..{high:g} m")
+            r.mark(u), r.mark(prev), r.mark(nxt)
         elif prev is not None and prev.word == "after" and unit_word in ("s", "seconds", "second", "sec", "secs"):
             if value <= V.TRIGGER_TIME_RANGE_S[1]:
                 for e in targets:
                     e.trigger = Trigger(after_s=value)
-                r.mark(u), r.mark(prev), r.mark(nxt)
+            else:
+                r.notes.append(f"left out: a trigger time of {value:g} s is above {V.TRIGGER_TIME_RANGE_S[1]:g} s")
+            r.mark(u), r.mark(prev), r.mark(nxt)
         elif unit_word in ("kmh", "mph") and not any(t.word in LIMIT_WORDS for t in r.tokens[max(0, u.start - 4):
                                                                                             u.start + 5]):
             speed = Speed(value=value, unit="km/h" if unit_word == "kmh" else "mph")
