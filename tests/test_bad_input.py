@@ -4,13 +4,15 @@ exit code, never a traceback (exit 1), a hang, a half-written file or an overwri
 from __future__ import annotations
 
 import json
+import os
 import re
+import stat
 import time
 from pathlib import Path
 
 import pytest
 
-from conftest import EXAMPLES, ROOT, LocalHttpServer
+from conftest import EXAMPLES, ROOT, LocalHttpServer, compiled_example
 from ttsgc.cli import main
 from ttsgc.errors import ExitCode
 from ttsgc.numbers import NumberError, clamped_int, parse_float, parse_int
@@ -259,6 +261,32 @@ def test_compile_never_overwrites_its_input(tmp_path, capsys, name):
     code, _, err = _run(capsys, "compile", source, "-o", source, "--no-simulate")
     assert code == ExitCode.INVALID_SCENARIO and "never overwrites its input" in err
     assert source.read_bytes() == before and sorted(p.name for p in tmp_path.iterdir()) == [name]
+
+
+def test_an_output_that_is_a_device_or_pipe_is_refused_and_left_as_it_was(tmp_path, capsys):
+    """Writing renames a finished file over the target: over /dev/null or a pipe that would replace it."""
+    prompt = tmp_path / "p.txt"
+    prompt.write_text("the ego turns left")
+    pipe = tmp_path / "pipe.xosc"
+    os.mkfifo(pipe)
+    for out in (pipe, Path(os.devnull)):
+        code, _, err = _run(capsys, "compile", prompt, "-o", out, "--no-simulate")
+        assert code == ExitCode.INVALID_SCENARIO and "is not a regular file" in err
+    assert stat.S_ISFIFO(pipe.stat().st_mode) and stat.S_ISCHR(Path(os.devnull).stat().st_mode)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p.txt", "pipe.xosc"]
+
+
+def test_a_symlink_loop_or_a_device_as_the_scenes_map_is_a_map_error(tmp_path, capsys):
+    scene = compiled_example("ambulance_from_behind", tmp_path)
+    text = scene.read_text()
+    name = re.search(r'LogicFile filepath="([^"]+)"', text).group(1)
+    (tmp_path / "a.xodr").symlink_to("b.xodr")
+    (tmp_path / "b.xodr").symlink_to("a.xodr")
+    for target, why in (("a.xodr", "does not exist"), (os.devnull, "is not a regular file")):
+        scene.write_text(text.replace(f'filepath="{name}"', f'filepath="{target}"'))
+        for command in (["validate", scene], ["render", scene, "-o", tmp_path / "s.png"]):
+            code, _, err = _run(capsys, *command)
+            assert code == ExitCode.MAP_ERROR and why in err, err
 
 
 def test_an_output_that_is_a_folder_is_a_usage_error(tmp_path, capsys):

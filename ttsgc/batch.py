@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ttsgc.errors import ExitCode, TtsgcError
-from ttsgc.files import write_atomic
+from ttsgc.files import real_path, write_atomic
 
 SUMMARY_JSON = "summary.json"
 SUMMARY_CSV = "summary.csv"
@@ -128,10 +128,10 @@ def plan_jobs(prompts: Path, out_dir: Path, variants: int = 1, maps=None, method
     out_dir, prompts = Path(out_dir), Path(prompts)
     if out_dir.exists() and not out_dir.is_dir():
         raise BatchError(f"{out_dir}: the output must be a folder, and this is a file")
-    if prompts.is_dir() and out_dir.resolve() == prompts.resolve():
+    if prompts.is_dir() and real_path(out_dir) == real_path(prompts):
         raise BatchError(f"{out_dir}: the output folder is the prompts folder; the lowered scenes would overwrite "
                          f"the hand-written ones (choose another -o)")
-    if prompts.is_file() and prompts.resolve().parent == out_dir.resolve() and (
+    if prompts.is_file() and real_path(prompts).parent == real_path(out_dir) and (
             prompts.name in (SUMMARY_JSON, SUMMARY_CSV) or prompts.suffix in (".xosc", ".tsg", ".xodr")):
         raise BatchError(f"{prompts}: the batch would write over its own input (choose another -o)")
     jobs = []

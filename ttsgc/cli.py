@@ -10,7 +10,8 @@ from pathlib import Path
 
 from ttsgc import __version__
 from ttsgc.errors import ExitCode, TtsgcError
-from ttsgc.files import OutputError, check_outputs, protect_inputs, release_inputs, write_atomic, write_output
+from ttsgc.files import (OutputError, check_outputs, protect_inputs, real_path, release_inputs, write_atomic,
+                         write_output)
 
 # Each command imports what it uses inside its function: `ttsgc validate` needs neither the language nor the
 # compiler, `ttsgc check` no simulator; a start-up that loads everything costs every command.
@@ -478,7 +479,7 @@ def _maps_synth(args) -> int:
 
     scenario = parse_file(args.scene)
     out = Path(args.output)
-    if out.exists() and out.resolve() == Path(args.scene).resolve():
+    if out.exists() and real_path(out) == real_path(args.scene):
         print(f"ttsgc: error: {out}: the map would overwrite the scene it is made from", file=sys.stderr)
         return ExitCode.INVALID_SCENARIO
     seed = chosen_seed(scenario, args.seed)

@@ -5,6 +5,7 @@ and with a clear error (exit 2) naming the path when the output cannot be writte
 from __future__ import annotations
 
 import os
+import stat
 import tempfile
 from pathlib import Path
 
@@ -13,6 +14,20 @@ from ttsgc.errors import UsageError
 
 class OutputError(UsageError):
     """An output that cannot or must not be written: a folder, an input, a read-only file, an unwritable place."""
+
+
+def real_path(path: str | Path) -> Path:
+    """The absolute path with symlinks followed. A symlink loop (RuntimeError before Python 3.13) gives the
+    absolute path unresolved, which then fails to open like any unreadable file, with an OSError."""
+    try:
+        return Path(path).resolve()
+    except RuntimeError:
+        return Path(os.path.abspath(path))
+
+
+def missing_why(path: Path) -> str:
+    """Why a file the command needs cannot be read as one: 'does not exist' or 'is not a regular file'."""
+    return "is not a regular file" if path.exists() else "does not exist"
 
 
 _INPUTS: set[tuple[int, int]] = set()  # (device, inode) of the files the running command reads
@@ -24,7 +39,7 @@ def protect_inputs(*paths: str | Path) -> None:
     hard links included)."""
     for path in paths:
         path = Path(path)
-        _INPUT_PATHS.add(path.resolve())
+        _INPUT_PATHS.add(real_path(path))
         try:
             st = path.stat()
         except OSError:
@@ -43,13 +58,15 @@ def check_output(path: str | Path) -> Path:
     path = Path(path)
     if path.is_dir():
         raise OutputError(f"{path}: is a folder; name the file to write (e.g. {path / 'scene.xosc'})")
-    if path.resolve() in _INPUT_PATHS:
+    if real_path(path) in _INPUT_PATHS:
         raise OutputError(f"{path}: is an input of this command; ttsgc never overwrites its input (name another "
                           f"output with -o)")
     try:
         st = path.stat()
     except OSError:
         return path
+    if not stat.S_ISREG(st.st_mode):  # renaming over /dev/null or a pipe would replace it with a plain file
+        raise OutputError(f"{path}: is not a regular file (a device, pipe or socket); ttsgc writes only files")
     if (st.st_dev, st.st_ino) in _INPUTS:
         raise OutputError(f"{path}: is an input of this command (under another name); ttsgc never overwrites "
                           f"its input")
@@ -63,7 +80,7 @@ def check_outputs(*paths: str | Path) -> None:
     seen: dict[Path, Path] = {}
     for path in map(Path, paths):
         check_output(path)
-        other = seen.setdefault(path.resolve(), path)
+        other = seen.setdefault(real_path(path), path)
         if other is not path:
             raise OutputError(f"{path}: two outputs of this command would be written there ({other} and {path})")
 

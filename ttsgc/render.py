@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.files import real_path
 from ttsgc.roads.opendrive import OpenDrive, Road
 from ttsgc.simulate.trace import Sample, Trace
 
@@ -667,7 +668,7 @@ def render_scene(xosc: str | Path, out: str | Path, player: str = "sumo", seed: 
     if out.suffix.lower() not in FORMATS:
         raise RenderError(f"{out}: cannot draw into a '{out.suffix or 'nameless'}' file; the output must end in "
                           f"{', '.join(FORMATS)}")
-    if out.resolve() == Path(xosc).resolve():
+    if real_path(out) == real_path(xosc):
         raise RenderError(f"{out}: the picture would overwrite the scene itself")
     plan = read_plan(Path(xosc))
     chosen_players(player)  # a clear error when that player cannot run here

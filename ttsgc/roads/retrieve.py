@@ -13,6 +13,7 @@ from typing import Callable, Iterable
 
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.files import real_path
 from ttsgc.resources import resource_dir
 from ttsgc.roads.index import Approach, MapIndex, load_index
 from ttsgc.roads.opendrive import MapError
@@ -59,10 +60,11 @@ def _map_sources(maps: Iterable[str | Path] | None) -> dict[Path, Path | None]:
         elif path.is_file():
             files.append((path, None))
         else:
-            raise MapError(f"{path}: no such map file or folder")
+            raise MapError(f"{path}: " + ("is neither a map file nor a folder" if path.exists() else
+                                         "no such map file or folder"))
     unique: dict[Path, Path | None] = {}
     for file, folder in files:
-        resolved = file.resolve()
+        resolved = real_path(file)
         unique[resolved] = None if resolved in unique and unique[resolved] is None else folder
     if not unique:
         raise MapError("the map library is empty")

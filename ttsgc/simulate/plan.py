@@ -11,6 +11,7 @@ from lxml import etree
 
 from ttsgc import intent as I
 from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.files import missing_why, real_path
 from ttsgc.simulate.xosc_check import load_scenario
 
 
@@ -275,9 +276,9 @@ def plan_of(root, path: Path, xodr: Path | None = None, notes=()) -> Plan:
         logic = root.find("RoadNetwork/LogicFile")
         if logic is None or not logic.get("filepath"):
             raise ScenarioFileError(f"{path}: the file names no road network (RoadNetwork/LogicFile)")
-        xodr = (path.parent / logic.get("filepath")).resolve()
+        xodr = real_path(path.parent / logic.get("filepath"))
         if not xodr.is_file():
-            raise ScenarioFileError(f"{path}: its road network {logic.get('filepath')} does not exist at {xodr}")
+            raise ScenarioFileError(f"{path}: its road network {logic.get('filepath')} {missing_why(xodr)} ({xodr})")
     reader = _Reader()
     entities = {}
     for obj in root.findall("Entities/ScenarioObject"):

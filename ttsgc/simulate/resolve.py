@@ -30,6 +30,7 @@ from lark import Lark, Tree
 from lark.exceptions import LarkError, UnexpectedInput
 from lxml import etree
 
+from ttsgc.files import real_path
 from ttsgc.resources import resource_dir
 from ttsgc.xsd import (INTEGER_TYPES, NUMERIC_TYPES, XoscFileError, attribute_types, errors,
                                          version_of)
@@ -464,7 +465,7 @@ class _Resolver:
             self.catalogs = {}
             self.catalog_dirs = []
             for location in self.out.root.iterfind("CatalogLocations/*/Directory"):
-                folder = (self.out.path.parent / location.get("path", "")).resolve()
+                folder = real_path(self.out.path.parent / location.get("path", ""))
                 self.catalog_dirs.append((folder, self.where(location)))
                 if folder.is_dir():
                     for file in sorted(folder.glob("*.xosc")):

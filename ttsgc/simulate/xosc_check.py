@@ -18,6 +18,7 @@ from pathlib import Path
 from lxml import etree
 
 from ttsgc.errors import ExitCode
+from ttsgc.files import missing_why, real_path
 from ttsgc.numbers import NumberError, parse_float
 from ttsgc.simulate.resolve import XML_PARSER, Resolved, resolve
 from ttsgc.xsd import (NUMERIC_TYPES, XoscFileError, attribute_types, errors, one_of_tags,
@@ -230,10 +231,10 @@ def road_network(resolved: Resolved) -> Path:
         where = resolved.where(logic if logic is not None else resolved.root)
         raise XoscFileError(f"{where}: the file names no road network (RoadNetwork/LogicFile filepath); ttsgc "
                             f"plays scenes on OpenDRIVE roads only")
-    xodr = (resolved.path.parent / logic.get("filepath")).resolve()
+    xodr = real_path(resolved.path.parent / logic.get("filepath"))
     if not xodr.is_file():
-        raise MissingRoadNetwork(f"{resolved.where(logic)}: the road network '{logic.get('filepath')}' does not "
-                                 f"exist (looked for {xodr})")
+        raise MissingRoadNetwork(f"{resolved.where(logic)}: the road network '{logic.get('filepath')}' "
+                                 f"{missing_why(xodr)} (looked for {xodr})")
     return xodr
 
 
