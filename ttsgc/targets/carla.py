@@ -234,19 +234,18 @@ def ego_at_stage_start(act: etree._Element, ego: str, odr: OpenDrive) -> LanePos
 
 
 def lane_position_beside(origin: LanePos, dlane: int, ds: float, odr: OpenDrive) -> LanePos | str:
-    """The lane position ds ahead of origin along its driving direction, dlane lanes to its left (as the
-    players read the generic file's RelativeLanePosition), on origin's road."""
+    """The lane position a RelativeLanePosition names, as OpenSCENARIO defines it and esmini reads it: ds
+    along the road's s from origin, dlane added to origin's lane id (the centre lane, 0, skipped)."""
     road = odr.roads[origin.road]
-    ahead = 1.0 if origin.lane < 0 else -1.0
-    s = origin.s + ahead * ds
-    ids = sorted(road.section_at(min(max(s, 0.0), road.length)).lanes)  # right (most negative) to left
-    order = ids if origin.lane < 0 else ids[::-1]  # ordered from the driver's right to left
-    if not 0.0 <= s <= road.length or origin.lane not in order:
-        return f"beside the ego {ds:g} m ahead, past the end of road {road.id}"
-    k = order.index(origin.lane) + dlane
-    if not 0 <= k < len(order):
-        return f"beside the ego {dlane:+d} lanes across, where road {road.id} has no lane"
-    return LanePos(road=road.id, lane=order[k], s=round(s, 3))
+    s = origin.s + ds
+    if not 0.0 <= s <= road.length:
+        return f"beside the ego {ds:+g} m along road {road.id}, past its end"
+    lane = origin.lane + dlane
+    if lane == 0 or (lane > 0) != (origin.lane > 0):
+        lane += 1 if dlane > 0 else -1
+    if lane not in road.section_at(s).lanes:
+        return f"beside the ego {dlane:+d} lane ids across, where road {road.id} has no lane {lane}"
+    return LanePos(road=road.id, lane=lane, s=round(s, 3))
 
 
 def _actor_of(element: etree._Element) -> str | None:
