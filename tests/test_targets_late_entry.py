@@ -152,6 +152,8 @@ def test_late_entities_in_the_carla_file_are_where_the_generic_file_puts_them(so
         x, y = _reference_point(trace, agent.name, entered)
         tolerance = 2 * step_travel + agent.speed_mps * trace.step_s + 0.1
         assert math.hypot(x - pose.x, y - pose.y) <= tolerance, (agent.name, entered, pose)
+        turn = math.remainder(entered.h - pose.hdg, math.tau)  # facing its lane's way, as the carla file has it
+        assert abs(turn) < 0.3, (agent.name, entered, pose)
 
 
 def test_a_late_entity_beside_the_ego_in_a_stage_that_starts_on_time_is_refused(tmp_path, capsys):

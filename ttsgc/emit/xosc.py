@@ -339,7 +339,9 @@ def ego_lane_when_stage_starts(scene: BoundScene, k: int) -> int:
     """The ego's lane id when stage k starts: where its route ends once it has made its turn (in the first
     stage, or in a later one before k), else the lane it started in. A RelativeLanePosition's ds runs along
     the road's reference line and its dLane is a difference of lane ids (OpenSCENARIO's definitions, and
-    esmini's reading), so on a left lane (id > 0) ahead of the ego is a negative ds, its left a negative dLane."""
+    esmini's reading), so on a left lane (id > 0) ahead of the ego is a negative ds, its left a negative dLane;
+    and without an Orientation the body faces along s (esmini), so one on a left lane is turned round (h = pi,
+    relative)."""
     ego = next(a for a in scene.agents if a.is_ego)
     later_turn = next((step.stage for step in ego.later if step.action in V.TURN_ACTIONS), None)
     turned = ego.route and (later_turn is None or later_turn < k)
@@ -356,8 +358,10 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
         if agent.appear is not None:
             ego = next(a for a in scene.agents if a.is_ego)
             along_s = 1 if ego_lane_when_stage_starts(scene, agent.stage) < 0 else -1
+            facing = {} if along_s > 0 else {"orientation": xosc.Orientation(  # the left lane's way, against s
+                h=math.pi, reference=xosc.ReferenceContext.relative)}
             position = xosc.RelativeLanePosition(agent.appear.dlane * along_s, ego.name, 0,
-                                                 ds=agent.appear.ds * along_s + 0.0)
+                                                 ds=agent.appear.ds * along_s + 0.0, **facing)
         else:
             position = _lane_position(agent.start)
         setup += [("enter", xosc.AddEntityAction(agent.name, position)),
