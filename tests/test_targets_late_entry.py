@@ -110,20 +110,29 @@ def _players():
         yield "esmini"
 
 
-@pytest.mark.parametrize("source", [EXAMPLES / "boxed_in.tsg", STRAIGHT_THEN_BOXED_IN],
-                         ids=["boxed_in", "left_lane"])
+# (scene, CARLA town or None for the built-in library, the approach to bind to)
+LATE_ENTRY_CASES = {"boxed_in": (EXAMPLES / "boxed_in.tsg", None, None),
+                    "left_lane": (STRAIGHT_THEN_BOXED_IN, None, None),
+                    "Town04": (EXAMPLES / "boxed_in.tsg", "Town04", ("Town04", "28:fwd"))}  # a left lane too
+
+
+@pytest.mark.parametrize("case", list(LATE_ENTRY_CASES))
 @pytest.mark.parametrize("player_name", list(_players()))
-def test_late_entities_in_the_carla_file_are_where_the_generic_file_puts_them(source, player_name, tmp_path,
-                                                                              monkeypatch):
+def test_late_entities_in_the_carla_file_are_where_the_generic_file_puts_them(case, player_name, tmp_path,
+                                                                              monkeypatch, request):
     """The generic file places a late car relative to the ego as its stage starts; the player's trace of that
     file says where the ego was then and where the car entered. The carla file's fixed places must agree, to
     within what the players' steps allow: the trigger is checked once a step, and the car enters a step later
     (so the ego may be up to a step past the trigger point, the car a step further on when first sampled)."""
     if player_name == "esmini":
         monkeypatch.setenv("TTSGC_ESMINI", str(ESMINI))
+    source, town, only = LATE_ENTRY_CASES[case]
+    maps = None
+    if town is not None:
+        maps = [request.getfixturevalue("shared") / "maps" / "carla" / f"{town}.xodr"]
     scenario = _scene(source)
     out = tmp_path / "generic.xosc"
-    compiled = compile_scenario(scenario, out, version="1.0")
+    compiled = compile_scenario(scenario, out, maps=maps, version="1.0", only=only)
     write(compiled, out)
     trace = player(player_name).play(read_plan(out))
     root = etree.fromstring(for_target(compiled, "carla").xosc)
