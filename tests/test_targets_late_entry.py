@@ -214,3 +214,16 @@ def test_a_late_car_ahead_of_an_ego_on_a_left_lane_is_ahead_of_it_in_every_playe
     assert {v.player for v in report.verdicts} == {"sumo", "esmini"}
     for verdict in report.verdicts:
         assert all(a.achieved for a in verdict.agents), (verdict.player, [a.reason for a in verdict.agents])
+
+
+def test_a_late_entity_at_a_fixed_place_is_teleported_to_that_place(tmp_path):
+    """An agent of a later stage standing on a junction road enters at the generic file's own lane position."""
+    text = (EXAMPLES / "boxed_in.tsg").read_text().replace(
+        "behind c2", "behind c2\n    car c4 at road_of_left_turn stop")
+    compiled = compile_scenario(parse(text), tmp_path / "f.xosc", version="1.0")
+    generic = etree.fromstring(compiled.xosc)
+    entered = next(e for e in generic.iter("EntityAction") if e.get("entityRef") == "c4")
+    fixed = entered.find("AddEntityAction/Position/LanePosition")
+    assert fixed is not None
+    place = _story_teleports(etree.fromstring(for_target(compiled, "carla").xosc))["c4"]
+    assert dict(place.attrib) == dict(fixed.attrib)

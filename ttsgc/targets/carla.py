@@ -167,7 +167,7 @@ def _late_entries(root: etree._Element, scene: BoundScene) -> list[str]:
             action.remove(child)
         teleport = etree.SubElement(etree.SubElement(action, "PrivateAction"), "TeleportAction")
         etree.SubElement(etree.SubElement(teleport, "Position"), "LanePosition", roadId=place.road,
-                         laneId=str(place.lane), s=_number(place.s), offset="0.0")
+                         laneId=str(place.lane), s=_number(place.s), offset=_number(place.offset))
         pose = odr.roads[place.road].lane_point(place.s, place.lane)
         private = etree.SubElement(root.find("Storyboard/Init/Actions"), "Private", entityRef=name)
         parked = etree.SubElement(etree.SubElement(etree.SubElement(private, "PrivateAction"), "TeleportAction"),
@@ -191,7 +191,8 @@ def _entry_place(position: etree._Element, act: etree._Element, ego: str, odr: O
     """Where an entity enters, as a fixed lane position, else why it cannot be fixed before the run."""
     fixed = position.find("LanePosition")
     if fixed is not None:
-        return LanePos(road=fixed.get("roadId"), lane=int(fixed.get("laneId")), s=float(fixed.get("s")))
+        return LanePos(road=fixed.get("roadId"), lane=int(fixed.get("laneId")), s=float(fixed.get("s")),
+                       offset=float(fixed.get("offset", "0") or 0))
     relative = position.find("RelativeLanePosition")
     if relative is None or relative.get("entityRef") != ego or float(relative.get("offset", "0") or 0) != 0:
         return "at a position that is neither a lane position nor one in a lane beside the ego"
