@@ -34,19 +34,12 @@ def schema_1_0():
     return xmlschema.XMLSchema(str(path))
 
 
-# Examples ScenarioRunner cannot play, and the construct the carla target names when it refuses them.
-CARLA_REFUSED = {"boxed_in": "AddEntityAction"}  # cars that join the scene later
-
-
 @pytest.fixture(scope="module")
 def carla_files(library, tmp_path_factory):
-    """Every example ScenarioRunner can play, compiled for carla onto the built-in library (proving is tested
-    elsewhere)."""
+    """Every example, compiled for carla onto the built-in library (proving is tested elsewhere)."""
     folder = tmp_path_factory.mktemp("carla")
     files = {}
     for path in example_scenarios():
-        if path.stem in CARLA_REFUSED:
-            continue
         out = folder / f"{path.stem}.xosc"
         compiled = compile_scenario(parse_file(path), out, library=library, target="carla")
         out.write_bytes(compiled.xosc)
@@ -209,16 +202,6 @@ def test_carla_files_drop_the_map_edge_exits(carla_files):
         for parent, child in (("Act", "ManeuverGroup"), ("ManeuverGroup", "Maneuver"), ("Maneuver", "Event")):
             assert all(e.find(child) is not None for e in root.iter(parent)), (stem, parent)
         assert root.find("Storyboard/Story/Act") is not None
-
-
-def test_scenes_with_late_entries_are_refused_for_carla(tmp_path, capsys):
-    """A Story's AddEntityAction spawns a nameless copy in ScenarioRunner while the entity is there from the
-    start: refused, naming it, with nothing written."""
-    for stem, construct in CARLA_REFUSED.items():
-        out = tmp_path / f"{stem}.xosc"
-        assert main(["compile", str(EXAMPLES / f"{stem}.tsg"), "-o", str(out), "--target", "carla",
-                     "--no-simulate"]) == UNSUPPORTED
-        assert construct in capsys.readouterr().err and not out.exists()
 
 
 # -- lint: one test per construct a player does not support ---------------------------------------------------
@@ -399,7 +382,7 @@ def test_every_carla_rule_says_where_it_comes_from():
     for rule in coverage("carla").rules:
         assert re.match(r"\[(support|parser|config|scenario|atomics)\]", rule.source), rule.source
         assert rule.certainty == "checked", rule.elements
-    for table in ("criteria", "towns"):
+    for table in ("criteria", "towns", "late_entry"):
         assert data[table]["certainty"] == "checked", table
 
 

@@ -170,11 +170,14 @@ def rank(scenario: Scenario, candidates: list[tuple[Approach, MapIndex]], seed: 
 def spread(tied: list[Ranked], seed: int, salt: str = "") -> list[Ranked]:
     """Equally ranked candidates in the order seed `seed` offers them. The roads (both directions of a road
     are one road, as the paper counts them) are dealt one map at a time in turn, maps and each map's roads
-    in a fixed pseudo-random order (a hash of their names and `salt`, the scene's name; not the seed), and
-    seed s takes the deal's roads s, s + step, s + 2 step, ... (step about 0.618 of their number, coprime with
-    it): any run of consecutive seeds starts on different roads, spread over every map of the library, and when a road cannot host the scene
-    the next tried is far along the deal, so neighbouring seeds do not all fall back onto one road. The same
-    seed always gives the same order. A road's other direction is offered after every road was once."""
+    in a fixed pseudo-random order (a hash of their names and `salt`, the scene's name; not the seed). Seed s
+    starts the deal at the fraction s x 0.618... (mod 1) of the way along it and goes on from there: any five
+    seeds start at least a seventh of the deal apart, on roads spread over every map of the library, and a
+    seed whose road cannot host the scene tries the roads right after its own, which no other seed starts on.
+    A seed's scene can differ from another's (what a prompt leaves open is sampled per seed), and so can its
+    tied roads: starting at a fraction, not at place s, keeps seeds apart in any deal of a similar set, where
+    places 1 and 2 of two such deals are often one road. The same seed always gives the same order; seed 0
+    takes the deal's first road. A road's other direction is offered after every road was once."""
     def shuffled(*key: str) -> int:  # a fixed pseudo-random order, the same in every subset of the library
         return zlib.crc32("/".join((salt,) + key).encode())
 
@@ -190,19 +193,21 @@ def spread(tied: list[Ranked], seed: int, salt: str = "") -> list[Ranked]:
     if not dealt:
         return []
     n = len(dealt)
-    step = _stride(n)
     turn = seed // n  # seeds beyond the number of roads start on the other direction
-    dealt = [dealt[(seed + k * step) % n] for k in range(n)]
+    start = quantile_start(seed, n)
+    dealt = [dealt[(start + k) % n] for k in range(n)]
     directions = [roads[key][turn % len(roads[key]):] + roads[key][:turn % len(roads[key])] for key in dealt]
     return [d[k] for k in range(max(len(d) for d in directions)) for d in directions if k < len(d)]
 
 
-def _stride(n: int) -> int:
-    """The step near n / golden ratio that visits all n roads."""
-    step = max(1, round(n * 0.618))
-    while math.gcd(step, n) != 1:
-        step += 1
-    return step
+GOLDEN_FRACTION = (math.sqrt(5) - 1) / 2
+
+
+def quantile_start(seed: int, n: int) -> int:
+    """Where in a deal of n roads seed `seed` starts: the fraction seed x 0.618... (mod 1) of the way along.
+    The first five such fractions are at least 0.146 apart, so five seeds take five roads of any deal of
+    five or more."""
+    return int((seed * GOLDEN_FRACTION) % 1.0 * n) % n
 
 
 def explain(reqs: list[Requirement], ranked: list[Ranked], limit: int = 15) -> str:

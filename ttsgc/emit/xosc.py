@@ -335,6 +335,19 @@ def _trajectory(agent: BoundAgent, minor: int) -> xosc.FollowTrajectoryAction:
     return xosc.FollowTrajectoryAction(trajectory, xosc.FollowingMode.position)
 
 
+def ego_lane_when_stage_starts(scene: BoundScene, k: int) -> int:
+    """The ego's lane id when stage k starts: where its route ends once it has made its turn (in the first
+    stage, or in a later one before k), else the lane it started in. A RelativeLanePosition's ds runs along
+    the road's reference line and its dLane is a difference of lane ids (OpenSCENARIO's definitions, and
+    esmini's reading), so on a left lane (id > 0) ahead of the ego is a negative ds, its left a negative dLane;
+    and without an Orientation the body faces along s (esmini), so one on a left lane is turned round (h = pi,
+    relative)."""
+    ego = next(a for a in scene.agents if a.is_ego)
+    later_turn = next((step.stage for step in ego.later if step.action in V.TURN_ACTIONS), None)
+    turned = ego.route and (later_turn is None or later_turn < k)
+    return ego.route[-1].lane if turned else ego.start.lane
+
+
 def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     """(event name, [(action name, action)], trigger) for each step of the agent's action; the events of one
     maneuver run in parallel."""
@@ -343,8 +356,12 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     setup = []  # done when its act starts: entering (later stages) and the route
     if agent.stage > 0:  # inactive until its stage: it enters now, where it stands or beside the ego as it is now
         if agent.appear is not None:
-            ego = next(a.name for a in scene.agents if a.is_ego)
-            position = xosc.RelativeLanePosition(agent.appear.dlane, ego, 0, ds=agent.appear.ds)
+            ego = next(a for a in scene.agents if a.is_ego)
+            along_s = 1 if ego_lane_when_stage_starts(scene, agent.stage) < 0 else -1
+            facing = {} if along_s > 0 else {"orientation": xosc.Orientation(  # the left lane's way, against s
+                h=math.pi, reference=xosc.ReferenceContext.relative)}
+            position = xosc.RelativeLanePosition(agent.appear.dlane * along_s, ego.name, 0,
+                                                 ds=agent.appear.ds * along_s + 0.0, **facing)
         else:
             position = _lane_position(agent.start)
         setup += [("enter", xosc.AddEntityAction(agent.name, position)),

@@ -16,7 +16,12 @@
 - the end: a run ends when every Act has ended, so each Act's StopTrigger gets a copy of the scene's stop groups
   (an Act's group is any-of there, so a group of several conditions is an error);
 - the map edge: the generic file's events that delete a vehicle at the end of its road are dropped, since
-  ScenarioRunner's EndOfRoadCondition fails its trigger as soon as the vehicle leaves its first road.
+  ScenarioRunner's EndOfRoadCondition fails its trigger as soon as the vehicle leaves its first road;
+- later stages: ScenarioRunner spawns every entity when the run starts, so an entity that enters later
+  (the generic file's Story AddEntityAction) is spawned parked below its place with its physics off and
+  teleported to a fixed lane position when its stage starts (carla.toml [late_entry]). An entity placed
+  relative to the ego gets the lane position it would have beside the ego when the ego's arrival starts the
+  stage; any other start leaves the ego's place unknown before the run, and the scene is refused.
 The generic emitter already writes what both players read alike (no lane-relative headings, trigger states
 ScenarioRunner accepts); the result is validated against the 1.0 XSD and linted against carla.toml, and
 anything left that ScenarioRunner does not read is an error naming it, raised before anything is written.
@@ -24,11 +29,14 @@ anything left that ScenarioRunner does not read is an error naming it, raised be
 
 from __future__ import annotations
 
+import math
 import re
 
 from lxml import etree
 
+from ttsgc.binding.place import LanePos
 from ttsgc.binding.scene import BoundScene
+from ttsgc.roads.opendrive import OpenDrive, load_opendrive
 from ttsgc.scenario import Scenario
 from ttsgc.targets.coverage import coverage, errors, lint_tree
 
@@ -76,6 +84,7 @@ def adapt(generic: bytes, scene: BoundScene) -> tuple[bytes, list[str]]:
     read (empty when it reads all of it)."""
     root = etree.fromstring(generic, etree.XMLParser(remove_blank_text=True))  # re-indented when written
     _map(root, scene)
+    late = _late_entries(root, scene)
     _entities(root, scene)
     _lane_changes(root, scene)
     _rain(root, scene)
@@ -85,7 +94,7 @@ def adapt(generic: bytes, scene: BoundScene) -> tuple[bytes, list[str]]:
     data = etree.tostring(root, xml_declaration=True, encoding="utf-8", pretty_print=True)
     reparsed = etree.fromstring(data)  # line numbers of the file as written
     left = [f"line {f.line}: {f.what}" for f in errors(lint_tree(reparsed, "carla"))]
-    return data, unreadable_stops + left
+    return data, late + unreadable_stops + left
 
 
 def _map(root: etree._Element, scene: BoundScene) -> None:
@@ -128,6 +137,116 @@ def _entities(root: etree._Element, scene: BoundScene) -> None:
     ego = next(a for a in scene.agents if a.is_ego)
     if EGO_ROLE_NAME not in names:
         _rename(root, ego.name, EGO_ROLE_NAME)
+
+
+def _late_entries(root: etree._Element, scene: BoundScene) -> list[str]:
+    """Turn each Story AddEntityAction into ScenarioRunner's way of a late entry (carla.toml [late_entry]):
+    the entity parked below its place from the start, physics off, and a TeleportAction to a LanePosition when
+    its stage starts. Returns what cannot be turned so, each named."""
+    rule = _data()["late_entry"]
+    entries = [a for a in root.iter("AddEntityAction") if any(p.tag == "Story" for p in a.iterancestors())]
+    if not entries:
+        return []
+    odr = load_opendrive(scene.map_path)
+    ego = next(a for a in scene.agents if a.is_ego)
+    problems = []
+    for add in entries:
+        entity_action = add.getparent()
+        name = entity_action.get("entityRef")
+        action = entity_action.getparent().getparent()  # Action / GlobalAction / EntityAction
+        act = next(p for p in add.iterancestors() if p.tag == "Act")
+        if _actor_of(add) != name:
+            problems.append(f"act '{act.get('name')}': the AddEntityAction of '{name}' is not in its own "
+                            f"maneuver group (a TeleportAction acts on the group's actor)")
+            continue
+        place = _entry_place(add.find("Position"), act, ego.name, odr)
+        if isinstance(place, str):
+            problems.append(f"act '{act.get('name')}': '{name}' enters {place}")
+            continue
+        for child in list(action):
+            action.remove(child)
+        teleport = etree.SubElement(etree.SubElement(action, "PrivateAction"), "TeleportAction")
+        etree.SubElement(etree.SubElement(teleport, "Position"), "LanePosition", roadId=place.road,
+                         laneId=str(place.lane), s=_number(place.s), offset=_number(place.offset))
+        pose = odr.roads[place.road].lane_point(place.s, place.lane)
+        private = etree.SubElement(root.find("Storyboard/Init/Actions"), "Private", entityRef=name)
+        parked = etree.SubElement(etree.SubElement(etree.SubElement(private, "PrivateAction"), "TeleportAction"),
+                                  "Position")
+        etree.SubElement(parked, "WorldPosition", x=_number(pose.x), y=_number(pose.y),
+                         z=_number(-rule["parking_depth_m"]), h=_number(pose.hdg))
+        body = next(o for o in root.iter("ScenarioObject") if o.get("name") == name)
+        holder = body.find("Vehicle") if body.find("Vehicle") is not None else body.find("Pedestrian")
+        properties = holder.find("Properties")
+        if properties is None:
+            properties = etree.SubElement(holder, "Properties")
+        properties.append(etree.Element("Property", name=rule["physics_property"], value=rule["physics_off"]))
+    return problems
+
+
+def _number(value: float) -> str:
+    return f"{round(value, 3) + 0.0}"  # + 0.0: never -0.0
+
+
+def _entry_place(position: etree._Element, act: etree._Element, ego: str, odr: OpenDrive) -> LanePos | str:
+    """Where an entity enters, as a fixed lane position, else why it cannot be fixed before the run."""
+    fixed = position.find("LanePosition")
+    if fixed is not None:
+        return LanePos(road=fixed.get("roadId"), lane=int(fixed.get("laneId")), s=float(fixed.get("s")),
+                       offset=float(fixed.get("offset", "0") or 0))
+    relative = position.find("RelativeLanePosition")
+    if relative is None or relative.get("entityRef") != ego or float(relative.get("offset", "0") or 0) != 0:
+        return "at a position that is neither a lane position nor one in a lane beside the ego"
+    at_start = ego_at_stage_start(act, ego, odr)
+    if isinstance(at_start, str):
+        return at_start
+    return lane_position_beside(at_start, int(relative.get("dLane")), float(relative.get("ds")), odr)
+
+
+def ego_at_stage_start(act: etree._Element, ego: str, odr: OpenDrive) -> LanePos | str:
+    """The ego's lane position when the act starts, when its start is the ego's arrival: the act's one
+    condition is the ego coming within d of a lane position P, so the ego is on P's lane, upstream of P, at
+    straight-line distance d from it. Else why the ego's place is not known before the run."""
+    conditions = act.findall("StartTrigger/ConditionGroup/Condition")
+    arrival = conditions[0].find("ByEntityCondition") if len(conditions) == 1 else None
+    distance = arrival.find("EntityCondition/DistanceCondition") if arrival is not None else None
+    target = distance.find("Position/LanePosition") if distance is not None else None
+    if (target is None or distance.get("rule") != "lessThan"
+            or [e.get("entityRef") for e in arrival.iter("EntityRef")] != [ego]):
+        return ("beside the ego, and the stage does not start on the ego's arrival at a place, so where the ego "
+                "is then is known only when the scene is played")
+    road = odr.roads[target.get("roadId")]
+    lane, s_target, within = int(target.get("laneId")), float(target.get("s")), float(distance.get("value"))
+    goal = road.lane_point(s_target, lane)
+    upstream = 1.0 if lane > 0 else -1.0  # a right lane (id < 0) is driven towards larger s
+    limit = road.length - s_target if upstream > 0 else s_target
+
+    def apart(u: float) -> float:
+        p = road.lane_point(s_target + upstream * u, lane)
+        return math.hypot(p.x - goal.x, p.y - goal.y)
+
+    if apart(limit) < within:
+        return (f"beside the ego, and the ego comes within {within:g} m of road {road.id} s={s_target:g} before "
+                f"it is on that road")
+    low, high = 0.0, limit
+    for _ in range(60):
+        middle = (low + high) / 2
+        low, high = (middle, high) if apart(middle) < within else (low, middle)
+    return LanePos(road=road.id, lane=lane, s=round(s_target + upstream * high, 3))
+
+
+def lane_position_beside(origin: LanePos, dlane: int, ds: float, odr: OpenDrive) -> LanePos | str:
+    """The lane position a RelativeLanePosition names, as OpenSCENARIO defines it and esmini reads it: ds
+    along the road's s from origin, dlane added to origin's lane id (the centre lane, 0, skipped)."""
+    road = odr.roads[origin.road]
+    s = origin.s + ds
+    if not 0.0 <= s <= road.length:
+        return f"beside the ego {ds:+g} m along road {road.id}, past its end"
+    lane = origin.lane + dlane
+    if lane == 0 or (lane > 0) != (origin.lane > 0):
+        lane += 1 if dlane > 0 else -1
+    if lane not in road.section_at(s).lanes:
+        return f"beside the ego {dlane:+d} lane ids across, where road {road.id} has no lane {lane}"
+    return LanePos(road=road.id, lane=lane, s=round(s, 3))
 
 
 def _actor_of(element: etree._Element) -> str | None:

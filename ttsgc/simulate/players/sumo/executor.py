@@ -462,6 +462,9 @@ class Executor:
             self.run.problems.append(f"{event.name}: '{ref}' is not in the simulation to appear beside")
             return
         edge = ts.vehicle.getRoadID(ref)
+        ref_lane = self.odr_of(f"{edge}_{ts.vehicle.getLaneIndex(ref)}")[1]
+        if ref_lane is not None and ref_lane > 0:  # ds runs along the road's s and dLane adds to the lane id;
+            ds, dlane = -ds, -dlane  # a SUMO lane runs the way it is driven, its index grows to the left
         index = ts.vehicle.getLaneIndex(ref) + dlane
         lane_id = f"{edge}_{index}"
         if lane_id not in self.by_id:
