@@ -438,6 +438,10 @@ class Placer:
         frame = self.frame_of(entering)
         movement = TURN_OF_ACTION.get(agent.action)
         turn = self._pick_turn(entering, movement) if movement and agent.road_type == "driving" else None
+        if turn is None and agent.road_type == "driving" and agent.action in ("turn_left", "turn_right"):
+            # as for the ego: a turning agent needs its turn, else it would only drive on (another road may have it)
+            raise PlacementError(f"approach {entering.id} of {self.index.name}, the {side} road of junction "
+                                 f"{self.frame.approach.junction}, has no {movement} turn for '{agent.name}'")
         rank = None
         if agent.road_type == "driving":
             ranks = [i for i, lane in enumerate(entering.lane_ids) if turn is None or lane in turn.from_lanes] or [0]
@@ -488,14 +492,16 @@ class Placer:
         if turn is not None and start is not None and agent.road_type == "driving":
             movement, target_road = turn.direction, turn.to_road
             route = self._route(start, frame, turn)
-        elif (start is not None and frame is self.frame and agent.road_type == "driving"
-              and self.frame.approach.junction is not None):
+        elif start is not None and frame is self.frame and agent.road_type == "driving":
             own = TURN_OF_ACTION.get(agent.action) if agent.action in ("turn_left", "turn_right") else None
             turn = self._pick_turn(self.frame.approach, own) if own else None
+            if own and turn is None:  # it could only drive on: another road may have its turn
+                raise PlacementError(f"approach {frame.approach.id} of {self.index.name} has no {own} turn for "
+                                     f"'{agent.name}'")
             if turn is not None:  # it turns at the ego's junction
                 movement, target_road = turn.direction, turn.to_road
                 route = self._route(start, frame, turn)
-            else:  # traffic on the ego's road carries on through the junction
+            elif self.frame.approach.junction is not None:  # traffic on the ego's road carries on through it
                 through = self._pick_turn(self.frame.approach, "straight") or self.ego_turn
                 if through is not None:
                     route = self._route(start, frame, through)
