@@ -188,14 +188,14 @@ def _environment(condition: str, time: str, minor: int) -> xosc.Environment:
 
 
 LATER_ACTION_S = 8.0  # the ego's lane change (3 s) or stop, and time to see it done
-SIGNAL_WAIT_S = 50.0  # a red light can hold a junction movement for most of a signal cycle
 
 
 def stage_durations(scene: BoundScene) -> list[float]:
     """How long each stage takes: its slowest agent's action, waiting for its trigger included, bounded;
-    the next stage starts after it and the stop trigger after them all."""
+    the next stage starts after it and the stop trigger after them all. No time is allowed for red lights:
+    the file gives the lights no program, and no player holds a movement at a light nobody runs (a longer
+    scene only lets vehicles that finished their moves meet far beyond the junction)."""
     ego = next(a for a in scene.agents if a.is_ego)
-    signalised = "traffic_light" in scene.approach_signals
     durations = []
     for k, _ in enumerate(scene.scenario.stages):
         longest = 4.0
@@ -207,7 +207,7 @@ def stage_durations(scene: BoundScene) -> list[float]:
                 wait += max(0.0, agent.distance_to_ego_m - agent.trigger.within_m) / max(ego.speed_mps, 1.0)
             speed = max(agent.speed_mps, 1.0)
             if agent.movement:
-                action = 45.0 / speed + (SIGNAL_WAIT_S if signalised else 0.0)
+                action = 45.0 / speed
             elif agent.cross_to is not None:
                 action = 40.0 / speed  # wide roads: a crossing may be 30 m and more
             else:
@@ -216,8 +216,7 @@ def stage_durations(scene: BoundScene) -> list[float]:
         for step in ego.later:
             if step.stage == k:
                 wait = step.trigger.after_s if step.trigger and step.trigger.after_s else 0.0
-                turn = 45.0 / max(ego.speed_mps, 1.0) + (SIGNAL_WAIT_S if signalised else 0.0) \
-                    if step.action in V.TURN_ACTIONS else 0.0
+                turn = 45.0 / max(ego.speed_mps, 1.0) if step.action in V.TURN_ACTIONS else 0.0
                 longest = max(longest, wait + LATER_ACTION_S + turn)
         durations.append(round(min(longest, 120.0), 3))
     return durations
