@@ -342,8 +342,11 @@ class Placer:
         for n, a in enumerate(s.agents()):
             order.setdefault(a.name, n)
         placed = sorted(placed, key=lambda b: order[b.name])
-        placed = no_faster_than_the_one_ahead(placed)
-        return let_the_ego_pass(stagger_at_junction(placed, self.odr), self.odr)
+        placed = stagger_at_junction(no_faster_than_the_one_ahead(placed), self.odr)
+        capped = no_faster_onto_one_road(placed, self.odr)
+        if capped != placed:  # slower, they hold the junction longer: the turns are taken again
+            placed = stagger_at_junction(capped, self.odr)
+        return let_the_ego_pass(placed, self.odr)
 
     def _ego_lane_rank(self) -> int:
         from ttsgc.binding.rank import lane_needs
@@ -573,8 +576,40 @@ def stagger_at_junction(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundA
     for agent in agents:
         key = (agent.stage, agent.start.road, agent.start.lane > 0) if agent.start is not None else None
         delay = delays.get(key, 0.0) if len(agent.route) >= 2 else 0.0
-        out.append(agent.model_copy(update={"start_delay_s": delay}) if delay else agent)
+        out.append(agent.model_copy(update={"start_delay_s": delay}) if delay != agent.start_delay_s else agent)
     return out
+
+
+def _reaches_junction_s(agent: BoundAgent, odr: OpenDrive) -> float:
+    """When a vehicle with a route through a junction enters it: its wait, then its way there at its speed."""
+    via = agent.route[1]
+    road = odr.roads[via.road]
+    entry = road.lane_point(0.0 if via.lane < 0 else road.length, via.lane)
+    here = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
+    return agent.start_delay_s + max(0.0, math.hypot(entry.x - here.x, entry.y - here.y) - agent.length / 2) / \
+        max(agent.speed_mps, 0.1)
+
+
+def no_faster_onto_one_road(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
+    """Vehicles whose moves through a junction end on one road, in one direction, get there one after the
+    other: a later one drives no faster than those before it, unless it is aggressive. A player whose drivers
+    do not follow (esmini) would otherwise play a rear-end crash far beyond the junction, long after both did
+    their moves."""
+    onto: dict[tuple[int, str, bool], list[BoundAgent]] = {}
+    for agent in agents:
+        if agent.start is not None and len(agent.route) >= 2 and agent.type != "pedestrian" and \
+                agent.road_type == "driving" and agent.speed_mps > 0:
+            end = agent.route[-1]
+            onto.setdefault((agent.stage, end.road, end.lane > 0), []).append(agent)
+    capped: dict[str, float] = {}
+    for group in onto.values():
+        limit = None
+        for agent in sorted(group, key=lambda a: (_reaches_junction_s(a, odr), a.name)):
+            speed = agent.speed_mps
+            if limit is not None and agent.behavior != "aggressive" and speed > limit:
+                speed = capped[agent.name] = limit
+            limit = speed if limit is None else min(limit, speed)
+    return [a.model_copy(update={"speed_mps": capped[a.name]}) if a.name in capped else a for a in agents]
 
 
 def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[int, str, bool], float]:
