@@ -15,7 +15,7 @@ from lxml import etree
 from conftest import compiled_example as _compiled, edit_xosc as _edit
 from conftest import EXAMPLES, SHARED, example_scenarios
 from ttsgc.cli import main
-from ttsgc.language import parse_file
+from ttsgc.language import parse, parse_file
 from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 from ttsgc.simulate import judge as J
 from ttsgc.simulate.trace import Body, Sample, Trace
@@ -156,6 +156,85 @@ def test_a_lane_change_happens_as_written_with_a_vehicle_alongside(esmini, tmp_p
         assert "changed 1 lane(s) to the left" in _agent(report, player, "c1").reason
 
 
+STRAIGHT_THROUGH_THE_LIGHTS = """scenario "straight through the lights"
+road {
+    at junction
+    has traffic_light
+}
+stage main {
+    ego car go_straight
+}
+"""
+
+
+def test_lights_the_file_does_not_control_stop_nobody(tmp_path):
+    """A file with no TrafficSignalController and no TrafficSignalAction gives the lights no program: esmini
+    drives through them, and so does SUMO, whose netconvert would otherwise run a program of its own and hold
+    the ego at a red phase on two of the four roads (with the placement's timing, a crash behind it)."""
+    from ttsgc.pipeline import compile_scenario
+    from ttsgc.roads.retrieve import load_library
+    from ttsgc.simulate.plan import read_plan
+    from ttsgc.simulate.players.sumo.executor import play
+
+    scenario = parse(STRAIGHT_THROUGH_THE_LIGHTS, "lights.tsg")
+    junction = next(i for i in load_library(None) if i.name == "fourway_2lane_lights")
+    approaches = [a.id for a in junction.approaches if a.junction is not None]
+    assert len(approaches) == 4
+    for approach in approaches:
+        out = tmp_path / f"{approach.replace(':', '_')}.xosc"
+        write(compile_scenario(scenario, out, only=("fourway_2lane_lights", approach)), out)
+        plan = read_plan(out)
+        assert not plan.controls_signals
+        ego = play(plan).samples["ego"]
+        assert min(s.speed for s in ego[1:]) == pytest.approx(ego[1].speed, abs=0.05), approach
+
+
+def test_a_file_that_controls_the_signals_says_sumo_runs_its_own_programs(tmp_path):
+    from ttsgc.pipeline import compile_scenario
+    from ttsgc.simulate.plan import read_plan
+
+    out = tmp_path / "lights.xosc"
+    write(compile_scenario(parse(STRAIGHT_THROUGH_THE_LIGHTS, "lights.tsg"), out,
+                           only=("fourway_2lane_lights", "1:bwd")), out)
+
+    def controlled(root):
+        signals = etree.Element("TrafficSignals")
+        controller = etree.SubElement(signals, "TrafficSignalController", name="junction")
+        phase = etree.SubElement(controller, "Phase", name="all red", duration="60")
+        etree.SubElement(phase, "TrafficSignalState", trafficSignalId="1", state="red")
+        root.find("RoadNetwork").append(signals)
+    plan = read_plan(_edit(out, controlled))
+    assert plan.controls_signals
+    assert any("netconvert's own signal programs" in item for item in plan.unsupported)
+
+
+def test_a_cyclist_on_the_sidewalk_is_placed_where_the_file_puts_it(esmini, tmp_path):
+    """SUMO has no vehicle lane on a sidewalk: the player moves the bicycle itself there, rather than put it on
+    the nearest driving lane."""
+    report = _played(tmp_path, "rider", 'scenario "rider"\nroad {\n    has crosswalk\n}\nstage main {\n'
+                     '    ego car go_straight\n'
+                     '    cyclist k1 at near_the_crosswalk on sidewalk cross_the_road\n}\n')
+    assert not _verdict(report, "sumo").problems, report.table()
+    assert report.ok, report.table()
+
+
+def test_a_vehicle_that_sets_off_later_drives_the_speed_the_file_sets(esmini, tmp_path):
+    """Junction traffic that waits its turn enters standing still; SUMO's vehicle type must still allow the
+    speed the file sets later (it held them to 6.5 m/s, esmini drives 19)."""
+    scene = _compiled("intersection", tmp_path)
+    from ttsgc.simulate.plan import read_plan
+    from ttsgc.simulate.players import esmini as esmini_player
+    from ttsgc.simulate.players.sumo.executor import play
+
+    plan = read_plan(scene)
+    in_sumo, in_esmini = play(plan), esmini_player.play(plan)
+    waiting = [n for n, actions in plan.init.items() for a in actions if a.kind == "speed" and a.value == 0.0]
+    assert waiting
+    for name in waiting:
+        top = max(s.speed for s in in_esmini.samples[name])
+        assert max(s.speed for s in in_sumo.samples[name]) == pytest.approx(top, abs=0.5), name
+
+
 def test_junction_traffic_takes_turns_and_a_walker_lets_the_ego_pass():
     """Windows in which each road's vehicles are in the junction do not overlap the ego road's; a walker with
     no trigger steps out once the ego has gone by."""
@@ -205,6 +284,25 @@ def test_in_one_lane_nobody_drives_faster_than_the_one_ahead_unless_aggressive(t
     assert normal["ego"] == normal["a1"]  # would be 0.85 / 0.6 of the limit: a rear-end crash in esmini
     aggressive = speeds("aggressive")
     assert aggressive["ego"] > aggressive["a1"]
+
+
+def test_a_vehicle_that_turns_onto_the_egos_road_after_it_drives_no_faster(esmini, tmp_path):
+    """The bus turns left onto the road the cautious ego drives on to; nobody follows in esmini, so a faster bus
+    would run into the ego's back long after both did their moves."""
+    from ttsgc.binding import bind
+    from ttsgc.roads.retrieve import load_library
+
+    source = tmp_path / "onto.tsg"
+    source.write_text('scenario "onto one road"\nroad {\n    at junction\n}\nstage main {\n'
+                      '    ego car go_straight cautious\n    bus b1 at road_of_left_turn turn_left\n}\n')
+    scene = bind(parse_file(source), load_library(None))
+    ego, bus = scene.agent("ego"), scene.agent("b1")
+    assert bus.route[-1].road == ego.route[-1].road and bus.start_delay_s > 0
+    assert bus.speed_mps == ego.speed_mps  # normal would be 0.85 of the limit, the cautious ego 0.6
+    out = tmp_path / "onto.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    report = validate(out, "all")
+    assert report.ok and not report.collisions, report.table()
 
 
 def test_emitted_states_and_edges_are_those_every_player_accepts(tmp_path):

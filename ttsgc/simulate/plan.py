@@ -83,6 +83,9 @@ class Plan:
     stop: list[list[Condition]]
     unsupported: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)  # what the file does that the standard does not, read leniently
+    # the file runs the traffic signals (a TrafficSignalController or a TrafficSignalAction); when it does not,
+    # nothing gives the lights a program, and a player drives through them as esmini does
+    controls_signals: bool = False
 
 
 def _lane(position) -> tuple[str, int, float] | None:
@@ -321,4 +324,14 @@ def plan_of(root, path: Path, xodr: Path | None = None, notes=()) -> Plan:
         acts.append(Act(act.get("name"), reader.trigger(act.find("StartTrigger")), events))
     stop_trigger = root.find("Storyboard/StopTrigger")
     stop = reader.trigger(stop_trigger) if stop_trigger is not None else []  # none: only the time limit ends it
-    return Plan(path, xodr, entities, init, acts, stop, reader.unsupported, list(notes))
+    controls_signals = controls_traffic_signals(root)
+    if controls_signals:
+        reader.missing("traffic signal control (SUMO runs netconvert's own signal programs instead)")
+    return Plan(path, xodr, entities, init, acts, stop, reader.unsupported, list(notes), controls_signals)
+
+
+def controls_traffic_signals(root) -> bool:
+    """Whether the file gives the map's traffic signals a program or a state: a TrafficSignalController of the
+    RoadNetwork, or a TrafficSignalAction anywhere in the Storyboard."""
+    return root.find("RoadNetwork/TrafficSignals/TrafficSignalController") is not None or \
+        root.find("Storyboard//TrafficSignalAction") is not None

@@ -5,9 +5,10 @@ waits for its AddEntityAction, condition edges and delays count, routes are rout
 written (whoever is alongside). OpenDRIVE lane positions become SUMO lanes through the lanes' original ids
 (road_lane) and the net offset; vehicles drive SUMO's car-following model with the speeds and routes the file
 commands. Bodies SUMO has no lane for are moved by the player itself: people (along their sidewalk, or along
-their trajectory), anything on a shoulder (SUMO's OpenDRIVE import discards shoulders) and anything given a
-trajectory. SUMO's drivers do not see those bodies, so the player makes them: a vehicle slows for a moved body
-in its path. The run becomes a Trace of every body's position, heading and speed.
+their trajectory), anything on a lane SUMO has no vehicle lane for (a shoulder, which SUMO's OpenDRIVE import
+discards, or a sidewalk) and anything given a trajectory. SUMO's drivers do not see those bodies, so the player
+makes them: a vehicle slows for a moved body in its path. Traffic lights run only when the file controls them.
+The run becomes a Trace of every body's position, heading and speed.
 """
 
 from __future__ import annotations
@@ -30,7 +31,11 @@ TIME_LIMIT_S = 180.0
 LOOK_AHEAD_M = 30.0  # how far ahead a driver watches for a body the player moves
 PATH_HALF_WIDTH_M = 1.8  # a moved body this close to a vehicle's line of travel is in its path
 COMFORT_BRAKE = 4.0  # m/s2
+SPEED_FACTOR = 10.0  # of the lanes' speed limits: high enough that only the speeds the file sets count
 ANTICIPATION_S = 2.0  # how far ahead in time a driver reads a moved body's course
+# the OpenDRIVE lane types SUMO's import (its opendriveNetconvert typemap) makes lanes for vehicles of;
+# shoulders and the like are discarded and sidewalks are the pedestrians': a vehicle there is moved by the player
+SUMO_VEHICLE_LANES = {"driving", "stop", "parking", "entry", "exit", "onRamp", "offRamp", "bidirectional"}
 VCLASS = {"car": "passenger", "van": "delivery", "truck": "truck", "bus": "bus", "motorbike": "motorcycle",
           "bicycle": "bicycle", "semitrailer": "trailer"}
 
@@ -231,7 +236,8 @@ class Executor:
             self.run.spawns[entity.name] = Spawn(False, f"its Orientation turns it against the driving direction "
                                                         f"of road {road} lane {lane}", (road, lane))
             return
-        if entity.kind == "pedestrian" or entity.intent.get("road_type") == "shoulder":
+        lane_type = self.odr.roads[road].section_at(s).lanes[lane].type
+        if entity.kind == "pedestrian" or lane_type not in SUMO_VEHICLE_LANES:
             pose = self.odr.roads[road].lane_point(s, lane)
             self.movers[entity.name] = Mover(pose.x, pose.y, pose.hdg, speed, road, lane, s)
             self.present.add(entity.name)
@@ -252,7 +258,11 @@ class Executor:
             ts.vehicletype.setLength(type_id, entity.length)
             ts.vehicletype.setWidth(type_id, entity.width)
             ts.vehicletype.setMinGap(type_id, 1.0)
-            ts.vehicletype.setMaxSpeed(type_id, max(speed, 1.0) * 1.5 + 5)
+            ts.vehicletype.setMaxSpeed(type_id, max(self.fastest_commanded(entity.name, speed), 1.0) * 1.5 + 5)
+            # the file's speeds, not the lanes' limits (nor a slower turn through a junction): no player reads a
+            # SpeedAction as bounded by the road, so the lanes' limits never bind
+            ts.vehicletype.setSpeedFactor(type_id, SPEED_FACTOR)
+            ts.vehicletype.setSpeedDeviation(type_id, 0.0)
             ts.route.add(f"route_{entity.name}", self._ahead(sumo_lane.id))
             # SUMO places a vehicle by its front bumper
             front = min(pos + entity.length / 2, _length(sumo_lane.shape) - 0.05)
@@ -267,6 +277,13 @@ class Executor:
         ok = got == (road, lane)
         reason = "" if ok else f"placed on road {got[0]} lane {got[1]} instead of road {road} lane {lane}"
         self.run.spawns[entity.name] = Spawn(ok, reason, (road, lane), got, t)
+
+    def fastest_commanded(self, name: str, speed: float) -> float:
+        """The highest speed the file ever sets for an entity: its vehicle type must allow it (one that enters
+        standing still would otherwise be held to a walking pace of SUMO's, whatever the file says)."""
+        actions = list(self.plan.init.get(name, []))
+        actions += [a for act in self.plan.acts for e in act.events if e.actor == name for a in e.actions]
+        return max([speed] + [a.value for a in actions if a.kind == "speed"])
 
     # -- actions ------------------------------------------------------------------------------------------
     def execute(self, actor: str, action: Action, t: float, event: Event) -> None:
@@ -430,6 +447,11 @@ class Executor:
             current = ts.vehicle.getRoute(entity.name)[ts.vehicle.getRouteIndex(entity.name)]
         edges, last_lane = [current], None
         for point in action.waypoints:
+            road = self.odr.roads.get(point[0])
+            if road is not None and road.junction != "-1":
+                # a connecting road inside a junction: SUMO's own connection between the roads before and
+                # after it is that road (its internal lanes carry no OpenDRIVE id to map a point to)
+                continue
             mapped = self.to_sumo(*point)
             if mapped is not None:
                 last_lane = mapped[0].id
@@ -440,8 +462,11 @@ class Executor:
                 self.run.problems.append(f"{event.name}: no route from {edges[-1]} to {mapped[0].edge}")
                 return
             edges += list(found.edges[1:])
-        if last_lane is not None:  # after its last waypoint it carries on, as every player's vehicles do
-            edges += [e for e in self._ahead(last_lane)[1:] if e not in edges]
+        if last_lane is not None:  # after its last waypoint it carries on, as every player's vehicles do,
+            for edge in self._ahead(last_lane)[1:]:  # up to where its way would come back on itself
+                if edge in edges:
+                    break
+                edges.append(edge)
         ts.vehicle.setRoute(entity.name, edges)
 
     def _can_appear(self, event: Event) -> bool:
@@ -557,6 +582,8 @@ class Executor:
                   "--no-warnings", "true",
                   "--insertion-checks", "collision"])  # scenes start agents close on purpose
         try:
+            if not self.plan.controls_signals:
+                self._lights_without_program()
             for name, actions in self.plan.init.items():
                 entity = self.plan.entities.get(name)
                 teleport = next((a for a in actions if a.kind == "teleport"), None)
@@ -590,6 +617,16 @@ class Executor:
         finally:
             ts.close()
         return self.run
+
+    @staticmethod
+    def _lights_without_program() -> None:
+        """netconvert gives every signalised junction a program of its own, which the file never asked for: a
+        file that does not control the signals has lights no player runs (esmini drives through them), so
+        every link of every light is green with priority, and nobody stops or yields there."""
+        import libsumo as ts
+
+        for light in ts.trafficlight.getIDList():
+            ts.trafficlight.setRedYellowGreenState(light, "G" * len(ts.trafficlight.getRedYellowGreenState(light)))
 
     def _storyboard(self, t: float) -> None:
         for act in self.plan.acts:
