@@ -26,6 +26,7 @@ from ttsgc.roads.retrieve import JUNCTION_CLEARANCE_M
 from ttsgc.scenario import Agent, Scenario, Trigger
 
 CLEARANCE_M = 1.0
+MAX_OVERHANG_M = 0.5  # how far a vehicle standing in an edge lane reaches into the driving lane beside it at most
 MIN_DRIVING_WIDTH_M = 2.5  # narrower, a lane is still opening or closing there: no vehicle starts on it
 PEDESTRIAN_SPEED = {"cautious": 1.0, "normal": 1.4, "aggressive": 2.5}
 CYCLIST_SPEED = {"cautious": 3.5, "normal": 5.0, "aggressive": 7.0}
@@ -346,7 +347,7 @@ class Placer:
         capped = no_faster_onto_one_road(placed, self.odr)
         if capped != placed:  # slower, they hold the junction longer: the turns are taken again
             placed = stagger_at_junction(capped, self.odr)
-        return let_the_ego_pass(placed, self.odr)
+        return let_the_traffic_pass(placed, self.odr)
 
     def _ego_lane_rank(self) -> int:
         from ttsgc.binding.rank import lane_needs
@@ -400,7 +401,22 @@ class Placer:
         length = V.BODIES[agent.type][0]
         u = self.occupied.slot(frame, lane, target, length, outward)
         self.last_in_queue[(frame.approach.id, lane, outward)] = (agent, u, length)
-        return self._bound(agent, stage, frame.resolve(lane, u), frame, turn=turn, far_side=lane.far_side)
+        start = frame.resolve(lane, u)
+        if lane.type != "driving" and agent.type != "pedestrian":
+            start = self._clear_of_the_driving_lane(agent, start)
+        return self._bound(agent, stage, start, frame, turn=turn, far_side=lane.far_side)
+
+    def _clear_of_the_driving_lane(self, agent: Agent, start: LanePos) -> LanePos:
+        """A vehicle standing in an edge lane (a shoulder) narrower than itself stands outward, over the kerb,
+        so that it reaches no more than MAX_OVERHANG_M into the driving lane: centred on a 0.3 m shoulder, a
+        2.5 m truck would stand 1.1 m into it, and passing traffic (which does not swerve) would hit it. The
+        LanePosition's offset counts along the road's t, to the left of its reference line."""
+        section = self.odr.roads[start.road].section_at(start.s)
+        width = section.lanes[start.lane].width(start.s - section.s)
+        shift = (V.BODIES[agent.type][1] - width) / 2 - MAX_OVERHANG_M
+        if shift <= 0:
+            return start
+        return start.model_copy(update={"offset": round(shift if start.lane > 0 else -shift, 3)})
 
     def _after(self, frame: _Frame, lane: LaneRef, edge: float, agent: Agent, outward: int) -> float:
         """Desired centre of the next body in a queue: beyond the previous one (or the given edge) by the gap."""
@@ -665,14 +681,13 @@ def no_faster_than_the_one_ahead(agents: list[BoundAgent]) -> list[BoundAgent]:
     return [a.model_copy(update={"speed_mps": capped[a.name]}) if a.name in capped else a for a in agents]
 
 
-def let_the_ego_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
-    """A walker or rider told to cross with no trigger of its own steps out once the ego has passed, when it
-    would otherwise be on the road as the ego drives by: nothing in a file makes the ego brake for it (a
-    crossing that asks for danger says so with a trigger: `when ego within 20m`)."""
-    ego = next((a for a in agents if a.is_ego and a.start is not None), None)
-    if ego is None or ego.speed_mps <= 0:
-        return agents
-    here = odr.roads[ego.start.road].lane_point(ego.start.s, ego.start.lane)
+def let_the_traffic_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
+    """A walker or rider told to cross with no trigger of its own steps out once the vehicles that would pass
+    its crossing while it is on the road have gone by (the ego first of all): nothing in a file makes a driver
+    brake for it, and esmini's drivers do not (a crossing that asks for danger says so with a trigger:
+    `when ego within 20m`)."""
+    passing = [(a, _way(a, odr)) for a in agents if a.stage == 0 and a.start is not None and a.speed_mps > 0
+               and a.cross_to is None and a.type != "pedestrian" and (a.trigger is None or a.is_ego)]
     out = []
     for agent in agents:
         if agent.cross_to is None or agent.trigger is not None or agent.stage != 0 or agent.speed_mps <= 0:
@@ -680,19 +695,56 @@ def let_the_ego_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgen
             continue
         start = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
         end = odr.roads[agent.cross_to.road].lane_point(agent.cross_to.s, agent.cross_to.lane)
-        width = math.hypot(end.x - start.x, end.y - start.y)
-        ahead = (start.x - here.x) * math.cos(here.hdg) + (start.y - here.y) * math.sin(here.hdg)  # hdg: its lane's
-        # driving direction
-        if ahead <= 0:  # behind the ego: it crosses where the ego has been
-            out.append(agent)
-            continue
-        passes = (ahead - ego.length / 2 - agent.width) / ego.speed_mps
-        gone = (ahead + ego.length / 2 + agent.width) / ego.speed_mps
-        on_road = (0.0, width / agent.speed_mps)
-        if on_road[0] < gone + JUNCTION_GAP_S and on_road[1] > passes - JUNCTION_GAP_S:
-            agent = agent.model_copy(update={"start_delay_s": round(gone + JUNCTION_GAP_S, 2)})
-        out.append(agent)
+        crossing = math.hypot(end.x - start.x, end.y - start.y) / agent.speed_mps
+        windows = []
+        for vehicle, way in passing:
+            at = _first_crossing(way, (start.x, start.y), (end.x, end.y))
+            if at is not None:
+                reach = vehicle.length / 2 + agent.width
+                windows.append((vehicle.start_delay_s + (at - reach) / vehicle.speed_mps,
+                                vehicle.start_delay_s + (at + reach) / vehicle.speed_mps))
+        delay = agent.start_delay_s
+        for passes, gone in sorted(windows):
+            if delay < gone + JUNCTION_GAP_S and delay + crossing > passes - JUNCTION_GAP_S:
+                delay = gone + JUNCTION_GAP_S
+        out.append(agent.model_copy(update={"start_delay_s": round(delay, 2)}) if delay != agent.start_delay_s
+                   else agent)
     return out
+
+
+WAY_ON_M = 150.0  # how far a vehicle's way is followed past its last waypoint (or its road's end)
+
+
+def _way(agent: BoundAgent, odr: OpenDrive) -> list[tuple[float, float]]:
+    """Where a vehicle drives, as a polyline: through its route's waypoints, else along its lane to the end of
+    its road; then straight on for WAY_ON_M."""
+    if len(agent.route) >= 2:
+        poses = [odr.roads[p.road].lane_point(p.s, p.lane) for p in (agent.start, *agent.route[1:])]
+    else:
+        road = odr.roads[agent.start.road]
+        ahead = road.length - agent.start.s if agent.start.lane < 0 else agent.start.s
+        steps = max(1, int(ahead // 5.0))
+        direction = 1 if agent.start.lane < 0 else -1
+        poses = [road.lane_point(min(max(agent.start.s + direction * ahead * k / steps, 0.0), road.length),
+                                 agent.start.lane) for k in range(steps + 1)]
+    last = poses[-1]
+    return [(p.x, p.y) for p in poses] + [(last.x + WAY_ON_M * math.cos(last.hdg),
+                                           last.y + WAY_ON_M * math.sin(last.hdg))]
+
+
+def _first_crossing(way: list[tuple[float, float]], a: tuple[float, float], b: tuple[float, float]) -> float | None:
+    """How far along the polyline it first meets the segment a-b, None when it never does."""
+    travelled = 0.0
+    for (px, py), (qx, qy) in zip(way, way[1:]):
+        rx, ry, sx, sy = qx - px, qy - py, b[0] - a[0], b[1] - a[1]
+        denominator = rx * sy - ry * sx
+        if abs(denominator) > 1e-9:
+            u = ((a[0] - px) * sy - (a[1] - py) * sx) / denominator
+            v = ((a[0] - px) * ry - (a[1] - py) * rx) / denominator
+            if 0.0 <= u <= 1.0 and 0.0 <= v <= 1.0:
+                return travelled + u * math.hypot(rx, ry)
+        travelled += math.hypot(rx, ry)
+    return None
 
 
 def distance_between(odr: OpenDrive, a: LanePos, b: LanePos) -> float:
