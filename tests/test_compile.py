@@ -208,7 +208,7 @@ def test_on_the_sidewalk_walks_along_its_sidewalk(library):
 
 
 def test_triggers_and_stages(library):
-    root, _ = _xosc('scenario "t"\nstage one {\n    ego car go_straight\n    car a at front stop when ego within 12m\n'
+    root, scene = _xosc('scenario "t"\nstage one {\n    ego car go_straight\n    car a at front stop when ego within 12m\n'
                     '    car b at back stop after 2.5s\n}\nstage two {\n    car c at front_left block_the_ego\n}\n'
                     .replace("stage one {", 'road {\n    lanes >= 2\n}\nstage one {'), library)
     near = root.find(".//Event[@name='a_stop']//RelativeDistanceCondition")
@@ -220,7 +220,9 @@ def test_triggers_and_stages(library):
     follows = acts[1].find("StartTrigger//StoryboardElementStateCondition")
     assert follows.get("storyboardElementRef") == "one" and follows.get("state") == "completeState"
     appear = root.find(".//Event[@name='c_enters']//AddEntityAction//RelativeLanePosition")
-    assert appear.get("entityRef") == "ego" and appear.get("dLane") == "1"
+    # one lane to the ego's left: dLane counts lane ids, which grow leftward on the ego's side only when its
+    # lane id is negative (it drives along s)
+    assert appear.get("entityRef") == "ego" and appear.get("dLane") == ("1" if scene.agent("ego").start.lane < 0 else "-1")
     assert root.find(".//Init//Private[@entityRef='c']") is None  # inactive until its stage adds it
     assert root.find(".//StopTrigger//SimulationTimeCondition") is not None
 

@@ -101,18 +101,33 @@ def _lane_position(pos: LanePos) -> xosc.LanePosition:
     return xosc.LanePosition(pos.s, pos.offset, pos.lane, pos.road)
 
 
+DRIVES_ON_M = 40.0  # how far a vehicle drives on past the end of its move through a junction before it leaves
+
+
 def _map_edge_act(scene: BoundScene, minor: int) -> xosc.Act | None:
     """A vehicle that runs out of road leaves the scene (DeleteEntityAction), as it leaves SUMO's network:
-    at a map's edge esmini stops it dead, and whoever follows would pile into it. An act of its own, never
-    waited for, so the stages do not wait for a vehicle to reach the edge."""
+    at a map's edge esmini stops it dead, and whoever follows would pile into it. A vehicle other than the
+    ego that moved through a junction leaves too, DRIVES_ON_M past its route's end: beyond its last waypoint
+    a player picks its way at random (esmini), and vehicles done with their moves would meet far from the
+    scene while it lasts. An act of its own, never waited for, so the stages do not wait for a vehicle to
+    leave."""
     vehicles = [a for a in scene.agents if a.type != "pedestrian"]
     if not vehicles:
         return None
     act = xosc.Act("map_edge", _always("map_edge_start", 0.0, minor))
     for agent in vehicles:
-        leaves = (f"{agent.name}_leaves", [("leave", xosc.DeleteEntityAction(agent.name))],
-                  xosc.EntityTrigger(f"{agent.name}_out_of_road", 0, xosc.ConditionEdge.none,
-                                     xosc.EndOfRoadCondition(0), agent.name))
+        trigger = xosc.Trigger()
+        trigger.add_conditiongroup(xosc.ConditionGroup().add_condition(
+            xosc.EntityTrigger(f"{agent.name}_out_of_road", 0, xosc.ConditionEdge.none, xosc.EndOfRoadCondition(0),
+                               agent.name)))
+        if len(agent.route) >= 2 and not agent.is_ego:
+            drives_on = round(max(3.0, DRIVES_ON_M / max(agent.speed_mps, 1.0)), 3)
+            trigger.add_conditiongroup(xosc.ConditionGroup().add_condition(
+                xosc.EntityTrigger(f"{agent.name}_moved_through", drives_on, xosc.ConditionEdge.none,
+                                   xosc.DistanceCondition(5.0, xosc.Rule.lessThan, _lane_position(agent.route[-1]),
+                                                          alongroute=False, freespace=False,
+                                                          distance_type=_EUCLIDEAN[minor >= 1]), agent.name)))
+        leaves = (f"{agent.name}_leaves", [("leave", xosc.DeleteEntityAction(agent.name))], trigger)
         act.add_maneuver_group(_group(agent.name, f"{agent.name}_edge", f"{agent.name}_edge_group", [leaves]))
     return act
 
@@ -334,6 +349,12 @@ def _trajectory(agent: BoundAgent, minor: int) -> xosc.FollowTrajectoryAction:
     return xosc.FollowTrajectoryAction(trajectory, xosc.FollowingMode.position)
 
 
+def _lane_at_later_stages(ego: BoundAgent) -> int:
+    """The ego's lane id (its side of the road) when a later stage starts: past its movement, the route's end."""
+    later_turn = any(step.action in V.TURN_ACTIONS for step in ego.later)
+    return ego.route[-1].lane if ego.route and not later_turn else ego.start.lane
+
+
 def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     """(event name, [(action name, action)], trigger) for each step of the agent's action; the events of one
     maneuver run in parallel."""
@@ -342,8 +363,11 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     setup = []  # done when its act starts: entering (later stages) and the route
     if agent.stage > 0:  # inactive until its stage: it enters now, where it stands or beside the ego as it is now
         if agent.appear is not None:
-            ego = next(a.name for a in scene.agents if a.is_ego)
-            position = xosc.RelativeLanePosition(agent.appear.dlane, ego, 0, ds=agent.appear.ds)
+            ego = next(a for a in scene.agents if a.is_ego)
+            # dLane and ds count in the road's terms (lane ids, s; esmini), not the ego's: on a lane with a
+            # positive id, which drives against s, ahead is -s and the ego's left is -1
+            along = 1 if _lane_at_later_stages(ego) < 0 else -1
+            position = xosc.RelativeLanePosition(agent.appear.dlane * along, ego.name, 0, ds=agent.appear.ds * along)
         else:
             position = _lane_position(agent.start)
         setup += [("enter", xosc.AddEntityAction(agent.name, position)),
