@@ -118,6 +118,23 @@ def test_agents_of_a_later_stage_enter_with_an_add_entity_action(esmini, tmp_pat
         assert not result.achieved and "never appeared" in result.reason
 
 
+def test_a_later_agent_appears_ahead_along_s_read_against_a_left_lane(esmini, tmp_path):
+    """RelativeLanePosition's ds counts along the road's s (esmini): the ego turns onto a lane with a positive
+    id, which drives against s, so 'ahead' is written as -ds; the old +ds put the blockers behind it."""
+    scene = _compiled("boxed_in", tmp_path, only=("town_row", "22:bwd"))
+    report = validate(scene, "all")
+    for player in ("esmini", "sumo"):
+        for name in ("c2", "c3"):
+            assert _agent(report, player, name).achieved, report.table()
+
+    def along_the_drive(root):
+        for relative in root.iter("RelativeLanePosition"):
+            relative.set("ds", str(-float(relative.get("ds"))))
+    report = validate(_edit(scene, along_the_drive), "all")
+    for player in ("esmini", "sumo"):
+        assert not _agent(report, player, "c2").achieved, report.table()
+
+
 def test_a_trigger_already_true_at_the_start_fires_with_edge_none(esmini, tmp_path):
     scene = _compiled("cut_off", tmp_path)  # the ego is within 15 m of c1 from the first step
     assert _agent(validate(scene, "all"), "esmini", "c1").achieved
@@ -303,6 +320,48 @@ def test_a_vehicle_that_turns_onto_the_egos_road_after_it_drives_no_faster(esmin
     write(compile_scenario(parse_file(source), out), out)
     report = validate(out, "all")
     assert report.ok and not report.collisions, report.table()
+
+
+def test_vehicles_done_with_their_moves_leave_the_scene_in_every_player(esmini, tmp_path):
+    """Past its route's end a player picks a vehicle's way at random (esmini); vehicles done with their moves
+    leave a little past it, so that they cannot meet far from the scene while it lasts."""
+    from ttsgc.simulate.plan import read_plan
+    from ttsgc.simulate.players import esmini as esmini_player
+    from ttsgc.simulate.players.sumo.executor import play
+
+    scene = _compiled("intersection", tmp_path)
+    plan = read_plan(scene)
+    through = [n for n, e in plan.entities.items() if e.intent.get("movement") and e.intent.get("is_ego") != "true"]
+    assert through
+    left = {}
+    for trace in (play(plan), esmini_player.play(plan)):
+        for name in through:
+            assert trace.samples[name][-1].t < trace.end_time - 5.0, (trace.player, name)
+        left[trace.player] = {name: trace.samples[name][-1].t for name in through}
+
+    def staying(root):
+        for condition in root.iter("Condition"):
+            if condition.get("name", "").endswith("_moved_through"):
+                group = condition.getparent()
+                group.getparent().remove(group)
+    trace = esmini_player.play(read_plan(_edit(scene, staying)))  # on until the map's edge (a small map here)
+    assert all(trace.samples[name][-1].t > left["esmini"][name] + 2.0 for name in through)
+
+
+def test_a_walker_steps_out_once_the_traffic_crossing_its_way_has_passed(esmini, shared, tmp_path):
+    """The paper's intersection/2 on Town10HD road 19: the bus going straight crosses the walker's crossing
+    after the ego; the walker waits for it too (SUMO's bus, at 19 m/s, could not stop for it, esmini's would
+    not)."""
+    from ttsgc.pipeline import compile_scenario
+    from ttsgc.ttsg_import import import_plan
+
+    plan = shared / "ttsg-plans" / "intersection" / "2"
+    scenario = import_plan(plan / "agent_output.json", plan / "road_info.json").scenario
+    out = tmp_path / "intersection_2.xosc"
+    write(compile_scenario(scenario, out, [shared / "maps" / "carla"], seed=1, only=("Town10HD", "19:fwd")), out)
+    report = validate(out, "all")
+    assert not [c for c in report.collisions if "p1" in (c.a, c.b)], report.table()
+    assert report.ok, report.table()
 
 
 def test_emitted_states_and_edges_are_those_every_player_accepts(tmp_path):

@@ -44,6 +44,7 @@ class Action:
     absolute: bool = False  # lane_change: value is a target lane id, not a number of lanes to the left
     entity: str = ""  # add: the entity an AddEntityAction brings in (a global action names it itself)
     orientation: tuple[str, float] | None = None  # a lane position's Orientation: (type, h), None when absent
+    offset: float = 0.0  # a lane position's offset from its lane's centre, along the road's t (to the left)
 
 
 @dataclass
@@ -116,7 +117,8 @@ def _placing(kind: str, position, entity: str = "") -> Action | None:
         orientation = None
         if turn is not None and turn.get("h") is not None:
             orientation = (turn.get("type", "relative"), _float(turn, "h", 0.0))
-        return Action(kind, lane=lane, entity=entity, orientation=orientation)
+        return Action(kind, lane=lane, entity=entity, orientation=orientation,
+                      offset=_float(position.find("LanePosition"), "offset", 0.0))
     relative = _relative(position)
     if relative is not None:
         return Action(kind, relative=relative, entity=entity)

@@ -13,6 +13,7 @@ The run becomes a Trace of every body's position, heading and speed.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from functools import cache
@@ -70,6 +71,7 @@ class Mover:
     path: list[tuple[float, float]] = field(default_factory=list)  # trajectory vertices still ahead
     path_event: str = ""  # the event whose trajectory it follows (ends when the path does)
     goal_s: float | None = None  # routed along its lane to this s of its road (AcquirePositionAction)
+    offset: float = 0.0  # from its lane's centre along the road's t, as its position gave it
 
 
 @dataclass
@@ -220,11 +222,13 @@ class Executor:
         if kind == "relative":
             return math.cos(h) < 0
         road, lane, s = position
-        lane_heading = self.odr.roads[road].lane_point(s, lane).hdg + (math.pi if lane > 0 else 0.0)
+        lane_heading = self.odr.roads[road].lane_point(s, lane).hdg  # already the lane's driving direction
         return math.cos(h - lane_heading) < 0
 
     def spawn(self, entity: Entity, position: tuple[str, int, float], speed: float, t: float,
-              orientation: tuple[str, float] | None = None) -> None:
+              orientation: tuple[str, float] | None = None, offset: float = 0.0) -> None:
+        """Bring a body in at a lane position; the offset (along the road's t) counts for the bodies the player
+        moves (SUMO's vehicles keep to their lane's centre)."""
         import libsumo as ts
 
         road, lane, s = position
@@ -238,8 +242,8 @@ class Executor:
             return
         lane_type = self.odr.roads[road].section_at(s).lanes[lane].type
         if entity.kind == "pedestrian" or lane_type not in SUMO_VEHICLE_LANES:
-            pose = self.odr.roads[road].lane_point(s, lane)
-            self.movers[entity.name] = Mover(pose.x, pose.y, pose.hdg, speed, road, lane, s)
+            pose = _lane_pose(self.odr.roads[road], s, lane, offset)
+            self.movers[entity.name] = Mover(pose.x, pose.y, pose.hdg, speed, road, lane, s, offset=offset)
             self.present.add(entity.name)
             self.active.add(entity.name)
             self.run.spawns[entity.name] = Spawn(True, "", (road, lane), (road, lane), t)
@@ -302,7 +306,7 @@ class Executor:
                     self.run.problems.append(f"{event.name}: '{added.name}' is already in the scene")
                 elif action.lane is not None:
                     speed = next((a.value for a in event.actions if a.kind == "speed"), 0.0)
-                    self.spawn(added, action.lane, speed, t, action.orientation)
+                    self.spawn(added, action.lane, speed, t, action.orientation, action.offset)
                 else:
                     self._appear(added, action, event, t)
                 self.joined.add((event.name, added.name) if added is not None else (event.name, actor))
@@ -487,18 +491,30 @@ class Executor:
             self.run.problems.append(f"{event.name}: '{ref}' is not in the simulation to appear beside")
             return
         edge = ts.vehicle.getRoadID(ref)
-        index = ts.vehicle.getLaneIndex(ref) + dlane
+        # dLane and ds count in the road's terms (lane ids, s), SUMO's lanes in the driving direction: on an
+        # OpenDRIVE lane with a positive id, which drives against s, they turn round
+        along = -1 if (self.odr_of(ts.vehicle.getLaneID(ref))[1] or -1) > 0 else 1
+        index = ts.vehicle.getLaneIndex(ref) + dlane * along
         lane_id = f"{edge}_{index}"
         if lane_id not in self.by_id:
             self.run.spawns[entity.name] = Spawn(False, f"the ego's lane has no neighbour {dlane:+d} at t={t:.1f}")
             return
-        centre = ts.vehicle.getLanePosition(ref) - self.plan.entities[ref].length / 2 + ds
+        centre = ts.vehicle.getLanePosition(ref) - self.plan.entities[ref].length / 2 + ds * along
         sumo_lane = self.by_id[lane_id]
         length = _length(sumo_lane.shape)
+        route, k = ts.vehicle.getRoute(ref), ts.vehicle.getRouteIndex(ref)
+        while centre >= length and 0 <= k < len(route) - 1:  # beyond the ego's edge: on along its route
+            k += 1
+            ahead = [lane for lane in self.by_id.values() if lane.edge == route[k] and not lane.allow_pedestrians]
+            if not ahead:
+                break
+            centre -= length
+            sumo_lane = min(ahead, key=lambda lane: abs(lane.index - index))
+            length = _length(sumo_lane.shape)
         if not 0 < centre < length:
             self.run.spawns[entity.name] = Spawn(False, f"no room {ds:+.0f} m from the ego on its road at t={t:.1f}")
             return
-        road, lane = self.odr_of(lane_id)
+        road, lane = self.odr_of(sumo_lane.id)
         x, y = _point_at(sumo_lane.shape, centre)
         s = self._s_on_road(road, lane, x, y)
         speed = next((a.value for a in event.actions if a.kind == "speed"), ts.vehicle.getSpeed(ref))
@@ -593,7 +609,7 @@ class Executor:
                 if teleport.relative is not None:
                     self.run.problems.append(f"'{name}': an Init position beside another entity is not supported")
                     continue
-                self.spawn(entity, teleport.lane, speed, 0.0, teleport.orientation)
+                self.spawn(entity, teleport.lane, speed, 0.0, teleport.orientation, teleport.offset)
             ts.simulationStep()  # SUMO inserts what was added on the next step
             t = round(ts.simulation.getTime(), 3)
             self._sample(t)
@@ -697,7 +713,7 @@ class Executor:
             if mover.goal_s is not None:
                 if abs(mover.goal_s - mover.s) <= step:
                     mover.s, mover.speed, mover.goal_s = mover.goal_s, 0.0, None
-                    pose = road.lane_point(mover.s, mover.lane)
+                    pose = _lane_pose(road, mover.s, mover.lane, mover.offset)
                     mover.x, mover.y = pose.x, pose.y
                     continue
                 s = mover.s + (step if mover.goal_s > mover.s else -step)
@@ -708,7 +724,7 @@ class Executor:
                     mover.speed = 0.0  # the end of its way: it stands
                     self.run.out_of_road.add(name)
                 continue
-            pose = road.lane_point(s, mover.lane)
+            pose = _lane_pose(road, s, mover.lane, mover.offset)
             mover.x, mover.y, mover.heading, mover.s = pose.x, pose.y, pose.hdg, s
 
     def _yield_to_moved_bodies(self) -> None:
@@ -812,6 +828,16 @@ class Executor:
                                 (sb.x, sb.y, sb.heading, eb.length, eb.width)):
                     self.run.collisions.append(Collision(a, b, t, round((sa.x + sb.x) / 2, 2),
                                                          round((sa.y + sb.y) / 2, 2)))
+
+
+def _lane_pose(road, s: float, lane: int, offset: float = 0.0):
+    """A lane point moved by a LanePosition's offset, which counts along the road's t (to the left of its
+    reference line), whichever side the lane is on."""
+    pose = road.lane_point(s, lane)
+    if not offset:
+        return pose
+    normal = road.pose(s).hdg + math.pi / 2
+    return dataclasses.replace(pose, x=pose.x + offset * math.cos(normal), y=pose.y + offset * math.sin(normal))
 
 
 def _length(shape) -> float:
