@@ -235,6 +235,15 @@ def test_a_cyclist_on_the_sidewalk_is_placed_where_the_file_puts_it(esmini, tmp_
     assert report.ok, report.table()
 
 
+def test_a_driver_too_close_to_stop_for_a_walker_stepping_out_keeps_going(esmini, tmp_path):
+    """crushing's walker steps out when the ego is 20 m away: esmini's ego drives by 2.5 m from it. SUMO's ego
+    braked for it although it could not stop short, and so arrived while the walker was in its lane."""
+    report = validate(_compiled("crushing", tmp_path), "all")
+    assert report.ok and not report.collisions, report.table()
+    closest = [v.min_distance_to_ego for v in report.verdicts]
+    assert closest[0] == pytest.approx(closest[1], abs=0.5), report.table()
+
+
 def test_a_vehicle_that_sets_off_later_drives_the_speed_the_file_sets(esmini, tmp_path):
     """Junction traffic that waits its turn enters standing still; SUMO's vehicle type must still allow the
     speed the file sets later (it held them to 6.5 m/s, esmini drives 19)."""

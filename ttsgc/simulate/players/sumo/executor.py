@@ -34,6 +34,7 @@ PATH_HALF_WIDTH_M = 1.8  # a moved body this close to a vehicle's line of travel
 COMFORT_BRAKE = 4.0  # m/s2
 SPEED_FACTOR = 10.0  # of the lanes' speed limits: high enough that only the speeds the file sets count
 ANTICIPATION_S = 2.0  # how far ahead in time a driver reads a moved body's course
+STOP_SHORT_M = 2.5  # how far before a moved body in its way a vehicle stops
 # the OpenDRIVE lane types SUMO's import (its opendriveNetconvert typemap) makes lanes for vehicles of;
 # shoulders and the like are discarded and sidewalks are the pedestrians': a vehicle there is moved by the player
 SUMO_VEHICLE_LANES = {"driving", "stop", "parking", "entry", "exit", "onRamp", "offRamp", "bidirectional"}
@@ -728,8 +729,11 @@ class Executor:
             mover.x, mover.y, mover.heading, mover.s = pose.x, pose.y, pose.hdg, s
 
     def _yield_to_moved_bodies(self) -> None:
-        """SUMO's drivers do not see the bodies this player moves: a vehicle with one in its path, ahead within
-        LOOK_AHEAD_M, slows to stop short of it, and takes up its commanded speed again once the way is clear."""
+        """SUMO's drivers do not see the bodies this player moves, so the player makes them: a vehicle whose
+        way a moved body will be on while the vehicle gets there (read from the body's course) slows to stop
+        short of it, and takes up its commanded speed again once the way is clear. A vehicle that could not
+        stop before it anyway keeps its speed, as a committed driver would: braking then would only bring it
+        there later, when the body is in its lane (a walker stepping out close in front of it)."""
         import libsumo as ts
 
         if not self.movers:
@@ -741,22 +745,51 @@ class Executor:
             body = self.plan.entities[name]
             gap = None
             for other, mover in self.movers.items():
-                # where it is, and where it will be soon: a walker stepping towards the lane is seen in time
-                for lead in (0.0, ANTICIPATION_S):
-                    dx = mover.x + math.cos(mover.heading) * mover.speed * lead - last.x
-                    dy = mover.y + math.sin(mover.heading) * mover.speed * lead - last.y
-                    ahead = dx * math.cos(last.heading) + dy * math.sin(last.heading) - body.length / 2
-                    side = -dx * math.sin(last.heading) + dy * math.cos(last.heading)
-                    if -1.0 < ahead < LOOK_AHEAD_M and abs(side) < PATH_HALF_WIDTH_M + body.width / 2:
-                        gap = max(ahead, 0.0) if gap is None else min(gap, max(ahead, 0.0))
+                where = self._conflict(last, body, mover, self.plan.entities[other], ts.vehicle.getDecel(name))
+                if where is not None:
+                    gap = where if gap is None else min(gap, where)
             commanded = self.commanded[name]
             if gap is not None:
-                safe = math.sqrt(max(0.0, 2 * COMFORT_BRAKE * (gap - 2.5)))
+                safe = math.sqrt(max(0.0, 2 * COMFORT_BRAKE * (gap - STOP_SHORT_M)))
                 ts.vehicle.setSpeed(name, min(commanded, safe))
                 self.yielding.add(name)
             elif name in self.yielding:
                 ts.vehicle.setSpeed(name, commanded)
                 self.yielding.discard(name)
+
+    @staticmethod
+    def _conflict(vehicle: Sample, body: Entity, mover: Mover, other: Entity, decel: float) -> float | None:
+        """The free gap to a moved body the vehicle must stop for, None when there is none: the body is ahead
+        within LOOK_AHEAD_M and in the vehicle's way (PATH_HALF_WIDTH_M beside its line) at some time while
+        the vehicle reaches and passes it, and the vehicle can still stop short of it (or already crawls)."""
+        c, n = math.cos(vehicle.heading), math.sin(vehicle.heading)
+        dx, dy = mover.x - vehicle.x, mover.y - vehicle.y
+        ahead, side = dx * c + dy * n, -dx * n + dy * c
+        vx, vy = math.cos(mover.heading) * mover.speed, math.sin(mover.heading) * mover.speed
+        lateral = -vx * n + vy * c
+        gap = ahead - body.length / 2 - other.length / 2
+        if gap < -1.0 or gap > LOOK_AHEAD_M:
+            return None
+        half = PATH_HALF_WIDTH_M + body.width / 2
+        if abs(lateral) < 1e-6:
+            if abs(side) >= half:
+                return None
+            enters, leaves = 0.0, math.inf
+        else:
+            first, second = sorted(((-half - side) / lateral, (half - side) / lateral))
+            if second < 0:
+                return None
+            enters, leaves = max(first, 0.0), second
+        speed = vehicle.speed
+        if speed < 0.5:  # standing or crawling: it waits while the body is, or is about to be, in its way
+            return max(gap, 0.0) if enters < ANTICIPATION_S else None
+        reaches = max(gap, 0.0) / speed
+        passes = (gap + body.length + other.length + 2.0) / speed
+        if enters > passes + ANTICIPATION_S / 2 or leaves < reaches - ANTICIPATION_S / 2:
+            return None  # it is by before the body comes, or the body is gone before it gets there
+        if gap - STOP_SHORT_M <= 0 or speed * speed / (2 * (gap - STOP_SHORT_M)) > decel:
+            return None  # too late to stop: braking now would only bring it there with the body in its way
+        return max(gap, 0.0)
 
     def _next_road(self, mover: Mover, overshoot: float) -> bool:
         """Carry a body moved along its lane onto the next road, in the same kind of lane at the same side."""
