@@ -440,6 +440,14 @@ def test_box_distance_is_exact_for_oriented_boxes():
     assert J.box_distance(origin, body, Sample(0, 3.9, 0, 0, 0), body) == 0.0
 
 
+def test_a_lane_change_across_a_link_between_two_pieces_of_one_road_counts():
+    """SUMO cuts a road at a lane section into two edges joined by a link with no OpenDRIVE lane: a change
+    made across it is still a change (Town06 road 15, lane -5 to -6)."""
+    samples = [Sample(0.1 * k, 10.0 * k, 0, 0, 10, road, lane) for k, (road, lane) in
+               enumerate([("15", -5), ("15", -5), ("", None), ("15", -6), ("16", -5)])]
+    assert J._lane_change(samples, -1) == (True, "changed 1 lane(s) to the right")
+
+
 def test_collisions_are_asked_for_only_with_an_agent_that_seeks_danger():
     from ttsgc.simulate.plan import Entity, Plan
 

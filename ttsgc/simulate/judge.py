@@ -400,8 +400,10 @@ def _lane_change(after: list[Sample], direction: int) -> tuple[bool, str]:
     """Net lanes moved to the left: on either side of a road the lane nearer the centre line is to the left
     of the driving direction, so a move to the left lowers |lane id|."""
     net = most = 0  # most: the furthest it got the named way (a lane section further on may renumber lanes)
-    for a, b in zip(after, after[1:]):
-        if a.road and a.road == b.road and a.lane and b.lane and (a.lane > 0) == (b.lane > 0):
+    known = [s for s in after if s.road and s.lane]  # a sample with no lane (a player's link between two pieces
+    # of one road) does not break the count: the lanes before and after it are compared
+    for a, b in zip(known, known[1:]):
+        if a.road == b.road and (a.lane > 0) == (b.lane > 0):
             net += abs(a.lane) - abs(b.lane)
             most = max(most, net * direction)
     side = "left" if direction > 0 else "right"
