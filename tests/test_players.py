@@ -448,6 +448,19 @@ def test_a_lane_change_across_a_link_between_two_pieces_of_one_road_counts():
     assert J._lane_change(samples, -1) == (True, "changed 1 lane(s) to the right")
 
 
+def test_a_road_shorter_than_a_step_is_still_reached(esmini, shared, tmp_path):
+    """On Town07 the ego goes straight from road 26 onto road 27, 1.5 m long: SUMO's 0.1 s samples at 19 m/s
+    have none on it, and the judge said the ego ended on the road after it."""
+    from ttsgc.pipeline import compile_scenario
+
+    out = tmp_path / "signalised_crosswalk.xosc"
+    write(compile_scenario(parse_file(EXAMPLES / "signalised_crosswalk.tsg"), out, [shared / "maps" / "carla"],
+                           only=("Town07", "26:fwd")), out)
+    report = validate(out, "all")
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "ego").reason.startswith("went straight onto road 27"), report.table()
+
+
 def test_collisions_are_asked_for_only_with_an_agent_that_seeks_danger():
     from ttsgc.simulate.plan import Entity, Plan
 
