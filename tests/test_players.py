@@ -373,6 +373,28 @@ def test_a_walker_steps_out_once_the_traffic_crossing_its_way_has_passed(esmini,
     assert report.ok, report.table()
 
 
+def test_a_vehicle_in_front_of_the_ego_never_waits_for_the_egos_turn(esmini, shared, tmp_path):
+    """On Town10HD the bus in front of the ego stands on the next piece of road: it takes the ego's turn
+    through the junction (it waited for it, standing, and the ego drove into it)."""
+    from ttsgc.binding import bind
+    from ttsgc.pipeline import compile_scenario
+    from ttsgc.roads import load_library
+
+    source = tmp_path / "rain.tsg"
+    source.write_text('scenario "rain"\nweather mid_rain noon\nstage main {\n    ego car go_straight cautious\n'
+                      '    bus b1 at front go_straight\n'
+                      '    pedestrian p1 at near_the_crosswalk cross_the_road\n}\n')
+    only = ("Town10HD", "4:fwd")
+    scene = bind(parse_file(source), load_library([shared / "maps" / "carla"]), only=only)
+    ego, bus = scene.agent("ego"), scene.agent("b1")
+    assert bus.start.road != ego.start.road and len(bus.route) >= 2
+    assert bus.start_delay_s == ego.start_delay_s == 0.0
+    out = tmp_path / "rain.xosc"
+    write(compile_scenario(parse_file(source), out, [shared / "maps" / "carla"], only=only), out)
+    report = validate(out, "all")
+    assert report.ok and not report.collisions, report.table()
+
+
 def test_emitted_states_and_edges_are_those_every_player_accepts(tmp_path):
     """CARLA ScenarioRunner accepts startTransition, stopTransition, endTransition and completeState only;
     a start condition that may hold at the first evaluation must not wait for a rising edge."""

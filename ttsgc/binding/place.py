@@ -590,7 +590,7 @@ def stagger_at_junction(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundA
         delays.update(_turns(agents, stage, odr))
     out = []
     for agent in agents:
-        key = (agent.stage, agent.start.road, agent.start.lane > 0) if agent.start is not None else None
+        key = _turn_key(agent, agents) if agent.start is not None else None
         delay = delays.get(key, 0.0) if len(agent.route) >= 2 else 0.0
         out.append(agent.model_copy(update={"start_delay_s": delay}) if delay != agent.start_delay_s else agent)
     return out
@@ -628,6 +628,16 @@ def no_faster_onto_one_road(agents: list[BoundAgent], odr: OpenDrive) -> list[Bo
     return [a.model_copy(update={"speed_mps": capped[a.name]}) if a.name in capped else a for a in agents]
 
 
+def _turn_key(agent: BoundAgent, agents: list[BoundAgent]) -> tuple[int, str, bool]:
+    """Whose turn through the junction a vehicle shares: its road and direction's, and a vehicle in front
+    of the ego in its lane the ego's (placed on a road further on, it would otherwise wait for its turn while
+    the ego, behind it, drives into it)."""
+    ego = next((a for a in agents if a.is_ego and a.start is not None), None)
+    if ego is not None and agent.relative_to_ego == "front" and agent.stage == ego.stage == 0:
+        agent = ego
+    return agent.stage, agent.start.road, agent.start.lane > 0
+
+
 def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[int, str, bool], float]:
     windows: dict[tuple[int, str, bool], list[float]] = {}
     first = None  # the ego's road goes first in its stage
@@ -641,7 +651,7 @@ def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[i
         here = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
         arrive = max(0.0, math.hypot(entry.x - here.x, entry.y - here.y) - agent.length / 2) / agent.speed_mps
         leave = arrive + (road.length + agent.length + 2.0) / agent.speed_mps
-        key = (stage, agent.start.road, agent.start.lane > 0)
+        key = _turn_key(agent, agents)
         window = windows.setdefault(key, [arrive, leave])
         window[0], window[1] = min(window[0], arrive), max(window[1], leave)
         if agent.is_ego:
