@@ -135,6 +135,19 @@ def test_a_later_agent_appears_ahead_along_s_read_against_a_left_lane(esmini, tm
         assert not _agent(report, player, "c2").achieved, report.table()
 
 
+def test_a_later_stage_starts_once_the_ego_is_out_of_the_junction(esmini, shared, tmp_path):
+    """Town10HD's road 9, onto which the ego turns, is 10.6 m long: within 10 m of its route's end the ego was
+    still on the junction's connecting road, which drives against s, and the blockers appeared behind it."""
+    from ttsgc.pipeline import compile_scenario
+
+    out = tmp_path / "boxed_in.xosc"
+    write(compile_scenario(parse_file(EXAMPLES / "boxed_in.tsg"), out, [shared / "maps" / "carla"],
+                           only=("Town10HD", "12:bwd")), out)
+    report = validate(out, "esmini")
+    for name in ("c2", "c3"):
+        assert _agent(report, "esmini", name).achieved, report.table()
+
+
 def test_a_trigger_already_true_at_the_start_fires_with_edge_none(esmini, tmp_path):
     scene = _compiled("cut_off", tmp_path)  # the ego is within 15 m of c1 from the first step
     assert _agent(validate(scene, "all"), "esmini", "c1").achieved

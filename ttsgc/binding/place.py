@@ -90,6 +90,7 @@ class BoundAgent(_Data):
     walk_to: LanePos | None = None
     trigger: Trigger | None = None
     distance_to_ego_m: float = 0.0  # at the start, centre to centre
+    route_end_into_m: float | None = None  # how far its route's last point lies into the road it ends on
     start_delay_s: float = 0.0  # stands this long before it sets off, so that junction traffic takes turns
     later: tuple[LaterAction, ...] = ()  # the ego's actions in later stages, in stage order
 
@@ -537,8 +538,12 @@ class Placer:
         distance = 0.0
         if start is not None and not agent.is_ego and self.ego_start is not None:
             distance = round(distance_between(self.odr, start, self.ego_start), 3)
+        into = None
+        if len(route) >= 2:  # how far its route's end lies into the road it leads onto, past the junction
+            end = route[-1]
+            into = round(end.s if end.lane < 0 else self.odr.roads[end.road].length - end.s, 3)
         return BoundAgent(
-            distance_to_ego_m=distance,
+            distance_to_ego_m=distance, route_end_into_m=into,
             name=agent.name, type=agent.type, is_ego=agent.is_ego, action=agent.action, behavior=agent.behavior,
             relative_to_ego=agent.relative_to_ego, road_type=agent.road_type, stage=stage, start=start,
             appear=appear, speed_mps=_speed(agent, frame.approach.speed_limit_kmh), length=length, width=width,

@@ -246,7 +246,8 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
         later_turn = any(step.action in V.TURN_ACTIONS for step in ego.later)
         if k == 1 and ego.route and not later_turn:  # the ego's movement ends the first stage: at the far road
             start = xosc.EntityTrigger(f"{name}_start", 0, xosc.ConditionEdge.none,
-                                       xosc.DistanceCondition(10.0, xosc.Rule.lessThan, _lane_position(ego.route[-1]),
+                                       xosc.DistanceCondition(_on_the_far_road_m(ego), xosc.Rule.lessThan,
+                                                              _lane_position(ego.route[-1]),
                                                               alongroute=False, freespace=False,
                                                               distance_type=_EUCLIDEAN[minor >= 1]), ego.name)
         else:
@@ -265,6 +266,14 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
         if step.stage == k:
             act.add_maneuver_group(_later_ego_group(ego, step, minor))
     return act
+
+
+def _on_the_far_road_m(ego: BoundAgent) -> float:
+    """How near the end of its route the ego is on the road it turned onto, out of the junction: a later
+    stage's agents appear relative to the ego in its road's terms, so the stage must not start while the ego
+    is still on a connecting road of the junction (10 m at most, 2 m at least)."""
+    into = ego.route_end_into_m if ego.route_end_into_m is not None else 10.5
+    return round(max(2.0, min(10.0, into - 0.5)), 3)
 
 
 BRAKE_RATE = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}  # m/s² of a stop
