@@ -745,7 +745,8 @@ class Executor:
             body = self.plan.entities[name]
             gap = None
             for other, mover in self.movers.items():
-                where = self._conflict(last, body, mover, self.plan.entities[other], ts.vehicle.getDecel(name))
+                where = self._conflict(last, body, mover, self.plan.entities[other], ts.vehicle.getDecel(name),
+                                       name in self.yielding)
                 if where is not None:
                     gap = where if gap is None else min(gap, where)
             commanded = self.commanded[name]
@@ -758,10 +759,12 @@ class Executor:
                 self.yielding.discard(name)
 
     @staticmethod
-    def _conflict(vehicle: Sample, body: Entity, mover: Mover, other: Entity, decel: float) -> float | None:
+    def _conflict(vehicle: Sample, body: Entity, mover: Mover, other: Entity, decel: float,
+                  braking: bool = False) -> float | None:
         """The free gap to a moved body the vehicle must stop for, None when there is none: the body is ahead
         within LOOK_AHEAD_M and in the vehicle's way (PATH_HALF_WIDTH_M beside its line) at some time while
-        the vehicle reaches and passes it, and the vehicle can still stop short of it (or already crawls)."""
+        the vehicle reaches and passes it, and the vehicle can still stop short of it (or already crawls, or
+        already brakes for it: it does not give up half way)."""
         c, n = math.cos(vehicle.heading), math.sin(vehicle.heading)
         dx, dy = mover.x - vehicle.x, mover.y - vehicle.y
         ahead, side = dx * c + dy * n, -dx * n + dy * c
@@ -787,7 +790,7 @@ class Executor:
         passes = (gap + body.length + other.length + 2.0) / speed
         if enters > passes + ANTICIPATION_S / 2 or leaves < reaches - ANTICIPATION_S / 2:
             return None  # it is by before the body comes, or the body is gone before it gets there
-        if gap - STOP_SHORT_M <= 0 or speed * speed / (2 * (gap - STOP_SHORT_M)) > decel:
+        if not braking and (gap - STOP_SHORT_M <= 0 or speed * speed / (2 * (gap - STOP_SHORT_M)) > decel):
             return None  # too late to stop: braking now would only bring it there with the body in its way
         return max(gap, 0.0)
 
