@@ -37,6 +37,9 @@ def main() -> int:
         section("evaluation: the paper's 40 plans on the CARLA towns",
                 [ttsgc, "eval", str(SHARED / "ttsg-plans"), "--seeds", "1", "--maps", str(SHARED / "maps" / "carla"),
                  "--show-failures", "40"])
+        section("evaluation: the paper's 40 plans on the CARLA towns alone (no synthesised roads)",
+                [ttsgc, "eval", str(SHARED / "ttsg-plans"), "--seeds", "1", "--maps", str(SHARED / "maps" / "carla"),
+                 "--synthesize", "never", "--show-failures", "40"])
     return 0
 
 

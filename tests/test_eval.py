@@ -87,3 +87,45 @@ def test_ttsg_plans_suite_on_the_carla_towns(shared, tmp_path):
                  "--report", str(report)]) == 0
     summary = json.loads(report.read_text())["summary"]
     assert summary["runs"] == 40 and summary["SA"] >= 0.7
+
+
+def _one_plan_suite(shared, tmp_path, kind: str, number: str):
+    """A suite of one TTSG plan (a scratch copy: a suite is a folder of plan folders)."""
+    import shutil
+
+    source = shared / "ttsg-plans" / kind / number
+    target = tmp_path / "suite" / kind / number
+    target.mkdir(parents=True)
+    for name in ("agent_output.json", "road_info.json"):
+        shutil.copy(source / name, target / name)
+    return tmp_path / "suite"
+
+
+def test_eval_synthesises_a_road_when_no_library_road_fits_and_says_so(shared, tmp_path, capsys):
+    """crushing/1 needs a crossing away from a junction, which no CARLA town has: with --synthesize never the
+    run fails at compile; by default (auto, as compile) it is bound to a map built for it, and counted."""
+    suite, carla = _one_plan_suite(shared, tmp_path, "crushing", "1"), str(shared / "maps" / "carla")
+    report = tmp_path / "eval.json"
+    assert main(["eval", str(suite), "--seeds", "1", "--maps", carla, "--synthesize", "never",
+                 "--report", str(report)]) == 0
+    run = json.loads(report.read_text())["runs"][0]
+    assert run["failed_at"] == "compile" and "crosswalk" in run["reason"] and not run["synthesized"]
+    capsys.readouterr()
+    assert main(["eval", str(suite), "--seeds", "1", "--maps", carla, "--report", str(report)]) == 0
+    assert "1 of 1 run(s) bound to a map synthesised for the scene" in capsys.readouterr().out
+    data = json.loads(report.read_text())
+    run = data["runs"][0]
+    assert run["synthesized"] and run["road"].startswith("synth_") and data["summary"]["synthesized"] == 1
+    assert run["ok"], run["reason"]
+
+
+def test_import_ttsg_xosc_synthesises_a_road_unless_told_not_to(shared, tmp_path, capsys):
+    plan = shared / "ttsg-plans" / "crushing" / "1"
+    args = ["import-ttsg", str(plan / "agent_output.json"), str(plan / "road_info.json"), "-o",
+            str(tmp_path / "c.tsg"), "--xosc", str(tmp_path / "c.xosc"), "--maps", str(shared / "maps" / "carla")]
+    assert main(args + ["--synthesize", "never"]) == 4
+    assert not (tmp_path / "c.xosc").exists() and not (tmp_path / "c.tsg").exists()
+    capsys.readouterr()
+    assert main(args) == 0
+    assert "synthesised synth_" in capsys.readouterr().err
+    assert (tmp_path / "c.xosc").is_file() and list(tmp_path.glob("synth_*.xodr"))

@@ -15,7 +15,7 @@ from lxml import etree
 from conftest import compiled_example as _compiled, edit_xosc as _edit
 from conftest import EXAMPLES, SHARED, example_scenarios
 from ttsgc.cli import main
-from ttsgc.language import parse_file
+from ttsgc.language import parse, parse_file
 from ttsgc.pipeline import compile_and_prove, compile_scenario, write
 from ttsgc.simulate import judge as J
 from ttsgc.simulate.trace import Body, Sample, Trace
@@ -118,6 +118,36 @@ def test_agents_of_a_later_stage_enter_with_an_add_entity_action(esmini, tmp_pat
         assert not result.achieved and "never appeared" in result.reason
 
 
+def test_a_later_agent_appears_ahead_along_s_read_against_a_left_lane(esmini, tmp_path):
+    """RelativeLanePosition's ds counts along the road's s (esmini): the ego turns onto a lane with a positive
+    id, which drives against s, so 'ahead' is written as -ds; the old +ds put the blockers behind it."""
+    scene = _compiled("boxed_in", tmp_path, only=("town_row", "22:bwd"))
+    report = validate(scene, "all")
+    for player in ("esmini", "sumo"):
+        for name in ("c2", "c3"):
+            assert _agent(report, player, name).achieved, report.table()
+
+    def along_the_drive(root):
+        for relative in root.iter("RelativeLanePosition"):
+            relative.set("ds", str(-float(relative.get("ds"))))
+    report = validate(_edit(scene, along_the_drive), "all")
+    for player in ("esmini", "sumo"):
+        assert not _agent(report, player, "c2").achieved, report.table()
+
+
+def test_a_later_stage_starts_once_the_ego_is_out_of_the_junction(esmini, shared, tmp_path):
+    """Town10HD's road 9, onto which the ego turns, is 10.6 m long: within 10 m of its route's end the ego was
+    still on the junction's connecting road, which drives against s, and the blockers appeared behind it."""
+    from ttsgc.pipeline import compile_scenario
+
+    out = tmp_path / "boxed_in.xosc"
+    write(compile_scenario(parse_file(EXAMPLES / "boxed_in.tsg"), out, [shared / "maps" / "carla"],
+                           only=("Town10HD", "12:bwd")), out)
+    report = validate(out, "esmini")
+    for name in ("c2", "c3"):
+        assert _agent(report, "esmini", name).achieved, report.table()
+
+
 def test_a_trigger_already_true_at_the_start_fires_with_edge_none(esmini, tmp_path):
     scene = _compiled("cut_off", tmp_path)  # the ego is within 15 m of c1 from the first step
     assert _agent(validate(scene, "all"), "esmini", "c1").achieved
@@ -154,6 +184,94 @@ def test_a_lane_change_happens_as_written_with_a_vehicle_alongside(esmini, tmp_p
     report = validate(_compiled("rainy_night_cut_in", tmp_path), "all")
     for player in ("esmini", "sumo"):
         assert "changed 1 lane(s) to the left" in _agent(report, player, "c1").reason
+
+
+STRAIGHT_THROUGH_THE_LIGHTS = """scenario "straight through the lights"
+road {
+    at junction
+    has traffic_light
+}
+stage main {
+    ego car go_straight
+}
+"""
+
+
+def test_lights_the_file_does_not_control_stop_nobody(tmp_path):
+    """A file with no TrafficSignalController and no TrafficSignalAction gives the lights no program: esmini
+    drives through them, and so does SUMO, whose netconvert would otherwise run a program of its own and hold
+    the ego at a red phase on two of the four roads (with the placement's timing, a crash behind it)."""
+    from ttsgc.pipeline import compile_scenario
+    from ttsgc.roads.retrieve import load_library
+    from ttsgc.simulate.plan import read_plan
+    from ttsgc.simulate.players.sumo.executor import play
+
+    scenario = parse(STRAIGHT_THROUGH_THE_LIGHTS, "lights.tsg")
+    junction = next(i for i in load_library(None) if i.name == "fourway_2lane_lights")
+    approaches = [a.id for a in junction.approaches if a.junction is not None]
+    assert len(approaches) == 4
+    for approach in approaches:
+        out = tmp_path / f"{approach.replace(':', '_')}.xosc"
+        write(compile_scenario(scenario, out, only=("fourway_2lane_lights", approach)), out)
+        plan = read_plan(out)
+        assert not plan.controls_signals
+        ego = play(plan).samples["ego"]
+        assert min(s.speed for s in ego[1:]) == pytest.approx(ego[1].speed, abs=0.05), approach
+
+
+def test_a_file_that_controls_the_signals_says_sumo_runs_its_own_programs(tmp_path):
+    from ttsgc.pipeline import compile_scenario
+    from ttsgc.simulate.plan import read_plan
+
+    out = tmp_path / "lights.xosc"
+    write(compile_scenario(parse(STRAIGHT_THROUGH_THE_LIGHTS, "lights.tsg"), out,
+                           only=("fourway_2lane_lights", "1:bwd")), out)
+
+    def controlled(root):
+        signals = etree.Element("TrafficSignals")
+        controller = etree.SubElement(signals, "TrafficSignalController", name="junction")
+        phase = etree.SubElement(controller, "Phase", name="all red", duration="60")
+        etree.SubElement(phase, "TrafficSignalState", trafficSignalId="1", state="red")
+        root.find("RoadNetwork").append(signals)
+    plan = read_plan(_edit(out, controlled))
+    assert plan.controls_signals
+    assert any("netconvert's own signal programs" in item for item in plan.unsupported)
+
+
+def test_a_cyclist_on_the_sidewalk_is_placed_where_the_file_puts_it(esmini, tmp_path):
+    """SUMO has no vehicle lane on a sidewalk: the player moves the bicycle itself there, rather than put it on
+    the nearest driving lane."""
+    report = _played(tmp_path, "rider", 'scenario "rider"\nroad {\n    has crosswalk\n}\nstage main {\n'
+                     '    ego car go_straight\n'
+                     '    cyclist k1 at near_the_crosswalk on sidewalk cross_the_road\n}\n')
+    assert not _verdict(report, "sumo").problems, report.table()
+    assert report.ok, report.table()
+
+
+def test_a_driver_too_close_to_stop_for_a_walker_stepping_out_keeps_going(esmini, tmp_path):
+    """crushing's walker steps out when the ego is 20 m away: esmini's ego drives by 2.5 m from it. SUMO's ego
+    braked for it although it could not stop short, and so arrived while the walker was in its lane."""
+    report = validate(_compiled("crushing", tmp_path), "all")
+    assert report.ok and not report.collisions, report.table()
+    closest = [v.min_distance_to_ego for v in report.verdicts]
+    assert closest[0] == pytest.approx(closest[1], abs=0.5), report.table()
+
+
+def test_a_vehicle_that_sets_off_later_drives_the_speed_the_file_sets(esmini, tmp_path):
+    """Junction traffic that waits its turn enters standing still; SUMO's vehicle type must still allow the
+    speed the file sets later (it held them to 6.5 m/s, esmini drives 19)."""
+    scene = _compiled("intersection", tmp_path)
+    from ttsgc.simulate.plan import read_plan
+    from ttsgc.simulate.players import esmini as esmini_player
+    from ttsgc.simulate.players.sumo.executor import play
+
+    plan = read_plan(scene)
+    in_sumo, in_esmini = play(plan), esmini_player.play(plan)
+    waiting = [n for n, actions in plan.init.items() for a in actions if a.kind == "speed" and a.value == 0.0]
+    assert waiting
+    for name in waiting:
+        top = max(s.speed for s in in_esmini.samples[name])
+        assert max(s.speed for s in in_sumo.samples[name]) == pytest.approx(top, abs=0.5), name
 
 
 def test_junction_traffic_takes_turns_and_a_walker_lets_the_ego_pass():
@@ -205,6 +323,89 @@ def test_in_one_lane_nobody_drives_faster_than_the_one_ahead_unless_aggressive(t
     assert normal["ego"] == normal["a1"]  # would be 0.85 / 0.6 of the limit: a rear-end crash in esmini
     aggressive = speeds("aggressive")
     assert aggressive["ego"] > aggressive["a1"]
+
+
+def test_a_vehicle_that_turns_onto_the_egos_road_after_it_drives_no_faster(esmini, tmp_path):
+    """The bus turns left onto the road the cautious ego drives on to; nobody follows in esmini, so a faster bus
+    would run into the ego's back long after both did their moves."""
+    from ttsgc.binding import bind
+    from ttsgc.roads.retrieve import load_library
+
+    source = tmp_path / "onto.tsg"
+    source.write_text('scenario "onto one road"\nroad {\n    at junction\n}\nstage main {\n'
+                      '    ego car go_straight cautious\n    bus b1 at road_of_left_turn turn_left\n}\n')
+    scene = bind(parse_file(source), load_library(None))
+    ego, bus = scene.agent("ego"), scene.agent("b1")
+    assert bus.route[-1].road == ego.route[-1].road and bus.start_delay_s > 0
+    assert bus.speed_mps == ego.speed_mps  # normal would be 0.85 of the limit, the cautious ego 0.6
+    out = tmp_path / "onto.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    report = validate(out, "all")
+    assert report.ok and not report.collisions, report.table()
+
+
+def test_vehicles_done_with_their_moves_leave_the_scene_in_every_player(esmini, tmp_path):
+    """Past its route's end a player picks a vehicle's way at random (esmini); vehicles done with their moves
+    leave a little past it, so that they cannot meet far from the scene while it lasts."""
+    from ttsgc.simulate.plan import read_plan
+    from ttsgc.simulate.players import esmini as esmini_player
+    from ttsgc.simulate.players.sumo.executor import play
+
+    scene = _compiled("intersection", tmp_path)
+    plan = read_plan(scene)
+    through = [n for n, e in plan.entities.items() if e.intent.get("movement") and e.intent.get("is_ego") != "true"]
+    assert through
+    left = {}
+    for trace in (play(plan), esmini_player.play(plan)):
+        for name in through:
+            assert trace.samples[name][-1].t < trace.end_time - 5.0, (trace.player, name)
+        left[trace.player] = {name: trace.samples[name][-1].t for name in through}
+
+    def staying(root):
+        for condition in root.iter("Condition"):
+            if condition.get("name", "").endswith("_moved_through"):
+                group = condition.getparent()
+                group.getparent().remove(group)
+    trace = esmini_player.play(read_plan(_edit(scene, staying)))  # on until the map's edge (a small map here)
+    assert all(trace.samples[name][-1].t > left["esmini"][name] + 2.0 for name in through)
+
+
+def test_a_walker_steps_out_once_the_traffic_crossing_its_way_has_passed(esmini, shared, tmp_path):
+    """The paper's intersection/2 on Town10HD road 19: the bus going straight crosses the walker's crossing
+    after the ego; the walker waits for it too (SUMO's bus, at 19 m/s, could not stop for it, esmini's would
+    not)."""
+    from ttsgc.pipeline import compile_scenario
+    from ttsgc.ttsg_import import import_plan
+
+    plan = shared / "ttsg-plans" / "intersection" / "2"
+    scenario = import_plan(plan / "agent_output.json", plan / "road_info.json").scenario
+    out = tmp_path / "intersection_2.xosc"
+    write(compile_scenario(scenario, out, [shared / "maps" / "carla"], seed=1, only=("Town10HD", "19:fwd")), out)
+    report = validate(out, "all")
+    assert not [c for c in report.collisions if "p1" in (c.a, c.b)], report.table()
+    assert report.ok, report.table()
+
+
+def test_a_vehicle_in_front_of_the_ego_never_waits_for_the_egos_turn(esmini, shared, tmp_path):
+    """On Town10HD the bus in front of the ego stands on the next piece of road: it takes the ego's turn
+    through the junction (it waited for it, standing, and the ego drove into it)."""
+    from ttsgc.binding import bind
+    from ttsgc.pipeline import compile_scenario
+    from ttsgc.roads import load_library
+
+    source = tmp_path / "rain.tsg"
+    source.write_text('scenario "rain"\nweather mid_rain noon\nstage main {\n    ego car go_straight cautious\n'
+                      '    bus b1 at front go_straight\n'
+                      '    pedestrian p1 at near_the_crosswalk cross_the_road\n}\n')
+    only = ("Town10HD", "4:fwd")
+    scene = bind(parse_file(source), load_library([shared / "maps" / "carla"]), only=only)
+    ego, bus = scene.agent("ego"), scene.agent("b1")
+    assert bus.start.road != ego.start.road and len(bus.route) >= 2
+    assert bus.start_delay_s == ego.start_delay_s == 0.0
+    out = tmp_path / "rain.xosc"
+    write(compile_scenario(parse_file(source), out, [shared / "maps" / "carla"], only=only), out)
+    report = validate(out, "all")
+    assert report.ok and not report.collisions, report.table()
 
 
 def test_emitted_states_and_edges_are_those_every_player_accepts(tmp_path):
@@ -272,6 +473,27 @@ def test_box_distance_is_exact_for_oriented_boxes():
     corner_first = Sample(0, 2.0 + 3.0 / math.sqrt(2) + 0.5, 0, math.pi / 4, 0)  # a corner 0.5 m from our front
     assert J.box_distance(origin, body, corner_first, body) == pytest.approx(0.5)
     assert J.box_distance(origin, body, Sample(0, 3.9, 0, 0, 0), body) == 0.0
+
+
+def test_a_lane_change_across_a_link_between_two_pieces_of_one_road_counts():
+    """SUMO cuts a road at a lane section into two edges joined by a link with no OpenDRIVE lane: a change
+    made across it is still a change (Town06 road 15, lane -5 to -6)."""
+    samples = [Sample(0.1 * k, 10.0 * k, 0, 0, 10, road, lane) for k, (road, lane) in
+               enumerate([("15", -5), ("15", -5), ("", None), ("15", -6), ("16", -5)])]
+    assert J._lane_change(samples, -1) == (True, "changed 1 lane(s) to the right")
+
+
+def test_a_road_shorter_than_a_step_is_still_reached(esmini, shared, tmp_path):
+    """On Town07 the ego goes straight from road 26 onto road 27, 1.5 m long: SUMO's 0.1 s samples at 19 m/s
+    have none on it, and the judge said the ego ended on the road after it."""
+    from ttsgc.pipeline import compile_scenario
+
+    out = tmp_path / "signalised_crosswalk.xosc"
+    write(compile_scenario(parse_file(EXAMPLES / "signalised_crosswalk.tsg"), out, [shared / "maps" / "carla"],
+                           only=("Town07", "26:fwd")), out)
+    report = validate(out, "all")
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "ego").reason.startswith("went straight onto road 27"), report.table()
 
 
 def test_collisions_are_asked_for_only_with_an_agent_that_seeks_danger():

@@ -269,13 +269,21 @@ def _lint(args) -> int:
     return ExitCode.UNSUPPORTED_BY_TARGET if failed else ExitCode.OK
 
 
+def _synthesize_option(parser) -> None:
+    """One --synthesize for every command that binds a scene to a road (compile, eval, import-ttsg --xosc)."""
+    parser.add_argument("--synthesize", choices=["auto", "never", "always"], default="auto",
+                        help="build an OpenDRIVE map for the scene: when no road of the library fits (auto, the "
+                             "default), never (no fitting road is exit 4), or always (skip the library)")
+
+
 def _eval(args) -> int:
     from ttsgc.evaluate import evaluate, report_json, table
     from ttsgc.runner import progress_bar
     from ttsgc.lowering import choose_method
 
     runs = evaluate(Path(args.suite), seeds=args.seeds, maps=args.maps, method=choose_method(args.llm),
-                    simulate=not args.no_simulate, progress=progress_bar, workers=args.workers)
+                    simulate=not args.no_simulate, progress=progress_bar, workers=args.workers,
+                    synthesize=args.synthesize)
     print(table(runs))
     failed = [r for r in runs if not r.ok]
     for r in failed[: args.show_failures]:
@@ -326,7 +334,8 @@ def _import_ttsg(args) -> int:
             except TtsgcError as exc:
                 print(f"the paper's road: {paper.town} {paper.approach}: does not fit ({str(exc).splitlines()[0]})")
     compiled, report = compile_and_prove(imported.scenario, out, args.maps, only=only,
-                                         log=lambda m: print(m, file=sys.stderr))
+                                         log=lambda m: print(m, file=sys.stderr),
+                                         synthesize="never" if only else args.synthesize)
     if not report.ok:
         print(report.table(), file=sys.stderr)
         print(f"ttsgc: error: {out}: the scene does not do what it says on any of the roads tried; nothing was "
@@ -585,9 +594,7 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--report", metavar="REPORT.json", help="write the simulation report as JSON")
     compile_.add_argument("--render", action="store_true", help="also draw the scene, as a .png beside the .xosc")
     _player_option(compile_)
-    compile_.add_argument("--synthesize", choices=["auto", "never", "always"], default="auto",
-                          help="build an OpenDRIVE map for the scene: when no road of the library fits (auto, the "
-                               "default), never (no fitting road is exit 4), or always (skip the library)")
+    _synthesize_option(compile_)
     compile_.set_defaults(run=_compile)
 
     validate = commands.add_parser("validate", help="play a .xosc (SUMO, esmini) and check that every agent "
@@ -615,6 +622,7 @@ def build_parser() -> argparse.ArgumentParser:
     eval_.add_argument("--show-failures", type=_number(int, 0, 1_000_000), default=10, metavar="N", help="list up to N failed runs")
     eval_.add_argument("--workers", type=_number(int, 1, 1024), metavar="N",
                        help="processes running cases at once (default: every core)")
+    _synthesize_option(eval_)
     eval_.set_defaults(run=_eval)
 
     importer = commands.add_parser("import-ttsg", help="turn a TTSG plan (agent_output.json) into a .tsg scene")
@@ -624,6 +632,7 @@ def build_parser() -> argparse.ArgumentParser:
     importer.add_argument("--xosc", metavar="OUT.xosc", help="also compile it: onto the paper's road when its town "
                                                               "is in --maps and the scene fits, else ranked")
     importer.add_argument("--maps", action="append", metavar="PATH")
+    _synthesize_option(importer)
     importer.set_defaults(run=_import_ttsg)
 
     _add_render_and_batch(commands, llm_options)

@@ -61,7 +61,7 @@ def library_for(scenario: Scenario, maps=None, seed: int | None = None, synthesi
                 log=print) -> list[MapIndex]:
     """The roads a scene is bound to: the map library, or a map synthesised for the scene when `synthesize`
     is 'always', or 'auto' and binding on the library fails or leaves a requirement unmet (said through log)."""
-    from ttsgc.roads.index import cache_dir, load_index
+    from ttsgc.roads.index import load_index
 
     reason = "--synthesize always"
     if synthesize != "always":
@@ -80,9 +80,21 @@ def library_for(scenario: Scenario, maps=None, seed: int | None = None, synthesi
 
     seed = chosen_seed(scenario, seed)
     key = hashlib.sha256(f"{scenario.model_dump_json()}|{seed}".encode()).hexdigest()[:16]
-    path = synthesize_map(scenario, seed, cache_dir().parent / "synth" / key)
+    path = synthesize_map(scenario, seed, synth_folder() / key)
     log(f"ttsgc: note: {reason}; synthesised {path.name} for the scene")
     return [load_index(path)]
+
+
+def synth_folder() -> Path:
+    """Where the maps synthesised for scenes are kept (beside the map index cache)."""
+    from ttsgc.roads.index import cache_dir
+
+    return cache_dir().parent / "synth"
+
+
+def is_synthesized(scene) -> bool:
+    """Whether a bound scene's map was synthesised for it rather than taken from the library."""
+    return synth_folder().resolve() in Path(scene.map_path).resolve().parents
 
 
 MAX_SIMULATION_TRIES = 3

@@ -26,6 +26,7 @@ from ttsgc.roads.retrieve import JUNCTION_CLEARANCE_M
 from ttsgc.scenario import Agent, Scenario, Trigger
 
 CLEARANCE_M = 1.0
+MAX_OVERHANG_M = 0.5  # how far a vehicle standing in an edge lane reaches into the driving lane beside it at most
 MIN_DRIVING_WIDTH_M = 2.5  # narrower, a lane is still opening or closing there: no vehicle starts on it
 PEDESTRIAN_SPEED = {"cautious": 1.0, "normal": 1.4, "aggressive": 2.5}
 CYCLIST_SPEED = {"cautious": 3.5, "normal": 5.0, "aggressive": 7.0}
@@ -89,6 +90,7 @@ class BoundAgent(_Data):
     walk_to: LanePos | None = None
     trigger: Trigger | None = None
     distance_to_ego_m: float = 0.0  # at the start, centre to centre
+    route_end_into_m: float | None = None  # how far its route's last point lies into the road it ends on
     start_delay_s: float = 0.0  # stands this long before it sets off, so that junction traffic takes turns
     later: tuple[LaterAction, ...] = ()  # the ego's actions in later stages, in stage order
 
@@ -342,8 +344,11 @@ class Placer:
         for n, a in enumerate(s.agents()):
             order.setdefault(a.name, n)
         placed = sorted(placed, key=lambda b: order[b.name])
-        placed = no_faster_than_the_one_ahead(placed)
-        return let_the_ego_pass(stagger_at_junction(placed, self.odr), self.odr)
+        placed = stagger_at_junction(no_faster_than_the_one_ahead(placed), self.odr)
+        capped = no_faster_onto_one_road(placed, self.odr)
+        if capped != placed:  # slower, they hold the junction longer: the turns are taken again
+            placed = stagger_at_junction(capped, self.odr)
+        return let_the_traffic_pass(placed, self.odr)
 
     def _ego_lane_rank(self) -> int:
         from ttsgc.binding.rank import lane_needs
@@ -397,7 +402,22 @@ class Placer:
         length = V.BODIES[agent.type][0]
         u = self.occupied.slot(frame, lane, target, length, outward)
         self.last_in_queue[(frame.approach.id, lane, outward)] = (agent, u, length)
-        return self._bound(agent, stage, frame.resolve(lane, u), frame, turn=turn, far_side=lane.far_side)
+        start = frame.resolve(lane, u)
+        if lane.type != "driving" and agent.type != "pedestrian":
+            start = self._clear_of_the_driving_lane(agent, start)
+        return self._bound(agent, stage, start, frame, turn=turn, far_side=lane.far_side)
+
+    def _clear_of_the_driving_lane(self, agent: Agent, start: LanePos) -> LanePos:
+        """A vehicle standing in an edge lane (a shoulder) narrower than itself stands outward, over the kerb,
+        so that it reaches no more than MAX_OVERHANG_M into the driving lane: centred on a 0.3 m shoulder, a
+        2.5 m truck would stand 1.1 m into it, and passing traffic (which does not swerve) would hit it. The
+        LanePosition's offset counts along the road's t, to the left of its reference line."""
+        section = self.odr.roads[start.road].section_at(start.s)
+        width = section.lanes[start.lane].width(start.s - section.s)
+        shift = (V.BODIES[agent.type][1] - width) / 2 - MAX_OVERHANG_M
+        if shift <= 0:
+            return start
+        return start.model_copy(update={"offset": round(shift if start.lane > 0 else -shift, 3)})
 
     def _after(self, frame: _Frame, lane: LaneRef, edge: float, agent: Agent, outward: int) -> float:
         """Desired centre of the next body in a queue: beyond the previous one (or the given edge) by the gap."""
@@ -438,6 +458,10 @@ class Placer:
         frame = self.frame_of(entering)
         movement = TURN_OF_ACTION.get(agent.action)
         turn = self._pick_turn(entering, movement) if movement and agent.road_type == "driving" else None
+        if turn is None and agent.road_type == "driving" and agent.action in ("turn_left", "turn_right"):
+            # as for the ego: a turning agent needs its turn, else it would only drive on (another road may have it)
+            raise PlacementError(f"approach {entering.id} of {self.index.name}, the {side} road of junction "
+                                 f"{self.frame.approach.junction}, has no {movement} turn for '{agent.name}'")
         rank = None
         if agent.road_type == "driving":
             ranks = [i for i, lane in enumerate(entering.lane_ids) if turn is None or lane in turn.from_lanes] or [0]
@@ -488,14 +512,16 @@ class Placer:
         if turn is not None and start is not None and agent.road_type == "driving":
             movement, target_road = turn.direction, turn.to_road
             route = self._route(start, frame, turn)
-        elif (start is not None and frame is self.frame and agent.road_type == "driving"
-              and self.frame.approach.junction is not None):
+        elif start is not None and frame is self.frame and agent.road_type == "driving":
             own = TURN_OF_ACTION.get(agent.action) if agent.action in ("turn_left", "turn_right") else None
             turn = self._pick_turn(self.frame.approach, own) if own else None
+            if own and turn is None:  # it could only drive on: another road may have its turn
+                raise PlacementError(f"approach {frame.approach.id} of {self.index.name} has no {own} turn for "
+                                     f"'{agent.name}'")
             if turn is not None:  # it turns at the ego's junction
                 movement, target_road = turn.direction, turn.to_road
                 route = self._route(start, frame, turn)
-            else:  # traffic on the ego's road carries on through the junction
+            elif self.frame.approach.junction is not None:  # traffic on the ego's road carries on through it
                 through = self._pick_turn(self.frame.approach, "straight") or self.ego_turn
                 if through is not None:
                     route = self._route(start, frame, through)
@@ -512,8 +538,12 @@ class Placer:
         distance = 0.0
         if start is not None and not agent.is_ego and self.ego_start is not None:
             distance = round(distance_between(self.odr, start, self.ego_start), 3)
+        into = None
+        if len(route) >= 2:  # how far its route's end lies into the road it leads onto, past the junction
+            end = route[-1]
+            into = round(end.s if end.lane < 0 else self.odr.roads[end.road].length - end.s, 3)
         return BoundAgent(
-            distance_to_ego_m=distance,
+            distance_to_ego_m=distance, route_end_into_m=into,
             name=agent.name, type=agent.type, is_ego=agent.is_ego, action=agent.action, behavior=agent.behavior,
             relative_to_ego=agent.relative_to_ego, road_type=agent.road_type, stage=stage, start=start,
             appear=appear, speed_mps=_speed(agent, frame.approach.speed_limit_kmh), length=length, width=width,
@@ -565,10 +595,52 @@ def stagger_at_junction(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundA
         delays.update(_turns(agents, stage, odr))
     out = []
     for agent in agents:
-        key = (agent.stage, agent.start.road, agent.start.lane > 0) if agent.start is not None else None
+        key = _turn_key(agent, agents) if agent.start is not None else None
         delay = delays.get(key, 0.0) if len(agent.route) >= 2 else 0.0
-        out.append(agent.model_copy(update={"start_delay_s": delay}) if delay else agent)
+        out.append(agent.model_copy(update={"start_delay_s": delay}) if delay != agent.start_delay_s else agent)
     return out
+
+
+def _reaches_junction_s(agent: BoundAgent, odr: OpenDrive) -> float:
+    """When a vehicle with a route through a junction enters it: its wait, then its way there at its speed."""
+    via = agent.route[1]
+    road = odr.roads[via.road]
+    entry = road.lane_point(0.0 if via.lane < 0 else road.length, via.lane)
+    here = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
+    return agent.start_delay_s + max(0.0, math.hypot(entry.x - here.x, entry.y - here.y) - agent.length / 2) / \
+        max(agent.speed_mps, 0.1)
+
+
+def no_faster_onto_one_road(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
+    """Vehicles whose moves through a junction end on one road, in one direction, get there one after the
+    other: a later one drives no faster than those before it, unless it is aggressive. A player whose drivers
+    do not follow (esmini) would otherwise play a rear-end crash far beyond the junction, long after both did
+    their moves."""
+    onto: dict[tuple[int, str, bool], list[BoundAgent]] = {}
+    for agent in agents:
+        if agent.start is not None and len(agent.route) >= 2 and agent.type != "pedestrian" and \
+                agent.road_type == "driving" and agent.speed_mps > 0:
+            end = agent.route[-1]
+            onto.setdefault((agent.stage, end.road, end.lane > 0), []).append(agent)
+    capped: dict[str, float] = {}
+    for group in onto.values():
+        limit = None
+        for agent in sorted(group, key=lambda a: (_reaches_junction_s(a, odr), a.name)):
+            speed = agent.speed_mps
+            if limit is not None and agent.behavior != "aggressive" and speed > limit:
+                speed = capped[agent.name] = limit
+            limit = speed if limit is None else min(limit, speed)
+    return [a.model_copy(update={"speed_mps": capped[a.name]}) if a.name in capped else a for a in agents]
+
+
+def _turn_key(agent: BoundAgent, agents: list[BoundAgent]) -> tuple[int, str, bool]:
+    """Whose turn through the junction a vehicle shares: its road and direction's, and a vehicle in front
+    of the ego in its lane the ego's (placed on a road further on, it would otherwise wait for its turn while
+    the ego, behind it, drives into it)."""
+    ego = next((a for a in agents if a.is_ego and a.start is not None), None)
+    if ego is not None and agent.relative_to_ego == "front" and agent.stage == ego.stage == 0:
+        agent = ego
+    return agent.stage, agent.start.road, agent.start.lane > 0
 
 
 def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[int, str, bool], float]:
@@ -584,7 +656,7 @@ def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[i
         here = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
         arrive = max(0.0, math.hypot(entry.x - here.x, entry.y - here.y) - agent.length / 2) / agent.speed_mps
         leave = arrive + (road.length + agent.length + 2.0) / agent.speed_mps
-        key = (stage, agent.start.road, agent.start.lane > 0)
+        key = _turn_key(agent, agents)
         window = windows.setdefault(key, [arrive, leave])
         window[0], window[1] = min(window[0], arrive), max(window[1], leave)
         if agent.is_ego:
@@ -624,14 +696,13 @@ def no_faster_than_the_one_ahead(agents: list[BoundAgent]) -> list[BoundAgent]:
     return [a.model_copy(update={"speed_mps": capped[a.name]}) if a.name in capped else a for a in agents]
 
 
-def let_the_ego_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
-    """A walker or rider told to cross with no trigger of its own steps out once the ego has passed, when it
-    would otherwise be on the road as the ego drives by: nothing in a file makes the ego brake for it (a
-    crossing that asks for danger says so with a trigger: `when ego within 20m`)."""
-    ego = next((a for a in agents if a.is_ego and a.start is not None), None)
-    if ego is None or ego.speed_mps <= 0:
-        return agents
-    here = odr.roads[ego.start.road].lane_point(ego.start.s, ego.start.lane)
+def let_the_traffic_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
+    """A walker or rider told to cross with no trigger of its own steps out once the vehicles that would pass
+    its crossing while it is on the road have gone by (the ego first of all): nothing in a file makes a driver
+    brake for it, and esmini's drivers do not (a crossing that asks for danger says so with a trigger:
+    `when ego within 20m`)."""
+    passing = [(a, _way(a, odr)) for a in agents if a.stage == 0 and a.start is not None and a.speed_mps > 0
+               and a.cross_to is None and a.type != "pedestrian" and (a.trigger is None or a.is_ego)]
     out = []
     for agent in agents:
         if agent.cross_to is None or agent.trigger is not None or agent.stage != 0 or agent.speed_mps <= 0:
@@ -639,19 +710,56 @@ def let_the_ego_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgen
             continue
         start = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
         end = odr.roads[agent.cross_to.road].lane_point(agent.cross_to.s, agent.cross_to.lane)
-        width = math.hypot(end.x - start.x, end.y - start.y)
-        ahead = (start.x - here.x) * math.cos(here.hdg) + (start.y - here.y) * math.sin(here.hdg)  # hdg: its lane's
-        # driving direction
-        if ahead <= 0:  # behind the ego: it crosses where the ego has been
-            out.append(agent)
-            continue
-        passes = (ahead - ego.length / 2 - agent.width) / ego.speed_mps
-        gone = (ahead + ego.length / 2 + agent.width) / ego.speed_mps
-        on_road = (0.0, width / agent.speed_mps)
-        if on_road[0] < gone + JUNCTION_GAP_S and on_road[1] > passes - JUNCTION_GAP_S:
-            agent = agent.model_copy(update={"start_delay_s": round(gone + JUNCTION_GAP_S, 2)})
-        out.append(agent)
+        crossing = math.hypot(end.x - start.x, end.y - start.y) / agent.speed_mps
+        windows = []
+        for vehicle, way in passing:
+            at = _first_crossing(way, (start.x, start.y), (end.x, end.y))
+            if at is not None:
+                reach = vehicle.length / 2 + agent.width
+                windows.append((vehicle.start_delay_s + (at - reach) / vehicle.speed_mps,
+                                vehicle.start_delay_s + (at + reach) / vehicle.speed_mps))
+        delay = agent.start_delay_s
+        for passes, gone in sorted(windows):
+            if delay < gone + JUNCTION_GAP_S and delay + crossing > passes - JUNCTION_GAP_S:
+                delay = gone + JUNCTION_GAP_S
+        out.append(agent.model_copy(update={"start_delay_s": round(delay, 2)}) if delay != agent.start_delay_s
+                   else agent)
     return out
+
+
+WAY_ON_M = 150.0  # how far a vehicle's way is followed past its last waypoint (or its road's end)
+
+
+def _way(agent: BoundAgent, odr: OpenDrive) -> list[tuple[float, float]]:
+    """Where a vehicle drives, as a polyline: through its route's waypoints, else along its lane to the end of
+    its road; then straight on for WAY_ON_M."""
+    if len(agent.route) >= 2:
+        poses = [odr.roads[p.road].lane_point(p.s, p.lane) for p in (agent.start, *agent.route[1:])]
+    else:
+        road = odr.roads[agent.start.road]
+        ahead = road.length - agent.start.s if agent.start.lane < 0 else agent.start.s
+        steps = max(1, int(ahead // 5.0))
+        direction = 1 if agent.start.lane < 0 else -1
+        poses = [road.lane_point(min(max(agent.start.s + direction * ahead * k / steps, 0.0), road.length),
+                                 agent.start.lane) for k in range(steps + 1)]
+    last = poses[-1]
+    return [(p.x, p.y) for p in poses] + [(last.x + WAY_ON_M * math.cos(last.hdg),
+                                           last.y + WAY_ON_M * math.sin(last.hdg))]
+
+
+def _first_crossing(way: list[tuple[float, float]], a: tuple[float, float], b: tuple[float, float]) -> float | None:
+    """How far along the polyline it first meets the segment a-b, None when it never does."""
+    travelled = 0.0
+    for (px, py), (qx, qy) in zip(way, way[1:]):
+        rx, ry, sx, sy = qx - px, qy - py, b[0] - a[0], b[1] - a[1]
+        denominator = rx * sy - ry * sx
+        if abs(denominator) > 1e-9:
+            u = ((a[0] - px) * sy - (a[1] - py) * sx) / denominator
+            v = ((a[0] - px) * ry - (a[1] - py) * rx) / denominator
+            if 0.0 <= u <= 1.0 and 0.0 <= v <= 1.0:
+                return travelled + u * math.hypot(rx, ry)
+        travelled += math.hypot(rx, ry)
+    return None
 
 
 def distance_between(odr: OpenDrive, a: LanePos, b: LanePos) -> float:

@@ -124,6 +124,10 @@ def _agent_requirements(agent: Agent, movement: str | None, queued: dict[str, fl
             out.append(Requirement(f"{turn} from {where} ({name})",
                                    lambda a, i, s=side, t=turn: (e := entering(a, i, s)) is not None
                                    and bool(e.turns_to(t))))
+    elif (where in LEFT_SIDE | RIGHT_SIDE | set(AHEAD) | set(BEHIND) and agent.road_type == "driving"
+          and agent.action in ("turn_left", "turn_right")):  # it turns where the ego's road meets a junction
+        turn = TURN_OF_ACTION[agent.action]
+        out.append(Requirement(f"{turn} ({name})", lambda a, i, t=turn: bool(a.turns_to(t))))
     elif where == "at_the_destination":
         out.append(Requirement(f"destination ({name})",
                                lambda a, i, m=movement: a.junction is None if m is None else bool(a.turns_to(m))))

@@ -101,18 +101,33 @@ def _lane_position(pos: LanePos) -> xosc.LanePosition:
     return xosc.LanePosition(pos.s, pos.offset, pos.lane, pos.road)
 
 
+DRIVES_ON_M = 40.0  # how far a vehicle drives on past the end of its move through a junction before it leaves
+
+
 def _map_edge_act(scene: BoundScene, minor: int) -> xosc.Act | None:
     """A vehicle that runs out of road leaves the scene (DeleteEntityAction), as it leaves SUMO's network:
-    at a map's edge esmini stops it dead, and whoever follows would pile into it. An act of its own, never
-    waited for, so the stages do not wait for a vehicle to reach the edge."""
+    at a map's edge esmini stops it dead, and whoever follows would pile into it. A vehicle other than the
+    ego that moved through a junction leaves too, DRIVES_ON_M past its route's end: beyond its last waypoint
+    a player picks its way at random (esmini), and vehicles done with their moves would meet far from the
+    scene while it lasts. An act of its own, never waited for, so the stages do not wait for a vehicle to
+    leave."""
     vehicles = [a for a in scene.agents if a.type != "pedestrian"]
     if not vehicles:
         return None
     act = xosc.Act("map_edge", _always("map_edge_start", 0.0, minor))
     for agent in vehicles:
-        leaves = (f"{agent.name}_leaves", [("leave", xosc.DeleteEntityAction(agent.name))],
-                  xosc.EntityTrigger(f"{agent.name}_out_of_road", 0, xosc.ConditionEdge.none,
-                                     xosc.EndOfRoadCondition(0), agent.name))
+        trigger = xosc.Trigger()
+        trigger.add_conditiongroup(xosc.ConditionGroup().add_condition(
+            xosc.EntityTrigger(f"{agent.name}_out_of_road", 0, xosc.ConditionEdge.none, xosc.EndOfRoadCondition(0),
+                               agent.name)))
+        if len(agent.route) >= 2 and not agent.is_ego:
+            drives_on = round(max(3.0, DRIVES_ON_M / max(agent.speed_mps, 1.0)), 3)
+            trigger.add_conditiongroup(xosc.ConditionGroup().add_condition(
+                xosc.EntityTrigger(f"{agent.name}_moved_through", drives_on, xosc.ConditionEdge.none,
+                                   xosc.DistanceCondition(5.0, xosc.Rule.lessThan, _lane_position(agent.route[-1]),
+                                                          alongroute=False, freespace=False,
+                                                          distance_type=_EUCLIDEAN[minor >= 1]), agent.name)))
+        leaves = (f"{agent.name}_leaves", [("leave", xosc.DeleteEntityAction(agent.name))], trigger)
         act.add_maneuver_group(_group(agent.name, f"{agent.name}_edge", f"{agent.name}_edge_group", [leaves]))
     return act
 
@@ -188,14 +203,14 @@ def _environment(condition: str, time: str, minor: int) -> xosc.Environment:
 
 
 LATER_ACTION_S = 8.0  # the ego's lane change (3 s) or stop, and time to see it done
-SIGNAL_WAIT_S = 50.0  # a red light can hold a junction movement for most of a signal cycle
 
 
 def stage_durations(scene: BoundScene) -> list[float]:
     """How long each stage takes: its slowest agent's action, waiting for its trigger included, bounded;
-    the next stage starts after it and the stop trigger after them all."""
+    the next stage starts after it and the stop trigger after them all. No time is allowed for red lights:
+    the file gives the lights no program, and no player holds a movement at a light nobody runs (a longer
+    scene only lets vehicles that finished their moves meet far beyond the junction)."""
     ego = next(a for a in scene.agents if a.is_ego)
-    signalised = "traffic_light" in scene.approach_signals
     durations = []
     for k, _ in enumerate(scene.scenario.stages):
         longest = 4.0
@@ -207,7 +222,7 @@ def stage_durations(scene: BoundScene) -> list[float]:
                 wait += max(0.0, agent.distance_to_ego_m - agent.trigger.within_m) / max(ego.speed_mps, 1.0)
             speed = max(agent.speed_mps, 1.0)
             if agent.movement:
-                action = 45.0 / speed + (SIGNAL_WAIT_S if signalised else 0.0)
+                action = 45.0 / speed
             elif agent.cross_to is not None:
                 action = 40.0 / speed  # wide roads: a crossing may be 30 m and more
             else:
@@ -216,8 +231,7 @@ def stage_durations(scene: BoundScene) -> list[float]:
         for step in ego.later:
             if step.stage == k:
                 wait = step.trigger.after_s if step.trigger and step.trigger.after_s else 0.0
-                turn = 45.0 / max(ego.speed_mps, 1.0) + (SIGNAL_WAIT_S if signalised else 0.0) \
-                    if step.action in V.TURN_ACTIONS else 0.0
+                turn = 45.0 / max(ego.speed_mps, 1.0) if step.action in V.TURN_ACTIONS else 0.0
                 longest = max(longest, wait + LATER_ACTION_S + turn)
         durations.append(round(min(longest, 120.0), 3))
     return durations
@@ -232,7 +246,8 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
         later_turn = any(step.action in V.TURN_ACTIONS for step in ego.later)
         if k == 1 and ego.route and not later_turn:  # the ego's movement ends the first stage: at the far road
             start = xosc.EntityTrigger(f"{name}_start", 0, xosc.ConditionEdge.none,
-                                       xosc.DistanceCondition(10.0, xosc.Rule.lessThan, _lane_position(ego.route[-1]),
+                                       xosc.DistanceCondition(_on_the_far_road_m(ego), xosc.Rule.lessThan,
+                                                              _lane_position(ego.route[-1]),
                                                               alongroute=False, freespace=False,
                                                               distance_type=_EUCLIDEAN[minor >= 1]), ego.name)
         else:
@@ -251,6 +266,14 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
         if step.stage == k:
             act.add_maneuver_group(_later_ego_group(ego, step, minor))
     return act
+
+
+def _on_the_far_road_m(ego: BoundAgent) -> float:
+    """How near the end of its route the ego is on the road it turned onto, out of the junction: a later
+    stage's agents appear relative to the ego in its road's terms, so the stage must not start while the ego
+    is still on a connecting road of the junction (10 m at most, 2 m at least)."""
+    into = ego.route_end_into_m if ego.route_end_into_m is not None else 10.5
+    return round(max(2.0, min(10.0, into - 0.5)), 3)
 
 
 BRAKE_RATE = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}  # m/s² of a stop

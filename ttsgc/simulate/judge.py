@@ -249,7 +249,7 @@ def judge(plan: Plan, trace: Trace, odr: OpenDrive) -> Verdict:
     if intents:
         results = [_check_agent(plan, trace, odr, name, ego, bodies) for name in plan.entities]
         if ego is not None:
-            results += _check_later_ego_actions(plan, trace, ego)
+            results += _check_later_ego_actions(plan, trace, ego, odr)
     else:  # a file not written by ttsgc: each entity is judged only on entering the road and staying on it
         results = [AgentResult(name=name, type=e.category, action=NONE_DECLARED, achieved=ok, reason=why)
                    for name, e in plan.entities.items() for ok, why in [entity_result(trace, name)]]
@@ -315,7 +315,7 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
     movement = entity.intent.get(I.MOVEMENT, "")
     expected = I.MOVEMENT_OF_ACTION.get(action)
     if movement and expected:  # its route is its action: read from where it appeared
-        return result(*_movement(samples, expected, entity.intent.get(I.TARGET_ROAD, "")))
+        return result(*_movement(samples, expected, entity.intent.get(I.TARGET_ROAD, ""), odr))
     if action in ("turn_left", "turn_right"):
         return result(False, "was given no junction to turn at (its road does not lead to one)")
     if action == "go_straight":
@@ -346,7 +346,7 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
 LATER_CHECKS = ("go_straight", "stop", "change_lane_to_left", "change_lane_to_right", "turn_left", "turn_right")
 
 
-def _check_later_ego_actions(plan: Plan, trace: Trace, ego: str) -> list[AgentResult]:
+def _check_later_ego_actions(plan: Plan, trace: Trace, ego: str, odr: OpenDrive | None = None) -> list[AgentResult]:
     """One row per later stage the ego acts in ('ego (stage 2)', stages counted from 1), judged from the start
     of that stage's ego event."""
     entity = plan.entities[ego]
@@ -369,7 +369,7 @@ def _check_later_ego_actions(plan: Plan, trace: Trace, ego: str) -> list[AgentRe
             if not target:
                 out.append(result(False, "was given no junction to turn at (its road does not lead to one)"))
             else:
-                out.append(result(*_movement(after, I.MOVEMENT_OF_ACTION[action], target)))
+                out.append(result(*_movement(after, I.MOVEMENT_OF_ACTION[action], target, odr)))
         elif action == "go_straight":
             travelled = sum(math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(after, after[1:]))
             out.append(result(travelled >= 5.0, f"drove {travelled:.0f} m from t={start:.1f} s"
@@ -382,10 +382,16 @@ def _check_later_ego_actions(plan: Plan, trace: Trace, ego: str) -> list[AgentRe
     return out
 
 
-def _movement(after: list[Sample], movement: str, target: str) -> tuple[bool, str]:
+SHORT_ROAD_M = 10.0  # a road this short may lie between two samples of a fast body
+
+
+def _movement(after: list[Sample], movement: str, target: str, odr: OpenDrive | None = None) -> tuple[bool, str]:
     roads = [s.road for s in after if s.road]
     start_road = roads[0] if roads else ""
     reached = next((i for i, s in enumerate(after) if s.road == target and s.road != start_road), None)
+    if reached is None and odr is not None and target in odr.roads and odr.roads[target].length < SHORT_ROAD_M \
+            and target != start_road:
+        reached = _passed_over(odr, target, after)
     if reached is None:
         beyond = [r for r in dict.fromkeys(roads) if r != start_road]
         where = f"ended on road {beyond[-1]}" if beyond else f"stayed on road {start_road or '?'}"
@@ -396,12 +402,28 @@ def _movement(after: list[Sample], movement: str, target: str) -> tuple[bool, st
     return went == movement, f"went {went} onto road {target} (heading {change:+.0f}°)"
 
 
+def _passed_over(odr: OpenDrive, road: str, after: list[Sample]) -> int | None:
+    """The first sample past the middle of a short road the body crossed between two samples (a player that
+    samples every 0.1 s reports no sample on a 1.5 m road passed at 19 m/s), None when it never did."""
+    middle = odr.roads[road].length / 2
+    previous = None
+    for i, sample in enumerate(after):
+        s, t = _lateral(odr, road, sample.x, sample.y)
+        if previous is not None and abs(t) < 6.0 and abs(previous[1]) < 6.0 and \
+                (previous[0] - middle) * (s - middle) <= 0 and previous[0] != s:
+            return i
+        previous = (s, t)
+    return None
+
+
 def _lane_change(after: list[Sample], direction: int) -> tuple[bool, str]:
     """Net lanes moved to the left: on either side of a road the lane nearer the centre line is to the left
     of the driving direction, so a move to the left lowers |lane id|."""
     net = most = 0  # most: the furthest it got the named way (a lane section further on may renumber lanes)
-    for a, b in zip(after, after[1:]):
-        if a.road and a.road == b.road and a.lane and b.lane and (a.lane > 0) == (b.lane > 0):
+    known = [s for s in after if s.road and s.lane]  # a sample with no lane (a player's link between two pieces
+    # of one road) does not break the count: the lanes before and after it are compared
+    for a, b in zip(known, known[1:]):
+        if a.road == b.road and (a.lane > 0) == (b.lane > 0):
             net += abs(a.lane) - abs(b.lane)
             most = max(most, net * direction)
     side = "left" if direction > 0 else "right"

@@ -45,6 +45,7 @@ class Action:
     absolute: bool = False  # lane_change: value is a target lane id, not a number of lanes to the left
     entity: str = ""  # add: the entity an AddEntityAction brings in (a global action names it itself)
     orientation: tuple[str, float] | None = None  # a lane position's Orientation: (type, h), None when absent
+    offset: float = 0.0  # a lane position's offset from its lane's centre, along the road's t (to the left)
 
 
 @dataclass
@@ -84,6 +85,9 @@ class Plan:
     stop: list[list[Condition]]
     unsupported: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)  # what the file does that the standard does not, read leniently
+    # the file runs the traffic signals (a TrafficSignalController or a TrafficSignalAction); when it does not,
+    # nothing gives the lights a program, and a player drives through them as esmini does
+    controls_signals: bool = False
 
 
 def _lane(position) -> tuple[str, int, float] | None:
@@ -114,7 +118,8 @@ def _placing(kind: str, position, entity: str = "") -> Action | None:
         orientation = None
         if turn is not None and turn.get("h") is not None:
             orientation = (turn.get("type", "relative"), _float(turn, "h", 0.0))
-        return Action(kind, lane=lane, entity=entity, orientation=orientation)
+        return Action(kind, lane=lane, entity=entity, orientation=orientation,
+                      offset=_float(position.find("LanePosition"), "offset", 0.0))
     relative = _relative(position)
     if relative is not None:
         return Action(kind, relative=relative, entity=entity)
@@ -322,4 +327,14 @@ def plan_of(root, path: Path, xodr: Path | None = None, notes=()) -> Plan:
         acts.append(Act(act.get("name"), reader.trigger(act.find("StartTrigger")), events))
     stop_trigger = root.find("Storyboard/StopTrigger")
     stop = reader.trigger(stop_trigger) if stop_trigger is not None else []  # none: only the time limit ends it
-    return Plan(path, xodr, entities, init, acts, stop, reader.unsupported, list(notes))
+    controls_signals = controls_traffic_signals(root)
+    if controls_signals:
+        reader.missing("traffic signal control (SUMO runs netconvert's own signal programs instead)")
+    return Plan(path, xodr, entities, init, acts, stop, reader.unsupported, list(notes), controls_signals)
+
+
+def controls_traffic_signals(root) -> bool:
+    """Whether the file gives the map's traffic signals a program or a state: a TrafficSignalController of the
+    RoadNetwork, or a TrafficSignalAction anywhere in the Storyboard."""
+    return root.find("RoadNetwork/TrafficSignals/TrafficSignalController") is not None or \
+        root.find("Storyboard//TrafficSignalAction") is not None

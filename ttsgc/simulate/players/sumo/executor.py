@@ -5,13 +5,15 @@ waits for its AddEntityAction, condition edges and delays count, routes are rout
 written (whoever is alongside). OpenDRIVE lane positions become SUMO lanes through the lanes' original ids
 (road_lane) and the net offset; vehicles drive SUMO's car-following model with the speeds and routes the file
 commands. Bodies SUMO has no lane for are moved by the player itself: people (along their sidewalk, or along
-their trajectory), anything on a shoulder (SUMO's OpenDRIVE import discards shoulders) and anything given a
-trajectory. SUMO's drivers do not see those bodies, so the player makes them: a vehicle slows for a moved body
-in its path. The run becomes a Trace of every body's position, heading and speed.
+their trajectory), anything on a lane SUMO has no vehicle lane for (a shoulder, which SUMO's OpenDRIVE import
+discards, or a sidewalk) and anything given a trajectory. SUMO's drivers do not see those bodies, so the player
+makes them: a vehicle slows for a moved body in its path. Traffic lights run only when the file controls them.
+The run becomes a Trace of every body's position, heading and speed.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from functools import cache
@@ -30,7 +32,12 @@ TIME_LIMIT_S = 180.0
 LOOK_AHEAD_M = 30.0  # how far ahead a driver watches for a body the player moves
 PATH_HALF_WIDTH_M = 1.8  # a moved body this close to a vehicle's line of travel is in its path
 COMFORT_BRAKE = 4.0  # m/s2
+SPEED_FACTOR = 10.0  # of the lanes' speed limits: high enough that only the speeds the file sets count
 ANTICIPATION_S = 2.0  # how far ahead in time a driver reads a moved body's course
+STOP_SHORT_M = 2.5  # how far before a moved body in its way a vehicle stops
+# the OpenDRIVE lane types SUMO's import (its opendriveNetconvert typemap) makes lanes for vehicles of;
+# shoulders and the like are discarded and sidewalks are the pedestrians': a vehicle there is moved by the player
+SUMO_VEHICLE_LANES = {"driving", "stop", "parking", "entry", "exit", "onRamp", "offRamp", "bidirectional"}
 VCLASS = {"car": "passenger", "van": "delivery", "truck": "truck", "bus": "bus", "motorbike": "motorcycle",
           "bicycle": "bicycle", "semitrailer": "trailer"}
 
@@ -65,6 +72,7 @@ class Mover:
     path: list[tuple[float, float]] = field(default_factory=list)  # trajectory vertices still ahead
     path_event: str = ""  # the event whose trajectory it follows (ends when the path does)
     goal_s: float | None = None  # routed along its lane to this s of its road (AcquirePositionAction)
+    offset: float = 0.0  # from its lane's centre along the road's t, as its position gave it
 
 
 @dataclass
@@ -215,11 +223,13 @@ class Executor:
         if kind == "relative":
             return math.cos(h) < 0
         road, lane, s = position
-        lane_heading = self.odr.roads[road].lane_point(s, lane).hdg + (math.pi if lane > 0 else 0.0)
+        lane_heading = self.odr.roads[road].lane_point(s, lane).hdg  # already the lane's driving direction
         return math.cos(h - lane_heading) < 0
 
     def spawn(self, entity: Entity, position: tuple[str, int, float], speed: float, t: float,
-              orientation: tuple[str, float] | None = None) -> None:
+              orientation: tuple[str, float] | None = None, offset: float = 0.0) -> None:
+        """Bring a body in at a lane position; the offset (along the road's t) counts for the bodies the player
+        moves (SUMO's vehicles keep to their lane's centre)."""
         import libsumo as ts
 
         road, lane, s = position
@@ -231,9 +241,10 @@ class Executor:
             self.run.spawns[entity.name] = Spawn(False, f"its Orientation turns it against the driving direction "
                                                         f"of road {road} lane {lane}", (road, lane))
             return
-        if entity.kind == "pedestrian" or entity.intent.get("road_type") == "shoulder":
-            pose = self.odr.roads[road].lane_point(s, lane)
-            self.movers[entity.name] = Mover(pose.x, pose.y, pose.hdg, speed, road, lane, s)
+        lane_type = self.odr.roads[road].section_at(s).lanes[lane].type
+        if entity.kind == "pedestrian" or lane_type not in SUMO_VEHICLE_LANES:
+            pose = _lane_pose(self.odr.roads[road], s, lane, offset)
+            self.movers[entity.name] = Mover(pose.x, pose.y, pose.hdg, speed, road, lane, s, offset=offset)
             self.present.add(entity.name)
             self.active.add(entity.name)
             self.run.spawns[entity.name] = Spawn(True, "", (road, lane), (road, lane), t)
@@ -252,7 +263,11 @@ class Executor:
             ts.vehicletype.setLength(type_id, entity.length)
             ts.vehicletype.setWidth(type_id, entity.width)
             ts.vehicletype.setMinGap(type_id, 1.0)
-            ts.vehicletype.setMaxSpeed(type_id, max(speed, 1.0) * 1.5 + 5)
+            ts.vehicletype.setMaxSpeed(type_id, max(self.fastest_commanded(entity.name, speed), 1.0) * 1.5 + 5)
+            # the file's speeds, not the lanes' limits (nor a slower turn through a junction): no player reads a
+            # SpeedAction as bounded by the road, so the lanes' limits never bind
+            ts.vehicletype.setSpeedFactor(type_id, SPEED_FACTOR)
+            ts.vehicletype.setSpeedDeviation(type_id, 0.0)
             ts.route.add(f"route_{entity.name}", self._ahead(sumo_lane.id))
             # SUMO places a vehicle by its front bumper
             front = min(pos + entity.length / 2, _length(sumo_lane.shape) - 0.05)
@@ -267,6 +282,13 @@ class Executor:
         ok = got == (road, lane)
         reason = "" if ok else f"placed on road {got[0]} lane {got[1]} instead of road {road} lane {lane}"
         self.run.spawns[entity.name] = Spawn(ok, reason, (road, lane), got, t)
+
+    def fastest_commanded(self, name: str, speed: float) -> float:
+        """The highest speed the file ever sets for an entity: its vehicle type must allow it (one that enters
+        standing still would otherwise be held to a walking pace of SUMO's, whatever the file says)."""
+        actions = list(self.plan.init.get(name, []))
+        actions += [a for act in self.plan.acts for e in act.events if e.actor == name for a in e.actions]
+        return max([speed] + [a.value for a in actions if a.kind == "speed"])
 
     # -- actions ------------------------------------------------------------------------------------------
     def execute(self, actor: str, action: Action, t: float, event: Event) -> None:
@@ -285,7 +307,7 @@ class Executor:
                     self.run.problems.append(f"{event.name}: '{added.name}' is already in the scene")
                 elif action.lane is not None:
                     speed = next((a.value for a in event.actions if a.kind == "speed"), 0.0)
-                    self.spawn(added, action.lane, speed, t, action.orientation)
+                    self.spawn(added, action.lane, speed, t, action.orientation, action.offset)
                 else:
                     self._appear(added, action, event, t)
                 self.joined.add((event.name, added.name) if added is not None else (event.name, actor))
@@ -430,6 +452,11 @@ class Executor:
             current = ts.vehicle.getRoute(entity.name)[ts.vehicle.getRouteIndex(entity.name)]
         edges, last_lane = [current], None
         for point in action.waypoints:
+            road = self.odr.roads.get(point[0])
+            if road is not None and road.junction != "-1":
+                # a connecting road inside a junction: SUMO's own connection between the roads before and
+                # after it is that road (its internal lanes carry no OpenDRIVE id to map a point to)
+                continue
             mapped = self.to_sumo(*point)
             if mapped is not None:
                 last_lane = mapped[0].id
@@ -440,8 +467,11 @@ class Executor:
                 self.run.problems.append(f"{event.name}: no route from {edges[-1]} to {mapped[0].edge}")
                 return
             edges += list(found.edges[1:])
-        if last_lane is not None:  # after its last waypoint it carries on, as every player's vehicles do
-            edges += [e for e in self._ahead(last_lane)[1:] if e not in edges]
+        if last_lane is not None:  # after its last waypoint it carries on, as every player's vehicles do,
+            for edge in self._ahead(last_lane)[1:]:  # up to where its way would come back on itself
+                if edge in edges:
+                    break
+                edges.append(edge)
         ts.vehicle.setRoute(entity.name, edges)
 
     def _can_appear(self, event: Event) -> bool:
@@ -462,21 +492,30 @@ class Executor:
             self.run.problems.append(f"{event.name}: '{ref}' is not in the simulation to appear beside")
             return
         edge = ts.vehicle.getRoadID(ref)
-        ref_lane = self.odr_of(f"{edge}_{ts.vehicle.getLaneIndex(ref)}")[1]
-        if ref_lane is not None and ref_lane > 0:  # ds runs along the road's s and dLane adds to the lane id;
-            ds, dlane = -ds, -dlane  # a SUMO lane runs the way it is driven, its index grows to the left
-        index = ts.vehicle.getLaneIndex(ref) + dlane
+        # dLane and ds count in the road's terms (lane ids, s), SUMO's lanes in the driving direction: on an
+        # OpenDRIVE lane with a positive id, which drives against s, they turn round
+        along = -1 if (self.odr_of(ts.vehicle.getLaneID(ref))[1] or -1) > 0 else 1
+        index = ts.vehicle.getLaneIndex(ref) + dlane * along
         lane_id = f"{edge}_{index}"
         if lane_id not in self.by_id:
             self.run.spawns[entity.name] = Spawn(False, f"the ego's lane has no neighbour {dlane:+d} at t={t:.1f}")
             return
-        centre = ts.vehicle.getLanePosition(ref) - self.plan.entities[ref].length / 2 + ds
+        centre = ts.vehicle.getLanePosition(ref) - self.plan.entities[ref].length / 2 + ds * along
         sumo_lane = self.by_id[lane_id]
         length = _length(sumo_lane.shape)
+        route, k = ts.vehicle.getRoute(ref), ts.vehicle.getRouteIndex(ref)
+        while centre >= length and 0 <= k < len(route) - 1:  # beyond the ego's edge: on along its route
+            k += 1
+            ahead = [lane for lane in self.by_id.values() if lane.edge == route[k] and not lane.allow_pedestrians]
+            if not ahead:
+                break
+            centre -= length
+            sumo_lane = min(ahead, key=lambda lane: abs(lane.index - index))
+            length = _length(sumo_lane.shape)
         if not 0 < centre < length:
             self.run.spawns[entity.name] = Spawn(False, f"no room {ds:+.0f} m from the ego on its road at t={t:.1f}")
             return
-        road, lane = self.odr_of(lane_id)
+        road, lane = self.odr_of(sumo_lane.id)
         x, y = _point_at(sumo_lane.shape, centre)
         s = self._s_on_road(road, lane, x, y)
         speed = next((a.value for a in event.actions if a.kind == "speed"), ts.vehicle.getSpeed(ref))
@@ -560,6 +599,8 @@ class Executor:
                   "--no-warnings", "true",
                   "--insertion-checks", "collision"])  # scenes start agents close on purpose
         try:
+            if not self.plan.controls_signals:
+                self._lights_without_program()
             for name, actions in self.plan.init.items():
                 entity = self.plan.entities.get(name)
                 teleport = next((a for a in actions if a.kind == "teleport"), None)
@@ -569,7 +610,7 @@ class Executor:
                 if teleport.relative is not None:
                     self.run.problems.append(f"'{name}': an Init position beside another entity is not supported")
                     continue
-                self.spawn(entity, teleport.lane, speed, 0.0, teleport.orientation)
+                self.spawn(entity, teleport.lane, speed, 0.0, teleport.orientation, teleport.offset)
             ts.simulationStep()  # SUMO inserts what was added on the next step
             t = round(ts.simulation.getTime(), 3)
             self._sample(t)
@@ -593,6 +634,16 @@ class Executor:
         finally:
             ts.close()
         return self.run
+
+    @staticmethod
+    def _lights_without_program() -> None:
+        """netconvert gives every signalised junction a program of its own, which the file never asked for: a
+        file that does not control the signals has lights no player runs (esmini drives through them), so
+        every link of every light is green with priority, and nobody stops or yields there."""
+        import libsumo as ts
+
+        for light in ts.trafficlight.getIDList():
+            ts.trafficlight.setRedYellowGreenState(light, "G" * len(ts.trafficlight.getRedYellowGreenState(light)))
 
     def _storyboard(self, t: float) -> None:
         for act in self.plan.acts:
@@ -663,7 +714,7 @@ class Executor:
             if mover.goal_s is not None:
                 if abs(mover.goal_s - mover.s) <= step:
                     mover.s, mover.speed, mover.goal_s = mover.goal_s, 0.0, None
-                    pose = road.lane_point(mover.s, mover.lane)
+                    pose = _lane_pose(road, mover.s, mover.lane, mover.offset)
                     mover.x, mover.y = pose.x, pose.y
                     continue
                 s = mover.s + (step if mover.goal_s > mover.s else -step)
@@ -674,12 +725,15 @@ class Executor:
                     mover.speed = 0.0  # the end of its way: it stands
                     self.run.out_of_road.add(name)
                 continue
-            pose = road.lane_point(s, mover.lane)
+            pose = _lane_pose(road, s, mover.lane, mover.offset)
             mover.x, mover.y, mover.heading, mover.s = pose.x, pose.y, pose.hdg, s
 
     def _yield_to_moved_bodies(self) -> None:
-        """SUMO's drivers do not see the bodies this player moves: a vehicle with one in its path, ahead within
-        LOOK_AHEAD_M, slows to stop short of it, and takes up its commanded speed again once the way is clear."""
+        """SUMO's drivers do not see the bodies this player moves, so the player makes them: a vehicle whose
+        way a moved body will be on while the vehicle gets there (read from the body's course) slows to stop
+        short of it, and takes up its commanded speed again once the way is clear. A vehicle that could not
+        stop before it anyway keeps its speed, as a committed driver would: braking then would only bring it
+        there later, when the body is in its lane (a walker stepping out close in front of it)."""
         import libsumo as ts
 
         if not self.movers:
@@ -691,22 +745,54 @@ class Executor:
             body = self.plan.entities[name]
             gap = None
             for other, mover in self.movers.items():
-                # where it is, and where it will be soon: a walker stepping towards the lane is seen in time
-                for lead in (0.0, ANTICIPATION_S):
-                    dx = mover.x + math.cos(mover.heading) * mover.speed * lead - last.x
-                    dy = mover.y + math.sin(mover.heading) * mover.speed * lead - last.y
-                    ahead = dx * math.cos(last.heading) + dy * math.sin(last.heading) - body.length / 2
-                    side = -dx * math.sin(last.heading) + dy * math.cos(last.heading)
-                    if -1.0 < ahead < LOOK_AHEAD_M and abs(side) < PATH_HALF_WIDTH_M + body.width / 2:
-                        gap = max(ahead, 0.0) if gap is None else min(gap, max(ahead, 0.0))
+                where = self._conflict(last, body, mover, self.plan.entities[other], ts.vehicle.getDecel(name),
+                                       name in self.yielding)
+                if where is not None:
+                    gap = where if gap is None else min(gap, where)
             commanded = self.commanded[name]
             if gap is not None:
-                safe = math.sqrt(max(0.0, 2 * COMFORT_BRAKE * (gap - 2.5)))
+                safe = math.sqrt(max(0.0, 2 * COMFORT_BRAKE * (gap - STOP_SHORT_M)))
                 ts.vehicle.setSpeed(name, min(commanded, safe))
                 self.yielding.add(name)
             elif name in self.yielding:
                 ts.vehicle.setSpeed(name, commanded)
                 self.yielding.discard(name)
+
+    @staticmethod
+    def _conflict(vehicle: Sample, body: Entity, mover: Mover, other: Entity, decel: float,
+                  braking: bool = False) -> float | None:
+        """The free gap to a moved body the vehicle must stop for, None when there is none: the body is ahead
+        within LOOK_AHEAD_M and in the vehicle's way (PATH_HALF_WIDTH_M beside its line) at some time while
+        the vehicle reaches and passes it, and the vehicle can still stop short of it (or already crawls, or
+        already brakes for it: it does not give up half way)."""
+        c, n = math.cos(vehicle.heading), math.sin(vehicle.heading)
+        dx, dy = mover.x - vehicle.x, mover.y - vehicle.y
+        ahead, side = dx * c + dy * n, -dx * n + dy * c
+        vx, vy = math.cos(mover.heading) * mover.speed, math.sin(mover.heading) * mover.speed
+        lateral = -vx * n + vy * c
+        gap = ahead - body.length / 2 - other.length / 2
+        if gap < -1.0 or gap > LOOK_AHEAD_M:
+            return None
+        half = PATH_HALF_WIDTH_M + body.width / 2
+        if abs(lateral) < 1e-6:
+            if abs(side) >= half:
+                return None
+            enters, leaves = 0.0, math.inf
+        else:
+            first, second = sorted(((-half - side) / lateral, (half - side) / lateral))
+            if second < 0:
+                return None
+            enters, leaves = max(first, 0.0), second
+        speed = vehicle.speed
+        if speed < 0.5:  # standing or crawling: it waits while the body is, or is about to be, in its way
+            return max(gap, 0.0) if enters < ANTICIPATION_S else None
+        reaches = max(gap, 0.0) / speed
+        passes = (gap + body.length + other.length + 2.0) / speed
+        if enters > passes + ANTICIPATION_S / 2 or leaves < reaches - ANTICIPATION_S / 2:
+            return None  # it is by before the body comes, or the body is gone before it gets there
+        if not braking and (gap - STOP_SHORT_M <= 0 or speed * speed / (2 * (gap - STOP_SHORT_M)) > decel):
+            return None  # too late to stop: braking now would only bring it there with the body in its way
+        return max(gap, 0.0)
 
     def _next_road(self, mover: Mover, overshoot: float) -> bool:
         """Carry a body moved along its lane onto the next road, in the same kind of lane at the same side."""
@@ -778,6 +864,16 @@ class Executor:
                                 (sb.x, sb.y, sb.heading, eb.length, eb.width)):
                     self.run.collisions.append(Collision(a, b, t, round((sa.x + sb.x) / 2, 2),
                                                          round((sa.y + sb.y) / 2, 2)))
+
+
+def _lane_pose(road, s: float, lane: int, offset: float = 0.0):
+    """A lane point moved by a LanePosition's offset, which counts along the road's t (to the left of its
+    reference line), whichever side the lane is on."""
+    pose = road.lane_point(s, lane)
+    if not offset:
+        return pose
+    normal = road.pose(s).hdg + math.pi / 2
+    return dataclasses.replace(pose, x=pose.x + offset * math.cos(normal), y=pose.y + offset * math.sin(normal))
 
 
 def _length(shape) -> float:
