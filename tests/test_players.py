@@ -552,3 +552,24 @@ def test_prove_first_takes_candidates_lazily_and_stops_at_the_first_proven():
                                                                          collisions=[], problems=["no"]),
                                  log=lambda message: None)
     assert chosen == 1 and report.ok and made == [0, 1]  # the third road was never placed
+
+
+@pytest.mark.parametrize("tsg, mover", [
+    # the ego turns right from the right lane; the car behind it in that lane turns left
+    ("    ego car turn_right\n    car c1 at front go_straight\n    car c2 at back turn_left\n", "c2"),
+    # the motorcycle ahead in the right lane turns left across the ego going straight
+    ("    ego car go_straight\n    motorcycle m1 at front_right turn_left\n", "m1"),
+])
+def test_a_vehicle_whose_lane_has_not_its_turn_moves_into_one_that_has_and_turns(esmini, tmp_path, tsg, mover):
+    """A player follows its lane's own links: from a right lane that only goes right and straight, a car with
+    a left route went straight in esmini and stood in SUMO. It moves into the turn's lane first, as a driver."""
+    scene = parse(f'scenario "turn lane"\nroad {{\n    at junction\n    lanes >= 2\n}}\nstage main {{\n{tsg}}}\n')
+    out = tmp_path / "s.xosc"
+    write(compile_scenario(scene, out, maps=[EXAMPLES.parent / "maps" / "fourway_2lane_lights.xodr"]), out)
+    tree = etree.parse(str(out))
+    changes = tree.xpath(f"//ManeuverGroup[Actors/EntityRef/@entityRef='{mover}']//LaneChangeAction")
+    assert len(changes) == 1 and changes[0].find(".//RelativeTargetLane").get("value") == "1"
+    report = validate(out, "all")
+    for player in ("sumo", "esmini"):
+        assert "went left onto road" in _agent(report, player, mover).reason, report.table()
+    assert report.ok, report.table()

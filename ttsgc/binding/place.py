@@ -509,23 +509,25 @@ class Placer:
         route: list[LanePos] = []
         if agent.is_ego:
             turn = self.ego_turn
+        into_turn_lane = None  # lanes to move left (negative: right) first, when its own lane has not its turn
         if turn is not None and start is not None and agent.road_type == "driving":
             movement, target_road = turn.direction, turn.to_road
             route = self._route(start, frame, turn)
         elif start is not None and frame is self.frame and agent.road_type == "driving":
             own = TURN_OF_ACTION.get(agent.action) if agent.action in ("turn_left", "turn_right") else None
-            turn = self._pick_turn(self.frame.approach, own) if own else None
+            turn, from_lane = self._turn_from(self.frame.approach, own, start.lane) if own else (None, start.lane)
             if own and turn is None:  # it could only drive on: another road may have its turn
                 raise PlacementError(f"approach {frame.approach.id} of {self.index.name} has no {own} turn for "
                                      f"'{agent.name}'")
-            if turn is not None:  # it turns at the ego's junction
+            if turn is not None:  # it turns at the ego's junction, from a lane that has its turn
                 movement, target_road = turn.direction, turn.to_road
-                route = self._route(start, frame, turn)
+                route = self._route(start, frame, turn, from_lane)
+                into_turn_lane = (abs(start.lane) - abs(from_lane)) or None  # lanes to the left: -2 to -1 is one
             elif self.frame.approach.junction is not None:  # traffic on the ego's road carries on through it
                 through = self._pick_turn(self.frame.approach, "straight") or self.ego_turn
                 if through is not None:
                     route = self._route(start, frame, through)
-        lane_change = {"change_lane_to_left": 1, "change_lane_to_right": -1}.get(agent.action)
+        lane_change = {"change_lane_to_left": 1, "change_lane_to_right": -1}.get(agent.action, into_turn_lane)
         if agent.action == "block_the_ego" and agent.relative_to_ego in LEFT_SIDE | RIGHT_SIDE:
             lane_change = -1 if agent.relative_to_ego in LEFT_SIDE else 1  # into the ego's lane
         cross_to = walk_to = None
@@ -550,12 +552,27 @@ class Placer:
             height=height, movement=movement, route=tuple(route), target_road=target_road, lane_change=lane_change,
             cross_to=cross_to, walk_to=walk_to, trigger=agent.trigger)
 
-    def _route(self, start: LanePos, frame: _Frame, turn: Turn) -> list[LanePos]:
-        """Start, the middle of the connecting road in the junction, and a point on the road it leads to."""
+    @staticmethod
+    def _turn_from(approach: Approach, movement: str, lane: int) -> tuple[Turn | None, int]:
+        """(turn, the lane it is taken from): the turn to `movement` from `lane`; when that lane has none (a
+        right lane for a left turn), the one from the nearest lane that has, which the agent moves into first,
+        as a driver does before the junction: a player follows its lane's own links and takes no other turn."""
+        turns = approach.turns_to(movement)
+        own = [t for t in turns if lane in t.from_lanes]
+        if own or not turns:
+            return (sorted(own, key=lambda t: t.via_road)[0] if own else None), lane
+        nearest = lambda t: min(t.from_lanes, key=lambda x: (abs(abs(x) - abs(lane)), abs(x)))  # noqa: E731
+        best = min(turns, key=lambda t: (abs(abs(nearest(t)) - abs(lane)), t.via_road))
+        return best, nearest(best)
+
+    def _route(self, start: LanePos, frame: _Frame, turn: Turn, from_lane: int | None = None) -> list[LanePos]:
+        """Start, the middle of the connecting road in the junction, and a point on the road it leads to;
+        from_lane: the lane it turns from, when it changes into it first."""
         via = self.odr.roads[turn.via_road]
         approach_lanes = list(frame.approach.lane_ids)
-        rank = approach_lanes.index(start.lane) if start.lane in approach_lanes else 0
-        k = next((i for i, lane in enumerate(turn.from_lanes) if lane == start.lane), 0)
+        lane_of_turn = start.lane if from_lane is None else from_lane
+        rank = approach_lanes.index(lane_of_turn) if lane_of_turn in approach_lanes else 0
+        k = next((i for i, lane in enumerate(turn.from_lanes) if lane == lane_of_turn), 0)
         points = [start, LanePos(road=via.id, lane=turn.via_lanes[k], s=round(via.length / 2, 3))]
         target = self.index.by_id.get(approach_id(turn.to_road, turn.to_direction))
         if target is not None:
