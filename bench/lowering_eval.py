@@ -2,6 +2,7 @@
 
     python bench/lowering_eval.py                 # offline rules on every suite
     python bench/lowering_eval.py --misses dev    # also list each prompt of the dev split that is not exact
+    python bench/lowering_eval.py --only dev      # one suite only (repeatable)
     python bench/lowering_eval.py --llm anthropic # the LLM lowering (ANTHROPIC_API_KEY), with tokens per scene
 
 Suites: tests/corpus/{dev,test}/<voice>/*.txt with gold *.tsg beside (rules are written against dev only; test
@@ -63,9 +64,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--llm", default="offline", choices=("offline", "anthropic"))
     parser.add_argument("--misses", action="append", default=[], metavar="SUITE",
                         help="list the prompts of this suite that are not exact (never use it on test)")
+    parser.add_argument("--only", action="append", default=[], metavar="SUITE",
+                        help="score only these suites (default: all)")
     args = parser.parse_args(argv)
     print(f"{'suite':28} {'n':>4}  lowering: {args.llm}")
     for name, folder in SUITES:
+        if args.only and name not in args.only:
+            continue
         prompts = sorted(p for p in folder.glob("**/*.txt") if p.with_suffix(".tsg").is_file())
         if not prompts:
             continue

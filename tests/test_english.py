@@ -764,3 +764,57 @@ def test_terse_one_letter_sides_and_abbreviations(prompt, expected):
 def test_car_makes_are_cars_and_the_kerb_is_the_right_side():
     assert ("car", "go_straight", "back") in agents("a BMW came up behind me flashing its headlights")
     assert ("car", "change_lane_to_left", "front_right") in agents("a Ford Focus pulls out from the curb ahead")
+
+
+# -- generalisation: constructions and words, each with sentences of its own --------------------------------
+
+def test_it_inside_a_place_phrase_names_the_agent_before_not_the_ego():
+    found = agents("A removal lorry heads towards us on a straight road with a moped behind it.")
+    assert ("motorcycle", "go_straight", "front_left") in found and ("truck", "go_straight", "front_left") in found
+
+
+@pytest.mark.parametrize("prompt", ["By the time we reach the crossroads the signal has turned amber, so we stop.",
+                                    "The light turns green and the ego goes straight through the junction."])
+def test_a_signal_changing_colour_is_nobodys_turn(prompt):
+    assert not any(action.startswith("turn") for _, action, _ in agents(prompt))
+
+
+def test_a_condition_said_in_full_ends_at_its_colour_and_starts_a_stage():
+    scene = lower("We sit at the lights; when they go green we turn right.").scenario
+    assert [[a.action for a in s.agents] for s in scene.stages] == [["stop"], ["turn_right"]]
+    assert "traffic_light" in scene.road.required_signals
+    scene = lower("Our car waits at a red light, and once it turns green we hang a left.").scenario
+    assert [[a.action for a in s.agents] for s in scene.stages] == [["stop"], ["turn_left"]]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("NPC1 is a delivery van stopped on the right ahead.", [("car", "stop", "front_right")]),
+    ("Actors:\n- hero: drives straight\n- NPC2: cyclist crossing in front\n- NPC3: stopped bus ahead",
+     [("cyclist", "cross_the_road", "front"), ("bus", "stop", "front")]),
+])
+def test_a_singular_npc_label_is_one_agent_said_what_it_is(prompt, expected):
+    assert agents(prompt) == sorted([("car", "go_straight", "ego")] + expected)
+
+
+@pytest.mark.parametrize("noun, agent_type", [
+    ("minivan", "car"), ("station wagon", "car"), ("people carrier", "car"), ("panel van", "car"),
+    ("box truck", "truck"), ("tipper truck", "truck"), ("articulated lorry", "truck"), ("18-wheeler", "truck"),
+    ("tram", "bus"), ("bendy bus", "bus"), ("e-scooter rider", "cyclist"), ("cargo bike", "cyclist"),
+    ("moped rider", "motorcycle"), ("wheelchair user", "pedestrian"), ("toddler", "pedestrian"),
+    ("dog walker", "pedestrian"), ("state trooper", "police"), ("fire tender", "firetruck"),
+])
+def test_a_wide_vocabulary_of_road_users(noun, agent_type):
+    assert agent_type in [t for t, _, p in agents(f"There is a {noun} ahead of the ego.") if p != "ego"]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The estate car ahead of us comes to a standstill.", ("car", "stop", "front")),
+    ("A hatchback in the left lane nudges into our lane.", ("car", "change_lane_to_right", "left")),
+    ("A van on the right drifts over into the ego's lane ahead of it.", ("car", "change_lane_to_left", "front_right")),
+    ("A pensioner steps off the kerb in front of us.", ("pedestrian", "cross_the_road", "front")),
+    ("A lorry sits idling ahead of the ego.", ("truck", "stop", "front")),
+    ("A pickup on the offside overtakes us.", ("car", "go_straight", "back_left")),
+    ("A cyclist rides along on our kerb side.", ("cyclist", "go_straight", "right")),
+])
+def test_verbs_and_places_as_drivers_say_them(prompt, expected):
+    assert expected in agents(prompt)

@@ -266,6 +266,8 @@ def _road(r: _Reader) -> RoadSpec:
             r.mark(u)
             u.category, u.meaning = "road", "yield"
             continue
+        if u.category == "sequence" and {"light", "lights", "signal", "green"} & {t.word for t in u.tokens}:
+            put("traffic_light", False)  # "when the light goes green": a signal there
         if u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
             put("traffic_light", False)  # "runs a red light"
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
@@ -662,7 +664,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if out or current:
                 close()
                 stage += 1
-            close(next_condition=u.meaning == "once")
+            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear"}  # "when the light goes green": said in full
+            close(next_condition=u.meaning == "once" and not whole)
             continue
         if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
             r.mark(u)
@@ -697,6 +700,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close(u.word)
             continue
         current.append(u)
+        if condition and u.category == "word" and u.word in SIGNAL_COLOURS and len(current) >= 2 and \
+                current[-2].category == "actions" and _signal_change(current, len(current) - 2):
+            close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
 
@@ -913,7 +919,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.meaning == "generic" or u.base == "vehicle":  # "a vehicle": its type is left open
         kind = UNSPECIFIED.agent_type(kind, len(r.entities))
     entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
-                    generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
+                    generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label)
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
     if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
@@ -1059,6 +1065,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                                                                  "stall", "stalled", "double", "abandon"}:
             e.features.add("parked")
         if action == "stop" and e.is_ego and {t.base for t in u.tokens} & {"brake", "brakes"} and not (
+                {t.word for t in u.tokens} & {"halt", "stop", "standstill"}) and not (
                 clause_units is not None and k is not None and any(
                     x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])):
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
@@ -1165,6 +1172,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
             u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
         verbs = []  # "the light turns red": the subject is a signal, no agent acts
+    verbs = [i for i in verbs if not _signal_change(units, i)]
     for i, u in enumerate(units):
         if u.category == "actions" and u.meaning == "try":
             r.mark(u)
@@ -1311,6 +1319,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
+        if reference is None and u.category == "positions" and u.tokens[-1].word in ("it", "them") and \
+                u.meaning in ("ahead", "behind", "level"):
+            reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
         for e in targets:
             if e.is_ego and u.category == "positions":
                 if u.meaning.startswith("compass_"):
@@ -1340,6 +1351,19 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             recent.remove(e)
         recent.append(e)
     return subject
+
+
+SIGNAL_COLOURS = {"red", "green", "amber", "yellow", "orange"}
+
+
+def _signal_change(units: list[Unit], i: int) -> bool:
+    """'the light has turned red', 'by the time it goes green': a signal changing colour, nobody's manoeuvre."""
+    u = units[i]
+    if u.tokens[0].base not in ("turn", "go", "change", "switch", "become", "flip") or len(u.tokens) > 1:
+        return False
+    after = [x.word for x in units[i + 1:i + 3]]
+    return bool(after) and (after[0] in SIGNAL_COLOURS or after[:1] == ["to"] and after[1:2] and
+                            after[1] in SIGNAL_COLOURS)
 
 
 def _denied_verb(units: list[Unit], i: int) -> bool:
@@ -1431,7 +1455,8 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
     return np.group or [np.entity]
 
 
-APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv"}  # said what they are
+APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv", "npc", "adversary",
+                 "participant", "object", "hero"}  # said what they are
 
 
 DISTANCE_UNITS = {"m", "metres", "meters", "metre", "meter", "yards", "yard", "feet", "ft", "km", "miles", "mile"}
@@ -1580,6 +1605,15 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return previous_subject[0]  # "the ego is tailgated by a truck, and the car in front of it stops"
     for e in reversed(recent + owner[:-1]):
         if e is not subject:
+            return e
+    return None
+
+
+def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
+    """'it' inside a place phrase ('a biker behind it'): the last agent named before, not the one placed."""
+    before = [np.entity for np in phrases if np.index < i and np.entity is not None]
+    for e in reversed(recent + before):
+        if e not in owners and not e.is_ego:
             return e
     return None
 
