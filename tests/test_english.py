@@ -818,3 +818,79 @@ def test_a_wide_vocabulary_of_road_users(noun, agent_type):
 ])
 def test_verbs_and_places_as_drivers_say_them(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_a_dash_between_words_is_a_pause_and_4x4_is_a_car():
+    assert ("car", "go_straight", "back") in agents("A 4x4 sits right on our tail.")
+    found = agents("we merge right \u2014 is there a lorry in the lane we're moving into, well behind us?")
+    assert ("truck", "go_straight", "back_right") in found
+
+
+def test_a_child_running_into_the_vuts_path_from_a_side_keeps_that_side():
+    assert ("pedestrian", "cross_the_road", "front_left") in agents(
+        "A boy runs from the far side into the VUT's path.")
+    assert ("car", "block_the_ego", "front_left") in agents(
+        "The target car cuts off the ego from the left adjacent lane and halts in the ego lane.")
+
+
+def test_no_crossing_is_a_crossing_denied_and_a_crossing_kind_is_not_doubled():
+    scene = lower("ped: dashes across from the right, no crossing").scenario
+    assert "crosswalk" in scene.road.without_objects
+    assert ("pedestrian", "cross_the_road", "front_right") in agents("ped: dashes across from the right, no crossing")
+    assert lower("Ladder crosswalk ahead; the ego stops before the crossing.").scenario.road.required_objects == \
+        ("ladder_crosswalk",)
+
+
+def test_a_short_word_is_not_corrected_into_an_agent():
+    assert len(agents("how would the car cope with a moped behind us")) == 2
+
+
+def test_the_ego_that_pulls_in_and_stops_stops():
+    assert ("car", "stop", "ego") in agents("An ambulance closes in behind, so the ego pulls in and stops.")
+
+
+def test_a_crossing_from_a_compass_side_is_from_the_egos_side():
+    assert ("pedestrian", "cross_the_road", "front_right") in agents(
+        "The test car was heading north when a man walked across the road from the east side.")
+
+
+@pytest.mark.parametrize("prompt, ego_action, other", [
+    ("tractor crawling ahead, overtake it on the left", "change_lane_to_left", ("truck", "go_straight", "front")),
+    ("police car behind with blues on, pull over to the right", "change_lane_to_right",
+     ("police", "go_straight", "back")),
+    ("A fire engine is behind us and we move over to the left.", "change_lane_to_left",
+     ("firetruck", "go_straight", "back")),
+])
+def test_an_order_after_a_description_and_a_new_subject_after_a_copula_are_the_egos(prompt, ego_action, other):
+    found = agents(prompt)
+    assert ("car", ego_action, "ego") in found and other in found
+
+
+def test_the_queue_ahead_of_a_waiting_ego():
+    assert agents("we're sat at a red light with 2 cars in front of us") == sorted(
+        [("car", "stop", "ego"), ("car", "stop", "front"), ("car", "stop", "front")])
+    assert agents("fifth in the queue at the lights") == sorted([("car", "stop", "ego")] + [("car", "stop", "front")] * 4)
+    assert agents("third in line behind a coach") == sorted(
+        [("car", "stop", "ego"), ("bus", "stop", "front"), ("car", "stop", "front")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego: turning left. Bus: oncoming, going straight.", [("car", "turn_left", "ego"),
+                                                          ("bus", "go_straight", "road_of_straight")]),
+    ("cyclist: riding on our right; lorry: parked ahead", [("car", "go_straight", "ego"),
+                                                           ("cyclist", "go_straight", "right"),
+                                                           ("truck", "stop", "front")]),
+    ("ped: strolls across in front from the left", [("car", "go_straight", "ego"),
+                                                    ("pedestrian", "cross_the_road", "front_left")]),
+    ("Actor_2 - motorbike - behind the ego - overtakes on the right", [("car", "go_straight", "ego"),
+                                                                     ("motorcycle", "go_straight", "back_right")]),
+])
+def test_keys_that_name_agents_on_one_line_are_their_subjects(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_a_clock_time_or_a_case_title_is_no_agent_key():
+    assert agents("At 7:15 am a van stopped ahead of the ego.") == sorted(
+        [("car", "go_straight", "ego"), ("car", "stop", "front")])
+    assert agents("Cut-in: a target vehicle in the right lane cuts in.") == sorted(
+        [("car", "go_straight", "ego"), ("car", "change_lane_to_left", "right")])

@@ -173,7 +173,7 @@ def _lines(text: str) -> str:
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
     if "\n" not in text.strip():
-        return text
+        return _keyed_agents(text)
     out = []
     for line in text.splitlines():
         if not line.strip():
@@ -200,6 +200,37 @@ def _lines(text: str) -> str:
     return " ".join(out)
 
 
+LABEL_KEY = re.compile(r"(?:npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|v|sv|pov|tv|gvt|veh"
+                       r"|vehicle|unit|participant)[ _#]?\d{1,2}")
+
+
+def _names_agent(key: str) -> bool:
+    """'Van', 'ego', 'NPC2', 'Actor_1', 'lead car': a key that names an agent, not a title."""
+    words = tuple(_normalize(key).split())
+    if LABEL_KEY.fullmatch(key.lower().strip()):
+        return True
+    entry = lexicon().phrases.get(words) or lexicon().phrases.get(words[-1:]) if words else None
+    return bool(entry) and entry[0] == "agents" and entry[1] != "none" and len(words) <= 3
+
+
+def _keyed_agents(text: str) -> str:
+    """'Ego: going straight. Van: stopped, front-right.' on one line: each key that names an agent is the
+    subject of what follows it ('Van is stopped, front-right.'); other keys are left to the title rule."""
+    pieces = re.split(r"(?<=[.;|])\s+|\s+/\s+", text.strip())
+    if sum(1 for p in pieces if (m := KEY_LINE.match(p)) and _names_agent(m.group(1))) < 2 and not (
+            len(pieces) == 1 and (m := KEY_LINE.match(pieces[0])) and _names_agent(m.group(1))
+            and m.group(1).strip().lower().split()[0] not in TITLE_KEYS):
+        return text
+    out = []
+    for piece in pieces:
+        m = KEY_LINE.match(piece)
+        if m and _names_agent(m.group(1)) and m.group(2).strip():
+            out.append(f"{m.group(1).strip()} is {m.group(2).strip().rstrip('.;')}.")
+        else:
+            out.append(piece)
+    return " ".join(out)
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -216,6 +247,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
     text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end
+    text = re.sub(r"\s[-\u2013\u2014]+\s|[\u2013\u2014]", " , ", text)  # a dash between words is a pause
+    text = re.sub(r"\b4\s?x\s?4s?\b", "four by four", text)  # "a 4x4"
     text = re.sub(r"(\d)(kmh|mph|m|s|km|metres|meters|seconds)\b", r"\1 \2", text)
     text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
     text = re.sub(r"\n\s*\n", " . ", text)
@@ -232,7 +265,9 @@ def tokenize(text: str) -> list[Token]:
                   r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
     text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
                   r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
-    text = re.sub(r"\b([a-z]{1,3})(\d)\b", r"\1#\2", text)  # SV1, POV2, V1: a label, not a count
+    text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike)[ _](\d)\b"
+                  r"(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?|cars?))", r"\1\2", text)  # "NPC_1", "Actor 2"
+    text = re.sub(r"\b([a-z]{1,3}|npc|actor|agent|target|object|adversary)(\d)\b", r"\1#\2", text)  # SV1, NPC2: labels
     tokens: list[Token] = []
     sentence = 0
     raw = TOKEN.findall(text)
@@ -269,7 +304,7 @@ def tokenize(text: str) -> list[Token]:
         for part in lex.spelling.get(word, word).split():
             base, inflected = lex.base(part)
             misspelt = ""
-            if base not in lex.vocabulary and len(part) >= 4 and part.isalpha() and not part.endswith("ing"):
+            if base not in lex.vocabulary and len(part) >= 5 and part.isalpha() and not part.endswith("ing"):
                 guess = _corrected(lex, part)
                 if guess is not None:  # "pedestrain", "interesection": read as the word meant
                     misspelt, part = part, guess

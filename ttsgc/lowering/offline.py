@@ -27,7 +27,7 @@ from functools import lru_cache
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
-from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, lexicon, matches, read_number, tokenize
+from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, _names_agent, lexicon, matches, read_number, tokenize
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -82,6 +82,8 @@ ACTION_RANK = {  # the more specific predicate wins among equally strong ones
 SIDES = ("left", "right")
 COMPASS_OPPOSITE = {"compass_north": "compass_south", "compass_south": "compass_north",
                     "compass_east": "compass_west", "compass_west": "compass_east"}
+COMPASS_LEFT = {"compass_north": "compass_west", "compass_east": "compass_north", "compass_south": "compass_east",
+                "compass_west": "compass_south"}  # the side on the left of a heading
 TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn", "let", "to let"}
 LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
               "near", "nearside", "side"}
@@ -149,6 +151,7 @@ class _Reader:
     used: set = field(default_factory=set)  # token indexes some rule placed
     entities: list[Entity] = field(default_factory=list)
     order: int = 0
+    after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
 
@@ -171,7 +174,8 @@ def _units(tokens: list[Token]) -> list[Unit]:
                 m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front"):
             span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
             meaning = "ahead" if span[-1].word == "front" else "ego_lane"
-            if m.start > 0 and tokens[m.start - 1].word in ("into", "onto", "across"):
+            before = m.start - 1 if m.start > 0 and tokens[m.start - 1].word != "the" else m.start - 2
+            if before >= 0 and tokens[before].word in ("into", "onto", "across"):  # "into the VUT's path"
                 meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
             out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
             i = m.end + 1
@@ -198,10 +202,15 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
     span = tuple(tokens[m.start:m.end])
-    nxt = tokens[m.end].word if m.end < len(tokens) else ""
+    nxt = tokens[m.end].word if m.end < len(tokens) and tokens[m.end].sentence == span[-1].sentence else ""
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and \
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
+    after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
+            after[:1] and after[0] in ("behind", "ahead", "beside", "alongside", "next", "up")
+            or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
+        return [Unit(m.start, m.end, "word", "right", span)]  # "sits right on our tail": how close, not a side
     prev = tokens[m.start - 1] if m.start > 0 else None
     if m.category == "agents" and m.meaning == "none" and [t.word for t in span] == ["bus", "stops"] and \
             prev is not None and prev.word in ("a", "the", "this", "that", "city", "school"):
@@ -220,7 +229,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
     if m.category == "road" and span[-1].word == "crossing" and (len(span) == 1 or span[0].base == "pedestrian") and (
             nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))) and \
-            not place_then_verb:  # "the pedestrian crossing ahead is blocked": the crossing
+            not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
+                                         and len(span) == 1):  # "no crossing", "a crossing": the noun  # "the pedestrian crossing ahead is blocked": the crossing
         out = []
         if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
             out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
@@ -326,6 +336,9 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
             continue
         negated = False
+    kinds = [w for w in fields["required_objects"] if w in V.CROSSWALK_OBJECTS and w != "crosswalk"]
+    if kinds and "crosswalk" in fields["required_objects"]:
+        fields["required_objects"].remove("crosswalk")  # "a zebra crossing ... stops before the crossing": one
     speed_limits = _speed_limits(r)
     for word in speed_limits:
         put(word, False)
@@ -341,7 +354,8 @@ def _road(r: _Reader) -> RoadSpec:
 def _denied(units: list[Unit], k: int) -> bool:
     """'no junction', 'not at a junction', 'without any junctions', 'away from junctions'."""
     for u in reversed(units[max(0, k - 3):k]):
-        if u.category == "word" and (u.word in NEGATIONS or u.word == "away"):
+        if u.category == "word" and (u.word in NEGATIONS or u.word == "away") or \
+                u.category == "numbers" and u.meaning == "0":
             return True
         if not (u.category == "word" and u.word in ("at", "a", "an", "any", "from", "near", "the")):
             return False
@@ -682,13 +696,14 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
-            if _has_verb(current) or condition or new_noun or joined:
+            order = nxt is not None and _bare_verb(nxt) and _has_agent(current)  # "bus ahead, overtake it"
+            if _has_verb(current) or condition or new_noun or joined or order:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
             continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
-            if u.word in ("and", "or") and not _has_verb(current):
+            if u.word in ("and", "or") and not _has_verb(current) and not _new_subject_after_copula(current, units, k):
                 current.append(u)
                 continue
             if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
@@ -705,6 +720,29 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+COPULAS = {"is", "are", "was", "were", "am"}
+SUBJECT_PRONOUNS = {"we", "i", "it", "they", "he", "she", "you"}
+
+
+def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'a police car is behind us and we pull over': a complete 'X is PLACE', then a new subject and its verb."""
+    if not (_has_agent(current) and any(u.category == "word" and u.word in COPULAS for u in current)):
+        return False
+    rest = units[k + 1:k + 5]
+    if not rest:
+        return False
+    starts = rest[0].category == "agents" and rest[0].meaning == "ego" or rest[0].word in SUBJECT_PRONOUNS or (
+        rest[0].word == "the" and len(rest) > 1 and rest[1].category == "agents" and rest[1].meaning != "none")
+    if not starts:
+        return False
+    for x in rest[1:]:
+        if x.category == "actions":
+            return True
+        if not (x.category == "word" and x.word in AUXILIARIES | {"then", "now", "just", "also"} or x.category == "agents"):
+            return False
+    return False
 
 
 def _starts_noun(units: list[Unit], k: int) -> bool:
@@ -1220,7 +1258,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif clause.condition:
             subject = []
         elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate \
-                and not _imperative_on(units, verbs, phrases, previous_subject):
+                and not _imperative_on(units, verbs, phrases, previous_subject) \
+                and not (r.after_verbless and verbs and verbs[0] == 0 and _bare_verb(units[0])):
+            # "ambulance behind with siren, pull over to the right": an order after a verbless description
             subject = list(previous_subject)
         elif verbs:
             inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
@@ -1436,6 +1476,48 @@ def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subje
             e.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
+ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "2nd": 2, "3rd": 3, "4th": 4,
+            "5th": 5, "6th": 6}
+RED_OR_QUEUE = {"queue", "queued", "queueing", "queuing", "jam", "tailback", "red", "line"}
+
+
+def _place_in_queue(r: _Reader) -> None:
+    """'third in the queue at a red light': two vehicles wait ahead of the ego; and whoever is ahead of an ego
+    waiting in a queue or at a red light, doing nothing said, waits too."""
+    words = [t.word for t in r.tokens]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    for i, w in enumerate(words[:-2]):
+        n = ORDINALS.get(w)
+        rest = words[i + 1:i + 4]
+        if not n or rest[0] not in ("in", "car", "vehicle") or not {"queue", "line"} & set(rest):
+            continue
+        ego = ego or _ego_entity(r, 0)
+        if not any(a[4] == "stop" for a in ego.actions):
+            ego.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
+        queued = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and not e.features & {
+            "behind", "side_left", "side_right", "road_straight", "toward", "road_left", "road_right"}]
+        for e in queued:
+            e.features.add("ahead")  # "fourth in line behind a bus": the bus is one of those ahead
+        ahead = sum(e.count for e in queued)
+        if n - 1 > ahead and n - 1 <= MAX_AGENTS_PER_MENTION:
+            r.entities.append(Entity(len(r.entities), "car", False, 0, count=n - 1 - ahead, head="car",
+                                     features={"ahead"}))
+            r.notes.append(f"inferred: '{w} in the queue' puts {n - 1 - ahead} car(s) ahead of the ego")
+        r.used.update(range(i, i + 4))
+        break
+    if ego is None or not any(a[4] == "stop" and a[0] == 0 for a in ego.actions) or \
+            not RED_OR_QUEUE & set(words) and "traffic_light" not in _said_signals(r):
+        return
+    for e in r.entities:
+        if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and "ahead" in e.features \
+                and not e.features & {"side_left", "side_right", "road_straight", "toward"} and e.stage == 0:
+            e.actions.append((0, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+
+
+def _said_signals(r: _Reader) -> set[str]:
+    return {u.meaning for u in r.units if u.category == "road"}
+
+
 VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people"}
 VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
                         "block"}
@@ -1469,6 +1551,17 @@ def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase
         return False
     return any(u.word in ("it", "them", "him", "her") for u in units[1:3]) or any(
         np.index > 0 and np.entity is not None and np.entity in previous for np in phrases)
+
+
+NOT_VERBS = {"straight", "left", "right", "l", "r", "ahead", "through", "protected", "unprotected", "first", "second",
+             "third", "uturn", "u", "lane", "right", "hazard", "double", "queue", "stationary", "standstill"}
+
+
+def _bare_verb(u: Unit) -> bool:
+    """A verb in its base form ('pull over', 'slow down'), as an order is given; not 'pulls', 'pulling'."""
+    t = u.tokens[0]
+    return u.category == "actions" and t.word == t.base and not t.word.endswith(("ing", "ed")) and \
+        t.word not in NOT_VERBS
 
 
 def _ego_entity(r: _Reader, stage: int) -> Entity:
@@ -1764,7 +1857,7 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
         return None, None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
     if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
-        return "block", None  # "swerves into its path and stops"
+        return ("stop" if e.is_ego else "block"), None  # "swerves into its path and stops"; the ego pulls in and stops
     return best[4], best[5]
 
 
@@ -1827,8 +1920,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
-    if "ego_lane" in f and not lane_move and "into_ego_lane" not in f:
-        side = None
+    if "ego_lane" in f and not lane_move and "into_ego_lane" not in f and "from_lane" not in f:
+        side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f:
         side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
     if action == "block" and side and "from_lane" in f and not behind:
@@ -1968,8 +2061,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if subject:
             previous = subject
         verbless = not _has_verb(clause.units)
+        r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
+    _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
     if asked is not None and others:
@@ -2054,6 +2149,8 @@ def _title(prompt: str, tokens: list[Token]) -> range:
     m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
     if m is None or "\n" in prompt.strip():  # notes written a line an item have their titles marked already
         return range(0)
+    if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
+        return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
     if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
     n = len(tokenize(m.group(1)))
@@ -2092,7 +2189,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     heading = next((f for f in (ego_entity.features if ego_entity else ()) if f.startswith("compass_")), None)
     for e in others:  # "the AV was travelling north ... a van heading south": compass headings against the ego's
         own = next((f for f in e.features if f.startswith("compass_")), None)
-        if heading and own and own != heading:
+        if heading and own and own != heading and e.type in V.VULNERABLE_TYPES and COMPASS_OPPOSITE[heading] != own \
+                and not _side(e):  # "heading east ... ran across from the north side": from the ego's left
+            e.features.add("side_left" if COMPASS_LEFT[heading] == own else "side_right")
+        elif heading and own and own != heading:
             e.features.add("road_straight" if COMPASS_OPPOSITE[heading] == own else "cross_road")
     if ego_entity is not None and "first_in_line" in ego_entity.features:
         for e in others:  # "three cars including the ego wait, the ego is first": the others queue behind it
