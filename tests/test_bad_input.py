@@ -78,6 +78,28 @@ def test_english_with_a_400_digit_count_and_speed_limit_is_read_with_its_limits(
     assert "a speed limit of a number too large to read is outside 5..200 km/h" in err and "speed_" not in out
 
 
+def test_a_book_given_as_the_prompt_is_refused_at_once(tmp_path, capsys):
+    """Reading is quadratic in the worst case: four megabytes of prose used to take hours."""
+    prompt = tmp_path / "p.txt"
+    prompt.write_text("a car goes straight. " * 200_000)
+    start = time.perf_counter()
+    code, _, err = _run(capsys, "compile", prompt, "-o", tmp_path / "p.xosc", "--no-simulate")
+    assert code == ExitCode.LOWERING_FAILED and time.perf_counter() - start < 5
+    assert "the prompt is 4,200,000 characters" in err and "at most 20,000" in err
+    assert not (tmp_path / "p.xosc").exists()
+
+
+def test_a_scene_of_thousands_of_agents_is_refused_naming_the_first_one_too_many(tmp_path, capsys):
+    scene = tmp_path / "s.tsg"
+    scene.write_text('scenario "x"\nstage a {\n    ego car go_straight\n'
+                     + "".join(f"    car c{i} at front go_straight\n" for i in range(3000)) + "}\n")
+    start = time.perf_counter()
+    code, _, err = _run(capsys, "compile", scene, "-o", tmp_path / "s.xosc")
+    assert code == ExitCode.INVALID_SCENARIO and time.perf_counter() - start < 10
+    assert "s.tsg:503:" in err and "at most 500 agents, the ego included; this one has 3001" in err
+    assert not (tmp_path / "s.xosc").exists()
+
+
 @pytest.mark.parametrize("value", ["nan", "inf", "1e308", "1e300", "-5", "1e12"])
 def test_map_lengths_out_of_bounds_are_refused(tmp_path, capsys, value):
     bad = _map_with(tmp_path, 'id="1" junction="-1" length="120.0"', f'id="1" junction="-1" length="{value}"')

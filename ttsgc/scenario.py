@@ -208,6 +208,11 @@ def _agent_problems(s: Scenario, add) -> None:
         add(("stages", i, "agents", j, "name"), "the ego must be in the first stage: later agents are placed relative to it")
     elif egos:
         _later_ego_problems(s, egos, add)
+    if len(located) > V.MAX_AGENTS:
+        i, j, _ = located[V.MAX_AGENTS]
+        add(("stages", i, "agents", j), f"a scene holds at most {V.MAX_AGENTS} agents, the ego included; this one has "
+            f"{len(located)}")
+        return
     stage_of = {a.name: i for i, _, a in located}
 
     for i, j, a in located:

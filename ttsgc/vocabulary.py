@@ -135,6 +135,7 @@ DEFAULT_CONDITION, DEFAULT_TIME = "clear", "noon"
 LANES_RANGE = (1, 6)
 GAP_RANGE_M = (0.5, 200.0)
 SPEED_RANGE_MPS = (0.0, 70.0)
+MAX_AGENTS = 500  # a scene's agents, the ego included: beyond this no player plays it in reasonable time
 TRIGGER_TIME_RANGE_S = (0.0, 600.0)
 TRIGGER_DISTANCE_RANGE_M = (1.0, 500.0)
 ORDER_RANGE = (1, 99)

@@ -11,6 +11,10 @@ from ttsgc.scenario import Comment, Scenario
 
 __all__ = ["LoweringError", "Lowering", "lower_prompt"]
 
+# Ten times the longest prompt people wrote for the corpus; reading is quadratic in the worst case, and an LLM
+# answer to a book is no scene either.
+MAX_PROMPT_CHARS = 20_000
+
 
 @dataclass
 class Lowering:
@@ -49,6 +53,9 @@ def choose_method(requested: str) -> str:
 
 
 def lower_prompt(prompt: str, method: str = "auto", seed: int = 0, settings=None, client=None) -> Lowering:
+    if len(prompt) > MAX_PROMPT_CHARS:
+        raise LoweringError(f"the prompt is {len(prompt):,} characters; a scene is described in at most "
+                            f"{MAX_PROMPT_CHARS:,} (a paragraph or two)")
     method = choose_method(method)
     if method == "offline":
         result = lower(prompt, seed=seed)
