@@ -894,3 +894,36 @@ def test_a_clock_time_or_a_case_title_is_no_agent_key():
         [("car", "go_straight", "ego"), ("car", "stop", "front")])
     assert agents("Cut-in: a target vehicle in the right lane cuts in.") == sorted(
         [("car", "go_straight", "ego"), ("car", "change_lane_to_left", "right")])
+
+
+def test_a_ticket_title_line_oracle_lines_and_role_tags_name_no_agents():
+    prompt = ("Tractor overtake on a B road\n\nSetup: hero follows a tractor (NPC1) on a two-lane road.\n"
+              "Actors: tractor is slow, hero overtakes it on the right.\n"
+              "Expected: hero brakes, no collision.\nAC: overtake completes within 8 s.")
+    assert agents(prompt) == sorted([("car", "change_lane_to_right", "ego"), ("truck", "go_straight", "front")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The VUT approaches a child pedestrian target crossing from the farside.",
+     ("pedestrian", "cross_the_road", "front_left")),
+    ("police NPC stops in front of the hero", ("police", "stop", "front")),
+    ("A bicyclist target (EBT) rides ahead of the VUT in the same lane.", ("cyclist", "go_straight", "front")),
+])
+def test_a_role_noun_after_a_noun_keeps_the_nouns_type(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and len(found) == 2
+
+
+def test_a_short_name_in_brackets_is_the_same_agent_and_names_it_later():
+    found = agents("The VUT closes on a slow Soft Car Target (SCT) in its lane. After 3 s the SCT brakes to a stop.")
+    assert found == sorted([("car", "go_straight", "ego"), ("car", "stop", "front")])
+
+
+def test_a_manoeuvre_named_after_a_preposition_is_nobodys_predicate():
+    assert ("car", "go_straight", "ego") in agents(
+        "A lorry in the left lane cuts in; the gap at the start of the manoeuvre is 20 m.")
+
+
+def test_in_which_after_a_lane_change_is_the_lane_moved_into():
+    assert ("bus", "go_straight", "back_right") in agents(
+        "The ego makes a lane change to the right adjacent lane, in which a coach comes up from behind.")

@@ -166,6 +166,17 @@ TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary",
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
+PLAIN_KEYS |= {"setup", "set up", "actors", "agents", "participants", "npcs", "road", "roads", "map", "route",
+               "location", "description", "details", "steps", "notes", "trigger", "initial conditions",
+               "initial state", "layout", "geometry", "infrastructure", "traffic", "other traffic", "situation",
+               "context", "given", "when", "then", "and", "scene description", "scenario description"}
+ORACLE_KEYS = {"expected", "expected result", "expected behaviour", "expected behavior", "expected outcome", "ac",
+               "acceptance", "acceptance criteria", "acceptance criterion", "pass criterion", "pass criteria",
+               "success criteria", "success criterion", "kpi", "kpis", "metrics", "metric", "result", "outcome",
+               "assert", "assertion", "assertions", "check", "checks", "verify", "pass", "fail", "fail criterion",
+               "pass fail", "evaluation", "measure", "measured", "log", "logging", "priority", "status", "owner",
+               "assignee", "labels", "label", "ticket", "jira", "reporter", "component", "sprint", "tags", "tag",
+               "links", "attachments", "version", "build", "seed"}  # what the test checks, not the scene
 
 
 def _lines(text: str) -> str:
@@ -175,18 +186,27 @@ def _lines(text: str) -> str:
     if "\n" not in text.strip():
         return _keyed_agents(text)
     out = []
-    for line in text.splitlines():
+    lines = text.strip().splitlines()
+    staged = False
+    for k, line in enumerate(lines):
         if not line.strip():
             continue
         line = line.replace("->", " and ").replace("\u2192", " and ")
         m = KEY_LINE.match(line)
+        if k == 0 and m is None and len(lines) > 2 and not lines[1].strip() and not line.rstrip().endswith(
+                (".", "!", "?")) and len(line.split()) <= 12:
+            out.append("\u00a7 " + line.strip() + ".")  # a heading line over a blank line: the ticket's title
+            continue
         if m is None:
             out.append(line.strip().lstrip("-*\u2022 ").rstrip(".") + ".")
             continue
         key, value = m.group(1).strip(), m.group(2).strip().rstrip(".")
         lowered = key.lower()
-        if re.fullmatch(r"stage \d+|step \d+|phase \d+", lowered):
-            out.append(("then " if out else "") + value + ".")
+        if lowered in ORACLE_KEYS or lowered.split()[0] in ("expected", "acceptance", "pass", "success", "kpi"):
+            continue
+        if re.fullmatch(r"(stage|step|phase) (\d+|[a-z])", lowered):
+            out.append(("then " if staged or any(not x.startswith("\u00a7") for x in out) else "") + value + ".")
+            staged = True
         elif lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
         elif lowered in PLAIN_KEYS:
@@ -261,7 +281,12 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(that|this|its|our|their) (left|right) lane", r"the \2 lane", text)
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
     text = re.sub(r"\b(v\d|vehicle \d|unit \d) \(([^()]*)\)", r"\1 , \2 ,", text)  # "vehicle 1 (the AV)": apposition
-    text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego) \((?:an? |the )?([a-z ]{2,30})"
+    text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
+    text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
+                  r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag
+    text = re.sub(r" \(([a-z]{2,6}[a-z0-9]?)\)", r" , \1 ,", text)  # "a pedestrian target (EPTa)": its short name
+    text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego|npc|adversary|hero)"
+                  r" \((?:an? |the )?([a-z ]{2,30})"
                   r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
     text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
                   r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
@@ -310,7 +335,7 @@ def tokenize(text: str) -> list[Token]:
                     misspelt, part = part, guess
                     base, inflected = lex.base(part)
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
-                and part not in ("is", "was", "has", "does", "goes", "bus")
+                and part not in ("is", "was", "has", "does", "goes", "bus", "police")
             tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question,
                                 sentence_of_raw[position] in titled, misspelt))
     return tokens

@@ -141,6 +141,7 @@ class Entity:
     parent: "Entity | None" = None  # the counted group it was taken from
     label: str = ""  # the name the text gives it ("SV1")
     includes_ego: bool = False  # "three cars including the ego": the ego shares what the group does
+    aliases: set = field(default_factory=set)  # short names given in brackets ("(GVT)")
 
 
 @dataclass
@@ -188,7 +189,23 @@ def _units(tokens: list[Token]) -> list[Unit]:
         category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
-    return out
+    return _short_names(out)
+
+
+def _short_names(units: list[Unit]) -> list[Unit]:
+    """'a Soft Car Target (SCT) ... the SCT brakes': a word the lexicon lacks, given in brackets after an agent
+    noun, names that agent wherever it is used."""
+    names: dict[str, str] = {}
+    for k in range(1, len(units) - 2):
+        u, name, close = units[k], units[k + 1], units[k + 2]
+        if u.category == "comma" and units[k - 1].category == "agents" and units[k - 1].meaning not in (
+                "none", "ego") and name.category == "word" and close.category == "comma" and \
+                name.word not in lexicon().function_words and name.word.isalpha() and 2 <= len(name.word) <= 6:
+            names[name.word] = units[k - 1].meaning
+    if not names:
+        return units
+    return [Unit(u.start, u.end, "agents", names[u.word], u.tokens) if u.category == "word" and u.word in names
+            else u for u in units]
 
 
 VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
@@ -388,7 +405,8 @@ def _speed_limits(r: _Reader) -> list[str]:
             "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES)
         if speed_of_someone:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
-        road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]} & LIMITED_PLACES and \
+        road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]
+                                        if x.sentence == t.sentence} & LIMITED_PLACES and \
             after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
         if not (around & LIMIT_WORDS or unit_then_road or road_then_unit) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
@@ -697,7 +715,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
             order = nxt is not None and _bare_verb(nxt) and _has_agent(current)  # "bus ahead, overtake it"
-            if _has_verb(current) or condition or new_noun or joined or order:
+            short_name = bool(current) and current[-1].category == "agents" and nxt is not None and \
+                nxt.category == "agents" and len(nxt.tokens) == 1 and k + 2 < len(units) and \
+                units[k + 2].category == "comma" and not nxt.tokens[0].plural  # "a target (GVT), ..."
+            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -908,7 +929,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count = UNSPECIFIED.vague_count(count, len(r.entities))
     bare = not words and count is None and not plural and not label and not (
         head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
-    if bare and any(e.head == u.base and not e.is_ego and e.count == 1 for e in r.entities):
+    if bare and any((e.head == u.base or u.base in e.aliases) and not e.is_ego and e.count == 1 for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left": the same cyclist
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
@@ -1009,7 +1030,7 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
                                                         or (e.generic and kind in V.EGO_TYPES))]
     if head and head not in GENERAL_NOUNS and not both and not plural:
-        same = [e for e in pool if e.head.split()[-1] == head.split()[-1]
+        same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"]
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool:
@@ -1141,6 +1162,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     stage = clause.stage
     _side_roads(units)
     phrases: list[NounPhrase] = []
+    roles = [i + 1 for i, u in enumerate(units[:-1]) if u.category == "agents" and u.meaning not in (
+        "ego", "none", "generic") and units[i + 1].category == "agents" and units[i + 1].base in ROLE_NOUNS]
+    for i in roles:  # "a pedestrian target", "police NPC": the role noun says no type, and is left out
+        r.mark(units[i])
+    if roles:
+        units = clause.units = [u for i, u in enumerate(units) if i not in roles]
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
         u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
         and units[i + 1].meaning not in ("ego", "none"))]
@@ -1206,7 +1233,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
-             and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)]
+             and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
+             and not _named_manoeuvre(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
             u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
         verbs = []  # "the light turns red": the subject is a signal, no agent acts
@@ -1406,6 +1434,13 @@ def _signal_change(units: list[Unit], i: int) -> bool:
                             after[1] in SIGNAL_COLOURS)
 
 
+def _named_manoeuvre(units: list[Unit], i: int) -> bool:
+    """'at the start of the manoeuvre', 'during the turn': a manoeuvre named as a noun after a preposition,
+    nobody's predicate."""
+    return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
+        units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "for", "until", "since")
+
+
 def _denied_verb(units: list[Unit], i: int) -> bool:
     """'don't try to pass him', 'never overtakes', 'must learn how to yield': a verb said not to happen, or
     only talked about ('does not move' is a phrase of its own)."""
@@ -1537,6 +1572,7 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
     return np.group or [np.entity]
 
 
+ROLE_NOUNS = {"target", "npc", "adversary", "actor", "agent", "dummy", "target vehicle", "participant", "object"}
 APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv", "npc", "adversary",
                  "participant", "object", "hero"}  # said what they are
 
@@ -1628,6 +1664,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 and not prev.plural and not np.plural:
             between = units[prev.index + 1: np.first]
             copula = any(u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as") for u in between)
+            abbreviation = between and all(u.category == "comma" or u.base in ROLE_NOUNS for u in between) and \
+                np.first == np.index and \
+                len(units[np.index].tokens) == 1 and not prev.entity.is_ego and (
+                    np.entity.type == prev.entity.type) and units[np.index].base not in GENERAL_NOUNS
+            if abbreviation:  # "a stationary Global Vehicle Target (GVT)": its short name, no second agent
+                prev.entity.aliases.add(units[np.index].base)
+                if np.entity in r.entities:
+                    r.entities.remove(np.entity)
+                continue
             driver = prev.entity.head in DRIVERS and [u.word for u in between] in (["in"], ["driving"], ["on"])
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 prev.entity.type = np.entity.type
@@ -2053,8 +2098,12 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             for u in header if not e.is_ego else []:
                 _modify(r, e, u, clause.stage, 1)
         header = _header_of_place(clause.units)
-        if clause.link == "where" and k > 0 and any(u.category == "actions" and u.meaning.startswith("lane")
-                                                    for u in clauses[k - 1].units):
+        lead = k - 1
+        if clause.link == "which" and k > 1 and [u.word for u in clauses[k - 1].units] in (["in"], ["into"]):
+            lead = k - 2  # "changes to the left lane, in which a car approaches"
+        into_it = clause.link == "where" or lead == k - 2
+        if into_it and k > 0 and any(u.category == "actions" and u.meaning.startswith("lane")
+                                     for u in clauses[lead].units):
             for e in r.entities[before:]:  # "the ego changes into the left lane, where a van drives ahead"
                 if not e.is_ego:
                     e.features.add("target_lane")
