@@ -927,3 +927,45 @@ def test_a_manoeuvre_named_after_a_preposition_is_nobodys_predicate():
 def test_in_which_after_a_lane_change_is_the_lane_moved_into():
     assert ("bus", "go_straight", "back_right") in agents(
         "The ego makes a lane change to the right adjacent lane, in which a coach comes up from behind.")
+
+
+def test_a_verb_after_without_is_denied_so_the_past_tense_before_it_is_finite():
+    assert ("car", "turn_right", "road_of_left_turn") in agents(
+        "At the crossroads a hatchback from the left turned right in front of us without even signalling.")
+
+
+def test_i_takes_no_participle():
+    assert ("car", "change_lane_to_right", "ego") in agents(
+        "A bin lorry was stopped in my lane, so I pulled over into the right lane to get past it.")
+
+
+def test_a_crossing_cyclist_from_a_side_at_a_junction_comes_from_that_road():
+    assert ("cyclist", "cross_the_road", "road_of_right_turn") in agents(
+        "I was turning left at the junction when a lad on a bike shot across from the right.")
+
+
+def test_a_riders_own_lamps_are_no_traffic_light():
+    assert "traffic_light" not in road("A cyclist crossed ahead at dusk; she had no lights on.").without_signals
+
+
+def test_the_driver_is_the_vehicle_named_before():
+    assert len(agents("A minibus pulled out in front of us. The driver never looked.")) == 2
+
+
+def test_a_vague_person_in_the_queue_drives():
+    assert ("car", "go_straight", "back") in agents(
+        "We stopped at the lights and the bloke behind us rolled into our back bumper.")
+
+
+def test_doing_the_same_repeats_the_previous_agents_manoeuvre_and_place():
+    found = agents("At the lights a van coming the other way turned left, then a second van did the same.")
+    assert found.count(("car", "turn_left", "road_of_straight")) == 2
+
+
+def test_labelled_members_of_a_list_are_separate_agents():
+    assert agents("Actors: veh_1, veh_2 (cars) park ahead on the right.").count(("car", "stop", "front_right")) == 2
+    assert ("pedestrian", "cross_the_road", "front") in agents("Actor_3 = jogger crossing in front of the hero")
+
+
+def test_what_the_ego_follows_shares_its_lane():
+    assert ("truck", "go_straight", "front") in agents("We follow a tanker in the left lane of a dual carriageway.")

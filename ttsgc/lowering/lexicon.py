@@ -284,13 +284,16 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag
+    text = re.sub(r" \((?:all |both )?(?:children|kids|pedestrians|people|adults|cars|vehicles|cyclists|pupils)\)",
+                  "", text)  # "ped_1, ped_2, ped_3 (children)": what the listed ones are
+    text = re.sub(r"\s+=\s+", " is ", text)  # "Actor_1 = wheelchair user"
     text = re.sub(r" \(([a-z]{2,6}[a-z0-9]?)\)", r" , \1 ,", text)  # "a pedestrian target (EPTa)": its short name
     text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego|npc|adversary|hero)"
                   r" \((?:an? |the )?([a-z ]{2,30})"
                   r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
     text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
                   r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
-    text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike)[ _](\d)\b"
+    text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh)[ _](\d)\b"
                   r"(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?|cars?))", r"\1\2", text)  # "NPC_1", "Actor 2"
     text = re.sub(r"\b([a-z]{1,3}|npc|actor|agent|target|object|adversary)(\d)\b", r"\1#\2", text)  # SV1, NPC2: labels
     tokens: list[Token] = []

@@ -239,7 +239,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                 Unit(m.end - 1, m.end, "word", "by", span[-1:])]
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student")
-    after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be",
+    after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be", "not",
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
     nxt2 = tokens[m.end + 1].word if m.end + 1 < len(tokens) else ""
@@ -312,6 +312,12 @@ def _road(r: _Reader) -> RoadSpec:
                                                       for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
             r.mark(u)
             continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
+        if u.category == "road" and u.meaning == "traffic_light" and {t.word for t in u.tokens} <= {"light", "lights"} \
+                and any(x.word in ("had", "has", "have", "having") for x in units[max(0, k - 4):k]) and any(
+                    x.word in ("he", "she", "they", "it") or x.category == "agents" for x in units[max(0, k - 6):k]):
+            r.mark(u)
+            negated = False
+            continue  # "he had no lights at all": the rider's own lamps
         if u.category == "road":
             r.mark(u)
             meaning = u.meaning
@@ -714,7 +720,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
-            order = nxt is not None and _bare_verb(nxt) and _has_agent(current)  # "bus ahead, overtake it"
+            order = nxt is not None and _bare_verb(nxt) and _has_agent(current) and not any(
+                x.word in ("a", "an", "the", "this", "that") for x in current) and \
+                nxt.tokens[0].word not in SAME_IN_THE_PAST  # "bus ahead, overtake it"; not "a guy ..., cut in"
             short_name = bool(current) and current[-1].category == "agents" and nxt is not None and \
                 nxt.category == "agents" and len(nxt.tokens) == 1 and k + 2 < len(units) and \
                 units[k + 2].category == "comma" and not nxt.tokens[0].plural  # "a target (GVT), ..."
@@ -931,6 +939,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
     if bare and any((e.head == u.base or u.base in e.aliases) and not e.is_ego and e.count == 1 for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left": the same cyclist
+    if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
+        driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
+            [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
+        if driven:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
+            return NounPhrase(driven[-1], head, first)
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
@@ -1089,6 +1102,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 e.features.add("on_sidewalk")
         else:
             e.features.add(u.meaning)
+    elif u.category == "actions" and u.meaning == "same":
+        model = next((x for x in reversed(r.entities) if x is not e and not x.is_ego and x.actions), None)
+        if model is not None:  # "then a second taxi did exactly the same thing": its manoeuvre, from its place
+            e.actions += [(stage, strength) + a[2:3] + (r.tick(),) + a[4:] for a in model.actions]
+            e.features |= model.features
+            e.relative_to = e.relative_to or model.relative_to
+            r.notes.append(f"inferred: '{e.head}' does what '{model.head}' did")
     elif u.category == "actions":
         direction = None
         if clause_units is not None and k is not None and (u.meaning in ("turn", "lane_change", "cut_in") or (
@@ -1459,7 +1479,8 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
             return True
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
                                                      "is", "are", "be", "can", "could", "room", "space", "chance",
-                                                     "able", "unable", "time")) \
+                                                     "able", "unable", "time", "even", "ever", "really", "properly",
+                                                     "so", "much", "once")) \
                 and u.category != "actions":
             return False
     return False
@@ -1553,7 +1574,8 @@ def _said_signals(r: _Reader) -> set[str]:
     return {u.meaning for u in r.units if u.category == "road"}
 
 
-VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people"}
+VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people", "lad", "bloke",
+                "chap", "fella", "fellow", "gentleman", "young man", "young woman", "teen", "teenager"}
 VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
                         "block"}
 
@@ -1591,6 +1613,10 @@ def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase
 
 NOT_VERBS = {"straight", "left", "right", "l", "r", "ahead", "through", "protected", "unprotected", "first", "second",
              "third", "uturn", "u", "lane", "right", "hazard", "double", "queue", "stationary", "standstill"}
+
+
+SAME_IN_THE_PAST = {"cut", "hit", "put", "set", "let", "shut", "quit", "burst", "cast", "hurt", "split", "spread",
+                    "thrust", "run", "come", "become"}
 
 
 def _bare_verb(u: Unit) -> bool:
@@ -1661,7 +1687,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             out[-1] = np
             continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
-                and not prev.plural and not np.plural:
+                and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
             copula = any(u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as") for u in between)
             abbreviation = between and all(u.category == "comma" or u.base in ROLE_NOUNS for u in between) and \
@@ -1673,7 +1699,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
-            driver = prev.entity.head in DRIVERS and [u.word for u in between] in (["in"], ["driving"], ["on"])
+            driver = prev.entity.head in DRIVERS and [u.word for u in between] in (["in"], ["driving"], ["on"]) or (
+                prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
+                and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 prev.entity.type = np.entity.type
                 if np.entity in r.entities:
@@ -1770,7 +1798,7 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     if k < 0:
         return None
     np = next((p for p in phrases if p.index == k), None)
-    if np is None or units[k].word in ("me", "us", "you", "him", "her", "them", "it"):
+    if np is None or units[k].word in ("me", "us", "you", "him", "her", "them", "it", "i", "we", "he", "she", "they"):
         return None  # "a learner in front of me stalled": a pronoun takes no participle; the verb is finite
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
     later = any(v > i and not (units[v - 1].category == "word" and units[v - 1].word == "to") for v in verbs)
@@ -1849,6 +1877,8 @@ def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
             elif e.is_ego and not t.is_ego:
                 if base in FOLLOWING or base in OVERTAKING:
                     t.features.add("ahead")
+                if base in FOLLOWING:
+                    t.features.add("followed")  # the ego follows it: in the ego's lane, whichever lane that is
                 elif base in LEADING:
                     t.features.add("behind")
 
@@ -1955,7 +1985,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
         return "near_the_crosswalk", False
     from_side = next((s for s in SIDES if f"from_{s}" in f), None)
-    if from_side and not person and junction and not lane_move:
+    if from_side and e.type != "pedestrian" and junction and not lane_move:  # a cyclist crossing from the left
         return f"road_of_{from_side}_turn", False
     bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
     if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level", "overtaking"} \
@@ -1965,7 +1995,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
-    if "ego_lane" in f and not lane_move and "into_ego_lane" not in f and "from_lane" not in f:
+    if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f:
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f:
         side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
@@ -2253,6 +2283,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in VEHICLE_ONLY_ACTIONS:
             e.type = "car"  # "someone's pulling out of a parking spot": someone driving
             r.notes.append(f"inferred: '{e.head}' who {action.replace('_', ' ')}s drives a car")
+        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop") and \
+                e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
+                and e.road_type != "sidewalk":
+            e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
+            r.notes.append(f"inferred: '{e.head}' behind or ahead in the lane drives a car")
         action = _sideways(action, junction)
         if "into_ego_lane" in e.features and e.type == "pedestrian":
             action = "cross"  # "a child runs into the ego's path"
