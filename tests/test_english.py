@@ -969,3 +969,52 @@ def test_labelled_members_of_a_list_are_separate_agents():
 
 def test_what_the_ego_follows_shares_its_lane():
     assert ("truck", "go_straight", "front") in agents("We follow a tanker in the left lane of a dual carriageway.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("could u make a van cutting in from the right lane in front of me pls", ("car", "go_straight", "ego")),
+    ("Can you please build a scene where a bus stops ahead of me?", ("car", "go_straight", "ego")),
+])
+def test_you_asked_to_make_a_scene_is_not_the_ego(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_greeting_is_no_time_of_day_and_chat_abbreviations_are_read():
+    scene = lower("morning! 3 ppl standing on the pavement on the left, ego drives by").scenario
+    assert scene.weather is None
+    assert [(a.type, a.action) for a in scene.agents()].count(("pedestrian", "on_the_sidewalk")) == 3
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Lead car changed lane R at the last moment.", ("car", "change_lane_to_right", "front")),
+    ("Ego in L lane, truck overtaking in R lane.", ("truck", "go_straight", "back_right")),
+    ("kid ran out from the L kerb", ("pedestrian", "cross_the_road", "front_left")),
+])
+def test_one_letter_sides_in_driving_phrases(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego is taking right turn. One bus is coming from front side and going straight.",
+     ("bus", "go_straight", "road_of_straight")),
+    ("Ego is going to left lane because an ambulance is coming behind of ego.", ("car", "change_lane_to_left", "ego")),
+    ("The ego is keeping left on a country road while a tractor comes the other way.", ("car", "go_straight", "ego")),
+    ("A man is standing on footpath of the road in which ego is turning, ego turns left.",
+     ("pedestrian", "on_the_sidewalk", "at_the_destination")),
+])
+def test_non_native_phrasings_of_positions_and_manoeuvres(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_vehicle_stopped_in_front_of_the_ego_stands_and_its_warning_lights_are_its_own():
+    scene = lower("A police car is stopped in front of the ego with its warning lights on.").scenario
+    assert ("police", "stop", "front") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+    assert "traffic_light" not in scene.road.required_signals
+
+
+def test_a_condition_in_the_past_tense_starts_a_stage_and_the_road_the_ego_turned_into_is_its_destination():
+    scene = lower("We sat at the lights behind a lorry. When they went green we turned right, and a man was "
+                  "crossing the street we were turning into.").scenario
+    assert [a.action for a in scene.stages[-1].agents if a.is_ego] == ["turn_right"]
+    assert ("pedestrian", "cross_the_road", "at_the_destination") in [
+        (a.type, a.action, a.relative_to_ego) for a in scene.agents()]

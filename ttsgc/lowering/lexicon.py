@@ -16,6 +16,7 @@ from functools import lru_cache
 from pathlib import Path
 
 FOLDER = Path(__file__).resolve().parent / "lexicon"
+BASE_VARIANT_CATEGORIES = ("sequence",)  # conditions written in any tense; other phrases keep their own forms
 CATEGORIES = ("agents", "actions", "positions", "road", "weather", "behaviours", "numbers", "sequence")
 MAX_DIGITS = 6  # a number with more digits than this is read as "too large"
 TOO_LARGE = 10 ** MAX_DIGITS
@@ -150,10 +151,17 @@ def lexicon() -> Lexicon:
     content = tuple(sorted(w for w in words if len(w) > 3 and w not in function))
     kinds = {words: meaning for meaning, words in _entries("kinds")}
     starts: dict = {}
+    lex = Lexicon(phrases, 0, frozenset(words | function | set(irregular.values())), content, irregular, spelling,
+                  function, kinds, starts)
+    for phrase, entry in list(phrases.items()):  # "when the light goes green" also read as "when it went green"
+        if len(phrase) > 1 and entry[0] in BASE_VARIANT_CATEGORIES:
+            based = tuple(lex.base(w)[0] for w in phrase)
+            if based != phrase:
+                phrases.setdefault(based, entry)
     for phrase in phrases:
         starts[phrase[0]] = max(starts.get(phrase[0], 0), len(phrase))
-    return Lexicon(phrases, max(len(p) for p in phrases), frozenset(words | function | set(irregular.values())),
-                   content, irregular, spelling, function, kinds, starts)
+    return Lexicon(phrases, max(len(p) for p in phrases), lex.vocabulary, content, irregular, spelling, function,
+                   kinds, starts)
 
 
 TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#\d|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
@@ -265,6 +273,16 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"'m\b", " am", text)
     text = re.sub(r"'d\b", " would", text)
     text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
+    text = re.sub(r"^\s*(?:good\s+)?(?:morning|afternoon|evening)\s*[!,.]+", " ", text)  # a greeting, not the time
+    text = re.sub(r"\b(?:can|could|would|will)\s+(?:you|u)\s+(?:please\s+|pls\s+|plz\s+)?(?=(?:make|create|build|"
+                  r"generate|give|show|simulate|set|write|do|add|put|design|produce|model|mock|spin|whip|knock|"
+                  r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
+    text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
+    text = re.sub(r"\b(turn\w*|lane|changed?|changes|changing|from|to|on|go|goes|going|went|merge\w*|move\w*|"
+                  r"swerve\w*|veer\w*|hard|unprotected|protected) (l|r)\b(?![#\d])",
+                  lambda m: f"{m.group(1)} {'left' if m.group(2) == 'l' else 'right'}", text)  # "changed lane L"
+    text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
+                  lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
     text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end
     text = re.sub(r"\s[-\u2013\u2014]+\s|[\u2013\u2014]", " , ", text)  # a dash between words is a pause

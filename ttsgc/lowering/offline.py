@@ -189,7 +189,30 @@ def _units(tokens: list[Token]) -> list[Unit]:
         category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
-    return _short_names(out)
+    return _short_names(_turned_into(out))
+
+
+def _turned_into(units: list[Unit]) -> list[Unit]:
+    """'crossing the road I was turning into': a relative clause on a road noun naming where the ego turns."""
+    out, k = [], 0
+    while k < len(units):
+        u = units[k]
+        out.append(u)
+        k += 1
+        if u.tokens[-1].word not in ("road", "street", "avenue") or k >= len(units):
+            continue
+        j = k + (units[k].word in ("that", "which"))
+        if not (j < len(units) and units[j].category == "agents" and units[j].meaning == "ego"):
+            continue
+        j += 1
+        while j < len(units) and units[j].category == "word" and units[j].word in AUXILIARIES | {"am", "about"}:
+            j += 1
+        if j + 1 < len(units) and units[j].category == "actions" and units[j].meaning.startswith("turn") and \
+                units[j + 1].word in ("into", "onto"):
+            tokens = tuple(t for x in units[k:j + 2] for t in x.tokens)
+            out.append(Unit(units[k].start, units[j + 1].end, "positions", "destination", tokens))
+            k = j + 2
+    return out
 
 
 def _short_names(units: list[Unit]) -> list[Unit]:
