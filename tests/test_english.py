@@ -1018,3 +1018,23 @@ def test_a_condition_in_the_past_tense_starts_a_stage_and_the_road_the_ego_turne
     assert [a.action for a in scene.stages[-1].agents if a.is_ego] == ["turn_right"]
     assert ("pedestrian", "cross_the_road", "at_the_destination") in [
         (a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+
+
+def test_stopped_traffic_holds_the_ego_and_those_beside_it_at_a_red_light_wait_too():
+    assert ("car", "stop", "ego") in agents("a moped weaving between lanes in a traffic jam")
+    assert ("car", "stop", "left") in agents("We're held at a red light with a van alongside in the left lane.")
+
+
+def test_a_denial_ends_with_its_sentence():
+    found = road("ped: darts out from the right, no crossing. road: mid-block, no junction.")
+    assert found.junction is False and "crosswalk" in found.without_objects
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("ped crossing front at dusk", ("pedestrian", "cross_the_road", "front")),
+    ("The ego goes straight on the cross-road while a van comes from the opposite side.",
+     ("car", "go_straight", "road_of_straight")),
+    ("You have a green arrow for a protected right.", ("car", "turn_right", "ego")),
+])
+def test_short_forms_of_crossing_people_crossroads_and_turns(prompt, expected):
+    assert expected in agents(prompt)

@@ -288,6 +288,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\s[-\u2013\u2014]+\s|[\u2013\u2014]", " , ", text)  # a dash between words is a pause
     text = re.sub(r"\b4\s?x\s?4s?\b", "four by four", text)  # "a 4x4"
     text = re.sub(r"(\d)(kmh|mph|m|s|km|metres|meters|seconds)\b", r"\1 \2", text)
+    text = re.sub(r"\bcross-roads?\b", "crossroads", text)  # the junction, not "cross road"
     text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
     text = re.sub(r"\n\s*\n", " . ", text)
     text = re.sub(r"s' ", "s 's ", text)

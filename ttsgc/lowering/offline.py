@@ -235,7 +235,7 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
                        "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
                        "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
                        "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead",
-                       "very", "infront", "one"}
+                       "very", "infront", "one", "front"}
 
 
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
@@ -267,12 +267,13 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                     "finish", "finishes", "while", "when", "still", "already")
     nxt2 = tokens[m.end + 1].word if m.end + 1 < len(tokens) else ""
     place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
-    if m.category == "road" and span[-1].word == "crossing" and (len(span) == 1 or span[0].base == "pedestrian") and (
+    if m.category == "road" and span[-1].word in ("crossing", "xing") and (
+            len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
             nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
                                          and len(span) == 1):  # "no crossing", "a crossing": the noun  # "the pedestrian crossing ahead is blocked": the crossing
         out = []
-        if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
+        if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians", "ped", "peds"):
             out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
         out.append(Unit(m.end - 1, m.end, "actions", "cross", span[-1:]))
         return out
@@ -299,10 +300,13 @@ def _road(r: _Reader) -> RoadSpec:
         if word not in target and word not in other:
             target.append(word)
 
+    negated_in = -1
     for k, u in enumerate(units):
+        if negated and u.tokens[0].sentence != negated_in:
+            negated = False  # "no crossing. Road: mid-block": a denial ends with its sentence
         if u.category == "word" and u.word in NEGATIONS or (u.category == "word" and u.word.endswith("n't")) \
                 or (u.category == "numbers" and u.meaning == "0"):
-            negated = True
+            negated, negated_in = True, u.tokens[0].sentence
             r.mark(u)
             if k > 0 and units[k - 1].category == "agents" and units[k - 1].meaning not in ("none", "ego") and \
                     k + 1 < len(units) and units[k + 1].category == "road" and units[k + 1].meaning == "traffic_light":
@@ -1481,7 +1485,7 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
     """'at the start of the manoeuvre', 'during the turn': a manoeuvre named as a noun after a preposition,
     nobody's predicate."""
     return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
-        units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "for", "until", "since")
+        units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since")
 
 
 def _denied_verb(units: list[Unit], i: int) -> bool:
@@ -1584,13 +1588,25 @@ def _place_in_queue(r: _Reader) -> None:
             r.notes.append(f"inferred: '{w} in the queue' puts {n - 1 - ahead} car(s) ahead of the ego")
         r.used.update(range(i, i + 4))
         break
+    jammed = any(u.category == "agents" and u.meaning == "none" and u.base in STANDING_TRAFFIC for u in r.units)
+    if jammed:
+        ego = ego or _ego_entity(r, 0)
+    if jammed and not any(a[0] == 0 and a[2] > 0 for a in ego.actions):
+        ego.actions.append((0, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "in stopped traffic": it stands
+        r.notes.append("inferred: the ego stands in the stopped traffic")
     if ego is None or not any(a[4] == "stop" and a[0] == 0 for a in ego.actions) or \
-            not RED_OR_QUEUE & set(words) and "traffic_light" not in _said_signals(r):
+            not RED_OR_QUEUE & set(words) and "traffic_light" not in _said_signals(r) and not jammed:
         return
-    for e in r.entities:
-        if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and "ahead" in e.features \
-                and not e.features & {"side_left", "side_right", "road_straight", "toward"} and e.stage == 0:
+    for e in r.entities:  # ahead in the queue, or level beside the ego at the line: standing too
+        if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and e.stage == 0 and (
+                "ahead" in e.features and not e.features & {"side_left", "side_right", "road_straight", "toward"}
+                or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}):
             e.actions.append((0, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+
+
+STANDING_TRAFFIC = {"stop traffic", "stopped traffic", "traffic jam", "queue of traffic", "stationary traffic",
+                    "standstill traffic", "gridlock", "queued traffic", "queuing traffic", "queueing traffic",
+                    "jammed traffic", "tailback"}
 
 
 def _said_signals(r: _Reader) -> set[str]:
