@@ -1038,3 +1038,15 @@ def test_a_denial_ends_with_its_sentence():
 ])
 def test_short_forms_of_crossing_people_crossroads_and_turns(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego merging R onto the dual carriageway.", ("car", "change_lane_to_right", "ego")),
+    ("SIM-7 cut-in\n\nActors:\n- Ped_2: crosses from the right in front of the hero",
+     ("pedestrian", "cross_the_road", "front_right")),
+    ("a jogger ran straight out in front of me", ("pedestrian", "cross_the_road", "front")),
+    ("One van is overtaking from right side and after overtake it is coming in ego lane.",
+     ("car", "change_lane_to_left", "back_right")),
+])
+def test_more_short_forms_keys_with_underscores_and_after_a_bare_verb(prompt, expected):
+    assert expected in agents(prompt)

@@ -168,7 +168,7 @@ TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#\d|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 
 
-KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/-]{0,30}?)\s*[:|]\s*(.*)$")
+KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/_-]{0,30}?)\s*[:|]\s*(.*)$")
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
               "description", "goal", "purpose", "report", "note"}
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
@@ -278,8 +278,8 @@ def tokenize(text: str) -> list[Token]:
                   r"generate|give|show|simulate|set|write|do|add|put|design|produce|model|mock|spin|whip|knock|"
                   r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
     text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
-    text = re.sub(r"\b(turn\w*|lane|changed?|changes|changing|from|to|on|go|goes|going|went|merge\w*|move\w*|"
-                  r"swerve\w*|veer\w*|hard|unprotected|protected) (l|r)\b(?![#\d])",
+    text = re.sub(r"\b(turn\w*|lane|chang\w*|from|to|on|go|goes|going|went|merg\w*|mov\w*|swerv\w*|veer\w*|"
+                  r"hard|unprotected|protected|pull\w*|cut\w*|head\w*|bear\w*|exit\w*|filter\w*) (l|r)\b(?![#\d])",
                   lambda m: f"{m.group(1)} {'left' if m.group(2) == 'l' else 'right'}", text)  # "changed lane L"
     text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
                   lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"

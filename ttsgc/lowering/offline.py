@@ -708,7 +708,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             out.append(Clause(current, stage, condition, link=link, after_subordinate=subordinate))
         current, condition, link = [], next_condition, next_link
 
+    skip_next = False
     for k, u in enumerate(units):
+        if skip_next:
+            skip_next = False
+            r.mark(u)
+            continue
         nxt = units[k + 1] if k + 1 < len(units) else None
         new_sentence = u.tokens[0].sentence != sentence
         sentence = u.tokens[0].sentence
@@ -718,8 +723,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "sequence" and prev_word in RELATIVES:
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
-        if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and \
-                nxt.tokens[0].word.endswith("ing"):
+        if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and (
+                nxt.tokens[0].word.endswith("ing") or nxt.category == "actions"):
+            if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
+                skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
         if u.category == "sequence" and not (u.word == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers")) and not (
@@ -1425,8 +1432,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
-        if u.meaning == "ego_lane" and i > 0 and units[i - 1].word in ("into", "onto", "across"):
-            u.meaning = "into_ego_lane"  # "moves ... into the ego's lane"
+        if u.meaning == "ego_lane" and i > 0 and (units[i - 1].word in ("into", "onto", "across") or (
+                units[i - 1].category == "actions" and units[i - 1].tokens[0].base in STEERING | {"come", "get"}
+                and u.tokens[0].word == "in")):
+            u.meaning = "into_ego_lane"  # "moves ... into the ego's lane", "is coming in ego lane"
         owner = _modifier_owner(units, i, phrases, subject, main_verbs, participles)
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
                 not any(e in subject for e in owner):
