@@ -1050,3 +1050,23 @@ def test_short_forms_of_crossing_people_crossroads_and_turns(prompt, expected):
 ])
 def test_more_short_forms_keys_with_underscores_and_after_a_bare_verb(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("If a scooter is in your blind spot on the right, don't change lanes.", ("motorcycle", "go_straight", "back_right")),
+    ("ego straight, van from R runs red", ("car", "go_straight", "road_of_right_turn")),
+    ("Unit 2, a grey hatchback, turned left across the path of Unit 1, the AV, which was going straight.",
+     ("car", "turn_left", "road_of_straight")),
+    ("A car waiting on the road on the left pulls out and turns right across our path.",
+     ("car", "turn_right", "road_of_left_turn")),
+    ("ego R, oncoming bus straight, ped at dest", ("pedestrian", "cross_the_road", "at_the_destination")),
+    ("A Vauxhall in lane two undertook us.", ("car", "go_straight", "back_right")),
+    ("A dog walker is standing on the verge to our right.", ("pedestrian", "on_the_sidewalk", "right")),
+])
+def test_places_said_in_other_ways(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_pulling_out_at_a_junction_enters_it_and_the_tail_of_a_jam_is_approached():
+    assert ("car", "go_straight", "ego") in agents("At the give-way we pull out to go straight; a van comes from the right.")
+    assert ("car", "go_straight", "ego") in agents("The tail end of a traffic jam: two cars stationary in our lane ahead.")

@@ -279,7 +279,7 @@ def tokenize(text: str) -> list[Token]:
                   r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
     text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
     text = re.sub(r"\b(turn\w*|lane|chang\w*|from|to|on|go|goes|going|went|merg\w*|mov\w*|swerv\w*|veer\w*|"
-                  r"hard|unprotected|protected|pull\w*|cut\w*|head\w*|bear\w*|exit\w*|filter\w*) (l|r)\b(?![#\d])",
+                  r"hard|unprotected|protected|pull\w*|cut\w*|head\w*|bear\w*|exit\w*|filter\w*|ego) (l|r)\b(?![#\d])",
                   lambda m: f"{m.group(1)} {'left' if m.group(2) == 'l' else 'right'}", text)  # "changed lane L"
     text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
                   lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"

@@ -314,7 +314,7 @@ def _road(r: _Reader) -> RoadSpec:
                 negated = False
             continue
         if u.category == "actions" and u.base in ("yield", "give way") and (
-                k == 0 or units[k - 1].category in ("comma", "word") and units[k - 1].word in (",", "a", "at", "with")
+                k == 0 or units[k - 1].category in ("comma", "word") and units[k - 1].word in (",", "a", "at", "with", "the")
                 or (k + 1 < len(units) and units[k + 1].word in ("sign", "signs", "junction", "line", "markings"))):
             put("yield", negated)  # "a give way junction", "roundabout entry, give way": the sign
             r.mark(u)
@@ -322,7 +322,9 @@ def _road(r: _Reader) -> RoadSpec:
             continue
         if u.category == "sequence" and {"light", "lights", "signal", "green"} & {t.word for t in u.tokens}:
             put("traffic_light", False)  # "when the light goes green": a signal there
-        if u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
+        if u.category == "actions" and {"stop", "sign"} <= {t.word for t in u.tokens}:
+            put("stop", False)  # "runs the stop sign"
+        elif u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
             put("traffic_light", False)  # "runs a red light"
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
                                                                                           "signaled") \
@@ -760,7 +762,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             short_name = bool(current) and current[-1].category == "agents" and nxt is not None and \
                 nxt.category == "agents" and len(nxt.tokens) == 1 and k + 2 < len(units) and \
                 units[k + 2].category == "comma" and not nxt.tokens[0].plural  # "a target (GVT), ..."
-            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name:
+            ego_named = bool(current) and current[-1].category == "agents" and current[-1].meaning != "ego" and \
+                any(x.category == "agents" and x.meaning == "ego" for x in units[k + 1:k + 3]) and \
+                all(x.category == "agents" or x.word in ("the", "a", "an") for x in units[k + 1:k + 3]) and \
+                (k + 3 >= len(units) or units[k + 2].category == "comma" or units[k + 3].category == "comma")
+            # "across the path of Unit 1, the AV, which ...": the unit is named the ego
+            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -1597,7 +1604,9 @@ def _place_in_queue(r: _Reader) -> None:
             r.notes.append(f"inferred: '{w} in the queue' puts {n - 1 - ahead} car(s) ahead of the ego")
         r.used.update(range(i, i + 4))
         break
-    jammed = any(u.category == "agents" and u.meaning == "none" and u.base in STANDING_TRAFFIC for u in r.units)
+    jammed = any(u.category == "agents" and u.meaning == "none" and u.base in STANDING_TRAFFIC and k > 0 and (
+        r.units[k - 1].word == "in" or k > 1 and r.units[k - 1].word in ("a", "the") and r.units[k - 2].word == "in")
+        for k, u in enumerate(r.units))  # "in stopped traffic"; not "the tail end of a traffic jam"
     if jammed:
         ego = ego or _ego_entity(r, 0)
     if jammed and not any(a[0] == 0 and a[2] > 0 for a in ego.actions):
@@ -2017,6 +2026,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
+    if "across_path" in f and (action or "").startswith("turn") and not f & {
+            "road_left", "road_right", "from_left", "from_right", "side_left", "side_right", "cross_road"}:
+        f.add("road_straight")  # "turned left across our path": the oncoming turner
     if "toward" in f and not lane_move and not (side and f"bare_{side}" not in f):
         f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no
     if "road_straight" in f and not person:  # where it comes from wins over where it heads
@@ -2087,8 +2099,8 @@ def _side_of(f: set) -> str | None:
 def _final_action(e: Entity, action: str | None, direction: str | None, position: str) -> str:
     side_now = "left" if "left" in position else "right" if "right" in position else None
     if action is None:
-        if e.type == "pedestrian":
-            return "on_the_sidewalk" if "on_sidewalk" in e.features or e.road_type == "sidewalk" \
+        if e.type == "pedestrian":  # standing on the pavement or the verge, said no more: stays there
+            return "on_the_sidewalk" if "on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder") \
                 and "crosswalk" not in e.features else "cross_the_road"
         return "go_straight"
     if action in ("turn_left", "turn_right"):
@@ -2110,8 +2122,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "block":
         return "block_the_ego"
     if action == "stop":
-        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type == "sidewalk"):
-            return "on_the_sidewalk"  # standing on the pavement
+        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder")):
+            return "on_the_sidewalk"  # standing on the pavement or the verge
         return "stop"
     if action == "cross":
         return "cross_the_road" if e.type in V.VULNERABLE_TYPES else "go_straight"
@@ -2291,8 +2303,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     ego_entity = next((e for e in r.entities if e.is_ego), None)
     stage_count = 1 + max([e.stage for e in r.entities] + [a[0] for e in r.entities for a in e.actions] + [0])
     stages: list[list[Agent]] = [[] for _ in range(stage_count)]
-    ego_action, _ = _action(ego_entity, 0) if ego_entity else (None, None)
-    ego_action = _sideways(ego_action, junction)
+    ego_action = _ego_class(ego_entity, 0, junction) if ego_entity else None
     ego_type = ego_entity.type if ego_entity else "car"
     ego = Agent(name="ego", type=ego_type if ego_type in V.EGO_TYPES else "car", is_ego=True,
                 action=_ego_action(ego_entity, ego_action, 0),
@@ -2302,7 +2313,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     if ego_entity is not None:
         for k in range(1, stage_count):
             if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
-                action = _ego_action(ego_entity, _sideways(_action(ego_entity, k)[0], junction), k)
+                action = _ego_action(ego_entity, _ego_class(ego_entity, k, junction), k)
                 if language_allows_later_ego():
                     stages[k].append(Agent(name="ego", type=ego.type, is_ego=True, action=action))
                 else:
@@ -2396,6 +2407,15 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             if e.key in oncoming:
                 oncoming_names.add(name)
     return [s for k, s in enumerate(stages) if s or k == 0], oncoming_names
+
+
+def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
+    """The ego's action class in a stage, read against the junction context."""
+    action, direction = _action(e, stage)
+    action = _sideways(action, junction)
+    if action == "cut_in" and direction is None and junction:
+        return "move"  # "pull out at the stop sign to go straight": into the junction, no lane change
+    return action
 
 
 def _placed(e: Entity) -> bool:
