@@ -1070,3 +1070,22 @@ def test_places_said_in_other_ways(prompt, expected):
 def test_pulling_out_at_a_junction_enters_it_and_the_tail_of_a_jam_is_approached():
     assert ("car", "go_straight", "ego") in agents("At the give-way we pull out to go straight; a van comes from the right.")
     assert ("car", "go_straight", "ego") in agents("The tail end of a traffic jam: two cars stationary in our lane ahead.")
+
+
+def test_one_on_each_side_behind_and_a_counted_list_after_a_colon():
+    assert agents("Two scooters come up behind us, one on each side.") == sorted(
+        [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left"),
+         ("motorcycle", "go_straight", "back_right")])
+    assert agents("There are three vans: one in front of the ego, one behind and one on the left.") == sorted(
+        [("car", "go_straight", "ego"), ("car", "go_straight", "front"), ("car", "go_straight", "back"),
+         ("car", "go_straight", "left")])
+
+
+def test_and_then_keeps_the_subject_and_the_car_behind_it_is_another_car():
+    assert ("truck", "turn_left", "front") in agents("The lorry ahead signals left and then turns left into a yard.")
+    assert len(agents("A cab pulls up on the right, and the car behind it goes round it.")) == 3
+
+
+def test_a_crossing_patrol_is_a_person_and_zooming_out_is_crossing():
+    assert ("pedestrian", "cross_the_road", "front") in agents("A school crossing patrol steps out in front of us.")
+    assert ("cyclist", "cross_the_road", "front_left") in agents("a kid on a bike zooms out from the left")

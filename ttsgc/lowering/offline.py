@@ -739,7 +739,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 close()
                 stage += 1
             whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear"}  # "when the light goes green": said in full
-            close(next_condition=u.meaning == "once" and not whole)
+            joined_on = (prev_word in ("and", ",") or u.tokens[0].word == "and") and not new_sentence and \
+                not _starts_subject(units, k + 1)  # "indicates right and then turns"
+            close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole)
             continue
         if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
             r.mark(u)
@@ -812,6 +814,19 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
             return True
         if not (x.category == "word" and x.word in AUXILIARIES | {"then", "now", "just", "also"} or x.category == "agents"):
             return False
+    return False
+
+
+def _starts_subject(units: list[Unit], k: int) -> bool:
+    """A clause starting here names its own subject ('then the truck turns', 'then we stop')."""
+    for u in units[k:k + 4]:
+        if u.category == "agents":
+            return True
+        if not (u.category in ("numbers", "number", "behaviours") or u.category == "word" and (
+                u.word in DETERMINERS or u.word in SUBJECT_PRONOUNS)):
+            return False
+        if u.word in SUBJECT_PRONOUNS:
+            return True
     return False
 
 
@@ -1063,6 +1078,8 @@ def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
     nxt = units[head + 1] if head + 1 < len(units) else None
     if nxt is None or nxt.category != "positions":
         return False
+    if nxt.tokens[-1].word in ("it", "them") and nxt.meaning in ("ahead", "behind", "level"):
+        return True  # "a taxi stops ... the car behind it": another car, placed by the taxi
     return bool(OPPOSITE_PLACES.get(nxt.meaning, set()) & e.features)
 
 
@@ -1880,8 +1897,8 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
                          for u in units[last.index + 1:i])
             if last.entity in subject and copula:
                 return subject  # "both the truck and the pedestrian are in the front right"
-            if last.entity.is_ego and subject and last.entity not in subject and \
-                    units[last.index - 1].category == "positions":
+            if last.entity.is_ego and subject and last.entity not in subject and last.first > 0 and \
+                    units[last.first - 1].category == "positions":
                 return subject  # "a bicyclist is coming up behind you on your right": the bicyclist's side
             return last.group or [last.entity]
         return subject
@@ -2290,6 +2307,8 @@ def _title(prompt: str, tokens: list[Token]) -> range:
         return range(0)
     if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
         return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
+    if re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
+        return range(0)  # "There are four cars: one in front ...": a sentence, not a title
     if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
     n = len(tokenize(m.group(1)))
@@ -2391,7 +2410,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         for n in range(e.count):
             if "both_sides" in e.features:  # "cars cutting in from different directions": one on each side
                 side = SIDES[n % 2]
-                placed = {f"from_{side}"} if junction else {f"side_{side}", "from_lane", "ahead"}
+                placed = {f"from_{side}"} if junction else {f"side_{side}", "from_lane"} | (
+                    {"ahead"} if not e.features & {"behind", "level", "overtaking"} else set())
                 member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"}) | placed,
                                 road_type=e.road_type)
                 position, _ = _position(member, action, junction, has_crosswalk, target_side)
