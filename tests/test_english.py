@@ -1089,3 +1089,14 @@ def test_and_then_keeps_the_subject_and_the_car_behind_it_is_another_car():
 def test_a_crossing_patrol_is_a_person_and_zooming_out_is_crossing():
     assert ("pedestrian", "cross_the_road", "front") in agents("A school crossing patrol steps out in front of us.")
     assert ("cyclist", "cross_the_road", "front_left") in agents("a kid on a bike zooms out from the left")
+
+
+def test_the_first_and_the_second_are_members_of_the_group_just_counted():
+    assert agents("We are passed by two vans, the first on the left and the second on the right.") == sorted(
+        [("car", "go_straight", "ego"), ("car", "go_straight", "back_left"), ("car", "go_straight", "back_right")])
+
+
+def test_a_vehicle_crossing_left_to_right_is_cross_traffic_at_a_junction():
+    scene = lower("ego waits at the stop line, bus crossing L to R").scenario
+    assert ("bus", "go_straight", "road_of_left_turn") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+    assert scene.road.junction is True

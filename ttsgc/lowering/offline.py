@@ -1267,6 +1267,14 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     pronouns = []
     for i, u in enumerate(units):
+        if u.word in ORDINAL_MEMBERS and i > 0 and units[i - 1].word == "the" and not (
+                i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number")) and not any(
+                np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions"):
+            member = _member(r, recent)  # "two motorbikes, the first on the left and the second on the right"
+            if member is not None:
+                r.mark(u)
+                phrases.append(NounPhrase(member, i, i - 1))
+            continue
         if u.word == "one" and u.category in ("word", "numbers") and not any(np.first <= i <= np.index
                                                                               for np in phrases) \
                 and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
@@ -1725,6 +1733,9 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
     if cutting and named:
         return None  # "Double cut-in on a motorway ...": the name of the case, not the ego's doing
     return _ego_entity(r, stage)
+
+
+ORDINAL_MEMBERS = {"first", "second", "third", "fourth", "fifth", "last", "latter", "former"}
 
 
 def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
@@ -2235,6 +2246,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
         (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
         for st in {a[0] for a in e.actions})  # "once it turns green we turn left": a later turn is at a junction
+    for e in r.entities:  # "a truck crossing left to right": a vehicle crossing is cross traffic at a junction
+        if not e.is_ego and e.type not in V.VULNERABLE_TYPES and any(a[4] == "cross" for a in e.actions):
+            e.features.add("cross_road")
     junction_features = any(f in e.features for e in r.entities for f in ("road_left", "road_right",
                                                                            "destination", "cross_road")
                             if not (e.type == "pedestrian" and f.startswith("road_")))  # "crossing from the left"
