@@ -1100,3 +1100,10 @@ def test_a_vehicle_crossing_left_to_right_is_cross_traffic_at_a_junction():
     scene = lower("ego waits at the stop line, bus crossing L to R").scenario
     assert ("bus", "go_straight", "road_of_left_turn") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
     assert scene.road.junction is True
+
+
+def test_jargon_abbreviations_ev_lv_and_a_vru_crossing():
+    assert ("ambulance", "go_straight", "back") in agents("EV approaching from the rear with sirens on.")
+    assert ("car", "stop", "front") in agents("LV decelerates to a standstill.")
+    assert ("pedestrian", "cross_the_road", "front_left") in agents("VRU crossing from the farside, no crosswalk.")
+    assert ("bus", "stop", "front_right") in agents("a bus at a bus stop on the right")

@@ -278,6 +278,7 @@ def tokenize(text: str) -> list[Token]:
                   r"generate|give|show|simulate|set|write|do|add|put|design|produce|model|mock|spin|whip|knock|"
                   r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
     text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
+    text = re.sub(r"\blv\b", "lead vehicle", text)  # "LV decelerates": the lead vehicle
     text = re.sub(r"\b(l|r) to (l|r)\b", lambda m: " to ".join("left" if x == "l" else "right" for x in m.groups()),
                   text)  # "crossing L to R"
     text = re.sub(r"\b(turn\w*|lane|chang\w*|from|to|on|go|goes|going|went|merg\w*|mov\w*|swerv\w*|veer\w*|"

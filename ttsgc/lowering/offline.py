@@ -261,7 +261,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         return [Unit(m.start, m.end - 1, "actions", m.meaning, span[:-1]),  # "is passed by the ego": a passive
                 Unit(m.end - 1, m.end, "word", "by", span[-1:])]
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
-                                                      "people", "jogger", "man", "woman", "boy", "girl", "student")
+                                                      "people", "jogger", "man", "woman", "boy", "girl", "student",
+                                                      "vru", "children", "kids", "peds", "pedestrians", "walker",
+                                                      "toddler", "pensioner", "cyclists", "bicyclist")
     after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be", "not",
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
