@@ -1200,8 +1200,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
-        if action == "stop" and {t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
-                                                                 "stall", "stalled", "double", "abandon"}:
+        if action == "stop" and ({t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
+                                                                  "stall", "stalled", "double", "abandon"}
+                                 or {"bus", "stop"} <= {t.word for t in u.tokens}):  # "at a bus stop": at the kerb
             e.features.add("parked")
         if action == "stop" and e.is_ego and {t.base for t in u.tokens} & {"brake", "brakes"} and not (
                 {t.word for t in u.tokens} & {"halt", "stop", "standstill"}) and not (
