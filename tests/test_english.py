@@ -1107,3 +1107,31 @@ def test_jargon_abbreviations_ev_lv_and_a_vru_crossing():
     assert ("car", "stop", "front") in agents("LV decelerates to a standstill.")
     assert ("pedestrian", "cross_the_road", "front_left") in agents("VRU crossing from the farside, no crosswalk.")
     assert ("bus", "stop", "front_right") in agents("a bus at a bus stop on the right")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego is following slow-moving tractor on country road.", [("car", "go_straight", "ego"),
+                                                               ("truck", "go_straight", "front")]),
+    ("VUT approaches stationary target car in same lane.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Police car came up from behind, passed ego on left and carried on.", [("car", "go_straight", "ego"),
+                                                                           ("police", "go_straight", "back_left")]),
+    ("White van parked on verge ahead, child hidden behind van runs out.", [("car", "go_straight", "ego"),
+                                                                          ("car", "stop", "front_right"),
+                                                                          ("pedestrian", "cross_the_road", "front_right")]),
+])
+def test_sentences_without_articles(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The AV turns right and a cyclist crosses the road the AV is turning into.",
+     ("cyclist", "cross_the_road", "at_the_destination")),
+    ("A van ahead in the AV lane brakes to a halt.", ("car", "stop", "front")),
+    ("The ego turns left; a woman crosses on the zebra crossing of the street it turns into.",
+     ("pedestrian", "cross_the_road", "near_the_crosswalk")),
+    ("Left on red here: the ego turns left after stopping.", ("car", "turn_left", "ego")),
+    ("The ego bus pulls out right from the stop.", ("bus", "change_lane_to_right", "ego")),
+    ("ambulance behind with siren, pull over to the left", ("car", "change_lane_to_left", "ego")),
+])
+def test_the_ego_named_any_way_and_mirror_images_read_alike(prompt, expected):
+    assert expected in agents(prompt)

@@ -171,8 +171,11 @@ def _units(tokens: list[Token]) -> list[Unit]:
     out, i = [], 0
     while i < len(tokens):
         m = found.get(i)
-        if m is not None and m.category == "agents" and m.meaning == "ego" and tokens[m.end - 1].possessive and \
-                m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front"):
+        if m is not None and m.category == "agents" and m.meaning == "ego" and (
+                tokens[m.end - 1].possessive or tokens[m.end - 1].word not in ("i", "we", "you", "me", "us")) and \
+                m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front") and \
+                tokens[m.end].sentence == tokens[m.end - 1].sentence and (tokens[m.end - 1].possessive or
+                                                                           tokens[m.end].word in ("lane", "path")):
             span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
             meaning = "ahead" if span[-1].word == "front" else "ego_lane"
             before = m.start - 1 if m.start > 0 and tokens[m.start - 1].word != "the" else m.start - 2
@@ -202,6 +205,7 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
         if u.tokens[-1].word not in ("road", "street", "avenue") or k >= len(units):
             continue
         j = k + (units[k].word in ("that", "which"))
+        j += j < len(units) and units[j].word == "the"
         if not (j < len(units) and units[j].category == "agents" and units[j].meaning == "ego"):
             continue
         j += 1
@@ -944,7 +948,10 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             in_determiner = True
         elif in_determiner:
             break
-        elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)) or \
+        elif units[head].meaning == "ego" and u.category == "actions":
+            break  # "passed ego on right": the verb before the ego is no premodifier of it
+        elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)
+                                            and not any(m.category == "actions" for m in modifiers)) or \
                 (u.category == "positions" and len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS) or \
                 (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS):
             modifiers.append(u)
@@ -953,9 +960,11 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         first = k
         k -= 1
     # a premodifier run without a determiner in front of it belongs to what came before ("ego following truck")
-    if not words and count is None and modifiers and first > 0 and units[first - 1].category in ("agents",
-                                                                                                "actions"):
-        first = head
+    if not words and count is None and modifiers and first > 0 and (
+            units[first - 1].category == "agents" or units[first - 1].category == "actions"
+            and modifiers[-1].category != "actions" or units[first - 1].word in AUXILIARIES
+            and modifiers[-1].category == "positions"):
+        first = head  # "ego following truck", "the ego is following slow-moving bus": the predicate's, not a noun's
         modifiers = []
     return count, first, words, modifiers
 
@@ -995,8 +1004,14 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count = UNSPECIFIED.vague_count(count, len(r.entities))
     bare = not words and count is None and not plural and not label and not (
         head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
-    if bare and any((e.head == u.base or u.base in e.aliases) and not e.is_ego and e.count == 1 for e in r.entities):
-        definite = True  # "ego behind cyclist, cyclist swerves left": the same cyclist
+    if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
+                    and e.count == 1 for e in r.entities):
+        definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
+    ego_now = next((e for e in r.entities if e.is_ego), None)
+    if bare and ego_now is not None and u.base in ("vehicle", "car") and (
+            ego_now.head.split()[-1] == u.base or ego_now.head in ("vut", "av", "sv", "ego")) and \
+            not any(not e.is_ego and e.type == "car" for e in r.entities):
+        return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
         driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
@@ -1227,8 +1242,9 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
                     u.meaning.startswith("road") and not turning) or (
                     not turning and any(x.word == "from" for x in units[k + 1:j])) or (
-                    not turning and {"out", "from"} & set(units[k].base.split())):  # "pulling out of a stop on the right"
-                return None  # where it comes from, not where it goes
+                    not turning and {"out", "from"} & set(units[k].base.split()) and not (
+                        j == k + 1 and len(u.tokens) == 1)):  # "pulling out of a stop on the right"
+                return None  # where it comes from, not where it goes ("pulls out right": where it goes)
             r.mark(u)
             u.meaning = "used"
             return "left" if "left" in u.base else "right"
@@ -1529,7 +1545,9 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
     """'at the start of the manoeuvre', 'during the turn': a manoeuvre named as a noun after a preposition,
     nobody's predicate."""
     return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
-        units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since")
+        units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since") or \
+        i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
+            "maneuver", "manoeuvre", "turn", "lane", "overtake", "merge", "cut")  # "at start of manoeuvre"
 
 
 def _denied_verb(units: list[Unit], i: int) -> bool:
@@ -2069,7 +2087,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             if person and crossing and not junction:  # "crossing from the left" with no junction: from that kerb
                 return f"front_{s}", False
             return f"road_of_{s}_turn", False
-    if "destination" in f:
+    if "destination" in f and not ("crosswalk" in f and crossing):  # "on the crosswalk of the road it turns into"
         return "at_the_destination", False
     if "cross_road" in f and not person:
         return f"road_of_{side or UNSPECIFIED['side_of_a_crossing_road']}_turn", False
