@@ -1960,9 +1960,13 @@ def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
     base = verb.tokens[0].base
     obj = next((p for p in phrases if p.entity is not None and p.first - i <= 2), None)
     if base in HIDING and obj is not None:
+        hidden_one = verb.tokens[0].word.endswith(("en", "ed"))  # "a child hidden behind a van": the child
         for t in obj.group or [obj.entity]:
             if not t.is_ego and subject and not subject[0].is_ego:
-                t.relative_to = subject[0]  # "a parked van hides a pedestrian": the pedestrian is at the van
+                if hidden_one:
+                    subject[0].relative_to = subject[0].relative_to or t
+                else:
+                    t.relative_to = subject[0]  # "a parked van hides a pedestrian": the pedestrian is at the van
         return
     if obj is None or obj.entity is None:
         if base in OVERTAKING and base == "overtake":
