@@ -1135,3 +1135,14 @@ def test_sentences_without_articles(prompt, expected):
 ])
 def test_the_ego_named_any_way_and_mirror_images_read_alike(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("lead car ahead of the hero changed lane L at the last moment", ("car", "change_lane_to_left", "front")),
+    ("A man is waiting on the pavement of the road in which the hero is turning; the hero turns right.",
+     ("pedestrian", "on_the_sidewalk", "at_the_destination")),
+    ("Could my lorry turn left at the lights?", ("truck", "turn_left", "ego")),
+    ("Fire lorry coming from the right at the junction.", ("firetruck", "go_straight", "road_of_right_turn")),
+])
+def test_the_ego_takes_no_participle_and_names_of_its_vehicle(prompt, expected):
+    assert expected in agents(prompt)

@@ -204,18 +204,21 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
         k += 1
         if u.tokens[-1].word not in ("road", "street", "avenue") or k >= len(units):
             continue
-        j = k + (units[k].word in ("that", "which"))
+        j = k + (k + 1 < len(units) and units[k].word in ("in", "into", "onto") and units[k + 1].word == "which")
+        j += j < len(units) and units[j].word in ("that", "which")  # "the road (in which) the AV is turning"
         j += j < len(units) and units[j].word == "the"
         if not (j < len(units) and units[j].category == "agents" and units[j].meaning == "ego"):
             continue
         j += 1
         while j < len(units) and units[j].category == "word" and units[j].word in AUXILIARIES | {"am", "about"}:
             j += 1
-        if j + 1 < len(units) and units[j].category == "actions" and units[j].meaning.startswith("turn") and \
-                units[j + 1].word in ("into", "onto"):
-            tokens = tuple(t for x in units[k:j + 2] for t in x.tokens)
-            out.append(Unit(units[k].start, units[j + 1].end, "positions", "destination", tokens))
-            k = j + 2
+        into = j + 1 < len(units) and units[j + 1].word in ("into", "onto")
+        if j < len(units) and units[j].category == "actions" and units[j].meaning.startswith("turn") and (
+                into or units[k].word in ("in", "into", "onto")):
+            end = j + 1 + into
+            tokens = tuple(t for x in units[k:end] for t in x.tokens)
+            out.append(Unit(units[k].start, units[end - 1].end, "positions", "destination", tokens))
+            k = end
     return out
 
 
@@ -843,8 +846,9 @@ def _starts_noun(units: list[Unit], k: int) -> bool:
             return u.meaning != "none"
         if not (u.category in ("numbers", "number", "behaviours") or
                 (u.category == "word" and u.word in DETERMINERS | {"and"}) or
-                (u.category == "positions" and u.word in ADJECTIVE_POSITIONS and len(u.tokens) == 1)):
-            return False
+                (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS)
+                or (u.category == "positions" and u.word in ADJECTIVE_POSITIONS and len(u.tokens) == 1)):
+            return False  # "..., delivery lorry stopped": an unknown word before a noun is its adjective
     return False
 
 
@@ -907,8 +911,9 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
     """(type, is_ego) of an agent unit; the ego's type from its noun ('the ego truck')."""
     if u.meaning == "ego":
         words = [t.base for t in u.tokens]
-        for kind in ("truck", "bus", "motorcycle"):
-            if kind in words:
+        for kind, nouns in (("truck", ("truck", "lorry", "hgv")), ("bus", ("bus", "coach")),
+                            ("motorcycle", ("motorcycle", "motorbike"))):
+            if set(nouns) & set(words):
                 return kind, True
         return "car", True
     if u.meaning == "generic":
@@ -1911,6 +1916,8 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     word = units[i].tokens[0].word  # a later finite verb makes this one a participle; 'to pass' is none
     participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood", "stuck",
                                                                           "broken") or light
+    if np.entity is not None and np.entity.is_ego and not light:
+        return None  # "the lead car ahead of the hero changed lane": the ego takes no participle
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
         return np
     return None
