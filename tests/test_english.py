@@ -1146,3 +1146,20 @@ def test_the_ego_named_any_way_and_mirror_images_read_alike(prompt, expected):
 ])
 def test_the_ego_takes_no_participle_and_names_of_its_vehicle(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A motorbike filtered between the lanes on our right.", ("motorcycle", "go_straight", "back_right")),
+    ("the bloke in front slams on", ("car", "stop", "front")),
+    ("mate in front pulled out onto the main road without looking", ("car", "go_straight", "ego")),
+    ("jct, ego L turn, van opp straight", ("car", "go_straight", "road_of_straight")),
+    ("ego 40kph, ped pavement L", ("pedestrian", "on_the_sidewalk", "left")),
+])
+def test_british_and_terse_idioms(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_group_of_n_is_n_agents_and_counted_parked_cars_between_are_scenery():
+    assert agents("a family of three crosses at the zebra").count(
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")) == 3
+    assert [t for t, _, _ in agents("A boy runs out from between two parked vans.")].count("car") == 1

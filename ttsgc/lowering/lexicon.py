@@ -282,7 +282,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(l|r) to (l|r)\b", lambda m: " to ".join("left" if x == "l" else "right" for x in m.groups()),
                   text)  # "crossing L to R"
     text = re.sub(r"\b(turn\w*|lane|chang\w*|from|to|on|go|goes|going|went|merg\w*|mov\w*|swerv\w*|veer\w*|"
-                  r"hard|unprotected|protected|pull\w*|cut\w*|head\w*|bear\w*|exit\w*|filter\w*|ego) (l|r)\b(?![#\d])",
+                  r"hard|unprotected|protected|pull\w*|cut\w*|head\w*|bear\w*|exit\w*|filter\w*|ego|sidewalk|"
+                  r"pavement|shoulder|kerb|curb|side|lanes?|ahead|behind|front|rear|back) (l|r)\b(?![#\d])",
                   lambda m: f"{m.group(1)} {'left' if m.group(2) == 'l' else 'right'}", text)  # "changed lane L"
     text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
                   lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"

@@ -1047,7 +1047,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         before -= 1  # "between parked cars"
     scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS or \
         any(m.category == "word" and m.word in SCENERY_PREPOSITIONS for m in modifiers)  # "from between parked cars"
-    if scenery and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
+    between = before >= lo and units[before].word == "between"  # "from between two parked cars": scenery too
+    if scenery and plural and (count is None or between) and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
             not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
             count is None and plural and before >= lo and "of" in words
             and units[before].word in ("row", "line", "lot", "rows")):  # "a row of parked cars": scenery
@@ -1278,6 +1279,18 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         np = _resolve(r, units, i, lo, stage, recent)
         phrases.append(np)
         lo = i + 1
+    for np in phrases:  # "a family of four", "a group of six cyclists" ends in its noun; "a convoy of 3"
+        e, i = np.entity, np.index
+        if e is None or not np.introduced or e.is_ego or units[i].base.split()[-1] not in GROUP_NOUNS or \
+                i + 2 >= len(units) or units[i + 1].word != "of" or units[i + 2].category not in ("numbers", "number") \
+                or (i + 3 < len(units) and units[i + 3].category == "agents"):
+            continue
+        value = _word_number(units[i + 2].tokens[0])
+        if value is not None and 1 <= value <= MAX_AGENTS_PER_MENTION:
+            e.count = e.group_open = int(value)
+            np.plural = value > 1
+            r.mark(units[i + 1]), r.mark(units[i + 2])
+            units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     for i, u in enumerate(units):  # "kids are crossing, three of them": the count of the group just named
         if u.category in ("numbers", "number") and i + 2 < len(units) and units[i + 1].word == "of" and \
                 units[i + 2].word in ("them", "those", "these"):
@@ -1683,6 +1696,7 @@ def _said_signals(r: _Reader) -> set[str]:
 
 
 VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people", "lad", "bloke",
+                "mate", "lunatic", "nutter", "maniac", "numpty", "muppet", "idiot", "jerk", "moron",
                 "chap", "fella", "fellow", "gentleman", "young man", "young woman", "teen", "teenager"}
 VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
                         "block"}
@@ -1761,6 +1775,8 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
     return _ego_entity(r, stage)
 
 
+GROUP_NOUNS = {"family", "group", "crowd", "party", "gang", "bunch", "convoy", "column", "pack", "couple", "line",
+               "queue", "peloton", "class", "team", "troop", "pedestrians", "people"}
 ORDINAL_MEMBERS = {"first", "second", "third", "fourth", "fifth", "last", "latter", "former"}
 
 
