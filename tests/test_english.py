@@ -1163,3 +1163,9 @@ def test_a_group_of_n_is_n_agents_and_counted_parked_cars_between_are_scenery():
     assert agents("a family of three crosses at the zebra").count(
         ("pedestrian", "cross_the_road", "near_the_crosswalk")) == 3
     assert [t for t, _, _ in agents("A boy runs out from between two parked vans.")].count("car") == 1
+
+
+def test_a_state_in_the_past_perfect_is_before_the_story_and_a_singular_car_is_no_heading():
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "We were cut up by an Audi that had been sitting in the right lane.")
+    assert ("pedestrian", "on_the_sidewalk", "right") in agents("ego 30kph, van R lane behind, ped pavement R")

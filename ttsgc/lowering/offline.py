@@ -1234,7 +1234,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
-        e.actions.append((stage, strength, ACTION_RANK.get(action, 0), r.tick(), action, direction))
+        earlier = clause_units is not None and k is not None and any(
+            x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
+        # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
+        e.actions.append((stage, strength, ACTION_RANK.get(action, 0), 0 if earlier else r.tick(), action,
+                          direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
 
@@ -2348,7 +2352,7 @@ def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
 
 HEADER_OF_PLACE = (r"(oncoming|opposing|crossing|cross|following|leading|lead|adjacent|left|right|behind|ahead|in front"
                    r"|rear|from the left|from the right|from behind)( (lane|traffic|vehicles?|cars?|agents?|side))*")
-HEADER_FILLER = {"traffic", "vehicle", "vehicles", "car", "cars", "agents", "agent", "and", "lane", "side"}
+HEADER_FILLER = {"traffic", "vehicles", "cars", "agents", "and", "lane", "side"}  # "car R lane behind" is an agent
 
 
 def _header_of_place(units: list[Unit]) -> list[Unit]:
