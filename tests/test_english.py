@@ -1169,3 +1169,16 @@ def test_a_state_in_the_past_perfect_is_before_the_story_and_a_singular_car_is_n
     assert ("car", "change_lane_to_left", "right") in agents(
         "We were cut up by an Audi that had been sitting in the right lane.")
     assert ("pedestrian", "on_the_sidewalk", "right") in agents("ego 30kph, van R lane behind, ped pavement R")
+
+
+def test_one_of_them_is_a_member_of_a_counted_group_and_n_of_them_counts_a_bare_plural():
+    assert agents("Four cyclists wait at the lights ahead; one of them rides off.").count(
+        ("cyclist", "stop", "front")) == 3
+    assert agents("Children are crossing in front of us, five of them.").count(
+        ("pedestrian", "cross_the_road", "front")) == 5
+
+
+def test_the_car_from_the_other_side_is_another_car():
+    found = agents("At the crossroads the car from the left and the car from the right both stop.")
+    assert ("car", "stop", "road_of_left_turn") in found and ("car", "stop", "road_of_right_turn") in found
+    assert ("cyclist", "cross_the_road", "front") in agents("A kid on a bike wobbles off the kerb in front of us.")

@@ -1093,7 +1093,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
 
 
 OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side_left": {"side_right"},
-                   "side_right": {"side_left"}}
+                   "side_right": {"side_left"}, "from_left": {"from_right", "road_right"},
+                   "from_right": {"from_left", "road_left"}, "road_left": {"road_right", "from_right"},
+                   "road_right": {"road_left", "from_left"}}
 
 
 def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
@@ -1302,9 +1304,15 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             group = group or next((e for e in reversed(recent) if e.count > 1), None)
             if group is not None:
                 value = _word_number(u.tokens[0])
-                if value is not None and 0 < value <= MAX_AGENTS_PER_MENTION:
-                    group.count = int(value)
                 r.mark(u), r.mark(units[i + 1]), r.mark(units[i + 2])
+                if value is not None and 0 < value < group.count and group.stage == stage and \
+                        group not in [np.entity for np in phrases]:  # "three wait; one of them crosses": a member
+                    members = [_member(r, [group]) for _ in range(int(value))]
+                    for member in [m for m in members if m is not None]:
+                        phrases.append(NounPhrase(member, i + 2, i))
+                    units[i] = Unit(u.start, u.end, "word", "of", u.tokens)
+                elif value is not None and 0 < value <= MAX_AGENTS_PER_MENTION:
+                    group.count = int(value)  # "kids are crossing, three of them": the group's count
                 units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     pronouns = []
     for i, u in enumerate(units):
