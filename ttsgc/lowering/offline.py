@@ -152,6 +152,7 @@ class _Reader:
     used: set = field(default_factory=set)  # token indexes some rule placed
     entities: list[Entity] = field(default_factory=list)
     order: int = 0
+    clause_mentions: list = field(default_factory=list)  # entities named so far in the clause being read
     after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
@@ -1025,8 +1026,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
-        if len(found) == 1 and not found[0].parent and _placed_elsewhere(found[0], units, head):
-            found = []  # "a car ahead ... the car behind us": another car
+        if len(found) == 1 and not found[0].parent and (_placed_elsewhere(found[0], units, head) or (
+                found[0] in r.clause_mentions and head + 1 < len(units) and units[head + 1].category == "positions")):
+            found = []  # "a car ahead ... the car behind us", "the car from the left and the car from the right"
         if found:
             if len(found) == 1:
                 return NounPhrase(found[0], head, first, plural=plural)
@@ -1277,6 +1279,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         r.mark(units[i])
     if roles:
         units = clause.units = [u for i, u in enumerate(units) if i not in roles]
+    r.clause_mentions = []
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
         u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
         and units[i + 1].meaning not in ("ego", "none"))]
@@ -1284,6 +1287,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in heads:
         np = _resolve(r, units, i, lo, stage, recent)
         phrases.append(np)
+        if np.entity is not None:
+            r.clause_mentions.append(np.entity)
         lo = i + 1
     for np in phrases:  # "a family of four", "a group of six cyclists" ends in its noun; "a convoy of 3"
         e, i = np.entity, np.index
@@ -1803,7 +1808,8 @@ def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
         if group.count < 2:
             continue
         member = Entity(len(r.entities), group.type, False, group.stage, head=group.head, parent=group,
-                        features=set(group.features), actions=list(group.actions), behavior=group.behavior)
+                        features=set(group.features), actions=[(a[0], 1) + a[2:] for a in group.actions],
+                        behavior=group.behavior)  # what the group does, unless the member is said to do otherwise
         group.count -= 1
         group.group_open = max(0, group.group_open - 1)
         r.entities.append(member)
