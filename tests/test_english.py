@@ -1182,3 +1182,7 @@ def test_the_car_from_the_other_side_is_another_car():
     found = agents("At the crossroads the car from the left and the car from the right both stop.")
     assert ("car", "stop", "road_of_left_turn") in found and ("car", "stop", "road_of_right_turn") in found
     assert ("cyclist", "cross_the_road", "front") in agents("A kid on a bike wobbles off the kerb in front of us.")
+
+
+def test_a_manoeuvre_naming_a_test_is_nobodys_predicate():
+    assert ("car", "change_lane_to_right", "ego") in agents("Merge test. Ego merging R onto the main road.")

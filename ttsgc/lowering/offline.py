@@ -1579,6 +1579,9 @@ def _signal_change(units: list[Unit], i: int) -> bool:
 def _named_manoeuvre(units: list[Unit], i: int) -> bool:
     """'at the start of the manoeuvre', 'during the turn': a manoeuvre named as a noun after a preposition,
     nobody's predicate."""
+    if i + 1 < len(units) and units[i + 1].word in ("test", "tests", "scenario", "case", "run", "scene", "event",
+                                                    "situation", "drill", "exercise", "check"):
+        return True  # "merge test", "cut-in scenario": the name of a test
     return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
         units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since") or \
         i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
