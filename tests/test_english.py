@@ -1186,3 +1186,8 @@ def test_the_car_from_the_other_side_is_another_car():
 
 def test_a_manoeuvre_naming_a_test_is_nobodys_predicate():
     assert ("car", "change_lane_to_right", "ego") in agents("Merge test. Ego merging R onto the main road.")
+
+
+def test_a_vehicle_the_ego_queues_behind_stands_in_the_first_stage_whatever_it_does_later():
+    scene = lower("First we wait at a red light behind a lorry. Then the light turns green and we both go.").scenario
+    assert ("truck", "stop", "front") in [(a.type, a.action, a.relative_to_ego) for a in scene.stages[0].agents]

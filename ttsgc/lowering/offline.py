@@ -1656,7 +1656,7 @@ def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subje
         if e is None or e.is_ego or e in subject or e.actions or np.first == 0:
             continue
         if any(u.category == "positions" and u.meaning == "behind" for u in units[max(0, np.first - 2):np.first]):
-            e.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+            e.actions.append((stage, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "2nd": 2, "3rd": 3, "4th": 4,
@@ -1703,7 +1703,7 @@ def _place_in_queue(r: _Reader) -> None:
         if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and e.stage == 0 and (
                 "ahead" in e.features and not e.features & {"side_left", "side_right", "road_straight", "toward"}
                 or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}):
-            e.actions.append((0, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+            e.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
 STANDING_TRAFFIC = {"stop traffic", "stopped traffic", "traffic jam", "queue of traffic", "stationary traffic",
