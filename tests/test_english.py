@@ -1191,3 +1191,13 @@ def test_a_manoeuvre_naming_a_test_is_nobodys_predicate():
 def test_a_vehicle_the_ego_queues_behind_stands_in_the_first_stage_whatever_it_does_later():
     scene = lower("First we wait at a red light behind a lorry. Then the light turns green and we both go.").scenario
     assert ("truck", "stop", "front") in [(a.type, a.action, a.relative_to_ego) for a in scene.stages[0].agents]
+
+
+def test_parts_of_a_counted_group_and_one_lane_each_way():
+    found = agents("Six cyclists: two on the left, four behind us.")
+    assert found.count(("cyclist", "go_straight", "left")) == 2 and found.count(("cyclist", "go_straight", "back")) == 4
+    assert agents("Two vans come the other way on a road with one lane each way.").count(
+        ("car", "go_straight", "front_left")) == 2
+    assert sorted(agents("Of the three lorries ahead, the first turns right, the second stops and the third goes "
+                         "straight.")) == sorted([("car", "go_straight", "ego"), ("truck", "turn_right", "front"),
+                                                  ("truck", "stop", "front"), ("truck", "go_straight", "front")])

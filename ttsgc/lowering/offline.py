@@ -1329,10 +1329,19 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i - 1))
             continue
+        value = _word_number(u.tokens[0]) if u.category in ("numbers", "number") and len(u.tokens) == 1 else None
+        if value is not None and 2 <= value <= MAX_AGENTS_PER_MENTION and not any(
+                np.first <= i <= np.index for np in phrases) and i + 1 < len(units) and \
+                units[i + 1].category == "positions":  # "nine pedestrians: four on the left, five on the right"
+            part = _part_of_group(r, int(value))
+            if part is not None:
+                r.mark(u)
+                phrases.append(NounPhrase(part, i, i, plural=True))
+            continue
         if u.word == "one" and u.category in ("word", "numbers") and not any(np.first <= i <= np.index
                                                                               for np in phrases) \
                 and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
-                and not (i + 1 < len(units) and units[i + 1].word == "of"):
+                and not (i + 1 < len(units) and units[i + 1].word in NOT_A_MEMBER_AFTER_ONE):
             j = i - 1
             while j >= 0 and units[j].category == "word" and units[j].word not in ("a", "an", "another") and \
                     units[j].word not in lexicon().function_words:
@@ -1420,6 +1429,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject = list(pending) + subject
         objects = [np for np in phrases if np.index > first_verb or _is_reference(units, np)]
     subject = [e for e in subject if e is not None]
+    subject = [e for e in subject if not any(x.parent is e for x in subject)]  # "of the two buses, the first": it
     if not subject:
         if clause.antecedent is not None:
             subject = [clause.antecedent]
@@ -1797,7 +1807,28 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
 
 GROUP_NOUNS = {"family", "group", "crowd", "party", "gang", "bunch", "convoy", "column", "pack", "couple", "line",
                "queue", "peloton", "class", "team", "troop", "pedestrians", "people"}
+NOT_A_MEMBER_AFTER_ONE = {"of", "lane", "lanes", "way", "direction", "side", "after", "another", "by", "more",
+                          "time", "day", "moment", "point", "second", "stage", "step", "phase", "hand"}
 ORDINAL_MEMBERS = {"first", "second", "third", "fourth", "fifth", "last", "latter", "former"}
+
+
+def _part_of_group(r: _Reader, n: int) -> Entity | None:
+    """n members of the last counted group, described together ('four on the left')."""
+    for group in reversed(r.entities):
+        if group.is_ego or group.parent is not None or group.count < n:
+            continue
+        if group.count == n and any(m.parent is group for m in r.entities):
+            return group  # the rest of it
+        if group.count == n:
+            return None
+        part = Entity(len(r.entities), group.type, False, group.stage, count=n, head=group.head, parent=group,
+                      features=set(group.features), actions=[(a[0], 1) + a[2:] for a in group.actions],
+                      behavior=group.behavior)
+        group.count -= n
+        group.group_open = max(0, group.group_open - n)
+        r.entities.append(part)
+        return part
+    return None
 
 
 def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
@@ -2390,7 +2421,9 @@ def _title(prompt: str, tokens: list[Token]) -> range:
         return range(0)
     if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
         return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
-    if re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
+    counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+\w+s\b",
+                        m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
+    if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
         return range(0)  # "There are four cars: one in front ...": a sentence, not a title
     if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
