@@ -1201,3 +1201,8 @@ def test_parts_of_a_counted_group_and_one_lane_each_way():
     assert sorted(agents("Of the three lorries ahead, the first turns right, the second stops and the third goes "
                          "straight.")) == sorted([("car", "go_straight", "ego"), ("truck", "turn_right", "front"),
                                                   ("truck", "stop", "front"), ("truck", "go_straight", "front")])
+
+
+def test_the_driver_of_a_vehicle_is_that_vehicle_with_what_it_was_said_to_do():
+    assert agents("A child was waved across by the driver of a parked lorry on the right.") == sorted(
+        [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front"), ("truck", "stop", "front_right")])

@@ -1878,11 +1878,16 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
-            driver = prev.entity.head in DRIVERS and [u.word for u in between] in (["in"], ["driving"], ["on"]) or (
+            driver = prev.entity.head in DRIVERS and ([u.word for u in between] in (
+                ["in"], ["driving"], ["on"], ["of"]) or not between and units[np.first].word == "of") or (
+                # "the driver of a stopped bus": the bus
                 prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
                 and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 prev.entity.type = np.entity.type
+                prev.entity.features |= np.entity.features
+                prev.entity.actions += np.entity.actions
+                prev.entity.behavior = prev.entity.behavior or np.entity.behavior
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
