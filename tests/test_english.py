@@ -1206,3 +1206,13 @@ def test_parts_of_a_counted_group_and_one_lane_each_way():
 def test_the_driver_of_a_vehicle_is_that_vehicle_with_what_it_was_said_to_do():
     assert agents("A child was waved across by the driver of a parked lorry on the right.") == sorted(
         [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front"), ("truck", "stop", "front_right")])
+
+
+def test_the_ego_at_a_red_light_or_a_stop_line_stands_and_a_new_subject_after_and_has_its_own_clause():
+    assert agents("What happens when an ambulance is behind us and we're at a red light?") == sorted(
+        [("ambulance", "go_straight", "back"), ("car", "stop", "ego")])
+    assert ("car", "go_straight", "ego") in agents("There are no stop signs, and the ego is at the junction.")
+
+
+def test_the_noun_after_a_verb_and_before_a_participle_is_an_object():
+    assert ("car", "go_straight", "ego") in agents("How would the AV avoid a cyclist swerving into its lane?")

@@ -820,8 +820,8 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     if not starts:
         return False
     for x in rest[1:]:
-        if x.category == "actions":
-            return True
+        if x.category == "actions" or x.word in COPULAS:
+            return True  # "... is behind us and we pull over", "... and we're at a red light"
         if not (x.category == "word" and x.word in AUXILIARIES | {"then", "now", "just", "also"} or x.category == "agents"):
             return False
     return False
@@ -1422,6 +1422,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     else:
         before = [np for np in phrases if np.index < first_verb and np.entity is not None
                   and not _is_reference(units, np)]
+        if len(before) >= 2 and verbs and not any(
+                u.category == "comma" or u.word in ("and", "or", "with", "plus", "both", "&")
+                for u in units[before[0].index + 1:before[1].first]) and any(
+                u.category == "actions" for u in units[before[0].index + 1:before[1].first]):
+            before = before[:1]  # "the AV handle(s) a cyclist swerving...": the first is the subject, then its object
         for np in before:
             subject += np.group or [np.entity]
         joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
@@ -1472,6 +1477,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         r.mark(units[0])
         ego.actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(), "turn_" + units[0].word, None))
         units[0].meaning = "used"
+    ego_at = next((np.index for np in phrases if np.entity is not None and np.entity.is_ego), None)
+    if not main_verbs and len(subject) == 1 and subject[0].is_ego and ego_at is not None and any(
+            u.word in COPULAS for u in units[ego_at + 1:ego_at + 3]) and any(
+            u.category == "road" and not _denied(units, k) and (
+                u.meaning in ("stop", "stop_line") or u.meaning == "traffic_light" and
+                any(t.word == "red" for t in u.tokens)) for k, u in enumerate(units) if k > ego_at):
+        subject[0].actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "we're at a red"
     if not main_verbs and len(subject) == 1 and subject[0].is_ego:  # terse: "ego right at lights", "ego left"
         ego_np = next((p for p in phrases if p.entity is subject[0]), None)
         after = units[ego_np.index + 1] if ego_np is not None and ego_np.index + 1 < len(units) else None
