@@ -1216,3 +1216,9 @@ def test_the_ego_at_a_red_light_or_a_stop_line_stands_and_a_new_subject_after_an
 
 def test_the_noun_after_a_verb_and_before_a_participle_is_an_object():
     assert ("car", "go_straight", "ego") in agents("How would the AV avoid a cyclist swerving into its lane?")
+
+
+def test_a_fronted_side_is_a_place_not_the_owner_of_the_noun_after_it():
+    assert agents("On the right-hand side a man with a dog waits to cross.") == sorted(
+        [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")])
+    assert ("car", "go_straight", "ego") in agents("A van in the lane to the left of the ego cuts in front of it.")

@@ -1937,6 +1937,9 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
         if u.meaning in ("ahead", "behind") and len(u.tokens) == 1 and k > 0 and (
                 units[k - 1].word in DISTANCE_UNITS or units[k - 1].word in ("up", "further", "way", "just")):
             return False  # "twenty-five metres ahead a lorry sits", "up ahead a bus": a place, then the subject
+        if u.meaning not in ("ahead", "behind", "level") and u.tokens[-1].word not in ("of", "to") and \
+                units[np.first].word not in ("of", "to"):
+            return False  # "on the left-hand side a woman waits": a place, then the subject ("left of a van" places)
         return u.tokens[-1].word not in ("ego", "it", "us", "you", "them", "him", "her", "me")
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
