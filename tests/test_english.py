@@ -1222,3 +1222,14 @@ def test_a_fronted_side_is_a_place_not_the_owner_of_the_noun_after_it():
     assert agents("On the right-hand side a man with a dog waits to cross.") == sorted(
         [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")])
     assert ("car", "go_straight", "ego") in agents("A van in the lane to the left of the ego cuts in front of it.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("there's a bin lorry sitting in my lane and I gotta go around it", ("car", "change_lane_to_left", "ego")),
+    ("bloke in a pickup cut me off", ("car", "block_the_ego", "front")),
+    ("right turn, oncoming traffic, 3 cars", ("car", "go_straight", "road_of_straight")),
+    ("scooter lane splitting on the left at a red", ("motorcycle", "go_straight", "back_left")),
+    ("fire engine coming up fast behind, everyone pulling over to the right", ("car", "change_lane_to_right", "ego")),
+])
+def test_casual_phrasings_of_drivers_detours_and_traffic(prompt, expected):
+    assert expected in agents(prompt)

@@ -53,7 +53,9 @@ UNSPECIFIED = OpenChoices({  # other seeds draw from templates/unspecified.toml 
 })
 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
-DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone"}
+DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone",
+           "dude", "bloke", "lad", "chap", "mate", "fella", "idiot", "jerk", "moron", "lunatic", "nutter", "maniac",
+           "somebody", "young man", "old man", "teenager", "teen", "kid"}
 SCENERY_PREPOSITIONS = {"between", "past", "among", "amongst", "through", "around", "beside", "by", "of", "in",
                         "with"}
 DEFINITE = {"the", "this", "that", "these", "those", "said"}
@@ -73,7 +75,7 @@ RELATIVES = {"which", "who", "that", "whose", "whom"}
 FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
-OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake", "around"}
+OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake", "around", "split", "splitting"}
 ACTION_RANK = {  # the more specific predicate wins among equally strong ones
     "sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6,
     "lane_change": 6, "turn_left": 8, "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2,
@@ -1088,7 +1090,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         r.entities.append(entity)
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
-    if first >= 2 and units[first - 1].category == "agents" and units[first - 1].word == "traffic" and \
+    back = first - 1 - (first >= 2 and units[first - 1].category == "comma")  # "oncoming traffic, 2 cars"
+    if back >= 1 and units[back].category == "agents" and units[back].word == "traffic" and \
+            units[back - 1].category == "positions":
+        _modify(r, entity, units[back - 1], stage, strength=1)
+    elif first >= 2 and units[first - 1].category == "agents" and units[first - 1].word == "traffic" and \
             units[first - 2].category == "positions":
         _modify(r, entity, units[first - 2], stage, strength=1)  # "oncoming traffic two cars": the cars are oncoming
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
@@ -1215,6 +1221,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             side = _direction_after(r, clause_units, k) or next(
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
+            if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round"):
+                side = UNSPECIFIED["ego_lane_change_direction"]  # "I have to go around it": out into the next lane
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
                 for x in clause_units[k + 1:k + 6]:
