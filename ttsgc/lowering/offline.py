@@ -1443,6 +1443,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         objects = [np for np in phrases if np.index > first_verb or _is_reference(units, np)]
     subject = [e for e in subject if e is not None]
     subject = [e for e in subject if not any(x.parent is e for x in subject)]  # "of the two buses, the first": it
+    if not subject and verbs and any(u.category == "agents" and u.base in ("everyone", "everybody")
+                                     for u in units[:verbs[0]]):
+        subject = [_ego_entity(r, stage)]  # "everyone pulling over": the ego among them
     if not subject:
         if clause.antecedent is not None:
             subject = [clause.antecedent]
