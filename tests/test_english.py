@@ -1233,3 +1233,13 @@ def test_a_fronted_side_is_a_place_not_the_owner_of_the_noun_after_it():
 ])
 def test_casual_phrasings_of_drivers_detours_and_traffic(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_the_ego_that_waits_then_goes_waits_first_and_turns_after():
+    scene = lower("Run 4: ego turning right out of a side road. Ego waited, then went once the gap opened.").scenario
+    assert [[a.action for a in s.agents if a.is_ego] for s in scene.stages] == [["stop"], ["turn_right"]]
+
+
+def test_run_numbers_and_written_ordinals():
+    assert len(agents("R7 - two vans from the left; ego waits for the 2nd van.")) == 3  # the 2nd is one of them
+    assert not any(p == "right" for _, _, p in agents("R12: a bus stops ahead."))

@@ -16,6 +16,7 @@ from functools import lru_cache
 from pathlib import Path
 
 FOLDER = Path(__file__).resolve().parent / "lexicon"
+ORDINAL_WORDS = {"1": "first", "2": "second", "3": "third", "4": "fourth", "5": "fifth", "6": "sixth"}
 BASE_VARIANT_CATEGORIES = ("sequence",)  # conditions written in any tense; other phrases keep their own forms
 CATEGORIES = ("agents", "actions", "positions", "road", "weather", "behaviours", "numbers", "sequence")
 MAX_DIGITS = 6  # a number with more digits than this is read as "too large"
@@ -279,6 +280,9 @@ def tokenize(text: str) -> list[Token]:
                   r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
     text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
     text = re.sub(r"\blv\b", "lead vehicle", text)  # "LV decelerates": the lead vehicle
+    text = re.sub(r"\br\d{1,4}\b", " ", text)  # "R18 - T-junction": a run number, not a side
+    text = re.sub(r"\b(\d{1,2})(?:st|nd|rd|th)\b",
+                  lambda m: ORDINAL_WORDS.get(m.group(1), m.group(0)), text)  # "the 2nd car": the second
     text = re.sub(r"\b(l|r) to (l|r)\b", lambda m: " to ".join("left" if x == "l" else "right" for x in m.groups()),
                   text)  # "crossing L to R"
     text = re.sub(r"\b(turn\w*|lane|chang\w*|from|to|on|go|goes|going|went|merg\w*|mov\w*|swerv\w*|veer\w*|"

@@ -349,7 +349,7 @@ def _road(r: _Reader) -> RoadSpec:
             continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
                 any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
-                u.tokens[-1].word == "lights" and any(x.word in ("flashing", "flash", "flashed")
+                u.tokens[-1].word == "lights" and any(x.word in ("flashing", "flash", "flashed", "going", "blazing")
                                                       for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
             r.mark(u)
             continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
@@ -2577,8 +2577,18 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
 
 
 def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
-    """The ego's action class in a stage, read against the junction context."""
+    """The ego's action class in a stage, read against the junction context. 'Turning left out of the side
+    road, the ego waited, then went': it waits in the first stage and makes its turn in the later one."""
     action, direction = _action(e, stage)
+    later = [a for a in e.actions if a[0] > stage and a[1] == 2 and a[2] > 0]
+    waits = [a for a in e.actions if a[0] == stage and a[1] == 2 and a[4] == "stop"]
+    if later and waits and action in ("turn", "turn_left", "turn_right", "u_turn", "lane_left", "lane_right"):
+        return "stop"
+    if stage > 0 and action in ("move", "go_straight", None):
+        before = [a for a in e.actions if a[0] < stage and a[1] == 2 and a[4] in ("turn_left", "turn_right")]
+        if before and any(a[0] == stage for a in e.actions) and any(
+                a[0] == stage - 1 and a[4] == "stop" and a[1] == 2 for a in e.actions):
+            return before[-1][4]  # "... then went": the turn it waited to make
     action = _sideways(action, junction)
     if action == "cut_in" and direction is None and junction:
         return "move"  # "pull out at the stop sign to go straight": into the junction, no lane change
