@@ -1243,3 +1243,9 @@ def test_the_ego_that_waits_then_goes_waits_first_and_turns_after():
 def test_run_numbers_and_written_ordinals():
     assert len(agents("R7 - two vans from the left; ego waits for the 2nd van.")) == 3  # the 2nd is one of them
     assert not any(p == "right" for _, _, p in agents("R12: a bus stops ahead."))
+
+
+def test_the_egos_right_and_the_languages_own_position_names():
+    assert ("cyclist", "go_straight", "right") in agents("Then a cyclist on the ego's right goes straight.")
+    assert ("bus", "go_straight", "road_of_straight") in agents(
+        "ego=car, action=turn_right; agent1=bus, position=road_of_straight, action=go_straight")

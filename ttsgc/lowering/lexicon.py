@@ -313,7 +313,8 @@ def tokenize(text: str) -> list[Token]:
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag
     text = re.sub(r" \((?:all |both )?(?:children|kids|pedestrians|people|adults|cars|vehicles|cyclists|pupils)\)",
                   "", text)  # "ped_1, ped_2, ped_3 (children)": what the listed ones are
-    text = re.sub(r"\s+=\s+", " is ", text)  # "Actor_1 = wheelchair user"
+    text = re.sub(r"\s*=\s*", " is ", text)  # "Actor_1 = wheelchair user", "ego=car"
+    text = re.sub(r"\b(\d{1,2})\s?x\b", r"\1", text)  # "2x pedestrians"
     text = re.sub(r" \(([a-z]{2,6}[a-z0-9]?)\)", r" , \1 ,", text)  # "a pedestrian target (EPTa)": its short name
     text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego|npc|adversary|hero)"
                   r" \((?:an? |the )?([a-z ]{2,30})"

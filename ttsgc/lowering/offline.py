@@ -176,11 +176,13 @@ def _units(tokens: list[Token]) -> list[Unit]:
         m = found.get(i)
         if m is not None and m.category == "agents" and m.meaning == "ego" and (
                 tokens[m.end - 1].possessive or tokens[m.end - 1].word not in ("i", "we", "you", "me", "us")) and \
-                m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front") and \
+                m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front", "right",
+                                                               "left", "rear", "back") and \
                 tokens[m.end].sentence == tokens[m.end - 1].sentence and (tokens[m.end - 1].possessive or
                                                                            tokens[m.end].word in ("lane", "path")):
             span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
-            meaning = "ahead" if span[-1].word == "front" else "ego_lane"
+            meaning = {"front": "ahead", "right": "side_right", "left": "side_left", "rear": "behind",
+                       "back": "behind"}.get(span[-1].word, "ego_lane")  # "on the ego's right"
             before = m.start - 1 if m.start > 0 and tokens[m.start - 1].word != "the" else m.start - 2
             if before >= 0 and tokens[before].word in ("into", "onto", "across"):  # "into the VUT's path"
                 meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
@@ -262,6 +264,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
         return [Unit(m.start, m.end, "word", "right", span)]  # "sits right on our tail": how close, not a side
     prev = tokens[m.start - 1] if m.start > 0 else None
+    if prev is not None and prev.word == "," and m.start > 1 and m.category == "road":
+        prev = tokens[m.start - 2]  # "pedestrians (crossing, from left)": the noun before the bracket
     if m.category == "agents" and m.meaning == "none" and [t.word for t in span] == ["bus", "stops"] and \
             prev is not None and prev.word in ("a", "the", "this", "that", "city", "school"):
         return [Unit(m.start, m.start + 1, "agents", "bus", span[:1]),  # "a bus stops": no bus stops
