@@ -1249,3 +1249,9 @@ def test_the_egos_right_and_the_languages_own_position_names():
     assert ("cyclist", "go_straight", "right") in agents("Then a cyclist on the ego's right goes straight.")
     assert ("bus", "go_straight", "road_of_straight") in agents(
         "ego=car, action=turn_right; agent1=bus, position=road_of_straight, action=go_straight")
+
+
+def test_an_order_after_a_conditional_sentence_is_the_egos():
+    found = agents("If you're on the motorway and a van in the lane to your right starts drifting into your lane, "
+                   "sound your horn and brake.")
+    assert ("car", "change_lane_to_left", "right") in found  # the braking is the ego's, so the van cuts in only

@@ -722,7 +722,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
     def close(next_link: str = "", next_condition: bool = False):
         nonlocal current, condition, link
         if current:
-            subordinate = bool(out) and out[-1].link in SUBORDINATE and link == ","
+            this = current[0].tokens[0].sentence
+            opened = [c for c in out if c.units[0].tokens[0].sentence == this]  # "If ... and a car ..., brake"
+            subordinate = bool(opened) and opened[0].link in SUBORDINATE and link == "," and \
+                not any(c.link == "," for c in opened[1:])
             out.append(Clause(current, stage, condition, link=link, after_subordinate=subordinate))
         current, condition, link = [], next_condition, next_link
 
@@ -822,13 +825,14 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     if not rest:
         return False
     starts = rest[0].category == "agents" and rest[0].meaning == "ego" or rest[0].word in SUBJECT_PRONOUNS or (
-        rest[0].word == "the" and len(rest) > 1 and rest[1].category == "agents" and rest[1].meaning != "none")
+        rest[0].word in ("the", "a", "an") and len(rest) > 1 and rest[1].category == "agents"
+        and rest[1].meaning != "none")
     if not starts:
         return False
-    for x in rest[1:]:
+    for x in units[k + 2:k + 10]:
         if x.category == "actions" or x.word in COPULAS:
-            return True  # "... is behind us and we pull over", "... and we're at a red light"
-        if not (x.category == "word" and x.word in AUXILIARIES | {"then", "now", "just", "also"} or x.category == "agents"):
+            return True  # "... is behind us and we pull over", "... and a car in the lane to our left merges"
+        if x.category == "comma" or x.word in CLAUSE_WORDS:
             return False
     return False
 
