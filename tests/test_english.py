@@ -1255,3 +1255,8 @@ def test_an_order_after_a_conditional_sentence_is_the_egos():
     found = agents("If you're on the motorway and a van in the lane to your right starts drifting into your lane, "
                    "sound your horn and brake.")
     assert ("car", "change_lane_to_left", "right") in found  # the braking is the ego's, so the van cuts in only
+
+
+def test_a_bare_car_after_a_bare_ego_is_another_car():
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "Ego want to turn left but opposite car is coming so ego must wait.")

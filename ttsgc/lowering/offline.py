@@ -1025,7 +1025,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
     ego_now = next((e for e in r.entities if e.is_ego), None)
     if bare and ego_now is not None and u.base in ("vehicle", "car") and (
-            ego_now.head.split()[-1] == u.base or ego_now.head in ("vut", "av", "sv", "ego")) and \
+            ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and \
             not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
