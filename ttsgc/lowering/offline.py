@@ -287,7 +287,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
             nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
-                                         and len(span) == 1):  # "no crossing", "a crossing": the noun  # "the pedestrian crossing ahead is blocked": the crossing
+                                         and len(span) == 1):
+        # the verb: "a pedestrian crossing the road"; the noun stays: "no crossing", "the pedestrian crossing ahead is"
         out = []
         if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians", "ped", "peds"):
             out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
@@ -330,7 +331,8 @@ def _road(r: _Reader) -> RoadSpec:
                 negated = False
             continue
         if u.category == "actions" and u.base in ("yield", "give way") and (
-                k == 0 or units[k - 1].category in ("comma", "word") and units[k - 1].word in (",", "a", "at", "with", "the")
+                k == 0 or units[k - 1].category in ("comma", "word")
+                and units[k - 1].word in (",", "a", "at", "with", "the")
                 or (k + 1 < len(units) and units[k + 1].word in ("sign", "signs", "junction", "line", "markings"))):
             put("yield", negated)  # "a give way junction", "roundabout entry, give way": the sign
             r.mark(u)
