@@ -1260,3 +1260,11 @@ def test_an_order_after_a_conditional_sentence_is_the_egos():
 def test_a_bare_car_after_a_bare_ego_is_another_car():
     assert ("car", "go_straight", "road_of_straight") in agents(
         "Ego want to turn left but opposite car is coming so ego must wait.")
+
+
+def test_mirror_images_read_alike_for_overtaking_then_blocking_and_merging_then_moving_over():
+    for side in ("left", "right"):
+        assert (("police", "block_the_ego", f"back_{side}") in agents(
+            f"A patrol car overtook the ego on the {side}, pulled in ahead of it and stopped."))
+        assert ("car", f"change_lane_to_{side}", "ego") in agents(
+            f"We're merging onto the motorway from the slip road; we move {side} into the lane.")

@@ -2224,7 +2224,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
-    if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f:
+    if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
+            and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f:
         side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
@@ -2630,7 +2631,9 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
-        return f"change_lane_to_{direction or UNSPECIFIED['ego_lane_change_direction']}"  # "pulling out to pass"
+        said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
+            "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
+        return f"change_lane_to_{direction or said or UNSPECIFIED['ego_lane_change_direction']}"  # "pulling out to pass"
     return "go_straight"
 
 
