@@ -1268,3 +1268,17 @@ def test_mirror_images_read_alike_for_overtaking_then_blocking_and_merging_then_
             f"A patrol car overtook the ego on the {side}, pulled in ahead of it and stopped."))
         assert ("car", f"change_lane_to_{side}", "ego") in agents(
             f"We're merging onto the motorway from the slip road; we move {side} into the lane.")
+
+
+@pytest.mark.parametrize("noun, agent_type", [("car", "car"), ("lorry", "truck"), ("taxi", "car"),
+                                              ("motorcyclist", "motorcycle")])
+def test_a_grid_of_lane_manoeuvres_reads_alike_for_every_vehicle(noun, agent_type):
+    for text, action, position in [
+            ("in the left lane cuts in front of us", "change_lane_to_right", "left"),
+            ("from the right lane cuts in ahead of us", "change_lane_to_left", "front_right"),
+            ("overtakes us on the left", "go_straight", "back_left"),
+            ("swerves into our lane from the left and stops", "block_the_ego", "front_left"),
+            ("is tailgating us", "go_straight", "back"),
+            ("comes towards us on a straight road", "go_straight", "front_left")]:
+        for sentence in (f"A {noun} {text}.", f"the {noun} {text}"):
+            assert (agent_type, action, position) in agents(sentence), sentence

@@ -1052,7 +1052,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                                                        or nxt.word in AUXILIARIES or u.tokens[-1].possessive):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
         if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
-                not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions"):
+                not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
+                not _ego_object_follows(units, head):
+            # ("the car overtakes us": the ego is named after it, so the car is another)
             ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
             r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
             return NounPhrase(ego, head, first)
@@ -1114,6 +1116,18 @@ OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side
                    "side_right": {"side_left"}, "from_left": {"from_right", "road_right"},
                    "from_right": {"from_left", "road_left"}, "road_left": {"road_right", "from_right"},
                    "road_right": {"road_left", "from_left"}}
+
+
+def _ego_object_follows(units: list[Unit], head: int) -> bool:
+    """'the car overtakes us', 'the car swerves into our lane': the ego is named in the car's own predicate
+    (before any other agent), so the car is another road user."""
+    for x in units[head + 1:]:
+        if x.category == "agents" and x.meaning == "ego" or x.category == "positions" and {
+                t.word for t in x.tokens} & {"us", "our", "me", "my", "ego", "you", "your"}:
+            return True
+        if x.category == "agents" and x.meaning != "none":
+            return False
+    return False
 
 
 def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
@@ -1562,6 +1576,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
         if u.meaning == "ego_lane" and i > 0 and (units[i - 1].word in ("into", "onto", "across") or (
+                units[i - 1].category == "actions" and units[i - 1].tokens[-1].word in ("into", "onto")) or (
                 units[i - 1].category == "actions" and units[i - 1].tokens[0].base in STEERING | {"come", "get"}
                 and u.tokens[0].word == "in")):
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane", "is coming in ego lane"
@@ -2229,7 +2244,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f:
         side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
-    if action == "block" and side and "from_lane" in f and not behind:
+    if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"bare_{side}" in f or f"from_{side}" in f):
