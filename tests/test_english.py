@@ -1282,3 +1282,9 @@ def test_a_grid_of_lane_manoeuvres_reads_alike_for_every_vehicle(noun, agent_typ
             ("comes towards us on a straight road", "go_straight", "front_left")]:
         for sentence in (f"A {noun} {text}.", f"the {noun} {text}"):
             assert (agent_type, action, position) in agents(sentence), sentence
+
+
+def test_a_vehicle_stopped_on_the_road_is_no_stop_painted_on_it():
+    scene = lower("The ego turns right while a lorry is stopped on the road we turn into.").scenario
+    assert ("truck", "stop", "at_the_destination") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+    assert "stop_sign_on_road" not in scene.road.required_objects + scene.road.required_signals

@@ -408,6 +408,7 @@ def _lookup(lex: Lexicon, span: list[Token]):
     raw = keys[0]
     for key in keys:
         entry = lex.phrases.get(key)
-        if entry is not None and (key == raw or entry[1] != "none"):  # "the bus stops" is no "bus stop"
-            return entry
+        if entry is not None and (key == raw or entry[1] != "none") and not (
+                entry[0] == "road" and key[0] != raw[0] and raw[0].endswith(("ed", "ing"))):
+            return entry  # "the bus stops" is no "bus stop"; "stopped on the road" is no STOP on the road
     return None
