@@ -2,6 +2,8 @@
 
     python bench/lowering_eval.py                 # offline rules on every suite
     python bench/lowering_eval.py --misses dev    # also list each prompt of the dev split that is not exact
+    python bench/lowering_eval.py --only dev      # one suite only (repeatable)
+    python bench/lowering_eval.py --only dev --rephrased dev  # also: dev read mirrored and rephrased
     python bench/lowering_eval.py --llm anthropic # the LLM lowering (ANTHROPIC_API_KEY), with tokens per scene
 
 Suites: tests/corpus/{dev,test}/<voice>/*.txt with gold *.tsg beside (rules are written against dev only; test
@@ -13,16 +15,18 @@ day both right, or no weather where the gold has none. Timings are medians over 
 from __future__ import annotations
 
 import argparse
+import re
 import statistics
 import sys
 import time
+from collections import Counter
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from ttsgc.errors import TtsgcError  # noqa: E402
-from ttsgc.evaluate import agent_accuracy, load_gold, road_accuracy, weather_accuracy  # noqa: E402
+from ttsgc.evaluate import agent_accuracy, agent_keys, load_gold, road_accuracy, weather_accuracy  # noqa: E402
 from ttsgc.lowering import lower_prompt  # noqa: E402
 
 PAPER = {"AA": 0.975, "RA": 0.940}  # GPT-4o with analysis and CoT, the paper's table "Results of plan quality"
@@ -48,6 +52,61 @@ def score(prompt: Path, method: str) -> dict:
     return result
 
 
+SWAP = {"left": "right", "right": "left", "Left": "Right", "Right": "Left", "LEFT": "RIGHT", "RIGHT": "LEFT"}
+SIDE_BOUND = re.compile(r"nearside|offside|kerb|curb|undertak|inside|far ?side|near ?side|shoulder|verge|pavement"
+                        r"|sidewalk|slow lane|fast lane|overtaking lane|\b[LR]\b", re.I)  # sides that do not mirror
+REPHRASINGS = {  # meaning-preserving rewrites: the gold stays the gold
+    "the ego named the AV": lambda t: re.sub(r"\b([Tt])he ego( vehicle| car)?\b", lambda m: m.group(1) + "he AV", t),
+    "the ego named my car": lambda t: re.sub(r"\b[Tt]he ego( vehicle| car)?\b", "my car", t),
+    "lower case": lambda t: t.lower().rstrip(".!"),
+    "articles dropped": lambda t: re.sub(r"\b(the|a|an) ", "", t),
+    "verbs rephrased": lambda t: re.sub(r"\bturns (left|right)\b", r"makes a \1 turn",
+                                        re.sub(r"\bgoes straight\b", "continues straight ahead",
+                                               re.sub(r"\bstops\b", "comes to a halt", t))),
+}
+
+
+def mirrored(text: str) -> str:
+    return re.sub(r"\b(left|right|Left|Right|LEFT|RIGHT)\b", lambda m: SWAP[m.group(1)], text)
+
+
+def mirrored_keys(scene) -> Counter:
+    swap = lambda x: x.replace("left", "@").replace("right", "left").replace("@", "right")  # noqa: E731
+    return Counter(tuple(swap(v) for v in key) for key in agent_keys(scene).elements())
+
+
+def rephrased(folder: Path) -> None:
+    """Each prompt read mirrored (left and right swapped, gold mirrored) and rephrased: how many read worse than
+    the prompt as written. A reading rule that fits the words of the dev split, not English, shows up here."""
+    prompts = sorted(p for p in folder.glob("**/*.txt") if p.with_suffix(".tsg").is_file())
+    worse, total = 0, 0
+    for p in prompts:
+        text = p.read_text(encoding="utf-8")
+        if not re.search(r"\b(left|right)\b", text, re.I) or SIDE_BOUND.search(text):
+            continue
+        total += 1
+        try:
+            worse += mirrored_keys(load_gold(p.with_suffix(".tsg"))) != agent_keys(
+                lower_prompt(mirrored(text), "offline").scenario)
+        except TtsgcError:
+            worse += 1
+    print(f"  {'mirrored':26} {worse:4} of {total} read otherwise than the mirrored gold")
+    for name, rewrite in REPHRASINGS.items():
+        worse = total = 0
+        for p in prompts:
+            text = p.read_text(encoding="utf-8")
+            if rewrite(text) == text:
+                continue
+            total += 1
+            gold = load_gold(p.with_suffix(".tsg"))
+            try:
+                before = agent_accuracy(gold, lower_prompt(text, "offline").scenario)
+                worse += agent_accuracy(gold, lower_prompt(rewrite(text), "offline").scenario) < before
+            except TtsgcError:
+                worse += 1
+        print(f"  {name:26} {worse:4} of {total} read worse")
+
+
 def row(name: str, results: list[dict]) -> str:
     if not results:
         return f"{name:28} (no prompts)"
@@ -63,9 +122,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--llm", default="offline", choices=("offline", "anthropic"))
     parser.add_argument("--misses", action="append", default=[], metavar="SUITE",
                         help="list the prompts of this suite that are not exact (never use it on test)")
+    parser.add_argument("--only", action="append", default=[], metavar="SUITE",
+                        help="score only these suites (default: all)")
+    parser.add_argument("--rephrased", action="append", default=[], metavar="SUITE",
+                        help="also read this suite mirrored and rephrased (never use it on test)")
     args = parser.parse_args(argv)
     print(f"{'suite':28} {'n':>4}  lowering: {args.llm}")
     for name, folder in SUITES:
+        if args.only and name not in args.only:
+            continue
         prompts = sorted(p for p in folder.glob("**/*.txt") if p.with_suffix(".tsg").is_file())
         if not prompts:
             continue
@@ -76,6 +141,8 @@ def main(argv: list[str] | None = None) -> int:
             print(row(f"  {voice}", [r for p, r in results.items() if p.parent.name == voice]))
         if name == "paper":
             print(f"{'  the paper (GPT-4o, CoT)':28} {len(prompts):4}  AA {PAPER['AA']:.3f}  RA {PAPER['RA']:.3f}")
+        if name in args.rephrased:
+            rephrased(folder)
         if name in args.misses:
             for p, r in results.items():
                 if "miss" in r:

@@ -764,3 +764,527 @@ def test_terse_one_letter_sides_and_abbreviations(prompt, expected):
 def test_car_makes_are_cars_and_the_kerb_is_the_right_side():
     assert ("car", "go_straight", "back") in agents("a BMW came up behind me flashing its headlights")
     assert ("car", "change_lane_to_left", "front_right") in agents("a Ford Focus pulls out from the curb ahead")
+
+
+# -- generalisation: constructions and words, each with sentences of its own --------------------------------
+
+def test_it_inside_a_place_phrase_names_the_agent_before_not_the_ego():
+    found = agents("A removal lorry heads towards us on a straight road with a moped behind it.")
+    assert ("motorcycle", "go_straight", "front_left") in found and ("truck", "go_straight", "front_left") in found
+
+
+@pytest.mark.parametrize("prompt", ["By the time we reach the crossroads the signal has turned amber, so we stop.",
+                                    "The light turns green and the ego goes straight through the junction."])
+def test_a_signal_changing_colour_is_nobodys_turn(prompt):
+    assert not any(action.startswith("turn") for _, action, _ in agents(prompt))
+
+
+def test_a_condition_said_in_full_ends_at_its_colour_and_starts_a_stage():
+    scene = lower("We sit at the lights; when they go green we turn right.").scenario
+    assert [[a.action for a in s.agents] for s in scene.stages] == [["stop"], ["turn_right"]]
+    assert "traffic_light" in scene.road.required_signals
+    scene = lower("Our car waits at a red light, and once it turns green we hang a left.").scenario
+    assert [[a.action for a in s.agents] for s in scene.stages] == [["stop"], ["turn_left"]]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("NPC1 is a delivery van stopped on the right ahead.", [("car", "stop", "front_right")]),
+    ("Actors:\n- hero: drives straight\n- NPC2: cyclist crossing in front\n- NPC3: stopped bus ahead",
+     [("cyclist", "cross_the_road", "front"), ("bus", "stop", "front")]),
+])
+def test_a_singular_npc_label_is_one_agent_said_what_it_is(prompt, expected):
+    assert agents(prompt) == sorted([("car", "go_straight", "ego")] + expected)
+
+
+@pytest.mark.parametrize("noun, agent_type", [
+    ("minivan", "car"), ("station wagon", "car"), ("people carrier", "car"), ("panel van", "car"),
+    ("box truck", "truck"), ("tipper truck", "truck"), ("articulated lorry", "truck"), ("18-wheeler", "truck"),
+    ("tram", "bus"), ("bendy bus", "bus"), ("e-scooter rider", "cyclist"), ("cargo bike", "cyclist"),
+    ("moped rider", "motorcycle"), ("wheelchair user", "pedestrian"), ("toddler", "pedestrian"),
+    ("dog walker", "pedestrian"), ("state trooper", "police"), ("fire tender", "firetruck"),
+])
+def test_a_wide_vocabulary_of_road_users(noun, agent_type):
+    assert agent_type in [t for t, _, p in agents(f"There is a {noun} ahead of the ego.") if p != "ego"]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The estate car ahead of us comes to a standstill.", ("car", "stop", "front")),
+    ("A hatchback in the left lane nudges into our lane.", ("car", "change_lane_to_right", "left")),
+    ("A van on the right drifts over into the ego's lane ahead of it.", ("car", "change_lane_to_left", "front_right")),
+    ("A pensioner steps off the kerb in front of us.", ("pedestrian", "cross_the_road", "front")),
+    ("A lorry sits idling ahead of the ego.", ("truck", "stop", "front")),
+    ("A pickup on the offside overtakes us.", ("car", "go_straight", "back_left")),
+    ("A cyclist rides along on our kerb side.", ("cyclist", "go_straight", "right")),
+])
+def test_verbs_and_places_as_drivers_say_them(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_dash_between_words_is_a_pause_and_4x4_is_a_car():
+    assert ("car", "go_straight", "back") in agents("A 4x4 sits right on our tail.")
+    found = agents("we merge right \u2014 is there a lorry in the lane we're moving into, well behind us?")
+    assert ("truck", "go_straight", "back_right") in found
+
+
+def test_a_child_running_into_the_vuts_path_from_a_side_keeps_that_side():
+    assert ("pedestrian", "cross_the_road", "front_left") in agents(
+        "A boy runs from the far side into the VUT's path.")
+    assert ("car", "block_the_ego", "front_left") in agents(
+        "The target car cuts off the ego from the left adjacent lane and halts in the ego lane.")
+
+
+def test_no_crossing_is_a_crossing_denied_and_a_crossing_kind_is_not_doubled():
+    scene = lower("ped: dashes across from the right, no crossing").scenario
+    assert "crosswalk" in scene.road.without_objects
+    assert ("pedestrian", "cross_the_road", "front_right") in agents("ped: dashes across from the right, no crossing")
+    assert lower("Ladder crosswalk ahead; the ego stops before the crossing.").scenario.road.required_objects == \
+        ("ladder_crosswalk",)
+
+
+def test_a_short_word_is_not_corrected_into_an_agent():
+    assert len(agents("how would the car cope with a moped behind us")) == 2
+
+
+def test_the_ego_that_pulls_in_and_stops_stops():
+    assert ("car", "stop", "ego") in agents("An ambulance closes in behind, so the ego pulls in and stops.")
+
+
+def test_a_crossing_from_a_compass_side_is_from_the_egos_side():
+    assert ("pedestrian", "cross_the_road", "front_right") in agents(
+        "The test car was heading north when a man walked across the road from the east side.")
+
+
+@pytest.mark.parametrize("prompt, ego_action, other", [
+    ("tractor crawling ahead, overtake it on the left", "change_lane_to_left", ("truck", "go_straight", "front")),
+    ("police car behind with blues on, pull over to the right", "change_lane_to_right",
+     ("police", "go_straight", "back")),
+    ("A fire engine is behind us and we move over to the left.", "change_lane_to_left",
+     ("firetruck", "go_straight", "back")),
+])
+def test_an_order_after_a_description_and_a_new_subject_after_a_copula_are_the_egos(prompt, ego_action, other):
+    found = agents(prompt)
+    assert ("car", ego_action, "ego") in found and other in found
+
+
+def test_the_queue_ahead_of_a_waiting_ego():
+    assert agents("we're sat at a red light with 2 cars in front of us") == sorted(
+        [("car", "stop", "ego"), ("car", "stop", "front"), ("car", "stop", "front")])
+    assert agents("fifth in the queue at the lights") == sorted([("car", "stop", "ego")] + [("car", "stop", "front")] * 4)
+    assert agents("third in line behind a coach") == sorted(
+        [("car", "stop", "ego"), ("bus", "stop", "front"), ("car", "stop", "front")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego: turning left. Bus: oncoming, going straight.", [("car", "turn_left", "ego"),
+                                                          ("bus", "go_straight", "road_of_straight")]),
+    ("cyclist: riding on our right; lorry: parked ahead", [("car", "go_straight", "ego"),
+                                                           ("cyclist", "go_straight", "right"),
+                                                           ("truck", "stop", "front")]),
+    ("ped: strolls across in front from the left", [("car", "go_straight", "ego"),
+                                                    ("pedestrian", "cross_the_road", "front_left")]),
+    ("Actor_2 - motorbike - behind the ego - overtakes on the right", [("car", "go_straight", "ego"),
+                                                                     ("motorcycle", "go_straight", "back_right")]),
+])
+def test_keys_that_name_agents_on_one_line_are_their_subjects(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_a_clock_time_or_a_case_title_is_no_agent_key():
+    assert agents("At 7:15 am a van stopped ahead of the ego.") == sorted(
+        [("car", "go_straight", "ego"), ("car", "stop", "front")])
+    assert agents("Cut-in: a target vehicle in the right lane cuts in.") == sorted(
+        [("car", "go_straight", "ego"), ("car", "change_lane_to_left", "right")])
+
+
+def test_a_ticket_title_line_oracle_lines_and_role_tags_name_no_agents():
+    prompt = ("Tractor overtake on a B road\n\nSetup: hero follows a tractor (NPC1) on a two-lane road.\n"
+              "Actors: tractor is slow, hero overtakes it on the right.\n"
+              "Expected: hero brakes, no collision.\nAC: overtake completes within 8 s.")
+    assert agents(prompt) == sorted([("car", "change_lane_to_right", "ego"), ("truck", "go_straight", "front")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The VUT approaches a child pedestrian target crossing from the farside.",
+     ("pedestrian", "cross_the_road", "front_left")),
+    ("police NPC stops in front of the hero", ("police", "stop", "front")),
+    ("A bicyclist target (EBT) rides ahead of the VUT in the same lane.", ("cyclist", "go_straight", "front")),
+])
+def test_a_role_noun_after_a_noun_keeps_the_nouns_type(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and len(found) == 2
+
+
+def test_a_short_name_in_brackets_is_the_same_agent_and_names_it_later():
+    found = agents("The VUT closes on a slow Soft Car Target (SCT) in its lane. After 3 s the SCT brakes to a stop.")
+    assert found == sorted([("car", "go_straight", "ego"), ("car", "stop", "front")])
+
+
+def test_a_manoeuvre_named_after_a_preposition_is_nobodys_predicate():
+    assert ("car", "go_straight", "ego") in agents(
+        "A lorry in the left lane cuts in; the gap at the start of the manoeuvre is 20 m.")
+
+
+def test_in_which_after_a_lane_change_is_the_lane_moved_into():
+    assert ("bus", "go_straight", "back_right") in agents(
+        "The ego makes a lane change to the right adjacent lane, in which a coach comes up from behind.")
+
+
+def test_a_verb_after_without_is_denied_so_the_past_tense_before_it_is_finite():
+    assert ("car", "turn_right", "road_of_left_turn") in agents(
+        "At the crossroads a hatchback from the left turned right in front of us without even signalling.")
+
+
+def test_i_takes_no_participle():
+    assert ("car", "change_lane_to_right", "ego") in agents(
+        "A bin lorry was stopped in my lane, so I pulled over into the right lane to get past it.")
+
+
+def test_a_crossing_cyclist_from_a_side_at_a_junction_comes_from_that_road():
+    assert ("cyclist", "cross_the_road", "road_of_right_turn") in agents(
+        "I was turning left at the junction when a lad on a bike shot across from the right.")
+
+
+def test_a_riders_own_lamps_are_no_traffic_light():
+    assert "traffic_light" not in road("A cyclist crossed ahead at dusk; she had no lights on.").without_signals
+
+
+def test_the_driver_is_the_vehicle_named_before():
+    assert len(agents("A minibus pulled out in front of us. The driver never looked.")) == 2
+
+
+def test_a_vague_person_in_the_queue_drives():
+    assert ("car", "go_straight", "back") in agents(
+        "We stopped at the lights and the bloke behind us rolled into our back bumper.")
+
+
+def test_doing_the_same_repeats_the_previous_agents_manoeuvre_and_place():
+    found = agents("At the lights a van coming the other way turned left, then a second van did the same.")
+    assert found.count(("car", "turn_left", "road_of_straight")) == 2
+
+
+def test_labelled_members_of_a_list_are_separate_agents():
+    assert agents("Actors: veh_1, veh_2 (cars) park ahead on the right.").count(("car", "stop", "front_right")) == 2
+    assert ("pedestrian", "cross_the_road", "front") in agents("Actor_3 = jogger crossing in front of the hero")
+
+
+def test_what_the_ego_follows_shares_its_lane():
+    assert ("truck", "go_straight", "front") in agents("We follow a tanker in the left lane of a dual carriageway.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("could u make a van cutting in from the right lane in front of me pls", ("car", "go_straight", "ego")),
+    ("Can you please build a scene where a bus stops ahead of me?", ("car", "go_straight", "ego")),
+])
+def test_you_asked_to_make_a_scene_is_not_the_ego(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_greeting_is_no_time_of_day_and_chat_abbreviations_are_read():
+    scene = lower("morning! 3 ppl standing on the pavement on the left, ego drives by").scenario
+    assert scene.weather is None
+    assert [(a.type, a.action) for a in scene.agents()].count(("pedestrian", "on_the_sidewalk")) == 3
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Lead car changed lane R at the last moment.", ("car", "change_lane_to_right", "front")),
+    ("Ego in L lane, truck overtaking in R lane.", ("truck", "go_straight", "back_right")),
+    ("kid ran out from the L kerb", ("pedestrian", "cross_the_road", "front_left")),
+])
+def test_one_letter_sides_in_driving_phrases(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego is taking right turn. One bus is coming from front side and going straight.",
+     ("bus", "go_straight", "road_of_straight")),
+    ("Ego is going to left lane because an ambulance is coming behind of ego.", ("car", "change_lane_to_left", "ego")),
+    ("The ego is keeping left on a country road while a tractor comes the other way.", ("car", "go_straight", "ego")),
+    ("A man is standing on footpath of the road in which ego is turning, ego turns left.",
+     ("pedestrian", "on_the_sidewalk", "at_the_destination")),
+])
+def test_non_native_phrasings_of_positions_and_manoeuvres(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_vehicle_stopped_in_front_of_the_ego_stands_and_its_warning_lights_are_its_own():
+    scene = lower("A police car is stopped in front of the ego with its warning lights on.").scenario
+    assert ("police", "stop", "front") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+    assert "traffic_light" not in scene.road.required_signals
+
+
+def test_a_condition_in_the_past_tense_starts_a_stage_and_the_road_the_ego_turned_into_is_its_destination():
+    scene = lower("We sat at the lights behind a lorry. When they went green we turned right, and a man was "
+                  "crossing the street we were turning into.").scenario
+    assert [a.action for a in scene.stages[-1].agents if a.is_ego] == ["turn_right"]
+    assert ("pedestrian", "cross_the_road", "at_the_destination") in [
+        (a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+
+
+def test_stopped_traffic_holds_the_ego_and_those_beside_it_at_a_red_light_wait_too():
+    assert ("car", "stop", "ego") in agents("a moped weaving between lanes in a traffic jam")
+    assert ("car", "stop", "left") in agents("We're held at a red light with a van alongside in the left lane.")
+
+
+def test_a_denial_ends_with_its_sentence():
+    found = road("ped: darts out from the right, no crossing. road: mid-block, no junction.")
+    assert found.junction is False and "crosswalk" in found.without_objects
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("ped crossing front at dusk", ("pedestrian", "cross_the_road", "front")),
+    ("The ego goes straight on the cross-road while a van comes from the opposite side.",
+     ("car", "go_straight", "road_of_straight")),
+    ("You have a green arrow for a protected right.", ("car", "turn_right", "ego")),
+])
+def test_short_forms_of_crossing_people_crossroads_and_turns(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego merging R onto the dual carriageway.", ("car", "change_lane_to_right", "ego")),
+    ("SIM-7 cut-in\n\nActors:\n- Ped_2: crosses from the right in front of the hero",
+     ("pedestrian", "cross_the_road", "front_right")),
+    ("a jogger ran straight out in front of me", ("pedestrian", "cross_the_road", "front")),
+    ("One van is overtaking from right side and after overtake it is coming in ego lane.",
+     ("car", "change_lane_to_left", "back_right")),
+])
+def test_more_short_forms_keys_with_underscores_and_after_a_bare_verb(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("If a scooter is in your blind spot on the right, don't change lanes.", ("motorcycle", "go_straight", "back_right")),
+    ("ego straight, van from R runs red", ("car", "go_straight", "road_of_right_turn")),
+    ("Unit 2, a grey hatchback, turned left across the path of Unit 1, the AV, which was going straight.",
+     ("car", "turn_left", "road_of_straight")),
+    ("A car waiting on the road on the left pulls out and turns right across our path.",
+     ("car", "turn_right", "road_of_left_turn")),
+    ("ego R, oncoming bus straight, ped at dest", ("pedestrian", "cross_the_road", "at_the_destination")),
+    ("A Vauxhall in lane two undertook us.", ("car", "go_straight", "back_right")),
+    ("A dog walker is standing on the verge to our right.", ("pedestrian", "on_the_sidewalk", "right")),
+])
+def test_places_said_in_other_ways(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_pulling_out_at_a_junction_enters_it_and_the_tail_of_a_jam_is_approached():
+    assert ("car", "go_straight", "ego") in agents("At the give-way we pull out to go straight; a van comes from the right.")
+    assert ("car", "go_straight", "ego") in agents("The tail end of a traffic jam: two cars stationary in our lane ahead.")
+
+
+def test_one_on_each_side_behind_and_a_counted_list_after_a_colon():
+    assert agents("Two scooters come up behind us, one on each side.") == sorted(
+        [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left"),
+         ("motorcycle", "go_straight", "back_right")])
+    assert agents("There are three vans: one in front of the ego, one behind and one on the left.") == sorted(
+        [("car", "go_straight", "ego"), ("car", "go_straight", "front"), ("car", "go_straight", "back"),
+         ("car", "go_straight", "left")])
+
+
+def test_and_then_keeps_the_subject_and_the_car_behind_it_is_another_car():
+    assert ("truck", "turn_left", "front") in agents("The lorry ahead signals left and then turns left into a yard.")
+    assert len(agents("A cab pulls up on the right, and the car behind it goes round it.")) == 3
+
+
+def test_a_crossing_patrol_is_a_person_and_zooming_out_is_crossing():
+    assert ("pedestrian", "cross_the_road", "front") in agents("A school crossing patrol steps out in front of us.")
+    assert ("cyclist", "cross_the_road", "front_left") in agents("a kid on a bike zooms out from the left")
+
+
+def test_the_first_and_the_second_are_members_of_the_group_just_counted():
+    assert agents("We are passed by two vans, the first on the left and the second on the right.") == sorted(
+        [("car", "go_straight", "ego"), ("car", "go_straight", "back_left"), ("car", "go_straight", "back_right")])
+
+
+def test_a_vehicle_crossing_left_to_right_is_cross_traffic_at_a_junction():
+    scene = lower("ego waits at the stop line, bus crossing L to R").scenario
+    assert ("bus", "go_straight", "road_of_left_turn") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+    assert scene.road.junction is True
+
+
+def test_jargon_abbreviations_ev_lv_and_a_vru_crossing():
+    assert ("ambulance", "go_straight", "back") in agents("EV approaching from the rear with sirens on.")
+    assert ("car", "stop", "front") in agents("LV decelerates to a standstill.")
+    assert ("pedestrian", "cross_the_road", "front_left") in agents("VRU crossing from the farside, no crosswalk.")
+    assert ("bus", "stop", "front_right") in agents("a bus at a bus stop on the right")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego is following slow-moving tractor on country road.", [("car", "go_straight", "ego"),
+                                                               ("truck", "go_straight", "front")]),
+    ("VUT approaches stationary target car in same lane.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Police car came up from behind, passed ego on left and carried on.", [("car", "go_straight", "ego"),
+                                                                           ("police", "go_straight", "back_left")]),
+    ("White van parked on verge ahead, child hidden behind van runs out.", [("car", "go_straight", "ego"),
+                                                                          ("car", "stop", "front_right"),
+                                                                          ("pedestrian", "cross_the_road", "front_right")]),
+])
+def test_sentences_without_articles(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The AV turns right and a cyclist crosses the road the AV is turning into.",
+     ("cyclist", "cross_the_road", "at_the_destination")),
+    ("A van ahead in the AV lane brakes to a halt.", ("car", "stop", "front")),
+    ("The ego turns left; a woman crosses on the zebra crossing of the street it turns into.",
+     ("pedestrian", "cross_the_road", "near_the_crosswalk")),
+    ("Left on red here: the ego turns left after stopping.", ("car", "turn_left", "ego")),
+    ("The ego bus pulls out right from the stop.", ("bus", "change_lane_to_right", "ego")),
+    ("ambulance behind with siren, pull over to the left", ("car", "change_lane_to_left", "ego")),
+])
+def test_the_ego_named_any_way_and_mirror_images_read_alike(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("lead car ahead of the hero changed lane L at the last moment", ("car", "change_lane_to_left", "front")),
+    ("A man is waiting on the pavement of the road in which the hero is turning; the hero turns right.",
+     ("pedestrian", "on_the_sidewalk", "at_the_destination")),
+    ("Could my lorry turn left at the lights?", ("truck", "turn_left", "ego")),
+    ("Fire lorry coming from the right at the junction.", ("firetruck", "go_straight", "road_of_right_turn")),
+])
+def test_the_ego_takes_no_participle_and_names_of_its_vehicle(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A motorbike filtered between the lanes on our right.", ("motorcycle", "go_straight", "back_right")),
+    ("the bloke in front slams on", ("car", "stop", "front")),
+    ("mate in front pulled out onto the main road without looking", ("car", "go_straight", "ego")),
+    ("jct, ego L turn, van opp straight", ("car", "go_straight", "road_of_straight")),
+    ("ego 40kph, ped pavement L", ("pedestrian", "on_the_sidewalk", "left")),
+])
+def test_british_and_terse_idioms(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_group_of_n_is_n_agents_and_counted_parked_cars_between_are_scenery():
+    assert agents("a family of three crosses at the zebra").count(
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")) == 3
+    assert [t for t, _, _ in agents("A boy runs out from between two parked vans.")].count("car") == 1
+
+
+def test_a_state_in_the_past_perfect_is_before_the_story_and_a_singular_car_is_no_heading():
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "We were cut up by an Audi that had been sitting in the right lane.")
+    assert ("pedestrian", "on_the_sidewalk", "right") in agents("ego 30kph, van R lane behind, ped pavement R")
+
+
+def test_one_of_them_is_a_member_of_a_counted_group_and_n_of_them_counts_a_bare_plural():
+    assert agents("Four cyclists wait at the lights ahead; one of them rides off.").count(
+        ("cyclist", "stop", "front")) == 3
+    assert agents("Children are crossing in front of us, five of them.").count(
+        ("pedestrian", "cross_the_road", "front")) == 5
+
+
+def test_the_car_from_the_other_side_is_another_car():
+    found = agents("At the crossroads the car from the left and the car from the right both stop.")
+    assert ("car", "stop", "road_of_left_turn") in found and ("car", "stop", "road_of_right_turn") in found
+    assert ("cyclist", "cross_the_road", "front") in agents("A kid on a bike wobbles off the kerb in front of us.")
+
+
+def test_a_manoeuvre_naming_a_test_is_nobodys_predicate():
+    assert ("car", "change_lane_to_right", "ego") in agents("Merge test. Ego merging R onto the main road.")
+
+
+def test_a_vehicle_the_ego_queues_behind_stands_in_the_first_stage_whatever_it_does_later():
+    scene = lower("First we wait at a red light behind a lorry. Then the light turns green and we both go.").scenario
+    assert ("truck", "stop", "front") in [(a.type, a.action, a.relative_to_ego) for a in scene.stages[0].agents]
+
+
+def test_parts_of_a_counted_group_and_one_lane_each_way():
+    found = agents("Six cyclists: two on the left, four behind us.")
+    assert found.count(("cyclist", "go_straight", "left")) == 2 and found.count(("cyclist", "go_straight", "back")) == 4
+    assert agents("Two vans come the other way on a road with one lane each way.").count(
+        ("car", "go_straight", "front_left")) == 2
+    assert sorted(agents("Of the three lorries ahead, the first turns right, the second stops and the third goes "
+                         "straight.")) == sorted([("car", "go_straight", "ego"), ("truck", "turn_right", "front"),
+                                                  ("truck", "stop", "front"), ("truck", "go_straight", "front")])
+
+
+def test_the_driver_of_a_vehicle_is_that_vehicle_with_what_it_was_said_to_do():
+    assert agents("A child was waved across by the driver of a parked lorry on the right.") == sorted(
+        [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front"), ("truck", "stop", "front_right")])
+
+
+def test_the_ego_at_a_red_light_or_a_stop_line_stands_and_a_new_subject_after_and_has_its_own_clause():
+    assert agents("What happens when an ambulance is behind us and we're at a red light?") == sorted(
+        [("ambulance", "go_straight", "back"), ("car", "stop", "ego")])
+    assert ("car", "go_straight", "ego") in agents("There are no stop signs, and the ego is at the junction.")
+
+
+def test_the_noun_after_a_verb_and_before_a_participle_is_an_object():
+    assert ("car", "go_straight", "ego") in agents("How would the AV avoid a cyclist swerving into its lane?")
+
+
+def test_a_fronted_side_is_a_place_not_the_owner_of_the_noun_after_it():
+    assert agents("On the right-hand side a man with a dog waits to cross.") == sorted(
+        [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")])
+    assert ("car", "go_straight", "ego") in agents("A van in the lane to the left of the ego cuts in front of it.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("there's a bin lorry sitting in my lane and I gotta go around it", ("car", "change_lane_to_left", "ego")),
+    ("bloke in a pickup cut me off", ("car", "block_the_ego", "front")),
+    ("right turn, oncoming traffic, 3 cars", ("car", "go_straight", "road_of_straight")),
+    ("scooter lane splitting on the left at a red", ("motorcycle", "go_straight", "back_left")),
+    ("fire engine coming up fast behind, everyone pulling over to the right", ("car", "change_lane_to_right", "ego")),
+])
+def test_casual_phrasings_of_drivers_detours_and_traffic(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_the_ego_that_waits_then_goes_waits_first_and_turns_after():
+    scene = lower("Run 4: ego turning right out of a side road. Ego waited, then went once the gap opened.").scenario
+    assert [[a.action for a in s.agents if a.is_ego] for s in scene.stages] == [["stop"], ["turn_right"]]
+
+
+def test_run_numbers_and_written_ordinals():
+    assert len(agents("R7 - two vans from the left; ego waits for the 2nd van.")) == 3  # the 2nd is one of them
+    assert not any(p == "right" for _, _, p in agents("R12: a bus stops ahead."))
+
+
+def test_the_egos_right_and_the_languages_own_position_names():
+    assert ("cyclist", "go_straight", "right") in agents("Then a cyclist on the ego's right goes straight.")
+    assert ("bus", "go_straight", "road_of_straight") in agents(
+        "ego=car, action=turn_right; agent1=bus, position=road_of_straight, action=go_straight")
+
+
+def test_an_order_after_a_conditional_sentence_is_the_egos():
+    found = agents("If you're on the motorway and a van in the lane to your right starts drifting into your lane, "
+                   "sound your horn and brake.")
+    assert ("car", "change_lane_to_left", "right") in found  # the braking is the ego's, so the van cuts in only
+
+
+def test_a_bare_car_after_a_bare_ego_is_another_car():
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "Ego want to turn left but opposite car is coming so ego must wait.")
+
+
+def test_mirror_images_read_alike_for_overtaking_then_blocking_and_merging_then_moving_over():
+    for side in ("left", "right"):
+        assert (("police", "block_the_ego", f"back_{side}") in agents(
+            f"A patrol car overtook the ego on the {side}, pulled in ahead of it and stopped."))
+        assert ("car", f"change_lane_to_{side}", "ego") in agents(
+            f"We're merging onto the motorway from the slip road; we move {side} into the lane.")
+
+
+@pytest.mark.parametrize("noun, agent_type", [("car", "car"), ("lorry", "truck"), ("taxi", "car"),
+                                              ("motorcyclist", "motorcycle")])
+def test_a_grid_of_lane_manoeuvres_reads_alike_for_every_vehicle(noun, agent_type):
+    for text, action, position in [
+            ("in the left lane cuts in front of us", "change_lane_to_right", "left"),
+            ("from the right lane cuts in ahead of us", "change_lane_to_left", "front_right"),
+            ("overtakes us on the left", "go_straight", "back_left"),
+            ("swerves into our lane from the left and stops", "block_the_ego", "front_left"),
+            ("is tailgating us", "go_straight", "back"),
+            ("comes towards us on a straight road", "go_straight", "front_left")]:
+        for sentence in (f"A {noun} {text}.", f"the {noun} {text}"):
+            assert (agent_type, action, position) in agents(sentence), sentence
+
+
+def test_a_vehicle_stopped_on_the_road_is_no_stop_painted_on_it():
+    scene = lower("The ego turns right while a lorry is stopped on the road we turn into.").scenario
+    assert ("truck", "stop", "at_the_destination") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+    assert "stop_sign_on_road" not in scene.road.required_objects + scene.road.required_signals

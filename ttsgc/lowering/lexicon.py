@@ -16,6 +16,8 @@ from functools import lru_cache
 from pathlib import Path
 
 FOLDER = Path(__file__).resolve().parent / "lexicon"
+ORDINAL_WORDS = {"1": "first", "2": "second", "3": "third", "4": "fourth", "5": "fifth", "6": "sixth"}
+BASE_VARIANT_CATEGORIES = ("sequence",)  # conditions written in any tense; other phrases keep their own forms
 CATEGORIES = ("agents", "actions", "positions", "road", "weather", "behaviours", "numbers", "sequence")
 MAX_DIGITS = 6  # a number with more digits than this is read as "too large"
 TOO_LARGE = 10 ** MAX_DIGITS
@@ -150,22 +152,40 @@ def lexicon() -> Lexicon:
     content = tuple(sorted(w for w in words if len(w) > 3 and w not in function))
     kinds = {words: meaning for meaning, words in _entries("kinds")}
     starts: dict = {}
+    lex = Lexicon(phrases, 0, frozenset(words | function | set(irregular.values())), content, irregular, spelling,
+                  function, kinds, starts)
+    for phrase, entry in list(phrases.items()):  # "when the light goes green" also read as "when it went green"
+        if len(phrase) > 1 and entry[0] in BASE_VARIANT_CATEGORIES:
+            based = tuple(lex.base(w)[0] for w in phrase)
+            if based != phrase:
+                phrases.setdefault(based, entry)
     for phrase in phrases:
         starts[phrase[0]] = max(starts.get(phrase[0], 0), len(phrase))
-    return Lexicon(phrases, max(len(p) for p in phrases), frozenset(words | function | set(irregular.values())),
-                   content, irregular, spelling, function, kinds, starts)
+    return Lexicon(phrases, max(len(p) for p in phrases), lex.vocabulary, content, irregular, spelling, function,
+                   kinds, starts)
 
 
 TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#\d|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 
 
-KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/-]{0,30}?)\s*[:|]\s*(.*)$")
+KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/_-]{0,30}?)\s*[:|]\s*(.*)$")
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
               "description", "goal", "purpose", "report", "note"}
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
+PLAIN_KEYS |= {"setup", "set up", "actors", "agents", "participants", "npcs", "road", "roads", "map", "route",
+               "location", "description", "details", "steps", "notes", "trigger", "initial conditions",
+               "initial state", "layout", "geometry", "infrastructure", "traffic", "other traffic", "situation",
+               "context", "given", "when", "then", "and", "scene description", "scenario description"}
+ORACLE_KEYS = {"expected", "expected result", "expected behaviour", "expected behavior", "expected outcome", "ac",
+               "acceptance", "acceptance criteria", "acceptance criterion", "pass criterion", "pass criteria",
+               "success criteria", "success criterion", "kpi", "kpis", "metrics", "metric", "result", "outcome",
+               "assert", "assertion", "assertions", "check", "checks", "verify", "pass", "fail", "fail criterion",
+               "pass fail", "evaluation", "measure", "measured", "log", "logging", "priority", "status", "owner",
+               "assignee", "labels", "label", "ticket", "jira", "reporter", "component", "sprint", "tags", "tag",
+               "links", "attachments", "version", "build", "seed"}  # what the test checks, not the scene
 
 
 def _lines(text: str) -> str:
@@ -173,20 +193,29 @@ def _lines(text: str) -> str:
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
     if "\n" not in text.strip():
-        return text
+        return _keyed_agents(text)
     out = []
-    for line in text.splitlines():
+    lines = text.strip().splitlines()
+    staged = False
+    for k, line in enumerate(lines):
         if not line.strip():
             continue
         line = line.replace("->", " and ").replace("\u2192", " and ")
         m = KEY_LINE.match(line)
+        if k == 0 and m is None and len(lines) > 2 and not lines[1].strip() and not line.rstrip().endswith(
+                (".", "!", "?")) and len(line.split()) <= 12:
+            out.append("\u00a7 " + line.strip() + ".")  # a heading line over a blank line: the ticket's title
+            continue
         if m is None:
             out.append(line.strip().lstrip("-*\u2022 ").rstrip(".") + ".")
             continue
         key, value = m.group(1).strip(), m.group(2).strip().rstrip(".")
         lowered = key.lower()
-        if re.fullmatch(r"stage \d+|step \d+|phase \d+", lowered):
-            out.append(("then " if out else "") + value + ".")
+        if lowered in ORACLE_KEYS or lowered.split()[0] in ("expected", "acceptance", "pass", "success", "kpi"):
+            continue
+        if re.fullmatch(r"(stage|step|phase) (\d+|[a-z])", lowered):
+            out.append(("then " if staged or any(not x.startswith("\u00a7") for x in out) else "") + value + ".")
+            staged = True
         elif lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
         elif lowered in PLAIN_KEYS:
@@ -197,6 +226,37 @@ def _lines(text: str) -> str:
             continue
         else:
             out.append(f"{key} is {value}.")
+    return " ".join(out)
+
+
+LABEL_KEY = re.compile(r"(?:npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|v|sv|pov|tv|gvt|veh"
+                       r"|vehicle|unit|participant)[ _#]?\d{1,2}")
+
+
+def _names_agent(key: str) -> bool:
+    """'Van', 'ego', 'NPC2', 'Actor_1', 'lead car': a key that names an agent, not a title."""
+    words = tuple(_normalize(key).split())
+    if LABEL_KEY.fullmatch(key.lower().strip()):
+        return True
+    entry = lexicon().phrases.get(words) or lexicon().phrases.get(words[-1:]) if words else None
+    return bool(entry) and entry[0] == "agents" and entry[1] != "none" and len(words) <= 3
+
+
+def _keyed_agents(text: str) -> str:
+    """'Ego: going straight. Van: stopped, front-right.' on one line: each key that names an agent is the
+    subject of what follows it ('Van is stopped, front-right.'); other keys are left to the title rule."""
+    pieces = re.split(r"(?<=[.;|])\s+|\s+/\s+", text.strip())
+    if sum(1 for p in pieces if (m := KEY_LINE.match(p)) and _names_agent(m.group(1))) < 2 and not (
+            len(pieces) == 1 and (m := KEY_LINE.match(pieces[0])) and _names_agent(m.group(1))
+            and m.group(1).strip().lower().split()[0] not in TITLE_KEYS):
+        return text
+    out = []
+    for piece in pieces:
+        m = KEY_LINE.match(piece)
+        if m and _names_agent(m.group(1)) and m.group(2).strip():
+            out.append(f"{m.group(1).strip()} is {m.group(2).strip().rstrip('.;')}.")
+        else:
+            out.append(piece)
     return " ".join(out)
 
 
@@ -214,9 +274,29 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"'m\b", " am", text)
     text = re.sub(r"'d\b", " would", text)
     text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
+    text = re.sub(r"^\s*(?:good\s+)?(?:morning|afternoon|evening)\s*[!,.]+", " ", text)  # a greeting, not the time
+    text = re.sub(r"\b(?:can|could|would|will)\s+(?:you|u)\s+(?:please\s+|pls\s+|plz\s+)?(?=(?:make|create|build|"
+                  r"generate|give|show|simulate|set|write|do|add|put|design|produce|model|mock|spin|whip|knock|"
+                  r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
+    text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
+    text = re.sub(r"\blv\b", "lead vehicle", text)  # "LV decelerates": the lead vehicle
+    text = re.sub(r"\br\d{1,4}\b", " ", text)  # "R18 - T-junction": a run number, not a side
+    text = re.sub(r"\b(\d{1,2})(?:st|nd|rd|th)\b",
+                  lambda m: ORDINAL_WORDS.get(m.group(1), m.group(0)), text)  # "the 2nd car": the second
+    text = re.sub(r"\b(l|r) to (l|r)\b", lambda m: " to ".join("left" if x == "l" else "right" for x in m.groups()),
+                  text)  # "crossing L to R"
+    text = re.sub(r"\b(turn\w*|lane|chang\w*|from|to|on|go|goes|going|went|merg\w*|mov\w*|swerv\w*|veer\w*|"
+                  r"hard|unprotected|protected|pull\w*|cut\w*|head\w*|bear\w*|exit\w*|filter\w*|ego|sidewalk|"
+                  r"pavement|shoulder|kerb|curb|side|lanes?|ahead|behind|front|rear|back) (l|r)\b(?![#\d])",
+                  lambda m: f"{m.group(1)} {'left' if m.group(2) == 'l' else 'right'}", text)  # "changed lane L"
+    text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
+                  lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
     text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end
+    text = re.sub(r"\s[-\u2013\u2014]+\s|[\u2013\u2014]", " , ", text)  # a dash between words is a pause
+    text = re.sub(r"\b4\s?x\s?4s?\b", "four by four", text)  # "a 4x4"
     text = re.sub(r"(\d)(kmh|mph|m|s|km|metres|meters|seconds)\b", r"\1 \2", text)
+    text = re.sub(r"\bcross-roads?\b", "crossroads", text)  # the junction, not "cross road"
     text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
     text = re.sub(r"\n\s*\n", " . ", text)
     text = re.sub(r"s' ", "s 's ", text)
@@ -228,11 +308,23 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(that|this|its|our|their) (left|right) lane", r"the \2 lane", text)
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
     text = re.sub(r"\b(v\d|vehicle \d|unit \d) \(([^()]*)\)", r"\1 , \2 ,", text)  # "vehicle 1 (the AV)": apposition
-    text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego) \((?:an? |the )?([a-z ]{2,30})"
+    text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
+    text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
+                  r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag
+    text = re.sub(r" \((?:all |both )?(?:children|kids|pedestrians|people|adults|cars|vehicles|cyclists|pupils)\)",
+                  "", text)  # "ped_1, ped_2, ped_3 (children)": what the listed ones are
+    text = re.sub(r"\s*=\s*", " is ", text)  # "Actor_1 = wheelchair user", "ego=car"
+    text = re.sub(r"\b(\d{1,2})\s?x\b", r"\1", text)  # "2x pedestrians"
+    text = re.sub(r" \(([a-z]{2,6}[a-z0-9]?)\)", r" , \1 ,", text)  # "a pedestrian target (EPTa)": its short name
+    text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego|npc|adversary|hero)"
+                  r" \((?:an? |the )?([a-z ]{2,30})"
                   r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
     text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
                   r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
-    text = re.sub(r"\b([a-z]{1,3})(\d)\b", r"\1#\2", text)  # SV1, POV2, V1: a label, not a count
+    text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh)[ _](\d)\b"
+                  r"(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?|cars?))", r"\1\2",
+                  text)  # "NPC_1", "Actor 2"
+    text = re.sub(r"\b([a-z]{1,3}|npc|actor|agent|target|object|adversary)(\d)\b", r"\1#\2", text)  # SV1, NPC2: labels
     tokens: list[Token] = []
     sentence = 0
     raw = TOKEN.findall(text)
@@ -269,13 +361,13 @@ def tokenize(text: str) -> list[Token]:
         for part in lex.spelling.get(word, word).split():
             base, inflected = lex.base(part)
             misspelt = ""
-            if base not in lex.vocabulary and len(part) >= 4 and part.isalpha() and not part.endswith("ing"):
+            if base not in lex.vocabulary and len(part) >= 5 and part.isalpha() and not part.endswith("ing"):
                 guess = _corrected(lex, part)
                 if guess is not None:  # "pedestrain", "interesection": read as the word meant
                     misspelt, part = part, guess
                     base, inflected = lex.base(part)
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
-                and part not in ("is", "was", "has", "does", "goes", "bus")
+                and part not in ("is", "was", "has", "does", "goes", "bus", "police")
             tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question,
                                 sentence_of_raw[position] in titled, misspelt))
     return tokens
@@ -316,6 +408,7 @@ def _lookup(lex: Lexicon, span: list[Token]):
     raw = keys[0]
     for key in keys:
         entry = lex.phrases.get(key)
-        if entry is not None and (key == raw or entry[1] != "none"):  # "the bus stops" is no "bus stop"
-            return entry
+        if entry is not None and (key == raw or entry[1] != "none") and not (
+                entry[0] == "road" and key[0] != raw[0] and raw[0].endswith(("ed", "ing"))):
+            return entry  # "the bus stops" is no "bus stop"; "stopped on the road" is no STOP on the road
     return None

@@ -27,7 +27,7 @@ from functools import lru_cache
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
-from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, lexicon, matches, read_number, tokenize
+from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, _names_agent, lexicon, matches, read_number, tokenize
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -53,7 +53,9 @@ UNSPECIFIED = OpenChoices({  # other seeds draw from templates/unspecified.toml 
 })
 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
-DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone"}
+DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone",
+           "dude", "bloke", "lad", "chap", "mate", "fella", "idiot", "jerk", "moron", "lunatic", "nutter", "maniac",
+           "somebody", "young man", "old man", "teenager", "teen", "kid"}
 SCENERY_PREPOSITIONS = {"between", "past", "among", "amongst", "through", "around", "beside", "by", "of", "in",
                         "with"}
 DEFINITE = {"the", "this", "that", "these", "those", "said"}
@@ -73,7 +75,7 @@ RELATIVES = {"which", "who", "that", "whose", "whom"}
 FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
-OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake", "around"}
+OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake", "around", "split", "splitting"}
 ACTION_RANK = {  # the more specific predicate wins among equally strong ones
     "sideways_left": 6, "sideways_right": 6, "block": 9, "cut_in": 7, "lane_left": 6, "lane_right": 6,
     "lane_change": 6, "turn_left": 8, "turn_right": 8, "turn": 5, "u_turn": 5, "cross": 4, "stop": 3, "walk": 2,
@@ -82,6 +84,8 @@ ACTION_RANK = {  # the more specific predicate wins among equally strong ones
 SIDES = ("left", "right")
 COMPASS_OPPOSITE = {"compass_north": "compass_south", "compass_south": "compass_north",
                     "compass_east": "compass_west", "compass_west": "compass_east"}
+COMPASS_LEFT = {"compass_north": "compass_west", "compass_east": "compass_north", "compass_south": "compass_east",
+                "compass_west": "compass_south"}  # the side on the left of a heading
 TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn", "let", "to let"}
 LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
               "near", "nearside", "side"}
@@ -139,6 +143,7 @@ class Entity:
     parent: "Entity | None" = None  # the counted group it was taken from
     label: str = ""  # the name the text gives it ("SV1")
     includes_ego: bool = False  # "three cars including the ego": the ego shares what the group does
+    aliases: set = field(default_factory=set)  # short names given in brackets ("(GVT)")
 
 
 @dataclass
@@ -149,6 +154,8 @@ class _Reader:
     used: set = field(default_factory=set)  # token indexes some rule placed
     entities: list[Entity] = field(default_factory=list)
     order: int = 0
+    clause_mentions: list = field(default_factory=list)  # entities named so far in the clause being read
+    after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
 
@@ -167,11 +174,17 @@ def _units(tokens: list[Token]) -> list[Unit]:
     out, i = [], 0
     while i < len(tokens):
         m = found.get(i)
-        if m is not None and m.category == "agents" and m.meaning == "ego" and tokens[m.end - 1].possessive and \
-                m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front"):
+        if m is not None and m.category == "agents" and m.meaning == "ego" and (
+                tokens[m.end - 1].possessive or tokens[m.end - 1].word not in ("i", "we", "you", "me", "us")) and \
+                m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front", "right",
+                                                               "left", "rear", "back") and \
+                tokens[m.end].sentence == tokens[m.end - 1].sentence and (tokens[m.end - 1].possessive or
+                                                                           tokens[m.end].word in ("lane", "path")):
             span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
-            meaning = "ahead" if span[-1].word == "front" else "ego_lane"
-            if m.start > 0 and tokens[m.start - 1].word in ("into", "onto", "across"):
+            meaning = {"front": "ahead", "right": "side_right", "left": "side_left", "rear": "behind",
+                       "back": "behind"}.get(span[-1].word, "ego_lane")  # "on the ego's right"
+            before = m.start - 1 if m.start > 0 and tokens[m.start - 1].word != "the" else m.start - 2
+            if before >= 0 and tokens[before].word in ("into", "onto", "across"):  # "into the VUT's path"
                 meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
             out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
             i = m.end + 1
@@ -184,25 +197,75 @@ def _units(tokens: list[Token]) -> list[Unit]:
         category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
+    return _short_names(_turned_into(out))
+
+
+def _turned_into(units: list[Unit]) -> list[Unit]:
+    """'crossing the road I was turning into': a relative clause on a road noun naming where the ego turns."""
+    out, k = [], 0
+    while k < len(units):
+        u = units[k]
+        out.append(u)
+        k += 1
+        if u.tokens[-1].word not in ("road", "street", "avenue") or k >= len(units):
+            continue
+        j = k + (k + 1 < len(units) and units[k].word in ("in", "into", "onto") and units[k + 1].word == "which")
+        j += j < len(units) and units[j].word in ("that", "which")  # "the road (in which) the AV is turning"
+        j += j < len(units) and units[j].word == "the"
+        if not (j < len(units) and units[j].category == "agents" and units[j].meaning == "ego"):
+            continue
+        j += 1
+        while j < len(units) and units[j].category == "word" and units[j].word in AUXILIARIES | {"am", "about"}:
+            j += 1
+        into = j + 1 < len(units) and units[j + 1].word in ("into", "onto")
+        if j < len(units) and units[j].category == "actions" and units[j].meaning.startswith("turn") and (
+                into or units[k].word in ("in", "into", "onto")):
+            end = j + 1 + into
+            tokens = tuple(t for x in units[k:end] for t in x.tokens)
+            out.append(Unit(units[k].start, units[end - 1].end, "positions", "destination", tokens))
+            k = end
     return out
+
+
+def _short_names(units: list[Unit]) -> list[Unit]:
+    """'a Soft Car Target (SCT) ... the SCT brakes': a word the lexicon lacks, given in brackets after an agent
+    noun, names that agent wherever it is used."""
+    names: dict[str, str] = {}
+    for k in range(1, len(units) - 2):
+        u, name, close = units[k], units[k + 1], units[k + 2]
+        if u.category == "comma" and units[k - 1].category == "agents" and units[k - 1].meaning not in (
+                "none", "ego") and name.category == "word" and close.category == "comma" and \
+                name.word not in lexicon().function_words and name.word.isalpha() and 2 <= len(name.word) <= 6:
+            names[name.word] = units[k - 1].meaning
+    if not names:
+        return units
+    return [Unit(u.start, u.end, "agents", names[u.word], u.tokens) if u.category == "word" and u.word in names
+            else u for u in units]
 
 
 VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
                        "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
                        "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
                        "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead",
-                       "very", "infront", "one"}
+                       "very", "infront", "one", "front"}
 
 
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
     span = tuple(tokens[m.start:m.end])
-    nxt = tokens[m.end].word if m.end < len(tokens) else ""
+    nxt = tokens[m.end].word if m.end < len(tokens) and tokens[m.end].sentence == span[-1].sentence else ""
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and \
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
+    after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
+            after[:1] and after[0] in ("behind", "ahead", "beside", "alongside", "next", "up")
+            or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
+        return [Unit(m.start, m.end, "word", "right", span)]  # "sits right on our tail": how close, not a side
     prev = tokens[m.start - 1] if m.start > 0 else None
+    if prev is not None and prev.word == "," and m.start > 1 and m.category == "road":
+        prev = tokens[m.start - 2]  # "pedestrians (crossing, from left)": the noun before the bracket
     if m.category == "agents" and m.meaning == "none" and [t.word for t in span] == ["bus", "stops"] and \
             prev is not None and prev.word in ("a", "the", "this", "that", "city", "school"):
         return [Unit(m.start, m.start + 1, "agents", "bus", span[:1]),  # "a bus stops": no bus stops
@@ -212,17 +275,22 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         return [Unit(m.start, m.end - 1, "actions", m.meaning, span[:-1]),  # "is passed by the ego": a passive
                 Unit(m.end - 1, m.end, "word", "by", span[-1:])]
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
-                                                      "people", "jogger", "man", "woman", "boy", "girl", "student")
-    after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be",
+                                                      "people", "jogger", "man", "woman", "boy", "girl", "student",
+                                                      "vru", "children", "kids", "peds", "pedestrians", "walker",
+                                                      "toddler", "pensioner", "cyclists", "bicyclist")
+    after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be", "not",
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
     nxt2 = tokens[m.end + 1].word if m.end + 1 < len(tokens) else ""
     place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
-    if m.category == "road" and span[-1].word == "crossing" and (len(span) == 1 or span[0].base == "pedestrian") and (
+    if m.category == "road" and span[-1].word in ("crossing", "xing") and (
+            len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
             nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))) and \
-            not place_then_verb:  # "the pedestrian crossing ahead is blocked": the crossing
+            not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
+                                         and len(span) == 1):
+        # the verb: "a pedestrian crossing the road"; the noun stays: "no crossing", "the pedestrian crossing ahead is"
         out = []
-        if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians"):
+        if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians", "ped", "peds"):
             out.append(Unit(m.start, m.start + 1, "agents", "pedestrian", span[:1]))
         out.append(Unit(m.end - 1, m.end, "actions", "cross", span[-1:]))
         return out
@@ -249,10 +317,13 @@ def _road(r: _Reader) -> RoadSpec:
         if word not in target and word not in other:
             target.append(word)
 
+    negated_in = -1
     for k, u in enumerate(units):
+        if negated and u.tokens[0].sentence != negated_in:
+            negated = False  # "no crossing. Road: mid-block": a denial ends with its sentence
         if u.category == "word" and u.word in NEGATIONS or (u.category == "word" and u.word.endswith("n't")) \
                 or (u.category == "numbers" and u.meaning == "0"):
-            negated = True
+            negated, negated_in = True, u.tokens[0].sentence
             r.mark(u)
             if k > 0 and units[k - 1].category == "agents" and units[k - 1].meaning not in ("none", "ego") and \
                     k + 1 < len(units) and units[k + 1].category == "road" and units[k + 1].meaning == "traffic_light":
@@ -260,13 +331,18 @@ def _road(r: _Reader) -> RoadSpec:
                 negated = False
             continue
         if u.category == "actions" and u.base in ("yield", "give way") and (
-                k == 0 or units[k - 1].category in ("comma", "word") and units[k - 1].word in (",", "a", "at", "with")
+                k == 0 or units[k - 1].category in ("comma", "word")
+                and units[k - 1].word in (",", "a", "at", "with", "the")
                 or (k + 1 < len(units) and units[k + 1].word in ("sign", "signs", "junction", "line", "markings"))):
             put("yield", negated)  # "a give way junction", "roundabout entry, give way": the sign
             r.mark(u)
             u.category, u.meaning = "road", "yield"
             continue
-        if u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
+        if u.category == "sequence" and {"light", "lights", "signal", "green"} & {t.word for t in u.tokens}:
+            put("traffic_light", False)  # "when the light goes green": a signal there
+        if u.category == "actions" and {"stop", "sign"} <= {t.word for t in u.tokens}:
+            put("stop", False)  # "runs the stop sign"
+        elif u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
             put("traffic_light", False)  # "runs a red light"
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
                                                                                           "signaled") \
@@ -279,10 +355,16 @@ def _road(r: _Reader) -> RoadSpec:
             continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
                 any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
-                u.tokens[-1].word == "lights" and any(x.word in ("flashing", "flash", "flashed")
+                u.tokens[-1].word == "lights" and any(x.word in ("flashing", "flash", "flashed", "going", "blazing")
                                                       for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
             r.mark(u)
             continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
+        if u.category == "road" and u.meaning == "traffic_light" and {t.word for t in u.tokens} <= {"light", "lights"} \
+                and any(x.word in ("had", "has", "have", "having") for x in units[max(0, k - 4):k]) and any(
+                    x.word in ("he", "she", "they", "it") or x.category == "agents" for x in units[max(0, k - 6):k]):
+            r.mark(u)
+            negated = False
+            continue  # "he had no lights at all": the rider's own lamps
         if u.category == "road":
             r.mark(u)
             meaning = u.meaning
@@ -324,6 +406,9 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
             continue
         negated = False
+    kinds = [w for w in fields["required_objects"] if w in V.CROSSWALK_OBJECTS and w != "crosswalk"]
+    if kinds and "crosswalk" in fields["required_objects"]:
+        fields["required_objects"].remove("crosswalk")  # "a zebra crossing ... stops before the crossing": one
     speed_limits = _speed_limits(r)
     for word in speed_limits:
         put(word, False)
@@ -339,7 +424,8 @@ def _road(r: _Reader) -> RoadSpec:
 def _denied(units: list[Unit], k: int) -> bool:
     """'no junction', 'not at a junction', 'without any junctions', 'away from junctions'."""
     for u in reversed(units[max(0, k - 3):k]):
-        if u.category == "word" and (u.word in NEGATIONS or u.word == "away"):
+        if u.category == "word" and (u.word in NEGATIONS or u.word == "away") or \
+                u.category == "numbers" and u.meaning == "0":
             return True
         if not (u.category == "word" and u.word in ("at", "a", "an", "any", "from", "near", "the")):
             return False
@@ -372,7 +458,8 @@ def _speed_limits(r: _Reader) -> list[str]:
             "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES)
         if speed_of_someone:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
-        road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]} & LIMITED_PLACES and \
+        road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]
+                                        if x.sentence == t.sentence} & LIMITED_PLACES and \
             after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
         if not (around & LIMIT_WORDS or unit_then_road or road_then_unit) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
@@ -637,11 +724,19 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
     def close(next_link: str = "", next_condition: bool = False):
         nonlocal current, condition, link
         if current:
-            subordinate = bool(out) and out[-1].link in SUBORDINATE and link == ","
+            this = current[0].tokens[0].sentence
+            opened = [c for c in out if c.units[0].tokens[0].sentence == this]  # "If ... and a car ..., brake"
+            subordinate = bool(opened) and opened[0].link in SUBORDINATE and link == "," and \
+                not any(c.link == "," for c in opened[1:])
             out.append(Clause(current, stage, condition, link=link, after_subordinate=subordinate))
         current, condition, link = [], next_condition, next_link
 
+    skip_next = False
     for k, u in enumerate(units):
+        if skip_next:
+            skip_next = False
+            r.mark(u)
+            continue
         nxt = units[k + 1] if k + 1 < len(units) else None
         new_sentence = u.tokens[0].sentence != sentence
         sentence = u.tokens[0].sentence
@@ -651,8 +746,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "sequence" and prev_word in RELATIVES:
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
-        if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and \
-                nxt.tokens[0].word.endswith("ing"):
+        if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and (
+                nxt.tokens[0].word.endswith("ing") or nxt.category == "actions"):
+            if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
+                skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
         if u.category == "sequence" and not (u.word == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers")) and not (
@@ -662,7 +759,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if out or current:
                 close()
                 stage += 1
-            close(next_condition=u.meaning == "once")
+            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear"}  # "when the light goes green": said in full
+            joined_on = (prev_word in ("and", ",") or u.tokens[0].word == "and") and not new_sentence and \
+                not _starts_subject(units, k + 1)  # "indicates right and then turns"
+            close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole)
             continue
         if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
             r.mark(u)
@@ -679,13 +779,24 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
-            if _has_verb(current) or condition or new_noun or joined:
+            order = nxt is not None and _bare_verb(nxt) and _has_agent(current) and not any(
+                x.word in ("a", "an", "the", "this", "that") for x in current) and \
+                nxt.tokens[0].word not in SAME_IN_THE_PAST  # "bus ahead, overtake it"; not "a guy ..., cut in"
+            short_name = bool(current) and current[-1].category == "agents" and nxt is not None and \
+                nxt.category == "agents" and len(nxt.tokens) == 1 and k + 2 < len(units) and \
+                units[k + 2].category == "comma" and not nxt.tokens[0].plural  # "a target (GVT), ..."
+            ego_named = bool(current) and current[-1].category == "agents" and current[-1].meaning != "ego" and \
+                any(x.category == "agents" and x.meaning == "ego" for x in units[k + 1:k + 3]) and \
+                all(x.category == "agents" or x.word in ("the", "a", "an") for x in units[k + 1:k + 3]) and \
+                (k + 3 >= len(units) or units[k + 2].category == "comma" or units[k + 3].category == "comma")
+            # "across the path of Unit 1, the AV, which ...": the unit is named the ego
+            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
             continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
-            if u.word in ("and", "or") and not _has_verb(current):
+            if u.word in ("and", "or") and not _has_verb(current) and not _new_subject_after_copula(current, units, k):
                 current.append(u)
                 continue
             if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
@@ -697,8 +808,48 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close(u.word)
             continue
         current.append(u)
+        if condition and u.category == "word" and u.word in SIGNAL_COLOURS and len(current) >= 2 and \
+                current[-2].category == "actions" and _signal_change(current, len(current) - 2):
+            close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+COPULAS = {"is", "are", "was", "were", "am"}
+SUBJECT_PRONOUNS = {"we", "i", "it", "they", "he", "she", "you"}
+
+
+def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'a police car is behind us and we pull over': a complete 'X is PLACE', then a new subject and its verb."""
+    if not (_has_agent(current) and any(u.category == "word" and u.word in COPULAS for u in current)):
+        return False
+    rest = units[k + 1:k + 5]
+    if not rest:
+        return False
+    starts = rest[0].category == "agents" and rest[0].meaning == "ego" or rest[0].word in SUBJECT_PRONOUNS or (
+        rest[0].word in ("the", "a", "an") and len(rest) > 1 and rest[1].category == "agents"
+        and rest[1].meaning != "none")
+    if not starts:
+        return False
+    for x in units[k + 2:k + 10]:
+        if x.category == "actions" or x.word in COPULAS:
+            return True  # "... is behind us and we pull over", "... and a car in the lane to our left merges"
+        if x.category == "comma" or x.word in CLAUSE_WORDS:
+            return False
+    return False
+
+
+def _starts_subject(units: list[Unit], k: int) -> bool:
+    """A clause starting here names its own subject ('then the truck turns', 'then we stop')."""
+    for u in units[k:k + 4]:
+        if u.category == "agents":
+            return True
+        if not (u.category in ("numbers", "number", "behaviours") or u.category == "word" and (
+                u.word in DETERMINERS or u.word in SUBJECT_PRONOUNS)):
+            return False
+        if u.word in SUBJECT_PRONOUNS:
+            return True
+    return False
 
 
 def _starts_noun(units: list[Unit], k: int) -> bool:
@@ -708,8 +859,9 @@ def _starts_noun(units: list[Unit], k: int) -> bool:
             return u.meaning != "none"
         if not (u.category in ("numbers", "number", "behaviours") or
                 (u.category == "word" and u.word in DETERMINERS | {"and"}) or
-                (u.category == "positions" and u.word in ADJECTIVE_POSITIONS and len(u.tokens) == 1)):
-            return False
+                (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS)
+                or (u.category == "positions" and u.word in ADJECTIVE_POSITIONS and len(u.tokens) == 1)):
+            return False  # "..., delivery lorry stopped": an unknown word before a noun is its adjective
     return False
 
 
@@ -772,8 +924,9 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
     """(type, is_ego) of an agent unit; the ego's type from its noun ('the ego truck')."""
     if u.meaning == "ego":
         words = [t.base for t in u.tokens]
-        for kind in ("truck", "bus", "motorcycle"):
-            if kind in words:
+        for kind, nouns in (("truck", ("truck", "lorry", "hgv")), ("bus", ("bus", "coach")),
+                            ("motorcycle", ("motorcycle", "motorbike"))):
+            if set(nouns) & set(words):
                 return kind, True
         return "car", True
     if u.meaning == "generic":
@@ -813,7 +966,10 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             in_determiner = True
         elif in_determiner:
             break
-        elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)) or \
+        elif units[head].meaning == "ego" and u.category == "actions":
+            break  # "passed ego on right": the verb before the ego is no premodifier of it
+        elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)
+                                            and not any(m.category == "actions" for m in modifiers)) or \
                 (u.category == "positions" and len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS) or \
                 (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS):
             modifiers.append(u)
@@ -822,9 +978,11 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         first = k
         k -= 1
     # a premodifier run without a determiner in front of it belongs to what came before ("ego following truck")
-    if not words and count is None and modifiers and first > 0 and units[first - 1].category in ("agents",
-                                                                                                "actions"):
-        first = head
+    if not words and count is None and modifiers and first > 0 and (
+            units[first - 1].category == "agents" or units[first - 1].category == "actions"
+            and modifiers[-1].category != "actions" or units[first - 1].word in AUXILIARIES
+            and modifiers[-1].category == "positions"):
+        first = head  # "ego following truck", "the ego is following slow-moving bus": the predicate's, not a noun's
         modifiers = []
     return count, first, words, modifiers
 
@@ -864,13 +1022,25 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count = UNSPECIFIED.vague_count(count, len(r.entities))
     bare = not words and count is None and not plural and not label and not (
         head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
-    if bare and any(e.head == u.base and not e.is_ego and e.count == 1 for e in r.entities):
-        definite = True  # "ego behind cyclist, cyclist swerves left": the same cyclist
+    if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
+                    and e.count == 1 for e in r.entities):
+        definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
+    ego_now = next((e for e in r.entities if e.is_ego), None)
+    if bare and ego_now is not None and u.base in ("vehicle", "car") and (
+            ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and \
+            not any(not e.is_ego and e.type == "car" for e in r.entities):
+        return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego
+    if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
+        driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
+            [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
+        if driven:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
+            return NounPhrase(driven[-1], head, first)
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
-        if len(found) == 1 and not found[0].parent and _placed_elsewhere(found[0], units, head):
-            found = []  # "a car ahead ... the car behind us": another car
+        if len(found) == 1 and not found[0].parent and (_placed_elsewhere(found[0], units, head) or (
+                found[0] in r.clause_mentions and head + 1 < len(units) and units[head + 1].category == "positions")):
+            found = []  # "a car ahead ... the car behind us", "the car from the left and the car from the right"
         if found:
             if len(found) == 1:
                 return NounPhrase(found[0], head, first, plural=plural)
@@ -882,7 +1052,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                                                        or nxt.word in AUXILIARIES or u.tokens[-1].possessive):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
         if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
-                not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions"):
+                not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
+                not _ego_object_follows(units, head):
+            # ("the car overtakes us": the ego is named after it, so the car is another)
             ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
             r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
             return NounPhrase(ego, head, first)
@@ -891,7 +1063,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         before -= 1  # "between parked cars"
     scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS or \
         any(m.category == "word" and m.word in SCENERY_PREPOSITIONS for m in modifiers)  # "from between parked cars"
-    if scenery and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
+    between = before >= lo and units[before].word == "between"  # "from between two parked cars": scenery too
+    if scenery and plural and (count is None or between) and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
             not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
             count is None and plural and before >= lo and "of" in words
             and units[before].word in ("row", "line", "lot", "rows")):  # "a row of parked cars": scenery
@@ -913,7 +1086,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.meaning == "generic" or u.base == "vehicle":  # "a vehicle": its type is left open
         kind = UNSPECIFIED.agent_type(kind, len(r.entities))
     entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
-                    generic=u.meaning == "generic" or (u.base == "vehicle" and count > 1), label=label)
+                    generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label)
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
     if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
@@ -929,14 +1102,32 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         r.entities.append(entity)
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
-    if first >= 2 and units[first - 1].category == "agents" and units[first - 1].word == "traffic" and \
+    back = first - 1 - (first >= 2 and units[first - 1].category == "comma")  # "oncoming traffic, 2 cars"
+    if back >= 1 and units[back].category == "agents" and units[back].word == "traffic" and \
+            units[back - 1].category == "positions":
+        _modify(r, entity, units[back - 1], stage, strength=1)
+    elif first >= 2 and units[first - 1].category == "agents" and units[first - 1].word == "traffic" and \
             units[first - 2].category == "positions":
         _modify(r, entity, units[first - 2], stage, strength=1)  # "oncoming traffic two cars": the cars are oncoming
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
 
 
 OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side_left": {"side_right"},
-                   "side_right": {"side_left"}}
+                   "side_right": {"side_left"}, "from_left": {"from_right", "road_right"},
+                   "from_right": {"from_left", "road_left"}, "road_left": {"road_right", "from_right"},
+                   "road_right": {"road_left", "from_left"}}
+
+
+def _ego_object_follows(units: list[Unit], head: int) -> bool:
+    """'the car overtakes us', 'the car swerves into our lane': the ego is named in the car's own predicate
+    (before any other agent), so the car is another road user."""
+    for x in units[head + 1:]:
+        if x.category == "agents" and x.meaning == "ego" or x.category == "positions" and {
+                t.word for t in x.tokens} & {"us", "our", "me", "my", "ego", "you", "your"}:
+            return True
+        if x.category == "agents" and x.meaning != "none":
+            return False
+    return False
 
 
 def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
@@ -944,6 +1135,8 @@ def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
     nxt = units[head + 1] if head + 1 < len(units) else None
     if nxt is None or nxt.category != "positions":
         return False
+    if nxt.tokens[-1].word in ("it", "them") and nxt.meaning in ("ahead", "behind", "level"):
+        return True  # "a taxi stops ... the car behind it": another car, placed by the taxi
     return bool(OPPOSITE_PLACES.get(nxt.meaning, set()) & e.features)
 
 
@@ -965,7 +1158,7 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
                                                         or (e.generic and kind in V.EGO_TYPES))]
     if head and head not in GENERAL_NOUNS and not both and not plural:
-        same = [e for e in pool if e.head.split()[-1] == head.split()[-1]
+        same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"]
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool:
@@ -1024,6 +1217,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 e.features.add("on_sidewalk")
         else:
             e.features.add(u.meaning)
+    elif u.category == "actions" and u.meaning == "same":
+        model = next((x for x in reversed(r.entities) if x is not e and not x.is_ego and x.actions), None)
+        if model is not None:  # "then a second taxi did exactly the same thing": its manoeuvre, from its place
+            e.actions += [(stage, strength) + a[2:3] + (r.tick(),) + a[4:] for a in model.actions]
+            e.features |= model.features
+            e.relative_to = e.relative_to or model.relative_to
+            r.notes.append(f"inferred: '{e.head}' does what '{model.head}' did")
     elif u.category == "actions":
         direction = None
         if clause_units is not None and k is not None and (u.meaning in ("turn", "lane_change", "cut_in") or (
@@ -1045,6 +1245,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             side = _direction_after(r, clause_units, k) or next(
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
+            if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round"):
+                side = UNSPECIFIED["ego_lane_change_direction"]  # "I have to go around it": out into the next lane
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
                 for x in clause_units[k + 1:k + 6]:
@@ -1055,10 +1257,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
-        if action == "stop" and {t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
-                                                                 "stall", "stalled", "double", "abandon"}:
+        if action == "stop" and ({t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
+                                                                  "stall", "stalled", "double", "abandon"}
+                                 or {"bus", "stop"} <= {t.word for t in u.tokens}):  # "at a bus stop": at the kerb
             e.features.add("parked")
         if action == "stop" and e.is_ego and {t.base for t in u.tokens} & {"brake", "brakes"} and not (
+                {t.word for t in u.tokens} & {"halt", "stop", "standstill"}) and not (
                 clause_units is not None and k is not None and any(
                     x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])):
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
@@ -1066,7 +1270,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
-        e.actions.append((stage, strength, ACTION_RANK.get(action, 0), r.tick(), action, direction))
+        earlier = clause_units is not None and k is not None and any(
+            x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
+        # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
+        e.actions.append((stage, strength, ACTION_RANK.get(action, 0), 0 if earlier else r.tick(), action,
+                          direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
 
@@ -1080,8 +1288,9 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
                     u.meaning.startswith("road") and not turning) or (
                     not turning and any(x.word == "from" for x in units[k + 1:j])) or (
-                    not turning and {"out", "from"} & set(units[k].base.split())):  # "pulling out of a stop on the right"
-                return None  # where it comes from, not where it goes
+                    not turning and {"out", "from"} & set(units[k].base.split()) and not (
+                        j == k + 1 and len(u.tokens) == 1)):  # "pulling out of a stop on the right"
+                return None  # where it comes from, not where it goes ("pulls out right": where it goes)
             r.mark(u)
             u.meaning = "used"
             return "left" if "left" in u.base else "right"
@@ -1096,6 +1305,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     stage = clause.stage
     _side_roads(units)
     phrases: list[NounPhrase] = []
+    roles = [i + 1 for i, u in enumerate(units[:-1]) if u.category == "agents" and u.meaning not in (
+        "ego", "none", "generic") and units[i + 1].category == "agents" and units[i + 1].base in ROLE_NOUNS]
+    for i in roles:  # "a pedestrian target", "police NPC": the role noun says no type, and is left out
+        r.mark(units[i])
+    if roles:
+        units = clause.units = [u for i, u in enumerate(units) if i not in roles]
+    r.clause_mentions = []
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
         u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
         and units[i + 1].meaning not in ("ego", "none"))]
@@ -1103,7 +1319,21 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in heads:
         np = _resolve(r, units, i, lo, stage, recent)
         phrases.append(np)
+        if np.entity is not None:
+            r.clause_mentions.append(np.entity)
         lo = i + 1
+    for np in phrases:  # "a family of four", "a group of six cyclists" ends in its noun; "a convoy of 3"
+        e, i = np.entity, np.index
+        if e is None or not np.introduced or e.is_ego or units[i].base.split()[-1] not in GROUP_NOUNS or \
+                i + 2 >= len(units) or units[i + 1].word != "of" or units[i + 2].category not in ("numbers", "number") \
+                or (i + 3 < len(units) and units[i + 3].category == "agents"):
+            continue
+        value = _word_number(units[i + 2].tokens[0])
+        if value is not None and 1 <= value <= MAX_AGENTS_PER_MENTION:
+            e.count = e.group_open = int(value)
+            np.plural = value > 1
+            r.mark(units[i + 1]), r.mark(units[i + 2])
+            units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     for i, u in enumerate(units):  # "kids are crossing, three of them": the count of the group just named
         if u.category in ("numbers", "number") and i + 2 < len(units) and units[i + 1].word == "of" and \
                 units[i + 2].word in ("them", "those", "these"):
@@ -1111,16 +1341,39 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             group = group or next((e for e in reversed(recent) if e.count > 1), None)
             if group is not None:
                 value = _word_number(u.tokens[0])
-                if value is not None and 0 < value <= MAX_AGENTS_PER_MENTION:
-                    group.count = int(value)
                 r.mark(u), r.mark(units[i + 1]), r.mark(units[i + 2])
+                if value is not None and 0 < value < group.count and group.stage == stage and \
+                        group not in [np.entity for np in phrases]:  # "three wait; one of them crosses": a member
+                    members = [_member(r, [group]) for _ in range(int(value))]
+                    for member in [m for m in members if m is not None]:
+                        phrases.append(NounPhrase(member, i + 2, i))
+                    units[i] = Unit(u.start, u.end, "word", "of", u.tokens)
+                elif value is not None and 0 < value <= MAX_AGENTS_PER_MENTION:
+                    group.count = int(value)  # "kids are crossing, three of them": the group's count
                 units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     pronouns = []
     for i, u in enumerate(units):
+        if u.word in ORDINAL_MEMBERS and i > 0 and units[i - 1].word == "the" and not (
+                i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number")) and not any(
+                np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions"):
+            member = _member(r, recent)  # "two motorbikes, the first on the left and the second on the right"
+            if member is not None:
+                r.mark(u)
+                phrases.append(NounPhrase(member, i, i - 1))
+            continue
+        value = _word_number(u.tokens[0]) if u.category in ("numbers", "number") and len(u.tokens) == 1 else None
+        if value is not None and 2 <= value <= MAX_AGENTS_PER_MENTION and not any(
+                np.first <= i <= np.index for np in phrases) and i + 1 < len(units) and \
+                units[i + 1].category == "positions":  # "nine pedestrians: four on the left, five on the right"
+            part = _part_of_group(r, int(value))
+            if part is not None:
+                r.mark(u)
+                phrases.append(NounPhrase(part, i, i, plural=True))
+            continue
         if u.word == "one" and u.category in ("word", "numbers") and not any(np.first <= i <= np.index
                                                                               for np in phrases) \
                 and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
-                and not (i + 1 < len(units) and units[i + 1].word == "of"):
+                and not (i + 1 < len(units) and units[i + 1].word in NOT_A_MEMBER_AFTER_ONE):
             j = i - 1
             while j >= 0 and units[j].category == "word" and units[j].word not in ("a", "an", "another") and \
                     units[j].word not in lexicon().function_words:
@@ -1161,10 +1414,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
-             and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)]
+             and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
+             and not _named_manoeuvre(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
             u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
         verbs = []  # "the light turns red": the subject is a signal, no agent acts
+    verbs = [i for i in verbs if not _signal_change(units, i)]
     for i, u in enumerate(units):
         if u.category == "actions" and u.meaning == "try":
             r.mark(u)
@@ -1199,6 +1454,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     else:
         before = [np for np in phrases if np.index < first_verb and np.entity is not None
                   and not _is_reference(units, np)]
+        if len(before) >= 2 and verbs and not any(
+                u.category == "comma" or u.word in ("and", "or", "with", "plus", "both", "&")
+                for u in units[before[0].index + 1:before[1].first]) and any(
+                u.category == "actions" for u in units[before[0].index + 1:before[1].first]):
+            before = before[:1]  # "the AV handle(s) a cyclist swerving...": the first is the subject, then its object
         for np in before:
             subject += np.group or [np.entity]
         joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
@@ -1206,13 +1466,19 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject = list(pending) + subject
         objects = [np for np in phrases if np.index > first_verb or _is_reference(units, np)]
     subject = [e for e in subject if e is not None]
+    subject = [e for e in subject if not any(x.parent is e for x in subject)]  # "of the two buses, the first": it
+    if not subject and verbs and any(u.category == "agents" and u.base in ("everyone", "everybody")
+                                     for u in units[:verbs[0]]):
+        subject = [_ego_entity(r, stage)]  # "everyone pulling over": the ego among them
     if not subject:
         if clause.antecedent is not None:
             subject = [clause.antecedent]
         elif clause.condition:
             subject = []
         elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate \
-                and not _imperative_on(units, verbs, phrases, previous_subject):
+                and not _imperative_on(units, verbs, phrases, previous_subject) \
+                and not (r.after_verbless and verbs and verbs[0] == 0 and _bare_verb(units[0])):
+            # "ambulance behind with siren, pull over to the right": an order after a verbless description
             subject = list(previous_subject)
         elif verbs:
             inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
@@ -1246,6 +1512,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         r.mark(units[0])
         ego.actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(), "turn_" + units[0].word, None))
         units[0].meaning = "used"
+    ego_at = next((np.index for np in phrases if np.entity is not None and np.entity.is_ego), None)
+    if not main_verbs and len(subject) == 1 and subject[0].is_ego and ego_at is not None and any(
+            u.word in COPULAS for u in units[ego_at + 1:ego_at + 3]) and any(
+            u.category == "road" and not _denied(units, k) and (
+                u.meaning in ("stop", "stop_line") or u.meaning == "traffic_light" and
+                any(t.word == "red" for t in u.tokens)) for k, u in enumerate(units) if k > ego_at):
+        subject[0].actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "we're at a red"
     if not main_verbs and len(subject) == 1 and subject[0].is_ego:  # terse: "ego right at lights", "ego left"
         ego_np = next((p for p in phrases if p.entity is subject[0]), None)
         after = units[ego_np.index + 1] if ego_np is not None and ego_np.index + 1 < len(units) else None
@@ -1302,8 +1575,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
-        if u.meaning == "ego_lane" and i > 0 and units[i - 1].word in ("into", "onto", "across"):
-            u.meaning = "into_ego_lane"  # "moves ... into the ego's lane"
+        if u.meaning == "ego_lane" and i > 0 and (units[i - 1].word in ("into", "onto", "across") or (
+                units[i - 1].category == "actions" and units[i - 1].tokens[-1].word in ("into", "onto")) or (
+                units[i - 1].category == "actions" and units[i - 1].tokens[0].base in STEERING | {"come", "get"}
+                and u.tokens[0].word == "in")):
+            u.meaning = "into_ego_lane"  # "moves ... into the ego's lane", "is coming in ego lane"
         owner = _modifier_owner(units, i, phrases, subject, main_verbs, participles)
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
                 not any(e in subject for e in owner):
@@ -1311,6 +1587,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
+        if reference is None and u.category == "positions" and u.tokens[-1].word in ("it", "them") and \
+                u.meaning in ("ahead", "behind", "level"):
+            reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
         for e in targets:
             if e.is_ego and u.category == "positions":
                 if u.meaning.startswith("compass_"):
@@ -1342,6 +1621,31 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     return subject
 
 
+SIGNAL_COLOURS = {"red", "green", "amber", "yellow", "orange"}
+
+
+def _signal_change(units: list[Unit], i: int) -> bool:
+    """'the light has turned red', 'by the time it goes green': a signal changing colour, nobody's manoeuvre."""
+    u = units[i]
+    if u.tokens[0].base not in ("turn", "go", "change", "switch", "become", "flip") or len(u.tokens) > 1:
+        return False
+    after = [x.word for x in units[i + 1:i + 3]]
+    return bool(after) and (after[0] in SIGNAL_COLOURS or after[:1] == ["to"] and after[1:2] and
+                            after[1] in SIGNAL_COLOURS)
+
+
+def _named_manoeuvre(units: list[Unit], i: int) -> bool:
+    """'at the start of the manoeuvre', 'during the turn': a manoeuvre named as a noun after a preposition,
+    nobody's predicate."""
+    if i + 1 < len(units) and units[i + 1].word in ("test", "tests", "scenario", "case", "run", "scene", "event",
+                                                    "situation", "drill", "exercise", "check"):
+        return True  # "merge test", "cut-in scenario": the name of a test
+    return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
+        units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since") or \
+        i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
+            "maneuver", "manoeuvre", "turn", "lane", "overtake", "merge", "cut")  # "at start of manoeuvre"
+
+
 def _denied_verb(units: list[Unit], i: int) -> bool:
     """'don't try to pass him', 'never overtakes', 'must learn how to yield': a verb said not to happen, or
     only talked about ('does not move' is a phrase of its own)."""
@@ -1360,7 +1664,8 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
             return True
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
                                                      "is", "are", "be", "can", "could", "room", "space", "chance",
-                                                     "able", "unable", "time")) \
+                                                     "able", "unable", "time", "even", "ever", "really", "properly",
+                                                     "so", "much", "once")) \
                 and u.category != "actions":
             return False
     return False
@@ -1409,10 +1714,68 @@ def _queue_ahead(r: _Reader, units: list[Unit], phrases: list[NounPhrase], subje
         if e is None or e.is_ego or e in subject or e.actions or np.first == 0:
             continue
         if any(u.category == "positions" and u.meaning == "behind" for u in units[max(0, np.first - 2):np.first]):
-            e.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+            e.actions.append((stage, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
-VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people"}
+ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "2nd": 2, "3rd": 3, "4th": 4,
+            "5th": 5, "6th": 6}
+RED_OR_QUEUE = {"queue", "queued", "queueing", "queuing", "jam", "tailback", "red", "line"}
+
+
+def _place_in_queue(r: _Reader) -> None:
+    """'third in the queue at a red light': two vehicles wait ahead of the ego; and whoever is ahead of an ego
+    waiting in a queue or at a red light, doing nothing said, waits too."""
+    words = [t.word for t in r.tokens]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    for i, w in enumerate(words[:-2]):
+        n = ORDINALS.get(w)
+        rest = words[i + 1:i + 4]
+        if not n or rest[0] not in ("in", "car", "vehicle") or not {"queue", "line"} & set(rest):
+            continue
+        ego = ego or _ego_entity(r, 0)
+        if not any(a[4] == "stop" for a in ego.actions):
+            ego.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
+        queued = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and not e.features & {
+            "behind", "side_left", "side_right", "road_straight", "toward", "road_left", "road_right"}]
+        for e in queued:
+            e.features.add("ahead")  # "fourth in line behind a bus": the bus is one of those ahead
+        ahead = sum(e.count for e in queued)
+        if n - 1 > ahead and n - 1 <= MAX_AGENTS_PER_MENTION:
+            r.entities.append(Entity(len(r.entities), "car", False, 0, count=n - 1 - ahead, head="car",
+                                     features={"ahead"}))
+            r.notes.append(f"inferred: '{w} in the queue' puts {n - 1 - ahead} car(s) ahead of the ego")
+        r.used.update(range(i, i + 4))
+        break
+    jammed = any(u.category == "agents" and u.meaning == "none" and u.base in STANDING_TRAFFIC and k > 0 and (
+        r.units[k - 1].word == "in" or k > 1 and r.units[k - 1].word in ("a", "the") and r.units[k - 2].word == "in")
+        for k, u in enumerate(r.units))  # "in stopped traffic"; not "the tail end of a traffic jam"
+    if jammed:
+        ego = ego or _ego_entity(r, 0)
+    if jammed and not any(a[0] == 0 and a[2] > 0 for a in ego.actions):
+        ego.actions.append((0, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "in stopped traffic": it stands
+        r.notes.append("inferred: the ego stands in the stopped traffic")
+    if ego is None or not any(a[4] == "stop" and a[0] == 0 for a in ego.actions) or \
+            not RED_OR_QUEUE & set(words) and "traffic_light" not in _said_signals(r) and not jammed:
+        return
+    for e in r.entities:  # ahead in the queue, or level beside the ego at the line: standing too
+        if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and e.stage == 0 and (
+                "ahead" in e.features and not e.features & {"side_left", "side_right", "road_straight", "toward"}
+                or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}):
+            e.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
+
+
+STANDING_TRAFFIC = {"stop traffic", "stopped traffic", "traffic jam", "queue of traffic", "stationary traffic",
+                    "standstill traffic", "gridlock", "queued traffic", "queuing traffic", "queueing traffic",
+                    "jammed traffic", "tailback"}
+
+
+def _said_signals(r: _Reader) -> set[str]:
+    return {u.meaning for u in r.units if u.category == "road"}
+
+
+VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people", "lad", "bloke",
+                "mate", "lunatic", "nutter", "maniac", "numpty", "muppet", "idiot", "jerk", "moron",
+                "chap", "fella", "fellow", "gentleman", "young man", "young woman", "teen", "teenager"}
 VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
                         "block"}
 
@@ -1431,7 +1794,9 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
     return np.group or [np.entity]
 
 
-APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv"}  # said what they are
+ROLE_NOUNS = {"target", "npc", "adversary", "actor", "agent", "dummy", "target vehicle", "participant", "object"}
+APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv", "npc", "adversary",
+                 "participant", "object", "hero"}  # said what they are
 
 
 DISTANCE_UNITS = {"m", "metres", "meters", "metre", "meter", "yards", "yard", "feet", "ft", "km", "miles", "mile"}
@@ -1444,6 +1809,21 @@ def _imperative_on(units: list[Unit], verbs: list[int], phrases: list[NounPhrase
         return False
     return any(u.word in ("it", "them", "him", "her") for u in units[1:3]) or any(
         np.index > 0 and np.entity is not None and np.entity in previous for np in phrases)
+
+
+NOT_VERBS = {"straight", "left", "right", "l", "r", "ahead", "through", "protected", "unprotected", "first", "second",
+             "third", "uturn", "u", "lane", "right", "hazard", "double", "queue", "stationary", "standstill"}
+
+
+SAME_IN_THE_PAST = {"cut", "hit", "put", "set", "let", "shut", "quit", "burst", "cast", "hurt", "split", "spread",
+                    "thrust", "run", "come", "become"}
+
+
+def _bare_verb(u: Unit) -> bool:
+    """A verb in its base form ('pull over', 'slow down'), as an order is given; not 'pulls', 'pulling'."""
+    t = u.tokens[0]
+    return u.category == "actions" and t.word == t.base and not t.word.endswith(("ing", "ed")) and \
+        t.word not in NOT_VERBS
 
 
 def _ego_entity(r: _Reader, stage: int) -> Entity:
@@ -1473,6 +1853,32 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
     return _ego_entity(r, stage)
 
 
+GROUP_NOUNS = {"family", "group", "crowd", "party", "gang", "bunch", "convoy", "column", "pack", "couple", "line",
+               "queue", "peloton", "class", "team", "troop", "pedestrians", "people"}
+NOT_A_MEMBER_AFTER_ONE = {"of", "lane", "lanes", "way", "direction", "side", "after", "another", "by", "more",
+                          "time", "day", "moment", "point", "second", "stage", "step", "phase", "hand"}
+ORDINAL_MEMBERS = {"first", "second", "third", "fourth", "fifth", "last", "latter", "former"}
+
+
+def _part_of_group(r: _Reader, n: int) -> Entity | None:
+    """n members of the last counted group, described together ('four on the left')."""
+    for group in reversed(r.entities):
+        if group.is_ego or group.parent is not None or group.count < n:
+            continue
+        if group.count == n and any(m.parent is group for m in r.entities):
+            return group  # the rest of it
+        if group.count == n:
+            return None
+        part = Entity(len(r.entities), group.type, False, group.stage, count=n, head=group.head, parent=group,
+                      features=set(group.features), actions=[(a[0], 1) + a[2:] for a in group.actions],
+                      behavior=group.behavior)
+        group.count -= n
+        group.group_open = max(0, group.group_open - n)
+        r.entities.append(part)
+        return part
+    return None
+
+
 def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
     """One member of the last counted group, which the text now describes on its own."""
     for group in reversed(r.entities):
@@ -1484,7 +1890,8 @@ def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
         if group.count < 2:
             continue
         member = Entity(len(r.entities), group.type, False, group.stage, head=group.head, parent=group,
-                        features=set(group.features), actions=list(group.actions), behavior=group.behavior)
+                        features=set(group.features), actions=[(a[0], 1) + a[2:] for a in group.actions],
+                        behavior=group.behavior)  # what the group does, unless the member is said to do otherwise
         group.count -= 1
         group.group_open = max(0, group.group_open - 1)
         r.entities.append(member)
@@ -1507,12 +1914,28 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             out[-1] = np
             continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
-                and not prev.plural and not np.plural:
+                and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
             copula = any(u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as") for u in between)
-            driver = prev.entity.head in DRIVERS and [u.word for u in between] in (["in"], ["driving"], ["on"])
+            abbreviation = between and all(u.category == "comma" or u.base in ROLE_NOUNS for u in between) and \
+                np.first == np.index and \
+                len(units[np.index].tokens) == 1 and not prev.entity.is_ego and (
+                    np.entity.type == prev.entity.type) and units[np.index].base not in GENERAL_NOUNS
+            if abbreviation:  # "a stationary Global Vehicle Target (GVT)": its short name, no second agent
+                prev.entity.aliases.add(units[np.index].base)
+                if np.entity in r.entities:
+                    r.entities.remove(np.entity)
+                continue
+            driver = prev.entity.head in DRIVERS and ([u.word for u in between] in (
+                ["in"], ["driving"], ["on"], ["of"]) or not between and units[np.first].word == "of") or (
+                # "the driver of a stopped bus": the bus
+                prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
+                and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 prev.entity.type = np.entity.type
+                prev.entity.features |= np.entity.features
+                prev.entity.actions += np.entity.actions
+                prev.entity.behavior = prev.entity.behavior or np.entity.behavior
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
@@ -1550,6 +1973,9 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
         if u.meaning in ("ahead", "behind") and len(u.tokens) == 1 and k > 0 and (
                 units[k - 1].word in DISTANCE_UNITS or units[k - 1].word in ("up", "further", "way", "just")):
             return False  # "twenty-five metres ahead a lorry sits", "up ahead a bus": a place, then the subject
+        if u.meaning not in ("ahead", "behind", "level") and u.tokens[-1].word not in ("of", "to") and \
+                units[np.first].word not in ("of", "to"):
+            return False  # "on the left-hand side a woman waits": a place, then the subject ("left of a van" places)
         return u.tokens[-1].word not in ("ego", "it", "us", "you", "them", "him", "her", "me")
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
@@ -1584,6 +2010,15 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     return None
 
 
+def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
+    """'it' inside a place phrase ('a biker behind it'): the last agent named before, not the one placed."""
+    before = [np.entity for np in phrases if np.index < i and np.entity is not None]
+    for e in reversed(recent + before):
+        if e not in owners and not e.is_ego:
+            return e
+    return None
+
+
 def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     """A verb right after a noun, with a finite verb after it, modifies that noun: 'a cyclist riding alongside
     swerves', 'in front of a truck stopped on the shoulder'."""
@@ -1598,13 +2033,15 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     if k < 0:
         return None
     np = next((p for p in phrases if p.index == k), None)
-    if np is None or units[k].word in ("me", "us", "you", "him", "her", "them", "it"):
+    if np is None or units[k].word in ("me", "us", "you", "him", "her", "them", "it", "i", "we", "he", "she", "they"):
         return None  # "a learner in front of me stalled": a pronoun takes no participle; the verb is finite
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
     later = any(v > i and not (units[v - 1].category == "word" and units[v - 1].word == "to") for v in verbs)
     word = units[i].tokens[0].word  # a later finite verb makes this one a participle; 'to pass' is none
     participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood", "stuck",
                                                                           "broken") or light
+    if np.entity is not None and np.entity.is_ego and not light:
+        return None  # "the lead car ahead of the hero changed lane": the ego takes no participle
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
         return np
     return None
@@ -1623,8 +2060,8 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
                          for u in units[last.index + 1:i])
             if last.entity in subject and copula:
                 return subject  # "both the truck and the pedestrian are in the front right"
-            if last.entity.is_ego and subject and last.entity not in subject and \
-                    units[last.index - 1].category == "positions":
+            if last.entity.is_ego and subject and last.entity not in subject and last.first > 0 and \
+                    units[last.first - 1].category == "positions":
                 return subject  # "a bicyclist is coming up behind you on your right": the bicyclist's side
             return last.group or [last.entity]
         return subject
@@ -1654,9 +2091,13 @@ def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
     base = verb.tokens[0].base
     obj = next((p for p in phrases if p.entity is not None and p.first - i <= 2), None)
     if base in HIDING and obj is not None:
+        hidden_one = verb.tokens[0].word.endswith(("en", "ed"))  # "a child hidden behind a van": the child
         for t in obj.group or [obj.entity]:
             if not t.is_ego and subject and not subject[0].is_ego:
-                t.relative_to = subject[0]  # "a parked van hides a pedestrian": the pedestrian is at the van
+                if hidden_one:
+                    subject[0].relative_to = subject[0].relative_to or t
+                else:
+                    t.relative_to = subject[0]  # "a parked van hides a pedestrian": the pedestrian is at the van
         return
     if obj is None or obj.entity is None:
         if base in OVERTAKING and base == "overtake":
@@ -1677,6 +2118,8 @@ def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
             elif e.is_ego and not t.is_ego:
                 if base in FOLLOWING or base in OVERTAKING:
                     t.features.add("ahead")
+                if base in FOLLOWING:
+                    t.features.add("followed")  # the ego follows it: in the ego's lane, whichever lane that is
                 elif base in LEADING:
                     t.features.add("behind")
 
@@ -1744,7 +2187,7 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
         return None, None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
     if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
-        return "block", None  # "swerves into its path and stops"
+        return ("stop" if e.is_ego else "block"), None  # "swerves into its path and stops"; the ego pulls in and stops
     return best[4], best[5]
 
 
@@ -1781,6 +2224,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
+    if "across_path" in f and (action or "").startswith("turn") and not f & {
+            "road_left", "road_right", "from_left", "from_right", "side_left", "side_right", "cross_road"}:
+        f.add("road_straight")  # "turned left across our path": the oncoming turner
     if "toward" in f and not lane_move and not (side and f"bare_{side}" not in f):
         f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no
     if "road_straight" in f and not person:  # where it comes from wins over where it heads
@@ -1790,14 +2236,14 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             if person and crossing and not junction:  # "crossing from the left" with no junction: from that kerb
                 return f"front_{s}", False
             return f"road_of_{s}_turn", False
-    if "destination" in f:
+    if "destination" in f and not ("crosswalk" in f and crossing):  # "on the crosswalk of the road it turns into"
         return "at_the_destination", False
     if "cross_road" in f and not person:
         return f"road_of_{side or UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
         return "near_the_crosswalk", False
     from_side = next((s for s in SIDES if f"from_{s}" in f), None)
-    if from_side and not person and junction and not lane_move:
+    if from_side and e.type != "pedestrian" and junction and not lane_move:  # a cyclist crossing from the left
         return f"road_of_{from_side}_turn", False
     bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
     if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level", "overtaking"} \
@@ -1807,11 +2253,12 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
-    if "ego_lane" in f and not lane_move and "into_ego_lane" not in f:
-        side = None
+    if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
+            and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
+        side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f:
         side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
-    if action == "block" and side and "from_lane" in f and not behind:
+    if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"bare_{side}" in f or f"from_{side}" in f):
@@ -1851,8 +2298,8 @@ def _side_of(f: set) -> str | None:
 def _final_action(e: Entity, action: str | None, direction: str | None, position: str) -> str:
     side_now = "left" if "left" in position else "right" if "right" in position else None
     if action is None:
-        if e.type == "pedestrian":
-            return "on_the_sidewalk" if "on_sidewalk" in e.features or e.road_type == "sidewalk" \
+        if e.type == "pedestrian":  # standing on the pavement or the verge, said no more: stays there
+            return "on_the_sidewalk" if "on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder") \
                 and "crosswalk" not in e.features else "cross_the_road"
         return "go_straight"
     if action in ("turn_left", "turn_right"):
@@ -1874,8 +2321,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "block":
         return "block_the_ego"
     if action == "stop":
-        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type == "sidewalk"):
-            return "on_the_sidewalk"  # standing on the pavement
+        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder")):
+            return "on_the_sidewalk"  # standing on the pavement or the verge
         return "stop"
     if action == "cross":
         return "cross_the_road" if e.type in V.VULNERABLE_TYPES else "go_straight"
@@ -1940,16 +2387,22 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             for u in header if not e.is_ego else []:
                 _modify(r, e, u, clause.stage, 1)
         header = _header_of_place(clause.units)
-        if clause.link == "where" and k > 0 and any(u.category == "actions" and u.meaning.startswith("lane")
-                                                    for u in clauses[k - 1].units):
+        lead = k - 1
+        if clause.link == "which" and k > 1 and [u.word for u in clauses[k - 1].units] in (["in"], ["into"]):
+            lead = k - 2  # "changes to the left lane, in which a car approaches"
+        into_it = clause.link == "where" or lead == k - 2
+        if into_it and k > 0 and any(u.category == "actions" and u.meaning.startswith("lane")
+                                     for u in clauses[lead].units):
             for e in r.entities[before:]:  # "the ego changes into the left lane, where a van drives ahead"
                 if not e.is_ego:
                     e.features.add("target_lane")
         if subject:
             previous = subject
         verbless = not _has_verb(clause.units)
+        r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
+    _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
     if asked is not None and others:
@@ -1964,6 +2417,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
         (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
         for st in {a[0] for a in e.actions})  # "once it turns green we turn left": a later turn is at a junction
+    for e in r.entities:  # "a truck crossing left to right": a vehicle crossing is cross traffic at a junction
+        if not e.is_ego and e.type not in V.VULNERABLE_TYPES and any(a[4] == "cross" for a in e.actions):
+            e.features.add("cross_road")
     junction_features = any(f in e.features for e in r.entities for f in ("road_left", "road_right",
                                                                            "destination", "cross_road")
                             if not (e.type == "pedestrian" and f.startswith("road_")))  # "crossing from the left"
@@ -2015,7 +2471,7 @@ def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
 
 HEADER_OF_PLACE = (r"(oncoming|opposing|crossing|cross|following|leading|lead|adjacent|left|right|behind|ahead|in front"
                    r"|rear|from the left|from the right|from behind)( (lane|traffic|vehicles?|cars?|agents?|side))*")
-HEADER_FILLER = {"traffic", "vehicle", "vehicles", "car", "cars", "agents", "agent", "and", "lane", "side"}
+HEADER_FILLER = {"traffic", "vehicles", "cars", "agents", "and", "lane", "side"}  # "car R lane behind" is an agent
 
 
 def _header_of_place(units: list[Unit]) -> list[Unit]:
@@ -2034,6 +2490,12 @@ def _title(prompt: str, tokens: list[Token]) -> range:
     m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
     if m is None or "\n" in prompt.strip():  # notes written a line an item have their titles marked already
         return range(0)
+    if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
+        return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
+    counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+\w+s\b",
+                        m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
+    if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
+        return range(0)  # "There are four cars: one in front ...": a sentence, not a title
     if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
     n = len(tokenize(m.group(1)))
@@ -2047,8 +2509,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     ego_entity = next((e for e in r.entities if e.is_ego), None)
     stage_count = 1 + max([e.stage for e in r.entities] + [a[0] for e in r.entities for a in e.actions] + [0])
     stages: list[list[Agent]] = [[] for _ in range(stage_count)]
-    ego_action, _ = _action(ego_entity, 0) if ego_entity else (None, None)
-    ego_action = _sideways(ego_action, junction)
+    ego_action = _ego_class(ego_entity, 0, junction) if ego_entity else None
     ego_type = ego_entity.type if ego_entity else "car"
     ego = Agent(name="ego", type=ego_type if ego_type in V.EGO_TYPES else "car", is_ego=True,
                 action=_ego_action(ego_entity, ego_action, 0),
@@ -2058,7 +2519,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     if ego_entity is not None:
         for k in range(1, stage_count):
             if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
-                action = _ego_action(ego_entity, _sideways(_action(ego_entity, k)[0], junction), k)
+                action = _ego_action(ego_entity, _ego_class(ego_entity, k, junction), k)
                 if language_allows_later_ego():
                     stages[k].append(Agent(name="ego", type=ego.type, is_ego=True, action=action))
                 else:
@@ -2072,7 +2533,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     heading = next((f for f in (ego_entity.features if ego_entity else ()) if f.startswith("compass_")), None)
     for e in others:  # "the AV was travelling north ... a van heading south": compass headings against the ego's
         own = next((f for f in e.features if f.startswith("compass_")), None)
-        if heading and own and own != heading:
+        if heading and own and own != heading and e.type in V.VULNERABLE_TYPES and COMPASS_OPPOSITE[heading] != own \
+                and not _side(e):  # "heading east ... ran across from the north side": from the ego's left
+            e.features.add("side_left" if COMPASS_LEFT[heading] == own else "side_right")
+        elif heading and own and own != heading:
             e.features.add("road_straight" if COMPASS_OPPOSITE[heading] == own else "cross_road")
     if ego_entity is not None and "first_in_line" in ego_entity.features:
         for e in others:  # "three cars including the ego wait, the ego is first": the others queue behind it
@@ -2084,6 +2548,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in VEHICLE_ONLY_ACTIONS:
             e.type = "car"  # "someone's pulling out of a parking spot": someone driving
             r.notes.append(f"inferred: '{e.head}' who {action.replace('_', ' ')}s drives a car")
+        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop") and \
+                e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
+                and e.road_type != "sidewalk":
+            e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
+            r.notes.append(f"inferred: '{e.head}' behind or ahead in the lane drives a car")
         action = _sideways(action, junction)
         if "into_ego_lane" in e.features and e.type == "pedestrian":
             action = "cross"  # "a child runs into the ego's path"
@@ -2128,7 +2597,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         for n in range(e.count):
             if "both_sides" in e.features:  # "cars cutting in from different directions": one on each side
                 side = SIDES[n % 2]
-                placed = {f"from_{side}"} if junction else {f"side_{side}", "from_lane", "ahead"}
+                placed = {f"from_{side}"} if junction else {f"side_{side}", "from_lane"} | (
+                    {"ahead"} if not e.features & {"behind", "level", "overtaking"} else set())
                 member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"}) | placed,
                                 road_type=e.road_type)
                 position, _ = _position(member, action, junction, has_crosswalk, target_side)
@@ -2144,6 +2614,25 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             if e.key in oncoming:
                 oncoming_names.add(name)
     return [s for k, s in enumerate(stages) if s or k == 0], oncoming_names
+
+
+def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
+    """The ego's action class in a stage, read against the junction context. 'Turning left out of the side
+    road, the ego waited, then went': it waits in the first stage and makes its turn in the later one."""
+    action, direction = _action(e, stage)
+    later = [a for a in e.actions if a[0] > stage and a[1] == 2 and a[2] > 0]
+    waits = [a for a in e.actions if a[0] == stage and a[1] == 2 and a[4] == "stop"]
+    if later and waits and action in ("turn", "turn_left", "turn_right", "u_turn", "lane_left", "lane_right"):
+        return "stop"
+    if stage > 0 and action in ("move", "go_straight", None):
+        before = [a for a in e.actions if a[0] < stage and a[1] == 2 and a[4] in ("turn_left", "turn_right")]
+        if before and any(a[0] == stage for a in e.actions) and any(
+                a[0] == stage - 1 and a[4] == "stop" and a[1] == 2 for a in e.actions):
+            return before[-1][4]  # "... then went": the turn it waited to make
+    action = _sideways(action, junction)
+    if action == "cut_in" and direction is None and junction:
+        return "move"  # "pull out at the stop sign to go straight": into the junction, no lane change
+    return action
 
 
 def _placed(e: Entity) -> bool:
@@ -2171,7 +2660,9 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
-        return f"change_lane_to_{direction or UNSPECIFIED['ego_lane_change_direction']}"  # "pulling out to pass"
+        said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
+            "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
+        return f"change_lane_to_{direction or said or UNSPECIFIED['ego_lane_change_direction']}"  # "pulling out to pass"
     return "go_straight"
 
 
