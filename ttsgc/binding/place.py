@@ -535,8 +535,10 @@ class Placer:
             cross_to = self._far_side(start)
         if start is not None and agent.action == "on_the_sidewalk":
             road_length = self.odr.roads[start.road].length
-            ahead = 30.0 if start.lane < 0 else -30.0  # along its side's driving direction
-            walk_to = start.model_copy(update={"s": round(min(max(start.s + ahead, 0.5), road_length - 0.5), 3)})
+            ahead = 30.0 if start.lane < 0 else -30.0  # along its side's driving direction, or back the other
+            ends = [min(max(start.s + way, 0.5), road_length - 0.5) for way in (ahead, -ahead)]  # way when the
+            end = max(ends, key=lambda s: abs(s - start.s) > abs(ahead) / 2)  # road ends first (a crosswalk at
+            walk_to = start.model_copy(update={"s": round(end, 3)})  # the junction): a walk, not a step
         distance = 0.0
         if start is not None and not agent.is_ego and self.ego_start is not None:
             distance = round(distance_between(self.odr, start, self.ego_start), 3)
