@@ -9,7 +9,9 @@ A file means what the standard and the real players read in it, not what ttsgc's
   StoryboardElementStates CARLA accepts (completeState, endTransition);
 - people and bikes that cross or walk follow a polyline trajectory at their speed, standing until their trigger
   (AcquirePositionAction is routing and collapses to no movement across a road);
-- the events of one maneuver run in parallel, so a later one never stops an earlier one.
+- the events of one maneuver run in parallel, so a later one never stops an earlier one;
+- the ego stops for a crosser who is not aggressive because the file says so (binding's EgoYield), not
+  because a player's driver would.
 One Story holds one Act per stage, each starting when the previous act completes, a stage's estimated
 duration later; the weather is an EnvironmentAction; a stop trigger always fires. Each agent's intent is
 written into its Properties (ttsgc.intent) so a judge can read it from the file alone.
