@@ -296,6 +296,45 @@ def test_the_readme_example_yields_to_its_walker_in_esmini_and_sumo(esmini, tmp_
         assert _stops_for(trace, "walker"), player
 
 
+@pytest.mark.parametrize("turn", ["turn_right", "turn_left"])
+def test_a_turning_ego_yields_to_a_walker_crossing_the_road_it_turns_into(esmini, tmp_path, turn):
+    """The stretch it stops on lies on the road it turns onto; the judge still finds the turn done."""
+    report = _played(tmp_path, "into_a_crossing", f"""scenario "into a crossing"
+road {{
+    at junction
+}}
+stage main {{
+    ego car {turn} cautious
+    pedestrian p1 at at_the_destination cross_the_road when ego within 30m
+}}
+""")
+    assert report.ok and not report.collisions, report.table()
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "ego").achieved, report.table()
+    for player, trace in _both_players(tmp_path / "into_a_crossing.xosc").items():
+        assert _stops_for(trace, "p1"), player
+
+
+def test_the_ego_stands_until_every_walker_it_stopped_for_is_across(esmini, tmp_path):
+    """Two walkers step out one after the other: the ego goes on only once neither is on the road."""
+    report = _played(tmp_path, "two_walkers", """scenario "two walkers"
+road {
+    has crosswalk
+}
+stage main {
+    ego car go_straight cautious
+    pedestrian p1 at near_the_crosswalk cross_the_road when ego within 30m
+    pedestrian p2 at near_the_crosswalk cross_the_road behind p1 when ego within 24m
+}
+""")
+    assert report.ok and not report.collisions, report.table()
+    for player, trace in _both_players(tmp_path / "two_walkers.xosc").items():
+        assert _stops_for(trace, "p1") and _stops_for(trace, "p2"), player
+        last_across = max(trace.ended["p1_cross_the_road"], trace.ended["p2_cross_the_road"])
+        moving = [s.t for s in trace.samples["ego"] if s.speed > 0.5 and trace.started["ego_yields_to_p1"] < s.t]
+        assert min(t for t in moving if t > trace.started["ego_goes_on_after_p1"]) >= last_across, player
+
+
 CROSSING_SCENE = """scenario "crossing"
 road {
     has crosswalk
