@@ -687,3 +687,24 @@ def test_a_vehicle_whose_lane_has_not_its_turn_moves_into_one_that_has_and_turns
     for player in ("sumo", "esmini"):
         assert "went left onto road" in _agent(report, player, mover).reason, report.table()
     assert report.ok, report.table()
+
+
+@pytest.mark.parametrize("change", ["change_lane_to_left", "change_lane_to_right"])
+def test_an_ego_that_changes_lane_stops_for_a_walker_in_the_lane_it_changed_into(change):
+    from ttsgc.binding import bind
+    from ttsgc.roads.retrieve import load_library
+
+    scene = bind(parse(f"""scenario "lane change, then a walker"
+road {{
+    lanes >= 2
+    has crosswalk
+}}
+stage main {{
+    ego car {change} cautious
+    pedestrian p1 at near_the_crosswalk cross_the_road when ego within 30m
+}}
+"""), load_library(None))
+    ego, walker = (next(a for a in scene.agents if a.name == n) for n in ("ego", "p1"))
+    inward = 1 if change == "change_lane_to_left" else -1  # left is towards the centre line, on either side
+    assert walker.ego_yield is not None and walker.ego_yield.centre.road == ego.start.road
+    assert abs(walker.ego_yield.centre.lane) == abs(ego.start.lane) - inward

@@ -811,10 +811,10 @@ def ego_yields(agents: list[BoundAgent], odr: OpenDrive, timed_by_trigger: bool)
     runs out: the collision is asked for), when it would reach the crossing while the crosser is on it, and
     the file says so (EgoYield), so that every player brakes the same. A crosser that steps out once the ego
     has passed (let_the_traffic_pass) or is done before the ego comes gets none. The brake is the ego's
-    comfortable rate, harder (up to an emergency stop) when the crosser steps out late, as `when ego within
-    15m` asks, up to a firm stop; one who steps out so late that a firm stop would still end on the crossing is
-    passed (stopping there would stand the ego in its way). The brake starts where its rate stops the ego
-    YIELD_MARGIN_M short of the crosser's path.
+    comfortable rate, firmer when the crosser steps out late (`when ego within 15m`), up to a firm stop; one
+    who steps out so late that a firm stop would still end on the crossing is passed (stopping there would
+    stand the ego in its way). The brake starts where its rate stops the ego YIELD_MARGIN_M short of the
+    crosser's path.
     timed_by_trigger: the crossers whose start a trigger or a later stage sets (before junction turns are
     taken, which then wait for the ego), else the rest (timed by let_the_traffic_pass)."""
     ego = next((a for a in agents if a.is_ego), None)
@@ -831,8 +831,10 @@ def _with_yield(agent: BoundAgent, ego: BoundAgent, way: list[tuple[float, float
     start, end = road.lane_point(agent.start.s, agent.start.lane), road.lane_point(agent.cross_to.s,
                                                                                  agent.cross_to.lane)
     at = _first_crossing(way, (start.x, start.y), (end.x, end.y))
-    lane = ego.start.lane if ego.start.road == road.id else next(
-        (p.lane for p in ego.route if p.road == road.id), None)
+    if ego.start.road == road.id:  # in the lane it changes into, if it does (left: towards the centre line)
+        lane = ego.start.lane - (1 if ego.start.lane > 0 else -1) * (ego.lane_change or 0)
+    else:
+        lane = next((p.lane for p in ego.route if p.road == road.id), None)
     if at is None or lane is None:  # it crosses no road the ego drives on
         return agent
     v = ego.speed_mps
