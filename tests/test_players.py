@@ -352,8 +352,6 @@ stage main {
 def test_the_ego_yields_to_a_crosser_unless_it_runs_out(kind, behaviour, yields):
     """An aggressive crosser runs out: its collision is asked for, and the file makes the ego brake for no
     one; any other is stopped for, with an ordinary deceleration."""
-    from lxml import etree as et
-
     from ttsgc.binding import bind
     from ttsgc.emit.xosc import emit
     from ttsgc.roads.retrieve import load_library
@@ -361,7 +359,7 @@ def test_the_ego_yields_to_a_crosser_unless_it_runs_out(kind, behaviour, yields)
     scene = bind(parse(CROSSING_SCENE.replace("TYPE", kind).replace("BEHAVIOUR", behaviour)), load_library(None))
     crosser = next(a for a in scene.agents if a.name == "p1")
     assert (crosser.ego_yield is not None) == yields
-    root = et.fromstring(emit(scene, "road.xodr"))
+    root = etree.fromstring(emit(scene, "road.xodr"))
     brake = root.find(".//Event[@name='ego_yields_to_p1']")
     assert (brake is not None) == yields
     if yields:
