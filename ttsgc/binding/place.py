@@ -67,6 +67,17 @@ class LaterAction(_Data):
     trigger: Trigger | None = None
 
 
+class EgoYield(_Data):
+    """Where the ego yields to a body crossing its way: it brakes at rate_mps2 once it is within radius_m of
+    centre (a point of its lane, short of the crossing) while the body crosses."""
+
+    centre: LanePos
+    radius_m: float
+    rate_mps2: float
+    crossing_m: float  # from the crosser's start to its far side: less than this from there, it has set off
+    hold_s: float  # how much later the ego is through, for stopping (junction traffic takes turns after it)
+
+
 class BoundAgent(_Data):
     name: str
     type: str
@@ -93,6 +104,7 @@ class BoundAgent(_Data):
     route_end_into_m: float | None = None  # how far its route's last point lies into the road it ends on
     start_delay_s: float = 0.0  # stands this long before it sets off, so that junction traffic takes turns
     later: tuple[LaterAction, ...] = ()  # the ego's actions in later stages, in stage order
+    ego_yield: EgoYield | None = None  # a crossing body the ego stops for (the ego's brake, on the crosser)
 
 
 @dataclass(frozen=True)
@@ -344,11 +356,12 @@ class Placer:
         for n, a in enumerate(s.agents()):
             order.setdefault(a.name, n)
         placed = sorted(placed, key=lambda b: order[b.name])
+        placed = ego_yields(placed, self.odr, timed_by_trigger=True)  # before the turns: the ego's wait counts
         placed = stagger_at_junction(no_faster_than_the_one_ahead(placed), self.odr)
         capped = no_faster_onto_one_road(placed, self.odr)
         if capped != placed:  # slower, they hold the junction longer: the turns are taken again
             placed = stagger_at_junction(capped, self.odr)
-        return let_the_traffic_pass(placed, self.odr)
+        return ego_yields(let_the_traffic_pass(placed, self.odr), self.odr, timed_by_trigger=False)
 
     def _ego_lane_rank(self) -> int:
         from ttsgc.binding.rank import lane_needs
@@ -675,6 +688,8 @@ def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[i
         here = odr.roads[agent.start.road].lane_point(agent.start.s, agent.start.lane)
         arrive = max(0.0, math.hypot(entry.x - here.x, entry.y - here.y) - agent.length / 2) / agent.speed_mps
         leave = arrive + (road.length + agent.length + 2.0) / agent.speed_mps
+        if agent.is_ego:  # it stops for whoever crosses its way first
+            leave += sum(a.ego_yield.hold_s for a in agents if a.ego_yield is not None and a.stage == stage)
         key = _turn_key(agent, agents)
         window = windows.setdefault(key, [arrive, leave])
         window[0], window[1] = min(window[0], arrive), max(window[1], leave)
@@ -784,3 +799,110 @@ def _first_crossing(way: list[tuple[float, float]], a: tuple[float, float], b: t
 def distance_between(odr: OpenDrive, a: LanePos, b: LanePos) -> float:
     pa, pb = odr.roads[a.road].lane_point(a.s, a.lane), odr.roads[b.road].lane_point(b.s, b.lane)
     return math.hypot(pa.x - pb.x, pa.y - pb.y)
+
+
+YIELD_DECEL = {"cautious": 3.0, "normal": 3.5, "aggressive": 4.0}  # m/s², the ego's comfortable stop
+HARDEST_YIELD_DECEL = 4.5  # m/s², a firm stop (a SUMO car's own limit): stepping out later, the ego drives on
+YIELD_MARGIN_M = 2.0  # between the ego's front and the crosser's path when it has stopped
+YIELD_SET_OFF_MPS2 = 2.5  # how briskly the ego gets back to its speed once the crossing is clear
+SET_OFF_M = 0.1  # how far a crosser has moved when the ego takes it as crossing
+
+
+def ego_yields(agents: list[BoundAgent], odr: OpenDrive, timed_by_trigger: bool) -> list[BoundAgent]:
+    """The ego stops short of a person or rider who crosses its way and is not aggressive (an aggressive one
+    runs out: the collision is asked for), when it would reach the crossing while the crosser is on it, and
+    the file says so (EgoYield), so that every player brakes the same. A crosser that steps out once the ego
+    has passed (let_the_traffic_pass) or is done before the ego comes gets none. The brake is the ego's
+    comfortable rate, firmer when the crosser steps out late (`when ego within 15m`), up to a firm stop; one
+    who steps out so late that a firm stop would still end on the crossing is passed (stopping there would
+    stand the ego in its way). The brake starts where its rate stops the ego YIELD_MARGIN_M short of the
+    crosser's path.
+    timed_by_trigger: the crossers whose start a trigger or a later stage sets (before junction turns are
+    taken, which then wait for the ego), else the rest (timed by let_the_traffic_pass)."""
+    ego = next((a for a in agents if a.is_ego), None)
+    if ego is None or ego.start is None or ego.speed_mps <= 0 or ego.action == "stop":
+        return agents
+    way = _way(ego, odr)
+    return [_with_yield(agent, ego, way, odr) if agent.cross_to is not None and agent.start is not None
+            and agent.behavior != "aggressive" and agent.speed_mps > 0
+            and (agent.trigger is not None or agent.stage > 0) == timed_by_trigger else agent for agent in agents]
+
+
+def _with_yield(agent: BoundAgent, ego: BoundAgent, way: list[tuple[float, float]], odr: OpenDrive) -> BoundAgent:
+    road = odr.roads[agent.start.road]
+    start, end = road.lane_point(agent.start.s, agent.start.lane), road.lane_point(agent.cross_to.s,
+                                                                                 agent.cross_to.lane)
+    at = _first_crossing(way, (start.x, start.y), (end.x, end.y))
+    if ego.start.road == road.id:  # in the lane it changes into, if it does (left: towards the centre line)
+        lane = ego.start.lane - (1 if ego.start.lane > 0 else -1) * (ego.lane_change or 0)
+    else:
+        lane = next((p.lane for p in ego.route if p.road == road.id), None)
+    if at is None or lane is None:  # it crosses no road the ego drives on
+        return agent
+    v = ego.speed_mps
+    stop_line = at - ego.length / 2 - agent.width / 2 - YIELD_MARGIN_M  # where the ego's centre stops
+    crossing_m = math.hypot(end.x - start.x, end.y - start.y)
+    crossing_s = crossing_m / agent.speed_mps
+    setting_off = _ego_when_crosser_sets_off(agent, ego, way, start)
+    room = math.inf
+    if setting_off is not None:
+        if setting_off >= stop_line or (stop_line - setting_off) / v > crossing_s + 1.0:
+            return agent  # the ego is past it, or comes once the crosser is done
+        room = stop_line - setting_off - v * SET_OFF_M / agent.speed_mps
+    needed = v * v / (2 * max(room, 0.1))
+    if needed > HARDEST_YIELD_DECEL:
+        return agent  # too close to stop: it keeps going, and is by before the crosser reaches its lane
+    rate = max(YIELD_DECEL[ego.behavior], needed)
+    braking = v * v / (2 * rate)
+    # a ball around a point of the ego's lane, from where braking starts to just past the stop line
+    direction = 1 if lane < 0 else -1
+    s_cross = agent.start.s
+    centre_along = stop_line + 0.5 - (braking + 1.0) / 2
+    s_centre = min(max(s_cross - direction * (at - centre_along), 0.0), road.length)
+    centre_along = at - abs(s_cross - s_centre)
+    radius = stop_line + 0.5 - centre_along
+    if radius <= 0.5:  # the stop line is off the road it crosses (inside the junction): no lane to hold it
+        return agent
+    if 2 * radius - 0.5 < braking:  # the ball was cut at the road's start: less room, a harder brake
+        rate = v * v / (2 * (2 * radius - 0.5))
+        if rate > HARDEST_YIELD_DECEL:
+            return agent
+    centre = LanePos(road=road.id, lane=lane, s=round(s_centre, 3))
+    arrives = at / v  # where it would have been, had it not stopped
+    done = (setting_off / v + crossing_s) if setting_off is not None else arrives + crossing_s
+    hold = max(0.0, done - arrives) + v / (2 * rate) + v / (2 * YIELD_SET_OFF_MPS2)
+    return agent.model_copy(update={"ego_yield": EgoYield(centre=centre, radius_m=round(radius, 3),
+                                                          rate_mps2=round(rate, 3),
+                                                          crossing_m=round(crossing_m, 3), hold_s=round(hold, 2))})
+
+
+def _ego_when_crosser_sets_off(agent: BoundAgent, ego: BoundAgent, way: list[tuple[float, float]],
+                               start) -> float | None:
+    """How far along its way the ego is when the crosser steps out (at its own speed from its start); None
+    when that depends on more than the binding knows (a later stage, a trigger on another agent)."""
+    if agent.stage != 0:
+        return None
+    trigger = agent.trigger
+    after = (trigger.after_s or 0.0) if trigger is not None else 0.0
+    if trigger is not None and trigger.within_m is not None:
+        if trigger.of != ego.name:
+            return None
+        reached = _first_within(way, (start.x, start.y), float(trigger.within_m))
+        if reached is None:
+            return math.inf  # the ego never comes near: it never sets off
+        return reached + ego.speed_mps * float(after)
+    return ego.speed_mps * max(0.0, float(after) + agent.start_delay_s - ego.start_delay_s)
+
+
+def _first_within(way: list[tuple[float, float]], point: tuple[float, float], radius: float) -> float | None:
+    """How far along the polyline it first comes within radius of the point (0.25 m steps)."""
+    travelled = 0.0
+    for (px, py), (qx, qy) in zip(way, way[1:]):
+        length = math.hypot(qx - px, qy - py)
+        steps = max(1, math.ceil(length / 0.25))
+        for k in range(steps + 1):
+            x, y = px + (qx - px) * k / steps, py + (qy - py) * k / steps
+            if math.hypot(x - point[0], y - point[1]) < radius:
+                return travelled + length * k / steps
+        travelled += length
+    return None

@@ -9,7 +9,9 @@ A file means what the standard and the real players read in it, not what ttsgc's
   StoryboardElementStates CARLA accepts (completeState, endTransition);
 - people and bikes that cross or walk follow a polyline trajectory at their speed, standing until their trigger
   (AcquirePositionAction is routing and collapses to no movement across a road);
-- the events of one maneuver run in parallel, so a later one never stops an earlier one.
+- the events of one maneuver run in parallel, so a later one never stops an earlier one;
+- the ego stops for a crosser who is not aggressive because the file says so (binding's EgoYield), not
+  because a player's driver would.
 One Story holds one Act per stage, each starting when the previous act completes, a stage's estimated
 duration later; the weather is an EnvironmentAction; a stop trigger always fires. Each agent's intent is
 written into its Properties (ttsgc.intent) so a judge can read it from the file alone.
@@ -26,7 +28,7 @@ from lxml import etree
 from ttsgc import intent as I
 from ttsgc import xsd
 from ttsgc import vocabulary as V
-from ttsgc.binding.place import BoundAgent, LanePos, LaterAction
+from ttsgc.binding.place import YIELD_SET_OFF_MPS2, BoundAgent, LanePos, LaterAction
 from ttsgc.binding.scene import BoundScene
 from ttsgc.emit.lean_import import openscenario_writer
 from ttsgc.errors import TtsgcError
@@ -78,6 +80,9 @@ def emit(scene: BoundScene, roadfile: str, version: str = DEFAULT_VERSION) -> by
     durations = stage_durations(scene)
     for k, stage in enumerate(scene.scenario.stages):
         story.add_act(_act(scene, k, stage.name, durations, minor))
+    yields = _ego_yields_act(scene, minor)
+    if yields is not None:
+        story.add_act(yields)
     edge = _map_edge_act(scene, minor)
     if edge is not None:
         story.add_act(edge)
@@ -130,6 +135,80 @@ def _map_edge_act(scene: BoundScene, minor: int) -> xosc.Act | None:
         leaves = (f"{agent.name}_leaves", [("leave", xosc.DeleteEntityAction(agent.name))], trigger)
         act.add_maneuver_group(_group(agent.name, f"{agent.name}_edge", f"{agent.name}_edge_group", [leaves]))
     return act
+
+
+def _ego_yields_act(scene: BoundScene, minor: int) -> xosc.Act | None:
+    """The ego stopping for whoever crosses its way (binding's EgoYield), in the file itself so that every
+    player plays it alike: one event brakes the ego once the crosser has set off (it has left its start
+    towards the far side: a state that lasts, unlike the crossing event's one-step startTransition) and the
+    ego is in the stretch short of the crossing; another sets it off again at a brisk rate once that crossing
+    event is complete and none of the same stage's other crossers it yields to is still on the road. An act
+    of its own, never waited for: a crosser that never comes leaves its events standing, as map_edge does."""
+    ego = next(a for a in scene.agents if a.is_ego)
+    crossers = [a for a in scene.agents if a.ego_yield is not None and _ego_speed_in_stage(ego, a.stage) > 0]
+    if not crossers:
+        return None
+    events = []
+    for crosser in crossers:
+        y = crosser.ego_yield
+        crossing = f"{crosser.name}_{crosser.action}"
+        brakes = f"{ego.name}_yields_to_{crosser.name}"
+        set_off = xosc.EntityTrigger(f"{crosser.name}_set_off", 0, xosc.ConditionEdge.none, _within(
+            y.crossing_m - 0.1, crosser.cross_to, minor), crosser.name)
+        near = xosc.EntityTrigger(f"{brakes}_near", 0, xosc.ConditionEdge.none,
+                                  _within(y.radius_m, y.centre, minor), ego.name)
+        events.append((brakes, [("brake", xosc.AbsoluteSpeedAction(0, xosc.TransitionDynamics(
+            xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, y.rate_mps2)))], _all_of([set_off, near])))
+        done = [_state(f"{crosser.name}_crossed", xosc.StoryboardElementType.event, crossing),
+                _state(f"{brakes}_done", xosc.StoryboardElementType.event, brakes)]
+        others = [o for o in crossers if o is not crosser and o.stage == crosser.stage][:4]
+        trigger = xosc.Trigger()
+        for k in range(2 ** len(others)):  # each other crosser: either across already or not yet set off
+            group = xosc.ConditionGroup()
+            for condition in done:
+                group.add_condition(condition)
+            for n, other in enumerate(others):
+                if k >> n & 1:
+                    group.add_condition(_state(f"{other.name}_crossed_{k}", xosc.StoryboardElementType.event,
+                                               f"{other.name}_{other.action}"))
+                else:
+                    group.add_condition(xosc.EntityTrigger(f"{other.name}_waits_{k}", 0, xosc.ConditionEdge.none,
+                                                           _within(0.1, other.start, minor), other.name))
+            trigger.add_conditiongroup(group)
+        events.append((f"{ego.name}_goes_on_after_{crosser.name}", [("set_off", xosc.AbsoluteSpeedAction(
+            _ego_speed_in_stage(ego, crosser.stage), xosc.TransitionDynamics(
+                xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, YIELD_SET_OFF_MPS2)))], trigger))
+    act = xosc.Act("ego_yields", _always("ego_yields_start", 0.0, minor))
+    act.add_maneuver_group(_group(ego.name, f"{ego.name}_yields", f"{ego.name}_yields_group", events))
+    return act
+
+
+def _ego_speed_in_stage(ego: BoundAgent, stage: int) -> float:
+    """The speed the ego drives at in a stage: its own, or the last one a later line of it gave it."""
+    speed = ego.speed_mps
+    for step in ego.later:
+        if step.stage <= stage and step.speed_mps is not None:
+            speed = step.speed_mps
+    return speed
+
+
+def _within(value: float, position: LanePos, minor: int) -> xosc.DistanceCondition:
+    return xosc.DistanceCondition(round(value, 3), xosc.Rule.lessThan, _lane_position(position), alongroute=False,
+                                  freespace=False, distance_type=_EUCLIDEAN[minor >= 1])
+
+
+def _state(label: str, kind, ref: str) -> xosc.ValueTrigger:
+    return xosc.ValueTrigger(label, 0, xosc.ConditionEdge.none, xosc.StoryboardElementStateCondition(
+        kind, ref, xosc.StoryboardElementState.completeState))
+
+
+def _all_of(conditions) -> xosc.Trigger:
+    group = xosc.ConditionGroup()
+    for condition in conditions:
+        group.add_condition(condition)
+    trigger = xosc.Trigger()
+    trigger.add_conditiongroup(group)
+    return trigger
 
 
 def _group(actor: str, maneuver_name: str, group_name: str, events) -> xosc.ManeuverGroup:
