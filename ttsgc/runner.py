@@ -32,15 +32,28 @@ def default_workers() -> int:
         return max(1, os.cpu_count() or 1)
 
 
-def warm_pipeline(maps=None) -> None:
-    """Import every stage and load the map library: what each worker would otherwise do on its first scene."""
+def warm_pipeline(maps=None, versions: tuple[str, ...] = ("1.3",)) -> None:
+    """Load what each scene would otherwise load on its first use: every stage's imports, libsumo (with traci
+    and sumolib), the scene and expression parsers, the XSD of each OpenSCENARIO version, the map library.
+    Done once before forking, workers (and a server's children) start with all of it, shared."""
     import ttsgc.language  # noqa: F401
     import ttsgc.lowering  # noqa: F401
     import ttsgc.pipeline  # noqa: F401
-    import ttsgc.simulate.players.sumo  # noqa: F401 - libsumo is loaded; no simulation is started
+    import ttsgc.simulate.players.sumo  # noqa: F401
     import ttsgc.simulate.validate  # noqa: F401
+    from ttsgc import xsd
+    from ttsgc.language.parse import grammar_parser
     from ttsgc.roads.retrieve import load_library
+    from ttsgc.simulate.lean_libsumo import load_libsumo
+    from ttsgc.simulate.resolve import _expression_parser
 
+    load_libsumo()  # no simulation is started, so none is inherited
+    grammar_parser()
+    _expression_parser()
+    for version in versions:
+        xsd.schema(version)
+        xsd.attribute_types(version)
+        xsd.one_of_tags(version)
     load_library(list(maps) if maps else None)
 
 

@@ -37,25 +37,14 @@ class ServerError(TtsgcError):
 
 
 def warm_up() -> None:
-    """Load what commands load on first use: imports, the two parsers, the XSDs, the map library. Warming is
-    an optimisation: what cannot be built here is built by each child, as without a server."""
+    """What a batch's workers are given (runner.warm_pipeline), for every OpenSCENARIO version, and the
+    command-line parser."""
     import ttsgc.cli
-    from ttsgc import xsd
-    from ttsgc.language.parse import grammar_parser
     from ttsgc.runner import warm_pipeline
-    from ttsgc.simulate.lean_libsumo import load_libsumo
-    from ttsgc.simulate.resolve import _expression_parser
+    from ttsgc.xsd import VERSIONS
 
     ttsgc.cli.cached_parser()
-    warm_pipeline()
-    load_libsumo()  # libsumo, traci and sumolib; no simulation is started, so none is inherited
-    grammar_parser()
-    _expression_parser()
-    for minor in sorted(xsd.VERSIONS):
-        version = f"1.{minor}"
-        xsd.schema(version)
-        xsd.attribute_types(version)
-        xsd.one_of_tags(version)
+    warm_pipeline(versions=tuple(f"1.{minor}" for minor in sorted(VERSIONS)))
 
 
 # -- starting, stopping, asking ------------------------------------------------------------------------------
