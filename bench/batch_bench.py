@@ -25,14 +25,15 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from timing import ROOT, bytecode_note, use_bytecode, with_bytecode
 
 
 def timed(command: list[str]) -> tuple[float, float]:
     """(wall seconds, CPU seconds of the command and its workers)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                          env=with_bytecode(dict(os.environ)))
     wall = time.perf_counter() - start
     if done.returncode != 0:
         raise SystemExit(f"failed ({done.returncode}): {' '.join(command)}")
@@ -67,9 +68,15 @@ def main() -> int:
     parser.add_argument("--workers", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--variants", type=int, nargs="+", default=[1, 5], help="batch sizes: scenes per input")
     parser.add_argument("--skip-eval", action="store_true")
+    parser.add_argument("--bytecode", choices=["installed", "none"], default="installed",
+                        help="installed (default): processes start with their modules compiled, as an installed "
+                             "copy does; none: as the environment says (PYTHONDONTWRITEBYTECODE recompiles each time)")
     args = parser.parse_args()
     ttsgc = [sys.executable, "-m", "ttsgc"]
     with tempfile.TemporaryDirectory(prefix="ttsgc-bench-") as scratch:
+        if args.bytecode == "installed":
+            use_bytecode(Path(scratch) / "bytecode")
+        print(f"python: {bytecode_note()}; runs of 1 and 2 workers alternate (paired), medians")
         runs = iter(range(10**6))
         timed(ttsgc + ["batch", "examples", "-o", f"{scratch}/warm", "--workers", str(max(args.workers))])
         scenes = len([p for p in (ROOT / "examples").iterdir() if p.suffix in (".txt", ".tsg")])

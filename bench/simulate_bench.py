@@ -21,7 +21,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from timing import ROOT, checkouts, environment, median, medians, ms, timed, ttsgc
+from timing import ROOT, bytecode_note, checkouts, environment, median, medians, ms, timed, ttsgc, use_bytecode
 
 sys.path.insert(0, str(ROOT))
 from ttsgc.language import parse_file  # noqa: E402 - this checkout, whatever is installed
@@ -99,6 +99,7 @@ def against_esmini(trees: dict[str, Path], repeat: int, scratch: Path) -> None:
 def _compare(binary: Path, scenes: list[Path], commands: dict, ways: dict, repeat: int) -> None:
     print(f"\n== `ttsgc validate` against esmini's play of the same file, whole processes, x {repeat}, medians")
     print(f"esmini: {' '.join(esmini_play(binary, Path('SCENE.xosc')))}")
+    print(f"python: {bytecode_note()}")
     for column, (label, env) in ways.items():
         how = "answered by a warm `ttsgc serve`" if column.endswith("served") else "alone (TTSGC_NO_SERVER=1)"
         print(f"{column}: python -m ttsgc {' '.join(commands[label])} SCENE.xosc, {how}")
@@ -132,8 +133,13 @@ def main() -> int:
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--against", action="append", metavar="CHECKOUT", help="another checkout to compare with")
     parser.add_argument("--only-esmini", action="store_true", help="only the comparison with esmini")
+    parser.add_argument("--bytecode", choices=["installed", "none"], default="installed",
+                        help="installed (default): processes start with their modules compiled, as an installed "
+                             "copy does; none: as the environment says (PYTHONDONTWRITEBYTECODE recompiles each time)")
     args = parser.parse_args()
     scratch = Path(tempfile.mkdtemp(prefix="ttsgc-bench-"))
+    if args.bytecode == "installed":
+        use_bytecode(scratch / "bytecode")
     try:
         if not args.only_esmini:
             in_process(args.repeat, scratch)

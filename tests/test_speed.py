@@ -163,7 +163,10 @@ from ttsgc.simulate.lean_libsumo import load_libsumo
 loaded = load_libsumo()
 import libsumo
 assert loaded is libsumo and libsumo.simulation is not None
-assert 'numpy' not in sys.modules
+assert 'numpy' not in sys.modules and 'ssl' not in sys.modules and 'urllib.request' not in sys.modules
+import sumolib.miscutils, urllib.request
+assert sumolib.miscutils.urlopen("data:,ttsgc").read() == b"ttsgc"  # the real urlopen, imported when called
+assert urllib.request.urlopen is not sumolib.miscutils.urlopen and 'ssl' in sys.modules
 import sumolib.statistics as st
 assert st.sqrt(6.25) == 2.5 and 'numpy' in sys.modules  # numpy's own sqrt, imported when first called
 st.set_printoptions(precision=2)
