@@ -173,3 +173,22 @@ st.set_printoptions(precision=2)
 print(json.dumps(type(st.sqrt(4.0)).__module__))
 """
     assert fresh(code) == "numpy"
+
+
+def test_a_grammar_analysis_cached_on_disk_parses_as_the_grammar_built_afresh(tmp_path, monkeypatch):
+    from lark import Lark
+
+    from ttsgc import grammars
+    from ttsgc.resources import resource_dir
+
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path))
+    text = (resource_dir("grammar") / "scenario.lark").read_text(encoding="utf-8")
+    afresh = Lark(text, parser="lalr", propagate_positions=True, maybe_placeholders=False)
+    scenes = [p.read_text(encoding="utf-8") for p in sorted((ROOT / "examples").glob("*.tsg"))]
+    for attempt in ("written", "read", "corrupt"):
+        if attempt == "corrupt":
+            [cached] = (tmp_path / "parsers").glob("scenario-*.lark")
+            cached.write_bytes(b"not a parser")
+        parser = grammars.lalr_parser("scenario.lark", propagate_positions=True, maybe_placeholders=False)
+        assert [parser.parse(s) for s in scenes] == [afresh.parse(s) for s in scenes], attempt
+    assert sorted(p.name.split("-")[0] for p in (tmp_path / "parsers").iterdir()) == ["scenario"]  # no scratch left
