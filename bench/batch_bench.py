@@ -4,7 +4,9 @@
 
 Runs `ttsgc batch examples` into a fresh folder with each number of workers, alternating so that a busy
 spell of a shared machine hurts every setting alike, and prints the median wall time of each, the speed-up
-against one worker, and the spread of the runs and the machine's load average (how noisy the figures are).
+against one worker (of the medians, and the median of the run-by-run ratios), and the spread of the runs and
+the machine's load average (how noisy the figures are). Processes start with their modules compiled, as an
+installed copy does (--bytecode none: as the environment says).
 Then the same for `ttsgc eval examples --seeds 5`. Caches (map indexes, SUMO networks) are warmed first.
 
 A warm scene takes about 0.1 s, while starting the pipeline (imports, the map library) takes seconds that no
@@ -53,13 +55,15 @@ def measure(name: str, make_command, workers: list[int], repeats: int) -> None:
             cores[w].append(cpu / wall)
     base = statistics.median(times[workers[0]])
     print(f"\n{name}: median wall time of {repeats} run(s)")
-    print(f"{'workers':>8} {'median s':>9} {'min s':>7} {'max s':>7} {'speed-up':>9} {'cores had':>10}")
+    print(f"{'workers':>8} {'median s':>9} {'min s':>7} {'max s':>7} {'speed-up':>9} {'paired':>7} {'cores had':>10}")
     for w in workers:
         median = statistics.median(times[w])
-        print(f"{w:>8} {median:9.1f} {min(times[w]):7.1f} {max(times[w]):7.1f} {base / median:8.2f}x "
-              f"{statistics.median(cores[w]):10.2f}")
+        paired = statistics.median(a / b for a, b in zip(times[workers[0]], times[w]))  # run by run
+        print(f"{w:>8} {median:9.2f} {min(times[w]):7.2f} {max(times[w]):7.2f} {base / median:8.2f}x "
+              f"{paired:6.2f}x {statistics.median(cores[w]):10.2f}")
     print(f"load average (1 min) before each run: min {min(loads):.1f}, median {statistics.median(loads):.1f}, "
-          f"max {max(loads):.1f} on {os.cpu_count()} core(s)")
+          f"max {max(loads):.1f} on {os.cpu_count()} core(s); 'paired' is the median of the ratios of runs made "
+          f"one after the other")
 
 
 def main() -> int:
