@@ -73,6 +73,7 @@ def run(function: Callable[[Any], Any], jobs: Sequence[Any], workers: int | None
 
 
 def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]:
+    import gc
     import multiprocessing
     import threading
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -81,6 +82,7 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
     if forkable:  # warm once here; no simulation has been started in this process, so none is inherited
         if warm_up is not None:
             warm_up()
+        gc.freeze()  # what is loaded stays shared with the workers, not copied page by page as the collector walks it
         pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)), mp_context=multiprocessing.get_context("fork"),
                                    initializer=_worker_start)
     else:
@@ -100,6 +102,8 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
         raise
     finally:
         pool.shutdown(wait=False, cancel_futures=True)
+        if forkable:
+            gc.unfreeze()
 
 
 def _worker_start(warm_up=None) -> None:
