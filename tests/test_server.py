@@ -204,3 +204,29 @@ def test_a_dead_or_idle_server_is_never_a_difference_and_a_long_cache_path_works
     assert code == 0 and b"started" in out, err
     _wait_for(lambda: servers(env) == [], timeout=30)  # idle for a second: it stops by itself
     assert not list((cache / "server").glob("*.sock"))
+
+
+def test_an_edited_checkout_is_another_installation(tmp_path):
+    """The key (the socket's name) changes with any file of the package or its grammars, and with where it is."""
+    import shutil
+
+    for name in ("ttsgc", "grammar", "templates"):
+        shutil.copytree(ROOT / name, tmp_path / "copy" / name, ignore=shutil.ignore_patterns("__pycache__"))
+
+    def key(where: Path) -> str:
+        done = subprocess.run([sys.executable, "-c", "from ttsgc.forward import server_key; print(server_key())"],
+                              env=dict(os.environ, PYTHONPATH=str(where)), cwd=tmp_path, capture_output=True,
+                              text=True)
+        assert done.returncode == 0, done.stderr
+        return done.stdout.strip()
+
+    copy = tmp_path / "copy"
+    first = key(copy)
+    assert first == key(copy) and first != key(ROOT)
+    grammar = copy / "grammar" / "scenario.lark"
+    grammar.write_text(grammar.read_text(encoding="utf-8") + "\n", encoding="utf-8")
+    edited = key(copy)
+    assert edited != first
+    stat_ = (copy / "ttsgc" / "cli.py").stat()
+    os.utime(copy / "ttsgc" / "cli.py", ns=(stat_.st_atime_ns, stat_.st_mtime_ns + 1_000_000_000))
+    assert key(copy) not in (first, edited)

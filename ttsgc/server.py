@@ -113,6 +113,8 @@ def start(idle_s: float = DEFAULT_IDLE_S, foreground: bool = False) -> tuple[Pat
             if os.fork() != 0:
                 os._exit(0)
             _detach_streams(folder / f"{path.stem}.log")
+            sys.path[:] = [os.path.abspath(entry) for entry in sys.path]  # '' and relative entries: this folder
+            os.chdir("/")  # holds no folder busy; each command runs in its client's
             _serve(key, path, idle_s, ready=write_end)
         except BaseException as exc:  # noqa: BLE001 - said to the starting process, then this process ends
             try:
@@ -159,16 +161,17 @@ def _serve(key: str, path: Path, idle_s: float, ready: int | None) -> None:
     except OSError:  # another server of this installation holds it: starting or running
         os.close(lock)
         pid = _wait_for_other(path)
-        if ready is not None:
+        if ready is not None and pid is not None:
             os.write(ready, f"running {pid}".encode())
             os.close(ready)
             return
-        raise ServerError(f"a server is already running on {path}") from None
+        raise ServerError(f"another server of this installation holds {path.with_suffix('.lock')}"
+                          + ("" if pid is None else f" (pid {pid})")) from None
     listener = None
     _sweep(path)
     try:
         warm_up()
-        _log_python = python_identity()
+        python = python_identity()
         listener = _listen(path)
         inode = os.stat(path).st_ino
         _log(f"listening on {path}")
@@ -178,7 +181,7 @@ def _serve(key: str, path: Path, idle_s: float, ready: int | None) -> None:
         import gc
 
         gc.freeze()  # what the warm-up made stays shared with every child instead of being copied on write
-        _loop(listener, key, _log_python, idle_s, lock)
+        _loop(listener, key, python, idle_s, lock)
     finally:
         if listener is not None:
             listener.close()
