@@ -43,15 +43,14 @@ def forward(argv: list[str]) -> int | None:
         return None
     if not hasattr(_socket, "AF_UNIX") or not all(_is_open(fd) for fd in (0, 1, 2)):
         return None
-    request = _request(argv)
-    if request is None:
-        return None
+    key = server_key()
     try:
-        sock = connect(socket_path())
+        sock = connect(socket_path(key))
     except OSError:
         return None
     try:
-        return _run_remotely(sock, request)
+        request = _request(argv, key)
+        return None if request is None else _run_remotely(sock, request)
     finally:
         sock.close()
 
@@ -65,7 +64,7 @@ def _is_open(fd: int) -> bool:
     try:
         os.fstat(fd)
         return True
-    except OSError:
+    except OSError:  # closed (2>&-): the command runs here and meets that itself
         return False
 
 
@@ -77,14 +76,14 @@ def _stream(stream) -> list | None:
             bool(getattr(stream, "line_buffering", False)), bool(getattr(stream, "write_through", False))]
 
 
-def _request(argv: list[str]) -> dict | None:
+def _request(argv: list[str], key: str) -> dict | None:
     try:
         cwd = os.getcwd()
     except OSError:  # the working folder was removed: let the command meet that itself
         return None
     mask = os.umask(0o022)
     os.umask(mask)
-    return {"op": "run", "protocol": PROTOCOL, "key": server_key(), "python": python_identity(),
+    return {"op": "run", "protocol": PROTOCOL, "key": key, "python": python_identity(),
             "argv": [str(a) for a in argv], "argv0": sys.argv[0] if sys.argv else "ttsgc", "cwd": cwd,
             "env": dict(os.environ), "umask": mask,
             "streams": [_stream(sys.stdin), _stream(sys.stdout), _stream(sys.stderr)]}
