@@ -30,9 +30,24 @@ from pathlib import Path
 from timing import ROOT, bytecode_note, use_bytecode, with_bytecode
 
 
+def machine_busy_seconds() -> float:
+    """CPU seconds the whole machine has spent busy since boot (Linux; 0 elsewhere)."""
+    try:
+        with open("/proc/stat") as stat:
+            fields = [int(x) for x in stat.readline().split()[1:]]
+    except (OSError, ValueError):
+        return 0.0
+    idle = fields[3] + (fields[4] if len(fields) > 4 else 0)
+    return (sum(fields[:8]) - idle) / os.sysconf("SC_CLK_TCK")
+
+
+OTHERS: list[float] = []  # cores other sessions kept busy during each timed run
+
+
 def timed(command: list[str]) -> tuple[float, float]:
     """(wall seconds, CPU seconds of the command and its workers)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    busy = machine_busy_seconds()
     start = time.perf_counter()
     done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                           env=with_bytecode(dict(os.environ)))
@@ -40,13 +55,16 @@ def timed(command: list[str]) -> tuple[float, float]:
     if done.returncode != 0:
         raise SystemExit(f"failed ({done.returncode}): {' '.join(command)}")
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    OTHERS.append(max(0.0, machine_busy_seconds() - busy - cpu) / wall)
+    return wall, cpu
 
 
 def measure(name: str, make_command, workers: list[int], repeats: int) -> None:
     times: dict[int, list[float]] = {w: [] for w in workers}
     cores: dict[int, list[float]] = {w: [] for w in workers}
     loads = []
+    del OTHERS[:]
     for _ in range(repeats):
         for w in workers:
             loads.append(os.getloadavg()[0])
@@ -64,6 +82,9 @@ def measure(name: str, make_command, workers: list[int], repeats: int) -> None:
     print(f"load average (1 min) before each run: min {min(loads):.1f}, median {statistics.median(loads):.1f}, "
           f"max {max(loads):.1f} on {os.cpu_count()} core(s); 'paired' is the median of the ratios of runs made "
           f"one after the other")
+    print(f"cores kept busy by other work during the runs: median {statistics.median(OTHERS):.2f}, max "
+          f"{max(OTHERS):.2f} (near 0: the figures are the machine's; near or above 1 on 2 cores: a second worker "
+          f"had no core of its own)")
 
 
 def main() -> int:
