@@ -60,19 +60,35 @@ def timed(command: list[str]) -> tuple[float, float]:
     return wall, cpu
 
 
-def measure(name: str, make_command, workers: list[int], repeats: int) -> None:
+def measure(name: str, make_command, workers: list[int], repeats: int, quiet: float | None = None,
+            patience: int = 6) -> None:
+    """Rounds of one run per number of workers. With `quiet`, a round counts only when other work kept fewer
+    than `quiet` cores busy during each of its runs (tried up to patience x repeats rounds); the others are
+    set aside and counted."""
     times: dict[int, list[float]] = {w: [] for w in workers}
     cores: dict[int, list[float]] = {w: [] for w in workers}
-    loads = []
-    del OTHERS[:]
-    for _ in range(repeats):
+    loads, others, set_aside = [], [], 0
+    for _ in range(repeats * (patience if quiet is not None else 1)):
+        if len(times[workers[0]]) >= repeats:
+            break
+        round_ = {}
         for w in workers:
             loads.append(os.getloadavg()[0])
-            wall, cpu = timed(make_command(w))
+            round_[w] = timed(make_command(w)) + (OTHERS[-1],)
+        if quiet is not None and max(r[2] for r in round_.values()) >= quiet:
+            set_aside += 1
+            continue
+        for w, (wall, cpu, other) in round_.items():
             times[w].append(wall)
             cores[w].append(cpu / wall)
+            others.append(other)
+    print(f"\n{name}: median wall time of {len(times[workers[0]])} round(s)"
+          + (f" while other work kept under {quiet:g} core busy ({set_aside} busier round(s) set aside)"
+             if quiet is not None else ""))
+    if not times[workers[0]]:
+        print("  no round was quiet enough")
+        return
     base = statistics.median(times[workers[0]])
-    print(f"\n{name}: median wall time of {repeats} run(s)")
     print(f"{'workers':>8} {'median s':>9} {'min s':>7} {'max s':>7} {'speed-up':>9} {'paired':>7} {'cores had':>10}")
     for w in workers:
         median = statistics.median(times[w])
@@ -82,8 +98,8 @@ def measure(name: str, make_command, workers: list[int], repeats: int) -> None:
     print(f"load average (1 min) before each run: min {min(loads):.1f}, median {statistics.median(loads):.1f}, "
           f"max {max(loads):.1f} on {os.cpu_count()} core(s); 'paired' is the median of the ratios of runs made "
           f"one after the other")
-    print(f"cores kept busy by other work during the runs: median {statistics.median(OTHERS):.2f}, max "
-          f"{max(OTHERS):.2f} (near 0: the figures are the machine's; near or above 1 on 2 cores: a second worker "
+    print(f"cores kept busy by other work during the runs counted: median {statistics.median(others):.2f}, max "
+          f"{max(others):.2f} (near 0: the figures are the machine's; near or above 1 on 2 cores: a second worker "
           f"had no core of its own)")
 
 
@@ -93,6 +109,9 @@ def main() -> int:
     parser.add_argument("--workers", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--variants", type=int, nargs="+", default=[1, 5], help="batch sizes: scenes per input")
     parser.add_argument("--skip-eval", action="store_true")
+    parser.add_argument("--quiet", type=float, metavar="CORES",
+                        help="count only rounds during which other work kept fewer than CORES cores busy (a shared "
+                             "machine); up to 6 x --repeats rounds are tried")
     parser.add_argument("--bytecode", choices=["installed", "none"], default="installed",
                         help="installed (default): processes start with their modules compiled, as an installed "
                              "copy does; none: as the environment says (PYTHONDONTWRITEBYTECODE recompiles each time)")
@@ -109,11 +128,11 @@ def main() -> int:
             measure(f"ttsgc batch examples --variants {variants} ({scenes * variants} scenes)",
                     lambda w, v=variants: ttsgc + ["batch", "examples", "-o", f"{scratch}/batch-{next(runs)}",
                                                    "--variants", str(v), "--workers", str(w)],
-                    args.workers, args.repeats)
+                    args.workers, args.repeats, args.quiet)
         if not args.skip_eval:
             measure("ttsgc eval examples --seeds 5 (90 runs)",
                     lambda w: ttsgc + ["eval", "examples", "--seeds", "5", "--workers", str(w)],
-                    args.workers, args.repeats)
+                    args.workers, args.repeats, args.quiet)
     return 0
 
 
