@@ -230,3 +230,10 @@ def test_an_edited_checkout_is_another_installation(tmp_path):
     stat_ = (copy / "ttsgc" / "cli.py").stat()
     os.utime(copy / "ttsgc" / "cli.py", ns=(stat_.st_atime_ns, stat_.st_mtime_ns + 1_000_000_000))
     assert key(copy) not in (first, edited)
+
+
+def test_a_server_that_cannot_make_its_folder_says_where_and_exits_2(tmp_path):
+    (tmp_path / "server").write_text("a file where the folder would go")
+    code, out, err = ttsgc(["serve"], environment(tmp_path), tmp_path)
+    assert (code, out) == (2, b"")
+    assert err.startswith(f"ttsgc: error: {tmp_path / 'server'}: cannot make the server's folder".encode())

@@ -23,7 +23,7 @@ import threading
 import time
 from pathlib import Path
 
-from ttsgc.errors import ExitCode, TtsgcError
+from ttsgc.errors import ExitCode, TtsgcError, UsageError
 from ttsgc.forward import (PROTOCOL, LineReader, connect, decode_message, python_identity, send_message,
                            server_dir, server_key, short_address, socket_path)
 
@@ -100,7 +100,8 @@ def start(idle_s: float = DEFAULT_IDLE_S, foreground: bool = False) -> tuple[Pat
         folder.mkdir(parents=True, exist_ok=True)
         os.chmod(folder, 0o700)
     except OSError as exc:
-        raise ServerError(f"{folder}: cannot make the server's folder: {exc.strerror or exc}") from None
+        raise UsageError(f"{folder}: cannot make the server's folder: {exc.strerror or exc} (set TTSGC_CACHE_DIR to a "
+                         f"writable folder)") from None
     if foreground:
         _serve(key, path, idle_s, ready=None)
         return path, os.getpid(), True
