@@ -101,6 +101,8 @@ def _server_children(env: dict) -> list[int]:
     pids = []
     for answer in servers(env):
         for task in Path(f"/proc/{answer['pid']}/task").iterdir():
+            if not (task / "children").exists():
+                pytest.skip("this kernel does not list a process's children in /proc")
             pids += [int(p) for p in (task / "children").read_text().split()]
     return pids
 
