@@ -4,7 +4,9 @@
 
 Runs `ttsgc batch examples` into a fresh folder with each number of workers, alternating so that a busy
 spell of a shared machine hurts every setting alike, and prints the median wall time of each, the speed-up
-against one worker, and the spread of the runs and the machine's load average (how noisy the figures are).
+against one worker (of the medians, and the median of the run-by-run ratios), and the spread of the runs and
+the machine's load average (how noisy the figures are). Processes start with their modules compiled, as an
+installed copy does (--bytecode none: as the environment says).
 Then the same for `ttsgc eval examples --seeds 5`. Caches (map indexes, SUMO networks) are warmed first.
 
 A warm scene takes about 0.1 s, while starting the pipeline (imports, the map library) takes seconds that no
@@ -25,40 +27,80 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from timing import ROOT, bytecode_note, use_bytecode, with_bytecode
+
+
+def machine_busy_seconds() -> float:
+    """CPU seconds the whole machine has spent busy since boot (Linux; 0 elsewhere)."""
+    try:
+        with open("/proc/stat") as stat:
+            fields = [int(x) for x in stat.readline().split()[1:]]
+    except (OSError, ValueError):
+        return 0.0
+    idle = fields[3] + (fields[4] if len(fields) > 4 else 0)
+    return (sum(fields[:8]) - idle) / os.sysconf("SC_CLK_TCK")
+
+
+OTHERS: list[float] = []  # cores other sessions kept busy during each timed run
 
 
 def timed(command: list[str]) -> tuple[float, float]:
     """(wall seconds, CPU seconds of the command and its workers)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    busy = machine_busy_seconds()
     start = time.perf_counter()
-    done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                          env=with_bytecode(dict(os.environ)))
     wall = time.perf_counter() - start
     if done.returncode != 0:
         raise SystemExit(f"failed ({done.returncode}): {' '.join(command)}")
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    OTHERS.append(max(0.0, machine_busy_seconds() - busy - cpu) / wall)
+    return wall, cpu
 
 
-def measure(name: str, make_command, workers: list[int], repeats: int) -> None:
+def measure(name: str, make_command, workers: list[int], repeats: int, quiet: float | None = None,
+            patience: int = 6) -> None:
+    """Rounds of one run per number of workers. With `quiet`, a round counts only when other work kept fewer
+    than `quiet` cores busy during each of its runs (tried up to patience x repeats rounds); the others are
+    set aside and counted."""
     times: dict[int, list[float]] = {w: [] for w in workers}
     cores: dict[int, list[float]] = {w: [] for w in workers}
-    loads = []
-    for _ in range(repeats):
+    loads, others, set_aside = [], [], 0
+    for _ in range(repeats * (patience if quiet is not None else 1)):
+        if len(times[workers[0]]) >= repeats:
+            break
+        round_ = {}
         for w in workers:
             loads.append(os.getloadavg()[0])
-            wall, cpu = timed(make_command(w))
+            round_[w] = timed(make_command(w)) + (OTHERS[-1],)
+        if quiet is not None and max(r[2] for r in round_.values()) >= quiet:
+            set_aside += 1
+            continue
+        for w, (wall, cpu, other) in round_.items():
             times[w].append(wall)
             cores[w].append(cpu / wall)
+            others.append(other)
+    print(f"\n{name}: median wall time of {len(times[workers[0]])} round(s)"
+          + (f" while other work kept under {quiet:g} core busy ({set_aside} busier round(s) set aside)"
+             if quiet is not None else ""))
+    if not times[workers[0]]:
+        print("  no round was quiet enough")
+        return
     base = statistics.median(times[workers[0]])
-    print(f"\n{name}: median wall time of {repeats} run(s)")
-    print(f"{'workers':>8} {'median s':>9} {'min s':>7} {'max s':>7} {'speed-up':>9} {'cores had':>10}")
+    print(f"{'workers':>8} {'median s':>9} {'min s':>7} {'max s':>7} {'speed-up':>9} {'paired':>7} {'cores had':>10}")
     for w in workers:
         median = statistics.median(times[w])
-        print(f"{w:>8} {median:9.1f} {min(times[w]):7.1f} {max(times[w]):7.1f} {base / median:8.2f}x "
-              f"{statistics.median(cores[w]):10.2f}")
+        paired = statistics.median(a / b for a, b in zip(times[workers[0]], times[w]))  # run by run
+        print(f"{w:>8} {median:9.2f} {min(times[w]):7.2f} {max(times[w]):7.2f} {base / median:8.2f}x "
+              f"{paired:6.2f}x {statistics.median(cores[w]):10.2f}")
     print(f"load average (1 min) before each run: min {min(loads):.1f}, median {statistics.median(loads):.1f}, "
-          f"max {max(loads):.1f} on {os.cpu_count()} core(s)")
+          f"max {max(loads):.1f} on {os.cpu_count()} core(s); 'paired' is the median of the ratios of runs made "
+          f"one after the other")
+    print(f"cores kept busy by other work during the runs counted: median {statistics.median(others):.2f}, max "
+          f"{max(others):.2f} (near 0: the figures are the machine's; near or above 1 on 2 cores: a second worker "
+          f"had no core of its own)")
 
 
 def main() -> int:
@@ -67,9 +109,18 @@ def main() -> int:
     parser.add_argument("--workers", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--variants", type=int, nargs="+", default=[1, 5], help="batch sizes: scenes per input")
     parser.add_argument("--skip-eval", action="store_true")
+    parser.add_argument("--quiet", type=float, metavar="CORES",
+                        help="count only rounds during which other work kept fewer than CORES cores busy (a shared "
+                             "machine); up to 6 x --repeats rounds are tried")
+    parser.add_argument("--bytecode", choices=["installed", "none"], default="installed",
+                        help="installed (default): processes start with their modules compiled, as an installed "
+                             "copy does; none: as the environment says (PYTHONDONTWRITEBYTECODE recompiles each time)")
     args = parser.parse_args()
     ttsgc = [sys.executable, "-m", "ttsgc"]
     with tempfile.TemporaryDirectory(prefix="ttsgc-bench-") as scratch:
+        if args.bytecode == "installed":
+            use_bytecode(Path(scratch) / "bytecode")
+        print(f"python: {bytecode_note()}; runs of 1 and 2 workers alternate (paired), medians")
         runs = iter(range(10**6))
         timed(ttsgc + ["batch", "examples", "-o", f"{scratch}/warm", "--workers", str(max(args.workers))])
         scenes = len([p for p in (ROOT / "examples").iterdir() if p.suffix in (".txt", ".tsg")])
@@ -77,11 +128,11 @@ def main() -> int:
             measure(f"ttsgc batch examples --variants {variants} ({scenes * variants} scenes)",
                     lambda w, v=variants: ttsgc + ["batch", "examples", "-o", f"{scratch}/batch-{next(runs)}",
                                                    "--variants", str(v), "--workers", str(w)],
-                    args.workers, args.repeats)
+                    args.workers, args.repeats, args.quiet)
         if not args.skip_eval:
             measure("ttsgc eval examples --seeds 5 (90 runs)",
                     lambda w: ttsgc + ["eval", "examples", "--seeds", "5", "--workers", str(w)],
-                    args.workers, args.repeats)
+                    args.workers, args.repeats, args.quiet)
     return 0
 
 

@@ -32,10 +32,34 @@ def checkouts(against: list[str] | None) -> dict[str, Path]:
     return found
 
 
+_BYTECODE: list[Path] = []  # set by use_bytecode: where compiled modules are kept between timed runs
+
+
+def use_bytecode(folder: Path) -> None:
+    """Time processes as an installed copy runs: its modules compiled once (pip does it on install), not on
+    every start as a checkout is when PYTHONDONTWRITEBYTECODE is set (this machine sets it). The bytecode goes
+    to a scratch folder (PYTHONPYCACHEPREFIX), never into the checkout; the first, untimed run writes it."""
+    _BYTECODE[:] = [folder]
+
+
+def bytecode_note() -> str:
+    if _BYTECODE:
+        return "modules compiled once, as installed (--bytecode installed)"
+    return f"modules compiled {'on every start' if os.environ.get('PYTHONDONTWRITEBYTECODE') else 'as Python does'}" \
+           f" (--bytecode none: the environment as it is)"
+
+
+def with_bytecode(env: dict[str, str]) -> dict[str, str]:
+    if _BYTECODE:
+        env = dict(env, PYTHONPYCACHEPREFIX=str(_BYTECODE[0]))
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
+    return env
+
+
 def environment(checkout: Path, cache: Path) -> dict[str, str]:
     env = dict(os.environ, PYTHONPATH=str(checkout), TTSGC_CACHE_DIR=str(cache))
     env.pop("ANTHROPIC_API_KEY", None)  # the offline lowering: deterministic and free
-    return env
+    return with_bytecode(env)
 
 
 class Sample(NamedTuple):

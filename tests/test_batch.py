@@ -190,3 +190,19 @@ def test_eval_runs_on_the_runner_with_the_same_runs_on_any_number_of_workers(tmp
         reports.append(data)
     assert reports[0] == reports[1]
     assert [r["case"] for r in reports[0]["runs"]] == sorted(r["case"] for r in reports[0]["runs"])
+
+
+def test_scenes_go_out_longest_first_by_their_earlier_durations(one_worker, tmp_path):
+    from ttsgc.batch import job_key, load_durations, longest_first
+
+    prompts, _ = one_worker
+    jobs = plan_jobs(prompts, tmp_path / "out")
+    durations = load_durations()
+    finished = [job for job in jobs if job.id != "broken"]  # an error is a finished scene too
+    assert all(job_key(job) in durations for job in jobs)  # the one-worker batch recorded each of them
+    timed = {job_key(job): float(n) for n, job in enumerate(finished, 1)}  # the last input took longest
+    fresh = plan_jobs(prompts, tmp_path / "out", variants=2)[0]  # seed 0: other work, never timed
+    order = longest_first([*finished, fresh], timed)
+    assert order == [fresh, *reversed(finished)]
+    assert job_key(jobs[0]) == job_key(plan_jobs(prompts, tmp_path / "elsewhere")[0])  # the folder is not the work
+    assert longest_first(jobs, {job_key(job): 0.5 for job in jobs}) == jobs  # ties keep the input order

@@ -163,10 +163,59 @@ from ttsgc.simulate.lean_libsumo import load_libsumo
 loaded = load_libsumo()
 import libsumo
 assert loaded is libsumo and libsumo.simulation is not None
-assert 'numpy' not in sys.modules
+assert 'numpy' not in sys.modules and 'ssl' not in sys.modules and 'urllib.request' not in sys.modules
+import sumolib.miscutils, urllib.request
+assert sumolib.miscutils.urlopen("data:,ttsgc").read() == b"ttsgc"  # the real urlopen, imported when called
+assert urllib.request.urlopen is not sumolib.miscutils.urlopen and 'ssl' in sys.modules
 import sumolib.statistics as st
 assert st.sqrt(6.25) == 2.5 and 'numpy' in sys.modules  # numpy's own sqrt, imported when first called
 st.set_printoptions(precision=2)
 print(json.dumps(type(st.sqrt(4.0)).__module__))
 """
     assert fresh(code) == "numpy"
+
+
+def test_a_grammar_analysis_cached_on_disk_parses_as_the_grammar_built_afresh(tmp_path, monkeypatch):
+    from lark import Lark
+
+    from ttsgc import grammars
+    from ttsgc.resources import resource_dir
+
+    monkeypatch.setenv("TTSGC_CACHE_DIR", str(tmp_path))
+    text = (resource_dir("grammar") / "scenario.lark").read_text(encoding="utf-8")
+    afresh = Lark(text, parser="lalr", propagate_positions=True, maybe_placeholders=False)
+    scenes = [p.read_text(encoding="utf-8") for p in sorted((ROOT / "examples").glob("*.tsg"))]
+    for attempt in ("written", "read", "corrupt"):
+        if attempt == "corrupt":
+            [cached] = (tmp_path / "parsers").glob("scenario-*.lark")
+            cached.write_bytes(b"not a parser")
+        parser = grammars.lalr_parser("scenario.lark", propagate_positions=True, maybe_placeholders=False)
+        assert [parser.parse(s) for s in scenes] == [afresh.parse(s) for s in scenes], attempt
+    assert sorted(p.name.split("-")[0] for p in (tmp_path / "parsers").iterdir()) == ["scenario"]  # no scratch left
+
+
+def test_the_collision_check_skips_only_pairs_too_far_apart_to_touch():
+    """The cheap reach test before the exact box distance never hides a contact: boxes that touch or overlap
+    are within their two reaches, and boxes just past them are apart."""
+    import math
+    import random
+
+    from ttsgc.simulate.judge import _reach, box_distance
+    from ttsgc.simulate.trace import Body, Sample
+
+    rng = random.Random(7)
+    touching = 0
+    for _ in range(4000):
+        body_a = Body(length=rng.uniform(0.5, 12), width=rng.uniform(0.5, 3))
+        body_b = Body(length=rng.uniform(0.5, 12), width=rng.uniform(0.5, 3))
+        a = Sample(t=0.0, x=0.0, y=0.0, h=rng.uniform(-math.pi, math.pi), speed=0.0)
+        reach = _reach(body_a) + _reach(body_b)
+        d = rng.uniform(0, reach * 1.2)
+        angle = rng.uniform(-math.pi, math.pi)
+        b = Sample(t=0.0, x=d * math.cos(angle), y=d * math.sin(angle), h=rng.uniform(-math.pi, math.pi), speed=0.0)
+        if box_distance(a, body_a, b, body_b) <= 0.0:
+            touching += 1
+            assert math.hypot(b.x - a.x, b.y - a.y) <= reach
+        elif d > reach:
+            assert box_distance(a, body_a, b, body_b) > 0.0
+    assert touching > 500  # the draw does test contacts

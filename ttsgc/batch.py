@@ -270,15 +270,78 @@ def run_batch(jobs: list[Job], out_dir: Path, workers: int | None = None, ray_ad
     import functools
 
     warm_up = functools.partial(runner.warm_pipeline, jobs[0].maps if jobs else None)
-    for index, outcome in runner.run(make_scene, todo, workers, ray_address, warm_up=warm_up):
-        store(out_dir, outcome)
-        rows[todo[index].id] = outcome.row
-        if not outcome.finished:
-            unfinished.append(todo[index].id)
-        done += 1
-        if progress:
-            progress(skipped + done, len(jobs), f"{todo[index].id}: {outcome.row['verdict']}")
+    durations = load_durations()
+    todo = longest_first(todo, durations)
+    took: dict[str, float] = {}
+    try:
+        for index, outcome in runner.run(make_scene, todo, workers, ray_address, warm_up=warm_up):
+            store(out_dir, outcome)
+            rows[todo[index].id] = outcome.row
+            if not outcome.finished:
+                unfinished.append(todo[index].id)
+            elif isinstance(outcome.row.get("seconds_total"), (int, float)):
+                took[job_key(todo[index])] = outcome.row["seconds_total"]
+            done += 1
+            if progress:
+                progress(skipped + done, len(jobs), f"{todo[index].id}: {outcome.row['verdict']}")
+    finally:
+        save_durations(took)
     ordered = [rows[job.id] for job in jobs if job.id in rows]
     write_summary(out_dir, ordered)
     return BatchResult(ordered, skipped, done, unfinished)
+
+
+# -- the order scenes are handed out in --------------------------------------------------------------------
+# A scene that tries several roads takes ten times one that fits the first: handed out last, it keeps one
+# worker busy while the others have nothing left. So scenes go out longest first, by how long the same job
+# took before (kept in the cache), and a scene never seen goes out before all of them. Only the order of
+# work changes: every file and the summary are the same in any order.
+
+DURATIONS_FILE = "batch-durations.json"
+DURATIONS_KEPT = 50_000
+
+
+def job_key(job: Job) -> str:
+    """What makes two jobs the same work, whatever the batch, folder or id."""
+    data = json.dumps([job.kind, job.text, job.seed, job.maps, job.method, job.osc_version, job.players])
+    return hashlib.sha256(data.encode("utf-8")).hexdigest()[:24]
+
+
+def _durations_path() -> Path:
+    from ttsgc.roads.index import cache_dir
+
+    return cache_dir().parent / DURATIONS_FILE
+
+
+def load_durations() -> dict[str, float]:
+    try:
+        data = json.loads(_durations_path().read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    return {k: v for k, v in data.items() if isinstance(v, (int, float))} if isinstance(data, dict) else {}
+
+
+def save_durations(took: dict[str, float]) -> None:
+    """Add this run's durations to the cache (the newest kept); a cache that cannot be written costs nothing
+    but the order."""
+    if not took:
+        return
+    durations = load_durations()
+    for key in took:
+        durations.pop(key, None)
+    durations.update(took)
+    kept = dict(list(durations.items())[-DURATIONS_KEPT:])
+    try:
+        path = _durations_path()
+        path.parent.mkdir(parents=True, exist_ok=True)
+        write_atomic(path, json.dumps(kept) + "\n")
+    except OSError:
+        pass
+
+
+def longest_first(jobs: list[Job], durations: dict[str, float]) -> list[Job]:
+    """Jobs never timed first (in their order), then the others from the longest to the shortest."""
+    known = [durations.get(job_key(job)) for job in jobs]
+    order = sorted(range(len(jobs)), key=lambda i: (known[i] is not None, -(known[i] or 0.0), i))
+    return [jobs[i] for i in order]
 

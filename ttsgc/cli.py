@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import sys
 import traceback
@@ -426,6 +427,24 @@ def _add_render_and_batch(commands, llm_options) -> None:
     batch.set_defaults(run=_batch)
 
 
+def _serve(args) -> int:
+    from ttsgc.server import run_command
+
+    return run_command(args)
+
+
+def _add_serve(commands) -> None:
+    serve = commands.add_parser("serve", help="keep a warm ttsgc in the background: validate, compile and the other "
+                                              "one-scene commands then start in milliseconds")
+    action = serve.add_mutually_exclusive_group()
+    action.add_argument("--stop", action="store_true", help="stop every server of this cache folder")
+    action.add_argument("--status", action="store_true", help="list the servers that answer")
+    action.add_argument("--foreground", action="store_true", help="serve in this process until Ctrl-C")
+    serve.add_argument("--idle", type=_number(float, 0, 10**7), default=3 * 3600, metavar="SECONDS",
+                       help="stop after this long without a command (default 3 hours; 0: never)")
+    serve.set_defaults(run=_serve)
+
+
 def table(headers: list[str], rows: list[list[str]]) -> str:
     """Plain aligned columns, for terminals and for pasting into notes."""
     widths = [max(len(str(x)) for x in column) for column in zip(headers, *rows)]
@@ -636,6 +655,7 @@ def build_parser() -> argparse.ArgumentParser:
     importer.set_defaults(run=_import_ttsg)
 
     _add_render_and_batch(commands, llm_options)
+    _add_serve(commands)
 
     maps_options = argparse.ArgumentParser(add_help=False)
     maps_options.add_argument("--maps", action="append", metavar="PATH",
@@ -668,6 +688,12 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+@functools.cache
+def cached_parser() -> argparse.ArgumentParser:
+    """The parser, built once per process: a warm server builds it before forking its children."""
+    return build_parser()
+
+
 def _player_option(command) -> None:
     command.add_argument("--player", choices=["sumo", "esmini", "all"], default="all",
                          help="which player proves the scene (default all: every player available here; esmini is "
@@ -683,10 +709,17 @@ def _on_sigterm(signum, frame):
 
 
 def main(argv: list[str] | None = None) -> int:
+    """The command line of this process when argv is None (a warm server runs it if one is up), else argv."""
     import signal
     import threading
 
-    args = build_parser().parse_args(argv)
+    if argv is None:
+        from ttsgc.forward import forward
+
+        forwarded = forward(sys.argv[1:])
+        if forwarded is not None:
+            return forwarded
+    args = cached_parser().parse_args(argv)
     installed = threading.current_thread() is threading.main_thread()
     previous = signal.signal(signal.SIGTERM, _on_sigterm) if installed else None
     try:

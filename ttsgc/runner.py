@@ -32,15 +32,28 @@ def default_workers() -> int:
         return max(1, os.cpu_count() or 1)
 
 
-def warm_pipeline(maps=None) -> None:
-    """Import every stage and load the map library: what each worker would otherwise do on its first scene."""
+def warm_pipeline(maps=None, versions: tuple[str, ...] = ("1.3",)) -> None:
+    """Load what each scene would otherwise load on its first use: every stage's imports, libsumo (with traci
+    and sumolib), the scene and expression parsers, the XSD of each OpenSCENARIO version, the map library.
+    Done once before forking, workers (and a server's children) start with all of it, shared."""
     import ttsgc.language  # noqa: F401
     import ttsgc.lowering  # noqa: F401
     import ttsgc.pipeline  # noqa: F401
-    import ttsgc.simulate.players.sumo  # noqa: F401 - libsumo is loaded; no simulation is started
+    import ttsgc.simulate.players.sumo  # noqa: F401
     import ttsgc.simulate.validate  # noqa: F401
+    from ttsgc import xsd
+    from ttsgc.language.parse import grammar_parser
     from ttsgc.roads.retrieve import load_library
+    from ttsgc.simulate.lean_libsumo import load_libsumo
+    from ttsgc.simulate.resolve import _expression_parser
 
+    load_libsumo()  # no simulation is started, so none is inherited
+    grammar_parser()
+    _expression_parser()
+    for version in versions:
+        xsd.schema(version)
+        xsd.attribute_types(version)
+        xsd.one_of_tags(version)
     load_library(list(maps) if maps else None)
 
 
@@ -60,6 +73,7 @@ def run(function: Callable[[Any], Any], jobs: Sequence[Any], workers: int | None
 
 
 def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]:
+    import gc
     import multiprocessing
     import threading
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -68,6 +82,7 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
     if forkable:  # warm once here; no simulation has been started in this process, so none is inherited
         if warm_up is not None:
             warm_up()
+        gc.freeze()  # what is loaded stays shared with the workers, not copied page by page as the collector walks it
         pool = ProcessPoolExecutor(max_workers=min(workers, len(jobs)), mp_context=multiprocessing.get_context("fork"),
                                    initializer=_worker_start)
     else:
@@ -87,6 +102,8 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
         raise
     finally:
         pool.shutdown(wait=False, cancel_futures=True)
+        if forkable:
+            gc.unfreeze()
 
 
 def _worker_start(warm_up=None) -> None:

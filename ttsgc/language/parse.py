@@ -19,7 +19,6 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 from ttsgc import vocabulary as V
 from ttsgc.language.diagnostics import Diagnostic, ScenarioError
 from ttsgc.numbers import NumberError, parse_float, parse_int
-from ttsgc.resources import resource_dir
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
 MAX_SYNTAX_ERRORS = 20
@@ -42,9 +41,10 @@ _COMMENTS = _CommentSink()
 
 @functools.cache
 def grammar_parser() -> Lark:
-    text = (resource_dir("grammar") / "scenario.lark").read_text(encoding="utf-8")
-    return Lark(text, parser="lalr", propagate_positions=True, maybe_placeholders=False,
-                lexer_callbacks={"COMMENT": _COMMENTS})
+    from ttsgc.grammars import lalr_parser  # the analysis cached on disk
+
+    return lalr_parser("scenario.lark", propagate_positions=True, maybe_placeholders=False,
+                       lexer_callbacks={"COMMENT": _COMMENTS})
 
 
 def parse_file(path: str | Path) -> Scenario:

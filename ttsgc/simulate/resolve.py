@@ -31,7 +31,6 @@ from lark.exceptions import LarkError, UnexpectedInput
 from lxml import etree
 
 from ttsgc.files import real_path
-from ttsgc.resources import resource_dir
 from ttsgc.xsd import (INTEGER_TYPES, NUMERIC_TYPES, XoscFileError, attribute_types, errors,
                                          version_of)
 
@@ -170,8 +169,9 @@ def _plain(value: object) -> str:
 
 @cache
 def _expression_parser() -> Lark:
-    grammar = (resource_dir("grammar") / "xosc_expression.lark").read_text(encoding="utf-8")
-    return Lark(grammar, parser="lalr")
+    from ttsgc.grammars import lalr_parser  # the analysis cached on disk
+
+    return lalr_parser("xosc_expression.lark")
 
 
 def evaluate(text: str, scope: Scope, where: str, notes: list[str] | None = None) -> float | bool:
