@@ -113,8 +113,8 @@ def test_an_interrupted_batch_resumes_to_the_same_summary(one_worker, tmp_path, 
     deadline = time.monotonic() + 120
     try:
         while time.monotonic() < deadline and process.poll() is None:
-            if len(list(resumed.glob("*.result.json"))) >= 2:
-                break
+            if list(resumed.glob("*.result.json")):  # interrupted after the first scene: with two workers
+                break  # and scenes handed out longest first, waiting for two could see the last ones end too
             time.sleep(0.05)
     finally:
         if process.poll() is None:
@@ -123,7 +123,7 @@ def test_an_interrupted_batch_resumes_to_the_same_summary(one_worker, tmp_path, 
     if how == signal.SIGINT:
         assert process.returncode == 130 and "interrupted" in errors and "Traceback" not in errors
     finished = len(list(resumed.glob("*.result.json")))
-    assert 2 <= finished < 5, "the batch was not caught part-way"
+    assert 1 <= finished < 5, "the batch was not caught part-way"
     assert not (resumed / "summary.json").exists()
     assert main(["batch", str(prompts), "-o", str(resumed), "--workers", "1"]) == 0
     assert not list(resumed.glob(".*.tmp"))

@@ -308,3 +308,14 @@ def test_osc_version_flag(tmp_path):
     out = tmp_path / "v.xosc"
     assert main(["compile", str(EXAMPLES / "cut_off.tsg"), "-o", str(out), "--osc-version", "1.0"]) == 0
     assert etree.parse(str(out)).find("FileHeader").get("revMinor") == "0"
+
+
+def test_a_later_walker_beside_the_ego_with_a_trigger_is_written_without_an_empty_event(tmp_path):
+    """It enters beside the ego and has nothing to do until its way across is known; the event that would hold
+    its crossing was empty, which scenariogeneration refuses (an internal error, exit 1)."""
+    scene = tmp_path / "s.tsg"
+    scene.write_text('scenario "x"\nstage one {\n    ego car go_straight\n}\nstage two {\n'
+                     '    pedestrian p1 at front_right cross_the_road when ego within 20m\n}\n')
+    assert main(["compile", str(scene), "-o", str(tmp_path / "s.xosc"), "--no-simulate"]) == 0
+    events = etree.parse(str(tmp_path / "s.xosc")).findall(".//Event")
+    assert events and all(e.find("Action") is not None for e in events)

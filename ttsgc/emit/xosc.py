@@ -505,7 +505,9 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
                        _always(f"{agent.name}_setup", 0.0, minor)))
         setup = []
     walker_waits = agent.start_delay_s if _trajectory_bound(agent) else 0.0  # steps out when its turn comes
-    events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits)))
+    if setup + actions:  # an agent with nothing left to do once it has entered (a walker placed beside the
+        # ego, whose way across is unknown until it stands somewhere) has no event: a file may not hold an empty one
+        events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits)))
     if _trajectory_bound(agent):  # it stands where its path ends (a player would walk on along the lane)
         events.append((f"{agent.name}_arrives", [("stand", xosc.AbsoluteSpeedAction(0.0, step))],
                        xosc.ValueTrigger(f"{agent.name}_path_done", 0, xosc.ConditionEdge.none,
