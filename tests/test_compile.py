@@ -216,7 +216,10 @@ def test_triggers_and_stages(library):
     delayed = root.find(".//Event[@name='b_stop']//Condition")
     assert delayed.get("delay") == "2.5"
     acts = root.findall(".//Act")
-    assert [a.get("name") for a in acts] == ["one", "two", "map_edge"]
+    assert [a.get("name") for a in acts] == ["one", "two", "following", "map_edge"]
+    # the ego behind a, which stops when the ego is within 12 m, brakes once a has begun and it is near
+    behind = root.find(".//Event[@name='ego_stops_behind_a']")
+    assert behind is not None and behind.find(".//Condition[@name='ego_stops_behind_a_leader_near']") is not None
     follows = acts[1].find("StartTrigger//StoryboardElementStateCondition")
     assert follows.get("storyboardElementRef") == "one" and follows.get("state") == "completeState"
     appear = root.find(".//Event[@name='c_enters']//AddEntityAction//RelativeLanePosition")

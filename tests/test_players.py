@@ -573,3 +573,35 @@ def test_a_vehicle_whose_lane_has_not_its_turn_moves_into_one_that_has_and_turns
     for player in ("sumo", "esmini"):
         assert "went left onto road" in _agent(report, player, mover).reason, report.table()
     assert report.ok, report.table()
+
+
+def test_a_stage_after_an_ego_stopped_at_the_light_starts_and_a_slow_crossing_does_not_push_the_next_past_the_end(
+        esmini, tmp_path):
+    """An ego told to stop at a junction holds its route but stands: the second stage waited for it to reach
+    the far road and never came. The third waited for the second to complete and then its estimated length
+    again, so a walker's long crossing estimate pushed it past the stop trigger."""
+    report = _played(tmp_path, "light", 'scenario "stop then crossing then turn"\nroad {\n    lanes >= 2\n'
+                     '    at junction\n    has traffic_light, crosswalk\n}\nstage first {\n    ego car stop\n'
+                     '    motorcycle m1 at left stop\n}\nstage second {\n'
+                     '    pedestrian p1 at near_the_crosswalk cross_the_road\n}\n'
+                     'stage third {\n    car c1 at road_of_straight turn_left\n}\n')
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "p1").achieved and _agent(report, player, "c1").achieved, report.table()
+    assert report.ok, report.table()
+
+
+@pytest.mark.parametrize("tsg", [
+    # the lead brakes to a halt; a motorcycle of the next stage passes on the left
+    "stage first {\n    ego car go_straight\n    car c1 at front stop\n}\n"
+    "stage second {\n    motorcycle m1 at back_left go_straight\n}\n",
+    # the ego stops; the truck behind drives on
+    "stage main {\n    ego car stop\n    truck t1 at back go_straight\n}\n",
+])
+def test_a_vehicle_behind_one_that_stops_stands_behind_it_in_esmini_too(esmini, tmp_path, tsg):
+    """SUMO's car-following stops a follower in time; esmini has none and drove it into the stopped body. The
+    file makes it brake within its braking distance once the other stops; an ego that stops so never reaches
+    the far road, so the next stage does not wait for it there."""
+    report = _played(tmp_path, "follow", f'scenario "lead stops"\nroad {{\n    lanes >= 2\n}}\n{tsg}')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()
