@@ -3,6 +3,7 @@
     python bench/english_proof.py                    # every 9th prompt of tests/corpus/dev, this checkout
     python bench/english_proof.py --every 5 --offset 2
     python bench/english_proof.py --code /other/checkout   # the same sample, another checkout's ttsgc
+    python bench/english_proof.py --prompts list.txt      # the dev prompts a file names, one a line
 
 Each prompt is compiled as `ttsgc compile PROMPT.txt` does (lowered, bound, played in SUMO and in esmini,
 tried on the next-ranked roads); a prompt passes when that exits 0. Set TTSGC_ESMINI to prove in esmini too.
@@ -56,11 +57,18 @@ def main() -> int:
     parser.add_argument("--every", type=int, default=9)
     parser.add_argument("--offset", type=int, default=0)
     parser.add_argument("--code", type=Path, default=ROOT, help="the checkout whose ttsgc compiles (default: this)")
+    parser.add_argument("--prompts", type=Path, help="a file naming dev prompts, one a line (instead of a sample)")
     parser.add_argument("--timeout", type=float, default=300.0)
     args = parser.parse_args()
     if not os.environ.get("TTSGC_ESMINI"):
         print("note: TTSGC_ESMINI is not set; esmini may not play", file=sys.stderr)
     prompts = sample(args.every, args.offset)
+    if args.prompts is not None:
+        prompts = [DEV / Path(line.strip()).relative_to(Path(line.strip()).parents[1])
+                   for line in args.prompts.read_text().splitlines() if line.strip()]
+        outside = [p for p in prompts if not p.is_file()]
+        if outside:
+            parser.error(f"{args.prompts}: no dev prompt {outside[0]}")
     passed, times = 0, []
     with tempfile.TemporaryDirectory() as tmp:
         for prompt in prompts:
