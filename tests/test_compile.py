@@ -311,3 +311,14 @@ def test_osc_version_flag(tmp_path):
     out = tmp_path / "v.xosc"
     assert main(["compile", str(EXAMPLES / "cut_off.tsg"), "-o", str(out), "--osc-version", "1.0"]) == 0
     assert etree.parse(str(out)).find("FileHeader").get("revMinor") == "0"
+
+
+def test_later_agents_beside_the_ego_queue_behind_the_first_instead_of_overlapping(library):
+    """Three later vehicles 'at left' all appeared abreast of the ego at ds 0, on top of one another."""
+    _, scene = _xosc('scenario "t"\nroad {\n    lanes >= 2\n}\nstage one {\n    ego car go_straight\n}\n'
+                     'stage two {\n    car c1 at left go_straight\n    car c2 at left go_straight behind c1\n'
+                     '    bus b1 at left go_straight\n}\n', library)
+    c1, c2, b1 = (scene.agent(n) for n in ("c1", "c2", "b1"))
+    assert c1.appear.ds == 0 and c2.appear.ds < 0 and b1.appear.ds < c2.appear.ds
+    assert c1.appear.ds - c2.appear.ds >= (c1.length + c2.length) / 2
+    assert c2.appear.ds - b1.appear.ds >= (c2.length + b1.length) / 2

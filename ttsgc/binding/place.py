@@ -498,6 +498,9 @@ class Placer:
         extra = sum(l + _spacing(p, a) for (p, _), (a, l) in zip([(None, 0)] + previous, previous))
         last = previous[-1][0] if previous else None
         ds = (ego_len / 2 + extra + _spacing(last, agent) + length / 2) * (1 if ahead else -1 if behind else 0)
+        if not ahead and not behind and previous:  # beside the ego: the first abreast, the rest queued behind it
+            first = previous[0][1] / 2 + sum(l + _spacing(p, a) for (p, _), (a, l) in zip(previous, previous[1:]))
+            ds = -(first + _spacing(last, agent) + length / 2)
         self._later.append((where, agent, length))
         return self._bound(agent, stage, None, self.frame, appear=RelativePos(dlane=dlane, ds=round(ds, 3)))
 
