@@ -605,3 +605,15 @@ def test_a_vehicle_behind_one_that_stops_stands_behind_it_in_esmini_too(esmini, 
     for player in ("sumo", "esmini"):
         assert not _verdict(report, player).collisions, report.table()
     assert report.ok, report.table()
+
+
+def test_a_later_walker_crosses_in_front_of_the_ego_that_stopped(esmini, tmp_path):
+    """A walker of a later stage was placed relative to the ego when its stage starts, with no far side to
+    cross to: it appeared on the kerb and stood. Before an ego that stands, it has a fixed start (where the
+    ego will stand by then) and crosses."""
+    report = _played(tmp_path, "walker", 'scenario "stopped then crossing"\nroad {\n    lanes >= 2\n}\n'
+                     'stage first {\n    ego car stop\n}\nstage second {\n    ego car stop\n'
+                     '    pedestrian p1 at front cross_the_road\n}\n')
+    for player in ("sumo", "esmini"):
+        assert "crossed road" in _agent(report, player, "p1").reason, report.table()
+    assert report.ok, report.table()

@@ -369,7 +369,7 @@ def _on_the_far_road_m(ego: BoundAgent) -> float:
     return round(max(2.0, min(10.0, into - 0.5)), 3)
 
 
-BRAKE_RATE = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}  # m/s² of a stop
+BRAKE_RATE = V.BRAKE_RATE  # m/s² of a stop
 
 
 def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int) -> xosc.ManeuverGroup:
