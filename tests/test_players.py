@@ -617,3 +617,13 @@ def test_a_later_walker_crosses_in_front_of_the_ego_that_stopped(esmini, tmp_pat
     for player in ("sumo", "esmini"):
         assert "crossed road" in _agent(report, player, "p1").reason, report.table()
     assert report.ok, report.table()
+
+
+def test_a_car_on_the_shoulder_changes_lane_into_the_road_in_sumo_too(esmini, tmp_path):
+    """SUMO's network has no shoulder, so the player moves a car standing there itself, and a lane change
+    of such a body was refused ('not possible off the SUMO lanes'): it changes lane as it drives along."""
+    report = _played(tmp_path, "shoulder", 'scenario "pulls out"\nroad {\n    lanes >= 2\n}\nstage main {\n'
+                     '    ego car go_straight\n    car c1 at front_right on shoulder change_lane_to_left\n}\n')
+    for player in ("sumo", "esmini"):
+        assert "changed 1 lane(s) to the left" in _agent(report, player, "c1").reason, report.table()
+    assert report.ok, report.table()
