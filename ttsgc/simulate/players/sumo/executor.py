@@ -538,6 +538,14 @@ class Executor:
             centre -= length
             sumo_lane = min(ahead, key=lambda lane: abs(lane.index - index))
             length = _length(sumo_lane.shape)
+        while centre <= 0 and 0 < k <= len(route) - 1:  # behind the ego's edge: back along the way it came
+            k -= 1
+            behind = [lane for lane in self.by_id.values() if lane.edge == route[k] and not lane.allow_pedestrians]
+            if not behind:
+                break
+            sumo_lane = min(behind, key=lambda lane: abs(lane.index - index))
+            length = _length(sumo_lane.shape)
+            centre += length
         if not 0 < centre < length:
             self.run.spawns[entity.name] = Spawn(False, f"no room {ds:+.0f} m from the ego on its road at t={t:.1f}")
             return
