@@ -627,3 +627,26 @@ def test_a_car_on_the_shoulder_changes_lane_into_the_road_in_sumo_too(esmini, tm
     for player in ("sumo", "esmini"):
         assert "changed 1 lane(s) to the left" in _agent(report, player, "c1").reason, report.table()
     assert report.ok, report.table()
+
+
+def test_later_vehicles_beside_the_ego_past_the_junction_queue_back_across_it_in_sumo_too(esmini, tmp_path):
+    """Three later cars 'at left' all appeared at the ego's side, on top of one another (esmini); queued
+    behind the first, the last fell behind the start of the ego's road, where SUMO's player found no room:
+    it goes back along the ego's way, as esmini's position does."""
+    report = _played(tmp_path, "queue", 'scenario "stream"\nroad {\n    lanes >= 2\n    at junction\n'
+                     '    has traffic_light\n}\nstage first {\n    ego car go_straight\n}\nstage second {\n'
+                     '    car c1 at left go_straight aggressive\n    car c2 at left go_straight aggressive behind c1\n'
+                     '    bus b1 at left go_straight\n}\n')
+    for player in ("sumo", "esmini"):
+        for name in ("c1", "c2", "b1"):
+            assert _agent(report, player, name).achieved, report.table()
+    assert report.ok, report.table()
+
+
+def test_an_ego_turning_into_a_road_where_a_vehicle_stands_stops_behind_it(esmini, tmp_path):
+    """A truck standing on the road the ego turns into, in its lane: esmini drove the ego into it."""
+    report = _played(tmp_path, "corner", 'scenario "corner"\nroad {\n    at junction\n}\nstage main {\n'
+                     '    ego car turn_left\n    truck t1 at at_the_destination stop\n}\n')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()

@@ -139,8 +139,8 @@ FOLLOW_MARGIN_M = 2.0  # free road a follower keeps to the vehicle it stops behi
 
 
 def followers_of_stopping(scene: BoundScene) -> list[tuple[BoundAgent, BoundAgent]]:
-    """(follower, leader): a vehicle placed behind one told to stop, in the same lane, that itself drives on
-    in that lane. A player's car-following (SUMO) stops it in time; esmini has none and drives it into the
+    """(follower, leader): a vehicle placed behind one told to stop, in the same lane, or whose route through
+    the junction leads into its lane, that itself drives on in that lane. A player's car-following (SUMO) stops it in time; esmini has none and drives it into the
     stopped body, so the file must say it."""
     def vehicle(agent: BoundAgent) -> bool:
         return agent.stage == 0 and agent.start is not None and agent.type != "pedestrian" \
@@ -153,9 +153,13 @@ def followers_of_stopping(scene: BoundScene) -> list[tuple[BoundAgent, BoundAgen
             if follower is leader or not vehicle(follower) or follower.action in ("stop", "block_the_ego") \
                     or follower.start_delay_s or follower.speed_mps <= 0:
                 continue
-            same_lane = (follower.start.road, follower.start.lane) == (leader.start.road, leader.start.lane)
+            lane = (leader.start.road, leader.start.lane)
             along = 1 if leader.start.lane < 0 else -1  # a right lane (id < 0) drives along s
-            if same_lane and (leader.start.s - follower.start.s) * along > 0:
+            behind = (follower.start.road, follower.start.lane) == lane and \
+                (leader.start.s - follower.start.s) * along > 0
+            onto = len(follower.route) >= 2 and follower.route[-1].road != follower.start.road and \
+                (follower.route[-1].road, follower.route[-1].lane) == lane  # in the lane its route leads into
+            if behind or onto:
                 pairs.append((follower, leader))
     return pairs
 
