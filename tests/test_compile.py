@@ -216,7 +216,10 @@ def test_triggers_and_stages(library):
     delayed = root.find(".//Event[@name='b_stop']//Condition")
     assert delayed.get("delay") == "2.5"
     acts = root.findall(".//Act")
-    assert [a.get("name") for a in acts] == ["one", "two", "map_edge"]
+    assert [a.get("name") for a in acts] == ["one", "two", "following", "map_edge"]
+    # the ego behind a, which stops when the ego is within 12 m, brakes once a has begun and it is near
+    behind = root.find(".//Event[@name='ego_stops_behind_a']")
+    assert behind is not None and behind.find(".//Condition[@name='ego_stops_behind_a_leader_near']") is not None
     follows = acts[1].find("StartTrigger//StoryboardElementStateCondition")
     assert follows.get("storyboardElementRef") == "one" and follows.get("state") == "completeState"
     appear = root.find(".//Event[@name='c_enters']//AddEntityAction//RelativeLanePosition")
@@ -319,3 +322,14 @@ def test_a_later_walker_beside_the_ego_with_a_trigger_is_written_without_an_empt
     assert main(["compile", str(scene), "-o", str(tmp_path / "s.xosc"), "--no-simulate"]) == 0
     events = etree.parse(str(tmp_path / "s.xosc")).findall(".//Event")
     assert events and all(e.find("Action") is not None for e in events)
+
+
+def test_later_agents_beside_the_ego_queue_behind_the_first_instead_of_overlapping(library):
+    """Three later vehicles 'at left' all appeared abreast of the ego at ds 0, on top of one another."""
+    _, scene = _xosc('scenario "t"\nroad {\n    lanes >= 2\n}\nstage one {\n    ego car go_straight\n}\n'
+                     'stage two {\n    car c1 at left go_straight\n    car c2 at left go_straight behind c1\n'
+                     '    bus b1 at left go_straight\n}\n', library)
+    c1, c2, b1 = (scene.agent(n) for n in ("c1", "c2", "b1"))
+    assert c1.appear.ds == 0 and c2.appear.ds < 0 and b1.appear.ds < c2.appear.ds
+    assert c1.appear.ds - c2.appear.ds >= (c1.length + c2.length) / 2
+    assert c2.appear.ds - b1.appear.ds >= (c2.length + b1.length) / 2

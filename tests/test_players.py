@@ -706,3 +706,80 @@ stage main {{
     inward = 1 if change == "change_lane_to_left" else -1  # left is towards the centre line, on either side
     assert walker.ego_yield is not None and walker.ego_yield.centre.road == ego.start.road
     assert abs(walker.ego_yield.centre.lane) == abs(ego.start.lane) - inward
+
+
+def test_a_stage_after_an_ego_stopped_at_the_light_starts_and_a_slow_crossing_does_not_push_the_next_past_the_end(
+        esmini, tmp_path):
+    """An ego told to stop at a junction holds its route but stands: the second stage waited for it to reach
+    the far road and never came. The third waited for the second to complete and then its estimated length
+    again, so a walker's long crossing estimate pushed it past the stop trigger."""
+    report = _played(tmp_path, "light", 'scenario "stop then crossing then turn"\nroad {\n    lanes >= 2\n'
+                     '    at junction\n    has traffic_light, crosswalk\n}\nstage first {\n    ego car stop\n'
+                     '    motorcycle m1 at left stop\n}\nstage second {\n'
+                     '    pedestrian p1 at near_the_crosswalk cross_the_road\n}\n'
+                     'stage third {\n    car c1 at road_of_straight turn_left\n}\n')
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "p1").achieved and _agent(report, player, "c1").achieved, report.table()
+    assert report.ok, report.table()
+
+
+@pytest.mark.parametrize("tsg", [
+    # the lead brakes to a halt; a motorcycle of the next stage passes on the left
+    "stage first {\n    ego car go_straight\n    car c1 at front stop\n}\n"
+    "stage second {\n    motorcycle m1 at back_left go_straight\n}\n",
+    # the ego stops; the truck behind drives on
+    "stage main {\n    ego car stop\n    truck t1 at back go_straight\n}\n",
+])
+def test_a_vehicle_behind_one_that_stops_stands_behind_it_in_esmini_too(esmini, tmp_path, tsg):
+    """SUMO's car-following stops a follower in time; esmini has none and drove it into the stopped body. The
+    file makes it brake within its braking distance once the other stops; an ego that stops so never reaches
+    the far road, so the next stage does not wait for it there."""
+    report = _played(tmp_path, "follow", f'scenario "lead stops"\nroad {{\n    lanes >= 2\n}}\n{tsg}')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()
+
+
+def test_a_later_walker_crosses_in_front_of_the_ego_that_stopped(esmini, tmp_path):
+    """A walker of a later stage was placed relative to the ego when its stage starts, with no far side to
+    cross to: it appeared on the kerb and stood. Before an ego that stands, it has a fixed start (where the
+    ego will stand by then) and crosses."""
+    report = _played(tmp_path, "walker", 'scenario "stopped then crossing"\nroad {\n    lanes >= 2\n}\n'
+                     'stage first {\n    ego car stop\n}\nstage second {\n    ego car stop\n'
+                     '    pedestrian p1 at front cross_the_road\n}\n')
+    for player in ("sumo", "esmini"):
+        assert "crossed road" in _agent(report, player, "p1").reason, report.table()
+    assert report.ok, report.table()
+
+
+def test_a_car_on_the_shoulder_changes_lane_into_the_road_in_sumo_too(esmini, tmp_path):
+    """SUMO's network has no shoulder, so the player moves a car standing there itself, and a lane change
+    of such a body was refused ('not possible off the SUMO lanes'): it changes lane as it drives along."""
+    report = _played(tmp_path, "shoulder", 'scenario "pulls out"\nroad {\n    lanes >= 2\n}\nstage main {\n'
+                     '    ego car go_straight\n    car c1 at front_right on shoulder change_lane_to_left\n}\n')
+    for player in ("sumo", "esmini"):
+        assert "changed 1 lane(s) to the left" in _agent(report, player, "c1").reason, report.table()
+    assert report.ok, report.table()
+
+
+def test_later_vehicles_beside_the_ego_past_the_junction_queue_back_across_it_in_sumo_too(esmini, tmp_path):
+    """Three later cars 'at left' all appeared at the ego's side, on top of one another (esmini); queued
+    behind the first, the last fell behind the start of the ego's road, where SUMO's player found no room:
+    it goes back along the ego's way, as esmini's position does."""
+    report = _played(tmp_path, "queue", 'scenario "stream"\nroad {\n    lanes >= 2\n    at junction\n'
+                     '    has traffic_light\n}\nstage first {\n    ego car go_straight\n}\nstage second {\n'
+                     '    car c1 at left go_straight aggressive\n    car c2 at left go_straight aggressive behind c1\n'
+                     '    bus b1 at left go_straight\n}\n')
+    for player in ("sumo", "esmini"):
+        for name in ("c1", "c2", "b1"):
+            assert _agent(report, player, name).achieved, report.table()
+    assert report.ok, report.table()
+
+
+def test_an_ego_turning_into_a_road_where_a_vehicle_stands_stops_behind_it(esmini, tmp_path):
+    """A truck standing on the road the ego turns into, in its lane: esmini drove the ego into it."""
+    report = _played(tmp_path, "corner", 'scenario "corner"\nroad {\n    at junction\n}\nstage main {\n'
+                     '    ego car turn_left\n    truck t1 at at_the_destination stop\n}\n')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()

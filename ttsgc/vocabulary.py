@@ -54,6 +54,7 @@ BEHAVIORS: dict[str, str] = {
     "aggressive": "faster than the limit, keeps a short gap",
 }
 DEFAULT_BEHAVIOR = "normal"
+BRAKE_RATE = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}  # m/s² of a stop, by behaviour
 
 POSITIONS: dict[str, str] = {
     "front": "ahead of the ego in its lane",

@@ -503,6 +503,8 @@ class Placer:
         where = agent.relative_to_ego
         if where in JUNCTION_SIDE or where in ("at_the_destination", "near_the_crosswalk"):
             return self._place_agent(agent, stage)
+        if agent.action == "cross_the_road" and self._ego_stands_until(stage):
+            return self._beside_the_standing_ego(agent, stage)
         length, ego_len = V.BODIES[agent.type][0], V.BODIES[self.scenario.ego.type][0]
         dlane = 1 if where in LEFT_SIDE else -1 if where in RIGHT_SIDE else 0
         ahead = where in AHEAD
@@ -511,8 +513,29 @@ class Placer:
         extra = sum(l + _spacing(p, a) for (p, _), (a, l) in zip([(None, 0)] + previous, previous))
         last = previous[-1][0] if previous else None
         ds = (ego_len / 2 + extra + _spacing(last, agent) + length / 2) * (1 if ahead else -1 if behind else 0)
+        if not ahead and not behind and previous:  # beside the ego: the first abreast, the rest queued behind it
+            first = previous[0][1] / 2 + sum(l + _spacing(p, a) for (p, _), (a, l) in zip(previous, previous[1:]))
+            ds = -(first + _spacing(last, agent) + length / 2)
         self._later.append((where, agent, length))
         return self._bound(agent, stage, None, self.frame, appear=RelativePos(dlane=dlane, ds=round(ds, 3)))
+
+    def _ego_stands_until(self, stage: int) -> bool:
+        """Whether the ego stops in the first stage and is told nothing but to stop until `stage`."""
+        return self.scenario.ego.action == "stop" and all(
+            step.action == "stop" for step in later_actions(self.scenario) if step.stage <= stage)
+
+    def _beside_the_standing_ego(self, agent: Agent, stage: int) -> BoundAgent:
+        """A later walker that crosses, placed where the ego will stand by then (its braking distance on): a
+        crossing needs a fixed start and far side, which a place relative to the ego when the stage starts
+        has not (the walker appeared there and stood)."""
+        ego = self.scenario.ego
+        stops_in = _speed(ego, self.frame.approach.speed_limit_kmh) ** 2 / (2 * V.BRAKE_RATE[ego.behavior])
+        placed_at = self.u_ego
+        self.u_ego = placed_at + stops_in
+        try:
+            return self._place_agent(agent, stage)
+        finally:
+            self.u_ego = placed_at
 
     # -- building the record ------------------------------------------------------------------------------
     def _bound(self, agent: Agent, stage: int, start: LanePos | None, frame: _Frame, turn: Turn | None = None,

@@ -11,10 +11,10 @@ A file means what the standard and the real players read in it, not what ttsgc's
   (AcquirePositionAction is routing and collapses to no movement across a road);
 - the events of one maneuver run in parallel, so a later one never stops an earlier one;
 - the ego stops for a crosser who is not aggressive because the file says so (binding's EgoYield), not
-  because a player's driver would.
-One Story holds one Act per stage, each starting when the previous act completes, a stage's estimated
-duration later; the weather is an EnvironmentAction; a stop trigger always fires. Each agent's intent is
-written into its Properties (ttsgc.intent) so a judge can read it from the file alone.
+  because a player's driver would; a vehicle behind one that stops brakes behind it, for the same reason.
+One Story holds one Act per stage, each starting when the previous act completes and what that does not wait
+for (a movement through the junction) is done; the weather is an EnvironmentAction; a stop trigger always
+fires. Each agent's intent is written into its Properties (ttsgc.intent) so a judge can read it from the file alone.
 """
 
 from __future__ import annotations
@@ -79,10 +79,10 @@ def emit(scene: BoundScene, roadfile: str, version: str = DEFAULT_VERSION) -> by
     story = xosc.Story("story")
     durations = stage_durations(scene)
     for k, stage in enumerate(scene.scenario.stages):
-        story.add_act(_act(scene, k, stage.name, durations, minor))
-    yields = _ego_yields_act(scene, minor)
-    if yields is not None:
-        story.add_act(yields)
+        story.add_act(_act(scene, k, stage.name, minor))
+    for extra in (_ego_yields_act(scene, minor), _following_act(scene, minor)):
+        if extra is not None:
+            story.add_act(extra)
     edge = _map_edge_act(scene, minor)
     if edge is not None:
         story.add_act(edge)
@@ -211,6 +211,70 @@ def _all_of(conditions) -> xosc.Trigger:
     return trigger
 
 
+FOLLOW_MARGIN_M = 2.0  # free road a follower keeps to the vehicle it stops behind
+
+
+def followers_of_stopping(scene: BoundScene) -> list[tuple[BoundAgent, BoundAgent]]:
+    """(follower, leader): a vehicle placed behind one told to stop, in the same lane, or whose route through
+    the junction leads into its lane, that itself drives on in that lane. A player's car-following (SUMO) stops it in time; esmini has none and drives it into the
+    stopped body, so the file must say it."""
+    def vehicle(agent: BoundAgent) -> bool:
+        return agent.stage == 0 and agent.start is not None and agent.type != "pedestrian" \
+            and not _trajectory_bound(agent) and agent.lane_change is None
+    pairs = []
+    for leader in scene.agents:
+        if not vehicle(leader) or leader.action != "stop":
+            continue
+        for follower in scene.agents:
+            if follower is leader or not vehicle(follower) or follower.action in ("stop", "block_the_ego") \
+                    or follower.start_delay_s or follower.speed_mps <= 0:
+                continue
+            lane = (leader.start.road, leader.start.lane)
+            along = 1 if leader.start.lane < 0 else -1  # a right lane (id < 0) drives along s
+            behind = (follower.start.road, follower.start.lane) == lane and \
+                (leader.start.s - follower.start.s) * along > 0
+            onto = len(follower.route) >= 2 and follower.route[-1].road != follower.start.road and \
+                (follower.route[-1].road, follower.route[-1].lane) == lane  # in the lane its route leads into
+            if behind or onto:
+                pairs.append((follower, leader))
+    return pairs
+
+
+def _following_act(scene: BoundScene, minor: int) -> xosc.Act | None:
+    """A vehicle behind one that stops brakes at its own rate once that one has begun to stop and it is within
+    its braking distance of it (centre to centre, with both half lengths and FOLLOW_MARGIN_M), so it stands
+    behind it. An act of its own, never waited for: a follower that turns off before never brakes."""
+    pairs = followers_of_stopping(scene)
+    if not pairs:
+        return None
+    act = xosc.Act("following", _always("following_start", 0.0, minor))
+    rule = xosc.Rule.greaterOrEqual if minor >= 1 else xosc.Rule.greaterThan
+    for follower, leader in pairs:
+        rate = BRAKE_RATE[follower.behavior]
+        reach = follower.speed_mps ** 2 / (2 * rate) + (follower.length + leader.length) / 2 + FOLLOW_MARGIN_M
+        group = xosc.ConditionGroup()
+        label = f"{follower.name}_stops_behind_{leader.name}"
+        t = leader.trigger
+        group.add_condition(xosc.ValueTrigger(f"{label}_after", 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(
+            round(t.after_s if t is not None and t.after_s else 0.0, 3), rule)))
+        if t is not None and t.within_m is not None:  # the leader stops when someone is within reach of it
+            group.add_condition(xosc.EntityTrigger(
+                f"{label}_leader_near", 0, xosc.ConditionEdge.none,
+                xosc.RelativeDistanceCondition(t.within_m, xosc.Rule.lessThan, _EUCLIDEAN[minor >= 1], t.of,
+                                               alongroute=False, freespace=False), leader.name))
+        group.add_condition(xosc.EntityTrigger(
+            f"{label}_near", 0, xosc.ConditionEdge.none,
+            xosc.RelativeDistanceCondition(round(reach, 3), xosc.Rule.lessThan, _EUCLIDEAN[minor >= 1], leader.name,
+                                           alongroute=False, freespace=False), follower.name))
+        trigger = xosc.Trigger()
+        trigger.add_conditiongroup(group)
+        brake = ("brake", xosc.AbsoluteSpeedAction(0, xosc.TransitionDynamics(
+            xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, rate)))
+        act.add_maneuver_group(_group(follower.name, f"{label}_maneuver", f"{label}_group",
+                                      [(label, [brake], trigger)]))
+    return act
+
+
 def _group(actor: str, maneuver_name: str, group_name: str, events) -> xosc.ManeuverGroup:
     """One actor's maneuver group: each (event name, [(action name, action)], trigger) an event of one maneuver,
     all events parallel (none overrides another)."""
@@ -316,21 +380,42 @@ def stage_durations(scene: BoundScene) -> list[float]:
     return durations
 
 
-def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: int) -> xosc.Act:
+MIN_STAGE_PAUSE_S = 4.0  # a stage whose actions are done at once (a speed held) still plays a while
+
+
+def stage_pause_s(scene: BoundScene, k: int) -> float:
+    """How long after stage k's act completes the next stage starts: what its completion does not already
+    wait for. An act completes once every event is done, so a crossing, a stop, a lane change, a trigger
+    or a wait are behind it; a route (assigned at once) is not, so a movement through the junction still
+    needs its way there and through. Waiting the whole estimated duration again let a slow stage (a walker
+    crossing) push the next one past the stop trigger."""
+    pause = MIN_STAGE_PAUSE_S
+    for agent in scene.agents:
+        if agent.stage == k and agent.movement:
+            pause = max(pause, 45.0 / max(agent.speed_mps, 1.0))
+    ego = next(a for a in scene.agents if a.is_ego)
+    for step in ego.later:
+        if step.stage == k and step.action in V.TURN_ACTIONS:
+            pause = max(pause, 45.0 / max(ego.speed_mps, 1.0))
+    return round(min(pause, 120.0), 3)
+
+
+def _act(scene: BoundScene, k: int, name: str, minor: int) -> xosc.Act:
     acts = scene.scenario.stages
     if k == 0:
         start = _always(f"{name}_start", 0.0, minor)
     else:
         ego = next(a for a in scene.agents if a.is_ego)
         later_turn = any(step.action in V.TURN_ACTIONS for step in ego.later)
-        if k == 1 and ego.route and not later_turn:  # the ego's movement ends the first stage: at the far road
+        if k == 1 and _drives_its_route_first(scene) and not later_turn:  # the ego's movement ends the first
+            # stage: at the far road
             start = xosc.EntityTrigger(f"{name}_start", 0, xosc.ConditionEdge.none,
                                        xosc.DistanceCondition(_on_the_far_road_m(ego), xosc.Rule.lessThan,
                                                               _lane_position(ego.route[-1]),
                                                               alongroute=False, freespace=False,
                                                               distance_type=_EUCLIDEAN[minor >= 1]), ego.name)
         else:
-            start = xosc.ValueTrigger(f"{name}_start", durations[k - 1], xosc.ConditionEdge.none,
+            start = xosc.ValueTrigger(f"{name}_start", stage_pause_s(scene, k - 1), xosc.ConditionEdge.none,
                                       xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.act,
                                                                            acts[k - 1].name,
                                                                            xosc.StoryboardElementState.completeState))
@@ -347,6 +432,15 @@ def _act(scene: BoundScene, k: int, name: str, durations: list[float], minor: in
     return act
 
 
+def _drives_its_route_first(scene: BoundScene) -> bool:
+    """Whether the ego drives its route through the junction in the first stage: an ego told to stop there
+    (at a red light), or one that stops behind a vehicle that stops, holds its route but stands before the
+    junction, so no later stage may wait for it to reach the far road."""
+    ego = next(a for a in scene.agents if a.is_ego)
+    stops_behind = any(follower.is_ego for follower, _ in followers_of_stopping(scene))
+    return bool(ego.route) and ego.action != "stop" and not stops_behind
+
+
 def _on_the_far_road_m(ego: BoundAgent) -> float:
     """How near the end of its route the ego is on the road it turned onto, out of the junction: a later
     stage's agents appear relative to the ego in its road's terms, so the stage must not start while the ego
@@ -355,7 +449,7 @@ def _on_the_far_road_m(ego: BoundAgent) -> float:
     return round(max(2.0, min(10.0, into - 0.5)), 3)
 
 
-BRAKE_RATE = {"cautious": 3.0, "normal": 5.0, "aggressive": 8.0}  # m/s² of a stop
+BRAKE_RATE = V.BRAKE_RATE  # m/s² of a stop
 
 
 def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int) -> xosc.ManeuverGroup:
@@ -446,7 +540,7 @@ def ego_lane_when_stage_starts(scene: BoundScene, k: int) -> int:
     relative)."""
     ego = next(a for a in scene.agents if a.is_ego)
     later_turn = next((step.stage for step in ego.later if step.action in V.TURN_ACTIONS), None)
-    turned = ego.route and (later_turn is None or later_turn < k)
+    turned = _drives_its_route_first(scene) if later_turn is None else bool(ego.route) and later_turn < k
     return ego.route[-1].lane if turned else ego.start.lane
 
 

@@ -73,6 +73,8 @@ class Mover:
     path_event: str = ""  # the event whose trajectory it follows (ends when the path does)
     goal_s: float | None = None  # routed along its lane to this s of its road (AcquirePositionAction)
     offset: float = 0.0  # from its lane's centre along the road's t, as its position gave it
+    offset_to: float | None = None  # the offset it glides to (a lane change), at offset_rate m/s
+    offset_rate: float = 0.0
 
 
 @dataclass
@@ -406,8 +408,32 @@ class Executor:
             mover.goal_s = s if road == mover.road else None
             if mover.speed <= 0.01:
                 mover.speed = 1.0
+        elif action.kind == "lane_change" and mover.path_event == "" and mover.target is None:
+            self._mover_lane_change(mover, action, event)
         else:
             self.run.problems.append(f"{event.name}: {action.kind} is not possible off the SUMO lanes")
+
+    def _mover_lane_change(self, mover: Mover, action: Action, event: Event) -> None:
+        """A body moved along its lane (a car leaving the shoulder, which SUMO's network has not) changes lane
+        as a driver does: at once it counts in the lane it aims at, and it glides across from where it is over
+        the action's time. Left is towards the road's reference line on either side."""
+        road = self.odr.roads[mover.road]
+        if action.absolute:
+            target = int(action.value)
+        else:
+            steps = int(action.value)
+            target = mover.lane + steps if mover.lane < 0 else mover.lane - steps
+            if (target >= 0) != (mover.lane >= 0) or target == 0:  # across the reference line: no lane 0
+                target += 1 if mover.lane < 0 else -1
+        section = road.section_at(min(max(mover.s, 0.0), road.length))
+        if target not in section.lanes or section.lanes[target].type not in ("driving", "shoulder", "parking"):
+            self.run.problems.append(f"{event.name}: '{event.actor}' has no lane {int(action.value):+d} to change to")
+            return
+        here = _lane_pose(road, mover.s, mover.lane, mover.offset)
+        there = _lane_pose(road, mover.s, target, 0.0)
+        across = math.hypot(here.x - there.x, here.y - there.y)
+        mover.lane, mover.offset = target, across if mover.lane > target else -across  # t grows with lane id
+        mover.offset_to, mover.offset_rate = 0.0, across / max(action.duration, STEP_S)
 
     def _ahead(self, lane_id: str, limit_m: float = 1000.0) -> list[str]:
         """Until the file gives it a route, a vehicle carries on straight ahead (else the way its lane leads),
@@ -512,6 +538,14 @@ class Executor:
             centre -= length
             sumo_lane = min(ahead, key=lambda lane: abs(lane.index - index))
             length = _length(sumo_lane.shape)
+        while centre <= 0 and 0 < k <= len(route) - 1:  # behind the ego's edge: back along the way it came
+            k -= 1
+            behind = [lane for lane in self.by_id.values() if lane.edge == route[k] and not lane.allow_pedestrians]
+            if not behind:
+                break
+            sumo_lane = min(behind, key=lambda lane: abs(lane.index - index))
+            length = _length(sumo_lane.shape)
+            centre += length
         if not 0 < centre < length:
             self.run.spawns[entity.name] = Spawn(False, f"no room {ds:+.0f} m from the ego on its road at t={t:.1f}")
             return
@@ -725,6 +759,12 @@ class Executor:
                     mover.speed = 0.0  # the end of its way: it stands
                     self.run.out_of_road.add(name)
                 continue
+            if mover.offset_to is not None:  # gliding into the lane it changed to
+                glide = mover.offset_rate * STEP_S
+                if abs(mover.offset_to - mover.offset) <= glide:
+                    mover.offset, mover.offset_to = mover.offset_to, None
+                else:
+                    mover.offset += glide if mover.offset_to > mover.offset else -glide
             pose = _lane_pose(road, s, mover.lane, mover.offset)
             mover.x, mover.y, mover.heading, mover.s = pose.x, pose.y, pose.hdg, s
 
