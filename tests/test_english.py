@@ -1288,3 +1288,27 @@ def test_a_vehicle_stopped_on_the_road_is_no_stop_painted_on_it():
     scene = lower("The ego turns right while a lorry is stopped on the road we turn into.").scenario
     assert ("truck", "stop", "at_the_destination") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
     assert "stop_sign_on_road" not in scene.road.required_objects + scene.road.required_signals
+
+
+# -- voices written by other hands: research papers, witness statements, transcripts, briefs, forums ----------
+
+def test_a_research_papers_subject_vehicle_is_the_ego():
+    found = agents("Case B: the SV turns right at a signalised crossroads while a POV coming from the SV's left "
+                   "continues straight.")
+    assert found == [("car", "go_straight", "road_of_left_turn"), ("car", "turn_right", "ego")]
+
+
+def test_numbered_svs_beside_a_named_ego_stay_surrounding_vehicles():
+    found = agents("The ego keeps its lane; SV1 in the right adjacent lane slows down and SV2 follows the ego.")
+    assert sum(1 for a in found if a[2] == "ego") == 1 and len(found) == 3
+
+
+@pytest.mark.parametrize("prompt, ego_type", [
+    ("I am a bus driver and a pickup overtook me on the right.", "bus"),
+    ("At the time I was employed as a lorry driver. A moped pulled out in front of me.", "truck"),
+    ("The SV is an ambulance; a hatchback ahead of the SV pulls over to let it pass.", "ambulance"),
+])
+def test_a_first_person_or_subject_vehicle_says_what_the_ego_is(prompt, ego_type):
+    scene = lower(prompt).scenario
+    assert scene.ego.type == ego_type
+    assert [a.type for a in scene.agents() if not a.is_ego].count(ego_type) == 0

@@ -169,8 +169,19 @@ class _Reader:
 
 # -- units --------------------------------------------------------------------------------------------------
 
+def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
+    """Crash-typology papers call the vehicle under study the subject vehicle (SV) and the others principal other
+    vehicles (POV); scenario specs that also name an ego use SV1, SV2 for surrounding vehicles."""
+    return any(t.word == "sv" and not t.label for t in tokens) and not any(
+        t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
+
+
 def _units(tokens: list[Token]) -> list[Unit]:
     found = {m.start: m for m in matches(tokens)}
+    if _subject_vehicle_is_ego(tokens):
+        found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
+                 if m.category == "agents" and [t.word for t in tokens[m.start:m.end]] == ["sv"] else m
+                 for k, m in found.items()}
     out, i = [], 0
     while i < len(tokens):
         m = found.get(i)
@@ -802,7 +813,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
                 current.append(u)
                 continue
-            if u.word == "as" and nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if"):
+            if u.word == "as" and (nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if")
+                                   or prev_word in ("employed", "work", "works", "working")):  # "employed as a"
                 current.append(u)
                 continue
             close(u.word)
@@ -1794,6 +1806,8 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
     return np.group or [np.entity]
 
 
+# "the SV is a patrol car", "I am employed as a bus driver": what the first noun is, said of it
+APPOSITION_WORDS = {"is", "was", "be", "are", "being", "as", "am", "employed", "working", "work", "works"}
 ROLE_NOUNS = {"target", "npc", "adversary", "actor", "agent", "dummy", "target vehicle", "participant", "object"}
 APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv", "npc", "adversary",
                  "participant", "object", "hero"}  # said what they are
@@ -1916,7 +1930,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
-            copula = any(u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as") for u in between)
+            copula = any(u.category == "word" and u.word in APPOSITION_WORDS for u in between)
             abbreviation = between and all(u.category == "comma" or u.base in ROLE_NOUNS for u in between) and \
                 np.first == np.index and \
                 len(units[np.index].tokens) == 1 and not prev.entity.is_ego and (
@@ -1939,7 +1953,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
-            if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
+            if all((u.category == "word" and u.word in APPOSITION_WORDS | {"like"}) or
                    u.category == "comma" for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
