@@ -1312,3 +1312,20 @@ def test_a_first_person_or_subject_vehicle_says_what_the_ego_is(prompt, ego_type
     scene = lower(prompt).scenario
     assert scene.ego.type == ego_type
     assert [a.type for a in scene.agents() if not a.is_ego].count(ego_type) == 0
+
+
+@pytest.mark.parametrize("prompt, expected, gone", [
+    ("uh I'm turning left and a bus, no wait, a lorry is coming the other way", ("truck", "go_straight",
+                                                                                 "road_of_straight"), "bus"),
+    ("so a skateboarder I mean a pensioner walks out in front of me", ("pedestrian", "cross_the_road", "front"),
+     "cyclist"),
+    ("there's a lorry sorry a coach parked just ahead of me", ("bus", "stop", "front"), "truck"),
+    ("A motorbike, not a scooter rider, filters past me on the right.", ("motorcycle", "go_straight", "back_right"),
+     None),
+])
+def test_speech_that_corrects_itself_keeps_only_the_corrected_agent(prompt, expected, gone):
+    found = agents(prompt)
+    assert expected in found
+    assert len(found) == 2, found
+    if gone:
+        assert all(a[0] != gone for a in found)

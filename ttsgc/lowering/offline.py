@@ -211,6 +211,68 @@ def _units(tokens: list[Token]) -> list[Unit]:
     return _short_names(_turned_into(out))
 
 
+CORRECTIONS = (("no", "wait"), ("wait", "no"), ("i", "mean"), ("or", "rather"), ("scratch", "that"),
+               ("make", "that"), ("no",), ("sorry",), ("wait",), ("actually",), ("rather",))
+NOUN_PHRASE_WORDS = {"a", "an", "the", "one", "some", "another", "this", "big", "small", "little", "white", "black",
+                     "red", "blue", "silver", "grey", "gray", "green", "yellow", "dark", "parked", "stopped"}
+
+
+def _marker_end(units: list[Unit], j: int) -> int | None:
+    """The unit after a correction marker starting at unit j (the lexicon may hold the marker as one phrase)."""
+    for marker in CORRECTIONS:
+        words, n = [], j
+        while n < len(units) and len(words) < len(marker):
+            words += [t.word for t in units[n].tokens]
+            n += 1
+        if words == list(marker):
+            return n
+    return None
+
+
+def _retract_corrections(r: "_Reader") -> list[Unit]:
+    """'a car, no wait, a truck', 'a cyclist, I mean a jogger': speech corrects itself; only the last word stands."""
+    units, out, k = r.units, [], 0
+    while k < len(units):
+        u = units[k]
+        out.append(u)
+        k += 1
+        if not (u.category == "agents" and u.meaning not in ("ego", "none")):
+            continue
+        j = k + (k < len(units) and units[k].category == "comma")
+        if j < len(units) and units[j].word == "not" and len(units[j].tokens) == 1:  # "a van, not a truck,"
+            n = j + 1
+            while n < len(units) and n - j < 4 and units[n].word in NOUN_PHRASE_WORDS:
+                n += 1
+            if n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none"):
+                r.notes.append(f"read '{' '.join(t.word for x in units[j:n + 1] for t in x.tokens)}' as denied")
+                for x in units[k:n + 1]:
+                    r.mark(x)
+                k = n + 1
+                continue
+        end = _marker_end(units, j)
+        if end is None:
+            continue
+        j = end
+        j += j < len(units) and units[j].category == "comma"
+        n = j
+        while n < len(units) and n - j < 4 and units[n].category in ("word", "number", "numbers") and \
+                (units[n].word in NOUN_PHRASE_WORDS or units[n].category != "word"):
+            n += 1
+        if not (j < n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none")):
+            continue
+        first = len(out) - 1
+        while first > 0 and out[first - 1].category in ("word", "number", "numbers") and \
+                out[first - 1].word in NOUN_PHRASE_WORDS | {"two", "three"}:
+            first -= 1
+        r.notes.append(f"read '{' '.join(t.word for x in out[first:] for t in x.tokens)}' as corrected by "
+                       f"'{' '.join(t.word for x in units[j:n + 1] for t in x.tokens)}'")
+        for x in out[first:] + units[k:j]:
+            r.mark(x)
+        del out[first:]
+        k = j
+    return out
+
+
 def _turned_into(units: list[Unit]) -> list[Unit]:
     """'crossing the road I was turning into': a relative clause on a road noun naming where the ego turns."""
     out, k = [], 0
@@ -2372,6 +2434,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     if not tokens:
         raise LoweringError("the prompt is empty")
     r = _Reader(tokens, _units(tokens))
+    r.units = _retract_corrections(r)
     UNSPECIFIED.draw_for(seed)
     road = _road(r)
     weather = _weather(r)
