@@ -1329,3 +1329,22 @@ def test_speech_that_corrects_itself_keeps_only_the_corrected_agent(prompt, expe
     assert len(found) == 2, found
     if gone:
         assert all(a[0] != gone for a in found)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Can someone explain this junction? I was going straight and a bus turned right across me.",
+     [("bus", "turn_right", "road_of_straight"), ("car", "go_straight", "ego")]),
+    ("Why do people even bother indicating. A pickup swerved into my lane from the right.",
+     [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+])
+def test_a_forum_posts_questions_to_its_readers_name_nobody_in_the_scene(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_driver_sounding_the_horn_drives_and_driving_like_a_maniac_is_aggressive():
+    found = agents("A minivan overtakes me on the right, driving like a maniac, and the bloke behind me leans on "
+                   "his horn.")
+    assert found == [("car", "go_straight", "back"), ("car", "go_straight", "back_right"),
+                     ("car", "go_straight", "ego")]
+    scene = lower("A minivan overtakes me on the right, driving like a maniac.").scenario
+    assert [a.behavior for a in scene.agents() if not a.is_ego] == ["aggressive"]

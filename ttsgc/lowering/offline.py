@@ -946,13 +946,20 @@ def _has_agent(units: list[Unit]) -> bool:
 QUESTION_WORDS = {"what", "how", "why", "where", "which", "who"}
 
 
+ANYONE = {"someone", "somebody", "anyone", "anybody", "people", "everyone", "everybody", "whoever", "folk", "folks"}
+
+
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
-    sentences after it describe the scene."""
+    sentences after it describe the scene. 'Can someone explain this?', 'Why are people like this': the
+    readers of a forum post or people in general are nobody in the scene."""
     t = u.tokens[0]
+    first = next(x for x in tokens if x.sentence == t.sentence)
+    if u.category == "agents" and len(u.tokens) == 1 and t.word in ANYONE and (
+            t.question or first.word in QUESTION_WORDS):
+        return True
     if not t.question:
         return False
-    first = next(x for x in tokens if x.sentence == t.sentence)
     if first.word not in QUESTION_WORDS:
         return False
     later = {x.base for x in tokens if x.sentence > t.sentence}
