@@ -1348,3 +1348,26 @@ def test_a_driver_sounding_the_horn_drives_and_driving_like_a_maniac_is_aggressi
                      ("car", "go_straight", "ego")]
     scene = lower("A minivan overtakes me on the right, driving like a maniac.").scenario
     assert [a.behavior for a in scene.agents() if not a.is_ego] == ["aggressive"]
+
+
+def test_a_witness_on_foot_is_a_pedestrian_and_the_vehicle_described_is_the_ego():
+    found = agents("I was standing on the pavement a little way ahead when I saw a green minibus heading east. "
+                   "A moped was travelling just in front of the minibus, and the minibus ran into it.")
+    assert found == [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "front"),
+                     ("pedestrian", "on_the_sidewalk", "front_left")]
+
+
+def test_a_driving_witness_stays_the_ego():
+    found = agents("I was driving along the high street when I saw a delivery van pull out in front of me.")
+    assert ("car", "go_straight", "ego") in found and all(a[0] != "pedestrian" for a in found)
+
+
+def test_a_make_and_a_ridden_vehicle_are_re_mentions():
+    assert agents("A grey Toyota Corolla was ahead of us. The Toyota braked hard.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+    assert len(agents("A cyclist was riding in front of us and a taxi clipped the back wheel of the bicycle.")) == 3
+
+
+def test_what_a_witness_saw_does_the_verb_that_follows():
+    assert agents("I noticed a coach in front of me stop without warning.") == [
+        ("bus", "stop", "front"), ("car", "go_straight", "ego")]

@@ -96,7 +96,8 @@ class Lexicon:
             return word, False
         for suffix, replacement in (("ies", "y"), ("ied", "y"), ("es", ""), ("s", ""), ("ed", ""), ("ed", "e"),
                                     ("d", ""), ("ing", ""), ("ing", "e"), ("'s", "")):
-            if word.endswith(suffix) and len(word) > len(suffix) + 1:
+            if word.endswith(suffix) and len(word) > len(suffix) + 1 and (suffix != "d" or word.endswith("ed")):
+                # ("Ford" is no past tense of "for")
                 stem = word[: -len(suffix)] + replacement
                 if stem in self.vocabulary and (len(stem) > 2 or stem not in self.function_words):  # "red" != "re"+d
                     return stem, True

@@ -1179,6 +1179,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         entity.includes_ego = True
     if entity.count > 1 or entity.generic:
         entity.group_open = entity.count
+    entity.aliases |= {m.base for m in units[max(lo, first - 1):head] if m.category == "agents" and m.meaning == kind}
+    # "a silver Ford Focus ... the Ford": the make names it too
     if not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
@@ -1233,6 +1235,11 @@ GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclis
                  "people", "child", "kid", "man", "woman", "guy"}
 
 
+PERCEIVING = {"see", "saw", "seen", "observe", "notice", "watch", "spot", "witness", "hear", "heard", "noticed",
+              "observed", "spotted", "watched", "witnessed"}
+RIDDEN = {"bike", "bicycle", "pushbike", "push bike", "pedal cycle", "motorbike", "motorcycle", "moped", "scooter"}
+
+
 def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
               recent: list[Entity], head: str = "") -> list[Entity]:
     """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
@@ -1240,7 +1247,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
                                                         or (e.generic and kind in V.EGO_TYPES))]
     if head and head not in GENERAL_NOUNS and not both and not plural:
         same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
-                or e.head in GENERAL_NOUNS and e.head != "vehicle"]
+                or e.head in GENERAL_NOUNS and e.head != "vehicle"
+                or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN]  # "a cyclist ... the bicycle": the same
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool:
         return []
@@ -1535,7 +1543,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     else:
         before = [np for np in phrases if np.index < first_verb and np.entity is not None
                   and not _is_reference(units, np)]
-        if len(before) >= 2 and verbs and not any(
+        seen = len(before) >= 2 and before[0].entity is not None and before[0].entity.is_ego and any(
+                u.tokens[0].base in PERCEIVING for u in units[before[0].index + 1:before[1].first])
+        if seen:
+            before = before[1:2]  # "I saw a van pull out": what was seen does what follows
+        elif len(before) >= 2 and verbs and not any(
                 u.category == "comma" or u.word in ("and", "or", "with", "plus", "both", "&")
                 for u in units[before[0].index + 1:before[1].first]) and any(
                 u.category == "actions" for u in units[before[0].index + 1:before[1].first]):
@@ -2486,6 +2498,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
+    _witness_on_foot(r)
     _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
@@ -2542,6 +2555,58 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                               "and where (in front, from the opposite direction...), or write the scene in the "
                               "scenario language (.tsg)")
     return Lowered(scenario, unknown, kind, notes)
+
+
+ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sidewalk", "footpath", "on foot",
+           "a pedestrian", "jogging", "bus stop"}
+AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
+                "my vehicle", "my van", "my bike", "my lane", "in my"}
+FIRST_PERSON = {"i", "me", "my", "i'm"}
+
+
+def _what_i_was(tokens: list[Token], k: int) -> set[str]:
+    """The words of 'I was standing at the bus stop', up to the next clause."""
+    out: list[str] = []
+    for t in tokens[k + 1:k + 9]:
+        if t.sentence != tokens[k].sentence or t.word in ("when", "while", "and", "as", "but", ",", "saw", "then"):
+            break
+        out.append(t.word)
+    pairs = {f"{a} {b}" for a, b in zip(out, out[1:])}
+    return set(out) | pairs
+
+
+def _witness_on_foot(r: _Reader) -> None:
+    """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
+    and the vehicle the statement is about (the first that moves) is the ego."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or ego.head not in FIRST_PERSON:
+        return
+    said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")]
+    words = set().union(*said) if said else set()
+    if not words & ON_FOOT or words & AT_THE_WHEEL:
+        return
+    own = [t for t in r.tokens if t.word in ("i", "i'm")]
+    movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
+              and any(a[4] not in ("stop", "try") for a in e.actions)]
+    if not movers:
+        return
+    subject = movers[0]
+    for e in [e for e in r.entities if not e.is_ego and e.head == "vehicle" and not e.actions and e is not subject]:
+        r.entities.remove(e)  # "ahead of the vehicle concerned": the one the statement is about
+    first_sentence = [t.word for t in r.tokens if t.sentence == next(t.sentence for t in own)]
+    side = "side_right" if "right" in first_sentence else "side_left"
+    place = "ahead" if "ahead" in first_sentence else "behind" if "behind" in first_sentence else None
+    ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
+    ego.features = {"on_sidewalk", side} | ({place} if place else set())
+    subject.is_ego = True
+    subject.features = {f for f in subject.features if f.startswith("compass_")}
+    subject.relative_to = None
+    for e in r.entities:
+        if e.relative_to is subject:
+            e.relative_to = None  # "in front of the Ford": in front of the ego now
+    r.entities.remove(subject)
+    r.entities.insert(0, subject)
+    r.notes.append(f"inferred: the witness is on foot; the '{subject.head}' the statement is about is the ego")
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
