@@ -1371,3 +1371,18 @@ def test_a_make_and_a_ridden_vehicle_are_re_mentions():
 def test_what_a_witness_saw_does_the_verb_that_follows():
     assert agents("I noticed a coach in front of me stop without warning.") == [
         ("bus", "stop", "front"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("You sat in the middle lane for ages, with a tanker in the right lane level with you.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "right")]),
+    ("The player car sits in the left lane; a bus ahead in the right lane moves across in front of it.",
+     [("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+])
+def test_the_ego_sitting_in_a_named_lane_is_where_it_drives_not_a_stop(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_cars_width_is_a_measure_not_a_car():
+    assert agents("You overtook a cyclist and left a car's width.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]

@@ -316,6 +316,7 @@ def _short_names(units: list[Unit]) -> list[Unit]:
             else u for u in units]
 
 
+EGO_WORDS = {"you", "i", "we", "player", "ego", "av", "sv"}
 VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
                        "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
                        "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
@@ -336,6 +337,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             after[:1] and after[0] in ("behind", "ahead", "beside", "alongside", "next", "up")
             or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
         return [Unit(m.start, m.end, "word", "right", span)]  # "sits right on our tail": how close, not a side
+    if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
+            [t.word for t in tokens[m.end:m.end + 2]] == ["in", "the"] and m.end + 3 < len(tokens) and \
+            tokens[m.end + 3].word == "lane" and \
+            any(t.word in EGO_WORDS for t in tokens[max(0, m.start - 3):m.start]):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "you sat in the left lane": where, not a stop
     prev = tokens[m.start - 1] if m.start > 0 else None
     if prev is not None and prev.word == "," and m.start > 1 and m.category == "road":
         prev = tokens[m.start - 2]  # "pedestrians (crossing, from left)": the noun before the bracket
