@@ -1386,3 +1386,13 @@ def test_the_ego_sitting_in_a_named_lane_is_where_it_drives_not_a_stop(prompt, e
 def test_a_cars_width_is_a_measure_not_a_car():
     assert agents("You overtook a cyclist and left a car's width.") == [
         ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_numbered_lanes_say_the_lane_count_and_which_side():
+    scene = lower("Dual carriageway. I was in lane one of two and a minibus in lane two came level with me.").scenario
+    assert scene.road.lanes == 2
+    assert [(a.type, a.relative_to_ego) for a in scene.agents() if not a.is_ego] == [("car", "right")]
+    scene = lower("On the M1 in lane three of four, a tanker in lane two just ahead of me moved into my lane.").scenario
+    assert scene.road.lanes == 4
+    assert [(a.type, a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego] == [
+        ("truck", "change_lane_to_right", "front_left")]

@@ -200,6 +200,14 @@ def _units(tokens: list[Token]) -> list[Unit]:
             out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
             i = m.end + 1
             continue
+        numbered = _numbered_lane(tokens, i + 1) if tokens[i].word == "in" and i + 1 < len(tokens) else None
+        if numbered is not None or (tokens[i].word == "in" and i + 2 < len(tokens) and tokens[i + 1].word == "lane"
+                                    and _word_number(tokens[i + 2]) == 1):
+            end = i + 3 + (i + 4 < len(tokens) and tokens[i + 3].word == "of")
+            end += end > i + 3
+            out.append(Unit(i, end, "positions", f"lane_{int(_word_number(tokens[i + 2]))}", tuple(tokens[i:end])))
+            i = end  # "in lane two (of three)": which lane, counted from the kerb
+            continue
         if m is not None:
             out.extend(_disambiguate(tokens, m))
             i = m.end
@@ -580,6 +588,10 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         if t.word not in ("lane", "lanes") or i == 0:
             continue
         prev = tokens[i - 1]
+        numbered = _numbered_lane(tokens, i)
+        if numbered is not None:  # "in lane two of three": lanes are numbered on one carriageway
+            found.append(numbered)
+            continue
         n = _word_number(prev)
         if n is None:
             if prev.word in ("multi", "multiple", "several", "many"):
@@ -611,6 +623,20 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         return lanes
     per = [n for p, n in found if p]
     return max(per) if per else max([n for _, n in found] + [lanes or 0])
+
+
+def _numbered_lane(tokens: list[Token], i: int) -> tuple[bool, int] | None:
+    """'lane two of three' says three lanes each way; 'in lane 3' at least three."""
+    if tokens[i].word != "lane" or i + 1 >= len(tokens) or tokens[i + 1].sentence != tokens[i].sentence:
+        return None
+    n = _word_number(tokens[i + 1])
+    if n is None or not 1 <= n < 10 or n != int(n):
+        return None
+    if i + 3 < len(tokens) and tokens[i + 2].word == "of":
+        of = _word_number(tokens[i + 3])
+        if of is not None and n <= of < 10:
+            return True, int(of)
+    return (False, int(n)) if n >= 2 else None
 
 
 def _word_number(t: Token) -> float | None:
@@ -2505,6 +2531,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
     _witness_on_foot(r)
+    _numbered_lane_sides(r)
     _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
@@ -2613,6 +2640,33 @@ def _witness_on_foot(r: _Reader) -> None:
     r.entities.remove(subject)
     r.entities.insert(0, subject)
     r.notes.append(f"inferred: the witness is on foot; the '{subject.head}' the statement is about is the ego")
+
+
+def _numbered_lane_sides(r: _Reader) -> None:
+    """'I was in lane one, the van in lane two': lanes are counted from the kerb (lane 1 is the nearside lane in
+    British and European usage), so a higher number is to the ego's right."""
+    def number(e: Entity) -> int | None:
+        return next((int(f[5:]) for f in e.features if f.startswith("lane_") and f[5:].isdigit()), None)
+
+    own = None
+    for k, u in enumerate(r.units):  # "I'm in lane 1", "the player is in lane 2": the ego's own lane
+        if u.category == "positions" and u.meaning.startswith("lane_") and any(
+                x.category == "agents" and x.meaning == "ego" and all(
+                    y.word in ("is", "was", "am", "are", "were", "be", "been", "still", "driving", "travelling",
+                               "traveling", "sitting", "the") for y in r.units[j + 1:k])
+                for j, x in enumerate(r.units[max(0, k - 4):k], start=max(0, k - 4))):
+            own = int(u.meaning[5:])
+            break
+    if own is None:
+        return
+    for e in r.entities:
+        theirs = number(e) if not e.is_ego else None
+        if theirs is None or theirs == own or e.features & {"side_left", "side_right", "from_left", "from_right",
+                                                            "road_left", "road_right", "road_straight"}:
+            continue
+        side = "side_right" if theirs > own else "side_left"
+        e.features.add(side)
+        r.notes.append(f"inferred: '{e.head}' in lane {theirs} is to the {side[5:]} of the ego in lane {own}")
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
