@@ -1396,3 +1396,20 @@ def test_numbered_lanes_say_the_lane_count_and_which_side():
     assert scene.road.lanes == 4
     assert [(a.type, a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego] == [
         ("truck", "change_lane_to_right", "front_left")]
+
+
+def test_a_role_in_brackets_names_the_agent_before_it():
+    assert agents("The SV meets an oncoming minivan (POV) on a rural road with no junction.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "front_left")]
+    assert agents("The SV comes upon a principal other vehicle (POV) stationary in its lane ahead.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Schoolchild Dash. A boy runs out from behind a parked lorry on the left in front of the ego.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left"), ("truck", "stop", "front_left")]),
+    ("Level 7 (Taxi Rank Rumble). The player drives behind a bus.", [("bus", "go_straight", "front"),
+                                                                   ("car", "go_straight", "ego")]),
+])
+def test_a_title_case_headline_names_the_case_not_its_agents(prompt, expected):
+    assert agents(prompt) == expected

@@ -895,7 +895,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 all(x.category == "agents" or x.word in ("the", "a", "an") for x in units[k + 1:k + 3]) and \
                 (k + 3 >= len(units) or units[k + 2].category == "comma" or units[k + 3].category == "comma")
             # "across the path of Unit 1, the AV, which ...": the unit is named the ego
-            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named:
+            bracketed = len(current) >= 3 and current[-1].category == "agents" and len(current[-1].tokens) == 1 \
+                and current[-1].base in ROLE_NAMES and current[-2].category == "comma" and \
+                current[-3].category == "agents" and not joined  # "a principal other vehicle (POV) stationary"
+            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named \
+                    and not bracketed:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -1922,6 +1926,8 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
 # "the SV is a patrol car", "I am employed as a bus driver": what the first noun is, said of it
 APPOSITION_WORDS = {"is", "was", "be", "are", "being", "as", "am", "employed", "working", "work", "works"}
 ROLE_NOUNS = {"target", "npc", "adversary", "actor", "agent", "dummy", "target vehicle", "participant", "object"}
+ROLE_NAMES = {"pov", "vru", "target", "npc", "adversary", "gvt", "tv", "vut", "lead vehicle", "principal other vehicle",
+              "other vehicle", "bv", "obstacle"}
 APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv", "npc", "adversary",
                  "participant", "object", "hero"}  # said what they are
 
@@ -2048,7 +2054,10 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 np.first == np.index and \
                 len(units[np.index].tokens) == 1 and not prev.entity.is_ego and (
                     np.entity.type == prev.entity.type) and units[np.index].base not in GENERAL_NOUNS
-            if abbreviation:  # "a stationary Global Vehicle Target (GVT)": its short name, no second agent
+            role_name = between and all(u.category == "comma" for u in between) and np.first == np.index and \
+                units[np.index].base in ROLE_NAMES and not prev.entity.is_ego and not np.entity.is_ego
+            if abbreviation or role_name:  # "a stationary Global Vehicle Target (GVT)": its short name, no second
+                # agent; "an oncoming pickup (POV)": its role in the study
                 prev.entity.aliases.add(units[np.index].base)
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
@@ -2157,6 +2166,9 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
                                                                "still", "also", "currently", "slowly", "now"))):
         light = light or units[k].word in ("performing", "making", "doing", "executing", "attempting")
         k -= 1
+    if k >= 3 and units[k].category == "comma" and units[k - 1].base in ROLE_NAMES and \
+            units[k - 2].category == "comma":
+        k -= 3  # "a principal other vehicle (POV) stationary in its lane": past the bracketed role
     if k < 0:
         return None
     np = next((p for p in phrases if p.index == k), None)
@@ -2165,8 +2177,9 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
     later = any(v > i and not (units[v - 1].category == "word" and units[v - 1].word == "to") for v in verbs)
     word = units[i].tokens[0].word  # a later finite verb makes this one a participle; 'to pass' is none
-    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood", "stuck",
-                                                                          "broken") or light
+    participle = word.endswith("ing") or word.endswith("ed") or word in (
+        "parked", "stopped", "stood", "stuck", "broken", "stationary", "idle", "motionless", "immobile") or light
+    # "encounters a POV stationary in its lane": a state said of the object
     if np.entity is not None and np.entity.is_ego and not light:
         return None  # "the lead car ahead of the hero changed lane": the ego takes no participle
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
@@ -2694,9 +2707,30 @@ def _header_of_place(units: list[Unit]) -> list[Unit]:
     return []
 
 
+TITLE_SMALL_WORDS = {"a", "an", "the", "of", "in", "on", "at", "to", "with", "and", "vs", "for", "by", "from"}
+
+
+def _headline(prompt: str, tokens: list[Token]) -> range:
+    """'Scenario 1 (Lead Vehicle Stopped). The subject vehicle ...', 'Overtake Challenge. The player ...': a first
+    sentence in title case, without a verb, names the case, not its agents."""
+    m = re.match(r"\s*([^.!?\n]{1,60})[.!]\s+\S", prompt)
+    if m is None:
+        return range(0)
+    words = re.findall(r"[A-Za-z][A-Za-z'-]*|\d+", m.group(1))
+    if not words or len(words) > 8 or not all(w[0].isupper() or w[0].isdigit() or w.lower() in TITLE_SMALL_WORDS
+                                             for w in words) or words[0].lower() in SUBJECT_PRONOUNS | {"i'm"}:
+        return range(0)
+    n = len(tokenize(m.group(1)))
+    if n >= len(tokens) or any(t.base in ("be", "have") for t in tokens[:n]):
+        return range(0)
+    return range(n)
+
+
 def _title(prompt: str, tokens: list[Token]) -> range:
     """'Cut-in: a target vehicle ...': a short title before a colon names the case, not its agents."""
     m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
+    if m is None and "\n" not in prompt.strip():
+        return _headline(prompt, tokens)
     if m is None or "\n" in prompt.strip():  # notes written a line an item have their titles marked already
         return range(0)
     if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
