@@ -1413,3 +1413,11 @@ def test_a_role_in_brackets_names_the_agent_before_it():
 ])
 def test_a_title_case_headline_names_the_case_not_its_agents(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_hyphenated_role_labels_and_a_verb_after_the_subject_vehicles_side():
+    assert agents("POV-2, a white minivan in the right lane ahead of the SV, moves into the SV's lane.") == [
+        ("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
+    assert ("bus", "turn_right", "road_of_right_turn") in agents(
+        "A bus approaching from the SV's right turns right while the SV goes straight over the crossroads.")
+    assert lower("The SV is a marked police car; a taxi ahead pulls over.").scenario.ego.type == "police"

@@ -199,6 +199,8 @@ def _units(tokens: list[Token]) -> list[Unit]:
                 meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
             out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
             i = m.end + 1
+            if any(f.start < i < f.end for f in found.values()):  # "from the SV's left turns left": read on
+                found |= {f.start: f for f in matches(tokens, i)}
             continue
         numbered = _numbered_lane(tokens, i + 1) if tokens[i].word == "in" and i + 1 < len(tokens) else None
         if numbered is not None or (tokens[i].word == "in" and i + 2 < len(tokens) and tokens[i + 1].word == "lane"
