@@ -1421,3 +1421,12 @@ def test_hyphenated_role_labels_and_a_verb_after_the_subject_vehicles_side():
     assert ("bus", "turn_right", "road_of_right_turn") in agents(
         "A bus approaching from the SV's right turns right while the SV goes straight over the crossroads.")
     assert lower("The SV is a marked police car; a taxi ahead pulls over.").scenario.ego.type == "police"
+
+
+@pytest.mark.parametrize("prompt, ego_action", [
+    ("The player is stuck behind a crawling milk float van on a narrow lane.", "go_straight"),
+    ("honestly I'm stuck doing fifteen behind a tractor", "go_straight"),
+    ("We're stuck at the lights behind a lorry.", "stop"),
+])
+def test_stuck_behind_something_still_moving_is_driving_slowly(prompt, ego_action):
+    assert lower(prompt).scenario.ego.action == ego_action

@@ -326,6 +326,8 @@ def _short_names(units: list[Unit]) -> list[Unit]:
             else u for u in units]
 
 
+STILL_MOVING = {"going", "driving", "doing", "crawling", "travelling", "traveling", "moving", "trundling", "slow",
+                "dawdling", "plodding", "creeping", "rolling", "cruising"}
 EGO_WORDS = {"you", "i", "we", "player", "ego", "av", "sv"}
 VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
                        "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
@@ -352,6 +354,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.end + 3].word == "lane" and \
             any(t.word in EGO_WORDS for t in tokens[max(0, m.start - 3):m.start]):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "you sat in the left lane": where, not a stop
+    if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stuck"] and (
+            nxt in STILL_MOVING or nxt == "behind" and {t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING):
+        return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
     prev = tokens[m.start - 1] if m.start > 0 else None
     if prev is not None and prev.word == "," and m.start > 1 and m.category == "road":
         prev = tokens[m.start - 2]  # "pedestrians (crossing, from left)": the noun before the bracket
