@@ -1430,3 +1430,25 @@ def test_hyphenated_role_labels_and_a_verb_after_the_subject_vehicles_side():
 ])
 def test_stuck_behind_something_still_moving_is_driving_slowly(prompt, ego_action):
     assert lower(prompt).scenario.ego.action == ego_action
+
+
+@pytest.mark.parametrize("prompt, ego_action", [
+    ("A moped shot out of a side road on my left right in front of me. Should I have stopped?", "go_straight"),
+    ("Two vans were coming the other way and a skip lorry was parked on my side. Do I have to wait?",
+     "go_straight"),
+    ("Can I have a scene where the ego turns right at a junction?", "turn_right"),
+])
+def test_a_question_about_what_ought_to_happen_is_no_account_of_what_did(prompt, ego_action):
+    assert lower(prompt).scenario.ego.action == ego_action
+
+
+def test_counted_people_in_a_question_are_still_agents():
+    assert len(agents("how about three people waiting at the kerb on the left while we pass?")) == 4
+
+
+@pytest.mark.parametrize("prompt, ego_action", [
+    ("Could you build a scenario where the ego turns left at a roundabout?", "turn_left"),
+    ("Set up a level where the ego turns right while a tram waits.", "turn_right"),
+])
+def test_a_scene_where_the_ego_turns_is_what_the_ego_does(prompt, ego_action):
+    assert lower(prompt).scenario.ego.action == ego_action

@@ -336,6 +336,27 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
                        "very", "infront", "one", "front"}
 
 
+SCENE_NOUNS = {"scene", "scenario", "situation", "case", "simulation", "setup", "test", "one", "example", "sim",
+               "level", "map", "run"}
+
+
+def _read_inside(tokens: list[Token], start: int, end: int) -> list[Unit]:
+    """The units of tokens[start:end] read on their own."""
+    found = {f.start: f for f in matches(tokens, start, end)}
+    out, i = [], start
+    while i < end:
+        if i in found:
+            f = found[i]
+            out.append(Unit(f.start, f.end, f.category, f.meaning, tuple(tokens[f.start:f.end])))
+            i = f.end
+            continue
+        t = tokens[i]
+        out.append(Unit(i, i + 1, "comma" if t.word == "," else "number" if read_number(t.word) is not None
+                        else "word", t.word, (t,)))
+        i += 1
+    return out
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -358,6 +379,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             nxt in STILL_MOVING or nxt == "behind" and {t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING):
         return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
     prev = tokens[m.start - 1] if m.start > 0 else None
+    if m.category == "positions" and m.meaning == "destination" and span[0].word == "where" and (
+            prev is None or prev.word in SCENE_NOUNS):
+        return [Unit(m.start, m.start + 1, "word", "where", span[:1])] + _read_inside(tokens, m.start + 1, m.end)
+        # "a scene where the ego turns left": what happens in the scene, not the road the ego turns into
     if prev is not None and prev.word == "," and m.start > 1 and m.category == "road":
         prev = tokens[m.start - 2]  # "pedestrians (crossing, from left)": the noun before the bracket
     if m.category == "agents" and m.meaning == "none" and [t.word for t in span] == ["bus", "stops"] and \
@@ -989,7 +1014,25 @@ def _has_agent(units: list[Unit]) -> bool:
 QUESTION_WORDS = {"what", "how", "why", "where", "which", "who"}
 
 
+COUNTED_BY = {"the", "these", "those", "a", "few", "several", "some", "many", "of", "two", "three", "four", "five"}
 ANYONE = {"someone", "somebody", "anyone", "anybody", "people", "everyone", "everybody", "whoever", "folk", "folks"}
+
+
+ASKING_MODALS = {"should", "do", "does", "would", "could", "am", "was", "did", "have", "must", "can", "shall",
+                 "is", "are"}
+ASKING_FOR_A_SCENE = {"scene", "scenario", "simulation", "simulate", "create", "generate", "make", "build", "set",
+                      "spawn", "test", "case", "have", "get"}
+
+
+def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
+    """'Should I have been able to stop?', 'Who should give way?', 'Do I have to wait?': a question about what
+    ought to happen is no account of what did (a request for a scene is no such question)."""
+    words = [t.word for t in tokens if t.sentence == sentence]
+    if len(words) < 2 or set(words) & ASKING_FOR_A_SCENE - {"have"} or "you" in words[:3]:
+        return False
+    return words[0] in ("who", "whose", "whom") or (words[0] in ASKING_MODALS and words[1] in ("i", "we")
+                                                    and not (words[0] in ("can", "could", "may")
+                                                             and {"get", "have"} & set(words[2:3])))
 
 
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
@@ -998,8 +1041,12 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     readers of a forum post or people in general are nobody in the scene."""
     t = u.tokens[0]
     first = next(x for x in tokens if x.sentence == t.sentence)
-    if u.category == "agents" and len(u.tokens) == 1 and t.word in ANYONE and (
+    before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
+    counted = before is not None and (read_number(before.word) is not None or before.word in COUNTED_BY)
+    if u.category == "agents" and len(u.tokens) == 1 and t.word in ANYONE and not counted and (
             t.question or first.word in QUESTION_WORDS):
+        return True
+    if t.question and _asks_what_to_do(tokens, t.sentence):
         return True
     if not t.question:
         return False
