@@ -1452,3 +1452,18 @@ def test_counted_people_in_a_question_are_still_agents():
 ])
 def test_a_scene_where_the_ego_turns_is_what_the_ego_does(prompt, ego_action):
     assert lower(prompt).scenario.ego.action == ego_action
+
+
+def test_a_game_briefs_player_is_the_ego():
+    scene = lower("Spawn the player at a crossroads with lights, waiting on red.").scenario
+    assert scene.ego.action == "stop" and len(list(scene.agents())) == 1
+    assert agents("Drop two vans in the right lane ahead of the player that both cut across in front of it.") == [
+        ("car", "change_lane_to_left", "front_right"), ("car", "change_lane_to_left", "front_right"),
+        ("car", "go_straight", "ego")]
+
+
+def test_a_sentence_before_a_colon_is_no_title_and_a_slot_in_keeps_its_side():
+    assert agents("The player turns right across the traffic: a coach coming the other way.")[-1] == (
+        "car", "turn_right", "ego")
+    scene = lower("The player merges right from the slip road and has to slot in between two lorries.").scenario
+    assert scene.ego.action == "change_lane_to_right"

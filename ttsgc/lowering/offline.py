@@ -92,7 +92,7 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
 STEERING = {"move", "steer", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
-RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump"}
+RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle", "tear"}
 
 
 @dataclass
@@ -1447,6 +1447,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
         if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
+        if e.is_ego and action == "cut_in" and direction is None and any(
+                a[0] == stage and a[4] in ("lane_left", "lane_right") for a in e.actions):
+            return  # "merges left ... and has to slot in between them": the same lane change, its side said before
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
         earlier = clause_units is not None and k is not None and any(
@@ -2569,6 +2572,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     for k, clause in enumerate(clauses):
         if clause.link in RELATIVES and recent:
             clause.antecedent = recent[-1]
+            if recent[-1].is_ego and len(recent) > 1 and k > 0 and _ego_placed_last(clauses[k - 1].units):
+                clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
         if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
@@ -2736,6 +2741,17 @@ def _numbered_lane_sides(r: _Reader) -> None:
         r.notes.append(f"inferred: '{e.head}' in lane {theirs} is to the {side[5:]} of the ego in lane {own}")
 
 
+def _ego_placed_last(units: list[Unit]) -> bool:
+    """'... ahead of the player': the clause ends on the ego as the object of a place phrase."""
+    egos = [k for k, u in enumerate(units) if u.category == "agents" and u.meaning == "ego"]
+    if not egos or egos[-1] != len(units) - 1:
+        return False
+    k = egos[-1] - 1
+    while k >= 0 and units[k].category == "word" and units[k].word in ("the", "of", "a"):
+        k -= 1
+    return k >= 0 and units[k].category == "positions"
+
+
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
     """'I'm in the slow lane', 'the ego is in the left lane': a lane named by its side is one of several."""
     ego = next((e for e in r.entities if e.is_ego), None)
@@ -2789,6 +2805,10 @@ def _title(prompt: str, tokens: list[Token]) -> range:
         return range(0)
     if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
         return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
+    said = {(f.category, f.meaning) for f in matches(tokenize(m.group(1)))}
+    if ("agents", "ego") in said and any(category == "actions" for category, _ in said) and \
+            m.group(1).strip().lower().split()[0] in ("the", "i", "we", "you", "player", "my", "our", "ego"):
+        return range(0)  # "The player makes the left across oncoming traffic: ...": a sentence, not a title
     counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+\w+s\b",
                         m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
     if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
