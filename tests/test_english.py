@@ -1467,3 +1467,11 @@ def test_a_sentence_before_a_colon_is_no_title_and_a_slot_in_keeps_its_side():
         "car", "turn_right", "ego")
     scene = lower("The player merges right from the slip road and has to slot in between two lorries.").scenario
     assert scene.ego.action == "change_lane_to_right"
+
+
+def test_the_nearside_is_the_kerb_side_of_the_traffic_described():
+    british = agents("I was on the dual carriageway in the offside lane; a lorry in the nearside lane was level with "
+                     "me.")
+    assert ("truck", "go_straight", "left") in british
+    protocol = agents("A pedestrian target walks across from the nearside in front of the VUT at 5 km/h.")
+    assert ("pedestrian", "cross_the_road", "front_right") in protocol

@@ -176,7 +176,41 @@ def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
         t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
 
 
+LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "mph", "pavement"}
+TEST_PROTOCOL = {"vut", "target", "ncap", "kmh", "km", "kph", "epta", "ebta", "cpnc", "cpfa", "cpla", "gvt", "sut"}
+
+
+def _drives_on_the_left(tokens: list[Token]) -> bool:
+    """The nearside is the kerb side: the left where traffic keeps left (British statements speak of motorways,
+    lorries and mph), the right in test protocols written for right-hand traffic (VUT, targets, km/h)."""
+    words = {t.word for t in tokens}
+    road_numbers = any(t.word in ("a", "m", "b") and (t.label or k + 1 < len(tokens) and
+                                                      tokens[k + 1].word.isdigit() and t.word != "a")
+                       for k, t in enumerate(tokens))
+    return bool(words & LEFT_HAND_TRAFFIC or road_numbers) and not words & TEST_PROTOCOL
+
+
+def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
+    if not any(t.word in ("nearside", "offside", "near", "off") for t in tokens) or not _drives_on_the_left(tokens):
+        return units
+    swap = {"side_right": "side_left", "side_left": "side_right"}
+    out = []
+    for u in units:
+        words = [t.word for t in u.tokens]
+        kerb = "nearside" in words or "near" in words and "side" in words
+        far = "offside" in words or "off" in words and "side" in words
+        if u.category == "positions" and u.meaning in swap and (kerb and u.meaning == "side_right"
+                                                               or far and u.meaning == "side_left"):
+            u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
+        out.append(u)
+    return out
+
+
 def _units(tokens: list[Token]) -> list[Unit]:
+    return _kerb_sides(tokens, _read_units(tokens))
+
+
+def _read_units(tokens: list[Token]) -> list[Unit]:
     found = {m.start: m for m in matches(tokens)}
     if _subject_vehicle_is_ego(tokens):
         found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
