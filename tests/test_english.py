@@ -1475,3 +1475,13 @@ def test_the_nearside_is_the_kerb_side_of_the_traffic_described():
     assert ("truck", "go_straight", "left") in british
     protocol = agents("A pedestrian target walks across from the nearside in front of the VUT at 5 km/h.")
     assert ("pedestrian", "cross_the_road", "front_right") in protocol
+
+
+@pytest.mark.parametrize("prompt, ego_type", [
+    ("I was on duty in a marked police vehicle when a hatchback ahead of me went through the red light.", "police"),
+    ("I was driving a coach along the ring road when a van ahead of me braked.", "bus"),
+])
+def test_the_vehicle_i_was_in_is_the_ego(prompt, ego_type):
+    scene = lower(prompt).scenario
+    assert scene.ego.type == ego_type
+    assert [a.type for a in scene.agents() if not a.is_ego] == ["car"]

@@ -2158,6 +2158,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 # "the driver of a stopped bus": the bus
                 prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
                 and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
+            mine = prev.entity.is_ego and prev.entity.head in FIRST_PERSON | {"we"} and between and all(
+                u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
+                between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding") and \
+                np.entity.type in V.EGO_TYPES
+            if mine:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
+                prev.entity.type = np.entity.type if np.entity.type != "car" else prev.entity.type
+                if np.entity in r.entities:
+                    r.entities.remove(np.entity)
+                continue
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 prev.entity.type = np.entity.type
                 prev.entity.features |= np.entity.features
@@ -2701,6 +2710,8 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
                 "my vehicle", "my van", "my bike", "my lane", "in my"}
 FIRST_PERSON = {"i", "me", "my", "i'm"}
+AT_THE_WHEEL_OF = {"was", "am", "were", "in", "driving", "drove", "on", "patrol", "uniformed", "mobile", "sitting",
+                   "riding", "at", "the", "wheel", "of", "duty", "routine", "alone"}
 
 
 def _what_i_was(tokens: list[Token], k: int) -> set[str]:
