@@ -1485,3 +1485,10 @@ def test_the_vehicle_i_was_in_is_the_ego(prompt, ego_type):
     scene = lower(prompt).scenario
     assert scene.ego.type == ego_type
     assert [a.type for a in scene.agents() if not a.is_ego] == ["car"]
+
+
+def test_where_traffic_keeps_left_an_unsaid_overtaking_is_on_the_right():
+    assert ("car", "change_lane_to_right", "ego") in agents(
+        "Along the dual carriageway you pulled out to get past a slow tractor.")
+    assert ("car", "go_straight", "back_right") in agents("A minibus overtook us on the motorway.")
+    assert ("car", "go_straight", "back_left") in agents("On the interstate a pickup overtook us.")

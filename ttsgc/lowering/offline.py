@@ -21,6 +21,7 @@ scene for daily traffic"). Content words no rule places are reported with the ne
 from __future__ import annotations
 
 import re
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -176,7 +177,14 @@ def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
         t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
 
 
-LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "mph", "pavement"}
+LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement"}
+_KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
+
+
+def _overtaking_side(key: str) -> str:
+    """The side an unsaid overtaking takes: the conventions' (right-hand traffic) unless the text keeps left."""
+    side = UNSPECIFIED[key]
+    return {"left": "right", "right": "left"}[side] if _KEEPS_LEFT.get() else side
 TEST_PROTOCOL = {"vut", "target", "ncap", "kmh", "km", "kph", "epta", "ebta", "cpnc", "cpfa", "cpla", "gvt", "sut"}
 
 
@@ -1459,7 +1467,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
             if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round"):
-                side = UNSPECIFIED["ego_lane_change_direction"]  # "I have to go around it": out into the next lane
+                side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
                 for x in clause_units[k + 1:k + 6]:
@@ -2497,7 +2505,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f:
-        side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
+        side = _overtaking_side("side_of_an_overtaker")
+        side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
@@ -2598,6 +2607,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     if not tokens:
         raise LoweringError("the prompt is empty")
     r = _Reader(tokens, _units(tokens))
+    _KEEPS_LEFT.set(_drives_on_the_left(tokens))
     r.units = _retract_corrections(r)
     UNSPECIFIED.draw_for(seed)
     road = _road(r)
@@ -3024,7 +3034,7 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
     if action in ("lane_change", "cut_in"):
         said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
             "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
-        return f"change_lane_to_{direction or said or UNSPECIFIED['ego_lane_change_direction']}"  # "pulling out to pass"
+        return f"change_lane_to_{direction or said or _overtaking_side('ego_lane_change_direction')}"  # "pulling out"
     return "go_straight"
 
 
