@@ -1492,3 +1492,12 @@ def test_where_traffic_keeps_left_an_unsaid_overtaking_is_on_the_right():
         "Along the dual carriageway you pulled out to get past a slow tractor.")
     assert ("car", "go_straight", "back_right") in agents("A minibus overtook us on the motorway.")
     assert ("car", "go_straight", "back_left") in agents("On the interstate a pickup overtook us.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A moped was ahead of us, puttering along right in the middle of the lane.", ("motorcycle", "go_straight", "front")),
+    ("You changed into the left lane and there was a van right there, level with you.",
+     ("car", "go_straight", "left")),
+])
+def test_right_as_exactly_is_no_side(prompt, expected):
+    assert expected in agents(prompt)

@@ -412,6 +412,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             after[:1] and after[0] in ("behind", "ahead", "beside", "alongside", "next", "up")
             or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
         return [Unit(m.start, m.end, "word", "right", span)]  # "sits right on our tail": how close, not a side
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
+            after[:1] in (["there"], ["through"]) or after[:3] in (["in", "the", "middle"], ["in", "the", "centre"],
+                                                                  ["in", "the", "center"])) and \
+            tokens[m.start - 1].base not in STEERING | {"turn", "bear", "indicate", "signal", "cut", "merge"}:
+        return [Unit(m.start, m.end, "word", "right", span)]  # "riding right in the middle of the lane": exactly
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
             [t.word for t in tokens[m.end:m.end + 2]] == ["in", "the"] and m.end + 3 < len(tokens) and \
             tokens[m.end + 3].word == "lane" and \
