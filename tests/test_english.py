@@ -1501,3 +1501,9 @@ def test_where_traffic_keeps_left_an_unsaid_overtaking_is_on_the_right():
 ])
 def test_right_as_exactly_is_no_side(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_a_place_then_this_guy_and_his_verb_is_a_new_subject():
+    found = agents("so I'm on the bypass two lanes my side and this bloke in the lane on my right just swerves into "
+                   "my lane")
+    assert found == [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]

@@ -1016,8 +1016,8 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     if not rest:
         return False
     starts = rest[0].category == "agents" and rest[0].meaning == "ego" or rest[0].word in SUBJECT_PRONOUNS or (
-        rest[0].word in ("the", "a", "an") and len(rest) > 1 and rest[1].category == "agents"
-        and rest[1].meaning != "none")
+        rest[0].word in ("the", "a", "an", "this", "that", "some", "another") and len(rest) > 1
+        and rest[1].category == "agents" and rest[1].meaning != "none")  # "... and this guy swerves"
     if not starts:
         return False
     for x in units[k + 2:k + 10]:
