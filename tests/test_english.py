@@ -1507,3 +1507,9 @@ def test_a_place_then_this_guy_and_his_verb_is_a_new_subject():
     found = agents("so I'm on the bypass two lanes my side and this bloke in the lane on my right just swerves into "
                    "my lane")
     assert found == [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
+
+
+def test_a_statements_24_hour_clock_and_a_dark_colour():
+    assert lower("At about 0640 hours a lorry stopped ahead of me.").scenario.weather.time == "dawn"
+    assert lower("At 2230 hrs a cyclist crossed in front of me.").scenario.weather.time == "night"
+    assert lower("A dark grey estate car pulled out in front of me.").scenario.weather is None

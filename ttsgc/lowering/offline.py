@@ -378,6 +378,8 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
                        "very", "infront", "one", "front"}
 
 
+COLOURS = {"blue", "green", "grey", "gray", "red", "brown", "purple", "coloured", "colored", "metallic", "silver",
+           "orange", "yellow", "pink"}
 SCENE_NOUNS = {"scene", "scenario", "situation", "case", "simulation", "setup", "test", "one", "example", "sim",
                "level", "map", "run"}
 
@@ -425,6 +427,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stuck"] and (
             nxt in STILL_MOVING or nxt == "behind" and {t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING):
         return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
+    if m.category == "weather" and [t.word for t in span] == ["dark"] and nxt in COLOURS:
+        return [Unit(m.start, m.end, "word", "dark", span)]  # "a dark blue saloon": a shade, not the night
     prev = tokens[m.start - 1] if m.start > 0 else None
     if m.category == "positions" and m.meaning == "destination" and span[0].word == "where" and (
             prev is None or prev.word in SCENE_NOUNS):
@@ -776,6 +780,10 @@ def _clock_time(r: _Reader) -> tuple[str, str] | None:
             hour = int(t.word) % 12 + (12 if nxt.word == "pm" else 0)
             r.used.update((t.index, nxt.index))
             return _hour_time(hour, f"{t.word} {nxt.word}")
+        if t.word.isdigit() and len(t.word) == 4 and nxt.word in ("hours", "hrs", "hr", "h") and \
+                int(t.word[:2]) < 24 and int(t.word[2:]) < 60:  # "at 2215 hours": a statement's 24-hour clock
+            r.used.update((t.index, nxt.index))
+            return _hour_time(int(t.word[:2]), f"{t.word} {nxt.word}")
         if read_number(t.word) is None or read_number(nxt.word) is None or nxt.index != t.index + 1:
             continue
         if not (len(nxt.word) == 2 and t.word.isdigit() and int(t.word) < 24 and nxt.word.isdigit()):
