@@ -1513,3 +1513,10 @@ def test_a_statements_24_hour_clock_and_a_dark_colour():
     assert lower("At about 0640 hours a lorry stopped ahead of me.").scenario.weather.time == "dawn"
     assert lower("At 2230 hrs a cyclist crossed in front of me.").scenario.weather.time == "night"
     assert lower("A dark grey estate car pulled out in front of me.").scenario.weather is None
+
+
+def test_vehicles_in_general_in_a_question_are_no_agents_and_straight_at_me_is_oncoming():
+    assert agents("A road train was level with me on my left. Why do lorries never let you in?") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "left")]
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "I was waiting to turn right and a hatchback was coming straight at me.")

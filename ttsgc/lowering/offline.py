@@ -1103,6 +1103,10 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
         return True
     if t.question and _asks_what_to_do(tokens, t.sentence):
         return True
+    if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
+            (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
+            and first.word in QUESTION_WORDS:
+        return True  # "How are you meant to merge when trucks do this?": trucks in general
     if not t.question:
         return False
     if first.word not in QUESTION_WORDS:
