@@ -1520,3 +1520,8 @@ def test_vehicles_in_general_in_a_question_are_no_agents_and_straight_at_me_is_o
         ("car", "go_straight", "ego"), ("truck", "go_straight", "left")]
     assert ("car", "go_straight", "road_of_straight") in agents(
         "I was waiting to turn right and a hatchback was coming straight at me.")
+
+
+def test_drifting_towards_the_kerb_stays_in_the_lane():
+    assert lower("All along the high street you kept drifting over towards the kerb.").scenario.ego.action == \
+        "go_straight"

@@ -378,6 +378,7 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
                        "very", "infront", "one", "front"}
 
 
+LANE_EDGES = {"kerb", "curb", "verge", "gutter", "centre", "center", "edge", "line", "lines", "kerbside", "curbside"}
 COLOURS = {"blue", "green", "grey", "gray", "red", "brown", "purple", "coloured", "colored", "metallic", "silver",
            "orange", "yellow", "pink"}
 SCENE_NOUNS = {"scene", "scenario", "situation", "case", "simulation", "setup", "test", "one", "example", "sim",
@@ -1468,6 +1469,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 u.meaning == "move" and u.tokens[0].base in STEERING)):
             direction = _direction_after(r, clause_units, k)
         action = u.meaning
+        if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
+                and _towards_an_edge(clause_units[k + 1:k + 5]):
+            action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
         if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
             action = "lane_" + direction
         if action == "move" and not e.is_ego and u.tokens[0].base in STEERING and clause_units is not None and \
@@ -1518,6 +1522,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                           direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+def _towards_an_edge(units: list[Unit]) -> bool:
+    """'towards the kerb', 'over toward the centre line': the ego drifts within its lane, to one of its edges."""
+    words = [t.word for u in units for t in u.tokens]
+    return bool(words) and words[0] in ("towards", "toward") and bool(set(words[1:4]) & LANE_EDGES)
 
 
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
