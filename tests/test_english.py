@@ -1495,7 +1495,8 @@ def test_where_traffic_keeps_left_an_unsaid_overtaking_is_on_the_right():
 
 
 @pytest.mark.parametrize("prompt, expected", [
-    ("A moped was ahead of us, puttering along right in the middle of the lane.", ("motorcycle", "go_straight", "front")),
+    ("A moped was ahead of us, puttering along right in the middle of the lane.",
+     ("motorcycle", "go_straight", "front")),
     ("You changed into the left lane and there was a van right there, level with you.",
      ("car", "go_straight", "left")),
 ])

@@ -93,7 +93,8 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
 STEERING = {"move", "steer", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
-RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle", "tear"}
+RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle",
+           "tear"}
 
 
 @dataclass
