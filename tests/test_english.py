@@ -1526,3 +1526,8 @@ def test_vehicles_in_general_in_a_question_are_no_agents_and_straight_at_me_is_o
 def test_drifting_towards_the_kerb_stays_in_the_lane():
     assert lower("All along the high street you kept drifting over towards the kerb.").scenario.ego.action == \
         "go_straight"
+
+
+def test_coming_round_a_roundabout_is_driving_not_rounding_the_ego():
+    assert ("bus", "go_straight", "road_of_left_turn") in agents(
+        "On the mini roundabout you waited for a coach coming round from your left.")
