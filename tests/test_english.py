@@ -1531,3 +1531,9 @@ def test_drifting_towards_the_kerb_stays_in_the_lane():
 def test_coming_round_a_roundabout_is_driving_not_rounding_the_ego():
     assert ("bus", "go_straight", "road_of_left_turn") in agents(
         "On the mini roundabout you waited for a coach coming round from your left.")
+
+
+def test_a_placed_vehicle_then_what_it_is_in_commas_is_one_agent():
+    assert agents("The car behind us, a grey hatchback, braked sharply.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "back")]
+    assert len(agents("A car behind us, a bus and a van are all stopped.")) == 4  # a list, no apposition

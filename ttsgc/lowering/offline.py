@@ -970,6 +970,15 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             labelled = bool(current) and current[-1].category == "agents" and (
                 bool(current[-1].tokens[-1].label) or current[-1].base.split()[-1] in APPOSED_HEADS) and \
                 not _has_verb(current)  # "... that vehicle 1, the AV, was stopped", "VRU, a cyclist,": apposition
+            tail = list(current)  # "the vehicle ahead of me, a red pickup, braked": what the vehicle is
+            while tail and (tail[-1].category == "agents" and tail[-1].meaning == "ego" or tail[-1].word in (
+                    "of", "the")):
+                tail.pop()
+            closed = next((x.category == "comma" for x in units[k + 1:k + 8] if x.category in ("comma", "actions")
+                           or x.word in ("and", "or")), False)
+            labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
+                tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
+                not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
@@ -2194,6 +2203,23 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 # "the driver of a stopped bus": the bus
                 prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
                 and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
+            placed = not prev.entity.is_ego and prev.entity.head.split()[-1] in APPOSED_HEADS | {"car"} and \
+                len(between) >= 2 and between[-1].category == "comma" and units[np.first].word in ("a", "an") and \
+                np.index + 1 < len(units) and units[np.index + 1].category in ("comma", "word") and \
+                units[np.index + 1].word not in ("and", "or") and \
+                between[0].category == "positions" and all(
+                    u.category in ("positions", "comma") or u.category == "agents" and u.meaning == "ego"
+                    or u.word in ("the", "of") for u in between)
+            if placed:  # "the vehicle behind me, a white Ford Transit, failed to stop": the vehicle is the Ford
+                a, b = prev.entity, np.entity
+                a.type, a.head = b.type, b.head
+                a.features |= b.features
+                a.actions += b.actions
+                a.behavior = a.behavior or b.behavior
+                a.aliases |= b.aliases | {b.head}
+                if b in r.entities:
+                    r.entities.remove(b)
+                continue
             mine = prev.entity.is_ego and prev.entity.head in FIRST_PERSON | {"we"} and between and all(
                 u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
                 between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding") and \
