@@ -1288,3 +1288,252 @@ def test_a_vehicle_stopped_on_the_road_is_no_stop_painted_on_it():
     scene = lower("The ego turns right while a lorry is stopped on the road we turn into.").scenario
     assert ("truck", "stop", "at_the_destination") in [(a.type, a.action, a.relative_to_ego) for a in scene.agents()]
     assert "stop_sign_on_road" not in scene.road.required_objects + scene.road.required_signals
+
+
+# -- voices written by other hands: research papers, witness statements, transcripts, briefs, forums ----------
+
+def test_a_research_papers_subject_vehicle_is_the_ego():
+    found = agents("Case B: the SV turns right at a signalised crossroads while a POV coming from the SV's left "
+                   "continues straight.")
+    assert found == [("car", "go_straight", "road_of_left_turn"), ("car", "turn_right", "ego")]
+
+
+def test_numbered_svs_beside_a_named_ego_stay_surrounding_vehicles():
+    found = agents("The ego keeps its lane; SV1 in the right adjacent lane slows down and SV2 follows the ego.")
+    assert sum(1 for a in found if a[2] == "ego") == 1 and len(found) == 3
+
+
+@pytest.mark.parametrize("prompt, ego_type", [
+    ("I am a bus driver and a pickup overtook me on the right.", "bus"),
+    ("At the time I was employed as a lorry driver. A moped pulled out in front of me.", "truck"),
+    ("The SV is an ambulance; a hatchback ahead of the SV pulls over to let it pass.", "ambulance"),
+])
+def test_a_first_person_or_subject_vehicle_says_what_the_ego_is(prompt, ego_type):
+    scene = lower(prompt).scenario
+    assert scene.ego.type == ego_type
+    assert [a.type for a in scene.agents() if not a.is_ego].count(ego_type) == 0
+
+
+@pytest.mark.parametrize("prompt, expected, gone", [
+    ("uh I'm turning left and a bus, no wait, a lorry is coming the other way", ("truck", "go_straight",
+                                                                                 "road_of_straight"), "bus"),
+    ("so a skateboarder I mean a pensioner walks out in front of me", ("pedestrian", "cross_the_road", "front"),
+     "cyclist"),
+    ("there's a lorry sorry a coach parked just ahead of me", ("bus", "stop", "front"), "truck"),
+    ("A motorbike, not a scooter rider, filters past me on the right.", ("motorcycle", "go_straight", "back_right"),
+     None),
+])
+def test_speech_that_corrects_itself_keeps_only_the_corrected_agent(prompt, expected, gone):
+    found = agents(prompt)
+    assert expected in found
+    assert len(found) == 2, found
+    if gone:
+        assert all(a[0] != gone for a in found)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Can someone explain this junction? I was going straight and a bus turned right across me.",
+     [("bus", "turn_right", "road_of_straight"), ("car", "go_straight", "ego")]),
+    ("Why do people even bother indicating. A pickup swerved into my lane from the right.",
+     [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+])
+def test_a_forum_posts_questions_to_its_readers_name_nobody_in_the_scene(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_driver_sounding_the_horn_drives_and_driving_like_a_maniac_is_aggressive():
+    found = agents("A minivan overtakes me on the right, driving like a maniac, and the bloke behind me leans on "
+                   "his horn.")
+    assert found == [("car", "go_straight", "back"), ("car", "go_straight", "back_right"),
+                     ("car", "go_straight", "ego")]
+    scene = lower("A minivan overtakes me on the right, driving like a maniac.").scenario
+    assert [a.behavior for a in scene.agents() if not a.is_ego] == ["aggressive"]
+
+
+def test_a_witness_on_foot_is_a_pedestrian_and_the_vehicle_described_is_the_ego():
+    found = agents("I was standing on the pavement a little way ahead when I saw a green minibus heading east. "
+                   "A moped was travelling just in front of the minibus, and the minibus ran into it.")
+    assert found == [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "front"),
+                     ("pedestrian", "on_the_sidewalk", "front_left")]
+
+
+def test_a_driving_witness_stays_the_ego():
+    found = agents("I was driving along the high street when I saw a delivery van pull out in front of me.")
+    assert ("car", "go_straight", "ego") in found and all(a[0] != "pedestrian" for a in found)
+
+
+def test_a_make_and_a_ridden_vehicle_are_re_mentions():
+    assert agents("A grey Toyota Corolla was ahead of us. The Toyota braked hard.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+    assert len(agents("A cyclist was riding in front of us and a taxi clipped the back wheel of the bicycle.")) == 3
+
+
+def test_what_a_witness_saw_does_the_verb_that_follows():
+    assert agents("I noticed a coach in front of me stop without warning.") == [
+        ("bus", "stop", "front"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("You sat in the middle lane for ages, with a tanker in the right lane level with you.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "right")]),
+    ("The player car sits in the left lane; a bus ahead in the right lane moves across in front of it.",
+     [("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+])
+def test_the_ego_sitting_in_a_named_lane_is_where_it_drives_not_a_stop(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_cars_width_is_a_measure_not_a_car():
+    assert agents("You overtook a cyclist and left a car's width.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_numbered_lanes_say_the_lane_count_and_which_side():
+    scene = lower("Dual carriageway. I was in lane one of two and a minibus in lane two came level with me.").scenario
+    assert scene.road.lanes == 2
+    assert [(a.type, a.relative_to_ego) for a in scene.agents() if not a.is_ego] == [("car", "right")]
+    scene = lower("On the M1 in lane three of four, a tanker in lane two just ahead of me moved into my lane.").scenario
+    assert scene.road.lanes == 4
+    assert [(a.type, a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego] == [
+        ("truck", "change_lane_to_right", "front_left")]
+
+
+def test_a_role_in_brackets_names_the_agent_before_it():
+    assert agents("The SV meets an oncoming minivan (POV) on a rural road with no junction.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "front_left")]
+    assert agents("The SV comes upon a principal other vehicle (POV) stationary in its lane ahead.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Schoolchild Dash. A boy runs out from behind a parked lorry on the left in front of the ego.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left"), ("truck", "stop", "front_left")]),
+    ("Level 7 (Taxi Rank Rumble). The player drives behind a bus.", [("bus", "go_straight", "front"),
+                                                                   ("car", "go_straight", "ego")]),
+])
+def test_a_title_case_headline_names_the_case_not_its_agents(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_hyphenated_role_labels_and_a_verb_after_the_subject_vehicles_side():
+    assert agents("POV-2, a white minivan in the right lane ahead of the SV, moves into the SV's lane.") == [
+        ("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
+    assert ("bus", "turn_right", "road_of_right_turn") in agents(
+        "A bus approaching from the SV's right turns right while the SV goes straight over the crossroads.")
+    assert lower("The SV is a marked police car; a taxi ahead pulls over.").scenario.ego.type == "police"
+
+
+@pytest.mark.parametrize("prompt, ego_action", [
+    ("The player is stuck behind a crawling milk float van on a narrow lane.", "go_straight"),
+    ("honestly I'm stuck doing fifteen behind a tractor", "go_straight"),
+    ("We're stuck at the lights behind a lorry.", "stop"),
+])
+def test_stuck_behind_something_still_moving_is_driving_slowly(prompt, ego_action):
+    assert lower(prompt).scenario.ego.action == ego_action
+
+
+@pytest.mark.parametrize("prompt, ego_action", [
+    ("A moped shot out of a side road on my left right in front of me. Should I have stopped?", "go_straight"),
+    ("Two vans were coming the other way and a skip lorry was parked on my side. Do I have to wait?",
+     "go_straight"),
+    ("Can I have a scene where the ego turns right at a junction?", "turn_right"),
+])
+def test_a_question_about_what_ought_to_happen_is_no_account_of_what_did(prompt, ego_action):
+    assert lower(prompt).scenario.ego.action == ego_action
+
+
+def test_counted_people_in_a_question_are_still_agents():
+    assert len(agents("how about three people waiting at the kerb on the left while we pass?")) == 4
+
+
+@pytest.mark.parametrize("prompt, ego_action", [
+    ("Could you build a scenario where the ego turns left at a roundabout?", "turn_left"),
+    ("Set up a level where the ego turns right while a tram waits.", "turn_right"),
+])
+def test_a_scene_where_the_ego_turns_is_what_the_ego_does(prompt, ego_action):
+    assert lower(prompt).scenario.ego.action == ego_action
+
+
+def test_a_game_briefs_player_is_the_ego():
+    scene = lower("Spawn the player at a crossroads with lights, waiting on red.").scenario
+    assert scene.ego.action == "stop" and len(list(scene.agents())) == 1
+    assert agents("Drop two vans in the right lane ahead of the player that both cut across in front of it.") == [
+        ("car", "change_lane_to_left", "front_right"), ("car", "change_lane_to_left", "front_right"),
+        ("car", "go_straight", "ego")]
+
+
+def test_a_sentence_before_a_colon_is_no_title_and_a_slot_in_keeps_its_side():
+    assert agents("The player turns right across the traffic: a coach coming the other way.")[-1] == (
+        "car", "turn_right", "ego")
+    scene = lower("The player merges right from the slip road and has to slot in between two lorries.").scenario
+    assert scene.ego.action == "change_lane_to_right"
+
+
+def test_the_nearside_is_the_kerb_side_of_the_traffic_described():
+    british = agents("I was on the dual carriageway in the offside lane; a lorry in the nearside lane was level with "
+                     "me.")
+    assert ("truck", "go_straight", "left") in british
+    protocol = agents("A pedestrian target walks across from the nearside in front of the VUT at 5 km/h.")
+    assert ("pedestrian", "cross_the_road", "front_right") in protocol
+
+
+@pytest.mark.parametrize("prompt, ego_type", [
+    ("I was on duty in a marked police vehicle when a hatchback ahead of me went through the red light.", "police"),
+    ("I was driving a coach along the ring road when a van ahead of me braked.", "bus"),
+])
+def test_the_vehicle_i_was_in_is_the_ego(prompt, ego_type):
+    scene = lower(prompt).scenario
+    assert scene.ego.type == ego_type
+    assert [a.type for a in scene.agents() if not a.is_ego] == ["car"]
+
+
+def test_where_traffic_keeps_left_an_unsaid_overtaking_is_on_the_right():
+    assert ("car", "change_lane_to_right", "ego") in agents(
+        "Along the dual carriageway you pulled out to get past a slow tractor.")
+    assert ("car", "go_straight", "back_right") in agents("A minibus overtook us on the motorway.")
+    assert ("car", "go_straight", "back_left") in agents("On the interstate a pickup overtook us.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A moped was ahead of us, puttering along right in the middle of the lane.",
+     ("motorcycle", "go_straight", "front")),
+    ("You changed into the left lane and there was a van right there, level with you.",
+     ("car", "go_straight", "left")),
+])
+def test_right_as_exactly_is_no_side(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_place_then_this_guy_and_his_verb_is_a_new_subject():
+    found = agents("so I'm on the bypass two lanes my side and this bloke in the lane on my right just swerves into "
+                   "my lane")
+    assert found == [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
+
+
+def test_a_statements_24_hour_clock_and_a_dark_colour():
+    assert lower("At about 0640 hours a lorry stopped ahead of me.").scenario.weather.time == "dawn"
+    assert lower("At 2230 hrs a cyclist crossed in front of me.").scenario.weather.time == "night"
+    assert lower("A dark grey estate car pulled out in front of me.").scenario.weather is None
+
+
+def test_vehicles_in_general_in_a_question_are_no_agents_and_straight_at_me_is_oncoming():
+    assert agents("A road train was level with me on my left. Why do lorries never let you in?") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "left")]
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "I was waiting to turn right and a hatchback was coming straight at me.")
+
+
+def test_drifting_towards_the_kerb_stays_in_the_lane():
+    assert lower("All along the high street you kept drifting over towards the kerb.").scenario.ego.action == \
+        "go_straight"
+
+
+def test_coming_round_a_roundabout_is_driving_not_rounding_the_ego():
+    assert ("bus", "go_straight", "road_of_left_turn") in agents(
+        "On the mini roundabout you waited for a coach coming round from your left.")
+
+
+def test_a_placed_vehicle_then_what_it_is_in_commas_is_one_agent():
+    assert agents("The car behind us, a grey hatchback, braked sharply.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "back")]
+    assert len(agents("A car behind us, a bus and a van are all stopped.")) == 4  # a list, no apposition

@@ -96,7 +96,8 @@ class Lexicon:
             return word, False
         for suffix, replacement in (("ies", "y"), ("ied", "y"), ("es", ""), ("s", ""), ("ed", ""), ("ed", "e"),
                                     ("d", ""), ("ing", ""), ("ing", "e"), ("'s", "")):
-            if word.endswith(suffix) and len(word) > len(suffix) + 1:
+            if word.endswith(suffix) and len(word) > len(suffix) + 1 and (suffix != "d" or word.endswith("ed")):
+                # ("Ford" is no past tense of "for")
                 stem = word[: -len(suffix)] + replacement
                 if stem in self.vocabulary and (len(stem) > 2 or stem not in self.function_words):  # "red" != "re"+d
                     return stem, True
@@ -321,7 +322,7 @@ def tokenize(text: str) -> list[Token]:
                   r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
     text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
                   r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
-    text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh)[ _](\d)\b"
+    text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh|pov|sv|tv)[ _-](\d)\b"
                   r"(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?|cars?))", r"\1\2",
                   text)  # "NPC_1", "Actor 2"
     text = re.sub(r"\b([a-z]{1,3}|npc|actor|agent|target|object|adversary)(\d)\b", r"\1#\2", text)  # SV1, NPC2: labels

@@ -21,6 +21,7 @@ scene for daily traffic"). Content words no rule places are reported with the ne
 from __future__ import annotations
 
 import re
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -92,7 +93,8 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
 STEERING = {"move", "steer", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
-RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump"}
+RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle",
+           "tear"}
 
 
 @dataclass
@@ -169,8 +171,60 @@ class _Reader:
 
 # -- units --------------------------------------------------------------------------------------------------
 
+def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
+    """Crash-typology papers call the vehicle under study the subject vehicle (SV) and the others principal other
+    vehicles (POV); scenario specs that also name an ego use SV1, SV2 for surrounding vehicles."""
+    return any(t.word == "sv" and not t.label for t in tokens) and not any(
+        t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
+
+
+LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement"}
+_KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
+
+
+def _overtaking_side(key: str) -> str:
+    """The side an unsaid overtaking takes: the conventions' (right-hand traffic) unless the text keeps left."""
+    side = UNSPECIFIED[key]
+    return {"left": "right", "right": "left"}[side] if _KEEPS_LEFT.get() else side
+TEST_PROTOCOL = {"vut", "target", "ncap", "kmh", "km", "kph", "epta", "ebta", "cpnc", "cpfa", "cpla", "gvt", "sut"}
+
+
+def _drives_on_the_left(tokens: list[Token]) -> bool:
+    """The nearside is the kerb side: the left where traffic keeps left (British statements speak of motorways,
+    lorries and mph), the right in test protocols written for right-hand traffic (VUT, targets, km/h)."""
+    words = {t.word for t in tokens}
+    road_numbers = any(t.word in ("a", "m", "b") and (t.label or k + 1 < len(tokens) and
+                                                      tokens[k + 1].word.isdigit() and t.word != "a")
+                       for k, t in enumerate(tokens))
+    return bool(words & LEFT_HAND_TRAFFIC or road_numbers) and not words & TEST_PROTOCOL
+
+
+def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
+    if not any(t.word in ("nearside", "offside", "near", "off") for t in tokens) or not _drives_on_the_left(tokens):
+        return units
+    swap = {"side_right": "side_left", "side_left": "side_right"}
+    out = []
+    for u in units:
+        words = [t.word for t in u.tokens]
+        kerb = "nearside" in words or "near" in words and "side" in words
+        far = "offside" in words or "off" in words and "side" in words
+        if u.category == "positions" and u.meaning in swap and (kerb and u.meaning == "side_right"
+                                                               or far and u.meaning == "side_left"):
+            u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
+        out.append(u)
+    return out
+
+
 def _units(tokens: list[Token]) -> list[Unit]:
+    return _kerb_sides(tokens, _read_units(tokens))
+
+
+def _read_units(tokens: list[Token]) -> list[Unit]:
     found = {m.start: m for m in matches(tokens)}
+    if _subject_vehicle_is_ego(tokens):
+        found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
+                 if m.category == "agents" and [t.word for t in tokens[m.start:m.end]] == ["sv"] else m
+                 for k, m in found.items()}
     out, i = [], 0
     while i < len(tokens):
         m = found.get(i)
@@ -188,6 +242,16 @@ def _units(tokens: list[Token]) -> list[Unit]:
                 meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
             out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
             i = m.end + 1
+            if any(f.start < i < f.end for f in found.values()):  # "from the SV's left turns left": read on
+                found |= {f.start: f for f in matches(tokens, i)}
+            continue
+        numbered = _numbered_lane(tokens, i + 1) if tokens[i].word == "in" and i + 1 < len(tokens) else None
+        if numbered is not None or (tokens[i].word == "in" and i + 2 < len(tokens) and tokens[i + 1].word == "lane"
+                                    and _word_number(tokens[i + 2]) == 1):
+            end = i + 3 + (i + 4 < len(tokens) and tokens[i + 3].word == "of")
+            end += end > i + 3
+            out.append(Unit(i, end, "positions", f"lane_{int(_word_number(tokens[i + 2]))}", tuple(tokens[i:end])))
+            i = end  # "in lane two (of three)": which lane, counted from the kerb
             continue
         if m is not None:
             out.extend(_disambiguate(tokens, m))
@@ -198,6 +262,68 @@ def _units(tokens: list[Token]) -> list[Unit]:
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
     return _short_names(_turned_into(out))
+
+
+CORRECTIONS = (("no", "wait"), ("wait", "no"), ("i", "mean"), ("or", "rather"), ("scratch", "that"),
+               ("make", "that"), ("no",), ("sorry",), ("wait",), ("actually",), ("rather",))
+NOUN_PHRASE_WORDS = {"a", "an", "the", "one", "some", "another", "this", "big", "small", "little", "white", "black",
+                     "red", "blue", "silver", "grey", "gray", "green", "yellow", "dark", "parked", "stopped"}
+
+
+def _marker_end(units: list[Unit], j: int) -> int | None:
+    """The unit after a correction marker starting at unit j (the lexicon may hold the marker as one phrase)."""
+    for marker in CORRECTIONS:
+        words, n = [], j
+        while n < len(units) and len(words) < len(marker):
+            words += [t.word for t in units[n].tokens]
+            n += 1
+        if words == list(marker):
+            return n
+    return None
+
+
+def _retract_corrections(r: "_Reader") -> list[Unit]:
+    """'a car, no wait, a truck', 'a cyclist, I mean a jogger': speech corrects itself; only the last word stands."""
+    units, out, k = r.units, [], 0
+    while k < len(units):
+        u = units[k]
+        out.append(u)
+        k += 1
+        if not (u.category == "agents" and u.meaning not in ("ego", "none")):
+            continue
+        j = k + (k < len(units) and units[k].category == "comma")
+        if j < len(units) and units[j].word == "not" and len(units[j].tokens) == 1:  # "a van, not a truck,"
+            n = j + 1
+            while n < len(units) and n - j < 4 and units[n].word in NOUN_PHRASE_WORDS:
+                n += 1
+            if n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none"):
+                r.notes.append(f"read '{' '.join(t.word for x in units[j:n + 1] for t in x.tokens)}' as denied")
+                for x in units[k:n + 1]:
+                    r.mark(x)
+                k = n + 1
+                continue
+        end = _marker_end(units, j)
+        if end is None:
+            continue
+        j = end
+        j += j < len(units) and units[j].category == "comma"
+        n = j
+        while n < len(units) and n - j < 4 and units[n].category in ("word", "number", "numbers") and \
+                (units[n].word in NOUN_PHRASE_WORDS or units[n].category != "word"):
+            n += 1
+        if not (j < n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none")):
+            continue
+        first = len(out) - 1
+        while first > 0 and out[first - 1].category in ("word", "number", "numbers") and \
+                out[first - 1].word in NOUN_PHRASE_WORDS | {"two", "three"}:
+            first -= 1
+        r.notes.append(f"read '{' '.join(t.word for x in out[first:] for t in x.tokens)}' as corrected by "
+                       f"'{' '.join(t.word for x in units[j:n + 1] for t in x.tokens)}'")
+        for x in out[first:] + units[k:j]:
+            r.mark(x)
+        del out[first:]
+        k = j
+    return out
 
 
 def _turned_into(units: list[Unit]) -> list[Unit]:
@@ -243,11 +369,38 @@ def _short_names(units: list[Unit]) -> list[Unit]:
             else u for u in units]
 
 
+STILL_MOVING = {"going", "driving", "doing", "crawling", "travelling", "traveling", "moving", "trundling", "slow",
+                "dawdling", "plodding", "creeping", "rolling", "cruising"}
+EGO_WORDS = {"you", "i", "we", "player", "ego", "av", "sv"}
 VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
                        "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
                        "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
                        "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead",
                        "very", "infront", "one", "front"}
+
+
+LANE_EDGES = {"kerb", "curb", "verge", "gutter", "centre", "center", "edge", "line", "lines", "kerbside", "curbside"}
+COLOURS = {"blue", "green", "grey", "gray", "red", "brown", "purple", "coloured", "colored", "metallic", "silver",
+           "orange", "yellow", "pink"}
+SCENE_NOUNS = {"scene", "scenario", "situation", "case", "simulation", "setup", "test", "one", "example", "sim",
+               "level", "map", "run"}
+
+
+def _read_inside(tokens: list[Token], start: int, end: int) -> list[Unit]:
+    """The units of tokens[start:end] read on their own."""
+    found = {f.start: f for f in matches(tokens, start, end)}
+    out, i = [], start
+    while i < end:
+        if i in found:
+            f = found[i]
+            out.append(Unit(f.start, f.end, f.category, f.meaning, tuple(tokens[f.start:f.end])))
+            i = f.end
+            continue
+        t = tokens[i]
+        out.append(Unit(i, i + 1, "comma" if t.word == "," else "number" if read_number(t.word) is not None
+                        else "word", t.word, (t,)))
+        i += 1
+    return out
 
 
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
@@ -263,7 +416,26 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             after[:1] and after[0] in ("behind", "ahead", "beside", "alongside", "next", "up")
             or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
         return [Unit(m.start, m.end, "word", "right", span)]  # "sits right on our tail": how close, not a side
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
+            after[:1] in (["there"], ["through"]) or after[:3] in (["in", "the", "middle"], ["in", "the", "centre"],
+                                                                  ["in", "the", "center"])) and \
+            tokens[m.start - 1].base not in STEERING | {"turn", "bear", "indicate", "signal", "cut", "merge"}:
+        return [Unit(m.start, m.end, "word", "right", span)]  # "riding right in the middle of the lane": exactly
+    if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
+            [t.word for t in tokens[m.end:m.end + 2]] == ["in", "the"] and m.end + 3 < len(tokens) and \
+            tokens[m.end + 3].word == "lane" and \
+            any(t.word in EGO_WORDS for t in tokens[max(0, m.start - 3):m.start]):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "you sat in the left lane": where, not a stop
+    if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stuck"] and (
+            nxt in STILL_MOVING or nxt == "behind" and {t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING):
+        return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
+    if m.category == "weather" and [t.word for t in span] == ["dark"] and nxt in COLOURS:
+        return [Unit(m.start, m.end, "word", "dark", span)]  # "a dark blue saloon": a shade, not the night
     prev = tokens[m.start - 1] if m.start > 0 else None
+    if m.category == "positions" and m.meaning == "destination" and span[0].word == "where" and (
+            prev is None or prev.word in SCENE_NOUNS):
+        return [Unit(m.start, m.start + 1, "word", "where", span[:1])] + _read_inside(tokens, m.start + 1, m.end)
+        # "a scene where the ego turns left": what happens in the scene, not the road the ego turns into
     if prev is not None and prev.word == "," and m.start > 1 and m.category == "road":
         prev = tokens[m.start - 2]  # "pedestrians (crossing, from left)": the noun before the bracket
     if m.category == "agents" and m.meaning == "none" and [t.word for t in span] == ["bus", "stops"] and \
@@ -501,6 +673,10 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         if t.word not in ("lane", "lanes") or i == 0:
             continue
         prev = tokens[i - 1]
+        numbered = _numbered_lane(tokens, i)
+        if numbered is not None:  # "in lane two of three": lanes are numbered on one carriageway
+            found.append(numbered)
+            continue
         n = _word_number(prev)
         if n is None:
             if prev.word in ("multi", "multiple", "several", "many"):
@@ -532,6 +708,20 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         return lanes
     per = [n for p, n in found if p]
     return max(per) if per else max([n for _, n in found] + [lanes or 0])
+
+
+def _numbered_lane(tokens: list[Token], i: int) -> tuple[bool, int] | None:
+    """'lane two of three' says three lanes each way; 'in lane 3' at least three."""
+    if tokens[i].word != "lane" or i + 1 >= len(tokens) or tokens[i + 1].sentence != tokens[i].sentence:
+        return None
+    n = _word_number(tokens[i + 1])
+    if n is None or not 1 <= n < 10 or n != int(n):
+        return None
+    if i + 3 < len(tokens) and tokens[i + 2].word == "of":
+        of = _word_number(tokens[i + 3])
+        if of is not None and n <= of < 10:
+            return True, int(of)
+    return (False, int(n)) if n >= 2 else None
 
 
 def _word_number(t: Token) -> float | None:
@@ -592,6 +782,10 @@ def _clock_time(r: _Reader) -> tuple[str, str] | None:
             hour = int(t.word) % 12 + (12 if nxt.word == "pm" else 0)
             r.used.update((t.index, nxt.index))
             return _hour_time(hour, f"{t.word} {nxt.word}")
+        if t.word.isdigit() and len(t.word) == 4 and nxt.word in ("hours", "hrs", "hr", "h") and \
+                int(t.word[:2]) < 24 and int(t.word[2:]) < 60:  # "at 2215 hours": a statement's 24-hour clock
+            r.used.update((t.index, nxt.index))
+            return _hour_time(int(t.word[:2]), f"{t.word} {nxt.word}")
         if read_number(t.word) is None or read_number(nxt.word) is None or nxt.index != t.index + 1:
             continue
         if not (len(nxt.word) == 2 and t.word.isdigit() and int(t.word) < 24 and nxt.word.isdigit()):
@@ -776,6 +970,15 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             labelled = bool(current) and current[-1].category == "agents" and (
                 bool(current[-1].tokens[-1].label) or current[-1].base.split()[-1] in APPOSED_HEADS) and \
                 not _has_verb(current)  # "... that vehicle 1, the AV, was stopped", "VRU, a cyclist,": apposition
+            tail = list(current)  # "the vehicle ahead of me, a red pickup, braked": what the vehicle is
+            while tail and (tail[-1].category == "agents" and tail[-1].meaning == "ego" or tail[-1].word in (
+                    "of", "the")):
+                tail.pop()
+            closed = next((x.category == "comma" for x in units[k + 1:k + 8] if x.category in ("comma", "actions")
+                           or x.word in ("and", "or")), False)
+            labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
+                tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
+                not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
@@ -790,7 +993,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 all(x.category == "agents" or x.word in ("the", "a", "an") for x in units[k + 1:k + 3]) and \
                 (k + 3 >= len(units) or units[k + 2].category == "comma" or units[k + 3].category == "comma")
             # "across the path of Unit 1, the AV, which ...": the unit is named the ego
-            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named:
+            bracketed = len(current) >= 3 and current[-1].category == "agents" and len(current[-1].tokens) == 1 \
+                and current[-1].base in ROLE_NAMES and current[-2].category == "comma" and \
+                current[-3].category == "agents" and not joined  # "a principal other vehicle (POV) stationary"
+            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named \
+                    and not bracketed:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -802,7 +1009,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
                 current.append(u)
                 continue
-            if u.word == "as" and nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if"):
+            if u.word == "as" and (nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if")
+                                   or prev_word in ("employed", "work", "works", "working")):  # "employed as a"
                 current.append(u)
                 continue
             close(u.word)
@@ -827,8 +1035,8 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     if not rest:
         return False
     starts = rest[0].category == "agents" and rest[0].meaning == "ego" or rest[0].word in SUBJECT_PRONOUNS or (
-        rest[0].word in ("the", "a", "an") and len(rest) > 1 and rest[1].category == "agents"
-        and rest[1].meaning != "none")
+        rest[0].word in ("the", "a", "an", "this", "that", "some", "another") and len(rest) > 1
+        and rest[1].category == "agents" and rest[1].meaning != "none")  # "... and this guy swerves"
     if not starts:
         return False
     for x in units[k + 2:k + 10]:
@@ -872,13 +1080,46 @@ def _has_agent(units: list[Unit]) -> bool:
 QUESTION_WORDS = {"what", "how", "why", "where", "which", "who"}
 
 
+COUNTED_BY = {"the", "these", "those", "a", "few", "several", "some", "many", "of", "two", "three", "four", "five"}
+ANYONE = {"someone", "somebody", "anyone", "anybody", "people", "everyone", "everybody", "whoever", "folk", "folks"}
+
+
+ASKING_MODALS = {"should", "do", "does", "would", "could", "am", "was", "did", "have", "must", "can", "shall",
+                 "is", "are"}
+ASKING_FOR_A_SCENE = {"scene", "scenario", "simulation", "simulate", "create", "generate", "make", "build", "set",
+                      "spawn", "test", "case", "have", "get"}
+
+
+def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
+    """'Should I have been able to stop?', 'Who should give way?', 'Do I have to wait?': a question about what
+    ought to happen is no account of what did (a request for a scene is no such question)."""
+    words = [t.word for t in tokens if t.sentence == sentence]
+    if len(words) < 2 or set(words) & ASKING_FOR_A_SCENE - {"have"} or "you" in words[:3]:
+        return False
+    return words[0] in ("who", "whose", "whom") or (words[0] in ASKING_MODALS and words[1] in ("i", "we")
+                                                    and not (words[0] in ("can", "could", "may")
+                                                             and {"get", "have"} & set(words[2:3])))
+
+
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
-    sentences after it describe the scene."""
+    sentences after it describe the scene. 'Can someone explain this?', 'Why are people like this': the
+    readers of a forum post or people in general are nobody in the scene."""
     t = u.tokens[0]
+    first = next(x for x in tokens if x.sentence == t.sentence)
+    before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
+    counted = before is not None and (read_number(before.word) is not None or before.word in COUNTED_BY)
+    if u.category == "agents" and len(u.tokens) == 1 and t.word in ANYONE and not counted and (
+            t.question or first.word in QUESTION_WORDS):
+        return True
+    if t.question and _asks_what_to_do(tokens, t.sentence):
+        return True
+    if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
+            (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
+            and first.word in QUESTION_WORDS:
+        return True  # "How are you meant to merge when trucks do this?": trucks in general
     if not t.question:
         return False
-    first = next(x for x in tokens if x.sentence == t.sentence)
     if first.word not in QUESTION_WORDS:
         return False
     later = {x.base for x in tokens if x.sentence > t.sentence}
@@ -1098,6 +1339,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         entity.includes_ego = True
     if entity.count > 1 or entity.generic:
         entity.group_open = entity.count
+    entity.aliases |= {m.base for m in units[max(lo, first - 1):head] if m.category == "agents" and m.meaning == kind}
+    # "a silver Ford Focus ... the Ford": the make names it too
     if not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
@@ -1152,6 +1395,11 @@ GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclis
                  "people", "child", "kid", "man", "woman", "guy"}
 
 
+PERCEIVING = {"see", "saw", "seen", "observe", "notice", "watch", "spot", "witness", "hear", "heard", "noticed",
+              "observed", "spotted", "watched", "witnessed"}
+RIDDEN = {"bike", "bicycle", "pushbike", "push bike", "pedal cycle", "motorbike", "motorcycle", "moped", "scooter"}
+
+
 def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
               recent: list[Entity], head: str = "") -> list[Entity]:
     """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
@@ -1159,7 +1407,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
                                                         or (e.generic and kind in V.EGO_TYPES))]
     if head and head not in GENERAL_NOUNS and not both and not plural:
         same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
-                or e.head in GENERAL_NOUNS and e.head != "vehicle"]
+                or e.head in GENERAL_NOUNS and e.head != "vehicle"
+                or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN]  # "a cyclist ... the bicycle": the same
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool:
         return []
@@ -1230,6 +1479,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 u.meaning == "move" and u.tokens[0].base in STEERING)):
             direction = _direction_after(r, clause_units, k)
         action = u.meaning
+        if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
+                and _towards_an_edge(clause_units[k + 1:k + 5]):
+            action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
         if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
             action = "lane_" + direction
         if action == "move" and not e.is_ego and u.tokens[0].base in STEERING and clause_units is not None and \
@@ -1246,7 +1498,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
             if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round"):
-                side = UNSPECIFIED["ego_lane_change_direction"]  # "I have to go around it": out into the next lane
+                side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
                 for x in clause_units[k + 1:k + 6]:
@@ -1268,6 +1520,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
         if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
+        if e.is_ego and action == "cut_in" and direction is None and any(
+                a[0] == stage and a[4] in ("lane_left", "lane_right") for a in e.actions):
+            return  # "merges left ... and has to slot in between them": the same lane change, its side said before
         if u.tokens[0].base in RUSHING and not e.is_ego:
             e.behavior = e.behavior or "aggressive"
         earlier = clause_units is not None and k is not None and any(
@@ -1277,6 +1532,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                           direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+def _towards_an_edge(units: list[Unit]) -> bool:
+    """'towards the kerb', 'over toward the centre line': the ego drifts within its lane, to one of its edges."""
+    words = [t.word for u in units for t in u.tokens]
+    return bool(words) and words[0] in ("towards", "toward") and bool(set(words[1:4]) & LANE_EDGES)
 
 
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
@@ -1454,7 +1715,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     else:
         before = [np for np in phrases if np.index < first_verb and np.entity is not None
                   and not _is_reference(units, np)]
-        if len(before) >= 2 and verbs and not any(
+        seen = len(before) >= 2 and before[0].entity is not None and before[0].entity.is_ego and any(
+                u.tokens[0].base in PERCEIVING for u in units[before[0].index + 1:before[1].first])
+        if seen:
+            before = before[1:2]  # "I saw a van pull out": what was seen does what follows
+        elif len(before) >= 2 and verbs and not any(
                 u.category == "comma" or u.word in ("and", "or", "with", "plus", "both", "&")
                 for u in units[before[0].index + 1:before[1].first]) and any(
                 u.category == "actions" for u in units[before[0].index + 1:before[1].first]):
@@ -1794,7 +2059,11 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
     return np.group or [np.entity]
 
 
+# "the SV is a patrol car", "I am employed as a bus driver": what the first noun is, said of it
+APPOSITION_WORDS = {"is", "was", "be", "are", "being", "as", "am", "employed", "working", "work", "works"}
 ROLE_NOUNS = {"target", "npc", "adversary", "actor", "agent", "dummy", "target vehicle", "participant", "object"}
+ROLE_NAMES = {"pov", "vru", "target", "npc", "adversary", "gvt", "tv", "vut", "lead vehicle", "principal other vehicle",
+              "other vehicle", "bv", "obstacle"}
 APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv", "npc", "adversary",
                  "participant", "object", "hero"}  # said what they are
 
@@ -1916,12 +2185,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
-            copula = any(u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as") for u in between)
+            copula = any(u.category == "word" and u.word in APPOSITION_WORDS for u in between)
             abbreviation = between and all(u.category == "comma" or u.base in ROLE_NOUNS for u in between) and \
                 np.first == np.index and \
                 len(units[np.index].tokens) == 1 and not prev.entity.is_ego and (
                     np.entity.type == prev.entity.type) and units[np.index].base not in GENERAL_NOUNS
-            if abbreviation:  # "a stationary Global Vehicle Target (GVT)": its short name, no second agent
+            role_name = between and all(u.category == "comma" for u in between) and np.first == np.index and \
+                units[np.index].base in ROLE_NAMES and not prev.entity.is_ego and not np.entity.is_ego
+            if abbreviation or role_name:  # "a stationary Global Vehicle Target (GVT)": its short name, no second
+                # agent; "an oncoming pickup (POV)": its role in the study
                 prev.entity.aliases.add(units[np.index].base)
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
@@ -1931,6 +2203,32 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 # "the driver of a stopped bus": the bus
                 prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
                 and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
+            placed = not prev.entity.is_ego and prev.entity.head.split()[-1] in APPOSED_HEADS | {"car"} and \
+                len(between) >= 2 and between[-1].category == "comma" and units[np.first].word in ("a", "an") and \
+                np.index + 1 < len(units) and units[np.index + 1].category in ("comma", "word") and \
+                units[np.index + 1].word not in ("and", "or") and \
+                between[0].category == "positions" and all(
+                    u.category in ("positions", "comma") or u.category == "agents" and u.meaning == "ego"
+                    or u.word in ("the", "of") for u in between)
+            if placed:  # "the vehicle behind me, a white Ford Transit, failed to stop": the vehicle is the Ford
+                a, b = prev.entity, np.entity
+                a.type, a.head = b.type, b.head
+                a.features |= b.features
+                a.actions += b.actions
+                a.behavior = a.behavior or b.behavior
+                a.aliases |= b.aliases | {b.head}
+                if b in r.entities:
+                    r.entities.remove(b)
+                continue
+            mine = prev.entity.is_ego and prev.entity.head in FIRST_PERSON | {"we"} and between and all(
+                u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
+                between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding") and \
+                np.entity.type in V.EGO_TYPES
+            if mine:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
+                prev.entity.type = np.entity.type if np.entity.type != "car" else prev.entity.type
+                if np.entity in r.entities:
+                    r.entities.remove(np.entity)
+                continue
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 prev.entity.type = np.entity.type
                 prev.entity.features |= np.entity.features
@@ -1939,7 +2237,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
-            if all((u.category == "word" and u.word in ("is", "was", "be", "are", "being", "as", "like")) or
+            if all((u.category == "word" and u.word in APPOSITION_WORDS | {"like"}) or
                    u.category == "comma" for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
@@ -2030,6 +2328,9 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
                                                                "still", "also", "currently", "slowly", "now"))):
         light = light or units[k].word in ("performing", "making", "doing", "executing", "attempting")
         k -= 1
+    if k >= 3 and units[k].category == "comma" and units[k - 1].base in ROLE_NAMES and \
+            units[k - 2].category == "comma":
+        k -= 3  # "a principal other vehicle (POV) stationary in its lane": past the bracketed role
     if k < 0:
         return None
     np = next((p for p in phrases if p.index == k), None)
@@ -2038,8 +2339,9 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
     later = any(v > i and not (units[v - 1].category == "word" and units[v - 1].word == "to") for v in verbs)
     word = units[i].tokens[0].word  # a later finite verb makes this one a participle; 'to pass' is none
-    participle = word.endswith("ing") or word.endswith("ed") or word in ("parked", "stopped", "stood", "stuck",
-                                                                          "broken") or light
+    participle = word.endswith("ing") or word.endswith("ed") or word in (
+        "parked", "stopped", "stood", "stuck", "broken", "stationary", "idle", "motionless", "immobile") or light
+    # "encounters a POV stationary in its lane": a state said of the object
     if np.entity is not None and np.entity.is_ego and not light:
         return None  # "the lead car ahead of the hero changed lane": the ego takes no participle
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
@@ -2257,7 +2559,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f:
-        side = "right" if "undertaking" in f else UNSPECIFIED["side_of_an_overtaker"]
+        side = _overtaking_side("side_of_an_overtaker")
+        side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
@@ -2358,6 +2661,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     if not tokens:
         raise LoweringError("the prompt is empty")
     r = _Reader(tokens, _units(tokens))
+    _KEEPS_LEFT.set(_drives_on_the_left(tokens))
+    r.units = _retract_corrections(r)
     UNSPECIFIED.draw_for(seed)
     road = _road(r)
     weather = _weather(r)
@@ -2374,6 +2679,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     for k, clause in enumerate(clauses):
         if clause.link in RELATIVES and recent:
             clause.antecedent = recent[-1]
+            if recent[-1].is_ego and len(recent) > 1 and k > 0 and _ego_placed_last(clauses[k - 1].units):
+                clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
         if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
@@ -2402,6 +2709,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
+    _witness_on_foot(r)
+    _numbered_lane_sides(r)
     _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
@@ -2460,6 +2769,98 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     return Lowered(scenario, unknown, kind, notes)
 
 
+ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sidewalk", "footpath", "on foot",
+           "a pedestrian", "jogging", "bus stop"}
+AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
+                "my vehicle", "my van", "my bike", "my lane", "in my"}
+FIRST_PERSON = {"i", "me", "my", "i'm"}
+AT_THE_WHEEL_OF = {"was", "am", "were", "in", "driving", "drove", "on", "patrol", "uniformed", "mobile", "sitting",
+                   "riding", "at", "the", "wheel", "of", "duty", "routine", "alone"}
+
+
+def _what_i_was(tokens: list[Token], k: int) -> set[str]:
+    """The words of 'I was standing at the bus stop', up to the next clause."""
+    out: list[str] = []
+    for t in tokens[k + 1:k + 9]:
+        if t.sentence != tokens[k].sentence or t.word in ("when", "while", "and", "as", "but", ",", "saw", "then"):
+            break
+        out.append(t.word)
+    pairs = {f"{a} {b}" for a, b in zip(out, out[1:])}
+    return set(out) | pairs
+
+
+def _witness_on_foot(r: _Reader) -> None:
+    """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
+    and the vehicle the statement is about (the first that moves) is the ego."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or ego.head not in FIRST_PERSON:
+        return
+    said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")]
+    words = set().union(*said) if said else set()
+    if not words & ON_FOOT or words & AT_THE_WHEEL:
+        return
+    own = [t for t in r.tokens if t.word in ("i", "i'm")]
+    movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
+              and any(a[4] not in ("stop", "try") for a in e.actions)]
+    if not movers:
+        return
+    subject = movers[0]
+    for e in [e for e in r.entities if not e.is_ego and e.head == "vehicle" and not e.actions and e is not subject]:
+        r.entities.remove(e)  # "ahead of the vehicle concerned": the one the statement is about
+    first_sentence = [t.word for t in r.tokens if t.sentence == next(t.sentence for t in own)]
+    side = "side_right" if "right" in first_sentence else "side_left"
+    place = "ahead" if "ahead" in first_sentence else "behind" if "behind" in first_sentence else None
+    ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
+    ego.features = {"on_sidewalk", side} | ({place} if place else set())
+    subject.is_ego = True
+    subject.features = {f for f in subject.features if f.startswith("compass_")}
+    subject.relative_to = None
+    for e in r.entities:
+        if e.relative_to is subject:
+            e.relative_to = None  # "in front of the Ford": in front of the ego now
+    r.entities.remove(subject)
+    r.entities.insert(0, subject)
+    r.notes.append(f"inferred: the witness is on foot; the '{subject.head}' the statement is about is the ego")
+
+
+def _numbered_lane_sides(r: _Reader) -> None:
+    """'I was in lane one, the van in lane two': lanes are counted from the kerb (lane 1 is the nearside lane in
+    British and European usage), so a higher number is to the ego's right."""
+    def number(e: Entity) -> int | None:
+        return next((int(f[5:]) for f in e.features if f.startswith("lane_") and f[5:].isdigit()), None)
+
+    own = None
+    for k, u in enumerate(r.units):  # "I'm in lane 1", "the player is in lane 2": the ego's own lane
+        if u.category == "positions" and u.meaning.startswith("lane_") and any(
+                x.category == "agents" and x.meaning == "ego" and all(
+                    y.word in ("is", "was", "am", "are", "were", "be", "been", "still", "driving", "travelling",
+                               "traveling", "sitting", "the") for y in r.units[j + 1:k])
+                for j, x in enumerate(r.units[max(0, k - 4):k], start=max(0, k - 4))):
+            own = int(u.meaning[5:])
+            break
+    if own is None:
+        return
+    for e in r.entities:
+        theirs = number(e) if not e.is_ego else None
+        if theirs is None or theirs == own or e.features & {"side_left", "side_right", "from_left", "from_right",
+                                                            "road_left", "road_right", "road_straight"}:
+            continue
+        side = "side_right" if theirs > own else "side_left"
+        e.features.add(side)
+        r.notes.append(f"inferred: '{e.head}' in lane {theirs} is to the {side[5:]} of the ego in lane {own}")
+
+
+def _ego_placed_last(units: list[Unit]) -> bool:
+    """'... ahead of the player': the clause ends on the ego as the object of a place phrase."""
+    egos = [k for k, u in enumerate(units) if u.category == "agents" and u.meaning == "ego"]
+    if not egos or egos[-1] != len(units) - 1:
+        return False
+    k = egos[-1] - 1
+    while k >= 0 and units[k].category == "word" and units[k].word in ("the", "of", "a"):
+        k -= 1
+    return k >= 0 and units[k].category == "positions"
+
+
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
     """'I'm in the slow lane', 'the ego is in the left lane': a lane named by its side is one of several."""
     ego = next((e for e in r.entities if e.is_ego), None)
@@ -2485,13 +2886,38 @@ def _header_of_place(units: list[Unit]) -> list[Unit]:
     return []
 
 
+TITLE_SMALL_WORDS = {"a", "an", "the", "of", "in", "on", "at", "to", "with", "and", "vs", "for", "by", "from"}
+
+
+def _headline(prompt: str, tokens: list[Token]) -> range:
+    """'Scenario 1 (Lead Vehicle Stopped). The subject vehicle ...', 'Overtake Challenge. The player ...': a first
+    sentence in title case, without a verb, names the case, not its agents."""
+    m = re.match(r"\s*([^.!?\n]{1,60})[.!]\s+\S", prompt)
+    if m is None:
+        return range(0)
+    words = re.findall(r"[A-Za-z][A-Za-z'-]*|\d+", m.group(1))
+    if not words or len(words) > 8 or not all(w[0].isupper() or w[0].isdigit() or w.lower() in TITLE_SMALL_WORDS
+                                             for w in words) or words[0].lower() in SUBJECT_PRONOUNS | {"i'm"}:
+        return range(0)
+    n = len(tokenize(m.group(1)))
+    if n >= len(tokens) or any(t.base in ("be", "have") for t in tokens[:n]):
+        return range(0)
+    return range(n)
+
+
 def _title(prompt: str, tokens: list[Token]) -> range:
     """'Cut-in: a target vehicle ...': a short title before a colon names the case, not its agents."""
     m = re.match(r"\s*([^.:;!?\n]{1,80}):\s*\S", prompt)
+    if m is None and "\n" not in prompt.strip():
+        return _headline(prompt, tokens)
     if m is None or "\n" in prompt.strip():  # notes written a line an item have their titles marked already
         return range(0)
     if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
         return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
+    said = {(f.category, f.meaning) for f in matches(tokenize(m.group(1)))}
+    if ("agents", "ego") in said and any(category == "actions" for category, _ in said) and \
+            m.group(1).strip().lower().split()[0] in ("the", "i", "we", "you", "player", "my", "our", "ego"):
+        return range(0)  # "The player makes the left across oncoming traffic: ...": a sentence, not a title
     counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+\w+s\b",
                         m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
     if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
@@ -2662,7 +3088,7 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
     if action in ("lane_change", "cut_in"):
         said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
             "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
-        return f"change_lane_to_{direction or said or UNSPECIFIED['ego_lane_change_direction']}"  # "pulling out to pass"
+        return f"change_lane_to_{direction or said or _overtaking_side('ego_lane_change_direction')}"  # "pulling out"
     return "go_straight"
 
 
