@@ -53,6 +53,13 @@ def _private_cache(tmp_path_factory):
     yield
 
 
+@pytest.fixture(autouse=True)
+def _players_asked_for(monkeypatch, tmp_path_factory):
+    """A test plays in the players it asks for: esmini only through a fixture that names it, never because the
+    user's environment or PATH has one (a test of SUMO's verdict would otherwise get esmini's too)."""
+    monkeypatch.setenv("TTSGC_ESMINI", str(tmp_path_factory.getbasetemp() / "no-esmini"))
+
+
 def pytest_addoption(parser):
     parser.addoption("--regen-golden", action="store_true",
                      help="rewrite examples/golden/*.xosc from the current compiler (review the diff!)")
