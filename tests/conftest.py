@@ -46,18 +46,14 @@ def shared() -> Path:
 
 @pytest.fixture(scope="session", autouse=True)
 def _private_cache(tmp_path_factory):
-    """Every test run indexes into a fresh cache of its own, never the user's."""
+    """Every test run indexes into a fresh cache of its own, never the user's; and a test plays in the players
+    it asks for: esmini only through a fixture that names it, never because the user's environment or PATH
+    has one (a test of SUMO's verdict, or a module's fixture, would otherwise get esmini's too)."""
     import os
 
     os.environ["TTSGC_CACHE_DIR"] = str(tmp_path_factory.mktemp("cache"))
+    os.environ["TTSGC_ESMINI"] = str(tmp_path_factory.getbasetemp() / "no-esmini")
     yield
-
-
-@pytest.fixture(autouse=True)
-def _players_asked_for(monkeypatch, tmp_path_factory):
-    """A test plays in the players it asks for: esmini only through a fixture that names it, never because the
-    user's environment or PATH has one (a test of SUMO's verdict would otherwise get esmini's too)."""
-    monkeypatch.setenv("TTSGC_ESMINI", str(tmp_path_factory.getbasetemp() / "no-esmini"))
 
 
 def pytest_addoption(parser):
