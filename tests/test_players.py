@@ -783,3 +783,14 @@ def test_an_ego_turning_into_a_road_where_a_vehicle_stands_stops_behind_it(esmin
     for player in ("sumo", "esmini"):
         assert not _verdict(report, player).collisions, report.table()
     assert report.ok, report.table()
+
+
+def test_people_crossing_in_front_of_an_ego_told_to_stop_cross_ahead_of_where_it_stands(esmini, tmp_path):
+    """'the ego waits while a group of children cross in front of it': placed 2 m ahead of its start, they
+    crossed under the car, which ran on its braking distance before it stood (both players)."""
+    report = _played(tmp_path, "waits", 'scenario "waits"\nstage main {\n    ego car stop\n'
+                     '    pedestrian p1 at front cross_the_road\n    pedestrian p2 at front cross_the_road\n'
+                     '    pedestrian p3 at front cross_the_road behind p2\n}\n')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()

@@ -403,7 +403,10 @@ class Placer:
                 self.u_ego + 20.0, frame.length - length)
             outward = -1
         elif where in AHEAD:
-            target, outward = self._after(frame, lane, self.u_ego + ego_len / 2, agent, +1), +1
+            edge = self.u_ego + ego_len / 2
+            if stage == 0 and agent.action == "cross_the_road" and self.scenario.ego.action == "stop":
+                edge += self._ego_stopping_m()  # it crosses ahead of where the ego comes to stand, not under it
+            target, outward = self._after(frame, lane, edge, agent, +1), +1
         elif where in BEHIND:
             target, outward = self._after(frame, lane, self.u_ego - ego_len / 2, agent, -1), -1
         else:  # left / right: beside the ego
@@ -524,14 +527,17 @@ class Placer:
         return self.scenario.ego.action == "stop" and all(
             step.action == "stop" for step in later_actions(self.scenario) if step.stage <= stage)
 
+    def _ego_stopping_m(self) -> float:
+        """How far the ego runs from its start when told to stop: it brakes at once, at its behaviour's rate."""
+        ego = self.scenario.ego
+        return _speed(ego, self.frame.approach.speed_limit_kmh) ** 2 / (2 * V.BRAKE_RATE[ego.behavior])
+
     def _beside_the_standing_ego(self, agent: Agent, stage: int) -> BoundAgent:
         """A later walker that crosses, placed where the ego will stand by then (its braking distance on): a
         crossing needs a fixed start and far side, which a place relative to the ego when the stage starts
         has not (the walker appeared there and stood)."""
-        ego = self.scenario.ego
-        stops_in = _speed(ego, self.frame.approach.speed_limit_kmh) ** 2 / (2 * V.BRAKE_RATE[ego.behavior])
         placed_at = self.u_ego
-        self.u_ego = placed_at + stops_in
+        self.u_ego = placed_at + self._ego_stopping_m()
         try:
             return self._place_agent(agent, stage)
         finally:
