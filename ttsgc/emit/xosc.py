@@ -502,12 +502,7 @@ def _start_trigger(agent: BoundAgent, label: str, minor: int, wait: float = 0.0)
         conditions.append(_always(f"{label}_time", delay, minor))
     if len(conditions) == 1:
         return conditions[0]
-    group = xosc.ConditionGroup()
-    for condition in conditions:
-        group.add_condition(condition)
-    trigger = xosc.Trigger()
-    trigger.add_conditiongroup(group)
-    return trigger
+    return _all_of(conditions)
 
 
 _EUCLIDEAN = {False: xosc.RelativeDistanceType.cartesianDistance, True: xosc.RelativeDistanceType.euclidianDistance}
