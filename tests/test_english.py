@@ -1537,3 +1537,18 @@ def test_a_placed_vehicle_then_what_it_is_in_commas_is_one_agent():
     assert agents("The car behind us, a grey hatchback, braked sharply.") == [
         ("car", "go_straight", "ego"), ("car", "stop", "back")]
     assert len(agents("A car behind us, a bus and a van are all stopped.")) == 4  # a list, no apposition
+
+
+@pytest.mark.parametrize("prompt", [
+    "The taxi ahead of us pulls over and stops.",
+    "A delivery van in front of me pulled over to the kerb and stopped.",
+    "The lorry in front pulls in and parks.",
+])
+def test_pulling_over_to_stop_ends_in_a_stop(prompt):
+    assert ("car" if "lorry" not in prompt else "truck", "stop", "front") in agents(prompt)
+
+
+def test_a_blocker_is_never_placed_straight_behind_the_ego():
+    assert agents("The van behind me blocks me in.") == [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]
+    assert ("car", "block_the_ego", "back_left") in agents(  # the lane beside, where it passed: playable
+        "A saloon overtakes me on the left, cuts me up and stops dead in front of me.")
