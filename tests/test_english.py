@@ -1159,10 +1159,10 @@ def test_british_and_terse_idioms(prompt, expected):
     assert expected in agents(prompt)
 
 
-def test_a_group_of_n_is_n_agents_and_counted_parked_cars_between_are_scenery():
+def test_a_group_of_n_is_n_agents_and_counted_parked_cars_between_are_agents():
     assert agents("a family of three crosses at the zebra").count(
         ("pedestrian", "cross_the_road", "near_the_crosswalk")) == 3
-    assert [t for t, _, _ in agents("A boy runs out from between two parked vans.")].count("car") == 1
+    assert [t for t, _, _ in agents("A boy runs out from between two parked vans.")].count("car") == 3  # ego + 2
 
 
 def test_a_state_in_the_past_perfect_is_before_the_story_and_a_singular_car_is_no_heading():
@@ -1552,3 +1552,14 @@ def test_a_blocker_is_never_placed_straight_behind_the_ego():
     assert agents("The van behind me blocks me in.") == [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]
     assert ("car", "block_the_ego", "back_left") in agents(  # the lane beside, where it passed: playable
         "A saloon overtakes me on the left, cuts me up and stops dead in front of me.")
+
+
+def test_counted_vehicles_a_person_steps_out_from_between_are_agents_at_that_kerb():
+    assert agents("A boy darts out from the right between two parked vans.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front_right"), ("car", "stop", "front_right"),
+        ("pedestrian", "cross_the_road", "front_right")]
+    assert road("A boy darts out from the right between two parked vans.").lanes < 2  # parked at the kerb
+    assert agents("A lad on a bike shot out from between two lorries on my left.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front_left"),
+        ("truck", "stop", "front_left"), ("truck", "stop", "front_left")]
+    assert len(agents("A kid runs out between parked cars.")) == 2  # uncounted: scenery

@@ -41,7 +41,8 @@ def language_allows_later_ego() -> bool:
 
 def infer_plan(draft: Scenario, oncoming: frozenset[str] = frozenset()) -> Inferred:
     """Repair what cannot be, then add what the agents imply about the road; `oncoming` names agents at a
-    side position because they drive the other way (they need no second lane in the ego's direction)."""
+    side position because they drive the other way or stand parked at the kerb (they need no second lane in the
+    ego's direction)."""
     notes: list[str] = []
     road = _repair_road(draft.road, notes)
     stages = _repair_agents(draft.stages, road, notes)

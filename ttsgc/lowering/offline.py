@@ -1304,8 +1304,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         before -= 1  # "between parked cars"
     scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS or \
         any(m.category == "word" and m.word in SCENERY_PREPOSITIONS for m in modifiers)  # "from between parked cars"
-    between = before >= lo and units[before].word == "between"  # "from between two parked cars": scenery too
-    if scenery and plural and (count is None or between) and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
+    if scenery and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
             not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
             count is None and plural and before >= lo and "of" in words
             and units[before].word in ("row", "line", "lot", "rows")):  # "a row of parked cars": scenery
@@ -1341,6 +1340,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         entity.group_open = entity.count
     entity.aliases |= {m.base for m in units[max(lo, first - 1):head] if m.category == "agents" and m.meaning == kind}
     # "a silver Ford Focus ... the Ford": the make names it too
+    if scenery and before >= lo and units[before].word == "between":
+        entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
     if not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
@@ -2523,6 +2524,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             f.add("ahead")
     side = _side_of(f)
     lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
+    if "screening" in f and side and action == "stop" and not f & {"behind", "level"}:
+        return f"front_{side}", True  # parked at the kerb a crosser steps out from: no lane of the ego's direction
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
@@ -2713,6 +2716,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
     _witness_on_foot(r)
+    _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
     _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
@@ -2824,6 +2828,24 @@ def _witness_on_foot(r: _Reader) -> None:
     r.entities.remove(subject)
     r.entities.insert(0, subject)
     r.notes.append(f"inferred: the witness is on foot; the '{subject.head}' the statement is about is the ego")
+
+
+def _screens_on_the_crossers_side(r: _Reader) -> None:
+    """The vehicles a person steps out from between stand at the kerb that person comes from, ahead of the ego."""
+    for k, e in enumerate(r.entities):
+        if "screening" not in e.features or e.is_ego:
+            continue
+        crosser = next((c for c in reversed(r.entities[:k]) if not c.is_ego), None)
+        if crosser is None or crosser.type not in V.VULNERABLE_TYPES:
+            continue
+        side = next((s for s in SIDES if f"from_{s}" in crosser.features or f"side_{s}" in crosser.features), None)
+        if side and not _side_of(e.features):
+            e.features.add(f"side_{side}")
+        own = _side_of(e.features)
+        if own and side is None:
+            crosser.features.add(f"from_{own}")  # "out from between two lorries on my left": from the left
+        if not any(a[4] == "stop" for a in e.actions):
+            e.actions.append((e.stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # screens stand
 
 
 def _numbered_lane_sides(r: _Reader) -> None:
