@@ -1563,3 +1563,20 @@ def test_counted_vehicles_a_person_steps_out_from_between_are_agents_at_that_ker
         ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front_left"),
         ("truck", "stop", "front_left"), ("truck", "stop", "front_left")]
     assert len(agents("A kid runs out between parked cars.")) == 2  # uncounted: scenery
+
+
+def test_the_far_side_of_a_junction_is_across_it():
+    assert ("bus", "go_straight", "road_of_straight") in agents(
+        "At the crossroads I wait to turn right while a bus comes through from the far side.")
+    assert ("truck", "stop", "at_the_destination") in agents(
+        "Going straight over the lights, a lorry is parked on the far side of the junction.")
+    assert ("car", "stop", "left") in agents("On the dual carriageway a van sits in the far side lane.")
+
+
+def test_a_vehicle_placed_by_the_ego_is_another_and_what_it_is_follows_in_commas():
+    assert agents("The car on my left at the 4-way stop went straight.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+    assert agents("At a four-way stop the vehicle on my left, a red minivan, proceeded first.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+    assert agents("The car on our right, a silver estate, turned left.") == [
+        ("car", "go_straight", "ego"), ("car", "turn_left", "road_of_right_turn")]

@@ -976,6 +976,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 tail.pop()
             closed = next((x.category == "comma" for x in units[k + 1:k + 8] if x.category in ("comma", "actions")
                            or x.word in ("and", "or")), False)
+            while len(tail) >= 3 and tail[-1].category == "positions" and tail[-2].word in (
+                    "my", "our", "your", "the") and tail[-3].word in ("on", "in", "to"):
+                del tail[-3:-1]  # "the vehicle on my left, a red minivan,": placed as "the vehicle left"
             labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
@@ -1365,10 +1368,13 @@ OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side
 def _ego_object_follows(units: list[Unit], head: int) -> bool:
     """'the car overtakes us', 'the car swerves into our lane': the ego is named in the car's own predicate
     (before any other agent), so the car is another road user."""
-    for x in units[head + 1:]:
+    for j, x in enumerate(units[head + 1:], head + 1):
         if x.category == "agents" and x.meaning == "ego" or x.category == "positions" and {
                 t.word for t in x.tokens} & {"us", "our", "me", "my", "ego", "you", "your"}:
             return True
+        if x.category == "word" and x.word in ("my", "our", "your") and j + 1 < len(units) and \
+                units[j + 1].category == "positions":
+            return True  # "the car on my left": placed by the ego, so another
         if x.category == "agents" and x.meaning != "none":
             return False
     return False
@@ -1461,6 +1467,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("bare_" + u.meaning[5:])
         if u.meaning in ("side_left", "side_right") and u.tokens[0].word == "from":
             e.features.add("from_lane")
+        if u.meaning == "side_left" and {t.word for t in u.tokens} & {"far", "farside"} and \
+                "lane" not in {t.word for t in u.tokens}:
+            e.features.add("far_side")  # the far lane of a road, or across a junction: decided in _position
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
@@ -2208,9 +2217,11 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 len(between) >= 2 and between[-1].category == "comma" and units[np.first].word in ("a", "an") and \
                 np.index + 1 < len(units) and units[np.index + 1].category in ("comma", "word") and \
                 units[np.index + 1].word not in ("and", "or") and \
-                between[0].category == "positions" and all(
+                (between[0].category == "positions" or between[0].word in ("on", "in", "to") and any(
+                    u.category == "positions" for u in between)) and all(
                     u.category in ("positions", "comma") or u.category == "agents" and u.meaning == "ego"
-                    or u.word in ("the", "of") for u in between)
+                    or u.word in ("the", "of", "on", "in", "to", "my", "our", "your") for u in between)
+                # "the vehicle on my left, a red minivan,": the vehicle is the minivan
             if placed:  # "the vehicle behind me, a white Ford Transit, failed to stop": the vehicle is the Ford
                 a, b = prev.entity, np.entity
                 a.type, a.head = b.type, b.head
@@ -2534,6 +2545,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         f.add("road_straight")  # "turned left across our path": the oncoming turner
     if "toward" in f and not lane_move and not (side and f"bare_{side}" not in f):
         f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no
+    if "far_side" in f and junction and not person and not lane_move:
+        f -= {"side_left", "from_lane", "bare_left"}  # "from the far side" of a junction: across it
+        f.add("destination" if action == "stop" and "from_lane" not in e.features else "road_straight")
     if "road_straight" in f and not person:  # where it comes from wins over where it heads
         return ("road_of_straight", False) if junction else ("front_left", True)
     for s in SIDES:
