@@ -1580,3 +1580,21 @@ def test_a_vehicle_placed_by_the_ego_is_another_and_what_it_is_follows_in_commas
         ("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
     assert agents("The car on our right, a silver estate, turned left.") == [
         ("car", "go_straight", "ego"), ("car", "turn_left", "road_of_right_turn")]
+
+
+def test_a_place_named_by_the_ego_turning_makes_the_ego_turn():
+    assert agents("A woman crosses the road where the ego turns left.") == [
+        ("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination")]
+    assert lower("a jogger runs across the side road where we are turning right").scenario.ego.action == "turn_right"
+
+
+def test_braking_in_time_is_an_ego_stop_and_braking_to_avoid_is_a_reaction():
+    assert lower("The lorry ahead stopped suddenly but I braked in time.").scenario.ego.action == "stop"
+    assert lower("A kid ran out and the AV braked just in time.").scenario.ego.action == "stop"
+    assert lower("The AV braked to avoid a collision with the van.").scenario.ego.action == "go_straight"
+
+
+def test_a_counted_list_shares_the_first_items_oncoming():
+    assert agents("At the junction: 2 oncoming cars + 1 scooter, ego turning left.").count(
+        ("motorcycle", "go_straight", "road_of_straight")) == 1
+    assert ("cyclist", "go_straight", "right") in agents("Two oncoming cars and a cyclist on the right.")

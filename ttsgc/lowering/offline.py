@@ -1526,7 +1526,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and e.is_ego and {t.base for t in u.tokens} & {"brake", "brakes"} and not (
                 {t.word for t in u.tokens} & {"halt", "stop", "standstill"}) and not (
                 clause_units is not None and k is not None and any(
-                    x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])):
+                    x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])
+                or _in_time(clause_units[k + 1:k + 5])):
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
         if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
@@ -1542,6 +1543,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                           direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+def _in_time(units: list[Unit]) -> bool:
+    """'I braked in time', 'stopped just in time': the brake ended in a stop short of what was ahead."""
+    words = [t.word for u in units for t in u.tokens]
+    return any(words[i:i + 2] == ["in", "time"] for i in range(min(3, len(words))))
 
 
 def _towards_an_edge(units: list[Unit]) -> bool:
@@ -1684,6 +1691,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
+    _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
              and not _named_manoeuvre(units, i)]
@@ -1803,6 +1811,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             after.meaning = "used"
             subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
                                        "turn_" + after.tokens[-1].word, None))
+    _ego_turn_in_a_place(r, units, stage)
     for i in main_verbs:
         made = _made_to(units, i, phrases)
         for e in made or subject:
@@ -1894,6 +1903,26 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             recent.remove(e)
         recent.append(e)
     return subject
+
+
+def _ego_turn_in_a_place(r: _Reader, units: list[Unit], stage: int) -> None:
+    """'a woman crosses the road where the ego turns left': the place names the ego's turn, and its side."""
+    for j, u in enumerate(units):
+        words = {t.word for t in u.tokens}
+        if u.category != "positions" or u.meaning != "destination" or not words & {"turn", "turns", "turning"} \
+                or not words & EGO_WORDS | {"we", "us"}:
+            continue
+        ego = _ego_entity(r, stage)
+        if any(a[4].startswith("turn") for a in ego.actions):
+            continue
+        after = units[j + 1] if j + 1 < len(units) else None
+        side = None
+        if after is not None and after.category == "positions" and after.meaning in ("side_left", "side_right") \
+                and len(after.tokens) == 1:
+            side = after.meaning[5:]
+            r.mark(after)
+            after.meaning = "used"
+        ego.actions.append((stage, 2, ACTION_RANK["turn_left"], r.tick(), f"turn_{side}" if side else "turn", None))
 
 
 SIGNAL_COLOURS = {"red", "green", "amber", "yellow", "orange"}
@@ -2269,6 +2298,22 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _shared_premodifier(units: list[Unit], phrases: list[NounPhrase]) -> None:
+    """'2 oncoming cars + 1 scooter': a counted list shares the first item's oncoming when the others say
+    nothing of where they are."""
+    for p, q in zip(phrases, phrases[1:]):
+        if not (p.introduced and q.introduced and p.entity is not None and q.entity is not None) or \
+                p.entity.is_ego or q.entity.is_ego:
+            continue
+        oncoming = any(u.category == "positions" and u.meaning == "road_straight" and len(u.tokens) == 1
+                       for u in units[p.first:p.index])
+        joined = all(u.category == "comma" or u.word == "and" for u in units[p.index + 1:q.first]) and \
+            q.first > p.index + 1
+        unplaced = not any(u.category == "positions" for u in units[q.first:q.index + 2]) and not q.entity.features
+        if oncoming and joined and unplaced and units[q.first].category == "number":
+            q.entity.features.add("road_straight")
 
 
 def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
