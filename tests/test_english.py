@@ -1598,3 +1598,22 @@ def test_a_counted_list_shares_the_first_items_oncoming():
     assert agents("At the junction: 2 oncoming cars + 1 scooter, ego turning left.").count(
         ("motorcycle", "go_straight", "road_of_straight")) == 1
     assert ("cyclist", "go_straight", "right") in agents("Two oncoming cars and a cyclist on the right.")
+
+
+def test_going_around_on_a_side_is_a_lane_change_to_that_side():
+    assert lower("A bus was stopped in my lane so I went around on the right.").scenario.ego.action == \
+        "change_lane_to_right"
+    assert lower("There's a bin lorry stopped ahead, we go round it on the left.").scenario.ego.action == \
+        "change_lane_to_left"
+
+
+def test_no_signal_after_a_manoeuvre_is_no_indicator_not_a_road_without_lights():
+    assert "traffic_light" not in road("At the junction the car in front turned left without any signal.").without_signals
+    assert "traffic_light" in road("A crossroads with no signals; a truck comes from the left.").without_signals
+
+
+def test_a_person_pushing_their_bike_is_one_pedestrian():
+    assert agents("A lad pushing his bike across the road in front of me.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert agents("a man walks his bike over the crossing") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]

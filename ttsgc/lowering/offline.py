@@ -472,6 +472,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
 # -- road, weather, kinds -----------------------------------------------------------------------------------
 
 POSSESSIVES = {"its", "his", "her", "their"}
+PUSHED_ALONG = {"push", "wheel", "walk", "drag", "carry", "lift", "lead", "pushing", "wheeling", "walking"}
 HAND_HELD = {"holding", "holds", "held", "carrying", "carries", "waving", "waves", "raising", "raises"}
 
 
@@ -521,6 +522,13 @@ def _road(r: _Reader) -> RoadSpec:
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
+                any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and any(
+                    x.category == "actions" and x.tokens[0].sentence == u.tokens[0].sentence
+                    for x in units[max(0, k - 6):k]):
+            r.mark(u)
+            negated = False
+            continue  # "turned left without any signal": no indicator, not a junction without traffic lights
         if u.category == "road" and u.meaning in ("stop", "yield") and k > 1 and \
                 {units[k - 1].word, units[k - 2].word} & HAND_HELD:
             r.mark(u)
@@ -1252,6 +1260,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
+    if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
+            units[first - 1].base in PUSHED_ALONG:
+        return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
     label = u.tokens[-1].label
     if label:
         named = next((e for e in r.entities if e.label == label), None)
@@ -1504,7 +1515,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "move" and e.is_ego and clause_units is not None and k is not None and (
                 set(u.base.split()) & OVERTAKING or k + 1 < len(clause_units)
                 and clause_units[k + 1].word in ("around", "round", "past")):  # "go around it on the left"
-            side = _direction_after(r, clause_units, k) or next(
+            side = direction or _direction_after(r, clause_units, k) or next(  # "went around on the right": read once
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
             if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round"):
