@@ -1617,3 +1617,13 @@ def test_a_person_pushing_their_bike_is_one_pedestrian():
         ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
     assert agents("a man walks his bike over the crossing") == [
         ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+@pytest.mark.parametrize("prompt, later", [
+    ("The ego waits for the cyclist to pass; once clear it makes the turn.", "turn_"),
+    ("We hold at the line for the bus; when safe, we turn right.", "turn_right"),
+])
+def test_a_one_word_condition_ends_where_the_main_clause_begins(prompt, later):
+    stages = lower(prompt).scenario.stages
+    assert len(stages) == 2 and stages[0].agents[0].action == "stop"
+    assert stages[1].agents[0].is_ego and stages[1].agents[0].action.startswith(later)

@@ -961,10 +961,16 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if out or current:
                 close()
                 stage += 1
-            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear"}  # "when the light goes green": said in full
+            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"}
+            # "when the light goes green", "when it is safe": said in full
             joined_on = (prev_word in ("and", ",") or u.tokens[0].word == "and") and not new_sentence and \
                 not _starts_subject(units, k + 1)  # "indicates right and then turns"
-            close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole)
+            state = u.meaning == "once" and nxt is not None and nxt.category == "word" and \
+                nxt.word in CONDITION_STATES  # "once clear it makes the turn": the condition is that one word
+            if state:
+                skip_next = True
+            close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole
+                  and not state)
             continue
         if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
             r.mark(u)
@@ -1034,6 +1040,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
     return out
 
 
+CONDITION_STATES = {"clear", "safe", "free", "possible", "ready", "past", "through", "gone", "done"}
 COPULAS = {"is", "are", "was", "were", "am"}
 SUBJECT_PRONOUNS = {"we", "i", "it", "they", "he", "she", "you"}
 
