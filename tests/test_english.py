@@ -1627,3 +1627,9 @@ def test_a_one_word_condition_ends_where_the_main_clause_begins(prompt, later):
     stages = lower(prompt).scenario.stages
     assert len(stages) == 2 and stages[0].agents[0].action == "stop"
     assert stages[1].agents[0].is_ego and stages[1].agents[0].action.startswith(later)
+
+
+def test_a_parent_and_her_little_ones_are_counted_people_and_someone_in_a_rule_is_nobody():
+    assert agents("A mum and her two little ones cross at the zebra.").count(
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")) == 3
+    assert len(agents("A girl was on the crossing. Once someone is on a crossing, you stop.")) == 2

@@ -1132,6 +1132,10 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
         return True
     if t.question and _asks_what_to_do(tokens, t.sentence):
         return True
+    if u.category == "agents" and t.word in ANYONE and before is not None and \
+            before.word in ("once", "when", "whenever", "if") and any(
+                x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
+        return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
     if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
             (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
             and first.word in QUESTION_WORDS:
