@@ -1634,3 +1634,11 @@ def test_a_parent_and_her_little_ones_are_counted_people_and_someone_in_a_rule_i
         ("pedestrian", "cross_the_road", "near_the_crosswalk")) == 3
     assert [a for a in agents("A girl was on the crossing. Once someone is on a crossing, you stop.")
             if a[2] != "ego"] == [("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_blocker_out_of_a_side_road_blocks_from_the_front_and_the_junction_stays():
+    lowered = lower("a van pulls out of the road on the right and stops there blocking me")
+    assert ("car", "block_the_ego", "front") in agents("a van pulls out of the road on the right and stops there "
+                                                       "blocking me")
+    assert lowered.scenario.road.junction is True
+    assert any("blocks from the front" in note for note in lowered.notes)

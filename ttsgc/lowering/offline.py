@@ -2647,9 +2647,6 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
-    if action == "block" and behind and side is None and not person:
-        behind = False  # "the car behind me boxes me in": a blocker is met beside or ahead, never behind
-        ahead = True
     if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"bare_{side}" in f or f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
