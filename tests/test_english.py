@@ -1642,3 +1642,10 @@ def test_a_blocker_out_of_a_side_road_blocks_from_the_front_and_the_junction_sta
                                                        "blocking me")
     assert lowered.scenario.road.junction is True
     assert any("blocks from the front" in note for note in lowered.notes)
+
+
+def test_the_side_signalled_is_the_side_of_a_turn_or_lane_change_said_without_one():
+    assert ("cyclist", "turn_right", "front") in agents(
+        "The cyclist ahead of me signalled right and moved out into the middle of the road to turn.")
+    assert lower("I indicated right and made the turn into the side road.").scenario.ego.action == "turn_right"
+    assert ("bus", "change_lane_to_right", "front") in agents("The bus in front indicates right and changes lane.")

@@ -1834,6 +1834,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
                                        "turn_" + after.tokens[-1].word, None))
     _ego_turn_in_a_place(r, units, stage)
+    for u in units:
+        words = {t.word for t in u.tokens}
+        if u.category == "actions" and u.meaning == "try" and {t.base for t in u.tokens} & {"signal", "indicate"} \
+                and words & set(SIDES):
+            for e in subject:  # "signalled right and moved out to turn": the side of the turn it then makes
+                e.features.add("signals_" + ("left" if "left" in words else "right"))
     for i in main_verbs:
         made = _made_to(units, i, phrases)
         for e in made or subject:
@@ -2691,11 +2697,13 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
         return "go_straight"
     if action in ("turn_left", "turn_right"):
         return action
+    signalled = next((s for s in SIDES if f"signals_{s}" in e.features), None)
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or UNSPECIFIED['turn_direction']}"
+        return f"turn_{direction or signalled or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action == "lane_change":
+        direction = direction or signalled
         if direction:
             return f"change_lane_to_{direction}"
         return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
@@ -3184,11 +3192,13 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
                      None)
     if action in ("turn_left", "turn_right", "stop"):
         return action
+    signalled = next((s for s in SIDES if f"signals_{s}" in e.features), None)
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or UNSPECIFIED['turn_direction']}"
+        return f"turn_{direction or signalled or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
+        direction = direction or signalled
         said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
             "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
         return f"change_lane_to_{direction or said or _overtaking_side('ego_lane_change_direction')}"  # "pulling out"
