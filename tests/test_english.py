@@ -1649,3 +1649,9 @@ def test_the_side_signalled_is_the_side_of_a_turn_or_lane_change_said_without_on
         "The cyclist ahead of me signalled right and moved out into the middle of the road to turn.")
     assert lower("I indicated right and made the turn into the side road.").scenario.ego.action == "turn_right"
     assert ("bus", "change_lane_to_right", "front") in agents("The bus in front indicates right and changes lane.")
+
+
+def test_pulling_back_in_after_overtaking_is_a_cut_in_and_a_schoolbus_is_a_bus():
+    assert ("truck", "change_lane_to_left", "back_right") in agents(
+        "An HGV overtakes us on the motorway and pulls back in too early, forcing us to brake.")
+    assert ("bus", "stop", "front_left") in agents("A schoolbus has stopped on the opposite side of the road.")
