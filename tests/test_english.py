@@ -1655,3 +1655,11 @@ def test_pulling_back_in_after_overtaking_is_a_cut_in_and_a_schoolbus_is_a_bus()
     assert ("truck", "change_lane_to_left", "back_right") in agents(
         "An HGV overtakes us on the motorway and pulls back in too early, forcing us to brake.")
     assert ("bus", "stop", "front_left") in agents("A schoolbus has stopped on the opposite side of the road.")
+
+
+def test_a_vehicle_in_front_pulling_out_leaves_the_ego_lane_and_overtaking_someone_else_is_no_overtake_of_the_ego():
+    assert ("car", "change_lane_to_left", "front") in agents("The car in front pulls out to overtake a cyclist.")
+    assert ("cyclist", "change_lane_to_left", "front") in agents(
+        "Two cyclists riding side by side ahead of the ego, one of them swerves out to avoid a pothole.")
+    assert ("truck", "change_lane_to_right", "front") in agents("On the motorway the lorry in front pulls out.")
+    assert ("car", "change_lane_to_right", "front_left") in agents("A car pulls out in front of me.")

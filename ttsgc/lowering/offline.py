@@ -1537,7 +1537,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                     if x.category == "positions" and x.meaning == "side_" + side:
                         x.meaning = "used"  # the side of the ego's manoeuvre, not of what it passes
                         break
-        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
+        overtaken = next((x for x in (clause_units or [])[k + 1:k + 4] if x.category == "agents"), None) \
+            if k is not None else None
+        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING and not (
+                overtaken is not None and overtaken.meaning not in ("ego", "none")):  # not "to overtake a cyclist"
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
@@ -1551,6 +1554,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                     x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])
                 or _in_time(clause_units[k + 1:k + 5])):
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
+        out_after = clause_units is not None and k is not None and k + 1 < len(clause_units) and \
+            clause_units[k + 1].word == "out"
+        if action == "cut_in" and not e.is_ego and ([t.word for t in u.tokens][-1:] == ["out"] or out_after):
+            e.features.add("moves_out")  # "the car in front pulls out", "swerves out": out of the lane it is in
         if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
         if e.is_ego and action == "cut_in" and direction is None and any(
@@ -2653,7 +2660,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
-    if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
+    moving_out = "moves_out" in f and "ahead" in f and side is None and "ego_lane" not in f
+    if action == "cut_in" and not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"bare_{side}" in f or f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
@@ -2710,6 +2718,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "cut_in":
         if e.is_ego:
             return f"change_lane_to_{direction}" if direction else "go_straight"
+        if side_now is None and position == "front" and "moves_out" in e.features:
+            return "change_lane_to_right" if _KEEPS_LEFT.get() else "change_lane_to_left"  # out, away from the kerb
         if side_now is None:
             return "block_the_ego" if position == "front" and e.type != "pedestrian" else "go_straight"
         return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
