@@ -1663,3 +1663,10 @@ def test_a_vehicle_in_front_pulling_out_leaves_the_ego_lane_and_overtaking_someo
         "Two cyclists riding side by side ahead of the ego, one of them swerves out to avoid a pothole.")
     assert ("truck", "change_lane_to_right", "front") in agents("On the motorway the lorry in front pulls out.")
     assert ("car", "change_lane_to_right", "front_left") in agents("A car pulls out in front of me.")
+
+
+def test_vehicles_doing_something_after_with_are_agents_and_speed_as_a_noun_is_no_haste():
+    assert agents("I keep stalling when turning left at a busy junction with cars coming from the right.").count(
+        ("car", "go_straight", "road_of_right_turn")) == 2
+    lowered = lower("Lorry to my left, coach to my right, both doing the same speed as me.")
+    assert all(a.behavior != "aggressive" for a in lowered.scenario.agents())

@@ -1329,7 +1329,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         before -= 1  # "between parked cars"
     scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS or \
         any(m.category == "word" and m.word in SCENERY_PREPOSITIONS for m in modifiers)  # "from between parked cars"
-    if scenery and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
+    doing = head + 1 < len(units) and units[head + 1].category in ("actions", "positions") and \
+        units[head + 1].tokens[0].word.endswith("ing")  # "a junction with cars coming from the right": agents
+    if scenery and not doing and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
             not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
             count is None and plural and before >= lo and "of" in words
             and units[before].word in ("row", "line", "lot", "rows")):  # "a row of parked cars": scenery
@@ -1563,7 +1565,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if e.is_ego and action == "cut_in" and direction is None and any(
                 a[0] == stage and a[4] in ("lane_left", "lane_right") for a in e.actions):
             return  # "merges left ... and has to slot in between them": the same lane change, its side said before
-        if u.tokens[0].base in RUSHING and not e.is_ego:
+        noun = clause_units is not None and k is not None and k > 0 and clause_units[k - 1].word in (
+            "same", "the", "a", "full", "high", "top", "its", "his", "her", "their", "at")  # "doing the same speed"
+        if u.tokens[0].base in RUSHING and not e.is_ego and not noun:
             e.behavior = e.behavior or "aggressive"
         earlier = clause_units is not None and k is not None and any(
             x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
