@@ -1670,3 +1670,11 @@ def test_vehicles_doing_something_after_with_are_agents_and_speed_as_a_noun_is_n
         ("car", "go_straight", "road_of_right_turn")) == 2
     lowered = lower("Lorry to my left, coach to my right, both doing the same speed as me.")
     assert all(a.behavior != "aggressive" for a in lowered.scenario.agents())
+
+
+def test_a_percentage_of_the_vehicle_width_counts_no_vehicles_and_stepping_onto_the_crossing_crosses():
+    assert agents("An adult pedestrian walks from the nearside into the path of the VUT, struck at 25% of the "
+                  "vehicle width.") == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
+        "An elderly man is waiting at the zebra crossing; he steps onto the crossing as the player arrives.")
+    assert ("pedestrian", "on_the_sidewalk", "right") in agents("A woman steps onto the pavement.")
