@@ -1678,3 +1678,12 @@ def test_a_percentage_of_the_vehicle_width_counts_no_vehicles_and_stepping_onto_
     assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
         "An elderly man is waiting at the zebra crossing; he steps onto the crossing as the player arrives.")
     assert ("pedestrian", "on_the_sidewalk", "right") in agents("A woman steps onto the pavement.")
+
+
+def test_a_rider_on_a_two_wheeler_is_one_agent_and_running_back_is_no_place_behind():
+    assert agents("A delivery rider on an e-bike went through the red from the opposite direction as I turned "
+                  "left.") == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "road_of_straight")]
+    assert agents("A rider on a motorbike overtakes me.") == [
+        ("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "The pedestrian hesitates in the middle of the road, then runs back to the kerb.")

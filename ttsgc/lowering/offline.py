@@ -2276,7 +2276,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
-            driver = prev.entity.head in DRIVERS and ([u.word for u in between] in (
+            driver = (prev.entity.head in DRIVERS or prev.entity.head.split()[-1] == "rider" and
+                      np.entity.type in V.TWO_WHEELER_TYPES) and ([u.word for u in between] in (
                 ["in"], ["driving"], ["on"], ["of"]) or not between and units[np.first].word == "of") or (
                 # "the driver of a stopped bus": the bus
                 prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
