@@ -1687,3 +1687,11 @@ def test_a_rider_on_a_two_wheeler_is_one_agent_and_running_back_is_no_place_behi
         ("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
     assert ("pedestrian", "cross_the_road", "front") in agents(
         "The pedestrian hesitates in the middle of the road, then runs back to the kerb.")
+
+
+def test_where_the_ego_ends_in_a_later_stage_does_not_move_what_it_passed():
+    stages = lower("The ego overtakes a slow bus by changing to the left lane, then returns to the right lane "
+                   "ahead of the bus.").scenario.stages
+    assert [(a.type, a.action, a.relative_to_ego) for a in stages[0].agents] == [
+        ("car", "change_lane_to_left", None), ("bus", "go_straight", "front")]
+    assert stages[1].agents[0].action == "change_lane_to_right"
