@@ -1695,3 +1695,11 @@ def test_where_the_ego_ends_in_a_later_stage_does_not_move_what_it_passed():
     assert [(a.type, a.action, a.relative_to_ego) for a in stages[0].agents] == [
         ("car", "change_lane_to_left", None), ("bus", "go_straight", "front")]
     assert stages[1].agents[0].action == "change_lane_to_right"
+
+
+def test_a_cut_in_from_alongside_starts_level():
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "A red Audi which had been driving beside me on my right moved across into my lane, directly in front of "
+        "me, which made me brake hard.")
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "A red Audi which was alongside me, on my right, moved into my lane just ahead of me.")
