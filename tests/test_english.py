@@ -1703,3 +1703,9 @@ def test_a_cut_in_from_alongside_starts_level():
         "me, which made me brake hard.")
     assert ("car", "change_lane_to_left", "right") in agents(
         "A red Audi which was alongside me, on my right, moved into my lane just ahead of me.")
+
+
+def test_a_light_turning_green_in_its_own_sentence_starts_a_stage():
+    stages = lower("Ego stopped at red. Light goes green. Ego turns left. Cyclist on the left goes straight.").scenario.stages
+    assert [a.action for a in stages[0].agents] == ["stop"]
+    assert ("turn_left", "go_straight") == tuple(a.action for a in stages[1].agents)
