@@ -1709,3 +1709,8 @@ def test_a_light_turning_green_in_its_own_sentence_starts_a_stage():
     stages = lower("Ego stopped at red. Light goes green. Ego turns left. Cyclist on the left goes straight.").scenario.stages
     assert [a.action for a in stages[0].agents] == ["stop"]
     assert ("turn_left", "go_straight") == tuple(a.action for a in stages[1].agents)
+
+
+def test_a_parked_vehicle_at_the_kerb_ahead_needs_no_second_lane():
+    assert road("A pedestrian emerges from behind a parked bus on the right and crosses in front of the ego.").lanes < 2
+    assert road("A van is driving on the left ahead of us.").lanes >= 2

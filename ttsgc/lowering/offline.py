@@ -3128,7 +3128,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
         resolved[e.key] = (action, direction)
         positions[e.key] = position
-        if is_oncoming:
+        parked_beside = "parked" in e.features and action == "stop" and position in ("front_left", "front_right") \
+            and e.type not in V.VULNERABLE_TYPES  # "a parked bus on the right": at the kerb, no lane of its own
+        if is_oncoming or parked_beside:
             oncoming.add(e.key)
     for e in others:  # "in front of a truck": at the truck's place, unless the text placed it itself
         t = e.relative_to
