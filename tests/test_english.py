@@ -1714,3 +1714,9 @@ def test_a_light_turning_green_in_its_own_sentence_starts_a_stage():
 def test_a_parked_vehicle_at_the_kerb_ahead_needs_no_second_lane():
     assert road("A pedestrian emerges from behind a parked bus on the right and crosses in front of the ego.").lanes < 2
     assert road("A van is driving on the left ahead of us.").lanes >= 2
+
+
+def test_vehicles_chasing_the_ego_are_behind_it():
+    assert agents("Two police cars chase the player down the highway.") == [
+        ("car", "go_straight", "ego"), ("police", "go_straight", "back"), ("police", "go_straight", "back")]
+    assert ("police", "go_straight", "back") in agents("A police car is pursuing us.")

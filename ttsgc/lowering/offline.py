@@ -73,7 +73,7 @@ LIGHT_PARTICIPLES = {"made", "taken", "performed", "executed", "done", "initiate
 SUBORDINATE = {"if", "when", "as", "while", "whilst", "because", "although", "though", "until", "before"}
 RELATIVES = {"which", "who", "that", "whose", "whom"}
 # Relational verbs: (subject's place relative to the object) when one of them is the ego.
-FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
+FOLLOWING = {"follow", "tailgate", "trail", "chase", "pursue", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
 OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake", "around", "split", "splitting"}
