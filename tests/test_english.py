@@ -1720,3 +1720,10 @@ def test_vehicles_chasing_the_ego_are_behind_it():
     assert agents("Two police cars chase the player down the highway.") == [
         ("car", "go_straight", "ego"), ("police", "go_straight", "back"), ("police", "go_straight", "back")]
     assert ("police", "go_straight", "back") in agents("A police car is pursuing us.")
+
+
+def test_running_along_the_pavement_is_no_haste_but_running_across_is():
+    assert all(a.behavior != "aggressive" for a in lower(
+        "Two joggers are running side by side on the pavement to our left.").scenario.agents())
+    assert [a.behavior for a in lower("A child runs across the road.").scenario.agents() if not a.is_ego] == [
+        "aggressive"]

@@ -1567,7 +1567,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "merges left ... and has to slot in between them": the same lane change, its side said before
         noun = clause_units is not None and k is not None and k > 0 and clause_units[k - 1].word in (
             "same", "the", "a", "full", "high", "top", "its", "his", "her", "their", "at")  # "doing the same speed"
-        if u.tokens[0].base in RUSHING and not e.is_ego and not noun:
+        jogging = e.type == "pedestrian" and action in ("move", "walk")  # "joggers running on the pavement"
+        if u.tokens[0].base in RUSHING and not e.is_ego and not noun and not jogging:
             e.behavior = e.behavior or "aggressive"
         earlier = clause_units is not None and k is not None and any(
             x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
