@@ -1159,10 +1159,10 @@ def test_british_and_terse_idioms(prompt, expected):
     assert expected in agents(prompt)
 
 
-def test_a_group_of_n_is_n_agents_and_counted_parked_cars_between_are_scenery():
+def test_a_group_of_n_is_n_agents_and_counted_parked_cars_between_are_agents():
     assert agents("a family of three crosses at the zebra").count(
         ("pedestrian", "cross_the_road", "near_the_crosswalk")) == 3
-    assert [t for t, _, _ in agents("A boy runs out from between two parked vans.")].count("car") == 1
+    assert [t for t, _, _ in agents("A boy runs out from between two parked vans.")].count("car") == 3  # ego + 2
 
 
 def test_a_state_in_the_past_perfect_is_before_the_story_and_a_singular_car_is_no_heading():
@@ -1537,3 +1537,193 @@ def test_a_placed_vehicle_then_what_it_is_in_commas_is_one_agent():
     assert agents("The car behind us, a grey hatchback, braked sharply.") == [
         ("car", "go_straight", "ego"), ("car", "stop", "back")]
     assert len(agents("A car behind us, a bus and a van are all stopped.")) == 4  # a list, no apposition
+
+
+@pytest.mark.parametrize("prompt", [
+    "The taxi ahead of us pulls over and stops.",
+    "A delivery van in front of me pulled over to the kerb and stopped.",
+    "The lorry in front pulls in and parks.",
+])
+def test_pulling_over_to_stop_ends_in_a_stop(prompt):
+    assert ("car" if "lorry" not in prompt else "truck", "stop", "front") in agents(prompt)
+
+
+def test_a_blocker_is_never_placed_straight_behind_the_ego():
+    assert agents("The van behind me blocks me in.") == [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]
+    assert ("car", "block_the_ego", "back_left") in agents(  # the lane beside, where it passed: playable
+        "A saloon overtakes me on the left, cuts me up and stops dead in front of me.")
+
+
+def test_counted_vehicles_a_person_steps_out_from_between_are_agents_at_that_kerb():
+    assert agents("A boy darts out from the right between two parked vans.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front_right"), ("car", "stop", "front_right"),
+        ("pedestrian", "cross_the_road", "front_right")]
+    assert road("A boy darts out from the right between two parked vans.").lanes < 2  # parked at the kerb
+    assert agents("A lad on a bike shot out from between two lorries on my left.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front_left"),
+        ("truck", "stop", "front_left"), ("truck", "stop", "front_left")]
+    assert len(agents("A kid runs out between parked cars.")) == 2  # uncounted: scenery
+
+
+def test_the_far_side_of_a_junction_is_across_it():
+    assert ("bus", "go_straight", "road_of_straight") in agents(
+        "At the crossroads I wait to turn right while a bus comes through from the far side.")
+    assert ("truck", "stop", "at_the_destination") in agents(
+        "Going straight over the lights, a lorry is parked on the far side of the junction.")
+    assert ("car", "stop", "left") in agents("On the dual carriageway a van sits in the far side lane.")
+
+
+def test_a_vehicle_placed_by_the_ego_is_another_and_what_it_is_follows_in_commas():
+    assert agents("The car on my left at the 4-way stop went straight.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+    assert agents("At a four-way stop the vehicle on my left, a red minivan, proceeded first.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+    assert agents("The car on our right, a silver estate, turned left.") == [
+        ("car", "go_straight", "ego"), ("car", "turn_left", "road_of_right_turn")]
+
+
+def test_a_place_named_by_the_ego_turning_makes_the_ego_turn():
+    assert agents("A woman crosses the road where the ego turns left.") == [
+        ("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination")]
+    assert lower("a jogger runs across the side road where we are turning right").scenario.ego.action == "turn_right"
+
+
+def test_braking_in_time_is_an_ego_stop_and_braking_to_avoid_is_a_reaction():
+    assert lower("The lorry ahead stopped suddenly but I braked in time.").scenario.ego.action == "stop"
+    assert lower("A kid ran out and the AV braked just in time.").scenario.ego.action == "stop"
+    assert lower("The AV braked to avoid a collision with the van.").scenario.ego.action == "go_straight"
+
+
+def test_a_counted_list_shares_the_first_items_oncoming():
+    assert agents("At the junction: 2 oncoming cars + 1 scooter, ego turning left.").count(
+        ("motorcycle", "go_straight", "road_of_straight")) == 1
+    assert ("cyclist", "go_straight", "right") in agents("Two oncoming cars and a cyclist on the right.")
+
+
+def test_going_around_on_a_side_is_a_lane_change_to_that_side():
+    assert lower("A bus was stopped in my lane so I went around on the right.").scenario.ego.action == \
+        "change_lane_to_right"
+    assert lower("There's a bin lorry stopped ahead, we go round it on the left.").scenario.ego.action == \
+        "change_lane_to_left"
+
+
+def test_no_signal_after_a_manoeuvre_is_no_indicator_not_a_road_without_lights():
+    assert "traffic_light" not in road("At the junction the car in front turned left without any signal.").without_signals
+    assert "traffic_light" in road("A crossroads with no signals; a truck comes from the left.").without_signals
+
+
+def test_a_person_pushing_their_bike_is_one_pedestrian():
+    assert agents("A lad pushing his bike across the road in front of me.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert agents("a man walks his bike over the crossing") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+@pytest.mark.parametrize("prompt, later", [
+    ("The ego waits for the cyclist to pass; once clear it makes the turn.", "turn_"),
+    ("We hold at the line for the bus; when safe, we turn right.", "turn_right"),
+])
+def test_a_one_word_condition_ends_where_the_main_clause_begins(prompt, later):
+    stages = lower(prompt).scenario.stages
+    assert len(stages) == 2 and stages[0].agents[0].action == "stop"
+    assert stages[1].agents[0].is_ego and stages[1].agents[0].action.startswith(later)
+
+
+def test_a_parent_and_her_little_ones_are_counted_people_and_someone_in_a_rule_is_nobody():
+    assert agents("A mum and her two little ones cross at the zebra.").count(
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")) == 3
+    assert [a for a in agents("A girl was on the crossing. Once someone is on a crossing, you stop.")
+            if a[2] != "ego"] == [("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_blocker_out_of_a_side_road_blocks_from_the_front_and_the_junction_stays():
+    lowered = lower("a van pulls out of the road on the right and stops there blocking me")
+    assert ("car", "block_the_ego", "front") in agents("a van pulls out of the road on the right and stops there "
+                                                       "blocking me")
+    assert lowered.scenario.road.junction is True
+    assert any("blocks from the front" in note for note in lowered.notes)
+
+
+def test_the_side_signalled_is_the_side_of_a_turn_or_lane_change_said_without_one():
+    assert ("cyclist", "turn_right", "front") in agents(
+        "The cyclist ahead of me signalled right and moved out into the middle of the road to turn.")
+    assert lower("I indicated right and made the turn into the side road.").scenario.ego.action == "turn_right"
+    assert ("bus", "change_lane_to_right", "front") in agents("The bus in front indicates right and changes lane.")
+
+
+def test_pulling_back_in_after_overtaking_is_a_cut_in_and_a_schoolbus_is_a_bus():
+    assert ("truck", "change_lane_to_left", "back_right") in agents(
+        "An HGV overtakes us on the motorway and pulls back in too early, forcing us to brake.")
+    assert ("bus", "stop", "front_left") in agents("A schoolbus has stopped on the opposite side of the road.")
+
+
+def test_a_vehicle_in_front_pulling_out_leaves_the_ego_lane_and_overtaking_someone_else_is_no_overtake_of_the_ego():
+    assert ("car", "change_lane_to_left", "front") in agents("The car in front pulls out to overtake a cyclist.")
+    assert ("cyclist", "change_lane_to_left", "front") in agents(
+        "Two cyclists riding side by side ahead of the ego, one of them swerves out to avoid a pothole.")
+    assert ("truck", "change_lane_to_right", "front") in agents("On the motorway the lorry in front pulls out.")
+    assert ("car", "change_lane_to_right", "front_left") in agents("A car pulls out in front of me.")
+
+
+def test_vehicles_doing_something_after_with_are_agents_and_speed_as_a_noun_is_no_haste():
+    assert agents("I keep stalling when turning left at a busy junction with cars coming from the right.").count(
+        ("car", "go_straight", "road_of_right_turn")) == 2
+    lowered = lower("Lorry to my left, coach to my right, both doing the same speed as me.")
+    assert all(a.behavior != "aggressive" for a in lowered.scenario.agents())
+
+
+def test_a_percentage_of_the_vehicle_width_counts_no_vehicles_and_stepping_onto_the_crossing_crosses():
+    assert agents("An adult pedestrian walks from the nearside into the path of the VUT, struck at 25% of the "
+                  "vehicle width.") == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
+        "An elderly man is waiting at the zebra crossing; he steps onto the crossing as the player arrives.")
+    assert ("pedestrian", "on_the_sidewalk", "right") in agents("A woman steps onto the pavement.")
+
+
+def test_a_rider_on_a_two_wheeler_is_one_agent_and_running_back_is_no_place_behind():
+    assert agents("A delivery rider on an e-bike went through the red from the opposite direction as I turned "
+                  "left.") == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "road_of_straight")]
+    assert agents("A rider on a motorbike overtakes me.") == [
+        ("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "The pedestrian hesitates in the middle of the road, then runs back to the kerb.")
+
+
+def test_where_the_ego_ends_in_a_later_stage_does_not_move_what_it_passed():
+    stages = lower("The ego overtakes a slow bus by changing to the left lane, then returns to the right lane "
+                   "ahead of the bus.").scenario.stages
+    assert [(a.type, a.action, a.relative_to_ego) for a in stages[0].agents] == [
+        ("car", "change_lane_to_left", None), ("bus", "go_straight", "front")]
+    assert stages[1].agents[0].action == "change_lane_to_right"
+
+
+def test_a_cut_in_from_alongside_starts_level():
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "A red Audi which had been driving beside me on my right moved across into my lane, directly in front of "
+        "me, which made me brake hard.")
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "A red Audi which was alongside me, on my right, moved into my lane just ahead of me.")
+
+
+def test_a_light_turning_green_in_its_own_sentence_starts_a_stage():
+    stages = lower("Ego stopped at red. Light goes green. Ego turns left. Cyclist on the left goes straight.").scenario.stages
+    assert [a.action for a in stages[0].agents] == ["stop"]
+    assert ("turn_left", "go_straight") == tuple(a.action for a in stages[1].agents)
+
+
+def test_a_parked_vehicle_at_the_kerb_ahead_needs_no_second_lane():
+    assert road("A pedestrian emerges from behind a parked bus on the right and crosses in front of the ego.").lanes < 2
+    assert road("A van is driving on the left ahead of us.").lanes >= 2
+
+
+def test_vehicles_chasing_the_ego_are_behind_it():
+    assert agents("Two police cars chase the player down the highway.") == [
+        ("car", "go_straight", "ego"), ("police", "go_straight", "back"), ("police", "go_straight", "back")]
+    assert ("police", "go_straight", "back") in agents("A police car is pursuing us.")
+
+
+def test_running_along_the_pavement_is_no_haste_but_running_across_is():
+    assert all(a.behavior != "aggressive" for a in lower(
+        "Two joggers are running side by side on the pavement to our left.").scenario.agents())
+    assert [a.behavior for a in lower("A child runs across the road.").scenario.agents() if not a.is_ego] == [
+        "aggressive"]

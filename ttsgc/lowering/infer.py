@@ -17,6 +17,7 @@ from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Stage, find_probl
 
 SIDE_POSITIONS = frozenset({"left", "right", "front_left", "front_right", "back_left", "back_right"})
 LANE_CHANGES = frozenset({"change_lane_to_left", "change_lane_to_right"})
+BLOCKER_CANNOT_START = V.JUNCTION_POSITIONS | {"back"}  # behind the ego or on another road of the junction
 PEDESTRIAN_FOR_VEHICLE_ACTION = {"block_the_ego": "cross_the_road", "go_straight": "on_the_sidewalk",
                                  "turn_left": "cross_the_road", "turn_right": "cross_the_road",
                                  "change_lane_to_left": "cross_the_road", "change_lane_to_right": "cross_the_road"}
@@ -41,11 +42,16 @@ def language_allows_later_ego() -> bool:
 
 def infer_plan(draft: Scenario, oncoming: frozenset[str] = frozenset()) -> Inferred:
     """Repair what cannot be, then add what the agents imply about the road; `oncoming` names agents at a
-    side position because they drive the other way (they need no second lane in the ego's direction)."""
+    side position because they drive the other way or stand parked at the kerb (they need no second lane in the
+    ego's direction)."""
     notes: list[str] = []
     road = _repair_road(draft.road, notes)
+    junction_said = _implied_road(road, draft.stages, frozenset(), []).junction  # before blockers are moved
     stages = _repair_agents(draft.stages, road, notes)
     road = _implied_road(road, stages, oncoming, notes)
+    if junction_said is True and road.junction is None:
+        road = road.model_copy(update={"junction": True})
+        notes.append("inferred: at junction (the blocker came out of a road of the junction)")
     comments = dict(draft.comments)
     if notes:
         old = comments.get("scenario", Comment())
@@ -145,6 +151,10 @@ def _repair_agent(agent: Agent, road: RoadSpec, notes: list[str]) -> Agent:
     if not agent.is_ego and position is None:
         update["relative_to_ego"] = position = "front"
         notes.append(f"inferred: {who} has no position; placed at front")
+    if action == "block_the_ego" and position in BLOCKER_CANNOT_START:
+        notes.append(f"repaired: {who} blocks the ego but starts at {position}, out of the ego's path; "
+                     "it blocks from the front")  # a blocker stops in the ego's path: ahead of it or beside it
+        position = update["relative_to_ego"] = "front"
     if road.junction is False:
         if action in V.TURN_ACTIONS:
             notes.append(f"repaired: {who} cannot {action} on a road that is not at a junction; it goes straight")

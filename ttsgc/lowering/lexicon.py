@@ -307,6 +307,8 @@ def tokenize(text: str) -> list[Token]:
                   text)  # "a truck, or maybe a van,": one agent, not an alternative as well
     text = re.sub(r"\b(left|right) hand\b", r"\1", text)  # "the right-hand lane"
     text = re.sub(r"\b(that|this|its|our|their) (left|right) lane", r"the \2 lane", text)
+    text = re.sub(r"(\d)\s*%\s*(?:of\s+(?:the\s+)?(?:[a-z]+\s+)?(?:width|length|overlap)\b)?", r"\1 percent ", text)
+    # "at 25% of the vehicle width": an offset, no count of vehicles
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
     text = re.sub(r"\b(v\d|vehicle \d|unit \d) \(([^()]*)\)", r"\1 , \2 ,", text)  # "vehicle 1 (the AV)": apposition
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"

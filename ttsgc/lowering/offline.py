@@ -73,7 +73,7 @@ LIGHT_PARTICIPLES = {"made", "taken", "performed", "executed", "done", "initiate
 SUBORDINATE = {"if", "when", "as", "while", "whilst", "because", "although", "though", "until", "before"}
 RELATIVES = {"which", "who", "that", "whose", "whom"}
 # Relational verbs: (subject's place relative to the object) when one of them is the ego.
-FOLLOWING = {"follow", "tailgate", "trail", "chase", "rear end", "rear", "tail"}
+FOLLOWING = {"follow", "tailgate", "trail", "chase", "pursue", "rear end", "rear", "tail"}
 HIDING = {"hide", "conceal", "occlude", "mask", "obscure"}
 LEADING = {"lead", "precede"}
 OVERTAKING = {"overtake", "pass", "past", "squeeze", "filter", "undertake", "around", "split", "splitting"}
@@ -472,6 +472,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
 # -- road, weather, kinds -----------------------------------------------------------------------------------
 
 POSSESSIVES = {"its", "his", "her", "their"}
+PUSHED_ALONG = {"push", "wheel", "walk", "drag", "carry", "lift", "lead", "pushing", "wheeling", "walking"}
 HAND_HELD = {"holding", "holds", "held", "carrying", "carries", "waving", "waves", "raising", "raises"}
 
 
@@ -521,6 +522,13 @@ def _road(r: _Reader) -> RoadSpec:
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
+                any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and any(
+                    x.category == "actions" and x.tokens[0].sentence == u.tokens[0].sentence
+                    for x in units[max(0, k - 6):k]):
+            r.mark(u)
+            negated = False
+            continue  # "turned left without any signal": no indicator, not a junction without traffic lights
         if u.category == "road" and u.meaning in ("stop", "yield") and k > 1 and \
                 {units[k - 1].word, units[k - 2].word} & HAND_HELD:
             r.mark(u)
@@ -953,10 +961,16 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if out or current:
                 close()
                 stage += 1
-            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear"}  # "when the light goes green": said in full
+            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"}
+            # "when the light goes green", "when it is safe": said in full
             joined_on = (prev_word in ("and", ",") or u.tokens[0].word == "and") and not new_sentence and \
                 not _starts_subject(units, k + 1)  # "indicates right and then turns"
-            close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole)
+            state = u.meaning == "once" and nxt is not None and nxt.category == "word" and \
+                nxt.word in CONDITION_STATES  # "once clear it makes the turn": the condition is that one word
+            if state:
+                skip_next = True
+            close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole
+                  and not state)
             continue
         if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
             r.mark(u)
@@ -976,6 +990,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 tail.pop()
             closed = next((x.category == "comma" for x in units[k + 1:k + 8] if x.category in ("comma", "actions")
                            or x.word in ("and", "or")), False)
+            while len(tail) >= 3 and tail[-1].category == "positions" and tail[-2].word in (
+                    "my", "our", "your", "the") and tail[-3].word in ("on", "in", "to"):
+                del tail[-3:-1]  # "the vehicle on my left, a red minivan,": placed as "the vehicle left"
             labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
@@ -1023,6 +1040,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
     return out
 
 
+CONDITION_STATES = {"clear", "safe", "free", "possible", "ready", "past", "through", "gone", "done"}
 COPULAS = {"is", "are", "was", "were", "am"}
 SUBJECT_PRONOUNS = {"we", "i", "it", "they", "he", "she", "you"}
 
@@ -1114,6 +1132,10 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
         return True
     if t.question and _asks_what_to_do(tokens, t.sentence):
         return True
+    if u.category == "agents" and t.word in ANYONE and before is not None and \
+            before.word in ("once", "when", "whenever", "if") and any(
+                x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
+        return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
     if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
             (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
             and first.word in QUESTION_WORDS:
@@ -1249,6 +1271,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
+    if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
+            units[first - 1].base in PUSHED_ALONG:
+        return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
     label = u.tokens[-1].label
     if label:
         named = next((e for e in r.entities if e.label == label), None)
@@ -1304,8 +1329,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         before -= 1  # "between parked cars"
     scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS or \
         any(m.category == "word" and m.word in SCENERY_PREPOSITIONS for m in modifiers)  # "from between parked cars"
-    between = before >= lo and units[before].word == "between"  # "from between two parked cars": scenery too
-    if scenery and plural and (count is None or between) and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
+    doing = head + 1 < len(units) and units[head + 1].category in ("actions", "positions") and \
+        units[head + 1].tokens[0].word.endswith("ing")  # "a junction with cars coming from the right": agents
+    if scenery and not doing and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
             not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
             count is None and plural and before >= lo and "of" in words
             and units[before].word in ("row", "line", "lot", "rows")):  # "a row of parked cars": scenery
@@ -1341,6 +1367,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         entity.group_open = entity.count
     entity.aliases |= {m.base for m in units[max(lo, first - 1):head] if m.category == "agents" and m.meaning == kind}
     # "a silver Ford Focus ... the Ford": the make names it too
+    if scenery and before >= lo and units[before].word == "between":
+        entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
     if not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
@@ -1364,10 +1392,13 @@ OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side
 def _ego_object_follows(units: list[Unit], head: int) -> bool:
     """'the car overtakes us', 'the car swerves into our lane': the ego is named in the car's own predicate
     (before any other agent), so the car is another road user."""
-    for x in units[head + 1:]:
+    for j, x in enumerate(units[head + 1:], head + 1):
         if x.category == "agents" and x.meaning == "ego" or x.category == "positions" and {
                 t.word for t in x.tokens} & {"us", "our", "me", "my", "ego", "you", "your"}:
             return True
+        if x.category == "word" and x.word in ("my", "our", "your") and j + 1 < len(units) and \
+                units[j + 1].category == "positions":
+            return True  # "the car on my left": placed by the ego, so another
         if x.category == "agents" and x.meaning != "none":
             return False
     return False
@@ -1460,6 +1491,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("bare_" + u.meaning[5:])
         if u.meaning in ("side_left", "side_right") and u.tokens[0].word == "from":
             e.features.add("from_lane")
+        if u.meaning == "side_left" and {t.word for t in u.tokens} & {"far", "farside"} and \
+                "lane" not in {t.word for t in u.tokens}:
+            e.features.add("far_side")  # the far lane of a road, or across a junction: decided in _position
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
@@ -1494,7 +1528,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "move" and e.is_ego and clause_units is not None and k is not None and (
                 set(u.base.split()) & OVERTAKING or k + 1 < len(clause_units)
                 and clause_units[k + 1].word in ("around", "round", "past")):  # "go around it on the left"
-            side = _direction_after(r, clause_units, k) or next(
+            side = direction or _direction_after(r, clause_units, k) or next(  # "went around on the right": read once
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
             if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round"):
@@ -1505,7 +1539,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                     if x.category == "positions" and x.meaning == "side_" + side:
                         x.meaning = "used"  # the side of the ego's manoeuvre, not of what it passes
                         break
-        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING:
+        overtaken = next((x for x in (clause_units or [])[k + 1:k + 4] if x.category == "agents"), None) \
+            if k is not None else None
+        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING and not (
+                overtaken is not None and overtaken.meaning not in ("ego", "none")):  # not "to overtake a cyclist"
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
@@ -1516,14 +1553,22 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and e.is_ego and {t.base for t in u.tokens} & {"brake", "brakes"} and not (
                 {t.word for t in u.tokens} & {"halt", "stop", "standstill"}) and not (
                 clause_units is not None and k is not None and any(
-                    x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])):
+                    x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])
+                or _in_time(clause_units[k + 1:k + 5])):
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
+        out_after = clause_units is not None and k is not None and k + 1 < len(clause_units) and \
+            clause_units[k + 1].word == "out"
+        if action == "cut_in" and not e.is_ego and ([t.word for t in u.tokens][-1:] == ["out"] or out_after):
+            e.features.add("moves_out")  # "the car in front pulls out", "swerves out": out of the lane it is in
         if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
         if e.is_ego and action == "cut_in" and direction is None and any(
                 a[0] == stage and a[4] in ("lane_left", "lane_right") for a in e.actions):
             return  # "merges left ... and has to slot in between them": the same lane change, its side said before
-        if u.tokens[0].base in RUSHING and not e.is_ego:
+        noun = clause_units is not None and k is not None and k > 0 and clause_units[k - 1].word in (
+            "same", "the", "a", "full", "high", "top", "its", "his", "her", "their", "at")  # "doing the same speed"
+        jogging = e.type == "pedestrian" and action in ("move", "walk")  # "joggers running on the pavement"
+        if u.tokens[0].base in RUSHING and not e.is_ego and not noun and not jogging:
             e.behavior = e.behavior or "aggressive"
         earlier = clause_units is not None and k is not None and any(
             x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
@@ -1532,6 +1577,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                           direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+def _in_time(units: list[Unit]) -> bool:
+    """'I braked in time', 'stopped just in time': the brake ended in a stop short of what was ahead."""
+    words = [t.word for u in units for t in u.tokens]
+    return any(words[i:i + 2] == ["in", "time"] for i in range(min(3, len(words))))
 
 
 def _towards_an_edge(units: list[Unit]) -> bool:
@@ -1674,6 +1725,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
+    _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
              and not _named_manoeuvre(units, i)]
@@ -1793,6 +1845,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             after.meaning = "used"
             subject[0].actions.append((stage, strength, ACTION_RANK["turn_left"], r.tick(),
                                        "turn_" + after.tokens[-1].word, None))
+    _ego_turn_in_a_place(r, units, stage)
+    for u in units:
+        words = {t.word for t in u.tokens}
+        if u.category == "actions" and u.meaning == "try" and {t.base for t in u.tokens} & {"signal", "indicate"} \
+                and words & set(SIDES):
+            for e in subject:  # "signalled right and moved out to turn": the side of the turn it then makes
+                e.features.add("signals_" + ("left" if "left" in words else "right"))
     for i in main_verbs:
         made = _made_to(units, i, phrases)
         for e in made or subject:
@@ -1863,7 +1922,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.features.add("first_in_line")
                 if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
-                if reference is not None and not reference.is_ego and u.meaning in INVERSE:
+                later = reference is not None and stage > reference.stage and bool(
+                    reference.features & {"ahead", "behind", "level"})  # "then returns ahead of the bus": it was
+                if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
                 r.mark(u)
                 continue
@@ -1884,6 +1945,26 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             recent.remove(e)
         recent.append(e)
     return subject
+
+
+def _ego_turn_in_a_place(r: _Reader, units: list[Unit], stage: int) -> None:
+    """'a woman crosses the road where the ego turns left': the place names the ego's turn, and its side."""
+    for j, u in enumerate(units):
+        words = {t.word for t in u.tokens}
+        if u.category != "positions" or u.meaning != "destination" or not words & {"turn", "turns", "turning"} \
+                or not words & EGO_WORDS | {"we", "us"}:
+            continue
+        ego = _ego_entity(r, stage)
+        if any(a[4].startswith("turn") for a in ego.actions):
+            continue
+        after = units[j + 1] if j + 1 < len(units) else None
+        side = None
+        if after is not None and after.category == "positions" and after.meaning in ("side_left", "side_right") \
+                and len(after.tokens) == 1:
+            side = after.meaning[5:]
+            r.mark(after)
+            after.meaning = "used"
+        ego.actions.append((stage, 2, ACTION_RANK["turn_left"], r.tick(), f"turn_{side}" if side else "turn", None))
 
 
 SIGNAL_COLOURS = {"red", "green", "amber", "yellow", "orange"}
@@ -2198,7 +2279,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
-            driver = prev.entity.head in DRIVERS and ([u.word for u in between] in (
+            driver = (prev.entity.head in DRIVERS or prev.entity.head.split()[-1] == "rider" and
+                      np.entity.type in V.TWO_WHEELER_TYPES) and ([u.word for u in between] in (
                 ["in"], ["driving"], ["on"], ["of"]) or not between and units[np.first].word == "of") or (
                 # "the driver of a stopped bus": the bus
                 prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
@@ -2207,9 +2289,11 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 len(between) >= 2 and between[-1].category == "comma" and units[np.first].word in ("a", "an") and \
                 np.index + 1 < len(units) and units[np.index + 1].category in ("comma", "word") and \
                 units[np.index + 1].word not in ("and", "or") and \
-                between[0].category == "positions" and all(
+                (between[0].category == "positions" or between[0].word in ("on", "in", "to") and any(
+                    u.category == "positions" for u in between)) and all(
                     u.category in ("positions", "comma") or u.category == "agents" and u.meaning == "ego"
-                    or u.word in ("the", "of") for u in between)
+                    or u.word in ("the", "of", "on", "in", "to", "my", "our", "your") for u in between)
+                # "the vehicle on my left, a red minivan,": the vehicle is the minivan
             if placed:  # "the vehicle behind me, a white Ford Transit, failed to stop": the vehicle is the Ford
                 a, b = prev.entity, np.entity
                 a.type, a.head = b.type, b.head
@@ -2257,6 +2341,22 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _shared_premodifier(units: list[Unit], phrases: list[NounPhrase]) -> None:
+    """'2 oncoming cars + 1 scooter': a counted list shares the first item's oncoming when the others say
+    nothing of where they are."""
+    for p, q in zip(phrases, phrases[1:]):
+        if not (p.introduced and q.introduced and p.entity is not None and q.entity is not None) or \
+                p.entity.is_ego or q.entity.is_ego:
+            continue
+        oncoming = any(u.category == "positions" and u.meaning == "road_straight" and len(u.tokens) == 1
+                       for u in units[p.first:p.index])
+        joined = all(u.category == "comma" or u.word == "and" for u in units[p.index + 1:q.first]) and \
+            q.first > p.index + 1
+        unplaced = not any(u.category == "positions" for u in units[q.first:q.index + 2]) and not q.entity.features
+        if oncoming and joined and unplaced and units[q.first].category == "number":
+            q.entity.features.add("road_straight")
 
 
 def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
@@ -2523,6 +2623,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             f.add("ahead")
     side = _side_of(f)
     lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
+    if "screening" in f and side and action == "stop" and not f & {"behind", "level"}:
+        return f"front_{side}", True  # parked at the kerb a crosser steps out from: no lane of the ego's direction
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
@@ -2531,6 +2633,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         f.add("road_straight")  # "turned left across our path": the oncoming turner
     if "toward" in f and not lane_move and not (side and f"bare_{side}" not in f):
         f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no
+    if "far_side" in f and junction and not person and not lane_move:
+        f -= {"side_left", "from_lane", "bare_left"}  # "from the far side" of a junction: across it
+        f.add("destination" if action == "stop" and "from_lane" not in e.features else "road_straight")
     if "road_straight" in f and not person:  # where it comes from wins over where it heads
         return ("road_of_straight", False) if junction else ("front_left", True)
     for s in SIDES:
@@ -2555,6 +2660,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
+    if lane_move and {"level", "into_ego_lane"} <= f and not behind:
+        ahead = False  # "alongside me ... moved into my lane, directly in front of me": level, ending ahead
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
             and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
@@ -2563,7 +2670,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
-    if action == "cut_in" and not behind and "level" not in f and (side is None or "from_lane" in f
+    moving_out = "moves_out" in f and "ahead" in f and side is None and "ego_lane" not in f
+    if action == "cut_in" and not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"bare_{side}" in f or f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
@@ -2607,17 +2715,21 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
         return "go_straight"
     if action in ("turn_left", "turn_right"):
         return action
+    signalled = next((s for s in SIDES if f"signals_{s}" in e.features), None)
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or UNSPECIFIED['turn_direction']}"
+        return f"turn_{direction or signalled or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action == "lane_change":
+        direction = direction or signalled
         if direction:
             return f"change_lane_to_{direction}"
         return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
     if action == "cut_in":
         if e.is_ego:
             return f"change_lane_to_{direction}" if direction else "go_straight"
+        if side_now is None and position == "front" and "moves_out" in e.features:
+            return "change_lane_to_right" if _KEEPS_LEFT.get() else "change_lane_to_left"  # out, away from the kerb
         if side_now is None:
             return "block_the_ego" if position == "front" and e.type != "pedestrian" else "go_straight"
         return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
@@ -2710,6 +2822,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
     _witness_on_foot(r)
+    _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
     _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
@@ -2821,6 +2934,24 @@ def _witness_on_foot(r: _Reader) -> None:
     r.entities.remove(subject)
     r.entities.insert(0, subject)
     r.notes.append(f"inferred: the witness is on foot; the '{subject.head}' the statement is about is the ego")
+
+
+def _screens_on_the_crossers_side(r: _Reader) -> None:
+    """The vehicles a person steps out from between stand at the kerb that person comes from, ahead of the ego."""
+    for k, e in enumerate(r.entities):
+        if "screening" not in e.features or e.is_ego:
+            continue
+        crosser = next((c for c in reversed(r.entities[:k]) if not c.is_ego), None)
+        if crosser is None or crosser.type not in V.VULNERABLE_TYPES:
+            continue
+        side = next((s for s in SIDES if f"from_{s}" in crosser.features or f"side_{s}" in crosser.features), None)
+        if side and not _side_of(e.features):
+            e.features.add(f"side_{side}")
+        own = _side_of(e.features)
+        if own and side is None:
+            crosser.features.add(f"from_{own}")  # "out from between two lorries on my left": from the left
+        if not any(a[4] == "stop" for a in e.actions):
+            e.actions.append((e.stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # screens stand
 
 
 def _numbered_lane_sides(r: _Reader) -> None:
@@ -2998,7 +3129,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
         resolved[e.key] = (action, direction)
         positions[e.key] = position
-        if is_oncoming:
+        parked_beside = "parked" in e.features and action == "stop" and position in ("front_left", "front_right") \
+            and e.type not in V.VULNERABLE_TYPES  # "a parked bus on the right": at the kerb, no lane of its own
+        if is_oncoming or parked_beside:
             oncoming.add(e.key)
     for e in others:  # "in front of a truck": at the truck's place, unless the text placed it itself
         t = e.relative_to
@@ -3081,11 +3214,13 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
                      None)
     if action in ("turn_left", "turn_right", "stop"):
         return action
+    signalled = next((s for s in SIDES if f"signals_{s}" in e.features), None)
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or UNSPECIFIED['turn_direction']}"
+        return f"turn_{direction or signalled or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
+        direction = direction or signalled
         said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
             "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
         return f"change_lane_to_{direction or said or _overtaking_side('ego_lane_change_direction')}"  # "pulling out"
