@@ -173,8 +173,9 @@ def test_a_client_of_another_installation_is_refused_and_runs_the_command_itself
     from ttsgc import forward
 
     monkeypatch.setenv("TTSGC_CACHE_DIR", served["TTSGC_CACHE_DIR"])
-    real = forward.socket_path()
-    assert Path(real).exists()
+    real = subprocess.run([sys.executable, "-c", "from ttsgc import forward; print(forward.socket_path())"],
+                          env=served, cwd=ROOT, capture_output=True, text=True, check=True).stdout.strip()
+    assert Path(real).exists()  # the server's own socket (this process may import an installed copy of ttsgc)
     monkeypatch.setattr(forward, "server_key", lambda: "0.0.0-another")
     monkeypatch.setattr(forward, "socket_path", lambda key=None: real)
     before = served_count(served)
