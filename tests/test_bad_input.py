@@ -289,6 +289,15 @@ def test_a_symlink_loop_or_a_device_as_the_scenes_map_is_a_map_error(tmp_path, c
             assert code == ExitCode.MAP_ERROR and why in err, err
 
 
+def test_lint_reads_a_scenario_as_validate_does_refusing_a_doctype(tmp_path, capsys):
+    scene = tmp_path / "x.xosc"
+    scene.write_text('<?xml version="1.0"?><!DOCTYPE r [<!ENTITY x SYSTEM "file:///etc/passwd">]>'
+                     "<OpenSCENARIO><FileHeader/>&x;</OpenSCENARIO>")
+    for command in (["lint", "--target", "esmini", scene], ["validate", scene]):
+        code, _, err = _run(capsys, *command)
+        assert code == ExitCode.INVALID_SCENARIO and "has a DOCTYPE" in err and "refused" in err
+
+
 def test_an_output_that_is_a_folder_is_a_usage_error(tmp_path, capsys):
     code, _, err = _run(capsys, "compile", EXAMPLES / "boxed_in.tsg", "-o", tmp_path, "--no-simulate")
     assert code == ExitCode.INVALID_SCENARIO and "is a folder" in err and not list(tmp_path.iterdir())

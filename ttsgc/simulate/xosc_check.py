@@ -78,7 +78,8 @@ def bounded_number(text: str, where: str, what: str, low: float = -ANY_NUMBER, h
         raise XoscFileError(f"{where}: {what} = {exc}") from None
 
 
-def _read(path: Path):
+def read_xosc(path: Path):
+    """The parsed root of an .xosc file, read safely: bounded size, no entities, no DOCTYPE (validate and lint)."""
     if path.is_dir():
         raise XoscFileError(f"{path}: is a folder, not an OpenSCENARIO file")
     try:
@@ -90,8 +91,10 @@ def _read(path: Path):
                             f"({MAX_FILE_BYTES} bytes)")
     try:
         tree = etree.parse(str(path), etree.XMLParser(**XML_PARSER))
-    except (OSError, etree.XMLSyntaxError) as exc:
+    except OSError as exc:
         raise XoscFileError(f"{path}: cannot read the OpenSCENARIO file: {exc}") from None
+    except etree.XMLSyntaxError as exc:
+        raise XoscFileError(f"{path}:{exc.lineno or 0}: not well-formed XML: {exc.msg}") from None
     if tree.docinfo.doctype:
         raise XoscFileError(f"{path}: the file has a DOCTYPE, which OpenSCENARIO never needs; refused (entities "
                             f"could read other files or grow without bound)")
@@ -243,7 +246,7 @@ def load_scenario(path: str | Path, assign: dict[str, str] | None = None) -> Sce
 
     `assign` sets the file's own parameters (a variant of a ParameterValueDistribution)."""
     path = Path(path)
-    root = _read(path)
+    root = read_xosc(path)
     if not isinstance(root.tag, str) or root.tag != "OpenSCENARIO":
         raise XoscFileError(f"{path}:{root.sourceline}: the root element is <{root.tag}>, not <OpenSCENARIO>")
     version = version_of(root)

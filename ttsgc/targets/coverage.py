@@ -134,13 +134,13 @@ def lint_tree(root: etree._Element, target: str) -> list[Finding]:
 
 def lint_file(path: str | Path, target: str) -> list[Finding]:
     """The findings of one .xosc file; a file that is not XML is an error naming it."""
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False)
+    from ttsgc.simulate.xosc_check import read_xosc
+    from ttsgc.xsd import XoscFileError
+
     try:
-        root = etree.parse(str(path), parser).getroot()
-    except OSError as exc:
-        raise LintInputError(f"{path}: cannot read: {exc}") from None
-    except etree.XMLSyntaxError as exc:
-        raise LintInputError(f"{path}:{exc.lineno or 0}: not well-formed XML: {exc.msg}") from None
+        root = read_xosc(Path(path))
+    except XoscFileError as exc:  # the reader validate uses: one policy for a file's size, entities, DOCTYPE
+        raise LintInputError(str(exc)) from None
     return lint_tree(root, target)
 
 
