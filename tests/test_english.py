@@ -1727,3 +1727,18 @@ def test_running_along_the_pavement_is_no_haste_but_running_across_is():
         "Two joggers are running side by side on the pavement to our left.").scenario.agents())
     assert [a.behavior for a in lower("A child runs across the road.").scenario.agents() if not a.is_ego] == [
         "aggressive"]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A van cuts in from the left lane and then stops dead right in front of us.",
+    "The hatchback pulls in from the right, then slams on its brakes in front of me.",
+])
+def test_a_cut_in_then_a_sudden_stop_in_front_blocks_the_ego(prompt):
+    actions = {a.action for a in lower(prompt).scenario.agents() if not a.is_ego}
+    assert actions == {"block_the_ego"}
+
+
+def test_a_cut_in_then_a_gentle_stop_stays_a_cut_in():
+    actions = {a.action for a in lower("A taxi cuts in from the left lane, and then it brakes to a stop in "
+                                       "front of our car.").scenario.agents() if not a.is_ego}
+    assert actions == {"change_lane_to_right"}

@@ -1570,6 +1570,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         jogging = e.type == "pedestrian" and action in ("move", "walk")  # "joggers running on the pavement"
         if u.tokens[0].base in RUSHING and not e.is_ego and not noun and not jogging:
             e.behavior = e.behavior or "aggressive"
+        if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS:
+            e.features.add("stops_abruptly")  # "stops dead", "slams on the brakes": a sudden stop, not a halt
+            e.behavior = e.behavior or "aggressive"
         earlier = clause_units is not None and k is not None and any(
             x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
         # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
@@ -2581,6 +2584,9 @@ def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
 
 # -- composing the scene ------------------------------------------------------------------------------------
 
+ABRUPT_STOP_WORDS = frozenset({"dead", "short", "suddenly", "emergency", "slam", "slams", "slammed", "jam",
+                               "jams", "jammed", "stamp", "stamps", "stamped", "anchors"})
+
 def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None]:
     """(action class, direction) of the strongest, most specific predicate (of one stage, if given)."""
     chosen = [a for a in e.actions if (stage is None or a[0] == stage) and a[2] > 0 and not (
@@ -2590,6 +2596,9 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
     if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
         return ("stop" if e.is_ego else "block"), None  # "swerves into its path and stops"; the ego pulls in and stops
+    if best[4] == "cut_in" and {"ahead", "stops_abruptly"} <= e.features and any(
+            a[4] == "stop" and a[1] == 2 and a[0] > best[0] for a in e.actions):
+        return "block", None  # "cuts me up, then stops dead in front of me": a brake check blocks the ego
     return best[4], best[5]
 
 
