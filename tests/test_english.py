@@ -1742,3 +1742,19 @@ def test_a_cut_in_then_a_gentle_stop_stays_a_cut_in():
     actions = {a.action for a in lower("A taxi cuts in from the left lane, and then it brakes to a stop in "
                                        "front of our car.").scenario.agents() if not a.is_ego}
     assert actions == {"change_lane_to_right"}
+
+
+def test_pulling_out_to_the_right_on_an_open_road_changes_lane_to_the_right():
+    assert ("car", "change_lane_to_right", "ego") in agents("Stuck behind a slow lorry, I pull out to the right "
+                                                            "to get past it.")
+
+
+@pytest.mark.parametrize("prompt, turn", [
+    ("I wait at the give way line, then pull out to the left onto the main road while a van comes from the "
+     "right.", "turn_left"),
+    ("At the T-junction I pull out to the right and a car comes from the left.", "turn_right"),
+])
+def test_pulling_out_of_a_junction_is_a_turn(prompt, turn):
+    scene = lower(prompt).scenario
+    assert turn in {a.action for a in scene.agents() if a.is_ego}
+    assert scene.road.junction is True

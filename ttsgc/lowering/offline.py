@@ -1570,6 +1570,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         jogging = e.type == "pedestrian" and action in ("move", "walk")  # "joggers running on the pavement"
         if u.tokens[0].base in RUSHING and not e.is_ego and not noun and not jogging:
             e.behavior = e.behavior or "aggressive"
+        if action in ("lane_left", "lane_right") and [t.base for t in u.tokens[:2]] == ["pull", "out"]:
+            e.features.add("pulls_out")  # "pulls out to the left": a turn when it pulls out of a junction
         if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS:
             e.features.add("stops_abruptly")  # "stops dead", "slams on the brakes": a sudden stop, not a halt
             e.behavior = e.behavior or "aggressive"
@@ -2845,6 +2847,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
             or any("road_straight" in e.features for e in r.entities)))
     # "a cyclist running the red light from the left", "an oncoming car at the lights": a signalised junction
+    if junction_words or "stop_line" in road.required_objects:
+        _pulling_out_of_a_junction_turns(r)
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
         (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
         for st in {a[0] for a in e.actions})  # "once it turns green we turn left": a later turn is at a junction
@@ -2898,6 +2902,15 @@ AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cyclin
 FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "in", "driving", "drove", "on", "patrol", "uniformed", "mobile", "sitting",
                    "riding", "at", "the", "wheel", "of", "duty", "routine", "alone"}
+
+
+def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
+    """'Pulls out to the left from the give-way line': out of a side road at a junction, a turn, not a lane
+    change (on an open road the same words change lane)."""
+    for e in r.entities:
+        if "pulls_out" in e.features:
+            e.actions = [(a[0], a[1], ACTION_RANK["turn_left"], a[3], "turn_" + a[4][5:], None)
+                         if a[4] in ("lane_left", "lane_right") else a for a in e.actions]
 
 
 def _what_i_was(tokens: list[Token], k: int) -> set[str]:
