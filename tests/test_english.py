@@ -1758,3 +1758,18 @@ def test_pulling_out_of_a_junction_is_a_turn(prompt, turn):
     scene = lower(prompt).scenario
     assert turn in {a.action for a in scene.agents() if a.is_ego}
     assert scene.road.junction is True
+
+
+@pytest.mark.parametrize("prompt", [
+    "At the crossroads I am going straight on green, but the exit is blocked by a van parked on the far side.",
+    "We turn left at the junction and a broken down truck is parked in the road we turn into, obstructing it.",
+])
+def test_a_parked_vehicle_blocking_the_road_ahead_of_a_junction_stands_at_the_destination(prompt):
+    others = [a for a in lower(prompt).scenario.agents() if not a.is_ego]
+    assert [(a.action, a.relative_to_ego) for a in others] == [("stop", "at_the_destination")]
+
+
+def test_a_stopped_car_said_to_block_the_ego_at_the_destination_still_blocks():
+    others = [a for a in lower("The ego turns right at the lights. On the road it turns into a car has stopped "
+                               "and is blocking the ego.").scenario.agents() if not a.is_ego]
+    assert [a.action for a in others] == ["block_the_ego"]

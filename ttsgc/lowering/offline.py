@@ -2646,7 +2646,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no
     if "far_side" in f and junction and not person and not lane_move:
         f -= {"side_left", "from_lane", "bare_left"}  # "from the far side" of a junction: across it
-        f.add("destination" if action == "stop" and "from_lane" not in e.features else "road_straight")
+        f.add("destination" if (action == "stop" or action == "block" and "parked" in f) and "from_lane" not in
+              e.features else "road_straight")  # "the exit is blocked by a bus sat stationary on the far side"
     if "road_straight" in f and not person:  # where it comes from wins over where it heads
         return ("road_of_straight", False) if junction else ("front_left", True)
     for s in SIDES:
@@ -2745,6 +2746,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
             return "block_the_ego" if position == "front" and e.type != "pedestrian" else "go_straight"
         return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
     if action == "block":
+        if "parked" in e.features and position == "at_the_destination":
+            return "stop"  # "a lorry parked in the road we turn into, obstructing it": it stands where we head
         return "block_the_ego"
     if action == "stop":
         if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder")):
