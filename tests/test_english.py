@@ -1773,3 +1773,12 @@ def test_a_stopped_car_said_to_block_the_ego_at_the_destination_still_blocks():
     others = [a for a in lower("The ego turns right at the lights. On the road it turns into a car has stopped "
                                "and is blocking the ego.").scenario.agents() if not a.is_ego]
     assert [a.action for a in others] == ["block_the_ego"]
+
+
+@pytest.mark.parametrize("prompt, kind", [
+    ("Two kids on scooters ride along the road ahead of us.", "motorcycle"),
+    ("Two teenagers on bikes ride past me on the left.", "cyclist"),
+])
+def test_people_on_two_wheelers_are_the_riders_counted_once(prompt, kind):
+    others = [a.type for a in lower(prompt).scenario.agents() if not a.is_ego]
+    assert others == [kind, kind]

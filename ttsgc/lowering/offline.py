@@ -2269,6 +2269,17 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             out[-1] = np
             continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
+                and prev.plural and np.plural and not prev.entity.is_ego and np.entity.type in V.TWO_WHEELER_TYPES \
+                and (prev.entity.type == "pedestrian" or prev.entity.head.split()[-1] in ("riders", "rider")) \
+                and [u.word for u in units[prev.index + 1: np.first]] in (["on"], ["riding"], ["astride"]):
+            prev.entity.type = np.entity.type  # "two kids on scooters": two riders, counted by the people
+            prev.entity.features |= np.entity.features
+            prev.entity.actions += np.entity.actions
+            prev.entity.behavior = prev.entity.behavior or np.entity.behavior
+            if np.entity in r.entities:
+                r.entities.remove(np.entity)
+            continue
+        if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
             copula = any(u.category == "word" and u.word in APPOSITION_WORDS for u in between)
