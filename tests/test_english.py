@@ -1782,3 +1782,13 @@ def test_a_stopped_car_said_to_block_the_ego_at_the_destination_still_blocks():
 def test_people_on_two_wheelers_are_the_riders_counted_once(prompt, kind):
     others = [a.type for a in lower(prompt).scenario.agents() if not a.is_ego]
     assert others == [kind, kind]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A fire engine comes up behind me and I pull over.",
+    "A patrol car flashed its lights and we pulled over.",
+])
+def test_only_the_ego_pulls_over_for_the_vehicle_that_made_it(prompt):
+    others = [a.action for a in lower(prompt).scenario.agents() if not a.is_ego]
+    assert others == ["go_straight"]
+    assert ("car", "change_lane_to_right", "ego") in agents(prompt)

@@ -1047,10 +1047,16 @@ SUBJECT_PRONOUNS = {"we", "i", "it", "they", "he", "she", "you"}
 
 def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) -> bool:
     """'a police car is behind us and we pull over': a complete 'X is PLACE', then a new subject and its verb."""
-    if not (_has_agent(current) and any(u.category == "word" and u.word in COPULAS for u in current)):
-        return False
     rest = units[k + 1:k + 5]
     if not rest:
+        return False
+    agent_at = next((j for j, u in enumerate(current) if u.category == "agents" and u.meaning not in ("none", "ego")),
+                    None)
+    placed = agent_at is not None and any(u.category == "positions" for u in current[agent_at + 1:])
+    if placed and rest[0].word in ("i", "we") and not any(u.word == "both" for u in rest) and any(
+            x.category == "actions" for x in rest[1:3]):
+        return True  # "an ambulance comes up behind me and I pull over"
+    if not (_has_agent(current) and any(u.category == "word" and u.word in COPULAS for u in current)):
         return False
     starts = rest[0].category == "agents" and rest[0].meaning == "ego" or rest[0].word in SUBJECT_PRONOUNS or (
         rest[0].word in ("the", "a", "an", "this", "that", "some", "another") and len(rest) > 1
