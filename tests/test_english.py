@@ -1792,3 +1792,13 @@ def test_only_the_ego_pulls_over_for_the_vehicle_that_made_it(prompt):
     others = [a.action for a in lower(prompt).scenario.agents() if not a.is_ego]
     assert others == ["go_straight"]
     assert ("car", "change_lane_to_right", "ego") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kind", [
+    ("I let the van merge in front of me.", "car"),
+    ("We let a bus pull out.", "bus"),
+])
+def test_the_verb_after_let_is_the_let_agents_not_the_egos(prompt, kind):
+    read = agents(prompt)
+    assert ("car", "go_straight", "ego") in read
+    assert [(t, a.startswith("change_lane")) for t, a, p in read if p != "ego"] == [(kind, True)]

@@ -2137,12 +2137,18 @@ VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "tur
                         "block"}
 
 
+LETTING = {"let", "lets", "letting"}
 CAUSATIVES = {"force", "forced", "forces", "forcing", "cause", "caused", "causes", "causing", "make", "made", "makes",
               "making", "compel", "compelled", "require", "required", "requires", "oblige", "obliged"}
 
 
 def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entity]:
-    """'a truck forced the AV to change lanes': the verb after 'to' is the object's doing."""
+    """'a truck forced the AV to change lanes': the verb after 'to' is the object's doing; so is the bare verb
+    after 'let' ('I let the van merge': the van merges, not I)."""
+    if i >= 2 and units[i - 1].word != "to":
+        np = next((p for p in phrases if p.index == i - 1 and p.entity is not None), None)
+        if np is not None and np.first > 0 and units[np.first - 1].word in LETTING:
+            return np.group or [np.entity]
     if i < 3 or units[i - 1].word != "to":
         return []
     np = next((p for p in phrases if p.index == i - 2 and p.entity is not None), None)
