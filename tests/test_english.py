@@ -1802,3 +1802,15 @@ def test_the_verb_after_let_is_the_let_agents_not_the_egos(prompt, kind):
     read = agents(prompt)
     assert ("car", "go_straight", "ego") in read
     assert [(t, a.startswith("change_lane")) for t, a, p in read if p != "ego"] == [(kind, True)]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A ped crossing on the zebra ahead, so the ego yields.",
+    "Pedestrian crossing along the crosswalk in front of us while we wait.",
+])
+def test_a_pedestrian_crossing_on_a_crosswalk_is_a_person_crossing(prompt):
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(prompt)
+
+
+def test_a_pedestrian_crossing_placed_elsewhere_stays_a_crosswalk():
+    assert [a for a in agents("There is a pedestrian crossing on the left of the road ahead.") if a[2] != "ego"] == []

@@ -455,9 +455,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                     "finish", "finishes", "while", "when", "still", "already")
     nxt2 = tokens[m.end + 1].word if m.end + 1 < len(tokens) else ""
     place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
+    on_a_crossing = nxt in ("on", "along") and bool({t.word for t in tokens[m.end + 1:m.end + 4]} & {
+        "crosswalk", "crosswalks", "zebra", "crossing"})  # "ped crossing on the crosswalk": a person crossing at it
     if m.category == "road" and span[-1].word in ("crossing", "xing") and (
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
-            nxt in VERB_AFTER_CROSSING or (len(span) == 1 and (after_person or after_verb))) and \
+            nxt in VERB_AFTER_CROSSING or on_a_crossing or (len(span) == 1 and (after_person or after_verb))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
                                          and len(span) == 1):
         # the verb: "a pedestrian crossing the road"; the noun stays: "no crossing", "the pedestrian crossing ahead is"
