@@ -1814,3 +1814,12 @@ def test_a_pedestrian_crossing_on_a_crosswalk_is_a_person_crossing(prompt):
 
 def test_a_pedestrian_crossing_placed_elsewhere_stays_a_crosswalk():
     assert [a for a in agents("There is a pedestrian crossing on the left of the road ahead.") if a[2] != "ego"] == []
+
+
+@pytest.mark.parametrize("prompt, kind", [
+    ("We overtake a slow tractor on the country lane.", "truck"),
+    ("A really slow van is in front of the ego.", "car"),
+])
+def test_slow_before_a_noun_is_how_the_agent_drives(prompt, kind):
+    others = [(a.type, a.behavior) for a in lower(prompt).scenario.agents() if not a.is_ego]
+    assert others == [(kind, "cautious")]

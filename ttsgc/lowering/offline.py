@@ -429,6 +429,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stuck"] and (
             nxt in STILL_MOVING or nxt == "behind" and {t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING):
         return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
+    if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
+            tokens[m.start - 1].word in ("a", "an", "the", "this", "that", "very", "really"):
+        return [Unit(m.start, m.end, "behaviours", "cautious", span)]  # "a slow bus": how it drives, no verb
     if m.category == "weather" and [t.word for t in span] == ["dark"] and nxt in COLOURS:
         return [Unit(m.start, m.end, "word", "dark", span)]  # "a dark blue saloon": a shade, not the night
     prev = tokens[m.start - 1] if m.start > 0 else None
