@@ -2289,12 +2289,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 and prev.plural and np.plural and not prev.entity.is_ego and np.entity.type in V.TWO_WHEELER_TYPES \
                 and (prev.entity.type == "pedestrian" or prev.entity.head.split()[-1] in ("riders", "rider")) \
                 and [u.word for u in units[prev.index + 1: np.first]] in (["on"], ["riding"], ["astride"]):
-            prev.entity.type = np.entity.type  # "two kids on scooters": two riders, counted by the people
-            prev.entity.features |= np.entity.features
-            prev.entity.actions += np.entity.actions
-            prev.entity.behavior = prev.entity.behavior or np.entity.behavior
-            if np.entity in r.entities:
-                r.entities.remove(np.entity)
+            _fold(r, prev.entity, np.entity)  # "two kids on scooters": two riders, counted by the people
             continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
@@ -2329,13 +2324,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 # "the vehicle on my left, a red minivan,": the vehicle is the minivan
             if placed:  # "the vehicle behind me, a white Ford Transit, failed to stop": the vehicle is the Ford
                 a, b = prev.entity, np.entity
-                a.type, a.head = b.type, b.head
-                a.features |= b.features
-                a.actions += b.actions
-                a.behavior = a.behavior or b.behavior
+                a.head = b.head
                 a.aliases |= b.aliases | {b.head}
-                if b in r.entities:
-                    r.entities.remove(b)
+                _fold(r, a, b)
                 continue
             mine = prev.entity.is_ego and prev.entity.head in FIRST_PERSON | {"we"} and between and all(
                 u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
@@ -2347,12 +2338,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     r.entities.remove(np.entity)
                 continue
             if driver:  # "a learner driver in a little hatchback": the hatchback
-                prev.entity.type = np.entity.type
-                prev.entity.features |= np.entity.features
-                prev.entity.actions += np.entity.actions
-                prev.entity.behavior = prev.entity.behavior or np.entity.behavior
-                if np.entity in r.entities:
-                    r.entities.remove(np.entity)
+                _fold(r, prev.entity, np.entity)
                 continue
             if all((u.category == "word" and u.word in APPOSITION_WORDS | {"like"}) or
                    u.category == "comma" for u in between) and (
@@ -2365,15 +2351,23 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     if b.type in V.EGO_TYPES:
                         a.type = b.type
                 elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS:
-                    a.type = b.type
-                    a.features |= b.features
-                    a.actions += b.actions
-                    a.behavior = a.behavior or b.behavior
+                    _fold(r, a, b)
                 if b in r.entities:
                     r.entities.remove(b)
                 continue
         out.append(np)
     return out
+
+
+def _fold(r: _Reader, into: Entity, other: Entity) -> None:
+    """Two noun phrases that name one agent ("a learner driver in a hatchback", "the vehicle behind me, a
+    white Ford Transit,"): the first takes the second's type and what was said of it, and the second goes."""
+    into.type = other.type
+    into.features |= other.features
+    into.actions += other.actions
+    into.behavior = into.behavior or other.behavior
+    if other in r.entities:
+        r.entities.remove(other)
 
 
 def _shared_premodifier(units: list[Unit], phrases: list[NounPhrase]) -> None:
