@@ -27,7 +27,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from timing import ROOT, bytecode_note, use_bytecode, with_bytecode
+from timing import ROOT, bytecode_note, bytecode_option, use_bytecode, with_bytecode
 
 
 def machine_busy_seconds() -> float:
@@ -112,14 +112,11 @@ def main() -> int:
     parser.add_argument("--quiet", type=float, metavar="CORES",
                         help="count only rounds during which other work kept fewer than CORES cores busy (a shared "
                              "machine); up to 6 x --repeats rounds are tried")
-    parser.add_argument("--bytecode", choices=["installed", "none"], default="installed",
-                        help="installed (default): processes start with their modules compiled, as an installed "
-                             "copy does; none: as the environment says (PYTHONDONTWRITEBYTECODE recompiles each time)")
+    bytecode_option(parser)
     args = parser.parse_args()
     ttsgc = [sys.executable, "-m", "ttsgc"]
     with tempfile.TemporaryDirectory(prefix="ttsgc-bench-") as scratch:
-        if args.bytecode == "installed":
-            use_bytecode(Path(scratch) / "bytecode")
+        use_bytecode(args, Path(scratch) / "bytecode")
         print(f"python: {bytecode_note()}; runs of 1 and 2 workers alternate (paired), medians")
         runs = iter(range(10**6))
         timed(ttsgc + ["batch", "examples", "-o", f"{scratch}/warm", "--workers", str(max(args.workers))])

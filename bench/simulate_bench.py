@@ -21,7 +21,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from timing import ROOT, bytecode_note, checkouts, environment, median, medians, ms, timed, ttsgc, use_bytecode
+from timing import (ROOT, bytecode_note, bytecode_option, checkouts, environment, median, medians, ms, timed, ttsgc,
+                    use_bytecode)
 
 sys.path.insert(0, str(ROOT))
 from ttsgc.language import parse_file  # noqa: E402 - this checkout, whatever is installed
@@ -135,13 +136,10 @@ def main() -> int:
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--against", action="append", metavar="CHECKOUT", help="another checkout to compare with")
     parser.add_argument("--only-esmini", action="store_true", help="only the comparison with esmini")
-    parser.add_argument("--bytecode", choices=["installed", "none"], default="installed",
-                        help="installed (default): processes start with their modules compiled, as an installed "
-                             "copy does; none: as the environment says (PYTHONDONTWRITEBYTECODE recompiles each time)")
+    bytecode_option(parser)
     args = parser.parse_args()
     scratch = Path(tempfile.mkdtemp(prefix="ttsgc-bench-"))
-    if args.bytecode == "installed":
-        use_bytecode(scratch / "bytecode")
+    use_bytecode(args, scratch / "bytecode")
     try:
         if not args.only_esmini:
             in_process(args.repeat, scratch)

@@ -35,11 +35,19 @@ def checkouts(against: list[str] | None) -> dict[str, Path]:
 _BYTECODE: list[Path] = []  # set by use_bytecode: where compiled modules are kept between timed runs
 
 
-def use_bytecode(folder: Path) -> None:
-    """Time processes as an installed copy runs: its modules compiled once (pip does it on install), not on
-    every start as a checkout is when PYTHONDONTWRITEBYTECODE is set (this machine sets it). The bytecode goes
-    to a scratch folder (PYTHONPYCACHEPREFIX), never into the checkout; the first, untimed run writes it."""
-    _BYTECODE[:] = [folder]
+def bytecode_option(parser) -> None:
+    parser.add_argument("--bytecode", choices=["installed", "none"], default="installed",
+                        help="installed (default): processes start with their modules compiled, as an installed "
+                             "copy does; none: as the environment says (PYTHONDONTWRITEBYTECODE recompiles each time)")
+
+
+def use_bytecode(args, folder: Path) -> None:
+    """With --bytecode installed, time processes as an installed copy runs: its modules compiled once (pip does
+    it on install), not on every start as a checkout is when PYTHONDONTWRITEBYTECODE is set (this machine sets
+    it). The bytecode goes to a scratch folder (PYTHONPYCACHEPREFIX), never into the checkout; the first,
+    untimed run writes it."""
+    if args.bytecode == "installed":
+        _BYTECODE[:] = [folder]
 
 
 def bytecode_note() -> str:
