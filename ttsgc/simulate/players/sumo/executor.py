@@ -530,21 +530,22 @@ class Executor:
         sumo_lane = self.by_id[lane_id]
         length = _length(sumo_lane.shape)
         route, k = ts.vehicle.getRoute(ref), ts.vehicle.getRouteIndex(ref)
+
+        def nearest_vehicle_lane(edge: str):
+            lanes = [lane for lane in self.by_id.values() if lane.edge == edge and not lane.allow_pedestrians]
+            return min(lanes, key=lambda lane: abs(lane.index - index)) if lanes else None
+
         while centre >= length and 0 <= k < len(route) - 1:  # beyond the ego's edge: on along its route
             k += 1
-            ahead = [lane for lane in self.by_id.values() if lane.edge == route[k] and not lane.allow_pedestrians]
-            if not ahead:
+            if (ahead := nearest_vehicle_lane(route[k])) is None:
                 break
             centre -= length
-            sumo_lane = min(ahead, key=lambda lane: abs(lane.index - index))
-            length = _length(sumo_lane.shape)
+            sumo_lane, length = ahead, _length(ahead.shape)
         while centre <= 0 and 0 < k <= len(route) - 1:  # behind the ego's edge: back along the way it came
             k -= 1
-            behind = [lane for lane in self.by_id.values() if lane.edge == route[k] and not lane.allow_pedestrians]
-            if not behind:
+            if (behind := nearest_vehicle_lane(route[k])) is None:
                 break
-            sumo_lane = min(behind, key=lambda lane: abs(lane.index - index))
-            length = _length(sumo_lane.shape)
+            sumo_lane, length = behind, _length(behind.shape)
             centre += length
         if not 0 < centre < length:
             self.run.spawns[entity.name] = Spawn(False, f"no room {ds:+.0f} m from the ego on its road at t={t:.1f}")
