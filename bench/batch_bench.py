@@ -1,6 +1,6 @@
 """How much faster `ttsgc batch` and `ttsgc eval` get with more workers.
 
-    python bench/batch_bench.py [--repeats 3] [--workers 1 2] [--variants 1 5] [--skip-eval]
+    python bench/batch_bench.py [--repeats 3] [--workers 1 2] [--variants 1 5] [--skip-eval] [--modes alone served]
 
 Runs `ttsgc batch examples` into a fresh folder with each number of workers, alternating so that a busy
 spell of a shared machine hurts every setting alike, and prints the median wall time of each, the speed-up
@@ -9,8 +9,11 @@ the machine's load average (how noisy the figures are). Processes start with the
 installed copy does (--bytecode none: as the environment says).
 Then the same for `ttsgc eval examples --seeds 5`. Caches (map indexes, SUMO networks) are warmed first.
 
-A warm scene takes about 0.1 s, while starting the pipeline (imports, the map library) takes seconds that no
-number of workers shortens; the speed-up therefore grows with the number of scenes (--variants).
+A warm scene takes about 0.05 s, while starting the pipeline (Python, the imports, libsumo, the map library)
+takes about 0.45 s that no number of workers shortens; the speed-up of a batch run alone therefore grows with
+the number of scenes (--variants). Each run is timed two ways (--modes): "alone", the command starting cold in
+its own process, and "served", handed to a warm `ttsgc serve` (started for the bench on its own cache folder,
+stopped at the end), where that fixed part is gone.
 "cores had" is CPU time over wall time: on a shared machine whose kernel shares the CPU between sessions
 (sched_autogroup), a busy neighbour caps what the workers get, and the speed-up with it.
 """
@@ -44,13 +47,16 @@ def machine_busy_seconds() -> float:
 OTHERS: list[float] = []  # cores other sessions kept busy during each timed run
 
 
+ENV: dict[str, str] = {}  # every command's environment: set up in main()
+
+
 def timed(command: list[str]) -> tuple[float, float]:
-    """(wall seconds, CPU seconds of the command and its workers)."""
+    """(wall seconds, CPU seconds of the command and its workers; a served command's are the server's, not
+    counted, so 'cores had' reads 0 for it)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     busy = machine_busy_seconds()
     start = time.perf_counter()
-    done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                          env=with_bytecode(dict(os.environ)))
+    done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=ENV)
     wall = time.perf_counter() - start
     if done.returncode != 0:
         raise SystemExit(f"failed ({done.returncode}): {' '.join(command)}")
@@ -112,24 +118,38 @@ def main() -> int:
     parser.add_argument("--quiet", type=float, metavar="CORES",
                         help="count only rounds during which other work kept fewer than CORES cores busy (a shared "
                              "machine); up to 6 x --repeats rounds are tried")
+    parser.add_argument("--modes", nargs="+", choices=["alone", "served"], default=["alone", "served"],
+                        help="alone: each command starts cold in its own process; served: a warm server runs it")
     bytecode_option(parser)
     args = parser.parse_args()
     ttsgc = [sys.executable, "-m", "ttsgc"]
     with tempfile.TemporaryDirectory(prefix="ttsgc-bench-") as scratch:
         use_bytecode(args, Path(scratch) / "bytecode")
+        base = with_bytecode(dict(os.environ, TTSGC_CACHE_DIR=f"{scratch}/cache"))
+        base.pop("ANTHROPIC_API_KEY", None)  # the offline lowering
         print(f"python: {bytecode_note()}; runs of 1 and 2 workers alternate (paired), medians")
         runs = iter(range(10**6))
-        timed(ttsgc + ["batch", "examples", "-o", f"{scratch}/warm", "--workers", str(max(args.workers))])
         scenes = len([p for p in (ROOT / "examples").iterdir() if p.suffix in (".txt", ".tsg")])
-        for variants in args.variants:
-            measure(f"ttsgc batch examples --variants {variants} ({scenes * variants} scenes)",
-                    lambda w, v=variants: ttsgc + ["batch", "examples", "-o", f"{scratch}/batch-{next(runs)}",
-                                                   "--variants", str(v), "--workers", str(w)],
-                    args.workers, args.repeats, args.quiet)
-        if not args.skip_eval:
-            measure("ttsgc eval examples --seeds 5 (90 runs)",
-                    lambda w: ttsgc + ["eval", "examples", "--seeds", "5", "--workers", str(w)],
-                    args.workers, args.repeats, args.quiet)
+        for mode in args.modes:
+            ENV.clear()
+            ENV.update(base, TTSGC_NO_SERVER="0" if mode == "served" else "1")
+            if mode == "served":
+                subprocess.run(ttsgc + ["serve", "--idle", "0"], cwd=ROOT, env=ENV, check=True,
+                               stdout=subprocess.DEVNULL)
+            try:
+                timed(ttsgc + ["batch", "examples", "-o", f"{scratch}/warm-{mode}", "--workers", str(max(args.workers))])
+                for variants in args.variants:
+                    measure(f"{mode}: ttsgc batch examples --variants {variants} ({scenes * variants} scenes)",
+                            lambda w, v=variants: ttsgc + ["batch", "examples", "-o", f"{scratch}/batch-{next(runs)}",
+                                                           "--variants", str(v), "--workers", str(w)],
+                            args.workers, args.repeats, args.quiet)
+                if not args.skip_eval:
+                    measure(f"{mode}: ttsgc eval examples --seeds 5 (90 runs)",
+                            lambda w: ttsgc + ["eval", "examples", "--seeds", "5", "--workers", str(w)],
+                            args.workers, args.repeats, args.quiet)
+            finally:
+                if mode == "served":
+                    subprocess.run(ttsgc + ["serve", "--stop"], cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL)
     return 0
 
 

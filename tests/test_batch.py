@@ -206,3 +206,21 @@ def test_scenes_go_out_longest_first_by_their_earlier_durations(one_worker, tmp_
     assert order == [fresh, *reversed(finished)]
     assert job_key(jobs[0]) == job_key(plan_jobs(prompts, tmp_path / "elsewhere")[0])  # the folder is not the work
     assert longest_first(jobs, {job_key(job): 0.5 for job in jobs}) == jobs  # ties keep the input order
+
+
+def test_workers_are_forked_only_while_no_other_thread_could_hold_a_lock():
+    import threading
+
+    from ttsgc.runner import FORK_SAFE_THREAD, can_fork
+
+    assert can_fork(), [t.name for t in threading.enumerate()]
+    for name, forkable in (("busy", False), (f"{FORK_SAFE_THREAD}-watcher", True)):
+        release = threading.Event()
+        thread = threading.Thread(target=release.wait, name=name, daemon=True)
+        thread.start()
+        try:
+            assert can_fork() is forkable
+        finally:
+            release.set()
+            thread.join()
+    assert can_fork(), [t.name for t in threading.enumerate()]

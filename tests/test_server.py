@@ -183,10 +183,37 @@ def test_a_client_of_another_installation_is_refused_and_runs_the_command_itself
     assert served_count(served) == before
 
 
-def test_commands_with_their_own_workers_are_not_forwarded(served, tmp_path):
+def _without_timings(summary: Path) -> list[dict]:
+    return [{k: v for k, v in row.items() if not k.startswith("seconds")}
+            for row in json.loads(summary.read_text())["rows"]]
+
+
+def test_a_served_batch_forks_its_workers_warm_and_writes_what_the_batch_run_alone_writes(served, tmp_path):
+    prompts = tmp_path / "prompts"
+    prompts.mkdir()
+    for name in ("blocking.tsg", "left_turn_oncoming.tsg", "crushing.txt"):
+        (prompts / name).write_bytes((EXAMPLES / name).read_bytes())
     before = served_count(served)
-    code, out, _ = ttsgc(["batch", "--help"], served, tmp_path)
-    assert code == 0 and b"usage: ttsgc batch" in out
+    code, out, err = ttsgc(["batch", "prompts", "-o", "served", "--workers", "2"], served, tmp_path)
+    assert code == 0, err
+    assert served_count(served) == before + 1
+    code, _, err = ttsgc(["batch", "prompts", "-o", "alone", "--workers", "2"], dict(served, TTSGC_NO_SERVER="1"),
+                         tmp_path)
+    assert code == 0, err
+    scenes = sorted(p.name for p in (tmp_path / "alone").glob("*.xosc"))
+    assert len(scenes) == 3 and scenes == sorted(p.name for p in (tmp_path / "served").glob("*.xosc"))
+    for name in scenes:
+        assert (tmp_path / "served" / name).read_bytes() == (tmp_path / "alone" / name).read_bytes()
+    assert _without_timings(tmp_path / "served" / "summary.json") == _without_timings(tmp_path / "alone" / "summary.json")
+
+
+def test_a_batch_on_ray_runs_in_the_client(served, monkeypatch):
+    from ttsgc import forward
+
+    monkeypatch.setenv("TTSGC_CACHE_DIR", served["TTSGC_CACHE_DIR"])
+    before = served_count(served)
+    for argv in (["batch", "in", "-o", "out", "--ray", "local"], ["eval", "examples", "--ray=local"], ["serve"]):
+        assert forward.forward(argv) is None  # nothing was sent: the caller runs it
     assert served_count(served) == before
 
 

@@ -25,9 +25,11 @@ import os
 import sys
 import zlib
 
-# Commands that gain from a warm process and do not run process pools of their own (batch and eval fork
-# their own warm workers; serve is the server).
-FORWARDED = frozenset({"check", "fmt", "lower", "compile", "validate", "lint", "render", "maps", "import-ttsg"})
+# Commands that gain from a warm process: every one but serve (the server itself). batch and eval
+# fork their workers from the served child, warm at once; on Ray (--ray) the cluster's workers do the work, so
+# those runs stay here.
+FORWARDED = frozenset({"check", "fmt", "lower", "compile", "validate", "lint", "render", "maps", "import-ttsg",
+                       "batch", "eval"})
 NO_SERVER_ENV = "TTSGC_NO_SERVER"  # set (to anything but "" or 0): never forward, always run in this process
 PROTOCOL = 1
 MAX_MESSAGE = 1 << 24
@@ -39,7 +41,8 @@ _PASSED_ON = (_signal.SIGINT, _signal.SIGTERM)
 def forward(argv: list[str]) -> int | None:
     """The exit status of the command as a server ran it, or None when no usable server answered (then
     nothing has run, and the caller runs the command itself)."""
-    if os.environ.get(NO_SERVER_ENV, "0") not in ("", "0") or _command(argv) not in FORWARDED:
+    if os.environ.get(NO_SERVER_ENV, "0") not in ("", "0") or _command(argv) not in FORWARDED \
+            or any(word == "--ray" or word.startswith("--ray=") for word in argv):
         return None
     if not hasattr(_socket, "AF_UNIX") or not all(_is_open(fd) for fd in (0, 1, 2)):
         return None

@@ -20,6 +20,11 @@ from typing import Any
 from ttsgc.errors import ExitCode, TtsgcError
 
 
+# A thread named so holds no lock a forked worker could need (a served command's client watcher, blocked on its
+# socket); any other thread in this process makes the pool spawn its workers instead of forking them.
+FORK_SAFE_THREAD = "ttsgc-fork-safe"
+
+
 class RunnerError(TtsgcError):
     exit_code = ExitCode.INVALID_SCENARIO  # a bad --workers or --ray: a bad command line
 
@@ -75,10 +80,9 @@ def run(function: Callable[[Any], Any], jobs: Sequence[Any], workers: int | None
 def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]:
     import gc
     import multiprocessing
-    import threading
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    forkable = "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
+    forkable = can_fork()
     if forkable:  # warm once here; no simulation has been started in this process, so none is inherited
         if warm_up is not None:
             warm_up()
@@ -96,6 +100,7 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
             for future in sorted(done, key=pending.get):
                 index = pending.pop(future)
                 yield index, future.result()
+        pool.shutdown(wait=True)  # idle workers exit at once, and no thread of the pool outlives it to stop a later fork
     except BaseException:  # interrupted, or the caller stopped: workers only compute, so end them at once
         for process in list((getattr(pool, "_processes", None) or {}).values()):
             process.terminate()
@@ -104,6 +109,16 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
         pool.shutdown(wait=False, cancel_futures=True)
         if forkable:
             gc.unfreeze()
+
+
+def can_fork() -> bool:
+    """Workers may be forked: the system can, and no other thread of this process (but a fork-safe one) could
+    be holding a lock at the moment of the fork, which the worker would inherit held forever."""
+    import multiprocessing
+    import threading
+
+    return "fork" in multiprocessing.get_all_start_methods() and all(
+        t is threading.current_thread() or t.name.startswith(FORK_SAFE_THREAD) for t in threading.enumerate())
 
 
 def _worker_start(warm_up=None) -> None:

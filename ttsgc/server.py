@@ -26,6 +26,7 @@ from pathlib import Path
 from ttsgc.errors import ExitCode, TtsgcError, UsageError
 from ttsgc.forward import (PROTOCOL, LineReader, connect, decode_message, python_identity, send_message,
                            server_dir, server_key, short_address, socket_path)
+from ttsgc.runner import FORK_SAFE_THREAD
 
 DEFAULT_IDLE_S = 3 * 3600  # a working day's pauses, not a machine's lifetime
 TICK_S = 2.0  # how often an idle server looks at the clock and at its installation
@@ -383,7 +384,8 @@ def _child(conn: socket.socket, request: dict, fds: list[int]) -> None:
     _standard_streams(request["streams"])
     conn.sendall(b"started\n")
     finished = threading.Event()
-    threading.Thread(target=_watch_client, args=(conn, finished, threading.get_ident()), daemon=True).start()
+    threading.Thread(target=_watch_client, args=(conn, finished, threading.get_ident()), daemon=True,
+                     name=f"{FORK_SAFE_THREAD}-client-watcher").start()
     code = _run_main(request["argv"])
     for signum in (signal.SIGINT, signal.SIGTERM):  # the command is over: a late Ctrl-C changes nothing
         signal.signal(signum, signal.SIG_IGN)
