@@ -45,15 +45,30 @@ def machine_busy_seconds() -> float:
 
 
 OTHERS: list[float] = []  # cores other sessions kept busy during each timed run
-
-
 ENV: dict[str, str] = {}  # every command's environment: set up in main()
+SERVER: list[int] = []  # the pid of the warm server while the served runs are timed
+
+
+def process_tree_cpu(pid: int) -> float:
+    """CPU seconds of a process and of its children it has reaped (a served command's child and its workers)."""
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except OSError:
+        return 0.0
+    return sum(int(x) for x in fields[11:15]) / os.sysconf("SC_CLK_TCK")  # utime stime cutime cstime
+
+
+def children_of(pid: int) -> bool:
+    try:
+        return any((task / "children").read_text().strip() for task in Path(f"/proc/{pid}/task").iterdir())
+    except OSError:
+        return False
 
 
 def timed(command: list[str]) -> tuple[float, float]:
-    """(wall seconds, CPU seconds of the command and its workers; a served command's are the server's, not
-    counted, so 'cores had' reads 0 for it)."""
+    """(wall seconds, CPU seconds of the command and its workers, in the server when it was served)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    server_before = process_tree_cpu(SERVER[0]) if SERVER else 0.0
     busy = machine_busy_seconds()
     start = time.perf_counter()
     done = subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=ENV)
@@ -62,6 +77,11 @@ def timed(command: list[str]) -> tuple[float, float]:
         raise SystemExit(f"failed ({done.returncode}): {' '.join(command)}")
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    if SERVER:  # the served command's child ends just after answering: its CPU counts once the server reaped it
+        deadline = time.monotonic() + 2.0
+        while children_of(SERVER[0]) and time.monotonic() < deadline:
+            time.sleep(0.01)
+        cpu += process_tree_cpu(SERVER[0]) - server_before
     OTHERS.append(max(0.0, machine_busy_seconds() - busy - cpu) / wall)
     return wall, cpu
 
@@ -134,8 +154,9 @@ def main() -> int:
             ENV.clear()
             ENV.update(base, TTSGC_NO_SERVER="0" if mode == "served" else "1")
             if mode == "served":
-                subprocess.run(ttsgc + ["serve", "--idle", "0"], cwd=ROOT, env=ENV, check=True,
-                               stdout=subprocess.DEVNULL)
+                started = subprocess.run(ttsgc + ["serve", "--idle", "0"], cwd=ROOT, env=ENV, check=True,
+                                         capture_output=True, text=True).stdout
+                SERVER[:] = [int(started.rsplit("pid ", 1)[1].split(";")[0])]
             try:
                 timed(ttsgc + ["batch", "examples", "-o", f"{scratch}/warm-{mode}", "--workers", str(max(args.workers))])
                 for variants in args.variants:
@@ -150,6 +171,7 @@ def main() -> int:
             finally:
                 if mode == "served":
                     subprocess.run(ttsgc + ["serve", "--stop"], cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL)
+                    SERVER.clear()
     return 0
 
 
