@@ -56,3 +56,19 @@ def test_a_walker_on_the_sidewalk_by_a_crosswalk_walks_away_from_the_junction_wh
     walks = [next(a for a in bound.agents if a.name == "p1") for bound in
              itertools.islice(candidates(scene, load_library(["builtin"])), 8)]
     assert len(walks) == 8 and all(abs(p.walk_to.s - p.start.s) >= 15 for p in walks)
+
+
+def test_people_waiting_to_cross_stand_at_the_kerb_and_a_walker_passes_them_on_the_outer_half():
+    """A walker along the pavement walked through the people waiting on it to cross (a collision of two
+    pedestrians in both players); people keep to one side of a pavement, so the two halves never meet."""
+    from ttsgc.vocabulary import BODIES
+
+    scene = parse('scenario "w"\nstage main {\n    ego car go_straight\n    pedestrian p1 at front cross_the_road\n'
+                  '    pedestrian p2 at front_right on_the_sidewalk\n}\n')
+    bound = next(iter(candidates(scene, load_library(["builtin"]))))
+    crosser, walker = bound.agent("p1"), bound.agent("p2")
+    assert (crosser.start.road, crosser.start.lane) == (walker.start.road, walker.start.lane)  # the same pavement
+    outward = -1 if walker.start.lane < 0 else 1  # t grows to the left of the reference line
+    assert walker.start.offset * outward > 0 > crosser.start.offset * outward
+    assert walker.walk_to.offset == walker.start.offset  # the whole walk, not its first step
+    assert abs(walker.start.offset - crosser.start.offset) >= BODIES["pedestrian"][1]

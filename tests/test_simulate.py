@@ -4,6 +4,7 @@ should, collisions are reported, unsupported content is named, the commands' exi
 from __future__ import annotations
 
 import json
+import math
 
 import pytest
 from lxml import etree
@@ -201,3 +202,27 @@ def test_compile_tries_the_next_road_when_the_scene_fails(tmp_path, monkeypatch)
                                          log=messages.append)
     assert report.ok and len(seen) == 2 and seen[0] != seen[1]
     assert "trying the next-ranked road" in messages[0]
+
+
+def test_the_sumo_player_walks_a_trajectory_at_its_vertices_offsets_as_esmini_does(tmp_path):
+    """A trajectory's vertices were read without their offsets: a walker told to keep to the pavement's outer
+    half walked its centre in SUMO (through people waiting at the kerb), at its outer half in esmini."""
+    from ttsgc.roads.opendrive import load_opendrive
+    from ttsgc.simulate.players import player
+    from ttsgc.simulate.validate import read_plan
+
+    scene = _compiled("daily_traffic", tmp_path)
+    plan = read_plan(scene)
+    walk = next(a for act in plan.acts for e in act.events if e.name == "p1_on_the_sidewalk" for a in e.actions
+                if a.kind == "trajectory")
+    assert len(set(walk.offsets)) == 1 and walk.offsets[0] != 0
+    road = load_opendrive(plan.xodr).roads[walk.waypoints[0][0]]
+    last = player("sumo").play(plan, seed=1).samples["p1"][-1]
+
+    def lateral(vertex):  # (distance along, the sample's offset from the lane's centre at that vertex)
+        _, lane, s = vertex
+        centre, hdg = road.lane_point(s, lane), road.pose(s).hdg
+        dx, dy = last.x - centre.x, last.y - centre.y
+        return abs(dx * math.cos(hdg) + dy * math.sin(hdg)), -dx * math.sin(hdg) + dy * math.cos(hdg)
+
+    assert abs(min(map(lateral, walk.waypoints))[1] - walk.offsets[0]) < 0.1

@@ -26,6 +26,7 @@ from ttsgc.roads.retrieve import JUNCTION_CLEARANCE_M
 from ttsgc.scenario import Agent, Scenario, Trigger
 
 CLEARANCE_M = 1.0
+PAVEMENT_MARGIN_M = 0.1  # a person keeping to one side of the pavement keeps this far inside its edge
 MAX_OVERHANG_M = 0.5  # how far a vehicle standing in an edge lane reaches into the driving lane beside it at most
 MIN_DRIVING_WIDTH_M = 2.5  # narrower, a lane is still opening or closing there: no vehicle starts on it
 PEDESTRIAN_SPEED = {"cautious": 1.0, "normal": 1.4, "aggressive": 2.5}
@@ -421,6 +422,8 @@ class Placer:
         start = frame.resolve(lane, u)
         if lane.type != "driving" and agent.type != "pedestrian":
             start = self._clear_of_the_driving_lane(agent, start)
+        elif lane.type == "sidewalk" and agent.type == "pedestrian":
+            start = self._keeping_to_a_side(agent, start)
         return self._bound(agent, stage, start, frame, turn=turn, far_side=lane.far_side)
 
     def _clear_of_the_driving_lane(self, agent: Agent, start: LanePos) -> LanePos:
@@ -434,6 +437,18 @@ class Placer:
         if shift <= 0:
             return start
         return start.model_copy(update={"offset": round(shift if start.lane > 0 else -shift, 3)})
+
+    def _keeping_to_a_side(self, agent: Agent, start: LanePos) -> LanePos:
+        """One about to cross waits at the kerb, one walking along keeps to the pavement's outer half, as people
+        do: so a walker passes those waiting to cross instead of walking through them. The offset counts along
+        the road's t (outward is toward -t on a right lane)."""
+        section = self.odr.roads[start.road].section_at(start.s)
+        width = section.lanes[start.lane].width(start.s - section.s)
+        shift = (width - V.BODIES[agent.type][1]) / 2 - PAVEMENT_MARGIN_M
+        if shift <= 0 or agent.action not in ("cross_the_road", "on_the_sidewalk"):
+            return start
+        outward = (1 if agent.action == "on_the_sidewalk" else -1) * (-1 if start.lane < 0 else 1)
+        return start.model_copy(update={"offset": round(outward * shift, 3)})
 
     def _after(self, frame: _Frame, lane: LaneRef, edge: float, agent: Agent, outward: int) -> float:
         """Desired centre of the next body in a queue: beyond the previous one (or the given edge) by the gap."""

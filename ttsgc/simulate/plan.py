@@ -46,6 +46,7 @@ class Action:
     entity: str = ""  # add: the entity an AddEntityAction brings in (a global action names it itself)
     orientation: tuple[str, float] | None = None  # a lane position's Orientation: (type, h), None when absent
     offset: float = 0.0  # a lane position's offset from its lane's centre, along the road's t (to the left)
+    offsets: tuple[float, ...] = ()  # a trajectory's: each vertex's offset, as `offset`
 
 
 @dataclass
@@ -236,7 +237,8 @@ class _Reader:
             if vertices:
                 points = tuple(_lane(v.find("Position")) for v in vertices)
                 if all(points):
-                    return Action("trajectory", waypoints=points)
+                    offsets = tuple(_float(v.find("Position/LanePosition"), "offset", 0.0) for v in vertices)
+                    return Action("trajectory", waypoints=points, offsets=offsets)
                 self.missing("a trajectory vertex other than a LanePosition")
                 return None
         self.missing(f"action {tag}" + (f"/{etree.QName(first[0]).localname}" if len(first) else ""))

@@ -371,11 +371,11 @@ class Executor:
         import libsumo as ts
 
         points = []
-        for road, lane, s in action.waypoints:
+        for (road, lane, s), offset in zip(action.waypoints, action.offsets or [0.0] * len(action.waypoints)):
             if road not in self.odr.roads:
                 self.run.problems.append(f"{event.name}: the trajectory names road {road}, which does not exist")
                 return
-            pose = self.odr.roads[road].lane_point(min(max(s, 0.0), self.odr.roads[road].length), lane)
+            pose = _lane_pose(self.odr.roads[road], min(max(s, 0.0), self.odr.roads[road].length), lane, offset)
             points.append((pose.x, pose.y))
         mover = self.movers.get(entity.name)
         if mover is None:  # a vehicle: take it out of SUMO where it is
