@@ -1823,3 +1823,18 @@ def test_a_pedestrian_crossing_placed_elsewhere_stays_a_crosswalk():
 def test_slow_before_a_noun_is_how_the_agent_drives(prompt, kind):
     others = [(a.type, a.behavior) for a in lower(prompt).scenario.agents() if not a.is_ego]
     assert others == [(kind, "cautious")]
+
+
+# -- spoken and narrated English: discourse words, asides, counterfactuals ------------------------------------
+
+@pytest.mark.parametrize("prompt", [
+    "right so there's a bus coming up behind me and I keep going",
+    "Okay, right, a bus is behind me.",
+])
+def test_a_right_that_opens_spoken_talk_is_no_side(prompt):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == [("bus", "go_straight", "back")]
+    assert road(prompt).lanes < 2
+
+
+def test_right_opening_a_sentence_before_a_noun_is_still_a_side():
+    assert ("car", "go_straight", "right") in agents("Right beside me a car keeps pace.")

@@ -403,6 +403,19 @@ def _read_inside(tokens: list[Token], start: int, end: int) -> list[Unit]:
     return out
 
 
+INTERJECTIONS = {"ok", "okay", "so", "well", "alright", "um", "uh", "erm", "er", "hmm", "oh", "and", "now"}
+AFTER_A_SPOKEN_RIGHT = INTERJECTIONS | {",", "then", "there", "here", "i", "we", "you", "listen", "let", "let's",
+                                        "guys", "folks", "this", "that", "next"}
+
+
+def _opens_talk(tokens: list[Token], m: Match) -> bool:
+    """'Right, so...', 'okay right there's...': a spoken 'right' that opens a sentence is a discourse marker."""
+    sentence = tokens[m.start].sentence
+    before = [t.word for t in tokens[:m.start] if t.sentence == sentence]
+    nxt = tokens[m.end].word if m.end < len(tokens) and tokens[m.end].sentence == sentence else ""
+    return all(w in INTERJECTIONS or w == "," for w in before) and nxt in AFTER_A_SPOKEN_RIGHT
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -412,6 +425,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
+        return [Unit(m.start, m.end, "word", "right", span)]  # "Right, so there's an ambulance": no side
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
             after[:1] and after[0] in ("behind", "ahead", "beside", "alongside", "next", "up")
             or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
