@@ -1838,3 +1838,35 @@ def test_a_right_that_opens_spoken_talk_is_no_side(prompt):
 
 def test_right_opening_a_sentence_before_a_noun_is_still_a_side():
     assert ("car", "go_straight", "right") in agents("Right beside me a car keeps pace.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "The street was still icy from this morning when a van stopped ahead of us.",
+    "The car park is wet since last night and a bus waits in front of me.",
+])
+def test_a_time_that_says_when_the_road_got_so_is_not_the_scenes_time(prompt):
+    weather = lower(prompt).scenario.weather
+    assert weather is not None and weather.time == "noon"
+
+
+def test_a_time_of_day_after_from_that_follows_no_road_state_is_the_scenes_time():
+    assert lower("From dawn onwards, a bus waits at the stop ahead.").scenario.weather.time == "dawn"
+
+
+def test_a_condition_without_a_comma_ends_where_its_main_clause_starts():
+    scene = lower("We pull out to pass the tractor. Once we are past the tractor we move back into the left lane.")
+    assert [[a.action for a in s.agents if a.is_ego] for s in scene.scenario.stages][1] == ["change_lane_to_left"]
+
+
+@pytest.mark.parametrize("prompt", [
+    "You changed lanes to pass the van without a glance over your left shoulder.",
+    "Do a shoulder check before you pass the van.",
+])
+def test_the_drivers_shoulder_is_no_road_shoulder(prompt):
+    van = next(a for a in lower(prompt).scenario.agents() if a.type == "car" and not a.is_ego)
+    assert van.road_type == "driving" and van.relative_to_ego == "front"
+
+
+def test_sitting_in_a_lane_beside_or_behind_the_ego_keeps_pace():
+    assert ("truck", "go_straight", "back_left") in agents("A lorry was sitting in the left lane just behind us.")
+    assert ("car", "stop", "front_right") in agents("A broken down van is sitting in the right lane ahead.")

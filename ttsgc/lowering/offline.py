@@ -416,6 +416,40 @@ def _opens_talk(tokens: list[Token], m: Match) -> bool:
     return all(w in INTERJECTIONS or w == "," for w in before) and nxt in AFTER_A_SPOKEN_RIGHT
 
 
+OWNERS = {"my", "your", "his", "her", "their", "our"}
+BODY_PARTS = {"shoulder", "shoulders"}
+
+
+def _body_part(tokens: list[Token], m: Match) -> bool:
+    """'over your right shoulder', 'a shoulder check': the driver's shoulder, not the road's, nor a side."""
+    words = [t.word for t in tokens]
+    j = m.end - 1
+    if m.end - m.start == 1 and words[j] in ("left", "right") and m.end < len(words) and words[m.end] in BODY_PARTS:
+        j = m.end  # the side of the shoulder
+    elif words[m.end - 1] not in BODY_PARTS:
+        return False
+    before = words[j - 1] if j > 0 else ""
+    if before in ("left", "right"):
+        before = words[j - 2] if j > 1 else ""
+    after = words[j + 1] if j + 1 < len(words) else ""
+    return before in OWNERS or after in ("check", "checks", "checked", "checking") or \
+        before == "the" and j > 1 and words[j - 2] == "over" or before == "over"
+
+
+PACE_PLACES = {"behind", "ahead", "alongside", "beside", "level", "next", "abreast"}
+
+
+def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
+    """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
+    says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
+    words = [t.word for t in tokens[i:i + 8] if t.sentence == tokens[i].sentence]
+    if words[:2] != ["in", "the"] or "lane" not in words[2:6]:
+        return False
+    after = words[words.index("lane", 2) + 1:]
+    after = after[1:] if after[:1] in (["just"], ["right"], ["slightly"], ["directly"]) else after
+    return bool(after) and after[0] in PACE_PLACES
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -425,6 +459,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "positions" and _body_part(tokens, m):
+        return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
         return [Unit(m.start, m.end, "word", "right", span)]  # "Right, so there's an ambulance": no side
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
@@ -441,6 +477,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.end + 3].word == "lane" and \
             any(t.word in EGO_WORDS for t in tokens[max(0, m.start - 3):m.start]):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "you sat in the left lane": where, not a stop
+    if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
+            _sits_in_moving_traffic(tokens, m.end):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a motorbike sitting in the right lane just
+        # behind you": where it keeps pace, not a stop
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stuck"] and (
             nxt in STILL_MOVING or nxt == "behind" and {t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING):
         return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
@@ -786,6 +826,10 @@ def _weather(r: _Reader) -> Weather | None:
             r.mark(u)
             continue
         r.mark(u)
+        if u.meaning.startswith("time:") and _time_of_a_cause(r.units, k):
+            r.notes.append(f"left out: '{' '.join(t.word for t in u.tokens)}' (when something before the scene "
+                           "happened, not the scene's time)")
+            continue
         (times if u.meaning.startswith("time:") else conditions).append(
             (u.meaning.removeprefix("time:"), " ".join(t.word for t in u.tokens)))
     clock = _clock_time(r)
@@ -799,6 +843,25 @@ def _weather(r: _Reader) -> Weather | None:
         if other != time:
             r.notes.append(f"left out: '{said}' (the scene has one time of day: {time})")
     return Weather(condition=condition, time=time)
+
+
+SINCE = {"from", "since"}
+CAUSE_FILLER = {"this", "the", "last", "earlier", "yesterday", "rain", "rainfall", "shower", "showers", "storm",
+                "downpour", "frost", "snow", "snowfall", "'s", "of"}
+
+
+def _time_of_a_cause(units: list[Unit], k: int) -> bool:
+    """'wet from this morning', 'icy since last night': when the road got so, not the scene's time of day."""
+    sentence = units[k].tokens[0].sentence
+    for j in range(k - 1, max(-1, k - 5), -1):
+        u = units[j]
+        if u.tokens[0].sentence != sentence:
+            return False
+        if u.word in SINCE:  # after a state of the road: "wet from", "icy since"
+            return j > 0 and units[j - 1].category == "weather" and not units[j - 1].meaning.startswith("time:")
+        if u.word not in CAUSE_FILLER and u.category not in ("weather",):
+            return False
+    return False
 
 
 def _clock_time(r: _Reader) -> tuple[str, str] | None:
@@ -1039,6 +1102,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
             continue
+        if condition and _main_clause_after_condition(current, units, k):
+            close()  # "once you were past the lorry you moved back": the condition ends where its main clause starts
         if u.category == "word" and u.word in CLAUSE_WORDS:
             if u.word in ("and", "or") and not _has_verb(current) and not _new_subject_after_copula(current, units, k):
                 current.append(u)
@@ -1089,6 +1154,19 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
         if x.category == "comma" or x.word in CLAUSE_WORDS:
             return False
     return False
+
+
+def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """A condition written without a comma ('once you were past it you pulled in'): a complete condition (a
+    subject and its verb), then a subject pronoun and a verb start the clause the condition is for."""
+    u = units[k]
+    pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
+        u.category == "word" and u.word in SUBJECT_PRONOUNS
+    if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS for x in current)):
+        return False
+    if current[-1].category == "word" and current[-1].word in COPULAS | AUXILIARIES:
+        return False  # "once it is you ...": the pronoun belongs to the condition
+    return any(x.category == "actions" for x in units[k + 1:k + 3])
 
 
 def _starts_subject(units: list[Unit], k: int) -> bool:
