@@ -587,8 +587,10 @@ def test_a_pronoun_takes_no_participle_so_the_past_tense_after_it_is_finite():
 
 
 def test_my_lane_is_the_egos_lane():
-    assert ("truck", "change_lane_to_left", "right") in agents(
+    assert ("truck", "change_lane_to_right", "left") in agents(  # indicating: traffic keeps left, nearside is left
         "The lorry in the nearside lane indicated right and started to move across into my lane.")
+    assert ("truck", "change_lane_to_left", "right") in agents(
+        "The truck in the right lane started to move across into my lane.")
 
 
 def test_a_verb_with_by_after_a_copula_is_a_passive():
@@ -1870,3 +1872,44 @@ def test_the_drivers_shoulder_is_no_road_shoulder(prompt):
 def test_sitting_in_a_lane_beside_or_behind_the_ego_keeps_pace():
     assert ("truck", "go_straight", "back_left") in agents("A lorry was sitting in the left lane just behind us.")
     assert ("car", "stop", "front_right") in agents("A broken down van is sitting in the right lane ahead.")
+
+
+# -- cut-ins told by the one cut up ---------------------------------------------------------------------------
+
+def test_a_vehicle_on_the_egos_side_drifting_into_its_lane_starts_level():
+    assert ("car", "change_lane_to_right", "left") in agents("A van on my left starts drifting into my lane.")
+    assert ("motorcycle", "change_lane_to_left", "front_right") in agents(
+        "A moped pulling out of a bus stop on the right, in the wet.")  # from where it stood, ahead
+
+
+def test_let_it_in_ahead_places_the_one_let_in():
+    assert ("bus", "change_lane_to_right", "front_left") in agents(
+        "A coach in the lane to our left began to drift towards us, so we let it in ahead.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "A taxi in the lane on my right suddenly swerves left in front of me.",
+    "A taxi in the right-hand lane pulled across in front of us.",
+])
+def test_in_front_of_the_ego_after_a_swerve_is_where_it_ends(prompt):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == [("car", "change_lane_to_left", "right")]
+
+
+def test_a_cut_in_from_behind_keeps_its_place_behind():
+    assert ("car", "change_lane_to_right", "back_left") in agents(
+        "A taxi was in the left lane well behind me. The taxi sped past me and cut into my lane directly in front of me.")
+
+
+def test_a_subject_before_then_keeps_its_verb():
+    scene = lower("A truck drives ahead of us. The truck then brakes to a stop.").scenario
+    assert [a.action for a in scene.agents() if a.is_ego] == ["go_straight"]
+
+
+def test_without_indicating_says_traffic_keeps_left():
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "A Ford beside me on my offside moved into my lane without indicating.")
+
+
+def test_the_egos_own_make_in_apposition_is_no_other_agent():
+    assert agents("I was driving my car, a silver Ford Focus, north along the high street.") == [
+        ("car", "go_straight", "ego")]

@@ -178,7 +178,8 @@ def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
         t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
 
 
-LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement"}
+LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
+                     "indicating", "indicator", "indicators"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 
 
@@ -1036,6 +1037,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
                 skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
+        if u.category == "sequence" and u.meaning == "then" and u.word == "then" and _has_agent(current) and \
+                not _has_verb(current) and not any(x.category == "comma" for x in current) and \
+                nxt is not None and nxt.category == "actions":
+            r.mark(u)
+            stage += 1  # "the taxi then sped past": its subject opens the later stage's clause
+            continue
         if u.category == "sequence" and not (u.word == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers")) and not (
                 u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
@@ -1079,6 +1086,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
+            ego_make = bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and \
+                len(current[-1].tokens) > 1 and nxt is not None and nxt.word in ("a", "an") and closed
+            # "I was driving my vehicle, a grey Astra, west": what the ego is, not another car
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
@@ -1097,7 +1107,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 and current[-1].base in ROLE_NAMES and current[-2].category == "comma" and \
                 current[-3].category == "agents" and not joined  # "a principal other vehicle (POV) stationary"
             if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named \
-                    and not bracketed:
+                    and not bracketed and not ego_make:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -1666,6 +1676,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("moves_out")  # "the car in front pulls out", "swerves out": out of the lane it is in
         if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
+        if action == "cut_in" and {"stop", "stand", "bay"} & {t.word for t in u.tokens}:
+            e.features.add("from_lane")  # "pulling out of a stop on the right": from where it stood, ahead
         if e.is_ego and action == "cut_in" and direction is None and any(
                 a[0] == stage and a[4] in ("lane_left", "lane_right") for a in e.actions):
             return  # "merges left ... and has to slot in between them": the same lane change, its side said before
@@ -2013,7 +2025,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 units[i - 1].category == "actions" and units[i - 1].tokens[0].base in STEERING | {"come", "get"}
                 and u.tokens[0].word == "in")):
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane", "is coming in ego lane"
-        owner = _modifier_owner(units, i, phrases, subject, main_verbs, participles)
+        if u.meaning == "ahead" and _swerves_in_front(units, i):
+            u.meaning = "into_ego_lane"  # "swerves right in front of me": where the cut-in ends, not where it began
+        owner = _let_in_place(units, i, phrases, recent) or \
+            _modifier_owner(units, i, phrases, subject, main_verbs, participles)
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
                 not any(e in subject for e in owner):
             r.mark(u)
@@ -2425,6 +2440,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
                 between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding") and \
                 np.entity.type in V.EGO_TYPES
+            mine = mine or prev.entity.is_ego and len(units[prev.index].tokens) > 1 and _named_make(
+                between, np.entity.type)  # "my vehicle, a grey Vauxhall Astra,": its make and model
             if mine:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
                 prev.entity.type = np.entity.type if np.entity.type != "car" else prev.entity.type
                 if np.entity in r.entities:
@@ -2450,6 +2467,14 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _named_make(between: list[Unit], kind: str) -> bool:
+    """', a grey Vauxhall' before 'Astra': a comma, an article, colours and the maker's name, nothing more."""
+    words = [u for u in between if u.category != "comma"]
+    return bool(between) and between[0].category == "comma" and bool(words) and words[0].word in ("a", "an") and \
+        all(u.word in COLOURS | {"dark", "light", "white", "black", "grey", "gray"} or
+            u.category == "agents" and u.meaning == kind for u in words[1:])
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
@@ -2594,6 +2619,47 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
         if last.introduced and not last.entity.is_ego:
             return [last.entity]
     return subject
+
+
+SWERVE_ADVERBS = {"right", "left", "across", "over", "out", "in", "sharply", "suddenly", "just", "straight"}
+
+
+def _swerves_in_front(units, i) -> bool:
+    """'swerves right in front of me', 'pulls across in front of us': 'in front of' the ego right after a
+    sideways verb is the lane the mover ends in (as in 'cuts in front of'), not a place it started from."""
+    u = units[i]
+    if "front" not in {t.word for t in u.tokens}:
+        return False
+    j = i - 1
+    while j >= 0 and units[j].category == "word" and units[j].word in SWERVE_ADVERBS:
+        j -= 1
+    verb = units[j] if j >= 0 else None
+    if verb is None or verb.category != "actions" or not (
+            verb.meaning in ("cut_in", "lane_change") or verb.tokens[0].base in STEERING | {"swing", "dart", "cut"}):
+        return False
+    if u.tokens[-1].word in ("me", "us", "you", "ego"):
+        return True  # "in front of me"
+    nxt = units[i + 1] if i + 1 < len(units) else None
+    return nxt is None or nxt.category == "agents" and nxt.meaning == "ego" or nxt.category == "comma"
+
+
+LET_PARTICLES = {"in", "through", "past", "by", "out", "go", "merge", "pass"}
+
+
+def _let_in_place(units, i, phrases, recent) -> list[Entity]:
+    """'we let it in ahead', 'let the van through in front': the place is where the let one ends up."""
+    j = i - 1
+    while j >= 0 and units[j].word in LET_PARTICLES:
+        j -= 1
+    if j == i - 1 or j < 1 or units[i].category != "positions" or units[i].meaning not in ("ahead", "behind"):
+        return []
+    if units[j].word in ("it", "them", "him", "her") and units[j - 1].word in LETTING:
+        e = next((x for x in reversed(recent) if not x.is_ego), None)
+        return [e] if e is not None else []
+    np = next((p for p in phrases if p.index == j and p.entity is not None and not p.entity.is_ego), None)
+    if np is not None and np.first > 0 and units[np.first - 1].word in LETTING:
+        return np.group or [np.entity]
+    return []
 
 
 def _reference_after(units, i, phrases) -> Entity | None:
@@ -2789,6 +2855,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
     if lane_move and {"level", "into_ego_lane"} <= f and not behind:
         ahead = False  # "alongside me ... moved into my lane, directly in front of me": level, ending ahead
+    if lane_move and {"behind", "into_ego_lane"} <= f:
+        ahead = False  # "a Toyota some distance behind me ... cut into my lane directly in front of me": ends ahead
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
             and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
@@ -2799,7 +2867,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         ahead = True  # "cuts off the ego from the right adjacent lane"
     moving_out = "moves_out" in f and "ahead" in f and side is None and "ego_lane" not in f
     if action == "cut_in" and not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f
-                                                                 or f"bare_{side}" in f or f"from_{side}" in f):
+                                                                 or f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
