@@ -1913,3 +1913,14 @@ def test_without_indicating_says_traffic_keeps_left():
 def test_the_egos_own_make_in_apposition_is_no_other_agent():
     assert agents("I was driving my car, a silver Ford Focus, north along the high street.") == [
         ("car", "go_straight", "ego")]
+
+
+def test_a_place_where_a_cut_in_ends_up_is_not_where_it_starts():
+    assert ("car", "change_lane_to_left", "front_right") in agents(
+        "Some guy in the right lane slightly ahead of me drifts into my lane. I sped up and he ended up behind me.")
+
+
+def test_a_pronoun_and_its_copula_after_a_comma_start_a_new_subject():
+    read = agents("There is a guy behind me. I'm in the left lane, he's in the right lane and starts to move over "
+                  "into my lane.")
+    assert ("car", "go_straight", "ego") in read and ("car", "change_lane_to_left", "back_right") in read

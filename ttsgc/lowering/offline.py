@@ -1090,6 +1090,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 len(current[-1].tokens) > 1 and nxt is not None and nxt.word in ("a", "an") and closed
             # "I was driving my vehicle, a grey Astra, west": what the ego is, not another car
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
+            new_noun = new_noun or _has_agent(current) and nxt is not None and nxt.word in (
+                "he", "she", "they") and k + 2 < len(units) and units[k + 2].word in COPULAS | {"be"}
+            # "I'm in lane 1, he's in lane 2 and starts drifting": a new subject
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
             order = nxt is not None and _bare_verb(nxt) and _has_agent(current) and not any(
@@ -1608,6 +1611,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if u.meaning == "side_left" and {t.word for t in u.tokens} & {"far", "farside"} and \
                 "lane" not in {t.word for t in u.tokens}:
             e.features.add("far_side")  # the far lane of a road, or across a junction: decided in _position
+        if u.meaning in ("ahead", "behind") and INVERSE[u.meaning] in e.features and e.actions:
+            return  # "a Toyota behind me ... cut in directly in front of me": the first place said is its start
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
@@ -2855,8 +2860,6 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
     if lane_move and {"level", "into_ego_lane"} <= f and not behind:
         ahead = False  # "alongside me ... moved into my lane, directly in front of me": level, ending ahead
-    if lane_move and {"behind", "into_ego_lane"} <= f:
-        ahead = False  # "a Toyota some distance behind me ... cut into my lane directly in front of me": ends ahead
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
             and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
