@@ -1924,3 +1924,18 @@ def test_a_pronoun_and_its_copula_after_a_comma_start_a_new_subject():
     read = agents("There is a guy behind me. I'm in the left lane, he's in the right lane and starts to move over "
                   "into my lane.")
     assert ("car", "go_straight", "ego") in read and ("car", "change_lane_to_left", "back_right") in read
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("The run is on a 2-lane avenue posted at 35 mph.", "speed_56"),
+    ("Keep an eye on your speed, it's a 55 along there.", "speed_89"),
+    ("He was doing 70 in a 45, so we pulled over.", "speed_72"),
+])
+def test_a_limit_said_as_drivers_say_it(prompt, limit):
+    assert limit in road(prompt).required_signals + road(prompt).required_objects
+
+
+def test_a_topic_naming_the_agent_with_the_introduces_it():
+    assert ("cyclist", "go_straight", "front") in agents("Passing the cyclist on the bypass: you gave him room.")
+    assert [a for a in agents("Cut-in: a car in the left lane ahead cuts in.") if a[2] != "ego"] == [
+        ("car", "change_lane_to_right", "front_left")]

@@ -696,13 +696,14 @@ def _speed_limits(r: _Reader) -> list[str]:
             and after_unit[n:n + 1] and after_unit[n] in LIMITED_PLACES for n in (1, 2, 3))  # "a 40 mph road"
         speed_of_someone = first > 0 and tokens[first - 1].word in (
             "doing", "going", "travelling", "traveling", "driving", "at", "about", "around", "approximately",
-            "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES)
+            "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES) \
+            and not (first > 1 and tokens[first - 2].word in LIMIT_WORDS | {"signed", "signposted"})  # "posted at 25"
         if speed_of_someone:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
         road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]
                                         if x.sentence == t.sentence} & LIMITED_PLACES and \
             after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
-        if not (around & LIMIT_WORDS or unit_then_road or road_then_unit) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
+        if not (around & LIMIT_WORDS or unit_then_road or road_then_unit or _a_bare_limit(tokens, first, i)) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
             continue
         rest = [x.word for x in tokens[i + 1: i + 4]]
@@ -728,6 +729,17 @@ def _speed_limits(r: _Reader) -> list[str]:
             out.append(f"speed_{limit}")
     return out
 
+
+
+AFTER_A_BARE_LIMIT = {",", "through", "there", "here", "around", "along", "on", "so", "and", "but", "zone", "now"}
+
+
+def _a_bare_limit(tokens: list[Token], first: int, i: int) -> bool:
+    """'it's a 65 through there', 'doing 80 in a 65': a limit named by its number alone, as US drivers say it."""
+    value = _word_number(tokens[i])
+    nxt = tokens[i + 1] if i + 1 < len(tokens) and tokens[i + 1].sentence == tokens[i].sentence else None
+    return first > 0 and tokens[first - 1].word == "a" and value is not None and value % 5 == 0 and \
+        15 <= value <= 85 and value % 10 == 5 and (nxt is None or nxt.word in AFTER_A_BARE_LIMIT)
 
 
 PER_DIRECTION = {"per", "each", "every", "in", "a", "one"}
@@ -3266,10 +3278,22 @@ def _title(prompt: str, tokens: list[Token]) -> range:
         return range(0)  # "There are four cars: one in front ...": a sentence, not a title
     if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
+    if _title_names_the_agent(m.group(1), prompt[m.end(1):]):
+        return range(0)
     n = len(tokenize(m.group(1)))
     if n > 12 or n >= len(tokens):
         return range(0)
     return range(n)
+
+
+def _title_names_the_agent(title: str, rest: str) -> bool:
+    """'Overtaking the cyclist on the 30 road: you gave him room': a topic that names its agent with 'the' and
+    that the rest only refers back to is where the agent is introduced, not a case's name."""
+    named = [f for f in matches(tokenize(title)) if f.category == "agents" and f.meaning not in ("ego", "none")]
+    words = [t.word for t in tokenize(title)]
+    definite = [f for f in named if f.start > 0 and words[f.start - 1] in DEFINITE]
+    again = {f.meaning for f in matches(tokenize(rest)) if f.category == "agents"}
+    return bool(definite) and not any(f.meaning in again for f in definite)
 
 
 def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list[Agent]], set[str]]:
