@@ -1939,3 +1939,22 @@ def test_a_topic_naming_the_agent_with_the_introduces_it():
     assert ("cyclist", "go_straight", "front") in agents("Passing the cyclist on the bypass: you gave him room.")
     assert [a for a in agents("Cut-in: a car in the left lane ahead cuts in.") if a[2] != "ego"] == [
         ("car", "change_lane_to_right", "front_left")]
+
+
+def test_a_vague_part_of_the_group_said_before_is_no_new_group():
+    read = agents("A coach stopped to let pupils off. Some of the pupils began to cross in front of it.")
+    assert [a for a in read if a[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "front")] * 2
+
+
+def test_a_rule_of_the_road_and_what_would_have_happened_are_no_events():
+    stages = lower("You waited at the zebra. Once somebody is on a crossing, you stop and you wait.").scenario.stages
+    assert len(stages) == 1
+    assert [a.action for a in lower("We moved off on green. We would have had to stop if the lights had changed.")
+            .scenario.agents() if a.is_ego] == ["go_straight"]
+
+
+def test_a_slow_walk_across_crosses_and_a_walking_aid_is_no_walk():
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
+        "The ego waits at a zebra while a woman with a walking frame hobbles slowly across.")
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
+        "The ego waits at a zebra while an old man trudges slowly across.")

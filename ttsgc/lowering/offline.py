@@ -1248,6 +1248,27 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
                                                              and {"get", "have"} & set(words[2:3])))
 
 
+def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
+    """'Once someone's on a zebra, you stop and you wait': advice for anyone at any time, no event of the scene."""
+    words = [x.word for x in tokens if x.sentence == sentence]
+    return any(w in ("once", "when", "whenever", "if") and words[k + 1] in ANYONE for k, w in enumerate(words[:-1])) \
+        and "you" in words and not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
+
+
+COUNTERFACTUAL_MODALS = {"would", "could", "should", "might", "must"}
+
+
+def _counterfactual(tokens: list[Token], t: Token) -> bool:
+    """'You'd have had to stop again if I hadn't': what would have happened, not what did."""
+    for j in range(t.index - 1, max(-1, t.index - 6), -1):
+        x = tokens[j]
+        if x.sentence != t.sentence or x.word in (",", "and", "but", "so", "then"):
+            return False
+        if x.word == "have" and j > 0 and tokens[j - 1].word in COUNTERFACTUAL_MODALS and not tokens[j - 1].question:
+            return True
+    return False
+
+
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
     sentences after it describe the scene. 'Can someone explain this?', 'Why are people like this': the
@@ -1265,6 +1286,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             before.word in ("once", "when", "whenever", "if") and any(
                 x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
         return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
+    if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)):
+        return True  # "once someone's on a zebra, you stop and you wait"; "you'd have had to stop"
     if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
             (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
             and first.word in QUESTION_WORDS:
@@ -1379,6 +1402,16 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
     return count, first, words, modifiers
 
 
+def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
+    """'a group of the children', 'some of the pupils': an uncounted part of a group named before."""
+    span = units[first:head]
+    vague = any(u.category == "numbers" and u.tokens[0].word in VAGUE_COUNTS | {"group", "crowd", "bunch"}
+                for u in span)
+    of_the = any(u.word in ("the", "those", "these") and k > 0 and (span[k - 1].word == "of" or (
+        span[k - 1].category == "numbers" and span[k - 1].tokens[-1].word == "of")) for k, u in enumerate(span))
+    return vague and of_the
+
+
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
     u = units[head]
     r.mark(u)
@@ -1408,6 +1441,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         named = next((e for e in r.entities if e.label == label), None)
         if named is not None:
             return NounPhrase(named, head, first)
+    if count is not None and plural and _vague_part_of_the(units, first, head):
+        count, words = None, words - {"some"}  # "a group of the children", "some of the kids": those said before
     if count is not None and count > 1 and not plural and words & {"some", "any"}:
         count = 1  # "some car suddenly cuts in"
     definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
@@ -1644,6 +1679,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 u.meaning == "move" and u.tokens[0].base in STEERING)):
             direction = _direction_after(r, clause_units, k)
         action = u.meaning
+        if action == "walk" and clause_units is not None and k is not None and any(
+                x.category == "word" and x.word in ("across", "over") for x in clause_units[k + 1:k + 3]):
+            action = "cross"  # "a granny shuffles slowly across": over the road
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
