@@ -1958,3 +1958,22 @@ def test_a_slow_walk_across_crosses_and_a_walking_aid_is_no_walk():
         "The ego waits at a zebra while a woman with a walking frame hobbles slowly across.")
     assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
         "The ego waits at a zebra while an old man trudges slowly across.")
+
+
+# -- junctions told from the driver's seat ----------------------------------------------------------------------
+
+def test_a_riders_own_bike_is_no_second_rider():
+    read = agents("A cyclist came from the right at the crossroads and rode right in front of me, no bell on his bike.")
+    assert [a for a in read if a[0] == "cyclist"] == [("cyclist", "cross_the_road", "road_of_right_turn")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("At the lights a lorry on my right is turning right.", ("truck", "turn_right", "right")),
+    ("At the all-way stop a van on my right turns left in front of me.", ("car", "turn_left", "road_of_right_turn")),
+])
+def test_a_turner_on_the_egos_side_is_beside_it_unless_it_turns_across_its_path(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_turner_ahead_turning_in_front_of_the_ego_stays_ahead():
+    assert ("bus", "turn_left", "front") in agents("A bus turns left in front of me.")

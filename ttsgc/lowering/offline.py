@@ -460,13 +460,22 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
+            span[0].word in SIDES and span[1].word.startswith("turn") and m.start > 1 and \
+            tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the"} and tokens[m.start - 2].word in ("on", "to", "from"):
+        return [Unit(m.start, m.start + 1, "positions", f"side_{span[0].word}", span[:1])] + \
+            _read_inside(tokens, m.start + 1, m.end)  # "a van on my left turning left": its side, then its turn
+    if m.category == "positions" and len(span) > 1 and span[0].word in SIDES and m.start > 0 and \
+            tokens[m.start - 1].base in ("turn", "bear"):
+        return [Unit(m.start, m.start + 1, "positions", f"side_{span[0].word}", span[:1])] + \
+            _read_inside(tokens, m.start + 1, m.end)  # "turns right in front of me": its turn, then where
     if m.category == "positions" and _body_part(tokens, m):
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
         return [Unit(m.start, m.end, "word", "right", span)]  # "Right, so there's an ambulance": no side
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
             after[:1] and after[0] in ("behind", "ahead", "beside", "alongside", "next", "up")
-            or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
+            or after[:2] == ["in", "front"] and tokens[m.start - 1].base not in ("turn", "bear") or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
         return [Unit(m.start, m.end, "word", "right", span)]  # "sits right on our tail": how close, not a side
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
             after[:1] in (["there"], ["through"]) or after[:3] in (["in", "the", "middle"], ["in", "the", "centre"],
@@ -1436,6 +1445,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
+    if u.base in RIDDEN and units[first].word in POSSESSIVES:
+        rider = next((e for e in reversed(recent) if not e.is_ego and e.type == kind), None)
+        if rider is not None:
+            return NounPhrase(rider, head, first)  # "a cyclist ... no lights on his bike": the cyclist's own
     label = u.tokens[-1].label
     if label:
         named = next((e for e in r.entities if e.label == label), None)
@@ -2082,6 +2095,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane", "is coming in ego lane"
         if u.meaning == "ahead" and _swerves_in_front(units, i):
             u.meaning = "into_ego_lane"  # "swerves right in front of me": where the cut-in ends, not where it began
+        if u.meaning == "ahead" and _turns_in_front(units, i):
+            u.meaning = "turned_in_front"  # "turns right in front of me": ahead, or across from its side road
         owner = _let_in_place(units, i, phrases, recent) or \
             _modifier_owner(units, i, phrases, subject, main_verbs, participles)
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
@@ -2696,6 +2711,18 @@ def _swerves_in_front(units, i) -> bool:
         return True  # "in front of me"
     nxt = units[i + 1] if i + 1 < len(units) else None
     return nxt is None or nxt.category == "agents" and nxt.meaning == "ego" or nxt.category == "comma"
+
+
+def _turns_in_front(units, i) -> bool:
+    """'a pickup on my left turns right in front of me': 'in front of' the ego right after the turn of one on the
+    ego's side is the path it turns across, coming out of the side road; not the lane ahead."""
+    j = i - 1
+    while j >= 0 and (units[j].category == "word" and units[j].word in SWERVE_ADVERBS or
+                      units[j].category == "positions" and [t.word for t in units[j].tokens] in (["left"], ["right"])):
+        j -= 1
+    ego_after = i + 1 < len(units) and units[i + 1].category == "agents" and units[i + 1].meaning == "ego"
+    return j >= 0 and units[j].category == "actions" and units[j].meaning in ("turn_left", "turn_right", "turn") \
+        and (units[i].tokens[-1].word in ("me", "us", "you", "ego") or ego_after)
 
 
 LET_PARTICLES = {"in", "through", "past", "by", "out", "go", "merge", "pass"}
@@ -3384,6 +3411,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
             r.notes.append(f"inferred: '{e.head}' behind or ahead in the lane drives a car")
         action = _sideways(action, junction)
+        if e.type == "cyclist" and junction and action in (None, "move") and "ahead" in e.features and \
+                e.features & {"from_left", "from_right", "road_left", "road_right"}:
+            action = "cross"  # "a cyclist from the left ran the red right in front of me": across the ego's path
+        action = _sideways(action, junction)
         if "into_ego_lane" in e.features and e.type == "pedestrian":
             action = "cross"  # "a child runs into the ego's path"
         if e.type == "pedestrian" and action in (None, "move") and "on_sidewalk" not in e.features:
@@ -3391,6 +3422,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if "into_ego_lane" in e.features and action in ("move", "lane_change"):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
         bare = next((side for side in SIDES if f"bare_{side}" in e.features), None)
+        if "turned_in_front" in e.features:  # said of one on the ego's side: it came out of that side's road
+            e.features.add("across_path" if bare and junction else "ahead")
+        turn_side = action[5:] if action in ("turn_left", "turn_right") else direction if action == "turn" else None
+        if junction and bare and turn_side == bare and not e.features & {"ahead", "behind", "across_path"}:
+            e.features.add("level")  # "a van on my left turning left": beside the ego, turning off its own side
         if junction and action == "cut_in" and bare and not e.features & {"ahead", "behind", "level", "from_lane",
                                                                           "into_ego_lane", "overtaking"}:
             e.features.add(f"road_{bare}")  # at a crossroads, "a taxi on our right waiting to pull out": its road
