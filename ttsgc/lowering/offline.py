@@ -3425,7 +3425,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if "turned_in_front" in e.features:  # said of one on the ego's side: it came out of that side's road
             e.features.add("across_path" if bare and junction else "ahead")
         turn_side = action[5:] if action in ("turn_left", "turn_right") else direction if action == "turn" else None
-        if junction and bare and turn_side == bare and not e.features & {"ahead", "behind", "across_path"}:
+        if junction and bare and turn_side == bare and not e.features & {
+                "ahead", "behind", "across_path", "from_left", "from_right", "road_left", "road_right", "from_lane"} \
+                and not any(a[4] == "move" for a in e.actions):  # "a bus approaching from my right turns right"
             e.features.add("level")  # "a van on my left turning left": beside the ego, turning off its own side
         if junction and action == "cut_in" and bare and not e.features & {"ahead", "behind", "level", "from_lane",
                                                                           "into_ego_lane", "overtaking"}:
