@@ -1977,3 +1977,15 @@ def test_a_turner_on_the_egos_side_is_beside_it_unless_it_turns_across_its_path(
 
 def test_a_turner_ahead_turning_in_front_of_the_ego_stays_ahead():
     assert ("bus", "turn_left", "front") in agents("A bus turns left in front of me.")
+
+
+def test_a_relative_clause_with_its_own_subject_leaves_the_verb_after_it_to_its_noun():
+    read = agents("A van is parked ahead. A woman, whom I now know to be the driver of the van, stepped out into the "
+                  "road in front of me.")
+    assert sorted(read) == [("car", "go_straight", "ego"), ("car", "stop", "front"),
+                            ("pedestrian", "cross_the_road", "front")]
+
+
+def test_the_hard_shoulder_is_on_the_left_where_traffic_keeps_left():
+    assert ("truck", "stop", "front_left") in agents("On the M1 a lorry is stopped on the hard shoulder ahead of me.")
+    assert ("truck", "stop", "front_right") in agents("On the interstate a truck is stopped on the shoulder ahead.")

@@ -1130,7 +1130,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             bracketed = len(current) >= 3 and current[-1].category == "agents" and len(current[-1].tokens) == 1 \
                 and current[-1].base in ROLE_NAMES and current[-2].category == "comma" and \
                 current[-3].category == "agents" and not joined  # "a principal other vehicle (POV) stationary"
-            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named \
+            relative_ends = link in RELATIVES and nxt is not None and nxt.category == "actions" and \
+                _has_agent(current)  # "a man, whom I know to be its driver, walked out": the man's verb
+            if (_has_verb(current) or condition or new_noun or joined or order or relative_ends) and not short_name \
+                    and not ego_named \
                     and not bracketed and not ego_make:
                 close(",")
             else:
@@ -1473,6 +1476,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and \
             not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego
+    predicate = first > 0 and units[first - 1].word in COPULAS | {"be", "being", "been"}  # "whom I know to be the
+    # driver of the HGV": says who the man is; he is not the HGV
+    if predicate and u.base in ("driver", "rider", "motorist") and not plural:
+        return NounPhrase(None, head, first)
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
         driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
@@ -2892,7 +2899,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "target_lane" in f and target_side and not _side(e):
         f.add(f"side_{target_side}")
     if e.road_type == "shoulder" and not _side_of(f):
-        f.add("side_right")  # the shoulder is at the road's right edge, ahead unless said otherwise
+        f.add("side_left" if _KEEPS_LEFT.get() else "side_right")  # the shoulder is at the kerb edge (the left
+        # where traffic keeps left), ahead unless said otherwise
         if not f & {"behind", "level", "overtaking"}:
             f.add("ahead")
     side = _side_of(f)
@@ -3094,6 +3102,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                     e.features.add("target_lane")
         if subject:
             previous = subject
+        if clause.antecedent is not None and clause.antecedent not in subject and k + 1 < len(clauses) and \
+                clauses[k + 1].link == ",":  # "a man, whom I now know to be its driver, walked out": the man did
+            previous = [clause.antecedent]
         verbless = not _has_verb(clause.units)
         r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
