@@ -1989,3 +1989,17 @@ def test_a_relative_clause_with_its_own_subject_leaves_the_verb_after_it_to_its_
 def test_the_hard_shoulder_is_on_the_left_where_traffic_keeps_left():
     assert ("truck", "stop", "front_left") in agents("On the M1 a lorry is stopped on the hard shoulder ahead of me.")
     assert ("truck", "stop", "front_right") in agents("On the interstate a truck is stopped on the shoulder ahead.")
+
+
+def test_a_participle_after_scenery_is_the_scenerys():
+    assert [a for a in agents("A narrow lane with vans parked on both sides. I'm heading east.")] == [
+        ("car", "go_straight", "ego")]
+
+
+def test_a_side_of_the_verge_is_no_lane_of_the_ego():
+    assert road("I lost grip on the ice and came to a stop against the nearside verge.").lanes < 2
+
+
+def test_no_option_but_to_is_the_verb_of_the_one_left_without_a_choice():
+    read = agents("A lorry pulled out in front of me and stopped, leaving me no choice but to make an emergency stop.")
+    assert ("car", "stop", "ego") in read

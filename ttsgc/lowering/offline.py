@@ -1141,6 +1141,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             continue
         if condition and _main_clause_after_condition(current, units, k):
             close()  # "once you were past the lorry you moved back": the condition ends where its main clause starts
+        if u.category == "word" and u.word == "but" and prev_word in ("option", "choice", "alternative"):
+            current.append(u)  # "no option but to stop": one idiom, the verb is the one left without a choice's
+            continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
             if u.word in ("and", "or") and not _has_verb(current) and not _new_subject_after_copula(current, units, k):
                 current.append(u)
@@ -1522,6 +1525,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         for k in range(before + 1, head):
             r.mark(units[k])
             units[k].category = "word"
+        if head + 1 < len(units) and units[head + 1].category == "actions" and \
+                units[head + 1].tokens[0].word.endswith("ed"):
+            r.mark(units[head + 1])
+            units[head + 1].category = "word"  # "a street with cars parked both sides": said of the scenery
         return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
     if count is None:
         count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
@@ -2121,7 +2128,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.features.add(u.meaning)
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
-                if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS:
+                edge_after = i + 1 < len(units) and (units[i + 1].category == "positions" and units[i + 1].meaning in (
+                    "shoulder", "sidewalk") or units[i + 1].word in LANE_EDGES)  # "against the nearside verge"
+                if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS and \
+                        not edge_after:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
                 later = reference is not None and stage > reference.stage and bool(
                     reference.features & {"ahead", "behind", "level"})  # "then returns ahead of the bus": it was
@@ -2332,9 +2342,27 @@ CAUSATIVES = {"force", "forced", "forces", "forcing", "cause", "caused", "causes
               "making", "compel", "compelled", "require", "required", "requires", "oblige", "obliged"}
 
 
+LIGHT_VERBS = {"perform", "make", "do", "carry", "execute", "an", "a", "the", "out"}
+
+
+def _left_no_option(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entity]:
+    """'leaving me no option but to perform an emergency stop': the verb is the one left without a choice's."""
+    j = i - 1
+    while j >= 0 and units[j].category == "word" and units[j].word in LIGHT_VERBS:
+        j -= 1
+    if j < 3 or units[j].word != "to" or units[j - 1].word != "but" or \
+            units[j - 2].word not in ("option", "choice", "alternative"):
+        return []
+    np = next((p for p in phrases if j - 6 <= p.index < j - 2 and p.entity is not None), None)
+    return [np.entity] if np is not None else []
+
+
 def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entity]:
     """'a truck forced the AV to change lanes': the verb after 'to' is the object's doing; so is the bare verb
     after 'let' ('I let the van merge': the van merges, not I)."""
+    left = _left_no_option(units, i, phrases)
+    if left:
+        return left
     if i >= 2 and units[i - 1].word != "to":
         np = next((p for p in phrases if p.index == i - 1 and p.entity is not None), None)
         if np is not None and np.first > 0 and units[np.first - 1].word in LETTING:
