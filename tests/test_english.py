@@ -2003,3 +2003,29 @@ def test_a_side_of_the_verge_is_no_lane_of_the_ego():
 def test_no_option_but_to_is_the_verb_of_the_one_left_without_a_choice():
     read = agents("A lorry pulled out in front of me and stopped, leaving me no choice but to make an emergency stop.")
     assert ("car", "stop", "ego") in read
+
+
+# -- logs, papers and level briefs ------------------------------------------------------------------------------
+
+def test_a_multi_actor_case_names_no_actor_and_outside_any_crosswalk_says_none_is_there():
+    scene = lower("Case 7 (multi-actor). A child crosses the road in front of the SV from the right, outside any "
+                  "crosswalk.").scenario
+    assert sorted((a.type, a.relative_to_ego) for a in scene.agents() if not a.is_ego) == [("pedestrian", "front_right")]
+    assert "crosswalk" not in scene.road.required_objects
+
+
+def test_a_turner_from_a_side_into_the_egos_destination_comes_from_that_side():
+    assert ("car", "turn_left", "road_of_right_turn") in agents(
+        "The player turns right. A taxi from the right turning left into the street the player is heading into.")
+
+
+def test_standing_across_the_lane_blocks_and_going_around_from_behind_changes_lane():
+    assert ("truck", "block_the_ego", "front") in agents("A lorry ahead of us has stopped across the road.")
+    assert ("car", "change_lane_to_left", "back") in agents(
+        "A van came up fast behind us and went around on the left.")
+
+
+def test_a_noun_naming_the_case_is_no_agent_when_the_agent_comes_later():
+    assert agents("Run 4, parked car test. A hatchback is parked in our lane ahead.") == sorted([
+        ("car", "go_straight", "ego"), ("car", "stop", "front")])
+    assert ("cyclist", "go_straight", "front") in agents("Make a cyclist scenario on a country road.")

@@ -648,7 +648,8 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "positions" and u.meaning in ("crosswalk", "off_crosswalk"):  # "near the crosswalk": there is one
             said = {t.word for t in u.tokens}
             word = "continental_crosswalk" if "zebra" in said else "crosswalk"
-            if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]):
+            if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]) \
+                    and "any" not in said:  # "outside any crosswalk": there may be none
                 put(word, False)
         if u.category == "comma" or (u.category == "word" and u.word in
                                      ("and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic")):
@@ -1417,6 +1418,18 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
     return count, first, words, modifiers
 
 
+CASE_NOUNS = {"scenario", "scene", "test", "case", "situation"}
+
+
+def _names_the_case(r: _Reader, units: list[Unit], head: int, kind: str) -> bool:
+    """'stopped veh scenario', 'cut-in car test': a noun naming the kind of case, when an agent of its kind is
+    introduced later on; with none later ('a cyclist scenario') it is the agent asked for."""
+    if head + 1 >= len(units) or units[head + 1].word not in CASE_NOUNS or units[head].tokens[-1].plural:
+        return False
+    end = units[head + 1].tokens[-1].index + 1
+    return any(m.category == "agents" and m.meaning == kind for m in matches(r.tokens, end))
+
+
 def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
     """'a group of the children', 'some of the pupils': an uncounted part of a group named before."""
     span = units[first:head]
@@ -1451,6 +1464,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
+    if _names_the_case(r, units, head, kind):
+        return NounPhrase(None, head, first)  # "stopped veh scenario. Soft target (sedan) parked...": the case's name
     if u.base in RIDDEN and units[first].word in POSSESSIVES:
         rider = next((e for e in reversed(recent) if not e.is_ego and e.type == kind), None)
         if rider is not None:
@@ -1742,6 +1757,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
+        if action == "stop" and not e.is_ego and clause_units is not None and k is not None and \
+                _stands_across(clause_units[k + 1:k + 5]):
+            action = "block"  # "a patrol car parked across the lane": nobody gets by
         if action == "stop" and ({t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
                                                                   "stall", "stalled", "double", "abandon"}
                                  or {"bus", "stop"} <= {t.word for t in u.tokens}):  # "at a bus stop": at the kerb
@@ -1780,6 +1798,15 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                           direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+def _stands_across(units: list[Unit]) -> bool:
+    """'parked across the lane', 'stopped across my lane', 'sat across the road': standing athwart the way."""
+    if not units or units[0].word != "across":
+        return False
+    rest = units[1:3]
+    return any(u.category == "positions" and u.meaning in ("ego_lane", "into_ego_lane") or
+               u.word in ("lane", "road", "street", "carriageway", "way", "junction") for u in rest)
 
 
 def _in_time(units: list[Unit]) -> bool:
@@ -2954,7 +2981,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             if person and crossing and not junction:  # "crossing from the left" with no junction: from that kerb
                 return f"front_{s}", False
             return f"road_of_{s}_turn", False
-    if "destination" in f and not ("crosswalk" in f and crossing):  # "on the crosswalk of the road it turns into"
+    turner_from_a_side = (action or "").startswith("turn") and bool(f & {"from_left", "from_right"})
+    if "destination" in f and not ("crosswalk" in f and crossing) and not turner_from_a_side:
+        # "a motorbike from the left turning right into the street the player heads for": it comes from the left  # "on the crosswalk of the road it turns into"
         return "at_the_destination", False
     if "cross_road" in f and not person:
         return f"road_of_{side or UNSPECIFIED['side_of_a_crossing_road']}_turn", False
@@ -3044,6 +3073,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
         if side_now is None:
             return "block_the_ego" if position == "front" and e.type != "pedestrian" else "go_straight"
         return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
+    if action == "move" and direction and position == "back" and not e.is_ego:
+        return f"change_lane_to_{direction}"  # "came up behind us and went around on the right": out of our lane
     if action == "block":
         if "parked" in e.features and position == "at_the_destination":
             return "stop"  # "a lorry parked in the road we turn into, obstructing it": it stands where we head
