@@ -2029,3 +2029,23 @@ def test_a_noun_naming_the_case_is_no_agent_when_the_agent_comes_later():
     assert agents("Run 4, parked car test. A hatchback is parked in our lane ahead.") == sorted([
         ("car", "go_straight", "ego"), ("car", "stop", "front")])
     assert ("cyclist", "go_straight", "front") in agents("Make a cyclist scenario on a country road.")
+
+
+def test_mirror_signal_manoeuvre_is_the_drivers_routine_not_a_traffic_light():
+    assert "traffic_light" not in road("You turned left at the junction. Remember: mirror, signal, manoeuvre.") \
+        .required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The player comes down the on-ramp and merges right. A bus is in the motorway's left lane just ahead of the "
+     "player.", ("bus", "go_straight", "front_right")),
+    ("We joined from the slip road, moving left into lane two, with a van behind in lane two.",
+     ("car", "go_straight", "back_left")),
+])
+def test_the_lanes_of_the_road_the_ego_joins_lie_on_the_side_it_merges_to(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_moving_from_one_numbered_lane_into_another_changes_lane_that_way():
+    assert ("bus", "change_lane_to_right", "back") in agents(
+        "On the motorway a coach behind me in lane one pulled out into lane two.")

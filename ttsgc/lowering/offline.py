@@ -469,6 +469,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].base in ("turn", "bear"):
         return [Unit(m.start, m.start + 1, "positions", f"side_{span[0].word}", span[:1])] + \
             _read_inside(tokens, m.start + 1, m.end)  # "turns right in front of me": its turn, then where
+    if m.category == "positions" and m.meaning == "into_ego_lane" and span[-1].word == "lane" and \
+            m.end < len(tokens) and tokens[m.end].sentence == span[-1].sentence and \
+            _word_number(tokens[m.end]) in (1, 2, 3, 4, 5):  # "pull out into lane two": a numbered lane, not ours
+        return [Unit(m.start, m.end + 1, "positions", f"into_lane_{int(_word_number(tokens[m.end]))}",
+                     tuple(tokens[m.start:m.end + 1]))]
     if m.category == "positions" and _body_part(tokens, m):
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
@@ -592,6 +597,9 @@ def _road(r: _Reader) -> RoadSpec:
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signal", "signals") and \
+                {x.word for x in units[max(0, k - 3):k + 4]} & {"mirror", "mirrors", "maneuver", "manoeuvre", "position"}:
+            continue  # "mirror, signal, manoeuvre": the driver's routine, the indicator, not a traffic light
         if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
                 any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and any(
                     x.category == "actions" and x.tokens[0].sentence == u.tokens[0].sentence
@@ -3457,6 +3465,18 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     resolved: dict[int, tuple[str, str]] = {}
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
+    for e in others:  # "the HGV in lane one had to pull out into lane two": lanes count from the kerb
+        into = next((int(f[10:]) for f in e.features if f.startswith("into_lane_")), None)
+        own = next((int(f[5:]) for f in e.features if f.startswith("lane_") and f[5:].isdigit()), None)
+        if into is not None and own is not None and into != own:
+            e.actions.append((e.stage, 2, ACTION_RANK["cut_in"] + 1, r.tick(), "lane_right" if into > own else
+                              "lane_left", None))
+    if target_side and _joins_from_a_ramp(r.tokens):
+        for e in others:  # "merges left onto the highway; trucks in the highway's right lane": on the ego's left
+            if e.type not in V.VULNERABLE_TYPES and not e.features & {
+                    "bare_left", "bare_right", "road_left", "road_right", "road_straight", "cross_road"}:
+                e.features -= {"side_left", "side_right"} | {f for f in e.features if f.startswith("lane_")}
+                e.features.add(f"side_{target_side}")
     heading = next((f for f in (ego_entity.features if ego_entity else ()) if f.startswith("compass_")), None)
     for e in others:  # "the AV was travelling north ... a van heading south": compass headings against the ego's
         own = next((f for f in e.features if f.startswith("compass_")), None)
@@ -3554,6 +3574,13 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             if e.key in oncoming:
                 oncoming_names.add(name)
     return [s for k, s in enumerate(stages) if s or k == 0], oncoming_names
+
+
+def _joins_from_a_ramp(tokens: list[Token]) -> bool:
+    """'comes down the on-ramp', 'joined from the slip road': the ego merges onto a road whose lanes lie all on the
+    side it merges to; a lane the text names by that road's own sides ('its right lane') is still on that side."""
+    words = [t.word for t in tokens]
+    return "ramp" in words or any(a == "slip" and b in ("road", "lane") for a, b in zip(words, words[1:]))
 
 
 def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
