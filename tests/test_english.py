@@ -587,8 +587,10 @@ def test_a_pronoun_takes_no_participle_so_the_past_tense_after_it_is_finite():
 
 
 def test_my_lane_is_the_egos_lane():
-    assert ("truck", "change_lane_to_left", "right") in agents(
+    assert ("truck", "change_lane_to_right", "left") in agents(  # indicating: traffic keeps left, nearside is left
         "The lorry in the nearside lane indicated right and started to move across into my lane.")
+    assert ("truck", "change_lane_to_left", "right") in agents(
+        "The truck in the right lane started to move across into my lane.")
 
 
 def test_a_verb_with_by_after_a_copula_is_a_passive():
@@ -1823,3 +1825,227 @@ def test_a_pedestrian_crossing_placed_elsewhere_stays_a_crosswalk():
 def test_slow_before_a_noun_is_how_the_agent_drives(prompt, kind):
     others = [(a.type, a.behavior) for a in lower(prompt).scenario.agents() if not a.is_ego]
     assert others == [(kind, "cautious")]
+
+
+# -- spoken and narrated English: discourse words, asides, counterfactuals ------------------------------------
+
+@pytest.mark.parametrize("prompt", [
+    "right so there's a bus coming up behind me and I keep going",
+    "Okay, right, a bus is behind me.",
+])
+def test_a_right_that_opens_spoken_talk_is_no_side(prompt):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == [("bus", "go_straight", "back")]
+    assert road(prompt).lanes < 2
+
+
+def test_right_opening_a_sentence_before_a_noun_is_still_a_side():
+    assert ("car", "go_straight", "right") in agents("Right beside me a car keeps pace.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "The street was still icy from this morning when a van stopped ahead of us.",
+    "The car park is wet since last night and a bus waits in front of me.",
+])
+def test_a_time_that_says_when_the_road_got_so_is_not_the_scenes_time(prompt):
+    weather = lower(prompt).scenario.weather
+    assert weather is not None and weather.time == "noon"
+
+
+def test_a_time_of_day_after_from_that_follows_no_road_state_is_the_scenes_time():
+    assert lower("From dawn onwards, a bus waits at the stop ahead.").scenario.weather.time == "dawn"
+
+
+def test_a_condition_without_a_comma_ends_where_its_main_clause_starts():
+    scene = lower("We pull out to pass the tractor. Once we are past the tractor we move back into the left lane.")
+    assert [[a.action for a in s.agents if a.is_ego] for s in scene.scenario.stages][1] == ["change_lane_to_left"]
+
+
+@pytest.mark.parametrize("prompt", [
+    "You changed lanes to pass the van without a glance over your left shoulder.",
+    "Do a shoulder check before you pass the van.",
+])
+def test_the_drivers_shoulder_is_no_road_shoulder(prompt):
+    van = next(a for a in lower(prompt).scenario.agents() if a.type == "car" and not a.is_ego)
+    assert van.road_type == "driving" and van.relative_to_ego == "front"
+
+
+def test_sitting_in_a_lane_beside_or_behind_the_ego_keeps_pace():
+    assert ("truck", "go_straight", "back_left") in agents("A lorry was sitting in the left lane just behind us.")
+    assert ("car", "stop", "front_right") in agents("A broken down van is sitting in the right lane ahead.")
+
+
+# -- cut-ins told by the one cut up ---------------------------------------------------------------------------
+
+def test_a_vehicle_on_the_egos_side_drifting_into_its_lane_starts_level():
+    assert ("car", "change_lane_to_right", "left") in agents("A van on my left starts drifting into my lane.")
+    assert ("motorcycle", "change_lane_to_left", "front_right") in agents(
+        "A moped pulling out of a bus stop on the right, in the wet.")  # from where it stood, ahead
+
+
+def test_let_it_in_ahead_places_the_one_let_in():
+    assert ("bus", "change_lane_to_right", "front_left") in agents(
+        "A coach in the lane to our left began to drift towards us, so we let it in ahead.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "A taxi in the lane on my right suddenly swerves left in front of me.",
+    "A taxi in the right-hand lane pulled across in front of us.",
+])
+def test_in_front_of_the_ego_after_a_swerve_is_where_it_ends(prompt):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == [("car", "change_lane_to_left", "right")]
+
+
+def test_a_cut_in_from_behind_keeps_its_place_behind():
+    assert ("car", "change_lane_to_right", "back_left") in agents(
+        "A taxi was in the left lane well behind me. The taxi sped past me and cut into my lane directly in front of me.")
+
+
+def test_a_subject_before_then_keeps_its_verb():
+    scene = lower("A truck drives ahead of us. The truck then brakes to a stop.").scenario
+    assert [a.action for a in scene.agents() if a.is_ego] == ["go_straight"]
+
+
+def test_without_indicating_says_traffic_keeps_left():
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "A Ford beside me on my offside moved into my lane without indicating.")
+
+
+def test_the_egos_own_make_in_apposition_is_no_other_agent():
+    assert agents("I was driving my car, a silver Ford Focus, north along the high street.") == [
+        ("car", "go_straight", "ego")]
+
+
+def test_a_place_where_a_cut_in_ends_up_is_not_where_it_starts():
+    assert ("car", "change_lane_to_left", "front_right") in agents(
+        "Some guy in the right lane slightly ahead of me drifts into my lane. I sped up and he ended up behind me.")
+
+
+def test_a_pronoun_and_its_copula_after_a_comma_start_a_new_subject():
+    read = agents("There is a guy behind me. I'm in the left lane, he's in the right lane and starts to move over "
+                  "into my lane.")
+    assert ("car", "go_straight", "ego") in read and ("car", "change_lane_to_left", "back_right") in read
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("The run is on a 2-lane avenue posted at 35 mph.", "speed_56"),
+    ("Keep an eye on your speed, it's a 55 along there.", "speed_89"),
+    ("He was doing 70 in a 45, so we pulled over.", "speed_72"),
+])
+def test_a_limit_said_as_drivers_say_it(prompt, limit):
+    assert limit in road(prompt).required_signals + road(prompt).required_objects
+
+
+def test_a_topic_naming_the_agent_with_the_introduces_it():
+    assert ("cyclist", "go_straight", "front") in agents("Passing the cyclist on the bypass: you gave him room.")
+    assert [a for a in agents("Cut-in: a car in the left lane ahead cuts in.") if a[2] != "ego"] == [
+        ("car", "change_lane_to_right", "front_left")]
+
+
+def test_a_vague_part_of_the_group_said_before_is_no_new_group():
+    read = agents("A coach stopped to let pupils off. Some of the pupils began to cross in front of it.")
+    assert [a for a in read if a[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "front")] * 2
+
+
+def test_a_rule_of_the_road_and_what_would_have_happened_are_no_events():
+    stages = lower("You waited at the zebra. Once somebody is on a crossing, you stop and you wait.").scenario.stages
+    assert len(stages) == 1
+    assert [a.action for a in lower("We moved off on green. We would have had to stop if the lights had changed.")
+            .scenario.agents() if a.is_ego] == ["go_straight"]
+
+
+def test_a_slow_walk_across_crosses_and_a_walking_aid_is_no_walk():
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
+        "The ego waits at a zebra while a woman with a walking frame hobbles slowly across.")
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
+        "The ego waits at a zebra while an old man trudges slowly across.")
+
+
+# -- junctions told from the driver's seat ----------------------------------------------------------------------
+
+def test_a_riders_own_bike_is_no_second_rider():
+    read = agents("A cyclist came from the right at the crossroads and rode right in front of me, no bell on his bike.")
+    assert [a for a in read if a[0] == "cyclist"] == [("cyclist", "cross_the_road", "road_of_right_turn")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("At the lights a lorry on my right is turning right.", ("truck", "turn_right", "right")),
+    ("At the all-way stop a van on my right turns left in front of me.", ("car", "turn_left", "road_of_right_turn")),
+])
+def test_a_turner_on_the_egos_side_is_beside_it_unless_it_turns_across_its_path(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_turner_ahead_turning_in_front_of_the_ego_stays_ahead():
+    assert ("bus", "turn_left", "front") in agents("A bus turns left in front of me.")
+
+
+def test_a_relative_clause_with_its_own_subject_leaves_the_verb_after_it_to_its_noun():
+    read = agents("A van is parked ahead. A woman, whom I now know to be the driver of the van, stepped out into the "
+                  "road in front of me.")
+    assert sorted(read) == [("car", "go_straight", "ego"), ("car", "stop", "front"),
+                            ("pedestrian", "cross_the_road", "front")]
+
+
+def test_the_hard_shoulder_is_on_the_left_where_traffic_keeps_left():
+    assert ("truck", "stop", "front_left") in agents("On the M1 a lorry is stopped on the hard shoulder ahead of me.")
+    assert ("truck", "stop", "front_right") in agents("On the interstate a truck is stopped on the shoulder ahead.")
+
+
+def test_a_participle_after_scenery_is_the_scenerys():
+    assert [a for a in agents("A narrow lane with vans parked on both sides. I'm heading east.")] == [
+        ("car", "go_straight", "ego")]
+
+
+def test_a_side_of_the_verge_is_no_lane_of_the_ego():
+    assert road("I lost grip on the ice and came to a stop against the nearside verge.").lanes < 2
+
+
+def test_no_option_but_to_is_the_verb_of_the_one_left_without_a_choice():
+    read = agents("A lorry pulled out in front of me and stopped, leaving me no choice but to make an emergency stop.")
+    assert ("car", "stop", "ego") in read
+
+
+# -- logs, papers and level briefs ------------------------------------------------------------------------------
+
+def test_a_multi_actor_case_names_no_actor_and_outside_any_crosswalk_says_none_is_there():
+    scene = lower("Case 7 (multi-actor). A child crosses the road in front of the SV from the right, outside any "
+                  "crosswalk.").scenario
+    assert sorted((a.type, a.relative_to_ego) for a in scene.agents() if not a.is_ego) == [("pedestrian", "front_right")]
+    assert "crosswalk" not in scene.road.required_objects
+
+
+def test_a_turner_from_a_side_into_the_egos_destination_comes_from_that_side():
+    assert ("car", "turn_left", "road_of_right_turn") in agents(
+        "The player turns right. A taxi from the right turning left into the street the player is heading into.")
+
+
+def test_standing_across_the_lane_blocks_and_going_around_from_behind_changes_lane():
+    assert ("truck", "block_the_ego", "front") in agents("A lorry ahead of us has stopped across the road.")
+    assert ("car", "change_lane_to_left", "back") in agents(
+        "A van came up fast behind us and went around on the left.")
+
+
+def test_a_noun_naming_the_case_is_no_agent_when_the_agent_comes_later():
+    assert agents("Run 4, parked car test. A hatchback is parked in our lane ahead.") == sorted([
+        ("car", "go_straight", "ego"), ("car", "stop", "front")])
+    assert ("cyclist", "go_straight", "front") in agents("Make a cyclist scenario on a country road.")
+
+
+def test_mirror_signal_manoeuvre_is_the_drivers_routine_not_a_traffic_light():
+    assert "traffic_light" not in road("You turned left at the junction. Remember: mirror, signal, manoeuvre.") \
+        .required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The player comes down the on-ramp and merges right. A bus is in the motorway's left lane just ahead of the "
+     "player.", ("bus", "go_straight", "front_right")),
+    ("We joined from the slip road, moving left into lane two, with a van behind in lane two.",
+     ("car", "go_straight", "back_left")),
+])
+def test_the_lanes_of_the_road_the_ego_joins_lie_on_the_side_it_merges_to(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_moving_from_one_numbered_lane_into_another_changes_lane_that_way():
+    assert ("bus", "change_lane_to_right", "back") in agents(
+        "On the motorway a coach behind me in lane one pulled out into lane two.")

@@ -178,7 +178,8 @@ def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
         t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
 
 
-LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement"}
+LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
+                     "indicating", "indicator", "indicators"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 
 
@@ -403,6 +404,53 @@ def _read_inside(tokens: list[Token], start: int, end: int) -> list[Unit]:
     return out
 
 
+INTERJECTIONS = {"ok", "okay", "so", "well", "alright", "um", "uh", "erm", "er", "hmm", "oh", "and", "now"}
+AFTER_A_SPOKEN_RIGHT = INTERJECTIONS | {",", "then", "there", "here", "i", "we", "you", "listen", "let", "let's",
+                                        "guys", "folks", "this", "that", "next"}
+
+
+def _opens_talk(tokens: list[Token], m: Match) -> bool:
+    """'Right, so...', 'okay right there's...': a spoken 'right' that opens a sentence is a discourse marker."""
+    sentence = tokens[m.start].sentence
+    before = [t.word for t in tokens[:m.start] if t.sentence == sentence]
+    nxt = tokens[m.end].word if m.end < len(tokens) and tokens[m.end].sentence == sentence else ""
+    return all(w in INTERJECTIONS or w == "," for w in before) and nxt in AFTER_A_SPOKEN_RIGHT
+
+
+OWNERS = {"my", "your", "his", "her", "their", "our"}
+BODY_PARTS = {"shoulder", "shoulders"}
+
+
+def _body_part(tokens: list[Token], m: Match) -> bool:
+    """'over your right shoulder', 'a shoulder check': the driver's shoulder, not the road's, nor a side."""
+    words = [t.word for t in tokens]
+    j = m.end - 1
+    if m.end - m.start == 1 and words[j] in ("left", "right") and m.end < len(words) and words[m.end] in BODY_PARTS:
+        j = m.end  # the side of the shoulder
+    elif words[m.end - 1] not in BODY_PARTS:
+        return False
+    before = words[j - 1] if j > 0 else ""
+    if before in ("left", "right"):
+        before = words[j - 2] if j > 1 else ""
+    after = words[j + 1] if j + 1 < len(words) else ""
+    return before in OWNERS or after in ("check", "checks", "checked", "checking") or \
+        before == "the" and j > 1 and words[j - 2] == "over" or before == "over"
+
+
+PACE_PLACES = {"behind", "ahead", "alongside", "beside", "level", "next", "abreast"}
+
+
+def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
+    """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
+    says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
+    words = [t.word for t in tokens[i:i + 8] if t.sentence == tokens[i].sentence]
+    if words[:2] != ["in", "the"] or "lane" not in words[2:6]:
+        return False
+    after = words[words.index("lane", 2) + 1:]
+    after = after[1:] if after[:1] in (["just"], ["right"], ["slightly"], ["directly"]) else after
+    return bool(after) and after[0] in PACE_PLACES
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -412,9 +460,27 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
+            span[0].word in SIDES and span[1].word.startswith("turn") and m.start > 1 and \
+            tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the"} and tokens[m.start - 2].word in ("on", "to", "from"):
+        return [Unit(m.start, m.start + 1, "positions", f"side_{span[0].word}", span[:1])] + \
+            _read_inside(tokens, m.start + 1, m.end)  # "a van on my left turning left": its side, then its turn
+    if m.category == "positions" and len(span) > 1 and span[0].word in SIDES and m.start > 0 and \
+            tokens[m.start - 1].base in ("turn", "bear"):
+        return [Unit(m.start, m.start + 1, "positions", f"side_{span[0].word}", span[:1])] + \
+            _read_inside(tokens, m.start + 1, m.end)  # "turns right in front of me": its turn, then where
+    if m.category == "positions" and m.meaning == "into_ego_lane" and span[-1].word == "lane" and \
+            m.end < len(tokens) and tokens[m.end].sentence == span[-1].sentence and \
+            _word_number(tokens[m.end]) in (1, 2, 3, 4, 5):  # "pull out into lane two": a numbered lane, not ours
+        return [Unit(m.start, m.end + 1, "positions", f"into_lane_{int(_word_number(tokens[m.end]))}",
+                     tuple(tokens[m.start:m.end + 1]))]
+    if m.category == "positions" and _body_part(tokens, m):
+        return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
+        return [Unit(m.start, m.end, "word", "right", span)]  # "Right, so there's an ambulance": no side
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
             after[:1] and after[0] in ("behind", "ahead", "beside", "alongside", "next", "up")
-            or after[:2] == ["in", "front"] or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
+            or after[:2] == ["in", "front"] and tokens[m.start - 1].base not in ("turn", "bear") or after[:1] == ["on"] and after[2:3] and after[2] in ("tail", "bumper")):
         return [Unit(m.start, m.end, "word", "right", span)]  # "sits right on our tail": how close, not a side
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
             after[:1] in (["there"], ["through"]) or after[:3] in (["in", "the", "middle"], ["in", "the", "centre"],
@@ -426,6 +492,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.end + 3].word == "lane" and \
             any(t.word in EGO_WORDS for t in tokens[max(0, m.start - 3):m.start]):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "you sat in the left lane": where, not a stop
+    if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
+            _sits_in_moving_traffic(tokens, m.end):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a motorbike sitting in the right lane just
+        # behind you": where it keeps pace, not a stop
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stuck"] and (
             nxt in STILL_MOVING or nxt == "behind" and {t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING):
         return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
@@ -527,6 +597,9 @@ def _road(r: _Reader) -> RoadSpec:
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signal", "signals") and \
+                {x.word for x in units[max(0, k - 3):k + 4]} & {"mirror", "mirrors", "maneuver", "manoeuvre", "position"}:
+            continue  # "mirror, signal, manoeuvre": the driver's routine, the indicator, not a traffic light
         if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
                 any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and any(
                     x.category == "actions" and x.tokens[0].sentence == u.tokens[0].sentence
@@ -583,7 +656,8 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "positions" and u.meaning in ("crosswalk", "off_crosswalk"):  # "near the crosswalk": there is one
             said = {t.word for t in u.tokens}
             word = "continental_crosswalk" if "zebra" in said else "crosswalk"
-            if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]):
+            if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]) \
+                    and "any" not in said:  # "outside any crosswalk": there may be none
                 put(word, False)
         if u.category == "comma" or (u.category == "word" and u.word in
                                      ("and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic")):
@@ -640,13 +714,14 @@ def _speed_limits(r: _Reader) -> list[str]:
             and after_unit[n:n + 1] and after_unit[n] in LIMITED_PLACES for n in (1, 2, 3))  # "a 40 mph road"
         speed_of_someone = first > 0 and tokens[first - 1].word in (
             "doing", "going", "travelling", "traveling", "driving", "at", "about", "around", "approximately",
-            "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES)
+            "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES) \
+            and not (first > 1 and tokens[first - 2].word in LIMIT_WORDS | {"signed", "signposted"})  # "posted at 25"
         if speed_of_someone:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
         road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]
                                         if x.sentence == t.sentence} & LIMITED_PLACES and \
             after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
-        if not (around & LIMIT_WORDS or unit_then_road or road_then_unit) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
+        if not (around & LIMIT_WORDS or unit_then_road or road_then_unit or _a_bare_limit(tokens, first, i)) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
             continue
         rest = [x.word for x in tokens[i + 1: i + 4]]
@@ -672,6 +747,17 @@ def _speed_limits(r: _Reader) -> list[str]:
             out.append(f"speed_{limit}")
     return out
 
+
+
+AFTER_A_BARE_LIMIT = {",", "through", "there", "here", "around", "along", "on", "so", "and", "but", "zone", "now"}
+
+
+def _a_bare_limit(tokens: list[Token], first: int, i: int) -> bool:
+    """'it's a 65 through there', 'doing 80 in a 65': a limit named by its number alone, as US drivers say it."""
+    value = _word_number(tokens[i])
+    nxt = tokens[i + 1] if i + 1 < len(tokens) and tokens[i + 1].sentence == tokens[i].sentence else None
+    return first > 0 and tokens[first - 1].word == "a" and value is not None and value % 5 == 0 and \
+        15 <= value <= 85 and value % 10 == 5 and (nxt is None or nxt.word in AFTER_A_BARE_LIMIT)
 
 
 PER_DIRECTION = {"per", "each", "every", "in", "a", "one"}
@@ -771,6 +857,10 @@ def _weather(r: _Reader) -> Weather | None:
             r.mark(u)
             continue
         r.mark(u)
+        if u.meaning.startswith("time:") and _time_of_a_cause(r.units, k):
+            r.notes.append(f"left out: '{' '.join(t.word for t in u.tokens)}' (when something before the scene "
+                           "happened, not the scene's time)")
+            continue
         (times if u.meaning.startswith("time:") else conditions).append(
             (u.meaning.removeprefix("time:"), " ".join(t.word for t in u.tokens)))
     clock = _clock_time(r)
@@ -784,6 +874,25 @@ def _weather(r: _Reader) -> Weather | None:
         if other != time:
             r.notes.append(f"left out: '{said}' (the scene has one time of day: {time})")
     return Weather(condition=condition, time=time)
+
+
+SINCE = {"from", "since"}
+CAUSE_FILLER = {"this", "the", "last", "earlier", "yesterday", "rain", "rainfall", "shower", "showers", "storm",
+                "downpour", "frost", "snow", "snowfall", "'s", "of"}
+
+
+def _time_of_a_cause(units: list[Unit], k: int) -> bool:
+    """'wet from this morning', 'icy since last night': when the road got so, not the scene's time of day."""
+    sentence = units[k].tokens[0].sentence
+    for j in range(k - 1, max(-1, k - 5), -1):
+        u = units[j]
+        if u.tokens[0].sentence != sentence:
+            return False
+        if u.word in SINCE:  # after a state of the road: "wet from", "icy since"
+            return j > 0 and units[j - 1].category == "weather" and not units[j - 1].meaning.startswith("time:")
+        if u.word not in CAUSE_FILLER and u.category not in ("weather",):
+            return False
+    return False
 
 
 def _clock_time(r: _Reader) -> tuple[str, str] | None:
@@ -958,6 +1067,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
                 skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
+        if u.category == "sequence" and u.meaning == "then" and u.word == "then" and _has_agent(current) and \
+                not _has_verb(current) and not any(x.category == "comma" for x in current) and \
+                nxt is not None and nxt.category == "actions":
+            r.mark(u)
+            stage += 1  # "the taxi then sped past": its subject opens the later stage's clause
+            continue
         if u.category == "sequence" and not (u.word == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers")) and not (
                 u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
@@ -1001,7 +1116,13 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
+            ego_make = bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and \
+                len(current[-1].tokens) > 1 and nxt is not None and nxt.word in ("a", "an") and closed
+            # "I was driving my vehicle, a grey Astra, west": what the ego is, not another car
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
+            new_noun = new_noun or _has_agent(current) and nxt is not None and nxt.word in (
+                "he", "she", "they") and k + 2 < len(units) and units[k + 2].word in COPULAS | {"be"}
+            # "I'm in lane 1, he's in lane 2 and starts drifting": a new subject
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
             order = nxt is not None and _bare_verb(nxt) and _has_agent(current) and not any(
@@ -1018,11 +1139,19 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             bracketed = len(current) >= 3 and current[-1].category == "agents" and len(current[-1].tokens) == 1 \
                 and current[-1].base in ROLE_NAMES and current[-2].category == "comma" and \
                 current[-3].category == "agents" and not joined  # "a principal other vehicle (POV) stationary"
-            if (_has_verb(current) or condition or new_noun or joined or order) and not short_name and not ego_named \
-                    and not bracketed:
+            relative_ends = link in RELATIVES and nxt is not None and nxt.category == "actions" and \
+                _has_agent(current)  # "a man, whom I know to be its driver, walked out": the man's verb
+            if (_has_verb(current) or condition or new_noun or joined or order or relative_ends) and not short_name \
+                    and not ego_named \
+                    and not bracketed and not ego_make:
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
+            continue
+        if condition and _main_clause_after_condition(current, units, k):
+            close()  # "once you were past the lorry you moved back": the condition ends where its main clause starts
+        if u.category == "word" and u.word == "but" and prev_word in ("option", "choice", "alternative"):
+            current.append(u)  # "no option but to stop": one idiom, the verb is the one left without a choice's
             continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
             if u.word in ("and", "or") and not _has_verb(current) and not _new_subject_after_copula(current, units, k):
@@ -1074,6 +1203,19 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
         if x.category == "comma" or x.word in CLAUSE_WORDS:
             return False
     return False
+
+
+def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """A condition written without a comma ('once you were past it you pulled in'): a complete condition (a
+    subject and its verb), then a subject pronoun and a verb start the clause the condition is for."""
+    u = units[k]
+    pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
+        u.category == "word" and u.word in SUBJECT_PRONOUNS
+    if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS for x in current)):
+        return False
+    if current[-1].category == "word" and current[-1].word in COPULAS | AUXILIARIES:
+        return False  # "once it is you ...": the pronoun belongs to the condition
+    return any(x.category == "actions" for x in units[k + 1:k + 3])
 
 
 def _starts_subject(units: list[Unit], k: int) -> bool:
@@ -1130,6 +1272,27 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
                                                              and {"get", "have"} & set(words[2:3])))
 
 
+def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
+    """'Once someone's on a zebra, you stop and you wait': advice for anyone at any time, no event of the scene."""
+    words = [x.word for x in tokens if x.sentence == sentence]
+    return any(w in ("once", "when", "whenever", "if") and words[k + 1] in ANYONE for k, w in enumerate(words[:-1])) \
+        and "you" in words and not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
+
+
+COUNTERFACTUAL_MODALS = {"would", "could", "should", "might", "must"}
+
+
+def _counterfactual(tokens: list[Token], t: Token) -> bool:
+    """'You'd have had to stop again if I hadn't': what would have happened, not what did."""
+    for j in range(t.index - 1, max(-1, t.index - 6), -1):
+        x = tokens[j]
+        if x.sentence != t.sentence or x.word in (",", "and", "but", "so", "then"):
+            return False
+        if x.word == "have" and j > 0 and tokens[j - 1].word in COUNTERFACTUAL_MODALS and not tokens[j - 1].question:
+            return True
+    return False
+
+
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
     sentences after it describe the scene. 'Can someone explain this?', 'Why are people like this': the
@@ -1147,6 +1310,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             before.word in ("once", "when", "whenever", "if") and any(
                 x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
         return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
+    if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)):
+        return True  # "once someone's on a zebra, you stop and you wait"; "you'd have had to stop"
     if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
             (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
             and first.word in QUESTION_WORDS:
@@ -1261,6 +1426,28 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
     return count, first, words, modifiers
 
 
+CASE_NOUNS = {"scenario", "scene", "test", "case", "situation"}
+
+
+def _names_the_case(r: _Reader, units: list[Unit], head: int, kind: str) -> bool:
+    """'stopped veh scenario', 'cut-in car test': a noun naming the kind of case, when an agent of its kind is
+    introduced later on; with none later ('a cyclist scenario') it is the agent asked for."""
+    if head + 1 >= len(units) or units[head + 1].word not in CASE_NOUNS or units[head].tokens[-1].plural:
+        return False
+    end = units[head + 1].tokens[-1].index + 1
+    return any(m.category == "agents" and m.meaning == kind for m in matches(r.tokens, end))
+
+
+def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
+    """'a group of the children', 'some of the pupils': an uncounted part of a group named before."""
+    span = units[first:head]
+    vague = any(u.category == "numbers" and u.tokens[0].word in VAGUE_COUNTS | {"group", "crowd", "bunch"}
+                for u in span)
+    of_the = any(u.word in ("the", "those", "these") and k > 0 and (span[k - 1].word == "of" or (
+        span[k - 1].category == "numbers" and span[k - 1].tokens[-1].word == "of")) for k, u in enumerate(span))
+    return vague and of_the
+
+
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
     u = units[head]
     r.mark(u)
@@ -1285,11 +1472,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
+    if _names_the_case(r, units, head, kind):
+        return NounPhrase(None, head, first)  # "stopped veh scenario. Soft target (sedan) parked...": the case's name
+    if u.base in RIDDEN and units[first].word in POSSESSIVES:
+        rider = next((e for e in reversed(recent) if not e.is_ego and e.type == kind), None)
+        if rider is not None:
+            return NounPhrase(rider, head, first)  # "a cyclist ... no lights on his bike": the cyclist's own
     label = u.tokens[-1].label
     if label:
         named = next((e for e in r.entities if e.label == label), None)
         if named is not None:
             return NounPhrase(named, head, first)
+    if count is not None and plural and _vague_part_of_the(units, first, head):
+        count, words = None, words - {"some"}  # "a group of the children", "some of the kids": those said before
     if count is not None and count > 1 and not plural and words & {"some", "any"}:
         count = 1  # "some car suddenly cuts in"
     definite = bool(words & (DEFINITE | {"both", "other", "its", "their"})) and not words & {"another", "a", "an"}
@@ -1307,6 +1502,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and \
             not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego
+    predicate = first > 0 and units[first - 1].word in COPULAS | {"be", "being", "been"}  # "whom I know to be the
+    # driver of the HGV": says who the man is; he is not the HGV
+    if predicate and u.base in ("driver", "rider", "motorist") and not plural:
+        return NounPhrase(None, head, first)
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
         driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
@@ -1349,6 +1548,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         for k in range(before + 1, head):
             r.mark(units[k])
             units[k].category = "word"
+        if head + 1 < len(units) and units[head + 1].category == "actions" and \
+                units[head + 1].tokens[0].word.endswith("ed"):
+            r.mark(units[head + 1])
+            units[head + 1].category = "word"  # "a street with cars parked both sides": said of the scenery
         return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
     if count is None:
         count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
@@ -1505,6 +1708,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if u.meaning == "side_left" and {t.word for t in u.tokens} & {"far", "farside"} and \
                 "lane" not in {t.word for t in u.tokens}:
             e.features.add("far_side")  # the far lane of a road, or across a junction: decided in _position
+        if u.meaning in ("ahead", "behind") and INVERSE[u.meaning] in e.features and e.actions:
+            return  # "a Toyota behind me ... cut in directly in front of me": the first place said is its start
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
@@ -1524,6 +1729,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 u.meaning == "move" and u.tokens[0].base in STEERING)):
             direction = _direction_after(r, clause_units, k)
         action = u.meaning
+        if action == "walk" and clause_units is not None and k is not None and any(
+                x.category == "word" and x.word in ("across", "over") for x in clause_units[k + 1:k + 3]):
+            action = "cross"  # "a granny shuffles slowly across": over the road
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
@@ -1557,6 +1765,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
+        if action == "stop" and not e.is_ego and clause_units is not None and k is not None and \
+                _stands_across(clause_units[k + 1:k + 5]):
+            action = "block"  # "a patrol car parked across the lane": nobody gets by
         if action == "stop" and ({t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
                                                                   "stall", "stalled", "double", "abandon"}
                                  or {"bus", "stop"} <= {t.word for t in u.tokens}):  # "at a bus stop": at the kerb
@@ -1573,6 +1784,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("moves_out")  # "the car in front pulls out", "swerves out": out of the lane it is in
         if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
             e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
+        if action == "cut_in" and {"stop", "stand", "bay"} & {t.word for t in u.tokens}:
+            e.features.add("from_lane")  # "pulling out of a stop on the right": from where it stood, ahead
         if e.is_ego and action == "cut_in" and direction is None and any(
                 a[0] == stage and a[4] in ("lane_left", "lane_right") for a in e.actions):
             return  # "merges left ... and has to slot in between them": the same lane change, its side said before
@@ -1593,6 +1806,15 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                           direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+def _stands_across(units: list[Unit]) -> bool:
+    """'parked across the lane', 'stopped across my lane', 'sat across the road': standing athwart the way."""
+    if not units or units[0].word != "across":
+        return False
+    rest = units[1:3]
+    return any(u.category == "positions" and u.meaning in ("ego_lane", "into_ego_lane") or
+               u.word in ("lane", "road", "street", "carriageway", "way", "junction") for u in rest)
 
 
 def _in_time(units: list[Unit]) -> bool:
@@ -1920,7 +2142,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 units[i - 1].category == "actions" and units[i - 1].tokens[0].base in STEERING | {"come", "get"}
                 and u.tokens[0].word == "in")):
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane", "is coming in ego lane"
-        owner = _modifier_owner(units, i, phrases, subject, main_verbs, participles)
+        if u.meaning == "ahead" and _swerves_in_front(units, i):
+            u.meaning = "into_ego_lane"  # "swerves right in front of me": where the cut-in ends, not where it began
+        if u.meaning == "ahead" and _turns_in_front(units, i):
+            u.meaning = "turned_in_front"  # "turns right in front of me": ahead, or across from its side road
+        owner = _let_in_place(units, i, phrases, recent) or \
+            _modifier_owner(units, i, phrases, subject, main_verbs, participles)
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
                 not any(e in subject for e in owner):
             r.mark(u)
@@ -1936,7 +2163,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.features.add(u.meaning)
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
-                if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS:
+                edge_after = i + 1 < len(units) and (units[i + 1].category == "positions" and units[i + 1].meaning in (
+                    "shoulder", "sidewalk") or units[i + 1].word in LANE_EDGES)  # "against the nearside verge"
+                if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS and \
+                        not edge_after:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
                 later = reference is not None and stage > reference.stage and bool(
                     reference.features & {"ahead", "behind", "level"})  # "then returns ahead of the bus": it was
@@ -2147,9 +2377,27 @@ CAUSATIVES = {"force", "forced", "forces", "forcing", "cause", "caused", "causes
               "making", "compel", "compelled", "require", "required", "requires", "oblige", "obliged"}
 
 
+LIGHT_VERBS = {"perform", "make", "do", "carry", "execute", "an", "a", "the", "out"}
+
+
+def _left_no_option(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entity]:
+    """'leaving me no option but to perform an emergency stop': the verb is the one left without a choice's."""
+    j = i - 1
+    while j >= 0 and units[j].category == "word" and units[j].word in LIGHT_VERBS:
+        j -= 1
+    if j < 3 or units[j].word != "to" or units[j - 1].word != "but" or \
+            units[j - 2].word not in ("option", "choice", "alternative"):
+        return []
+    np = next((p for p in phrases if j - 6 <= p.index < j - 2 and p.entity is not None), None)
+    return [np.entity] if np is not None else []
+
+
 def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entity]:
     """'a truck forced the AV to change lanes': the verb after 'to' is the object's doing; so is the bare verb
     after 'let' ('I let the van merge': the van merges, not I)."""
+    left = _left_no_option(units, i, phrases)
+    if left:
+        return left
     if i >= 2 and units[i - 1].word != "to":
         np = next((p for p in phrases if p.index == i - 1 and p.entity is not None), None)
         if np is not None and np.first > 0 and units[np.first - 1].word in LETTING:
@@ -2332,6 +2580,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
                 between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding") and \
                 np.entity.type in V.EGO_TYPES
+            mine = mine or prev.entity.is_ego and len(units[prev.index].tokens) > 1 and _named_make(
+                between, np.entity.type)  # "my vehicle, a grey Vauxhall Astra,": its make and model
             if mine:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
                 prev.entity.type = np.entity.type if np.entity.type != "car" else prev.entity.type
                 if np.entity in r.entities:
@@ -2357,6 +2607,14 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _named_make(between: list[Unit], kind: str) -> bool:
+    """', a grey Vauxhall' before 'Astra': a comma, an article, colours and the maker's name, nothing more."""
+    words = [u for u in between if u.category != "comma"]
+    return bool(between) and between[0].category == "comma" and bool(words) and words[0].word in ("a", "an") and \
+        all(u.word in COLOURS | {"dark", "light", "white", "black", "grey", "gray"} or
+            u.category == "agents" and u.meaning == kind for u in words[1:])
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
@@ -2501,6 +2759,59 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
         if last.introduced and not last.entity.is_ego:
             return [last.entity]
     return subject
+
+
+SWERVE_ADVERBS = {"right", "left", "across", "over", "out", "in", "sharply", "suddenly", "just", "straight"}
+
+
+def _swerves_in_front(units, i) -> bool:
+    """'swerves right in front of me', 'pulls across in front of us': 'in front of' the ego right after a
+    sideways verb is the lane the mover ends in (as in 'cuts in front of'), not a place it started from."""
+    u = units[i]
+    if "front" not in {t.word for t in u.tokens}:
+        return False
+    j = i - 1
+    while j >= 0 and units[j].category == "word" and units[j].word in SWERVE_ADVERBS:
+        j -= 1
+    verb = units[j] if j >= 0 else None
+    if verb is None or verb.category != "actions" or not (
+            verb.meaning in ("cut_in", "lane_change") or verb.tokens[0].base in STEERING | {"swing", "dart", "cut"}):
+        return False
+    if u.tokens[-1].word in ("me", "us", "you", "ego"):
+        return True  # "in front of me"
+    nxt = units[i + 1] if i + 1 < len(units) else None
+    return nxt is None or nxt.category == "agents" and nxt.meaning == "ego" or nxt.category == "comma"
+
+
+def _turns_in_front(units, i) -> bool:
+    """'a pickup on my left turns right in front of me': 'in front of' the ego right after the turn of one on the
+    ego's side is the path it turns across, coming out of the side road; not the lane ahead."""
+    j = i - 1
+    while j >= 0 and (units[j].category == "word" and units[j].word in SWERVE_ADVERBS or
+                      units[j].category == "positions" and [t.word for t in units[j].tokens] in (["left"], ["right"])):
+        j -= 1
+    ego_after = i + 1 < len(units) and units[i + 1].category == "agents" and units[i + 1].meaning == "ego"
+    return j >= 0 and units[j].category == "actions" and units[j].meaning in ("turn_left", "turn_right", "turn") \
+        and (units[i].tokens[-1].word in ("me", "us", "you", "ego") or ego_after)
+
+
+LET_PARTICLES = {"in", "through", "past", "by", "out", "go", "merge", "pass"}
+
+
+def _let_in_place(units, i, phrases, recent) -> list[Entity]:
+    """'we let it in ahead', 'let the van through in front': the place is where the let one ends up."""
+    j = i - 1
+    while j >= 0 and units[j].word in LET_PARTICLES:
+        j -= 1
+    if j == i - 1 or j < 1 or units[i].category != "positions" or units[i].meaning not in ("ahead", "behind"):
+        return []
+    if units[j].word in ("it", "them", "him", "her") and units[j - 1].word in LETTING:
+        e = next((x for x in reversed(recent) if not x.is_ego), None)
+        return [e] if e is not None else []
+    np = next((p for p in phrases if p.index == j and p.entity is not None and not p.entity.is_ego), None)
+    if np is not None and np.first > 0 and units[np.first - 1].word in LETTING:
+        return np.group or [np.entity]
+    return []
 
 
 def _reference_after(units, i, phrases) -> Entity | None:
@@ -2651,7 +2962,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "target_lane" in f and target_side and not _side(e):
         f.add(f"side_{target_side}")
     if e.road_type == "shoulder" and not _side_of(f):
-        f.add("side_right")  # the shoulder is at the road's right edge, ahead unless said otherwise
+        f.add("side_left" if _KEEPS_LEFT.get() else "side_right")  # the shoulder is at the kerb edge (the left
+        # where traffic keeps left), ahead unless said otherwise
         if not f & {"behind", "level", "overtaking"}:
             f.add("ahead")
     side = _side_of(f)
@@ -2677,7 +2989,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             if person and crossing and not junction:  # "crossing from the left" with no junction: from that kerb
                 return f"front_{s}", False
             return f"road_of_{s}_turn", False
-    if "destination" in f and not ("crosswalk" in f and crossing):  # "on the crosswalk of the road it turns into"
+    turner_from_a_side = (action or "").startswith("turn") and bool(f & {"from_left", "from_right"})
+    if "destination" in f and not ("crosswalk" in f and crossing) and not turner_from_a_side:
+        # "a motorbike from the left turning right into the street the player heads for": it comes from the left  # "on the crosswalk of the road it turns into"
         return "at_the_destination", False
     if "cross_road" in f and not person:
         return f"road_of_{side or UNSPECIFIED['side_of_a_crossing_road']}_turn", False
@@ -2706,7 +3020,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         ahead = True  # "cuts off the ego from the right adjacent lane"
     moving_out = "moves_out" in f and "ahead" in f and side is None and "ego_lane" not in f
     if action == "cut_in" and not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f
-                                                                 or f"bare_{side}" in f or f"from_{side}" in f):
+                                                                 or f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
@@ -2767,6 +3081,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
         if side_now is None:
             return "block_the_ego" if position == "front" and e.type != "pedestrian" else "go_straight"
         return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
+    if action == "move" and direction and position == "back" and not e.is_ego:
+        return f"change_lane_to_{direction}"  # "came up behind us and went around on the right": out of our lane
     if action == "block":
         if "parked" in e.features and position == "at_the_destination":
             return "stop"  # "a lorry parked in the road we turn into, obstructing it": it stands where we head
@@ -2853,6 +3169,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                     e.features.add("target_lane")
         if subject:
             previous = subject
+        if clause.antecedent is not None and clause.antecedent not in subject and k + 1 < len(clauses) and \
+                clauses[k + 1].link == ",":  # "a man, whom I now know to be its driver, walked out": the man did
+            previous = [clause.antecedent]
         verbless = not _has_verb(clause.units)
         r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
@@ -3102,10 +3421,22 @@ def _title(prompt: str, tokens: list[Token]) -> range:
         return range(0)  # "There are four cars: one in front ...": a sentence, not a title
     if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
+    if _title_names_the_agent(m.group(1), prompt[m.end(1):]):
+        return range(0)
     n = len(tokenize(m.group(1)))
     if n > 12 or n >= len(tokens):
         return range(0)
     return range(n)
+
+
+def _title_names_the_agent(title: str, rest: str) -> bool:
+    """'Overtaking the cyclist on the 30 road: you gave him room': a topic that names its agent with 'the' and
+    that the rest only refers back to is where the agent is introduced, not a case's name."""
+    named = [f for f in matches(tokenize(title)) if f.category == "agents" and f.meaning not in ("ego", "none")]
+    words = [t.word for t in tokenize(title)]
+    definite = [f for f in named if f.start > 0 and words[f.start - 1] in DEFINITE]
+    again = {f.meaning for f in matches(tokenize(rest)) if f.category == "agents"}
+    return bool(definite) and not any(f.meaning in again for f in definite)
 
 
 def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list[Agent]], set[str]]:
@@ -3134,6 +3465,18 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     resolved: dict[int, tuple[str, str]] = {}
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
+    for e in others:  # "the HGV in lane one had to pull out into lane two": lanes count from the kerb
+        into = next((int(f[10:]) for f in e.features if f.startswith("into_lane_")), None)
+        own = next((int(f[5:]) for f in e.features if f.startswith("lane_") and f[5:].isdigit()), None)
+        if into is not None and own is not None and into != own:
+            e.actions.append((e.stage, 2, ACTION_RANK["cut_in"] + 1, r.tick(), "lane_right" if into > own else
+                              "lane_left", None))
+    if target_side and _joins_from_a_ramp(r.tokens):
+        for e in others:  # "merges left onto the highway; trucks in the highway's right lane": on the ego's left
+            if e.type not in V.VULNERABLE_TYPES and not e.features & {
+                    "bare_left", "bare_right", "road_left", "road_right", "road_straight", "cross_road"}:
+                e.features -= {"side_left", "side_right"} | {f for f in e.features if f.startswith("lane_")}
+                e.features.add(f"side_{target_side}")
     heading = next((f for f in (ego_entity.features if ego_entity else ()) if f.startswith("compass_")), None)
     for e in others:  # "the AV was travelling north ... a van heading south": compass headings against the ego's
         own = next((f for f in e.features if f.startswith("compass_")), None)
@@ -3158,6 +3501,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
             r.notes.append(f"inferred: '{e.head}' behind or ahead in the lane drives a car")
         action = _sideways(action, junction)
+        if e.type == "cyclist" and junction and action in (None, "move") and "ahead" in e.features and \
+                e.features & {"from_left", "from_right", "road_left", "road_right"}:
+            action = "cross"  # "a cyclist from the left ran the red right in front of me": across the ego's path
+        action = _sideways(action, junction)
         if "into_ego_lane" in e.features and e.type == "pedestrian":
             action = "cross"  # "a child runs into the ego's path"
         if e.type == "pedestrian" and action in (None, "move") and "on_sidewalk" not in e.features:
@@ -3165,6 +3512,13 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if "into_ego_lane" in e.features and action in ("move", "lane_change"):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
         bare = next((side for side in SIDES if f"bare_{side}" in e.features), None)
+        if "turned_in_front" in e.features:  # said of one on the ego's side: it came out of that side's road
+            e.features.add("across_path" if bare and junction else "ahead")
+        turn_side = action[5:] if action in ("turn_left", "turn_right") else direction if action == "turn" else None
+        if junction and bare and turn_side == bare and not e.features & {
+                "ahead", "behind", "across_path", "from_left", "from_right", "road_left", "road_right", "from_lane"} \
+                and not any(a[4] == "move" for a in e.actions):  # "a bus approaching from my right turns right"
+            e.features.add("level")  # "a van on my left turning left": beside the ego, turning off its own side
         if junction and action == "cut_in" and bare and not e.features & {"ahead", "behind", "level", "from_lane",
                                                                           "into_ego_lane", "overtaking"}:
             e.features.add(f"road_{bare}")  # at a crossroads, "a taxi on our right waiting to pull out": its road
@@ -3220,6 +3574,13 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             if e.key in oncoming:
                 oncoming_names.add(name)
     return [s for k, s in enumerate(stages) if s or k == 0], oncoming_names
+
+
+def _joins_from_a_ramp(tokens: list[Token]) -> bool:
+    """'comes down the on-ramp', 'joined from the slip road': the ego merges onto a road whose lanes lie all on the
+    side it merges to; a lane the text names by that road's own sides ('its right lane') is still on that side."""
+    words = [t.word for t in tokens]
+    return "ramp" in words or any(a == "slip" and b in ("road", "lane") for a, b in zip(words, words[1:]))
 
 
 def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
