@@ -2049,3 +2049,19 @@ def test_the_lanes_of_the_road_the_ego_joins_lie_on_the_side_it_merges_to(prompt
 def test_moving_from_one_numbered_lane_into_another_changes_lane_that_way():
     assert ("bus", "change_lane_to_right", "back") in agents(
         "On the motorway a coach behind me in lane one pulled out into lane two.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego turns left. Buses often use this road in the mornings.", [("car", "turn_left", "ego")]),
+    ("A taxi cut in front of us from the left. Taxis do that all the time around here.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("The ego drives straight. If a cyclist had been there, it would have been a disaster.",
+     [("car", "go_straight", "ego")]),
+    # a test's condition, and counted or named agents doing something habitually, stay in the scene
+    ("If a pedestrian steps out in front of the ego, it brakes.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("Two cyclists often ride side by side ahead of the ego.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front"), ("cyclist", "go_straight", "front")]),
+])
+def test_kinds_spoken_of_in_general_and_someone_in_what_did_not_happen_are_no_agents(prompt, expected):
+    assert agents(prompt) == expected

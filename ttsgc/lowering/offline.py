@@ -1293,11 +1293,52 @@ def _counterfactual(tokens: list[Token], t: Token) -> bool:
     return False
 
 
+HABITUAL = frozenset({"often", "usually", "always", "sometimes", "regularly", "normally", "generally", "typically",
+                      "constantly", "frequently", "routinely"})
+HABITUAL_PHRASES = (("all", "the", "time"), ("every", "day"), ("every", "morning"), ("every", "evening"),
+                    ("every", "time"), ("most", "days"), ("tend", "to"))
+SAID_OF_SOME = COUNTED_BY | {"my", "our", "his", "her", "their", "its", "your", "both", "other", "no", "any", "all"}
+
+
+def _in_general(tokens: list[Token], u: Unit) -> bool:
+    """'Buses often use this road', 'Taxis do that all the time': a bare plural in a sentence of what happens
+    habitually speaks of a kind, not of anyone in the scene."""
+    t = u.tokens[0]
+    if not u.tokens[-1].plural or u.meaning == "ego":
+        return False
+    before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
+    if before is not None and (before.word in SAID_OF_SOME or read_number(before.word) is not None):
+        return False
+    words = [x.word for x in tokens if x.sentence == t.sentence]
+    return bool(HABITUAL & set(words)) or any(tuple(words[k:k + len(p)]) == p
+                                              for p in HABITUAL_PHRASES for k in range(len(words)))
+
+
+def _what_if(tokens: list[Token], u: Unit) -> bool:
+    """'If a cyclist had been there, I would have hit him': someone said to be there in what did not happen.
+    A present 'if a pedestrian steps out, the ego brakes' is a test's condition and stays; 'if the cyclist had
+    not braked' speaks of one who was there."""
+    t = u.tokens[0]
+    if t.index == 0 or tokens[t.index - 1].word not in ("a", "an", "another", "any"):
+        return False
+    sentence = [x for x in tokens if x.sentence == t.sentence]
+    opened = next((x for x in reversed(sentence) if x.index < t.index and x.word in ("if", ",")), None)
+    if opened is None or opened.word != "if":
+        return False
+    clause = [x.word for x in sentence if x.index > t.index and x.word != ","][:4]
+    words = [x.word for x in sentence]
+    would_have = any(w in COUNTERFACTUAL_MODALS and "have" in words[k + 1:k + 3] for k, w in enumerate(words))
+    return would_have and bool({"had", "were"} & set(clause))
+
+
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
     sentences after it describe the scene. 'Can someone explain this?', 'Why are people like this': the
-    readers of a forum post or people in general are nobody in the scene."""
+    readers of a forum post or people in general are nobody in the scene. Nor are kinds spoken of in general
+    or someone in what did not happen (_in_general, _what_if)."""
     t = u.tokens[0]
+    if u.category == "agents" and (_in_general(tokens, u) or _what_if(tokens, u)):
+        return True
     first = next(x for x in tokens if x.sentence == t.sentence)
     before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
     counted = before is not None and (read_number(before.word) is not None or before.word in COUNTED_BY)
