@@ -2049,3 +2049,20 @@ def test_the_lanes_of_the_road_the_ego_joins_lie_on_the_side_it_merges_to(prompt
 def test_moving_from_one_numbered_lane_into_another_changes_lane_that_way():
     assert ("bus", "change_lane_to_right", "back") in agents(
         "On the motorway a coach behind me in lane one pulled out into lane two.")
+
+
+def test_behind_where_it_was_is_at_the_place_of_the_one_that_left():
+    assert ("car", "stop", "front") in agents(
+        "The van ahead of us moves into the left lane and there is a broken down car behind where it was.")
+
+
+def test_pulling_up_at_a_stop_then_moving_off_later_stops_first_and_the_turn_keeps_its_side():
+    stages = lower("The player pulls up to a give way line and wants to go left. A bus passes from the right. "
+                   "Once it has gone, the player makes the turn.").scenario.stages
+    assert [[a.action for a in s.agents if a.is_ego] for s in stages] == [["stop"], ["turn_left"]]
+
+
+def test_a_participle_after_at_which_point_belongs_to_that_clauses_subject():
+    read = agents("I arrived at the four-way stop. I then went straight, at which point a van also entered the "
+                  "junction from the opposite direction, turning left across my path.")
+    assert ("car", "turn_left", "road_of_straight") in read

@@ -1708,6 +1708,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if u.meaning == "side_left" and {t.word for t in u.tokens} & {"far", "farside"} and \
                 "lane" not in {t.word for t in u.tokens}:
             e.features.add("far_side")  # the far lane of a road, or across a junction: decided in _position
+        where = [t.word for t in r.tokens[u.end:u.end + 2]]
+        if u.meaning in ("ahead", "behind") and where[:1] == ["where"] and where[1:] and where[1] in PRONOUNS:
+            e.relative_to = e.relative_to or next(
+                (x for x in reversed(r.entities) if not x.is_ego and x is not e and x.key < e.key), None)
+            return  # "a stopped car behind where it was": at the place of the one that moved away
         if u.meaning in ("ahead", "behind") and INVERSE[u.meaning] in e.features and e.actions:
             return  # "a Toyota behind me ... cut in directly in front of me": the first place said is its start
         if u.meaning in ("shoulder", "sidewalk"):
@@ -1799,6 +1804,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS:
             e.features.add("stops_abruptly")  # "stops dead", "slams on the brakes": a sudden stop, not a halt
             e.behavior = e.behavior or "aggressive"
+        if action == "reach" and e.is_ego and clause_units is not None and k is not None and \
+                {t.base for t in u.tokens} & {"arrive", "pull"} and _a_stop_control(clause_units[k + 1:k + 5]):
+            e.actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "I arrived at the
+            # all-way stop", "pulls up to a stop sign": it stops there (a turn said with it still wins)
         earlier = clause_units is not None and k is not None and any(
             x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
         # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
@@ -1815,6 +1824,12 @@ def _stands_across(units: list[Unit]) -> bool:
     rest = units[1:3]
     return any(u.category == "positions" and u.meaning in ("ego_lane", "into_ego_lane") or
                u.word in ("lane", "road", "street", "carriageway", "way", "junction") for u in rest)
+
+
+def _a_stop_control(units: list[Unit]) -> bool:
+    """'the all-way stop', 'a stop sign', 'the give way line', 'a red light': a place where drivers stop."""
+    return any(u.category == "road" and u.meaning in ("stop", "stop+junction", "yield", "stop_line") or
+               u.word == "red" for u in units)
 
 
 def _in_time(units: list[Unit]) -> bool:
@@ -2157,6 +2172,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if reference is None and u.category == "positions" and u.tokens[-1].word in ("it", "them") and \
                 u.meaning in ("ahead", "behind", "level"):
             reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
+
         for e in targets:
             if e.is_ego and u.category == "positions":
                 if u.meaning.startswith("compass_"):
@@ -3169,8 +3185,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                     e.features.add("target_lane")
         if subject:
             previous = subject
-        if clause.antecedent is not None and clause.antecedent not in subject and k + 1 < len(clauses) and \
-                clauses[k + 1].link == ",":  # "a man, whom I now know to be its driver, walked out": the man did
+        if clause.antecedent is not None and not clause.antecedent.is_ego and clause.antecedent not in subject and \
+                k + 1 < len(clauses) and clauses[k + 1].link == "," and clauses[k + 1].units and \
+                clauses[k + 1].units[0].category == "actions" and \
+                not clauses[k + 1].units[0].tokens[0].word.endswith("ing"):
+            # "a man, whom I now know to be its driver, walked out": the man did
             previous = [clause.antecedent]
         verbless = not _has_verb(clause.units)
         r.after_verbless = verbless and _has_agent(clause.units)
@@ -3589,7 +3608,8 @@ def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
     action, direction = _action(e, stage)
     later = [a for a in e.actions if a[0] > stage and a[1] == 2 and a[2] > 0]
     waits = [a for a in e.actions if a[0] == stage and a[1] == 2 and a[4] == "stop"]
-    if later and waits and action in ("turn", "turn_left", "turn_right", "u_turn", "lane_left", "lane_right"):
+    if later and waits and action in ("turn", "turn_left", "turn_right", "u_turn", "lane_left", "lane_right",
+                                      "sideways_left", "sideways_right"):  # "pulls up ... and needs to go right"
         return "stop"
     if stage > 0 and action in ("move", "go_straight", None):
         before = [a for a in e.actions if a[0] < stage and a[1] == 2 and a[4] in ("turn_left", "turn_right")]
@@ -3624,7 +3644,9 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
         return action
     signalled = next((s for s in SIDES if f"signals_{s}" in e.features), None)
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or signalled or UNSPECIFIED['turn_direction']}"
+        meant = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] < stage and a[4] in (
+            "turn_left", "turn_right", "sideways_left", "sideways_right")), None)  # "... then makes the turn"
+        return f"turn_{direction or signalled or meant or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
