@@ -2066,3 +2066,17 @@ def test_a_participle_after_at_which_point_belongs_to_that_clauses_subject():
     read = agents("I arrived at the four-way stop. I then went straight, at which point a van also entered the "
                   "junction from the opposite direction, turning left across my path.")
     assert ("car", "turn_left", "road_of_straight") in read
+
+
+def test_one_after_another_is_an_order_not_a_stage():
+    scene = lower("Three vans in the right lane ahead cut in front of the player, one after another, all going far "
+                  "too fast.").scenario
+    assert len(scene.stages) == 1
+    assert [a.action for a in scene.agents() if not a.is_ego] == ["change_lane_to_left"] * 3
+
+
+def test_waiting_to_turn_without_a_side_is_a_stop_and_a_give_way_line_is_a_yield():
+    scene = lower("I was stationary at the give way line, waiting to turn out, when a bus passed from my right.")
+    assert [a.action for a in scene.scenario.agents() if a.is_ego] == ["stop"]
+    assert "yield" in scene.scenario.road.required_signals
+    assert ("car", "turn_left", "ego") in agents("I was stopped at the lights, waiting to turn left.")

@@ -1062,6 +1062,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "sequence" and prev_word in RELATIVES:
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
+        if u.category == "sequence" and u.word == "after" and prev_word in ("one", "each") and nxt is not None and \
+                nxt.word in ("another", "the", "other"):
+            r.mark(u)
+            continue  # "three cars swerve in, one after another": their order, not a later stage
         if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and (
                 nxt.tokens[0].word.endswith("ing") or nxt.category == "actions"):
             if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
@@ -3616,6 +3620,8 @@ def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
         if before and any(a[0] == stage for a in e.actions) and any(
                 a[0] == stage - 1 and a[4] == "stop" and a[1] == 2 for a in e.actions):
             return before[-1][4]  # "... then went": the turn it waited to make
+    if action in ("turn", "u_turn") and direction is None and waits:
+        return "stop"  # "stationary at the line, waiting to turn out": it stands; which way it would turn is unsaid
     action = _sideways(action, junction)
     if action == "cut_in" and direction is None and junction:
         return "move"  # "pull out at the stop sign to go straight": into the junction, no lane change
