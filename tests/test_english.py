@@ -2080,3 +2080,14 @@ def test_waiting_to_turn_without_a_side_is_a_stop_and_a_give_way_line_is_a_yield
     assert [a.action for a in scene.scenario.agents() if a.is_ego] == ["stop"]
     assert "yield" in scene.scenario.road.required_signals
     assert ("car", "turn_left", "ego") in agents("I was stopped at the lights, waiting to turn left.")
+
+
+def test_an_overtaker_said_to_come_up_behind_is_behind():
+    assert ("motorcycle", "go_straight", "back") in agents(
+        "On a country road with no junctions a motorbike came up behind me and overtook on a bend.")
+
+
+def test_a_turn_made_with_a_wait_in_advice_is_still_the_turn():
+    assert ("car", "turn_left", "ego") in agents(
+        "Your left at the lights. You turned across an oncoming van. When there is oncoming traffic, you wait in "
+        "the junction till it is clear.")

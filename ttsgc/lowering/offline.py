@@ -1808,6 +1808,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS:
             e.features.add("stops_abruptly")  # "stops dead", "slams on the brakes": a sudden stop, not a halt
             e.behavior = e.behavior or "aggressive"
+        if action == "turn" and e.is_ego and not direction and clause_units is not None and k is not None and \
+                k > 0 and clause_units[k - 1].word == "to":
+            e.features.add("turn_intended")  # "waiting to turn out": a turn meant, not made
         if action == "reach" and e.is_ego and clause_units is not None and k is not None and \
                 {t.base for t in u.tokens} & {"arrive", "pull"} and _a_stop_control(clause_units[k + 1:k + 5]):
             e.actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "I arrived at the
@@ -3033,7 +3036,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
             and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
-    if side is None and "overtaking" in f:
+    if side is None and "overtaking" in f and not ("behind" in f and junction is False):
         side = _overtaking_side("side_of_an_overtaker")
         side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
@@ -3620,7 +3623,7 @@ def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
         if before and any(a[0] == stage for a in e.actions) and any(
                 a[0] == stage - 1 and a[4] == "stop" and a[1] == 2 for a in e.actions):
             return before[-1][4]  # "... then went": the turn it waited to make
-    if action in ("turn", "u_turn") and direction is None and waits:
+    if action in ("turn", "u_turn") and direction is None and waits and "turn_intended" in e.features:
         return "stop"  # "stationary at the line, waiting to turn out": it stands; which way it would turn is unsaid
     action = _sideways(action, junction)
     if action == "cut_in" and direction is None and junction:
