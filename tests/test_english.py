@@ -2091,3 +2091,19 @@ def test_a_turn_made_with_a_wait_in_advice_is_still_the_turn():
     assert ("car", "turn_left", "ego") in agents(
         "Your left at the lights. You turned across an oncoming van. When there is oncoming traffic, you wait in "
         "the junction till it is clear.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was driving my car, red Ford Focus, north along the high street.",
+    "i was driving my car, a red ford focus, north along the high street",
+])
+def test_the_egos_own_make_without_an_article_is_no_other_agent(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego")]
+
+
+def test_a_topic_naming_its_agent_without_an_article_introduces_it_when_the_rest_says_him():
+    assert [t for t, _, p in agents("Passing cyclist on the bypass: you gave him room.") if p != "ego"] == ["cyclist"]
+
+
+def test_sitting_in_a_lane_without_an_article_keeps_pace_too():
+    assert ("truck", "go_straight", "back_left") in agents("There was a lorry sitting in left lane just behind us.")

@@ -444,9 +444,11 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
     says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
     words = [t.word for t in tokens[i:i + 8] if t.sentence == tokens[i].sentence]
-    if words[:2] != ["in", "the"] or "lane" not in words[2:6]:
+    if words[1:2] == ["the"]:
+        del words[1]  # "sitting in (the) right-hand lane"
+    if words[:1] != ["in"] or "lane" not in words[1:5]:
         return False
-    after = words[words.index("lane", 2) + 1:]
+    after = words[words.index("lane", 1) + 1:]
     after = after[1:] if after[:1] in (["just"], ["right"], ["slightly"], ["directly"]) else after
     return bool(after) and after[0] in PACE_PLACES
 
@@ -1121,7 +1123,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
             ego_make = bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and \
-                len(current[-1].tokens) > 1 and nxt is not None and nxt.word in ("a", "an") and closed
+                len(current[-1].tokens) > 1 and nxt is not None and (
+                    nxt.word in ("a", "an") or nxt.word in COLOURS | {"white", "black", "dark"}) and closed
             # "I was driving my vehicle, a grey Astra, west": what the ego is, not another car
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             new_noun = new_noun or _has_agent(current) and nxt is not None and nxt.word in (
@@ -2635,9 +2638,10 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
 def _named_make(between: list[Unit], kind: str) -> bool:
     """', a grey Vauxhall' before 'Astra': a comma, an article, colours and the maker's name, nothing more."""
     words = [u for u in between if u.category != "comma"]
-    return bool(between) and between[0].category == "comma" and bool(words) and words[0].word in ("a", "an") and \
-        all(u.word in COLOURS | {"dark", "light", "white", "black", "grey", "gray"} or
-            u.category == "agents" and u.meaning == kind for u in words[1:])
+    words = words[1:] if words and words[0].word in ("a", "an") else words  # "my car, (a) grey Vauxhall Astra,"
+    return bool(between) and between[0].category == "comma" and all(
+        u.word in COLOURS | {"dark", "light", "white", "black", "grey", "gray"} or
+        u.category == "agents" and u.meaning == kind for u in words)
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
@@ -3460,7 +3464,8 @@ def _title_names_the_agent(title: str, rest: str) -> bool:
     that the rest only refers back to is where the agent is introduced, not a case's name."""
     named = [f for f in matches(tokenize(title)) if f.category == "agents" and f.meaning not in ("ego", "none")]
     words = [t.word for t in tokenize(title)]
-    definite = [f for f in named if f.start > 0 and words[f.start - 1] in DEFINITE]
+    referred = bool({t.word for t in tokenize(rest)} & {"him", "her", "he", "she", "them"})  # "you gave him room"
+    definite = [f for f in named if f.start > 0 and words[f.start - 1] in DEFINITE or referred]
     again = {f.meaning for f in matches(tokenize(rest)) if f.category == "agents"}
     return bool(definite) and not any(f.meaning in again for f in definite)
 
