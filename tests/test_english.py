@@ -2107,3 +2107,10 @@ def test_a_topic_naming_its_agent_without_an_article_introduces_it_when_the_rest
 
 def test_sitting_in_a_lane_without_an_article_keeps_pace_too():
     assert ("truck", "go_straight", "back_left") in agents("There was a lorry sitting in left lane just behind us.")
+
+
+def test_a_stop_junction_and_a_sign_that_says_stop_are_stop_signs_and_even_when_is_no_stage():
+    scene = lower("Stop junction by the church. The sign says stop, even when it's clear. You turned right with a van "
+                  "coming from the left.").scenario
+    assert "stop" in scene.road.required_signals and len(scene.stages) == 1
+    assert [a.action for a in scene.agents() if a.is_ego] == ["turn_right"]

@@ -476,6 +476,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             _word_number(tokens[m.end]) in (1, 2, 3, 4, 5):  # "pull out into lane two": a numbered lane, not ours
         return [Unit(m.start, m.end + 1, "positions", f"into_lane_{int(_word_number(tokens[m.end]))}",
                      tuple(tokens[m.start:m.end + 1]))]
+    if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stop"] and m.start > 0 and \
+            tokens[m.start - 1].word in ("says", "said", "reads", "read", "saying", "reading"):
+        return [Unit(m.start, m.end, "road", "stop", span)]  # "the sign says stop": a stop sign, nobody stopping
     if m.category == "positions" and _body_part(tokens, m):
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
@@ -1061,6 +1064,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if new_sentence:
             close()
         prev_word = units[k - 1].word if k else ""
+        if u.category == "sequence" and prev_word == "even":
+            r.mark(u)
+            continue  # "stop, even when it's clear": a concession, not a later stage
         if u.category == "sequence" and prev_word in RELATIVES:
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
