@@ -2114,3 +2114,19 @@ def test_a_stop_junction_and_a_sign_that_says_stop_are_stop_signs_and_even_when_
                   "coming from the left.").scenario
     assert "stop" in scene.road.required_signals and len(scene.stages) == 1
     assert [a.action for a in scene.agents() if a.is_ego] == ["turn_right"]
+
+
+def test_standing_advice_is_no_event():
+    assert ("car", "go_straight", "ego") in agents(
+        "You came up to the roundabout too fast with a cyclist on it. Always look right and give way.")
+
+
+def test_flashing_his_lights_is_no_traffic_light():
+    assert "traffic_light" not in road("A van came up behind me flashing his lights.").required_signals
+    assert "traffic_light" in road("A van ran a red light in front of me.").required_signals
+
+
+def test_a_hedge_neither_acts_nor_adds_an_agent():
+    assert agents("then a lorry on the left, I think it was a lorry, pulls out in front of me") == sorted([
+        ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")])
+    assert [t for t, _, p in agents("a car, well actually it was a van, stops in front of me") if p != "ego"] == ["car"]

@@ -453,6 +453,9 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     return bool(after) and after[0] in PACE_PLACES
 
 
+HEDGE_VERBS = {"think", "guess", "reckon", "believe", "suppose", "mean"}
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -479,6 +482,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stop"] and m.start > 0 and \
             tokens[m.start - 1].word in ("says", "said", "reads", "read", "saying", "reading"):
         return [Unit(m.start, m.end, "road", "stop", span)]  # "the sign says stop": a stop sign, nobody stopping
+    if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
+            m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
+        return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
     if m.category == "positions" and _body_part(tokens, m):
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
@@ -595,8 +601,9 @@ def _road(r: _Reader) -> RoadSpec:
             put("traffic_light", False)  # "when the light goes green": a signal there
         if u.category == "actions" and {"stop", "sign"} <= {t.word for t in u.tokens}:
             put("stop", False)  # "runs the stop sign"
-        elif u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
-            put("traffic_light", False)  # "runs a red light"
+        elif u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens} and not \
+                {t.word for t in u.tokens} & (POSSESSIVES | {"flash", "flashing", "flashed", "flashes", "headlights"}):
+            put("traffic_light", False)  # "runs a red light"; not "flashing his lights", its own lamps
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
                                                                                           "signaled") \
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
@@ -1292,6 +1299,13 @@ def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
         and "you" in words and not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
 
 
+def _standing_advice(tokens: list[Token], sentence: int) -> bool:
+    """'Always look right and give way.', 'Never overtake there.': advice for every drive, no event of this one."""
+    words = [x.word for x in tokens if x.sentence == sentence]
+    return len(words) > 1 and words[0] in ("always", "never") and words[1] not in ("the", "a", "an", "there") and \
+        not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
+
+
 COUNTERFACTUAL_MODALS = {"would", "could", "should", "might", "must"}
 
 
@@ -1323,7 +1337,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             before.word in ("once", "when", "whenever", "if") and any(
                 x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
         return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
-    if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)):
+    if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)
+                                                  or _standing_advice(tokens, t.sentence)):
         return True  # "once someone's on a zebra, you stop and you wait"; "you'd have had to stop"
     if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
             (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
@@ -1439,6 +1454,14 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
     return count, first, words, modifiers
 
 
+def _it_was_a(r: _Reader, units: list[Unit], first: int, recent: list[Entity]) -> Entity | None:
+    """'a truck on the left, I think it was a truck,': the noun after 'it was' corrects or repeats the one before."""
+    if first < 2 or units[first].word not in ("a", "an") or units[first - 1].word not in ("was", "is") or \
+            units[first - 2].word != "it":
+        return None
+    return next((e for e in reversed(recent + r.clause_mentions) if not e.is_ego), None)
+
+
 CASE_NOUNS = {"scenario", "scene", "test", "case", "situation"}
 
 
@@ -1485,6 +1508,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
+    said_again = _it_was_a(r, units, first, recent)
+    if said_again is not None:
+        said_again.type, said_again.head = kind, u.base
+        return NounPhrase(said_again, head, first)  # "a car, well actually it was a van,": the van said again
     if _names_the_case(r, units, head, kind):
         return NounPhrase(None, head, first)  # "stopped veh scenario. Soft target (sedan) parked...": the case's name
     if u.base in RIDDEN and units[first].word in POSSESSIVES:
