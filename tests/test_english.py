@@ -2130,3 +2130,13 @@ def test_a_hedge_neither_acts_nor_adds_an_agent():
     assert agents("then a lorry on the left, I think it was a lorry, pulls out in front of me") == sorted([
         ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")])
     assert [t for t, _, p in agents("a car, well actually it was a van, stops in front of me") if p != "ego"] == ["car"]
+
+
+def test_an_animal_running_out_is_nobody_and_the_guy_behind_drives():
+    assert agents("I was driving along when a fox ran out, and the guy behind me went straight into the back of me.") \
+        == sorted([("car", "go_straight", "ego"), ("car", "go_straight", "back")])
+
+
+def test_stationary_in_a_marked_police_car_is_the_ego_and_next_time_is_advice():
+    assert agents("I was stationary in a marked police car at the lights.") == [("police", "stop", "ego")]
+    assert ("car", "change_lane_to_left", "ego") in agents("You pulled out in front of the van. Next time wait.")

@@ -1300,9 +1300,12 @@ def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
 
 
 def _standing_advice(tokens: list[Token], sentence: int) -> bool:
-    """'Always look right and give way.', 'Never overtake there.': advice for every drive, no event of this one."""
+    """'Always look right and give way.', 'Never overtake there.', 'Next time wait.': advice for every drive, no
+    event of this one."""
     words = [x.word for x in tokens if x.sentence == sentence]
-    return len(words) > 1 and words[0] in ("always", "never") and words[1] not in ("the", "a", "an", "there") and \
+    if words[:2] == ["next", "time"]:
+        words = words[1:]  # "Next time wait."
+    return len(words) > 1 and words[0] in ("always", "never", "time") and words[1] not in ("the", "a", "an", "there") and \
         not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
 
 
@@ -2093,6 +2096,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 and not (r.after_verbless and verbs and verbs[0] == 0 and _bare_verb(units[0])):
             # "ambulance behind with siren, pull over to the right": an order after a verbless description
             subject = list(previous_subject)
+        elif verbs and any(np.entity is None and units[np.index].meaning == "none" and
+                           first_verb - 3 <= np.index < first_verb for np in phrases):
+            verbs = []  # "a deer ran out": its subject names no agent; nobody of the scene ran
         elif verbs:
             inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
             subject = [e for e in [_implied(r, units, stage, verbs, inside)] if e is not None]
@@ -3308,7 +3314,8 @@ AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cyclin
                 "my vehicle", "my van", "my bike", "my lane", "in my"}
 FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "in", "driving", "drove", "on", "patrol", "uniformed", "mobile", "sitting",
-                   "riding", "at", "the", "wheel", "of", "duty", "routine", "alone"}
+                   "riding", "at", "the", "wheel", "of", "duty", "routine", "alone", "stationary", "parked", "a", "an",
+                   "marked", "unmarked"}  # "I was stationary in a marked police car": the witness's own car
 
 
 def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
@@ -3559,7 +3566,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in VEHICLE_ONLY_ACTIONS:
             e.type = "car"  # "someone's pulling out of a parking spot": someone driving
             r.notes.append(f"inferred: '{e.head}' who {action.replace('_', ' ')}s drives a car")
-        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop") and \
+        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop", "go_straight") and \
                 e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
                 and e.road_type != "sidewalk":
             e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
