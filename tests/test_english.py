@@ -2140,3 +2140,19 @@ def test_an_animal_running_out_is_nobody_and_the_guy_behind_drives():
 def test_stationary_in_a_marked_police_car_is_the_ego_and_next_time_is_advice():
     assert agents("I was stationary in a marked police car at the lights.") == [("police", "stop", "ego")]
     assert ("car", "change_lane_to_left", "ego") in agents("You pulled out in front of the van. Next time wait.")
+
+
+def test_he_after_a_vehicle_in_first_person_talk_is_its_driver():
+    assert ("bus", "change_lane_to_right", "left") in agents(
+        "A coach in the left lane started indicating right. I slowed down so he could merge.")
+
+
+def test_story_words_and_passengers_in_the_back_are_no_scene():
+    scene = lower("Long story short, I was heading home, kids arguing in the back, when a bus pulled out ahead.")
+    assert scene.scenario.weather is None
+    assert [a.type for a in scene.scenario.agents() if not a.is_ego] == ["bus"]
+
+
+def test_the_next_bit_names_a_part_of_the_lesson_not_a_stage():
+    assert len(lower("The next bit was the roundabout. A lorry came from the right and you waited.")
+               .scenario.stages) == 1

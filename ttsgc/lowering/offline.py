@@ -485,6 +485,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
+    if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
+            (m.end >= len(tokens) or tokens[m.end].word != "of"):
+        return [Unit(m.start, m.end, "positions", "on_board", span)]  # "kids arguing in the back": my passengers
     if m.category == "positions" and _body_part(tokens, m):
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
@@ -1071,9 +1074,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if new_sentence:
             close()
         prev_word = units[k - 1].word if k else ""
-        if u.category == "sequence" and prev_word == "even":
+        if u.category == "sequence" and (prev_word == "even" or u.word == "next" and len(u.tokens) == 1 and
+                                         prev_word in ("the", "a", "this")):
             r.mark(u)
-            continue  # "stop, even when it's clear": a concession, not a later stage
+            continue  # "stop, even when it's clear": a concession; "the next bit was ...": which bit, no stage
         if u.category == "sequence" and prev_word in RELATIVES:
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
@@ -2735,7 +2739,9 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     not the subject, usually the ego. 'she', 'him' name people."""
     if units[i].word in ("she", "her", "he", "him"):
         people = [e for e in recent if e.type in V.VULNERABLE_TYPES]
-        return people[-1] if people else None
+        drivers = [e for e in recent if not e.is_ego] if units[i].word in ("he", "she") else []
+        # "a coach started indicating ... so he could merge": the driver of the last vehicle
+        return people[-1] if people else drivers[-1] if drivers else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
                            (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind")))
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
@@ -3534,6 +3540,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     positions: dict[int, str] = {}
     oncoming: set[str] = set()
     resolved: dict[int, tuple[str, str]] = {}
+    for e in r.entities:
+        if e.type == "pedestrian" and "on_board" in e.features and e.count > 0:
+            e.count = 0  # "the kids arguing in the back": passengers of the ego, nobody on the road
+            r.notes.append(f"left out: '{e.head}' in the back of the ego's car (passengers, no agent)")
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
     for e in others:  # "the HGV in lane one had to pull out into lane two": lanes count from the kerb
