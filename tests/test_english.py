@@ -2156,3 +2156,14 @@ def test_story_words_and_passengers_in_the_back_are_no_scene():
 def test_the_next_bit_names_a_part_of_the_lesson_not_a_stage():
     assert len(lower("The next bit was the roundabout. A lorry came from the right and you waited.")
                .scenario.stages) == 1
+
+
+def test_vehicles_on_both_sides_stand_level_and_one_in_our_lane_is_on_neither():
+    read = agents("The player is in the middle of three lanes. Cars on both sides, and a van ahead in the player's "
+                  "lane stops.")
+    assert sorted(p for _, _, p in read if p != "ego") == ["front", "left", "right"]
+
+
+def test_a_named_parking_manoeuvre_is_no_stop():
+    assert [a for a in agents("Your bay park was tidy. You drove past a parked van.") if a[2] == "ego"] == [
+        ("car", "go_straight", "ego")]

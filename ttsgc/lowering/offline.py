@@ -488,6 +488,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
             (m.end >= len(tokens) or tokens[m.end].word != "of"):
         return [Unit(m.start, m.end, "positions", "on_board", span)]  # "kids arguing in the back": my passengers
+    if m.category == "actions" and m.start > 1 and tokens[m.start - 1].word in ("parallel", "bay", "reverse") and \
+            tokens[m.start - 2].word in OWNERS | POSSESSIVES | {"the", "a"}:
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "your parallel park was fine": a manoeuvre named
     if m.category == "positions" and _body_part(tokens, m):
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
@@ -3636,10 +3639,13 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         behavior = e.behavior or V.DEFAULT_BEHAVIOR
         first_name = None
         for n in range(e.count):
-            if "both_sides" in e.features:  # "cars cutting in from different directions": one on each side
+            if "both_sides" in e.features and "ego_lane" not in e.features:  # "cars cutting in from different
+                # directions": one on each side; "a bus ahead in our lane" is in neither
                 side = SIDES[n % 2]
-                placed = {f"from_{side}"} if junction else {f"side_{side}", "from_lane"} | (
-                    {"ahead"} if not e.features & {"behind", "level", "overtaking"} else set())
+                moving_in = action in ("cut_in", "lane_change", "block")  # "cars on both sides" alone: level
+                placed = {f"from_{side}"} if junction else {f"side_{side}"} | ({"from_lane"} if moving_in else set()) | (
+                    {"ahead"} if moving_in and not e.features & {"behind", "level", "overtaking"} or
+                    "ahead" in e.features else set())
                 member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"}) | placed,
                                 road_type=e.road_type)
                 position, _ = _position(member, action, junction, has_crosswalk, target_side)
