@@ -3511,12 +3511,17 @@ def _title(prompt: str, tokens: list[Token]) -> range:
 def _title_names_the_agent(title: str, rest: str) -> bool:
     """'Overtaking the cyclist on the 30 road: you gave him room': a topic that names its agent with 'the' and
     that the rest only refers back to is where the agent is introduced, not a case's name."""
-    named = [f for f in matches(tokenize(title)) if f.category == "agents" and f.meaning not in ("ego", "none")]
-    words = [t.word for t in tokenize(title)]
-    referred = bool({t.word for t in tokenize(rest)} & {"him", "her", "he", "she", "them"})  # "you gave him room"
+    title_tokens = tokenize(title)
+    named = [f for f in matches(title_tokens) if f.category == "agents" and f.meaning not in ("ego", "none")]
+    if not named:
+        return False
+    words = [t.word for t in title_tokens]
+    referred = re.search(r"\b(him|her|he|she|them)\b", rest, re.I) is not None  # "you gave him room"
     definite = [f for f in named if f.start > 0 and words[f.start - 1] in DEFINITE or referred]
+    if not definite:
+        return False
     again = {f.meaning for f in matches(tokenize(rest)) if f.category == "agents"}
-    return bool(definite) and not any(f.meaning in again for f in definite)
+    return not any(f.meaning in again for f in definite)
 
 
 def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list[Agent]], set[str]]:
