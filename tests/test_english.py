@@ -2167,3 +2167,10 @@ def test_vehicles_on_both_sides_stand_level_and_one_in_our_lane_is_on_neither():
 def test_a_named_parking_manoeuvre_is_no_stop():
     assert [a for a in agents("Your bay park was tidy. You drove past a parked van.") if a[2] == "ego"] == [
         ("car", "go_straight", "ego")]
+
+
+def test_a_request_for_one_where_is_no_question_and_a_late_make_it_retypes():
+    read = agents("could we do one where the ego turns left at a roundabout and a cyclist is on its left? or actually "
+                  "make it a motorbike")
+    assert ("car", "turn_left", "ego") in read and ("motorcycle", "go_straight", "left") in read
+    assert not any(t == "cyclist" for t, _, _ in read)

@@ -324,6 +324,35 @@ def _retract_corrections(r: "_Reader") -> list[Unit]:
             r.mark(x)
         del out[first:]
         k = j
+    return _late_corrections(r, out)
+
+
+def _late_corrections(r: "_Reader", units: list[Unit]) -> list[Unit]:
+    """'... a cyclist on its left? or actually make it a motorbike': a later 'make it a X' retypes the last agent
+    named before it, which keeps its place and deed."""
+    out: list[Unit] = []
+    k = 0
+    while k < len(units):
+        u = units[k]
+        if u.word in ("make", "change") and k + 1 < len(units) and units[k + 1].word in ("it", "that"):
+            n = k + 2
+            while n < len(units) and n - k < 6 and units[n].category in ("word", "number", "numbers") and \
+                    (units[n].word in NOUN_PHRASE_WORDS | {"to", "into"} or units[n].category != "word"):
+                n += 1
+            last = next((j for j in range(len(out) - 1, -1, -1) if out[j].category == "agents"
+                         and out[j].meaning not in ("ego", "none", "generic")), None)
+            if n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none") and \
+                    last is not None:
+                old = out[last]
+                out[last] = Unit(old.start, old.end, "agents", units[n].meaning, old.tokens)
+                r.notes.append(f"read '{old.base}' as corrected by "
+                               f"'{' '.join(t.word for x in units[k:n + 1] for t in x.tokens)}'")
+                for x in units[k:n + 1]:
+                    r.mark(x)
+                k = n + 1
+                continue
+        out.append(u)
+        k += 1
     return out
 
 
@@ -1294,6 +1323,8 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
     words = [t.word for t in tokens if t.sentence == sentence]
     if len(words) < 2 or set(words) & ASKING_FOR_A_SCENE - {"have"} or "you" in words[:3]:
         return False
+    if any(w == "one" and nxt in ("where", "with", "in", "that", "when") for w, nxt in zip(words, words[1:])):
+        return False  # "could we do one where the ego turns left?": a scene asked for
     return words[0] in ("who", "whose", "whom") or (words[0] in ASKING_MODALS and words[1] in ("i", "we")
                                                     and not (words[0] in ("can", "could", "may")
                                                              and {"get", "have"} & set(words[2:3])))
