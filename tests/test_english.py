@@ -2174,3 +2174,13 @@ def test_a_request_for_one_where_is_no_question_and_a_late_make_it_retypes():
                   "make it a motorbike")
     assert ("car", "turn_left", "ego") in read and ("motorcycle", "go_straight", "left") in read
     assert not any(t == "cyclist" for t, _, _ in read)
+
+
+def test_a_wobbling_rider_is_the_one_who_moves_and_my_braking_is_mine():
+    read = agents("Two cyclists rode ahead of me. One of them wobbled towards the kerb and I had to brake.")
+    assert [a for a in read if a[0] == "cyclist"] == [("cyclist", "go_straight", "front")] * 2
+
+
+def test_a_rough_time_a_bit_later_is_no_stage():
+    assert len(lower("It was around 6pm, maybe a bit later. A taxi in front of me stopped suddenly.")
+               .scenario.stages) == 1

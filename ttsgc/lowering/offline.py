@@ -1107,9 +1107,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()
         prev_word = units[k - 1].word if k else ""
         if u.category == "sequence" and (prev_word == "even" or u.word == "next" and len(u.tokens) == 1 and
-                                         prev_word in ("the", "a", "this")):
+                                         prev_word in ("the", "a", "this") or
+                                         u.word == "later" and prev_word in ("bit", "little", "or", "maybe")):
             r.mark(u)
-            continue  # "stop, even when it's clear": a concession; "the next bit was ...": which bit, no stage
+            continue  # "stop, even when it's clear": a concession; "the next bit was ...": which bit; "around 6pm,
+            # maybe a bit later": when, roughly; no stage
         if u.category == "sequence" and prev_word in RELATIVES:
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
