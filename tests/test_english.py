@@ -2184,3 +2184,8 @@ def test_a_wobbling_rider_is_the_one_who_moves_and_my_braking_is_mine():
 def test_a_rough_time_a_bit_later_is_no_stage():
     assert len(lower("It was around 6pm, maybe a bit later. A taxi in front of me stopped suddenly.")
                .scenario.stages) == 1
+
+
+def test_the_vans_driver_is_the_van():
+    assert [t for t, _, p in agents("A white van is parked on the left ahead. The van's driver opens his door.")
+            if p != "ego"] == ["car"]

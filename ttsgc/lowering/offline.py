@@ -1733,6 +1733,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
     pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
                                                         or (e.generic and kind in V.EGO_TYPES))]
+    if len(head.split()) > 1 and head.split()[-1] in ("driver", "rider", "drivers", "riders"):
+        head = " ".join(head.split()[:-1])  # "the van's driver", "the bus driver": the van, the bus
     if head and head not in GENERAL_NOUNS and not both and not plural:
         same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"
