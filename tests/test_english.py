@@ -2189,3 +2189,8 @@ def test_a_rough_time_a_bit_later_is_no_stage():
 def test_the_vans_driver_is_the_van():
     assert [t for t, _, p in agents("A white van is parked on the left ahead. The van's driver opens his door.")
             if p != "ego"] == ["car"]
+
+
+def test_the_egos_numbered_lane_said_after_the_road_places_the_others():
+    assert ("truck", "change_lane_to_left", "front_right") in agents(
+        "The ego is on a motorway in lane one. A lorry in lane two moves left into lane one ahead of the ego.")

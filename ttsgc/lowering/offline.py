@@ -3445,8 +3445,10 @@ def _numbered_lane_sides(r: _Reader) -> None:
         if u.category == "positions" and u.meaning.startswith("lane_") and any(
                 x.category == "agents" and x.meaning == "ego" and all(
                     y.word in ("is", "was", "am", "are", "were", "be", "been", "still", "driving", "travelling",
-                               "traveling", "sitting", "the") for y in r.units[j + 1:k])
-                for j, x in enumerate(r.units[max(0, k - 4):k], start=max(0, k - 4))):
+                               "traveling", "sitting", "the", "on", "a", "dual", "carriageway", "motorway", "road",
+                               "highway", "freeway") or y.category == "road"
+                    for y in r.units[j + 1:k])  # "the ego is on a dual carriageway in lane one"
+                for j, x in enumerate(r.units[max(0, k - 8):k], start=max(0, k - 8))):
             own = int(u.meaning[5:])
             break
     if own is None:
