@@ -2194,3 +2194,14 @@ def test_the_vans_driver_is_the_van():
 def test_the_egos_numbered_lane_said_after_the_road_places_the_others():
     assert ("truck", "change_lane_to_left", "front_right") in agents(
         "The ego is on a motorway in lane one. A lorry in lane two moves left into lane one ahead of the ego.")
+
+
+def test_a_road_feature_wondered_about_then_taken_back_is_denied():
+    scene = lower("maybe a man crossing from the left in front of us? at a zebra crossing, probably not.").scenario
+    assert "continental_crosswalk" in scene.road.without_objects
+    assert ("pedestrian", "cross_the_road", "front_left") in agents(
+        "maybe a man crossing from the left in front of us? at a crosswalk, probably not.")
+
+
+def test_no_interaction_in_a_log_is_no_intersection():
+    assert road("Run 4. Cyclist on the right kerb throughout, no interaction.").junction is None

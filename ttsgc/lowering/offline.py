@@ -624,6 +624,12 @@ def _road(r: _Reader) -> RoadSpec:
                 units[k + 1].category = "word"  # "a cyclist without lights": its own lamps
                 negated = False
             continue
+        if u.category in ("road", "positions") and _then_doubted(units, k):
+            said = u.meaning if u.category == "road" else "crosswalk" if u.meaning == "crosswalk" else None
+            if said in V.SIGNALS or said in V.OBJECTS:
+                put(said, True)  # "at a crosswalk? probably not": said, then taken back
+            r.mark(u)
+            continue
         if u.category == "actions" and u.base in ("yield", "give way") and (
                 k == 0 or units[k - 1].category in ("comma", "word")
                 and units[k - 1].word in (",", "a", "at", "with", "the")
@@ -725,6 +731,13 @@ def _road(r: _Reader) -> RoadSpec:
     if junction is not None:
         spec["junction"] = junction
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+def _then_doubted(units: list[Unit], k: int) -> bool:
+    """'not sure if at a crosswalk, probably not': a road feature wondered about and then taken back."""
+    sentence = units[k].tokens[0].sentence
+    after = [u.word for u in units[k + 1:k + 5] if u.tokens[0].sentence in (sentence, sentence + 1)]
+    return any(a in ("probably", "prob", "maybe", "likely") and b == "not" for a, b in zip(after, after[1:]))
 
 
 def _denied(units: list[Unit], k: int) -> bool:
