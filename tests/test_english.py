@@ -2065,3 +2065,159 @@ def test_moving_from_one_numbered_lane_into_another_changes_lane_that_way():
 ])
 def test_kinds_spoken_of_in_general_and_someone_in_what_did_not_happen_are_no_agents(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_behind_where_it_was_is_at_the_place_of_the_one_that_left():
+    assert ("car", "stop", "front") in agents(
+        "The van ahead of us moves into the left lane and there is a broken down car behind where it was.")
+
+
+def test_pulling_up_at_a_stop_then_moving_off_later_stops_first_and_the_turn_keeps_its_side():
+    stages = lower("The player pulls up to a give way line and wants to go left. A bus passes from the right. "
+                   "Once it has gone, the player makes the turn.").scenario.stages
+    assert [[a.action for a in s.agents if a.is_ego] for s in stages] == [["stop"], ["turn_left"]]
+
+
+def test_a_participle_after_at_which_point_belongs_to_that_clauses_subject():
+    read = agents("I arrived at the four-way stop. I then went straight, at which point a van also entered the "
+                  "junction from the opposite direction, turning left across my path.")
+    assert ("car", "turn_left", "road_of_straight") in read
+
+
+def test_one_after_another_is_an_order_not_a_stage():
+    scene = lower("Three vans in the right lane ahead cut in front of the player, one after another, all going far "
+                  "too fast.").scenario
+    assert len(scene.stages) == 1
+    assert [a.action for a in scene.agents() if not a.is_ego] == ["change_lane_to_left"] * 3
+
+
+def test_waiting_to_turn_without_a_side_is_a_stop_and_a_give_way_line_is_a_yield():
+    scene = lower("I was stationary at the give way line, waiting to turn out, when a bus passed from my right.")
+    assert [a.action for a in scene.scenario.agents() if a.is_ego] == ["stop"]
+    assert "yield" in scene.scenario.road.required_signals
+    assert ("car", "turn_left", "ego") in agents("I was stopped at the lights, waiting to turn left.")
+
+
+def test_an_overtaker_said_to_come_up_behind_is_behind():
+    assert ("motorcycle", "go_straight", "back") in agents(
+        "On a country road with no junctions a motorbike came up behind me and overtook on a bend.")
+
+
+def test_a_turn_made_with_a_wait_in_advice_is_still_the_turn():
+    assert ("car", "turn_left", "ego") in agents(
+        "Your left at the lights. You turned across an oncoming van. When there is oncoming traffic, you wait in "
+        "the junction till it is clear.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was driving my car, red Ford Focus, north along the high street.",
+    "i was driving my car, a red ford focus, north along the high street",
+])
+def test_the_egos_own_make_without_an_article_is_no_other_agent(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego")]
+
+
+def test_a_topic_naming_its_agent_without_an_article_introduces_it_when_the_rest_says_him():
+    assert [t for t, _, p in agents("Passing cyclist on the bypass: you gave him room.") if p != "ego"] == ["cyclist"]
+
+
+def test_sitting_in_a_lane_without_an_article_keeps_pace_too():
+    assert ("truck", "go_straight", "back_left") in agents("There was a lorry sitting in left lane just behind us.")
+
+
+def test_a_stop_junction_and_a_sign_that_says_stop_are_stop_signs_and_even_when_is_no_stage():
+    scene = lower("Stop junction by the church. The sign says stop, even when it's clear. You turned right with a van "
+                  "coming from the left.").scenario
+    assert "stop" in scene.road.required_signals and len(scene.stages) == 1
+    assert [a.action for a in scene.agents() if a.is_ego] == ["turn_right"]
+
+
+def test_standing_advice_is_no_event():
+    assert ("car", "go_straight", "ego") in agents(
+        "You came up to the roundabout too fast with a cyclist on it. Always look right and give way.")
+
+
+def test_flashing_his_lights_is_no_traffic_light():
+    assert "traffic_light" not in road("A van came up behind me flashing his lights.").required_signals
+    assert "traffic_light" in road("A van ran a red light in front of me.").required_signals
+
+
+def test_a_hedge_neither_acts_nor_adds_an_agent():
+    assert agents("then a lorry on the left, I think it was a lorry, pulls out in front of me") == sorted([
+        ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")])
+    assert [t for t, _, p in agents("a car, well actually it was a van, stops in front of me") if p != "ego"] == ["car"]
+
+
+def test_an_animal_running_out_is_nobody_and_the_guy_behind_drives():
+    assert agents("I was driving along when a fox ran out, and the guy behind me went straight into the back of me.") \
+        == sorted([("car", "go_straight", "ego"), ("car", "go_straight", "back")])
+
+
+def test_stationary_in_a_marked_police_car_is_the_ego_and_next_time_is_advice():
+    assert agents("I was stationary in a marked police car at the lights.") == [("police", "stop", "ego")]
+    assert ("car", "change_lane_to_left", "ego") in agents("You pulled out in front of the van. Next time wait.")
+
+
+def test_he_after_a_vehicle_in_first_person_talk_is_its_driver():
+    assert ("bus", "change_lane_to_right", "left") in agents(
+        "A coach in the left lane started indicating right. I slowed down so he could merge.")
+
+
+def test_story_words_and_passengers_in_the_back_are_no_scene():
+    scene = lower("Long story short, I was heading home, kids arguing in the back, when a bus pulled out ahead.")
+    assert scene.scenario.weather is None
+    assert [a.type for a in scene.scenario.agents() if not a.is_ego] == ["bus"]
+
+
+def test_the_next_bit_names_a_part_of_the_lesson_not_a_stage():
+    assert len(lower("The next bit was the roundabout. A lorry came from the right and you waited.")
+               .scenario.stages) == 1
+
+
+def test_vehicles_on_both_sides_stand_level_and_one_in_our_lane_is_on_neither():
+    read = agents("The player is in the middle of three lanes. Cars on both sides, and a van ahead in the player's "
+                  "lane stops.")
+    assert sorted(p for _, _, p in read if p != "ego") == ["front", "left", "right"]
+
+
+def test_a_named_parking_manoeuvre_is_no_stop():
+    assert [a for a in agents("Your bay park was tidy. You drove past a parked van.") if a[2] == "ego"] == [
+        ("car", "go_straight", "ego")]
+
+
+def test_a_request_for_one_where_is_no_question_and_a_late_make_it_retypes():
+    read = agents("could we do one where the ego turns left at a roundabout and a cyclist is on its left? or actually "
+                  "make it a motorbike")
+    assert ("car", "turn_left", "ego") in read and ("motorcycle", "go_straight", "left") in read
+    assert not any(t == "cyclist" for t, _, _ in read)
+
+
+def test_a_wobbling_rider_is_the_one_who_moves_and_my_braking_is_mine():
+    read = agents("Two cyclists rode ahead of me. One of them wobbled towards the kerb and I had to brake.")
+    assert [a for a in read if a[0] == "cyclist"] == [("cyclist", "go_straight", "front")] * 2
+
+
+def test_a_rough_time_a_bit_later_is_no_stage():
+    assert len(lower("It was around 6pm, maybe a bit later. A taxi in front of me stopped suddenly.")
+               .scenario.stages) == 1
+
+
+def test_the_vans_driver_is_the_van():
+    assert [t for t, _, p in agents("A white van is parked on the left ahead. The van's driver opens his door.")
+            if p != "ego"] == ["car"]
+
+
+def test_the_egos_numbered_lane_said_after_the_road_places_the_others():
+    assert ("truck", "change_lane_to_left", "front_right") in agents(
+        "The ego is on a motorway in lane one. A lorry in lane two moves left into lane one ahead of the ego.")
+
+
+def test_a_road_feature_wondered_about_then_taken_back_is_denied():
+    scene = lower("maybe a man crossing from the left in front of us? at a zebra crossing, probably not.").scenario
+    assert "continental_crosswalk" in scene.road.without_objects
+    assert ("pedestrian", "cross_the_road", "front_left") in agents(
+        "maybe a man crossing from the left in front of us? at a crosswalk, probably not.")
+
+
+def test_no_interaction_in_a_log_is_no_intersection():
+    assert road("Run 4. Cyclist on the right kerb throughout, no interaction.").junction is None

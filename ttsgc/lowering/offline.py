@@ -324,6 +324,35 @@ def _retract_corrections(r: "_Reader") -> list[Unit]:
             r.mark(x)
         del out[first:]
         k = j
+    return _late_corrections(r, out)
+
+
+def _late_corrections(r: "_Reader", units: list[Unit]) -> list[Unit]:
+    """'... a cyclist on its left? or actually make it a motorbike': a later 'make it a X' retypes the last agent
+    named before it, which keeps its place and deed."""
+    out: list[Unit] = []
+    k = 0
+    while k < len(units):
+        u = units[k]
+        if u.word in ("make", "change") and k + 1 < len(units) and units[k + 1].word in ("it", "that"):
+            n = k + 2
+            while n < len(units) and n - k < 6 and units[n].category in ("word", "number", "numbers") and \
+                    (units[n].word in NOUN_PHRASE_WORDS | {"to", "into"} or units[n].category != "word"):
+                n += 1
+            last = next((j for j in range(len(out) - 1, -1, -1) if out[j].category == "agents"
+                         and out[j].meaning not in ("ego", "none", "generic")), None)
+            if n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none") and \
+                    last is not None:
+                old = out[last]
+                out[last] = Unit(old.start, old.end, "agents", units[n].meaning, old.tokens)
+                r.notes.append(f"read '{old.base}' as corrected by "
+                               f"'{' '.join(t.word for x in units[k:n + 1] for t in x.tokens)}'")
+                for x in units[k:n + 1]:
+                    r.mark(x)
+                k = n + 1
+                continue
+        out.append(u)
+        k += 1
     return out
 
 
@@ -444,11 +473,16 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
     says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
     words = [t.word for t in tokens[i:i + 8] if t.sentence == tokens[i].sentence]
-    if words[:2] != ["in", "the"] or "lane" not in words[2:6]:
+    if words[1:2] == ["the"]:
+        del words[1]  # "sitting in (the) right-hand lane"
+    if words[:1] != ["in"] or "lane" not in words[1:5]:
         return False
-    after = words[words.index("lane", 2) + 1:]
+    after = words[words.index("lane", 1) + 1:]
     after = after[1:] if after[:1] in (["just"], ["right"], ["slightly"], ["directly"]) else after
     return bool(after) and after[0] in PACE_PLACES
+
+
+HEDGE_VERBS = {"think", "guess", "reckon", "believe", "suppose", "mean"}
 
 
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
@@ -474,6 +508,18 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             _word_number(tokens[m.end]) in (1, 2, 3, 4, 5):  # "pull out into lane two": a numbered lane, not ours
         return [Unit(m.start, m.end + 1, "positions", f"into_lane_{int(_word_number(tokens[m.end]))}",
                      tuple(tokens[m.start:m.end + 1]))]
+    if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stop"] and m.start > 0 and \
+            tokens[m.start - 1].word in ("says", "said", "reads", "read", "saying", "reading"):
+        return [Unit(m.start, m.end, "road", "stop", span)]  # "the sign says stop": a stop sign, nobody stopping
+    if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
+            m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
+        return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
+    if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
+            (m.end >= len(tokens) or tokens[m.end].word != "of"):
+        return [Unit(m.start, m.end, "positions", "on_board", span)]  # "kids arguing in the back": my passengers
+    if m.category == "actions" and m.start > 1 and tokens[m.start - 1].word in ("parallel", "bay", "reverse") and \
+            tokens[m.start - 2].word in OWNERS | POSSESSIVES | {"the", "a"}:
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "your parallel park was fine": a manoeuvre named
     if m.category == "positions" and _body_part(tokens, m):
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
@@ -578,6 +624,12 @@ def _road(r: _Reader) -> RoadSpec:
                 units[k + 1].category = "word"  # "a cyclist without lights": its own lamps
                 negated = False
             continue
+        if u.category in ("road", "positions") and _then_doubted(units, k):
+            said = u.meaning if u.category == "road" else "crosswalk" if u.meaning == "crosswalk" else None
+            if said in V.SIGNALS or said in V.OBJECTS:
+                put(said, True)  # "at a crosswalk? probably not": said, then taken back
+            r.mark(u)
+            continue
         if u.category == "actions" and u.base in ("yield", "give way") and (
                 k == 0 or units[k - 1].category in ("comma", "word")
                 and units[k - 1].word in (",", "a", "at", "with", "the")
@@ -590,8 +642,9 @@ def _road(r: _Reader) -> RoadSpec:
             put("traffic_light", False)  # "when the light goes green": a signal there
         if u.category == "actions" and {"stop", "sign"} <= {t.word for t in u.tokens}:
             put("stop", False)  # "runs the stop sign"
-        elif u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens}:
-            put("traffic_light", False)  # "runs a red light"
+        elif u.category == "actions" and {"red", "light", "lights"} & {t.word for t in u.tokens} and not \
+                {t.word for t in u.tokens} & (POSSESSIVES | {"flash", "flashing", "flashed", "flashes", "headlights"}):
+            put("traffic_light", False)  # "runs a red light"; not "flashing his lights", its own lamps
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signals", "signal",
                                                                                           "signaled") \
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
@@ -678,6 +731,13 @@ def _road(r: _Reader) -> RoadSpec:
     if junction is not None:
         spec["junction"] = junction
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+def _then_doubted(units: list[Unit], k: int) -> bool:
+    """'not sure if at a crosswalk, probably not': a road feature wondered about and then taken back."""
+    sentence = units[k].tokens[0].sentence
+    after = [u.word for u in units[k + 1:k + 5] if u.tokens[0].sentence in (sentence, sentence + 1)]
+    return any(a in ("probably", "prob", "maybe", "likely") and b == "not" for a, b in zip(after, after[1:]))
 
 
 def _denied(units: list[Unit], k: int) -> bool:
@@ -1059,9 +1119,19 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if new_sentence:
             close()
         prev_word = units[k - 1].word if k else ""
+        if u.category == "sequence" and (prev_word == "even" or u.word == "next" and len(u.tokens) == 1 and
+                                         prev_word in ("the", "a", "this") or
+                                         u.word == "later" and prev_word in ("bit", "little", "or", "maybe")):
+            r.mark(u)
+            continue  # "stop, even when it's clear": a concession; "the next bit was ...": which bit; "around 6pm,
+            # maybe a bit later": when, roughly; no stage
         if u.category == "sequence" and prev_word in RELATIVES:
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
+        if u.category == "sequence" and u.word == "after" and prev_word in ("one", "each") and nxt is not None and \
+                nxt.word in ("another", "the", "other"):
+            r.mark(u)
+            continue  # "three cars swerve in, one after another": their order, not a later stage
         if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and (
                 nxt.tokens[0].word.endswith("ing") or nxt.category == "actions"):
             if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
@@ -1117,7 +1187,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
             ego_make = bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and \
-                len(current[-1].tokens) > 1 and nxt is not None and nxt.word in ("a", "an") and closed
+                len(current[-1].tokens) > 1 and nxt is not None and (
+                    nxt.word in ("a", "an") or nxt.word in COLOURS | {"white", "black", "dark"}) and closed
             # "I was driving my vehicle, a grey Astra, west": what the ego is, not another car
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             new_noun = new_noun or _has_agent(current) and nxt is not None and nxt.word in (
@@ -1267,6 +1338,8 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
     words = [t.word for t in tokens if t.sentence == sentence]
     if len(words) < 2 or set(words) & ASKING_FOR_A_SCENE - {"have"} or "you" in words[:3]:
         return False
+    if any(w == "one" and nxt in ("where", "with", "in", "that", "when") for w, nxt in zip(words, words[1:])):
+        return False  # "could we do one where the ego turns left?": a scene asked for
     return words[0] in ("who", "whose", "whom") or (words[0] in ASKING_MODALS and words[1] in ("i", "we")
                                                     and not (words[0] in ("can", "could", "may")
                                                              and {"get", "have"} & set(words[2:3])))
@@ -1277,6 +1350,16 @@ def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
     words = [x.word for x in tokens if x.sentence == sentence]
     return any(w in ("once", "when", "whenever", "if") and words[k + 1] in ANYONE for k, w in enumerate(words[:-1])) \
         and "you" in words and not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
+
+
+def _standing_advice(tokens: list[Token], sentence: int) -> bool:
+    """'Always look right and give way.', 'Never overtake there.', 'Next time wait.': advice for every drive, no
+    event of this one."""
+    words = [x.word for x in tokens if x.sentence == sentence]
+    if words[:2] == ["next", "time"]:
+        words = words[1:]  # "Next time wait."
+    return len(words) > 1 and words[0] in ("always", "never", "time") and words[1] not in ("the", "a", "an", "there") and \
+        not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
 
 
 COUNTERFACTUAL_MODALS = {"would", "could", "should", "might", "must"}
@@ -1351,7 +1434,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             before.word in ("once", "when", "whenever", "if") and any(
                 x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
         return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
-    if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)):
+    if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)
+                                                  or _standing_advice(tokens, t.sentence)):
         return True  # "once someone's on a zebra, you stop and you wait"; "you'd have had to stop"
     if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
             (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
@@ -1467,6 +1551,14 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
     return count, first, words, modifiers
 
 
+def _it_was_a(r: _Reader, units: list[Unit], first: int, recent: list[Entity]) -> Entity | None:
+    """'a truck on the left, I think it was a truck,': the noun after 'it was' corrects or repeats the one before."""
+    if first < 2 or units[first].word not in ("a", "an") or units[first - 1].word not in ("was", "is") or \
+            units[first - 2].word != "it":
+        return None
+    return next((e for e in reversed(recent + r.clause_mentions) if not e.is_ego), None)
+
+
 CASE_NOUNS = {"scenario", "scene", "test", "case", "situation"}
 
 
@@ -1513,6 +1605,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
+    said_again = _it_was_a(r, units, first, recent)
+    if said_again is not None:
+        said_again.type, said_again.head = kind, u.base
+        return NounPhrase(said_again, head, first)  # "a car, well actually it was a van,": the van said again
     if _names_the_case(r, units, head, kind):
         return NounPhrase(None, head, first)  # "stopped veh scenario. Soft target (sedan) parked...": the case's name
     if u.base in RIDDEN and units[first].word in POSSESSIVES:
@@ -1691,6 +1787,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
     pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
                                                         or (e.generic and kind in V.EGO_TYPES))]
+    if len(head.split()) > 1 and head.split()[-1] in ("driver", "rider", "drivers", "riders"):
+        head = " ".join(head.split()[:-1])  # "the van's driver", "the bus driver": the van, the bus
     if head and head not in GENERAL_NOUNS and not both and not plural:
         same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"
@@ -1749,6 +1847,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if u.meaning == "side_left" and {t.word for t in u.tokens} & {"far", "farside"} and \
                 "lane" not in {t.word for t in u.tokens}:
             e.features.add("far_side")  # the far lane of a road, or across a junction: decided in _position
+        where = [t.word for t in r.tokens[u.end:u.end + 2]]
+        if u.meaning in ("ahead", "behind") and where[:1] == ["where"] and where[1:] and where[1] in PRONOUNS:
+            e.relative_to = e.relative_to or next(
+                (x for x in reversed(r.entities) if not x.is_ego and x is not e and x.key < e.key), None)
+            return  # "a stopped car behind where it was": at the place of the one that moved away
         if u.meaning in ("ahead", "behind") and INVERSE[u.meaning] in e.features and e.actions:
             return  # "a Toyota behind me ... cut in directly in front of me": the first place said is its start
         if u.meaning in ("shoulder", "sidewalk"):
@@ -1840,6 +1943,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS:
             e.features.add("stops_abruptly")  # "stops dead", "slams on the brakes": a sudden stop, not a halt
             e.behavior = e.behavior or "aggressive"
+        if action == "turn" and e.is_ego and not direction and clause_units is not None and k is not None and \
+                k > 0 and clause_units[k - 1].word == "to":
+            e.features.add("turn_intended")  # "waiting to turn out": a turn meant, not made
+        if action == "reach" and e.is_ego and clause_units is not None and k is not None and \
+                {t.base for t in u.tokens} & {"arrive", "pull"} and _a_stop_control(clause_units[k + 1:k + 5]):
+            e.actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "I arrived at the
+            # all-way stop", "pulls up to a stop sign": it stops there (a turn said with it still wins)
         earlier = clause_units is not None and k is not None and any(
             x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
         # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
@@ -1856,6 +1966,12 @@ def _stands_across(units: list[Unit]) -> bool:
     rest = units[1:3]
     return any(u.category == "positions" and u.meaning in ("ego_lane", "into_ego_lane") or
                u.word in ("lane", "road", "street", "carriageway", "way", "junction") for u in rest)
+
+
+def _a_stop_control(units: list[Unit]) -> bool:
+    """'the all-way stop', 'a stop sign', 'the give way line', 'a red light': a place where drivers stop."""
+    return any(u.category == "road" and u.meaning in ("stop", "stop+junction", "yield", "stop_line") or
+               u.word == "red" for u in units)
 
 
 def _in_time(units: list[Unit]) -> bool:
@@ -2076,6 +2192,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 and not (r.after_verbless and verbs and verbs[0] == 0 and _bare_verb(units[0])):
             # "ambulance behind with siren, pull over to the right": an order after a verbless description
             subject = list(previous_subject)
+        elif verbs and any(np.entity is None and units[np.index].meaning == "none" and
+                           first_verb - 3 <= np.index < first_verb for np in phrases):
+            verbs = []  # "a deer ran out": its subject names no agent; nobody of the scene ran
         elif verbs:
             inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
             subject = [e for e in [_implied(r, units, stage, verbs, inside)] if e is not None]
@@ -2198,6 +2317,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if reference is None and u.category == "positions" and u.tokens[-1].word in ("it", "them") and \
                 u.meaning in ("ahead", "behind", "level"):
             reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
+
         for e in targets:
             if e.is_ego and u.category == "positions":
                 if u.meaning.startswith("compass_"):
@@ -2653,9 +2773,10 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
 def _named_make(between: list[Unit], kind: str) -> bool:
     """', a grey Vauxhall' before 'Astra': a comma, an article, colours and the maker's name, nothing more."""
     words = [u for u in between if u.category != "comma"]
-    return bool(between) and between[0].category == "comma" and bool(words) and words[0].word in ("a", "an") and \
-        all(u.word in COLOURS | {"dark", "light", "white", "black", "grey", "gray"} or
-            u.category == "agents" and u.meaning == kind for u in words[1:])
+    words = words[1:] if words and words[0].word in ("a", "an") else words  # "my car, (a) grey Vauxhall Astra,"
+    return bool(between) and between[0].category == "comma" and all(
+        u.word in COLOURS | {"dark", "light", "white", "black", "grey", "gray"} or
+        u.category == "agents" and u.meaning == kind for u in words)
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
@@ -2710,7 +2831,9 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     not the subject, usually the ego. 'she', 'him' name people."""
     if units[i].word in ("she", "her", "he", "him"):
         people = [e for e in recent if e.type in V.VULNERABLE_TYPES]
-        return people[-1] if people else None
+        drivers = [e for e in recent if not e.is_ego] if units[i].word in ("he", "she") else []
+        # "a coach started indicating ... so he could merge": the driver of the last vehicle
+        return people[-1] if people else drivers[-1] if drivers else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
                            (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind")))
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
@@ -3054,7 +3177,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
             and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
-    if side is None and "overtaking" in f:
+    if side is None and "overtaking" in f and not ("behind" in f and junction is False):
         side = _overtaking_side("side_of_an_overtaker")
         side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
@@ -3210,8 +3333,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                     e.features.add("target_lane")
         if subject:
             previous = subject
-        if clause.antecedent is not None and clause.antecedent not in subject and k + 1 < len(clauses) and \
-                clauses[k + 1].link == ",":  # "a man, whom I now know to be its driver, walked out": the man did
+        if clause.antecedent is not None and not clause.antecedent.is_ego and clause.antecedent not in subject and \
+                k + 1 < len(clauses) and clauses[k + 1].link == "," and clauses[k + 1].units and \
+                clauses[k + 1].units[0].category == "actions" and \
+                not clauses[k + 1].units[0].tokens[0].word.endswith("ing"):
+            # "a man, whom I now know to be its driver, walked out": the man did
             previous = [clause.antecedent]
         verbless = not _has_verb(clause.units)
         r.after_verbless = verbless and _has_agent(clause.units)
@@ -3286,7 +3412,8 @@ AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cyclin
                 "my vehicle", "my van", "my bike", "my lane", "in my"}
 FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "in", "driving", "drove", "on", "patrol", "uniformed", "mobile", "sitting",
-                   "riding", "at", "the", "wheel", "of", "duty", "routine", "alone"}
+                   "riding", "at", "the", "wheel", "of", "duty", "routine", "alone", "stationary", "parked", "a", "an",
+                   "marked", "unmarked"}  # "I was stationary in a marked police car": the witness's own car
 
 
 def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
@@ -3372,8 +3499,10 @@ def _numbered_lane_sides(r: _Reader) -> None:
         if u.category == "positions" and u.meaning.startswith("lane_") and any(
                 x.category == "agents" and x.meaning == "ego" and all(
                     y.word in ("is", "was", "am", "are", "were", "be", "been", "still", "driving", "travelling",
-                               "traveling", "sitting", "the") for y in r.units[j + 1:k])
-                for j, x in enumerate(r.units[max(0, k - 4):k], start=max(0, k - 4))):
+                               "traveling", "sitting", "the", "on", "a", "dual", "carriageway", "motorway", "road",
+                               "highway", "freeway") or y.category == "road"
+                    for y in r.units[j + 1:k])  # "the ego is on a dual carriageway in lane one"
+                for j, x in enumerate(r.units[max(0, k - 8):k], start=max(0, k - 8))):
             own = int(u.meaning[5:])
             break
     if own is None:
@@ -3473,11 +3602,17 @@ def _title(prompt: str, tokens: list[Token]) -> range:
 def _title_names_the_agent(title: str, rest: str) -> bool:
     """'Overtaking the cyclist on the 30 road: you gave him room': a topic that names its agent with 'the' and
     that the rest only refers back to is where the agent is introduced, not a case's name."""
-    named = [f for f in matches(tokenize(title)) if f.category == "agents" and f.meaning not in ("ego", "none")]
-    words = [t.word for t in tokenize(title)]
-    definite = [f for f in named if f.start > 0 and words[f.start - 1] in DEFINITE]
+    title_tokens = tokenize(title)
+    named = [f for f in matches(title_tokens) if f.category == "agents" and f.meaning not in ("ego", "none")]
+    if not named:
+        return False
+    words = [t.word for t in title_tokens]
+    referred = re.search(r"\b(him|her|he|she|them)\b", rest, re.I) is not None  # "you gave him room"
+    definite = [f for f in named if f.start > 0 and words[f.start - 1] in DEFINITE or referred]
+    if not definite:
+        return False
     again = {f.meaning for f in matches(tokenize(rest)) if f.category == "agents"}
-    return bool(definite) and not any(f.meaning in again for f in definite)
+    return not any(f.meaning in again for f in definite)
 
 
 def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list[Agent]], set[str]]:
@@ -3504,6 +3639,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     positions: dict[int, str] = {}
     oncoming: set[str] = set()
     resolved: dict[int, tuple[str, str]] = {}
+    for e in r.entities:
+        if e.type == "pedestrian" and "on_board" in e.features and e.count > 0:
+            e.count = 0  # "the kids arguing in the back": passengers of the ego, nobody on the road
+            r.notes.append(f"left out: '{e.head}' in the back of the ego's car (passengers, no agent)")
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
     for e in others:  # "the HGV in lane one had to pull out into lane two": lanes count from the kerb
@@ -3536,7 +3675,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in VEHICLE_ONLY_ACTIONS:
             e.type = "car"  # "someone's pulling out of a parking spot": someone driving
             r.notes.append(f"inferred: '{e.head}' who {action.replace('_', ' ')}s drives a car")
-        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop") and \
+        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop", "go_straight") and \
                 e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
                 and e.road_type != "sidewalk":
             e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
@@ -3596,10 +3735,13 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         behavior = e.behavior or V.DEFAULT_BEHAVIOR
         first_name = None
         for n in range(e.count):
-            if "both_sides" in e.features:  # "cars cutting in from different directions": one on each side
+            if "both_sides" in e.features and "ego_lane" not in e.features:  # "cars cutting in from different
+                # directions": one on each side; "a bus ahead in our lane" is in neither
                 side = SIDES[n % 2]
-                placed = {f"from_{side}"} if junction else {f"side_{side}", "from_lane"} | (
-                    {"ahead"} if not e.features & {"behind", "level", "overtaking"} else set())
+                moving_in = action in ("cut_in", "lane_change", "block")  # "cars on both sides" alone: level
+                placed = {f"from_{side}"} if junction else {f"side_{side}"} | ({"from_lane"} if moving_in else set()) | (
+                    {"ahead"} if moving_in and not e.features & {"behind", "level", "overtaking"} or
+                    "ahead" in e.features else set())
                 member = Entity(e.key, e.type, False, e.stage, features=(e.features - {"both_sides"}) | placed,
                                 road_type=e.road_type)
                 position, _ = _position(member, action, junction, has_crosswalk, target_side)
@@ -3630,13 +3772,16 @@ def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
     action, direction = _action(e, stage)
     later = [a for a in e.actions if a[0] > stage and a[1] == 2 and a[2] > 0]
     waits = [a for a in e.actions if a[0] == stage and a[1] == 2 and a[4] == "stop"]
-    if later and waits and action in ("turn", "turn_left", "turn_right", "u_turn", "lane_left", "lane_right"):
+    if later and waits and action in ("turn", "turn_left", "turn_right", "u_turn", "lane_left", "lane_right",
+                                      "sideways_left", "sideways_right"):  # "pulls up ... and needs to go right"
         return "stop"
     if stage > 0 and action in ("move", "go_straight", None):
         before = [a for a in e.actions if a[0] < stage and a[1] == 2 and a[4] in ("turn_left", "turn_right")]
         if before and any(a[0] == stage for a in e.actions) and any(
                 a[0] == stage - 1 and a[4] == "stop" and a[1] == 2 for a in e.actions):
             return before[-1][4]  # "... then went": the turn it waited to make
+    if action in ("turn", "u_turn") and direction is None and waits and "turn_intended" in e.features:
+        return "stop"  # "stationary at the line, waiting to turn out": it stands; which way it would turn is unsaid
     action = _sideways(action, junction)
     if action == "cut_in" and direction is None and junction:
         return "move"  # "pull out at the stop sign to go straight": into the junction, no lane change
@@ -3665,7 +3810,9 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
         return action
     signalled = next((s for s in SIDES if f"signals_{s}" in e.features), None)
     if action in ("turn", "u_turn"):
-        return f"turn_{direction or signalled or UNSPECIFIED['turn_direction']}"
+        meant = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] < stage and a[4] in (
+            "turn_left", "turn_right", "sideways_left", "sideways_right")), None)  # "... then makes the turn"
+        return f"turn_{direction or signalled or meant or UNSPECIFIED['turn_direction']}"
     if action in ("lane_left", "lane_right"):
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
