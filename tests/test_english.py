@@ -287,6 +287,21 @@ def test_the_ego_going_straight_compiles(tmp_path):
     assert (tmp_path / "p.xosc").is_file()
 
 
+# -- English written by German engineers --------------------------------------------------------------
+
+@pytest.mark.parametrize("noun, agent_type", [("PKW", "car"), ("LKW", "truck"), ("Motorrad", "motorcycle"),
+                                              ("Linienbus", "bus"), ("Radfahrer", "cyclist"),
+                                              ("Fußgänger", "pedestrian"), ("Streifenwagen", "police")])
+def test_german_vehicle_words_are_agents(noun, agent_type):
+    assert (agent_type, "stop", "front") in agents(f"A {noun} waits in front of the ego vehicle.")
+
+
+def test_letters_with_marks_are_read_as_plain_letters():
+    assert [t.word for t in tokenize("Der Fußgänger, a coupé")] == ["der", "fussganger", ",", "a", "coupe"]
+    assert agents("On the Bundesstraße a coupé is parked ahead.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

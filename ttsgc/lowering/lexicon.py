@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import difflib
 import re
+import unicodedata
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -73,7 +74,24 @@ def _entries(name: str):
 
 
 def _normalize(text: str) -> str:
-    return re.sub(r"[-_/]", " ", text.lower()).strip()
+    return re.sub(r"[-_/]", " ", fold_letters(text.lower())).strip()
+
+
+LIGATURES = {"\u00df": "ss", "\u00e6": "ae", "\u0153": "oe", "\u00f8": "o", "\u0142": "l"}
+
+
+def fold_letters(text: str) -> str:
+    """Letters with marks read as their plain letters ("Fußgänger" is "fussganger", "coupé" is "coupe"):
+    words borrowed from other languages stay whole, not pieces split at each mark."""
+    if text.isascii():
+        return text
+    return "".join(_plain_letter(c) if c.isalpha() and not c.isascii() else c for c in text)
+
+
+def _plain_letter(c: str) -> str:
+    if c in LIGATURES:
+        return LIGATURES[c]
+    return "".join(x for x in unicodedata.normalize("NFKD", c) if not unicodedata.combining(x))
 
 
 @dataclass(frozen=True, eq=False)
@@ -265,7 +283,7 @@ def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = _lines(text).lower().replace("\u2019", "'").replace("`", "'")
+    text = fold_letters(_lines(text).lower().replace("\u2019", "'").replace("`", "'"))
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
     text = re.sub(r"\blet's\b", "let us", text)
     text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
