@@ -302,6 +302,26 @@ def test_letters_with_marks_are_read_as_plain_letters():
         ("car", "go_straight", "ego"), ("car", "stop", "front")]
 
 
+# -- news reports -----------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Police said a pickup stopped in front of a driverless shuttle on Main Street.",
+     [("bus", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("According to parents who were there, a robotaxi slowed behind a bus.",
+     [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+])
+def test_the_automated_vehicle_of_a_news_report_is_the_ego_and_its_sources_are_no_agents(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "A bus stopped ahead of a driverless taxi on Main Street. The taxi waited.",
+    "A driverless taxi passed a parked van. The taxi behaved as designed.",
+])
+def test_the_egos_own_noun_said_again_is_the_ego(prompt):
+    assert [a for a in agents(prompt) if a[2] != "ego"] != [] and len(agents(prompt)) == 2
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

@@ -279,6 +279,20 @@ def _keyed_agents(text: str) -> str:
     return " ".join(out)
 
 
+NEWS_SOURCES = (r"(?:the |a |an |local |state |city |county |highway )*(?:police|officials?|witness(?:es)?|investigators?"
+                r"|authorities|deputies|officers?|troopers?|sheriff|spokes(?:person|man|woman)|company|operator|firm"
+                r"|bystanders?|residents?|parents?|onlookers?|passers ?by|reporters?|regulators?|prosecutors?"
+                r"|(?:the )?(?:company|police|city|county|transit|fire) (?:said|spokes(?:person|man|woman)|statement))")
+REPORTING = r"(?:said|say|says|told reporters|reported|report|reports|believe|believes|confirmed|confirm|stated|added)"
+ATTRIBUTION = re.compile(rf"(?:\baccording to [^.;,!?]*|(?:^|(?<=[,.;:!?] )|(?<=\band )|(?<=\bbut )|(?<=\bas ))(?<!\w){NEWS_SOURCES} {REPORTING}(?: that)?\b)")
+
+
+def _without_attribution(text: str) -> str:
+    """'Police say a patrol car swerved', ', according to a witness who filmed it,': a news report names who
+    told it; the teller is no agent of the scene."""
+    return ATTRIBUTION.sub(" ", text)
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -286,6 +300,7 @@ def tokenize(text: str) -> list[Token]:
     text = fold_letters(_lines(text).lower().replace("\u2019", "'").replace("`", "'"))
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
     text = re.sub(r"\blet's\b", "let us", text)
+    text = _without_attribution(text)
     text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
     text = re.sub(r"'re\b", " are", text)
     text = re.sub(r"'ll\b", " will", text)

@@ -1404,7 +1404,8 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
     """(type, is_ego) of an agent unit; the ego's type from its noun ('the ego truck')."""
     if u.meaning == "ego":
         words = [t.base for t in u.tokens]
-        for kind, nouns in (("truck", ("truck", "lorry", "hgv")), ("bus", ("bus", "coach")),
+        for kind, nouns in (("truck", ("truck", "lorry", "hgv", "robotruck")),
+                            ("bus", ("bus", "coach", "shuttle", "robobus")),
                             ("motorcycle", ("motorcycle", "motorbike"))):
             if set(nouns) & set(words):
                 return kind, True
@@ -1564,9 +1565,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(found[0], head, first, plural=True, group=found)
         ego = next((e for e in r.entities if e.is_ego), None)
         nxt = units[head + 1] if head + 1 < len(units) else None
-        if ego is not None and not plural and kind == ego.type and "other" not in words and u.base in (
-                "car", "vehicle", "truck", "bus") and (nxt is None or nxt.category not in ("positions", "word")
-                                                       or nxt.word in AUXILIARIES or u.tokens[-1].possessive):
+        if ego is not None and not plural and kind == ego.type and "other" not in words and (u.base in (
+                "car", "vehicle", "truck", "bus") or _names_the_ego_again(r, ego, u.base)) and (
+                nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
+                or u.tokens[-1].possessive or _past_tense_verb(nxt)):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
         if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
@@ -1636,6 +1638,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             units[first - 2].category == "positions":
         _modify(r, entity, units[first - 2], stage, strength=1)  # "oncoming traffic two cars": the cars are oncoming
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
+
+
+def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
+    """'A driverless taxi ... the taxi': the ego's own noun, said again, is the ego, unless another agent
+    was named by it too."""
+    return ego.head.split()[-1] == noun and not any(
+        not e.is_ego and (e.head.split()[-1] == noun or noun in e.aliases) for e in r.entities)
+
+
+def _past_tense_verb(u: Unit) -> bool:
+    """A word the lexicon does not know, in the past tense ('the car behaved'): the verb after a subject."""
+    return u.category == "word" and u.word.endswith("ed") and len(u.word) > 4 and \
+        u.word not in lexicon().function_words
 
 
 OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side_left": {"side_right"},
