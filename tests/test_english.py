@@ -322,6 +322,29 @@ def test_the_egos_own_noun_said_again_is_the_ego(prompt):
     assert [a for a in agents(prompt) if a[2] != "ego"] != [] and len(agents(prompt)) == 2
 
 
+# -- what the ego is, said in passing -------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt", [
+    "My car is a 2017 Camry and a bus waits ahead.",
+    "A 2019 white Tesla waits ahead of the ego.",
+])
+def test_a_model_year_is_no_count(prompt):
+    assert len(agents(prompt)) == 2
+
+
+@pytest.mark.parametrize("prompt, ego_type", [
+    ("The ego car, a beat-up Volvo, crawls along behind a cyclist.", "car"),
+    ("Sam's old coach -- the ego -- rolls along behind a cyclist.", "bus"),
+    ("The pickup (our ego car) rolls along behind a cyclist.", "car"),
+])
+def test_a_noun_phrase_set_off_beside_the_ego_says_what_the_ego_is(prompt, ego_type):
+    assert agents(prompt) == sorted([(ego_type, "go_straight", "ego"), ("cyclist", "go_straight", "front")])
+
+
+def test_a_list_beside_the_ego_is_not_what_the_ego_is():
+    assert len(agents("A truck, the ego, and a van wait at the light.")) == 3
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

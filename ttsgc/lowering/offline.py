@@ -1438,6 +1438,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             if u.word in VAGUE_COUNTS:
                 words.add("some")
             in_determiner = True
+        elif u.category == "number" and _model_year(u.word) and k + 1 == head - len(modifiers):
+            modifiers.append(u)  # "a 2017 Camry": the year it was built, not how many
         elif u.category == "number":
             value = read_number(u.word) or 0
             count = int(min(value, TOO_LARGE)) if count is None else count
@@ -1488,6 +1490,10 @@ def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
     of_the = any(u.word in ("the", "those", "these") and k > 0 and (span[k - 1].word == "of" or (
         span[k - 1].category == "numbers" and span[k - 1].tokens[-1].word == "of")) for k, u in enumerate(span))
     return vague and of_the
+
+
+def _model_year(word: str) -> bool:
+    return len(word) == 4 and word.isdigit() and 1950 <= int(word) <= 2099
 
 
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
@@ -2581,6 +2587,19 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
     out: list[NounPhrase] = []
     for np in phrases:
         prev = out[-1] if out else None
+        if prev is not None and prev.entity is not None and np.entity is not None and \
+                prev.entity.is_ego != np.entity.is_ego and _set_off(units, prev, np):
+            ego, other = (prev.entity, np.entity) if prev.entity.is_ego else (np.entity, prev.entity)
+            if not (np.introduced or prev.introduced) or other.count > 1:
+                out.append(np)
+                continue
+            if other.type in V.EGO_TYPES and other.type != "car":
+                ego.type = other.type  # "the ego, a city bus,", "Alex's delivery van -- the ego --"
+            if other in r.entities:
+                r.entities.remove(other)
+            if np.entity is ego:
+                out[-1] = np
+            continue
         if prev is not None and np.entity is not None and np.entity.is_ego and prev.entity is not None and \
                 prev.entity.label and not prev.entity.is_ego and \
                 all(u.category == "comma" for u in units[prev.index + 1: np.first]):
@@ -2671,6 +2690,22 @@ def _named_make(between: list[Unit], kind: str) -> bool:
     return bool(between) and between[0].category == "comma" and bool(words) and words[0].word in ("a", "an") and \
         all(u.word in COLOURS | {"dark", "light", "white", "black", "grey", "gray"} or
             u.category == "agents" and u.meaning == kind for u in words[1:])
+
+
+def _set_off(units: list[Unit], prev: NounPhrase, np: NounPhrase) -> bool:
+    """'the ego car, a beat-up Volvo, crawls', 'the hatchback -- our ego car -- waits': a noun phrase set off
+    by commas (dashes and brackets read as commas) right after another says what the first is, unless a list
+    goes on after it ('the ego, a van, and a bus')."""
+    if prev.index + 2 > np.first or units[prev.index + 1].category != "comma" or \
+            units[prev.index + 2].category != "word":
+        return False  # "ego, oncoming SUV (going straight), pedestrian": a bare noun after a comma is another
+    if any(u.category not in ("word", "behaviours", "number", "numbers") or u.word in CLAUSE_WORDS | AUXILIARIES
+           for u in units[prev.index + 2:np.first]):
+        return False
+    after = np.index + 1  # the closing comma, and the clause going on after it (else a list may go on)
+    if after + 1 >= len(units) or units[after].category != "comma":
+        return False
+    return not (units[after + 1].word in ("and", "or", "a", "an", "the") or units[after + 1].category == "agents")
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
