@@ -296,6 +296,27 @@ def test_german_vehicle_words_are_agents(noun, agent_type):
     assert (agent_type, "stop", "front") in agents(f"A {noun} waits in front of the ego vehicle.")
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego turns left at the crossroads. From the opposite direction comes a van.",
+     ("car", "go_straight", "road_of_straight")),
+    ("The ego waits at the junction. From the right comes a motorbike.",
+     ("motorcycle", "go_straight", "road_of_right_turn")),
+    ("The ego drives on. Behind the ego truck follows a small car.", ("car", "go_straight", "back")),
+])
+def test_a_place_then_its_verb_then_who_comes_there(prompt, expected):
+    assert expected in agents(prompt) and len(agents(prompt)) == 2
+
+
+def test_an_order_after_a_place_keeps_the_ego_as_the_one_who_acts():
+    assert agents("In the left lane, follow a car.") == [("car", "go_straight", "ego"), ("car", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, ego_type", [("Ego LKW turns right, a PKW in front turns also right.", "truck"),
+                                              ("The ego bus turns right, a car in front turns also right.", "bus")])
+def test_a_vehicle_noun_after_ego_is_the_egos_own(prompt, ego_type):
+    assert agents(prompt) == sorted([("car", "turn_right", "front"), (ego_type, "turn_right", "ego")])
+
+
 def test_letters_with_marks_are_read_as_plain_letters():
     assert [t.word for t in tokenize("Der Fußgänger, a coupé")] == ["der", "fussganger", ",", "a", "coupe"]
     assert agents("On the Bundesstraße a coupé is parked ahead.") == [

@@ -262,7 +262,26 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
         category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
-    return _short_names(_turned_into(out))
+    return _ego_and_its_noun(_short_names(_turned_into(out)))
+
+
+def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
+    """'Ego PKW turns right', 'behind the ego LKW': a vehicle noun right after the word ego is the ego's own
+    noun, as in 'the ego truck', not another agent."""
+    out: list[Unit] = []
+    for u in units:
+        prev = out[-1] if out else None
+        if prev is not None and u.category == "agents" and u.meaning in V.EGO_TYPES and \
+                prev.tokens[-1].word == "ego" and not prev.tokens[-1].possessive and \
+                prev.tokens[-1].sentence == u.tokens[0].sentence and not u.tokens[-1].plural:
+            if prev.category == "agents" and prev.meaning == "ego":
+                out[-1] = Unit(prev.start, u.end, "agents", "ego", prev.tokens + u.tokens)
+                continue
+            if prev.category == "positions":
+                out.append(Unit(u.start, u.end, "word", u.base, u.tokens))
+                continue
+        out.append(u)
+    return out
 
 
 CORRECTIONS = (("no", "wait"), ("wait", "no"), ("i", "mean"), ("or", "rather"), ("scratch", "that"),
@@ -1409,6 +1428,9 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
                             ("motorcycle", ("motorcycle", "motorbike"))):
             if set(nouns) & set(words):
                 return kind, True
+        own = lexicon().phrases.get(tuple(words[1:])) if words[:1] == ["ego"] else None
+        if own is not None and own[0] == "agents" and own[1] in V.EGO_TYPES:
+            return own[1], True  # "the ego LKW"
         return "car", True
     if u.meaning == "generic":
         return "car", False
@@ -2076,12 +2098,15 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 for u in units[before[0].index + 1:before[1].first]) and any(
                 u.category == "actions" for u in units[before[0].index + 1:before[1].first]):
             before = before[:1]  # "the AV handle(s) a cyclist swerving...": the first is the subject, then its object
+        inverted = _inverted_subject(units, phrases, first_verb) if not before and verbs else None
+        if inverted is not None:  # "from the right comes a bus": the place first, then the verb, then who
+            before = [inverted]
         for np in before:
             subject += np.group or [np.entity]
         joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
         if pending and len(before) >= 2 and joined and verbs:  # "an ambulance, a police car and a van approach"
             subject = list(pending) + subject
-        objects = [np for np in phrases if np.index > first_verb or _is_reference(units, np)]
+        objects = [np for np in phrases if (np.index > first_verb or _is_reference(units, np)) and np is not inverted]
     subject = [e for e in subject if e is not None]
     subject = [e for e in subject if not any(x.parent is e for x in subject)]  # "of the two buses, the first": it
     if not subject and verbs and any(u.category == "agents" and u.base in ("everyone", "everybody")
@@ -2163,7 +2188,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 if side:  # "the lane to its right is moved into by the ego"
                     e.actions.append((stage, strength, ACTION_RANK["lane_left"], r.tick(), "lane_" + side, side))
         _relational(units[i], units, i, subject, objects if by is not None else
-                    [p for p in phrases if p.index > i])
+                    [p for p in phrases if p.index > i and p.entity not in subject])
     if by is not None and not verbs:  # "the road it turns into is occupied by a parked truck"
         pass
     _queue_ahead(r, units, phrases, subject, stage)
@@ -2253,6 +2278,31 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             recent.remove(e)
         recent.append(e)
     return subject
+
+
+INVERTING_VERBS = {"come", "follow", "stand", "sit", "wait", "drive", "go", "ride", "walk", "run", "stop", "park",
+                   "appear", "emerge", "approach", "travel", "move", "roll", "hold", "halt", "cycle", "drive up"}
+PLACE_PREPOSITIONS = {"from", "behind", "on", "in", "at", "into", "along", "across", "over", "next", "beside",
+                      "ahead", "out", "down", "up", "opposite", "directly", "right", "just", "then", "now", "there"}
+
+
+def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -> NounPhrase | None:
+    """Locative inversion, common in English written by Germans and in stage directions: 'From the opposite
+    direction comes a PKW', 'Behind the ego follows a small car'. A clause that opens with a place, has no
+    subject before its verb, and a verb of coming or standing in a finite form (not an order: 'follow a car')
+    has as subject the new noun phrase right after the verb."""
+    if verb == 0 or not (units[0].category == "positions" or units[0].word in PLACE_PREPOSITIONS):
+        return None
+    v = units[verb]
+    if v.tokens[0].base not in INVERTING_VERBS or v.tokens[0].word == v.tokens[0].base:
+        return None
+    after = next((np for np in phrases if np.index > verb), None)
+    if after is None or not after.introduced or after.entity is None or after.entity.is_ego:
+        return None
+    if any(u.category not in ("behaviours", "word") or u.word not in lexicon().function_words | {"also"}
+           and u.category != "behaviours" for u in units[verb + 1:after.first]):
+        return None
+    return after
 
 
 def _ego_turn_in_a_place(r: _Reader, units: list[Unit], stage: int) -> None:
