@@ -366,6 +366,35 @@ def test_a_list_beside_the_ego_is_not_what_the_ego_is():
     assert len(agents("A truck, the ego, and a van wait at the light.")) == 3
 
 
+# -- screenplays -------------------------------------------------------------------------------------------
+
+SCREENPLAY = """EXT. MARKET SQUARE - DAY - RAIN
+
+The ego car idles at the kerb. A LORRY rumbles past on the right.
+
+                    JO
+          (muttering)
+     Kids these days, cycling everywhere.
+
+CUT TO:
+
+INT. THE LORRY CAB - CONTINUOUS
+
+The driver yawns."""
+
+
+def test_a_scene_heading_says_where_and_when_and_dialogue_is_no_description():
+    scene = lower(SCREENPLAY).scenario
+    assert (scene.weather.condition, scene.weather.time) == ("mid_rain", "noon")
+    assert agents(SCREENPLAY) == [("car", "stop", "ego"), ("truck", "go_straight", "right")]
+
+
+@pytest.mark.parametrize("prompt, condition", [("Rain hammers the windscreen as the ego drives.", "hard_rain"),
+                                               ("Rain patters on the roof as the ego drives.", "soft_rain")])
+def test_rain_said_by_what_it_does(prompt, condition):
+    assert lower(prompt).scenario.weather.condition == condition
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

@@ -207,6 +207,44 @@ ORACLE_KEYS = {"expected", "expected result", "expected behaviour", "expected be
                "links", "attachments", "version", "build", "seed"}  # what the test checks, not the scene
 
 
+SLUGLINE = re.compile(r"^[ \t]*(INT\.?[ \t]*/[ \t]*EXT|EXT\.?[ \t]*/[ \t]*INT|I/E|INT|EXT)\.[ \t]+(\S.*?)[ \t]*$", re.M)
+SCENE_TIMES = {"day": "daytime", "night": "night", "dawn": "dawn", "dusk": "dusk", "morning": "morning",
+               "evening": "evening", "sunrise": "sunrise", "sunset": "sunset", "afternoon": "afternoon",
+               "midday": "midday", "noon": "noon", "twilight": "twilight", "first light": "first light",
+               "magic hour": "golden hour", "golden hour": "golden hour", "late night": "late night"}
+SCENE_CONTINUITY = {"continuous", "later", "moments later", "a moment later", "same", "same time", "flashback",
+                    "present", "present day", "back to scene", "intercut"}
+SCREEN_DIRECTIONS = re.compile(r"^[ \t]*(?:(?:CUT|DISSOLVE|SMASH CUT|MATCH CUT) TO:|FADE (?:IN|OUT)[:.]?|FADE TO BLACK\.?"
+                               r"|THE END)[ \t]*$", re.M)
+
+
+def _screenplay(text: str) -> str:
+    """A screenplay's page: a scene heading ('EXT. HIGH STREET - NIGHT') says where and when, read like a title
+    for the road and the weather ('DAY' is daytime; 'CONTINUOUS' and an interior place say nothing); lines
+    indented far from the margin are a character's name and what they say, no description; transitions
+    ('CUT TO:') are no scene."""
+    if not SLUGLINE.search(text):
+        return text
+    out = []
+    for line in text.splitlines():
+        m = SLUGLINE.match(line)
+        if m is not None:
+            parts = [p.strip() for p in re.split(r"\s+[-\u2013\u2014]+\s+", m.group(2)) if p.strip()]
+            interior = m.group(1).startswith("INT") and "EXT" not in m.group(1)
+            said = [] if interior else parts[:1]
+            for part in parts[1:]:  # "NIGHT", "DAY - RAIN", "CONTINUOUS"
+                if part.lower() in SCENE_TIMES:
+                    said.append(f"in the {SCENE_TIMES[part.lower()]}")
+                elif part.lower() not in SCENE_CONTINUITY:
+                    said.append(part)
+            out.append("\u00a7 " + " , ".join(said) + "." if said else "")
+        elif SCREEN_DIRECTIONS.match(line) or re.match(r"^(?: {4,}|\t)\S", line):
+            out.append("")
+        else:
+            out.append(line)
+    return "\n".join(out)
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
@@ -297,7 +335,7 @@ def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = fold_letters(_lines(text).lower().replace("\u2019", "'").replace("`", "'"))
+    text = fold_letters(_lines(_screenplay(text)).lower().replace("\u2019", "'").replace("`", "'"))
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
     text = re.sub(r"\blet's\b", "let us", text)
     text = _without_attribution(text)

@@ -2638,7 +2638,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
     for np in phrases:
         prev = out[-1] if out else None
         if prev is not None and prev.entity is not None and np.entity is not None and \
-                prev.entity.is_ego != np.entity.is_ego and _set_off(units, prev, np):
+                prev.entity.is_ego != np.entity.is_ego and _set_off(r.tokens, units, prev, np):
             ego, other = (prev.entity, np.entity) if prev.entity.is_ego else (np.entity, prev.entity)
             if not (np.introduced or prev.introduced) or other.count > 1:
                 out.append(np)
@@ -2742,7 +2742,7 @@ def _named_make(between: list[Unit], kind: str) -> bool:
             u.category == "agents" and u.meaning == kind for u in words[1:])
 
 
-def _set_off(units: list[Unit], prev: NounPhrase, np: NounPhrase) -> bool:
+def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounPhrase) -> bool:
     """'the ego car, a beat-up Volvo, crawls', 'the hatchback -- our ego car -- waits': a noun phrase set off
     by commas (dashes and brackets read as commas) right after another says what the first is, unless a list
     goes on after it ('the ego, a van, and a bus')."""
@@ -2752,10 +2752,14 @@ def _set_off(units: list[Unit], prev: NounPhrase, np: NounPhrase) -> bool:
     if any(u.category not in ("word", "behaviours", "number", "numbers") or u.word in CLAUSE_WORDS | AUXILIARIES
            for u in units[prev.index + 2:np.first]):
         return False
-    after = np.index + 1  # the closing comma, and the clause going on after it (else a list may go on)
-    if after + 1 >= len(units) or units[after].category != "comma":
+    after = np.index + 1  # the closing comma, then the sentence ends or goes on with no further list item
+    if after >= len(units) or units[after].category != "comma":
         return False
-    return not (units[after + 1].word in ("and", "or", "a", "an", "the") or units[after + 1].category == "agents")
+    k = units[after].start + 1
+    if k >= len(tokens) or tokens[k].sentence != tokens[k - 1].sentence:
+        return True
+    entry = lexicon().phrases.get((tokens[k].base,)) or lexicon().phrases.get((tokens[k].word,))
+    return not (tokens[k].word in ("and", "or", "a", "an", "the") or entry is not None and entry[0] == "agents")
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
