@@ -395,6 +395,35 @@ def test_rain_said_by_what_it_does(prompt, condition):
     assert lower(prompt).scenario.weather.condition == condition
 
 
+def test_the_heros_own_vehicle_is_the_ego():
+    assert agents("Our hero's taxi cruises along behind a bus.") == [("bus", "go_straight", "front"),
+                                                                    ("car", "go_straight", "ego")]
+
+
+def test_doing_the_same_as_the_ego_is_its_action_from_ones_own_place():
+    assert agents("A van crosses from the left. The ego car waits at the line. Two cars behind it do the same.") == [
+        ("car", "go_straight", "road_of_left_turn"), ("car", "stop", "back"), ("car", "stop", "back"),
+        ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("The ego follows a coach, then eases into the left lane.", "change_lane_to_left"),
+    ("The ego follows a coach, then slides over into the right lane.", "change_lane_to_right"),
+])
+def test_gentle_verbs_of_a_lane_change(prompt, action):
+    assert ("car", action, "ego") in agents(prompt)
+
+
+def test_a_drivers_shoulder_is_no_road_shoulder():
+    van = list(lower("He checks over his shoulder and sees a van waiting on the left.").scenario.agents())[1]
+    assert (van.relative_to_ego, van.road_type) == ("left", "driving")
+
+
+def test_police_lights_are_no_traffic_light():
+    assert "traffic_light" not in road("Red and blue light washes over the road as the ego passes a police car.") \
+        .required_signals
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

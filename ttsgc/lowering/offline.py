@@ -266,13 +266,14 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
 
 
 def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
-    """'Ego PKW turns right', 'behind the ego LKW': a vehicle noun right after the word ego is the ego's own
-    noun, as in 'the ego truck', not another agent."""
+    """'Ego PKW turns right', 'behind the ego LKW', 'our hero's taxi': a vehicle noun right after the word ego
+    (or the ego's possessive) is the ego's own noun, as in 'the ego truck', not another agent."""
     out: list[Unit] = []
     for u in units:
         prev = out[-1] if out else None
         if prev is not None and u.category == "agents" and u.meaning in V.EGO_TYPES and \
-                prev.tokens[-1].word == "ego" and not prev.tokens[-1].possessive and \
+                (prev.tokens[-1].word == "ego" or prev.tokens[-1].possessive and prev.category == "agents"
+                 and prev.meaning == "ego") and \
                 prev.tokens[-1].sentence == u.tokens[0].sentence and not u.tokens[-1].plural:
             if prev.category == "agents" and prev.meaning == "ego":
                 out[-1] = Unit(prev.start, u.end, "agents", "ego", prev.tokens + u.tokens)
@@ -1801,11 +1802,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         else:
             e.features.add(u.meaning)
     elif u.category == "actions" and u.meaning == "same":
-        model = next((x for x in reversed(r.entities) if x is not e and not x.is_ego and x.actions), None)
+        acted = [x for x in r.entities if x is not e and x.actions and x.parent is not e and e.parent is not x]
+        model = max(acted, key=lambda x: max(a[3] for a in x.actions), default=None)  # the last one who acted
         if model is not None:  # "then a second taxi did exactly the same thing": its manoeuvre, from its place
             e.actions += [(stage, strength) + a[2:3] + (r.tick(),) + a[4:] for a in model.actions]
-            e.features |= model.features
-            e.relative_to = e.relative_to or model.relative_to
+            if not model.is_ego:  # "the ego waits; two cars behind it do the same": they wait, where they are
+                e.features |= model.features
+                e.relative_to = e.relative_to or model.relative_to
             r.notes.append(f"inferred: '{e.head}' does what '{model.head}' did")
     elif u.category == "actions":
         direction = None
@@ -2838,12 +2841,17 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     return None
 
 
+SPEAKERS = {"i", "me", "we", "us", "you", "my", "our", "your"}
+
+
 def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
-    """'it' inside a place phrase ('a biker behind it'): the last agent named before, not the one placed."""
+    """'it' inside a place phrase ('a biker behind it'): the last agent named before, not the one placed; when
+    that is the ego ('the ego waits; two cars behind it'), the place is the ego's, as every place is."""
     before = [np.entity for np in phrases if np.index < i and np.entity is not None]
     for e in reversed(recent + before):
-        if e not in owners and not e.is_ego:
-            return e
+        if e in owners or e.is_ego and e.head in SPEAKERS:
+            continue  # an ego the text calls "I" or "we" is never "it"
+        return None if e.is_ego else e
     return None
 
 
