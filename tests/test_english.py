@@ -424,6 +424,47 @@ def test_police_lights_are_no_traffic_light():
         .required_signals
 
 
+# -- insurance claims: what happened after, and what the car is --------------------------------------------
+
+@pytest.mark.parametrize("prompt, count", [
+    ("The car behind me (gray Ford Escape) hit me.", 2),
+    ("The car behind me (silver Honda, older gentleman driving) hit me.", 2),
+    ("The ego waits while a van (and a bus behind it) passes.", 3),
+])
+def test_a_bracket_saying_an_agents_make_names_no_second_agent(prompt, count):
+    assert len(agents(prompt)) == count
+
+
+def test_right_into_the_back_of_me_is_no_side():
+    assert ("car", "go_straight", "back") in agents("The van behind me rolled right into the back of me.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was heading down Lincoln St when a bus pulled out.",
+    "A bus waits ahead. The cab company was no help.",
+    "A semi drifted over and hit my driver side mirror.",
+    "A man stepped out in front of me and I gave a statement to the police.",
+    "A taxi came in from the right. There is a yield sign there for people entering.",
+    "A bus full of people passes the ego.",
+])
+def test_streets_firms_car_parts_the_police_afterwards_and_people_in_general_are_no_agents(prompt):
+    assert len(agents(prompt)) == 2
+
+
+def test_people_crossing_are_still_agents():
+    assert len(agents("The ego gives way to people crossing in front of it.")) == 3
+
+
+@pytest.mark.parametrize("prompt, has, without", [
+    ("A man stepped out in the middle of the block, nowhere near a crosswalk.", set(), {"crosswalk"}),
+    ("It was about 6 am and just getting light out when a van pulled out.", set(), set()),
+])
+def test_far_from_a_crossing_and_first_light_are_no_objects(prompt, has, without):
+    spec = road(prompt)
+    assert set(spec.required_signals + spec.required_objects) == has
+    assert set(spec.without_signals + spec.without_objects) == without
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

@@ -331,6 +331,49 @@ def _without_attribution(text: str) -> str:
     return ATTRIBUTION.sub(" ", text)
 
 
+BRACKETED = re.compile(r" ?\(([^()]{1,80})\)")
+PLACE_WORDS = {"behind", "of", "to", "beside", "past", "alongside", "near", "ahead", "following", "passing"}
+AT_THE_WHEEL = {"driving", "at the wheel", "behind the wheel", "driver", "drove", "older", "elderly", "young"}
+
+
+def _agent_kinds(words: list[str]) -> list[str]:
+    """The agent types the words name (a make, a model, a noun), longest phrase first."""
+    lex, out, k = lexicon(), [], 0
+    while k < len(words):
+        for n in (3, 2, 1):
+            span = words[k:k + n]
+            entry = lex.phrases.get(tuple(lex.base(w)[0] for w in span)) or lex.phrases.get(tuple(span))
+            if len(span) == n and entry is not None and entry[0] == "agents":
+                out.append(entry[1])
+                k += n
+                break
+        else:
+            k += 1
+    return out
+
+
+def _described_in_brackets(text: str) -> str:
+    """'the car behind me (gray Ford Escape)', 'a pickup (silver Honda Civic, older gentleman driving)': a
+    bracket after an agent that only says its make, colour or who drove it names no second agent."""
+    lex = lexicon()
+
+    def drop(m: re.Match) -> str:
+        words = re.findall(r"[a-z]+", m.string[max(0, m.start() - 40):m.start()])[-4:]
+        if len(words) >= 2 and words[-1] in ("me", "us", "you", "ego") and words[-2] in PLACE_WORDS:
+            words = words[:-2]  # "the car behind me (...)": the bracket is the car's
+        before = _agent_kinds(words)
+        inside = re.findall(r"[a-z]+", m.group(1))
+        kinds = [k for k in _agent_kinds(inside) if k not in ("pedestrian", "none")]  # the driver may be named
+        if not before or before[-1] in ("ego", "none") or not kinds or any(
+                k != before[-1] and not (before[-1] == "generic" and k == "car") for k in kinds):
+            return m.group(0)
+        verbs = [w for w in inside if w not in AT_THE_WHEEL and (lex.phrases.get((lex.base(w)[0],)) or ("",))[0]
+                 == "actions"]
+        return m.group(0) if verbs else ""
+
+    return BRACKETED.sub(drop, text)
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -385,6 +428,9 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag
+    text = _described_in_brackets(text)
+    text = re.sub(r"\bright (into|onto) (?=(?:the |my |our |his |her |its |their )?(?:back|rear|side|front|bumper)\b"
+                  r"|(?:me|us|him|her|it|them)\b)", r"\1 ", text)  # "rolled right into the back of me": no side
     text = re.sub(r" \((?:all |both )?(?:children|kids|pedestrians|people|adults|cars|vehicles|cyclists|pupils)\)",
                   "", text)  # "ped_1, ped_2, ped_3 (children)": what the listed ones are
     text = re.sub(r"\s*=\s*", " is ", text)  # "Actor_1 = wheelchair user", "ego=car"

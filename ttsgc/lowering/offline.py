@@ -262,7 +262,30 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
         category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
-    return _ego_and_its_noun(_short_names(_turned_into(out)))
+    return _names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out))))
+
+
+STREET_WORDS = {"street", "st", "road", "rd", "avenue", "ave", "drive", "dr", "boulevard", "blvd", "lane", "ln",
+                "way", "highway", "hwy", "pike", "parkway", "pkwy", "place", "pl", "terrace", "crescent", "close",
+                "court", "ct", "square", "row", "hill", "bridge", "circle"}
+ORGANISATION_WORDS = {"company", "companies", "firm", "insurance", "insurer", "insurers", "depot", "dealership",
+                      "dealer", "agency", "office", "garage", "rental", "hire", "owner", "owners", "fleet",
+                      "operator", "service", "services", "industry", "union", "association"}
+
+
+def _names_no_agent(units: list[Unit]) -> list[Unit]:
+    """'on Lincoln St', 'Ford Road': a make before a street word names a street; 'the cab company', 'his
+    insurance': an agent noun before an organisation names who owns or insures, not an agent on the road."""
+    out = list(units)
+    for k, u in enumerate(units[:-1]):
+        nxt = units[k + 1]
+        if u.category != "agents" or u.meaning in ("ego", "none") or nxt.category != "word" or \
+                nxt.tokens[0].sentence != u.tokens[-1].sentence or u.tokens[-1].plural:
+            continue
+        street = nxt.word in STREET_WORDS and not (k > 0 and units[k - 1].word in ("a", "an", "the", "this", "that"))
+        if street or nxt.word in ORGANISATION_WORDS:
+            out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
+    return out
 
 
 def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
@@ -1515,6 +1538,9 @@ def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
     return vague and of_the
 
 
+GENERIC_AFTER = {"for", "about", "like", "of"}  # "for people entering": people in general
+
+
 def _model_year(word: str) -> bool:
     return len(word) == 4 and word.isdigit() and 1950 <= int(word) <= 2099
 
@@ -1540,6 +1566,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
+    if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
+            not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of"):
+        return NounPhrase(None, head, first)  # "a yield sign for people entering", "you hear about people doing that"
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
