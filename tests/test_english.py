@@ -465,6 +465,32 @@ def test_far_from_a_crossing_and_first_light_are_no_objects(prompt, has, without
     assert set(spec.without_signals + spec.without_objects) == without
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("A kid on a bike cut across the road right in front of me.", ("cyclist", "cross_the_road", "front")),
+    ("I swerved but still clipped a man who stepped out in front of me.", ("car", "go_straight", "ego")),
+    ("I was in the roundabout going around when a taxi came in from the right.", ("car", "go_straight", "ego")),
+    ("An ambulance came up behind me with the lights and siren going so I pulled over to the right and stopped.",
+     ("car", "stop", "ego")),
+])
+def test_claim_narratives_read(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", ["A van pulled out. The van driver waved.",
+                                    "A minivan pulled out. The minivan driver waved."])
+def test_the_driver_of_a_named_vehicle_is_that_vehicle(prompt):
+    assert len(agents(prompt)) == 2
+
+
+def test_a_date_is_no_time_of_day():
+    assert lower("On 6/14 a bus stopped in front of me.").scenario.weather is None
+
+
+def test_an_ambulances_lights_are_no_traffic_light_but_the_green_is():
+    assert road("An ambulance comes up behind me with the lights and siren going.").required_signals == ()
+    assert road("You've got the green but a fire truck crosses.").required_signals == ("traffic_light",)
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

@@ -262,7 +262,7 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
         category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
-    return _names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out))))
+    return _driver_of(_names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out)))))
 
 
 STREET_WORDS = {"street", "st", "road", "rd", "avenue", "ave", "drive", "dr", "boulevard", "blvd", "lane", "ln",
@@ -271,6 +271,29 @@ STREET_WORDS = {"street", "st", "road", "rd", "avenue", "ave", "drive", "dr", "b
 ORGANISATION_WORDS = {"company", "companies", "firm", "insurance", "insurer", "insurers", "depot", "dealership",
                       "dealer", "agency", "office", "garage", "rental", "hire", "owner", "owners", "fleet",
                       "operator", "service", "services", "industry", "union", "association"}
+
+
+AT_THE_CONTROLS = {"driver", "rider", "motorist", "operator", "cyclist"}
+
+
+def _driver_of(units: list[Unit]) -> list[Unit]:
+    """'the minivan driver', 'the scooter rider': the vehicle, named by who drives it; one agent."""
+    out: list[Unit] = []
+    for u in units:
+        prev = out[-1] if out else None
+        vehicle = lexicon().phrases.get(tuple(t.base for t in u.tokens[:-1])) if len(u.tokens) > 1 else None
+        if u.category == "agents" and vehicle is not None and vehicle[0] == "agents" and vehicle[1] == u.meaning \
+                and u.tokens[-1].base in AT_THE_CONTROLS and not u.tokens[-1].plural:
+            out.append(Unit(u.start, u.end, "agents", u.meaning, u.tokens[:-1]))  # "the van driver": the van
+            continue
+        if prev is not None and u.category == "agents" and u.tokens[-1].base in AT_THE_CONTROLS and \
+                len(u.tokens) == 1 and prev.category == "agents" and prev.meaning not in ("ego", "none", "pedestrian") \
+                and not prev.tokens[-1].possessive and not prev.tokens[-1].plural and \
+                prev.tokens[-1].sentence == u.tokens[0].sentence:
+            out[-1] = Unit(prev.start, u.end, "agents", prev.meaning, prev.tokens)  # read as the vehicle's noun
+            continue
+        out.append(u)
+    return out
 
 
 def _names_no_agent(units: list[Unit]) -> list[Unit]:
@@ -1851,6 +1874,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
+        if e.is_ego and action == "cut_in" and not direction and u.tokens[0].base in ("swerve", "jerk", "veer"):
+            action = "move"  # "I slammed on the brakes and swerved": a jerk of the wheel, no lane named
         if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
             action = "lane_" + direction
         if action == "move" and not e.is_ego and u.tokens[0].base in STEERING and clause_units is not None and \
@@ -1866,7 +1891,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             side = direction or _direction_after(r, clause_units, k) or next(  # "went around on the right": read once
                 (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
-            if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round"):
+            circulating = any(t.word in ("roundabout", "rotary", "circle") for x in clause_units for t in x.tokens) \
+                and not (k + 2 < len(clause_units) and (clause_units[k + 2].category == "agents" or
+                                                       clause_units[k + 2].word in ("it", "him", "her", "them")))
+            if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round") and \
+                    not circulating:  # ("in the roundabout going around": round it, not round someone)
                 side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
