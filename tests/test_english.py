@@ -491,6 +491,17 @@ def test_an_ambulances_lights_are_no_traffic_light_but_the_green_is():
     assert road("You've got the green but a fire truck crosses.").required_signals == ("traffic_light",)
 
 
+def test_cutting_in_and_forcing_the_ego_to_stop_blocks_it():
+    assert agents("A van cut in front of the ego, forcing it to stop.") == [("car", "block_the_ego", "front"),
+                                                                           ("car", "stop", "ego")]
+
+
+def test_a_clock_time_written_with_dots_ends_no_sentence_and_a_crowd_said_again_is_the_same_people():
+    prompt = "After 10 p.m. a crowd of fans crossed while the ego waited. Once the crowd had cleared, the ego went."
+    assert lower(prompt).scenario.weather.time == "night"
+    assert len([a for a in agents(prompt) if a[0] == "pedestrian"]) == 2
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

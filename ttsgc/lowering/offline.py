@@ -1790,7 +1790,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     if head and head not in GENERAL_NOUNS and not both and not plural:
         same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"
-                or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN]  # "a cyclist ... the bicycle": the same
+                or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN  # "a cyclist ... the bicycle": the same
+                or head.split()[-1] in GROUP_NOUNS and e.count > 1]  # "a crowd of fans ... the crowd": them
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool:
         return []
@@ -2250,6 +2251,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.actions.append((stage, strength, ACTION_RANK["lane_left"], r.tick(), "lane_" + side, side))
         _relational(units[i], units, i, subject, objects if by is not None else
                     [p for p in phrases if p.index > i and p.entity not in subject])
+        if units[i].meaning == "stop" and any(e.is_ego for e in made) and \
+                {t.base for t in units[i].tokens} & {"stop", "halt", "standstill"}:  # to stop, not just to brake
+            causers = subject if units[0].word not in CAUSATIVES else previous_subject
+            for e in causers:  # "a patrol car swerved in front of the taxi, forcing it to stop": it blocks
+                if not e.is_ego and any(a[0] == stage and a[4] == "cut_in" for a in e.actions):
+                    e.actions.append((stage, strength, ACTION_RANK["block"], r.tick(), "block", None))
     if by is not None and not verbs:  # "the road it turns into is occupied by a parked truck"
         pass
     _queue_ahead(r, units, phrases, subject, stage)
@@ -2877,7 +2884,9 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         people = [e for e in recent if e.type in V.VULNERABLE_TYPES]
         return people[-1] if people else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
-                           (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind")))
+                           (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind"))
+                           or units[i - 1].word in CAUSATIVES and i + 1 < len(units) and units[i + 1].word == "to")
+    # "forcing it to stop": whom it forced
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
         things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
         if not things and previous_subject:
