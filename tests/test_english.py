@@ -317,6 +317,12 @@ def test_a_vehicle_noun_after_ego_is_the_egos_own(prompt, ego_type):
     assert agents(prompt) == sorted([("car", "turn_right", "front"), (ego_type, "turn_right", "ego")])
 
 
+def test_a_driver_who_gets_out_walks_and_over_the_street_is_across_it():
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "A van stands on the hard shoulder ahead on the right. The driver gets out and walks over the street in "
+        "front of the ego.")
+
+
 def test_letters_with_marks_are_read_as_plain_letters():
     assert [t.word for t in tokenize("Der Fußgänger, a coupé")] == ["der", "fussganger", ",", "a", "coupe"]
     assert agents("On the Bundesstraße a coupé is parked ahead.") == [

@@ -1564,6 +1564,14 @@ def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
 GENERIC_AFTER = {"for", "about", "like", "of"}  # "for people entering": people in general
 
 
+def _gets_out(units: list[Unit], head: int) -> bool:
+    """'the driver gets out', 'the rider climbs off': out of the vehicle, on foot."""
+    words = [t.word for u in units[head + 1:head + 4] for t in u.tokens]
+    verbs = {"get", "gets", "got", "climb", "climbs", "climbed", "step", "steps", "stepped", "jump", "jumps", "jumped",
+             "hop", "hops", "hopped"}
+    return any(w in verbs and nxt in ("out", "off") for w, nxt in zip(words, words[1:]))
+
+
 def _model_year(word: str) -> bool:
     return len(word) == 4 and word.isdigit() and 1950 <= int(word) <= 2099
 
@@ -1629,6 +1637,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # driver of the HGV": says who the man is; he is not the HGV
     if predicate and u.base in ("driver", "rider", "motorist") and not plural:
         return NounPhrase(None, head, first)
+    if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural and \
+            _gets_out(units, head):  # "the driver gets out and walks across": a person on foot now
+        kind, definite = "pedestrian", False
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
         driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
