@@ -323,6 +323,19 @@ def test_a_driver_who_gets_out_walks_and_over_the_street_is_across_it():
         "front of the ego.")
 
 
+def test_behind_it_before_its_noun_places_the_noun_behind_the_one_named_before():
+    assert agents("At a crossroads the ego turns left. From the opposite direction comes a car, and directly "
+                  "behind it a second car.") == [("car", "go_straight", "road_of_straight")] * 2 + [
+        ("car", "turn_left", "ego")]
+
+
+def test_the_edge_of_the_road_is_no_side_lane_and_the_side_of_an_overtake_may_come_late():
+    assert agents("A cyclist rides on the right border of the road in front of the ego.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+    assert ("car", "change_lane_to_left", "ego") in agents(
+        "The ego drives behind a bus. The ego overtakes the standing bus over the left lane.")
+
+
 def test_letters_with_marks_are_read_as_plain_letters():
     assert [t.word for t in tokenize("Der Fußgänger, a coupé")] == ["der", "fussganger", ",", "a", "coupe"]
     assert agents("On the Bundesstraße a coupé is parked ahead.") == [

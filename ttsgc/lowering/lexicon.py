@@ -407,6 +407,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
                   lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
+    text = re.sub(r"\b(?:on|at|along|near) the (?:left|right|near|far|outer|inner) (?:edge|border|margin|rim) of the "
+                  r"(?:road|street|lane|carriageway|roadway)\b", " ", text)  # riding at the road's edge: its own lane
     text = re.sub(r"\b([ap])\.\s?m\.?(?=\s|$|[,;!?)])", r"\1m", text)  # "after 10 p.m. and": no sentence end
     text = re.sub(r"\b\d{1,2}/\d{1,2}(?:/\d{2,4})?\b", " ", text)  # "on 6/14", "2/9/24": a date, no time or count
     text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end

@@ -1901,7 +1901,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 set(u.base.split()) & OVERTAKING or k + 1 < len(clause_units)
                 and clause_units[k + 1].word in ("around", "round", "past")):  # "go around it on the left"
             side = direction or _direction_after(r, clause_units, k) or next(  # "went around on the right": read once
-                (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
+                (x.meaning[5:] for x in clause_units[k + 1:k + 8] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
             circulating = any(t.word in ("roundabout", "rotary", "circle") for x in clause_units for t in x.tokens) \
                 and not (k + 2 < len(clause_units) and (clause_units[k + 2].category == "agents" or
@@ -2909,6 +2909,8 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return recent[-1] if recent else None
     owner = [np.entity for np in phrases if np.index < i and np.entity is not None]  # whom "behind it" places
     subject = owner[-1] if owner else (previous_subject or [None])[0]
+    if not owner and any(np.index > i and np.introduced for np in phrases):
+        subject = None  # "a PKW comes, and directly behind it a second PKW": the place first, then whom it places
     if len(previous_subject) == 1 and previous_subject[0].is_ego and previous_subject[0] is not subject and \
             not any(np.index < i and np.entity is not None and not np.entity.is_ego and np.entity is not subject
                     for np in phrases):
