@@ -521,6 +521,11 @@ def test_a_clock_time_written_with_dots_ends_no_sentence_and_a_crowd_said_again_
     assert len([a for a in agents(prompt) if a[0] == "pedestrian"]) == 2
 
 
+def test_a_counted_group_with_the_ego_set_off_in_it_includes_the_ego():
+    assert agents("Three cars, the ego car bringing up the rear, crawl toward the bridge.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "front"), ("car", "go_straight", "front")]
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

@@ -1572,6 +1572,12 @@ def _gets_out(units: list[Unit], head: int) -> bool:
     return any(w in verbs and nxt in ("out", "off") for w, nxt in zip(words, words[1:]))
 
 
+def _of_a_group(units: list[Unit], first: int) -> bool:
+    """'a whole crowd of people': the people are the crowd, counted as one; 'a bus full of people' are not."""
+    k = first - 1 if units[first].word == "of" else first - 2
+    return k >= 0 and (units[k].category in ("agents", "numbers") or units[k].word in GROUP_NOUNS)
+
+
 def _model_year(word: str) -> bool:
     return len(word) == 4 and word.isdigit() and 1950 <= int(word) <= 2099
 
@@ -1598,7 +1604,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
-            not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of"):
+            not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
+            and not _of_a_group(units, first):
         return NounPhrase(None, head, first)  # "a yield sign for people entering", "you hear about people doing that"
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
