@@ -526,6 +526,25 @@ def test_a_counted_group_with_the_ego_set_off_in_it_includes_the_ego():
         ("car", "go_straight", "ego"), ("car", "go_straight", "front"), ("car", "go_straight", "front")]
 
 
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_pulling_out_of_a_side_road_and_turning_into_the_egos_lane_is_a_turn_towards_it(side):
+    prompt = f"A van pulled out of a side road on my {side} and turned into my lane right in front of me."
+    assert ("car", f"turn_{side}", f"road_of_{side}_turn") in agents(prompt)
+
+
+def test_the_narrators_kin_are_passengers_unless_on_foot():
+    assert len(agents("I was taking my mother to her appointment when a van hit me. My mother is fine.")) == 2
+    assert ("pedestrian", "cross_the_road", "front") in agents("My son was crossing the road when a van came.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "We were three cars stopped at the red light, mine was the second one.",
+    "We were three cars stopped at the red light, mine was the second one. Then the first car went.",
+])
+def test_we_were_n_cars_counts_the_ego_and_its_place_splits_the_rest(prompt):
+    assert sorted(a for a in agents(prompt) if a[2] != "ego") == [("car", "stop", "back"), ("car", "stop", "front")]
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

@@ -433,6 +433,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag
     text = _described_in_brackets(text)
+    text = re.sub(r"\bwe (were|are|was) ((?:two|three|four|five|six|\d) (?:cars|vehicles))\b", r"\2 including us \1",
+                  text)  # "we were three cars stopped at the light": the ego one of them
     text = re.sub(r"\b((?:two|three|four|five|six|seven|eight|\d) [a-z]+s) ?, ((?:the |our |my )?(?:ego|hero)(?: car| vehicle)?)"
                   r" (?=[a-z]+ing\b)", r"\1 including \2 ,", text)  # "three cars, the ego bringing up the rear,"
     text = re.sub(r"\bright (into|onto) (?=(?:the |my |our |his |her |its |their )?(?:back|rear|side|front|bumper)\b"

@@ -1572,6 +1572,18 @@ def _gets_out(units: list[Unit], head: int) -> bool:
     return any(w in verbs and nxt in ("out", "off") for w, nxt in zip(words, words[1:]))
 
 
+KIN = {"mother", "mom", "mum", "father", "dad", "wife", "husband", "son", "daughter", "kid", "child", "passenger",
+       "friend", "sister", "brother", "grandma", "grandpa", "granny", "grandmother", "grandfather", "baby",
+       "girlfriend", "boyfriend", "partner", "family", "toddler", "teen", "teenager", "parent", "boy", "girl"}
+
+
+def _on_foot_in_the_scene(units: list[Unit], head: int) -> bool:
+    """Whether the clause puts a person on the road, the pavement or a crossing ('my son was crossing')."""
+    return any(u.category == "actions" and u.meaning in ("cross", "walk") or u.category == "positions" and u.meaning
+               in ("sidewalk", "crosswalk", "in_road", "shoulder") or u.category == "road" and u.meaning in
+               V.CROSSWALK_OBJECTS for u in units[head + 1:])
+
+
 def _of_a_group(units: list[Unit], first: int) -> bool:
     """'a whole crowd of people': the people are the crowd, counted as one; 'a bus full of people' are not."""
     k = first - 1 if units[first].word == "of" else first - 2
@@ -1603,6 +1615,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
+    if words & {"my", "our"} and u.tokens[-1].base in KIN and not _on_foot_in_the_scene(units, head):
+        return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
             and not _of_a_group(units, first):
@@ -2069,7 +2083,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i, u in enumerate(units):
         if u.word in ORDINAL_MEMBERS and i > 0 and units[i - 1].word == "the" and not (
                 i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number")) and not any(
-                np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions"):
+                np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions") \
+                and not (i > 2 and units[i - 2].word in COPULAS and units[i - 3].word in ("mine", "i", "we", "ours")):
+            # ("mine was the second one": the ego's place among them, no member of its own)
             member = _member(r, recent)  # "two motorbikes, the first on the left and the second on the right"
             if member is not None:
                 r.mark(u)
@@ -2100,6 +2116,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i, introduced=True))
                 continue
+            if i > 3 and units[i - 3].word in COPULAS and units[i - 4].word in ("mine", "i", "we", "ours"):
+                continue  # "mine was the second one": the ego's place among them, no member of its own
             member = _member(r, recent)  # "two cars, one in front and one behind"
             if member is not None:
                 r.mark(u)
@@ -2517,16 +2535,32 @@ def _place_in_queue(r: _Reader) -> None:
     waiting in a queue or at a red light, doing nothing said, waits too."""
     words = [t.word for t in r.tokens]
     ego = next((e for e in r.entities if e.is_ego), None)
-    for i, w in enumerate(words[:-2]):
+    for i, w in enumerate(words[:-1]):
         n = ORDINALS.get(w)
         rest = words[i + 1:i + 4]
-        if not n or rest[0] not in ("in", "car", "vehicle") or not {"queue", "line"} & set(rest):
+        with_ego = next((e for e in r.entities if e.includes_ego and e.count > 0 and not e.is_ego), None)
+        mine = rest[:1] == ["one"] and i > 1 and words[i - 1] == "the" and words[i - 2] in COPULAS and \
+            with_ego is not None  # "we were three cars ..., mine was the second one"
+        if not n or not mine and (rest[0] not in ("in", "car", "vehicle") or not {"queue", "line"} & set(rest)):
             continue
         ego = ego or _ego_entity(r, 0)
         if not any(a[4] == "stop" for a in ego.actions):
             ego.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
-        queued = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and not e.features & {
-            "behind", "side_left", "side_right", "road_straight", "toward", "road_left", "road_right"}]
+        members = [e for e in r.entities if with_ego is not None and e.parent is with_ego]  # "the first car"
+        if with_ego is not None and n - 1 < with_ego.count + len(members) and "ahead" not in with_ego.features:
+            still_ahead = n - 1 - len(members)  # "three cars including us, we were second": one ahead, one behind
+            if still_ahead <= 0:
+                with_ego.features.add("behind")
+            else:
+                behind = Entity(len(r.entities), with_ego.type, False, with_ego.stage,
+                                count=with_ego.count - still_ahead, head=with_ego.head,
+                                features=set(with_ego.features) | {"behind"}, actions=list(with_ego.actions),
+                                behavior=with_ego.behavior)
+                with_ego.count = still_ahead
+                r.entities.append(behind)
+        queued = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and e.count > 0 and
+                  not e.features & {"behind", "side_left", "side_right", "road_straight", "toward", "road_left",
+                                    "road_right"}]
         for e in queued:
             e.features.add("ahead")  # "fourth in line behind a bus": the bus is one of those ahead
         ahead = sum(e.count for e in queued)
@@ -3169,6 +3203,11 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     if not chosen:
         return None, None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
+    turned = next((a for a in chosen if a[4] == "turn" and a[1] == best[1] and a[3] > best[3]), None)
+    if best[4] == "cut_in" and turned is not None and e.features & {"road_left", "road_right", "from_left",
+                                                                    "from_right"}:
+        side = "left" if e.features & {"road_left", "from_left"} else "right"  # into the ego's way: towards it
+        return "turn", turned[5] or side  # "pulled out of a side road on my left and turned into my lane": a turn
     if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
         return ("stop" if e.is_ego else "block"), None  # "swerves into its path and stops"; the ego pulls in and stops
     if best[4] == "cut_in" and {"ahead", "stops_abruptly"} <= e.features and any(
