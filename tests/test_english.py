@@ -545,6 +545,23 @@ def test_we_were_n_cars_counts_the_ego_and_its_place_splits_the_rest(prompt):
     assert sorted(a for a in agents(prompt) if a[2] != "ego") == [("car", "stop", "back"), ("car", "stop", "front")]
 
 
+def test_a_parked_vehicle_with_its_lights_flashing_stays_parked():
+    assert ("truck", "stop", "front_right") in agents(
+        "There was a tow truck parked up ahead on my right with all its lights flashing.")
+
+
+def test_what_the_narrator_thought_an_agent_did_is_not_what_it_did():
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "I was turning left. I thought the oncoming van was turning, so I started my turn, and it came straight "
+        "through.")
+    assert ("car", "turn_left", "road_of_straight") in agents("I was turning left. The oncoming van was turning too.")
+
+
+def test_it_inside_a_place_is_the_ego_only_when_the_ego_is_named():
+    assert agents("Give me a scene, ego in the right lane with a truck ahead of it.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

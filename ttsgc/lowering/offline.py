@@ -181,6 +181,7 @@ def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
                      "indicating", "indicator", "indicators"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
+_EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
 
 def _overtaking_side(key: str) -> str:
@@ -1397,6 +1398,21 @@ def _what_if(tokens: list[Token], u: Unit) -> bool:
     return would_have and bool({"had", "were"} & set(clause))
 
 
+BELIEVING = {"thought", "believed", "assumed", "figured", "guessed", "presumed", "reckoned", "imagined", "expected"}
+
+
+def _believed(tokens: list[Token], t: Token) -> bool:
+    """A verb after 'I thought (that)' in the same clause: a belief of the narrator, not what happened."""
+    k = t.index - 1
+    while k > 0 and tokens[k].sentence == t.sentence and t.index - k <= 8:
+        if tokens[k].word in (",", "but", "so", "and", "then", "because", "until", "when"):
+            return False
+        if tokens[k].word in BELIEVING and tokens[k - 1].word in ("i", "we"):
+            return True
+        k -= 1
+    return False
+
+
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
     sentences after it describe the scene. 'Can someone explain this?', 'Why are people like this': the
@@ -1417,6 +1433,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             before.word in ("once", "when", "whenever", "if") and any(
                 x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
         return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
+    if u.category == "actions" and _believed(tokens, t):
+        return True  # "I thought the second one was turning": what the narrator wrongly expected
     if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)):
         return True  # "once someone's on a zebra, you stop and you wait"; "you'd have had to stop"
     if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].plural and not counted and \
@@ -2970,7 +2988,7 @@ def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
     that is the ego ('the ego waits; two cars behind it'), the place is the ego's, as every place is."""
     before = [np.entity for np in phrases if np.index < i and np.entity is not None]
     for e in reversed(recent + before):
-        if e in owners or e.is_ego and e.head in SPEAKERS:
+        if e in owners or e.is_ego and _EGO_SPEAKS.get():
             continue  # an ego the text calls "I" or "we" is never "it"
         return None if e.is_ego else e
     return None
@@ -3405,6 +3423,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         raise LoweringError("the prompt is empty")
     r = _Reader(tokens, _units(tokens))
     _KEEPS_LEFT.set(_drives_on_the_left(tokens))
+    ego_words = [u.tokens for u in r.units if u.category == "agents" and u.meaning == "ego"]
+    _EGO_SPEAKS.set(bool(ego_words) and all(len(ts) == 1 and ts[0].word in SPEAKERS for ts in ego_words))
     r.units = _retract_corrections(r)
     UNSPECIFIED.draw_for(seed)
     road = _road(r)
