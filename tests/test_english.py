@@ -562,6 +562,17 @@ def test_it_inside_a_place_is_the_ego_only_when_the_ego_is_named():
         ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
 
 
+def test_an_ego_opening_its_clause_with_a_participle_takes_the_finite_verb():
+    assert agents("A robotaxi travelling behind the truck stopped for twenty seconds.") == [
+        ("car", "stop", "ego"), ("truck", "go_straight", "front")]
+
+
+def test_any_name_the_ego_was_given_names_it_again():
+    prompt = ("Outside the Elm Park gates, a driverless shuttle bus waited for a cyclist crossing from the right. "
+              "Once the cyclist had passed, the shuttle pulled away.")
+    assert [a for a in agents(prompt) if a[0] == "bus"] == [("bus", "go_straight", "ego"), ("bus", "stop", "ego")]
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

@@ -1628,6 +1628,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             r.entities.append(ego)
         elif kind != "car" and ego.type == "car":
             ego.type = kind
+        ego.aliases.add(u.base)  # every name the ego is given ("an automated shuttle bus ... the shuttle")
         return NounPhrase(ego, head, first)
     if u.meaning == "none":  # "stopped with flashing lights": no agent, and no claim on the verb before it
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
@@ -1774,7 +1775,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
 def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
     """'A driverless taxi ... the taxi': the ego's own noun, said again, is the ego, unless another agent
     was named by it too."""
-    return ego.head.split()[-1] == noun and not any(
+    return any(noun in name.split() for name in ego.aliases | {ego.head}) and not any(
         not e.is_ego and (e.head.split()[-1] == noun or noun in e.aliases) for e in r.entities)
 
 
@@ -3019,8 +3020,10 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     participle = word.endswith("ing") or word.endswith("ed") or word in (
         "parked", "stopped", "stood", "stuck", "broken", "stationary", "idle", "motionless", "immobile") or light
     # "encounters a POV stationary in its lane": a state said of the object
-    if np.entity is not None and np.entity.is_ego and not light:
-        return None  # "the lead car ahead of the hero changed lane": the ego takes no participle
+    if np.entity is not None and np.entity.is_ego and not light and not (
+            i == k + 1 and word.endswith("ing") and later and np is phrases[0] and np.first == 0):
+        return None  # "the lead car ahead of the hero changed lane": the ego takes no participle, unless it opens
+        # the clause with it ("a robotaxi travelling behind the truck stopped": the robotaxi stopped)
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
         return np
     return None
