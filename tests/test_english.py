@@ -408,6 +408,13 @@ def test_a_scene_heading_says_where_and_when_and_dialogue_is_no_description():
     assert agents(SCREENPLAY) == [("car", "stop", "ego"), ("truck", "go_straight", "right")]
 
 
+def test_a_screenplay_character_who_drives_is_at_the_ego_wheel_and_their_kin_ride_along():
+    page = ("EXT. DOCK ROAD - NIGHT\n\nJO and her little brother SAM sit in silence. The ego car waits at a red "
+            "light while a VAN crosses from the left.\n\nOnce the van is gone, Jo pulls straight ahead.")
+    assert agents(page) == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn"),
+                            ("car", "stop", "ego")]
+
+
 @pytest.mark.parametrize("prompt, condition", [("Rain hammers the windscreen as the ego drives.", "hard_rain"),
                                                ("Rain patters on the roof as the ego drives.", "soft_rain")])
 def test_rain_said_by_what_it_does(prompt, condition):

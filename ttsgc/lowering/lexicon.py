@@ -241,8 +241,23 @@ def _screenplay(text: str) -> str:
         elif SCREEN_DIRECTIONS.match(line) or re.match(r"^(?: {4,}|\t)\S", line):
             out.append("")
         else:
-            out.append(line)
+            out.append(AT_THE_WHEEL_NAME.sub(_driver_named, line))
     return "\n".join(out)
+
+
+DRIVING_VERBS = ("waits|turns|pulls|eases|slides|swings|brakes|stops|accelerates|drives|indicates|edges|creeps|noses"
+                 "|steers|merges|changes|moves|rolls|speeds|slows|reverses|overtakes|follows|halts|idles|signals")
+AT_THE_WHEEL_NAME = re.compile(rf"(?:(?<=^)|(?<=[.!?,] )|(?<=then )|(?<=and ))([A-Z][a-z]+|[A-Z]{{2,}})(?= (?:{DRIVING_VERBS})\b)")
+
+
+def _driver_named(m: re.Match) -> str:
+    """In a screenplay's action lines a character who drives ('Tom waits', 'Riley pulls straight ahead') is at
+    the wheel of the ego; a word the lexicon knows ('A BUS', 'Then') is no name."""
+    word = m.group(1).lower()
+    lex = lexicon()
+    if word in lex.vocabulary or word in lex.function_words or lex.base(word)[0] in lex.vocabulary:
+        return m.group(1)
+    return "the ego"
 
 
 def _lines(text: str) -> str:

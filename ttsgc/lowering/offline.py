@@ -1634,7 +1634,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
-    if words & {"my", "our"} and u.tokens[-1].base in KIN and not _on_foot_in_the_scene(units, head):
+    if words & {"my", "our", "his", "her", "their"} and u.tokens[-1].base in KIN and \
+            not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
