@@ -287,6 +287,299 @@ def test_the_ego_going_straight_compiles(tmp_path):
     assert (tmp_path / "p.xosc").is_file()
 
 
+# -- English written by German engineers --------------------------------------------------------------
+
+@pytest.mark.parametrize("noun, agent_type", [("PKW", "car"), ("LKW", "truck"), ("Motorrad", "motorcycle"),
+                                              ("Linienbus", "bus"), ("Radfahrer", "cyclist"),
+                                              ("Fußgänger", "pedestrian"), ("Streifenwagen", "police")])
+def test_german_vehicle_words_are_agents(noun, agent_type):
+    assert (agent_type, "stop", "front") in agents(f"A {noun} waits in front of the ego vehicle.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego turns left at the crossroads. From the opposite direction comes a van.",
+     ("car", "go_straight", "road_of_straight")),
+    ("The ego waits at the junction. From the right comes a motorbike.",
+     ("motorcycle", "go_straight", "road_of_right_turn")),
+    ("The ego drives on. Behind the ego truck follows a small car.", ("car", "go_straight", "back")),
+])
+def test_a_place_then_its_verb_then_who_comes_there(prompt, expected):
+    assert expected in agents(prompt) and len(agents(prompt)) == 2
+
+
+def test_an_order_after_a_place_keeps_the_ego_as_the_one_who_acts():
+    assert agents("In the left lane, follow a car.") == [("car", "go_straight", "ego"), ("car", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, ego_type", [("Ego LKW turns right, a PKW in front turns also right.", "truck"),
+                                              ("The ego bus turns right, a car in front turns also right.", "bus")])
+def test_a_vehicle_noun_after_ego_is_the_egos_own(prompt, ego_type):
+    assert agents(prompt) == sorted([("car", "turn_right", "front"), (ego_type, "turn_right", "ego")])
+
+
+def test_a_driver_who_gets_out_walks_and_over_the_street_is_across_it():
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "A van stands on the hard shoulder ahead on the right. The driver gets out and walks over the street in "
+        "front of the ego.")
+
+
+def test_behind_it_before_its_noun_places_the_noun_behind_the_one_named_before():
+    assert agents("At a crossroads the ego turns left. From the opposite direction comes a car, and directly "
+                  "behind it a second car.") == [("car", "go_straight", "road_of_straight")] * 2 + [
+        ("car", "turn_left", "ego")]
+
+
+def test_the_edge_of_the_road_is_no_side_lane_and_the_side_of_an_overtake_may_come_late():
+    assert agents("A cyclist rides on the right border of the road in front of the ego.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+    assert ("car", "change_lane_to_left", "ego") in agents(
+        "The ego drives behind a bus. The ego overtakes the standing bus over the left lane.")
+
+
+def test_letters_with_marks_are_read_as_plain_letters():
+    assert [t.word for t in tokenize("Der Fußgänger, a coupé")] == ["der", "fussganger", ",", "a", "coupe"]
+    assert agents("On the Bundesstraße a coupé is parked ahead.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+# -- news reports -----------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Police said a pickup stopped in front of a driverless shuttle on Main Street.",
+     [("bus", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("According to parents who were there, a robotaxi slowed behind a bus.",
+     [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+])
+def test_the_automated_vehicle_of_a_news_report_is_the_ego_and_its_sources_are_no_agents(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "A bus stopped ahead of a driverless taxi on Main Street. The taxi waited.",
+    "A driverless taxi passed a parked van. The taxi behaved as designed.",
+])
+def test_the_egos_own_noun_said_again_is_the_ego(prompt):
+    assert [a for a in agents(prompt) if a[2] != "ego"] != [] and len(agents(prompt)) == 2
+
+
+# -- what the ego is, said in passing -------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt", [
+    "My car is a 2017 Camry and a bus waits ahead.",
+    "A 2019 white Tesla waits ahead of the ego.",
+])
+def test_a_model_year_is_no_count(prompt):
+    assert len(agents(prompt)) == 2
+
+
+@pytest.mark.parametrize("prompt, ego_type", [
+    ("The ego car, a beat-up Volvo, crawls along behind a cyclist.", "car"),
+    ("Sam's old coach -- the ego -- rolls along behind a cyclist.", "bus"),
+    ("The pickup (our ego car) rolls along behind a cyclist.", "car"),
+])
+def test_a_noun_phrase_set_off_beside_the_ego_says_what_the_ego_is(prompt, ego_type):
+    assert agents(prompt) == sorted([(ego_type, "go_straight", "ego"), ("cyclist", "go_straight", "front")])
+
+
+def test_a_list_beside_the_ego_is_not_what_the_ego_is():
+    assert len(agents("A truck, the ego, and a van wait at the light.")) == 3
+
+
+# -- screenplays -------------------------------------------------------------------------------------------
+
+SCREENPLAY = """EXT. MARKET SQUARE - DAY - RAIN
+
+The ego car idles at the kerb. A LORRY rumbles past on the right.
+
+                    JO
+          (muttering)
+     Kids these days, cycling everywhere.
+
+CUT TO:
+
+INT. THE LORRY CAB - CONTINUOUS
+
+The driver yawns."""
+
+
+def test_a_scene_heading_says_where_and_when_and_dialogue_is_no_description():
+    scene = lower(SCREENPLAY).scenario
+    assert (scene.weather.condition, scene.weather.time) == ("mid_rain", "noon")
+    assert agents(SCREENPLAY) == [("car", "stop", "ego"), ("truck", "go_straight", "right")]
+
+
+def test_a_screenplay_character_who_drives_is_at_the_ego_wheel_and_their_kin_ride_along():
+    page = ("EXT. DOCK ROAD - NIGHT\n\nJO and her little brother SAM sit in silence. The ego car waits at a red "
+            "light while a VAN crosses from the left.\n\nOnce the van is gone, Jo pulls straight ahead.")
+    assert agents(page) == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn"),
+                            ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, condition", [("Rain hammers the windscreen as the ego drives.", "hard_rain"),
+                                               ("Rain patters on the roof as the ego drives.", "soft_rain")])
+def test_rain_said_by_what_it_does(prompt, condition):
+    assert lower(prompt).scenario.weather.condition == condition
+
+
+def test_the_heros_own_vehicle_is_the_ego():
+    assert agents("Our hero's taxi cruises along behind a bus.") == [("bus", "go_straight", "front"),
+                                                                    ("car", "go_straight", "ego")]
+
+
+def test_doing_the_same_as_the_ego_is_its_action_from_ones_own_place():
+    assert agents("A van crosses from the left. The ego car waits at the line. Two cars behind it do the same.") == [
+        ("car", "go_straight", "road_of_left_turn"), ("car", "stop", "back"), ("car", "stop", "back"),
+        ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("The ego follows a coach, then eases into the left lane.", "change_lane_to_left"),
+    ("The ego follows a coach, then slides over into the right lane.", "change_lane_to_right"),
+])
+def test_gentle_verbs_of_a_lane_change(prompt, action):
+    assert ("car", action, "ego") in agents(prompt)
+
+
+def test_a_drivers_shoulder_is_no_road_shoulder():
+    van = list(lower("He checks over his shoulder and sees a van waiting on the left.").scenario.agents())[1]
+    assert (van.relative_to_ego, van.road_type) == ("left", "driving")
+
+
+def test_police_lights_are_no_traffic_light():
+    assert "traffic_light" not in road("Red and blue light washes over the road as the ego passes a police car.") \
+        .required_signals
+
+
+# -- insurance claims: what happened after, and what the car is --------------------------------------------
+
+@pytest.mark.parametrize("prompt, count", [
+    ("The car behind me (gray Ford Escape) hit me.", 2),
+    ("The car behind me (silver Honda, older gentleman driving) hit me.", 2),
+    ("The ego waits while a van (and a bus behind it) passes.", 3),
+])
+def test_a_bracket_saying_an_agents_make_names_no_second_agent(prompt, count):
+    assert len(agents(prompt)) == count
+
+
+def test_right_into_the_back_of_me_is_no_side():
+    assert ("car", "go_straight", "back") in agents("The van behind me rolled right into the back of me.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was heading down Lincoln St when a bus pulled out.",
+    "A bus waits ahead. The cab company was no help.",
+    "A semi drifted over and hit my driver side mirror.",
+    "A man stepped out in front of me and I gave a statement to the police.",
+    "A taxi came in from the right. There is a yield sign there for people entering.",
+    "A bus full of people passes the ego.",
+])
+def test_streets_firms_car_parts_the_police_afterwards_and_people_in_general_are_no_agents(prompt):
+    assert len(agents(prompt)) == 2
+
+
+def test_people_crossing_are_still_agents():
+    assert len(agents("The ego gives way to people crossing in front of it.")) == 3
+
+
+@pytest.mark.parametrize("prompt, has, without", [
+    ("A man stepped out in the middle of the block, nowhere near a crosswalk.", set(), {"crosswalk"}),
+    ("It was about 6 am and just getting light out when a van pulled out.", set(), set()),
+])
+def test_far_from_a_crossing_and_first_light_are_no_objects(prompt, has, without):
+    spec = road(prompt)
+    assert set(spec.required_signals + spec.required_objects) == has
+    assert set(spec.without_signals + spec.without_objects) == without
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A kid on a bike cut across the road right in front of me.", ("cyclist", "cross_the_road", "front")),
+    ("I swerved but still clipped a man who stepped out in front of me.", ("car", "go_straight", "ego")),
+    ("I was in the roundabout going around when a taxi came in from the right.", ("car", "go_straight", "ego")),
+    ("An ambulance came up behind me with the lights and siren going so I pulled over to the right and stopped.",
+     ("car", "stop", "ego")),
+])
+def test_claim_narratives_read(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", ["A van pulled out. The van driver waved.",
+                                    "A minivan pulled out. The minivan driver waved."])
+def test_the_driver_of_a_named_vehicle_is_that_vehicle(prompt):
+    assert len(agents(prompt)) == 2
+
+
+def test_a_date_is_no_time_of_day():
+    assert lower("On 6/14 a bus stopped in front of me.").scenario.weather is None
+
+
+def test_an_ambulances_lights_are_no_traffic_light_but_the_green_is():
+    assert road("An ambulance comes up behind me with the lights and siren going.").required_signals == ()
+    assert road("You've got the green but a fire truck crosses.").required_signals == ("traffic_light",)
+
+
+def test_cutting_in_and_forcing_the_ego_to_stop_blocks_it():
+    assert agents("A van cut in front of the ego, forcing it to stop.") == [("car", "block_the_ego", "front"),
+                                                                           ("car", "stop", "ego")]
+
+
+def test_a_clock_time_written_with_dots_ends_no_sentence_and_a_crowd_said_again_is_the_same_people():
+    prompt = "After 10 p.m. a crowd of fans crossed while the ego waited. Once the crowd had cleared, the ego went."
+    assert lower(prompt).scenario.weather.time == "night"
+    assert len([a for a in agents(prompt) if a[0] == "pedestrian"]) == 2
+
+
+def test_a_counted_group_with_the_ego_set_off_in_it_includes_the_ego():
+    assert agents("Three cars, the ego car bringing up the rear, crawl toward the bridge.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "front"), ("car", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_pulling_out_of_a_side_road_and_turning_into_the_egos_lane_is_a_turn_towards_it(side):
+    prompt = f"A van pulled out of a side road on my {side} and turned into my lane right in front of me."
+    assert ("car", f"turn_{side}", f"road_of_{side}_turn") in agents(prompt)
+
+
+def test_the_narrators_kin_are_passengers_unless_on_foot():
+    assert len(agents("I was taking my mother to her appointment when a van hit me. My mother is fine.")) == 2
+    assert ("pedestrian", "cross_the_road", "front") in agents("My son was crossing the road when a van came.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "We were three cars stopped at the red light, mine was the second one.",
+    "We were three cars stopped at the red light, mine was the second one. Then the first car went.",
+])
+def test_we_were_n_cars_counts_the_ego_and_its_place_splits_the_rest(prompt):
+    assert sorted(a for a in agents(prompt) if a[2] != "ego") == [("car", "stop", "back"), ("car", "stop", "front")]
+
+
+def test_a_parked_vehicle_with_its_lights_flashing_stays_parked():
+    assert ("truck", "stop", "front_right") in agents(
+        "There was a tow truck parked up ahead on my right with all its lights flashing.")
+
+
+def test_what_the_narrator_thought_an_agent_did_is_not_what_it_did():
+    assert ("car", "go_straight", "road_of_straight") in agents(
+        "I was turning left. I thought the oncoming van was turning, so I started my turn, and it came straight "
+        "through.")
+    assert ("car", "turn_left", "road_of_straight") in agents("I was turning left. The oncoming van was turning too.")
+
+
+def test_it_inside_a_place_is_the_ego_only_when_the_ego_is_named():
+    assert agents("Give me a scene, ego in the right lane with a truck ahead of it.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+
+
+def test_an_ego_opening_its_clause_with_a_participle_takes_the_finite_verb():
+    assert agents("A robotaxi travelling behind the truck stopped for twenty seconds.") == [
+        ("car", "stop", "ego"), ("truck", "go_straight", "front")]
+
+
+def test_any_name_the_ego_was_given_names_it_again():
+    prompt = ("Outside the Elm Park gates, a driverless shuttle bus waited for a cyclist crossing from the right. "
+              "Once the cyclist had passed, the shuttle pulled away.")
+    assert [a for a in agents(prompt) if a[0] == "bus"] == [("bus", "go_straight", "ego"), ("bus", "stop", "ego")]
+
+
 def test_no_prompt_with_a_readable_agent_is_refused():
     for text in ("ego", "a bus", "pedestrian!!!", "cars", "The ego car is going straight"):
         assert lower(text).scenario.ego is not None

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import difflib
 import re
+import unicodedata
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -73,7 +74,24 @@ def _entries(name: str):
 
 
 def _normalize(text: str) -> str:
-    return re.sub(r"[-_/]", " ", text.lower()).strip()
+    return re.sub(r"[-_/]", " ", fold_letters(text.lower())).strip()
+
+
+LIGATURES = {"\u00df": "ss", "\u00e6": "ae", "\u0153": "oe", "\u00f8": "o", "\u0142": "l"}
+
+
+def fold_letters(text: str) -> str:
+    """Letters with marks read as their plain letters ("Fußgänger" is "fussganger", "coupé" is "coupe"):
+    words borrowed from other languages stay whole, not pieces split at each mark."""
+    if text.isascii():
+        return text
+    return "".join(_plain_letter(c) if c.isalpha() and not c.isascii() else c for c in text)
+
+
+def _plain_letter(c: str) -> str:
+    if c in LIGATURES:
+        return LIGATURES[c]
+    return "".join(x for x in unicodedata.normalize("NFKD", c) if not unicodedata.combining(x))
 
 
 @dataclass(frozen=True, eq=False)
@@ -189,6 +207,59 @@ ORACLE_KEYS = {"expected", "expected result", "expected behaviour", "expected be
                "links", "attachments", "version", "build", "seed"}  # what the test checks, not the scene
 
 
+SLUGLINE = re.compile(r"^[ \t]*(INT\.?[ \t]*/[ \t]*EXT|EXT\.?[ \t]*/[ \t]*INT|I/E|INT|EXT)\.[ \t]+(\S.*?)[ \t]*$", re.M)
+SCENE_TIMES = {"day": "daytime", "night": "night", "dawn": "dawn", "dusk": "dusk", "morning": "morning",
+               "evening": "evening", "sunrise": "sunrise", "sunset": "sunset", "afternoon": "afternoon",
+               "midday": "midday", "noon": "noon", "twilight": "twilight", "first light": "first light",
+               "magic hour": "golden hour", "golden hour": "golden hour", "late night": "late night"}
+SCENE_CONTINUITY = {"continuous", "later", "moments later", "a moment later", "same", "same time", "flashback",
+                    "present", "present day", "back to scene", "intercut"}
+SCREEN_DIRECTIONS = re.compile(r"^[ \t]*(?:(?:CUT|DISSOLVE|SMASH CUT|MATCH CUT) TO:|FADE (?:IN|OUT)[:.]?|FADE TO BLACK\.?"
+                               r"|THE END)[ \t]*$", re.M)
+
+
+def _screenplay(text: str) -> str:
+    """A screenplay's page: a scene heading ('EXT. HIGH STREET - NIGHT') says where and when, read like a title
+    for the road and the weather ('DAY' is daytime; 'CONTINUOUS' and an interior place say nothing); lines
+    indented far from the margin are a character's name and what they say, no description; transitions
+    ('CUT TO:') are no scene."""
+    if not SLUGLINE.search(text):
+        return text
+    out = []
+    for line in text.splitlines():
+        m = SLUGLINE.match(line)
+        if m is not None:
+            parts = [p.strip() for p in re.split(r"\s+[-\u2013\u2014]+\s+", m.group(2)) if p.strip()]
+            interior = m.group(1).startswith("INT") and "EXT" not in m.group(1)
+            said = [] if interior else parts[:1]
+            for part in parts[1:]:  # "NIGHT", "DAY - RAIN", "CONTINUOUS"
+                if part.lower() in SCENE_TIMES:
+                    said.append(f"in the {SCENE_TIMES[part.lower()]}")
+                elif part.lower() not in SCENE_CONTINUITY:
+                    said.append(part)
+            out.append("\u00a7 " + " , ".join(said) + "." if said else "")
+        elif SCREEN_DIRECTIONS.match(line) or re.match(r"^(?: {4,}|\t)\S", line):
+            out.append("")
+        else:
+            out.append(AT_THE_WHEEL_NAME.sub(_driver_named, line))
+    return "\n".join(out)
+
+
+DRIVING_VERBS = ("waits|turns|pulls|eases|slides|swings|brakes|stops|accelerates|drives|indicates|edges|creeps|noses"
+                 "|steers|merges|changes|moves|rolls|speeds|slows|reverses|overtakes|follows|halts|idles|signals")
+AT_THE_WHEEL_NAME = re.compile(rf"(?:(?<=^)|(?<=[.!?,] )|(?<=then )|(?<=and ))([A-Z][a-z]+|[A-Z]{{2,}})(?= (?:{DRIVING_VERBS})\b)")
+
+
+def _driver_named(m: re.Match) -> str:
+    """In a screenplay's action lines a character who drives ('Tom waits', 'Riley pulls straight ahead') is at
+    the wheel of the ego; a word the lexicon knows ('A BUS', 'Then') is no name."""
+    word = m.group(1).lower()
+    lex = lexicon()
+    if word in lex.vocabulary or word in lex.function_words or lex.base(word)[0] in lex.vocabulary:
+        return m.group(1)
+    return "the ego"
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
@@ -261,13 +332,71 @@ def _keyed_agents(text: str) -> str:
     return " ".join(out)
 
 
+NEWS_SOURCES = (r"(?:the |a |an |local |state |city |county |highway )*(?:police|officials?|witness(?:es)?|investigators?"
+                r"|authorities|deputies|officers?|troopers?|sheriff|spokes(?:person|man|woman)|company|operator|firm"
+                r"|bystanders?|residents?|parents?|onlookers?|passers ?by|reporters?|regulators?|prosecutors?"
+                r"|(?:the )?(?:company|police|city|county|transit|fire) (?:said|spokes(?:person|man|woman)|statement))")
+REPORTING = r"(?:said|say|says|told reporters|reported|report|reports|believe|believes|confirmed|confirm|stated|added)"
+ATTRIBUTION = re.compile(rf"(?:\baccording to [^.;,!?]*|(?:^|(?<=[,.;:!?] )|(?<=\band )|(?<=\bbut )|(?<=\bas ))(?<!\w){NEWS_SOURCES} {REPORTING}(?: that)?\b)")
+
+
+def _without_attribution(text: str) -> str:
+    """'Police say a patrol car swerved', ', according to a witness who filmed it,': a news report names who
+    told it; the teller is no agent of the scene."""
+    return ATTRIBUTION.sub(" ", text)
+
+
+BRACKETED = re.compile(r" ?\(([^()]{1,80})\)")
+PLACE_WORDS = {"behind", "of", "to", "beside", "past", "alongside", "near", "ahead", "following", "passing"}
+AT_THE_WHEEL = {"driving", "at the wheel", "behind the wheel", "driver", "drove", "older", "elderly", "young"}
+
+
+def _agent_kinds(words: list[str]) -> list[str]:
+    """The agent types the words name (a make, a model, a noun), longest phrase first."""
+    lex, out, k = lexicon(), [], 0
+    while k < len(words):
+        for n in (3, 2, 1):
+            span = words[k:k + n]
+            entry = lex.phrases.get(tuple(lex.base(w)[0] for w in span)) or lex.phrases.get(tuple(span))
+            if len(span) == n and entry is not None and entry[0] == "agents":
+                out.append(entry[1])
+                k += n
+                break
+        else:
+            k += 1
+    return out
+
+
+def _described_in_brackets(text: str) -> str:
+    """'the car behind me (gray Ford Escape)', 'a pickup (silver Honda Civic, older gentleman driving)': a
+    bracket after an agent that only says its make, colour or who drove it names no second agent."""
+    lex = lexicon()
+
+    def drop(m: re.Match) -> str:
+        words = re.findall(r"[a-z]+", m.string[max(0, m.start() - 40):m.start()])[-4:]
+        if len(words) >= 2 and words[-1] in ("me", "us", "you", "ego") and words[-2] in PLACE_WORDS:
+            words = words[:-2]  # "the car behind me (...)": the bracket is the car's
+        before = _agent_kinds(words)
+        inside = re.findall(r"[a-z]+", m.group(1))
+        kinds = [k for k in _agent_kinds(inside) if k not in ("pedestrian", "none")]  # the driver may be named
+        if not before or before[-1] in ("ego", "none") or not kinds or any(
+                k != before[-1] and not (before[-1] == "generic" and k == "car") for k in kinds):
+            return m.group(0)
+        verbs = [w for w in inside if w not in AT_THE_WHEEL and (lex.phrases.get((lex.base(w)[0],)) or ("",))[0]
+                 == "actions"]
+        return m.group(0) if verbs else ""
+
+    return BRACKETED.sub(drop, text)
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = _lines(text).lower().replace("\u2019", "'").replace("`", "'")
+    text = fold_letters(_lines(_screenplay(text)).lower().replace("\u2019", "'").replace("`", "'"))
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
     text = re.sub(r"\blet's\b", "let us", text)
+    text = _without_attribution(text)
     text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
     text = re.sub(r"'re\b", " are", text)
     text = re.sub(r"'ll\b", " will", text)
@@ -293,6 +422,10 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
                   lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
+    text = re.sub(r"\b(?:on|at|along|near) the (?:left|right|near|far|outer|inner) (?:edge|border|margin|rim) of the "
+                  r"(?:road|street|lane|carriageway|roadway)\b", " ", text)  # riding at the road's edge: its own lane
+    text = re.sub(r"\b([ap])\.\s?m\.?(?=\s|$|[,;!?)])", r"\1m", text)  # "after 10 p.m. and": no sentence end
+    text = re.sub(r"\b\d{1,2}/\d{1,2}(?:/\d{2,4})?\b", " ", text)  # "on 6/14", "2/9/24": a date, no time or count
     text = re.sub(r"\b(\d{1,2}):(\d{2})\b", r"\1 \2", text)  # a clock time, not a sentence end
     text = re.sub(r"\s[-\u2013\u2014]+\s|[\u2013\u2014]", " , ", text)  # a dash between words is a pause
     text = re.sub(r"\b4\s?x\s?4s?\b", "four by four", text)  # "a 4x4"
@@ -314,6 +447,13 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag
+    text = _described_in_brackets(text)
+    text = re.sub(r"\bwe (were|are|was) ((?:two|three|four|five|six|\d) (?:cars|vehicles))\b", r"\2 including us \1",
+                  text)  # "we were three cars stopped at the light": the ego one of them
+    text = re.sub(r"\b((?:two|three|four|five|six|seven|eight|\d) [a-z]+s) ?, ((?:the |our |my )?(?:ego|hero)(?: car| vehicle)?)"
+                  r" (?=[a-z]+ing\b)", r"\1 including \2 ,", text)  # "three cars, the ego bringing up the rear,"
+    text = re.sub(r"\bright (into|onto) (?=(?:the |my |our |his |her |its |their )?(?:back|rear|side|front|bumper)\b"
+                  r"|(?:me|us|him|her|it|them)\b)", r"\1 ", text)  # "rolled right into the back of me": no side
     text = re.sub(r" \((?:all |both )?(?:children|kids|pedestrians|people|adults|cars|vehicles|cyclists|pupils)\)",
                   "", text)  # "ped_1, ped_2, ped_3 (children)": what the listed ones are
     text = re.sub(r"\s*=\s*", " is ", text)  # "Actor_1 = wheelchair user", "ego=car"

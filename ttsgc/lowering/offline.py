@@ -181,6 +181,7 @@ def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
                      "indicating", "indicator", "indicators"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
+_EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
 
 def _overtaking_side(key: str) -> str:
@@ -262,7 +263,73 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
         category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
-    return _short_names(_turned_into(out))
+    return _driver_of(_names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out)))))
+
+
+STREET_WORDS = {"street", "st", "road", "rd", "avenue", "ave", "drive", "dr", "boulevard", "blvd", "lane", "ln",
+                "way", "highway", "hwy", "pike", "parkway", "pkwy", "place", "pl", "terrace", "crescent", "close",
+                "court", "ct", "square", "row", "hill", "bridge", "circle"}
+ORGANISATION_WORDS = {"company", "companies", "firm", "insurance", "insurer", "insurers", "depot", "dealership",
+                      "dealer", "agency", "office", "garage", "rental", "hire", "owner", "owners", "fleet",
+                      "operator", "service", "services", "industry", "union", "association"}
+
+
+AT_THE_CONTROLS = {"driver", "rider", "motorist", "operator", "cyclist"}
+
+
+def _driver_of(units: list[Unit]) -> list[Unit]:
+    """'the minivan driver', 'the scooter rider': the vehicle, named by who drives it; one agent."""
+    out: list[Unit] = []
+    for u in units:
+        prev = out[-1] if out else None
+        vehicle = lexicon().phrases.get(tuple(t.base for t in u.tokens[:-1])) if len(u.tokens) > 1 else None
+        if u.category == "agents" and vehicle is not None and vehicle[0] == "agents" and vehicle[1] == u.meaning \
+                and u.tokens[-1].base in AT_THE_CONTROLS and not u.tokens[-1].plural:
+            out.append(Unit(u.start, u.end, "agents", u.meaning, u.tokens[:-1]))  # "the van driver": the van
+            continue
+        if prev is not None and u.category == "agents" and u.tokens[-1].base in AT_THE_CONTROLS and \
+                len(u.tokens) == 1 and prev.category == "agents" and prev.meaning not in ("ego", "none", "pedestrian") \
+                and not prev.tokens[-1].possessive and not prev.tokens[-1].plural and \
+                prev.tokens[-1].sentence == u.tokens[0].sentence:
+            out[-1] = Unit(prev.start, u.end, "agents", prev.meaning, prev.tokens)  # read as the vehicle's noun
+            continue
+        out.append(u)
+    return out
+
+
+def _names_no_agent(units: list[Unit]) -> list[Unit]:
+    """'on Lincoln St', 'Ford Road': a make before a street word names a street; 'the cab company', 'his
+    insurance': an agent noun before an organisation names who owns or insures, not an agent on the road."""
+    out = list(units)
+    for k, u in enumerate(units[:-1]):
+        nxt = units[k + 1]
+        if u.category != "agents" or u.meaning in ("ego", "none") or nxt.category != "word" or \
+                nxt.tokens[0].sentence != u.tokens[-1].sentence or u.tokens[-1].plural:
+            continue
+        street = nxt.word in STREET_WORDS and not (k > 0 and units[k - 1].word in ("a", "an", "the", "this", "that"))
+        if street or nxt.word in ORGANISATION_WORDS:
+            out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
+    return out
+
+
+def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
+    """'Ego PKW turns right', 'behind the ego LKW', 'our hero's taxi': a vehicle noun right after the word ego
+    (or the ego's possessive) is the ego's own noun, as in 'the ego truck', not another agent."""
+    out: list[Unit] = []
+    for u in units:
+        prev = out[-1] if out else None
+        if prev is not None and u.category == "agents" and u.meaning in V.EGO_TYPES and \
+                (prev.tokens[-1].word == "ego" or prev.tokens[-1].possessive and prev.category == "agents"
+                 and prev.meaning == "ego") and \
+                prev.tokens[-1].sentence == u.tokens[0].sentence and not u.tokens[-1].plural:
+            if prev.category == "agents" and prev.meaning == "ego":
+                out[-1] = Unit(prev.start, u.end, "agents", "ego", prev.tokens + u.tokens)
+                continue
+            if prev.category == "positions":
+                out.append(Unit(u.start, u.end, "word", u.base, u.tokens))
+                continue
+        out.append(u)
+    return out
 
 
 CORRECTIONS = (("no", "wait"), ("wait", "no"), ("i", "mean"), ("or", "rather"), ("scratch", "that"),
@@ -1414,6 +1481,21 @@ def _what_if(tokens: list[Token], u: Unit) -> bool:
     return would_have and bool({"had", "were"} & set(clause))
 
 
+BELIEVING = {"thought", "believed", "assumed", "figured", "guessed", "presumed", "reckoned", "imagined", "expected"}
+
+
+def _believed(tokens: list[Token], t: Token) -> bool:
+    """A verb after 'I thought (that)' in the same clause: a belief of the narrator, not what happened."""
+    k = t.index - 1
+    while k > 0 and tokens[k].sentence == t.sentence and t.index - k <= 8:
+        if tokens[k].word in (",", "but", "so", "and", "then", "because", "until", "when"):
+            return False
+        if tokens[k].word in BELIEVING and tokens[k - 1].word in ("i", "we"):
+            return True
+        k -= 1
+    return False
+
+
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
     sentences after it describe the scene. 'Can someone explain this?', 'Why are people like this': the
@@ -1434,6 +1516,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             before.word in ("once", "when", "whenever", "if") and any(
                 x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
         return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
+    if u.category == "actions" and _believed(tokens, t):
+        return True  # "I thought the second one was turning": what the narrator wrongly expected
     if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)
                                                   or _standing_advice(tokens, t.sentence)):
         return True  # "once someone's on a zebra, you stop and you wait"; "you'd have had to stop"
@@ -1488,10 +1572,14 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
     """(type, is_ego) of an agent unit; the ego's type from its noun ('the ego truck')."""
     if u.meaning == "ego":
         words = [t.base for t in u.tokens]
-        for kind, nouns in (("truck", ("truck", "lorry", "hgv")), ("bus", ("bus", "coach")),
+        for kind, nouns in (("truck", ("truck", "lorry", "hgv", "robotruck")),
+                            ("bus", ("bus", "coach", "shuttle", "robobus")),
                             ("motorcycle", ("motorcycle", "motorbike"))):
             if set(nouns) & set(words):
                 return kind, True
+        own = lexicon().phrases.get(tuple(words[1:])) if words[:1] == ["ego"] else None
+        if own is not None and own[0] == "agents" and own[1] in V.EGO_TYPES:
+            return own[1], True  # "the ego LKW"
         return "car", True
     if u.meaning == "generic":
         return "car", False
@@ -1521,6 +1609,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             if u.word in VAGUE_COUNTS:
                 words.add("some")
             in_determiner = True
+        elif u.category == "number" and _model_year(u.word) and k + 1 == head - len(modifiers):
+            modifiers.append(u)  # "a 2017 Camry": the year it was built, not how many
         elif u.category == "number":
             value = read_number(u.word) or 0
             count = int(min(value, TOO_LARGE)) if count is None else count
@@ -1581,6 +1671,39 @@ def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
     return vague and of_the
 
 
+GENERIC_AFTER = {"for", "about", "like", "of"}  # "for people entering": people in general
+
+
+def _gets_out(units: list[Unit], head: int) -> bool:
+    """'the driver gets out', 'the rider climbs off': out of the vehicle, on foot."""
+    words = [t.word for u in units[head + 1:head + 4] for t in u.tokens]
+    verbs = {"get", "gets", "got", "climb", "climbs", "climbed", "step", "steps", "stepped", "jump", "jumps", "jumped",
+             "hop", "hops", "hopped"}
+    return any(w in verbs and nxt in ("out", "off") for w, nxt in zip(words, words[1:]))
+
+
+KIN = {"mother", "mom", "mum", "father", "dad", "wife", "husband", "son", "daughter", "kid", "child", "passenger",
+       "friend", "sister", "brother", "grandma", "grandpa", "granny", "grandmother", "grandfather", "baby",
+       "girlfriend", "boyfriend", "partner", "family", "toddler", "teen", "teenager", "parent", "boy", "girl"}
+
+
+def _on_foot_in_the_scene(units: list[Unit], head: int) -> bool:
+    """Whether the clause puts a person on the road, the pavement or a crossing ('my son was crossing')."""
+    return any(u.category == "actions" and u.meaning in ("cross", "walk") or u.category == "positions" and u.meaning
+               in ("sidewalk", "crosswalk", "in_road", "shoulder") or u.category == "road" and u.meaning in
+               V.CROSSWALK_OBJECTS for u in units[head + 1:])
+
+
+def _of_a_group(units: list[Unit], first: int) -> bool:
+    """'a whole crowd of people': the people are the crowd, counted as one; 'a bus full of people' are not."""
+    k = first - 1 if units[first].word == "of" else first - 2
+    return k >= 0 and (units[k].category in ("agents", "numbers") or units[k].word in GROUP_NOUNS)
+
+
+def _model_year(word: str) -> bool:
+    return len(word) == 4 and word.isdigit() and 1950 <= int(word) <= 2099
+
+
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
     u = units[head]
     r.mark(u)
@@ -1597,11 +1720,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             r.entities.append(ego)
         elif kind != "car" and ego.type == "car":
             ego.type = kind
+        ego.aliases.add(u.base)  # every name the ego is given ("an automated shuttle bus ... the shuttle")
         return NounPhrase(ego, head, first)
     if u.meaning == "none":  # "stopped with flashing lights": no agent, and no claim on the verb before it
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
+    if words & {"my", "our", "his", "her", "their"} and u.tokens[-1].base in KIN and \
+            not _on_foot_in_the_scene(units, head):
+        return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent
+    if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
+            not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
+            and not _of_a_group(units, first):
+        return NounPhrase(None, head, first)  # "a yield sign for people entering", "you hear about people doing that"
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
@@ -1643,6 +1774,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # driver of the HGV": says who the man is; he is not the HGV
     if predicate and u.base in ("driver", "rider", "motorist") and not plural:
         return NounPhrase(None, head, first)
+    if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural and \
+            _gets_out(units, head):  # "the driver gets out and walks across": a person on foot now
+        kind, definite = "pedestrian", False
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
         driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
@@ -1660,9 +1794,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(found[0], head, first, plural=True, group=found)
         ego = next((e for e in r.entities if e.is_ego), None)
         nxt = units[head + 1] if head + 1 < len(units) else None
-        if ego is not None and not plural and kind == ego.type and "other" not in words and u.base in (
-                "car", "vehicle", "truck", "bus") and (nxt is None or nxt.category not in ("positions", "word")
-                                                       or nxt.word in AUXILIARIES or u.tokens[-1].possessive):
+        if ego is not None and not plural and kind == ego.type and "other" not in words and (u.base in (
+                "car", "vehicle", "truck", "bus") or _names_the_ego_again(r, ego, u.base)) and (
+                nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
+                or u.tokens[-1].possessive or _past_tense_verb(nxt)):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
         if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
@@ -1734,6 +1869,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
 
 
+def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
+    """'A driverless taxi ... the taxi': the ego's own noun, said again, is the ego, unless another agent
+    was named by it too."""
+    return any(noun in name.split() for name in ego.aliases | {ego.head}) and not any(
+        not e.is_ego and (e.head.split()[-1] == noun or noun in e.aliases) for e in r.entities)
+
+
+def _past_tense_verb(u: Unit) -> bool:
+    """A word the lexicon does not know, in the past tense ('the car behaved'): the verb after a subject."""
+    return u.category == "word" and u.word.endswith("ed") and len(u.word) > 4 and \
+        u.word not in lexicon().function_words
+
+
 OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side_left": {"side_right"},
                    "side_right": {"side_left"}, "from_left": {"from_right", "road_right"},
                    "from_right": {"from_left", "road_left"}, "road_left": {"road_right", "from_right"},
@@ -1792,7 +1940,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     if head and head not in GENERAL_NOUNS and not both and not plural:
         same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"
-                or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN]  # "a cyclist ... the bicycle": the same
+                or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN  # "a cyclist ... the bicycle": the same
+                or head.split()[-1] in GROUP_NOUNS and e.count > 1]  # "a crowd of fans ... the crowd": them
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool:
         return []
@@ -1861,11 +2010,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         else:
             e.features.add(u.meaning)
     elif u.category == "actions" and u.meaning == "same":
-        model = next((x for x in reversed(r.entities) if x is not e and not x.is_ego and x.actions), None)
+        acted = [x for x in r.entities if x is not e and x.actions and x.parent is not e and e.parent is not x]
+        model = max(acted, key=lambda x: max(a[3] for a in x.actions), default=None)  # the last one who acted
         if model is not None:  # "then a second taxi did exactly the same thing": its manoeuvre, from its place
             e.actions += [(stage, strength) + a[2:3] + (r.tick(),) + a[4:] for a in model.actions]
-            e.features |= model.features
-            e.relative_to = e.relative_to or model.relative_to
+            if not model.is_ego:  # "the ego waits; two cars behind it do the same": they wait, where they are
+                e.features |= model.features
+                e.relative_to = e.relative_to or model.relative_to
             r.notes.append(f"inferred: '{e.head}' does what '{model.head}' did")
     elif u.category == "actions":
         direction = None
@@ -1879,6 +2030,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
+        if e.is_ego and action == "cut_in" and not direction and u.tokens[0].base in ("swerve", "jerk", "veer"):
+            action = "move"  # "I slammed on the brakes and swerved": a jerk of the wheel, no lane named
         if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
             action = "lane_" + direction
         if action == "move" and not e.is_ego and u.tokens[0].base in STEERING and clause_units is not None and \
@@ -1892,9 +2045,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 set(u.base.split()) & OVERTAKING or k + 1 < len(clause_units)
                 and clause_units[k + 1].word in ("around", "round", "past")):  # "go around it on the left"
             side = direction or _direction_after(r, clause_units, k) or next(  # "went around on the right": read once
-                (x.meaning[5:] for x in clause_units[k + 1:k + 6] if x.category == "positions"
+                (x.meaning[5:] for x in clause_units[k + 1:k + 8] if x.category == "positions"
                  and x.meaning in ("side_left", "side_right")), None)
-            if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round"):
+            circulating = any(t.word in ("roundabout", "rotary", "circle") for x in clause_units for t in x.tokens) \
+                and not (k + 2 < len(clause_units) and (clause_units[k + 2].category == "agents" or
+                                                       clause_units[k + 2].word in ("it", "him", "her", "them")))
+            if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round") and \
+                    not circulating:  # ("in the roundabout going around": round it, not round someone)
                 side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
@@ -2062,7 +2219,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i, u in enumerate(units):
         if u.word in ORDINAL_MEMBERS and i > 0 and units[i - 1].word == "the" and not (
                 i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number")) and not any(
-                np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions"):
+                np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions") \
+                and not (i > 2 and units[i - 2].word in COPULAS and units[i - 3].word in ("mine", "i", "we", "ours")):
+            # ("mine was the second one": the ego's place among them, no member of its own)
             member = _member(r, recent)  # "two motorbikes, the first on the left and the second on the right"
             if member is not None:
                 r.mark(u)
@@ -2093,6 +2252,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i, introduced=True))
                 continue
+            if i > 3 and units[i - 3].word in COPULAS and units[i - 4].word in ("mine", "i", "we", "ours"):
+                continue  # "mine was the second one": the ego's place among them, no member of its own
             member = _member(r, recent)  # "two cars, one in front and one behind"
             if member is not None:
                 r.mark(u)
@@ -2171,12 +2332,15 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 for u in units[before[0].index + 1:before[1].first]) and any(
                 u.category == "actions" for u in units[before[0].index + 1:before[1].first]):
             before = before[:1]  # "the AV handle(s) a cyclist swerving...": the first is the subject, then its object
+        inverted = _inverted_subject(units, phrases, first_verb) if not before and verbs else None
+        if inverted is not None:  # "from the right comes a bus": the place first, then the verb, then who
+            before = [inverted]
         for np in before:
             subject += np.group or [np.entity]
         joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
         if pending and len(before) >= 2 and joined and verbs:  # "an ambulance, a police car and a van approach"
             subject = list(pending) + subject
-        objects = [np for np in phrases if np.index > first_verb or _is_reference(units, np)]
+        objects = [np for np in phrases if (np.index > first_verb or _is_reference(units, np)) and np is not inverted]
     subject = [e for e in subject if e is not None]
     subject = [e for e in subject if not any(x.parent is e for x in subject)]  # "of the two buses, the first": it
     if not subject and verbs and any(u.category == "agents" and u.base in ("everyone", "everybody")
@@ -2261,7 +2425,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 if side:  # "the lane to its right is moved into by the ego"
                     e.actions.append((stage, strength, ACTION_RANK["lane_left"], r.tick(), "lane_" + side, side))
         _relational(units[i], units, i, subject, objects if by is not None else
-                    [p for p in phrases if p.index > i])
+                    [p for p in phrases if p.index > i and p.entity not in subject])
+        if units[i].meaning == "stop" and any(e.is_ego for e in made) and \
+                {t.base for t in units[i].tokens} & {"stop", "halt", "standstill"}:  # to stop, not just to brake
+            causers = subject if units[0].word not in CAUSATIVES else previous_subject
+            for e in causers:  # "a patrol car swerved in front of the taxi, forcing it to stop": it blocks
+                if not e.is_ego and any(a[0] == stage and a[4] == "cut_in" for a in e.actions):
+                    e.actions.append((stage, strength, ACTION_RANK["block"], r.tick(), "block", None))
     if by is not None and not verbs:  # "the road it turns into is occupied by a parked truck"
         pass
     _queue_ahead(r, units, phrases, subject, stage)
@@ -2352,6 +2522,31 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             recent.remove(e)
         recent.append(e)
     return subject
+
+
+INVERTING_VERBS = {"come", "follow", "stand", "sit", "wait", "drive", "go", "ride", "walk", "run", "stop", "park",
+                   "appear", "emerge", "approach", "travel", "move", "roll", "hold", "halt", "cycle", "drive up"}
+PLACE_PREPOSITIONS = {"from", "behind", "on", "in", "at", "into", "along", "across", "over", "next", "beside",
+                      "ahead", "out", "down", "up", "opposite", "directly", "right", "just", "then", "now", "there"}
+
+
+def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -> NounPhrase | None:
+    """Locative inversion, common in English written by Germans and in stage directions: 'From the opposite
+    direction comes a PKW', 'Behind the ego follows a small car'. A clause that opens with a place, has no
+    subject before its verb, and a verb of coming or standing in a finite form (not an order: 'follow a car')
+    has as subject the new noun phrase right after the verb."""
+    if verb == 0 or not (units[0].category == "positions" or units[0].word in PLACE_PREPOSITIONS):
+        return None
+    v = units[verb]
+    if v.tokens[0].base not in INVERTING_VERBS or v.tokens[0].word == v.tokens[0].base:
+        return None
+    after = next((np for np in phrases if np.index > verb), None)
+    if after is None or not after.introduced or after.entity is None or after.entity.is_ego:
+        return None
+    if any(u.category not in ("behaviours", "word") or u.word not in lexicon().function_words | {"also"}
+           and u.category != "behaviours" for u in units[verb + 1:after.first]):
+        return None
+    return after
 
 
 def _ego_turn_in_a_place(r: _Reader, units: list[Unit], stage: int) -> None:
@@ -2480,16 +2675,32 @@ def _place_in_queue(r: _Reader) -> None:
     waiting in a queue or at a red light, doing nothing said, waits too."""
     words = [t.word for t in r.tokens]
     ego = next((e for e in r.entities if e.is_ego), None)
-    for i, w in enumerate(words[:-2]):
+    for i, w in enumerate(words[:-1]):
         n = ORDINALS.get(w)
         rest = words[i + 1:i + 4]
-        if not n or rest[0] not in ("in", "car", "vehicle") or not {"queue", "line"} & set(rest):
+        with_ego = next((e for e in r.entities if e.includes_ego and e.count > 0 and not e.is_ego), None)
+        mine = rest[:1] == ["one"] and i > 1 and words[i - 1] == "the" and words[i - 2] in COPULAS and \
+            with_ego is not None  # "we were three cars ..., mine was the second one"
+        if not n or not mine and (rest[0] not in ("in", "car", "vehicle") or not {"queue", "line"} & set(rest)):
             continue
         ego = ego or _ego_entity(r, 0)
         if not any(a[4] == "stop" for a in ego.actions):
             ego.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
-        queued = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and not e.features & {
-            "behind", "side_left", "side_right", "road_straight", "toward", "road_left", "road_right"}]
+        members = [e for e in r.entities if with_ego is not None and e.parent is with_ego]  # "the first car"
+        if with_ego is not None and n - 1 < with_ego.count + len(members) and "ahead" not in with_ego.features:
+            still_ahead = n - 1 - len(members)  # "three cars including us, we were second": one ahead, one behind
+            if still_ahead <= 0:
+                with_ego.features.add("behind")
+            else:
+                behind = Entity(len(r.entities), with_ego.type, False, with_ego.stage,
+                                count=with_ego.count - still_ahead, head=with_ego.head,
+                                features=set(with_ego.features) | {"behind"}, actions=list(with_ego.actions),
+                                behavior=with_ego.behavior)
+                with_ego.count = still_ahead
+                r.entities.append(behind)
+        queued = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and e.count > 0 and
+                  not e.features & {"behind", "side_left", "side_right", "road_straight", "toward", "road_left",
+                                    "road_right"}]
         for e in queued:
             e.features.add("ahead")  # "fourth in line behind a bus": the bus is one of those ahead
         ahead = sum(e.count for e in queued)
@@ -2686,6 +2897,19 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
     out: list[NounPhrase] = []
     for np in phrases:
         prev = out[-1] if out else None
+        if prev is not None and prev.entity is not None and np.entity is not None and \
+                prev.entity.is_ego != np.entity.is_ego and _set_off(r.tokens, units, prev, np):
+            ego, other = (prev.entity, np.entity) if prev.entity.is_ego else (np.entity, prev.entity)
+            if not (np.introduced or prev.introduced) or other.count > 1:
+                out.append(np)
+                continue
+            if other.type in V.EGO_TYPES and other.type != "car":
+                ego.type = other.type  # "the ego, a city bus,", "Alex's delivery van -- the ego --"
+            if other in r.entities:
+                r.entities.remove(other)
+            if np.entity is ego:
+                out[-1] = np
+            continue
         if prev is not None and np.entity is not None and np.entity.is_ego and prev.entity is not None and \
                 prev.entity.label and not prev.entity.is_ego and \
                 all(u.category == "comma" for u in units[prev.index + 1: np.first]):
@@ -2779,6 +3003,26 @@ def _named_make(between: list[Unit], kind: str) -> bool:
         u.category == "agents" and u.meaning == kind for u in words)
 
 
+def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounPhrase) -> bool:
+    """'the ego car, a beat-up Volvo, crawls', 'the hatchback -- our ego car -- waits': a noun phrase set off
+    by commas (dashes and brackets read as commas) right after another says what the first is, unless a list
+    goes on after it ('the ego, a van, and a bus')."""
+    if prev.index + 2 > np.first or units[prev.index + 1].category != "comma" or \
+            units[prev.index + 2].category != "word":
+        return False  # "ego, oncoming SUV (going straight), pedestrian": a bare noun after a comma is another
+    if any(u.category not in ("word", "behaviours", "number", "numbers") or u.word in CLAUSE_WORDS | AUXILIARIES
+           for u in units[prev.index + 2:np.first]):
+        return False
+    after = np.index + 1  # the closing comma, then the sentence ends or goes on with no further list item
+    if after >= len(units) or units[after].category != "comma":
+        return False
+    k = units[after].start + 1
+    if k >= len(tokens) or tokens[k].sentence != tokens[k - 1].sentence:
+        return True
+    entry = lexicon().phrases.get((tokens[k].base,)) or lexicon().phrases.get((tokens[k].word,))
+    return not (tokens[k].word in ("and", "or", "a", "an", "the") or entry is not None and entry[0] == "agents")
+
+
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
     """Two noun phrases that name one agent ("a learner driver in a hatchback", "the vehicle behind me, a
     white Ford Transit,"): the first takes the second's type and what was said of it, and the second goes."""
@@ -2835,7 +3079,9 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         # "a coach started indicating ... so he could merge": the driver of the last vehicle
         return people[-1] if people else drivers[-1] if drivers else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
-                           (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind")))
+                           (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind"))
+                           or units[i - 1].word in CAUSATIVES and i + 1 < len(units) and units[i + 1].word == "to")
+    # "forcing it to stop": whom it forced
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
         things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
         if not things and previous_subject:
@@ -2847,6 +3093,8 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return recent[-1] if recent else None
     owner = [np.entity for np in phrases if np.index < i and np.entity is not None]  # whom "behind it" places
     subject = owner[-1] if owner else (previous_subject or [None])[0]
+    if not owner and any(np.index > i and np.introduced for np in phrases):
+        subject = None  # "a PKW comes, and directly behind it a second PKW": the place first, then whom it places
     if len(previous_subject) == 1 and previous_subject[0].is_ego and previous_subject[0] is not subject and \
             not any(np.index < i and np.entity is not None and not np.entity.is_ego and np.entity is not subject
                     for np in phrases):
@@ -2857,12 +3105,17 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     return None
 
 
+SPEAKERS = {"i", "me", "we", "us", "you", "my", "our", "your"}
+
+
 def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
-    """'it' inside a place phrase ('a biker behind it'): the last agent named before, not the one placed."""
+    """'it' inside a place phrase ('a biker behind it'): the last agent named before, not the one placed; when
+    that is the ego ('the ego waits; two cars behind it'), the place is the ego's, as every place is."""
     before = [np.entity for np in phrases if np.index < i and np.entity is not None]
     for e in reversed(recent + before):
-        if e not in owners and not e.is_ego:
-            return e
+        if e in owners or e.is_ego and _EGO_SPEAKS.get():
+            continue  # an ego the text calls "I" or "we" is never "it"
+        return None if e.is_ego else e
     return None
 
 
@@ -2891,8 +3144,10 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     participle = word.endswith("ing") or word.endswith("ed") or word in (
         "parked", "stopped", "stood", "stuck", "broken", "stationary", "idle", "motionless", "immobile") or light
     # "encounters a POV stationary in its lane": a state said of the object
-    if np.entity is not None and np.entity.is_ego and not light:
-        return None  # "the lead car ahead of the hero changed lane": the ego takes no participle
+    if np.entity is not None and np.entity.is_ego and not light and not (
+            i == k + 1 and word.endswith("ing") and later and np is phrases[0] and np.first == 0):
+        return None  # "the lead car ahead of the hero changed lane": the ego takes no participle, unless it opens
+        # the clause with it ("a robotaxi travelling behind the truck stopped": the robotaxi stopped)
     if np.entity is not None and not aux and participle and (later or (np.entity not in subject)):
         return np
     return None
@@ -3093,6 +3348,11 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     if not chosen:
         return None, None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
+    turned = next((a for a in chosen if a[4] == "turn" and a[1] == best[1] and a[3] > best[3]), None)
+    if best[4] == "cut_in" and turned is not None and e.features & {"road_left", "road_right", "from_left",
+                                                                    "from_right"}:
+        side = "left" if e.features & {"road_left", "from_left"} else "right"  # into the ego's way: towards it
+        return "turn", turned[5] or side  # "pulled out of a side road on my left and turned into my lane": a turn
     if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
         return ("stop" if e.is_ego else "block"), None  # "swerves into its path and stops"; the ego pulls in and stops
     if best[4] == "cut_in" and {"ahead", "stops_abruptly"} <= e.features and any(
@@ -3290,6 +3550,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         raise LoweringError("the prompt is empty")
     r = _Reader(tokens, _units(tokens))
     _KEEPS_LEFT.set(_drives_on_the_left(tokens))
+    ego_words = [u.tokens for u in r.units if u.category == "agents" and u.meaning == "ego"]
+    _EGO_SPEAKS.set(bool(ego_words) and all(len(ts) == 1 and ts[0].word in SPEAKERS for ts in ego_words))
     r.units = _retract_corrections(r)
     UNSPECIFIED.draw_for(seed)
     road = _road(r)
