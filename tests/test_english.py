@@ -2514,3 +2514,26 @@ def test_a_road_feature_wondered_about_then_taken_back_is_denied():
 
 def test_no_interaction_in_a_log_is_no_intersection():
     assert road("Run 4. Cyclist on the right kerb throughout, no interaction.").junction is None
+# -- exam questions, catalogue entries, user stories and chat requests -------------------------------------
+
+def test_the_answers_of_a_multiple_choice_question_are_not_the_scene():
+    stem = "You are waiting at a red light. A van stops behind you. What should you do?\n\n"
+    for answers in ("A  Reverse into the van\nB  Wait for green\nC  Sound your horn\n",
+                    "(a) reverse into the van\n(b) turn left at once\n",
+                    "Mark one answer\n[ ] Reverse into the van\n[ ] Turn left at once\n"):
+        assert agents(stem + answers) == [("car", "stop", "back"), ("car", "stop", "ego")]
+
+
+def test_a_line_that_only_starts_with_a_letter_is_still_read():
+    found = agents("Is this a good test?\nA bus turns left from the road on the right.\n")
+    assert ("bus", "turn_left", "road_of_right_turn") in found
+
+
+def test_a_question_about_what_one_should_do_names_no_action():
+    assert agents("You are driving behind a cyclist on a narrow road. Where should you stop?") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_a_person_waiting_to_cross_still_stands_on_the_pavement():
+    assert ("pedestrian", "on_the_sidewalk") in [
+        (a.type, a.action) for a in lower("An old man stands on the pavement, waiting to cross.").scenario.agents()]

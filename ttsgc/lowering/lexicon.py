@@ -258,6 +258,29 @@ def _driver_named(m: re.Match) -> str:
     if word in lex.vocabulary or word in lex.function_words or lex.base(word)[0] in lex.vocabulary:
         return m.group(1)
     return "the ego"
+CHOICE_BOX = re.compile(r"\s*(?:\[\s*[xX\u2713]?\s*\]|[\u2610\u2611\u2612])")  # "[ ] Wave them across"
+CHOICE_MARK = re.compile(r"\s*\(?([A-Fa-f]|[1-6])(?:[.)]\s*|\s{2,}|\s+(?=[A-Z]))")  # "A. You do", "(b) Stop", "1) A, B"
+CHOICE_INSTRUCTION = re.compile(r"\s*(?:mark|select|choose|tick|pick|circle)\s+(?:one|two|three|all|the|an?)\b"
+                                r"[^.?!]*\banswers?\b", re.I)  # "Mark one answer"
+
+
+def _without_answer_choices(lines: list[str]) -> list[str]:
+    """A multiple-choice question's answers ('A  Move off quickly', '(b) On the left', '[ ] Sound your horn')
+    are what a reader might do, not the scene: after a line that asks, lines marked A, B, C... (or 1, 2, 3, or
+    boxes) in order are left out, with the 'Mark one answer' line."""
+    out, asked, expected = [], False, 0
+    for line in lines:
+        if asked and line.strip():
+            if CHOICE_INSTRUCTION.match(line) or CHOICE_BOX.match(line):
+                continue
+            m = CHOICE_MARK.match(line)
+            if m and "abcdef123456".index(m.group(1).lower()) % 6 == expected:
+                expected += 1
+                continue
+        out.append(line)
+        if line.rstrip().endswith("?"):
+            asked, expected = True, 0
+    return out
 
 
 def _lines(text: str) -> str:
@@ -267,7 +290,7 @@ def _lines(text: str) -> str:
     if "\n" not in text.strip():
         return _keyed_agents(text)
     out = []
-    lines = text.strip().splitlines()
+    lines = _without_answer_choices(text.strip().splitlines())
     staged = False
     for k, line in enumerate(lines):
         if not line.strip():

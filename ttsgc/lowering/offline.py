@@ -1395,6 +1395,7 @@ ANYONE = {"someone", "somebody", "anyone", "anybody", "people", "everyone", "eve
 
 ASKING_MODALS = {"should", "do", "does", "would", "could", "am", "was", "did", "have", "must", "can", "shall",
                  "is", "are"}
+DEONTIC = {"should", "must", "ought"}
 ASKING_FOR_A_SCENE = {"scene", "scenario", "simulation", "simulate", "create", "generate", "make", "build", "set",
                       "spawn", "test", "case", "have", "get"}
 
@@ -1403,7 +1404,11 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
     """'Should I have been able to stop?', 'Who should give way?', 'Do I have to wait?': a question about what
     ought to happen is no account of what did (a request for a scene is no such question)."""
     words = [t.word for t in tokens if t.sentence == sentence]
-    if len(words) < 2 or set(words) & ASKING_FOR_A_SCENE - {"have"} or "you" in words[:3]:
+    if len(words) < 2 or set(words) & ASKING_FOR_A_SCENE - {"have"}:
+        return False
+    if (words[0] in QUESTION_WORDS or words[:2] == ["in", "which"]) and set(words) & DEONTIC:
+        return True  # "Where should you stop?", "In which order should the cars proceed?": an exam's question
+    if "you" in words[:3]:
         return False
     if any(w == "one" and nxt in ("where", "with", "in", "that", "when") for w, nxt in zip(words, words[1:])):
         return False  # "could we do one where the ego turns left?": a scene asked for
@@ -2038,6 +2043,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 k is not None and any(x.category == "positions" and x.meaning == "toward"
                                       for x in clause_units[k + 1:k + 3]):
             action = "cut_in"  # "a lorry on our left began to drift towards us": over into the ego's lane
+        if action == "cross" and e.type == "pedestrian" and clause_units is not None and k is not None and k >= 2 \
+                and clause_units[k - 1].word == "to" and clause_units[k - 2].category == "actions" and \
+                clause_units[k - 2].meaning == "stop":
+            e.features.add("waits_to_cross")  # "standing on the pavement, waiting to cross": the crossing is to come
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
                 any("lane" in x.base for x in clause_units[k + 1:k + 5]):
             return  # "waiting for the light to change"
@@ -3514,8 +3523,14 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "stop":
         if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder")):
             return "on_the_sidewalk"  # standing on the pavement or the verge
+        if e.type == "pedestrian" and any(a[4] == "walk" for a in e.actions) and not e.features & {"crosswalk",
+                                                                                                 "in_road"}:
+            return "on_the_sidewalk"  # "standing on the pavement, waiting": where it waits is the pavement
         return "stop"
     if action == "cross":
+        if "waits_to_cross" in e.features and e.type == "pedestrian" and (
+                "on_sidewalk" in e.features or e.road_type == "sidewalk" or any(a[4] == "walk" for a in e.actions)):
+            return "on_the_sidewalk"  # "standing on the pavement, waiting to cross": still on the pavement
         return "cross_the_road" if e.type in V.VULNERABLE_TYPES else "go_straight"
     if action == "walk":
         if e.type != "pedestrian":
