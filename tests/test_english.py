@@ -2537,3 +2537,28 @@ def test_a_question_about_what_one_should_do_names_no_action():
 def test_a_person_waiting_to_cross_still_stands_on_the_pavement():
     assert ("pedestrian", "on_the_sidewalk") in [
         (a.type, a.action) for a in lower("An old man stands on the pavement, waiting to cross.").scenario.agents()]
+
+
+def test_a_user_storys_frame_names_neither_an_agent_nor_the_weather():
+    story = ("Story: cyclist crossing\nAs a bus fleet engineer I want a cyclist to cross in front of the ego, "
+             "so that the braking logic can be validated.")
+    scene = lower(story).scenario
+    assert scene.weather is None  # "story" is no misspelt "stormy"
+    assert sorted((a.type, a.action, a.relative_to_ego or "ego") for a in scene.agents()) == [
+        ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]
+
+
+def test_the_purpose_of_a_test_is_cut_only_where_a_story_asks_for_it():
+    assert ("pedestrian", "cross_the_road", "front") not in agents(
+        "As a tester I want the ego to drive past a parked van so that pedestrian detection can be checked.")
+    assert ("truck", "stop", "front") in agents(
+        "A truck stops in front so that the ego can overtake it.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I want a van to cut in from the left just ahead of the ego.", ("car", "change_lane_to_right", "front_left")),
+    ("We need a lorry to stop ahead of us.", ("truck", "stop", "front")),
+])
+def test_the_one_wanted_to_act_is_the_one_that_acts(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and ("car", "go_straight", "ego") in found

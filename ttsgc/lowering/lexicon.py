@@ -190,7 +190,7 @@ SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 
 KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/_-]{0,30}?)\s*[:|]\s*(.*)$")
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
-              "description", "goal", "purpose", "report", "note"}
+              "description", "goal", "purpose", "report", "note", "story", "epic", "feature"}
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
@@ -410,6 +410,19 @@ def _described_in_brackets(text: str) -> str:
         return m.group(0) if verbs else ""
 
     return BRACKETED.sub(drop, text)
+STORY_ROLE = re.compile(r"\bas an? [a-z0-9 /&'-]{1,60}?[,\s]+(?=(?:i|we)\s+(?:want|need|would like|wish)\b)")
+TEST_PURPOSE = re.compile(r"[,\s]*\bso(?: that)? (?:(?:we|i|you|the team|engineers|testers) (?:can|could)\b|"
+                          r"[a-z' -]{1,40}? (?:can|could) be (?:tested|checked|validated|verified|evaluated|"
+                          r"measured|assessed|exercised|demonstrated|confirmed)\b)[^.;!?\n]*")
+
+
+def _without_story_frame(text: str) -> str:
+    """A user story's frame says who asks and why, not what happens: 'As a safety engineer I want a scene
+    where ... so that we can check the braking' is the scene between the two ('a scene where ...')."""
+    framed = STORY_ROLE.sub("", text)
+    if framed == text and not re.search(r"\b(?:i|we) (?:want|need|would like)\b", text):
+        return text
+    return TEST_PURPOSE.sub("", framed)
 
 
 def tokenize(text: str) -> list[Token]:
@@ -432,6 +445,7 @@ def tokenize(text: str) -> list[Token]:
                   r"generate|give|show|simulate|set|write|do|add|put|design|produce|model|mock|spin|whip|knock|"
                   r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
     text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
+    text = _without_story_frame(text)
     text = re.sub(r"\blv\b", "lead vehicle", text)  # "LV decelerates": the lead vehicle
     text = re.sub(r"\br\d{1,4}\b", " ", text)  # "R18 - T-junction": a run number, not a side
     text = re.sub(r"\b(\d{1,2})(?:st|nd|rd|th)\b",

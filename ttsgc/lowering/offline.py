@@ -1930,6 +1930,7 @@ GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclis
                  "people", "child", "kid", "man", "woman", "guy"}
 
 
+WANTING = {"want", "need", "like", "expect", "wish", "prefer"}  # "I want a car to cut in": the car cuts in
 PERCEIVING = {"see", "saw", "seen", "observe", "notice", "watch", "spot", "witness", "hear", "heard", "noticed",
               "observed", "spotted", "watched", "witnessed"}
 RIDDEN = {"bike", "bicycle", "pushbike", "push bike", "pedal cycle", "motorbike", "motorcycle", "moped", "scooter"}
@@ -2334,8 +2335,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                   and not _is_reference(units, np)]
         seen = len(before) >= 2 and before[0].entity is not None and before[0].entity.is_ego and any(
                 u.tokens[0].base in PERCEIVING for u in units[before[0].index + 1:before[1].first])
-        if seen:
-            before = before[1:2]  # "I saw a van pull out": what was seen does what follows
+        wanted = len(before) >= 2 and before[0].entity.is_ego and 0 < first_verb < len(units) and \
+            units[first_verb - 1].word == "to" and any(u.tokens[0].base in WANTING
+                                                       for u in units[before[0].index + 1:before[1].first])
+        if seen or wanted:
+            before = before[1:2]  # "I saw a van pull out", "I want a car to cut in": the one seen or wanted acts
         elif len(before) >= 2 and verbs and not any(
                 u.category == "comma" or u.word in ("and", "or", "with", "plus", "both", "&")
                 for u in units[before[0].index + 1:before[1].first]) and any(
