@@ -2562,3 +2562,18 @@ def test_the_purpose_of_a_test_is_cut_only_where_a_story_asks_for_it():
 def test_the_one_wanted_to_act_is_the_one_that_acts(prompt, expected):
     found = agents(prompt)
     assert expected in found and ("car", "go_straight", "ego") in found
+
+
+def test_a_key_whose_value_starts_with_a_verb_is_that_verbs_subject():
+    assert agents("Ego: follows lorry. Lorry: stationary later on.") == [
+        ("car", "go_straight", "ego"), ("truck", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("EV: turns left at the crossroads\nTV: car from the opposite approach, straight on\n",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]),
+    ("An EV with its sirens on comes up behind us.", [("ambulance", "go_straight", "back"),
+                                                     ("car", "go_straight", "ego")]),
+])
+def test_ev_is_the_ego_vehicle_unless_there_is_an_emergency(prompt, expected):
+    assert agents(prompt) == expected

@@ -283,6 +283,21 @@ def _without_answer_choices(lines: list[str]) -> list[str]:
     return out
 
 
+def _linking(value: str) -> str:
+    """What joins a key to its value: 'Van: stopped, front-right' is 'Van is stopped, front-right', but
+    'EV: turns right' is 'EV turns right' (a value that starts with a verb of its own)."""
+    first = value.split()[0].lower() if value.split() else ""
+    if first in ("is", "are", "has", "does", "keeps") or first.endswith("s") and not first.endswith("ss") and \
+            lexicon().base(first)[1] and lexicon().base(first)[0] in _verbs():
+        return " "
+    return " is "
+
+
+@lru_cache(maxsize=1)
+def _verbs() -> frozenset:
+    return frozenset(words[0] for words, (category, _) in lexicon().phrases.items() if category == "actions")
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
@@ -320,7 +335,7 @@ def _lines(text: str) -> str:
         elif not value:
             continue
         else:
-            out.append(f"{key} is {value}.")
+            out.append(f"{key}{_linking(value)}{value}.")
     return " ".join(out)
 
 
@@ -349,7 +364,8 @@ def _keyed_agents(text: str) -> str:
     for piece in pieces:
         m = KEY_LINE.match(piece)
         if m and _names_agent(m.group(1)) and m.group(2).strip():
-            out.append(f"{m.group(1).strip()} is {m.group(2).strip().rstrip('.;')}.")
+            value = m.group(2).strip().rstrip('.;')
+            out.append(f"{m.group(1).strip()}{_linking(value)}{value}.")
         else:
             out.append(piece)
     return " ".join(out)

@@ -178,6 +178,19 @@ def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
         t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
 
 
+EMERGENCY_SIGNS = {"siren", "sirens", "blue", "blues", "emergency", "ambulance", "paramedic", "paramedics", "fire",
+                   "police", "beacon", "beacons", "responding"}
+
+
+def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
+    """Scenario catalogues write EV for the ego vehicle ('EV: turns right', 'in the EV lane'); elsewhere EV is an
+    emergency vehicle, which comes with its sirens or blue lights. EV is the ego where nothing else names the
+    ego and nothing speaks of an emergency."""
+    return any(t.word == "ev" and not t.label for t in tokens) and not any(
+        m.category == "agents" and m.meaning == "ego" for m in found) and not any(
+        t.word in EMERGENCY_SIGNS for t in tokens)
+
+
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
                      "indicating", "indicator", "indicators"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
@@ -226,6 +239,10 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
     if _subject_vehicle_is_ego(tokens):
         found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
                  if m.category == "agents" and [t.word for t in tokens[m.start:m.end]] == ["sv"] else m
+                 for k, m in found.items()}
+    if _ego_vehicle_abbreviated(tokens, found.values()):
+        found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
+                 if m.category == "agents" and [t.word for t in tokens[m.start:m.end]] == ["ev"] else m
                  for k, m in found.items()}
     out, i = [], 0
     while i < len(tokens):
