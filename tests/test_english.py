@@ -2577,3 +2577,25 @@ def test_a_key_whose_value_starts_with_a_verb_is_that_verbs_subject():
 ])
 def test_ev_is_the_ego_vehicle_unless_there_is_an_emergency(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_capital_letter_after_an_agent_noun_names_it():
+    # "Car A" is a car named A, not a car and then an article
+    assert agents("Car A is waiting on the road to your right. Car B comes from the opposite direction "
+                  "and turns left. You go straight.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "road_of_right_turn"), ("car", "turn_left", "road_of_straight")]
+
+
+@pytest.mark.parametrize("prompt", ["The picture shows three cars at a crossroads, including yours.",
+                                    "Three cars wait at the crossroads, including yours."])
+def test_a_group_counted_with_the_ego_further_on_in_the_sentence(prompt):
+    assert [a.type for a in lower(prompt).scenario.agents()] == ["car", "car", "car"]
+
+
+def test_a_note_that_says_what_to_check_is_not_the_scene():
+    assert agents("Ego: drives straight on\nTruck: parked ahead on the right\nNotes: check the ego stops "
+                  "for the truck\n") == [("car", "go_straight", "ego"), ("truck", "stop", "front_right")]
+
+
+def test_ev_starting_a_line_is_the_ego_even_where_the_ego_is_also_named():
+    assert ("car", "turn_left", "ego") in agents("Junction: ego gives way at the sign\nEV: turns left\n")

@@ -184,11 +184,12 @@ EMERGENCY_SIGNS = {"siren", "sirens", "blue", "blues", "emergency", "ambulance",
 
 def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
     """Scenario catalogues write EV for the ego vehicle ('EV: turns right', 'in the EV lane'); elsewhere EV is an
-    emergency vehicle, which comes with its sirens or blue lights. EV is the ego where nothing else names the
-    ego and nothing speaks of an emergency."""
-    return any(t.word == "ev" and not t.label for t in tokens) and not any(
-        m.category == "agents" and m.meaning == "ego" for m in found) and not any(
-        t.word in EMERGENCY_SIGNS for t in tokens)
+    emergency vehicle, which comes with its sirens or blue lights. EV is the ego where nothing speaks of an
+    emergency, and either nothing else names the ego or a line starts with it ('EV: turns right out of ...')."""
+    evs = [t for t in tokens if t.word == "ev" and not t.label]
+    keyed = any(t.index == 0 or tokens[t.index - 1].sentence != t.sentence for t in evs)
+    return bool(evs) and (keyed or not any(m.category == "agents" and m.meaning == "ego" for m in found)) and \
+        not any(t.word in EMERGENCY_SIGNS for t in tokens)
 
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
@@ -1868,7 +1869,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         entity.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "a queue of four cars"
     elif u.base == "tailgater":
         entity.features.add("behind")
-    if _including_ego(units, head):
+    if _including_ego(units, head, r.units):
         entity.count = max(0, count - 1)
         entity.includes_ego = True
     if entity.count > 1 or entity.generic:
@@ -1935,11 +1936,21 @@ def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
     return bool(OPPOSITE_PLACES.get(nxt.meaning, set()) & e.features)
 
 
-def _including_ego(units: list[Unit], head: int) -> bool:
+def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None) -> bool:
     window = [u for u in units[head + 1: head + 5] if u.category != "comma"]
-    return (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting",
-                                                                                 "inc", "with")
-            and any(u.category == "agents" and u.meaning == "ego" for u in window[1:3]))
+    if (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting",
+                                                                             "inc", "with")
+            and any(u.category == "agents" and u.meaning == "ego" for u in window[1:3])):
+        return True
+    if whole is not None and units[head] in whole:  # read on past the clause: "three cars wait, including yours"
+        units, head = whole, whole.index(units[head])
+    for k in range(head + 1, min(len(units) - 1, head + 9)):  # "three cars at a crossroads, including yours"
+        if units[k].category == "agents" or units[k].tokens[0].sentence != units[head].tokens[0].sentence:
+            return False
+        if units[k].word in ("including", "incl", "counting") and units[k + 1].category == "agents" and \
+                units[k + 1].meaning == "ego":
+            return True
+    return False
 
 
 GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclist", "pedestrian", "person",
