@@ -2599,3 +2599,23 @@ def test_a_note_that_says_what_to_check_is_not_the_scene():
 
 def test_ev_starting_a_line_is_the_ego_even_where_the_ego_is_also_named():
     assert ("car", "turn_left", "ego") in agents("Junction: ego gives way at the sign\nEV: turns left\n")
+
+
+def test_a_speed_in_a_road_line_is_its_limit_and_in_an_agents_line_its_speed():
+    scene = lower("Road: two-lane rural road, 80 km/h\nEgo: drives ahead in lane, 60 km/h\n").scenario
+    assert "speed_80" in scene.road.required_objects + scene.road.required_signals
+    assert "speed_60" not in scene.road.required_objects + scene.road.required_signals
+    assert scene.ego.speed is not None and scene.ego.speed.value == 60
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A cyclist rides across from the RHS.", ("cyclist", "cross_the_road", "front_right")),
+    ("A pedestrian walks along the footway on the LHS.", ("pedestrian", "on_the_sidewalk", "left")),
+])
+def test_lhs_and_rhs_are_the_left_and_right_hand_sides(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_the_short_name_of_a_target_named_through_a_role_is_no_second_agent():
+    assert agents("Target: child pedestrian dummy (EPTc) running across the road from the left") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]

@@ -266,6 +266,8 @@ CHOICE_INSTRUCTION = re.compile(r"\s*(?:mark|select|choose|tick|pick|circle)\s+(
                                 r"[^.?!]*\banswers?\b", re.I)  # "Mark one answer"
 
 
+ROAD_KEYS = {"road", "roads", "layout", "geometry", "location", "infrastructure", "street", "carriageway"}
+BARE_SPEED = re.compile(r"(\b\d{2,3}\s*(?:km/h|kmh|kph|mph)(?![a-z]))", re.I)
 CHECKING = {"check", "checks", "verify", "verifies", "ensure", "ensures", "confirm", "confirms", "assert", "asserts"}
 
 
@@ -335,7 +337,9 @@ def _lines(text: str) -> str:
             staged = True
         elif lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
-        elif lowered in PLAIN_KEYS:
+        elif lowered in PLAIN_KEYS or lowered.split()[0] in ROAD_KEYS:
+            if lowered.split()[0] in ROAD_KEYS and not re.search(r"\blimit", value, re.I):
+                value = BARE_SPEED.sub(r"\1 limit", value)  # "Road: urban street, 30 km/h": its speed limit
             out.append(value + ".")  # "Light: dusk, drizzle" is the weather, not a traffic light
         elif value.lower() in NOTHING:
             out.append(f"no {key}.")

@@ -864,7 +864,7 @@ def _speed_limits(r: _Reader) -> list[str]:
         if speed_of_someone:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
         road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]
-                                        if x.sentence == t.sentence} & LIMITED_PLACES and \
+                                        if x.sentence == t.sentence} & LIMITED_PLACES - {"lane"} and \
             after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
         if not (around & LIMIT_WORDS or unit_then_road or road_then_unit or _a_bare_limit(tokens, first, i)) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
@@ -2936,6 +2936,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
     """'VUT is a bus', 'the ego, a city bus,', 'SV1 is an oncoming truck, SV2 an oncoming car': the second noun
     says what the first is; it is no new agent."""
     out: list[NounPhrase] = []
+    folded_at: dict[int, int] = {}
     for np in phrases:
         prev = out[-1] if out else None
         if prev is not None and prev.entity is not None and np.entity is not None and \
@@ -2969,7 +2970,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
             copula = any(u.category == "word" and u.word in APPOSITION_WORDS for u in between)
-            abbreviation = between and all(u.category == "comma" or u.base in ROLE_NOUNS for u in between) and \
+            bracket = units[folded_at.get(id(prev), prev.index) + 1: np.first]  # after the noun last folded in
+            abbreviation = bracket and all(u.category == "comma" or u.base in ROLE_NOUNS for u in bracket) and \
                 np.first == np.index and \
                 len(units[np.index].tokens) == 1 and not prev.entity.is_ego and (
                     np.entity.type == prev.entity.type) and units[np.index].base not in GENERAL_NOUNS
@@ -3028,6 +3030,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                         a.type = b.type
                 elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS:
                     _fold(r, a, b)
+                    folded_at[id(prev)] = np.index  # "Target is a pedestrian dummy (EPTa)": the dummy's short name
                 if b in r.entities:
                     r.entities.remove(b)
                 continue
