@@ -2619,3 +2619,25 @@ def test_lhs_and_rhs_are_the_left_and_right_hand_sides(prompt, expected):
 def test_the_short_name_of_a_target_named_through_a_role_is_no_second_agent():
     assert agents("Target: child pedestrian dummy (EPTc) running across the road from the left") == [
         ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("some kids cross the road ahead of the ego. ego brakes. actually make it 3 kids not some",
+     [("car", "go_straight", "ego")] + [("pedestrian", "cross_the_road", "front")] * 3),
+    ("a van cuts in from the left. oh wait make it a bus", [("bus", "change_lane_to_right", "front_left"),
+                                                           ("car", "go_straight", "ego")]),
+    ("two motorbikes overtake us on the left. no, make it three",
+     [("car", "go_straight", "ego")] + [("motorcycle", "go_straight", "back_left")] * 3),
+])
+def test_a_later_correction_replaces_what_was_said_first(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_police_chase_names_the_scene_not_a_second_police_car():
+    assert agents("police chase scene, cop car comes from behind and overtakes the ego") == [
+        ("car", "go_straight", "ego"), ("police", "go_straight", "back_left")]
+
+
+def test_traffic_coming_straight_at_the_ego_is_oncoming():
+    assert ("truck", "go_straight", "road_of_straight") in agents(
+        "the ego turns right at a junction while a truck is coming straight at it")

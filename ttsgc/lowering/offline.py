@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import re
 from contextvars import ContextVar
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 from ttsgc import vocabulary as V
@@ -356,9 +356,9 @@ NOUN_PHRASE_WORDS = {"a", "an", "the", "one", "some", "another", "this", "big", 
                      "red", "blue", "silver", "grey", "gray", "green", "yellow", "dark", "parked", "stopped"}
 
 
-def _marker_end(units: list[Unit], j: int) -> int | None:
+def _marker_end(units: list[Unit], j: int, markers=CORRECTIONS) -> int | None:
     """The unit after a correction marker starting at unit j (the lexicon may hold the marker as one phrase)."""
-    for marker in CORRECTIONS:
+    for marker in markers:
         words, n = [], j
         while n < len(units) and len(words) < len(marker):
             words += [t.word for t in units[n].tokens]
@@ -439,6 +439,64 @@ def _late_corrections(r: "_Reader", units: list[Unit]) -> list[Unit]:
         out.append(u)
         k += 1
     return out
+
+
+LATER_CORRECTIONS = (("make", "it"), ("make", "that"), ("make", "them"), ("change", "it", "to"),
+                     ("change", "that", "to"), ("change", "them", "to"))
+CORRECTION_LEADS = {"wait", "actually", "no", "oh", "sorry", "hmm", "ok", "okay", "and", "but"}
+SAID_COUNT = {"a", "an", "of", "some"}
+
+
+def _later_corrections(r: "_Reader") -> list[Unit]:
+    """'a bunch of kids crossing ... wait make it 3 kids', 'a car cuts in. actually make it a truck': a chat
+    corrects itself later on; the count or type said last replaces the earlier one, where it was said."""
+    units, k = list(r.units), 1
+    while k < len(units):
+        end = _marker_end(units, k, LATER_CORRECTIONS)
+        if end is None:
+            k += 1
+            continue
+        j = end + (end < len(units) and units[end].category == "comma")
+        n = j
+        while n < len(units) and n - j < 3 and (units[n].category in ("numbers", "number") or
+                                                units[n].word in SAID_COUNT):
+            n += 1
+        said = units[n] if n < len(units) else None
+        counted = n > j and units[n - 1].category in ("numbers", "number")
+        if said is None or said.category != "agents" or said.meaning in ("ego", "none"):
+            if not counted:  # "make it turn left": no correction
+                k += 1
+                continue
+            said, n = None, n - 1  # "two cyclists pass us. wait, make it three": the count alone
+        others = [i for i in range(k) if units[i].category == "agents" and units[i].meaning not in ("ego", "none")]
+        same = [i for i in others if said is not None and units[i].meaning == said.meaning]
+        if not (same or others):
+            k += 1
+            continue
+        i = (same or others)[-1]
+        first = i
+        while first > 0 and (units[first - 1].category in ("numbers", "number") or units[first - 1].word in SAID_COUNT):
+            first -= 1
+        lead = k
+        while lead > i + 1 and (units[lead - 1].word in CORRECTION_LEADS or units[lead - 1].category == "comma"
+                                or [t.word for t in units[lead - 1].tokens] == ["wait"]):
+            lead -= 1
+        stop = n + 1
+        if stop < len(units) and units[stop].word in ("not", "instead", "rather"):
+            stop += 1  # "make it 3 kids not a bunch": what it replaces, said again
+            while stop < len(units) and stop - n < 5 and units[stop].category not in ("comma", "agents", "actions") \
+                    and units[stop].tokens[0].sentence == units[n].tokens[0].sentence:
+                stop += 1
+        sentence = units[i].tokens[0].sentence
+        moved = [Unit(u.start, u.end, u.category, u.meaning, tuple(replace(t, sentence=sentence) for t in u.tokens))
+                 for u in units[j:n + 1]] + ([units[i]] if said is None else [])
+        r.notes.append(f"read '{' '.join(t.word for x in units[first:i + 1] for t in x.tokens)}' as corrected by "
+                       f"'{' '.join(t.word for x in units[lead:stop] for t in x.tokens)}'")
+        for x in units[first:i + 1] + units[lead:stop]:
+            r.mark(x)
+        units = units[:first] + moved + units[i + 1:lead] + units[stop:]
+        k = lead - (i + 1 - first) + len(moved)
+    return units
 
 
 def _turned_into(units: list[Unit]) -> list[Unit]:
@@ -3603,6 +3661,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     ego_words = [u.tokens for u in r.units if u.category == "agents" and u.meaning == "ego"]
     _EGO_SPEAKS.set(bool(ego_words) and all(len(ts) == 1 and ts[0].word in SPEAKERS for ts in ego_words))
     r.units = _retract_corrections(r)
+    r.units = _later_corrections(r)
     UNSPECIFIED.draw_for(seed)
     road = _road(r)
     weather = _weather(r)
