@@ -2641,3 +2641,13 @@ def test_police_chase_names_the_scene_not_a_second_police_car():
 def test_traffic_coming_straight_at_the_ego_is_oncoming():
     assert ("truck", "go_straight", "road_of_straight") in agents(
         "the ego turns right at a junction while a truck is coming straight at it")
+
+
+def test_a_condition_ends_at_its_verb_when_a_new_subject_and_verb_follow():
+    scene = lower("ego waits at the give way line, and after the bus has passed ego turns left").scenario
+    assert [[(a.type, a.action) for a in s.agents if a.is_ego] for s in scene.stages] == [
+        [("car", "stop")], [("car", "turn_left")]]
+
+
+def test_a_lane_count_then_a_speed_is_still_a_limit():
+    assert "speed_64" in road("The road is down to one lane and 40 mph through the works.").required_objects

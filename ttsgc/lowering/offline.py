@@ -921,8 +921,9 @@ def _speed_limits(r: _Reader) -> list[str]:
             and not (first > 1 and tokens[first - 2].word in LIMIT_WORDS | {"signed", "signposted"})  # "posted at 25"
         if speed_of_someone:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
-        road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first]
-                                        if x.sentence == t.sentence} & LIMITED_PLACES - {"lane"} and \
+        road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first] if x.sentence == t.sentence
+                                        and not (x.word == "lane" and _word_number(tokens[x.index - 1]) is None)
+                                        } & LIMITED_PLACES and \
             after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
         if not (around & LIMIT_WORDS or unit_then_road or road_then_unit or _a_bare_limit(tokens, first, i)) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
@@ -1381,6 +1382,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close(u.word)
             continue
         current.append(u)
+        if condition and u.category == "actions" and _subject_and_verb_follow(units, k + 1):
+            close()  # "after the cyclist has passed ego turns right": the condition ends at its verb
+            continue
         if condition and u.category == "word" and u.word in SIGNAL_COLOURS and len(current) >= 2 and \
                 current[-2].category == "actions" and _signal_change(current, len(current) - 2):
             close()  # "once it turns green we turn left": the condition ends at its colour
@@ -1442,6 +1446,17 @@ def _starts_subject(units: list[Unit], k: int) -> bool:
             return False
         if u.word in SUBJECT_PRONOUNS:
             return True
+    return False
+
+
+def _subject_and_verb_follow(units: list[Unit], k: int) -> bool:
+    """A new clause with no word to open it: 'ego turns right', 'the truck stops' (not 'the ego, it turns')."""
+    for j, u in enumerate(units[k:k + 4], start=k):
+        if u.category == "agents":
+            return u.meaning != "none" and j + 1 < len(units) and units[j + 1].category == "actions" and \
+                units[j + 1].tokens[0].sentence == u.tokens[0].sentence
+        if not (u.category == "word" and u.word in DETERMINERS):
+            return False
     return False
 
 
