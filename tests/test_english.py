@@ -2651,3 +2651,23 @@ def test_a_condition_ends_at_its_verb_when_a_new_subject_and_verb_follow():
 
 def test_a_lane_count_then_a_speed_is_still_a_limit():
     assert "speed_64" in road("The road is down to one lane and 40 mph through the works.").required_objects
+
+
+def test_a_label_in_a_column_of_its_own_keys_its_line():
+    assert ("bus", "stop", "front") in agents(
+        "Ego: queueing, left lane\nActors:\n  TV1  bus stopped ahead of ego\n  TV2  van stopped beside ego\n")
+
+
+def test_a_place_after_the_ego_in_its_own_line_heads_no_later_agent():
+    found = agents("Ego: queueing, left lane. Van: stopped in the right lane beside the ego.")
+    assert ("car", "stop", "right") in found
+
+
+@pytest.mark.parametrize("prompt", [
+    "Target: child dummy crossing from the left, perpendicular to the ego path, on a straight road",
+    "On a straight road, a jogger crossing from the left is in front of the ego.",
+])
+def test_a_person_crossing_from_a_side_crosses_the_road(prompt):
+    found = agents(prompt)
+    assert any(a[1] == "cross_the_road" and a[2] == "front_left" for a in found), found
+    assert not lower(prompt).scenario.road.junction

@@ -268,6 +268,7 @@ CHOICE_INSTRUCTION = re.compile(r"\s*(?:mark|select|choose|tick|pick|circle)\s+(
 
 ROAD_KEYS = {"road", "roads", "layout", "geometry", "location", "infrastructure", "street", "carriageway"}
 BARE_SPEED = re.compile(r"(\b\d{2,3}\s*(?:km/h|kmh|kph|mph)(?![a-z]))", re.I)
+LABEL_COLUMN = re.compile(r"^(\s*(?=[A-Z0-9]{2})[A-Z]{1,6}[0-9]{0,2})\s{2,}(?=\S)")
 CHECKING = {"check", "checks", "verify", "verifies", "ensure", "ensures", "confirm", "confirms", "assert", "asserts"}
 
 
@@ -318,6 +319,7 @@ def _lines(text: str) -> str:
         if not line.strip():
             continue
         line = line.replace("->", " and ").replace("\u2192", " and ")
+        line = LABEL_COLUMN.sub(r"\1: ", line)  # "  TV1  car stopped ahead": a label in a column of its own
         m = KEY_LINE.match(line)
         if k == 0 and m is None and len(lines) > 2 and not lines[1].strip() and not line.rstrip().endswith(
                 (".", "!", "?")) and len(line.split()) <= 12:

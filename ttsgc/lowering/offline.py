@@ -711,10 +711,18 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student",
                                                       "vru", "children", "kids", "peds", "pedestrians", "walker",
-                                                      "toddler", "pensioner", "cyclists", "bicyclist")
+                                                      "toddler", "pensioner", "cyclists", "bicyclist",
+                                                      "target", "dummy")  # "EBT (bicycle target) crossing"
     after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be", "not",
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
+    person_before = after_person or prev is not None and prev.word == "," and m.start > 1 and \
+        tokens[m.start - 2].base in ("target", "dummy", "pedestrian", "cyclist", "child", "person")
+    if m.category == "positions" and m.meaning in ("road_left", "road_right") and span[0].word == "crossing" and \
+            person_before:  # "a cyclist crossing from the right": a person crossing the road, from that side
+        side = m.meaning[5:]
+        return [Unit(m.start, m.start + 1, "actions", "cross", span[:1]),
+                Unit(m.start + 1, m.end, "positions", f"from_{side}", span[1:])]
     nxt2 = tokens[m.end + 1].word if m.end + 1 < len(tokens) else ""
     place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
     on_a_crossing = nxt in ("on", "along") and bool({t.word for t in tokens[m.end + 1:m.end + 4]} & {
@@ -3707,7 +3715,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         for e in r.entities[before:]:
             for u in header if not e.is_ego else []:
                 _modify(r, e, u, clause.stage, 1)
-        header = _header_of_place(clause.units)
+        first = clause.units[0].tokens[0] if clause.units else None
+        header = _header_of_place(clause.units) if first is not None and (
+            first.index == 0 or tokens[first.index - 1].sentence != first.sentence) else []
+        # a heading starts its line; "Ego: stationary in queue, left lane": the ego's lane, heading nobody
         lead = k - 1
         if clause.link == "which" and k > 1 and [u.word for u in clauses[k - 1].units] in (["in"], ["into"]):
             lead = k - 2  # "changes to the left lane, in which a car approaches"
