@@ -2671,3 +2671,11 @@ def test_a_person_crossing_from_a_side_crosses_the_road(prompt):
     found = agents(prompt)
     assert any(a[1] == "cross_the_road" and a[2] == "front_left" for a in found), found
     assert not lower(prompt).scenario.road.junction
+
+
+def test_the_lane_the_ev_merges_into_is_the_egos_target_lane_and_the_next_lane_no_later_stage():
+    scene = lower("EV: merges right into the next lane\nTV: van in the lane the EV merges into, "
+                  "behind and to the right of the EV\n").scenario
+    assert len(scene.stages) == 1
+    assert sorted((a.type, a.action, a.relative_to_ego or "ego") for a in scene.agents()) == [
+        ("car", "change_lane_to_right", "ego"), ("car", "go_straight", "back_right")]

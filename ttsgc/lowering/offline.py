@@ -182,6 +182,14 @@ EMERGENCY_SIGNS = {"siren", "sirens", "blue", "blues", "emergency", "ambulance",
                    "police", "beacon", "beacons", "responding"}
 
 
+def _ev_as_ego(tokens: list[Token]) -> list[Token]:
+    """EV read as the ego's own word where it names the ego ('the lane the EV merges into' is the ego's target
+    lane)."""
+    if not _ego_vehicle_abbreviated(tokens, matches(tokens)):
+        return tokens
+    return [replace(t, word="ego", base="ego") if t.word == "ev" and not t.label else t for t in tokens]
+
+
 def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
     """Scenario catalogues write EV for the ego vehicle ('EV: turns right', 'in the EV lane'); elsewhere EV is an
     emergency vehicle, which comes with its sirens or blue lights. EV is the ego where nothing speaks of an
@@ -240,10 +248,6 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
     if _subject_vehicle_is_ego(tokens):
         found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
                  if m.category == "agents" and [t.word for t in tokens[m.start:m.end]] == ["sv"] else m
-                 for k, m in found.items()}
-    if _ego_vehicle_abbreviated(tokens, found.values()):
-        found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
-                 if m.category == "agents" and [t.word for t in tokens[m.start:m.end]] == ["ev"] else m
                  for k, m in found.items()}
     out, i = [], 0
     while i < len(tokens):
@@ -1298,7 +1302,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "sequence" and not (u.word == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers")) and not (
                 u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
-                and prev_word not in ("for", "at", "all"):  # "for once", "at once"
+                and prev_word not in ("for", "at", "all") and not (  # "for once", "at once"
+                u.word == "next" and len(u.tokens) == 1 and prev_word in ("the", "a", "this", "that", "its")):
+            # "into the next lane": which lane, not what comes next
             r.mark(u)
             if out or current:
                 close()
@@ -3679,6 +3685,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     tokens = tokenize(prompt)
     if not tokens:
         raise LoweringError("the prompt is empty")
+    tokens = _ev_as_ego(tokens)
     r = _Reader(tokens, _units(tokens))
     _KEEPS_LEFT.set(_drives_on_the_left(tokens))
     ego_words = [u.tokens for u in r.units if u.category == "agents" and u.meaning == "ego"]
