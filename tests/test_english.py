@@ -2679,3 +2679,15 @@ def test_the_lane_the_ev_merges_into_is_the_egos_target_lane_and_the_next_lane_n
     assert len(scene.stages) == 1
     assert sorted((a.type, a.action, a.relative_to_ego or "ego") for a in scene.agents()) == [
         ("car", "change_lane_to_right", "ego"), ("car", "go_straight", "back_right")]
+
+
+def test_numbered_phases_tell_the_order_and_phase_one_goes_on_with_the_setup():
+    scene = lower("Ego: follows a tractor, then overtakes it\nActors: tractor ahead in the ego lane\n"
+                  "Phase 1: ego follows the tractor at 40 km/h\nPhase 2: ego changes to the right lane\n").scenario
+    assert [[(a.type, a.action, a.relative_to_ego or "ego") for a in s.agents] for s in scene.stages] == [
+        [("car", "go_straight", "ego"), ("truck", "go_straight", "front")], [("car", "change_lane_to_right", "ego")]]
+
+
+def test_a_bare_noun_placed_where_that_agent_already_is_names_it_again():
+    assert agents("Ego: follows HGV\nActors: HGV ahead, slow\n") == [("car", "go_straight", "ego"),
+                                                                    ("truck", "go_straight", "front")]

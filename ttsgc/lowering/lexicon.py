@@ -269,6 +269,8 @@ CHOICE_INSTRUCTION = re.compile(r"\s*(?:mark|select|choose|tick|pick|circle)\s+(
 ROAD_KEYS = {"road", "roads", "layout", "geometry", "location", "infrastructure", "street", "carriageway"}
 BARE_SPEED = re.compile(r"(\b\d{2,3}\s*(?:km/h|kmh|kph|mph)(?![a-z]))", re.I)
 LABEL_COLUMN = re.compile(r"^(\s*(?=[A-Z0-9]{2})[A-Z]{1,6}[0-9]{0,2})\s{2,}(?=\S)")
+PHASE_KEY = re.compile(r"(stage|step|phase) (\d+|[a-z]|one|two|three|four)")
+FIRST_PHASES = {"1", "a", "one"}
 CHECKING = {"check", "checks", "verify", "verifies", "ensure", "ensures", "confirm", "confirms", "assert", "asserts"}
 
 
@@ -315,6 +317,7 @@ def _lines(text: str) -> str:
     out = []
     lines = _without_answer_choices(text.strip().splitlines())
     staged = False
+    phased = any((m := KEY_LINE.match(line)) and PHASE_KEY.fullmatch(m.group(1).strip().lower()) for line in lines)
     for k, line in enumerate(lines):
         if not line.strip():
             continue
@@ -334,10 +337,15 @@ def _lines(text: str) -> str:
             continue
         if value.split()[:1] and value.split()[0].lower() in CHECKING:
             continue  # "Notes: check EV does not assume Actor A will yield": what the test checks
-        if re.fullmatch(r"(stage|step|phase) (\d+|[a-z])", lowered):
-            out.append(("then " if staged or any(not x.startswith("\u00a7") for x in out) else "") + value + ".")
-            staged = True
-        elif lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
+        if PHASE_KEY.fullmatch(lowered):
+            out.append(("then " if staged or lowered.split()[1] not in FIRST_PHASES and
+                        any(not x.startswith("\u00a7") for x in out) else "") + value + ".")
+            staged = True  # "Phase 1:" goes on with the setup above it; each later phase is a stage
+            continue
+        if phased and not staged:
+            value = re.split(r",?\s+(?:and\s+)?then\b", value)[0]  # "Ego: follows HGV, then pulls out": the phases
+            # below tell what comes when; the line before them says who is there and how it starts
+        if lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
         elif lowered in PLAIN_KEYS or lowered.split()[0] in ROAD_KEYS:
             if lowered.split()[0] in ROAD_KEYS and not re.search(r"\blimit", value, re.I):

@@ -1875,6 +1875,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
                     and e.count == 1 for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
+    if not words and count is None and not plural and not label and head + 1 < len(units) and \
+            units[head + 1].category == "positions" and any(
+                e.head.split()[-1] == u.base.split()[-1] and not e.is_ego and e.count == 1 and
+                units[head + 1].meaning in e.features for e in r.entities):
+        definite = True  # "Ego: follows HGV. Actors: HGV ahead in the ego lane": the HGV already placed there
     ego_now = next((e for e in r.entities if e.is_ego), None)
     if bare and ego_now is not None and u.base in ("vehicle", "car") and (
             ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and \
