@@ -2691,3 +2691,7 @@ def test_numbered_phases_tell_the_order_and_phase_one_goes_on_with_the_setup():
 def test_a_bare_noun_placed_where_that_agent_already_is_names_it_again():
     assert agents("Ego: follows HGV\nActors: HGV ahead, slow\n") == [("car", "go_straight", "ego"),
                                                                     ("truck", "go_straight", "front")]
+
+
+def test_a_signal_controlled_junction_keeps_its_lights_when_a_manoeuvre_line_follows():
+    assert "traffic_light" in road("Road: crossroads, signal controlled\nEgo manoeuvre: right turn\n").required_signals

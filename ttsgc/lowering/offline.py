@@ -806,7 +806,8 @@ def _road(r: _Reader) -> RoadSpec:
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signal", "signals") and \
-                {x.word for x in units[max(0, k - 3):k + 4]} & {"mirror", "mirrors", "maneuver", "manoeuvre", "position"}:
+                {x.word for x in units[max(0, k - 3):k + 4] if x.tokens[0].sentence == u.tokens[0].sentence} & {
+                    "mirror", "mirrors", "maneuver", "manoeuvre", "position"}:
             continue  # "mirror, signal, manoeuvre": the driver's routine, the indicator, not a traffic light
         if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
                 any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and any(
