@@ -2695,3 +2695,8 @@ def test_a_bare_noun_placed_where_that_agent_already_is_names_it_again():
 
 def test_a_signal_controlled_junction_keeps_its_lights_when_a_manoeuvre_line_follows():
     assert "traffic_light" in road("Road: crossroads, signal controlled\nEgo manoeuvre: right turn\n").required_signals
+
+
+def test_what_one_is_signalled_to_do_is_still_to_come():
+    assert agents("A police car behind us flashes its lights and signals us to pull over.") == [
+        ("car", "go_straight", "ego"), ("police", "go_straight", "back")]

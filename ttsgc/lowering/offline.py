@@ -2415,7 +2415,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
-             and not _named_manoeuvre(units, i)]
+             and not _named_manoeuvre(units, i) and not _requested(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
             u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
         verbs = []  # "the light turns red": the subject is a signal, no agent acts
@@ -2726,6 +2726,22 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
         units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since") or \
         i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
             "maneuver", "manoeuvre", "turn", "lane", "overtake", "merge", "cut")  # "at start of manoeuvre"
+
+
+REQUESTING = {"signal", "signals", "signaled", "signalled", "signaling", "signalling", "tell", "tells", "told",
+              "ask", "asks", "asked", "order", "orders", "ordered", "instruct", "instructs", "instructed", "direct",
+              "directs", "directed", "beckon", "beckons", "beckoned", "motion", "motions", "motioned", "motioning"}
+
+
+def _requested(units: list[Unit], i: int) -> bool:
+    """'a police car signals you to pull over', 'the officer tells us to stop': what one is asked to do is
+    still to come, done by no one yet."""
+    if i < 3 or units[i - 1].word != "to":
+        return False
+    j = i - 2
+    while j > 0 and units[j].category == "word" and units[j].word in DETERMINERS:
+        j -= 1
+    return units[j].category == "agents" and units[j - 1].tokens[-1].word in REQUESTING
 
 
 def _denied_verb(units: list[Unit], i: int) -> bool:
