@@ -2700,3 +2700,9 @@ def test_a_signal_controlled_junction_keeps_its_lights_when_a_manoeuvre_line_fol
 def test_what_one_is_signalled_to_do_is_still_to_come():
     assert agents("A police car behind us flashes its lights and signals us to pull over.") == [
         ("car", "go_straight", "ego"), ("police", "go_straight", "back")]
+
+
+def test_an_agent_said_to_be_beside_stays_beside_when_the_ego_later_drops_behind_it():
+    assert ("bus", "go_straight", "right") in agents(
+        "the ego merges into the right lane, but a bus is right next to it in that lane, so the ego has to tuck in "
+        "behind it")

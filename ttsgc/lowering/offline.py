@@ -2633,8 +2633,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS and \
                         not edge_after:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
-                later = reference is not None and stage > reference.stage and bool(
-                    reference.features & {"ahead", "behind", "level"})  # "then returns ahead of the bus": it was
+                later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
+                    stage > reference.stage or "level" in reference.features)  # "then returns ahead of the bus": it
+                # was; "a truck right next to it, so the ego slots in behind it": beside, as said first
                 if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
                 r.mark(u)
