@@ -2587,7 +2587,8 @@ def test_a_capital_letter_after_an_agent_noun_names_it():
 
 
 @pytest.mark.parametrize("prompt", ["The picture shows three cars at a crossroads, including yours.",
-                                    "Three cars wait at the crossroads, including yours."])
+                                    "Three cars wait at the crossroads, including yours.",
+                                    "Three cars wait at the lights, including the ego."])
 def test_a_group_counted_with_the_ego_further_on_in_the_sentence(prompt):
     assert [a.type for a in lower(prompt).scenario.agents()] == ["car", "car", "car"]
 
@@ -2706,3 +2707,10 @@ def test_an_agent_said_to_be_beside_stays_beside_when_the_ego_later_drops_behind
     assert ("bus", "go_straight", "right") in agents(
         "the ego merges into the right lane, but a bus is right next to it in that lane, so the ego has to tuck in "
         "behind it")
+
+
+def test_one_of_a_group_then_the_other_one_are_its_members_and_not_the_ego():
+    assert agents("There is an all-way stop with three cars including the ego. The ego turns right. One of the "
+                  "other cars is waiting on the road to our left, and the other one goes straight from the opposite "
+                  "approach.") == [
+        ("car", "go_straight", "road_of_straight"), ("car", "stop", "road_of_left_turn"), ("car", "turn_right", "ego")]

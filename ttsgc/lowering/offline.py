@@ -1824,6 +1824,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
     plural = u.tokens[-1].plural and not is_ego
+    if plural and count == 1 and "of" in words and words & DEFINITE and head > first and \
+            units[first].category == "numbers" and units[first].word == "one":
+        plural, count = False, None  # "one of the other cars": a member of the group named before
+        words = words - {"of"}
     if is_ego:
         ego = next((e for e in r.entities if e.is_ego), None)
         if ego is None:
@@ -2040,8 +2044,9 @@ def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None
     for k in range(head + 1, min(len(units) - 1, head + 9)):  # "three cars at a crossroads, including yours"
         if units[k].category == "agents" or units[k].tokens[0].sentence != units[head].tokens[0].sentence:
             return False
-        if units[k].word in ("including", "incl", "counting") and units[k + 1].category == "agents" and \
-                units[k + 1].meaning == "ego":
+        after = units[k + 1 + (units[k + 1].word == "the" and k + 2 < len(units))]
+        if units[k].word in ("including", "incl", "counting") and after.category == "agents" and \
+                after.meaning == "ego":
             return True
     return False
 
@@ -3029,6 +3034,7 @@ def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
             continue
         if group.count == 1 and any(m.parent is group for m in r.entities) and not group.label:
             group.label = "#rest"  # "one from the left and one from the right": the second is what is left
+            group.includes_ego = False  # "three cars including the ego ... the other one": not the ego again
             return group
         if group.count < 2:
             continue
