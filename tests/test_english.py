@@ -2714,3 +2714,8 @@ def test_one_of_a_group_then_the_other_one_are_its_members_and_not_the_ego():
                   "other cars is waiting on the road to our left, and the other one goes straight from the opposite "
                   "approach.") == [
         ("car", "go_straight", "road_of_straight"), ("car", "stop", "road_of_left_turn"), ("car", "turn_right", "ego")]
+
+
+def test_a_give_way_line_is_the_give_way_marking_not_a_stop_line():
+    spec = road("The ego waits at the give way line of a roundabout.")
+    assert "yield" in spec.required_signals and "stop_line" not in spec.required_objects
