@@ -2719,3 +2719,17 @@ def test_one_of_a_group_then_the_other_one_are_its_members_and_not_the_ego():
 def test_a_give_way_line_is_the_give_way_marking_not_a_stop_line():
     spec = road("The ego waits at the give way line of a roundabout.")
     assert "yield" in spec.required_signals and "stop_line" not in spec.required_objects
+
+
+def test_a_vehicle_waiting_to_pull_out_waits():
+    assert ("bus", "stop", "road_of_left_turn") in agents("A bus is waiting to pull out of the side road on our left.")
+
+
+def test_a_person_standing_on_the_pavement_near_the_crossing_stays_on_the_pavement_by_it():
+    assert ("pedestrian", "on_the_sidewalk", "near_the_crosswalk") in agents(
+        "A man is standing on the pavement to our right near the zebra crossing.")
+
+
+def test_one_of_them_corrected_to_both_of_them_is_both():
+    assert agents("two kids wait at the crossing and one of them, no, both of them run across") == [
+        ("car", "go_straight", "ego")] + [("pedestrian", "cross_the_road", "near_the_crosswalk")] * 2

@@ -484,6 +484,9 @@ def tokenize(text: str) -> list[Token]:
                   r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
     text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
     text = _without_story_frame(text)
+    text = re.sub(r"\b(?:one|two|three|some) of (?:them|those|these)[ ,]+(?:no|wait|sorry|i mean|no wait|actually)"
+                  r"[ ,]+((?:both|all|two|three|four) of (?:them|those|these))\b", r"\1", text)
+    # "one of them no both of them start walking": speech corrects itself, the last word stands
     text = re.sub(r"\blv\b", "lead vehicle", text)  # "LV decelerates": the lead vehicle
     text = re.sub(r"\br\d{1,4}\b", " ", text)  # "R18 - T-junction": a run number, not a side
     text = re.sub(r"\b(\d{1,2})(?:st|nd|rd|th)\b",

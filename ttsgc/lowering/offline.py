@@ -2056,6 +2056,7 @@ GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclis
                  "people", "child", "kid", "man", "woman", "guy"}
 
 
+SIDEWALK_WORDS = {"pavement", "sidewalk", "footway", "footpath", "kerb", "curb"}
 WANTING = {"want", "need", "like", "expect", "wish", "prefer"}  # "I want a car to cut in": the car cuts in
 PERCEIVING = {"see", "saw", "seen", "observe", "notice", "watch", "spot", "witness", "hear", "heard", "noticed",
               "observed", "spotted", "watched", "witnessed"}
@@ -2170,10 +2171,14 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 k is not None and any(x.category == "positions" and x.meaning == "toward"
                                       for x in clause_units[k + 1:k + 3]):
             action = "cut_in"  # "a lorry on our left began to drift towards us": over into the ego's lane
-        if action == "cross" and e.type == "pedestrian" and clause_units is not None and k is not None and k >= 2 \
-                and clause_units[k - 1].word == "to" and clause_units[k - 2].category == "actions" and \
-                clause_units[k - 2].meaning == "stop":
+        waiting_to = clause_units is not None and k is not None and k >= 2 and clause_units[k - 1].word == "to" \
+            and clause_units[k - 2].category == "actions" and clause_units[k - 2].meaning == "stop"
+        if action == "cross" and e.type == "pedestrian" and waiting_to:
             e.features.add("waits_to_cross")  # "standing on the pavement, waiting to cross": the crossing is to come
+        if waiting_to and action in ("cut_in", "move", "lane_change", "lane_left", "lane_right"):
+            return  # "a bus is waiting to pull out of the side road": it waits; pulling out is to come
+        if action == "walk" and e.type == "pedestrian" and {t.word for t in u.tokens} & SIDEWALK_WORDS:
+            e.features.add("on_sidewalk")  # "standing on the pavement near the crossing": on the pavement, by it
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
                 any("lane" in x.base for x in clause_units[k + 1:k + 5]):
             return  # "waiting for the light to change"
@@ -3615,8 +3620,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             not f & {"ahead", "behind", "level", "overtaking"} and "target_lane" not in f:
         ahead = True  # "a bus parked on the right", "a lorry parked on the nearside": met ahead
     if walking:
-        if has_crosswalk and side is None and not f & {"ahead", "behind"}:
-            return "near_the_crosswalk", False  # standing by the crossing
+        if has_crosswalk and (side is None or "crosswalk" in f) and not f & {"ahead", "behind"}:
+            return "near_the_crosswalk", False  # standing by the crossing ("on your left near the crossing")
         side = side or UNSPECIFIED["side_of_a_sidewalk_walker"]
     if side is not None:
         if person and crossing and not behind:
@@ -3686,6 +3691,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "walk":
         if e.type != "pedestrian":
             return "go_straight"
+        if "on_sidewalk" in e.features and "in_road" not in e.features:
+            return "on_the_sidewalk"
         return "cross_the_road" if e.features & {"crosswalk", "in_road"} else "on_the_sidewalk"
     return "go_straight"
 
