@@ -942,7 +942,7 @@ def test_people_crossing_outside_the_crosswalk_are_not_at_it():
 
 
 def test_pulling_out_from_a_side_at_a_junction_comes_from_that_road():
-    assert ("car", "go_straight", "road_of_right_turn") in agents(
+    assert ("car", "stop", "road_of_right_turn") in agents(  # waiting: pulling out is still to come
         "A taxi on our right was waiting to pull out at the crossroads.")
     assert ("cyclist", "go_straight", "right") in agents("a cyclist coming up fast on its inside")
 
