@@ -2733,3 +2733,19 @@ def test_a_person_standing_on_the_pavement_near_the_crossing_stays_on_the_paveme
 def test_one_of_them_corrected_to_both_of_them_is_both():
     assert agents("two kids wait at the crossing and one of them, no, both of them run across") == [
         ("car", "go_straight", "ego")] + [("pedestrian", "cross_the_road", "near_the_crosswalk")] * 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "One of our minibuses was turning right at the lights when a cyclist came up on its inside. "
+    "Please build a scene with our minibus as the ego.",
+    "Our driver Ana was turning right in one of our minibuses at the lights when a cyclist came up on its inside. "
+    "The minibus is the ego.",
+])
+def test_the_vehicle_named_as_the_ego_is_the_ego_wherever_it_is_mentioned(prompt):
+    found = agents(prompt)
+    assert ("car", "turn_right", "ego") in found and len(found) == 2, found
+
+
+def test_another_vehicle_of_the_kind_named_as_the_ego_is_not_the_ego():
+    found = agents("Our van is the ego. A white van overtakes it on the left.")
+    assert ("car", "go_straight", "back_left") in found and len(found) == 2, found
