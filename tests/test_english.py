@@ -2749,3 +2749,9 @@ def test_the_vehicle_named_as_the_ego_is_the_ego_wherever_it_is_mentioned(prompt
 def test_another_vehicle_of_the_kind_named_as_the_ego_is_not_the_ego():
     found = agents("Our van is the ego. A white van overtakes it on the left.")
     assert ("car", "go_straight", "back_left") in found and len(found) == 2, found
+
+
+def test_a_letters_greeting_and_signature_are_not_the_scene():
+    letter = ("Dear road safety team,\n\nA lorry parks on the pavement outside our school every morning.\n\n"
+              "Kind regards,\nJo Bloggs\nChair, Parents of Riverside Cyclists and Walkers\n")
+    assert agents(letter) == [("car", "go_straight", "ego"), ("truck", "stop", "front")]

@@ -274,6 +274,25 @@ FIRST_PHASES = {"1", "a", "one"}
 CHECKING = {"check", "checks", "verify", "verifies", "ensure", "ensures", "confirm", "confirms", "assert", "asserts"}
 
 
+GREETING = re.compile(r"\s*(?:hi|hello|hey|hallo|dear|morning|good morning|good afternoon|good evening)\b[^.!?:]{0,40},\s*$",
+                      re.I)
+SIGN_OFF = re.compile(r"\s*(?:thanks|many thanks|thanks a lot|thanks again|thank you|cheers|best|best regards|kind regards|"
+                      r"regards|warm regards|best wishes|all the best|sincerely|yours sincerely|yours faithfully|"
+                      r"yours truly|mit freundlichen gr(?:\u00fc|ue)(?:\u00df|ss)en|viele gr(?:\u00fc|ue)(?:\u00df|ss)e)"
+                      r"\s*[,.!]?\s*$", re.I)
+
+
+def _letter_body(lines: list[str]) -> list[str]:
+    """An email's or a letter's greeting ('Hi team,', 'Dear Sir or Madam,') and everything from its sign-off on
+    ('Kind regards,', the name, the job title, the company) are not the scene."""
+    body = list(lines)
+    first = next((k for k, line in enumerate(body) if line.strip()), None)
+    if first is not None and GREETING.match(body[first]):
+        body[first] = ""
+    end = next((k for k, line in enumerate(body) if k > 0 and SIGN_OFF.match(line)), None)
+    return body[:end] if end is not None else body
+
+
 def _without_answer_choices(lines: list[str]) -> list[str]:
     """A multiple-choice question's answers ('A  Move off quickly', '(b) On the left', '[ ] Sound your horn')
     are what a reader might do, not the scene: after a line that asks, lines marked A, B, C... (or 1, 2, 3, or
@@ -315,7 +334,7 @@ def _lines(text: str) -> str:
     if "\n" not in text.strip():
         return _keyed_agents(text)
     out = []
-    lines = _without_answer_choices(text.strip().splitlines())
+    lines = _letter_body(_without_answer_choices(text.strip().splitlines()))
     staged = False
     phased = any((m := KEY_LINE.match(line)) and PHASE_KEY.fullmatch(m.group(1).strip().lower()) for line in lines)
     for k, line in enumerate(lines):
