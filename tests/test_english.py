@@ -2755,3 +2755,9 @@ def test_a_letters_greeting_and_signature_are_not_the_scene():
     letter = ("Dear road safety team,\n\nA lorry parks on the pavement outside our school every morning.\n\n"
               "Kind regards,\nJo Bloggs\nChair, Parents of Riverside Cyclists and Walkers\n")
     assert agents(letter) == [("car", "go_straight", "ego"), ("truck", "stop", "front")]
+
+
+def test_the_named_driver_of_the_vehicle_that_is_the_ego_is_the_ego():
+    email = ("Bus 12 (Sam Okoro driving) had a near miss today. A girl stepped out onto the zebra crossing outside "
+             "the bank and Sam only just pulled up in time. Please make a scene with the bus as the ego.")
+    assert agents(email) == [("bus", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]

@@ -282,6 +282,22 @@ SIGN_OFF = re.compile(r"\s*(?:thanks|many thanks|thanks a lot|thanks again|thank
                       r"\s*[,.!]?\s*$", re.I)
 
 
+DRIVER_NAME = re.compile(r"\b(?:driver:?|driven by|our driver) ([A-Z][a-z]+)\b|\(([A-Z][a-z]+)(?: [A-Z][\w'-]+)? driving\)")
+EGO_NAMED = re.compile(r"\b(?:is|as) (?:the )?ego\b", re.I)
+
+
+def _driver_named_as_ego(text: str) -> str:
+    """'Cab 17 (Tom Akers driving) ... Tom only just pulled up ... with the cab as the ego': where the text names
+    the vehicle that is the ego, its driver's name, said again, is the ego."""
+    if not EGO_NAMED.search(text):
+        return text
+    m = DRIVER_NAME.search(text)
+    if m is None:
+        return text
+    name = m.group(1) or m.group(2)  # the introduction itself stays; later mentions are the ego
+    return text[:m.end()] + re.sub(rf"\b{name}\b(?!'s)(?! [A-Z])", "the ego", text[m.end():])
+
+
 def _letter_body(lines: list[str]) -> list[str]:
     """An email's or a letter's greeting ('Hi team,', 'Dear Sir or Madam,') and everything from its sign-off on
     ('Kind regards,', the name, the job title, the company) are not the scene."""
@@ -485,7 +501,8 @@ def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = LETTER_LABEL.sub(r"\1#\2", _lines(_screenplay(text)))  # "Car A", "Actor B": a diagram's or a catalogue's names
+    text = _driver_named_as_ego(_lines(_screenplay(text)))
+    text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
     text = re.sub(r"\blet's\b", "let us", text)
