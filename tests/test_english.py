@@ -2761,3 +2761,13 @@ def test_the_named_driver_of_the_vehicle_that_is_the_ego_is_the_ego():
     email = ("Bus 12 (Sam Okoro driving) had a near miss today. A girl stepped out onto the zebra crossing outside "
              "the bank and Sam only just pulled up in time. Please make a scene with the bus as the ego.")
     assert agents(email) == [("bus", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Great ride. My driver stopped dead when a van pulled out in front of us.",
+    "Two cars were queued at the lights, including ours. Our driver waited while a van pulled out in front of us.",
+])
+def test_my_driver_and_ours_are_the_ego(prompt):
+    found = agents(prompt)
+    assert [a for a in found if a[2] == "ego"] == [("car", "stop", "ego")] and not any(
+        a == ("car", "go_straight", "front") for a in found), found
