@@ -2635,8 +2635,8 @@ def test_a_later_correction_replaces_what_was_said_first(prompt, expected):
 
 
 def test_police_chase_names_the_scene_not_a_second_police_car():
-    assert agents("police chase scene, cop car comes from behind and overtakes the ego") == [
-        ("car", "go_straight", "ego"), ("police", "go_straight", "back_left")]
+    found = agents("police chase scene, cop car comes from behind and overtakes the ego")
+    assert [(t, p == "ego") for t, _, p in found] == [("car", True), ("police", False)], found
 
 
 def test_traffic_coming_straight_at_the_ego_is_oncoming():

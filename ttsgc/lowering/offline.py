@@ -448,36 +448,7 @@ def _retract_corrections(r: "_Reader") -> list[Unit]:
             r.mark(x)
         del out[first:]
         k = j
-    return _late_corrections(r, out)
-
-
-def _late_corrections(r: "_Reader", units: list[Unit]) -> list[Unit]:
-    """'... a cyclist on its left? or actually make it a motorbike': a later 'make it a X' retypes the last agent
-    named before it, which keeps its place and deed."""
-    out: list[Unit] = []
-    k = 0
-    while k < len(units):
-        u = units[k]
-        if u.word in ("make", "change") and k + 1 < len(units) and units[k + 1].word in ("it", "that"):
-            n = k + 2
-            while n < len(units) and n - k < 6 and units[n].category in ("word", "number", "numbers") and \
-                    (units[n].word in NOUN_PHRASE_WORDS | {"to", "into"} or units[n].category != "word"):
-                n += 1
-            last = next((j for j in range(len(out) - 1, -1, -1) if out[j].category == "agents"
-                         and out[j].meaning not in ("ego", "none", "generic")), None)
-            if n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none") and \
-                    last is not None:
-                old = out[last]
-                out[last] = Unit(old.start, old.end, "agents", units[n].meaning, old.tokens)
-                r.notes.append(f"read '{old.base}' as corrected by "
-                               f"'{' '.join(t.word for x in units[k:n + 1] for t in x.tokens)}'")
-                for x in units[k:n + 1]:
-                    r.mark(x)
-                k = n + 1
-                continue
-        out.append(u)
-        k += 1
-    return out
+    return out  # a later 'make it a X' is read by _later_corrections
 
 
 LATER_CORRECTIONS = (("make", "it"), ("make", "that"), ("make", "them"), ("change", "it", "to"),
@@ -756,7 +727,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
     person_before = after_person or prev is not None and prev.word == "," and m.start > 1 and \
-        tokens[m.start - 2].base in ("target", "dummy", "pedestrian", "cyclist", "child", "person")
+        tokens[m.start - 2].base in ("target", "dummy", "pedestrian", "cyclist", "child", "person") or \
+        prev is not None and (lexicon().phrases.get((prev.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
+    # "EBT crossing from the right": a word that names a person or a rider
     if m.category == "positions" and m.meaning in ("road_left", "road_right") and span[0].word == "crossing" and \
             person_before:  # "a cyclist crossing from the right": a person crossing the road, from that side
         side = m.meaning[5:]
