@@ -2771,3 +2771,13 @@ def test_my_driver_and_ours_are_the_ego(prompt):
     found = agents(prompt)
     assert [a for a in found if a[2] == "ego"] == [("car", "stop", "ego")] and not any(
         a == ("car", "go_straight", "front") for a in found), found
+
+
+def test_waiting_to_pass_behind_a_rider_is_following_it():
+    found = agents("We were behind a tractor, waiting to pass, when a motorbike came the other way.")
+    assert ("car", "go_straight", "ego") in found and ("truck", "go_straight", "front") in found, found
+
+
+def test_an_oncoming_vehicle_of_the_kind_named_as_the_ego_is_not_the_ego():
+    found = agents("Our van is the ego. It was on a country road when an oncoming van came round the bend.")
+    assert ("car", "go_straight", "front_left") in found and len(found) == 2, found

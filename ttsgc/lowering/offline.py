@@ -376,8 +376,9 @@ def _designated_ego(units: list[Unit]) -> list[Unit]:
     for k, u in enumerate(units):
         if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].base in heads:
             j = k - 1
-            while j >= 0 and units[j].category == "word" and units[j].word not in lexicon().function_words:
-                j -= 1  # "our white delivery van": past its adjectives to its determiner
+            while j >= 0 and (units[j].category == "word" and units[j].word not in lexicon().function_words or
+                              units[j].category in ("positions", "behaviours") and len(units[j].tokens) == 1):
+                j -= 1  # "our white delivery van", "an oncoming van": past its adjectives to its determiner
             if not (j >= 0 and (units[j].word in NOT_THE_SAME or units[j].category == "number"
                                 or units[j].category == "numbers" and units[j].word != "one")):
                 u = Unit(u.start, u.end, "agents", "ego", u.tokens)
@@ -2183,6 +2184,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             and clause_units[k - 2].category == "actions" and clause_units[k - 2].meaning == "stop"
         if action == "cross" and e.type == "pedestrian" and waiting_to:
             e.features.add("waits_to_cross")  # "standing on the pavement, waiting to cross": the crossing is to come
+        if waiting_to and set(u.base.split()) & OVERTAKING:
+            e.actions = [a for a in e.actions if not (a[0] == stage and a[4] == "stop")]
+            return  # "behind a cyclist, waiting to pass": following it, for a chance to pass
         if waiting_to and action in ("cut_in", "move", "lane_change", "lane_left", "lane_right"):
             return  # "a bus is waiting to pull out of the side road": it waits; pulling out is to come
         if action == "walk" and e.type == "pedestrian" and {t.word for t in u.tokens} & SIDEWALK_WORDS:
