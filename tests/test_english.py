@@ -17,6 +17,7 @@ from ttsgc.language import parse
 from ttsgc.lowering import lower_prompt
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.lexicon import FOLDER, TOO_LARGE, read_number, tokenize
+from ttsgc.lowering.narration import read_narration
 from ttsgc.lowering.offline import lower
 from ttsgc.resources import resource_dir
 from ttsgc.ttsg_import import import_plan
@@ -2118,6 +2119,64 @@ def test_a_pedestrian_crossing_placed_elsewhere_stays_a_crosswalk():
 def test_slow_before_a_noun_is_how_the_agent_drives(prompt, kind):
     others = [(a.type, a.behavior) for a in lower(prompt).scenario.agents() if not a.is_ego]
     assert others == [(kind, "cautious")]
+
+
+# -- the account inside its document, and who its ego is -------------------------------------------------------
+
+def test_a_letters_greeting_and_signature_name_no_agents():
+    prompt = ("Hello Rosa,\n\nA cyclist was riding ahead of me on Mill Lane.\n\nBest wishes,\nBus Depot Team\n"
+              "Coach Hire Ltd")
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_a_declared_ego_vehicle_its_fleet_number_and_its_named_driver_are_the_ego():
+    prompt = ("Hi all,\n\nCoach 51 (driver: Piotr Zielinski) was in the right lane when a van in the lane to his left "
+              "moved across in front of him. Piotr braked.\nPlease use our coach as the ego.\n\nThanks,\nMo")
+    assert agents(prompt) == [("bus", "go_straight", "ego"), ("car", "change_lane_to_right", "front_left")]
+    assert agents("Cab 3 (Li Wei driving) was waiting when a lorry came towards her. Use the cab as the ego.")[0] == \
+        ("car", "stop", "ego")
+
+
+def test_the_drivers_pronoun_is_the_ego_unless_another_person_of_it_was_named():
+    told = read_narration("Van 5 (driver Ann Bell) saw a cyclist ahead of her. Our van is the ego.").text
+    assert "ahead of the ego" in told and "Ann" not in told
+    told = read_narration("Our taxi is the ego. A man crossed in front of the taxi and he stopped.").text
+    assert "he stopped" in told and "in front of the ego" in told
+
+
+def test_a_passengers_driver_and_their_car_are_the_ego():
+    assert agents("Four stars. My driver slowed down for a jogger crossing ahead of us. Car was spotless.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert agents("Driver was lovely and a motorbike passed us on the left.") == [
+        ("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
+    assert len(agents("A lorry pulled out. The driver waved at us.")) == 2  # that lorry's driver
+
+
+def test_a_number_naming_a_vehicle_counts_nothing():
+    assert agents("I was driving the number 7 bus when a car stopped ahead of me.") == [
+        ("bus", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+def test_a_late_night_pickup_is_a_fare_not_a_pickup_truck():
+    assert agents("Late night pickup downtown, a bus stopped ahead of us.") == [
+        ("bus", "stop", "front"), ("car", "go_straight", "ego")]
+    assert agents("A pickup from the left turned right in front of me.") == [
+        ("car", "go_straight", "ego"), ("car", "turn_right", "road_of_left_turn")]
+
+
+def test_a_transcripts_interjections_are_no_account_and_a_no_answers_the_question():
+    prompt = ("Q: Was there a bus behind you?\nA: No.\nQ: What happened?\n"
+              "A: A jogger ran across in front of me.\nMS. DOYLE: Objection, the lorry driver is not on trial.\n")
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_the_named_lane_of_a_count_gives_the_lanes():
+    assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
+
+
+def test_it_turned_out_is_no_turn():
+    assert agents("A police car stopped behind me. Turned out it was a mistake.") == [
+        ("car", "go_straight", "ego"), ("police", "stop", "back")]
 
 
 # -- spoken and narrated English: discourse words, asides, counterfactuals ------------------------------------

@@ -28,6 +28,7 @@ from functools import lru_cache
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
+from ttsgc.lowering.narration import read_narration
 from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, _names_agent, lexicon, matches, read_number, tokenize
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
@@ -702,6 +703,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
             tokens[m.start - 1].word in ("a", "an", "the", "this", "that", "very", "really"):
         return [Unit(m.start, m.end, "behaviours", "cautious", span)]  # "a slow bus": how it drives, no verb
+    if m.category == "agents" and [t.word for t in span] == ["pickup"] and _picking_up(tokens, m.start, nxt):
+        return [Unit(m.start, m.end, "word", "pickup", span)]  # "a late night pickup downtown": a fare, no truck
     if m.category == "weather" and [t.word for t in span] == ["dark"] and nxt in COLOURS:
         return [Unit(m.start, m.end, "word", "dark", span)]  # "a dark blue saloon": a shade, not the night
     prev = tokens[m.start - 1] if m.start > 0 else None
@@ -755,6 +758,17 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
 
 
 # -- road, weather, kinds -----------------------------------------------------------------------------------
+
+PICKUP_TIMES = {"night", "morning", "evening", "afternoon", "midnight", "airport", "station", "school", "late", "early",
+                "passenger", "rider", "ride", "uber", "lyft", "taxi", "cab", "curbside", "kerbside"}
+PICKUP_PLACES = {"downtown", "location", "point", "spot", "time", "address", "zone", "area"}
+
+
+def _picking_up(tokens: list[Token], start: int, nxt: str) -> bool:
+    """'late night pickup downtown', 'an airport pickup', 'the pickup point': a passenger collected, no vehicle."""
+    prev = tokens[start - 1].word if start > 0 and tokens[start - 1].sentence == tokens[start].sentence else ""
+    return prev in PICKUP_TIMES or nxt in PICKUP_PLACES
+
 
 POSSESSIVES = {"its", "his", "her", "their"}
 PUSHED_ALONG = {"push", "wheel", "walk", "drag", "carry", "lift", "lead", "pushing", "wheeling", "walking"}
@@ -998,7 +1012,7 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         if t.word not in ("lane", "lanes") or i == 0:
             continue
         prev = tokens[i - 1]
-        numbered = _numbered_lane(tokens, i)
+        numbered = _numbered_lane(tokens, i) or _named_lane_of(tokens, i)
         if numbered is not None:  # "in lane two of three": lanes are numbered on one carriageway
             found.append(numbered)
             continue
@@ -1047,6 +1061,19 @@ def _numbered_lane(tokens: list[Token], i: int) -> tuple[bool, int] | None:
         if of is not None and n <= of < 10:
             return True, int(of)
     return (False, int(n)) if n >= 2 else None
+
+
+LANE_NAMES = {"left", "right", "middle", "centre", "center", "inside", "outside", "nearside", "offside", "fast", "slow",
+              "overtaking", "first", "second", "third", "inner", "outer"}
+
+
+def _named_lane_of(tokens: list[Token], i: int) -> tuple[bool, int] | None:
+    """'the middle lane of three', 'the left lane of two': how many lanes the ego's carriageway has."""
+    if tokens[i].word != "lane" or tokens[i - 1].word not in LANE_NAMES or i + 2 >= len(tokens) or \
+            tokens[i + 1].word != "of" or tokens[i + 2].sentence != tokens[i].sentence:
+        return None
+    n = _word_number(tokens[i + 2])
+    return (True, int(n)) if n is not None and 2 <= n < 10 and n == int(n) else None
 
 
 def _word_number(t: Token) -> float | None:
@@ -3730,11 +3757,13 @@ def _name(prompt: str) -> str:
 
 def lower(prompt: str, seed: int = 0) -> Lowered:
     """Lower an English prompt into a Scenario; LoweringError when nothing in it can be read as a scene."""
+    narration = read_narration(prompt)
+    prompt = narration.text
     tokens = tokenize(prompt)
     if not tokens:
         raise LoweringError("the prompt is empty")
     tokens = _ev_as_ego(tokens)
-    r = _Reader(tokens, _units(tokens))
+    r = _Reader(tokens, _units(tokens), notes=list(narration.notes))
     _KEEPS_LEFT.set(_drives_on_the_left(tokens))
     ego_words = [u.tokens for u in r.units if u.category == "agents" and u.meaning == "ego"]
     _EGO_SPEAKS.set(bool(ego_words) and all(len(ts) == 1 and ts[0].word in SPEAKERS for ts in ego_words))

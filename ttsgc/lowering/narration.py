@@ -1,0 +1,231 @@
+"""The scene's narration inside the document that carries it, and who the narration's ego is.
+
+People write scenes inside other documents: an email with a greeting and a signature, a deposition whose
+counsel object between answers, an app review headed by its rating. The frame around the account names people
+and vehicles that are no part of the scene ("Cheers, Dana, Fleet Operations"), so it is taken off before the
+parser reads the text.
+
+The ego is often not "I": a fleet manager writes about "van 214 (driver Marek Nowak)" and says "our van is the
+ego"; a passenger writes "my driver eased off". Mentions of the ego's vehicle and of its driver (by role, by
+name, and the driver's pronoun) are read as the ego, spelled out as "the ego" for the parser.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+SALUTATION = re.compile(r"^\s*(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
+                        r"morning|afternoon|evening|to whom it may concern)\b[^.!?\n]{0,60}$", re.I)
+CLOSING = re.compile(r"^\s*(?:cheers|thanks|thank you|many thanks|thanks a lot|thanks in advance|thx|ta|best|"
+                     r"all the best|best wishes|best regards|kind regards|warm regards|warmest regards|regards|"
+                     r"sincerely|yours(?: sincerely| faithfully| truly)?|take care|speak soon|talk soon|br|"
+                     r"with thanks|respectfully)\b[\s,.!]*(?:\S+)?[\s,.!]*$", re.I)
+RATING = re.compile(r"^\s*(?:(?:[0-5](?:\.5)?|one|two|three|four|five)\s*(?:/\s*5\s*)?stars?|[0-5]\s*/\s*5|"
+                    r"[\u2605\u2606\u2B50]+)\s*[!.,:;\-]*\s*", re.I)
+SPEAKER = re.compile(r"^\s*((?:[A-Z][A-Z.'\-]*\s?){1,4}):\s*", re.M)  # "MR. PRICE:", "THE COURT:"
+QA_LABEL = re.compile(r"^\s*(Q|A|QUESTION|ANSWER|THE WITNESS)\s*[:.]\s*", re.I)
+NEGATIVE_ANSWER = re.compile(r"^\s*(?:no|none|nobody|no one|nothing|not that i (?:saw|could see|know of)|"
+                             r"i did not|i didn't|there (?:was|were) none)\b[\s,.!]*(?:sir|ma'am)?[\s,.!]*(?:\w+[.!]?)?$",
+                             re.I)
+ASKS_FOR_OTHERS = re.compile(r"\b(?:any|other|anyone|anybody|anything)\b|\b(?:was|were|is|are) there\b", re.I)
+# "Were there other cars?", "Was there a bus behind you?": a question of what was there
+
+VEHICLE_NOUNS = {"van": "car", "cab": "car", "taxi": "car", "car": "car", "vehicle": "car", "minibus": "car",
+                 "pickup": "car", "suv": "car", "truck": "truck", "lorry": "truck", "hgv": "truck", "bus": "bus",
+                 "coach": "bus", "motorcycle": "motorcycle", "motorbike": "motorcycle", "scooter": "motorcycle",
+                 "moped": "motorcycle"}
+EGO_NOUN = {"car": "the ego", "truck": "the ego truck", "bus": "the ego bus", "motorcycle": "the ego motorcycle"}
+_NOUN = r"(van|cab|taxi|car|vehicle|minibus|pickup|suv|truck|lorry|hgv|bus|coach|motorcycle|motorbike|scooter|moped)"
+DECLARATION = re.compile(
+    r"(?:,\s*|\b(?:with|using|having)\s+)?\b(?:(?:our|the|my|this|that)\s+)?(?:[a-z]+\s+)?" + _NOUN +
+    r"(?:\s+(?:no\.?\s*|#)?\d+)?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+(?:the\s+|our\s+)?ego\b"
+    r"(?:\s+(?:vehicle|car))?(?:\s+for this)?(?:\s+please)?", re.I)
+FLEET_NOUNS = r"van|cab|taxi|minibus|car|vehicle|unit|truck|lorry|bus|coach|motorcycle|motorbike|scooter"
+FLEET_ONLY = {"van", "cab", "taxi", "minibus"}  # never a scenario's label ("car 1", "unit 2" are)
+NOT_A_QUANTITY = r"(?!\s*(?:mph|km|kmh|kph|m\b|metres|meters|feet|ft|seconds|s\b|minutes|lanes?|%|percent|miles?))"
+NAME = r"(?:[A-Z]'[A-Z][a-z]+|[A-Z][a-z]+(?:['\-][A-Z]?[a-z]+)?)"  # "Kelly", "O'Brien", "Smith-Jones"
+FULL_NAME = rf"{NAME}(?:\s+{NAME}){{0,2}}"
+DRIVER_NAMED = (re.compile(rf"\b(?i:driver)\s*:?\s+({FULL_NAME})"),  # "driver: Aisha Rahman", "our driver Sven Keller"
+                re.compile(rf"\(\s*({FULL_NAME})\s+(?:driving|at the wheel|behind the wheel)\s*\)"),  # "(Tom driving)"
+                re.compile(rf"(?:^|[.!?,\n]\s*)({FULL_NAME})\s+(?:in|driving|at the wheel of)\s+the ego\b"))
+NOT_NAMES = {"The", "A", "An", "Our", "My", "His", "Her", "Their", "Van", "Cab", "Taxi", "He", "She", "It", "We",
+             "I", "They", "This", "That", "Then", "On", "In", "At", "Yesterday", "Today", "Monday", "Tuesday",
+             "Wednesday", "Thursday", "Friday", "Saturday", "Sunday", "Last", "No", "Driver"}
+OTHER_PEOPLE = {"he": r"guy|man|boy|dude|bloke|lad|gentleman|fella|fellow|chap|husband|father|dad|son|brother|"
+                      r"policeman|officer",
+                "she": r"woman|lady|girl|mother|mom|mum|wife|daughter|sister|policewoman"}
+POSSESSED = r"(?:lane|left|right|way|path|front|side|mirror|wing|bumper|brakes?|direction|approach|exit|turn|rear|" \
+            r"back|nose|bonnet|hood|door|windows?|wheel|speed|van|car|cab|taxi|truck|lorry|bus|vehicle|route|" \
+            r"nearside|offside|view|line|mirrors|lights|horn|own|indicator|signal)"
+
+
+@dataclass
+class Narration:
+    text: str
+    notes: list[str] = field(default_factory=list)
+
+
+def read_narration(prompt: str) -> Narration:
+    """The account a prompt gives, out of its document, with its ego's other names spelled as the ego."""
+    notes: list[str] = []
+    text = _without_letter_frame(prompt, notes)
+    text = _testimony(text, notes)
+    text = RATING.sub("", text, count=1) if RATING.match(text) else text
+    text = _declared_ego(text, notes)
+    text = _vehicle_numbers(text)
+    text = _passengers_driver(text, notes)
+    return Narration(text, notes)
+
+
+def _without_letter_frame(text: str, notes: list[str]) -> str:
+    """'Hi team,' ... 'Cheers, / Dana / Fleet Operations': the greeting and the signature are no scene."""
+    lines = text.split("\n")
+    if len([x for x in lines if x.strip()]) < 2:
+        return text
+    first = next(k for k, x in enumerate(lines) if x.strip())
+    if SALUTATION.match(lines[first]) and len(lines[first].split()) <= 8:
+        lines[first] = ""
+        notes.append("read past the letter's greeting")
+    for k in range(len(lines) - 1, first, -1):
+        if CLOSING.match(lines[k]) and len(lines[k].split()) <= 4 and any(x.strip() for x in lines[:k]):
+            notes.append("read up to the letter's closing")
+            lines = lines[:k]
+            break
+    return "\n".join(lines)
+
+
+def _testimony(text: str, notes: list[str]) -> str:
+    """A transcript of questions and answers: counsel's interjections ('MR. PRICE: Objection.') are no account,
+    the labels go, and a question answered 'No.' / 'None.' names nothing that was there."""
+    lines = text.split("\n")
+    if sum(bool(QA_LABEL.match(x)) for x in lines) < 2:
+        return text
+    kept: list[str] = []
+    asked: int | None = None  # the index in kept of the question last asked
+    for line in lines:
+        label = QA_LABEL.match(line)
+        if label is None and SPEAKER.match(line):
+            notes.append(f"read past '{line.strip()[:40]}' (not the witness's account)")
+            continue
+        body = line[label.end():] if label else line
+        kind = label.group(1).upper()[0] if label else ""
+        if kind == "Q":
+            asked = len(kept)
+        elif kind == "A" and asked is not None and NEGATIVE_ANSWER.match(body) and \
+                ASKS_FOR_OTHERS.search(kept[asked]):
+            notes.append(f"read '{kept[asked].strip()[:40]}' as answered no")
+            kept[asked] = ""
+            asked = None
+        kept.append(body if not body.strip() or body.rstrip()[-1] in ".?!" else body.rstrip() + ".")
+    return "\n".join(kept)
+
+
+def _vehicle_numbers(text: str) -> str:
+    """'van 214', 'Cab 17', 'the number 14 bus', 'unit 214', 'Junction 9', 'Route 12': a number that names a
+    vehicle or a place counts nothing and limits no speed."""
+    text = re.sub(r"\b(?:the\s+)?(?:number|no\.|#)\s*\d+\s+" + _NOUN + r"\b", lambda m: "the " + m.group(1), text,
+                  flags=re.I)
+    text = re.sub(r"\b(" + FLEET_NOUNS + r")\s+(?:no\.?\s*|#)?(\d{1,4})\b" + NOT_A_QUANTITY,
+                  lambda m: m.group(1) if len(m.group(2)) > 1 or m.group(1).lower() in FLEET_ONLY else m.group(0), text,
+                  flags=re.I)  # "car 1" and "unit 2" stay the labels a police report gives
+    text = re.sub(r"\b(junction|exit|gate|platform|stand|bay|pier|route|highway|interstate|county road)\s+"
+                  r"(?:no\.?\s*|#)?\d{1,4}[a-z]?\b" + NOT_A_QUANTITY, lambda m: m.group(1), text,
+                  flags=re.I)  # "at Junction 9", "Route 12"
+    return re.sub(r"\(\s*(?:unit|no\.?|fleet no\.?)\s*\d+\s*,\s*", "(", text, flags=re.I)
+
+
+def _declared_ego(text: str, notes: list[str]) -> str:
+    """'Our van is the ego', 'with the taxi as the ego', 'Van = ego': that vehicle, and its driver, are the ego
+    wherever the text names them by role, by fleet name or by name."""
+    m = DECLARATION.search(text)
+    if m is None:
+        return text
+    noun = m.group(1).lower()
+    kind = VEHICLE_NOUNS[noun]
+    ego = EGO_NOUN[kind]
+    notes.append(f"read the {noun} as the ego (said so)")
+    text = DECLARATION.sub("", text)
+    plural = noun + ("es" if noun.endswith("s") else "s")
+    text = re.sub(rf"\bone of (?:our|my|the) (?:[a-z]+ )?{plural}\b", ego, text, flags=re.I)
+    text = re.sub(rf"\b(?:{FLEET_NOUNS})\s+(?:no\.?\s*|#)?\d{{2,4}}\b" + NOT_A_QUANTITY + r"(?:\s*\(\s*(?:[A-Za-z]+\s+)?"
+                  rf"{noun}\s*,)?", ego, text, flags=re.I)  # "vehicle 311 (Transit van, ...)": the fleet's vehicle
+    text = re.sub(rf"\b{noun}\s+(?:no\.?\s*|#)?\d{{1,4}}\b(?!\s*(?:mph|km|kmh|kph|m\b|metres|meters|feet|ft|seconds|"
+                  rf"s\b|minutes|lanes?|%|percent))", ego, text, flags=re.I)  # "Van 203 (driver ...)": a fleet name
+    text = re.sub(rf"\b(?:our|my|the|this|that)\s+(?!other\b|oncoming\b|second\b|another\b)(?:[a-z]+\s+)?{noun}\b",
+                  ego, text, flags=re.I)
+    text = re.sub(rf"(?:^|(?<=[.!?,(]\s)|(?<=\n))\b{noun}\b(?=\s*(?:\(|,|is\b|was\b|had\b))", ego, text,
+                  flags=re.I)  # "Cab is the ego", "Taxi, driver ...": bare at a sentence's start
+    text = re.sub(r"\b(?:our|my|the|this|that)\s+(?:[a-z]+\s+)?the ego\b", "the ego", text, flags=re.I)
+    return _named_driver(text, notes)
+
+
+def _named_driver(text: str, notes: list[str]) -> str:
+    """'(driver: Aisha Rahman)', 'Tom Akers driving', 'Jamie Cole in van 140': the ego's driver is the ego, by
+    name and by the pronoun the text gives them."""
+    names: list[str] = []
+    for pattern in DRIVER_NAMED:
+        for m in pattern.finditer(text):
+            words = [w for w in m.group(1).split() if w not in NOT_NAMES]
+            if words:
+                names.append(" ".join(words))
+    text = re.sub(r"\(\s*(?:driver\s*:?\s*)?" + FULL_NAME + r"(?:\s+driving)?\s*\)", "", text)
+    text = re.sub(r",?\s*\b(?i:driver)\s*:?\s+" + FULL_NAME + r"\s*(?=[,)])", "", text)
+    for name in sorted(set(names), key=len, reverse=True):
+        parts = [name] + ([name.split()[0]] if " " in name else [])
+        for part in parts:
+            text = re.sub(rf"\b{re.escape(part)}'s\b", "the ego's", text, flags=re.I)
+            text = re.sub(rf"\b{re.escape(part)}\b", "the ego", text, flags=re.I)
+        notes.append(f"read {name} as the ego's driver")
+    text = re.sub(r"\b(?:driver|driven by)\s*:?\s*the ego\b", "the ego", text, flags=re.I)
+    text = re.sub(r"\bthe ego(?:\s*,)?\s+(?:\(\s*)?the ego\b\s*\)?", "the ego", text)
+    return _drivers_pronoun(text, notes) if names or "the ego" in text else text
+
+
+def _passengers_driver(text: str, notes: list[str]) -> str:
+    """'my driver eased off', 'Driver slowed way down': a passenger's account; whoever drives the narrator is the
+    ego, named by role ('my driver', 'the driver' when no other vehicle is named before) or by name."""
+    said = re.search(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b(?:\s*,?\s*(" + FULL_NAME + r"))?",
+                     text)
+    bare = re.search(r"(?:^|[.!?,]\s+)(?:the\s+)?[Dd]river\b(?!\s+of\b)", text)
+    if said is None and bare is None:
+        return text
+    before = text[:(said or bare).start()]
+    if said is None and re.search(r"\b" + _NOUN + r"s?\b|\b(?:cyclist|rider)\b", before, re.I):
+        return text  # "a truck pulled out. The driver ...": that vehicle's driver
+    names = [w for w in (said.group(1).split() if said and said.group(1) else []) if w not in NOT_NAMES]
+    text = re.sub(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b(?:\s*,?\s*" + FULL_NAME + r")?",
+                  "the ego", text) if said else text
+    text = re.sub(r"(^|[.!?,]\s+)(?:[Tt]he\s+)?[Dd]river\b(?!\s+of\b)", r"\1the ego", text)
+    text = re.sub(r"(^|[.!?,]\s+)(?:[Tt]he\s+)?[Cc]ar\s+(?=(?:was|is|smelled|smelt|smells|looked|looks|felt|feels)\s+"
+                  r"(?!in\b|on\b|at\b|ahead\b|behind\b|next\b|beside\b|stopped\b|parked\b|coming\b|going\b|"
+                  r"driving\b|turning\b|waiting\b|pulling\b))", r"\1the ego ", text)  # "Car was clean": the ride
+    for name in names:
+        text = re.sub(rf"\b{re.escape(name)}'s\b", "the ego's", text)
+        text = re.sub(rf"\b{re.escape(name)}\b", "the ego", text)
+    notes.append("read the narrator's driver as the ego")
+    return _drivers_pronoun(text, notes)
+
+
+def _drivers_pronoun(text: str, notes: list[str]) -> str:
+    """The ego's driver's pronoun: the first 'he' or 'she' (him, his, her) after the driver is named, unless a man
+    (a woman) was named before it; from there each 'he/him/his' (or 'she/her') is the ego."""
+    first = text.find("the ego")
+    if first < 0:
+        return text
+    m = re.search(r"\b(he|she|him|his|her)\b", text[first:], re.I)
+    if m is None:
+        return text
+    pronoun = "she" if m.group(1).lower() in ("she", "her") else "he"
+    if re.search(rf"\b(?:{OTHER_PEOPLE[pronoun]})s?\b", text[:first + m.start()], re.I):
+        return text  # "a man crossed in front of the taxi and he stopped": the man
+    start = first + m.start()
+    head, tail = text[:start], text[start:]
+    if pronoun == "he":
+        tail = re.sub(r"\bhis\b", "the ego's", tail, flags=re.I)
+        tail = re.sub(r"\b(?:he|him|himself)\b", "the ego", tail, flags=re.I)
+    else:
+        tail = re.sub(rf"\bher\b(?=\s+{POSSESSED}\b)", "the ego's", tail, flags=re.I)
+        tail = re.sub(r"\b(?:she|her|herself)\b", "the ego", tail, flags=re.I)
+    notes.append(f"read '{pronoun}' as the ego's driver")
+    return head + tail
