@@ -2170,6 +2170,24 @@ def test_a_transcripts_interjections_are_no_account_and_a_no_answers_the_questio
     assert agents(prompt) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
 
 
+def test_a_question_answered_no_says_what_was_not_there():
+    prompt = "Q: Were there other cars near you when you turned left?\nA: None. It was late.\nQ: And the light?\nA: Red."
+    assert agents(prompt) == [("car", "turn_left", "ego")]
+    assert road("Q: Was there a stop sign?\nA: No, sir.\nQ: Did you stop?\nA: Yes.").without_signals == ("stop",)
+
+
+def test_the_addressees_vehicle_is_the_ego():
+    assert agents("Your car is waiting at the lights and a bus pulls up behind your vehicle.") == [
+        ("bus", "stop", "back"), ("car", "stop", "ego")]
+    assert ("motorcycle", "go_straight", "ego") in agents("I was riding my motorcycle when a van pulled out in front of me.")
+
+
+def test_a_likeness_and_a_model_year_add_no_vehicles():
+    assert agents("A big lorry, like a removal truck, was parked ahead of me.") == [
+        ("car", "go_straight", "ego"), ("truck", "stop", "front")]
+    assert agents("A 2015 Ducati was parked ahead of me.") == [("car", "go_straight", "ego"), ("motorcycle", "stop", "front")]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

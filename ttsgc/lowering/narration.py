@@ -26,8 +26,7 @@ RATING = re.compile(r"^\s*(?:(?:[0-5](?:\.5)?|one|two|three|four|five)\s*(?:/\s*
 SPEAKER = re.compile(r"^\s*((?:[A-Z][A-Z.'\-]*\s?){1,4}):\s*", re.M)  # "MR. PRICE:", "THE COURT:"
 QA_LABEL = re.compile(r"^\s*(Q|A|QUESTION|ANSWER|THE WITNESS)\s*[:.]\s*", re.I)
 NEGATIVE_ANSWER = re.compile(r"^\s*(?:no|none|nobody|no one|nothing|not that i (?:saw|could see|know of)|"
-                             r"i did not|i didn't|there (?:was|were) none)\b[\s,.!]*(?:sir|ma'am)?[\s,.!]*(?:\w+[.!]?)?$",
-                             re.I)
+                             r"there (?:was|were) none)\b(?:,?\s*(?:sir|ma'am))?\s*(?:[.!]|$)", re.I)
 ASKS_FOR_OTHERS = re.compile(r"\b(?:any|other|anyone|anybody|anything)\b|\b(?:was|were|is|are) there\b", re.I)
 # "Were there other cars?", "Was there a bus behind you?": a question of what was there
 
@@ -72,6 +71,7 @@ def read_narration(prompt: str) -> Narration:
     text = _without_letter_frame(prompt, notes)
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
+    text = _asides(text)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
@@ -115,10 +115,22 @@ def _testimony(text: str, notes: list[str]) -> str:
         elif kind == "A" and asked is not None and NEGATIVE_ANSWER.match(body) and \
                 ASKS_FOR_OTHERS.search(kept[asked]):
             notes.append(f"read '{kept[asked].strip()[:40]}' as answered no")
-            kept[asked] = ""
-            asked = None
+            kept[asked] = re.sub(r"\b(?:any other|any|some|other|an?)\b", "no", kept[asked], flags=re.I)
+            asked = None  # "Were there other cars? No.": there were no other cars
         kept.append(body if not body.strip() or body.rstrip()[-1] in ".?!" else body.rstrip() + ".")
     return "\n".join(kept)
+
+
+SIMILE = re.compile(r"\b(" + _NOUN[1:-1] + r"|truck|semi|ambulance|engine|lorry)(e?s?),?\s+like an?\s+(?:[a-z]+\s+){0,2}?(?:"
+                    + _NOUN[1:-1] + r"|truck|ambulance|fire engine|police car|racing car|race car)\b", re.I)
+
+
+def _asides(text: str) -> str:
+    """'a big box truck, like a moving truck': a likeness is no second vehicle; 'a 2019 Harley': a model year
+    counts nothing."""
+    text = SIMILE.sub(lambda m: m.group(1) + m.group(2), text)
+    return re.sub(r"\b(a|an|the|my|his|her|their|our|your)\s+(?:19[5-9]\d|20[0-4]\d)\s+(?=[A-Za-z])", r"\1 ", text,
+                  flags=re.I)
 
 
 def _vehicle_numbers(text: str) -> str:
