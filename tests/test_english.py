@@ -2176,6 +2176,17 @@ def test_a_question_answered_no_says_what_was_not_there():
     assert road("Q: Was there a stop sign?\nA: No, sir.\nQ: Did you stop?\nA: Yes.").without_signals == ("stop",)
 
 
+def test_a_question_the_answer_tells_or_denies_names_no_agent_itself():
+    told = "Q: Were there other cars at the junction?\nA: There was one van waiting on my right.\nQ: Go on.\nA: I went."
+    assert agents(told) == [("car", "go_straight", "ego"), ("car", "stop", "road_of_right_turn")]
+    unseen = "Q: Did you see the bus at that point?\nA: Not yet.\nQ: Then?\nA: A cyclist crossed ahead of me."
+    assert agents(unseen) == [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]
+
+
+def test_small_hours_in_the_morning_are_night():
+    assert lower("It was three in the morning and a taxi stopped ahead of me.").scenario.weather.time == "night"
+
+
 def test_the_addressees_vehicle_is_the_ego():
     assert agents("Your car is waiting at the lights and a bus pulls up behind your vehicle.") == [
         ("bus", "stop", "back"), ("car", "stop", "ego")]

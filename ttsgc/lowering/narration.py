@@ -15,6 +15,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from ttsgc.lowering.lexicon import matches, tokenize
+
 SALUTATION = re.compile(r"^\s*(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
                         r"morning|afternoon|evening|to whom it may concern)\b[^.!?\n]{0,60}$", re.I)
 CLOSING = re.compile(r"^\s*(?:cheers|thanks|thank you|many thanks|thanks a lot|thanks in advance|thx|ta|best|"
@@ -25,10 +27,12 @@ RATING = re.compile(r"^\s*(?:(?:[0-5](?:\.5)?|one|two|three|four|five)\s*(?:/\s*
                     r"[\u2605\u2606\u2B50]+)\s*[!.,:;\-]*\s*", re.I)
 SPEAKER = re.compile(r"^\s*((?:[A-Z][A-Z.'\-]*\s?){1,4}):\s*", re.M)  # "MR. PRICE:", "THE COURT:"
 QA_LABEL = re.compile(r"^\s*(Q|A|QUESTION|ANSWER|THE WITNESS)\s*[:.]\s*", re.I)
-NEGATIVE_ANSWER = re.compile(r"^\s*(?:no|none|nobody|no one|nothing|not that i (?:saw|could see|know of)|"
+NEGATIVE_ANSWER = re.compile(r"^\s*(?:no|none|nobody|no one|nothing|not yet|not then|not that i (?:saw|could see|know of)|"
                              r"there (?:was|were) none)\b(?:,?\s*(?:sir|ma'am))?\s*(?:[.!]|$)", re.I)
-ASKS_FOR_OTHERS = re.compile(r"\b(?:any|other|anyone|anybody|anything)\b|\b(?:was|were|is|are) there\b", re.I)
-# "Were there other cars?", "Was there a bus behind you?": a question of what was there
+ASKS_FOR_OTHERS = re.compile(r"\b(?:any|other|anyone|anybody|anything)\b|\b(?:was|were|is|are) there\b|"
+                             r"\bdid you (?:see|notice|spot|observe)\b", re.I)
+# "Were there other cars?", "Was there a bus behind you?", "Did you see his car?": a question of what was there
+EXISTENTIAL = re.compile(r"\b(?:any|anyone|anybody)\b|\b(?:was|were|is|are) there\b", re.I)
 
 VEHICLE_NOUNS = {"van": "car", "cab": "car", "taxi": "car", "car": "car", "vehicle": "car", "minibus": "car",
                  "pickup": "car", "suv": "car", "truck": "truck", "lorry": "truck", "hgv": "truck", "bus": "bus",
@@ -115,8 +119,11 @@ def _testimony(text: str, notes: list[str]) -> str:
         elif kind == "A" and asked is not None and NEGATIVE_ANSWER.match(body) and \
                 ASKS_FOR_OTHERS.search(kept[asked]):
             notes.append(f"read '{kept[asked].strip()[:40]}' as answered no")
-            kept[asked] = re.sub(r"\b(?:any other|any|some|other|an?)\b", "no", kept[asked], flags=re.I)
+            kept[asked] = _denied(kept[asked])
             asked = None  # "Were there other cars? No.": there were no other cars
+        elif kind == "A" and asked is not None and EXISTENTIAL.search(kept[asked]) and _names_agents(body):
+            kept[asked] = _denied(kept[asked])  # "Were there other cars? There was one car stopped ...": the
+            asked = None  # answer says what there was
         kept.append(body if not body.strip() or body.rstrip()[-1] in ".?!" else body.rstrip() + ".")
     return "\n".join(kept)
 
@@ -131,6 +138,15 @@ def _asides(text: str) -> str:
     text = SIMILE.sub(lambda m: m.group(1) + m.group(2), text)
     return re.sub(r"\b(a|an|the|my|his|her|their|our|your)\s+(?:19[5-9]\d|20[0-4]\d)\s+(?=[A-Za-z])", r"\1 ", text,
                   flags=re.I)
+
+
+def _denied(question: str) -> str:
+    return re.sub(r"\b(?:any other|any|some|other|an?)\b|(?:(?<=see )|(?<=notice )|(?<=spot )|(?<=observe ))the\b", "no", question,
+                  flags=re.I)
+
+
+def _names_agents(text: str) -> bool:
+    return any(m.category == "agents" and m.meaning not in ("ego", "none") for m in matches(tokenize(text)))
 
 
 def _vehicle_numbers(text: str) -> str:
