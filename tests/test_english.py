@@ -2199,6 +2199,22 @@ def test_a_likeness_and_a_model_year_add_no_vehicles():
     assert agents("A 2015 Ducati was parked ahead of me.") == [("car", "go_straight", "ego"), ("motorcycle", "stop", "front")]
 
 
+def test_a_text_messages_spellings_read_as_their_words():
+    told = read_narration("theres a bus ahead and it doesnt go, im stuck and i cant pass").text
+    assert "there's a bus" in told and "doesn't go" in told and "i'm stuck" in told and "can't pass" in told
+    assert agents("i waited like 4 light cycles behind a bus") == [("bus", "go_straight", "front"), ("car", "stop", "ego")]
+
+
+def test_place_names_that_are_traffic_words_name_no_agent_or_stop():
+    assert agents("i drove past the park and a bus came the other way") == [
+        ("bus", "go_straight", "front_left"), ("car", "go_straight", "ego")]
+    assert agents("the cyclist by target was crossing in front of me") == [
+        ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]
+    scene = lower("a kid ran out from behind an ice cream truck parked on my right").scenario
+    assert scene.weather is None and ("truck", "stop", "front_right") in [
+        (a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

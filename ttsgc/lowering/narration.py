@@ -75,6 +75,7 @@ def read_narration(prompt: str) -> Narration:
     text = _without_letter_frame(prompt, notes)
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
+    text = _texting(text)
     text = _asides(text)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
@@ -126,6 +127,23 @@ def _testimony(text: str, notes: list[str]) -> str:
             asked = None  # answer says what there was
         kept.append(body if not body.strip() or body.rstrip()[-1] in ".?!" else body.rstrip() + ".")
     return "\n".join(kept)
+
+
+TEXTING = ((r"\b(does|did|do|could|would|should|was|were|is|are|has|have|had|must|need)nt\b", r"\1n't"),
+           (r"\bcant\b", "can't"), (r"\bwont\b", "won't"), (r"\bim\b", "i'm"), (r"\bive\b", "i've"),
+           (r"\b(there|that|it|what|he|she)s\b(?=\s+(?:a|an|the|this|like|no|some|two|three|so|just|gonna|going|"
+            r"literally|always|never|not|been|still|on|in|at)\b)", r"\1's"),
+           (r"\byoure\b", "you're"), (r"\btheyre\b", "they're"), (r"\bu\b(?=\s+(?:know|see|were|are|can|could|"
+                                                                               r"have|had|was))", "you"),
+           (r"\bur\b", "your"), (r"\blil\b", "little"), (r"\bgonna\b", "going to"))
+
+
+def _texting(text: str) -> str:
+    """'doesnt go', 'theres a bus', 'im at the light': a text message's spelling, read as the words it stands for
+    (only where the letters can mean nothing else: 'its', 'ill' and 'well' stay)."""
+    for pattern, replacement in TEXTING:
+        text = re.sub(pattern, replacement, text, flags=re.I)
+    return text
 
 
 SIMILE = re.compile(r"\b(" + _NOUN[1:-1] + r"|truck|semi|ambulance|engine|lorry)(e?s?),?\s+like an?\s+(?:[a-z]+\s+){0,2}?(?:"

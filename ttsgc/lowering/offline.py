@@ -703,6 +703,14 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
             tokens[m.start - 1].word in ("a", "an", "the", "this", "that", "very", "really"):
         return [Unit(m.start, m.end, "behaviours", "cautious", span)]  # "a slow bus": how it drives, no verb
+    if m.category == "actions" and [t.word for t in span] == ["park"] and m.start > 0 and \
+            tokens[m.start - 1].word in ("the", "a", "city", "car", "national", "retail", "business", "theme"):
+        return [Unit(m.start, m.end, "word", "park", span)]  # "the intersection by the park": a place, no stop
+    if m.category == "agents" and [t.word for t in span] == ["target"] and m.start > 0 and \
+            tokens[m.start - 1].word in ("by", "at", "near", "outside", "from", "to", "behind") and \
+            tokens[m.start].sentence == tokens[m.start - 1].sentence:
+        return [Unit(m.start, m.end, "word", "target", span)]  # "the crosswalk by target": the shop; a test
+        # target is "the target" or "a target"
     if m.category == "agents" and [t.word for t in span] == ["pickup"] and _picking_up(tokens, m.start, nxt):
         return [Unit(m.start, m.end, "word", "pickup", span)]  # "a late night pickup downtown": a fare, no truck
     if m.category == "weather" and [t.word for t in span] == ["dark"] and nxt in COLOURS:
