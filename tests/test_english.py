@@ -2150,6 +2150,8 @@ def test_a_passengers_driver_and_their_car_are_the_ego():
     assert agents("Driver was lovely and a motorbike passed us on the left.") == [
         ("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
     assert len(agents("A lorry pulled out. The driver waved at us.")) == 2  # that lorry's driver
+    assert agents("Car was clean, driver was friendly. A bus stopped ahead of us.") == [
+        ("bus", "stop", "front"), ("car", "go_straight", "ego")]
 
 
 def test_a_number_naming_a_vehicle_counts_nothing():
@@ -2213,6 +2215,15 @@ def test_place_names_that_are_traffic_words_name_no_agent_or_stop():
     scene = lower("a kid ran out from behind an ice cream truck parked on my right").scenario
     assert scene.weather is None and ("truck", "stop", "front_right") in [
         (a.type, a.action, a.relative_to_ego) for a in scene.agents()]
+
+
+def test_the_guy_after_a_rider_is_that_rider():
+    assert agents("A cyclist wobbled in the bike lane ahead of us until the guy turned right.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "turn_right", "front")]
+
+
+def test_easing_into_a_lane_changes_lane():
+    assert ("car", "change_lane_to_left", "ego") in agents("Then I eased into the left lane behind the bus.")
 
 
 def test_the_named_lane_of_a_count_gives_the_lanes():

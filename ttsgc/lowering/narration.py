@@ -237,7 +237,8 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
     if said is None and bare is None:
         return text
     before = text[:(said or bare).start()]
-    if said is None and re.search(r"\b" + _NOUN + r"s?\b|\b(?:cyclist|rider)\b", before, re.I):
+    if said is None and re.search(r"\b(?:an?|the|some|this|that)\s+(?:[a-z]+\s+){0,2}?(?:" + _NOUN[1:-1] +
+                                  r"|cyclist|rider)s?\b", before, re.I):
         return text  # "a truck pulled out. The driver ...": that vehicle's driver
     names = [w for w in (said.group(1).split() if said and said.group(1) else []) if w not in NOT_NAMES]
     text = re.sub(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b(?:\s*,?\s*" + FULL_NAME + r")?",

@@ -93,7 +93,7 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
               "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
-STEERING = {"move", "steer", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
+STEERING = {"move", "steer", "ease", "inch", "creep", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
 RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle",
            "tear"}
 
@@ -1805,6 +1805,7 @@ def _it_was_a(r: _Reader, units: list[Unit], first: int, recent: list[Entity]) -
 
 
 CASE_NOUNS = {"scenario", "scene", "test", "case", "situation"}
+RIDING_PEOPLE = {"guy", "man", "woman", "lady", "dude", "kid", "lad", "bloke", "boy", "girl", "person", "fella"}
 
 
 def _names_the_case(r: _Reader, units: list[Unit], head: int, kind: str) -> bool:
@@ -1946,6 +1947,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
         if driven:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
             return NounPhrase(driven[-1], head, first)
+    if definite and count is None and u.base in RIDING_PEOPLE and not plural and \
+            not any(e.type == "pedestrian" for e in r.entities):
+        riders = [e for e in recent if e.type in V.TWO_WHEELER_TYPES] or \
+            [e for e in r.entities if e.type in V.TWO_WHEELER_TYPES]
+        if riders:  # "a cyclist swerving in the bike lane ... until the guy turned right": the rider
+            return NounPhrase(riders[-1], head, first)
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
@@ -2209,7 +2216,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
         if e.is_ego and action == "cut_in" and not direction and u.tokens[0].base in ("swerve", "jerk", "veer"):
             action = "move"  # "I slammed on the brakes and swerved": a jerk of the wheel, no lane named
-        if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull") and direction:
+        if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep") and direction:
             action = "lane_" + direction
         if action == "move" and not e.is_ego and u.tokens[0].base in STEERING and clause_units is not None and \
                 k is not None and any(x.category == "positions" and x.meaning == "toward"
