@@ -2173,7 +2173,8 @@ def test_a_transcripts_interjections_are_no_account_and_a_no_answers_the_questio
 
 
 def test_a_question_answered_no_says_what_was_not_there():
-    prompt = "Q: Were there other cars near you when you turned left?\nA: None. It was late.\nQ: And the light?\nA: Red."
+    prompt = ("Q: Were there other cars near you when you turned left?\nA: None. It was late.\n"
+              "Q: And the light?\nA: Red.")
     assert agents(prompt) == [("car", "turn_left", "ego")]
     assert road("Q: Was there a stop sign?\nA: No, sir.\nQ: Did you stop?\nA: Yes.").without_signals == ("stop",)
 
@@ -2192,19 +2193,22 @@ def test_small_hours_in_the_morning_are_night():
 def test_the_addressees_vehicle_is_the_ego():
     assert agents("Your car is waiting at the lights and a bus pulls up behind your vehicle.") == [
         ("bus", "stop", "back"), ("car", "stop", "ego")]
-    assert ("motorcycle", "go_straight", "ego") in agents("I was riding my motorcycle when a van pulled out in front of me.")
+    assert ("motorcycle", "go_straight", "ego") in agents(
+        "I was riding my motorcycle when a van pulled out in front of me.")
 
 
 def test_a_likeness_and_a_model_year_add_no_vehicles():
     assert agents("A big lorry, like a removal truck, was parked ahead of me.") == [
         ("car", "go_straight", "ego"), ("truck", "stop", "front")]
-    assert agents("A 2015 Ducati was parked ahead of me.") == [("car", "go_straight", "ego"), ("motorcycle", "stop", "front")]
+    assert agents("A 2015 Ducati was parked ahead of me.") == [
+        ("car", "go_straight", "ego"), ("motorcycle", "stop", "front")]
 
 
 def test_a_text_messages_spellings_read_as_their_words():
     told = read_narration("theres a bus ahead and it doesnt go, im stuck and i cant pass").text
     assert "there's a bus" in told and "doesn't go" in told and "i'm stuck" in told and "can't pass" in told
-    assert agents("i waited like 4 light cycles behind a bus") == [("bus", "go_straight", "front"), ("car", "stop", "ego")]
+    assert agents("i waited like 4 light cycles behind a bus") == [
+        ("bus", "go_straight", "front"), ("car", "stop", "ego")]
 
 
 def test_place_names_that_are_traffic_words_name_no_agent_or_stop():
