@@ -2230,6 +2230,17 @@ def test_easing_into_a_lane_changes_lane():
     assert ("car", "change_lane_to_left", "ego") in agents("Then I eased into the left lane behind the bus.")
 
 
+def test_an_answer_that_names_again_what_was_asked_about_adds_no_agent():
+    prompt = ("Q: A van stopped ahead of you?\nA: A white van, yes.\nQ: What were you driving?\n"
+              "A: My lorry. A big Scania.")
+    assert agents(prompt) == [("car", "stop", "front"), ("truck", "go_straight", "ego")]
+
+
+def test_the_vehicle_one_operates_is_the_egos():
+    assert agents("You were operating the bus when a car stopped ahead of you.") == [
+        ("bus", "go_straight", "ego"), ("car", "stop", "front")]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

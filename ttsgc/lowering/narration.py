@@ -125,8 +125,36 @@ def _testimony(text: str, notes: list[str]) -> str:
         elif kind == "A" and asked is not None and EXISTENTIAL.search(kept[asked]) and _names_agents(body):
             kept[asked] = _denied(kept[asked])  # "Were there other cars? There was one car stopped ...": the
             asked = None  # answer says what there was
+        if kind == "A":
+            body = _without_re_descriptions(body, "\n".join(kept))
         kept.append(body if not body.strip() or body.rstrip()[-1] in ".?!" else body.rstrip() + ".")
     return "\n".join(kept)
+
+
+def _without_re_descriptions(answer: str, before: str) -> str:
+    """'Q: The other vehicle was a minivan? A: A gray minivan, yes.', 'Q: How old? A: Teenager.': an answer that
+    only names again what was already named describes it; it adds no second agent."""
+    named = _agent_kinds(before)
+    kept = []
+    for sentence in re.split(r"(?<=[.!?])\s+", answer):
+        found = matches(tokenize(sentence))
+        agents = [m.meaning for m in found if m.category == "agents" and m.meaning not in ("ego", "none")]
+        verbless = not any(m.category == "actions" for m in found) and not re.search(
+            r"\b(?:is|was|were|are|had|has|have|there|it|he|she|they)\b", sentence, re.I)
+        if not (agents and verbless and set(agents) <= named):
+            kept.append(sentence)
+            named |= _agent_kinds(sentence)
+    return " ".join(kept)
+
+
+def _agent_kinds(text: str) -> set[str]:
+    """The kinds of agent a text names, the ego's by its vehicle noun ('my motorcycle')."""
+    named = set()
+    for m in matches(tokenize(text)):
+        if m.category == "agents":
+            named |= {m.meaning} if m.meaning != "ego" else {VEHICLE_NOUNS[w] for w in m.phrase.split()
+                                                               if w in VEHICLE_NOUNS}
+    return named
 
 
 TEXTING = ((r"\b(does|did|do|could|would|should|was|were|is|are|has|have|had|must|need)nt\b", r"\1n't"),

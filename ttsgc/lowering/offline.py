@@ -3179,9 +3179,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 a.aliases |= b.aliases | {b.head}
                 _fold(r, a, b)
                 continue
-            mine = prev.entity.is_ego and prev.entity.head in FIRST_PERSON | {"we"} and between and all(
+            mine = prev.entity.is_ego and prev.entity.head in FIRST_PERSON | {"we", "you"} and between and all(
                 u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
-                between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding") and \
+                between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding", "operating", "operated") and \
                 np.entity.type in V.EGO_TYPES
             mine = mine or prev.entity.is_ego and len(units[prev.index].tokens) > 1 and _named_make(
                 between, np.entity.type)  # "my vehicle, a grey Vauxhall Astra,": its make and model
@@ -3907,9 +3907,10 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
                 "my vehicle", "my van", "my bike", "my lane", "in my"}
 FIRST_PERSON = {"i", "me", "my", "i'm"}
-AT_THE_WHEEL_OF = {"was", "am", "were", "in", "driving", "drove", "on", "patrol", "uniformed", "mobile", "sitting",
-                   "riding", "at", "the", "wheel", "of", "duty", "routine", "alone", "stationary", "parked", "a", "an",
-                   "marked", "unmarked"}  # "I was stationary in a marked police car": the witness's own car
+AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operating", "operated", "on", "patrol",
+                   "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
+                   "stationary", "parked", "a", "an", "marked", "unmarked"}
+# "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
 
 
 def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
