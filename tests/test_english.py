@@ -2241,6 +2241,20 @@ def test_the_vehicle_one_operates_is_the_egos():
         ("bus", "go_straight", "ego"), ("car", "stop", "front")]
 
 
+def test_sliding_into_a_lane_changes_lane_and_sliding_right_through_goes_straight():
+    assert agents("The van ahead of me slid across into the left lane on the ice.") == [
+        ("car", "change_lane_to_left", "front"), ("car", "go_straight", "ego")]
+    assert ("car", "go_straight", "road_of_left_turn") in agents(
+        "At the crossroads a car from the left slid right through the stop sign.")
+
+
+def test_what_the_narrator_feared_or_asks_for_is_no_manoeuvre():
+    assert agents("A police car stopped behind me and i thought i was getting pulled over lol") == [
+        ("car", "go_straight", "ego"), ("police", "stop", "back")]
+    assert agents("A bus stopped ahead of us. Could you turn this into a test scene?") == [
+        ("bus", "stop", "front"), ("car", "go_straight", "ego")]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

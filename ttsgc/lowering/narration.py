@@ -178,10 +178,18 @@ SIMILE = re.compile(r"\b(" + _NOUN[1:-1] + r"|truck|semi|ambulance|engine|lorry)
                     + _NOUN[1:-1] + r"|truck|ambulance|fire engine|police car|racing car|race car)\b", re.I)
 
 
+BELIEF = re.compile(r"\b(?:i|we) (?:thought|figured|assumed|feared|was sure|were sure|was convinced)\s+(?:that\s+)?"
+                    r"(?:i|we|he|she|it|they)\s+(?:was|were|would|might|had|am|are)\b[^.,;!?]*?"
+                    r"(?=\s+(?:lmao|lol|haha|and then|but|turns out|turned out|then)\b|[.,;!?]|$)", re.I)
+
+
 def _asides(text: str) -> str:
     """'a big box truck, like a moving truck': a likeness is no second vehicle; 'a 2019 Harley': a model year
-    counts nothing."""
+    counts nothing; 'I thought I was getting pulled over': what the narrator feared did not happen."""
     text = SIMILE.sub(lambda m: m.group(1) + m.group(2), text)
+    text = BELIEF.sub("", text)
+    text = re.sub(r"\b(?:it\s+)?turn(?:s|ed)\s+out\s+(?=(?:that|he|she|it|they|i|we|the|to)\b)", "", text,
+                  flags=re.I)  # "turns out he was ...": what was learnt, no turn
     return re.sub(r"\b(a|an|the|my|his|her|their|our|your)\s+(?:19[5-9]\d|20[0-4]\d)\s+(?=[A-Za-z])", r"\1 ", text,
                   flags=re.I)
 
@@ -296,11 +304,11 @@ def _drivers_pronoun(text: str, notes: list[str]) -> str:
         return text  # "a man crossed in front of the taxi and he stopped": the man
     start = first + m.start()
     head, tail = text[:start], text[start:]
-    if pronoun == "he":
-        tail = re.sub(r"\bhis\b", "the ego's", tail, flags=re.I)
+    if pronoun == "he":  # the possessive as "our": "on our left" is a side, "the ego's left" reads as a turn
+        tail = re.sub(r"\bhis\b", "our", tail, flags=re.I)
         tail = re.sub(r"\b(?:he|him|himself)\b", "the ego", tail, flags=re.I)
     else:
-        tail = re.sub(rf"\bher\b(?=\s+{POSSESSED}\b)", "the ego's", tail, flags=re.I)
+        tail = re.sub(rf"\bher\b(?=\s+{POSSESSED}\b)", "our", tail, flags=re.I)
         tail = re.sub(r"\b(?:she|her|herself)\b", "the ego", tail, flags=re.I)
     notes.append(f"read '{pronoun}' as the ego's driver")
     return head + tail

@@ -93,7 +93,9 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
               "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
-STEERING = {"move", "steer", "ease", "inch", "creep", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
+LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid"}  # "... into the
+# left lane": a lane change
+STEERING = {"move", "steer", "ease", "inch", "creep", "slide", "skid", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
 RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle",
            "tear"}
 
@@ -686,7 +688,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
             after[:1] in (["there"], ["through"]) or after[:3] in (["in", "the", "middle"], ["in", "the", "centre"],
                                                                   ["in", "the", "center"])) and \
-            tokens[m.start - 1].base not in STEERING | {"turn", "bear", "indicate", "signal", "cut", "merge"}:
+            tokens[m.start - 1].base not in STEERING - {"slide", "skid"} | {"turn", "bear", "indicate", "signal", "cut",
+                                                                           "merge"}:  # "slid right through": straight
         return [Unit(m.start, m.end, "word", "right", span)]  # "riding right in the middle of the lane": exactly
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
             [t.word for t in tokens[m.end:m.end + 2]] == ["in", "the"] and m.end + 3 < len(tokens) and \
@@ -2216,7 +2219,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
         if e.is_ego and action == "cut_in" and not direction and u.tokens[0].base in ("swerve", "jerk", "veer"):
             action = "move"  # "I slammed on the brakes and swerved": a jerk of the wheel, no lane named
-        if action == "move" and u.base in ("move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep") and direction:
+        if action == "move" and u.base in LANE_STEERING and direction:
             action = "lane_" + direction
         if action == "move" and not e.is_ego and u.tokens[0].base in STEERING and clause_units is not None and \
                 k is not None and any(x.category == "positions" and x.meaning == "toward"
