@@ -2129,6 +2129,11 @@ def test_a_letters_greeting_and_signature_name_no_agents():
     assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
 
 
+def test_a_first_line_about_the_morning_is_no_greeting():
+    assert lower("Morning rush hour on the ring road\nA lorry stopped ahead of me.").scenario.weather.time == "dawn"
+    assert lower("Morning,\n\nA lorry stopped ahead of me.\n\nThanks,\nJo").scenario.weather is None
+
+
 def test_a_declared_ego_vehicle_its_fleet_number_and_its_named_driver_are_the_ego():
     prompt = ("Hi all,\n\nCoach 51 (driver: Piotr Zielinski) was in the right lane when a van in the lane to his left "
               "moved across in front of him. Piotr braked.\nPlease use our coach as the ego.\n\nThanks,\nMo")

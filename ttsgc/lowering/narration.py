@@ -17,8 +17,10 @@ from dataclasses import dataclass, field
 
 from ttsgc.lowering.lexicon import matches, tokenize
 
-SALUTATION = re.compile(r"^\s*(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
-                        r"morning|afternoon|evening|to whom it may concern)\b[^.!?\n]{0,60}$", re.I)
+SALUTATION = re.compile(r"^\s*(?:(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
+                        r"morning|afternoon|evening)\b[^.!?,\n]{0,40}[,!]?|(?:hi|hello|hey|hiya|dear|greetings|hallo)\b"
+                        r"[^.!?,\n]{0,40}[,!/][^.!?\n]{0,30}[,!]|to whom it may concern[,:]?)\s*$", re.I)
+# "Hi team,", "Dear simulation team,", "Hallo zusammen / hi all,", "Morning,": never "Morning rush hour on the M4"
 CLOSING = re.compile(r"^\s*(?:cheers|thanks|thank you|many thanks|thanks a lot|thanks in advance|thx|ta|best|"
                      r"all the best|best wishes|best regards|kind regards|warm regards|warmest regards|regards|"
                      r"sincerely|yours(?: sincerely| faithfully| truly)?|take care|speak soon|talk soon|br|"
@@ -89,7 +91,9 @@ def _without_letter_frame(text: str, notes: list[str]) -> str:
     if len([x for x in lines if x.strip()]) < 2:
         return text
     first = next(k for k, x in enumerate(lines) if x.strip())
-    if SALUTATION.match(lines[first]) and len(lines[first].split()) <= 8:
+    greeting = lines[first].strip()
+    if SALUTATION.match(greeting) and (greeting[-1] in ",!" or len(greeting.split()) <= 3 and
+                                       greeting.split()[0].lower() in ("hi", "hello", "hey", "hiya", "dear")):
         lines[first] = ""
         notes.append("read past the letter's greeting")
     for k in range(len(lines) - 1, first, -1):
