@@ -29,7 +29,8 @@ RATING = re.compile(r"^\s*(?:(?:[0-5](?:\.5)?|one|two|three|four|five)\s*(?:/\s*
                     r"[\u2605\u2606\u2B50]+)\s*[!.,:;\-]*\s*", re.I)
 SPEAKER = re.compile(r"^\s*((?:[A-Z][A-Z.'\-]*\s?){1,4}):\s*", re.M)  # "MR. PRICE:", "THE COURT:"
 QA_LABEL = re.compile(r"^\s*(Q|A|QUESTION|ANSWER|THE WITNESS)\s*[:.]\s*", re.I)
-NEGATIVE_ANSWER = re.compile(r"^\s*(?:no|none|nobody|no one|nothing|not yet|not then|not that i (?:saw|could see|know of)|"
+NEGATIVE_ANSWER = re.compile(r"^\s*(?:no|none|nobody|no one|nothing|not yet|not then|"
+                             r"not that i (?:saw|could see|know of)|"
                              r"there (?:was|were) none)\b(?:,?\s*(?:sir|ma'am))?\s*(?:[.!]|$)", re.I)
 ASKS_FOR_OTHERS = re.compile(r"\b(?:any|other|anyone|anybody|anything)\b|\b(?:was|were|is|are) there\b|"
                              r"\bdid you (?:see|notice|spot|observe)\b", re.I)
@@ -178,7 +179,8 @@ def _texting(text: str) -> str:
     return text
 
 
-SIMILE = re.compile(r"\b(" + _NOUN[1:-1] + r"|truck|semi|ambulance|engine|lorry)(e?s?),?\s+like an?\s+(?:[a-z]+\s+){0,2}?(?:"
+SIMILE = re.compile(r"\b(" + _NOUN[1:-1] + r"|truck|semi|ambulance|engine|lorry)(e?s?),?\s+like an?\s+"
+                    r"(?:[a-z]+\s+){0,2}?(?:"
                     + _NOUN[1:-1] + r"|truck|ambulance|fire engine|police car|racing car|race car)\b", re.I)
 
 
@@ -199,8 +201,8 @@ def _asides(text: str) -> str:
 
 
 def _denied(question: str) -> str:
-    return re.sub(r"\b(?:any other|any|some|other|an?)\b|(?:(?<=see )|(?<=notice )|(?<=spot )|(?<=observe ))the\b", "no", question,
-                  flags=re.I)
+    return re.sub(r"\b(?:any other|any|some|other|an?)\b|(?:(?<=see )|(?<=notice )|(?<=spot )|(?<=observe ))the\b",
+                  "no", question, flags=re.I)
 
 
 def _names_agents(text: str) -> bool:
@@ -234,7 +236,8 @@ def _declared_ego(text: str, notes: list[str]) -> str:
     text = DECLARATION.sub("", text)
     plural = noun + ("es" if noun.endswith("s") else "s")
     text = re.sub(rf"\bone of (?:our|my|the) (?:[a-z]+ )?{plural}\b", ego, text, flags=re.I)
-    text = re.sub(rf"\b(?:{FLEET_NOUNS})\s+(?:no\.?\s*|#)?\d{{2,4}}\b" + NOT_A_QUANTITY + r"(?:\s*\(\s*(?:[A-Za-z]+\s+)?"
+    text = re.sub(rf"\b(?:{FLEET_NOUNS})\s+(?:no\.?\s*|#)?\d{{2,4}}\b" + NOT_A_QUANTITY +
+                  r"(?:\s*\(\s*(?:[A-Za-z]+\s+)?"
                   rf"{noun}\s*,)?", ego, text, flags=re.I)  # "vehicle 311 (Transit van, ...)": the fleet's vehicle
     text = re.sub(rf"\b{noun}\s+(?:no\.?\s*|#)?\d{{1,4}}\b(?!\s*(?:mph|km|kmh|kph|m\b|metres|meters|feet|ft|seconds|"
                   rf"s\b|minutes|lanes?|%|percent))", ego, text, flags=re.I)  # "Van 203 (driver ...)": a fleet name

@@ -95,7 +95,8 @@ INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "sid
            "level": "level"}
 LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid"}  # "... into the
 # left lane": a lane change
-STEERING = {"move", "steer", "ease", "inch", "creep", "slide", "skid", "veer", "swerve", "pull", "merge", "shift", "go", "head", "drift"}
+STEERING = {"move", "steer", "ease", "inch", "creep", "slide", "skid", "veer", "swerve", "pull", "merge", "shift", "go",
+            "head", "drift"}
 RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle",
            "tear"}
 
