@@ -2260,6 +2260,21 @@ def test_what_the_narrator_feared_or_asks_for_is_no_manoeuvre():
         ("bus", "stop", "front"), ("car", "go_straight", "ego")]
 
 
+def test_a_transcripts_how_many_unknown_and_procedural_lines():
+    prompt = ("Q: How many lanes were there?\nA: Three.\nQ: Was there a cyclist beside you?\n"
+              "MR. LEE: Objection.\nQ: You can answer.\nA: I couldn't tell.\nQ: What happened?\n"
+              "A: A bus pulled out in front of me.")
+    scene = lower(prompt).scenario
+    assert scene.road.lanes == 3 and [a.type for a in scene.agents()] == ["car", "bus"]
+    assert "traffic_light" in road("Q: Is there a signal there?\nA: No light.\nQ: Go on.\nA: I stopped.")\
+        .without_signals
+
+
+def test_two_streets_named_together_are_their_intersection():
+    assert road("The light at Elm and Ninth was red and a car stopped ahead of me.").junction is True
+    assert road("At Fern and Alder a cyclist stopped ahead of me.").junction is True
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

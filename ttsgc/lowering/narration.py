@@ -29,9 +29,12 @@ RATING = re.compile(r"^\s*(?:(?:[0-5](?:\.5)?|one|two|three|four|five)\s*(?:/\s*
                     r"[\u2605\u2606\u2B50]+)\s*[!.,:;\-]*\s*", re.I)
 SPEAKER = re.compile(r"^\s*((?:[A-Z][A-Z.'\-]*\s?){1,4}):\s*", re.M)  # "MR. PRICE:", "THE COURT:"
 QA_LABEL = re.compile(r"^\s*(Q|A|QUESTION|ANSWER|THE WITNESS)\s*[:.]\s*", re.I)
-NEGATIVE_ANSWER = re.compile(r"^\s*(?:no|none|nobody|no one|nothing|not yet|not then|"
-                             r"not that i (?:saw|could see|know of)|"
+NEGATIVE_ANSWER = re.compile(r"^\s*(?:no(?:\s+[a-z]+){0,2}|none|nobody|no one|nothing|not yet|not then|"
+                             r"not that i (?:saw|could see|know of)|i (?:could not|couldn't|can't|cannot) (?:tell|say)|"
+                             r"i (?:don't|do not) (?:know|remember|recall)|not sure|i'm not sure|i am not sure|"
                              r"there (?:was|were) none)\b(?:,?\s*(?:sir|ma'am))?\s*(?:[.!]|$)", re.I)
+HOW_MANY = re.compile(r"\bhow many ([a-z]+)\b", re.I)  # "How many lanes ...?"
+NUMBER_ANSWER = re.compile(r"^\s*(\d{1,2}|one|two|three|four|five|six|seven|eight|nine|ten)\b[\s.,!]*", re.I)
 ASKS_FOR_OTHERS = re.compile(r"\b(?:any|other|anyone|anybody|anything)\b|\b(?:was|were|is|are) there\b|"
                              r"\bdid you (?:see|notice|spot|observe)\b", re.I)
 # "Were there other cars?", "Was there a bus behind you?", "Did you see his car?": a question of what was there
@@ -80,6 +83,7 @@ def read_narration(prompt: str) -> Narration:
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
     text = _texting(text)
     text = _asides(text)
+    text = _street_corners(text)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
@@ -107,7 +111,8 @@ def _without_letter_frame(text: str, notes: list[str]) -> str:
 
 def _testimony(text: str, notes: list[str]) -> str:
     """A transcript of questions and answers: counsel's interjections ('MR. PRICE: Objection.') are no account,
-    the labels go, and a question answered 'No.' / 'None.' names nothing that was there."""
+    the labels go, a question answered 'No.' / 'None.' / 'I couldn't tell.' names nothing that was there, and a
+    number answers 'how many' with its noun."""
     lines = text.split("\n")
     if sum(bool(QA_LABEL.match(x)) for x in lines) < 2:
         return text
@@ -120,8 +125,11 @@ def _testimony(text: str, notes: list[str]) -> str:
             continue
         body = line[label.end():] if label else line
         kind = label.group(1).upper()[0] if label else ""
-        if kind == "Q":
+        if kind == "Q" and "?" in body:  # "Q: You can answer." asks nothing
             asked = len(kept)
+        elif kind == "A" and asked is not None and HOW_MANY.search(kept[asked]) and NUMBER_ANSWER.match(body):
+            n = NUMBER_ANSWER.match(body).group(1)  # "How many lanes ...? Four.": four lanes
+            body = f"{n} {HOW_MANY.search(kept[asked]).group(1)}. " + body[NUMBER_ANSWER.match(body).end():]
         elif kind == "A" and asked is not None and NEGATIVE_ANSWER.match(body) and \
                 ASKS_FOR_OTHERS.search(kept[asked]):
             notes.append(f"read '{kept[asked].strip()[:40]}' as answered no")
@@ -207,6 +215,17 @@ def _denied(question: str) -> str:
 
 def _names_agents(text: str) -> bool:
     return any(m.category == "agents" and m.meaning not in ("ego", "none") for m in matches(tokenize(text)))
+
+
+STREET = r"(?:[A-Z][a-z]+|\d{1,3}(?:st|nd|rd|th))(?:\s+(?:Street|St\.?|Avenue|Ave\.?|Road|Rd\.?|Boulevard|Blvd\.?))?"
+CORNER = re.compile(rf"\b((?i:at|on|near|by))\s+({STREET})\s+(?:and|&)\s+({STREET})\b(?!\s+(?:intersection|junction|"
+                    r"crossroads?|corner))")
+
+
+def _street_corners(text: str) -> str:
+    """'at Ninth and Walnut', 'the light at Grand and Fourth': two streets named together are their
+    intersection."""
+    return CORNER.sub(lambda m: f"{m.group(1)} the {m.group(2)} and {m.group(3)} intersection", text)
 
 
 def _vehicle_numbers(text: str) -> str:
