@@ -2140,6 +2140,8 @@ def test_a_declared_ego_vehicle_its_fleet_number_and_its_named_driver_are_the_eg
     assert agents(prompt) == [("bus", "go_straight", "ego"), ("car", "change_lane_to_right", "front_left")]
     assert agents("Cab 3 (Li Wei driving) was waiting when a lorry came towards her. Use the cab as the ego.")[0] == \
         ("car", "stop", "ego")
+    told = read_narration("The white van is the ego. The grey van ahead of the white van stops.").text
+    assert "The grey van ahead of the ego" in told  # another van, told apart by its colour
 
 
 def test_the_drivers_pronoun_is_the_ego_unless_another_person_of_it_was_named():

@@ -47,9 +47,11 @@ VEHICLE_NOUNS = {"van": "car", "cab": "car", "taxi": "car", "car": "car", "vehic
 EGO_NOUN = {"car": "the ego", "truck": "the ego truck", "bus": "the ego bus", "motorcycle": "the ego motorcycle"}
 _NOUN = r"(van|cab|taxi|car|vehicle|minibus|pickup|suv|truck|lorry|hgv|bus|coach|motorcycle|motorbike|scooter|moped)"
 DECLARATION = re.compile(
-    r"(?:,\s*|\b(?:with|using|having)\s+)?\b(?:(?:our|the|my|this|that)\s+)?(?:[a-z]+\s+)?" + _NOUN +
+    r"(?:,\s*|\b(?:with|using|having)\s+)?\b(?:(?:our|the|my|this|that)\s+)?(?:(?P<adjective>[a-z]+)\s+)?" + _NOUN +
     r"(?:\s+(?:no\.?\s*|#)?\d+)?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+(?:the\s+|our\s+)?ego\b"
     r"(?:\s+(?:vehicle|car))?(?:\s+for this)?(?:\s+please)?", re.I)
+FLEET_ADJECTIVES = {"delivery", "box", "transit", "panel", "courier", "company", "work", "hire", "rental", "fleet",
+                    "own", "passenger", "cargo", "parcel", "school", "city", "service"}
 FLEET_NOUNS = r"van|cab|taxi|minibus|car|vehicle|unit|truck|lorry|bus|coach|motorcycle|motorbike|scooter"
 FLEET_ONLY = {"van", "cab", "taxi", "minibus"}  # never a scenario's label ("car 1", "unit 2" are)
 NOT_A_QUANTITY = r"(?!\s*(?:mph|km|kmh|kph|m\b|metres|meters|feet|ft|seconds|s\b|minutes|lanes?|%|percent|miles?))"
@@ -248,7 +250,7 @@ def _declared_ego(text: str, notes: list[str]) -> str:
     m = DECLARATION.search(text)
     if m is None:
         return text
-    noun = m.group(1).lower()
+    noun = m.group(2).lower()  # after the adjective
     kind = VEHICLE_NOUNS[noun]
     ego = EGO_NOUN[kind]
     notes.append(f"read the {noun} as the ego (said so)")
@@ -260,8 +262,9 @@ def _declared_ego(text: str, notes: list[str]) -> str:
                   rf"{noun}\s*,)?", ego, text, flags=re.I)  # "vehicle 311 (Transit van, ...)": the fleet's vehicle
     text = re.sub(rf"\b{noun}\s+(?:no\.?\s*|#)?\d{{1,4}}\b(?!\s*(?:mph|km|kmh|kph|m\b|metres|meters|feet|ft|seconds|"
                   rf"s\b|minutes|lanes?|%|percent))", ego, text, flags=re.I)  # "Van 203 (driver ...)": a fleet name
-    text = re.sub(rf"\b(?:our|my|the|this|that)\s+(?!other\b|oncoming\b|second\b|another\b)(?:[a-z]+\s+)?{noun}\b",
-                  ego, text, flags=re.I)
+    own = {(m.group("adjective") or "").lower()} - {"our", "the", "my", "this", "that", "with", "using", ""}
+    adjectives = "|".join(sorted(FLEET_ADJECTIVES | own))  # "the red car is the ego": "the blue car" is another
+    text = re.sub(rf"\b(?:our|my|the|this|that)\s+(?:(?:{adjectives})\s+)?{noun}\b", ego, text, flags=re.I)
     text = re.sub(rf"(?:^|(?<=[.!?,(]\s)|(?<=\n))\b{noun}\b(?=\s*(?:\(|,|is\b|was\b|had\b))", ego, text,
                   flags=re.I)  # "Cab is the ego", "Taxi, driver ...": bare at a sentence's start
     text = re.sub(r"\b(?:our|my|the|this|that)\s+(?:[a-z]+\s+)?the ego\b", "the ego", text, flags=re.I)
