@@ -119,6 +119,7 @@ def _testimony(text: str, notes: list[str]) -> str:
     if sum(bool(QA_LABEL.match(x)) for x in lines) < 2:
         return text
     kept: list[str] = []
+    named: set[str] = set()  # the kinds of agent named so far
     asked: int | None = None  # the index in kept of the question last asked
     for line in lines:
         label = QA_LABEL.match(line)
@@ -141,15 +142,16 @@ def _testimony(text: str, notes: list[str]) -> str:
             kept[asked] = _denied(kept[asked])  # "Were there other cars? There was one car stopped ...": the
             asked = None  # answer says what there was
         if kind == "A":
-            body = _without_re_descriptions(body, "\n".join(kept))
+            body = _without_re_descriptions(body, named)
+        named |= _agent_kinds(body)
         kept.append(body if not body.strip() or body.rstrip()[-1] in ".?!" else body.rstrip() + ".")
     return "\n".join(kept)
 
 
-def _without_re_descriptions(answer: str, before: str) -> str:
+def _without_re_descriptions(answer: str, named_before: set[str]) -> str:
     """'Q: The other vehicle was a minivan? A: A gray minivan, yes.', 'Q: How old? A: Teenager.': an answer that
     only names again what was already named describes it; it adds no second agent."""
-    named = _agent_kinds(before)
+    named = set(named_before)
     kept = []
     for sentence in re.split(r"(?<=[.!?])\s+", answer):
         found = matches(tokenize(sentence))
