@@ -2262,6 +2262,11 @@ def test_what_the_narrator_feared_or_asks_for_is_no_manoeuvre():
         ("bus", "stop", "front"), ("car", "go_straight", "ego")]
 
 
+def test_the_witness_label_answers():
+    prompt = "Q: Were there other cars around you?\nTHE WITNESS: None.\nQ: Then?\nTHE WITNESS: A van stopped ahead."
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
 def test_a_transcripts_how_many_unknown_and_procedural_lines():
     prompt = ("Q: How many lanes were there?\nA: Three.\nQ: Was there a cyclist beside you?\n"
               "MR. LEE: Objection.\nQ: You can answer.\nA: I couldn't tell.\nQ: What happened?\n"

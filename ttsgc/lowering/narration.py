@@ -127,7 +127,7 @@ def _testimony(text: str, notes: list[str]) -> str:
             notes.append(f"read past '{line.strip()[:40]}' (not the witness's account)")
             continue
         body = line[label.end():] if label else line
-        kind = label.group(1).upper()[0] if label else ""
+        kind = ("Q" if label.group(1).upper()[0] == "Q" else "A") if label else ""  # "THE WITNESS:" answers
         if kind == "Q" and "?" in body:  # "Q: You can answer." asks nothing
             asked = len(kept)
         elif kind == "A" and asked is not None and HOW_MANY.search(kept[asked]) and NUMBER_ANSWER.match(body):
