@@ -2282,6 +2282,12 @@ def test_two_streets_named_together_are_their_intersection():
     assert road("At Fern and Alder a cyclist stopped ahead of me.").junction is True
 
 
+def test_a_vehicle_turning_at_the_corner_is_at_the_junction_not_on_the_pavement():
+    scene = lower("A cyclist rode ahead of us on the right and turned right at the next corner.").scenario
+    assert [(a.type, a.action, a.relative_to_ego, a.road_type) for a in scene.agents() if not a.is_ego] == [
+        ("cyclist", "turn_right", "front_right", "driving")]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

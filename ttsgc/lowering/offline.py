@@ -2191,6 +2191,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "a stopped car behind where it was": at the place of the one that moved away
         if u.meaning in ("ahead", "behind") and INVERSE[u.meaning] in e.features and e.actions:
             return  # "a Toyota behind me ... cut in directly in front of me": the first place said is its start
+        if u.meaning == "sidewalk" and e.type != "pedestrian" and "corner" in {t.word for t in u.tokens}:
+            return  # "the cyclist turned right at the next corner": at the junction, not on the pavement
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
