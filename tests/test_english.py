@@ -2288,6 +2288,11 @@ def test_a_vehicle_turning_at_the_corner_is_at_the_junction_not_on_the_pavement(
         ("cyclist", "turn_right", "front_right", "driving")]
 
 
+def test_making_ones_left_is_a_left_turn():
+    assert ("car", "turn_left", "ego") in agents("I waited for the bus to pass, then I pulled out and made my left.")
+    assert ("car", "turn_right", "ego") in agents("At the lights we made our right turn.")
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 
