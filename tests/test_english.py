@@ -2293,6 +2293,12 @@ def test_making_ones_left_is_a_left_turn():
     assert ("car", "turn_right", "ego") in agents("At the lights we made our right turn.")
 
 
+def test_the_officer_is_the_patrol_car_and_lights_in_the_mirror_are_no_signal():
+    scene = lower("A police car was behind me. Then the officer stopped ahead of a van.").scenario
+    assert sorted(a.type for a in scene.agents()) == ["car", "car", "police"]
+    assert road("When I saw the lights in my rearview, a police car was behind me.").required_signals == ()
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

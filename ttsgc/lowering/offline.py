@@ -1951,6 +1951,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
         if driven:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
             return NounPhrase(driven[-1], head, first)
+    if definite and count is None and not plural and u.base in ("officer", "police officer", "policeman",
+                                                                 "policewoman", "traffic officer"):
+        patrols = [e for e in r.entities if not e.is_ego and e.type == "police"]
+        if patrols:  # "a police car came up behind me ... the car the officer was chasing": its officer
+            return NounPhrase(patrols[-1], head, first)
     if definite and count is None and u.base in RIDING_PEOPLE and not plural and \
             not any(e.type == "pedestrian" for e in r.entities):
         riders = [e for e in recent if e.type in V.TWO_WHEELER_TYPES] or \
