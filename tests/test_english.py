@@ -2299,6 +2299,11 @@ def test_the_officer_is_the_patrol_car_and_lights_in_the_mirror_are_no_signal():
     assert road("When I saw the lights in my rearview, a police car was behind me.").required_signals == ()
 
 
+def test_standing_water_puts_no_witness_on_foot():
+    assert agents("I was alone. I hit standing water and a van came towards me.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "front")]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

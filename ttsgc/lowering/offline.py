@@ -3952,6 +3952,8 @@ def _witness_on_foot(r: _Reader) -> None:
         return
     said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")]
     words = set().union(*said) if said else set()
+    if words & {"standing water", "standing traffic", "standing queue"}:
+        words -= {"standing"}  # "I hit standing water": what stood, not the witness
     if not words & ON_FOOT or words & AT_THE_WHEEL:
         return
     own = [t for t in r.tokens if t.word in ("i", "i'm")]
