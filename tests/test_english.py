@@ -2304,6 +2304,11 @@ def test_standing_water_puts_no_witness_on_foot():
         ("car", "go_straight", "ego"), ("car", "go_straight", "front")]
 
 
+def test_a_bus_letting_people_off_brings_no_pedestrians():
+    assert agents("A bus was stopped at the stop ahead of me, letting people off.") == [
+        ("bus", "stop", "front"), ("car", "go_straight", "ego")]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 
