@@ -2309,6 +2309,10 @@ def test_a_bus_letting_people_off_brings_no_pedestrians():
         ("bus", "stop", "front"), ("car", "go_straight", "ego")]
 
 
+def test_never_coming_all_the_way_to_a_stop_is_no_stop():
+    assert ("car", "go_straight", "ego") in agents("I never came all the way to a stop when a van cut in ahead of me.")
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

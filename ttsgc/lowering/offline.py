@@ -2831,7 +2831,7 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
             after[:2] in (["not", "possible"], ["not", "allowed"], ["not", "permitted"], ["is", "impossible"]) or \
             after[:3] in (["is", "not", "possible"], ["is", "not", "allowed"], ["not", "an", "option"]):
         return True  # "overtaking not possible": the manoeuvre is ruled out
-    for u in reversed(units[max(0, i - 3):i]):
+    for u in reversed(units[max(0, i - 7):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
                                                "failing", "refused", "refuses", "without", "unable") or (
                 u.category == "numbers" and u.meaning == "0"):
@@ -2839,7 +2839,8 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
                                                      "is", "are", "be", "can", "could", "room", "space", "chance",
                                                      "able", "unable", "time", "even", "ever", "really", "properly",
-                                                     "so", "much", "once")) \
+                                                     "so", "much", "once", "a", "all", "the", "way", "completely",
+                                                     "fully", "full", "quite")) \
                 and u.category != "actions":
             return False
     return False
