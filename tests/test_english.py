@@ -2313,6 +2313,11 @@ def test_never_coming_all_the_way_to_a_stop_is_no_stop():
     assert ("car", "go_straight", "ego") in agents("I never came all the way to a stop when a van cut in ahead of me.")
 
 
+def test_tell_us_what_the_van_did_names_what_the_answer_is_about():
+    prompt = "Q: Tell us what the grey van did.\nA: It came the other way and it turned left across my path."
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 

@@ -33,6 +33,8 @@ NEGATIVE_ANSWER = re.compile(r"^\s*(?:no(?:\s+[a-z]+){0,2}|none|nobody|no one|no
                              r"not that i (?:saw|could see|know of)|i (?:could not|couldn't|can't|cannot) (?:tell|say)|"
                              r"i (?:don't|do not) (?:know|remember|recall)|not sure|i'm not sure|i am not sure|"
                              r"there (?:was|were) none)\b(?:,?\s*(?:sir|ma'am))?\s*(?:[.!]|$)", re.I)
+TELL_US = re.compile(r"^\s*(?:(?:please|now|okay|ok|so|and),?\s+)*(?:tell|show) (?:us|me|the jury|the court)\s+"
+                     r"(?:what|how|where)\s+", re.I)
 HOW_MANY = re.compile(r"\bhow many ([a-z]+)\b", re.I)  # "How many lanes ...?"
 NUMBER_ANSWER = re.compile(r"^\s*(\d{1,2}|one|two|three|four|five|six|seven|eight|nine|ten)\b[\s.,!]*", re.I)
 ASKS_FOR_OTHERS = re.compile(r"\b(?:any|other|anyone|anybody|anything)\b|\b(?:was|were|is|are) there\b|"
@@ -128,6 +130,8 @@ def _testimony(text: str, notes: list[str]) -> str:
             continue
         body = line[label.end():] if label else line
         kind = ("Q" if label.group(1).upper()[0] == "Q" else "A") if label else ""  # "THE WITNESS:" answers
+        if kind == "Q":
+            body = TELL_US.sub("", body)  # "Tell us what the white SUV did.": the SUV is what the answer is about
         if kind == "Q" and "?" in body:  # "Q: You can answer." asks nothing
             asked = len(kept)
         elif kind == "A" and asked is not None and HOW_MANY.search(kept[asked]) and NUMBER_ANSWER.match(body):
