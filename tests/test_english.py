@@ -2318,6 +2318,13 @@ def test_tell_us_what_the_van_did_names_what_the_answer_is_about():
     assert agents(prompt) == [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]
 
 
+def test_a_vehicle_stuck_sideways_or_jackknifed_blocks_the_ego():
+    assert agents("A delivery van was stuck sideways in our lane.") == [
+        ("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]
+    assert agents("A lorry had jackknifed across the road ahead of us.") == [
+        ("car", "go_straight", "ego"), ("truck", "block_the_ego", "front")]
+
+
 def test_the_named_lane_of_a_count_gives_the_lanes():
     assert road("I was in the middle lane of three when a car cut in front of me.").lanes == 3
 
