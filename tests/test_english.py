@@ -2073,6 +2073,7 @@ def test_a_stopped_car_said_to_block_the_ego_at_the_destination_still_blocks():
 
 @pytest.mark.parametrize("prompt, kind", [
     ("Two kids on scooters ride along the road ahead of us.", "motorcycle"),
+    ("A kid on a scooter and a child on a scooter ride along the road ahead of us.", "motorcycle"),  # conventions
     ("Two teenagers on bikes ride past me on the left.", "cyclist"),
 ])
 def test_people_on_two_wheelers_are_the_riders_counted_once(prompt, kind):
