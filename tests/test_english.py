@@ -2145,6 +2145,13 @@ def test_a_declared_ego_vehicle_its_fleet_number_and_its_named_driver_are_the_eg
     assert "The grey van ahead of the ego" in told  # another van, told apart by its colour
 
 
+def test_a_drivers_name_in_lower_case_or_that_is_also_a_word():
+    told = read_narration("van 5 (driver marek nowak) stopped and marek waited. our van is the ego.").text
+    assert "marek" not in told
+    told = read_narration("Van 5 (driver Will Hart) stopped as a car will turn left. Our van is the ego.").text
+    assert "a car will turn left" in told and "Will" not in told
+
+
 def test_the_drivers_pronoun_is_the_ego_unless_another_person_of_it_was_named():
     told = read_narration("Van 5 (driver Ann Bell) saw a cyclist ahead of her. Our van is the ego.").text
     assert "ahead of the ego" in told and "Ann" not in told

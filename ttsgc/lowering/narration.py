@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from ttsgc.lowering.lexicon import matches, tokenize
+from ttsgc.lowering.lexicon import lexicon, matches, tokenize
 
 SALUTATION = re.compile(r"^\s*(?:(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
                         r"morning|afternoon|evening)\b[^.!?,\n]{0,40}[,!]?|(?:hi|hello|hey|hiya|dear|greetings|hallo)\b"
@@ -62,6 +62,8 @@ FULL_NAME = rf"{NAME}(?:\s+{NAME}){{0,2}}"
 DRIVER_NAMED = (re.compile(rf"\b(?i:driver)\s*:?\s+({FULL_NAME})"),  # "driver: Aisha Rahman", "our driver Sven Keller"
                 re.compile(rf"\(\s*({FULL_NAME})\s+(?:driving|at the wheel|behind the wheel)\s*\)"),  # "(Tom driving)"
                 re.compile(rf"(?:^|[.!?,\n]\s*)({FULL_NAME})\s+(?:in|driving|at the wheel of)\s+the ego\b"))
+LOWER_CASE_DRIVER = re.compile(r"\(\s*driver\s*:?\s+([a-z][a-z'\-]+(?:\s+[a-z][a-z'\-]+){0,2})\s*[),]|"
+                               r"\(\s*([a-z][a-z'\-]+(?:\s+[a-z][a-z'\-]+)?)\s+driving\s*\)")
 NOT_NAMES = {"The", "A", "An", "Our", "My", "His", "Her", "Their", "Van", "Cab", "Taxi", "He", "She", "It", "We",
              "I", "They", "This", "That", "Then", "On", "In", "At", "Yesterday", "Today", "Monday", "Tuesday",
              "Wednesday", "Thursday", "Friday", "Saturday", "Sunday", "Last", "No", "Driver"}
@@ -286,17 +288,28 @@ def _named_driver(text: str, notes: list[str]) -> str:
             words = [w for w in m.group(1).split() if w not in NOT_NAMES]
             if words:
                 names.append(" ".join(words))
+    for m in LOWER_CASE_DRIVER.finditer(text):  # "(driver marek nowak)": a name written in lower case
+        words = [w for w in (m.group(1) or m.group(2)).split() if w.capitalize() not in NOT_NAMES]
+        if words and not any(_a_word(w) for w in words):
+            names.append(" ".join(words))
     text = re.sub(r"\(\s*(?:driver\s*:?\s*)?" + FULL_NAME + r"(?:\s+driving)?\s*\)", "", text)
     text = re.sub(r",?\s*\b(?i:driver)\s*:?\s+" + FULL_NAME + r"\s*(?=[,)])", "", text)
     for name in sorted(set(names), key=len, reverse=True):
         parts = [name] + ([name.split()[0]] if " " in name else [])
-        for part in parts:
-            text = re.sub(rf"\b{re.escape(part)}'s\b", "the ego's", text, flags=re.I)
-            text = re.sub(rf"\b{re.escape(part)}\b", "the ego", text, flags=re.I)
+        for part in parts:  # "ray braked hard" after "(driver Ray)"; a name that is also a word ("Will") as written
+            flags = 0 if _a_word(part) else re.I
+            text = re.sub(rf"\b{re.escape(part)}'s\b", "the ego's", text, flags=flags)
+            text = re.sub(rf"\b{re.escape(part)}\b", "the ego", text, flags=flags)
         notes.append(f"read {name} as the ego's driver")
     text = re.sub(r"\b(?:driver|driven by)\s*:?\s*the ego\b", "the ego", text, flags=re.I)
     text = re.sub(r"\bthe ego(?:\s*,)?\s+(?:\(\s*)?the ego\b\s*\)?", "the ego", text)
     return _drivers_pronoun(text, notes) if names or "the ego" in text else text
+
+
+def _a_word(name: str) -> bool:
+    """A name that is also a word the reader knows ('Will', 'Mark', 'Grace' is not)."""
+    lex = lexicon()
+    return name.lower() in lex.vocabulary or name.lower() in lex.function_words
 
 
 def _passengers_driver(text: str, notes: list[str]) -> str:
