@@ -729,6 +729,8 @@ def test_a_stage_after_an_ego_stopped_at_the_light_starts_and_a_slow_crossing_do
     "stage second {\n    motorcycle m1 at back_left go_straight\n}\n",
     # the ego stops; the truck behind drives on
     "stage main {\n    ego car stop\n    truck t1 at back go_straight\n}\n",
+    # the ego brakes for a broken-down car; the car behind the ego brakes for the ego in turn
+    "stage main {\n    ego truck go_straight\n    car c1 at front stop\n    car c2 at back go_straight\n}\n",
 ])
 def test_a_vehicle_behind_one_that_stops_stands_behind_it_in_esmini_too(esmini, tmp_path, tsg):
     """SUMO's car-following stops a follower in time; esmini has none and drove it into the stopped body. The

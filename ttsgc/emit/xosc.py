@@ -212,32 +212,46 @@ def _all_of(conditions) -> xosc.Trigger:
 
 
 FOLLOW_MARGIN_M = 2.0  # free road a follower keeps to the vehicle it stops behind
+LEADER_BRAKING = 0.95  # a leader that only follows has begun to brake once below this share of its speed
 
 
 def followers_of_stopping(scene: BoundScene) -> list[tuple[BoundAgent, BoundAgent]]:
-    """(follower, leader): a vehicle placed behind one told to stop, in the same lane, or whose route through
-    the junction leads into its lane, that itself drives on in that lane. A player's car-following (SUMO) stops it in time; esmini has none and drives it into the
-    stopped body, so the file must say it."""
+    """(follower, leader): a vehicle placed behind one that stops, in the same lane, or whose route through the
+    junction leads into its lane, that itself drives on in that lane; the leader nearest ahead. A follower is
+    a leader in turn: the car behind an ego that brakes for a broken-down car brakes too. A player's
+    car-following (SUMO) stops it in time; esmini has none and drives it into the stopped body, so the file
+    must say it."""
     def vehicle(agent: BoundAgent) -> bool:
         return agent.stage == 0 and agent.start is not None and agent.type != "pedestrian" \
             and not _trajectory_bound(agent) and agent.lane_change is None
-    pairs = []
-    for leader in scene.agents:
-        if not vehicle(leader) or leader.action != "stop":
-            continue
-        for follower in scene.agents:
-            if follower is leader or not vehicle(follower) or follower.action in ("stop", "block_the_ego") \
-                    or follower.start_delay_s or follower.speed_mps <= 0:
-                continue
-            lane = (leader.start.road, leader.start.lane)
-            along = 1 if leader.start.lane < 0 else -1  # a right lane (id < 0) drives along s
-            behind = (follower.start.road, follower.start.lane) == lane and \
-                (leader.start.s - follower.start.s) * along > 0
-            onto = len(follower.route) >= 2 and follower.route[-1].road != follower.start.road and \
-                (follower.route[-1].road, follower.route[-1].lane) == lane  # in the lane its route leads into
-            if behind or onto:
-                pairs.append((follower, leader))
-    return pairs
+
+    def gap(follower: BoundAgent, leader: BoundAgent) -> float | None:
+        """How far ahead the leader stands, when the follower drives into it; None when it does not."""
+        lane = (leader.start.road, leader.start.lane)
+        along = 1 if leader.start.lane < 0 else -1  # a right lane (id < 0) drives along s
+        if (follower.start.road, follower.start.lane) == lane and (leader.start.s - follower.start.s) * along > 0:
+            return (leader.start.s - follower.start.s) * along
+        if len(follower.route) >= 2 and follower.route[-1].road != follower.start.road and \
+                (follower.route[-1].road, follower.route[-1].lane) == lane:  # in the lane its route leads into
+            return math.inf
+        return None
+
+    movers = [a for a in scene.agents if vehicle(a) and a.action not in ("stop", "block_the_ego")
+              and not a.start_delay_s and a.speed_mps > 0]
+    leaders = [a for a in scene.agents if vehicle(a) and a.action == "stop"]
+    led: dict[str, BoundAgent] = {}
+    while True:  # leaders only join, so each follower's nearest leader only comes nearer: this settles
+        nearest = {}
+        for follower in movers:
+            ahead = [(gap(follower, leader), k, leader) for k, leader in enumerate(leaders) if leader is not follower]
+            ahead = [x for x in ahead if x[0] is not None]
+            if ahead:
+                nearest[follower.name] = min(ahead, key=lambda x: x[:2])[2]
+        if nearest.keys() == led.keys() and all(nearest[n] is led[n] for n in led):
+            break
+        led = nearest
+        leaders += [f for f in movers if f.name in led and f not in leaders]
+    return [(follower, led[follower.name]) for follower in movers if follower.name in led]
 
 
 def _following_act(scene: BoundScene, minor: int) -> xosc.Act | None:
@@ -255,9 +269,15 @@ def _following_act(scene: BoundScene, minor: int) -> xosc.Act | None:
         group = xosc.ConditionGroup()
         label = f"{follower.name}_stops_behind_{leader.name}"
         t = leader.trigger
-        group.add_condition(xosc.ValueTrigger(f"{label}_after", 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(
-            round(t.after_s if t is not None and t.after_s else 0.0, 3), rule)))
-        if t is not None and t.within_m is not None:  # the leader stops when someone is within reach of it
+        if leader.action != "stop":  # a follower itself: it stops once it brakes, for the one ahead of it
+            group.add_condition(xosc.EntityTrigger(
+                f"{label}_leader_brakes", 0, xosc.ConditionEdge.none,
+                xosc.SpeedCondition(round(leader.speed_mps * LEADER_BRAKING, 3), xosc.Rule.lessThan), leader.name))
+        else:
+            group.add_condition(xosc.ValueTrigger(f"{label}_after", 0, xosc.ConditionEdge.none,
+                                                  xosc.SimulationTimeCondition(
+                                                      round(t.after_s if t is not None and t.after_s else 0.0, 3), rule)))
+        if leader.action == "stop" and t is not None and t.within_m is not None:  # it stops when someone is within reach of it
             group.add_condition(xosc.EntityTrigger(
                 f"{label}_leader_near", 0, xosc.ConditionEdge.none,
                 xosc.RelativeDistanceCondition(t.within_m, xosc.Rule.lessThan, _EUCLIDEAN[minor >= 1], t.of,

@@ -21,14 +21,14 @@ class ScenarioFileError(TtsgcError):
 
 @dataclass(frozen=True)
 class Condition:
-    kind: str  # time | state | distance | reach | end_of_road | never
+    kind: str  # time | state | distance | reach | end_of_road | speed | never
     delay: float = 0.0
     value: float = 0.0
     ref: str = ""  # act name (state) or entity (distance)
     state: str = ""
     triggering: str = ""  # the entity whose distance counts
     position: tuple[str, int, float] | None = None  # reach: the lane position to come within value of
-    rule: str = "greaterThan"  # time: how the simulation time compares with value
+    rule: str = "greaterThan"  # time, speed: how the simulation time or the entity's speed compares with value
     edge: str = "none"  # none | rising | falling | risingOrFalling: which change of the condition counts
     entities: tuple[str, ...] = ()  # every triggering entity (any of them)
 
@@ -180,6 +180,9 @@ class _Reader:
             if tag == "DistanceCondition" and inner.get("rule") in ("lessThan", "lessOrEqual") and \
                     _lane(inner.find("Position")) is not None:
                 return Condition("reach", delay, float(inner.get("value")), position=_lane(inner.find("Position")),
+                                 triggering=who, edge=edge)
+            if tag == "SpeedCondition":
+                return Condition("speed", delay, float(inner.get("value")), rule=inner.get("rule", "greaterThan"),
                                  triggering=who, edge=edge)
             if tag == "RelativeDistanceCondition" and inner.get("rule") in ("lessThan", "lessOrEqual"):
                 return Condition("distance", delay, float(inner.get("value")), ref=inner.get("entityRef"),

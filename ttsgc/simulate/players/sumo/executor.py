@@ -596,6 +596,13 @@ class Executor:
             return a is not None and b is not None and math.hypot(a.x - b.x, a.y - b.y) < condition.value
         if condition.kind == "end_of_road":
             return any(name in self.run.out_of_road for name in condition.entities)
+        if condition.kind == "speed":
+            a = self.last(condition.triggering or actor)
+            return a is not None and {"greaterThan": a.speed > condition.value, "lessThan": a.speed < condition.value,
+                                      "greaterOrEqual": a.speed >= condition.value,
+                                      "lessOrEqual": a.speed <= condition.value,
+                                      "equalTo": abs(a.speed - condition.value) < 0.01,
+                                      "notEqualTo": abs(a.speed - condition.value) >= 0.01}.get(condition.rule, False)
         return False
 
     def _met(self, condition: Condition, t: float, actor: str) -> bool:
