@@ -3003,3 +3003,43 @@ def test_waiting_to_pass_behind_a_rider_is_following_it():
 def test_an_oncoming_vehicle_of_the_kind_named_as_the_ego_is_not_the_ego():
     found = agents("Our van is the ego. It was on a country road when an oncoming van came round the bend.")
     assert ("car", "go_straight", "front_left") in found and len(found) == 2, found
+
+
+# -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
+
+@pytest.mark.parametrize("prompt, time", [
+    ("Event 17 — 14:40, Park Ave. The AV stopped behind a parked van.", None),  # a log entry's stamp
+    ("At 14:40 the AV stopped behind a parked van.", "noon"),
+    ("TimeOfDay 22:00. The ego stops behind a parked van.", "night"),
+])
+def test_a_clock_time_is_the_scenes_time_only_when_said_as_when_it_happened(prompt, time):
+    weather = lower(prompt).scenario.weather
+    assert (weather.time if weather else None) == time
+
+
+@pytest.mark.parametrize("prompt, time", [
+    ("On Tuesday afternoon a lorry stopped in front of me.", None),
+    ("On the morning of the 3rd a lorry stopped in front of me.", None),
+    ("On a misty morning a lorry stopped in front of me.", "dawn"),
+    ("Early on Tuesday morning a lorry stopped in front of me.", "dawn"),
+])
+def test_the_morning_of_a_named_day_dates_the_event_and_says_nothing_of_the_light(prompt, time):
+    weather = lower(prompt).scenario.weather
+    assert (weather.time if weather else None) == time
+
+
+def test_an_emergency_vehicles_lights_and_siren_are_no_traffic_light():
+    assert "traffic_light" not in road("A police car came up behind me, lights and siren, and I let it pass.") \
+        .required_signals
+    assert "traffic_light" in road("Though you have got the green, you wait for the bus from the left.") \
+        .required_signals
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("The AV was cruising in the left lane at about 40 mph when a van ahead braked.", None),
+    ("Ego in lane 2, ~35 mph, a van ahead brakes.", None),
+    ("The road narrows to one lane and 40 mph; a van ahead brakes.", "speed_64"),
+])
+def test_a_vehicles_speed_in_its_lane_is_no_speed_limit(prompt, limit):
+    limits = [s for s in road(prompt).required_objects if s.startswith("speed_")]
+    assert limits == ([limit] if limit else [])

@@ -965,13 +965,15 @@ def _speed_limits(r: _Reader) -> list[str]:
             and after_unit[n:n + 1] and after_unit[n] in LIMITED_PLACES for n in (1, 2, 3))  # "a 40 mph road"
         speed_of_someone = first > 0 and tokens[first - 1].word in (
             "doing", "going", "travelling", "traveling", "driving", "at", "about", "around", "approximately",
-            "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4]} & (LIMIT_WORDS | LIMITED_PLACES) \
+            "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4] if x.sentence == t.sentence} \
+            & (LIMIT_WORDS | LIMITED_PLACES) \
             and not (first > 1 and tokens[first - 2].word in LIMIT_WORDS | {"signed", "signposted"})  # "posted at 25"
         if speed_of_someone:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
         road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first] if x.sentence == t.sentence
                                         and not (x.word == "lane" and _word_number(tokens[x.index - 1]) is None)
                                         } & LIMITED_PLACES and \
+            not _speed_in_a_lane(tokens, first) and \
             after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
         if not (around & LIMIT_WORDS or unit_then_road or road_then_unit or _a_bare_limit(tokens, first, i)) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
@@ -999,6 +1001,15 @@ def _speed_limits(r: _Reader) -> list[str]:
             out.append(f"speed_{limit}")
     return out
 
+
+
+def _speed_in_a_lane(tokens: list[Token], first: int) -> bool:
+    """'AV traveling in right lane ~30 mph', 'in lane 3, 10 mph': the speed of whoever drives in the lane, not a
+    sign's ('down to one lane and 45 mph' is still a limit)."""
+    for j in range(first - 1, max(-1, first - 4), -1):
+        if tokens[j].word in ("lane", "lanes"):
+            return any(x.word in ("in", "on") for x in tokens[max(0, j - 3):j])
+    return False
 
 
 AFTER_A_BARE_LIMIT = {",", "through", "there", "here", "around", "along", "on", "so", "and", "but", "zone", "now"}
@@ -1126,6 +1137,10 @@ def _weather(r: _Reader) -> Weather | None:
             r.notes.append(f"left out: '{' '.join(t.word for t in u.tokens)}' (when something before the scene "
                            "happened, not the scene's time)")
             continue
+        if u.meaning.startswith("time:") and _part_of_a_date(r.units, k):
+            r.notes.append(f"left out: '{' '.join(t.word for t in u.tokens)}' (it dates the event, as a day's "
+                           "morning or afternoon, and says nothing of the light)")
+            continue
         (times if u.meaning.startswith("time:") else conditions).append(
             (u.meaning.removeprefix("time:"), " ".join(t.word for t in u.tokens)))
     clock = _clock_time(r)
@@ -1139,6 +1154,28 @@ def _weather(r: _Reader) -> Weather | None:
         if other != time:
             r.notes.append(f"left out: '{said}' (the scene has one time of day: {time})")
     return Weather(condition=condition, time=time)
+
+
+WEEKDAYS = {"monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday"}
+MONTHS = {"january", "february", "march", "april", "may", "june", "july", "august", "september", "october",
+          "november", "december", "jan", "feb", "mar", "apr", "jun", "jul", "aug", "sep", "sept", "oct", "nov", "dec"}
+CLOCK_PARTS_OF_DAY = {"morning", "afternoon"}  # hours on a clock; "night", "dusk" say how light it is
+
+
+def _part_of_a_date(units: list[Unit], k: int) -> bool:
+    """'On Friday morning', 'the afternoon of 9th October': the morning or afternoon of a named day says when it
+    happened, like a date; 'a foggy morning' or 'early morning' still says the light."""
+    u = units[k]
+    if u.word not in CLOCK_PARTS_OF_DAY:
+        return False
+    if k > 0 and units[k - 1].word in WEEKDAYS and not any(v.word == "early" for v in units[max(0, k - 4):k]):
+        return True
+    after = [v.word for v in units[k + 1:k + 5]]
+    if after[:1] == ["of"]:
+        rest = after[1:] if after[1:2] != ["the"] else after[2:]
+        return bool(rest) and (rest[0] in WEEKDAYS | MONTHS or rest[0] in ORDINALS or
+                               read_number(rest[0]) is not None or rest[0].rstrip("stndrh").isdigit())
+    return False
 
 
 SINCE = {"from", "since"}
@@ -1182,8 +1219,25 @@ def _clock_time(r: _Reader) -> tuple[str, str] | None:
         if after in ("am", "pm") and 1 <= int(t.word) <= 12:  # "7:45 PM"
             r.used.add(r.tokens[i + 2].index)
             return _hour_time(int(t.word) % 12 + (12 if after == "pm" else 0), f"{t.word}:{nxt.word} {after}")
+        if not _said_as_the_time(r.tokens, i):
+            r.notes.append(f"left out: '{t.word}:{nxt.word}' (a record's time stamp, not the scene's time of day)")
+            continue
         return _hour_time(int(t.word), f"{t.word}:{nxt.word}")
     return None
+
+
+TIME_INTRODUCERS = {"at", "around", "about", "after", "before", "by", "until", "till", "since", "was", "is",
+                    "timeofday", "time", "clock", "approximately", "nearly", "almost", "past"}
+TIME_HEDGES = {"approx", "approximately", "roughly", "exactly", "just", "shortly", "circa", "ca", "~"}
+
+
+def _said_as_the_time(tokens: list[Token], i: int) -> bool:
+    """'At 14:20 the AV...', 'TimeOfDay 23:00' say when the scene happens; a log entry's stamp ('Takeover #3 —
+    14:02, Elm & 5th', '14:30 run 9:') dates the record and says nothing of the light."""
+    j = i - 1
+    while j >= 0 and tokens[j].word in TIME_HEDGES - {"approximately"}:
+        j -= 1
+    return j >= 0 and tokens[j].word in TIME_INTRODUCERS
 
 
 def _hour_time(hour: int, said: str) -> tuple[str, str] | None:
