@@ -3043,3 +3043,28 @@ def test_an_emergency_vehicles_lights_and_siren_are_no_traffic_light():
 def test_a_vehicles_speed_in_its_lane_is_no_speed_limit(prompt, limit):
     limits = [s for s in road(prompt).required_objects if s.startswith("speed_")]
     assert limits == ([limit] if limit else [])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Init: SlowTruck in the Ego lane, 50 m ahead. Act 1: SlowTruck brakes to a stop.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("Entities: Ego (car), Blocker (van). Init: Blocker parked ahead of Ego in its lane. Blocker never moves.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Walker_2 (pedestrianCategory pedestrian) starts on the right kerb ahead of Ego. Walker_2 crosses in front "
+     "of the Ego.", [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("Ambulance_7 (vehicleCategory car, role ambulance) waits behind Ego in its lane. Ego stops, then "
+     "Ambulance_7 stops too.", [("ambulance", "stop", "back"), ("car", "stop", "ego")]),
+])
+def test_an_agent_named_by_an_identifier_is_one_agent_at_every_mention(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_scenario_keyword_made_of_words_names_no_agent():
+    assert agents("Ego keeps its lane. MotoX_2 on the left lane behind Ego, AbsoluteTargetSpeed 120 km/h, "
+                  "overtakes staying in its lane.") == [("car", "go_straight", "ego"),
+                                                        ("motorcycle", "go_straight", "back_left")]
+
+
+def test_a_named_agent_ends_a_phrase():
+    assert agents("Bus_3 stops in front of the Ego. The Ego waits.") == [("bus", "stop", "front"),
+                                                                          ("car", "stop", "ego")]

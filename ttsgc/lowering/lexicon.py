@@ -184,7 +184,7 @@ def lexicon() -> Lexicon:
                    kinds, starts)
 
 
-TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z\d]|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
+TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z0-9]+|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
 LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bus|cyclist|bike|motorcycle|van|pedestrian"
                           r"|ped|pov|tv|npc|object))[ _]([A-H])\b(?![.'\u2019-]?[A-Za-z])")
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
@@ -497,11 +497,88 @@ def _without_story_frame(text: str) -> str:
     return TEST_PURPOSE.sub("", framed)
 
 
+IDENTIFIER = re.compile(r"\b(?:[A-Za-z][A-Za-z0-9]*_[A-Za-z0-9_]*[A-Za-z0-9]"  # Car_1, Ped_1, moto_front
+                        r"|[A-Z][a-z]+(?:[A-Z][a-z0-9]*|[0-9]+)+"  # TargetVehicle, LaneChangeAction, Car1
+                        r"|[a-z]+(?:[A-Z][a-z0-9]*)+)\b")  # vehicleCategory, precipitationType
+DECLARED = re.compile(r"\b([A-Z][A-Za-z0-9_]*[a-z][A-Za-z0-9_]*) \(\s*(?:[a-z]+Category\s+)?([a-z ]{2,20}?)\s*"
+                      r"(?:\)|,)")  # "Lead (car)", "Bike_1 (vehicleCategory bicycle, ...)"; not "VRU (cyclist)"
+ROLE_LABEL = re.compile(r"(?:npc|actor|agent|target|obj|object|adversary|vru|v|sv|pov|tv|gvt|veh|vehicle|unit"
+                        r"|participant)[ _#]?\d{1,2}")
+EMERGENCY_TYPES = {"ambulance", "police", "firetruck"}
+ATTRIBUTE_NAMES = re.compile(r"\b[a-z]+Category\b")  # "(vehicleCategory truck)": the type that follows is all
+
+
+def _identifier_words(name: str) -> list[str]:
+    """'FireTruck_1' -> fire, truck, 1; 'LaneChangeAction' -> lane, change, action."""
+    return [w.lower() for w in re.findall(r"[A-Z]+(?![a-z])|[A-Z]?[a-z]+|[0-9]+", name)]
+
+
+def _agent_phrase(words: list[str] | tuple[str, ...]) -> tuple[str, ...] | None:
+    """The agent noun an identifier or a declared type ends with ('TargetVehicle' -> vehicle, 'FireTruck' -> fire
+    truck, 'motorbike' -> motorbike)."""
+    lex = lexicon()
+    for n in (2, 1):
+        tail = tuple(words[-n:])
+        if len(tail) == n and lex.phrases.get(tail, ("", ""))[0] == "agents" and \
+                lex.phrases[tail][1] not in ("none", "ego"):
+            return tail
+    return None
+
+
+def _scenario_identifiers(text: str) -> str:
+    """Scenario engineers name agents as program identifiers ('TargetVehicle', 'Car_1', 'FireTruck_1', or
+    'Lead (car)' in an entities list) and re-mention them by that name: each becomes its agent noun carrying the
+    name as a label, so every mention is the one agent. A type declared in brackets ('LeadVehicle (bus)') names
+    the noun unless the name is the more specific ('FireTruck_1 (truck)'). Other identifiers
+    ('LaneChangeAction', 'RelativeDistanceCondition', 'TimeOfDay') read as the words they are made of."""
+    if not IDENTIFIER.search(text) and not DECLARED.search(text):
+        return text
+    nouns: dict[str, tuple[str, ...]] = {}
+    for m in DECLARED.finditer(text):
+        name = m.group(1)
+        declared = _agent_phrase(tuple(_normalize(m.group(2)).split()))
+        own = _agent_phrase([w for w in _identifier_words(name) if not w.isdigit()])
+        if declared is None or name.lower() in ("ego", "hero") or name in nouns or \
+                name.lower() in lexicon().function_words or ROLE_LABEL.fullmatch(name.lower()):
+            continue  # the ego, no name ("The (red) car"), or a label read as such ("NPC1 (car)")
+        finer = own is not None and lexicon().phrases[own][1] in EMERGENCY_TYPES  # "FireTruck_1 (truck)"
+        nouns[name] = own if finer else declared
+        end = m.end() - (m.group(0)[-1] == ",")  # what the bracket says besides the type is still read
+        text = text[:m.start()] + name + " " * (end - m.start() - len(name) - 1) + "," + text[end:]
+    for name in nouns:
+        if not IDENTIFIER.fullmatch(name):  # "Lead (car)" ... "Lead brakes": a plain word declared as a name
+            text = re.sub(rf"\b{name}\b", f"@{name}@", text)
+    text = ATTRIBUTE_NAMES.sub(" ", text)
+
+    def labelled(name: str, phrase: tuple[str, ...]) -> str:
+        label = "id" + re.sub(r"[^a-z]", "", name.lower()) + "".join("abcdefghij"[int(d)] for d in
+                                                                      re.findall(r"[0-9]", name))
+        return " ".join(phrase[:-1] + (f"{phrase[-1]}#{label}",))
+
+    def read(m: re.Match) -> str:
+        name = m.group(0)
+        if name not in nouns and ROLE_LABEL.fullmatch(name.lower()):
+            return name  # "NPC_1", "Actor_2": role labels, read as such where they are said
+        words = _identifier_words(name)
+        named = [w for w in words if not w.isdigit()]
+        if len(named) > 1 and len(named[-1]) == 1 and "_" in name:
+            named = named[:-1]  # "NPC_A", "Car_b": a letter for an id
+        phrase = nouns.get(name) or (_agent_phrase(named) if named and named[-1] != "ego" else None)
+        if phrase is None:  # "AbsoluteTargetSpeed": a keyword, whose agent nouns name no agent
+            return " ".join(w for w in words if _agent_phrase([w]) is None)
+        if name not in nouns and named[-1].endswith("s") and len(named) > 1:
+            return " ".join(words)  # "TrafficVehicles": a group, counted where it is said
+        return labelled(name, phrase)
+
+    text = re.sub(r"@([A-Za-z0-9_]+)@", lambda m: labelled(m.group(1), nouns[m.group(1)]), text)
+    return IDENTIFIER.sub(read, text)
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = _driver_named_as_ego(_lines(_screenplay(text)))
+    text = _scenario_identifiers(_driver_named_as_ego(_lines(_screenplay(text))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
@@ -641,7 +718,8 @@ def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> lis
         if tokens[i].word != "," and longest:
             for n in range(min(longest, stop - i), 0, -1):
                 span = tokens[i:i + n]
-                if any(t.word == "," or t.sentence != span[0].sentence for t in span):
+                if any(t.word == "," or t.sentence != span[0].sentence for t in span) or \
+                        any(t.label for t in span[:-1]):  # "Bus_1 stops" is no "bus stops": a name ends its phrase
                     continue
                 entry = _lookup(lex, span)
                 if entry is not None:

@@ -1227,7 +1227,7 @@ def _clock_time(r: _Reader) -> tuple[str, str] | None:
 
 
 TIME_INTRODUCERS = {"at", "around", "about", "after", "before", "by", "until", "till", "since", "was", "is",
-                    "timeofday", "time", "clock", "approximately", "nearly", "almost", "past"}
+                    "timeofday", "time", "clock", "day", "approximately", "nearly", "almost", "past"}
 TIME_HEDGES = {"approx", "approximately", "roughly", "exactly", "just", "shortly", "circa", "ca", "~"}
 
 
