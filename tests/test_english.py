@@ -3068,3 +3068,13 @@ def test_a_scenario_keyword_made_of_words_names_no_agent():
 def test_a_named_agent_ends_a_phrase():
     assert agents("Bus_3 stops in front of the Ego. The Ego waits.") == [("bus", "stop", "front"),
                                                                           ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego keeps the middle lane. A van in the right lane, 10 m ahead. Then a lane change of the van into the "
+    "ego lane.",
+    "The ego keeps the middle lane. A van in the right lane, 10 m ahead. Then a lane change action by the van "
+    "into the ego lane.",
+])
+def test_an_action_named_as_a_noun_is_done_by_whom_of_or_by_names(prompt):
+    assert agents(prompt) == [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]

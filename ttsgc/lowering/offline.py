@@ -2570,6 +2570,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         by = None  # "the ego is kept waiting by two cars": the ego waits
     if by is not None and verbs and units[verbs[0]].meaning == "stop" and verbs[0] == by - 1:
         by = None  # "the ego is stopped by a police officer": the ego stops
+    if by is None:
+        by = _actor_of_a_named_action(units, verbs, phrases)
     subject: list[Entity] = []
     objects: list[NounPhrase] = []
     first_verb = verbs[0] if verbs else len(units)
@@ -2811,6 +2813,25 @@ def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -
            and u.category != "behaviours" for u in units[verb + 1:after.first]):
         return None
     return after
+
+
+ACTION_NOUN_TAILS = {"action", "manoeuvre", "maneuver", "event", "move"}
+
+
+def _actor_of_a_named_action(units: list[Unit], verbs: list[int], phrases: list[NounPhrase]) -> int | None:
+    """'a lane change of the van into the ego lane', 'LaneChangeAction of TargetVehicle': an action named as a
+    noun, its doer after 'of' or 'by', and no subject before it; the index of that 'of', read like the passive's
+    'by'."""
+    if not verbs or any(np.index < verbs[0] and np.entity is not None for np in phrases):
+        return None
+    j = verbs[0] + 1
+    while j < len(units) and units[j].word in ACTION_NOUN_TAILS:
+        j += 1
+    if j + 1 < len(units) and units[j].word in ("of", "by") and \
+            any(np.first <= j + 2 and np.index > j and np.entity is not None and not np.entity.is_ego
+                for np in phrases):
+        return j
+    return None
 
 
 def _ego_turn_in_a_place(r: _Reader, units: list[Unit], stage: int) -> None:
