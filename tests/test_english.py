@@ -3078,3 +3078,31 @@ def test_a_named_agent_ends_a_phrase():
 ])
 def test_an_action_named_as_a_noun_is_done_by_whom_of_or_by_names(prompt):
     assert agents(prompt) == [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Our car is driving down a high street and a cyclist ahead wobbles. The car just holds its speed.",
+    "Our car is driving down a high street and a cyclist ahead wobbles. Does the car judge that well?",
+])
+def test_the_car_said_again_without_a_new_place_is_the_ego(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_one_after_another_names_no_member_of_the_group():
+    assert agents("Three cars in the left lane ahead of the ego swerve right across in front of it, one after "
+                  "another, all driving like lunatics.") == \
+        [("car", "change_lane_to_right", "front_left")] * 3 + [("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "We wait at a junction. Two cars come from the right and turn left. The second one is coming fast.",
+    "We wait at a junction. Two cars come from the right and turn left, and the second is coming fast.",
+])
+def test_a_member_that_is_only_coming_keeps_the_groups_manoeuvre(prompt):
+    assert [a for _, a, p in agents(prompt) if p != "ego"] == ["turn_left", "turn_left"]
+
+
+def test_a_transcripts_speaker_labels_are_not_read_as_subjects():
+    words = [t.word for t in tokenize("HOST A: Our car waits at the lights.\nHOST B: Here we go.\n"
+                                      "HOST A: A cyclist comes up on the left.")]
+    assert "host" not in words and "is" not in words

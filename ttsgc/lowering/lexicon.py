@@ -353,6 +353,7 @@ def _lines(text: str) -> str:
     lines = _letter_body(_without_answer_choices(text.strip().splitlines()))
     staged = False
     phased = any((m := KEY_LINE.match(line)) and PHASE_KEY.fullmatch(m.group(1).strip().lower()) for line in lines)
+    speakers = _speakers(lines)
     for k, line in enumerate(lines):
         if not line.strip():
             continue
@@ -368,6 +369,9 @@ def _lines(text: str) -> str:
             continue
         key, value = m.group(1).strip(), m.group(2).strip().rstrip(".")
         lowered = key.lower()
+        if key in speakers:
+            out.append(value + ".")  # "HOST B: Zebra, so the stripy one.": what was said, not who said it
+            continue
         if lowered in ORACLE_KEYS or lowered.split()[0] in ("expected", "acceptance", "pass", "success", "kpi"):
             continue
         if value.split()[:1] and value.split()[0].lower() in CHECKING:
@@ -393,6 +397,21 @@ def _lines(text: str) -> str:
         else:
             out.append(f"{key}{_linking(value)}{value}.")
     return " ".join(out)
+
+
+def _speakers(lines: list[str]) -> set[str]:
+    """The speakers of a transcript ('HOST A:', 'Q:', 'Interviewer:'): keys that start two lines or more, each
+    followed by a sentence, and that name no agent, stage or field."""
+    keys: dict[str, int] = {}
+    for line in lines:
+        m = KEY_LINE.match(line)
+        if m and re.search(r"[a-z]{2,}.*[ .!?,\u2014-]", m.group(2)):
+            keys[m.group(1).strip()] = keys.get(m.group(1).strip(), 0) + 1
+    plain = {key for key in keys if not _names_agent(key) and key.lower() not in PLAIN_KEYS | ORACLE_KEYS and
+             key.lower().split()[0] not in TITLE_KEYS | {"stage", "step", "phase", "expected", "acceptance"}}
+    repeated = {key for key in plain if keys[key] >= 2}
+    return repeated | {key for key in plain if any(  # "HOST B: Together?" once, beside "HOST A" who speaks often
+        key.split()[0] == other.split()[0] or key.isupper() and other.isupper() for other in repeated)}
 
 
 LABEL_KEY = re.compile(r"(?:npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|v|sv|pov|tv|gvt|veh"

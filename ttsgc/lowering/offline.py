@@ -2027,11 +2027,14 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 return NounPhrase(found[0], head, first, plural=plural)
             return NounPhrase(found[0], head, first, plural=True, group=found)
         ego = next((e for e in r.entities if e.is_ego), None)
-        nxt = units[head + 1] if head + 1 < len(units) else None
+        after = head + 1
+        while after < len(units) and _sentence_adverb(units[after]):
+            after += 1  # "the car still has to deal with him", "the car just holds its line"
+        nxt = units[after] if after < len(units) else None
         if ego is not None and not plural and kind == ego.type and "other" not in words and (u.base in (
                 "car", "vehicle", "truck", "bus") or _names_the_ego_again(r, ego, u.base)) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
-                or u.tokens[-1].possessive or _past_tense_verb(nxt)):
+                or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
         if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
@@ -2114,6 +2117,24 @@ def _past_tense_verb(u: Unit) -> bool:
     """A word the lexicon does not know, in the past tense ('the car behaved'): the verb after a subject."""
     return u.category == "word" and u.word.endswith("ed") and len(u.word) > 4 and \
         u.word not in lexicon().function_words
+
+
+ADVERBS = {"still", "just", "really", "actually", "also", "even", "simply", "now", "only", "always", "basically",
+           "already", "then", "obviously", "clearly", "probably", "definitely", "literally", "kind", "sort", "of"}
+
+
+OBJECT_STARTS = {"its", "the", "a", "an", "that", "it", "his", "her", "their", "what", "this", "whether", "if"}
+
+
+def _verb_before_its_object(units: list[Unit], k: int) -> bool:
+    """'the car holds its line', 'does the car read that...': a word the lexicon does not know, followed by
+    what starts an object, is the noun phrase's verb ('the car park' is no verb)."""
+    return units[k].category == "word" and units[k].word not in lexicon().function_words and \
+        k + 1 < len(units) and units[k + 1].word in OBJECT_STARTS
+
+
+def _sentence_adverb(u: Unit) -> bool:
+    return u.category == "word" and (u.word in ADVERBS or u.word.endswith("ly") and len(u.word) > 4)
 
 
 OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side_left": {"side_right"},
@@ -3659,6 +3680,10 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
                                                                     "from_right"}:
         side = "left" if e.features & {"road_left", "from_left"} else "right"  # into the ego's way: towards it
         return "turn", turned[5] or side  # "pulled out of a side road on my left and turned into my lane": a turn
+    if best[4] == "move" and e.parent is not None:  # "two motorbikes turn left ... the second one is coming too":
+        inherited = [a for a in chosen if a[1] == 1 and a[2] > best[2]]  # coming is no other manoeuvre
+        if inherited:
+            best = max(inherited, key=lambda a: (a[2], a[3]))
     if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
         return ("stop" if e.is_ego else "block"), None  # "swerves into its path and stops"; the ego pulls in and stops
     if best[4] == "cut_in" and {"ahead", "stops_abruptly"} <= e.features and any(
