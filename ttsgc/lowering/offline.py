@@ -3681,7 +3681,8 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
         side = "left" if e.features & {"road_left", "from_left"} else "right"  # into the ego's way: towards it
         return "turn", turned[5] or side  # "pulled out of a side road on my left and turned into my lane": a turn
     if best[4] == "move" and e.parent is not None:  # "two motorbikes turn left ... the second one is coming too":
-        inherited = [a for a in chosen if a[1] == 1 and a[2] > best[2]]  # coming is no other manoeuvre
+        inherited = [a for a in chosen if a[1] == 1 and a[2] >= ACTION_RANK["cross"]]  # coming is no other
+        # manoeuvre (but "four wait ... one of them rides off" moves off)
         if inherited:
             best = max(inherited, key=lambda a: (a[2], a[3]))
     if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
