@@ -3106,3 +3106,20 @@ def test_a_transcripts_speaker_labels_are_not_read_as_subjects():
     words = [t.word for t in tokenize("HOST A: Our car waits at the lights.\nHOST B: Here we go.\n"
                                       "HOST A: A cyclist comes up on the left.")]
     assert "host" not in words and "is" not in words
+
+
+@pytest.mark.parametrize("prompt", [
+    "A lorry pulled out in front of me and I reported it to the police.",
+    "A lorry pulled out in front of me. I do not blame the fire brigade, who were miles away.",
+    "A lorry pulled out in front of me. Lorries are a menace on this road.",
+    "A lorry pulled out in front of me, which is harder to avoid than cyclists think.",
+    "A lorry pulled out in front of me. The cycle courier was banned from the road in 2018.",
+    "A lorry pulled out in front of me as I left the car park.",
+])
+def test_agents_only_talked_about_are_nobody_in_the_scene(prompt):
+    assert [t for t, _, p in agents(prompt) if p != "ego"] == ["truck"]
+
+
+def test_a_topic_said_alone_is_no_agent_but_a_heading_of_actors_still_counts():
+    assert [t for t, _, p in agents("A: Buses.\nB: Go on.\nA: A bus pulls out in front of us.") if p != "ego"] \
+        == ["bus"]

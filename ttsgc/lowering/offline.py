@@ -1715,7 +1715,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     readers of a forum post or people in general are nobody in the scene. Nor are kinds spoken of in general
     or someone in what did not happen (_in_general, _what_if)."""
     t = u.tokens[0]
-    if u.category == "agents" and (_in_general(tokens, u) or _what_if(tokens, u)):
+    if u.category == "agents" and (_in_general(tokens, u) or _what_if(tokens, u) or
+                                   _only_talked_about(tokens, u)):
         return True
     first = next(x for x in tokens if x.sentence == t.sentence)
     before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
@@ -1744,6 +1745,53 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
         return False
     later = {x.base for x in tokens if x.sentence > t.sentence}
     return bool(later & _agent_nouns())
+
+
+INSTITUTIONS = {"police", "fire brigade", "fire service", "fire and rescue", "ambulance service", "paramedics"}
+ADDRESSED = {"to", "blame", "blamed", "call", "called", "ring", "rang", "phone", "phoned", "contact", "contacted",
+             "inform", "informed", "tell", "told", "thank", "thanked", "praise", "dial", "dialled", "dialed",
+             "notify", "notified", "alert", "alerted", "involve", "involved", "fault", "criticise", "criticize"}
+GENERAL_TRUTH_VERBS = {"think", "thinks", "say", "says", "know", "knows", "believe", "assume", "expect", "realise",
+                       "realize", "forget", "underestimate", "do", "tend", "love", "hate"}
+AFTER_A_SCENE_COPULA = {"on", "in", "at", "by", "near", "next", "behind", "ahead", "there", "here", "all", "both",
+                        "still", "already", "everywhere", "coming", "going", "parked", "stopped", "queued", "lined"}
+HISTORY_LINKS = {"in", "since", "until", "till"}
+
+
+def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
+    """Agent nouns the text talks about, that are nobody in the scene: an institution written to or blamed ('I
+    reported it to the police', 'I do not blame the fire brigade'); people or vehicles in general ('kids are
+    unpredictable', 'harder than people think'); a topic said alone ('Motorcycles.'); a clause of history dated
+    by its year ('the crossing patrol lady was withdrawn in 2020')."""
+    t, last = u.tokens[0], u.tokens[-1]
+    sentence = [x for x in tokens if x.sentence == t.sentence]
+    before = [x for x in sentence if x.index < t.index]
+    after = [x for x in sentence if x.index > last.index]
+    said = " ".join(x.word for x in u.tokens)
+    lead = [x.word for x in before[-2:]]
+    if said in INSTITUTIONS and lead and (lead[-1] in ADDRESSED or lead[-1] == "the" and len(lead) == 2
+                                         and lead[0] in ADDRESSED):
+        return True
+    bare = last.plural and not before[-1:] or last.plural and before[-1].word not in DETERMINERS | OWNERS and \
+        read_number(before[-1].word) is None and before[-1].word not in COUNTED_BY or \
+        last.plural and before[-1].word == "than" and not (len(before) > 1 and before[-2].word in ("more", "fewer"))
+    if bare and u.meaning not in ("ego", "none"):
+        if before[-1:] and before[-1].word == "than" or after[:1] and after[0].word in GENERAL_TRUTH_VERBS:
+            return True  # "harder than people think", "people underestimate it"
+        if len(after) >= 2 and after[0].word in ("are", "were") and not after[1].word.endswith("ing") and \
+                after[1].word not in AFTER_A_SCENE_COPULA and \
+                lexicon().phrases.get((after[1].word,), ("word",))[0] not in ("actions", "positions", "agents"):
+            return True  # "kids are unpredictable", "trucks are a menace": what they are like, in general
+        if not after and all(x.word in INTERJECTIONS | {","} for x in before) and u.meaning != "generic" and \
+                last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
+                                               for m in matches(tokens, last.index + 1)):
+            return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
+    for x, nxt in zip(sentence, sentence[1:]):
+        if x.word in HISTORY_LINKS and nxt.word.isdigit() and len(nxt.word) == 4 and 1900 <= int(nxt.word) <= 2099:
+            lo, hi = sorted((t.index, nxt.index))
+            if not any(y.word == "," for y in tokens[lo:hi]):
+                return True  # "was withdrawn in 2020": before the scene, in the same clause
+    return False
 
 
 @lru_cache(maxsize=1)
