@@ -3123,3 +3123,26 @@ def test_agents_only_talked_about_are_nobody_in_the_scene(prompt):
 def test_a_topic_said_alone_is_no_agent_but_a_heading_of_actors_still_counts():
     assert [t for t, _, p in agents("A: Buses.\nB: Go on.\nA: A bus pulls out in front of us.") if p != "ego"] \
         == ["bus"]
+
+
+def test_holding_the_lane_centre_drives_on_and_speed_zero_never_moving_stops():
+    assert agents("The AV held lane centre while a motorbike passed on its left.") == \
+        [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
+    assert ("truck", "stop", "front") in agents("A lorry in the ego lane 60 m ahead, speed 0, never moves.")
+
+
+@pytest.mark.parametrize("prompt", ["Dual carriageway, no interchanges for miles, the AV drives on.",
+                                    "Main St, no cross streets in this segment, the AV drives on."])
+def test_no_interchanges_or_cross_streets_is_no_junction(prompt):
+    assert road(prompt).junction is False
+
+
+def test_a_target_road_and_crossing_intent_name_no_agent():
+    assert [t for t, _, _ in agents("The ego turns right into the target road. A pedestrian waits at the kerb "
+                                    "with no crossing intent.")] == ["car", "pedestrian"]
+    assert "crosswalk" not in road("A pedestrian waits at the kerb with no crossing intent.").without_objects
+
+
+def test_then_as_in_that_case_is_no_later_stage():
+    assert len(lower("A: A bus overtakes us on the left.\nB: Then honestly that is fine, the car just holds its "
+                     "line.").scenario.stages) == 1

@@ -1402,6 +1402,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             r.mark(u)
             stage += 1  # "the taxi then sped past": its subject opens the later stage's clause
             continue
+        if u.category == "sequence" and u.word == "then" and _then_of_a_verdict(units, k):
+            r.mark(u)
+            continue  # "then honestly that's fine, the car just holds its line": in that case, not later
         if u.category == "sequence" and not (u.word == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers")) and not (
                 u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
@@ -1507,6 +1510,18 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+VERDICT_SUBJECTS = {"that", "it", "this"}
+VERDICT_COPULAS = {"is", "was", "would", "should", "will", "seems"}
+
+
+def _then_of_a_verdict(units: list[Unit], k: int) -> bool:
+    """'Then that's fine', 'then honestly it is okay': 'then' as 'in that case', a verdict on what was said."""
+    j = k + 1
+    while j < len(units) and _sentence_adverb(units[j]):
+        j += 1
+    return j + 1 < len(units) and units[j].word in VERDICT_SUBJECTS and units[j + 1].word in VERDICT_COPULAS
 
 
 CONDITION_STATES = {"clear", "safe", "free", "possible", "ready", "past", "through", "gone", "done"}
