@@ -3146,3 +3146,8 @@ def test_a_target_road_and_crossing_intent_name_no_agent():
 def test_then_as_in_that_case_is_no_later_stage():
     assert len(lower("A: A bus overtakes us on the left.\nB: Then honestly that is fine, the car just holds its "
                      "line.").scenario.stages) == 1
+
+
+def test_two_names_joined_by_a_hyphen_are_two_agents():
+    assert agents("Ego drives on in its lane. SlowTruck ahead of Ego in the same lane never moves. Trigger: "
+                  "distance Ego-SlowTruck < 30 m.") == [("car", "go_straight", "ego"), ("truck", "stop", "front")]

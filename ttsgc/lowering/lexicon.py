@@ -552,6 +552,8 @@ def _scenario_identifiers(text: str) -> str:
     ('LaneChangeAction', 'RelativeDistanceCondition', 'TimeOfDay') read as the words they are made of."""
     if not IDENTIFIER.search(text) and not DECLARED.search(text):
         return text
+    text = re.sub(r"\b(Ego|[A-Z][A-Za-z0-9]*_[A-Za-z0-9]+|[A-Z][a-z]+(?:[A-Z][a-z0-9]*)+)-(?=[A-Z])", r"\1 and ",
+                  text)  # "RelativeDistanceCondition Ego-StaticTruck": the two, not an ego that is a truck
     nouns: dict[str, tuple[str, ...]] = {}
     for m in DECLARED.finditer(text):
         name = m.group(1)
