@@ -3151,3 +3151,8 @@ def test_then_as_in_that_case_is_no_later_stage():
 def test_two_names_joined_by_a_hyphen_are_two_agents():
     assert agents("Ego drives on in its lane. SlowTruck ahead of Ego in the same lane never moves. Trigger: "
                   "distance Ego-SlowTruck < 30 m.") == [("car", "go_straight", "ego"), ("truck", "stop", "front")]
+
+
+def test_going_around_as_the_purpose_of_a_lane_change_keeps_its_side():
+    assert ("car", "change_lane_to_right", "ego") in agents(
+        "A van is broken down ahead of us. The AV changed lanes to the right to go around the van.")

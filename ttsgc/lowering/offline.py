@@ -2394,6 +2394,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             circulating = any(t.word in ("roundabout", "rotary", "circle") for x in clause_units for t in x.tokens) \
                 and not (k + 2 < len(clause_units) and (clause_units[k + 2].category == "agents" or
                                                        clause_units[k + 2].word in ("it", "him", "her", "them")))
+            if not side and k >= 1 and clause_units[k - 1].word == "to":  # "changed lanes to the right to go around"
+                side = next((a[4][5:] for a in reversed(e.actions) if a[0] == stage
+                             and a[4] in ("lane_left", "lane_right")), None)  # the purpose of the change said
             if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round") and \
                     not circulating:  # ("in the roundabout going around": round it, not round someone)
                 side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
