@@ -3156,3 +3156,10 @@ def test_two_names_joined_by_a_hyphen_are_two_agents():
 def test_going_around_as_the_purpose_of_a_lane_change_keeps_its_side():
     assert ("car", "change_lane_to_right", "ego") in agents(
         "A van is broken down ahead of us. The AV changed lanes to the right to go around the van.")
+
+
+def test_a_wait_of_minutes_opens_a_later_stage_not_a_trigger():
+    stages = lower("A truck stopped ahead and we stopped behind it. After ~3 min we changed lanes to the left."
+                   ).scenario.stages
+    assert [[a.action for a in s.agents if a.is_ego] for s in stages] == [["stop"], ["change_lane_to_left"]]
+    assert len(lower("A truck stopped ahead. After 3 s a car cuts in from the left.").scenario.stages) == 1

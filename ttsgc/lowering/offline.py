@@ -1406,7 +1406,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             r.mark(u)
             continue  # "then honestly that's fine, the car just holds its line": in that case, not later
         if u.category == "sequence" and not (u.word == "after" and nxt is not None and
-                                             nxt.category in ("number", "numbers")) and not (
+                                             nxt.category in ("number", "numbers") and
+                                             not _a_wait_of_minutes(units, k)) and not (
                 u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
                 and prev_word not in ("for", "at", "all") and not (  # "for once", "at once"
                 u.word == "next" and len(u.tokens) == 1 and prev_word in ("the", "a", "this", "that", "its")):
@@ -1424,7 +1425,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if state:
                 skip_next = True
             close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole
-                  and not state)
+                  and not state and not (u.word == "after" and _a_wait_of_minutes(units, k)))
             continue
         if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
             r.mark(u)
@@ -1514,6 +1515,15 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
 
 VERDICT_SUBJECTS = {"that", "it", "this"}
 VERDICT_COPULAS = {"is", "was", "would", "should", "will", "seems"}
+
+
+LONG_WAITS = {"min", "mins", "minute", "minutes", "hour", "hours", "hr", "hrs"}
+
+
+def _a_wait_of_minutes(units: list[Unit], k: int) -> bool:
+    """'After ~2 min the operator changed lanes': a scene plays for seconds, so a wait of minutes is no trigger
+    ('after 2s') but a later stage."""
+    return units[k].word == "after" and any(t.word in LONG_WAITS for x in units[k + 1:k + 4] for t in x.tokens)
 
 
 def _then_of_a_verdict(units: list[Unit], k: int) -> bool:
