@@ -3163,3 +3163,8 @@ def test_a_wait_of_minutes_opens_a_later_stage_not_a_trigger():
                    ).scenario.stages
     assert [[a.action for a in s.agents if a.is_ego] for s in stages] == [["stop"], ["change_lane_to_left"]]
     assert len(lower("A truck stopped ahead. After 3 s a car cuts in from the left.").scenario.stages) == 1
+
+
+def test_a_bare_vehicle_held_by_the_operator_is_the_ego():
+    assert sorted(t for t, _, _ in agents("AV waiting at red. Operator kept vehicle stopped until the bus had "
+                                          "cleared.")) == ["bus", "car"]

@@ -1991,6 +1991,10 @@ def _model_year(word: str) -> bool:
     return len(word) == 4 and word.isdigit() and 1950 <= int(word) <= 2099
 
 
+DRIVER_CONTROLS = {"kept", "keep", "keeps", "held", "hold", "holds", "brought", "bring", "brings", "steered",
+                   "steer", "steers", "stopped", "pulled", "moved", "put", "took", "drove", "parked"}
+
+
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
     u = units[head]
     r.mark(u)
@@ -2066,6 +2070,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and \
             not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego
+    if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
+            count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
+        return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
     predicate = first > 0 and units[first - 1].word in COPULAS | {"be", "being", "been"}  # "whom I know to be the
     # driver of the HGV": says who the man is; he is not the HGV
     if predicate and u.base in ("driver", "rider", "motorist") and not plural:
