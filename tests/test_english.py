@@ -3168,3 +3168,9 @@ def test_a_wait_of_minutes_opens_a_later_stage_not_a_trigger():
 def test_a_bare_vehicle_held_by_the_operator_is_the_ego():
     assert sorted(t for t, _, _ in agents("AV waiting at red. Operator kept vehicle stopped until the bus had "
                                           "cleared.")) == ["bus", "car"]
+
+
+@pytest.mark.parametrize("prompt", ["Ford & 5th. The AV waited at the red light.",
+                                    "Near 5th and Ford, the AV waited at the red light."])
+def test_a_make_joined_to_a_numbered_street_is_a_street_corner(prompt):
+    assert [t for t, _, _ in agents(prompt)] == ["car"]

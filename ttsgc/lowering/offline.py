@@ -323,12 +323,33 @@ def _driver_of(units: list[Unit]) -> list[Unit]:
     return out
 
 
+CORNER_WORDS = {"intersection", "junction", "corner", "crossroads"}
+
+
+def _corner_with_a_numbered_street(units: list[Unit], k: int) -> bool:
+    """'Lincoln & 3rd', 'at 5th and Lincoln': a make joined to a numbered street names the other street of a
+    corner, not a car."""
+    def ends_the_name(j: int) -> bool:
+        return j >= len(units) or units[j].category == "comma" or units[j].word in STREET_WORDS | CORNER_WORDS or \
+            units[j].tokens[0].sentence != units[k].tokens[0].sentence
+    determiner = k > 0 and units[k - 1].word in ("a", "an", "the", "this", "that", "another")
+    after = k + 2 < len(units) and units[k + 1].word == "and" and units[k + 2].word in ORDINALS and \
+        len(units[k + 2].tokens) == 1 and ends_the_name(k + 3)
+    before = k >= 2 and units[k - 1].word == "and" and units[k - 2].word in ORDINALS and \
+        len(units[k - 2].tokens) == 1 and ends_the_name(k + 1)
+    return not determiner and (after or before)
+
+
 def _names_no_agent(units: list[Unit]) -> list[Unit]:
     """'on Lincoln St', 'Ford Road': a make before a street word names a street; 'the cab company', 'his
     insurance': an agent noun before an organisation names who owns or insures, not an agent on the road."""
     out = list(units)
     for k, u in enumerate(units[:-1]):
         nxt = units[k + 1]
+        if u.category == "agents" and u.meaning not in ("ego", "none") and not u.tokens[-1].plural and \
+                _corner_with_a_numbered_street(units, k):
+            out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
+            continue
         if u.category != "agents" or u.meaning in ("ego", "none") or nxt.category != "word" or \
                 nxt.tokens[0].sentence != u.tokens[-1].sentence or u.tokens[-1].plural:
             continue
