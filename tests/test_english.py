@@ -3174,3 +3174,31 @@ def test_a_bare_vehicle_held_by_the_operator_is_the_ego():
                                     "Near 5th and Ford, the AV waited at the red light."])
 def test_a_make_joined_to_a_numbered_street_is_a_street_corner(prompt):
     assert [t for t, _, _ in agents(prompt)] == ["car"]
+
+
+def test_a_letters_greeting_with_its_addressee_and_a_german_closing_are_not_the_scene():
+    letter = ("Good morning, team,\n\nA lorry parks on the pavement outside our school every morning.\n\n"
+              "Mit freundlichen Gr\u00fc\u00dfen\nJo Bloggs\nRiverside Cyclists and Walkers\n")
+    assert agents(letter) == [("car", "go_straight", "ego"), ("truck", "stop", "front")]
+
+
+def test_the_driver_a_vehicle_is_driven_by_is_the_ego_when_it_is_named_again():
+    email = ("The minibus, driven by Marek, was on the high street. At the lights Marek turned left and a cyclist "
+             "came up on the inside. The minibus is the ego.")
+    assert agents(email) == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "right")]
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("One of our ambulances was turning right when a cyclist came up on its inside. "
+     "Please build a scene with our ambulance as the ego.", ("ambulance", "turn_right", "ego")),
+    ("One of our trams was turning right when a cyclist came up on its inside. Our tram is the ego.",
+     ("bus", "turn_right", "ego")),
+])
+def test_a_vehicle_named_as_the_ego_by_any_vehicle_noun_is_the_ego(prompt, ego):
+    found = agents(prompt)
+    assert ego in found and len(found) == 2, found
+
+
+def test_our_vehicle_with_more_words_before_its_noun_is_the_ego_named_so():
+    found = agents("Our white delivery van stops at the crossing and a bus overtakes it. Our van is the ego.")
+    assert found == [("bus", "go_straight", "back_left"), ("car", "stop", "ego")]

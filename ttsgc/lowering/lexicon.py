@@ -274,41 +274,6 @@ FIRST_PHASES = {"1", "a", "one"}
 CHECKING = {"check", "checks", "verify", "verifies", "ensure", "ensures", "confirm", "confirms", "assert", "asserts"}
 
 
-GREETING = re.compile(r"\s*(?:hi|hello|hey|hallo|dear|morning|good morning|good afternoon|good evening)\b[^.!?:]{0,40},\s*$",
-                      re.I)
-SIGN_OFF = re.compile(r"\s*(?:thanks|many thanks|thanks a lot|thanks again|thank you|cheers|best|best regards|kind regards|"
-                      r"regards|warm regards|best wishes|all the best|sincerely|yours sincerely|yours faithfully|"
-                      r"yours truly|mit freundlichen gr(?:\u00fc|ue)(?:\u00df|ss)en|viele gr(?:\u00fc|ue)(?:\u00df|ss)e)"
-                      r"\s*[,.!]?\s*$", re.I)
-
-
-DRIVER_NAME = re.compile(r"\b(?:driver:?|driven by|our driver) ([A-Z][a-z]+)\b|\(([A-Z][a-z]+)(?: [A-Z][\w'-]+)? driving\)")
-EGO_NAMED = re.compile(r"\b(?:is|as) (?:the )?ego\b", re.I)
-
-
-def _driver_named_as_ego(text: str) -> str:
-    """'Cab 17 (Tom Akers driving) ... Tom only just pulled up ... with the cab as the ego': where the text names
-    the vehicle that is the ego, its driver's name, said again, is the ego."""
-    if not EGO_NAMED.search(text):
-        return text
-    m = DRIVER_NAME.search(text)
-    if m is None:
-        return text
-    name = m.group(1) or m.group(2)  # the introduction itself stays; later mentions are the ego
-    return text[:m.end()] + re.sub(rf"\b{name}\b(?!'s)(?! [A-Z])", "the ego", text[m.end():])
-
-
-def _letter_body(lines: list[str]) -> list[str]:
-    """An email's or a letter's greeting ('Hi team,', 'Dear Sir or Madam,') and everything from its sign-off on
-    ('Kind regards,', the name, the job title, the company) are not the scene."""
-    body = list(lines)
-    first = next((k for k, line in enumerate(body) if line.strip()), None)
-    if first is not None and GREETING.match(body[first]):
-        body[first] = ""
-    end = next((k for k, line in enumerate(body) if k > 0 and SIGN_OFF.match(line)), None)
-    return body[:end] if end is not None else body
-
-
 def _without_answer_choices(lines: list[str]) -> list[str]:
     """A multiple-choice question's answers ('A  Move off quickly', '(b) On the left', '[ ] Sound your horn')
     are what a reader might do, not the scene: after a line that asks, lines marked A, B, C... (or 1, 2, 3, or
@@ -350,7 +315,7 @@ def _lines(text: str) -> str:
     if "\n" not in text.strip():
         return _keyed_agents(text)
     out = []
-    lines = _letter_body(_without_answer_choices(text.strip().splitlines()))
+    lines = _without_answer_choices(text.strip().splitlines())
     staged = False
     phased = any((m := KEY_LINE.match(line)) and PHASE_KEY.fullmatch(m.group(1).strip().lower()) for line in lines)
     speakers = _speakers(lines)
@@ -599,7 +564,7 @@ def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = _scenario_identifiers(_driver_named_as_ego(_lines(_screenplay(text))))
+    text = _scenario_identifiers(_lines(_screenplay(text)))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)

@@ -15,16 +15,20 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from ttsgc import vocabulary as V
 from ttsgc.lowering.lexicon import lexicon, matches, tokenize
 
 SALUTATION = re.compile(r"^\s*(?:(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
-                        r"morning|afternoon|evening)\b[^.!?,\n]{0,40}[,!]?|(?:hi|hello|hey|hiya|dear|greetings|hallo)\b"
+                        r"morning|afternoon|evening)\b[^.!?,\n]{0,40}[,!]?|(?:hi|hello|hey|hiya|dear|greetings|hallo|"
+                        r"good\s+(?:morning|afternoon|evening|day))\b"
                         r"[^.!?,\n]{0,40}[,!/][^.!?\n]{0,30}[,!]|to whom it may concern[,:]?)\s*$", re.I)
-# "Hi team,", "Dear simulation team,", "Hallo zusammen / hi all,", "Morning,": never "Morning rush hour on the M4"
+# "Hi team,", "Dear simulation team,", "Hallo zusammen / hi all,", "Morning,", "Good morning, team,": never
+# "Morning rush hour on the M4"
 CLOSING = re.compile(r"^\s*(?:cheers|thanks|thank you|many thanks|thanks a lot|thanks in advance|thx|ta|best|"
                      r"all the best|best wishes|best regards|kind regards|warm regards|warmest regards|regards|"
                      r"sincerely|yours(?: sincerely| faithfully| truly)?|take care|speak soon|talk soon|br|"
-                     r"with thanks|respectfully)\b[\s,.!]*(?:\S+)?[\s,.!]*$", re.I)
+                     r"with thanks|respectfully|mit freundlichen gr(?:\u00fc|ue)(?:\u00df|ss)en|"
+                     r"(?:viele|liebe|beste) gr(?:\u00fc|ue)(?:\u00df|ss)e)\b[\s,.!]*(?:\S+)?[\s,.!]*$", re.I)
 RATING = re.compile(r"^\s*(?:(?:[0-5](?:\.5)?|one|two|three|four|five)\s*(?:/\s*5\s*)?stars?|[0-5]\s*/\s*5|"
                     r"[\u2605\u2606\u2B50]+)\s*[!.,:;\-]*\s*", re.I)
 SPEAKER = re.compile(r"^\s*((?:[A-Z][A-Z.'\-]*\s?){1,4}):\s*", re.M)  # "MR. PRICE:", "THE COURT:"
@@ -52,6 +56,7 @@ DECLARATION = re.compile(
     r"(?:,\s*|\b(?:with|using|having)\s+)?\b(?:(?:our|the|my|this|that)\s+)?(?:(?P<adjective>[a-z]+)\s+)?" + _NOUN +
     r"(?:\s+(?:no\.?\s*|#)?\d+)?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+(?:the\s+|our\s+)?ego\b"
     r"(?:\s+(?:vehicle|car))?(?:\s+for this)?(?:\s+please)?", re.I)
+ANY_DECLARATION = re.compile(DECLARATION.pattern.replace(_NOUN, r"([a-z]+)"), re.I)
 FLEET_ADJECTIVES = {"delivery", "box", "transit", "panel", "courier", "company", "work", "hire", "rental", "fleet",
                     "own", "passenger", "cargo", "parcel", "school", "city", "service"}
 FLEET_NOUNS = r"van|cab|taxi|minibus|car|vehicle|unit|truck|lorry|bus|coach|motorcycle|motorbike|scooter"
@@ -59,7 +64,7 @@ FLEET_ONLY = {"van", "cab", "taxi", "minibus"}  # never a scenario's label ("car
 NOT_A_QUANTITY = r"(?!\s*(?:mph|km|kmh|kph|m\b|metres|meters|feet|ft|seconds|s\b|minutes|lanes?|%|percent|miles?))"
 NAME = r"(?:[A-Z]'[A-Z][a-z]+|[A-Z][a-z]+(?:['\-][A-Z]?[a-z]+)?)"  # "Kelly", "O'Brien", "Smith-Jones"
 FULL_NAME = rf"{NAME}(?:\s+{NAME}){{0,2}}"
-DRIVER_NAMED = (re.compile(rf"\b(?i:driver)\s*:?\s+({FULL_NAME})"),  # "driver: Aisha Rahman", "our driver Sven Keller"
+DRIVER_NAMED = (re.compile(rf"\b(?i:driver|driven by)\s*:?\s+({FULL_NAME})"),  # "driver: Aisha Rahman", "driven by Sven"
                 re.compile(rf"\(\s*({FULL_NAME})\s+(?:driving|at the wheel|behind the wheel)\s*\)"),  # "(Tom driving)"
                 re.compile(rf"(?:^|[.!?,\n]\s*)({FULL_NAME})\s+(?:in|driving|at the wheel of)\s+the ego\b"))
 LOWER_CASE_DRIVER = re.compile(r"\(\s*driver\s*:?\s+([a-z][a-z'\-]+(?:\s+[a-z][a-z'\-]+){0,2})\s*[),]|"
@@ -256,13 +261,17 @@ def _declared_ego(text: str, notes: list[str]) -> str:
     """'Our van is the ego', 'with the taxi as the ego', 'Van = ego': that vehicle, and its driver, are the ego
     wherever the text names them by role, by fleet name or by name."""
     m = DECLARATION.search(text)
-    if m is None:
-        return text
-    noun = m.group(2).lower()  # after the adjective
-    kind = VEHICLE_NOUNS[noun]
-    ego = EGO_NOUN[kind]
+    if m is not None:
+        noun, kind = m.group(2).lower(), VEHICLE_NOUNS[m.group(2).lower()]  # the noun after the adjective
+        text = DECLARATION.sub("", text)
+    else:  # "our tram is the ego", "with the ambulance as the ego": a vehicle the reader knows by another noun
+        m = next((d for d in ANY_DECLARATION.finditer(text) if _vehicle_kind(d.group(2).lower())), None)
+        if m is None:
+            return text
+        noun, kind = m.group(2).lower(), _vehicle_kind(m.group(2).lower())
+        text = text[:m.start()] + text[m.end():]
+    ego = EGO_NOUN.get(kind, f"the ego {noun}")  # "the ego ambulance"
     notes.append(f"read the {noun} as the ego (said so)")
-    text = DECLARATION.sub("", text)
     plural = noun + ("es" if noun.endswith("s") else "s")
     text = re.sub(rf"\bone of (?:our|my|the) (?:[a-z]+ )?{plural}\b", ego, text, flags=re.I)
     text = re.sub(rf"\b(?:{FLEET_NOUNS})\s+(?:no\.?\s*|#)?\d{{2,4}}\b" + NOT_A_QUANTITY +
@@ -273,10 +282,21 @@ def _declared_ego(text: str, notes: list[str]) -> str:
     own = {(m.group("adjective") or "").lower()} - {"our", "the", "my", "this", "that", "with", "using", ""}
     adjectives = "|".join(sorted(FLEET_ADJECTIVES | own))  # "the red car is the ego": "the blue car" is another
     text = re.sub(rf"\b(?:our|my|the|this|that)\s+(?:(?:{adjectives})\s+)?{noun}\b", ego, text, flags=re.I)
+    text = re.sub(rf"\b(?:our|my)\s+(?!(?:other|another|second|spare|old|new)\b)(?:[a-z]+\s+){{1,2}}?{noun}\b", ego,
+                  text, flags=re.I)  # "our white delivery van": whatever else it is called, ours is the ego
     text = re.sub(rf"(?:^|(?<=[.!?,(]\s)|(?<=\n))\b{noun}\b(?=\s*(?:\(|,|is\b|was\b|had\b))", ego, text,
                   flags=re.I)  # "Cab is the ego", "Taxi, driver ...": bare at a sentence's start
     text = re.sub(r"\b(?:our|my|the|this|that)\s+(?:[a-z]+\s+)?the ego\b", "the ego", text, flags=re.I)
     return _named_driver(text, notes)
+
+
+def _vehicle_kind(noun: str) -> str | None:
+    """The ego kind a vehicle noun names: 'van' a car, 'tram' a bus, 'ambulance' an ambulance; None for what is
+    no vehicle the ego can be."""
+    if noun in VEHICLE_NOUNS:
+        return VEHICLE_NOUNS[noun]
+    meaning = lexicon().phrases.get((noun,))
+    return meaning[1] if meaning and meaning[0] == "agents" and meaning[1] in V.EGO_TYPES else None
 
 
 def _named_driver(text: str, notes: list[str]) -> str:

@@ -289,7 +289,7 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
         category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
         out.append(Unit(i, i + 1, category, t.word, (t,)))
         i += 1
-    return _designated_ego(_driver_of(_names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out))))))
+    return _driver_of(_names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out)))))
 
 
 STREET_WORDS = {"street", "st", "road", "rd", "avenue", "ave", "drive", "dr", "boulevard", "blvd", "lane", "ln",
@@ -375,42 +375,6 @@ def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
             if prev.category == "positions":
                 out.append(Unit(u.start, u.end, "word", u.base, u.tokens))
                 continue
-        out.append(u)
-    return out
-
-
-NOT_THE_SAME = {"a", "an", "another", "other", "second", "some", "any", "each", "every"}
-
-
-def _designated_ego(units: list[Unit]) -> list[Unit]:
-    """'Our van is the ego', 'with the cab as the ego': the text says which of its vehicles the ego is, and every
-    mention of that vehicle ('one of our delivery vans', 'the van') is the ego; another one ('a white van') is not."""
-    heads = set()
-    for k, u in enumerate(units):
-        if not (u.category == "agents" and u.meaning == "ego" and "ego" in {t.word for t in u.tokens}):
-            continue
-        j = k - 1 - (k > 0 and units[k - 1].word == "the")
-        if j < 1 or units[j].word not in ("is", "as", "be"):
-            continue
-        named = units[j - 1]
-        if named.category == "agents" and named.meaning != "none" and "ego" not in {t.word for t in named.tokens}:
-            heads.add(named.tokens[-1].base)
-    if not heads:
-        return units
-    out = []
-    for k, u in enumerate(units):
-        if u.category == "agents" and u.meaning not in ("ego", "none") and u.tokens[-1].base in heads:
-            j = k - 1
-            while j >= 0 and (units[j].category == "word" and units[j].word not in lexicon().function_words or
-                              units[j].category in ("positions", "behaviours") and len(units[j].tokens) == 1):
-                j -= 1  # "our white delivery van", "an oncoming van": past its adjectives to its determiner
-            if not (j >= 0 and (units[j].word in NOT_THE_SAME or units[j].category == "number"
-                                or units[j].category == "numbers" and units[j].word != "one")):
-                u = Unit(u.start, u.end, "agents", "ego", u.tokens)
-        elif u.category == "agents" and u.tokens[-1].base in ("driver", "rider") and k > 0 and (
-                units[k - 1].word in ("our", "my") or any(  # "our driver Sven", "our van (unit 214, driver X)"
-                    x.category == "agents" and x.meaning == "ego" for x in out[-6:]) and out[-1].category == "comma"):
-            u = Unit(u.start, u.end, "agents", "ego", u.tokens)
         out.append(u)
     return out
 
