@@ -577,7 +577,6 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"'m\b", " am", text)
     text = re.sub(r"'d\b", " would", text)
     text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
-    text = re.sub(r"^\s*(?:good\s+)?(?:morning|afternoon|evening)\s*[!,.]+", " ", text)  # a greeting, not the time
     text = re.sub(r"\b(?:can|could|would|will)\s+(?:you|u)\s+(?:please\s+|pls\s+|plz\s+)?(?=(?:make|create|build|"
                   r"generate|give|show|simulate|set|write|do|add|put|design|produce|model|mock|spin|whip|knock|"
                   r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego

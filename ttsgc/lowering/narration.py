@@ -105,7 +105,7 @@ def _without_letter_frame(text: str, notes: list[str]) -> str:
     """'Hi team,' ... 'Cheers, / Dana / Fleet Operations': the greeting and the signature are no scene."""
     lines = text.split("\n")
     if len([x for x in lines if x.strip()]) < 2:
-        return text
+        return _without_greeting_word(text)
     first = next(k for k, x in enumerate(lines) if x.strip())
     greeting = lines[first].strip()
     if SALUTATION.match(greeting) and (greeting[-1] in ",!" or len(greeting.split()) <= 3 and
@@ -117,7 +117,12 @@ def _without_letter_frame(text: str, notes: list[str]) -> str:
             notes.append("read up to the letter's closing")
             lines = lines[:k]
             break
-    return "\n".join(lines)
+    return _without_greeting_word("\n".join(lines))
+
+
+def _without_greeting_word(text: str) -> str:
+    """'Good morning! A van ...', 'Evening, ...': a greeting that opens the text, not the time of day."""
+    return re.sub(r"^\s*(?:good\s+)?(?:morning|afternoon|evening)\s*[!,.]+", " ", text, flags=re.I)
 
 
 def _testimony(text: str, notes: list[str]) -> str:
