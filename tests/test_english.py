@@ -3202,3 +3202,11 @@ def test_a_vehicle_named_as_the_ego_by_any_vehicle_noun_is_the_ego(prompt, ego):
 def test_our_vehicle_with_more_words_before_its_noun_is_the_ego_named_so():
     found = agents("Our white delivery van stops at the crossing and a bus overtakes it. Our van is the ego.")
     assert found == [("bus", "go_straight", "back_left"), ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("A removal lorry stopped ahead of me on Mill Lane and then sat there for twenty minutes.", "block_the_ego"),
+    ("A removal lorry stopped ahead of me on Mill Lane for a few seconds and drove on.", "stop"),
+])
+def test_a_vehicle_that_stays_in_front_of_the_ego_for_minutes_blocks_it(prompt, action):
+    assert ("truck", action, "front") in agents(prompt)

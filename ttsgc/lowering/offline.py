@@ -2418,6 +2418,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and not e.is_ego and clause_units is not None and k is not None and \
                 _stands_across(clause_units[k + 1:k + 5]):
             action = "block"  # "a patrol car parked across the lane": nobody gets by
+        if action == "stop" and not e.is_ego and _for_long([x for x in r.units if x.start > u.start and
+                                                            x.tokens[0].sentence == u.tokens[-1].sentence]):
+            e.features.add("stays_long")  # "stayed there for a quarter of an hour": long enough to hold others up
         if action == "stop" and ({t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
                                                                   "stall", "stalled", "double", "abandon"}
                                  or {"bus", "stop"} <= {t.word for t in u.tokens}):  # "at a bus stop": at the kerb
@@ -2463,6 +2466,19 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                           direction))
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+LONG_STAY = re.compile(r"(?:there |put |where it was |where they were )?for (?:a (?:full |good |whole )?"
+                       r"(?:quarter of an hour|half an hour|half hour|hour|few minutes|couple of minutes)|"
+                       r"an (?:entire |whole )?hour|(?:a good |a full |the best part of )?(?:\S+ )?minutes|hours)\b")
+
+
+def _for_long(units: list[Unit]) -> bool:
+    """'there for a full quarter of an hour', '... and stayed there for ten minutes': a stay of minutes, not
+    seconds ('for ages' is a figure of speech)."""
+    said = " ".join(t.word for u in units for t in u.tokens)
+    return bool(LONG_STAY.match(said) or re.search(r"\b(?:stay|stays|stayed|sat|sit|sits|remain|remains|remained|"
+                                                   r"wait|waits|waited|stood|stand|stands) " + LONG_STAY.pattern, said))
 
 
 def _stands_across(units: list[Unit]) -> bool:
@@ -3912,6 +3928,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
             return "stop"  # "a lorry parked in the road we turn into, obstructing it": it stands where we head
         return "block_the_ego"
     if action == "stop":
+        if e.type != "pedestrian" and position == "front" and "stays_long" in e.features:
+            return "block_the_ego"  # stopped in front of the ego for minutes: the ego cannot go on
         if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder")):
             return "on_the_sidewalk"  # standing on the pavement or the verge
         if e.type == "pedestrian" and any(a[4] == "walk" for a in e.actions) and not e.features & {"crosswalk",
