@@ -3210,3 +3210,8 @@ def test_our_vehicle_with_more_words_before_its_noun_is_the_ego_named_so():
 ])
 def test_a_vehicle_that_stays_in_front_of_the_ego_for_minutes_blocks_it(prompt, action):
     assert ("truck", action, "front") in agents(prompt)
+
+
+def test_mine_among_a_counted_group_is_the_ego():
+    found = agents("Four cars including mine were queuing at the lights on Bridge Street.")
+    assert found.count(("car", "stop", "front")) == 3 and ("car", "stop", "ego") in found and len(found) == 4, found
