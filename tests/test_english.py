@@ -3215,3 +3215,8 @@ def test_a_vehicle_that_stays_in_front_of_the_ego_for_minutes_blocks_it(prompt, 
 def test_mine_among_a_counted_group_is_the_ego():
     found = agents("Four cars including mine were queuing at the lights on Bridge Street.")
     assert found.count(("car", "stop", "front")) == 3 and ("car", "stop", "ego") in found and len(found) == 4, found
+
+
+def test_the_ego_said_to_be_included_after_its_group_is_one_of_it():
+    found = agents("We sat at the level crossing barrier in a line of four cars, my own included.")
+    assert found.count(("car", "stop", "front")) == 3 and ("car", "stop", "ego") in found and len(found) == 4, found

@@ -2242,6 +2242,9 @@ def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None
     if whole is not None and units[head] in whole:  # read on past the clause: "three cars wait, including yours"
         units, head = whole, whole.index(units[head])
     for k in range(head + 1, min(len(units) - 1, head + 9)):  # "three cars at a crossroads, including yours"
+        if units[k].category == "agents" and units[k].meaning == "ego" and units[k + 1].word == "included" and \
+                units[k - 1].category == "comma":
+            return True  # "a queue of three cars, mine included"
         if units[k].category == "agents" or units[k].tokens[0].sentence != units[head].tokens[0].sentence:
             return False
         after = units[k + 1 + (units[k + 1].word == "the" and k + 2 < len(units))]
