@@ -742,6 +742,17 @@ def test_a_vehicle_behind_one_that_stops_stands_behind_it_in_esmini_too(esmini, 
     assert report.ok, report.table()
 
 
+def test_an_ego_changing_into_a_lane_where_a_vehicle_drives_level_with_it_drops_back_behind_it(esmini, tmp_path):
+    """'a truck is right next to it in that lane, so the ego has to slot in behind it': both players changed
+    the ego's lane at once, into the truck. The ego eases off and changes in once clear of it."""
+    report = _played(tmp_path, "slot", 'scenario "slot in"\nroad {\n    lanes >= 2\n}\nstage main {\n'
+                     '    ego car change_lane_to_left\n    truck t1 at left go_straight\n}\n')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+        assert "changed 1 lane(s) to the left" in _agent(report, player, "ego").reason, report.table()
+    assert report.ok, report.table()
+
+
 def test_a_later_walker_crosses_in_front_of_the_ego_that_stopped(esmini, tmp_path):
     """A walker of a later stage was placed relative to the ego when its stage starts, with no far side to
     cross to: it appeared on the kerb and stood. Before an ego that stands, it has a fixed start (where the

@@ -505,12 +505,17 @@ def _always(label: str, delay: float, minor: int) -> xosc.ValueTrigger:
     return xosc.ValueTrigger(label, delay, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, rule))
 
 
-def _start_trigger(agent: BoundAgent, label: str, minor: int, wait: float = 0.0):
-    """When the agent's action starts: at once, after a delay, when someone is within reach, or both. Edge
-    `none`: someone already within reach at the first evaluation starts the action then (a rising edge
-    would wait for ever)."""
+def _start_trigger(agent: BoundAgent, label: str, minor: int, wait: float = 0.0,
+                   clear_of: tuple[tuple[str, float], ...] = ()):
+    """When the agent's action starts: at once, after a delay, when someone is within reach, or both; and once
+    it is clear of each (name, distance) of clear_of. Edge `none`: someone already within reach at the first
+    evaluation starts the action then (a rising edge would wait for ever)."""
     t = agent.trigger
-    conditions = []
+    conditions = [xosc.EntityTrigger(f"{label}_clear_of_{name}", 0, xosc.ConditionEdge.none,
+                                     xosc.RelativeDistanceCondition(distance, xosc.Rule.greaterThan,
+                                                                    _EUCLIDEAN[minor >= 1], name, alongroute=False,
+                                                                    freespace=False), agent.name)
+                  for name, distance in clear_of]
     if t is not None and t.within_m is not None:
         conditions.append(xosc.EntityTrigger(f"{label}_near", 0, xosc.ConditionEdge.none,
                                              xosc.RelativeDistanceCondition(t.within_m, xosc.Rule.lessThan,
@@ -518,7 +523,7 @@ def _start_trigger(agent: BoundAgent, label: str, minor: int, wait: float = 0.0)
                                                                             t.of, alongroute=False, freespace=False),
                                              agent.name))
     delay = wait + (t.after_s if t is not None and t.after_s is not None else 0.0)
-    if delay or not conditions:
+    if delay or not conditions or clear_of and len(conditions) == len(clear_of):
         conditions.append(_always(f"{label}_time", delay, minor))
     if len(conditions) == 1:
         return conditions[0]
@@ -557,6 +562,23 @@ def ego_lane_when_stage_starts(scene: BoundScene, k: int) -> int:
     later_turn = next((step.stage for step in ego.later if step.action in V.TURN_ACTIONS), None)
     turned = _drives_its_route_first(scene) if later_turn is None else bool(ego.route) and later_turn < k
     return ego.route[-1].lane if turned else ego.start.lane
+
+
+LANE_CHANGE_ROOM_M = 3.0  # centre to centre beyond both half lengths: clear to change in beside another
+MAKING_ROOM_SHARE = 0.7  # of its speed, while one drops back behind a vehicle level with it in the other lane
+MAKING_ROOM_RATE = 2.0  # m/s², easing off and back on
+
+
+def _level_in_the_lane_it_changes_into(agent: BoundAgent, scene: BoundScene) -> list[BoundAgent]:
+    """'a truck is right next to it in that lane, so the ego has to slot in behind it': vehicles level with the
+    ego on the side it changes lane to, driving on. A player changes lane when told, into whatever is there;
+    the file makes the ego drop back and change in behind them."""
+    side = {"change_lane_to_left": "left", "change_lane_to_right": "right"}.get(agent.action)
+    if not agent.is_ego or agent.stage != 0 or side is None or agent.lane_change is None:
+        return []
+    return [a for a in scene.agents if not a.is_ego and a.stage == 0 and a.relative_to_ego == side
+            and a.type != "pedestrian" and a.action == "go_straight" and not _trajectory_bound(a)
+            and a.speed_mps > 0 and not a.start_delay_s]
 
 
 def _events(agent: BoundAgent, scene: BoundScene, minor: int):
@@ -616,7 +638,21 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     walker_waits = agent.start_delay_s if _trajectory_bound(agent) else 0.0  # steps out when its turn comes
     if setup + actions:  # an agent with nothing left to do once it has entered (a walker placed beside the
         # ego, whose way across is unknown until it stands somewhere) has no event: a file may not hold an empty one
-        events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits)))
+        beside = _level_in_the_lane_it_changes_into(agent, scene)
+        clear_of = tuple((other.name, round((agent.length + other.length) / 2 + LANE_CHANGE_ROOM_M, 3))
+                         for other in beside)
+        events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits, clear_of)))
+        if beside:  # it drops back to change in behind them, then drives on at its own speed
+            events.append((f"{agent.name}_makes_room", [("slow", xosc.AbsoluteSpeedAction(
+                round(agent.speed_mps * MAKING_ROOM_SHARE, 3), xosc.TransitionDynamics(
+                    xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, MAKING_ROOM_RATE)))],
+                _always(f"{agent.name}_makes_room_start", 0.0, minor)))
+            events.append((f"{agent.name}_drives_on", [("resume", xosc.AbsoluteSpeedAction(
+                agent.speed_mps, xosc.TransitionDynamics(xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate,
+                                                         MAKING_ROOM_RATE)))],
+                xosc.ValueTrigger(f"{agent.name}_changed", 0, xosc.ConditionEdge.none,
+                                  xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.event, label,
+                                                                       xosc.StoryboardElementState.completeState))))
     if _trajectory_bound(agent):  # it stands where its path ends (a player would walk on along the lane)
         events.append((f"{agent.name}_arrives", [("stand", xosc.AbsoluteSpeedAction(0.0, step))],
                        xosc.ValueTrigger(f"{agent.name}_path_done", 0, xosc.ConditionEdge.none,

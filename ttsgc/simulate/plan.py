@@ -28,7 +28,7 @@ class Condition:
     state: str = ""
     triggering: str = ""  # the entity whose distance counts
     position: tuple[str, int, float] | None = None  # reach: the lane position to come within value of
-    rule: str = "greaterThan"  # time, speed: how the simulation time or the entity's speed compares with value
+    rule: str = "greaterThan"  # time, speed, distance: how the time, the entity's speed or distance compares with value
     edge: str = "none"  # none | rising | falling | risingOrFalling: which change of the condition counts
     entities: tuple[str, ...] = ()  # every triggering entity (any of them)
 
@@ -184,9 +184,10 @@ class _Reader:
             if tag == "SpeedCondition":
                 return Condition("speed", delay, float(inner.get("value")), rule=inner.get("rule", "greaterThan"),
                                  triggering=who, edge=edge)
-            if tag == "RelativeDistanceCondition" and inner.get("rule") in ("lessThan", "lessOrEqual"):
+            if tag == "RelativeDistanceCondition" and inner.get("rule") in ("lessThan", "lessOrEqual", "greaterThan",
+                                                                              "greaterOrEqual"):
                 return Condition("distance", delay, float(inner.get("value")), ref=inner.get("entityRef"),
-                                 triggering=who, edge=edge)
+                                 triggering=who, edge=edge, rule=inner.get("rule"))
             self.missing(f"condition {tag}")
             return Condition("never")
         self.missing("condition of unknown kind")

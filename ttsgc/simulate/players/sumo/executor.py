@@ -593,7 +593,10 @@ class Executor:
         if condition.kind == "distance":
             who = condition.triggering or actor
             a, b = self.last(who), self.last(condition.ref)
-            return a is not None and b is not None and math.hypot(a.x - b.x, a.y - b.y) < condition.value
+            if a is None or b is None:
+                return False
+            apart = math.hypot(a.x - b.x, a.y - b.y)
+            return apart > condition.value if condition.rule.startswith("greater") else apart < condition.value
         if condition.kind == "end_of_road":
             return any(name in self.run.out_of_road for name in condition.entities)
         if condition.kind == "speed":
