@@ -523,7 +523,7 @@ def _start_trigger(agent: BoundAgent, label: str, minor: int, wait: float = 0.0,
                                                                             t.of, alongroute=False, freespace=False),
                                              agent.name))
     delay = wait + (t.after_s if t is not None and t.after_s is not None else 0.0)
-    if delay or not conditions or clear_of and len(conditions) == len(clear_of):
+    if delay or not conditions:
         conditions.append(_always(f"{label}_time", delay, minor))
     if len(conditions) == 1:
         return conditions[0]
