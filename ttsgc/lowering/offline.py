@@ -1670,17 +1670,20 @@ HABITUAL = frozenset({"often", "usually", "always", "sometimes", "regularly", "n
                       "constantly", "frequently", "routinely"})
 HABITUAL_PHRASES = (("all", "the", "time"), ("every", "day"), ("every", "morning"), ("every", "evening"),
                     ("every", "time"), ("most", "days"), ("tend", "to"))
-SAID_OF_SOME = COUNTED_BY | {"my", "our", "his", "her", "their", "its", "your", "both", "other", "no", "any", "all"}
+def _bare_plural(tokens: list[Token], u: Unit) -> bool:
+    """A plural noun with no determiner, owner or count before it ('buses', 'kids'): a kind, not some of it."""
+    t = u.tokens[0]
+    if not u.tokens[-1].plural:
+        return False
+    before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
+    return before is None or before.word not in SAID_OF_SOME and read_number(before.word) is None
 
 
 def _in_general(tokens: list[Token], u: Unit) -> bool:
     """'Buses often use this road', 'Taxis do that all the time': a bare plural in a sentence of what happens
     habitually speaks of a kind, not of anyone in the scene."""
     t = u.tokens[0]
-    if not u.tokens[-1].plural or u.meaning == "ego":
-        return False
-    before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
-    if before is not None and (before.word in SAID_OF_SOME or read_number(before.word) is not None):
+    if u.meaning == "ego" or not _bare_plural(tokens, u):
         return False
     words = [x.word for x in tokens if x.sentence == t.sentence]
     return bool(HABITUAL & set(words)) or any(tuple(words[k:k + len(p)]) == p
@@ -1782,9 +1785,8 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     if said in INSTITUTIONS and lead and (lead[-1] in ADDRESSED or lead[-1] == "the" and len(lead) == 2
                                          and lead[0] in ADDRESSED):
         return True
-    bare = last.plural and not before[-1:] or last.plural and before[-1].word not in DETERMINERS | OWNERS and \
-        read_number(before[-1].word) is None and before[-1].word not in COUNTED_BY or \
-        last.plural and before[-1].word == "than" and not (len(before) > 1 and before[-2].word in ("more", "fewer"))
+    bare = _bare_plural(tokens, u) or last.plural and before[-1].word == "than" and \
+        not (len(before) > 1 and before[-2].word in ("more", "fewer"))  # "harder than people think"
     if bare and u.meaning not in ("ego", "none"):
         if before[-1:] and before[-1].word == "than" or after[:1] and after[0].word in GENERAL_TRUTH_VERBS:
             return True  # "harder than people think", "people underestimate it"
@@ -1863,6 +1865,7 @@ DETERMINERS = DEFINITE | INDEFINITE | {
     "his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second", "third",
     "first", "same", "further", "additional", "extra", "its", "their",
 }
+SAID_OF_SOME = DETERMINERS | OWNERS | COUNTED_BY | {"no"}  # before a plural: some of the kind, not the kind
 
 
 def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, int, set[str], list[Unit]]:
