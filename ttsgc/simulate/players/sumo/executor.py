@@ -566,11 +566,7 @@ class Executor:
     def holds_true(self, condition: Condition, t: float, actor: str = "") -> bool:
         """The condition's own value now, before its edge and delay."""
         if condition.kind == "time":
-            rule = condition.rule
-            return {"greaterThan": t > condition.value + 1e-9, "greaterOrEqual": t >= condition.value - 1e-9,
-                    "lessThan": t < condition.value - 1e-9, "lessOrEqual": t <= condition.value + 1e-9,
-                    "equalTo": abs(t - condition.value) < STEP_S / 2,
-                    "notEqualTo": abs(t - condition.value) >= STEP_S / 2}.get(rule, False)
+            return _compared(t, condition.rule, condition.value, slack=1e-9, equal_within=STEP_S / 2)
         if condition.kind == "state":
             ref, state = condition.ref, condition.state
             ended = self.run.act_end.get(ref, self.run.event_end.get(ref))
@@ -601,11 +597,7 @@ class Executor:
             return any(name in self.run.out_of_road for name in condition.entities)
         if condition.kind == "speed":
             a = self.last(condition.triggering or actor)
-            return a is not None and {"greaterThan": a.speed > condition.value, "lessThan": a.speed < condition.value,
-                                      "greaterOrEqual": a.speed >= condition.value,
-                                      "lessOrEqual": a.speed <= condition.value,
-                                      "equalTo": abs(a.speed - condition.value) < 0.01,
-                                      "notEqualTo": abs(a.speed - condition.value) >= 0.01}.get(condition.rule, False)
+            return a is not None and _compared(a.speed, condition.rule, condition.value, equal_within=0.01)
         return False
 
     def _met(self, condition: Condition, t: float, actor: str) -> bool:
@@ -915,6 +907,13 @@ class Executor:
                                 (sb.x, sb.y, sb.heading, eb.length, eb.width)):
                     self.run.collisions.append(Collision(a, b, t, round((sa.x + sb.x) / 2, 2),
                                                          round((sa.y + sb.y) / 2, 2)))
+
+
+def _compared(x: float, rule: str, value: float, slack: float = 0.0, equal_within: float = 0.0) -> bool:
+    """An OpenSCENARIO rule applied to x; slack lets a value met to rounding count as met (a time)."""
+    return {"greaterThan": x > value + slack, "greaterOrEqual": x >= value - slack, "lessThan": x < value - slack,
+            "lessOrEqual": x <= value + slack, "equalTo": abs(x - value) < equal_within,
+            "notEqualTo": abs(x - value) >= equal_within}.get(rule, False)
 
 
 def _lane_pose(road, s: float, lane: int, offset: float = 0.0):
