@@ -252,14 +252,17 @@ DRIVING_VERBS = ("waits|turns|pulls|eases|slides|swings|brakes|stops|accelerates
 AT_THE_WHEEL_NAME = re.compile(rf"(?:(?<=^)|(?<=[.!?,] )|(?<=then )|(?<=and ))([A-Z][a-z]+|[A-Z]{{2,}})(?= (?:{DRIVING_VERBS})\b)")
 
 
+def known_word(name: str) -> bool:
+    """A name that is also a word the reader knows ('Will', 'Mark', 'Then'; 'Grace' is not)."""
+    lex = lexicon()
+    return name.lower() in lex.vocabulary or name.lower() in lex.function_words
+
+
 def _driver_named(m: re.Match) -> str:
     """In a screenplay's action lines a character who drives ('Tom waits', 'Riley pulls straight ahead') is at
-    the wheel of the ego; a word the lexicon knows ('A BUS', 'Then') is no name."""
-    word = m.group(1).lower()
-    lex = lexicon()
-    if word in lex.vocabulary or word in lex.function_words or lex.base(word)[0] in lex.vocabulary:
-        return m.group(1)
-    return "the ego"
+    the wheel of the ego; a word the lexicon knows ('A BUS', 'Then', 'Buses') is no name."""
+    word = m.group(1)
+    return word if known_word(word) or lexicon().base(word.lower())[0] in lexicon().vocabulary else "the ego"
 CHOICE_BOX = re.compile(r"\s*(?:\[\s*[xX\u2713]?\s*\]|[\u2610\u2611\u2612])")  # "[ ] Wave them across"
 CHOICE_MARK = re.compile(r"\s*\(?([A-Fa-f]|[1-6])(?:[.)]\s*|\s{2,}|\s+(?=[A-Z]))")  # "A. You do", "(b) Stop", "1) A, B"
 CHOICE_INSTRUCTION = re.compile(r"\s*(?:mark|select|choose|tick|pick|circle)\s+(?:one|two|three|all|the|an?)\b"

@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, field
 
 from ttsgc import vocabulary as V
-from ttsgc.lowering.lexicon import lexicon, matches, tokenize
+from ttsgc.lowering.lexicon import known_word, lexicon, matches, tokenize
 
 SALUTATION = re.compile(r"^\s*(?:(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
                         r"morning|afternoon|evening)\b[^.!?,\n]{0,40}[,!]?|(?:hi|hello|hey|hiya|dear|greetings|hallo|"
@@ -315,26 +315,20 @@ def _named_driver(text: str, notes: list[str]) -> str:
                 names.append(" ".join(words))
     for m in LOWER_CASE_DRIVER.finditer(text):  # "(driver marek nowak)": a name written in lower case
         words = [w for w in (m.group(1) or m.group(2)).split() if w.capitalize() not in NOT_NAMES]
-        if words and not any(_a_word(w) for w in words):
+        if words and not any(known_word(w) for w in words):
             names.append(" ".join(words))
     text = re.sub(r"\(\s*(?:driver\s*:?\s*)?" + FULL_NAME + r"(?:\s+driving)?\s*\)", "", text)
     text = re.sub(r",?\s*\b(?i:driver)\s*:?\s+" + FULL_NAME + r"\s*(?=[,)])", "", text)
     for name in sorted(set(names), key=len, reverse=True):
         parts = [name] + ([name.split()[0]] if " " in name else [])
         for part in parts:  # "ray braked hard" after "(driver Ray)"; a name that is also a word ("Will") as written
-            flags = 0 if _a_word(part) else re.I
+            flags = 0 if known_word(part) else re.I
             text = re.sub(rf"\b{re.escape(part)}'s\b", "the ego's", text, flags=flags)
             text = re.sub(rf"\b{re.escape(part)}\b", "the ego", text, flags=flags)
         notes.append(f"read {name} as the ego's driver")
     text = re.sub(r"\b(?:driver|driven by)\s*:?\s*the ego\b", "the ego", text, flags=re.I)
     text = re.sub(r"\bthe ego(?:\s*,)?\s+(?:\(\s*)?the ego\b\s*\)?", "the ego", text)
     return _drivers_pronoun(text, notes) if names or "the ego" in text else text
-
-
-def _a_word(name: str) -> bool:
-    """A name that is also a word the reader knows ('Will', 'Mark', 'Grace' is not)."""
-    lex = lexicon()
-    return name.lower() in lex.vocabulary or name.lower() in lex.function_words
 
 
 def _passengers_driver(text: str, notes: list[str]) -> str:
