@@ -3220,3 +3220,13 @@ def test_mine_among_a_counted_group_is_the_ego():
 def test_the_ego_said_to_be_included_after_its_group_is_one_of_it():
     found = agents("We sat at the level crossing barrier in a line of four cars, my own included.")
     assert found.count(("car", "stop", "front")) == 3 and ("car", "stop", "ego") in found and len(found) == 4, found
+
+
+@pytest.mark.parametrize("prompt, later", [
+    ("The ego waits behind a bus that is stopped at a bus stop, then overtakes it.", ("car", "go_straight", "ego")),
+    ("The ego follows a van which brakes suddenly, and then swerves around it.",
+     ("car", "change_lane_to_left", "ego")),
+])
+def test_a_verb_on_the_relatives_noun_after_a_relative_clause_is_the_main_subjects(prompt, later):
+    found = agents(prompt)
+    assert later in found and len(found) == 3 and not any(a[2] == "front" and a[1] == later[1] for a in found), found

@@ -3999,6 +3999,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.used.update(asked[1])
     clauses = _clauses(r, skip)
     previous: list[Entity] = []
+    main_subject: list[Entity] = []  # the subject of the last clause that is not a relative one
     recent: list[Entity] = []
     pending: list[Entity] = []
     header: list[Unit] = []
@@ -4007,8 +4008,13 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             clause.antecedent = recent[-1]
             if recent[-1].is_ego and len(recent) > 1 and k > 0 and _ego_placed_last(clauses[k - 1].units):
                 clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
+        if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
+                main_subject and _returns_to_the_main_subject(clause.units):
+            previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
+        if subject and clause.antecedent is None:
+            main_subject = subject
         if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
                 not any(e.is_ego for e in previous):
             for e in r.entities[before:]:  # "overtaken on the right by an ambulance and then by a fire engine"
@@ -4116,6 +4122,13 @@ AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operat
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked"}
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
+
+
+def _returns_to_the_main_subject(units: list[Unit]) -> bool:
+    """A bare verb whose object is 'it', 'him', 'her' or 'them' after a relative clause: the pronoun names the
+    relative's noun, and nothing does a thing to itself, so the verb is the main clause's subject's."""
+    return len(units) >= 2 and units[0].category == "actions" and any(
+        u.category == "word" and u.word in ("it", "him", "her", "them") for u in units[1:3])
 
 
 def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
