@@ -72,3 +72,21 @@ def test_people_waiting_to_cross_stand_at_the_kerb_and_a_walker_passes_them_on_t
     assert walker.start.offset * outward > 0 > crosser.start.offset * outward
     assert walker.walk_to.offset == walker.start.offset  # the whole walk, not its first step
     assert abs(walker.start.offset - crosser.start.offset) >= BODIES["pedestrian"][1]
+
+
+def test_two_people_walking_one_behind_the_other_end_their_walk_apart():
+    """Where the sidewalk ends before a whole walk, both walks used to stop at its end, and the one behind
+    walked into the one ahead (a collision in both players): the ends keep the gap the starts had."""
+    scene = parse('scenario "w"\nroad {\n    at junction\n    has stop\n}\nstage main {\n    ego car go_straight\n'
+                  '    pedestrian p1 at right on_the_sidewalk\n    pedestrian p2 at right on_the_sidewalk behind p1\n}\n')
+    checked = 0
+    for bound in itertools.islice(candidates(scene, load_library(["builtin"])), 6):
+        p1, p2 = bound.agent("p1"), bound.agent("p2")
+        if (p1.start.road, p1.start.lane) != (p2.start.road, p2.start.lane):
+            continue
+        forward = 1 if p1.walk_to.s >= p1.start.s else -1
+        assert forward * (p1.start.s - p2.start.s) > 0  # p2 starts behind
+        assert forward * (p1.walk_to.s - p2.walk_to.s) >= min(forward * (p1.start.s - p2.start.s), 2.0) - 1e-6
+        assert p2.speed_mps <= p1.speed_mps
+        checked += 1
+    assert checked

@@ -358,7 +358,7 @@ class Placer:
             order.setdefault(a.name, n)
         placed = sorted(placed, key=lambda b: order[b.name])
         placed = ego_yields(placed, self.odr, timed_by_trigger=True)  # before the turns: the ego's wait counts
-        placed = stagger_at_junction(no_faster_than_the_one_ahead(placed), self.odr)
+        placed = stagger_at_junction(no_faster_than_the_one_ahead(walkers_keep_their_gap(placed)), self.odr)
         capped = no_faster_onto_one_road(placed, self.odr)
         if capped != placed:  # slower, they hold the junction longer: the turns are taken again
             placed = stagger_at_junction(capped, self.odr)
@@ -772,6 +772,36 @@ def no_faster_than_the_one_ahead(agents: list[BoundAgent]) -> list[BoundAgent]:
             leaves = agent.lane_change is not None or agent.action in ("stop", "block_the_ego")
             limit = None if leaves else speed
     return [a.model_copy(update={"speed_mps": capped[a.name]}) if a.name in capped else a for a in agents]
+
+
+WALKER_GAP_M = 2.0  # the least gap kept between two people walking one after the other on a sidewalk
+
+
+def walkers_keep_their_gap(agents: list[BoundAgent]) -> list[BoundAgent]:
+    """People walking one after the other along one sidewalk end their walk as far apart as they started, and
+    none walks faster than the one ahead: where the road ends before a whole walk, every walk stops at its
+    end, and the one behind would walk into the one ahead (a collision in both players)."""
+    walks: dict[tuple[str, int, bool], list[BoundAgent]] = {}
+    for agent in agents:
+        if agent.walk_to is not None and agent.start is not None and agent.walk_to.road == agent.start.road:
+            forward = agent.walk_to.s >= agent.start.s
+            walks.setdefault((agent.start.road, agent.start.lane, forward), []).append(agent)
+    changed: dict[str, dict] = {}
+    for (_, _, forward), line in walks.items():
+        sign = 1.0 if forward else -1.0
+        line.sort(key=lambda a: -sign * a.start.s)  # the front first
+        for ahead, agent in zip(line, line[1:]):
+            ahead_end = changed.get(ahead.name, {}).get("walk_to", ahead.walk_to).s
+            ahead_speed = changed.get(ahead.name, {}).get("speed_mps", ahead.speed_mps)
+            gap = max(sign * (ahead.start.s - agent.start.s), WALKER_GAP_M)
+            update = {}
+            if sign * (ahead_end - agent.walk_to.s) < gap:
+                update["walk_to"] = agent.walk_to.model_copy(update={"s": round(ahead_end - sign * gap, 3)})
+            if agent.speed_mps > ahead_speed:
+                update["speed_mps"] = ahead_speed
+            if update:
+                changed[agent.name] = update
+    return [a.model_copy(update=changed[a.name]) if a.name in changed else a for a in agents]
 
 
 def let_the_traffic_pass(agents: list[BoundAgent], odr: OpenDrive) -> list[BoundAgent]:
