@@ -807,3 +807,19 @@ def test_people_crossing_in_front_of_an_ego_told_to_stop_cross_ahead_of_where_it
     for player in ("sumo", "esmini"):
         assert not _verdict(report, player).collisions, report.table()
     assert report.ok, report.table()
+
+
+@pytest.mark.parametrize("action", ["block_the_ego", "change_lane_to_right"])
+def test_a_faster_vehicle_from_behind_in_the_next_lane_passes_the_ego_before_it_cuts_in(esmini, tmp_path, action):
+    """'a cop car comes speeding from behind in the left lane, overtakes the ego and cuts in and blocks it':
+    told to change lane at once, it changed into the ego's lane behind it (both players), so it blocked
+    nothing; it draws level first and changes in once clear ahead."""
+    report = _played(tmp_path, "passes", 'scenario "passes"\nroad {\n    lanes >= 2\n}\nstage main {\n'
+                     f'    ego car go_straight\n    police po1 at back_left {action} aggressive\n}}\n')
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "po1").achieved, report.table()
+        trace = next(v for v in report.verdicts if v.player == player)
+        assert not [c for c in trace.collisions if not c.asked_for], report.table()
+    assert report.ok, report.table()
+    xosc = (tmp_path / "passes.xosc").read_text()
+    assert "po1_draws_level" in xosc and "RelativeDistanceCondition" in xosc

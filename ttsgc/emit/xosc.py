@@ -506,12 +506,15 @@ def _always(label: str, delay: float, minor: int) -> xosc.ValueTrigger:
 
 
 def _start_trigger(agent: BoundAgent, label: str, minor: int, wait: float = 0.0,
-                   clear_of: tuple[tuple[str, float], ...] = ()):
+                   clear_of: tuple[tuple[str, float], ...] = (), after: str | None = None):
     """When the agent's action starts: at once, after a delay, when someone is within reach, or both; and once
-    it is clear of each (name, distance) of clear_of. Edge `none`: someone already within reach at the first
-    evaluation starts the action then (a rising edge would wait for ever)."""
+    it is clear of each (name, distance) of clear_of, after the event `after` is done. Edge `none`: someone
+    already within reach at the first evaluation starts the action then (a rising edge would wait for ever)."""
     t = agent.trigger
-    conditions = [xosc.EntityTrigger(f"{label}_clear_of_{name}", 0, xosc.ConditionEdge.none,
+    conditions = [] if after is None else [xosc.ValueTrigger(
+        f"{label}_after_{after}", 0, xosc.ConditionEdge.none, xosc.StoryboardElementStateCondition(
+            xosc.StoryboardElementType.event, after, xosc.StoryboardElementState.completeState))]
+    conditions += [xosc.EntityTrigger(f"{label}_clear_of_{name}", 0, xosc.ConditionEdge.none,
                                      xosc.RelativeDistanceCondition(distance, xosc.Rule.greaterThan,
                                                                     _EUCLIDEAN[minor >= 1], name, alongroute=False,
                                                                     freespace=False), agent.name)
@@ -581,6 +584,18 @@ def _level_in_the_lane_it_changes_into(agent: BoundAgent, scene: BoundScene) -> 
             and a.speed_mps > 0 and not a.start_delay_s]
 
 
+def _passes_the_ego_first(agent: BoundAgent, scene: BoundScene) -> BoundAgent | None:
+    """The ego, when the agent comes up faster from behind in the lane beside and changes into the ego's lane
+    ('comes speeding up on the left, overtakes and cuts in'): a player changes lane when told, into the ego;
+    the file makes it draw level first and change in once clear ahead."""
+    ego = next(a for a in scene.agents if a.is_ego)
+    into_egos_lane = {"back_left": -1, "back_right": 1}.get(agent.relative_to_ego or "")
+    if agent.is_ego or agent.stage != 0 or agent.lane_change is None or agent.lane_change != into_egos_lane or \
+            agent.trigger is not None or agent.speed_mps <= ego.speed_mps or agent.start_delay_s:
+        return None
+    return ego
+
+
 def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     """(event name, [(action name, action)], trigger) for each step of the agent's action; the events of one
     maneuver run in parallel."""
@@ -641,7 +656,16 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
         beside = _level_in_the_lane_it_changes_into(agent, scene)
         clear_of = tuple((other.name, round((agent.length + other.length) / 2 + LANE_CHANGE_ROOM_M, 3))
                          for other in beside)
-        events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits, clear_of)))
+        passed = _passes_the_ego_first(agent, scene)
+        level = None
+        if passed is not None:  # it holds its lane until level with the ego, then changes in once clear ahead
+            level = f"{agent.name}_draws_level"
+            events.append((level, [("hold", xosc.AbsoluteSpeedAction(agent.speed_mps, step))], xosc.EntityTrigger(
+                f"{level}_near", 0, xosc.ConditionEdge.none, xosc.RelativeDistanceCondition(
+                    round((agent.length + passed.length) / 2 + 1.0, 3), xosc.Rule.lessThan, _EUCLIDEAN[minor >= 1],
+                    passed.name, alongroute=False, freespace=False), agent.name)))
+            clear_of += ((passed.name, round((agent.length + passed.length) / 2 + LANE_CHANGE_ROOM_M, 3)),)
+        events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits, clear_of, level)))
         if beside:  # it drops back to change in behind them, then drives on at its own speed
             events.append((f"{agent.name}_makes_room", [("slow", xosc.AbsoluteSpeedAction(
                 round(agent.speed_mps * MAKING_ROOM_SHARE, 3), xosc.TransitionDynamics(

@@ -29,7 +29,7 @@ TURN_MIN_DEG = 30.0
 SETTLE_S = 1.0  # how long after reaching its target road a turning body's heading is read
 GRID_M = 10.0  # cell size of the collision broad phase: larger than any body's half diagonal plus its step
 # events that are not the agent's own action
-SETUP_EVENTS = ("_enters", "_route", "_appears", "_leaves", "_arrives", "_sets_off")
+SETUP_EVENTS = ("_enters", "_route", "_appears", "_leaves", "_arrives", "_sets_off", "_draws_level")
 
 
 class AgentResult(BaseModel):
