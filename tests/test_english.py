@@ -3230,3 +3230,14 @@ def test_the_ego_said_to_be_included_after_its_group_is_one_of_it():
 def test_a_verb_on_the_relatives_noun_after_a_relative_clause_is_the_main_subjects(prompt, later):
     found = agents(prompt)
     assert later in found and len(found) == 3 and not any(a[2] == "front" and a[1] == later[1] for a in found), found
+
+
+# -- spoken, texted and reviewed descriptions ----------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I stopped for a kid on the crossing and the van stopped behind me kept beeping at me.", ("car", "stop", "back")),
+    ("We waited at the red and a taxi parked behind us was honking like crazy.", ("car", "stop", "back")),
+    ("The bloke behind me leaned on his horn the whole way down the high street.", ("car", "go_straight", "back")),
+])
+def test_a_horn_says_a_driver_is_there_but_not_where_it_goes(prompt, expected):
+    assert expected in agents(prompt)

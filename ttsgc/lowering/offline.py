@@ -4389,9 +4389,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
-        if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in VEHICLE_ONLY_ACTIONS:
-            e.type = "car"  # "someone's pulling out of a parking spot": someone driving
-            r.notes.append(f"inferred: '{e.head}' who {action.replace('_', ' ')}s drives a car")
+        if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and (action in VEHICLE_ONLY_ACTIONS or any(
+                a[4] == "horn" for a in e.actions)):
+            e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
+            r.notes.append(f"inferred: '{e.head}' who {(action or 'horn').replace('_', ' ')}s drives a car")
         elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop", "go_straight") and \
                 e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
                 and e.road_type != "sidewalk":
