@@ -3241,3 +3241,16 @@ def test_a_verb_on_the_relatives_noun_after_a_relative_clause_is_the_main_subjec
 ])
 def test_a_horn_says_a_driver_is_there_but_not_where_it_goes(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "Night, and a scooter with no lights was weaving about in the lane ahead of us.",
+    "A hatchback in the right lane shoots across into my lane, no signal, nothing.",
+    "This lorry drifts over into our lane. Just like that. No signal whatsoever.",
+])
+def test_a_vehicle_without_lights_or_signal_is_its_own_lamps_not_the_road(prompt):
+    assert "traffic_light" not in road(prompt).without_signals
+
+
+def test_no_signal_where_a_junction_is_named_is_the_junctions():
+    assert "traffic_light" in road("T-junction, no signal. A car from the left cuts into my lane.").without_signals

@@ -794,9 +794,10 @@ def _road(r: _Reader) -> RoadSpec:
                 or (u.category == "numbers" and u.meaning == "0"):
             negated, negated_in = True, u.tokens[0].sentence
             r.mark(u)
-            if k > 0 and units[k - 1].category == "agents" and units[k - 1].meaning not in ("none", "ego") and \
+            owner = k - 1 - (k > 1 and units[k - 1].word == "with")
+            if k > 0 and units[owner].category == "agents" and units[owner].meaning not in ("none", "ego") and \
                     k + 1 < len(units) and units[k + 1].category == "road" and units[k + 1].meaning == "traffic_light":
-                units[k + 1].category = "word"  # "a cyclist without lights": its own lamps
+                units[k + 1].category = "word"  # "a cyclist without lights", "with no lights": its own lamps
                 negated = False
             continue
         if u.category in ("road", "positions") and _then_doubted(units, k):
@@ -830,12 +831,13 @@ def _road(r: _Reader) -> RoadSpec:
                     "mirror", "mirrors", "maneuver", "manoeuvre", "position"}:
             continue  # "mirror, signal, manoeuvre": the driver's routine, the indicator, not a traffic light
         if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
-                any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and any(
+                any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and (any(
                     x.category == "actions" and x.tokens[0].sentence == u.tokens[0].sentence
-                    for x in units[max(0, k - 6):k]):
+                    for x in units[max(0, k - 6):k]) or _beside_a_lane_move(units, k)):
             r.mark(u)
             negated = False
-            continue  # "turned left without any signal": no indicator, not a junction without traffic lights
+            continue  # "turned left without any signal", "lurches into my lane -- no signal, nothing": no
+            # indicator, not a junction without traffic lights
         if u.category == "road" and u.meaning in ("stop", "yield") and k > 1 and \
                 {units[k - 1].word, units[k - 2].word} & HAND_HELD:
             r.mark(u)
@@ -907,6 +909,19 @@ def _road(r: _Reader) -> RoadSpec:
     if junction is not None:
         spec["junction"] = junction
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+LANE_MOVES = {"cut_in", "lane_change", "lane_left", "lane_right"}
+
+
+def _beside_a_lane_move(units: list[Unit], k: int) -> bool:
+    """'No signal, nothing.' said of a vehicle moving into the ego's lane, in its sentence or the two before: the
+    vehicle's indicator. Where those sentences name a junction, the signal is the junction's."""
+    sentence = units[k].tokens[0].sentence
+    near = [x for x in units if sentence - 2 <= x.tokens[0].sentence <= sentence]
+    return not any(x.category == "road" and x.meaning in ("junction", "stop+junction") for x in near) and any(
+        x.category == "actions" and x.meaning in LANE_MOVES or
+        x.category == "positions" and x.meaning in ("ego_lane", "into_ego_lane") for x in near)
 
 
 def _then_doubted(units: list[Unit], k: int) -> bool:
