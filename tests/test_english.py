@@ -3254,3 +3254,12 @@ def test_a_vehicle_without_lights_or_signal_is_its_own_lamps_not_the_road(prompt
 
 def test_no_signal_where_a_junction_is_named_is_the_junctions():
     assert "traffic_light" in road("T-junction, no signal. A car from the left cuts into my lane.").without_signals
+
+
+@pytest.mark.parametrize("prompt", [
+    "Lunch hour on Mill Street, and a bus pulls out in front of us.",
+    "It was the lunch rush and a van was double parked ahead of me.",
+])
+def test_the_lunch_hour_is_midday(prompt):
+    scene = lower(prompt).scenario
+    assert scene.weather is not None and scene.weather.time == "noon"
