@@ -3263,3 +3263,14 @@ def test_no_signal_where_a_junction_is_named_is_the_junctions():
 def test_the_lunch_hour_is_midday(prompt):
     scene = lower(prompt).scenario
     assert scene.weather is not None and scene.weather.time == "noon"
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two joggers are running along the pavement ahead on our left. They might step out though.",
+     ("pedestrian", "on_the_sidewalk", "front_left")),
+    ("A scooter is riding along on our right and may well swerve left at any moment.",
+     ("motorcycle", "go_straight", "right")),
+    ("There's a van in front of us that might be turning left.", ("car", "turn_left", "front")),
+])
+def test_what_an_agent_might_do_is_weaker_than_what_it_is_said_to_do(prompt, expected):
+    assert expected in agents(prompt)

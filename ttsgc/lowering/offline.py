@@ -1670,6 +1670,19 @@ def _standing_advice(tokens: list[Token], sentence: int) -> bool:
 COUNTERFACTUAL_MODALS = {"would", "could", "should", "might", "must"}
 
 
+POSSIBILITY_MODALS = {"might", "may"}
+
+
+def _only_possible(units: list[Unit], i: int) -> bool:
+    """'Kids walking on the pavement ... they might step out': what may happen is weaker than anything the agent is
+    said to do, and counts only where nothing else is said of it ('a van that may be turning left')."""
+    k = i - 1
+    while k >= 0 and (units[k].word in (ADVERBS | AUXILIARIES | {"well"}) - POSSIBILITY_MODALS or
+                      units[k].category == "behaviours"):  # "may well suddenly swerve"
+        k -= 1
+    return k >= 0 and units[k].category == "word" and units[k].word in POSSIBILITY_MODALS
+
+
 def _counterfactual(tokens: list[Token], t: Token) -> bool:
     """'You'd have had to stop again if I hadn't': what would have happened, not what did."""
     for j in range(t.index - 1, max(-1, t.index - 6), -1):
@@ -2808,7 +2821,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in main_verbs:
         made = _made_to(units, i, phrases)
         for e in made or subject:
-            _modify(r, e, units[i], stage, strength, units, i)
+            _modify(r, e, units[i], stage, 0 if _only_possible(units, i) else strength, units, i)
             if e.is_ego and by is not None and units[i].meaning == "move" and units[i].base in STEERING:
                 side = next((u.meaning[5:] for k, u in enumerate(units[:i]) if u.category == "positions"
                              and u.meaning in ("side_left", "side_right")
