@@ -3274,3 +3274,16 @@ def test_the_lunch_hour_is_midday(prompt):
 ])
 def test_what_an_agent_might_do_is_weaker_than_what_it_is_said_to_do(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("Thirty mile an hour limit on this bit, and a bus pulls out ahead of us.", "speed_48"),
+    ("It's a forty miles an hour road and a van is parked ahead.", "speed_64"),
+])
+def test_a_limit_in_miles_an_hour_said_aloud_is_converted(prompt, limit):
+    assert limit in road(prompt).required_objects
+
+
+def test_a_crosswalk_described_by_its_ladder_stripes_is_a_ladder_crosswalk():
+    found = road("One of those crossings with the big ladder stripes, and a kid is crossing.")
+    assert "ladder_crosswalk" in found.required_objects and "crosswalk" not in found.required_objects

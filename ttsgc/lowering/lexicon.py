@@ -601,6 +601,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
                   lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
+    text = re.sub(r"\bmiles? (?:an|a|per) hour\b", "mph", text)  # "a twenty mile an hour limit", as said aloud
     text = re.sub(r"\b(?:on|at|along|near) the (?:left|right|near|far|outer|inner) (?:edge|border|margin|rim) of the "
                   r"(?:road|street|lane|carriageway|roadway)\b", " ", text)  # riding at the road's edge: its own lane
     text = re.sub(r"\b([ap])\.\s?m\.?(?=\s|$|[,;!?)])", r"\1m", text)  # "after 10 p.m. and": no sentence end
