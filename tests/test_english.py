@@ -3287,3 +3287,12 @@ def test_a_limit_in_miles_an_hour_said_aloud_is_converted(prompt, limit):
 def test_a_crosswalk_described_by_its_ladder_stripes_is_a_ladder_crosswalk():
     found = road("One of those crossings with the big ladder stripes, and a kid is crossing.")
     assert "ladder_crosswalk" in found.required_objects and "crosswalk" not in found.required_objects
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("An old man was on the crossing and I didn't budge till he was over.", ("car", "stop", "ego")),
+    ("The lorry in front of us did not budge an inch for a whole minute.", ("truck", "stop", "front")),
+    ("A coach on my right wouldn't budge, so I couldn't get over.", ("bus", "go_straight", "right")),
+])
+def test_not_budging_is_standing_still_but_refusing_to_budge_is_not_making_room(prompt, expected):
+    assert expected in agents(prompt)
