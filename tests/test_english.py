@@ -3296,3 +3296,14 @@ def test_a_crosswalk_described_by_its_ladder_stripes_is_a_ladder_crosswalk():
 ])
 def test_not_budging_is_standing_still_but_refusing_to_budge_is_not_making_room(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("heading to the gym this morning a taxi pulled out in front of me and stopped dead",
+     [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]),
+    ("waiting at the lights on main st a cyclist came up on my right",
+     [("car", "stop", "ego"), ("cyclist", "go_straight", "right")]),
+])
+def test_an_opening_participle_with_no_comma_is_the_narrators_and_the_clause_after_has_its_own_subject(
+        prompt, expected):
+    assert agents(prompt) == expected

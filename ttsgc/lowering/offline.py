@@ -1486,6 +1486,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             continue
         if condition and _main_clause_after_condition(current, units, k):
             close()  # "once you were past the lorry you moved back": the condition ends where its main clause starts
+        if current and current[0].category == "actions" and current[0].tokens[0].word.endswith("ing") and \
+                not _has_agent(current) and _subject_and_verb_follow(units, k):
+            close(",")  # "coming home last night a cop car pulled out": the narrator's opening participle with no
+            # comma after it, then a clause with its own subject
         if u.category == "word" and u.word == "but" and prev_word in ("option", "choice", "alternative"):
             current.append(u)  # "no option but to stop": one idiom, the verb is the one left without a choice's
             continue
