@@ -3307,3 +3307,23 @@ def test_not_budging_is_standing_still_but_refusing_to_budge_is_not_making_room(
 def test_an_opening_participle_with_no_comma_is_the_narrators_and_the_clause_after_has_its_own_subject(
         prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "a truck ran the red right in front of me, dad said i did good to stop",
+    "a van pulled out on me at the roundabout and grandma told me to calm down",
+])
+def test_kin_named_like_a_name_is_not_on_the_road_unless_on_foot(prompt):
+    assert not any(a[0] == "pedestrian" for a in agents(prompt))
+
+
+def test_kin_named_like_a_name_on_foot_is_on_the_road():
+    assert ("pedestrian", "cross_the_road", "front") in agents("dad was crossing the street ahead of me")
+
+
+@pytest.mark.parametrize("prompt", [
+    "a bike swerved out and missed me by like a foot mom was not happy",
+    "the bus stopped maybe two metres ahead of me dad said nothing",
+])
+def test_a_measure_ends_the_noun_phrase_before_it(prompt):
+    assert not any(a[0] == "pedestrian" for a in agents(prompt)), agents(prompt)

@@ -1928,6 +1928,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             break
         elif units[head].meaning == "ego" and u.category == "actions":
             break  # "passed ego on right": the verb before the ego is no premodifier of it
+        elif u.category == "word" and u.word in DISTANCE_UNITS | {"foot", "inch", "inches"}:
+            break  # "missed me by like a foot mom said": a measure ends the phrase before it (texts lack commas)
         elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)
                                             and not any(m.category == "actions" for m in modifiers)) or \
                 (u.category == "positions" and len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS) or \
@@ -2041,9 +2043,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
-    if words & {"my", "our", "his", "her", "their"} and u.tokens[-1].base in KIN and \
-            not _on_foot_in_the_scene(units, head):
-        return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent
+    if (words & {"my", "our", "his", "her", "their"} or not words and first == head and not u.tokens[-1].plural) \
+            and u.tokens[-1].base in KIN and not _on_foot_in_the_scene(units, head):
+        return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
+        # "mom said no more driving": kin named as a name, by a text's writer
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
             and not _of_a_group(units, first):
