@@ -3327,3 +3327,11 @@ def test_kin_named_like_a_name_on_foot_is_on_the_road():
 ])
 def test_a_measure_ends_the_noun_phrase_before_it(prompt):
     assert not any(a[0] == "pedestrian" for a in agents(prompt)), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kind", [
+    ("A whole crowd of people spilled across the crossing in front of us.", "pedestrian"),
+    ("A big group of cyclists rode past us on the left.", "cyclist"),
+])
+def test_a_group_sized_by_an_adjective_is_a_group_of_unstated_size(prompt, kind):
+    assert sum(a[0] == kind for a in agents(prompt)) == 2
