@@ -3335,3 +3335,21 @@ def test_a_measure_ends_the_noun_phrase_before_it(prompt):
 ])
 def test_a_group_sized_by_an_adjective_is_a_group_of_unstated_size(prompt, kind):
     assert sum(a[0] == kind for a in agents(prompt)) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "we were three cars including mine sat at the red and I was in the middle",
+    "Three vans including ours queued at the lights on Hill Road. We were in the middle.",
+])
+def test_the_ego_in_the_middle_of_a_group_including_it_has_one_ahead_and_one_behind(prompt):
+    found = agents(prompt)
+    assert ("car", "stop", "ego") in found and ("car", "stop", "front") in found and \
+        ("car", "stop", "back") in found and len(found) == 3, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van waiting to turn left sat in the left lane beside me at the lights.", ("car", "stop", "left")),
+    ("Two taxis were waiting to turn right at the red ahead of me.", ("car", "stop", "front")),
+])
+def test_another_vehicle_waiting_to_turn_waits(prompt, expected):
+    assert expected in agents(prompt)

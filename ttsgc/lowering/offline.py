@@ -2421,8 +2421,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if waiting_to and set(u.base.split()) & OVERTAKING:
             e.actions = [a for a in e.actions if not (a[0] == stage and a[4] == "stop")]
             return  # "behind a cyclist, waiting to pass": following it, for a chance to pass
-        if waiting_to and action in ("cut_in", "move", "lane_change", "lane_left", "lane_right"):
-            return  # "a bus is waiting to pull out of the side road": it waits; pulling out is to come
+        if waiting_to and (action in ("cut_in", "move", "lane_change", "lane_left", "lane_right") or
+                           action in ("turn", "turn_left", "turn_right", "u_turn") and not e.is_ego):
+            return  # "a bus is waiting to pull out of the side road", "cars waiting to turn": it waits; pulling out
+            # or turning is to come (the ego's turn is its plan, read in its own stage)
         if action == "walk" and e.type == "pedestrian" and {t.word for t in u.tokens} & SIDEWALK_WORDS:
             e.features.add("on_sidewalk")  # "standing on the pavement near the crossing": on the pavement, by it
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
@@ -3123,13 +3125,16 @@ def _place_in_queue(r: _Reader) -> None:
     waiting in a queue or at a red light, doing nothing said, waits too."""
     words = [t.word for t in r.tokens]
     ego = next((e for e in r.entities if e.is_ego), None)
-    for i, w in enumerate(words[:-1]):
+    for i, w in enumerate(words):
         n = ORDINALS.get(w)
         rest = words[i + 1:i + 4]
         with_ego = next((e for e in r.entities if e.includes_ego and e.count > 0 and not e.is_ego), None)
         mine = rest[:1] == ["one"] and i > 1 and words[i - 1] == "the" and words[i - 2] in COPULAS and \
             with_ego is not None  # "we were three cars ..., mine was the second one"
-        if not n or not mine and (rest[0] not in ("in", "car", "vehicle") or not {"queue", "line"} & set(rest)):
+        if w == "middle" and words[max(0, i - 2):i] == ["in", "the"] and with_ego is not None and \
+                with_ego.count % 2 == 0 and rest[:1] != ["of"]:
+            n, mine = with_ego.count // 2 + 1, True  # "three cars including ours, we were in the middle": second
+        if not n or not mine and (rest[:1] not in (["in"], ["car"], ["vehicle"]) or not {"queue", "line"} & set(rest)):
             continue
         ego = ego or _ego_entity(r, 0)
         if not any(a[4] == "stop" for a in ego.actions):
