@@ -3353,3 +3353,11 @@ def test_the_ego_in_the_middle_of_a_group_including_it_has_one_ahead_and_one_beh
 ])
 def test_another_vehicle_waiting_to_turn_waits(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bin lorry was right next to us on the right and my driver couldn't get over.", ("truck", "go_straight", "right")),
+    ("A coach was alongside me on the left and I had to stay in my lane.", ("bus", "go_straight", "left")),
+])
+def test_a_new_subject_with_a_modal_after_a_placed_agent_opens_its_own_clause(prompt, expected):
+    assert expected in agents(prompt)

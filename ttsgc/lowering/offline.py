@@ -1562,8 +1562,9 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     if not starts:
         return False
     for x in units[k + 2:k + 10]:
-        if x.category == "actions" or x.word in COPULAS:
-            return True  # "... is behind us and we pull over", "... and a car in the lane to our left merges"
+        if x.category == "actions" or x.word in COPULAS or x.word in AUXILIARIES - {"to", "and", "then", "also"}:
+            return True  # "... is behind us and we pull over", "... and a car in the lane to our left merges",
+            # "... was next to us and he couldn't get over"
         if x.category == "comma" or x.word in CLAUSE_WORDS:
             return False
     return False
