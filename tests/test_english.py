@@ -3361,3 +3361,12 @@ def test_another_vehicle_waiting_to_turn_waits(prompt, expected):
 ])
 def test_a_new_subject_with_a_modal_after_a_placed_agent_opens_its_own_clause(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("some van cut me off today, it was in the right lane and swerved left into my lane", ("car", "change_lane_to_left", "right")),
+    ("A taxi cut me off. It swerved into my lane from the right and stopped dead.", ("car", "block_the_ego", "front_right")),
+    ("A car swerved into my lane from the left and blocked me.", ("car", "block_the_ego", "front_left")),
+])
+def test_a_cut_off_told_as_a_lane_change_without_a_stop_is_that_lane_change(prompt, expected):
+    assert expected in agents(prompt)

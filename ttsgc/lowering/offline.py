@@ -2459,6 +2459,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
+        if action == "block":  # "cut me off" may be told as the lane change it was; "blocks", "boxes in" may not
+            e.features.add("cuts_off" if "cut" in {t.word for t in u.tokens} else "blocks")
         if action == "stop" and not e.is_ego and clause_units is not None and k is not None and \
                 _stands_across(clause_units[k + 1:k + 5]):
             action = "block"  # "a patrol car parked across the lane": nobody gets by
@@ -3821,6 +3823,11 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     if best[4] == "cut_in" and {"ahead", "stops_abruptly"} <= e.features and any(
             a[4] == "stop" and a[1] == 2 and a[0] > best[0] for a in e.actions):
         return "block", None  # "cuts me up, then stops dead in front of me": a brake check blocks the ego
+    moved_in = [a for a in chosen if a[4] in LANE_MOVES and a[5] is not None or a[4] in ("lane_left", "lane_right")]
+    if best[4] == "block" and "cuts_off" in e.features and "blocks" not in e.features and moved_in and \
+            not any(a[4] == "stop" for a in chosen):
+        lane_move = max(moved_in, key=lambda a: a[3])  # "cut me off, he was in the lane to my left and swerved
+        return lane_move[4], lane_move[5]  # right into my lane": the cut-off told as the lane change it was
     return best[4], best[5]
 
 
