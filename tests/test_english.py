@@ -3370,3 +3370,11 @@ def test_a_new_subject_with_a_modal_after_a_placed_agent_opens_its_own_clause(pr
 ])
 def test_a_cut_off_told_as_a_lane_change_without_a_stop_is_that_lane_change(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A taxi cut me off: it swerved into my lane from the right and stopped dead.", ("car", "block_the_ego", "front_right")),
+    ("A lorry overtook me: it came past on the right and pulled in.", ("truck", "change_lane_to_left", "back_right")),
+])
+def test_a_first_person_clause_before_a_colon_is_a_sentence_not_a_title(prompt, expected):
+    assert expected in agents(prompt)

@@ -4347,9 +4347,11 @@ def _title(prompt: str, tokens: list[Token]) -> range:
     if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
         return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
     said = {(f.category, f.meaning) for f in matches(tokenize(m.group(1)))}
-    if ("agents", "ego") in said and any(category == "actions" for category, _ in said) and \
-            m.group(1).strip().lower().split()[0] in ("the", "i", "we", "you", "player", "my", "our", "ego"):
-        return range(0)  # "The player makes the left across oncoming traffic: ...": a sentence, not a title
+    if any(category == "actions" for category, _ in said) and (("agents", "ego") in said and (
+            m.group(1).strip().lower().split()[0] in ("the", "i", "we", "you", "player", "my", "our", "ego"))
+            or {t.word for t in tokenize(m.group(1))} & {"i", "me", "we", "us"}):
+        return range(0)  # "The player makes the left across oncoming traffic: ...", "A taxi cut me off: it ...": a
+        # sentence (a title names no speaker), not a title
     counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+\w+s\b",
                         m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
     if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
