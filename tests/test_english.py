@@ -3378,3 +3378,17 @@ def test_a_cut_off_told_as_a_lane_change_without_a_stop_is_that_lane_change(prom
 ])
 def test_a_first_person_clause_before_a_colon_is_a_sentence_not_a_title(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_a_police_car_that_has_pulled_over_a_vehicle_stands_and_so_does_the_vehicle():
+    found = agents("There's a patrol car on the hard shoulder ahead on our right, and it's pulled over a lorry. "
+                   "We move into the left lane.")
+    assert ("police", "stop", "front_right") in found and ("truck", "stop", "front_right") in found, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A squad car pulled over a taxi in the lane ahead of us.", ("car", "stop", "front")),
+    ("The van in front pulled over to let the fire engine through.", ("car", "change_lane_to_right", "front")),
+])
+def test_pulling_over_another_vehicle_stops_it_but_pulling_over_is_a_move_to_the_side(prompt, expected):
+    assert expected in agents(prompt)

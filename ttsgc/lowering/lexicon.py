@@ -570,6 +570,9 @@ def tokenize(text: str) -> list[Token]:
     text = _scenario_identifiers(_lines(_screenplay(text)))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
+    text = re.sub(r"\b(it|that|there|he|she|what|who)'s (been|got|gotten|gone|had)\b", r"\1 has \2", text)
+    text = re.sub(r"\b(it|that|he|she|who)'s (\w+ed)(?= (?:over |up |out |off )?(?:a|an|the|my|our|his|her|their|us|me)\b)",
+                  r"\1 has \2", text)  # "it's pulled over a pickup", "he's blocked the lane": has, not is
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
     text = re.sub(r"\blet's\b", "let us", text)
     text = _without_attribution(text)

@@ -2459,6 +2459,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
+        if [t.base for t in u.tokens] == ["pull", "over"] and clause_units is not None and k is not None and \
+                k + 1 < len(clause_units) and (clause_units[k + 1].category == "agents" and clause_units[k + 1].meaning
+                                               != "ego" or clause_units[k + 1].word in ("a", "an", "the", "another")):
+            action, direction = "stop", None  # "the cop car has pulled over a pickup": it stopped the pickup, and
+            # stands behind it
         if action == "block":  # "cut me off" may be told as the lane change it was; "blocks", "boxes in" may not
             e.features.add("cuts_off" if "cut" in {t.word for t in u.tokens} else "blocks")
         if action == "stop" and not e.is_ego and clause_units is not None and k is not None and \
@@ -2842,6 +2847,14 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.actions.append((stage, strength, ACTION_RANK["lane_left"], r.tick(), "lane_" + side, side))
         _relational(units[i], units, i, subject, objects if by is not None else
                     [p for p in phrases if p.index > i and p.entity not in subject])
+        pulled = next((p.entity for p in phrases if p.first == i + 1 and p.entity is not None), None) \
+            if [t.base for t in units[i].tokens] == ["pull", "over"] else None
+        if pulled is not None and not pulled.is_ego and pulled not in subject:
+            pulled.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "pulled over a van":
+            # the van stands where it was pulled over, by the one that pulled it over
+            if not pulled.features and subject and not subject[0].is_ego:
+                pulled.relative_to = pulled.relative_to or subject[0]
+                pulled.road_type = pulled.road_type or subject[0].road_type
         if units[i].meaning == "stop" and any(e.is_ego for e in made) and \
                 {t.base for t in units[i].tokens} & {"stop", "halt", "standstill"}:  # to stop, not just to brake
             causers = subject if units[0].word not in CAUSATIVES else previous_subject
