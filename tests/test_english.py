@@ -3392,3 +3392,16 @@ def test_a_police_car_that_has_pulled_over_a_vehicle_stands_and_so_does_the_vehi
 ])
 def test_pulling_over_another_vehicle_stops_it_but_pulling_over_is_a_move_to_the_side(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "Too much American TV, honestly. Anyway, a cab pulls up behind us.",
+    "Saw this on a TV show once: a cab pulls up behind us.",
+])
+def test_television_is_no_target_vehicle(prompt):
+    found = agents(prompt)
+    assert len(found) == 2 and [a[2] for a in found].count("back") == 1, found
+
+
+def test_a_target_vehicle_abbreviated_tv_is_still_one():
+    assert ("car", "stop", "front") in agents("The TV brakes to a stop in front of the VUT.")
