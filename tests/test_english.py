@@ -3405,3 +3405,22 @@ def test_television_is_no_target_vehicle(prompt):
 
 def test_a_target_vehicle_abbreviated_tv_is_still_one():
     assert ("car", "stop", "front") in agents("The TV brakes to a stop in front of the VUT.")
+
+
+def test_swinging_over_in_front_of_the_ego_is_a_cut_in():
+    assert ("car", "change_lane_to_left", "right") in agents("A minivan in the right lane swings over in front of us.")
+
+
+def test_it_after_an_agent_named_in_the_same_clause_is_that_agent():
+    found = agents("We're cruising in the middle lane. A lorry in the right lane decides it wants our lane and "
+                   "swings over.")
+    assert ("car", "go_straight", "ego") in found and ("truck", "change_lane_to_left", "right") in found, found
+
+
+@pytest.mark.parametrize("prompt", [
+    "The one that really gets me is the cut-in. A hatchback on our left dives into our lane.",
+    "Honestly, my least favourite is the merge. A bus on our left moves into our lane.",
+])
+def test_a_manoeuvre_named_as_the_topic_is_nobodys_act(prompt):
+    found = agents(prompt)
+    assert ("car", "go_straight", "ego") in found and len(found) == 2, found

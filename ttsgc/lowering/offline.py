@@ -3037,6 +3037,11 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
     if i + 1 < len(units) and units[i + 1].word in ("test", "tests", "scenario", "case", "run", "scene", "event",
                                                     "situation", "drill", "exercise", "check"):
         return True  # "merge test", "cut-in scenario": the name of a test
+    if i >= 2 and units[i - 1].word == "the" and units[i - 2].word in COPULAS and \
+            units[i].meaning in ("cut_in", "lane_change", "block") and (
+                i + 1 == len(units) or units[i + 1].category == "comma" or
+                units[i + 1].tokens[0].sentence != units[i].tokens[-1].sentence):
+        return True  # "the one that scares me is the cut-in.": the kind of scene talked about, nobody's act
     return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
         units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since") or \
         i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
@@ -3555,6 +3560,10 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
                            (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind"))
                            or units[i - 1].word in CAUSATIVES and i + 1 < len(units) and units[i + 1].word == "to")
     # "forcing it to stop": whom it forced
+    named_here = [np.entity for np in phrases if np.index < i and np.entity is not None and not np.entity.is_ego
+                  and np.entity.type not in V.VULNERABLE_TYPES]
+    if units[i].word == "it" and not as_object and named_here and phrases[0].entity is named_here[0]:
+        return named_here[0]  # "a van in the left lane decides it wants our lane": the clause's own subject
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
         things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
         if not things and previous_subject:
