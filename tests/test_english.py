@@ -3424,3 +3424,13 @@ def test_it_after_an_agent_named_in_the_same_clause_is_that_agent():
 def test_a_manoeuvre_named_as_the_topic_is_nobodys_act(prompt):
     found = agents(prompt)
     assert ("car", "go_straight", "ego") in found and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("There's a van in the left lane right next to us. We wait until that van's gone past, and then our car "
+     "moves over into the left lane.", ("car", "go_straight", "left")),
+    ("A taxi is in the right lane right beside us. We hang on until the taxi has gone past, then our car moves "
+     "over to the right.", ("car", "go_straight", "right")),
+])
+def test_a_vehicle_placed_beside_the_ego_that_goes_past_starts_beside_it(prompt, expected):
+    assert expected in agents(prompt)
