@@ -3434,3 +3434,13 @@ def test_a_manoeuvre_named_as_the_topic_is_nobodys_act(prompt):
 ])
 def test_a_vehicle_placed_beside_the_ego_that_goes_past_starts_beside_it(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("A bin lorry is stopped in front of me and it is not moving, basically forever.", "block_the_ego"),
+    ("HOST A: A removal van is parked in our lane and it's not moving.\nHOST B: Forever.\nHOST A: Pretty much.",
+     "block_the_ego"),
+    ("A removal van is parked in our lane and it's not moving. We wait a second and it drives off.", "stop"),
+])
+def test_a_vehicle_stopped_in_front_of_the_ego_forever_blocks_it(prompt, action):
+    assert ("truck", action, "front") in agents(prompt)

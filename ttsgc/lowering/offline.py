@@ -2469,8 +2469,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and not e.is_ego and clause_units is not None and k is not None and \
                 _stands_across(clause_units[k + 1:k + 5]):
             action = "block"  # "a patrol car parked across the lane": nobody gets by
-        if action == "stop" and not e.is_ego and _for_long([x for x in r.units if x.start > u.start and
-                                                            x.tokens[0].sentence == u.tokens[-1].sentence]):
+        sentence = u.tokens[-1].sentence
+        reply = [x for x in r.units if x.tokens[0].sentence == sentence + 1]  # "... just not moving." "Forever."
+        if action == "stop" and not e.is_ego and (_for_long([x for x in r.units if x.start > u.start and
+                                                             x.tokens[0].sentence == sentence]) or
+                                                  len(reply) <= 2 and _for_long(reply)):
             e.features.add("stays_long")  # "stayed there for a quarter of an hour": long enough to hold others up
         if action == "stop" and ({t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
                                                                   "stall", "stalled", "double", "abandon"}
@@ -2519,15 +2522,16 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         pass
 
 
-LONG_STAY = re.compile(r"(?:there |put |where it was |where they were )?for (?:a (?:full |good |whole )?"
+LONG_STAY = re.compile(r"(?:there |put |where it was |where they were )?(?:for (?:a (?:full |good |whole )?"
                        r"(?:quarter of an hour|half an hour|half hour|hour|few minutes|couple of minutes)|"
-                       r"an (?:entire |whole )?hour|(?:a good |a full |the best part of )?(?:\S+ )?minutes|hours)\b")
+                       r"an (?:entire |whole )?hour|(?:a good |a full |the best part of )?(?:\S+ )?minutes|hours)|"
+                       r"(?:basically |just |pretty much )?(?:forever|for ever|indefinitely))\b")
 
 
 def _for_long(units: list[Unit]) -> bool:
-    """'there for a full quarter of an hour', '... and stayed there for ten minutes': a stay of minutes, not
-    seconds ('for ages' is a figure of speech)."""
-    said = " ".join(t.word for u in units for t in u.tokens)
+    """'there for a full quarter of an hour', '... and stayed there for ten minutes', 'not moving. Forever.': a
+    stay of minutes or without end, not seconds ('for ages' is a figure of speech)."""
+    said = " ".join(t.word for u in units for t in u.tokens).lstrip(", ")
     return bool(LONG_STAY.match(said) or re.search(r"\b(?:stay|stays|stayed|sat|sit|sits|remain|remains|remained|"
                                                    r"wait|waits|waited|stood|stand|stands) " + LONG_STAY.pattern, said))
 
