@@ -3230,3 +3230,217 @@ def test_the_ego_said_to_be_included_after_its_group_is_one_of_it():
 def test_a_verb_on_the_relatives_noun_after_a_relative_clause_is_the_main_subjects(prompt, later):
     found = agents(prompt)
     assert later in found and len(found) == 3 and not any(a[2] == "front" and a[1] == later[1] for a in found), found
+
+
+# -- spoken, texted and reviewed descriptions ----------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I stopped for a kid on the crossing and the van stopped behind me kept beeping at me.", ("car", "stop", "back")),
+    ("We waited at the red and a taxi parked behind us was honking like crazy.", ("car", "stop", "back")),
+    ("The bloke behind me leaned on his horn the whole way down the high street.", ("car", "go_straight", "back")),
+])
+def test_a_horn_says_a_driver_is_there_but_not_where_it_goes(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "Night, and a scooter with no lights was weaving about in the lane ahead of us.",
+    "A hatchback in the right lane shoots across into my lane, no signal, nothing.",
+    "This lorry drifts over into our lane. Just like that. No signal whatsoever.",
+])
+def test_a_vehicle_without_lights_or_signal_is_its_own_lamps_not_the_road(prompt):
+    assert "traffic_light" not in road(prompt).without_signals
+
+
+def test_no_signal_where_a_junction_is_named_is_the_junctions():
+    assert "traffic_light" in road("T-junction, no signal. A car from the left cuts into my lane.").without_signals
+
+
+@pytest.mark.parametrize("prompt", [
+    "Lunch hour on Mill Street, and a bus pulls out in front of us.",
+    "It was the lunch rush and a van was double parked ahead of me.",
+])
+def test_the_lunch_hour_is_midday(prompt):
+    scene = lower(prompt).scenario
+    assert scene.weather is not None and scene.weather.time == "noon"
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two joggers are running along the pavement ahead on our left. They might step out though.",
+     ("pedestrian", "on_the_sidewalk", "front_left")),
+    ("A scooter is riding along on our right and may well swerve left at any moment.",
+     ("motorcycle", "go_straight", "right")),
+    ("There's a van in front of us that might be turning left.", ("car", "turn_left", "front")),
+])
+def test_what_an_agent_might_do_is_weaker_than_what_it_is_said_to_do(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("Thirty mile an hour limit on this bit, and a bus pulls out ahead of us.", "speed_48"),
+    ("It's a forty miles an hour road and a van is parked ahead.", "speed_64"),
+])
+def test_a_limit_in_miles_an_hour_said_aloud_is_converted(prompt, limit):
+    assert limit in road(prompt).required_objects
+
+
+def test_a_crosswalk_described_by_its_ladder_stripes_is_a_ladder_crosswalk():
+    found = road("One of those crossings with the big ladder stripes, and a kid is crossing.")
+    assert "ladder_crosswalk" in found.required_objects and "crosswalk" not in found.required_objects
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("An old man was on the crossing and I didn't budge till he was over.", ("car", "stop", "ego")),
+    ("The lorry in front of us did not budge an inch for a whole minute.", ("truck", "stop", "front")),
+    ("A coach on my right wouldn't budge, so I couldn't get over.", ("bus", "go_straight", "right")),
+])
+def test_not_budging_is_standing_still_but_refusing_to_budge_is_not_making_room(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("heading to the gym this morning a taxi pulled out in front of me and stopped dead",
+     [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]),
+    ("waiting at the lights on main st a cyclist came up on my right",
+     [("car", "stop", "ego"), ("cyclist", "go_straight", "right")]),
+])
+def test_an_opening_participle_with_no_comma_is_the_narrators_and_the_clause_after_has_its_own_subject(
+        prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "a truck ran the red right in front of me, dad said i did good to stop",
+    "a van pulled out on me at the roundabout and grandma told me to calm down",
+])
+def test_kin_named_like_a_name_is_not_on_the_road_unless_on_foot(prompt):
+    assert not any(a[0] == "pedestrian" for a in agents(prompt))
+
+
+def test_kin_named_like_a_name_on_foot_is_on_the_road():
+    assert ("pedestrian", "cross_the_road", "front") in agents("dad was crossing the street ahead of me")
+
+
+@pytest.mark.parametrize("prompt", [
+    "a bike swerved out and missed me by like a foot mom was not happy",
+    "the bus stopped maybe two metres ahead of me dad said nothing",
+])
+def test_a_measure_ends_the_noun_phrase_before_it(prompt):
+    assert not any(a[0] == "pedestrian" for a in agents(prompt)), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kind", [
+    ("A whole crowd of people spilled across the crossing in front of us.", "pedestrian"),
+    ("A big group of cyclists rode past us on the left.", "cyclist"),
+])
+def test_a_group_sized_by_an_adjective_is_a_group_of_unstated_size(prompt, kind):
+    assert sum(a[0] == kind for a in agents(prompt)) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "we were three cars including mine sat at the red and I was in the middle",
+    "Three vans including ours queued at the lights on Hill Road. We were in the middle.",
+])
+def test_the_ego_in_the_middle_of_a_group_including_it_has_one_ahead_and_one_behind(prompt):
+    found = agents(prompt)
+    assert ("car", "stop", "ego") in found and ("car", "stop", "front") in found and \
+        ("car", "stop", "back") in found and len(found) == 3, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van waiting to turn left sat in the left lane beside me at the lights.", ("car", "stop", "left")),
+    ("Two taxis were waiting to turn right at the red ahead of me.", ("car", "stop", "front")),
+])
+def test_another_vehicle_waiting_to_turn_waits(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bin lorry was right next to us on the right and my driver couldn't get over.", ("truck", "go_straight", "right")),
+    ("A coach was alongside me on the left and I had to stay in my lane.", ("bus", "go_straight", "left")),
+])
+def test_a_new_subject_with_a_modal_after_a_placed_agent_opens_its_own_clause(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("some van cut me off today, it was in the right lane and swerved left into my lane", ("car", "change_lane_to_left", "right")),
+    ("A taxi cut me off. It swerved into my lane from the right and stopped dead.", ("car", "block_the_ego", "front_right")),
+    ("A car swerved into my lane from the left and blocked me.", ("car", "block_the_ego", "front_left")),
+])
+def test_a_cut_off_told_as_a_lane_change_without_a_stop_is_that_lane_change(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A taxi cut me off: it swerved into my lane from the right and stopped dead.", ("car", "block_the_ego", "front_right")),
+    ("A lorry overtook me: it came past on the right and pulled in.", ("truck", "change_lane_to_left", "back_right")),
+])
+def test_a_first_person_clause_before_a_colon_is_a_sentence_not_a_title(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_police_car_that_has_pulled_over_a_vehicle_stands_and_so_does_the_vehicle():
+    found = agents("There's a patrol car on the hard shoulder ahead on our right, and it's pulled over a lorry. "
+                   "We move into the left lane.")
+    assert ("police", "stop", "front_right") in found and ("truck", "stop", "front_right") in found, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A squad car pulled over a taxi in the lane ahead of us.", ("car", "stop", "front")),
+    ("The van in front pulled over to let the fire engine through.", ("car", "change_lane_to_right", "front")),
+])
+def test_pulling_over_another_vehicle_stops_it_but_pulling_over_is_a_move_to_the_side(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "Too much American TV, honestly. Anyway, a cab pulls up behind us.",
+    "Saw this on a TV show once: a cab pulls up behind us.",
+])
+def test_television_is_no_target_vehicle(prompt):
+    found = agents(prompt)
+    assert len(found) == 2 and [a[2] for a in found].count("back") == 1, found
+
+
+def test_a_target_vehicle_abbreviated_tv_is_still_one():
+    assert ("car", "stop", "front") in agents("The TV brakes to a stop in front of the VUT.")
+
+
+def test_swinging_over_in_front_of_the_ego_is_a_cut_in():
+    assert ("car", "change_lane_to_left", "right") in agents("A minivan in the right lane swings over in front of us.")
+
+
+def test_it_after_an_agent_named_in_the_same_clause_is_that_agent():
+    found = agents("We're cruising in the middle lane. A lorry in the right lane decides it wants our lane and "
+                   "swings over.")
+    assert ("car", "go_straight", "ego") in found and ("truck", "change_lane_to_left", "right") in found, found
+
+
+@pytest.mark.parametrize("prompt", [
+    "The one that really gets me is the cut-in. A hatchback on our left dives into our lane.",
+    "Honestly, my least favourite is the merge. A bus on our left moves into our lane.",
+])
+def test_a_manoeuvre_named_as_the_topic_is_nobodys_act(prompt):
+    found = agents(prompt)
+    assert ("car", "go_straight", "ego") in found and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("There's a van in the left lane right next to us. We wait until that van's gone past, and then our car "
+     "moves over into the left lane.", ("car", "go_straight", "left")),
+    ("A taxi is in the right lane right beside us. We hang on until the taxi has gone past, then our car moves "
+     "over to the right.", ("car", "go_straight", "right")),
+])
+def test_a_vehicle_placed_beside_the_ego_that_goes_past_starts_beside_it(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("A bin lorry is stopped in front of me and it is not moving, basically forever.", "block_the_ego"),
+    ("HOST A: A removal van is parked in our lane and it's not moving.\nHOST B: Forever.\nHOST A: Pretty much.",
+     "block_the_ego"),
+    ("A removal van is parked in our lane and it's not moving. We wait a second and it drives off.", "stop"),
+])
+def test_a_vehicle_stopped_in_front_of_the_ego_forever_blocks_it(prompt, action):
+    assert ("truck", action, "front") in agents(prompt)

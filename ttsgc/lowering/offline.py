@@ -794,9 +794,10 @@ def _road(r: _Reader) -> RoadSpec:
                 or (u.category == "numbers" and u.meaning == "0"):
             negated, negated_in = True, u.tokens[0].sentence
             r.mark(u)
-            if k > 0 and units[k - 1].category == "agents" and units[k - 1].meaning not in ("none", "ego") and \
+            owner = k - 1 - (k > 1 and units[k - 1].word == "with")
+            if k > 0 and units[owner].category == "agents" and units[owner].meaning not in ("none", "ego") and \
                     k + 1 < len(units) and units[k + 1].category == "road" and units[k + 1].meaning == "traffic_light":
-                units[k + 1].category = "word"  # "a cyclist without lights": its own lamps
+                units[k + 1].category = "word"  # "a cyclist without lights", "with no lights": its own lamps
                 negated = False
             continue
         if u.category in ("road", "positions") and _then_doubted(units, k):
@@ -830,12 +831,13 @@ def _road(r: _Reader) -> RoadSpec:
                     "mirror", "mirrors", "maneuver", "manoeuvre", "position"}:
             continue  # "mirror, signal, manoeuvre": the driver's routine, the indicator, not a traffic light
         if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
-                any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and any(
+                any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and (any(
                     x.category == "actions" and x.tokens[0].sentence == u.tokens[0].sentence
-                    for x in units[max(0, k - 6):k]):
+                    for x in units[max(0, k - 6):k]) or _beside_a_lane_move(units, k)):
             r.mark(u)
             negated = False
-            continue  # "turned left without any signal": no indicator, not a junction without traffic lights
+            continue  # "turned left without any signal", "lurches into my lane -- no signal, nothing": no
+            # indicator, not a junction without traffic lights
         if u.category == "road" and u.meaning in ("stop", "yield") and k > 1 and \
                 {units[k - 1].word, units[k - 2].word} & HAND_HELD:
             r.mark(u)
@@ -907,6 +909,19 @@ def _road(r: _Reader) -> RoadSpec:
     if junction is not None:
         spec["junction"] = junction
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+LANE_MOVES = {"cut_in", "lane_change", "lane_left", "lane_right"}
+
+
+def _beside_a_lane_move(units: list[Unit], k: int) -> bool:
+    """'No signal, nothing.' said of a vehicle moving into the ego's lane, in its sentence or the two before: the
+    vehicle's indicator. Where those sentences name a junction, the signal is the junction's."""
+    sentence = units[k].tokens[0].sentence
+    near = [x for x in units if sentence - 2 <= x.tokens[0].sentence <= sentence]
+    return not any(x.category == "road" and x.meaning in ("junction", "stop+junction") for x in near) and any(
+        x.category == "actions" and x.meaning in LANE_MOVES or
+        x.category == "positions" and x.meaning in ("ego_lane", "into_ego_lane") for x in near)
 
 
 def _then_doubted(units: list[Unit], k: int) -> bool:
@@ -1471,6 +1486,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             continue
         if condition and _main_clause_after_condition(current, units, k):
             close()  # "once you were past the lorry you moved back": the condition ends where its main clause starts
+        if current and current[0].category == "actions" and current[0].tokens[0].word.endswith("ing") and \
+                not _has_agent(current) and _subject_and_verb_follow(units, k):
+            close(",")  # "coming home last night a cop car pulled out": the narrator's opening participle with no
+            # comma after it, then a clause with its own subject
         if u.category == "word" and u.word == "but" and prev_word in ("option", "choice", "alternative"):
             current.append(u)  # "no option but to stop": one idiom, the verb is the one left without a choice's
             continue
@@ -1543,8 +1562,9 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     if not starts:
         return False
     for x in units[k + 2:k + 10]:
-        if x.category == "actions" or x.word in COPULAS:
-            return True  # "... is behind us and we pull over", "... and a car in the lane to our left merges"
+        if x.category == "actions" or x.word in COPULAS or x.word in AUXILIARIES - {"to", "and", "then", "also"}:
+            return True  # "... is behind us and we pull over", "... and a car in the lane to our left merges",
+            # "... was next to us and he couldn't get over"
         if x.category == "comma" or x.word in CLAUSE_WORDS:
             return False
     return False
@@ -1653,6 +1673,19 @@ def _standing_advice(tokens: list[Token], sentence: int) -> bool:
 
 
 COUNTERFACTUAL_MODALS = {"would", "could", "should", "might", "must"}
+
+
+POSSIBILITY_MODALS = {"might", "may"}
+
+
+def _only_possible(units: list[Unit], i: int) -> bool:
+    """'Kids walking on the pavement ... they might step out': what may happen is weaker than anything the agent is
+    said to do, and counts only where nothing else is said of it ('a van that may be turning left')."""
+    k = i - 1
+    while k >= 0 and (units[k].word in (ADVERBS | AUXILIARIES | {"well"}) - POSSIBILITY_MODALS or
+                      units[k].category == "behaviours"):  # "may well suddenly swerve"
+        k -= 1
+    return k >= 0 and units[k].category == "word" and units[k].word in POSSIBILITY_MODALS
 
 
 def _counterfactual(tokens: list[Token], t: Token) -> bool:
@@ -1896,6 +1929,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             break
         elif units[head].meaning == "ego" and u.category == "actions":
             break  # "passed ego on right": the verb before the ego is no premodifier of it
+        elif u.category == "word" and u.word in DISTANCE_UNITS | {"foot", "inch", "inches"}:
+            break  # "missed me by like a foot mom said": a measure ends the phrase before it (texts lack commas)
         elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)
                                             and not any(m.category == "actions" for m in modifiers)) or \
                 (u.category == "positions" and len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS) or \
@@ -2009,9 +2044,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
-    if words & {"my", "our", "his", "her", "their"} and u.tokens[-1].base in KIN and \
-            not _on_foot_in_the_scene(units, head):
-        return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent
+    if (words & {"my", "our", "his", "her", "their"} or not words and first == head and not u.tokens[-1].plural) \
+            and u.tokens[-1].base in KIN and not _on_foot_in_the_scene(units, head):
+        return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
+        # "mom said no more driving": kin named as a name, by a text's writer
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
             and not _of_a_group(units, first):
@@ -2386,8 +2422,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if waiting_to and set(u.base.split()) & OVERTAKING:
             e.actions = [a for a in e.actions if not (a[0] == stage and a[4] == "stop")]
             return  # "behind a cyclist, waiting to pass": following it, for a chance to pass
-        if waiting_to and action in ("cut_in", "move", "lane_change", "lane_left", "lane_right"):
-            return  # "a bus is waiting to pull out of the side road": it waits; pulling out is to come
+        if waiting_to and (action in ("cut_in", "move", "lane_change", "lane_left", "lane_right") or
+                           action in ("turn", "turn_left", "turn_right", "u_turn") and not e.is_ego):
+            return  # "a bus is waiting to pull out of the side road", "cars waiting to turn": it waits; pulling out
+            # or turning is to come (the ego's turn is its plan, read in its own stage)
         if action == "walk" and e.type == "pedestrian" and {t.word for t in u.tokens} & SIDEWALK_WORDS:
             e.features.add("on_sidewalk")  # "standing on the pavement near the crossing": on the pavement, by it
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
@@ -2421,11 +2459,21 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("overtaking")
             if "undertake" in u.base.split():
                 e.features.add("undertaking")  # passing on the kerb side
+        if [t.base for t in u.tokens] == ["pull", "over"] and clause_units is not None and k is not None and \
+                k + 1 < len(clause_units) and (clause_units[k + 1].category == "agents" and clause_units[k + 1].meaning
+                                               != "ego" or clause_units[k + 1].word in ("a", "an", "the", "another")):
+            action, direction = "stop", None  # "the cop car has pulled over a pickup": it stopped the pickup, and
+            # stands behind it
+        if action == "block":  # "cut me off" may be told as the lane change it was; "blocks", "boxes in" may not
+            e.features.add("cuts_off" if "cut" in {t.word for t in u.tokens} else "blocks")
         if action == "stop" and not e.is_ego and clause_units is not None and k is not None and \
                 _stands_across(clause_units[k + 1:k + 5]):
             action = "block"  # "a patrol car parked across the lane": nobody gets by
-        if action == "stop" and not e.is_ego and _for_long([x for x in r.units if x.start > u.start and
-                                                            x.tokens[0].sentence == u.tokens[-1].sentence]):
+        sentence = u.tokens[-1].sentence
+        reply = [x for x in r.units if x.tokens[0].sentence == sentence + 1]  # "... just not moving." "Forever."
+        if action == "stop" and not e.is_ego and (_for_long([x for x in r.units if x.start > u.start and
+                                                             x.tokens[0].sentence == sentence]) or
+                                                  len(reply) <= 2 and _for_long(reply)):
             e.features.add("stays_long")  # "stayed there for a quarter of an hour": long enough to hold others up
         if action == "stop" and ({t.base for t in u.tokens} & {"park", "parked", "stationary", "break", "broken",
                                                                   "stall", "stalled", "double", "abandon"}
@@ -2474,15 +2522,16 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         pass
 
 
-LONG_STAY = re.compile(r"(?:there |put |where it was |where they were )?for (?:a (?:full |good |whole )?"
+LONG_STAY = re.compile(r"(?:there |put |where it was |where they were )?(?:for (?:a (?:full |good |whole )?"
                        r"(?:quarter of an hour|half an hour|half hour|hour|few minutes|couple of minutes)|"
-                       r"an (?:entire |whole )?hour|(?:a good |a full |the best part of )?(?:\S+ )?minutes|hours)\b")
+                       r"an (?:entire |whole )?hour|(?:a good |a full |the best part of )?(?:\S+ )?minutes|hours)|"
+                       r"(?:basically |just |pretty much )?(?:forever|for ever|indefinitely))\b")
 
 
 def _for_long(units: list[Unit]) -> bool:
-    """'there for a full quarter of an hour', '... and stayed there for ten minutes': a stay of minutes, not
-    seconds ('for ages' is a figure of speech)."""
-    said = " ".join(t.word for u in units for t in u.tokens)
+    """'there for a full quarter of an hour', '... and stayed there for ten minutes', 'not moving. Forever.': a
+    stay of minutes or without end, not seconds ('for ages' is a figure of speech)."""
+    said = " ".join(t.word for u in units for t in u.tokens).lstrip(", ")
     return bool(LONG_STAY.match(said) or re.search(r"\b(?:stay|stays|stayed|sat|sit|sits|remain|remains|remained|"
                                                    r"wait|waits|waited|stood|stand|stands) " + LONG_STAY.pattern, said))
 
@@ -2793,7 +2842,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in main_verbs:
         made = _made_to(units, i, phrases)
         for e in made or subject:
-            _modify(r, e, units[i], stage, strength, units, i)
+            _modify(r, e, units[i], stage, 0 if _only_possible(units, i) else strength, units, i)
             if e.is_ego and by is not None and units[i].meaning == "move" and units[i].base in STEERING:
                 side = next((u.meaning[5:] for k, u in enumerate(units[:i]) if u.category == "positions"
                              and u.meaning in ("side_left", "side_right")
@@ -2802,6 +2851,14 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.actions.append((stage, strength, ACTION_RANK["lane_left"], r.tick(), "lane_" + side, side))
         _relational(units[i], units, i, subject, objects if by is not None else
                     [p for p in phrases if p.index > i and p.entity not in subject])
+        pulled = next((p.entity for p in phrases if p.first == i + 1 and p.entity is not None), None) \
+            if [t.base for t in units[i].tokens] == ["pull", "over"] else None
+        if pulled is not None and not pulled.is_ego and pulled not in subject:
+            pulled.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "pulled over a van":
+            # the van stands where it was pulled over, by the one that pulled it over
+            if not pulled.features and subject and not subject[0].is_ego:
+                pulled.relative_to = pulled.relative_to or subject[0]
+                pulled.road_type = pulled.road_type or subject[0].road_type
         if units[i].meaning == "stop" and any(e.is_ego for e in made) and \
                 {t.base for t in units[i].tokens} & {"stop", "halt", "standstill"}:  # to stop, not just to brake
             causers = subject if units[0].word not in CAUSATIVES else previous_subject
@@ -2984,6 +3041,11 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
     if i + 1 < len(units) and units[i + 1].word in ("test", "tests", "scenario", "case", "run", "scene", "event",
                                                     "situation", "drill", "exercise", "check"):
         return True  # "merge test", "cut-in scenario": the name of a test
+    if i >= 2 and units[i - 1].word == "the" and units[i - 2].word in COPULAS and \
+            units[i].meaning in ("cut_in", "lane_change", "block") and (
+                i + 1 == len(units) or units[i + 1].category == "comma" or
+                units[i + 1].tokens[0].sentence != units[i].tokens[-1].sentence):
+        return True  # "the one that scares me is the cut-in.": the kind of scene talked about, nobody's act
     return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
         units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since") or \
         i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
@@ -3088,13 +3150,16 @@ def _place_in_queue(r: _Reader) -> None:
     waiting in a queue or at a red light, doing nothing said, waits too."""
     words = [t.word for t in r.tokens]
     ego = next((e for e in r.entities if e.is_ego), None)
-    for i, w in enumerate(words[:-1]):
+    for i, w in enumerate(words):
         n = ORDINALS.get(w)
         rest = words[i + 1:i + 4]
         with_ego = next((e for e in r.entities if e.includes_ego and e.count > 0 and not e.is_ego), None)
         mine = rest[:1] == ["one"] and i > 1 and words[i - 1] == "the" and words[i - 2] in COPULAS and \
             with_ego is not None  # "we were three cars ..., mine was the second one"
-        if not n or not mine and (rest[0] not in ("in", "car", "vehicle") or not {"queue", "line"} & set(rest)):
+        if w == "middle" and words[max(0, i - 2):i] == ["in", "the"] and with_ego is not None and \
+                with_ego.count % 2 == 0 and rest[:1] != ["of"]:
+            n, mine = with_ego.count // 2 + 1, True  # "three cars including ours, we were in the middle": second
+        if not n or not mine and (rest[:1] not in (["in"], ["car"], ["vehicle"]) or not {"queue", "line"} & set(rest)):
             continue
         ego = ego or _ego_entity(r, 0)
         if not any(a[4] == "stop" for a in ego.actions):
@@ -3499,6 +3564,10 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
                            (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind"))
                            or units[i - 1].word in CAUSATIVES and i + 1 < len(units) and units[i + 1].word == "to")
     # "forcing it to stop": whom it forced
+    named_here = [np.entity for np in phrases if np.index < i and np.entity is not None and not np.entity.is_ego
+                  and np.entity.type not in V.VULNERABLE_TYPES]
+    if units[i].word == "it" and not as_object and named_here and phrases[0].entity is named_here[0]:
+        return named_here[0]  # "a van in the left lane decides it wants our lane": the clause's own subject
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
         things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
         if not things and previous_subject:
@@ -3780,6 +3849,11 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     if best[4] == "cut_in" and {"ahead", "stops_abruptly"} <= e.features and any(
             a[4] == "stop" and a[1] == 2 and a[0] > best[0] for a in e.actions):
         return "block", None  # "cuts me up, then stops dead in front of me": a brake check blocks the ego
+    moved_in = [a for a in chosen if a[4] in LANE_MOVES and a[5] is not None or a[4] in ("lane_left", "lane_right")]
+    if best[4] == "block" and "cuts_off" in e.features and "blocks" not in e.features and moved_in and \
+            not any(a[4] == "stop" for a in chosen):
+        lane_move = max(moved_in, key=lambda a: a[3])  # "cut me off, he was in the lane to my left and swerved
+        return lane_move[4], lane_move[5]  # right into my lane": the cut-off told as the lane change it was
     return best[4], best[5]
 
 
@@ -3853,7 +3927,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         return f"road_of_{bare}_turn", False
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
-    ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f
+    ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f and "level" not in f
     if lane_move and {"level", "into_ego_lane"} <= f and not behind:
         ahead = False  # "alongside me ... moved into my lane, directly in front of me": level, ending ahead
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
@@ -4299,9 +4373,11 @@ def _title(prompt: str, tokens: list[Token]) -> range:
     if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
         return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
     said = {(f.category, f.meaning) for f in matches(tokenize(m.group(1)))}
-    if ("agents", "ego") in said and any(category == "actions" for category, _ in said) and \
-            m.group(1).strip().lower().split()[0] in ("the", "i", "we", "you", "player", "my", "our", "ego"):
-        return range(0)  # "The player makes the left across oncoming traffic: ...": a sentence, not a title
+    if any(category == "actions" for category, _ in said) and (("agents", "ego") in said and (
+            m.group(1).strip().lower().split()[0] in ("the", "i", "we", "you", "player", "my", "our", "ego"))
+            or {t.word for t in tokenize(m.group(1))} & {"i", "me", "we", "us"}):
+        return range(0)  # "The player makes the left across oncoming traffic: ...", "A taxi cut me off: it ...": a
+        # sentence (a title names no speaker), not a title
     counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+\w+s\b",
                         m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
     if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
@@ -4389,9 +4465,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
-        if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in VEHICLE_ONLY_ACTIONS:
-            e.type = "car"  # "someone's pulling out of a parking spot": someone driving
-            r.notes.append(f"inferred: '{e.head}' who {action.replace('_', ' ')}s drives a car")
+        if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and (action in VEHICLE_ONLY_ACTIONS or any(
+                a[4] == "horn" for a in e.actions)):
+            e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
+            r.notes.append(f"inferred: '{e.head}' who {(action or 'horn').replace('_', ' ')}s drives a car")
         elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop", "go_straight") and \
                 e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
                 and e.road_type != "sidewalk":
