@@ -3230,3 +3230,13 @@ def test_the_ego_said_to_be_included_after_its_group_is_one_of_it():
 def test_a_verb_on_the_relatives_noun_after_a_relative_clause_is_the_main_subjects(prompt, later):
     found = agents(prompt)
     assert later in found and len(found) == 3 and not any(a[2] == "front" and a[1] == later[1] for a in found), found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A taxi in the right-hand lane beside me pulled sharply across in front of me.",
+     ("car", "change_lane_to_left", "right")),
+    ("A bus on the right pulled slowly out in front of me.", ("bus", "change_lane_to_left", "right")),
+    ("A van in the lane to my left pulled abruptly across in front of us.", ("car", "change_lane_to_right", "left")),
+])
+def test_a_manner_adverb_between_a_verb_and_its_particle_keeps_the_verb_phrase(prompt, expected):
+    assert expected in agents(prompt)

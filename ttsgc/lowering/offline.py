@@ -29,7 +29,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, _names_agent, lexicon, matches, read_number, tokenize
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, lexicon, matches, read_number,
+                                    tokenize)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -247,8 +248,52 @@ def _units(tokens: list[Token]) -> list[Unit]:
     return _kerb_sides(tokens, _read_units(tokens))
 
 
+def _manner_adverb(t: Token) -> bool:
+    """'sharply', 'slowly', 'violently': an -ly adverb of manner, which may stand inside a verb phrase."""
+    if not (t.word.endswith("ly") and len(t.word) >= 5):
+        return False
+    entry = lexicon().phrases.get((t.word,))
+    return entry is None and t.word not in lexicon().function_words or entry is not None and entry[0] == "behaviours"
+
+
+def _units_of_one_word(tokens: list[Token], i: int) -> list[Unit]:
+    """A token read alone: its own lexicon entry when it has one, else a word, a number or a comma."""
+    t = tokens[i]
+    entry = _lookup(lexicon(), [t])
+    if entry is not None:
+        return _disambiguate(tokens, Match(i, i + 1, entry[0], entry[1], t.word))
+    category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
+    return [Unit(i, i + 1, category, t.word, (t,))]
+
+
+def _verbs_around_an_adverb(tokens: list[Token], found: dict[int, Match]) -> tuple[dict[int, Match], set[int]]:
+    """'pulled sharply across in front of us', 'swung wildly out': a manner adverb between a verb and its
+    particle; the verb phrase is read without it, and the adverb on its own after it."""
+    lex, split = lexicon(), set()
+    for i, t in enumerate(tokens[1:-1], start=1):
+        if not _manner_adverb(t) or tokens[i - 1].sentence != t.sentence:
+            continue
+        before = next((f for f in found.values() if f.end == i), None)
+        start = before.start if before is not None else i - 1
+        if before is not None and before.category != "actions" or start in split:
+            continue
+        for n in range(min(lex.longest, len(tokens) - i - 1), 0, -1):
+            span = tokens[start:i] + tokens[i + 1:i + 1 + n]
+            if any(x.word == "," or x.sentence != t.sentence for x in span):
+                continue
+            entry = _lookup(lex, span)
+            if entry is not None and entry[0] == "actions":
+                for k in [k for k in found if start <= k < i + 1 + n]:
+                    del found[k]
+                found[start] = Match(start, i + 1 + n, entry[0], entry[1], " ".join(x.word for x in span))
+                split.add(start)
+                break
+    return found, split
+
+
 def _read_units(tokens: list[Token]) -> list[Unit]:
     found = {m.start: m for m in matches(tokens)}
+    found, around_an_adverb = _verbs_around_an_adverb(tokens, found)
     if _subject_vehicle_is_ego(tokens):
         found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
                  if m.category == "agents" and [t.word for t in tokens[m.start:m.end]] == ["sv"] else m
@@ -281,13 +326,18 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
             out.append(Unit(i, end, "positions", f"lane_{int(_word_number(tokens[i + 2]))}", tuple(tokens[i:end])))
             i = end  # "in lane two (of three)": which lane, counted from the kerb
             continue
+        if m is not None and i in around_an_adverb:
+            adverb = next(k for k in range(m.start + 1, m.end) if _manner_adverb(tokens[k]))
+            out.append(Unit(m.start, m.end, m.category, m.meaning,
+                            tuple(x for x in tokens[m.start:m.end] if x.index != adverb)))
+            out.extend(_units_of_one_word(tokens, adverb))
+            i = m.end
+            continue
         if m is not None:
             out.extend(_disambiguate(tokens, m))
             i = m.end
             continue
-        t = tokens[i]
-        category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
-        out.append(Unit(i, i + 1, category, t.word, (t,)))
+        out.extend(_units_of_one_word(tokens, i))
         i += 1
     return _driver_of(_names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out)))))
 
@@ -3607,8 +3657,9 @@ def _swerves_in_front(units, i) -> bool:
     if "front" not in {t.word for t in u.tokens}:
         return False
     j = i - 1
-    while j >= 0 and units[j].category == "word" and units[j].word in SWERVE_ADVERBS:
-        j -= 1
+    while j >= 0 and (units[j].category == "word" and units[j].word in SWERVE_ADVERBS or
+                      units[j].category == "behaviours" and len(units[j].tokens) == 1):
+        j -= 1  # "pulled sharply across in front of us": a manner adverb between the verb and its path
     verb = units[j] if j >= 0 else None
     if verb is None or verb.category != "actions" or not (
             verb.meaning in ("cut_in", "lane_change") or verb.tokens[0].base in STEERING | {"swing", "dart", "cut"}):
