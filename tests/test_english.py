@@ -3240,3 +3240,35 @@ def test_a_verb_on_the_relatives_noun_after_a_relative_clause_is_the_main_subjec
 ])
 def test_a_manner_adverb_between_a_verb_and_its_particle_keeps_the_verb_phrase(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van in the lane to my right crossed the dashed line and clipped my mirror.", ("car", "go_straight", "right")),
+    ("The lorry on my left drifted over and crossed the solid white line into my lane.",
+     ("truck", "change_lane_to_right", "left")),
+])
+def test_crossing_a_painted_line_is_a_drift_out_of_the_lane_not_a_road_crossing(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and not any(p.startswith("road_of") for _, _, p in found), found
+    assert lower(prompt).scenario.road.junction is not True
+
+
+@pytest.mark.parametrize("prompt", [
+    "On a country road with one lane each way, an oncoming pickup crossed the centre line into my lane.",
+    "A lorry coming the other way veered into our lane on the narrow road near the farm.",
+])
+def test_an_oncoming_vehicle_over_the_centre_line_changes_lane_towards_its_offside(prompt):
+    scene = lower(prompt).scenario
+    others = [(a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego]
+    assert others == [("change_lane_to_left", "front_left")], others
+    assert scene.road.lanes == 1  # the opposite lane it moves into is no second lane of the ego's direction
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was doing 45 mph when I steered right onto the gravel and stopped.",
+    "The AV swerved left onto the grass verge and came to a stop.",
+])
+def test_steering_onto_the_roadside_and_stopping_is_a_stop_not_a_lane_change(prompt):
+    scene = lower(prompt).scenario
+    assert [(a.action, a.relative_to_ego) for a in scene.agents()] == [("stop", None)]
+    assert scene.road.lanes == 1

@@ -678,6 +678,20 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
 HEDGE_VERBS = {"think", "guess", "reckon", "believe", "suppose", "mean"}
 
 
+LANE_MARKINGS = {"line", "lines", "marking", "markings", "median", "lane line", "lane lines"}
+
+
+def _over_a_lane_marking(tokens: list[Token], end: int) -> bool:
+    """'crossed the solid white line', 'crossed over the double yellows': what is crossed is a line painted
+    along the road, so the crosser drifts out of its lane; it does not cross the road."""
+    for t in tokens[end:end + 6]:
+        if t.sentence != tokens[end - 1].sentence or t.word in (",", "and", "into", "onto", "in", "to", "at"):
+            return False
+        if t.word in LANE_MARKINGS or t.word in ("yellows", "whites"):
+            return True
+    return False
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -687,6 +701,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
+        return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
             span[0].word in SIDES and span[1].word.startswith("turn") and m.start > 1 and \
             tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the"} and tokens[m.start - 2].word in ("on", "to", "from"):
@@ -2421,6 +2437,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
+        if action in ("cut_in", "move", "lane_change", "lane_left", "lane_right") and clause_units is not None and \
+                k is not None and _onto_the_roadside(clause_units[k + 1:k + 5]):
+            action, direction = "move", None  # "steered right onto the gravel and stopped": off the road, no lane
         if e.is_ego and action == "cut_in" and not direction and u.tokens[0].base in ("swerve", "jerk", "veer"):
             action = "move"  # "I slammed on the brakes and swerved": a jerk of the wheel, no lane named
         if action == "move" and u.base in LANE_STEERING and direction:
@@ -2562,6 +2581,17 @@ def _towards_an_edge(units: list[Unit]) -> bool:
     """'towards the kerb', 'over toward the centre line': the ego drifts within its lane, to one of its edges."""
     words = [t.word for u in units for t in u.tokens]
     return bool(words) and words[0] in ("towards", "toward") and bool(set(words[1:4]) & LANE_EDGES)
+
+
+def _onto_the_roadside(units: list[Unit]) -> bool:
+    """'(swerved right) onto the hard shoulder', 'onto the verge': a move off the carriageway to its edge, to pull
+    over or get out of the way, no lane change."""
+    for j, u in enumerate(units[:4]):
+        if u.category == "positions" and u.meaning == "shoulder":
+            return any(t.word in ("onto", "into") for x in units[:j + 1] for t in x.tokens)
+        if u.category in ("agents", "actions", "comma"):
+            return False
+    return False
 
 
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
@@ -3960,6 +3990,9 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
         return "go_straight"
     if action in ("turn_left", "turn_right"):
         return action
+    if action in ("move", "cut_in") and {"into_ego_lane", "road_straight"} <= e.features and not e.is_ego:
+        return "change_lane_to_right" if _KEEPS_LEFT.get() else "change_lane_to_left"  # oncoming, over the centre
+        # line into the ego's lane: towards its own offside
     signalled = next((s for s in SIDES if f"signals_{s}" in e.features), None)
     if action in ("turn", "u_turn"):
         return f"turn_{direction or signalled or UNSPECIFIED['turn_direction']}"
