@@ -3005,6 +3005,60 @@ def test_an_oncoming_vehicle_of_the_kind_named_as_the_ego_is_not_the_ego():
     assert ("car", "go_straight", "front_left") in found and len(found) == 2, found
 
 
+# -- formal and after-the-fact accounts: letters, depositions, claims, disengagement reports -----------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A taxi in the right-hand lane beside me pulled sharply across in front of me.",
+     ("car", "change_lane_to_left", "right")),
+    ("A bus on the right pulled slowly out in front of me.", ("bus", "change_lane_to_left", "right")),
+    ("A van in the lane to my left pulled abruptly across in front of us.", ("car", "change_lane_to_right", "left")),
+])
+def test_a_manner_adverb_between_a_verb_and_its_particle_keeps_the_verb_phrase(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van in the lane to my right crossed the dashed line and clipped my mirror.", ("car", "go_straight", "right")),
+    ("The lorry on my left drifted over and crossed the solid white line into my lane.",
+     ("truck", "change_lane_to_right", "left")),
+])
+def test_crossing_a_painted_line_is_a_drift_out_of_the_lane_not_a_road_crossing(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and not any(p.startswith("road_of") for _, _, p in found), found
+    assert lower(prompt).scenario.road.junction is not True
+
+
+@pytest.mark.parametrize("prompt", [
+    "On a country road with one lane each way, an oncoming pickup crossed the centre line into my lane.",
+    "A lorry coming the other way veered into our lane on the narrow road near the farm.",
+])
+def test_an_oncoming_vehicle_over_the_centre_line_changes_lane_towards_its_offside(prompt):
+    scene = lower(prompt).scenario
+    others = [(a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego]
+    assert others == [("change_lane_to_left", "front_left")], others
+    assert scene.road.lanes == 1  # the opposite lane it moves into is no second lane of the ego's direction
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was doing 45 mph when I steered right onto the gravel and stopped.",
+    "The AV swerved left onto the grass verge and came to a stop.",
+])
+def test_steering_onto_the_roadside_and_stopping_is_a_stop_not_a_lane_change(prompt):
+    scene = lower(prompt).scenario
+    assert [(a.action, a.relative_to_ego) for a in scene.agents()] == [("stop", None)]
+    assert scene.road.lanes == 1
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("I was doing 35 mph in a 40 zone when a car pulled out of a driveway.", "speed_64"),
+    ("Northbound on Lake Shore the limit is forty, and a pickup turned left across my path.", "speed_64"),
+    ("On I-80 westbound, speed limit 65, a semi in the lane to my right drifted into my lane.", "speed_105"),
+    ("The speed limit is 70 on this road and a bus pulls out in front of the ego.", "speed_70"),
+])
+def test_a_limit_with_no_unit_is_in_miles_when_the_text_measures_in_miles(prompt, limit):
+    assert road(prompt).required_objects == (limit,)  # and a road's number ("I-80") is no speed
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [
@@ -3230,45 +3284,3 @@ def test_the_ego_said_to_be_included_after_its_group_is_one_of_it():
 def test_a_verb_on_the_relatives_noun_after_a_relative_clause_is_the_main_subjects(prompt, later):
     found = agents(prompt)
     assert later in found and len(found) == 3 and not any(a[2] == "front" and a[1] == later[1] for a in found), found
-
-
-@pytest.mark.parametrize("prompt, expected", [
-    ("A taxi in the right-hand lane beside me pulled sharply across in front of me.",
-     ("car", "change_lane_to_left", "right")),
-    ("A bus on the right pulled slowly out in front of me.", ("bus", "change_lane_to_left", "right")),
-    ("A van in the lane to my left pulled abruptly across in front of us.", ("car", "change_lane_to_right", "left")),
-])
-def test_a_manner_adverb_between_a_verb_and_its_particle_keeps_the_verb_phrase(prompt, expected):
-    assert expected in agents(prompt)
-
-
-@pytest.mark.parametrize("prompt, expected", [
-    ("A van in the lane to my right crossed the dashed line and clipped my mirror.", ("car", "go_straight", "right")),
-    ("The lorry on my left drifted over and crossed the solid white line into my lane.",
-     ("truck", "change_lane_to_right", "left")),
-])
-def test_crossing_a_painted_line_is_a_drift_out_of_the_lane_not_a_road_crossing(prompt, expected):
-    found = agents(prompt)
-    assert expected in found and not any(p.startswith("road_of") for _, _, p in found), found
-    assert lower(prompt).scenario.road.junction is not True
-
-
-@pytest.mark.parametrize("prompt", [
-    "On a country road with one lane each way, an oncoming pickup crossed the centre line into my lane.",
-    "A lorry coming the other way veered into our lane on the narrow road near the farm.",
-])
-def test_an_oncoming_vehicle_over_the_centre_line_changes_lane_towards_its_offside(prompt):
-    scene = lower(prompt).scenario
-    others = [(a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego]
-    assert others == [("change_lane_to_left", "front_left")], others
-    assert scene.road.lanes == 1  # the opposite lane it moves into is no second lane of the ego's direction
-
-
-@pytest.mark.parametrize("prompt", [
-    "I was doing 45 mph when I steered right onto the gravel and stopped.",
-    "The AV swerved left onto the grass verge and came to a stop.",
-])
-def test_steering_onto_the_roadside_and_stopping_is_a_stop_not_a_lane_change(prompt):
-    scene = lower(prompt).scenario
-    assert [(a.action, a.relative_to_ego) for a in scene.agents()] == [("stop", None)]
-    assert scene.road.lanes == 1

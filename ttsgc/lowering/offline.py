@@ -1000,14 +1000,33 @@ LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "a
                   "avenue", "roadway", "carriageway", "route", "limit"}
 
 
+MILES_WORDS = {"mph", "miles", "mile", "feet", "ft", "yards", "yd", "yds", "interstate", "freeway", "northbound",
+               "southbound", "eastbound", "westbound"}  # a text that measures in miles, or a US highway's words
+ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "route", "rte", "hwy", "highway", "interstate", "exit", "m"}
+
+
+def _road_number(tokens: list[Token], i: int) -> bool:
+    """'I-95', 'US-101', 'Route 30', 'the M25': a number that names a road, not a speed."""
+    return i > 0 and tokens[i - 1].word in ROAD_NUMBER_PREFIXES and tokens[i - 1].sentence == tokens[i].sentence \
+        and tokens[i].word.isdigit()
+
+
+def _measured_in_miles(tokens: list[Token]) -> bool:
+    """A text that gives speeds or distances in miles, or drives on a US interstate: a limit it says with no unit
+    is in miles an hour ('three lanes my direction, speed limit 70' on I-95)."""
+    return any(t.word in MILES_WORDS or _road_number(tokens, k) and tokens[k - 1].word in ("i", "us", "interstate")
+               for k, t in enumerate(tokens))
+
+
 def _speed_limits(r: _Reader) -> list[str]:
     """'a 30 km/h speed limit', 'a speed limit of ninety', 'a limit of forty', 'twenty miles per hour'."""
     tokens, out = r.tokens, []
+    in_miles = _measured_in_miles(tokens)
     for i, t in enumerate(tokens):
         value = _word_number(t)
         if value is None or (i + 1 < len(tokens) and _word_number(tokens[i + 1]) is not None
-                             and read_number(t.word) is None):
-            continue  # the tens of "thirty five": read at the units
+                             and read_number(t.word) is None) or _road_number(tokens, i):
+            continue  # the tens of "thirty five": read at the units; "I-95" names a road
         value, first = _number_before(tokens, i)
         around = {x.word for x in tokens[max(0, first - 4): i + 5]}
         after_unit = [x.word for x in tokens[i + 1: i + 5]]
@@ -1035,6 +1054,9 @@ def _speed_limits(r: _Reader) -> list[str]:
         if unitless and not mph and value % 10 == 5 and 15 <= value <= 85:
             mph = True  # "25 limit", "Limit's 65": US signs in miles an hour step by five
             r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (a US sign)")
+        elif unitless and not mph and in_miles and value % 5 == 0 and 10 <= value <= 85:
+            mph = True  # "doing 35 mph in a 40 zone", "I-95, speed limit 70": the text's own unit
+            r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (the text measures in miles)")
         unit = "mph" if mph else "km/h"
         kmh = value * 1.609344 if mph else value
         r.used.update(j for j in range(max(0, first - 4), min(len(tokens), i + 5))
