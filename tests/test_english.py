@@ -3059,6 +3059,31 @@ def test_a_limit_with_no_unit_is_in_miles_when_the_text_measures_in_miles(prompt
     assert road(prompt).required_objects == (limit,)  # and a road's number ("I-80") is no speed
 
 
+@pytest.mark.parametrize("prompt, later", [
+    ("I waited at the stop sign until the bus had passed, then turned right.", "turn_right"),
+    ("The operator held the AV at the line until the fire engine cleared, then proceeded straight.", "go_straight"),
+])
+def test_after_an_until_clause_a_bare_verb_is_the_waiters_not_the_one_waited_for(prompt, later):
+    scene = lower(prompt).scenario
+    assert [a.action for a in scene.stages[-1].agents] == [later] and scene.stages[-1].agents[0].is_ego
+
+
+def test_an_ego_said_to_stay_as_it_was_in_a_later_stage_gets_no_new_line():
+    scene = lower("I was stopped at the red light. The light turned green but I kept the car stopped until the "
+                  "ambulance had cleared, then went straight.").scenario
+    egos = [a.action for s in scene.stages for a in s.agents if a.is_ego]
+    assert egos == ["stop", "go_straight"], egos
+
+
+@pytest.mark.parametrize("prompt", [
+    "Two cars stopped in my lane ahead after a minor collision between them. I stopped behind them.",
+    "A lorry had stopped in the lane in front of us after a breakdown. We stopped behind it.",
+])
+def test_an_after_phrase_said_after_its_clause_opens_no_later_stage(prompt):
+    scene = lower(prompt).scenario
+    assert len(scene.stages) == 1 and scene.stages[0].agents[0].action == "stop", scene.stages
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -1469,6 +1469,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
                 skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
+        if u.category == "sequence" and u.word == "after" and _has_verb(current) and \
+                _no_verb_to_the_sentence_end(units, k + 1):
+            r.mark(u)
+            continue  # "two cars stopped ahead after a minor collision", "parked just after the junction": when
+            # or where that was, said after it; what comes next is no later stage
         if u.category == "sequence" and u.meaning == "then" and u.word == "then" and _has_agent(current) and \
                 not _has_verb(current) and not any(x.category == "comma" for x in current) and \
                 nxt is not None and nxt.category == "actions":
@@ -1591,6 +1596,14 @@ VERDICT_COPULAS = {"is", "was", "would", "should", "will", "seems"}
 
 
 LONG_WAITS = {"min", "mins", "minute", "minutes", "hour", "hours", "hr", "hrs"}
+
+
+def _no_verb_to_the_sentence_end(units: list[Unit], k: int) -> bool:
+    """Only a noun phrase from here to the end of the sentence ('after a minor collision between them.')."""
+    sentence = units[k - 1].tokens[0].sentence
+    rest = [u for u in units[k:] if u.tokens[0].sentence == sentence]
+    return bool(rest) and not any(u.category in ("actions", "sequence") or u.word.endswith(("ed", "ing"))
+                                  for u in rest)
 
 
 def _a_wait_of_minutes(units: list[Unit], k: int) -> bool:
@@ -4117,9 +4130,13 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
                 main_subject and _returns_to_the_main_subject(clause.units):
             previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
+        if k > 0 and clauses[k - 1].link in UNTIL_LINKS and main_subject and clause.units and \
+                clause.units[0].category == "actions":
+            previous = main_subject  # "held position until the pickup had passed, then completed the left": the
+            # one who waited acts again, not the one waited for
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
-        if subject and clause.antecedent is None:
+        if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS:
             main_subject = subject
         if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
                 not any(e.is_ego for e in previous):
@@ -4228,6 +4245,9 @@ AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operat
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked"}
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
+
+
+UNTIL_LINKS = {"until", "till", "before"}  # a clause of what is waited for: its subject is not the story's
 
 
 def _returns_to_the_main_subject(units: list[Unit]) -> bool:
@@ -4451,9 +4471,14 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 speed=ego_entity.speed if ego_entity else None)
     stages[0].append(ego)
     if ego_entity is not None:
+        last = ego.action
         for k in range(1, stage_count):
             if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
                 action = _ego_action(ego_entity, _ego_class(ego_entity, k, junction), k)
+                if action == last == "stop":
+                    continue  # "stopped at red ... kept the vehicle stopped until ...": still so, nothing new
+                    # (a second lane change the same way is a manoeuvre of its own)
+                last = action
                 if language_allows_later_ego():
                     stages[k].append(Agent(name="ego", type=ego.type, is_ego=True, action=action))
                 else:
