@@ -3084,6 +3084,17 @@ def test_an_after_phrase_said_after_its_clause_opens_no_later_stage(prompt):
     assert len(scene.stages) == 1 and scene.stages[0].agents[0].action == "stop", scene.stages
 
 
+@pytest.mark.parametrize("prompt, turn", [
+    ("I was waiting in the junction to turn right while a bus came the other way. Once it had passed I completed "
+     "the turn.", "turn_right"),
+    ("The AV was stopped at the line, waiting to turn left. A van crossed from the right, then the AV completed "
+     "the left.", "turn_left"),
+])
+def test_completing_a_turn_waited_for_is_the_turn_made_in_the_later_stage(prompt, turn):
+    egos = [a.action for s in lower(prompt).scenario.stages for a in s.agents if a.is_ego]
+    assert egos == ["stop", turn], egos
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [
