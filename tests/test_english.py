@@ -3095,6 +3095,44 @@ def test_completing_a_turn_waited_for_is_the_turn_made_in_the_later_stage(prompt
     assert egos == ["stop", turn], egos
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("The residents' association objected, and an ambulance came up behind me.",
+     [("ambulance", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("The drivers' union complained to the council. A cyclist crossed in front of me.",
+     [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
+    ("We waited at the crossing for ages, but the bus never arrived.", [("car", "stop", "ego")]),
+    ("The gritting lorry never comes up our road, and on Thursday my car slid on the ice.",
+     [("car", "go_straight", "ego")]),
+])
+def test_owners_of_an_organisation_and_vehicles_that_never_come_are_nobody_in_the_scene(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_vehicle_that_never_came_to_a_stop_is_still_there():
+    assert ("car", "go_straight", "back") in agents("The car behind never came to a stop and hit me.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was stopped at the red light when an ambulance came up behind me. There was nowhere for any of us to pull "
+    "over.",
+    "I had stopped in the queue. There was no room for me to move over when the fire engine arrived behind us.",
+])
+def test_a_manoeuvre_there_was_no_room_for_is_not_made(prompt):
+    assert [a.action for a in lower(prompt).scenario.agents() if a.is_ego] == ["stop"]
+    assert lower(prompt).scenario.road.lanes == 1
+
+
+@pytest.mark.parametrize("prompt, without", [
+    ("The council removed the stop sign and the stop line at the end of our road. My car slid across the junction.",
+     ("stop", "stop_line")),
+    ("Last year they scrapped the traffic lights at the crossroads, and today I drove straight across the "
+     "intersection.", ("traffic_light",)),
+])
+def test_a_removed_sign_is_without_and_the_ego_going_across_a_junction_is_at_one(prompt, without):
+    found = road(prompt)
+    assert found.junction is True and tuple(found.without_signals + found.without_objects) == without, found
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

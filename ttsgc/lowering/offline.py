@@ -65,6 +65,7 @@ DEFINITE = {"the", "this", "that", "these", "those", "said"}
 INDEFINITE = {"a", "an", "another", "some", "any", "one"}
 PRONOUNS = {"it", "they", "them", "he", "she", "him", "her", "itself", "both", "former", "latter"}
 NEGATIONS = {"no", "not", "without", "never", "none", "neither", "nor", "lacking", "absent", "unmarked", "non"}
+REMOVED = {"removed", "scrapped", "dismantled", "missing"}  # "the council removed the stop sign": none there now
 AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "am", "will", "would", "can", "could", "does",
                "do", "did", "has", "have", "had", "should", "must", "may", "might", "shall", "keeps", "keep",
                "then", "also", "to", "and"}
@@ -400,11 +401,13 @@ def _names_no_agent(units: list[Unit]) -> list[Unit]:
                 _corner_with_a_numbered_street(units, k):
             out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
             continue
+        if nxt.word == "s" and k + 2 < len(units) and u.tokens[-1].plural:
+            nxt = units[k + 2]  # "the residents' association": the plural's possessive, then what it owns
         if u.category != "agents" or u.meaning in ("ego", "none") or nxt.category != "word" or \
-                nxt.tokens[0].sentence != u.tokens[-1].sentence or u.tokens[-1].plural:
+                nxt.tokens[0].sentence != u.tokens[-1].sentence:
             continue
         street = nxt.word in STREET_WORDS and not (k > 0 and units[k - 1].word in ("a", "an", "the", "this", "that"))
-        if street or nxt.word in ORGANISATION_WORDS:
+        if street and not u.tokens[-1].plural or nxt.word in ORGANISATION_WORDS:
             out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
     return out
 
@@ -852,13 +855,14 @@ def _road(r: _Reader) -> RoadSpec:
         if word not in target and word not in other:
             target.append(word)
 
-    negated_in = -1
+    negated_in, removing = -1, False
     for k, u in enumerate(units):
         if negated and u.tokens[0].sentence != negated_in:
             negated = False  # "no crossing. Road: mid-block": a denial ends with its sentence
-        if u.category == "word" and u.word in NEGATIONS or (u.category == "word" and u.word.endswith("n't")) \
+        if u.category == "word" and u.word in NEGATIONS | REMOVED or (u.category == "word" and u.word.endswith("n't")) \
                 or (u.category == "numbers" and u.meaning == "0"):
             negated, negated_in = True, u.tokens[0].sentence
+            removing = u.category == "word" and u.word in REMOVED
             r.mark(u)
             if k > 0 and units[k - 1].category == "agents" and units[k - 1].meaning not in ("none", "ego") and \
                     k + 1 < len(units) and units[k + 1].category == "road" and units[k + 1].meaning == "traffic_light":
@@ -957,6 +961,8 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "comma" or (u.category == "word" and u.word in
                                      ("and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic")):
             continue
+        if removing and u.category == "word" and u.word in ("the", "its", "their", "both"):
+            continue  # "removed the stop sign and the stop line": each thing removed
         if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
             continue
         negated = False
@@ -1872,6 +1878,10 @@ AFTER_A_SCENE_COPULA = {"on", "in", "at", "by", "near", "next", "behind", "ahead
 HISTORY_LINKS = {"in", "since", "until", "till"}
 
 
+NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear", "appeared", "appears"}
+# "never comes", "never arrived": one that is not there ("never came to a stop" is there, and did not stop)
+
+
 def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     """Agent nouns the text talks about, that are nobody in the scene: an institution written to or blamed ('I
     reported it to the police', 'I do not blame the fire brigade'); people or vehicles in general ('kids are
@@ -1899,6 +1909,14 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                 last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
+    words = [x.word for x in after[:5]]
+    if u.meaning not in ("ego", "none") and "never" in words[:3]:
+        k = words.index("never")
+        verb = after[k + 1] if k + 1 < len(after) else None
+        if verb is not None and (verb.word in NEVER_CAME or verb.base in ("show", "turn") and k + 2 < len(after)
+                                 and after[k + 2].word == "up") and not (k + 2 < len(after) and after[k + 2].word
+                                                                         == "to"):
+            return True  # "the gritting lorry never comes up our road": one that is not there
     for x, nxt in zip(sentence, sentence[1:]):
         if x.word in HISTORY_LINKS and nxt.word.isdigit() and len(nxt.word) == 4 and 1900 <= int(nxt.word) <= 2099:
             lo, hi = sorted((t.index, nxt.index))
@@ -2983,6 +3001,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if e.is_ego and u.category == "positions":
                 if u.meaning.startswith("compass_"):
                     e.features.add(u.meaning)
+                if u.meaning == "road_straight" and {t.word for t in u.tokens} & JUNCTION_NOUNS:
+                    e.features.add("in_junction")  # "my car slid out across the junction": the ego is at one
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
                 edge_after = i + 1 < len(units) and (units[i + 1].category == "positions" and units[i + 1].meaning in (
@@ -3134,15 +3154,17 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
         return True  # "overtaking not possible": the manoeuvre is ruled out
     for u in reversed(units[max(0, i - 7):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
-                                               "failing", "refused", "refuses", "without", "unable") or (
+                                               "failing", "refused", "refuses", "without", "unable", "nowhere") or (
                 u.category == "numbers" and u.meaning == "0"):
             return True
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
                                                      "is", "are", "be", "can", "could", "room", "space", "chance",
                                                      "able", "unable", "time", "even", "ever", "really", "properly",
                                                      "so", "much", "once", "a", "all", "the", "way", "completely",
-                                                     "fully", "full", "quite")) \
-                and u.category != "actions":
+                                                     "fully", "full", "quite", "whatever", "for", "any", "of",
+                                                     "anyone", "anybody")) \
+                and u.category != "actions" and not (u.category == "agents" and u.meaning == "ego"):
+            # ("nowhere whatever for any of us to pull over", "no room for me to move over")
             return False
     return False
 
@@ -4247,6 +4269,7 @@ AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operat
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
 
 
+JUNCTION_NOUNS = {"junction", "intersection", "crossroads"}
 UNTIL_LINKS = {"until", "till", "before"}  # a clause of what is waited for: its subject is not the story's
 
 
@@ -4372,8 +4395,12 @@ def _ego_placed_last(units: list[Unit]) -> bool:
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
-    """'I'm in the slow lane', 'the ego is in the left lane': a lane named by its side is one of several."""
+    """'I'm in the slow lane', 'the ego is in the left lane': a lane named by its side is one of several.
+    'My car slid out across the junction': where the ego goes is at a junction."""
     ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is not None and "in_junction" in ego.features and road.junction is None:
+        r.notes.append("inferred: at junction (the ego goes across it)")
+        road = road.model_copy(update={"junction": True})
     if ego is None or "in_a_side_lane" not in ego.features or (road.lanes or 0) >= 2:
         return road
     r.notes.append("inferred: lanes >= 2 (the ego is in a lane named by its side)")
