@@ -3133,6 +3133,24 @@ def test_a_removed_sign_is_without_and_the_ego_going_across_a_junction_is_at_one
     assert found.junction is True and tuple(found.without_signals + found.without_objects) == without, found
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("The AV was following a bus at 30 mph. The planner queued a lane change to the right, but the operator took "
+     "over.", [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+    ("We were behind a tractor and I planned a lane change to the left to get past it, then thought better of it.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+])
+def test_a_manoeuvre_planned_or_queued_is_not_made_and_queued_with_an_object_is_no_wait(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "Heavy stop-and-go traffic on US-101. A motorcycle came up behind us on the left.",
+    "Bumper to bumper on I-5 this morning, and a motorbike came up behind me on my left.",
+])
+def test_the_flow_of_traffic_is_no_ones_manoeuvre_and_a_us_highway_is_not_the_narrators(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

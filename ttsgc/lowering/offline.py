@@ -723,6 +723,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stop"] and m.start > 0 and \
             tokens[m.start - 1].word in ("says", "said", "reads", "read", "saying", "reading"):
         return [Unit(m.start, m.end, "road", "stop", span)]  # "the sign says stop": a stop sign, nobody stopping
+    if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["us"] and \
+            _road_number(tokens, m.end):
+        return [Unit(m.start, m.end, "word", "us", span)]  # "US-101": a highway's name, not the narrators
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
@@ -1013,7 +1016,8 @@ ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "route", "rte", "hwy", "highway", "inte
 
 def _road_number(tokens: list[Token], i: int) -> bool:
     """'I-95', 'US-101', 'Route 30', 'the M25': a number that names a road, not a speed."""
-    return i > 0 and tokens[i - 1].word in ROAD_NUMBER_PREFIXES and tokens[i - 1].sentence == tokens[i].sentence \
+    return 0 < i < len(tokens) and tokens[i - 1].word in ROAD_NUMBER_PREFIXES and \
+        tokens[i - 1].sentence == tokens[i].sentence \
         and tokens[i].word.isdigit()
 
 
@@ -2788,7 +2792,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
-             and not _named_manoeuvre(units, i) and not _requested(units, i)]
+             and not _named_manoeuvre(units, i) and not _requested(units, i) and not _planned(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
             u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
         verbs = []  # "the light turns red": the subject is a signal, no agent acts
@@ -3123,6 +3127,20 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
         units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since") or \
         i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
             "maneuver", "manoeuvre", "turn", "lane", "overtake", "merge", "cut")  # "at start of manoeuvre"
+
+
+PLANNING = {"queued", "queues", "planned", "plans", "planning", "scheduled", "proposed", "intended", "considered",
+            "requested", "commanded", "queue", "plan"}  # a planner's or a driver's manoeuvre still to come
+
+
+def _planned(units: list[Unit], i: int) -> bool:
+    """'the AV planner queued a lane change to the left': the manoeuvre is planned, not made, and the planning
+    verb ('queued') is no wait in a queue."""
+    def planning(u: Unit) -> bool:
+        return u.tokens[0].word in PLANNING
+    return i + 2 < len(units) and planning(units[i]) and units[i + 1].word in ("a", "an", "the", "its", "another") \
+        and units[i + 2].category == "actions" or \
+        i >= 2 and units[i - 1].word in ("a", "an", "the", "its", "another") and planning(units[i - 2])
 
 
 REQUESTING = {"signal", "signals", "signaled", "signalled", "signaling", "signalling", "tell", "tells", "told",
