@@ -3151,6 +3151,21 @@ def test_the_flow_of_traffic_is_no_ones_manoeuvre_and_a_us_highway_is_not_the_na
     assert agents(prompt) == [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("A jogger was running on the pavement just ahead on the right. The jogger never left the pavement.",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front_right")]),
+    ("The van ahead of me left the junction and a cyclist came up on my left.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front"), ("cyclist", "go_straight", "left")]),
+])
+def test_left_with_an_object_after_its_subject_is_the_verb_leave_not_a_side(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_sequence_word_after_a_sentence_ending_in_a_place_opens_its_stage():
+    scene = lower("I stopped at the crossing. Once the children had crossed, I continued straight.").scenario
+    assert [[a.action for a in s.agents if a.is_ego] for s in scene.stages] == [["stop"], ["go_straight"]]
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -681,6 +681,22 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
 HEDGE_VERBS = {"think", "guess", "reckon", "believe", "suppose", "mean"}
 
 
+LEFT_AS_A_VERB_AFTER = {"never", "not", "had", "has", "have", "just", "finally", "eventually", "already", "then",
+                        "he", "she", "it", "they", "who", "which", "that", "i", "we", "you"}
+
+
+def _left_as_a_verb(tokens: list[Token], i: int) -> bool:
+    """'never left the sidewalk', 'he left the scene', 'the van left the junction': the past of 'leave', with
+    its object after it, not a side."""
+    before = tokens[i - 1] if i > 0 and tokens[i - 1].sentence == tokens[i].sentence else None
+    after = tokens[i + 1] if i + 1 < len(tokens) and tokens[i + 1].sentence == tokens[i].sentence else None
+    if before is None or after is None or after.word not in ("the", "a", "an", "his", "her", "its", "their", "my",
+                                                             "our"):
+        return False
+    entry = _lookup(lexicon(), [before])
+    return before.word in LEFT_AS_A_VERB_AFTER or entry is not None and entry[0] == "agents"
+
+
 LANE_MARKINGS = {"line", "lines", "marking", "markings", "median", "lane line", "lane lines"}
 
 
@@ -704,6 +720,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
+        return [Unit(m.start, m.end, "actions", "move", span)]  # "the jogger never left the sidewalk": leave
     if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
@@ -1460,7 +1478,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         sentence = u.tokens[0].sentence
         if new_sentence:
             close()
-        prev_word = units[k - 1].word if k else ""
+        prev_word = units[k - 1].tokens[-1].word if k and not new_sentence else ""
+        # (the word right before, in this sentence: "stopped at the crossing. Once ..." is no "at once")
         if u.category == "sequence" and (prev_word == "even" or u.word == "next" and len(u.tokens) == 1 and
                                          prev_word in ("the", "a", "this") or
                                          u.word == "later" and prev_word in ("bit", "little", "or", "maybe")):
