@@ -3005,6 +3005,167 @@ def test_an_oncoming_vehicle_of_the_kind_named_as_the_ego_is_not_the_ego():
     assert ("car", "go_straight", "front_left") in found and len(found) == 2, found
 
 
+# -- formal and after-the-fact accounts: letters, depositions, claims, disengagement reports -----------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A taxi in the right-hand lane beside me pulled sharply across in front of me.",
+     ("car", "change_lane_to_left", "right")),
+    ("A bus on the right pulled slowly out in front of me.", ("bus", "change_lane_to_left", "right")),
+    ("A van in the lane to my left pulled abruptly across in front of us.", ("car", "change_lane_to_right", "left")),
+])
+def test_a_manner_adverb_between_a_verb_and_its_particle_keeps_the_verb_phrase(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van in the lane to my right crossed the dashed line and clipped my mirror.", ("car", "go_straight", "right")),
+    ("The lorry on my left drifted over and crossed the solid white line into my lane.",
+     ("truck", "change_lane_to_right", "left")),
+])
+def test_crossing_a_painted_line_is_a_drift_out_of_the_lane_not_a_road_crossing(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and not any(p.startswith("road_of") for _, _, p in found), found
+    assert lower(prompt).scenario.road.junction is not True
+
+
+@pytest.mark.parametrize("prompt", [
+    "On a country road with one lane each way, an oncoming pickup crossed the centre line into my lane.",
+    "A lorry coming the other way veered into our lane on the narrow road near the farm.",
+])
+def test_an_oncoming_vehicle_over_the_centre_line_changes_lane_towards_its_offside(prompt):
+    scene = lower(prompt).scenario
+    others = [(a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego]
+    assert others == [("change_lane_to_left", "front_left")], others
+    assert scene.road.lanes == 1  # the opposite lane it moves into is no second lane of the ego's direction
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was doing 45 mph when I steered right onto the gravel and stopped.",
+    "The AV swerved left onto the grass verge and came to a stop.",
+])
+def test_steering_onto_the_roadside_and_stopping_is_a_stop_not_a_lane_change(prompt):
+    scene = lower(prompt).scenario
+    assert [(a.action, a.relative_to_ego) for a in scene.agents()] == [("stop", None)]
+    assert scene.road.lanes == 1
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("I was doing 35 mph in a 40 zone when a car pulled out of a driveway.", "speed_64"),
+    ("Northbound on Lake Shore the limit is forty, and a pickup turned left across my path.", "speed_64"),
+    ("On I-80 westbound, speed limit 65, a semi in the lane to my right drifted into my lane.", "speed_105"),
+    ("The speed limit is 70 on this road and a bus pulls out in front of the ego.", "speed_70"),
+])
+def test_a_limit_with_no_unit_is_in_miles_when_the_text_measures_in_miles(prompt, limit):
+    assert road(prompt).required_objects == (limit,)  # and a road's number ("I-80") is no speed
+
+
+@pytest.mark.parametrize("prompt, later", [
+    ("I waited at the stop sign until the bus had passed, then turned right.", "turn_right"),
+    ("The operator held the AV at the line until the fire engine cleared, then proceeded straight.", "go_straight"),
+])
+def test_after_an_until_clause_a_bare_verb_is_the_waiters_not_the_one_waited_for(prompt, later):
+    scene = lower(prompt).scenario
+    assert [a.action for a in scene.stages[-1].agents] == [later] and scene.stages[-1].agents[0].is_ego
+
+
+def test_an_ego_said_to_stay_as_it_was_in_a_later_stage_gets_no_new_line():
+    scene = lower("I was stopped at the red light. The light turned green but I kept the car stopped until the "
+                  "ambulance had cleared, then went straight.").scenario
+    egos = [a.action for s in scene.stages for a in s.agents if a.is_ego]
+    assert egos == ["stop", "go_straight"], egos
+
+
+@pytest.mark.parametrize("prompt", [
+    "Two cars stopped in my lane ahead after a minor collision between them. I stopped behind them.",
+    "A lorry had stopped in the lane in front of us after a breakdown. We stopped behind it.",
+])
+def test_an_after_phrase_said_after_its_clause_opens_no_later_stage(prompt):
+    scene = lower(prompt).scenario
+    assert len(scene.stages) == 1 and scene.stages[0].agents[0].action == "stop", scene.stages
+
+
+@pytest.mark.parametrize("prompt, turn", [
+    ("I was waiting in the junction to turn right while a bus came the other way. Once it had passed I completed "
+     "the turn.", "turn_right"),
+    ("The AV was stopped at the line, waiting to turn left. A van crossed from the right, then the AV completed "
+     "the left.", "turn_left"),
+])
+def test_completing_a_turn_waited_for_is_the_turn_made_in_the_later_stage(prompt, turn):
+    egos = [a.action for s in lower(prompt).scenario.stages for a in s.agents if a.is_ego]
+    assert egos == ["stop", turn], egos
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The residents' association objected, and an ambulance came up behind me.",
+     [("ambulance", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("The drivers' union complained to the council. A cyclist crossed in front of me.",
+     [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
+    ("We waited at the crossing for ages, but the bus never arrived.", [("car", "stop", "ego")]),
+    ("The gritting lorry never comes up our road, and on Thursday my car slid on the ice.",
+     [("car", "go_straight", "ego")]),
+])
+def test_owners_of_an_organisation_and_vehicles_that_never_come_are_nobody_in_the_scene(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_vehicle_that_never_came_to_a_stop_is_still_there():
+    assert ("car", "go_straight", "back") in agents("The car behind never came to a stop and hit me.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was stopped at the red light when an ambulance came up behind me. There was nowhere for any of us to pull "
+    "over.",
+    "I had stopped in the queue. There was no room for me to move over when the fire engine arrived behind us.",
+])
+def test_a_manoeuvre_there_was_no_room_for_is_not_made(prompt):
+    assert [a.action for a in lower(prompt).scenario.agents() if a.is_ego] == ["stop"]
+    assert lower(prompt).scenario.road.lanes == 1
+
+
+@pytest.mark.parametrize("prompt, without", [
+    ("The council removed the stop sign and the stop line at the end of our road. My car slid across the junction.",
+     ("stop", "stop_line")),
+    ("Last year they scrapped the traffic lights at the crossroads, and today I drove straight across the "
+     "intersection.", ("traffic_light",)),
+])
+def test_a_removed_sign_is_without_and_the_ego_going_across_a_junction_is_at_one(prompt, without):
+    found = road(prompt)
+    assert found.junction is True and tuple(found.without_signals + found.without_objects) == without, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The AV was following a bus at 30 mph. The planner queued a lane change to the right, but the operator took "
+     "over.", [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+    ("We were behind a tractor and I planned a lane change to the left to get past it, then thought better of it.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+])
+def test_a_manoeuvre_planned_or_queued_is_not_made_and_queued_with_an_object_is_no_wait(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "Heavy stop-and-go traffic on US-101. A motorcycle came up behind us on the left.",
+    "Bumper to bumper on I-5 this morning, and a motorbike came up behind me on my left.",
+])
+def test_the_flow_of_traffic_is_no_ones_manoeuvre_and_a_us_highway_is_not_the_narrators(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A jogger was running on the pavement just ahead on the right. The jogger never left the pavement.",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front_right")]),
+    ("The van ahead of me left the junction and a cyclist came up on my left.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front"), ("cyclist", "go_straight", "left")]),
+])
+def test_left_with_an_object_after_its_subject_is_the_verb_leave_not_a_side(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_sequence_word_after_a_sentence_ending_in_a_place_opens_its_stage():
+    scene = lower("I stopped at the crossing. Once the children had crossed, I continued straight.").scenario
+    assert [[a.action for a in s.agents if a.is_ego] for s in scene.stages] == [["stop"], ["go_straight"]]
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -171,7 +171,8 @@ def _implied_road(road: RoadSpec, stages, oncoming: frozenset[str], notes: list[
     beside = next((a for a in agents if a.relative_to_ego in SIDE_POSITIONS and a.name not in oncoming
                    and a.road_type == "driving" and a.action != "cross_the_road"), None)
     # on a shoulder or a sidewalk, or crossing the road, it needs no lane of its own
-    changer = next((a for a in agents if a.action in LANE_CHANGES), None)
+    changer = next((a for a in agents if a.action in LANE_CHANGES and a.name not in oncoming), None)
+    # (an oncoming vehicle over the centre line changes into the opposite direction's lane: no second lane ours)
     if road.lanes < 2 and (beside or changer):
         update["lanes"] = 2
         why = (f"{beside.name} is at {beside.relative_to_ego}" if beside else

@@ -29,7 +29,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import TOO_LARGE, Match, Token, _names_agent, lexicon, matches, read_number, tokenize
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, lexicon, matches, read_number,
+                                    tokenize)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -64,6 +65,7 @@ DEFINITE = {"the", "this", "that", "these", "those", "said"}
 INDEFINITE = {"a", "an", "another", "some", "any", "one"}
 PRONOUNS = {"it", "they", "them", "he", "she", "him", "her", "itself", "both", "former", "latter"}
 NEGATIONS = {"no", "not", "without", "never", "none", "neither", "nor", "lacking", "absent", "unmarked", "non"}
+REMOVED = {"removed", "scrapped", "dismantled", "missing"}  # "the council removed the stop sign": none there now
 AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "am", "will", "would", "can", "could", "does",
                "do", "did", "has", "have", "had", "should", "must", "may", "might", "shall", "keeps", "keep",
                "then", "also", "to", "and"}
@@ -247,8 +249,52 @@ def _units(tokens: list[Token]) -> list[Unit]:
     return _kerb_sides(tokens, _read_units(tokens))
 
 
+def _manner_adverb(t: Token) -> bool:
+    """'sharply', 'slowly', 'violently': an -ly adverb of manner, which may stand inside a verb phrase."""
+    if not (t.word.endswith("ly") and len(t.word) >= 5):
+        return False
+    entry = lexicon().phrases.get((t.word,))
+    return entry is None and t.word not in lexicon().function_words or entry is not None and entry[0] == "behaviours"
+
+
+def _units_of_one_word(tokens: list[Token], i: int) -> list[Unit]:
+    """A token read alone: its own lexicon entry when it has one, else a word, a number or a comma."""
+    t = tokens[i]
+    entry = _lookup(lexicon(), [t])
+    if entry is not None:
+        return _disambiguate(tokens, Match(i, i + 1, entry[0], entry[1], t.word))
+    category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
+    return [Unit(i, i + 1, category, t.word, (t,))]
+
+
+def _verbs_around_an_adverb(tokens: list[Token], found: dict[int, Match]) -> tuple[dict[int, Match], set[int]]:
+    """'pulled sharply across in front of us', 'swung wildly out': a manner adverb between a verb and its
+    particle; the verb phrase is read without it, and the adverb on its own after it."""
+    lex, split = lexicon(), set()
+    for i, t in enumerate(tokens[1:-1], start=1):
+        if not _manner_adverb(t) or tokens[i - 1].sentence != t.sentence:
+            continue
+        before = next((f for f in found.values() if f.end == i), None)
+        start = before.start if before is not None else i - 1
+        if before is not None and before.category != "actions" or start in split:
+            continue
+        for n in range(min(lex.longest, len(tokens) - i - 1), 0, -1):
+            span = tokens[start:i] + tokens[i + 1:i + 1 + n]
+            if any(x.word == "," or x.sentence != t.sentence for x in span):
+                continue
+            entry = _lookup(lex, span)
+            if entry is not None and entry[0] == "actions":
+                for k in [k for k in found if start <= k < i + 1 + n]:
+                    del found[k]
+                found[start] = Match(start, i + 1 + n, entry[0], entry[1], " ".join(x.word for x in span))
+                split.add(start)
+                break
+    return found, split
+
+
 def _read_units(tokens: list[Token]) -> list[Unit]:
     found = {m.start: m for m in matches(tokens)}
+    found, around_an_adverb = _verbs_around_an_adverb(tokens, found)
     if _subject_vehicle_is_ego(tokens):
         found = {k: Match(m.start, m.end, "agents", "ego", m.phrase)
                  if m.category == "agents" and [t.word for t in tokens[m.start:m.end]] == ["sv"] else m
@@ -281,13 +327,18 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
             out.append(Unit(i, end, "positions", f"lane_{int(_word_number(tokens[i + 2]))}", tuple(tokens[i:end])))
             i = end  # "in lane two (of three)": which lane, counted from the kerb
             continue
+        if m is not None and i in around_an_adverb:
+            adverb = next(k for k in range(m.start + 1, m.end) if _manner_adverb(tokens[k]))
+            out.append(Unit(m.start, m.end, m.category, m.meaning,
+                            tuple(x for x in tokens[m.start:m.end] if x.index != adverb)))
+            out.extend(_units_of_one_word(tokens, adverb))
+            i = m.end
+            continue
         if m is not None:
             out.extend(_disambiguate(tokens, m))
             i = m.end
             continue
-        t = tokens[i]
-        category = "comma" if t.word == "," else "number" if read_number(t.word) is not None else "word"
-        out.append(Unit(i, i + 1, category, t.word, (t,)))
+        out.extend(_units_of_one_word(tokens, i))
         i += 1
     return _driver_of(_names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out)))))
 
@@ -350,11 +401,13 @@ def _names_no_agent(units: list[Unit]) -> list[Unit]:
                 _corner_with_a_numbered_street(units, k):
             out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
             continue
+        if nxt.word == "s" and k + 2 < len(units) and u.tokens[-1].plural:
+            nxt = units[k + 2]  # "the residents' association": the plural's possessive, then what it owns
         if u.category != "agents" or u.meaning in ("ego", "none") or nxt.category != "word" or \
-                nxt.tokens[0].sentence != u.tokens[-1].sentence or u.tokens[-1].plural:
+                nxt.tokens[0].sentence != u.tokens[-1].sentence:
             continue
         street = nxt.word in STREET_WORDS and not (k > 0 and units[k - 1].word in ("a", "an", "the", "this", "that"))
-        if street or nxt.word in ORGANISATION_WORDS:
+        if street and not u.tokens[-1].plural or nxt.word in ORGANISATION_WORDS:
             out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
     return out
 
@@ -628,6 +681,36 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
 HEDGE_VERBS = {"think", "guess", "reckon", "believe", "suppose", "mean"}
 
 
+LEFT_AS_A_VERB_AFTER = {"never", "not", "had", "has", "have", "just", "finally", "eventually", "already", "then",
+                        "he", "she", "it", "they", "who", "which", "that", "i", "we", "you"}
+
+
+def _left_as_a_verb(tokens: list[Token], i: int) -> bool:
+    """'never left the sidewalk', 'he left the scene', 'the van left the junction': the past of 'leave', with
+    its object after it, not a side."""
+    before = tokens[i - 1] if i > 0 and tokens[i - 1].sentence == tokens[i].sentence else None
+    after = tokens[i + 1] if i + 1 < len(tokens) and tokens[i + 1].sentence == tokens[i].sentence else None
+    if before is None or after is None or after.word not in ("the", "a", "an", "his", "her", "its", "their", "my",
+                                                             "our"):
+        return False
+    entry = _lookup(lexicon(), [before])
+    return before.word in LEFT_AS_A_VERB_AFTER or entry is not None and entry[0] == "agents"
+
+
+LANE_MARKINGS = {"line", "lines", "marking", "markings", "median", "lane line", "lane lines"}
+
+
+def _over_a_lane_marking(tokens: list[Token], end: int) -> bool:
+    """'crossed the solid white line', 'crossed over the double yellows': what is crossed is a line painted
+    along the road, so the crosser drifts out of its lane; it does not cross the road."""
+    for t in tokens[end:end + 6]:
+        if t.sentence != tokens[end - 1].sentence or t.word in (",", "and", "into", "onto", "in", "to", "at"):
+            return False
+        if t.word in LANE_MARKINGS or t.word in ("yellows", "whites"):
+            return True
+    return False
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -637,6 +720,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
+        return [Unit(m.start, m.end, "actions", "move", span)]  # "the jogger never left the sidewalk": leave
+    if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
+        return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
             span[0].word in SIDES and span[1].word.startswith("turn") and m.start > 1 and \
             tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the"} and tokens[m.start - 2].word in ("on", "to", "from"):
@@ -654,6 +741,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stop"] and m.start > 0 and \
             tokens[m.start - 1].word in ("says", "said", "reads", "read", "saying", "reading"):
         return [Unit(m.start, m.end, "road", "stop", span)]  # "the sign says stop": a stop sign, nobody stopping
+    if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["us"] and \
+            _road_number(tokens, m.end):
+        return [Unit(m.start, m.end, "word", "us", span)]  # "US-101": a highway's name, not the narrators
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
@@ -786,13 +876,14 @@ def _road(r: _Reader) -> RoadSpec:
         if word not in target and word not in other:
             target.append(word)
 
-    negated_in = -1
+    negated_in, removing = -1, False
     for k, u in enumerate(units):
         if negated and u.tokens[0].sentence != negated_in:
             negated = False  # "no crossing. Road: mid-block": a denial ends with its sentence
-        if u.category == "word" and u.word in NEGATIONS or (u.category == "word" and u.word.endswith("n't")) \
+        if u.category == "word" and u.word in NEGATIONS | REMOVED or (u.category == "word" and u.word.endswith("n't")) \
                 or (u.category == "numbers" and u.meaning == "0"):
             negated, negated_in = True, u.tokens[0].sentence
+            removing = u.category == "word" and u.word in REMOVED
             r.mark(u)
             owner = k - 1 - (k > 1 and units[k - 1].word == "with")
             if k > 0 and units[owner].category == "agents" and units[owner].meaning not in ("none", "ego") and \
@@ -893,6 +984,8 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "comma" or (u.category == "word" and u.word in
                                      ("and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic")):
             continue
+        if removing and u.category == "word" and u.word in ("the", "its", "their", "both"):
+            continue  # "removed the stop sign and the stop line": each thing removed
         if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
             continue
         negated = False
@@ -949,14 +1042,34 @@ LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "a
                   "avenue", "roadway", "carriageway", "route", "limit"}
 
 
+MILES_WORDS = {"mph", "miles", "mile", "feet", "ft", "yards", "yd", "yds", "interstate", "freeway", "northbound",
+               "southbound", "eastbound", "westbound"}  # a text that measures in miles, or a US highway's words
+ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "route", "rte", "hwy", "highway", "interstate", "exit", "m"}
+
+
+def _road_number(tokens: list[Token], i: int) -> bool:
+    """'I-95', 'US-101', 'Route 30', 'the M25': a number that names a road, not a speed."""
+    return 0 < i < len(tokens) and tokens[i - 1].word in ROAD_NUMBER_PREFIXES and \
+        tokens[i - 1].sentence == tokens[i].sentence \
+        and tokens[i].word.isdigit()
+
+
+def _measured_in_miles(tokens: list[Token]) -> bool:
+    """A text that gives speeds or distances in miles, or drives on a US interstate: a limit it says with no unit
+    is in miles an hour ('three lanes my direction, speed limit 70' on I-95)."""
+    return any(t.word in MILES_WORDS or _road_number(tokens, k) and tokens[k - 1].word in ("i", "us", "interstate")
+               for k, t in enumerate(tokens))
+
+
 def _speed_limits(r: _Reader) -> list[str]:
     """'a 30 km/h speed limit', 'a speed limit of ninety', 'a limit of forty', 'twenty miles per hour'."""
     tokens, out = r.tokens, []
+    in_miles = _measured_in_miles(tokens)
     for i, t in enumerate(tokens):
         value = _word_number(t)
         if value is None or (i + 1 < len(tokens) and _word_number(tokens[i + 1]) is not None
-                             and read_number(t.word) is None):
-            continue  # the tens of "thirty five": read at the units
+                             and read_number(t.word) is None) or _road_number(tokens, i):
+            continue  # the tens of "thirty five": read at the units; "I-95" names a road
         value, first = _number_before(tokens, i)
         around = {x.word for x in tokens[max(0, first - 4): i + 5]}
         after_unit = [x.word for x in tokens[i + 1: i + 5]]
@@ -984,6 +1097,9 @@ def _speed_limits(r: _Reader) -> list[str]:
         if unitless and not mph and value % 10 == 5 and 15 <= value <= 85:
             mph = True  # "25 limit", "Limit's 65": US signs in miles an hour step by five
             r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (a US sign)")
+        elif unitless and not mph and in_miles and value % 5 == 0 and 10 <= value <= 85:
+            mph = True  # "doing 35 mph in a 40 zone", "I-95, speed limit 70": the text's own unit
+            r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (the text measures in miles)")
         unit = "mph" if mph else "km/h"
         kmh = value * 1.609344 if mph else value
         r.used.update(j for j in range(max(0, first - 4), min(len(tokens), i + 5))
@@ -1377,7 +1493,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         sentence = u.tokens[0].sentence
         if new_sentence:
             close()
-        prev_word = units[k - 1].word if k else ""
+        prev_word = units[k - 1].tokens[-1].word if k and not new_sentence else ""
+        # (the word right before, in this sentence: "stopped at the crossing. Once ..." is no "at once")
         if u.category == "sequence" and (prev_word == "even" or u.word == "next" and len(u.tokens) == 1 and
                                          prev_word in ("the", "a", "this") or
                                          u.word == "later" and prev_word in ("bit", "little", "or", "maybe")):
@@ -1396,6 +1513,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
                 skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
+        if u.category == "sequence" and u.word == "after" and _has_verb(current) and \
+                _no_verb_to_the_sentence_end(units, k + 1):
+            r.mark(u)
+            continue  # "two cars stopped ahead after a minor collision", "parked just after the junction": when
+            # or where that was, said after it; what comes next is no later stage
         if u.category == "sequence" and u.meaning == "then" and u.word == "then" and _has_agent(current) and \
                 not _has_verb(current) and not any(x.category == "comma" for x in current) and \
                 nxt is not None and nxt.category == "actions":
@@ -1522,6 +1644,14 @@ VERDICT_COPULAS = {"is", "was", "would", "should", "will", "seems"}
 
 
 LONG_WAITS = {"min", "mins", "minute", "minutes", "hour", "hours", "hr", "hrs"}
+
+
+def _no_verb_to_the_sentence_end(units: list[Unit], k: int) -> bool:
+    """Only a noun phrase from here to the end of the sentence ('after a minor collision between them.')."""
+    sentence = units[k - 1].tokens[0].sentence
+    rest = [u for u in units[k:] if u.tokens[0].sentence == sentence]
+    return bool(rest) and not any(u.category in ("actions", "sequence") or u.word.endswith(("ed", "ing"))
+                                  for u in rest)
 
 
 def _a_wait_of_minutes(units: list[Unit], k: int) -> bool:
@@ -1804,6 +1934,10 @@ AFTER_A_SCENE_COPULA = {"on", "in", "at", "by", "near", "next", "behind", "ahead
 HISTORY_LINKS = {"in", "since", "until", "till"}
 
 
+NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear", "appeared", "appears"}
+# "never comes", "never arrived": one that is not there ("never came to a stop" is there, and did not stop)
+
+
 def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     """Agent nouns the text talks about, that are nobody in the scene: an institution written to or blamed ('I
     reported it to the police', 'I do not blame the fire brigade'); people or vehicles in general ('kids are
@@ -1831,6 +1965,14 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                 last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
+    words = [x.word for x in after[:5]]
+    if u.meaning not in ("ego", "none") and "never" in words[:3]:
+        k = words.index("never")
+        verb = after[k + 1] if k + 1 < len(after) else None
+        if verb is not None and (verb.word in NEVER_CAME or verb.base in ("show", "turn") and k + 2 < len(after)
+                                 and after[k + 2].word == "up") and not (k + 2 < len(after) and after[k + 2].word
+                                                                         == "to"):
+            return True  # "the gritting lorry never comes up our road": one that is not there
     for x, nxt in zip(sentence, sentence[1:]):
         if x.word in HISTORY_LINKS and nxt.word.isdigit() and len(nxt.word) == 4 and 1900 <= int(nxt.word) <= 2099:
             lo, hi = sorted((t.index, nxt.index))
@@ -2407,6 +2549,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
+        if action in ("cut_in", "move", "lane_change", "lane_left", "lane_right") and clause_units is not None and \
+                k is not None and _onto_the_roadside(clause_units[k + 1:k + 5]):
+            action, direction = "move", None  # "steered right onto the gravel and stopped": off the road, no lane
         if e.is_ego and action == "cut_in" and not direction and u.tokens[0].base in ("swerve", "jerk", "veer"):
             action = "move"  # "I slammed on the brakes and swerved": a jerk of the wheel, no lane named
         if action == "move" and u.base in LANE_STEERING and direction:
@@ -2563,6 +2708,17 @@ def _towards_an_edge(units: list[Unit]) -> bool:
     return bool(words) and words[0] in ("towards", "toward") and bool(set(words[1:4]) & LANE_EDGES)
 
 
+def _onto_the_roadside(units: list[Unit]) -> bool:
+    """'(swerved right) onto the hard shoulder', 'onto the verge': a move off the carriageway to its edge, to pull
+    over or get out of the way, no lane change."""
+    for j, u in enumerate(units[:4]):
+        if u.category == "positions" and u.meaning == "shoulder":
+            return any(t.word in ("onto", "into") for x in units[:j + 1] for t in x.tokens)
+        if u.category in ("agents", "actions", "comma"):
+            return False
+    return False
+
+
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
     turning = units[k].meaning in ("turn", "u_turn")
@@ -2704,7 +2860,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
-             and not _named_manoeuvre(units, i) and not _requested(units, i)]
+             and not _named_manoeuvre(units, i) and not _requested(units, i) and not _planned(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
             u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
         verbs = []  # "the light turns red": the subject is a signal, no agent acts
@@ -2925,6 +3081,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if e.is_ego and u.category == "positions":
                 if u.meaning.startswith("compass_"):
                     e.features.add(u.meaning)
+                if u.meaning == "road_straight" and {t.word for t in u.tokens} & JUNCTION_NOUNS:
+                    e.features.add("in_junction")  # "my car slid out across the junction": the ego is at one
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
                 edge_after = i + 1 < len(units) and (units[i + 1].category == "positions" and units[i + 1].meaning in (
@@ -3052,6 +3210,20 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
             "maneuver", "manoeuvre", "turn", "lane", "overtake", "merge", "cut")  # "at start of manoeuvre"
 
 
+PLANNING = {"queued", "queues", "planned", "plans", "planning", "scheduled", "proposed", "intended", "considered",
+            "requested", "commanded", "queue", "plan"}  # a planner's or a driver's manoeuvre still to come
+
+
+def _planned(units: list[Unit], i: int) -> bool:
+    """'the AV planner queued a lane change to the left': the manoeuvre is planned, not made, and the planning
+    verb ('queued') is no wait in a queue."""
+    def planning(u: Unit) -> bool:
+        return u.tokens[0].word in PLANNING
+    return i + 2 < len(units) and planning(units[i]) and units[i + 1].word in ("a", "an", "the", "its", "another") \
+        and units[i + 2].category == "actions" or \
+        i >= 2 and units[i - 1].word in ("a", "an", "the", "its", "another") and planning(units[i - 2])
+
+
 REQUESTING = {"signal", "signals", "signaled", "signalled", "signaling", "signalling", "tell", "tells", "told",
               "ask", "asks", "asked", "order", "orders", "ordered", "instruct", "instructs", "instructed", "direct",
               "directs", "directed", "beckon", "beckons", "beckoned", "motion", "motions", "motioned", "motioning"}
@@ -3081,15 +3253,17 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
         return True  # "overtaking not possible": the manoeuvre is ruled out
     for u in reversed(units[max(0, i - 7):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
-                                               "failing", "refused", "refuses", "without", "unable") or (
+                                               "failing", "refused", "refuses", "without", "unable", "nowhere") or (
                 u.category == "numbers" and u.meaning == "0"):
             return True
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
                                                      "is", "are", "be", "can", "could", "room", "space", "chance",
                                                      "able", "unable", "time", "even", "ever", "really", "properly",
                                                      "so", "much", "once", "a", "all", "the", "way", "completely",
-                                                     "fully", "full", "quite")) \
-                and u.category != "actions":
+                                                     "fully", "full", "quite", "whatever", "for", "any", "of",
+                                                     "anyone", "anybody")) \
+                and u.category != "actions" and not (u.category == "agents" and u.meaning == "ego"):
+            # ("nowhere whatever for any of us to pull over", "no room for me to move over")
             return False
     return False
 
@@ -3676,8 +3850,9 @@ def _swerves_in_front(units, i) -> bool:
     if "front" not in {t.word for t in u.tokens}:
         return False
     j = i - 1
-    while j >= 0 and units[j].category == "word" and units[j].word in SWERVE_ADVERBS:
-        j -= 1
+    while j >= 0 and (units[j].category == "word" and units[j].word in SWERVE_ADVERBS or
+                      units[j].category == "behaviours" and len(units[j].tokens) == 1):
+        j -= 1  # "pulled sharply across in front of us": a manner adverb between the verb and its path
     verb = units[j] if j >= 0 else None
     if verb is None or verb.category != "actions" or not (
             verb.meaning in ("cut_in", "lane_change") or verb.tokens[0].base in STEERING | {"swing", "dart", "cut"}):
@@ -3983,6 +4158,9 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
         return "go_straight"
     if action in ("turn_left", "turn_right"):
         return action
+    if action in ("move", "cut_in") and {"into_ego_lane", "road_straight"} <= e.features and not e.is_ego:
+        return "change_lane_to_right" if _KEEPS_LEFT.get() else "change_lane_to_left"  # oncoming, over the centre
+        # line into the ego's lane: towards its own offside
     signalled = next((s for s in SIDES if f"signals_{s}" in e.features), None)
     if action in ("turn", "u_turn"):
         return f"turn_{direction or signalled or UNSPECIFIED['turn_direction']}"
@@ -4085,9 +4263,13 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
                 main_subject and _returns_to_the_main_subject(clause.units):
             previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
+        if k > 0 and clauses[k - 1].link in UNTIL_LINKS and main_subject and clause.units and \
+                clause.units[0].category == "actions":
+            previous = main_subject  # "held position until the pickup had passed, then completed the left": the
+            # one who waited acts again, not the one waited for
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
-        if subject and clause.antecedent is None:
+        if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS:
             main_subject = subject
         if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
                 not any(e.is_ego for e in previous):
@@ -4196,6 +4378,10 @@ AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operat
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked"}
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
+
+
+JUNCTION_NOUNS = {"junction", "intersection", "crossroads"}
+UNTIL_LINKS = {"until", "till", "before"}  # a clause of what is waited for: its subject is not the story's
 
 
 def _returns_to_the_main_subject(units: list[Unit]) -> bool:
@@ -4320,8 +4506,12 @@ def _ego_placed_last(units: list[Unit]) -> bool:
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
-    """'I'm in the slow lane', 'the ego is in the left lane': a lane named by its side is one of several."""
+    """'I'm in the slow lane', 'the ego is in the left lane': a lane named by its side is one of several.
+    'My car slid out across the junction': where the ego goes is at a junction."""
     ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is not None and "in_junction" in ego.features and road.junction is None:
+        r.notes.append("inferred: at junction (the ego goes across it)")
+        road = road.model_copy(update={"junction": True})
     if ego is None or "in_a_side_lane" not in ego.features or (road.lanes or 0) >= 2:
         return road
     r.notes.append("inferred: lanes >= 2 (the ego is in a lane named by its side)")
@@ -4421,9 +4611,14 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 speed=ego_entity.speed if ego_entity else None)
     stages[0].append(ego)
     if ego_entity is not None:
+        last = ego.action
         for k in range(1, stage_count):
             if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
                 action = _ego_action(ego_entity, _ego_class(ego_entity, k, junction), k)
+                if action == last == "stop":
+                    continue  # "stopped at red ... kept the vehicle stopped until ...": still so, nothing new
+                    # (a second lane change the same way is a manoeuvre of its own)
+                last = action
                 if language_allows_later_ego():
                     stages[k].append(Agent(name="ego", type=ego.type, is_ego=True, action=action))
                 else:
