@@ -3605,3 +3605,13 @@ def test_a_vehicle_placed_beside_the_ego_that_goes_past_starts_beside_it(prompt,
 ])
 def test_a_vehicle_stopped_in_front_of_the_ego_forever_blocks_it(prompt, action):
     assert ("truck", action, "front") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kind", [
+    ("On the A38 a lorry is stuck just ahead of me.", "truck"),
+    ("Northbound on SR-99 a bus stops ahead of the ego.", "bus"),
+    ("On the B1234 a tractor crawls along in front of us.", "truck"),
+])
+def test_a_roads_number_before_an_agent_counts_nothing(prompt, kind):
+    found = agents(prompt)
+    assert [a[0] for a in found].count(kind) == 1 and len(found) == 2, found

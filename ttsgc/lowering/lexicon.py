@@ -591,6 +591,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(?:one|two|three|some) of (?:them|those|these)[ ,]+(?:no|wait|sorry|i mean|no wait|actually)"
                   r"[ ,]+((?:both|all|two|three|four) of (?:them|those|these))\b", r"\1", text)
     # "one of them no both of them start walking": speech corrects itself, the last word stands
+    text = re.sub(r"\b[abn]\d{2,4}\b", "road", text)  # "the A38", "on the B1234": a road, no count
+    text = re.sub(r"\bm\d{2,3}\b|\b(?<=the )m\d\b", "motorway", text)  # "the M6", "on the M25"
     text = re.sub(r"\blv\b", "lead vehicle", text)  # "LV decelerates": the lead vehicle
     text = re.sub(r"\br\d{1,4}\b", " ", text)  # "R18 - T-junction": a run number, not a side
     text = re.sub(r"\b(\d{1,2})(?:st|nd|rd|th)\b",

@@ -2060,6 +2060,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             in_determiner = True
         elif u.category == "number" and _model_year(u.word) and k + 1 == head - len(modifiers):
             modifiers.append(u)  # "a 2017 Camry": the year it was built, not how many
+        elif u.category == "number" and (words & {"a", "an"} or k > 0 and units[k - 1].word in ROAD_NUMBER_PREFIXES):
+            break  # "on SR-99 a bus stops": a road's number, and no count stands before 'a'
         elif u.category == "number":
             value = read_number(u.word) or 0
             count = int(min(value, TOO_LARGE)) if count is None else count
