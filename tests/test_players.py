@@ -823,3 +823,14 @@ def test_a_faster_vehicle_from_behind_in_the_next_lane_passes_the_ego_before_it_
     assert report.ok, report.table()
     xosc = (tmp_path / "passes.xosc").read_text()
     assert "po1_draws_level" in xosc and "RelativeDistanceCondition" in xosc
+
+
+def test_an_ego_that_waited_and_then_turns_takes_its_turn_with_the_stages_oncoming_traffic(esmini, tmp_path):
+    """'once it turns green we turn left while an oncoming van goes straight': the van entered with the stage
+    and drove at once, while the ego turned across it (a crash in esmini, 0.9 m in SUMO)."""
+    report = _played(tmp_path, "green", 'scenario "green"\nroad {\n    at junction\n    has traffic_light\n}\n'
+                     'stage red {\n    ego car stop\n}\nstage green {\n    ego car turn_left\n'
+                     '    car c1 at road_of_straight go_straight\n}\n')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()

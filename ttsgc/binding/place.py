@@ -739,6 +739,10 @@ def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[i
         window[0], window[1] = min(window[0], arrive), max(window[1], leave)
         if agent.is_ego:
             first = key
+    later_turn = _egos_later_turn(agents, stage, odr)
+    if later_turn is not None:  # the ego stood until now and turns: its road goes first in this stage too
+        key, window = later_turn
+        windows[key], first = window, key
     delays: dict[tuple[int, str, bool], float] = {}
     taken: list[tuple[float, float]] = []
     for key in sorted(windows, key=lambda k: (k != first, windows[k][0], k)):
@@ -750,6 +754,28 @@ def _turns(agents: list[BoundAgent], stage: int, odr: OpenDrive) -> dict[tuple[i
         delays[key] = round(delay, 2)
         taken.append((arrive + delay, leave + delay))
     return delays
+
+
+SETTING_OFF_MPS2 = 2.0  # a standing ego's pull-away, for how long it holds the junction (a low estimate)
+
+
+def _egos_later_turn(agents: list[BoundAgent], stage: int, odr: OpenDrive):
+    """(turn key, [arrive, leave]) of an ego that stood until `stage` and turns in it: 'once it turns green we
+    turn left while an oncoming van goes straight'. The van enters with the stage; with no turn taken, both
+    were in the junction at once (a crash in esmini)."""
+    ego = next((a for a in agents if a.is_ego), None)
+    step = next((x for x in ego.later if x.stage == stage), None) if ego is not None else None
+    if stage == 0 or step is None or step.action not in V.TURN_ACTIONS or ego.start is None or \
+            len(ego.route) < 2 or ego.action != "stop" or any(x.action != "stop" for x in ego.later if x.stage < stage):
+        return None
+    speed = step.speed_mps or ego.speed_mps
+    if speed <= 0:
+        return None
+    via = odr.roads[ego.route[1].road]
+    entry = via.lane_point(0.0 if ego.route[1].lane < 0 else via.length, ego.route[1].lane)
+    here = odr.roads[ego.start.road].lane_point(ego.start.s, ego.start.lane)
+    way = math.hypot(entry.x - here.x, entry.y - here.y) + via.length + ego.length + 2.0
+    return (stage, ego.start.road, ego.start.lane > 0), [0.0, way / speed + speed / SETTING_OFF_MPS2]
 
 
 def no_faster_than_the_one_ahead(agents: list[BoundAgent]) -> list[BoundAgent]:
