@@ -3166,6 +3166,17 @@ def test_a_sequence_word_after_a_sentence_ending_in_a_place_opens_its_stage():
     assert [[a.action for a in s.agents if a.is_ego] for s in scene.stages] == [["stop"], ["go_straight"]]
 
 
+@pytest.mark.parametrize("prompt, bus", [
+    ("A boy darted out onto the zebra crossing from behind a bus which had stopped just ahead of me.",
+     ("bus", "stop", "front")),
+    ("An old man stepped onto the crosswalk from in front of a truck that was waiting ahead of us.",
+     ("truck", "stop", "front")),
+])
+def test_a_vehicle_a_crosser_comes_from_behind_keeps_its_own_place_ahead(prompt, bus):
+    found = agents(prompt)
+    assert bus in found and ("pedestrian", "cross_the_road", "near_the_crosswalk") in found, found
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

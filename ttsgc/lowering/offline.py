@@ -4711,8 +4711,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             continue
         if not _placed(e):
             positions[e.key] = positions[t.key]
-        elif not _placed(t):  # ... and the truck, placed nowhere itself, is where the text put the other
-            positions[t.key] = positions[e.key]
+        elif not _placed(t) and not (positions[e.key] == "near_the_crosswalk" and t.type not in V.VULNERABLE_TYPES
+                                     and "ahead" in t.features):
+            positions[t.key] = positions[e.key]  # ... and the truck, placed nowhere itself, is where the text put
+            # the other (but "a boy darted onto the crossing from behind a bus which had stopped just ahead of me":
+            # the bus stands ahead, in the lane; the crosswalk is a place of people)
     oncoming_names: set[str] = set()
     for e in others:
         action, direction = resolved[e.key]
