@@ -3177,6 +3177,15 @@ def test_a_vehicle_a_crosser_comes_from_behind_keeps_its_own_place_ahead(prompt,
     assert bus in found and ("pedestrian", "cross_the_road", "near_the_crosswalk") in found, found
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("Q: When did you first notice the police car? A: When I checked my mirror. It was coming up behind me.",
+     ("police", "go_straight", "back")),
+    ("I noticed the bus when I looked in my mirror. It was right behind me.", ("bus", "go_straight", "back")),
+])
+def test_it_after_a_clause_of_the_narrators_is_the_vehicle_named_before_not_the_narrator(prompt, expected):
+    assert expected in agents(prompt)
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

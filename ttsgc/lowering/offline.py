@@ -3744,6 +3744,12 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
                   and np.entity.type not in V.VULNERABLE_TYPES]
     if units[i].word == "it" and not as_object and named_here and phrases[0].entity is named_here[0]:
         return named_here[0]  # "a van in the left lane decides it wants our lane": the clause's own subject
+    naming = i + 2 < len(units) and units[i + 1].word in COPULAS and units[i + 2].word in ("a", "an", "the", "one")
+    if units[i].word == "it" and not as_object and not naming and previous_subject and all(
+            e.is_ego and e.head in SPEAKERS for e in previous_subject):  # ("it's a little intersection": a place)
+        vehicles = [e for e in recent if not e.is_ego and e.type not in V.VULNERABLE_TYPES]
+        if vehicles:  # "When I saw the lights. It was coming up behind me": the narrator is never 'it'
+            return vehicles[-1]
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
         things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
         if not things and previous_subject:
