@@ -3186,6 +3186,15 @@ def test_it_after_a_clause_of_the_narrators_is_the_vehicle_named_before_not_the_
     assert expected in agents(prompt)
 
 
+@pytest.mark.parametrize("prompt, other", [
+    ("I wanted to get past a slow tractor in front of me, so I signalled and I pulled out to the right.",
+     ("truck", "go_straight", "front")),
+    ("I wanted to get around a bus ahead of me, so I indicated and I moved left.", ("bus", "go_straight", "front")),
+])
+def test_a_vehicle_named_in_a_verbless_clause_does_not_join_the_subject_of_a_so_clause(prompt, other):
+    assert other in agents(prompt)
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

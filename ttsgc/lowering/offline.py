@@ -2921,7 +2921,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         for np in before:
             subject += np.group or [np.entity]
         joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
-        if pending and len(before) >= 2 and joined and verbs:  # "an ambulance, a police car and a van approach"
+        if pending and len(before) >= 2 and joined and verbs and clause.link in ("", ","):
+            # "an ambulance, a police car and a van approach" (not "... a slow semi, so I signaled and I moved")
             subject = list(pending) + subject
         objects = [np for np in phrases if (np.index > first_verb or _is_reference(units, np)) and np is not inverted]
     subject = [e for e in subject if e is not None]
