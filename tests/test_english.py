@@ -3195,6 +3195,16 @@ def test_a_vehicle_named_in_a_verbless_clause_does_not_join_the_subject_of_a_so_
     assert other in agents(prompt)
 
 
+@pytest.mark.parametrize("prompt, vehicle", [
+    ("The bus was stopped at the bus stop, letting people off, and I went around it. Then a kid came running out "
+     "from in front of the bus, right into my lane.", ("bus", "stop", "front")),
+    ("The lorry was stopped in the road, unloading, and we went round it. Then a man came running out from behind "
+     "the lorry, right into our lane.", ("truck", "stop", "front")),
+])
+def test_a_vehicle_the_ego_went_around_stays_ahead_when_someone_runs_out_from_it(prompt, vehicle):
+    assert vehicle in agents(prompt)
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -3918,6 +3918,8 @@ def _reference_after(units, i, phrases) -> Entity | None:
 def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
     """Places implied by verbs between an agent and the ego: following, leading, overtaking, hiding."""
     base = verb.tokens[0].base
+    if i + 1 < len(units) and units[i + 1].word in ("around", "round", "past") and base in STEERING | {"get"}:
+        base = "around"  # "went around it", "got past the bus": what the mover passed is ahead of it
     obj = next((p for p in phrases if p.entity is not None and p.first - i <= 2), None)
     if base in HIDING and obj is not None:
         hidden_one = verb.tokens[0].word.endswith(("en", "ed"))  # "a child hidden behind a van": the child
@@ -4718,11 +4720,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             continue
         if not _placed(e):
             positions[e.key] = positions[t.key]
-        elif not _placed(t) and not (positions[e.key] == "near_the_crosswalk" and t.type not in V.VULNERABLE_TYPES
-                                     and "ahead" in t.features):
+        elif not _placed(t) and not (t.type not in V.VULNERABLE_TYPES and t.features & {"ahead", "behind"}):
             positions[t.key] = positions[e.key]  # ... and the truck, placed nowhere itself, is where the text put
-            # the other (but "a boy darted onto the crossing from behind a bus which had stopped just ahead of me":
-            # the bus stands ahead, in the lane; the crosswalk is a place of people)
+            # the other (but "a boy darted onto the crossing from behind a bus which had stopped just ahead of me",
+            # "a kid ran out from in front of the bus we went around": the bus stands in the ego's lane, as said)
     oncoming_names: set[str] = set()
     for e in others:
         action, direction = resolved[e.key]
