@@ -3205,6 +3205,26 @@ def test_a_vehicle_the_ego_went_around_stays_ahead_when_someone_runs_out_from_it
     assert vehicle in agents(prompt)
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("A broken-down van was left in the lane ahead of us.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("A delivery van stopped dead in front of me and stayed there for a quarter of an hour. I was left sitting "
+     "behind it.", [("car", "block_the_ego", "front"), ("car", "stop", "ego")]),
+])
+def test_left_after_been_or_was_is_left_standing_there_not_a_side(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "A lorry had been left on the hard shoulder ahead of me on my left. As I drew level, a man climbed down from "
+    "the cab and walked straight across in front of me.",
+    "The lorry had broken down on the hard shoulder ahead of us on the left. Its driver climbed down from the cab "
+    "and walked across in front of us.",
+])
+def test_a_person_out_of_a_lorrys_cab_starts_where_the_lorry_stands_and_the_cab_is_no_taxi(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left"),
+                              ("truck", "stop", "front_left")]
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

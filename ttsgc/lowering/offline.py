@@ -685,16 +685,25 @@ LEFT_AS_A_VERB_AFTER = {"never", "not", "had", "has", "have", "just", "finally",
                         "he", "she", "it", "they", "who", "which", "that", "i", "we", "you"}
 
 
-def _left_as_a_verb(tokens: list[Token], i: int) -> bool:
+LEFT_THERE = {"on", "in", "at", "by", "there", "outside", "across", "behind", "parked", "standing", "stranded",
+              "unattended", "abandoned"}
+
+
+def _left_as_a_verb(tokens: list[Token], i: int) -> str | None:
     """'never left the sidewalk', 'he left the scene', 'the van left the junction': the past of 'leave', with
-    its object after it, not a side."""
+    its object after it, not a side ('move'). 'A lorry had been left on the hard shoulder', 'I was left sitting
+    behind it': left standing there ('stop')."""
     before = tokens[i - 1] if i > 0 and tokens[i - 1].sentence == tokens[i].sentence else None
     after = tokens[i + 1] if i + 1 < len(tokens) and tokens[i + 1].sentence == tokens[i].sentence else None
-    if before is None or after is None or after.word not in ("the", "a", "an", "his", "her", "its", "their", "my",
-                                                             "our"):
-        return False
+    if before is None or after is None:
+        return None
+    if before.word in ("been", "was", "were", "is", "are", "be", "being", "got", "get") and (
+            after.word in LEFT_THERE or after.word.endswith("ing")):
+        return "stop"
+    if after.word not in ("the", "a", "an", "his", "her", "its", "their", "my", "our"):
+        return None
     entry = _lookup(lexicon(), [before])
-    return before.word in LEFT_AS_A_VERB_AFTER or entry is not None and entry[0] == "agents"
+    return "move" if before.word in LEFT_AS_A_VERB_AFTER or entry is not None and entry[0] == "agents" else None
 
 
 LANE_MARKINGS = {"line", "lines", "marking", "markings", "median", "lane line", "lane lines"}
@@ -721,7 +730,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
-        return [Unit(m.start, m.end, "actions", "move", span)]  # "the jogger never left the sidewalk": leave
+        return [Unit(m.start, m.end, "actions", _left_as_a_verb(tokens, m.start), span)]
+        # "the jogger never left the sidewalk": leave; "a lorry had been left on the hard shoulder": it stands
     if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
@@ -2133,7 +2143,8 @@ def _gets_out(units: list[Unit], head: int) -> bool:
     words = [t.word for u in units[head + 1:head + 4] for t in u.tokens]
     verbs = {"get", "gets", "got", "climb", "climbs", "climbed", "step", "steps", "stepped", "jump", "jumps", "jumped",
              "hop", "hops", "hopped"}
-    return any(w in verbs and nxt in ("out", "off") for w, nxt in zip(words, words[1:]))
+    return any(w in verbs and nxt in ("out", "off", "down") for w, nxt in zip(words, words[1:]))
+    # ("climbed down from the cab")
 
 
 KIN = {"mother", "mom", "mum", "father", "dad", "wife", "husband", "son", "daughter", "kid", "child", "passenger",
@@ -3108,6 +3119,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             _modify(r, e, u, stage, 1)
         if not targets:
             r.mark(u)
+    for e in subject:
+        if e.type == "pedestrian" and not e.is_ego and e.relative_to is None:
+            e.relative_to = _vehicle_got_out_of(units, phrases, recent, e)  # at the vehicle it climbed out of
     _numbers(r, units, subject)
     surface = [np.entity for np in phrases if np.entity is not None and np.index < first_verb]
     r.surface = surface[:1] if by is not None and surface else []
@@ -3912,6 +3926,25 @@ def _reference_after(units, i, phrases) -> Entity | None:
                                       or u.word not in lexicon().function_words))
            or u.category in ("actions", "behaviours", "numbers") for u in between):
         return np.entity  # "from behind a parked bus"
+    return None
+
+
+GETTING_OUT = {"climb", "get", "step", "jump", "hop", "clamber"}
+
+
+def _vehicle_got_out_of(units, phrases, recent, person) -> Entity | None:
+    """'A man climbed down from the cab', 'the driver got out of the van': the person starts where that vehicle
+    stands (the cab is the last vehicle named's)."""
+    for k, u in enumerate(units):
+        words = [t.word for t in u.tokens]
+        if u.category == "agents" and u.meaning == "none" and "cab" in words and set(words) & {"from", "of"}:
+            return next((e for e in reversed(recent) if not e.is_ego and e.type not in V.VULNERABLE_TYPES), None)
+        if u.category == "word" and u.word in ("from", "of") and k > 0 and any(
+                x.tokens[0].base in GETTING_OUT for x in units[max(0, k - 3):k]):
+            np = next((p for p in phrases if p.first > k and p.first - k <= 2), None)
+            if np is not None and np.entity is not None and np.entity is not person and not np.entity.is_ego and \
+                    np.entity.type not in V.VULNERABLE_TYPES:
+                return np.entity
     return None
 
 
