@@ -3225,6 +3225,17 @@ def test_a_person_out_of_a_lorrys_cab_starts_where_the_lorry_stands_and_the_cab_
                               ("truck", "stop", "front_left")]
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("The tractor-trailer was on the right shoulder, hazards on, stopped. The driver walked out from in front of it, "
+     "into my lane.", [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right"),
+                       ("truck", "stop", "front_right")]),
+    ("A police car was parked on the hard shoulder on the left.",
+     [("car", "go_straight", "ego"), ("police", "stop", "front_left")]),
+])
+def test_a_vehicle_stopped_on_the_shoulder_is_ahead_and_its_driver_walking_is_on_foot(prompt, expected):
+    assert agents(prompt) == expected
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -2143,6 +2143,9 @@ def _gets_out(units: list[Unit], head: int) -> bool:
     words = [t.word for u in units[head + 1:head + 4] for t in u.tokens]
     verbs = {"get", "gets", "got", "climb", "climbs", "climbed", "step", "steps", "stepped", "jump", "jumps", "jumped",
              "hop", "hops", "hopped"}
+    if units[head + 1:head + 2] and units[head + 1].category == "actions" and \
+            units[head + 1].tokens[0].base in ("walk", "stroll", "wander", "stride", "stagger"):
+        return True  # "the driver walked out from in front of it": on foot
     return any(w in verbs and nxt in ("out", "off", "down") for w, nxt in zip(words, words[1:]))
     # ("climbed down from the cab")
 
@@ -4740,6 +4743,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             action = "move"  # "pulled out of a side road on the left": a junction road, no lane change
         if action == "cut_in" and direction and "into_ego_lane" not in e.features:
             action = "lane_" + direction  # "swings into the right lane"
+        if e.road_type == "shoulder" and action == "stop" and e.type not in V.VULNERABLE_TYPES and \
+                not e.features & {"ahead", "behind", "level", "overtaking"}:
+            e.features.add("ahead")  # "a tractor-trailer on the right shoulder, hazards on": one the ego comes up to
         position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
         resolved[e.key] = (action, direction)
         positions[e.key] = position
