@@ -3236,6 +3236,22 @@ def test_a_vehicle_stopped_on_the_shoulder_is_ahead_and_its_driver_walking_is_on
     assert agents(prompt) == expected
 
 
+def test_then_after_a_subject_and_its_participle_keeps_that_subject():
+    found = agents("Three cars including mine were waiting at the give-way sign. A motorcyclist coming along the "
+                   "main road from our right then turned left into our road.")
+    assert ("motorcycle", "turn_left", "road_of_right_turn") in found and ("car", "stop", "ego") in found, found
+    assert not any(a == ("car", "turn_left", "ego") for a in found), found
+
+
+@pytest.mark.parametrize("prompt", [
+    "A van parked on the left then pulled out in front of me.",
+    "The bus stopped then pulled away.",
+])
+def test_then_right_after_a_finite_verb_goes_on_with_the_same_subject(prompt):
+    egos = [a.action for a in lower(prompt).scenario.agents() if a.is_ego]
+    assert egos == ["go_straight"], egos
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -1529,10 +1529,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             continue  # "two cars stopped ahead after a minor collision", "parked just after the junction": when
             # or where that was, said after it; what comes next is no later stage
         if u.category == "sequence" and u.meaning == "then" and u.word == "then" and _has_agent(current) and \
-                not _has_verb(current) and not any(x.category == "comma" for x in current) and \
+                not any(x.category == "actions" and not x.tokens[0].word.endswith("ing") for x in current) and \
+                not any(x.category == "comma" for x in current) and \
                 nxt is not None and nxt.category == "actions":
             r.mark(u)
-            stage += 1  # "the taxi then sped past": its subject opens the later stage's clause
+            stage += 1  # "the taxi then sped past": its subject opens the later stage's clause; so does "a
+            # motorcyclist coming along the main road from our right then turned left": a subject and its participle
             continue
         if u.category == "sequence" and u.word == "then" and _then_of_a_verdict(units, k):
             r.mark(u)
@@ -1545,13 +1547,16 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 u.word == "next" and len(u.tokens) == 1 and prev_word in ("the", "a", "this", "that", "its")):
             # "into the next lane": which lane, not what comes next
             r.mark(u)
+            had_verb = _has_verb(current)
             if out or current:
                 close()
                 stage += 1
             whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"}
             # "when the light goes green", "when it is safe": said in full
-            joined_on = (prev_word in ("and", ",") or u.tokens[0].word == "and") and not new_sentence and \
-                not _starts_subject(units, k + 1)  # "indicates right and then turns"
+            joined_on = (prev_word in ("and", ",") or u.tokens[0].word == "and" or u.word == "then" and
+                         nxt is not None and nxt.category == "actions" and had_verb) and \
+                not new_sentence and not _starts_subject(units, k + 1)  # "indicates right and then turns"; "a
+            # van parked on the left then pulled out": the same subject goes on
             state = u.meaning == "once" and nxt is not None and nxt.category == "word" and \
                 nxt.word in CONDITION_STATES  # "once clear it makes the turn": the condition is that one word
             if state:
