@@ -3252,6 +3252,26 @@ def test_then_right_after_a_finite_verb_goes_on_with_the_same_subject(prompt):
     assert egos == ["go_straight"], egos
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("I admit I was looking at my phone and did not notice the van in front of me had stopped. I hit it at 20 mph.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("We were chatting and I never saw that the lorry ahead of us had stopped. I ran into the back of it.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+])
+def test_what_the_narrator_did_not_notice_is_done_by_the_one_noticed(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van in the lane to my right drifted into my lane and clipped my mirror. The van did stop, and the driver "
+     "gave me his insurance details.", ("car", "change_lane_to_left", "right")),
+    ("A car behind me ran into the back of me at the lights. The driver stopped to exchange details.",
+     ("car", "go_straight", "back")),
+])
+def test_a_stop_to_settle_up_after_the_collision_is_not_the_scenes(prompt, expected):
+    assert expected in agents(prompt)
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -2632,6 +2632,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             # stands behind it
         if action == "block":  # "cut me off" may be told as the lane change it was; "blocks", "boxes in" may not
             e.features.add("cuts_off" if "cut" in {t.word for t in u.tokens} else "blocks")
+        if action == "stop" and _to_settle_up(r.tokens, u):
+            return  # "the other driver did stop and gave me her info": after the collision, not in the scene
         if action == "stop" and not e.is_ego and clause_units is not None and k is not None and \
                 _stands_across(clause_units[k + 1:k + 5]):
             action = "block"  # "a patrol car parked across the lane": nobody gets by
@@ -2922,8 +2924,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     else:
         before = [np for np in phrases if np.index < first_verb and np.entity is not None
                   and not _is_reference(units, np)]
-        seen = len(before) >= 2 and before[0].entity is not None and before[0].entity.is_ego and any(
-                u.tokens[0].base in PERCEIVING for u in units[before[0].index + 1:before[1].first])
+        seer = next((j for j in range(len(before) - 2, -1, -1) if before[j].entity is not None
+                     and before[j].entity.is_ego and any(u.tokens[0].base in PERCEIVING
+                                                         for u in units[before[j].index + 1:before[j + 1].first])),
+                    None)  # "I admit I was looking at that and did not notice the car in front had stopped"
+        seen = seer is not None
+        if seen:
+            before = before[seer:]
         wanted = len(before) >= 2 and before[0].entity.is_ego and 0 < first_verb < len(units) and \
             units[first_verb - 1].word == "to" and any(u.tokens[0].base in WANTING
                                                        for u in units[before[0].index + 1:before[1].first])
@@ -3935,6 +3942,18 @@ def _reference_after(units, i, phrases) -> Entity | None:
            or u.category in ("actions", "behaviours", "numbers") for u in between):
         return np.entity  # "from behind a parked bus"
     return None
+
+
+AFTERMATH_WORDS = {"info", "information", "details", "insurance", "witness", "statement", "exchange", "exchanged",
+                   "apologise", "apologised", "apologize", "apologized", "apology"}
+
+
+def _to_settle_up(tokens: list[Token], u: Unit) -> bool:
+    """'did stop and gave me her info as a witness', 'pulled over to exchange details': a stop after the
+    collision, to settle up, said in the same sentence; the scene ends before it."""
+    sentence = u.tokens[-1].sentence
+    after = [t.word for t in tokens[u.tokens[-1].index + 1:] if t.sentence == sentence][:10]
+    return bool(AFTERMATH_WORDS & set(after))
 
 
 GETTING_OUT = {"climb", "get", "step", "jump", "hop", "clamber"}
