@@ -3272,6 +3272,20 @@ def test_a_stop_to_settle_up_after_the_collision_is_not_the_scenes(prompt, expec
     assert expected in agents(prompt)
 
 
+def test_the_one_placed_before_is_that_member_and_both_drivers_are_the_vehicles_named():
+    found = agents("I was stuck between two buses on I-70, one in front of me and one behind. The one in front "
+                   "braked hard and stopped, and the one behind ran into me. Both drivers work for the same firm.")
+    assert sorted(found) == [("bus", "go_straight", "back"), ("bus", "stop", "front"), ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A van behind me ran into me at the lights. Car is badly damaged.",
+    "A van behind me ran into me at the lights. Vehicle is totaled, bumper is gone.",
+])
+def test_a_bare_vehicle_said_to_be_damaged_afterwards_is_no_new_agent(prompt):
+    assert agents(prompt) == [("car", "go_straight", "back"), ("car", "go_straight", "ego")]
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -751,9 +751,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stop"] and m.start > 0 and \
             tokens[m.start - 1].word in ("says", "said", "reads", "read", "saying", "reading"):
         return [Unit(m.start, m.end, "road", "stop", span)]  # "the sign says stop": a stop sign, nobody stopping
-    if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["us"] and \
+    if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] in (["us"], ["i"]) and \
             _road_number(tokens, m.end):
-        return [Unit(m.start, m.end, "word", "us", span)]  # "US-101": a highway's name, not the narrators
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "US-101", "I-70": a highway, not the narrators
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
@@ -1949,6 +1949,9 @@ AFTER_A_SCENE_COPULA = {"on", "in", "at", "by", "near", "next", "behind", "ahead
 HISTORY_LINKS = {"in", "since", "until", "till"}
 
 
+DAMAGED = {"totaled", "totalled", "damaged", "dented", "wrecked", "smashed", "scratched", "crushed", "destroyed",
+           "undriveable", "undrivable", "fine", "ok", "okay", "undamaged", "repaired", "gone"}
+DEGREE = {"badly", "completely", "totally", "slightly", "a", "now", "basically", "pretty", "all", "still"}
 NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear", "appeared", "appears"}
 # "never comes", "never arrived": one that is not there ("never came to a stop" is there, and did not stop)
 
@@ -1981,6 +1984,9 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
     words = [x.word for x in after[:5]]
+    if u.meaning not in ("ego", "none") and not before and len(words) >= 2 and words[0] in COPULAS and \
+            (words[1] in DAMAGED or words[1] in DEGREE and words[2:3] and words[2] in DAMAGED):
+        return True  # "Car is totaled.": the state of the writer's car after it all, no one on the road
     if u.meaning not in ("ego", "none") and "never" in words[:3]:
         k = words.index("never")
         verb = after[k + 1] if k + 1 < len(after) else None
@@ -2471,8 +2477,10 @@ RIDDEN = {"bike", "bicycle", "pushbike", "push bike", "pedal cycle", "motorbike"
 def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
               recent: list[Entity], head: str = "") -> list[Entity]:
     """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
+    drivers = head in ("driver", "drivers") and (both or plural)  # "both drivers": of the vehicles named
     pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
-                                                        or (e.generic and kind in V.EGO_TYPES))]
+                                                        or (e.generic and kind in V.EGO_TYPES)
+                                                        or drivers and e.type not in V.VULNERABLE_TYPES)]
     if len(head.split()) > 1 and head.split()[-1] in ("driver", "rider", "drivers", "riders"):
         head = " ".join(head.split()[:-1])  # "the van's driver", "the bus driver": the van, the bus
     if head and head not in GENERAL_NOUNS and not both and not plural:
@@ -2853,7 +2861,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 continue
             if i > 3 and units[i - 3].word in COPULAS and units[i - 4].word in ("mine", "i", "we", "ours"):
                 continue  # "mine was the second one": the ego's place among them, no member of its own
-            member = _member(r, recent)  # "two cars, one in front and one behind"
+            placed_one = _the_one_placed(r, units, i)  # "the one in front slammed on his brakes": that member
+            member = placed_one or _member(r, recent)  # "two cars, one in front and one behind"
             if member is not None:
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i))
@@ -3553,6 +3562,16 @@ def _part_of_group(r: _Reader, n: int) -> Entity | None:
         r.entities.append(part)
         return part
     return None
+
+
+def _the_one_placed(r: _Reader, units: list[Unit], i: int) -> Entity | None:
+    """'the one in front', 'the one behind me': the one already placed there, among those named before."""
+    if not (i > 0 and units[i - 1].word == "the" and i + 1 < len(units) and units[i + 1].category == "positions"
+            and units[i + 1].meaning in ("ahead", "behind", "side_left", "side_right")):
+        return None
+    place = units[i + 1].meaning
+    found = [e for e in r.entities if not e.is_ego and e.count > 0 and place in e.features]
+    return found[-1] if len(found) == 1 or found and found[-1].parent is not None else None
 
 
 def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
