@@ -3615,3 +3615,15 @@ def test_a_vehicle_stopped_in_front_of_the_ego_forever_blocks_it(prompt, action)
 def test_a_roads_number_before_an_agent_counts_nothing(prompt, kind):
     found = agents(prompt)
     assert [a[0] for a in found].count(kind) == 1 and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt", [
+    "Warm light on the shop windows. A cyclist pedals along ahead of us.",
+    "Pale light over the fields as a tractor trundles along in front of us.",
+])
+def test_light_that_lights_the_scene_is_no_traffic_light(prompt):
+    assert "traffic_light" not in road(prompt).required_signals
+
+
+def test_a_light_named_by_its_street_is_still_a_traffic_light():
+    assert "traffic_light" in road("At the Elm Street light a pickup is stalled in front of us.").required_signals
