@@ -3627,3 +3627,10 @@ def test_light_that_lights_the_scene_is_no_traffic_light(prompt):
 
 def test_a_light_named_by_its_street_is_still_a_traffic_light():
     assert "traffic_light" in road("At the Elm Street light a pickup is stalled in front of us.").required_signals
+
+
+def test_an_oncoming_lane_beside_a_signal_is_no_junction():
+    scene = lower("A red light flashes at the level crossing ahead. A tractor comes towards us in the oncoming lane.")
+    assert scene.scenario.road.junction is not True
+    assert ("car", "go_straight", "front_left") in agents(
+        "A red light flashes at the level crossing ahead. A van comes towards us in the oncoming lane.")

@@ -2524,6 +2524,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "a Toyota behind me ... cut in directly in front of me": the first place said is its start
         if u.meaning == "sidewalk" and e.type != "pedestrian" and "corner" in {t.word for t in u.tokens}:
             return  # "the cyclist turned right at the next corner": at the junction, not on the pavement
+        if u.meaning == "road_straight" and {t.word for t in u.tokens} & {"lane", "lanes"}:
+            e.features.add("oncoming_lane")  # "in the oncoming lane": a lane of this road, no junction's arm
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
@@ -4321,7 +4323,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
         road.junction is None and "traffic_light" in road.required_signals and (any(
             f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
-            or any("road_straight" in e.features for e in r.entities)))
+            or any("road_straight" in e.features and "oncoming_lane" not in e.features for e in r.entities)))
     # "a cyclist running the red light from the left", "an oncoming car at the lights": a signalised junction
     if junction_words or "stop_line" in road.required_objects:
         _pulling_out_of_a_junction_turns(r)
