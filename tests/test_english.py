@@ -416,6 +416,13 @@ def test_a_screenplay_character_who_drives_is_at_the_ego_wheel_and_their_kin_rid
                             ("car", "stop", "ego")]
 
 
+def test_the_pronoun_of_a_screenplay_character_at_the_wheel_is_the_ego():
+    page = ("EXT. HARBOUR ROAD - NIGHT\n\nMAYA's hatchback idles at the give-way line. A TAXI sweeps past from the "
+            "right. Maya waits.\n\nOnce the taxi has gone, she turns left.")
+    assert agents(page) == [("car", "go_straight", "road_of_right_turn"), ("car", "stop", "ego"),
+                            ("car", "turn_left", "ego")]
+
+
 @pytest.mark.parametrize("prompt, condition", [("Rain hammers the windscreen as the ego drives.", "hard_rain"),
                                                ("Rain patters on the roof as the ego drives.", "soft_rain")])
 def test_rain_said_by_what_it_does(prompt, condition):

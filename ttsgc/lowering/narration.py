@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, field
 
 from ttsgc import vocabulary as V
-from ttsgc.lowering.lexicon import known_word, lexicon, matches, tokenize
+from ttsgc.lowering.lexicon import AT_THE_WHEEL_NAME, SLUGLINE, driver_named, known_word, lexicon, matches, tokenize
 
 SALUTATION = re.compile(r"^\s*(?:(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
                         r"morning|afternoon|evening)\b[^.!?,\n]{0,40}[,!]?|(?:hi|hello|hey|hiya|dear|greetings|hallo|"
@@ -98,7 +98,31 @@ def read_narration(prompt: str) -> Narration:
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
+    text = _screenplay_driver(text, notes)
     return Narration(text, notes)
+
+
+def _screenplay_driver(text: str, notes: list[str]) -> str:
+    """'Tom waits. Once the bus clears, he turns right.': in a screenplay's action lines the character at the wheel
+    (lexicon.driver_named) is the ego, and so is the pronoun the page gives them after."""
+    if not SLUGLINE.search(text):
+        return text
+    lines = text.split("\n")
+    names = set()
+    for k, line in enumerate(lines):
+        if SLUGLINE.match(line) or re.match(r"^(?: {4,}|\t)\S", line):
+            continue  # a scene heading, or a character's name and what they say
+        names |= {m.group(1) for m in AT_THE_WHEEL_NAME.finditer(line) if driver_named(m) == "the ego"}
+    if not names:
+        return text
+    for k, line in enumerate(lines):
+        if not (SLUGLINE.match(line) or re.match(r"^(?: {4,}|\t)\S", line)):
+            for name in names:  # "MAYA's hatchback idles ... Maya waits": the character by any case of the name
+                lines[k] = re.sub(rf"\b{re.escape(name)}\b", "the ego", line, flags=re.I)
+                line = lines[k]
+    named = "\n".join(lines)
+    notes.append("read the screenplay's character at the wheel as the ego")
+    return _drivers_pronoun(named, notes)
 
 
 def _without_letter_frame(text: str, notes: list[str]) -> str:
