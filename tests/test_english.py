@@ -423,6 +423,24 @@ def test_the_pronoun_of_a_screenplay_character_at_the_wheel_is_the_ego():
                             ("car", "turn_left", "ego")]
 
 
+def test_the_storys_hero_and_their_pronoun_are_the_ego():
+    found = agents("A tipper truck is parked just ahead of our heroine. She glances in her mirror and eases out "
+                   "into the right lane. A cyclist in that lane is coming up behind her.")
+    assert found == [("car", "change_lane_to_right", "ego"), ("cyclist", "go_straight", "back_right"),
+                     ("truck", "stop", "front")], found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus stops ahead. My trusty old Volvo pulls into the left lane.", ("car", "change_lane_to_left", "ego")),
+    ("I swing our little Fiat out into the right lane.", ("car", "change_lane_to_right", "ego")),
+    ("I steer my hatchback into the left lane.", ("car", "change_lane_to_left", "ego")),
+])
+def test_the_speakers_own_vehicle_however_described_is_the_ego_and_steering_it_into_a_lane_changes_lane(
+        prompt, expected):
+    found = agents(prompt)
+    assert expected in found and sum(a[2] == "ego" for a in found) == 1, found
+
+
 @pytest.mark.parametrize("prompt, condition", [("Rain hammers the windscreen as the ego drives.", "hard_rain"),
                                                ("Rain patters on the roof as the ego drives.", "soft_rain")])
 def test_rain_said_by_what_it_does(prompt, condition):

@@ -99,7 +99,20 @@ def read_narration(prompt: str) -> Narration:
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
     text = _screenplay_driver(text, notes)
+    text = _protagonist(text, notes)
     return Narration(text, notes)
+
+
+PROTAGONIST = re.compile(r"\b(?:our|the) (?:hero|heroine|protagonist)\b", re.I)
+
+
+def _protagonist(text: str, notes: list[str]) -> str:
+    """'just ahead of our HERO. He checks over his shoulder': the story's hero is the ego, and so is the pronoun
+    the story gives them after."""
+    if not PROTAGONIST.search(text) or "the ego" in text:
+        return text
+    notes.append("read the story's hero as the ego")
+    return _drivers_pronoun(PROTAGONIST.sub("the ego", text), notes)
 
 
 def _screenplay_driver(text: str, notes: list[str]) -> str:

@@ -95,10 +95,10 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
               "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
-LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid"}  # "... into the
+LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid", "swing"}  # "... into the
 # left lane": a lane change
 STEERING = {"move", "steer", "ease", "inch", "creep", "slide", "skid", "veer", "swerve", "pull", "merge", "shift", "go",
-            "head", "drift"}
+            "head", "drift", "swing"}
 RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle",
            "tear"}
 
@@ -2171,6 +2171,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
     plural = u.tokens[-1].plural and not is_ego
+    speakers = words & {"my", "our"} or first > lo and units[first - 1].word in ("my", "our")
+    if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
+            u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
+        is_ego = True  # "my little Fiat", "our battered old van": the speaker's own vehicle, however described
     if plural and count == 1 and "of" in words and words & DEFINITE and head > first and \
             units[first].category == "numbers" and units[first].word == "one":
         plural, count = False, None  # "one of the other cars": a member of the group named before
@@ -2726,7 +2730,11 @@ def _onto_the_roadside(units: list[Unit]) -> bool:
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
     turning = units[k].meaning in ("turn", "u_turn")
-    for j, u in enumerate(units[k + 1: k + (6 if turning else 4)], start=k + 1):
+    owned = next((j for j in range(k + 1, min(len(units), k + 4)) if units[j].category == "agents" and (
+        units[j].meaning == "ego" and units[j].tokens[0].word in OWNERS or
+        any(x.word in OWNERS for x in units[k + 1:j]))), None)  # "swings his little Fiat out into ...", "steer our van"
+    reach = (6 if turning else 4) + (owned - k if owned is not None else 0)
+    for j, u in enumerate(units[k + 1: k + reach], start=k + 1):
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
@@ -2738,6 +2746,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
             r.mark(u)
             u.meaning = "used"
             return "left" if "left" in u.base else "right"
+        if j == owned:
+            continue  # "swings his little Fiat out into the left lane": the vehicle steered, then where it goes
         if u.category in ("actions",) or (u.category == "agents" and u.meaning != "none"):
             return None
     return None
