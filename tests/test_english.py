@@ -3659,3 +3659,12 @@ def test_an_oncoming_lane_beside_a_signal_is_no_junction():
     assert scene.scenario.road.junction is not True
     assert ("car", "go_straight", "front_left") in agents(
         "A red light flashes at the level crossing ahead. A van comes towards us in the oncoming lane.")
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("a kid chased a ball into the road and i slammed the brakes like three feet from him", "stop"),
+    ("A deer leapt out and I braked hard about two metres short of it.", "stop"),
+    ("A deer leapt out and I braked hard to avoid it.", "go_straight"),
+])
+def test_a_brake_that_ends_a_distance_short_of_someone_is_a_stop(prompt, action):
+    assert ("car", action, "ego") in agents(prompt)

@@ -2704,10 +2704,16 @@ def _a_stop_control(units: list[Unit]) -> bool:
                u.word == "red" for u in units)
 
 
+SHORT_OF = {"from", "short", "away", "off"}
+
+
 def _in_time(units: list[Unit]) -> bool:
-    """'I braked in time', 'stopped just in time': the brake ended in a stop short of what was ahead."""
+    """'I braked in time', 'stopped just in time', 'slammed the brakes like 2 feet from him': the brake ended in a
+    stop short of what was ahead."""
     words = [t.word for u in units for t in u.tokens]
-    return any(words[i:i + 2] == ["in", "time"] for i in range(min(3, len(words))))
+    short = any(w in DISTANCE_UNITS | {"foot", "inch", "inches"} and words[i + 1:i + 2] and words[i + 1] in SHORT_OF
+                for i, w in enumerate(words[:5]))
+    return short or any(words[i:i + 2] == ["in", "time"] for i in range(min(3, len(words))))
 
 
 def _towards_an_edge(units: list[Unit]) -> bool:
