@@ -3668,3 +3668,12 @@ def test_an_oncoming_lane_beside_a_signal_is_no_junction():
 ])
 def test_a_brake_that_ends_a_distance_short_of_someone_is_a_stop(prompt, action):
     assert ("car", action, "ego") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was waiting to turn right and a scooter came up on my right. After it passed, I turned.",
+     ("motorcycle", "go_straight", "right")),
+    ("A van is in the lane to my left. Once it has gone past I pull out.", ("car", "go_straight", "left")),
+])
+def test_going_by_said_as_a_condition_is_no_overtaking_of_the_ego(prompt, expected):
+    assert expected in agents(prompt)

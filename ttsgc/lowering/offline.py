@@ -2607,7 +2607,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                         break
         overtaken = next((x for x in (clause_units or [])[k + 1:k + 4] if x.category == "agents"), None) \
             if k is not None else None
-        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING and not (
+        went_by = strength == 1 and set(u.base.split()) & OVERTAKING <= {"pass", "past"} and \
+            clause_units is not None and k is not None and k + 1 == len(clause_units)  # "after he passed", "until
+        # it has gone past": a condition that it went by, not that it overtook us ("a motorbike passes" still does)
+        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING and not went_by and not (
                 overtaken is not None and overtaken.meaning not in ("ego", "none")):  # not "to overtake a cyclist"
             e.features.add("overtaking")
             if "undertake" in u.base.split():
