@@ -3677,3 +3677,18 @@ def test_a_brake_that_ends_a_distance_short_of_someone_is_a_stop(prompt, action)
 ])
 def test_going_by_said_as_a_condition_is_no_overtaking_of_the_ego(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm waiting to turn left, a lorry is parked on the street I'm turning into and a man is standing on the "
+     "pavement there.", ("pedestrian", "on_the_sidewalk", "at_the_destination")),
+    ("A van is coming from the road on the right and a cyclist is there too.", ("cyclist", "go_straight",
+                                                                                 "road_of_right_turn")),
+])
+def test_there_is_the_junction_road_of_the_one_named_before(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_there_is_with_a_copula_names_no_place():
+    found = agents("A van is coming from the road on the right and there is a cyclist ahead of me.")
+    assert ("cyclist", "go_straight", "front") in found, found

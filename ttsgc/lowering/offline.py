@@ -3129,6 +3129,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if not targets:
             r.mark(u)
     _numbers(r, units, subject)
+    _there(units, subject, previous_subject)
     surface = [np.entity for np in phrases if np.entity is not None and np.index < first_verb]
     r.surface = surface[:1] if by is not None and surface else []
     mentioned = [np.entity for np in phrases if np.entity is not None]
@@ -3137,6 +3138,23 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             recent.remove(e)
         recent.append(e)
     return subject
+
+
+JUNCTION_PLACES = {"destination", "road_left", "road_right", "road_straight", "cross_road"}
+
+
+def _there(units: list[Unit], subject: list[Entity], previous: list[Entity]) -> None:
+    """'a bus stopped on the street I'm turning onto, and two girls standing on the sidewalk there': 'there' is the
+    place of the one named before, on the junction's road it was put on ('there is a bus' says nothing of a place)."""
+    said = any(u.word == "there" and not (k + 1 < len(units) and units[k + 1].word in COPULAS | {"be", "been"}) and
+               not (k > 0 and units[k - 1].word in ("over", "out", "up", "down", "in", "from", "get", "got"))
+               for k, u in enumerate(units))
+    place = next((e.features & JUNCTION_PLACES for e in previous if not e.is_ego and e.features & JUNCTION_PLACES),
+                 set())
+    if said and place:
+        for e in subject:
+            if not e.is_ego and e not in previous and not e.features & JUNCTION_PLACES:
+                e.features |= place
 
 
 INVERTING_VERBS = {"come", "follow", "stand", "sit", "wait", "drive", "go", "ride", "walk", "run", "stop", "park",
