@@ -441,6 +441,12 @@ def test_the_speakers_own_vehicle_however_described_is_the_ego_and_steering_it_i
     assert expected in found and sum(a[2] == "ego" for a in found) == 1, found
 
 
+def test_whose_the_ego_car_is_in_a_screenplay_is_at_its_wheel():
+    page = ("EXT. BYPASS - NIGHT\n\nThe ego car, DEV's battered estate, rolls along the left lane. A white VAN in "
+            "the right lane pulls level with him and lurches left into his lane.")
+    assert agents(page) == [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
+
+
 @pytest.mark.parametrize("prompt, condition", [("Rain hammers the windscreen as the ego drives.", "hard_rain"),
                                                ("Rain patters on the roof as the ego drives.", "soft_rain")])
 def test_rain_said_by_what_it_does(prompt, condition):

@@ -115,9 +115,14 @@ def _protagonist(text: str, notes: list[str]) -> str:
     return _drivers_pronoun(PROTAGONIST.sub("the ego", text), notes)
 
 
+EGO_OWNER = re.compile(r"\b[Tt]he ego(?: car| vehicle)?\s*(?:,|--|\u2014|\u2013)\s*([A-Z][A-Za-z]+)'s\b")  # "The ego car,
+# PRIYA's electric hatch, hums along": whose it is
+
+
 def _screenplay_driver(text: str, notes: list[str]) -> str:
     """'Tom waits. Once the bus clears, he turns right.': in a screenplay's action lines the character at the wheel
-    (lexicon.driver_named) is the ego, and so is the pronoun the page gives them after."""
+    (lexicon.driver_named), or whose the ego car is ('the ego car, PRIYA's hatch'), is the ego, and so is the pronoun
+    the page gives them after."""
     if not SLUGLINE.search(text):
         return text
     lines = text.split("\n")
@@ -126,6 +131,7 @@ def _screenplay_driver(text: str, notes: list[str]) -> str:
         if SLUGLINE.match(line) or re.match(r"^(?: {4,}|\t)\S", line):
             continue  # a scene heading, or a character's name and what they say
         names |= {m.group(1) for m in AT_THE_WHEEL_NAME.finditer(line) if driver_named(m) == "the ego"}
+        names |= {m.group(1) for m in EGO_OWNER.finditer(line) if not known_word(m.group(1))}
     if not names:
         return text
     for k, line in enumerate(lines):

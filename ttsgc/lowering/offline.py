@@ -2171,7 +2171,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
     plural = u.tokens[-1].plural and not is_ego
-    speakers = words & {"my", "our"} or first > lo and units[first - 1].word in ("my", "our")
+    owner = first - 1  # "our little Fiat", "the ego's electric hatch": over the adjectives to whose it is
+    while owner > first - 3 and owner > 0 and units[owner].category == "word" and units[owner].word not in OWNERS:
+        owner -= 1
+    speakers = words & {"my", "our"} or owner >= 0 and (units[owner].word in ("my", "our") or (
+        units[owner].category == "agents" and units[owner].meaning == "ego" and units[owner].tokens[-1].possessive))
     if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
             u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
         is_ego = True  # "my little Fiat", "our battered old van": the speaker's own vehicle, however described
