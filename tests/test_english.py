@@ -3698,3 +3698,11 @@ def test_there_is_the_junction_road_of_the_one_named_before(prompt, expected):
 def test_there_is_with_a_copula_names_no_place():
     found = agents("A van is coming from the road on the right and there is a cyclist ahead of me.")
     assert ("cyclist", "go_straight", "front") in found, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("My car drives in the middle lane, and behind my car there is a lorry.", ("truck", "go_straight", "back")),
+    ("Child runs out from behind parked van in front of my car.", ("pedestrian", "cross_the_road", "front")),
+])
+def test_a_vehicle_or_child_with_its_own_article_or_none_is_no_kin_and_not_the_ego(prompt, expected):
+    assert expected in agents(prompt)

@@ -2141,6 +2141,10 @@ KIN = {"mother", "mom", "mum", "father", "dad", "wife", "husband", "son", "daugh
        "girlfriend", "boyfriend", "partner", "family", "toddler", "teen", "teenager", "parent", "boy", "girl"}
 
 
+KIN_NAMES = {"mom", "mum", "mommy", "mummy", "mama", "dad", "daddy", "papa", "grandma", "grandpa", "granny", "gran",
+             "nan", "nana", "grandad", "granddad"}  # kin called by name, with no article ("mom said")
+
+
 def _on_foot_in_the_scene(units: list[Unit], head: int) -> bool:
     """Whether the clause puts a person on the road, the pavement or a crossing ('my son was crossing')."""
     return any(u.category == "actions" and u.meaning in ("cross", "walk") or u.category == "positions" and u.meaning
@@ -2172,10 +2176,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             r.mark(units[k])
     plural = u.tokens[-1].plural and not is_ego
     owner = first - 1  # "our little Fiat", "the ego's electric hatch": over the adjectives to whose it is
-    while owner > first - 3 and owner > 0 and units[owner].category == "word" and units[owner].word not in OWNERS:
+    while not words and owner > first - 3 and owner > 0 and units[owner].category == "word" and \
+            units[owner].word not in OWNERS | DETERMINERS | AUXILIARIES | {"there", "here"}:
         owner -= 1
-    speakers = words & {"my", "our"} or owner >= 0 and (units[owner].word in ("my", "our") or (
-        units[owner].category == "agents" and units[owner].meaning == "ego" and units[owner].tokens[-1].possessive))
+    speakers = words & {"my", "our"} or not words and owner >= 0 and (
+        units[owner].category == "word" and units[owner].word in ("my", "our") or
+        units[owner].category == "agents" and units[owner].meaning == "ego" and units[owner].tokens[-1].possessive)
     if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
             u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
         is_ego = True  # "my little Fiat", "our battered old van": the speaker's own vehicle, however described
@@ -2196,8 +2202,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
-    if (words & {"my", "our", "his", "her", "their"} or not words and first == head and not u.tokens[-1].plural) \
-            and u.tokens[-1].base in KIN and not _on_foot_in_the_scene(units, head):
+    if (words & {"my", "our", "his", "her", "their"} and u.tokens[-1].base in KIN or not words and first == head and
+            u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
         # "mom said no more driving": kin named as a name, by a text's writer
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
