@@ -447,6 +447,13 @@ def test_whose_the_ego_car_is_in_a_screenplay_is_at_its_wheel():
     assert agents(page) == [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
 
 
+def test_the_kin_of_a_screenplay_driver_named_by_her_pronoun_ride_along():
+    page = ("EXT. QUAYSIDE - NIGHT\n\nANA and her grumpy little brother sit in silence. A LORRY rumbles past on "
+            "the left. Ana waits, then pulls out behind it.")
+    found = agents(page)
+    assert not any(a[0] == "pedestrian" for a in found) and [a[0] for a in found].count("truck") == 1, found
+
+
 @pytest.mark.parametrize("prompt, condition", [("Rain hammers the windscreen as the ego drives.", "hard_rain"),
                                                ("Rain patters on the roof as the ego drives.", "soft_rain")])
 def test_rain_said_by_what_it_does(prompt, condition):

@@ -75,6 +75,10 @@ NOT_NAMES = {"The", "A", "An", "Our", "My", "His", "Her", "Their", "Van", "Cab",
 OTHER_PEOPLE = {"he": r"guy|man|boy|dude|bloke|lad|gentleman|fella|fellow|chap|husband|father|dad|son|brother|"
                       r"policeman|officer",
                 "she": r"woman|lady|girl|mother|mom|mum|wife|daughter|sister|policewoman"}
+AFTER_AN_OBJECT = r"and|or|but|nor|on|in|at|to|from|with|off|as|so|then|up|down|out|over|past|by|into|onto|again|too|" \
+    r"just|before|after|while|when|until|till|through|across|around|round|behind|ahead|alone|now|there|here|" \
+    r"because|since|for|the|a|an|go|pass|through|is|was|slowly|suddenly|completely"  # words that follow 'her' as an
+# object ("overtakes her on the left"), not as an owner ("her son")
 POSSESSED = r"(?:lane|left|right|way|path|front|side|mirror|wing|bumper|brakes?|direction|approach|exit|turn|rear|" \
             r"back|nose|bonnet|hood|door|windows?|wheel|speed|van|car|cab|taxi|truck|lorry|bus|vehicle|route|" \
             r"nearside|offside|view|line|mirrors|lights|horn|own|indicator|signal)"
@@ -419,6 +423,8 @@ def _drivers_pronoun(text: str, notes: list[str]) -> str:
         tail = re.sub(r"\b(?:he|him|himself)\b", "the ego", tail, flags=re.I)
     else:
         tail = re.sub(rf"\bher\b(?=\s+{POSSESSED}\b)", "our", tail, flags=re.I)
+        tail = re.sub(rf"\bher\b(?=\s+(?!(?:{AFTER_AN_OBJECT})\b)[a-z])", "our", tail, flags=re.I)  # "her sullen
+        # teenage son": hers, as "his" is; "level with her and", "ahead of her": her
         tail = re.sub(r"\b(?:she|her|herself)\b", "the ego", tail, flags=re.I)
     notes.append(f"read '{pronoun}' as the ego's driver")
     return head + tail

@@ -2179,8 +2179,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     while not words and owner > first - 3 and owner > 0 and units[owner].category == "word" and \
             units[owner].word not in OWNERS | DETERMINERS | AUXILIARIES | {"there", "here"}:
         owner -= 1
-    speakers = words & {"my", "our"} or not words and owner >= 0 and (
-        units[owner].category == "word" and units[owner].word in ("my", "our") or
+    owners = words & OWNERS or ({units[owner].word} & OWNERS if not words and owner >= 0 and
+                                units[owner].category == "word" else set())
+    speakers = owners & {"my", "our"} or not words and owner >= 0 and (
         units[owner].category == "agents" and units[owner].meaning == "ego" and units[owner].tokens[-1].possessive)
     if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
             u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
@@ -2202,7 +2203,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
-    if (words & {"my", "our", "his", "her", "their"} and u.tokens[-1].base in KIN or not words and first == head and
+    if (owners - {"your"} and u.tokens[-1].base in KIN or not words and first == head and
             u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
         # "mom said no more driving": kin named as a name, by a text's writer
