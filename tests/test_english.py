@@ -448,7 +448,7 @@ def test_whose_the_ego_car_is_in_a_screenplay_is_at_its_wheel():
 
 
 def test_the_kin_of_a_screenplay_driver_named_by_her_pronoun_ride_along():
-    page = ("EXT. QUAYSIDE - NIGHT\n\nANA and her grumpy little brother sit in silence. A LORRY rumbles past on "
+    page = ("EXT. QUAYSIDE - NIGHT\n\nANA and her grumpy teenage son sit in silence. A LORRY rumbles past on "
             "the left. Ana waits, then pulls out behind it.")
     found = agents(page)
     assert not any(a[0] == "pedestrian" for a in found) and [a[0] for a in found].count("truck") == 1, found
