@@ -3713,3 +3713,8 @@ def test_there_is_with_a_copula_names_no_place():
 ])
 def test_a_vehicle_or_child_with_its_own_article_or_none_is_no_kin_and_not_the_ego(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_a_bare_guy_riding_after_a_cyclist_is_the_cyclist():
+    found = agents("a cyclist was coming up on my left. guy was riding right next to us and then he went straight on")
+    assert [a[0] for a in found] == ["car", "cyclist"], found

@@ -2243,6 +2243,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
                     and e.count == 1 for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
+    if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
+        definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
     if not words and count is None and not plural and not label and head + 1 < len(units) and \
             units[head + 1].category == "positions" and any(
                 e.head.split()[-1] == u.base.split()[-1] and not e.is_ego and e.count == 1 and
