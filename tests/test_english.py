@@ -416,6 +416,44 @@ def test_a_screenplay_character_who_drives_is_at_the_ego_wheel_and_their_kin_rid
                             ("car", "stop", "ego")]
 
 
+def test_the_pronoun_of_a_screenplay_character_at_the_wheel_is_the_ego():
+    page = ("EXT. HARBOUR ROAD - NIGHT\n\nMAYA's hatchback idles at the give-way line. A TAXI sweeps past from the "
+            "right. Maya waits.\n\nOnce the taxi has gone, she turns left.")
+    assert agents(page) == [("car", "go_straight", "road_of_right_turn"), ("car", "stop", "ego"),
+                            ("car", "turn_left", "ego")]
+
+
+def test_the_storys_hero_and_their_pronoun_are_the_ego():
+    found = agents("A tipper truck is parked just ahead of our heroine. She glances in her mirror and eases out "
+                   "into the right lane. A cyclist in that lane is coming up behind her.")
+    assert found == [("car", "change_lane_to_right", "ego"), ("cyclist", "go_straight", "back_right"),
+                     ("truck", "stop", "front")], found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus stops ahead. My trusty old Volvo pulls into the left lane.", ("car", "change_lane_to_left", "ego")),
+    ("I swing our little Fiat out into the right lane.", ("car", "change_lane_to_right", "ego")),
+    ("I steer my hatchback into the left lane.", ("car", "change_lane_to_left", "ego")),
+])
+def test_the_speakers_own_vehicle_however_described_is_the_ego_and_steering_it_into_a_lane_changes_lane(
+        prompt, expected):
+    found = agents(prompt)
+    assert expected in found and sum(a[2] == "ego" for a in found) == 1, found
+
+
+def test_whose_the_ego_car_is_in_a_screenplay_is_at_its_wheel():
+    page = ("EXT. BYPASS - NIGHT\n\nThe ego car, DEV's battered estate, rolls along the left lane. A white VAN in "
+            "the right lane pulls level with him and lurches left into his lane.")
+    assert agents(page) == [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
+
+
+def test_the_kin_of_a_screenplay_driver_named_by_her_pronoun_ride_along():
+    page = ("EXT. QUAYSIDE - NIGHT\n\nANA and her grumpy teenage son sit in silence. A LORRY rumbles past on "
+            "the left. Ana waits, then pulls out behind it.")
+    found = agents(page)
+    assert not any(a[0] == "pedestrian" for a in found) and [a[0] for a in found].count("truck") == 1, found
+
+
 @pytest.mark.parametrize("prompt, condition", [("Rain hammers the windscreen as the ego drives.", "hard_rain"),
                                                ("Rain patters on the roof as the ego drives.", "soft_rain")])
 def test_rain_said_by_what_it_does(prompt, condition):
@@ -3735,3 +3773,68 @@ def test_a_vehicle_stopped_in_front_of_the_ego_forever_blocks_it(prompt, action)
 def test_a_roads_number_before_an_agent_counts_nothing(prompt, kind):
     found = agents(prompt)
     assert [a[0] for a in found].count(kind) == 1 and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt", [
+    "Warm light on the shop windows. A cyclist pedals along ahead of us.",
+    "Pale light over the fields as a tractor trundles along in front of us.",
+])
+def test_light_that_lights_the_scene_is_no_traffic_light(prompt):
+    assert "traffic_light" not in road(prompt).required_signals
+
+
+def test_a_light_named_by_its_street_is_still_a_traffic_light():
+    assert "traffic_light" in road("At the Elm Street light a pickup is stalled in front of us.").required_signals
+
+
+def test_an_oncoming_lane_beside_a_signal_is_no_junction():
+    scene = lower("A red light flashes at the level crossing ahead. A tractor comes towards us in the oncoming lane.")
+    assert scene.scenario.road.junction is not True
+    assert ("car", "go_straight", "front_left") in agents(
+        "A red light flashes at the level crossing ahead. A van comes towards us in the oncoming lane.")
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("a kid chased a ball into the road and i slammed the brakes like three feet from him", "stop"),
+    ("A deer leapt out and I braked hard about two metres short of it.", "stop"),
+    ("A deer leapt out and I braked hard to avoid it.", "go_straight"),
+])
+def test_a_brake_that_ends_a_distance_short_of_someone_is_a_stop(prompt, action):
+    assert ("car", action, "ego") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was waiting to turn right and a scooter came up on my right. After it passed, I turned.",
+     ("motorcycle", "go_straight", "right")),
+    ("A van is in the lane to my left. Once it has gone past I pull out.", ("car", "go_straight", "left")),
+])
+def test_going_by_said_as_a_condition_is_no_overtaking_of_the_ego(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm waiting to turn left, a lorry is parked on the street I'm turning into and a man is standing on the "
+     "pavement there.", ("pedestrian", "on_the_sidewalk", "at_the_destination")),
+    ("A van is coming from the road on the right and a cyclist is there too.", ("cyclist", "go_straight",
+                                                                                 "road_of_right_turn")),
+])
+def test_there_is_the_junction_road_of_the_one_named_before(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_there_is_with_a_copula_names_no_place():
+    found = agents("A van is coming from the road on the right and there is a cyclist ahead of me.")
+    assert ("cyclist", "go_straight", "front") in found, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("My car drives in the middle lane, and behind my car there is a lorry.", ("truck", "go_straight", "back")),
+    ("Child runs out from behind parked van in front of my car.", ("pedestrian", "cross_the_road", "front")),
+])
+def test_a_vehicle_or_child_with_its_own_article_or_none_is_no_kin_and_not_the_ego(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_bare_guy_riding_after_a_cyclist_is_the_cyclist():
+    found = agents("a cyclist was coming up on my left. guy was riding right next to us and then he went straight on")
+    assert [a[0] for a in found] == ["car", "cyclist"], found

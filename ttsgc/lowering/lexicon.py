@@ -243,7 +243,7 @@ def _screenplay(text: str) -> str:
         elif SCREEN_DIRECTIONS.match(line) or re.match(r"^(?: {4,}|\t)\S", line):
             out.append("")
         else:
-            out.append(AT_THE_WHEEL_NAME.sub(_driver_named, line))
+            out.append(AT_THE_WHEEL_NAME.sub(driver_named, line))
     return "\n".join(out)
 
 
@@ -258,7 +258,7 @@ def known_word(name: str) -> bool:
     return name.lower() in lex.vocabulary or name.lower() in lex.function_words
 
 
-def _driver_named(m: re.Match) -> str:
+def driver_named(m: re.Match) -> str:
     """In a screenplay's action lines a character who drives ('Tom waits', 'Riley pulls straight ahead') is at
     the wheel of the ego; a word the lexicon knows ('A BUS', 'Then', 'Buses') is no name."""
     word = m.group(1)

@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, field
 
 from ttsgc import vocabulary as V
-from ttsgc.lowering.lexicon import known_word, lexicon, matches, tokenize
+from ttsgc.lowering.lexicon import AT_THE_WHEEL_NAME, SLUGLINE, driver_named, known_word, lexicon, matches, tokenize
 
 SALUTATION = re.compile(r"^\s*(?:(?:hi|hello|hey|hiya|dear|greetings|hallo|good\s+(?:morning|afternoon|evening|day)|"
                         r"morning|afternoon|evening)\b[^.!?,\n]{0,40}[,!]?|(?:hi|hello|hey|hiya|dear|greetings|hallo|"
@@ -75,6 +75,10 @@ NOT_NAMES = {"The", "A", "An", "Our", "My", "His", "Her", "Their", "Van", "Cab",
 OTHER_PEOPLE = {"he": r"guy|man|boy|dude|bloke|lad|gentleman|fella|fellow|chap|husband|father|dad|son|brother|"
                       r"policeman|officer",
                 "she": r"woman|lady|girl|mother|mom|mum|wife|daughter|sister|policewoman"}
+AFTER_AN_OBJECT = r"and|or|but|nor|on|in|at|to|from|with|off|as|so|then|up|down|out|over|past|by|into|onto|again|too|" \
+    r"just|before|after|while|when|until|till|through|across|around|round|behind|ahead|alone|now|there|here|" \
+    r"because|since|for|the|a|an|go|pass|through|is|was|slowly|suddenly|completely"  # words that follow 'her' as an
+# object ("overtakes her on the left"), not as an owner ("her son")
 POSSESSED = r"(?:lane|left|right|way|path|front|side|mirror|wing|bumper|brakes?|direction|approach|exit|turn|rear|" \
             r"back|nose|bonnet|hood|door|windows?|wheel|speed|van|car|cab|taxi|truck|lorry|bus|vehicle|route|" \
             r"nearside|offside|view|line|mirrors|lights|horn|own|indicator|signal)"
@@ -98,7 +102,50 @@ def read_narration(prompt: str) -> Narration:
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
+    text = _screenplay_driver(text, notes)
+    text = _protagonist(text, notes)
     return Narration(text, notes)
+
+
+PROTAGONIST = re.compile(r"\b(?:our|the) (?:hero|heroine|protagonist)\b", re.I)
+
+
+def _protagonist(text: str, notes: list[str]) -> str:
+    """'just ahead of our HERO. He checks over his shoulder': the story's hero is the ego, and so is the pronoun
+    the story gives them after."""
+    if not PROTAGONIST.search(text) or "the ego" in text:
+        return text
+    notes.append("read the story's hero as the ego")
+    return _drivers_pronoun(PROTAGONIST.sub("the ego", text), notes)
+
+
+EGO_OWNER = re.compile(r"\b[Tt]he ego(?: car| vehicle)?\s*(?:,|--|\u2014|\u2013)\s*([A-Z][A-Za-z]+)'s\b")  # "The ego car,
+# PRIYA's electric hatch, hums along": whose it is
+
+
+def _screenplay_driver(text: str, notes: list[str]) -> str:
+    """'Tom waits. Once the bus clears, he turns right.': in a screenplay's action lines the character at the wheel
+    (lexicon.driver_named), or whose the ego car is ('the ego car, PRIYA's hatch'), is the ego, and so is the pronoun
+    the page gives them after."""
+    if not SLUGLINE.search(text):
+        return text
+    lines = text.split("\n")
+    names = set()
+    for k, line in enumerate(lines):
+        if SLUGLINE.match(line) or re.match(r"^(?: {4,}|\t)\S", line):
+            continue  # a scene heading, or a character's name and what they say
+        names |= {m.group(1) for m in AT_THE_WHEEL_NAME.finditer(line) if driver_named(m) == "the ego"}
+        names |= {m.group(1) for m in EGO_OWNER.finditer(line) if not known_word(m.group(1))}
+    if not names:
+        return text
+    for k, line in enumerate(lines):
+        if not (SLUGLINE.match(line) or re.match(r"^(?: {4,}|\t)\S", line)):
+            for name in names:  # "MAYA's hatchback idles ... Maya waits": the character by any case of the name
+                lines[k] = re.sub(rf"\b{re.escape(name)}\b", "the ego", line, flags=re.I)
+                line = lines[k]
+    named = "\n".join(lines)
+    notes.append("read the screenplay's character at the wheel as the ego")
+    return _drivers_pronoun(named, notes)
 
 
 def _without_letter_frame(text: str, notes: list[str]) -> str:
@@ -376,6 +423,8 @@ def _drivers_pronoun(text: str, notes: list[str]) -> str:
         tail = re.sub(r"\b(?:he|him|himself)\b", "the ego", tail, flags=re.I)
     else:
         tail = re.sub(rf"\bher\b(?=\s+{POSSESSED}\b)", "our", tail, flags=re.I)
+        tail = re.sub(rf"\bher\b(?=\s+(?!(?:{AFTER_AN_OBJECT})\b)[a-z])", "our", tail, flags=re.I)  # "her sullen
+        # teenage son": hers, as "his" is; "level with her and", "ahead of her": her
         tail = re.sub(r"\b(?:she|her|herself)\b", "the ego", tail, flags=re.I)
     notes.append(f"read '{pronoun}' as the ego's driver")
     return head + tail

@@ -95,10 +95,10 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
               "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
-LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid"}  # "... into the
+LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid", "swing"}  # "... into the
 # left lane": a lane change
 STEERING = {"move", "steer", "ease", "inch", "creep", "slide", "skid", "veer", "swerve", "pull", "merge", "shift", "go",
-            "head", "drift"}
+            "head", "drift", "swing"}
 RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle",
            "tear"}
 
@@ -2166,6 +2166,10 @@ KIN = {"mother", "mom", "mum", "father", "dad", "wife", "husband", "son", "daugh
        "girlfriend", "boyfriend", "partner", "family", "toddler", "teen", "teenager", "parent", "boy", "girl"}
 
 
+KIN_NAMES = {"mom", "mum", "mommy", "mummy", "mama", "dad", "daddy", "papa", "grandma", "grandpa", "granny", "gran",
+             "nan", "nana", "grandad", "granddad"}  # kin called by name, with no article ("mom said")
+
+
 def _on_foot_in_the_scene(units: list[Unit], head: int) -> bool:
     """Whether the clause puts a person on the road, the pavement or a crossing ('my son was crossing')."""
     return any(u.category == "actions" and u.meaning in ("cross", "walk") or u.category == "positions" and u.meaning
@@ -2196,6 +2200,17 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
     plural = u.tokens[-1].plural and not is_ego
+    owner = first - 1  # "our little Fiat", "the ego's electric hatch": over the adjectives to whose it is
+    while not words and owner > first - 3 and owner > 0 and units[owner].category == "word" and \
+            units[owner].word not in OWNERS | DETERMINERS | AUXILIARIES | {"there", "here"}:
+        owner -= 1
+    owners = words & OWNERS or ({units[owner].word} & OWNERS if not words and owner >= 0 and
+                                units[owner].category == "word" else set())
+    speakers = owners & {"my", "our"} or not words and owner >= 0 and (
+        units[owner].category == "agents" and units[owner].meaning == "ego" and units[owner].tokens[-1].possessive)
+    if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
+            u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
+        is_ego = True  # "my little Fiat", "our battered old van": the speaker's own vehicle, however described
     if plural and count == 1 and "of" in words and words & DEFINITE and head > first and \
             units[first].category == "numbers" and units[first].word == "one":
         plural, count = False, None  # "one of the other cars": a member of the group named before
@@ -2213,8 +2228,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
-    if (words & {"my", "our", "his", "her", "their"} or not words and first == head and not u.tokens[-1].plural) \
-            and u.tokens[-1].base in KIN and not _on_foot_in_the_scene(units, head):
+    if (owners - {"your"} and u.tokens[-1].base in KIN or not words and first == head and
+            u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
         # "mom said no more driving": kin named as a name, by a text's writer
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
@@ -2253,6 +2268,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
                     and e.count == 1 for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
+    if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
+        definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
     if not words and count is None and not plural and not label and head + 1 < len(units) and \
             units[head + 1].category == "positions" and any(
                 e.head.split()[-1] == u.base.split()[-1] and not e.is_ego and e.count == 1 and
@@ -2551,6 +2568,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "a Toyota behind me ... cut in directly in front of me": the first place said is its start
         if u.meaning == "sidewalk" and e.type != "pedestrian" and "corner" in {t.word for t in u.tokens}:
             return  # "the cyclist turned right at the next corner": at the junction, not on the pavement
+        if u.meaning == "road_straight" and {t.word for t in u.tokens} & {"lane", "lanes"}:
+            e.features.add("oncoming_lane")  # "in the oncoming lane": a lane of this road, no junction's arm
         if u.meaning in ("shoulder", "sidewalk"):
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
@@ -2628,7 +2647,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                         break
         overtaken = next((x for x in (clause_units or [])[k + 1:k + 4] if x.category == "agents"), None) \
             if k is not None else None
-        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING and not (
+        went_by = strength == 1 and set(u.base.split()) & OVERTAKING <= {"pass", "past"} and \
+            clause_units is not None and k is not None and k + 1 == len(clause_units)  # "after he passed", "until
+        # it has gone past": a condition that it went by, not that it overtook us ("a motorbike passes" still does)
+        if action == "move" and not e.is_ego and set(u.base.split()) & OVERTAKING and not went_by and not (
                 overtaken is not None and overtaken.meaning not in ("ego", "none")):  # not "to overtake a cyclist"
             e.features.add("overtaking")
             if "undertake" in u.base.split():
@@ -2727,10 +2749,16 @@ def _a_stop_control(units: list[Unit]) -> bool:
                u.word == "red" for u in units)
 
 
+SHORT_OF = {"from", "short", "away", "off"}
+
+
 def _in_time(units: list[Unit]) -> bool:
-    """'I braked in time', 'stopped just in time': the brake ended in a stop short of what was ahead."""
+    """'I braked in time', 'stopped just in time', 'slammed the brakes like 2 feet from him': the brake ended in a
+    stop short of what was ahead."""
     words = [t.word for u in units for t in u.tokens]
-    return any(words[i:i + 2] == ["in", "time"] for i in range(min(3, len(words))))
+    short = any(w in DISTANCE_UNITS | {"foot", "inch", "inches"} and words[i + 1:i + 2] and words[i + 1] in SHORT_OF
+                for i, w in enumerate(words[:5]))
+    return short or any(words[i:i + 2] == ["in", "time"] for i in range(min(3, len(words))))
 
 
 def _towards_an_edge(units: list[Unit]) -> bool:
@@ -2753,7 +2781,11 @@ def _onto_the_roadside(units: list[Unit]) -> bool:
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
     turning = units[k].meaning in ("turn", "u_turn")
-    for j, u in enumerate(units[k + 1: k + (6 if turning else 4)], start=k + 1):
+    owned = next((j for j in range(k + 1, min(len(units), k + 4)) if units[j].category == "agents" and (
+        units[j].meaning == "ego" and units[j].tokens[0].word in OWNERS or
+        any(x.word in OWNERS for x in units[k + 1:j]))), None)  # "swings his little Fiat out into ...", "steer our van"
+    reach = (6 if turning else 4) + (owned - k if owned is not None else 0)
+    for j, u in enumerate(units[k + 1: k + reach], start=k + 1):
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
             if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
@@ -2765,6 +2797,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
             r.mark(u)
             u.meaning = "used"
             return "left" if "left" in u.base else "right"
+        if j == owned:
+            continue  # "swings his little Fiat out into the left lane": the vehicle steered, then where it goes
         if u.category in ("actions",) or (u.category == "agents" and u.meaning != "none"):
             return None
     return None
@@ -3147,6 +3181,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if e.type == "pedestrian" and not e.is_ego and e.relative_to is None:
             e.relative_to = _vehicle_got_out_of(units, phrases, recent, e)  # at the vehicle it climbed out of
     _numbers(r, units, subject)
+    _there(units, subject, previous_subject)
     surface = [np.entity for np in phrases if np.entity is not None and np.index < first_verb]
     r.surface = surface[:1] if by is not None and surface else []
     mentioned = [np.entity for np in phrases if np.entity is not None]
@@ -3155,6 +3190,23 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             recent.remove(e)
         recent.append(e)
     return subject
+
+
+JUNCTION_PLACES = {"destination", "road_left", "road_right", "road_straight", "cross_road"}
+
+
+def _there(units: list[Unit], subject: list[Entity], previous: list[Entity]) -> None:
+    """'a bus stopped on the street I'm turning onto, and two girls standing on the sidewalk there': 'there' is the
+    place of the one named before, on the junction's road it was put on ('there is a bus' says nothing of a place)."""
+    said = any(u.word == "there" and not (k + 1 < len(units) and units[k + 1].word in COPULAS | {"be", "been"}) and
+               not (k > 0 and units[k - 1].word in ("over", "out", "up", "down", "in", "from", "get", "got"))
+               for k, u in enumerate(units))
+    place = next((e.features & JUNCTION_PLACES for e in previous if not e.is_ego and e.features & JUNCTION_PLACES),
+                 set())
+    if said and place:
+        for e in subject:
+            if not e.is_ego and e not in previous and not e.features & JUNCTION_PLACES:
+                e.features |= place
 
 
 INVERTING_VERBS = {"come", "follow", "stand", "sit", "wait", "drive", "go", "ride", "walk", "run", "stop", "park",
@@ -4409,7 +4461,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
         road.junction is None and "traffic_light" in road.required_signals and (any(
             f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
-            or any("road_straight" in e.features for e in r.entities)))
+            or any("road_straight" in e.features and "oncoming_lane" not in e.features for e in r.entities)))
     # "a cyclist running the red light from the left", "an oncoming car at the lights": a signalised junction
     if junction_words or "stop_line" in road.required_objects:
         _pulling_out_of_a_junction_turns(r)
