@@ -3605,3 +3605,22 @@ def test_a_vehicle_placed_beside_the_ego_that_goes_past_starts_beside_it(prompt,
 ])
 def test_a_vehicle_stopped_in_front_of_the_ego_forever_blocks_it(prompt, action):
     assert ("truck", action, "front") in agents(prompt)
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("4.2 Cyclist crossing test\n4.2.1 The subject vehicle shall travel at 40 km/h.\n"
+     "4.2.2 A cyclist target shall cross the road in front of the subject vehicle.",
+     [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
+    ("2.1.3 A bus shall be stopped ahead of the subject vehicle.\n2.1.4 The subject vehicle shall stop behind it.",
+     [("car", "stop", "ego"), ("bus", "stop", "front")]),
+    ("12.3.4 A pedestrian shall walk on the pavement to the right of the vehicle under test.",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]),
+    ("9.1 A truck shall overtake the ego on the left.", [("car", "go_straight", "ego"),
+                                                         ("truck", "go_straight", "back_left")]),
+])
+def test_the_clause_numbers_of_a_formal_document_count_nothing(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_a_numbered_section_heading_gives_no_speed_limit():
+    found = road("5.3 Speed limit information\n5.3.1 The subject vehicle shall drive straight at 60 km/h.")
+    assert not found.required_objects and not found.required_signals, found
