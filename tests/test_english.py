@@ -3624,3 +3624,31 @@ def test_the_clause_numbers_of_a_formal_document_count_nothing(prompt, expected)
 def test_a_numbered_section_heading_gives_no_speed_limit():
     found = road("5.3 Speed limit information\n5.3.1 The subject vehicle shall drive straight at 60 km/h.")
     assert not found.required_objects and not found.required_signals, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Left turn case. The ego turns left at the lights, a van comes the other way. Priya suggested a cyclist as "
+     "well, not in this version.", [("car", "turn_left", "ego"), ("car", "go_straight", "road_of_straight")]),
+    ("Cut-in case: a truck in the right lane cuts in front of the ego. Marco wanted a second truck behind it: "
+     "deferred, maybe later.", [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "right")]),
+    ("A child runs out in front of the ego. The team decided to leave out the parked cars for v1.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("The ego waits at the red light. We agreed to drop the bus and keep one car ahead, which also waits.",
+     [("car", "stop", "ego"), ("car", "stop", "front")]),
+])
+def test_what_minutes_say_was_proposed_and_turned_down_or_left_out_is_no_agent(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus stops to drop off two kids in front of the ego.", ("pedestrian", "cross_the_road", "front")),
+    ("Jo asked for a parked van ahead of the ego too, agreed.", ("car", "stop", "front")),
+])
+def test_a_proposal_the_minutes_keep_stays_in_the_scene(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_the_teams_own_schedule_starts_no_stage():
+    scene = lower("The ego drives straight on and a jogger crosses in front of it.\nAction: PK to build it, "
+                  "target next sprint, review next week.").scenario
+    assert len(scene.stages) == 1 and len(list(scene.agents())) == 2
