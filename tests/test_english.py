@@ -3652,3 +3652,22 @@ def test_the_teams_own_schedule_starts_no_stage():
     scene = lower("The ego drives straight on and a jogger crosses in front of it.\nAction: PK to build it, "
                   "target next sprint, review next week.").scenario
     assert len(scene.stages) == 1 and len(list(scene.agents())) == 2
+
+
+@pytest.mark.parametrize("prompt, required, without", [
+    ("A T-junction without stop or give-way signs; the ego turns right.", (), ("stop", "yield")),
+    ("At a crossroads with stop and yield signs the ego goes straight.", ("stop", "yield"), ()),
+    ("The test shall take place at a junction without traffic lights, stop or yield signs.", (),
+     ("traffic_light", "stop", "yield")),
+])
+def test_a_sign_noun_said_once_for_two_signs_names_both(prompt, required, without):
+    found = road(prompt)
+    assert set(found.required_signals) == set(required) and set(found.without_signals) == set(without), found
+
+
+@pytest.mark.parametrize("prompt", [
+    "Yielding to an ambulance\nThe ego moves into the right lane so the ambulance behind can pass.",
+    "Giving way to buses: the ego waits while a bus pulls out in front of it.",
+])
+def test_yielding_to_someone_is_the_act_not_a_sign(prompt):
+    assert "yield" not in road(prompt).required_signals

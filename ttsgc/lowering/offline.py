@@ -897,7 +897,13 @@ def _road(r: _Reader) -> RoadSpec:
                 put(said, True)  # "at a crosswalk? probably not": said, then taken back
             r.mark(u)
             continue
-        if u.category == "actions" and u.base in ("yield", "give way") and (
+        if u.category == "actions" and u.base == "stop" and _sign_said_once_for_two(units, k):
+            put("stop", negated)  # "without stop or give-way signs": the stop sign, its noun said once
+            r.mark(u)
+            u.category, u.meaning = "road", "stop"
+            continue
+        yielding_to = k + 1 < len(units) and units[k + 1].word == "to"  # "yielding to emergency vehicles": the act
+        if u.category == "actions" and u.base in ("yield", "give way") and not yielding_to and (
                 k == 0 or units[k - 1].category in ("comma", "word")
                 and units[k - 1].word in (",", "a", "at", "with", "the")
                 or (k + 1 < len(units) and units[k + 1].word in ("sign", "signs", "junction", "line", "markings"))):
@@ -1002,6 +1008,15 @@ def _road(r: _Reader) -> RoadSpec:
     if junction is not None:
         spec["junction"] = junction
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+def _sign_said_once_for_two(units: list[Unit], k: int) -> bool:
+    """'stop or give way signs', 'stop and yield signs': a first sign named by its word alone, its noun said with
+    the second."""
+    if k + 2 >= len(units) or units[k + 1].word not in ("or", "and", "nor", ","):
+        return False
+    nxt = units[k + 2]
+    return nxt.category == "road" and nxt.meaning in ("yield", "stop") and nxt.tokens[-1].word in ("sign", "signs")
 
 
 LANE_MOVES = {"cut_in", "lane_change", "lane_left", "lane_right"}
