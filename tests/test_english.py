@@ -3838,3 +3838,70 @@ def test_a_vehicle_or_child_with_its_own_article_or_none_is_no_kin_and_not_the_e
 def test_a_bare_guy_riding_after_a_cyclist_is_the_cyclist():
     found = agents("a cyclist was coming up on my left. guy was riding right next to us and then he went straight on")
     assert [a[0] for a in found] == ["car", "cyclist"], found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("4.2 Cyclist crossing test\n4.2.1 The subject vehicle shall travel at 40 km/h.\n"
+     "4.2.2 A cyclist target shall cross the road in front of the subject vehicle.",
+     [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
+    ("2.1.3 A bus shall be stopped ahead of the subject vehicle.\n2.1.4 The subject vehicle shall stop behind it.",
+     [("car", "stop", "ego"), ("bus", "stop", "front")]),
+    ("12.3.4 A pedestrian shall walk on the pavement to the right of the vehicle under test.",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]),
+    ("9.1 A truck shall overtake the ego on the left.", [("car", "go_straight", "ego"),
+                                                         ("truck", "go_straight", "back_left")]),
+])
+def test_the_clause_numbers_of_a_formal_document_count_nothing(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_a_numbered_section_heading_gives_no_speed_limit():
+    found = road("5.3 Speed limit information\n5.3.1 The subject vehicle shall drive straight at 60 km/h.")
+    assert not found.required_objects and not found.required_signals, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Left turn case. The ego turns left at the lights, a van comes the other way. Priya suggested a cyclist as "
+     "well, not in this version.", [("car", "turn_left", "ego"), ("car", "go_straight", "road_of_straight")]),
+    ("Cut-in case: a truck in the right lane cuts in front of the ego. Marco wanted a second truck behind it: "
+     "deferred, maybe later.", [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "right")]),
+    ("A child runs out in front of the ego. The team decided to leave out the parked cars for v1.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("The ego waits at the red light. We agreed to drop the bus and keep one car ahead, which also waits.",
+     [("car", "stop", "ego"), ("car", "stop", "front")]),
+])
+def test_what_minutes_say_was_proposed_and_turned_down_or_left_out_is_no_agent(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus stops to drop off two kids in front of the ego.", ("pedestrian", "cross_the_road", "front")),
+    ("Jo asked for a parked van ahead of the ego too, agreed.", ("car", "stop", "front")),
+])
+def test_a_proposal_the_minutes_keep_stays_in_the_scene(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_the_teams_own_schedule_starts_no_stage():
+    scene = lower("The ego drives straight on and a jogger crosses in front of it.\nAction: PK to build it, "
+                  "target next sprint, review next week.").scenario
+    assert len(scene.stages) == 1 and len(list(scene.agents())) == 2
+
+
+@pytest.mark.parametrize("prompt, required, without", [
+    ("A T-junction without stop or give-way signs; the ego turns right.", (), ("stop", "yield")),
+    ("At a crossroads with stop and yield signs the ego goes straight.", ("stop", "yield"), ()),
+    ("The test shall take place at a junction without traffic lights, stop or yield signs.", (),
+     ("traffic_light", "stop", "yield")),
+])
+def test_a_sign_noun_said_once_for_two_signs_names_both(prompt, required, without):
+    found = road(prompt)
+    assert set(found.required_signals) == set(required) and set(found.without_signals) == set(without), found
+
+
+@pytest.mark.parametrize("prompt", [
+    "Yielding to an ambulance\nThe ego moves into the right lane so the ambulance behind can pass.",
+    "Giving way to buses: the ego waits while a bus pulls out in front of it.",
+])
+def test_yielding_to_someone_is_the_act_not_a_sign(prompt):
+    assert "yield" not in road(prompt).required_signals

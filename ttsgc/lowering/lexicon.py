@@ -311,14 +311,34 @@ def _verbs() -> frozenset:
     return frozenset(words[0] for words, (category, _) in lexicon().phrases.items() if category == "actions")
 
 
+OUTLINE_NUMBER = re.compile(r"^(\s*)(?:\u00a7\s*)?(?:\d{1,3}(?:\.\d{1,3})+\.?|\d{1,3}\.)[ \t]+(?=\S)")
+
+
+def _without_outline_numbers(lines: list[str]) -> list[str]:
+    """A formal document numbers its clauses ('6.3.1 The vehicle under test shall ...', '11.2 Pedestrian on a
+    marked crossing'): the number is where the clause sits, no count or speed. A numbered line that is no
+    sentence (no verb-bearing ending, a few words) is the heading of a section, read like a title."""
+    out = []
+    for line in lines:
+        m = OUTLINE_NUMBER.match(line)
+        if m is None:
+            out.append(line)
+            continue
+        rest = line[m.end():].rstrip()
+        heading = "." in m.group(0).strip().rstrip(".") and not rest.endswith((".", "!", "?", ":", ";")) \
+            and len(rest.split()) <= 10
+        out.append("\u00a7 " + rest + "." if heading else m.group(1) + rest)
+    return out
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
     if "\n" not in text.strip():
-        return _keyed_agents(text)
+        return _keyed_agents("\n".join(_without_outline_numbers([text])))
     out = []
-    lines = _without_answer_choices(text.strip().splitlines())
+    lines = _without_answer_choices(_without_outline_numbers(text.strip().splitlines()))
     staged = False
     phased = any((m := KEY_LINE.match(line)) and PHASE_KEY.fullmatch(m.group(1).strip().lower()) for line in lines)
     speakers = _speakers(lines)
@@ -652,6 +672,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh|pov|sv|tv)[ _-](\d)\b"
                   r"(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?|cars?))", r"\1\2",
                   text)  # "NPC_1", "Actor 2"
+    text = re.sub(r"\b(in|for|until|till) v\d{1,2}(?:\.\d{1,2})?\b", r"\1 this version", text)  # "left out in v1": a release
     text = re.sub(r"\b([a-z]{1,3}|npc|actor|agent|target|object|adversary)(\d)\b", r"\1#\2", text)  # SV1, NPC2: labels
     tokens: list[Token] = []
     sentence = 0

@@ -907,7 +907,13 @@ def _road(r: _Reader) -> RoadSpec:
                 put(said, True)  # "at a crosswalk? probably not": said, then taken back
             r.mark(u)
             continue
-        if u.category == "actions" and u.base in ("yield", "give way") and (
+        if u.category == "actions" and u.base == "stop" and _sign_said_once_for_two(units, k):
+            put("stop", negated)  # "without stop or give-way signs": the stop sign, its noun said once
+            r.mark(u)
+            u.category, u.meaning = "road", "stop"
+            continue
+        yielding_to = k + 1 < len(units) and units[k + 1].word == "to"  # "yielding to emergency vehicles": the act
+        if u.category == "actions" and u.base in ("yield", "give way") and not yielding_to and (
                 k == 0 or units[k - 1].category in ("comma", "word")
                 and units[k - 1].word in (",", "a", "at", "with", "the")
                 or (k + 1 < len(units) and units[k + 1].word in ("sign", "signs", "junction", "line", "markings"))):
@@ -1012,6 +1018,15 @@ def _road(r: _Reader) -> RoadSpec:
     if junction is not None:
         spec["junction"] = junction
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+def _sign_said_once_for_two(units: list[Unit], k: int) -> bool:
+    """'stop or give way signs', 'stop and yield signs': a first sign named by its word alone, its noun said with
+    the second."""
+    if k + 2 >= len(units) or units[k + 1].word not in ("or", "and", "nor", ","):
+        return False
+    nxt = units[k + 2]
+    return nxt.category == "road" and nxt.meaning in ("yield", "stop") and nxt.tokens[-1].word in ("sign", "signs")
 
 
 LANE_MOVES = {"cut_in", "lane_change", "lane_left", "lane_right"}
@@ -1906,6 +1921,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     readers of a forum post or people in general are nobody in the scene. Nor are kinds spoken of in general
     or someone in what did not happen (_in_general, _what_if)."""
     t = u.tokens[0]
+    if u.category != "comma" and _set_aside(tokens, u):
+        return True
     if u.category == "agents" and (_in_general(tokens, u) or _what_if(tokens, u) or
                                    _only_talked_about(tokens, u)):
         return True
@@ -1999,6 +2016,57 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
             lo, hi = sorted((t.index, nxt.index))
             if not any(y.word == "," for y in tokens[lo:hi]):
                 return True  # "was withdrawn in 2020": before the scene, in the same clause
+    return False
+
+
+PROPOSING = {"ask", "asked", "want", "wanted", "suggest", "suggested", "propose", "proposed", "raise", "raised",
+             "mention", "mentioned", "float", "floated", "request", "requested", "pitch", "pitched", "prefer"}
+TURNED_DOWN = (("not",), ("no",), ("parked",), ("park",), ("deferred",), ("defer",), ("dropped",), ("drop",),
+               ("rejected",), ("postponed",), ("shelved",), ("vetoed",), ("out", "of", "scope"), ("for", "later"),
+               ("maybe", "later"), ("later",), ("not", "now"))
+LEAVING_OUT = (("leave", "out"), ("leaving", "out"), ("drop",), ("dropped",), ("exclude",),
+               ("excluded",), ("omit",), ("omitted",), ("remove",), ("removed",), ("skip",), ("skipped",))
+
+
+def _starts_with(words: list[str], phrases) -> bool:
+    return any(tuple(words[:len(p)]) == p for p in phrases)
+
+
+def _set_aside(tokens: list[Token], u: Unit) -> bool:
+    """Minutes of a meeting tell what was proposed as well as what was agreed: what someone asked about or
+    wanted that the same sentence turns down ('Sofia asked about a bus too - not for this one', 'Dan wanted a
+    motorbike as well: parked for now'), or what the team leaves out ('agreed to leave out oncoming traffic',
+    'drop the parked cars'), is no part of the scene: the clause from that verb on, with its agents and what
+    they do."""
+    t = u.tokens[0]
+    if u.meaning == "ego":
+        return False
+    sentence = [x for x in tokens if x.sentence == t.sentence]
+    words = [x.word for x in sentence]
+    bases = [x.base for x in sentence]
+    ends = [k for k, w in enumerate(words) if w in (",", "but") or w == "and" and k + 1 < len(words) and
+            words[k + 1] not in DETERMINERS and _word_number(sentence[k + 1]) is None] + [len(words)]
+    following = [x for x in tokens if x.sentence == t.sentence + 1]
+    at = next((k for k, x in enumerate(sentence) if x.index == t.index), None)
+    if at is None:
+        return False
+    for k in range(at + 1):
+        said = next((p for p in LEAVING_OUT if tuple(words[k:k + len(p)]) == p), None)
+        nxt = sentence[k + len(said)] if said and k + len(said) < len(words) else None
+        leaving = said is not None and nxt is not None and nxt.word != "off" and nxt.word not in INDEFINITE \
+            and _word_number(nxt) is None
+        # "drop off the kids" is no leaving out, nor is "drop two vans ahead of the player" (a game's spawn)
+        if not leaving and words[k] not in PROPOSING:
+            continue
+        end = next(e for e in ends if e > k)
+        if at >= end or not set(bases[k:end]) & _agent_nouns():
+            continue
+        if leaving:
+            return True
+        pieces = [sentence[e + 1:] for e in ends if e > k and e < len(words)] + [following]
+        if any(_starts_with([x.word for x in piece], TURNED_DOWN) and not {x.base for x in piece} & _agent_nouns()
+               for piece in pieces):
+            return True
     return False
 
 
