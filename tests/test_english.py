@@ -3615,3 +3615,39 @@ def test_a_vehicle_stopped_in_front_of_the_ego_forever_blocks_it(prompt, action)
 def test_a_roads_number_before_an_agent_counts_nothing(prompt, kind):
     found = agents(prompt)
     assert [a[0] for a in found].count(kind) == 1 and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("In my mirror a fire engine was closing fast.", ("firetruck", "go_straight", "back")),
+    ("In the rear view mirror a motorbike weaves about.", ("motorcycle", "go_straight", "back")),
+    ("On my tail a white van sat for miles.", ("car", "stop", "back")),
+    ("He saw the cyclist in his mirror.", ("cyclist", "go_straight", "back")),
+    ("A bus appeared in her rearview mirror.", ("bus", "go_straight", "back")),
+])
+def test_a_place_that_ends_in_its_own_noun_places_the_subject_after_it(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_place_before_a_noun_still_takes_it_as_its_reference():
+    found = agents("Behind the bus a cyclist waits. The ego drives on.")
+    assert ("cyclist", "stop", "back") not in found and ("bus", "go_straight", "front") in found
+
+
+@pytest.mark.parametrize("prompt, ego, other", [
+    ("A police car is working its way through the queue behind me.", "go_straight", ("police", "go_straight", "back")),
+    ("The queue reaches the retail park, and a lorry is edging its way along.", "go_straight",
+     ("truck", "go_straight", "front")),
+    ("I was stuck at the back of the queue behind a van.", "stop", ("car", "stop", "front")),
+])
+def test_a_queue_named_is_no_one_standing_unless_someone_is_in_it(prompt, ego, other):
+    found = agents(prompt)
+    assert ("car", ego, "ego") in found and other in found
+
+
+@pytest.mark.parametrize("prompt", [
+    "An ambulance, lights strobing, was right behind us.",
+    "A police car with its lights spinning came up behind me and I pulled over.",
+    "A fire engine, blue lights blinking, passes me.",
+])
+def test_an_emergency_vehicles_own_lamps_are_no_traffic_light(prompt):
+    assert "traffic_light" not in road(prompt).required_signals

@@ -711,6 +711,10 @@ def _over_a_lane_marking(tokens: list[Token], end: int) -> bool:
     return False
 
 
+QUEUE_NOUNS = {"queue", "jam", "tailback", "backup", "gridlock"}
+QUEUE_PLACES = {"in", "of", "into", "join", "joins", "joined", "joining", "at"}
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -782,6 +786,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
             tokens[m.start - 1].word in ("a", "an", "the", "this", "that", "very", "really"):
         return [Unit(m.start, m.end, "behaviours", "cautious", span)]  # "a slow bus": how it drives, no verb
+    if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base in QUEUE_NOUNS and (
+            span[0].possessive or m.start > 0 and tokens[m.start - 1].word in DEFINITE | INDEFINITE | OWNERS and
+            (m.start < 2 or tokens[m.start - 2].word not in QUEUE_PLACES)):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "through the queue", "the queue's back to": the
+        # queue named, nobody said to stand in it ("in the queue", "at the back of the queue": standing)
     if m.category == "actions" and [t.word for t in span] == ["park"] and m.start > 0 and \
             tokens[m.start - 1].word in ("the", "a", "city", "car", "national", "retail", "business", "theme"):
         return [Unit(m.start, m.end, "word", "park", span)]  # "the intersection by the park": a place, no stop
@@ -862,6 +871,10 @@ PUSHED_ALONG = {"push", "wheel", "walk", "drag", "carry", "lift", "lead", "pushi
 HAND_HELD = {"holding", "holds", "held", "carrying", "carries", "waving", "waves", "raising", "raises"}
 
 
+LAMP_STATES = {"flashing", "flash", "flashed", "going", "blazing", "strobing", "strobe", "blinking", "spinning",
+               "pulsing", "whirling", "ablaze"}  # "lights strobing": a vehicle's own lamps, no signal
+
+
 def _road(r: _Reader) -> RoadSpec:
     fields: dict = {"required_signals": [], "without_signals": [], "required_objects": [], "without_objects": []}
     junction: bool | None = None
@@ -935,8 +948,7 @@ def _road(r: _Reader) -> RoadSpec:
             continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
                 any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
-                u.tokens[-1].word == "lights" and any(x.word in ("flashing", "flash", "flashed", "going", "blazing")
-                                                      for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
+                u.tokens[-1].word == "lights" and any(x.word in LAMP_STATES for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
             r.mark(u)
             continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
         if u.category == "road" and u.meaning == "traffic_light" and {t.word for t in u.tokens} <= {"light", "lights"} \
@@ -3708,6 +3720,10 @@ def _shared_premodifier(units: list[Unit], phrases: list[NounPhrase]) -> None:
             q.entity.features.add("road_straight")
 
 
+PLACES_BEFORE_A_NOUN = {"behind", "ahead", "of", "to", "beside", "with", "alongside", "adjacent", "abreast", "abeam",
+                        "parallel", "trailing", "tailgating", "preceding", "leading", "lead", "following", "past", "by"}
+
+
 def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
     """A noun after 'in front of', 'behind', 'by', 'including': it places another noun, it is not a subject."""
     k = np.first - 1
@@ -3723,7 +3739,8 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
         if u.meaning not in ("ahead", "behind", "level") and u.tokens[-1].word not in ("of", "to") and \
                 units[np.first].word not in ("of", "to"):
             return False  # "on the left-hand side a woman waits": a place, then the subject ("left of a van" places)
-        return u.tokens[-1].word not in ("ego", "it", "us", "you", "them", "him", "her", "me")
+        return u.tokens[-1].word in PLACES_BEFORE_A_NOUN or units[np.first].word in ("of", "to")
+        # "in my mirror a police car": a place that ends in its own noun is complete, the noun after it the subject
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
 
