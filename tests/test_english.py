@@ -3651,3 +3651,25 @@ def test_a_queue_named_is_no_one_standing_unless_someone_is_in_it(prompt, ego, o
 ])
 def test_an_emergency_vehicles_own_lamps_are_no_traffic_light(prompt):
     assert "traffic_light" not in road(prompt).required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two vans parked on the left with a bus approaching from the other direction.",
+     [("bus", "go_straight", "front_left"), ("car", "go_straight", "ego"), ("car", "stop", "front_left"),
+      ("car", "stop", "front_left")]),
+    ("A lorry stopped at the kerb with a cyclist coming up behind me.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "back"), ("truck", "stop", "front")]),
+])
+def test_a_participle_after_with_and_its_noun_is_that_nouns(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, ego_actions", [
+    ("A bin lorry was stopped ahead. The candidate held back behind it and waited, then moved off and passed it.",
+     ["stop", "go_straight"]),
+    ("Two lorries were parked ahead. Candidate held back behind the parked lorries and waited, then moved off.",
+     ["stop", "go_straight"]),
+])
+def test_the_candidate_of_a_driving_test_is_the_ego(prompt, ego_actions):
+    scene = lower(prompt).scenario
+    assert [a.action for stage in scene.stages for a in stage.agents if a.is_ego] == ego_actions
