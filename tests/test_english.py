@@ -3673,3 +3673,16 @@ def test_a_participle_after_with_and_its_noun_is_that_nouns(prompt, expected):
 def test_the_candidate_of_a_driving_test_is_the_ego(prompt, ego_actions):
     scene = lower(prompt).scenario
     assert [a.action for stage in scene.stages for a in stage.agents if a.is_ego] == ego_actions
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A lorry cut me up on the bypass this morning.", None),
+    ("Yesterday afternoon a cyclist ran the red in front of me.", None),
+    ("Early this morning a cyclist ran the red in front of me.", ("clear", "dawn")),
+    ("This morning at about 6 a cyclist ran the red in front of me.", ("clear", "dawn")),
+    ("The rain was lashing down when a bus pulled out in front of me.", ("hard_rain", "noon")),
+    ("Rain is pelting down and a van brakes ahead of me.", ("hard_rain", "noon")),
+])
+def test_the_day_an_event_happened_says_no_light_and_rain_said_by_what_it_does_is_heavy(prompt, expected):
+    weather = lower(prompt).scenario.weather
+    assert (None if weather is None else (weather.condition, weather.time)) == expected

@@ -1287,6 +1287,7 @@ def _weather(r: _Reader) -> Weather | None:
 WEEKDAYS = {"monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday"}
 MONTHS = {"january", "february", "march", "april", "may", "june", "july", "august", "september", "october",
           "november", "december", "jan", "feb", "mar", "apr", "jun", "jul", "aug", "sep", "sept", "oct", "nov", "dec"}
+DAYS_FROM_TODAY = {"this", "yesterday", "tomorrow"}  # "that morning" in a story still says its light
 CLOCK_PARTS_OF_DAY = {"morning", "afternoon"}  # hours on a clock; "night", "dusk" say how light it is
 
 
@@ -1296,8 +1297,11 @@ def _part_of_a_date(units: list[Unit], k: int) -> bool:
     u = units[k]
     if u.word not in CLOCK_PARTS_OF_DAY:
         return False
-    if k > 0 and units[k - 1].word in WEEKDAYS and not any(v.word == "early" for v in units[max(0, k - 4):k]):
-        return True
+    hour_said = any(read_number(v.word) is not None for v in units[k + 1:k + 5] if v.category in ("word", "number"))
+    if k > 0 and (units[k - 1].word in WEEKDAYS or units[k - 1].word in DAYS_FROM_TODAY and not hour_said) and \
+            not any(v.word == "early" for v in units[max(0, k - 4):k]):
+        return True  # "on the commute this morning": the day it happened, as a date ("early this morning", "this
+        # morning at about 7": the light of that hour)
     after = [v.word for v in units[k + 1:k + 5]]
     if after[:1] == ["of"]:
         rest = after[1:] if after[1:2] != ["the"] else after[2:]
