@@ -3686,3 +3686,13 @@ def test_the_candidate_of_a_driving_test_is_the_ego(prompt, ego_actions):
 def test_the_day_an_event_happened_says_no_light_and_rain_said_by_what_it_does_is_heavy(prompt, expected):
     weather = lower(prompt).scenario.weather
     assert (None if weather is None else (weather.condition, weather.time)) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Three cyclists rode ahead of me, one of them a child.", [("car", "go_straight", "ego")] +
+     [("cyclist", "go_straight", "front")] * 3),
+    ("Two cars were parked on the left, one of them a taxi.", [("car", "go_straight", "ego")] +
+     [("car", "stop", "front_left")] * 2),
+])
+def test_a_member_of_a_group_named_after_one_of_them_is_no_new_agent(prompt, expected):
+    assert agents(prompt) == expected

@@ -3571,6 +3571,13 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
     folded_at: dict[int, int] = {}
     for np in phrases:
         prev = out[-1] if out else None
+        if prev is not None and prev.entity is not None and np.entity is not None and np.introduced and \
+                not np.plural and prev.entity.parent is not None and units[prev.index].word in ("them", "those",
+                                                                                              "these") and \
+                np.first == prev.index + 1 and units[np.first].word in ("a", "an"):
+            if np.entity in r.entities:  # "two pedestrians, one of them a mother with a buggy": the member named
+                r.entities.remove(np.entity)
+            continue
         if prev is not None and prev.entity is not None and np.entity is not None and \
                 prev.entity.is_ego != np.entity.is_ego and _set_off(r.tokens, units, prev, np):
             ego, other = (prev.entity, np.entity) if prev.entity.is_ego else (np.entity, prev.entity)
