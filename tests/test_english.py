@@ -3696,3 +3696,15 @@ def test_the_day_an_event_happened_says_no_light_and_rain_said_by_what_it_does_i
 ])
 def test_a_member_of_a_group_named_after_one_of_them_is_no_new_agent(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("On the A30, a 60 limit, a lorry pulls out in front of me.", "speed_97"),
+    ("Outside the school, 20 limit, a child steps onto the zebra crossing.", "speed_32"),
+    ("Northbound on I-5, speed limit 70, a pickup cuts in ahead of me.", "speed_113"),
+    ("I was doing 30 miles an hour in a 40 limit when a van pulled out.", "speed_64"),
+    ("Outside the school, 30 limit, a child steps onto the zebra; I'm doing 25 km/h.", "speed_30"),
+    ("Speed limit 50, a cyclist crosses from the right.", "speed_50"),
+])
+def test_a_limit_said_by_its_number_on_a_british_or_us_road_is_in_mph(prompt, limit):
+    assert [o for o in road(prompt).required_objects if o.startswith("speed_")] == [limit]

@@ -1056,6 +1056,7 @@ LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "a
 
 MILES_WORDS = {"mph", "miles", "mile", "feet", "ft", "yards", "yd", "yds", "interstate", "freeway", "northbound",
                "southbound", "eastbound", "westbound"}  # a text that measures in miles, or a US highway's words
+BRITISH_ROAD_WORDS = {"lorry", "zebra", "pushchair", "pelican", "puffin", "toucan"}  # signed in miles an hour
 ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "route", "rte", "hwy", "highway", "interstate", "exit", "m"}
 
 
@@ -1067,10 +1068,14 @@ def _road_number(tokens: list[Token], i: int) -> bool:
 
 
 def _measured_in_miles(tokens: list[Token]) -> bool:
-    """A text that gives speeds or distances in miles, or drives on a US interstate: a limit it says with no unit
-    is in miles an hour ('three lanes my direction, speed limit 70' on I-95)."""
-    return any(t.word in MILES_WORDS or _road_number(tokens, k) and tokens[k - 1].word in ("i", "us", "interstate")
-               for k, t in enumerate(tokens))
+    """A text that gives speeds or distances in miles, drives on a US interstate or on British roads (it keeps
+    left, or speaks of lorries and zebra crossings): a limit it says with no unit is in miles an hour ('three
+    lanes my direction, speed limit 70' on I-95, 'Church Road, 30 limit'); never a text that says km/h."""
+    if any(t.word in ("kmh", "km", "kph", "kilometers", "kilometer") for t in tokens):
+        return False
+    return _drives_on_the_left(tokens) or any(
+        t.word in MILES_WORDS | BRITISH_ROAD_WORDS or _road_number(tokens, k) and tokens[k - 1].word in (
+            "i", "us", "interstate") for k, t in enumerate(tokens))
 
 
 def _speed_limits(r: _Reader) -> list[str]:
