@@ -3708,3 +3708,37 @@ def test_a_member_of_a_group_named_after_one_of_them_is_no_new_agent(prompt, exp
 ])
 def test_a_limit_said_by_its_number_on_a_british_or_us_road_is_in_mph(prompt, limit):
     assert [o for o in road(prompt).required_objects if o.startswith("speed_")] == [limit]
+
+
+@pytest.mark.parametrize("prompt", [
+    "I came up behind four riders cycling two abreast.",
+    "Four horse riders, no, four cyclists were riding three abreast ahead of me.",
+])
+def test_riding_n_abreast_is_how_a_group_rides_not_a_part_of_it_beside_the_ego(prompt):
+    found = agents(prompt)
+    assert [a for a in found if a[0] == "cyclist"] == [("cyclist", "go_straight", "front")] * 4, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("She came over the hill onto a tractor. She crept along behind it for a mile.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+    ("He pulled up at the lights behind a bus, and when they went green he turned left.",
+     [("bus", "stop", "front"), ("car", "stop", "ego"), ("car", "turn_left", "ego")]),
+])
+def test_the_driver_a_story_is_told_of_without_a_name_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_driver_of_a_story_is_not_a_person_named_before_the_pronoun():
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "A woman stepped off the kerb and she crept slowly across in front of a bus.")
+
+
+def test_one_of_those_before_a_group_is_named_counts_nothing_of_it():
+    found = agents("It was one of those dull, damp afternoons, and we came round a bend onto three cyclists.")
+    assert [a[0] for a in found].count("cyclist") == 3, found
+
+
+@pytest.mark.parametrize("prompt", ["I came over the hill onto a tractor.", "We went over the bridge behind a bus."])
+def test_coming_over_a_hill_or_a_bridge_is_no_lane_change(prompt):
+    assert ("car", "go_straight", "ego") in agents(prompt)

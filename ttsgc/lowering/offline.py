@@ -786,6 +786,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
             tokens[m.start - 1].word in ("a", "an", "the", "this", "that", "very", "really"):
         return [Unit(m.start, m.end, "behaviours", "cautious", span)]  # "a slow bus": how it drives, no verb
+    if m.category == "positions" and [t.word for t in span] == ["abreast"] and m.start > 0 and \
+            _word_number(tokens[m.start - 1]) is not None:
+        return [Unit(m.start, m.end, "word", "abreast", span)]  # "riding two abreast": how they ride, side by side
+        # in the lane, not where they are (nor two of them apart)
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base in QUEUE_NOUNS and (
             span[0].possessive or m.start > 0 and tokens[m.start - 1].word in DEFINITE | INDEFINITE | OWNERS and
             (m.start < 2 or tokens[m.start - 2].word not in QUEUE_PLACES)):
@@ -2800,7 +2804,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i, u in enumerate(units):  # "kids are crossing, three of them": the count of the group just named
         if u.category in ("numbers", "number") and i + 2 < len(units) and units[i + 1].word == "of" and \
                 units[i + 2].word in ("them", "those", "these"):
-            group = next((np.entity for np in reversed(phrases) if np.entity is not None and np.plural), None)
+            group = next((np.entity for np in reversed(phrases) if np.entity is not None and np.plural
+                          and np.index < i), None)  # named before: "one of those evenings, ... three cyclists"
             group = group or next((e for e in reversed(recent) if e.count > 1), None)
             if group is not None:
                 value = _word_number(u.tokens[0])
