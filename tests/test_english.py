@@ -3742,3 +3742,13 @@ def test_one_of_those_before_a_group_is_named_counts_nothing_of_it():
 @pytest.mark.parametrize("prompt", ["I came over the hill onto a tractor.", "We went over the bridge behind a bus."])
 def test_coming_over_a_hill_or_a_bridge_is_no_lane_change(prompt):
     assert ("car", "go_straight", "ego") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A fire engine crosses the junction from the left with a police car right on its tail.",
+     ("police", "go_straight", "road_of_left_turn")),
+    ("An ambulance came at us from the opposite direction, a police van glued to its bumper, and I turned right.",
+     ("police", "go_straight", "road_of_straight")),
+])
+def test_a_vehicle_on_anothers_tail_is_where_that_one_is(prompt, expected):
+    assert expected in agents(prompt)

@@ -3097,14 +3097,15 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             u.meaning = "turned_in_front"  # "turns right in front of me": ahead, or across from its side road
         owner = _let_in_place(units, i, phrases, recent) or \
             _modifier_owner(units, i, phrases, subject, main_verbs, participles)
+        in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
+            u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
-                not any(e in subject for e in owner):
+                not any(e in subject for e in owner) and not in_its_place:
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
-        if reference is None and u.category == "positions" and u.tokens[-1].word in ("it", "them") and \
-                u.meaning in ("ahead", "behind", "level"):
+        if reference is None and in_its_place:  # "a biker behind it", "a cop car right on its tail"
             reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
 
         for e in targets:
