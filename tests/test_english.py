@@ -3752,3 +3752,13 @@ def test_coming_over_a_hill_or_a_bridge_is_no_lane_change(prompt):
 ])
 def test_a_vehicle_on_anothers_tail_is_where_that_one_is(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Driving in the UK: a cyclist came up on my inside at the lights.", ("cyclist", "go_straight", "left")),
+    ("On the motorway a coach sat in the inside lane beside me.", ("bus", "go_straight", "left")),
+    ("UK roundabout: I take the third exit and a taxi waits on the road to my left.", ("car", "turn_right", "ego")),
+    ("At the roundabout I take the third exit.", ("car", "turn_left", "ego")),
+])
+def test_where_traffic_keeps_left_the_inside_is_left_and_the_third_exit_a_right_turn(prompt, expected):
+    assert expected in agents(prompt)

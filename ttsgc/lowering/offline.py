@@ -207,7 +207,7 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
-                     "indicating", "indicator", "indicators"}  # "without indicating": keep-left countries' word
+                     "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
@@ -229,18 +229,26 @@ def _drives_on_the_left(tokens: list[Token]) -> bool:
     return bool(words & LEFT_HAND_TRAFFIC or road_numbers) and not words & TEST_PROTOCOL
 
 
+EXIT_TURNS = {"turn_left": "turn_right", "turn_right": "turn_left"}
+
+
 def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
-    if not any(t.word in ("nearside", "offside", "near", "off") for t in tokens) or not _drives_on_the_left(tokens):
+    """Where traffic keeps left the kerb is on the left: the nearside and the inside are left, the offside right,
+    and a roundabout's first exit is a left turn, its third a right one (the lexicon says them for keeping right)."""
+    if not _drives_on_the_left(tokens):
         return units
     swap = {"side_right": "side_left", "side_left": "side_right"}
     out = []
     for u in units:
         words = [t.word for t in u.tokens]
-        kerb = "nearside" in words or "near" in words and "side" in words
+        kerb = "nearside" in words or "near" in words and "side" in words or "inside" in words
         far = "offside" in words or "off" in words and "side" in words
         if u.category == "positions" and u.meaning in swap and (kerb and u.meaning == "side_right"
                                                                or far and u.meaning == "side_left"):
             u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
+        if u.category == "actions" and u.meaning in EXIT_TURNS and "exit" in words and \
+                not {"left", "right"} & set(words):
+            u = Unit(u.start, u.end, u.category, EXIT_TURNS[u.meaning], u.tokens)  # "take the third exit"
         out.append(u)
     return out
 
