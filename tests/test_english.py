@@ -3762,3 +3762,16 @@ def test_a_vehicle_on_anothers_tail_is_where_that_one_is(prompt, expected):
 ])
 def test_where_traffic_keeps_left_the_inside_is_left_and_the_third_exit_a_right_turn(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "A van has broken down on the bypass and traffic is queuing back past the Tesco turn.",
+    "A bus is stopped just before the Mill Road turn, so I wait behind it.",
+    "I missed the turn and a cyclist passed me on the left.",
+])
+def test_a_turning_named_as_a_place_is_nobody_turning(prompt):
+    assert not any(a[1].startswith("turn") for a in agents(prompt)), agents(prompt)
+
+
+def test_taking_the_turn_still_turns():
+    assert ("car", "turn_left", "ego") in agents("At the junction I took the turn to the left behind a bus.")

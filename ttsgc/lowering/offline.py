@@ -723,6 +723,22 @@ QUEUE_NOUNS = {"queue", "jam", "tailback", "backup", "gridlock"}
 QUEUE_PLACES = {"in", "of", "into", "join", "joins", "joined", "joining", "at"}
 
 
+PLACE_OF_A_TURNING = {"to", "past", "after", "before", "beyond", "near", "by", "from", "until", "till", "miss",
+                      "missed", "misses", "missing"}
+
+
+def _turning_named_as_a_place(tokens: list[Token], i: int) -> bool:
+    """'back to the Sainsbury's turn', 'just past the Elm Street turn', 'missed the turn': a turning named as a
+    place on the road, nobody turning ('took the turn', 'slowed for the turn' still turn)."""
+    k = i - 1
+    while k >= 0 and tokens[k].sentence == tokens[i].sentence and (
+            tokens[k].possessive or tokens[k].word not in DEFINITE | INDEFINITE) and i - k <= 4 and \
+            tokens[k].word not in PLACE_OF_A_TURNING:
+        k -= 1  # back over the turning's name: "the Sainsbury's", "the Elm Street"
+    return k > 0 and tokens[k].word in DEFINITE | INDEFINITE and tokens[k - 1].word in PLACE_OF_A_TURNING or \
+        k >= 0 and tokens[k].base in ("miss",)
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -798,6 +814,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             _word_number(tokens[m.start - 1]) is not None:
         return [Unit(m.start, m.end, "word", "abreast", span)]  # "riding two abreast": how they ride, side by side
         # in the lane, not where they are (nor two of them apart)
+    if m.category == "actions" and m.meaning == "turn" and [t.base for t in span] == ["turn"] and \
+            _turning_named_as_a_place(tokens, m.start):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "queue's back to the Sainsbury's turn"
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base in QUEUE_NOUNS and (
             span[0].possessive or m.start > 0 and tokens[m.start - 1].word in DEFINITE | INDEFINITE | OWNERS and
             (m.start < 2 or tokens[m.start - 2].word not in QUEUE_PLACES)):
