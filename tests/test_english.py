@@ -3775,3 +3775,11 @@ def test_a_turning_named_as_a_place_is_nobody_turning(prompt):
 
 def test_taking_the_turn_still_turns():
     assert ("car", "turn_left", "ego") in agents("At the junction I took the turn to the left behind a bus.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "Outside the school two little ones crossing, so I waited.",
+    "An old man crossing, so we stopped and let him go.",
+])
+def test_crossing_after_a_person_named_in_several_words_is_the_person_crossing(prompt):
+    assert not road(prompt).required_objects and any(a[1] == "cross_the_road" for a in agents(prompt))

@@ -853,7 +853,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student",
                                                       "vru", "children", "kids", "peds", "pedestrians", "walker",
                                                       "toddler", "pensioner", "cyclists", "bicyclist",
-                                                      "target", "dummy")  # "EBT (bicycle target) crossing"
+                                                      "target", "dummy") or \
+        any((_lookup(lexicon(), list(tokens[m.start - n:m.start])) or ("", ""))[1] == "pedestrian"
+            for n in (2, 3) if m.start >= n)  # "EBT (bicycle target) crossing", "three little ones crossing"
     after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be", "not",
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
