@@ -3783,3 +3783,11 @@ def test_taking_the_turn_still_turns():
 ])
 def test_crossing_after_a_person_named_in_several_words_is_the_person_crossing(prompt):
     assert not road(prompt).required_objects and any(a[1] == "cross_the_road" for a in agents(prompt))
+
+
+@pytest.mark.parametrize("prompt", [
+    "At the lights I turned left, and a cyclist was crossing Oak Avenue, the one I was turning into.",
+    "I was turning right when two kids ran across the road I was turning into.",
+])
+def test_the_road_the_narrator_turns_into_is_the_destination_in_any_tense(prompt):
+    assert any(a[2] == "at_the_destination" for a in agents(prompt)), agents(prompt)
