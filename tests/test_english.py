@@ -3905,3 +3905,179 @@ def test_a_sign_noun_said_once_for_two_signs_names_both(prompt, required, withou
 ])
 def test_yielding_to_someone_is_the_act_not_a_sign(prompt):
     assert "yield" not in road(prompt).required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("In my mirror a fire engine was closing fast.", ("firetruck", "go_straight", "back")),
+    ("In the rear view mirror a motorbike weaves about.", ("motorcycle", "go_straight", "back")),
+    ("On my tail a white van sat for miles.", ("car", "stop", "back")),
+    ("He saw the cyclist in his mirror.", ("cyclist", "go_straight", "back")),
+    ("A bus appeared in her rearview mirror.", ("bus", "go_straight", "back")),
+])
+def test_a_place_that_ends_in_its_own_noun_places_the_subject_after_it(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_place_before_a_noun_still_takes_it_as_its_reference():
+    found = agents("Behind the bus a cyclist waits. The ego drives on.")
+    assert ("cyclist", "stop", "back") not in found and ("bus", "go_straight", "front") in found
+
+
+@pytest.mark.parametrize("prompt, ego, other", [
+    ("A police car is working its way through the queue behind me.", "go_straight", ("police", "go_straight", "back")),
+    ("The queue reaches the retail park, and a lorry is edging its way along.", "go_straight",
+     ("truck", "go_straight", "front")),
+    ("I was stuck at the back of the queue behind a van.", "stop", ("car", "stop", "front")),
+])
+def test_a_queue_named_is_no_one_standing_unless_someone_is_in_it(prompt, ego, other):
+    found = agents(prompt)
+    assert ("car", ego, "ego") in found and other in found
+
+
+@pytest.mark.parametrize("prompt", [
+    "An ambulance, lights strobing, was right behind us.",
+    "A police car with its lights spinning came up behind me and I pulled over.",
+    "A fire engine, blue lights blinking, passes me.",
+])
+def test_an_emergency_vehicles_own_lamps_are_no_traffic_light(prompt):
+    assert "traffic_light" not in road(prompt).required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two vans parked on the left with a bus approaching from the other direction.",
+     [("bus", "go_straight", "front_left"), ("car", "go_straight", "ego"), ("car", "stop", "front_left"),
+      ("car", "stop", "front_left")]),
+    ("A lorry stopped at the kerb with a cyclist coming up behind me.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "back"), ("truck", "stop", "front")]),
+])
+def test_a_participle_after_with_and_its_noun_is_that_nouns(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, ego_actions", [
+    ("A bin lorry was stopped ahead. The candidate held back behind it and waited, then moved off and passed it.",
+     ["stop", "go_straight"]),
+    ("Two lorries were parked ahead. Candidate held back behind the parked lorries and waited, then moved off.",
+     ["stop", "go_straight"]),
+])
+def test_the_candidate_of_a_driving_test_is_the_ego(prompt, ego_actions):
+    scene = lower(prompt).scenario
+    assert [a.action for stage in scene.stages for a in stage.agents if a.is_ego] == ego_actions
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A lorry cut me up on the bypass this morning.", None),
+    ("Yesterday afternoon a cyclist ran the red in front of me.", None),
+    ("Early this morning a cyclist ran the red in front of me.", ("clear", "dawn")),
+    ("This morning at about 6 a cyclist ran the red in front of me.", ("clear", "dawn")),
+    ("The rain was lashing down when a bus pulled out in front of me.", ("hard_rain", "noon")),
+    ("Rain is pelting down and a van brakes ahead of me.", ("hard_rain", "noon")),
+])
+def test_the_day_an_event_happened_says_no_light_and_rain_said_by_what_it_does_is_heavy(prompt, expected):
+    weather = lower(prompt).scenario.weather
+    assert (None if weather is None else (weather.condition, weather.time)) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Three cyclists rode ahead of me, one of them a child.", [("car", "go_straight", "ego")] +
+     [("cyclist", "go_straight", "front")] * 3),
+    ("Two cars were parked on the left, one of them a taxi.", [("car", "go_straight", "ego")] +
+     [("car", "stop", "front_left")] * 2),
+])
+def test_a_member_of_a_group_named_after_one_of_them_is_no_new_agent(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("On the A30, a 60 limit, a lorry pulls out in front of me.", "speed_97"),
+    ("Outside the school, 20 limit, a child steps onto the zebra crossing.", "speed_32"),
+    ("Northbound on I-5, speed limit 70, a pickup cuts in ahead of me.", "speed_113"),
+    ("I was doing 30 miles an hour in a 40 limit when a van pulled out.", "speed_64"),
+    ("Outside the school, 30 limit, a child steps onto the zebra; I'm doing 25 km/h.", "speed_30"),
+    ("Speed limit 50, a cyclist crosses from the right.", "speed_50"),
+])
+def test_a_limit_said_by_its_number_on_a_british_or_us_road_is_in_mph(prompt, limit):
+    assert [o for o in road(prompt).required_objects if o.startswith("speed_")] == [limit]
+
+
+@pytest.mark.parametrize("prompt", [
+    "I came up behind four riders cycling two abreast.",
+    "Four horse riders, no, four cyclists were riding three abreast ahead of me.",
+])
+def test_riding_n_abreast_is_how_a_group_rides_not_a_part_of_it_beside_the_ego(prompt):
+    found = agents(prompt)
+    assert [a for a in found if a[0] == "cyclist"] == [("cyclist", "go_straight", "front")] * 4, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("She came over the hill onto a tractor. She crept along behind it for a mile.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+    ("He pulled up at the lights behind a bus, and when they went green he turned left.",
+     [("bus", "stop", "front"), ("car", "stop", "ego"), ("car", "turn_left", "ego")]),
+])
+def test_the_driver_a_story_is_told_of_without_a_name_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_driver_of_a_story_is_not_a_person_named_before_the_pronoun():
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "A woman stepped off the kerb and she crept slowly across in front of a bus.")
+
+
+def test_one_of_those_before_a_group_is_named_counts_nothing_of_it():
+    found = agents("It was one of those dull, damp afternoons, and we came round a bend onto three cyclists.")
+    assert [a[0] for a in found].count("cyclist") == 3, found
+
+
+@pytest.mark.parametrize("prompt", ["I came over the hill onto a tractor.", "We went over the bridge behind a bus."])
+def test_coming_over_a_hill_or_a_bridge_is_no_lane_change(prompt):
+    assert ("car", "go_straight", "ego") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A fire engine crosses the junction from the left with a police car right on its tail.",
+     ("police", "go_straight", "road_of_left_turn")),
+    ("An ambulance came at us from the opposite direction, a police van glued to its bumper, and I turned right.",
+     ("police", "go_straight", "road_of_straight")),
+])
+def test_a_vehicle_on_anothers_tail_is_where_that_one_is(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Driving in the UK: a cyclist came up on my inside at the lights.", ("cyclist", "go_straight", "left")),
+    ("On the motorway a coach sat in the inside lane beside me.", ("bus", "go_straight", "left")),
+    ("UK roundabout: I take the third exit and a taxi waits on the road to my left.", ("car", "turn_right", "ego")),
+    ("At the roundabout I take the third exit.", ("car", "turn_left", "ego")),
+])
+def test_where_traffic_keeps_left_the_inside_is_left_and_the_third_exit_a_right_turn(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "A van has broken down on the bypass and traffic is queuing back past the Tesco turn.",
+    "A bus is stopped just before the Mill Road turn, so I wait behind it.",
+    "I missed the turn and a cyclist passed me on the left.",
+])
+def test_a_turning_named_as_a_place_is_nobody_turning(prompt):
+    assert not any(a[1].startswith("turn") for a in agents(prompt)), agents(prompt)
+
+
+def test_taking_the_turn_still_turns():
+    assert ("car", "turn_left", "ego") in agents("At the junction I took the turn to the left behind a bus.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "Outside the school two little ones crossing, so I waited.",
+    "An old man crossing, so we stopped and let him go.",
+])
+def test_crossing_after_a_person_named_in_several_words_is_the_person_crossing(prompt):
+    assert not road(prompt).required_objects and any(a[1] == "cross_the_road" for a in agents(prompt))
+
+
+@pytest.mark.parametrize("prompt", [
+    "At the lights I turned left, and a cyclist was crossing Oak Avenue, the one I was turning into.",
+    "I was turning right when two kids ran across the road I was turning into.",
+])
+def test_the_road_the_narrator_turns_into_is_the_destination_in_any_tense(prompt):
+    assert any(a[2] == "at_the_destination" for a in agents(prompt)), agents(prompt)

@@ -104,6 +104,7 @@ def read_narration(prompt: str) -> Narration:
     text = _passengers_driver(text, notes)
     text = _screenplay_driver(text, notes)
     text = _protagonist(text, notes)
+    text = _storys_driver(text, notes)
     return Narration(text, notes)
 
 
@@ -402,6 +403,25 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
         text = re.sub(rf"\b{re.escape(name)}\b", "the ego", text)
     notes.append("read the narrator's driver as the ego")
     return _drivers_pronoun(text, notes)
+
+
+STORY_DRIVING = (r"came|drove|pulled|turned|braked|slowed|crept|eased|steered|indicated|swung|rolled|edged|nosed|"
+                 r"inched|merged|reversed|overtook|followed|accelerated|headed|was driving|had been driving|"
+                 r"was heading|was following|was cruising|was doing|kept|held|hung|sat|drives|pulls|turns|brakes|"
+                 r"slows|creeps|eases|steers|indicates|swings|edges|merges|follows|accelerates|heads|is driving")
+STORY_DRIVER = re.compile(rf"\b(she|he)\s+(?:[a-z]+ly\s+)?(?:{STORY_DRIVING})\b", re.I)
+FIRST_PERSON = re.compile(r"\b(?:i|me|my|we|us|our|ego)\b", re.I)
+
+
+def _storys_driver(text: str, notes: list[str]) -> str:
+    """'she came round a bend onto three cyclists. She crept along behind them': a story told of an unnamed
+    driver, with no narrator and no ego named, is told from that driver's seat: its 'she' (or 'he') is the ego."""
+    if FIRST_PERSON.search(text):
+        return text
+    m = STORY_DRIVER.search(text)
+    if m is None or re.search(rf"\b(?:{OTHER_PEOPLE[m.group(1).lower()]})s?\b", text[:m.start()], re.I):
+        return text  # "a woman stepped out and she stopped": the woman
+    return _drivers_pronoun(text[:m.start()] + "the ego" + text[m.start() + len(m.group(1)):], notes)
 
 
 def _drivers_pronoun(text: str, notes: list[str]) -> str:

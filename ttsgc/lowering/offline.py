@@ -207,7 +207,7 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
-                     "indicating", "indicator", "indicators"}  # "without indicating": keep-left countries' word
+                     "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
@@ -229,18 +229,26 @@ def _drives_on_the_left(tokens: list[Token]) -> bool:
     return bool(words & LEFT_HAND_TRAFFIC or road_numbers) and not words & TEST_PROTOCOL
 
 
+EXIT_TURNS = {"turn_left": "turn_right", "turn_right": "turn_left"}
+
+
 def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
-    if not any(t.word in ("nearside", "offside", "near", "off") for t in tokens) or not _drives_on_the_left(tokens):
+    """Where traffic keeps left the kerb is on the left: the nearside and the inside are left, the offside right,
+    and a roundabout's first exit is a left turn, its third a right one (the lexicon says them for keeping right)."""
+    if not _drives_on_the_left(tokens):
         return units
     swap = {"side_right": "side_left", "side_left": "side_right"}
     out = []
     for u in units:
         words = [t.word for t in u.tokens]
-        kerb = "nearside" in words or "near" in words and "side" in words
+        kerb = "nearside" in words or "near" in words and "side" in words or "inside" in words
         far = "offside" in words or "off" in words and "side" in words
         if u.category == "positions" and u.meaning in swap and (kerb and u.meaning == "side_right"
                                                                or far and u.meaning == "side_left"):
             u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
+        if u.category == "actions" and u.meaning in EXIT_TURNS and "exit" in words and \
+                not {"left", "right"} & set(words):
+            u = Unit(u.start, u.end, u.category, EXIT_TURNS[u.meaning], u.tokens)  # "take the third exit"
         out.append(u)
     return out
 
@@ -720,6 +728,26 @@ def _over_a_lane_marking(tokens: list[Token], end: int) -> bool:
     return False
 
 
+QUEUE_NOUNS = {"queue", "jam", "tailback", "backup", "gridlock"}
+QUEUE_PLACES = {"in", "of", "into", "join", "joins", "joined", "joining", "at"}
+
+
+PLACE_OF_A_TURNING = {"to", "past", "after", "before", "beyond", "near", "by", "from", "until", "till", "miss",
+                      "missed", "misses", "missing"}
+
+
+def _turning_named_as_a_place(tokens: list[Token], i: int) -> bool:
+    """'back to the Sainsbury's turn', 'just past the Elm Street turn', 'missed the turn': a turning named as a
+    place on the road, nobody turning ('took the turn', 'slowed for the turn' still turn)."""
+    k = i - 1
+    while k >= 0 and tokens[k].sentence == tokens[i].sentence and (
+            tokens[k].possessive or tokens[k].word not in DEFINITE | INDEFINITE) and i - k <= 4 and \
+            tokens[k].word not in PLACE_OF_A_TURNING:
+        k -= 1  # back over the turning's name: "the Sainsbury's", "the Elm Street"
+    return k > 0 and tokens[k].word in DEFINITE | INDEFINITE and tokens[k - 1].word in PLACE_OF_A_TURNING or \
+        k >= 0 and tokens[k].base in ("miss",)
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -792,6 +820,18 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
             tokens[m.start - 1].word in ("a", "an", "the", "this", "that", "very", "really"):
         return [Unit(m.start, m.end, "behaviours", "cautious", span)]  # "a slow bus": how it drives, no verb
+    if m.category == "positions" and [t.word for t in span] == ["abreast"] and m.start > 0 and \
+            _word_number(tokens[m.start - 1]) is not None:
+        return [Unit(m.start, m.end, "word", "abreast", span)]  # "riding two abreast": how they ride, side by side
+        # in the lane, not where they are (nor two of them apart)
+    if m.category == "actions" and m.meaning == "turn" and [t.base for t in span] == ["turn"] and \
+            _turning_named_as_a_place(tokens, m.start):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "queue's back to the Sainsbury's turn"
+    if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base in QUEUE_NOUNS and (
+            span[0].possessive or m.start > 0 and tokens[m.start - 1].word in DEFINITE | INDEFINITE | OWNERS and
+            (m.start < 2 or tokens[m.start - 2].word not in QUEUE_PLACES)):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "through the queue", "the queue's back to": the
+        # queue named, nobody said to stand in it ("in the queue", "at the back of the queue": standing)
     if m.category == "actions" and [t.word for t in span] == ["park"] and m.start > 0 and \
             tokens[m.start - 1].word in ("the", "a", "city", "car", "national", "retail", "business", "theme"):
         return [Unit(m.start, m.end, "word", "park", span)]  # "the intersection by the park": a place, no stop
@@ -823,7 +863,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                       "people", "jogger", "man", "woman", "boy", "girl", "student",
                                                       "vru", "children", "kids", "peds", "pedestrians", "walker",
                                                       "toddler", "pensioner", "cyclists", "bicyclist",
-                                                      "target", "dummy")  # "EBT (bicycle target) crossing"
+                                                      "target", "dummy") or \
+        any((_lookup(lexicon(), list(tokens[m.start - n:m.start])) or ("", ""))[1] == "pedestrian"
+            for n in (2, 3) if m.start >= n)  # "EBT (bicycle target) crossing", "three little ones crossing"
     after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be", "not",
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
@@ -870,6 +912,10 @@ def _picking_up(tokens: list[Token], start: int, nxt: str) -> bool:
 POSSESSIVES = {"its", "his", "her", "their"}
 PUSHED_ALONG = {"push", "wheel", "walk", "drag", "carry", "lift", "lead", "pushing", "wheeling", "walking"}
 HAND_HELD = {"holding", "holds", "held", "carrying", "carries", "waving", "waves", "raising", "raises"}
+
+
+LAMP_STATES = {"flashing", "flash", "flashed", "going", "blazing", "strobing", "strobe", "blinking", "spinning",
+               "pulsing", "whirling", "ablaze"}  # "lights strobing": a vehicle's own lamps, no signal
 
 
 def _road(r: _Reader) -> RoadSpec:
@@ -951,8 +997,7 @@ def _road(r: _Reader) -> RoadSpec:
             continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
                 any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
-                u.tokens[-1].word == "lights" and any(x.word in ("flashing", "flash", "flashed", "going", "blazing")
-                                                      for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
+                u.tokens[-1].word == "lights" and any(x.word in LAMP_STATES for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
             r.mark(u)
             continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
         if u.category == "road" and u.meaning == "traffic_light" and {t.word for t in u.tokens} <= {"light", "lights"} \
@@ -1069,6 +1114,7 @@ LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "a
 
 MILES_WORDS = {"mph", "miles", "mile", "feet", "ft", "yards", "yd", "yds", "interstate", "freeway", "northbound",
                "southbound", "eastbound", "westbound"}  # a text that measures in miles, or a US highway's words
+BRITISH_ROAD_WORDS = {"lorry", "zebra", "pushchair", "pelican", "puffin", "toucan"}  # signed in miles an hour
 ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "route", "rte", "hwy", "highway", "interstate", "exit", "m"}
 
 
@@ -1080,10 +1126,14 @@ def _road_number(tokens: list[Token], i: int) -> bool:
 
 
 def _measured_in_miles(tokens: list[Token]) -> bool:
-    """A text that gives speeds or distances in miles, or drives on a US interstate: a limit it says with no unit
-    is in miles an hour ('three lanes my direction, speed limit 70' on I-95)."""
-    return any(t.word in MILES_WORDS or _road_number(tokens, k) and tokens[k - 1].word in ("i", "us", "interstate")
-               for k, t in enumerate(tokens))
+    """A text that gives speeds or distances in miles, drives on a US interstate or on British roads (it keeps
+    left, or speaks of lorries and zebra crossings): a limit it says with no unit is in miles an hour ('three
+    lanes my direction, speed limit 70' on I-95, 'Church Road, 30 limit'); never a text that says km/h."""
+    if any(t.word in ("kmh", "km", "kph", "kilometers", "kilometer") for t in tokens):
+        return False
+    return _drives_on_the_left(tokens) or any(
+        t.word in MILES_WORDS | BRITISH_ROAD_WORDS or _road_number(tokens, k) and tokens[k - 1].word in (
+            "i", "us", "interstate") for k, t in enumerate(tokens))
 
 
 def _speed_limits(r: _Reader) -> list[str]:
@@ -1300,6 +1350,7 @@ def _weather(r: _Reader) -> Weather | None:
 WEEKDAYS = {"monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday"}
 MONTHS = {"january", "february", "march", "april", "may", "june", "july", "august", "september", "october",
           "november", "december", "jan", "feb", "mar", "apr", "jun", "jul", "aug", "sep", "sept", "oct", "nov", "dec"}
+DAYS_FROM_TODAY = {"this", "yesterday", "tomorrow"}  # "that morning" in a story still says its light
 CLOCK_PARTS_OF_DAY = {"morning", "afternoon"}  # hours on a clock; "night", "dusk" say how light it is
 
 
@@ -1309,8 +1360,11 @@ def _part_of_a_date(units: list[Unit], k: int) -> bool:
     u = units[k]
     if u.word not in CLOCK_PARTS_OF_DAY:
         return False
-    if k > 0 and units[k - 1].word in WEEKDAYS and not any(v.word == "early" for v in units[max(0, k - 4):k]):
-        return True
+    hour_said = any(read_number(v.word) is not None for v in units[k + 1:k + 5] if v.category in ("word", "number"))
+    if k > 0 and (units[k - 1].word in WEEKDAYS or units[k - 1].word in DAYS_FROM_TODAY and not hour_said) and \
+            not any(v.word == "early" for v in units[max(0, k - 4):k]):
+        return True  # "on the commute this morning": the day it happened, as a date ("early this morning", "this
+        # morning at about 7": the light of that hour)
     after = [v.word for v in units[k + 1:k + 5]]
     if after[:1] == ["of"]:
         rest = after[1:] if after[1:2] != ["the"] else after[2:]
@@ -2910,7 +2964,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i, u in enumerate(units):  # "kids are crossing, three of them": the count of the group just named
         if u.category in ("numbers", "number") and i + 2 < len(units) and units[i + 1].word == "of" and \
                 units[i + 2].word in ("them", "those", "these"):
-            group = next((np.entity for np in reversed(phrases) if np.entity is not None and np.plural), None)
+            group = next((np.entity for np in reversed(phrases) if np.entity is not None and np.plural
+                          and np.index < i), None)  # named before: "one of those evenings, ... three cyclists"
             group = group or next((e for e in reversed(recent) if e.count > 1), None)
             if group is not None:
                 value = _word_number(u.tokens[0])
@@ -3095,8 +3150,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in verbs:
         owner = _participle_owner(units, i, phrases, subject, verbs)
         if owner is not None and not main_verbs and participles and not any(v > i for v in verbs) and \
-                all(e in subject for owners in participles.values() for e in owners) and owner.entity not in subject:
+                all(e in subject for owners in participles.values() for e in owners) and owner.entity not in subject \
+                and not (owner.first > 0 and units[owner.first - 1].word in ("with", "while")):
             owner = None  # "a cyclist riding ahead of it swerved left": the subject's participle, then its finite verb
+            # ("two cars parked, with a bus approaching": 'with' gives the bus its own participle)
         if owner is not None:
             participles[i] = [e for e in owner.group or [owner.entity] if e is not None]
             for e in owner.group or [owner.entity]:
@@ -3207,14 +3264,15 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             u.meaning = "turned_in_front"  # "turns right in front of me": ahead, or across from its side road
         owner = _let_in_place(units, i, phrases, recent) or \
             _modifier_owner(units, i, phrases, subject, main_verbs, participles)
+        in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
+            u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
-                not any(e in subject for e in owner):
+                not any(e in subject for e in owner) and not in_its_place:
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
-        if reference is None and u.category == "positions" and u.tokens[-1].word in ("it", "them") and \
-                u.meaning in ("ahead", "behind", "level"):
+        if reference is None and in_its_place:  # "a biker behind it", "a cop car right on its tail"
             reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
 
         for e in targets:
@@ -3722,6 +3780,13 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
     folded_at: dict[int, int] = {}
     for np in phrases:
         prev = out[-1] if out else None
+        if prev is not None and prev.entity is not None and np.entity is not None and np.introduced and \
+                not np.plural and prev.entity.parent is not None and units[prev.index].word in ("them", "those",
+                                                                                              "these") and \
+                np.first == prev.index + 1 and units[np.first].word in ("a", "an"):
+            if np.entity in r.entities:  # "two pedestrians, one of them a mother with a buggy": the member named
+                r.entities.remove(np.entity)
+            continue
         if prev is not None and prev.entity is not None and np.entity is not None and \
                 prev.entity.is_ego != np.entity.is_ego and _set_off(r.tokens, units, prev, np):
             ego, other = (prev.entity, np.entity) if prev.entity.is_ego else (np.entity, prev.entity)
@@ -3877,6 +3942,10 @@ def _shared_premodifier(units: list[Unit], phrases: list[NounPhrase]) -> None:
             q.entity.features.add("road_straight")
 
 
+PLACES_BEFORE_A_NOUN = {"behind", "ahead", "of", "to", "beside", "with", "alongside", "adjacent", "abreast", "abeam",
+                        "parallel", "trailing", "tailgating", "preceding", "leading", "lead", "following", "past", "by"}
+
+
 def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
     """A noun after 'in front of', 'behind', 'by', 'including': it places another noun, it is not a subject."""
     k = np.first - 1
@@ -3892,7 +3961,8 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
         if u.meaning not in ("ahead", "behind", "level") and u.tokens[-1].word not in ("of", "to") and \
                 units[np.first].word not in ("of", "to"):
             return False  # "on the left-hand side a woman waits": a place, then the subject ("left of a van" places)
-        return u.tokens[-1].word not in ("ego", "it", "us", "you", "them", "him", "her", "me")
+        return u.tokens[-1].word in PLACES_BEFORE_A_NOUN or units[np.first].word in ("of", "to")
+        # "in my mirror a police car": a place that ends in its own noun is complete, the noun after it the subject
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
 
