@@ -3615,3 +3615,30 @@ def test_a_vehicle_stopped_in_front_of_the_ego_forever_blocks_it(prompt, action)
 def test_a_roads_number_before_an_agent_counts_nothing(prompt, kind):
     found = agents(prompt)
     assert [a[0] for a in found].count(kind) == 1 and len(found) == 2, found
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("You are at the wheel of a fire engine, going straight through a junction.", "firetruck"),
+    ("You're behind the wheel of a coach on a two-lane road.", "bus"),
+    ("The player drives the getaway van down a back street.", "car"),
+    ("The player pulls the bus in and waits at the stop.", "bus"),
+    ("I was the front seat passenger in my brother's Skoda on the motorway.", "car"),
+    ("I was sitting in the passenger seat of my friend's minibus when we stopped.", "car"),
+])
+def test_a_vehicle_the_speaking_ego_drives_or_sits_in_is_the_egos_own(prompt, ego):
+    found = [a.type for a in lower(prompt).scenario.agents()]
+    assert found == [ego], found
+
+
+@pytest.mark.parametrize("prompt", ["I was behind a bus at the lights.", "You pulled in behind the truck.",
+                                    "I was in front of a lorry on the motorway."])
+def test_a_vehicle_the_ego_is_placed_by_is_another_agent(prompt):
+    assert len(agents(prompt)) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "Delivery Van Frenzy - Round 4\nThe player waits at the red light behind a stopped bus.",
+    'COACH PARTY - "CROSSFIRE"\nThe player waits at the red light behind a stopped bus.',
+    "Taxi Rank Blues\n\nThe player waits at the red light behind a stopped bus.",
+])
+def test_a_marked_title_line_over_prose_names_no_agent(prompt):
+    assert agents(prompt) == [("bus", "stop", "front"), ("car", "stop", "ego")]

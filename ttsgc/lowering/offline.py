@@ -3580,6 +3580,12 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 and [u.word for u in units[prev.index + 1: np.first]] in (["on"], ["riding"], ["astride"]):
             _fold(r, prev.entity, np.entity)  # "two kids on scooters": two riders, counted by the people
             continue
+        if np.introduced and _at_the_wheel_of(units, out, np):
+            ego = next(p.entity for p in reversed(out) if p.entity is not None)
+            ego.type = np.entity.type if np.entity.type != "car" else ego.type
+            if np.entity in r.entities:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
+                r.entities.remove(np.entity)
+            continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
@@ -3618,13 +3624,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 a.aliases |= b.aliases | {b.head}
                 _fold(r, a, b)
                 continue
-            mine = prev.entity.is_ego and prev.entity.head in FIRST_PERSON | {"we", "you"} and between and all(
-                u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
-                between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding", "operating", "operated") and \
-                np.entity.type in V.EGO_TYPES
-            mine = mine or prev.entity.is_ego and len(units[prev.index].tokens) > 1 and _named_make(
+            mine = prev.entity.is_ego and len(units[prev.index].tokens) > 1 and _named_make(
                 between, np.entity.type)  # "my vehicle, a grey Vauxhall Astra,": its make and model
-            if mine:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
+            if mine:
                 prev.entity.type = np.entity.type if np.entity.type != "car" else prev.entity.type
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
@@ -3650,6 +3652,30 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> bool:
+    """'I was driving a bus', 'you're at the wheel of the ambulance', 'the player pulls the bus in', 'I was the
+    front-seat passenger in my husband's Honda': a vehicle the speaking ego drives, steers or sits in is the ego's
+    own, no other agent."""
+    k = len(before) - 1
+    seat = None
+    if k >= 1 and before[k].entity is None and "passenger" in units[before[k].index].base.split():
+        seat, k = before[k], k - 1  # "the front-seat passenger in ...": the passenger is the speaker
+    if k < 0 or before[k].entity is None or not before[k].entity.is_ego or \
+            before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego"} or \
+            np.entity is None or np.entity.type not in V.EGO_TYPES or np.plural:
+        return False
+    between = units[before[k].index + 1: np.first]
+    if np.first < np.index and units[np.first].word == "of":
+        between.append(units[np.first])  # "at the wheel of the ambulance": 'of' was read into the noun phrase
+    inside_seat = set(range(seat.first, seat.index + 1)) if seat is not None else set()
+    wheel = any(u.word == "wheel" for u in between)
+    return bool(between) and all(
+        units.index(u) in inside_seat or wheel and u.category == "positions" and u.base == "behind" or
+        u.category in ("word", "actions") and (u.tokens[-1].word in AT_THE_WHEEL_OF or u.base in AT_THE_WHEEL_OF)
+        for u in between) and \
+        (between[-1].tokens[-1].word in OPERATED_FROM or between[-1].base in OPERATED_FROM)
 
 
 def _named_make(between: list[Unit], kind: str) -> bool:
@@ -4378,7 +4404,10 @@ AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cyclin
 FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operating", "operated", "on", "patrol",
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
-                   "stationary", "parked", "a", "an", "marked", "unmarked"}
+                   "stationary", "parked", "a", "an", "marked", "unmarked", "drive", "steer", "pilot", "pull",
+                   "operate", "ride", "sit", "passenger"}
+OPERATED_FROM = {"in", "of", "driving", "drove", "riding", "operating", "operated", "drive", "ride", "operate", "steer",
+                 "pilot", "pull"}  # the word right before the ego's own vehicle
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
 
 
