@@ -3642,3 +3642,14 @@ def test_a_vehicle_the_ego_is_placed_by_is_another_agent(prompt):
 ])
 def test_a_marked_title_line_over_prose_names_no_agent(prompt):
     assert agents(prompt) == [("bus", "stop", "front"), ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("I was doing about 25 mph down the high street, it's a 30 limit.", "speed_48"),
+    ("The lorry was doing 40 miles per hour in a 50 limit.", "speed_80"),
+    ("On the motorway the roadworks had a 50 limit.", "speed_80"),  # keeps left: a British sign
+    ("The truck was doing 60 km/h although it is a 40 limit.", "speed_40"),
+    ("Speed limit 30 on this street, a child crosses.", "speed_30"),
+])
+def test_a_limit_said_by_its_number_alone_takes_the_texts_unit(prompt, limit):
+    assert [w for w in road(prompt).required_objects if w.startswith("speed_")] == [limit]

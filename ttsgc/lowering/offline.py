@@ -1097,8 +1097,9 @@ def _speed_limits(r: _Reader) -> list[str]:
         if unitless and not mph and value % 10 == 5 and 15 <= value <= 85:
             mph = True  # "25 limit", "Limit's 65": US signs in miles an hour step by five
             r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (a US sign)")
-        elif unitless and not mph and in_miles and value % 5 == 0 and 10 <= value <= 85:
-            mph = True  # "doing 35 mph in a 40 zone", "I-95, speed limit 70": the text's own unit
+        elif unitless and not mph and (in_miles or _KEEPS_LEFT.get()) and value % 5 == 0 and 10 <= value <= 85:
+            mph = True  # "doing 35 mph in a 40 zone", "I-95, speed limit 70": the text's own unit; "a 50 limit on
+            # the motorway": a British sign
             r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (the text measures in miles)")
         unit = "mph" if mph else "km/h"
         kmh = value * 1.609344 if mph else value
