@@ -3653,3 +3653,20 @@ def test_a_marked_title_line_over_prose_names_no_agent(prompt):
 ])
 def test_a_limit_said_by_its_number_alone_takes_the_texts_unit(prompt, limit):
     assert [w for w in road(prompt).required_objects if w.startswith("speed_")] == [limit]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The roundabout is entered from the right by a lorry.", ("truck", "go_straight", "road_of_right_turn")),
+    ("The crossroads is entered from the opposite side by a van while the ego waits.",
+     ("car", "go_straight", "road_of_straight")),
+])
+def test_a_junction_entered_in_the_passive_is_entered_by_the_agent_after_by(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("The ego is steered into the right lane.", "change_lane_to_right"),
+    ("To let the bus out, I steered into the left lane.", "change_lane_to_left"),
+])
+def test_steering_into_a_named_lane_is_a_lane_change(prompt, action):
+    assert ("car", action, "ego") in agents(prompt)

@@ -2865,8 +2865,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
              and not _named_manoeuvre(units, i) and not _requested(units, i) and not _planned(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
-            u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
-        verbs = []  # "the light turns red": the subject is a signal, no agent acts
+            u.category == "road" and u.meaning != "junction" for u in units[max(0, verbs[0] - 2):verbs[0]]):
+        verbs = []  # "the light turns red": the subject is a signal, no agent acts ("the junction is entered by
+        # two cars": a place is the subject of a passive, its agent acts)
     verbs = [i for i in verbs if not _signal_change(units, i)]
     for i, u in enumerate(units):
         if u.category == "actions" and u.meaning == "try":
