@@ -3670,3 +3670,25 @@ def test_a_junction_entered_in_the_passive_is_entered_by_the_agent_after_by(prom
 ])
 def test_steering_into_a_named_lane_is_a_lane_change(prompt, action):
     assert ("car", action, "ego") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus is waiting on the street the ego wants to turn into.", ("bus", "stop", "at_the_destination")),
+    ("Two pedestrians are crossing the road that the ego is going to turn into.",
+     ("pedestrian", "cross_the_road", "at_the_destination")),
+    ("A taxi is stopped on the road that the ego is about to turn into.", ("car", "stop", "at_the_destination")),
+])
+def test_the_road_the_ego_is_about_to_turn_into_is_the_destination(prompt, expected):
+    assert expected in agents(prompt) and ("car", "turn_left", "ego") in agents(prompt)
+
+
+def test_that_road_said_again_after_the_destination_is_the_destination():
+    found = agents("A taxi waits on the road the ego turns into. The ego turns left, and then two children cross "
+                   "that road.")
+    assert found.count(("pedestrian", "cross_the_road", "at_the_destination")) == 2
+
+
+def test_a_sequence_word_after_a_place_that_starts_with_that_still_opens_a_stage():
+    found = agents("The ego waits at a red light. A van is parked on the road that the ego is about to turn into. "
+                   "Then the ego turns left.")
+    assert ("car", "stop", "ego") in found and ("car", "turn_left", "ego") in found

@@ -552,13 +552,24 @@ def _later_corrections(r: "_Reader") -> list[Unit]:
     return units
 
 
+TO_COME = AUXILIARIES | {"am", "about", "going", "due", "want", "wants", "wanted", "need", "needs", "needed", "plan",
+                         "plans", "planned", "intend", "intends", "intended", "has", "have", "had", "set"}
+
+
 def _turned_into(units: list[Unit]) -> list[Unit]:
     """'crossing the road I was turning into': a relative clause on a road noun naming where the ego turns."""
     out, k = [], 0
+    named = False
     while k < len(units):
         u = units[k]
+        if named and u.tokens[-1].word in ("road", "street", "avenue") and out and out[-1].word in ("that", "this") \
+                and (k + 1 >= len(units) or units[k + 1].word not in ("that", "which")):
+            out[-1] = Unit(out[-1].start, u.end, "positions", "destination", out[-1].tokens + u.tokens)
+            k += 1  # "... the road the ego turns into. Then that road is crossed by two people": that road again
+            continue
         out.append(u)
         k += 1
+        named = named or u.category == "positions" and u.meaning == "destination"
         if u.tokens[-1].word not in ("road", "street", "avenue") or k >= len(units):
             continue
         j = k + (k + 1 < len(units) and units[k].word in ("in", "into", "onto") and units[k + 1].word == "which")
@@ -567,8 +578,9 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
         if not (j < len(units) and units[j].category == "agents" and units[j].meaning == "ego"):
             continue
         j += 1
-        while j < len(units) and units[j].category == "word" and units[j].word in AUXILIARIES | {"am", "about"}:
-            j += 1
+        while j < len(units) and units[j].category in ("word", "actions") and units[j].word in TO_COME | {"to"} and \
+                (units[j].category == "word" or units[j].meaning == "try"):
+            j += 1  # "the road the ego is about to turn into", "the street we want to turn into"
         into = j + 1 < len(units) and units[j + 1].word in ("into", "onto")
         if j < len(units) and units[j].category == "actions" and units[j].meaning.startswith("turn") and (
                 into or units[k].word in ("in", "into", "onto")):
@@ -576,6 +588,7 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
             tokens = tuple(t for x in units[k:end] for t in x.tokens)
             out.append(Unit(units[k].start, units[end - 1].end, "positions", "destination", tokens))
             k = end
+            named = True
     return out
 
 
@@ -1502,7 +1515,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             r.mark(u)
             continue  # "stop, even when it's clear": a concession; "the next bit was ...": which bit; "around 6pm,
             # maybe a bit later": when, roughly; no stage
-        if u.category == "sequence" and prev_word in RELATIVES:
+        if u.category == "sequence" and prev_word in RELATIVES and units[k - 1].category == "word":
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
         if u.category == "sequence" and u.word == "after" and prev_word in ("one", "each") and nxt is not None and \
