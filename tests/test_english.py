@@ -3692,3 +3692,30 @@ def test_a_sequence_word_after_a_place_that_starts_with_that_still_opens_a_stage
     found = agents("The ego waits at a red light. A van is parked on the road that the ego is about to turn into. "
                    "Then the ego turns left.")
     assert ("car", "stop", "ego") in found and ("car", "turn_left", "ego") in found
+
+
+@pytest.mark.parametrize("prompt, expected, absent", [
+    ("You rolled past the give way line instead of stopping, and a van came from the right.",
+     ("car", "go_straight", "ego"), ("car", "stop", "ego")),
+    ("The lorry kept going rather than stopping at the red light.", ("truck", "go_straight", "front"),
+     ("truck", "stop", "front")),
+    ("Rather than braking, the van swerved into the left lane.", ("car", "change_lane_to_left", "front"),
+     ("car", "stop", "front")),
+])
+def test_a_manoeuvre_passed_over_for_another_is_not_made(prompt, expected, absent):
+    found = agents(prompt)
+    assert expected in found and absent not in found
+
+
+@pytest.mark.parametrize("prompt", [
+    "You stopped dead when the fire engine came up behind. Better to pull over to the left.",
+    "You stopped dead when the fire engine came up behind. It is best to pull over to the right.",
+    "You stopped dead when the fire engine came up behind. A blue light behind you means pull over to the left.",
+])
+def test_advice_after_the_account_is_no_manoeuvre_of_the_scene(prompt):
+    assert agents(prompt) == [("car", "stop", "ego"), ("firetruck", "go_straight", "back")]
+
+
+def test_what_the_ego_did_instead_replaces_what_it_was_to_do():
+    found = agents("There was a lorry parked on our side, so we had to wait. Instead you carried on.")
+    assert ("car", "go_straight", "ego") in found and ("car", "stop", "ego") not in found

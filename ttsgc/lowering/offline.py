@@ -1806,12 +1806,21 @@ def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
         and "you" in words and not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
 
 
+SIGN_WORDS = {"sign", "signs", "light", "lights", "line", "lines", "marking", "markings", "arrow", "signal", "red",
+              "amber", "green", "yellow", "crossing"}  # "a solid white line means ...": what a sign tells everyone
+
+
 def _standing_advice(tokens: list[Token], sentence: int) -> bool:
     """'Always look right and give way.', 'Never overtake there.', 'Next time wait.': advice for every drive, no
     event of this one."""
     words = [x.word for x in tokens if x.sentence == sentence]
     if words[:2] == ["next", "time"]:
         words = words[1:]  # "Next time wait."
+    if words[:2] in (["it", "is"], ["it", "would"], ["it", "will"]) and words[2:4] != ["to", "be"]:
+        words = words[2:] if words[2:3] != ["be"] else words[3:]  # "It's better to pull over"
+    if words[:1] in (["better"], ["best"], ["safer"], ["wiser"]) and words[1:2] == ["to"] or any(
+            w in ("means", "mean") and set(words[:k]) & SIGN_WORDS for k, w in enumerate(words[:8])):
+        return True  # "Better to pull over to the left.", "A stop sign means wheels stopped, every time."
     return len(words) > 1 and words[0] in ("always", "never", "time") and words[1] not in ("the", "a", "an", "there") and \
         not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
 
@@ -3012,6 +3021,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 and words & set(SIDES):
             for e in subject:  # "signalled right and moved out to turn": the side of the turn it then makes
                 e.features.add("signals_" + ("left" if "left" in words else "right"))
+    if main_verbs and units[0].word == "instead" and len(units[0].tokens) == 1:
+        for e in subject:  # "we needed to give way. Instead you carried on": what was done in place of the other
+            e.actions = [a for a in e.actions if a[0] != stage]
     for i in main_verbs:
         made = _made_to(units, i, phrases)
         for e in made or subject:
@@ -3257,12 +3269,18 @@ def _requested(units: list[Unit], i: int) -> bool:
     return units[j].category == "agents" and units[j - 1].tokens[-1].word in REQUESTING
 
 
+PASSED_OVER = (("instead", "of"), ("rather", "than"), ("as", "opposed", "to"), ("in", "place", "of"))
+
+
 def _denied_verb(units: list[Unit], i: int) -> bool:
     """'don't try to pass him', 'never overtakes', 'must learn how to yield': a verb said not to happen, or
     only talked about ('does not move' is a phrase of its own)."""
     if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
            for u in units[max(0, i - 3):i]):
         return True
+    said_before = [t.word for u in units[max(0, i - 3):i] for t in u.tokens]
+    if any(said_before[-len(lead):] == list(lead) for lead in PASSED_OVER):
+        return True  # "rolled through instead of coming to a stop": the manoeuvre that was not made
     after = [u.word for u in units[i + 1:i + 4]]
     if after[:1] and after[0] in ("impossible", "prohibited", "forbidden", "banned") or \
             after[:2] in (["not", "possible"], ["not", "allowed"], ["not", "permitted"], ["is", "impossible"]) or \
