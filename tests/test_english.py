@@ -3719,3 +3719,14 @@ def test_advice_after_the_account_is_no_manoeuvre_of_the_scene(prompt):
 def test_what_the_ego_did_instead_replaces_what_it_was_to_do():
     found = agents("There was a lorry parked on our side, so we had to wait. Instead you carried on.")
     assert ("car", "go_straight", "ego") in found and ("car", "stop", "ego") not in found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("On the approach to the junction the van in the right lane ahead of us moved into our lane.",
+     ("car", "change_lane_to_left", "front_right")),
+    ("On the approach to the roundabout the lorry in the right lane ahead of us came over into our lane.",
+     ("truck", "change_lane_to_left", "front_right")),
+])
+def test_the_approach_to_a_place_is_a_place_not_the_egos_verb(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and ("car", "go_straight", "ego") in found

@@ -735,6 +735,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     after = [t.word for t in tokens[m.end:m.end + 3]]
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "the jogger never left the sidewalk": leave
+    if m.category == "actions" and [t.base for t in span] == ["approach"] and m.start > 0 and \
+            tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the", "an", "on"} and nxt in ("to", "of", "", ",", "into"):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "on the approach to the roundabout": a place
     if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
