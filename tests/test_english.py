@@ -3730,3 +3730,9 @@ def test_what_the_ego_did_instead_replaces_what_it_was_to_do():
 def test_the_approach_to_a_place_is_a_place_not_the_egos_verb(prompt, expected):
     found = agents(prompt)
     assert expected in found and ("car", "go_straight", "ego") in found
+
+
+@pytest.mark.parametrize("prompt", ["An oncoming pickup truck turns left in front of the ego.",
+                                    "A pick-up truck is parked on the right ahead."])
+def test_a_pickup_truck_is_a_car_as_the_conventions_type_it(prompt):
+    assert [a.type for a in lower(prompt).scenario.agents() if not a.is_ego] == ["car"]
