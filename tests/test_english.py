@@ -3736,3 +3736,23 @@ def test_the_approach_to_a_place_is_a_place_not_the_egos_verb(prompt, expected):
                                     "A pick-up truck is parked on the right ahead."])
 def test_a_pickup_truck_is_a_car_as_the_conventions_type_it(prompt):
     assert [a.type for a in lower(prompt).scenario.agents() if not a.is_ego] == ["car"]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A grey Audi came up the outside lane on my right and cut in front of me.",
+     ("car", "change_lane_to_left", "back_right")),
+    ("A lorry came up the left lane.", ("truck", "go_straight", "back_left")),
+])
+def test_coming_up_a_lane_beside_comes_from_behind(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_coming_up_in_a_lane_says_no_more_than_the_lane():
+    assert ("car", "change_lane_to_right", "back_left") not in agents(
+        "A van came up fast in the left lane and cut in just in front of us.")
+
+
+def test_a_place_said_after_a_cut_in_does_not_undo_where_it_started():
+    found = agents("A white van came up the inside lane on my left, cut me up and braked hard. I had to stop to avoid "
+                   "going into the back of it.")
+    assert ("car", "block_the_ego", "back_left") in found

@@ -2567,6 +2567,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             r.notes.append(f"inferred: '{e.head}' does what '{model.head}' did")
     elif u.category == "actions":
         direction = None
+        if not e.is_ego and u.base in ("come up", "creep up", "speed up", "race up", "fly up") and \
+                clause_units is not None and k is not None and any(
+                x.category == "positions" and x.meaning in ("side_left", "side_right") and
+                x.tokens[-1].word == "lane" and x.tokens[0].word not in ("in", "on", "from", "into")
+                for x in clause_units[k + 1:k + 3]) and \
+                "ahead" not in e.features:
+            e.features.add("behind")  # "came up the inside lane": along the lane beside, from behind
         if clause_units is not None and k is not None and (u.meaning in ("turn", "lane_change", "cut_in") or (
                 u.meaning == "move" and u.tokens[0].base in STEERING)):
             direction = _direction_after(r, clause_units, k)
@@ -3125,7 +3132,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
                     stage > reference.stage or "level" in reference.features)  # "then returns ahead of the bus": it
                 # was; "a truck right next to it, so the ego slots in behind it": beside, as said first
-                if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later:
+                started = reference is not None and u.meaning in ("ahead", "behind") and \
+                    u.meaning in reference.features and bool(reference.actions)  # "a BMW came up the inside lane,
+                # cut me up ... into the back of it": the first place said is where it started
+                if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later and \
+                        not started:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
                 r.mark(u)
                 continue
