@@ -3756,3 +3756,10 @@ def test_a_place_said_after_a_cut_in_does_not_undo_where_it_started():
     found = agents("A white van came up the inside lane on my left, cut me up and braked hard. I had to stop to avoid "
                    "going into the back of it.")
     assert ("car", "block_the_ego", "back_left") in found
+
+
+@pytest.mark.parametrize("prompt, limit", [("Empty dual carriageway, 100 km/h signs, the player cruises.", "speed_100"),
+                                           ("There are 50 km/h signs along the road and a bus is parked ahead.",
+                                            "speed_50")])
+def test_signs_that_show_a_speed_are_its_limit(prompt, limit):
+    assert limit in road(prompt).required_objects

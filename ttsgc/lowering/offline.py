@@ -1051,7 +1051,8 @@ def _denied(units: list[Unit], k: int) -> bool:
     return False
 
 
-LIMIT_WORDS = {"limit", "zone", "sign", "limited", "posted", "restricted", "maximum", "max", "limits"}
+LIMIT_WORDS = {"limit", "zone", "sign", "signs", "signed", "signposted", "limited", "posted", "restricted", "maximum",
+               "max", "limits"}
 
 
 LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "area", "stretch", "section", "lane",
