@@ -3763,3 +3763,19 @@ def test_a_place_said_after_a_cut_in_does_not_undo_where_it_started():
                                             "speed_50")])
 def test_signs_that_show_a_speed_are_its_limit(prompt, limit):
     assert limit in road(prompt).required_objects
+
+
+@pytest.mark.parametrize("prompt", ["A cyclist rides ahead of the ego. Keep the focus on the cyclist.",
+                                    "A cyclist rides ahead of the ego; the focus on the cyclist matters most."])
+def test_the_focus_on_something_is_no_ford(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The player waits at a red light. When the light flips to green the player has to turn left.",
+    "The ego waits at the red light. When the lights switch to green the ego turns left.",
+    "The ego waits at a red light. When it changes to green the ego turns left.",
+])
+def test_a_light_changing_colour_without_a_comma_opens_a_stage_for_the_clause_after(prompt):
+    found = agents(prompt)
+    assert ("car", "stop", "ego") in found and ("car", "turn_left", "ego") in found

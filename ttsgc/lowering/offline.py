@@ -735,6 +735,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     after = [t.word for t in tokens[m.end:m.end + 3]]
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "the jogger never left the sidewalk": leave
+    if m.category == "agents" and [t.word for t in span] == ["focus"] and nxt == "on" and not {
+            t.word for t in tokens[m.end + 1:m.end + 4]} & {"left", "right", "side", "lane", "tail", "bumper"}:
+        return [Unit(m.start, m.end, "word", "focus", span)]  # "the focus on the oncoming pair": no Ford
     if m.category == "actions" and [t.base for t in span] == ["approach"] and m.start > 0 and \
             tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the", "an", "on"} and nxt in ("to", "of", "", ",", "into"):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "on the approach to the roundabout": a place
@@ -1722,6 +1725,9 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
     """A condition written without a comma ('once you were past it you pulled in'): a complete condition (a
     subject and its verb), then a subject pronoun and a verb start the clause the condition is for."""
     u = units[k]
+    if current and all(x.word in SIGNAL_COLOURS | {"to"} for x in current) and \
+            current[-1].word in SIGNAL_COLOURS and _subject_then_its_verb(units, k):
+        return True  # "when the light flips to green the player turns left": the change said, then who acts
     pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
         u.category == "word" and u.word in SUBJECT_PRONOUNS
     if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS for x in current)):
@@ -1729,6 +1735,27 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
     if current[-1].category == "word" and current[-1].word in COPULAS | AUXILIARIES:
         return False  # "once it is you ...": the pronoun belongs to the condition
     return any(x.category == "actions" for x in units[k + 1:k + 3])
+
+
+OBLIGED = {"has", "have", "had", "needs", "need", "must", "to", "got", "gets", "then", "just", "will", "should"}
+
+
+def _subject_then_its_verb(units: list[Unit], k: int) -> bool:
+    """'the player turns left', 'the player has to swing left': a noun phrase, then its verb (after words of
+    obligation or time at most)."""
+    for j, u in enumerate(units[k:k + 4], start=k):
+        if u.category == "agents":
+            if u.meaning == "none":
+                return False
+            for x in units[j + 1:j + 4]:
+                if x.category == "actions":
+                    return x.tokens[0].sentence == u.tokens[0].sentence
+                if not (x.category == "word" and x.word in OBLIGED):
+                    return False
+            return False
+        if not (u.category == "word" and (u.word in DETERMINERS or u.word in SUBJECT_PRONOUNS)):
+            return False
+    return False
 
 
 def _starts_subject(units: list[Unit], k: int) -> bool:
