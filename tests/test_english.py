@@ -3779,3 +3779,18 @@ def test_the_focus_on_something_is_no_ford(prompt):
 def test_a_light_changing_colour_without_a_comma_opens_a_stage_for_the_clause_after(prompt):
     found = agents(prompt)
     assert ("car", "stop", "ego") in found and ("car", "turn_left", "ego") in found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("When you see a school bus with its stop arm out, stop. Today a van passes you on the left.",
+     [("car", "go_straight", "back_left"), ("car", "go_straight", "ego")]),
+    ("If you come across a tractor on a narrow lane, slow down. Here a cyclist is riding ahead of you.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+])
+def test_whoever_a_rule_says_you_may_meet_is_nobody_in_the_scene(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_someone_the_narrator_saw_is_still_in_the_scene():
+    assert ("police", "go_straight", "front_right") in agents(
+        "When I saw a police car on the shoulder, I moved over.")

@@ -1833,8 +1833,17 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
 def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
     """'Once someone's on a zebra, you stop and you wait': advice for anyone at any time, no event of the scene."""
     words = [x.word for x in tokens if x.sentence == sentence]
+    if "you" in words and any(f.category == "agents" and _met_in_a_rule(
+            [x for x in tokens if x.sentence == sentence], [x for x in tokens[:f.start] if x.sentence == sentence],
+            [x for x in tokens[f.end:] if x.sentence == sentence]) for f in _matches_of(tokens, sentence)):
+        return True  # "when you see a police car on the shoulder, change lanes": what anyone does then
     return any(w in ("once", "when", "whenever", "if") and words[k + 1] in ANYONE for k, w in enumerate(words[:-1])) \
         and "you" in words and not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
+
+
+def _matches_of(tokens: list[Token], sentence: int) -> list:
+    inside = [x.index for x in tokens if x.sentence == sentence]
+    return matches(tokens, inside[0], inside[-1] + 1) if inside else []
 
 
 SIGN_WORDS = {"sign", "signs", "light", "lights", "line", "lines", "marking", "markings", "arrow", "signal", "red",
@@ -1992,6 +2001,29 @@ NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear",
 # "never comes", "never arrived": one that is not there ("never came to a stop" is there, and did not stop)
 
 
+MEETING = {"see", "spot", "notice", "encounter", "meet", "approach", "come", "find", "pass", "hear"}
+
+
+def _met_in_a_rule(sentence: list[Token], before: list[Token], after: list[Token]) -> bool:
+    """'When you see a school bus with its stop arm out, stop.', 'If you meet a horse rider, slow down': a rule
+    for anyone who meets such a one (an order follows the condition), not an agent of the scene."""
+    lead = [x for x in before if x.word not in ("a", "an", "any", "another")]
+    if len(lead) < 3 or lead[-1].base not in MEETING and [x.word for x in lead[-2:]] not in (["come", "across"],
+                                                                                           ["come", "upon"]):
+        return False
+    k = len(lead) - (1 if lead[-1].base in MEETING else 2)
+    if not (lead[k - 1].word in ("you", "drivers", "motorists", "one") and k >= 2 and
+            lead[k - 2].word in ("when", "whenever", "if", "once")):
+        return False
+    comma = next((j for j, x in enumerate(after) if x.word == ","), None)
+    if comma is None or comma + 1 >= len(after):
+        return False
+    order = after[comma + 1]
+    return order.word not in SUBJECT_PRONOUNS and order.word == order.base and \
+        lexicon().phrases.get((order.base,), ("",))[0] in ("actions",) or \
+        order.word in ("change", "slow", "move", "give", "pull", "keep", "stay", "wait", "yield", "stop")
+
+
 def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     """Agent nouns the text talks about, that are nobody in the scene: an institution written to or blamed ('I
     reported it to the police', 'I do not blame the fire brigade'); people or vehicles in general ('kids are
@@ -2019,6 +2051,8 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                 last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
+    if u.meaning not in ("ego", "none") and _met_in_a_rule(sentence, before, after):
+        return True  # "when you see a police car stopped on the shoulder, change lanes": whoever one meets
     words = [x.word for x in after[:5]]
     if u.meaning not in ("ego", "none") and "never" in words[:3]:
         k = words.index("never")
