@@ -4081,3 +4081,182 @@ def test_crossing_after_a_person_named_in_several_words_is_the_person_crossing(p
 ])
 def test_the_road_the_narrator_turns_into_is_the_destination_in_any_tense(prompt):
     assert any(a[2] == "at_the_destination" for a in agents(prompt)), agents(prompt)
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("You are at the wheel of a fire engine, going straight through a junction.", "firetruck"),
+    ("You're behind the wheel of a coach on a two-lane road.", "bus"),
+    ("The player drives the getaway van down a back street.", "car"),
+    ("The player pulls the bus in and waits at the stop.", "bus"),
+    ("I was the front seat passenger in my brother's Skoda on the motorway.", "car"),
+    ("I was sitting in the passenger seat of my friend's minibus when we stopped.", "car"),
+])
+def test_a_vehicle_the_speaking_ego_drives_or_sits_in_is_the_egos_own(prompt, ego):
+    found = [a.type for a in lower(prompt).scenario.agents()]
+    assert found == [ego], found
+
+
+@pytest.mark.parametrize("prompt", ["I was behind a bus at the lights.", "You pulled in behind the truck.",
+                                    "I was in front of a lorry on the motorway."])
+def test_a_vehicle_the_ego_is_placed_by_is_another_agent(prompt):
+    assert len(agents(prompt)) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "Delivery Van Frenzy - Round 4\nThe player waits at the red light behind a stopped bus.",
+    'COACH PARTY - "CROSSFIRE"\nThe player waits at the red light behind a stopped bus.',
+    "Taxi Rank Blues\n\nThe player waits at the red light behind a stopped bus.",
+])
+def test_a_marked_title_line_over_prose_names_no_agent(prompt):
+    assert agents(prompt) == [("bus", "stop", "front"), ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("I was doing about 25 mph down the high street, it's a 30 limit.", "speed_48"),
+    ("The lorry was doing 40 miles per hour in a 50 limit.", "speed_80"),
+    ("On the motorway the roadworks had a 50 limit.", "speed_80"),  # keeps left: a British sign
+    ("The truck was doing 60 km/h although it is a 40 limit.", "speed_40"),
+    ("Speed limit 30 on this street, a child crosses.", "speed_30"),
+])
+def test_a_limit_said_by_its_number_alone_takes_the_texts_unit(prompt, limit):
+    assert [w for w in road(prompt).required_objects if w.startswith("speed_")] == [limit]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The roundabout is entered from the right by a lorry.", ("truck", "go_straight", "road_of_right_turn")),
+    ("The crossroads is entered from the opposite side by a van while the ego waits.",
+     ("car", "go_straight", "road_of_straight")),
+])
+def test_a_junction_entered_in_the_passive_is_entered_by_the_agent_after_by(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("The ego is steered into the right lane.", "change_lane_to_right"),
+    ("To let the bus out, I steered into the left lane.", "change_lane_to_left"),
+])
+def test_steering_into_a_named_lane_is_a_lane_change(prompt, action):
+    assert ("car", action, "ego") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus is waiting on the street the ego wants to turn into.", ("bus", "stop", "at_the_destination")),
+    ("Two pedestrians are crossing the road that the ego is going to turn into.",
+     ("pedestrian", "cross_the_road", "at_the_destination")),
+    ("A taxi is stopped on the road that the ego is about to turn into.", ("car", "stop", "at_the_destination")),
+])
+def test_the_road_the_ego_is_about_to_turn_into_is_the_destination(prompt, expected):
+    assert expected in agents(prompt) and ("car", "turn_left", "ego") in agents(prompt)
+
+
+def test_that_road_said_again_after_the_destination_is_the_destination():
+    found = agents("A taxi waits on the road the ego turns into. The ego turns left, and then two children cross "
+                   "that road.")
+    assert found.count(("pedestrian", "cross_the_road", "at_the_destination")) == 2
+
+
+def test_a_sequence_word_after_a_place_that_starts_with_that_still_opens_a_stage():
+    found = agents("The ego waits at a red light. A van is parked on the road that the ego is about to turn into. "
+                   "Then the ego turns left.")
+    assert ("car", "stop", "ego") in found and ("car", "turn_left", "ego") in found
+
+
+@pytest.mark.parametrize("prompt, expected, absent", [
+    ("You rolled past the give way line instead of stopping, and a van came from the right.",
+     ("car", "go_straight", "ego"), ("car", "stop", "ego")),
+    ("The lorry kept going rather than stopping at the red light.", ("truck", "go_straight", "front"),
+     ("truck", "stop", "front")),
+    ("Rather than braking, the van swerved into the left lane.", ("car", "change_lane_to_left", "front"),
+     ("car", "stop", "front")),
+])
+def test_a_manoeuvre_passed_over_for_another_is_not_made(prompt, expected, absent):
+    found = agents(prompt)
+    assert expected in found and absent not in found
+
+
+@pytest.mark.parametrize("prompt", [
+    "You stopped dead when the fire engine came up behind. Better to pull over to the left.",
+    "You stopped dead when the fire engine came up behind. It is best to pull over to the right.",
+    "You stopped dead when the fire engine came up behind. A blue light behind you means pull over to the left.",
+])
+def test_advice_after_the_account_is_no_manoeuvre_of_the_scene(prompt):
+    assert agents(prompt) == [("car", "stop", "ego"), ("firetruck", "go_straight", "back")]
+
+
+def test_what_the_ego_did_instead_replaces_what_it_was_to_do():
+    found = agents("There was a lorry parked on our side, so we had to wait. Instead you carried on.")
+    assert ("car", "go_straight", "ego") in found and ("car", "stop", "ego") not in found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("On the approach to the junction the van in the right lane ahead of us moved into our lane.",
+     ("car", "change_lane_to_left", "front_right")),
+    ("On the approach to the roundabout the lorry in the right lane ahead of us came over into our lane.",
+     ("truck", "change_lane_to_left", "front_right")),
+])
+def test_the_approach_to_a_place_is_a_place_not_the_egos_verb(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and ("car", "go_straight", "ego") in found
+
+
+@pytest.mark.parametrize("prompt", ["An oncoming pickup truck turns left in front of the ego.",
+                                    "A pick-up truck is parked on the right ahead."])
+def test_a_pickup_truck_is_a_car_as_the_conventions_type_it(prompt):
+    assert [a.type for a in lower(prompt).scenario.agents() if not a.is_ego] == ["car"]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A grey Audi came up the outside lane on my right and cut in front of me.",
+     ("car", "change_lane_to_left", "back_right")),
+    ("A lorry came up the left lane.", ("truck", "go_straight", "back_left")),
+])
+def test_coming_up_a_lane_beside_comes_from_behind(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_coming_up_in_a_lane_says_no_more_than_the_lane():
+    assert ("car", "change_lane_to_right", "back_left") not in agents(
+        "A van came up fast in the left lane and cut in just in front of us.")
+
+
+def test_a_place_said_after_a_cut_in_does_not_undo_where_it_started():
+    found = agents("A white van came up the inside lane on my left, cut me up and braked hard. I had to stop to avoid "
+                   "going into the back of it.")
+    assert ("car", "block_the_ego", "back_left") in found
+
+
+@pytest.mark.parametrize("prompt, limit", [("Empty dual carriageway, 100 km/h signs, the player cruises.", "speed_100"),
+                                           ("There are 50 km/h signs along the road and a bus is parked ahead.",
+                                            "speed_50")])
+def test_signs_that_show_a_speed_are_its_limit(prompt, limit):
+    assert limit in road(prompt).required_objects
+
+
+@pytest.mark.parametrize("prompt", ["A cyclist rides ahead of the ego. Keep the focus on the cyclist.",
+                                    "A cyclist rides ahead of the ego; the focus on the cyclist matters most."])
+def test_the_focus_on_something_is_no_ford(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The player waits at a red light. When the light flips to green the player has to turn left.",
+    "The ego waits at the red light. When the lights switch to green the ego turns left.",
+    "The ego waits at a red light. When it changes to green the ego turns left.",
+])
+def test_a_light_changing_colour_without_a_comma_opens_a_stage_for_the_clause_after(prompt):
+    found = agents(prompt)
+    assert ("car", "stop", "ego") in found and ("car", "turn_left", "ego") in found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("When you see a school bus with its stop arm out, stop. Today a van passes you on the left.",
+     [("car", "go_straight", "back_left"), ("car", "go_straight", "ego")]),
+    ("If you come across a tractor on a narrow lane, slow down. Here a cyclist is riding ahead of you.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+])
+def test_whoever_a_rule_says_you_may_meet_is_nobody_in_the_scene(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_someone_the_narrator_saw_is_still_in_the_scene():
+    assert ("police", "go_straight", "front_right") in agents(
+        "When I saw a police car on the shoulder, I moved over.")

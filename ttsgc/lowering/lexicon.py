@@ -331,6 +331,21 @@ def _without_outline_numbers(lines: list[str]) -> list[str]:
     return out
 
 
+TITLE_MARK = re.compile(r"\s[-\u2013\u2014]\s|[\"\u201c\u201d\[]")  # "Bus Career - Route 12", 'LEVEL 3 "GO"'
+
+
+def _heading_line(lines: list[str]) -> bool:
+    """A first line with no full stop that names the piece ('Ambulance Sim - Shift 2, Call 4', 'LEVEL 3 -
+    "GREEN MEANS GO"') over a blank line, or marked as a title (a spaced dash, quotes, a tag in square
+    brackets) over prose: the piece's title, read for the road and the weather only."""
+    first = lines[0]
+    if first.rstrip().endswith((".", "!", "?")) or len(first.split()) > 12 or len(lines) < 2:
+        return False
+    if len(lines) > 2 and not lines[1].strip():
+        return True
+    return TITLE_MARK.search(first) is not None and lines[1].rstrip().endswith((".", "!", "?"))
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
@@ -348,8 +363,7 @@ def _lines(text: str) -> str:
         line = line.replace("->", " and ").replace("\u2192", " and ")
         line = LABEL_COLUMN.sub(r"\1: ", line)  # "  TV1  car stopped ahead": a label in a column of its own
         m = KEY_LINE.match(line)
-        if k == 0 and m is None and len(lines) > 2 and not lines[1].strip() and not line.rstrip().endswith(
-                (".", "!", "?")) and len(line.split()) <= 12:
+        if k == 0 and m is None and _heading_line(lines):
             out.append("\u00a7 " + line.strip() + ".")  # a heading line over a blank line: the ticket's title
             continue
         if m is None:

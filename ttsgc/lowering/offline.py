@@ -560,13 +560,24 @@ def _later_corrections(r: "_Reader") -> list[Unit]:
     return units
 
 
+TO_COME = AUXILIARIES | {"am", "about", "going", "due", "want", "wants", "wanted", "need", "needs", "needed", "plan",
+                         "plans", "planned", "intend", "intends", "intended", "has", "have", "had", "set"}
+
+
 def _turned_into(units: list[Unit]) -> list[Unit]:
     """'crossing the road I was turning into': a relative clause on a road noun naming where the ego turns."""
     out, k = [], 0
+    named = False
     while k < len(units):
         u = units[k]
+        if named and u.tokens[-1].word in ("road", "street", "avenue") and out and out[-1].word in ("that", "this") \
+                and (k + 1 >= len(units) or units[k + 1].word not in ("that", "which")):
+            out[-1] = Unit(out[-1].start, u.end, "positions", "destination", out[-1].tokens + u.tokens)
+            k += 1  # "... the road the ego turns into. Then that road is crossed by two people": that road again
+            continue
         out.append(u)
         k += 1
+        named = named or u.category == "positions" and u.meaning == "destination"
         if u.tokens[-1].word not in ("road", "street", "avenue") or k >= len(units):
             continue
         j = k + (k + 1 < len(units) and units[k].word in ("in", "into", "onto") and units[k + 1].word == "which")
@@ -575,8 +586,9 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
         if not (j < len(units) and units[j].category == "agents" and units[j].meaning == "ego"):
             continue
         j += 1
-        while j < len(units) and units[j].category == "word" and units[j].word in AUXILIARIES | {"am", "about"}:
-            j += 1
+        while j < len(units) and units[j].category in ("word", "actions") and units[j].word in TO_COME | {"to"} and \
+                (units[j].category == "word" or units[j].meaning == "try"):
+            j += 1  # "the road the ego is about to turn into", "the street we want to turn into"
         into = j + 1 < len(units) and units[j + 1].word in ("into", "onto")
         if j < len(units) and units[j].category == "actions" and units[j].meaning.startswith("turn") and (
                 into or units[k].word in ("in", "into", "onto")):
@@ -584,6 +596,7 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
             tokens = tuple(t for x in units[k:end] for t in x.tokens)
             out.append(Unit(units[k].start, units[end - 1].end, "positions", "destination", tokens))
             k = end
+            named = True
     return out
 
 
@@ -760,6 +773,12 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
         return [Unit(m.start, m.end, "actions", _left_as_a_verb(tokens, m.start), span)]
         # "the jogger never left the sidewalk": leave; "a lorry had been left on the hard shoulder": it stands
+    if m.category == "agents" and [t.word for t in span] == ["focus"] and nxt == "on" and not {
+            t.word for t in tokens[m.end + 1:m.end + 4]} & {"left", "right", "side", "lane", "tail", "bumper"}:
+        return [Unit(m.start, m.end, "word", "focus", span)]  # "the focus on the oncoming pair": no Ford
+    if m.category == "actions" and [t.base for t in span] == ["approach"] and m.start > 0 and \
+            tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the", "an", "on"} and nxt in ("to", "of", "", ",", "into"):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "on the approach to the roundabout": a place
     if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
@@ -1105,7 +1124,8 @@ def _denied(units: list[Unit], k: int) -> bool:
     return False
 
 
-LIMIT_WORDS = {"limit", "zone", "sign", "limited", "posted", "restricted", "maximum", "max", "limits"}
+LIMIT_WORDS = {"limit", "zone", "sign", "signs", "signed", "signposted", "limited", "posted", "restricted", "maximum",
+               "max", "limits"}
 
 
 LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "area", "stretch", "section", "lane",
@@ -1172,8 +1192,9 @@ def _speed_limits(r: _Reader) -> list[str]:
         if unitless and not mph and value % 10 == 5 and 15 <= value <= 85:
             mph = True  # "25 limit", "Limit's 65": US signs in miles an hour step by five
             r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (a US sign)")
-        elif unitless and not mph and in_miles and value % 5 == 0 and 10 <= value <= 85:
-            mph = True  # "doing 35 mph in a 40 zone", "I-95, speed limit 70": the text's own unit
+        elif unitless and not mph and (in_miles or _KEEPS_LEFT.get()) and value % 5 == 0 and 10 <= value <= 85:
+            mph = True  # "doing 35 mph in a 40 zone", "I-95, speed limit 70": the text's own unit; "a 50 limit on
+            # the motorway": a British sign
             r.notes.append(f"inferred: a limit of {value:g} with no unit is read as mph (the text measures in miles)")
         unit = "mph" if mph else "km/h"
         kmh = value * 1.609344 if mph else value
@@ -1580,7 +1601,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             r.mark(u)
             continue  # "stop, even when it's clear": a concession; "the next bit was ...": which bit; "around 6pm,
             # maybe a bit later": when, roughly; no stage
-        if u.category == "sequence" and prev_word in RELATIVES:
+        if u.category == "sequence" and prev_word in RELATIVES and units[k - 1].category == "word":
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
         if u.category == "sequence" and u.word == "after" and prev_word in ("one", "each") and nxt is not None and \
@@ -1788,6 +1809,9 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
     """A condition written without a comma ('once you were past it you pulled in'): a complete condition (a
     subject and its verb), then a subject pronoun and a verb start the clause the condition is for."""
     u = units[k]
+    if current and all(x.word in SIGNAL_COLOURS | {"to"} for x in current) and \
+            current[-1].word in SIGNAL_COLOURS and _subject_then_its_verb(units, k):
+        return True  # "when the light flips to green the player turns left": the change said, then who acts
     pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
         u.category == "word" and u.word in SUBJECT_PRONOUNS
     if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS for x in current)):
@@ -1795,6 +1819,27 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
     if current[-1].category == "word" and current[-1].word in COPULAS | AUXILIARIES:
         return False  # "once it is you ...": the pronoun belongs to the condition
     return any(x.category == "actions" for x in units[k + 1:k + 3])
+
+
+OBLIGED = {"has", "have", "had", "needs", "need", "must", "to", "got", "gets", "then", "just", "will", "should"}
+
+
+def _subject_then_its_verb(units: list[Unit], k: int) -> bool:
+    """'the player turns left', 'the player has to swing left': a noun phrase, then its verb (after words of
+    obligation or time at most)."""
+    for j, u in enumerate(units[k:k + 4], start=k):
+        if u.category == "agents":
+            if u.meaning == "none":
+                return False
+            for x in units[j + 1:j + 4]:
+                if x.category == "actions":
+                    return x.tokens[0].sentence == u.tokens[0].sentence
+                if not (x.category == "word" and x.word in OBLIGED):
+                    return False
+            return False
+        if not (u.category == "word" and (u.word in DETERMINERS or u.word in SUBJECT_PRONOUNS)):
+            return False
+    return False
 
 
 def _starts_subject(units: list[Unit], k: int) -> bool:
@@ -1872,8 +1917,21 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
 def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
     """'Once someone's on a zebra, you stop and you wait': advice for anyone at any time, no event of the scene."""
     words = [x.word for x in tokens if x.sentence == sentence]
+    if "you" in words and any(f.category == "agents" and _met_in_a_rule(
+            [x for x in tokens if x.sentence == sentence], [x for x in tokens[:f.start] if x.sentence == sentence],
+            [x for x in tokens[f.end:] if x.sentence == sentence]) for f in _matches_of(tokens, sentence)):
+        return True  # "when you see a police car on the shoulder, change lanes": what anyone does then
     return any(w in ("once", "when", "whenever", "if") and words[k + 1] in ANYONE for k, w in enumerate(words[:-1])) \
         and "you" in words and not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
+
+
+def _matches_of(tokens: list[Token], sentence: int) -> list:
+    inside = [x.index for x in tokens if x.sentence == sentence]
+    return matches(tokens, inside[0], inside[-1] + 1) if inside else []
+
+
+SIGN_WORDS = {"sign", "signs", "light", "lights", "line", "lines", "marking", "markings", "arrow", "signal", "red",
+              "amber", "green", "yellow", "crossing"}  # "a solid white line means ...": what a sign tells everyone
 
 
 def _standing_advice(tokens: list[Token], sentence: int) -> bool:
@@ -1882,6 +1940,11 @@ def _standing_advice(tokens: list[Token], sentence: int) -> bool:
     words = [x.word for x in tokens if x.sentence == sentence]
     if words[:2] == ["next", "time"]:
         words = words[1:]  # "Next time wait."
+    if words[:2] in (["it", "is"], ["it", "would"], ["it", "will"]) and words[2:4] != ["to", "be"]:
+        words = words[2:] if words[2:3] != ["be"] else words[3:]  # "It's better to pull over"
+    if words[:1] in (["better"], ["best"], ["safer"], ["wiser"]) and words[1:2] == ["to"] or any(
+            w in ("means", "mean") and set(words[:k]) & SIGN_WORDS for k, w in enumerate(words[:8])):
+        return True  # "Better to pull over to the left.", "A stop sign means wheels stopped, every time."
     return len(words) > 1 and words[0] in ("always", "never", "time") and words[1] not in ("the", "a", "an", "there") and \
         not set(words) & _agent_nouns() - ANYONE - EGO_WORDS
 
@@ -2027,6 +2090,29 @@ NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear",
 # "never comes", "never arrived": one that is not there ("never came to a stop" is there, and did not stop)
 
 
+MEETING = {"see", "spot", "notice", "encounter", "meet", "approach", "come", "find", "pass", "hear"}
+
+
+def _met_in_a_rule(sentence: list[Token], before: list[Token], after: list[Token]) -> bool:
+    """'When you see a school bus with its stop arm out, stop.', 'If you meet a horse rider, slow down': a rule
+    for anyone who meets such a one (an order follows the condition), not an agent of the scene."""
+    lead = [x for x in before if x.word not in ("a", "an", "any", "another")]
+    if len(lead) < 3 or lead[-1].base not in MEETING and [x.word for x in lead[-2:]] not in (["come", "across"],
+                                                                                           ["come", "upon"]):
+        return False
+    k = len(lead) - (1 if lead[-1].base in MEETING else 2)
+    if not (lead[k - 1].word in ("you", "drivers", "motorists", "one") and k >= 2 and
+            lead[k - 2].word in ("when", "whenever", "if", "once")):
+        return False
+    comma = next((j for j, x in enumerate(after) if x.word == ","), None)
+    if comma is None or comma + 1 >= len(after):
+        return False
+    order = after[comma + 1]
+    return order.word not in SUBJECT_PRONOUNS and order.word == order.base and \
+        lexicon().phrases.get((order.base,), ("",))[0] in ("actions",) or \
+        order.word in ("change", "slow", "move", "give", "pull", "keep", "stay", "wait", "yield", "stop")
+
+
 def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     """Agent nouns the text talks about, that are nobody in the scene: an institution written to or blamed ('I
     reported it to the police', 'I do not blame the fire brigade'); people or vehicles in general ('kids are
@@ -2054,6 +2140,8 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                 last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
+    if u.meaning not in ("ego", "none") and _met_in_a_rule(sentence, before, after):
+        return True  # "when you see a police car stopped on the shoulder, change lanes": whoever one meets
     words = [x.word for x in after[:5]]
     if u.meaning not in ("ego", "none") and not before and len(words) >= 2 and words[0] in COPULAS and \
             (words[1] in DAMAGED or words[1] in DEGREE and words[2:3] and words[2] in DAMAGED):
@@ -2709,6 +2797,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             r.notes.append(f"inferred: '{e.head}' does what '{model.head}' did")
     elif u.category == "actions":
         direction = None
+        if not e.is_ego and u.base in ("come up", "creep up", "speed up", "race up", "fly up") and \
+                clause_units is not None and k is not None and any(
+                x.category == "positions" and x.meaning in ("side_left", "side_right") and
+                x.tokens[-1].word == "lane" and x.tokens[0].word not in ("in", "on", "from", "into")
+                for x in clause_units[k + 1:k + 3]) and \
+                "ahead" not in e.features:
+            e.features.add("behind")  # "came up the inside lane": along the lane beside, from behind
         if clause_units is not None and k is not None and (u.meaning in ("turn", "lane_change", "cut_in") or (
                 u.meaning == "move" and u.tokens[0].base in STEERING)):
             direction = _direction_after(r, clause_units, k)
@@ -3051,8 +3146,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
              and not _named_manoeuvre(units, i) and not _requested(units, i) and not _planned(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
-            u.category == "road" for u in units[max(0, verbs[0] - 2):verbs[0]]):
-        verbs = []  # "the light turns red": the subject is a signal, no agent acts
+            u.category == "road" and u.meaning != "junction" for u in units[max(0, verbs[0] - 2):verbs[0]]):
+        verbs = []  # "the light turns red": the subject is a signal, no agent acts ("the junction is entered by
+        # two cars": a place is the subject of a passive, its agent acts)
     verbs = [i for i in verbs if not _signal_change(units, i)]
     for i, u in enumerate(units):
         if u.category == "actions" and u.meaning == "try":
@@ -3192,6 +3288,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 and words & set(SIDES):
             for e in subject:  # "signalled right and moved out to turn": the side of the turn it then makes
                 e.features.add("signals_" + ("left" if "left" in words else "right"))
+    if main_verbs and units[0].word == "instead" and len(units[0].tokens) == 1:
+        for e in subject:  # "we needed to give way. Instead you carried on": what was done in place of the other
+            e.actions = [a for a in e.actions if a[0] != stage]
     for i in main_verbs:
         made = _made_to(units, i, phrases)
         for e in made or subject:
@@ -3291,7 +3390,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
                     stage > reference.stage or "level" in reference.features)  # "then returns ahead of the bus": it
                 # was; "a truck right next to it, so the ego slots in behind it": beside, as said first
-                if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later:
+                started = reference is not None and u.meaning in ("ahead", "behind") and \
+                    u.meaning in reference.features and bool(reference.actions)  # "a BMW came up the inside lane,
+                # cut me up ... into the back of it": the first place said is where it started
+                if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later and \
+                        not started:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
                 r.mark(u)
                 continue
@@ -3459,12 +3562,18 @@ def _requested(units: list[Unit], i: int) -> bool:
     return units[j].category == "agents" and units[j - 1].tokens[-1].word in REQUESTING
 
 
+PASSED_OVER = (("instead", "of"), ("rather", "than"), ("as", "opposed", "to"), ("in", "place", "of"))
+
+
 def _denied_verb(units: list[Unit], i: int) -> bool:
     """'don't try to pass him', 'never overtakes', 'must learn how to yield': a verb said not to happen, or
     only talked about ('does not move' is a phrase of its own)."""
     if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
            for u in units[max(0, i - 3):i]):
         return True
+    said_before = [t.word for u in units[max(0, i - 3):i] for t in u.tokens]
+    if any(said_before[-len(lead):] == list(lead) for lead in PASSED_OVER):
+        return True  # "rolled through instead of coming to a stop": the manoeuvre that was not made
     after = [u.word for u in units[i + 1:i + 4]]
     if after[:1] and after[0] in ("impossible", "prohibited", "forbidden", "banned") or \
             after[:2] in (["not", "possible"], ["not", "allowed"], ["not", "permitted"], ["is", "impossible"]) or \
@@ -3814,6 +3923,12 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 and [u.word for u in units[prev.index + 1: np.first]] in (["on"], ["riding"], ["astride"]):
             _fold(r, prev.entity, np.entity)  # "two kids on scooters": two riders, counted by the people
             continue
+        if np.introduced and _at_the_wheel_of(units, out, np):
+            ego = next(p.entity for p in reversed(out) if p.entity is not None)
+            ego.type = np.entity.type if np.entity.type != "car" else ego.type
+            if np.entity in r.entities:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
+                r.entities.remove(np.entity)
+            continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
@@ -3852,13 +3967,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 a.aliases |= b.aliases | {b.head}
                 _fold(r, a, b)
                 continue
-            mine = prev.entity.is_ego and prev.entity.head in FIRST_PERSON | {"we", "you"} and between and all(
-                u.category in ("word", "actions") and u.tokens[-1].word in AT_THE_WHEEL_OF for u in between) and \
-                between[-1].tokens[-1].word in ("in", "driving", "drove", "of", "riding", "operating", "operated") and \
-                np.entity.type in V.EGO_TYPES
-            mine = mine or prev.entity.is_ego and len(units[prev.index].tokens) > 1 and _named_make(
+            mine = prev.entity.is_ego and len(units[prev.index].tokens) > 1 and _named_make(
                 between, np.entity.type)  # "my vehicle, a grey Vauxhall Astra,": its make and model
-            if mine:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
+            if mine:
                 prev.entity.type = np.entity.type if np.entity.type != "car" else prev.entity.type
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
@@ -3884,6 +3995,30 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> bool:
+    """'I was driving a bus', 'you're at the wheel of the ambulance', 'the player pulls the bus in', 'I was the
+    front-seat passenger in my husband's Honda': a vehicle the speaking ego drives, steers or sits in is the ego's
+    own, no other agent."""
+    k = len(before) - 1
+    seat = None
+    if k >= 1 and before[k].entity is None and "passenger" in units[before[k].index].base.split():
+        seat, k = before[k], k - 1  # "the front-seat passenger in ...": the passenger is the speaker
+    if k < 0 or before[k].entity is None or not before[k].entity.is_ego or \
+            before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego"} or \
+            np.entity is None or np.entity.type not in V.EGO_TYPES or np.plural:
+        return False
+    between = units[before[k].index + 1: np.first]
+    if np.first < np.index and units[np.first].word == "of":
+        between.append(units[np.first])  # "at the wheel of the ambulance": 'of' was read into the noun phrase
+    inside_seat = set(range(seat.first, seat.index + 1)) if seat is not None else set()
+    wheel = any(u.word == "wheel" for u in between)
+    return bool(between) and all(
+        units.index(u) in inside_seat or wheel and u.category == "positions" and u.base == "behind" or
+        u.category in ("word", "actions") and (u.tokens[-1].word in AT_THE_WHEEL_OF or u.base in AT_THE_WHEEL_OF)
+        for u in between) and \
+        (between[-1].tokens[-1].word in OPERATED_FROM or between[-1].base in OPERATED_FROM)
 
 
 def _named_make(between: list[Unit], kind: str) -> bool:
@@ -4656,7 +4791,10 @@ AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cyclin
 FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operating", "operated", "on", "patrol",
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
-                   "stationary", "parked", "a", "an", "marked", "unmarked"}
+                   "stationary", "parked", "a", "an", "marked", "unmarked", "drive", "steer", "pilot", "pull",
+                   "operate", "ride", "sit", "passenger"}
+OPERATED_FROM = {"in", "of", "driving", "drove", "riding", "operating", "operated", "drive", "ride", "operate", "steer",
+                 "pilot", "pull"}  # the word right before the ego's own vehicle
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
 
 
