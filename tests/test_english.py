@@ -3122,6 +3122,13 @@ def test_an_after_phrase_said_after_its_clause_opens_no_later_stage(prompt):
     assert len(scene.stages) == 1 and scene.stages[0].agents[0].action == "stop", scene.stages
 
 
+@pytest.mark.parametrize("prompt", ["a car cuts in after 5 seconds", "A van pulls out in front of us after 3 s."])
+def test_an_after_said_with_a_time_at_the_end_of_its_clause_is_its_trigger(prompt):
+    scene = lower(prompt).scenario
+    other = next(a for a in scene.agents() if not a.is_ego)
+    assert len(scene.stages) == 1 and other.trigger is not None and other.trigger.after_s in (5, 3), other
+
+
 @pytest.mark.parametrize("prompt, turn", [
     ("I was waiting in the junction to turn right while a bus came the other way. Once it had passed I completed "
      "the turn.", "turn_right"),

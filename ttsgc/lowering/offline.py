@@ -1614,7 +1614,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
         if u.category == "sequence" and u.word == "after" and _has_verb(current) and \
-                _no_verb_to_the_sentence_end(units, k + 1):
+                not (nxt is not None and nxt.category == "number") and _no_verb_to_the_sentence_end(units, k + 1):
             r.mark(u)
             continue  # "two cars stopped ahead after a minor collision", "parked just after the junction": when
             # or where that was, said after it; what comes next is no later stage
