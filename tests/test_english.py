@@ -3324,6 +3324,16 @@ def test_a_bare_vehicle_said_to_be_damaged_afterwards_is_no_new_agent(prompt):
     assert agents(prompt) == [("car", "go_straight", "back"), ("car", "go_straight", "ego")]
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("I stopped for a lady on the zebra crossing. Then the van behind me pulled out to overtake me on the right.",
+     ("car", "change_lane_to_right", "back")),
+    ("The car behind me pulled out and overtook me on the left.", ("car", "change_lane_to_left", "back")),
+    ("A motorbike behind us overtook us on the right.", ("motorcycle", "go_straight", "back_right")),
+])
+def test_one_behind_that_pulls_out_to_pass_on_a_side_changes_lane_to_it_from_behind(prompt, expected):
+    assert expected in agents(prompt)
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -3211,6 +3211,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 not any(e in subject for e in owner):
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
+        if u.meaning in ("side_left", "side_right") and _side_of_passing_the_ego(units, i) and owner and \
+                all(not e.is_ego and {"behind", "moves_out"} <= e.features for e in owner):
+            for e in owner:  # "the van behind me pulled out to overtake me on the right": out of the ego's lane,
+                e.features.add("passes_" + u.meaning[5:])  # on that side; it starts behind, in the lane
+            r.mark(u)
+            continue
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
         if reference is None and u.category == "positions" and u.tokens[-1].word in ("it", "them") and \
@@ -3682,6 +3688,15 @@ def _part_of_group(r: _Reader, n: int) -> Entity | None:
         r.entities.append(part)
         return part
     return None
+
+
+def _side_of_passing_the_ego(units: list[Unit], i: int) -> bool:
+    """'(overtook) me on the right', 'passed us on the left': the side a vehicle passes the ego on."""
+    j = i - 1
+    if j >= 0 and units[j].category == "agents" and units[j].meaning == "ego":
+        j -= 1
+    return j >= 0 and units[j].category == "actions" and bool(set(units[j].base.split()) & OVERTAKING) and \
+        j < i - 1
 
 
 def _the_one_placed(r: _Reader, units: list[Unit], i: int) -> Entity | None:
@@ -4906,6 +4921,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             action = "move"  # "pulled out of a side road on the left": a junction road, no lane change
         if action == "cut_in" and direction and "into_ego_lane" not in e.features:
             action = "lane_" + direction  # "swings into the right lane"
+        passes = next((side for side in SIDES if f"passes_{side}" in e.features), None)
+        if passes and action == "cut_in" and "moves_out" in e.features:
+            action, direction = "lane_" + passes, passes  # "pulled out to overtake me on the right"
         if e.road_type == "shoulder" and action == "stop" and e.type not in V.VULNERABLE_TYPES and \
                 not e.features & {"ahead", "behind", "level", "overtaking"}:
             e.features.add("ahead")  # "a tractor-trailer on the right shoulder, hazards on": one the ego comes up to
