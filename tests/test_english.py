@@ -3334,6 +3334,16 @@ def test_one_behind_that_pulls_out_to_pass_on_a_side_changes_lane_to_it_from_beh
     assert expected in agents(prompt)
 
 
+@pytest.mark.parametrize("prompt", [
+    "An ambulance approached from behind in the same lane with its siren on. I pulled to the right and stopped. "
+    "The ambulance passed on the left.",
+    "A police car came up behind me in my lane, lights on. I pulled over and it passed me on the right.",
+])
+def test_one_said_to_come_from_behind_in_the_ego_lane_starts_there_whichever_side_it_passes(prompt):
+    found = [a for a in agents(prompt) if a[2] != "ego"]
+    assert len(found) == 1 and found[0][2] == "back", found
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -4331,7 +4331,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if lane_move and {"level", "into_ego_lane"} <= f and not behind:
         ahead = False  # "alongside me ... moved into my lane, directly in front of me": level, ending ahead
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
-            and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
+            and ("overtaking" not in f or "behind" in f):  # "overtook us on the right, pulled in ahead": the side it
+        # passed on; but "approached from behind in the same lane ... passed on the left": it starts behind, in it
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f and not ("behind" in f and junction is False):
         side = _overtaking_side("side_of_an_overtaker")
