@@ -3344,6 +3344,16 @@ def test_one_said_to_come_from_behind_in_the_ego_lane_starts_there_whichever_sid
     assert len(found) == 1 and found[0][2] == "back", found
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("At the all-way stop, a sedan on the left had stopped first and was proceeding straight across.",
+     ("car", "go_straight", "road_of_left_turn")),
+    ("A car had stopped ahead of me.", ("car", "stop", "front")),
+    ("A van cut in front of me and I had to stop dead.", ("car", "stop", "ego")),
+])
+def test_what_an_agent_had_done_before_yields_to_what_it_is_doing(prompt, expected):
+    assert expected in agents(prompt)
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

@@ -2780,10 +2780,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "I arrived at the
             # all-way stop", "pulls up to a stop sign": it stops there (a turn said with it still wins)
         earlier = clause_units is not None and k is not None and any(
-            x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
+            x.word == "had" and y.word != "to" for x, y in zip(clause_units[max(0, k - 3):k],
+                                                               clause_units[max(0, k - 3) + 1:k + 1])) and \
+            action == "stop"  # ("I had to stop dead" is no state before the story)
         # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
-        e.actions.append((stage, strength, ACTION_RANK.get(action, 0), 0 if earlier else r.tick(), action,
-                          direction))
+        e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
+                          0 if earlier else r.tick(), action, direction))
+        # ("had stopped first and was proceeding straight across": what it does now outranks what it had done)
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
 
