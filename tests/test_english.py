@@ -3354,6 +3354,20 @@ def test_what_an_agent_had_done_before_yields_to_what_it_is_doing(prompt, expect
     assert expected in agents(prompt)
 
 
+@pytest.mark.parametrize("prompt, crosswalk", [
+    ("Q: Was there a crosswalk where you turned? A: There's a crosswalk, the ladder-style one. Q: And Mrs. Feeney was "
+     "in that crosswalk? A: I didn't see her. She was crossing from my left, but the pillar blocks your view.",
+     "ladder_crosswalk"),
+    ("There is a zebra crossing at the junction. I turned right, and he walked out from my right.",
+     "continental_crosswalk"),
+])
+def test_a_person_named_only_by_a_pronoun_crossing_where_the_road_has_a_crosswalk_is_on_it(prompt, crosswalk):
+    scene = lower(prompt).scenario
+    people = [(a.type, a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego]
+    assert people == [("pedestrian", "cross_the_road", "near_the_crosswalk")], people
+    assert scene.road.required_objects == (crosswalk,)
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

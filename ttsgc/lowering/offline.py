@@ -706,6 +706,7 @@ def _left_as_a_verb(tokens: list[Token], i: int) -> str | None:
     return "move" if before.word in LEFT_AS_A_VERB_AFTER or entry is not None and entry[0] == "agents" else None
 
 
+SIGHT_WORDS = {"view", "sight", "vision", "visibility"}
 LANE_MARKINGS = {"line", "lines", "marking", "markings", "median", "lane line", "lane lines"}
 
 
@@ -732,6 +733,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
         return [Unit(m.start, m.end, "actions", _left_as_a_verb(tokens, m.start), span)]
         # "the jogger never left the sidewalk": leave; "a lorry had been left on the hard shoulder": it stands
+    if m.category == "actions" and m.meaning == "block" and {t.word for t in tokens[m.end:m.end + 3]
+                                                             if t.sentence == span[-1].sentence} & SIGHT_WORDS:
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "the pillar blocks your view": of sight
     if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
@@ -2990,7 +2994,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 phrases.append(NounPhrase(pool[0] if u.word == "former" else pool[-1], i, i))
         else:
             target = _pronoun(units, i, phrases, r.surface or previous_subject, recent)
-            if target is not None:
+            if target is None and u.word in ("she", "he") and _on_foot_in_the_scene(units, i) and \
+                    not any(e.type == "pedestrian" for e in r.entities):
+                target = Entity(len(r.entities), "pedestrian", False, stage, head=u.word)
+                r.entities.append(target)  # "Mrs. Feeney was in that crosswalk? ... She was crossing from my
+                r.notes.append(f"inferred: '{u.word}' on foot is a person in the scene")  # left": named before
+                phrases.append(NounPhrase(target, i, i, introduced=True))  # only by her name
+            elif target is not None:
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
@@ -4284,6 +4294,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
     if "target_lane" in f and target_side and not _side(e):
         f.add(f"side_{target_side}")
+    if crossing and e.type == "pedestrian" and has_crosswalk and "off_crosswalk" not in f:
+        f.add("crosswalk")  # "Mrs. Feeney was in that crosswalk? ... She was crossing from my left": on the one
+        # crosswalk the road has, said in another sentence
     if e.road_type == "shoulder" and not _side_of(f):
         f.add("side_left" if _KEEPS_LEFT.get() else "side_right")  # the shoulder is at the kerb edge (the left
         # where traffic keeps left), ahead unless said otherwise
