@@ -3331,6 +3331,50 @@ def test_a_bare_vehicle_said_to_be_damaged_afterwards_is_no_new_agent(prompt):
     assert agents(prompt) == [("car", "go_straight", "back"), ("car", "go_straight", "ego")]
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("I stopped for a lady on the zebra crossing. Then the van behind me pulled out to overtake me on the right.",
+     ("car", "change_lane_to_right", "back")),
+    ("The car behind me pulled out and overtook me on the left.", ("car", "change_lane_to_left", "back")),
+    ("A motorbike behind us overtook us on the right.", ("motorcycle", "go_straight", "back_right")),
+])
+def test_one_behind_that_pulls_out_to_pass_on_a_side_changes_lane_to_it_from_behind(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "An ambulance approached from behind in the same lane with its siren on. I pulled to the right and stopped. "
+    "The ambulance passed on the left.",
+    "A police car came up behind me in my lane, lights on. I pulled over and it passed me on the right.",
+])
+def test_one_said_to_come_from_behind_in_the_ego_lane_starts_there_whichever_side_it_passes(prompt):
+    found = [a for a in agents(prompt) if a[2] != "ego"]
+    assert len(found) == 1 and found[0][2] == "back", found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("At the all-way stop, a sedan on the left had stopped first and was proceeding straight across.",
+     ("car", "go_straight", "road_of_left_turn")),
+    ("A car had stopped ahead of me.", ("car", "stop", "front")),
+    ("A van cut in front of me and I had to stop dead.", ("car", "stop", "ego")),
+])
+def test_what_an_agent_had_done_before_yields_to_what_it_is_doing(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, crosswalk", [
+    ("Q: Was there a crosswalk where you turned? A: There's a crosswalk, the ladder-style one. Q: And Mrs. Feeney was "
+     "in that crosswalk? A: I didn't see her. She was crossing from my left, but the pillar blocks your view.",
+     "ladder_crosswalk"),
+    ("There is a zebra crossing at the junction. I turned right, and he walked out from my right.",
+     "continental_crosswalk"),
+])
+def test_a_person_named_only_by_a_pronoun_crossing_where_the_road_has_a_crosswalk_is_on_it(prompt, crosswalk):
+    scene = lower(prompt).scenario
+    people = [(a.type, a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego]
+    assert people == [("pedestrian", "cross_the_road", "near_the_crosswalk")], people
+    assert scene.road.required_objects == (crosswalk,)
+
+
 # -- documents by other hands: log stamps, letters' dates, emergency lights, a vehicle's own speed ---------------
 
 @pytest.mark.parametrize("prompt, time", [

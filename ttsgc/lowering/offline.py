@@ -727,6 +727,7 @@ def _left_as_a_verb(tokens: list[Token], i: int) -> str | None:
     return "move" if before.word in LEFT_AS_A_VERB_AFTER or entry is not None and entry[0] == "agents" else None
 
 
+SIGHT_WORDS = {"view", "sight", "vision", "visibility"}
 LANE_MARKINGS = {"line", "lines", "marking", "markings", "median", "lane line", "lane lines"}
 
 
@@ -779,6 +780,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and [t.base for t in span] == ["approach"] and m.start > 0 and \
             tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the", "an", "on"} and nxt in ("to", "of", "", ",", "into"):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "on the approach to the roundabout": a place
+    if m.category == "actions" and m.meaning == "block" and {t.word for t in tokens[m.end:m.end + 3]
+                                                             if t.sentence == span[-1].sentence} & SIGHT_WORDS:
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "the pillar blocks your view": of sight
     if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
@@ -2929,10 +2933,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "I arrived at the
             # all-way stop", "pulls up to a stop sign": it stops there (a turn said with it still wins)
         earlier = clause_units is not None and k is not None and any(
-            x.word == "had" for x in clause_units[max(0, k - 3):k]) and action == "stop"
+            x.word == "had" and y.word != "to" for x, y in zip(clause_units[max(0, k - 3):k],
+                                                               clause_units[max(0, k - 3) + 1:k + 1])) and \
+            action == "stop"  # ("I had to stop dead" is no state before the story)
         # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
-        e.actions.append((stage, strength, ACTION_RANK.get(action, 0), 0 if earlier else r.tick(), action,
-                          direction))
+        e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
+                          0 if earlier else r.tick(), action, direction))
+        # ("had stopped first and was proceeding straight across": what it does now outranks what it had done)
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
 
@@ -3137,7 +3144,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 phrases.append(NounPhrase(pool[0] if u.word == "former" else pool[-1], i, i))
         else:
             target = _pronoun(units, i, phrases, r.surface or previous_subject, recent)
-            if target is not None:
+            if target is None and u.word in ("she", "he") and _on_foot_in_the_scene(units, i) and \
+                    not any(e.type == "pedestrian" for e in r.entities):
+                target = Entity(len(r.entities), "pedestrian", False, stage, head=u.word)
+                r.entities.append(target)  # "Mrs. Feeney was in that crosswalk? ... She was crossing from my
+                r.notes.append(f"inferred: '{u.word}' on foot is a person in the scene")  # left": named before
+                phrases.append(NounPhrase(target, i, i, introduced=True))  # only by her name
+            elif target is not None:
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
@@ -3369,6 +3382,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 not any(e in subject for e in owner) and not in_its_place:
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
+        if u.meaning in ("side_left", "side_right") and _side_of_passing_the_ego(units, i) and owner and \
+                all(not e.is_ego and {"behind", "moves_out"} <= e.features for e in owner):
+            for e in owner:  # "the van behind me pulled out to overtake me on the right": out of the ego's lane,
+                e.features.add("passes_" + u.meaning[5:])  # on that side; it starts behind, in the lane
+            r.mark(u)
+            continue
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
         if reference is None and in_its_place:  # "a biker behind it", "a cop car right on its tail"
@@ -3849,6 +3868,15 @@ def _part_of_group(r: _Reader, n: int) -> Entity | None:
         r.entities.append(part)
         return part
     return None
+
+
+def _side_of_passing_the_ego(units: list[Unit], i: int) -> bool:
+    """'(overtook) me on the right', 'passed us on the left': the side a vehicle passes the ego on."""
+    j = i - 1
+    if j >= 0 and units[j].category == "agents" and units[j].meaning == "ego":
+        j -= 1
+    return j >= 0 and units[j].category == "actions" and bool(set(units[j].base.split()) & OVERTAKING) and \
+        j < i - 1
 
 
 def _the_one_placed(r: _Reader, units: list[Unit], i: int) -> Entity | None:
@@ -4471,6 +4499,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
     if "target_lane" in f and target_side and not _side(e):
         f.add(f"side_{target_side}")
+    if crossing and e.type == "pedestrian" and has_crosswalk and "off_crosswalk" not in f:
+        f.add("crosswalk")  # "Mrs. Feeney was in that crosswalk? ... She was crossing from my left": on the one
+        # crosswalk the road has, said in another sentence
     if e.road_type == "shoulder" and not _side_of(f):
         f.add("side_left" if _KEEPS_LEFT.get() else "side_right")  # the shoulder is at the kerb edge (the left
         # where traffic keeps left), ahead unless said otherwise
@@ -4521,7 +4552,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if lane_move and {"level", "into_ego_lane"} <= f and not behind:
         ahead = False  # "alongside me ... moved into my lane, directly in front of me": level, ending ahead
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
-            and "overtaking" not in f:  # "overtook us on the right, pulled in ahead": the side it passed on
+            and ("overtaking" not in f or "behind" in f):  # "overtook us on the right, pulled in ahead": the side it
+        # passed on; but "approached from behind in the same lane ... passed on the left": it starts behind, in it
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f and not ("behind" in f and junction is False):
         side = _overtaking_side("side_of_an_overtaker")
@@ -5114,6 +5146,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             action = "move"  # "pulled out of a side road on the left": a junction road, no lane change
         if action == "cut_in" and direction and "into_ego_lane" not in e.features:
             action = "lane_" + direction  # "swings into the right lane"
+        passes = next((side for side in SIDES if f"passes_{side}" in e.features), None)
+        if passes and action == "cut_in" and "moves_out" in e.features:
+            action, direction = "lane_" + passes, passes  # "pulled out to overtake me on the right"
         if e.road_type == "shoulder" and action == "stop" and e.type not in V.VULNERABLE_TYPES and \
                 not e.features & {"ahead", "behind", "level", "overtaking"}:
             e.features.add("ahead")  # "a tractor-trailer on the right shoulder, hazards on": one the ego comes up to
