@@ -840,9 +840,15 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
     on_a_crossing = nxt in ("on", "along") and bool({t.word for t in tokens[m.end + 1:m.end + 4]} & {
         "crosswalk", "crosswalks", "zebra", "crossing"})  # "ped crossing on the crosswalk": a person crossing at it
+    lone_piece = len(span) == 1 and m.start > 0 and tokens[m.start - 1].word == "," and (
+        m.end >= len(tokens) or tokens[m.end].sentence != span[0].sentence or tokens[m.end].word == ",") and any(
+            (lexicon().phrases.get((t.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
+            for t in tokens[:m.start] if t.sentence == span[0].sentence)
+    # "cyclist: on crosswalk at exit arm, crossing": a note's piece of its own about a person, what they do
     if m.category == "road" and span[-1].word in ("crossing", "xing") and (
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
-            nxt in VERB_AFTER_CROSSING or on_a_crossing or (len(span) == 1 and (after_person or after_verb))) and \
+            nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or
+            (len(span) == 1 and (after_person or after_verb))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
                                          and len(span) == 1):
         # the verb: "a pedestrian crossing the road"; the noun stays: "no crossing", "the pedestrian crossing ahead is"
