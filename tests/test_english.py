@@ -3948,3 +3948,13 @@ def test_a_bare_verb_later_in_a_keyed_line_is_the_keys(prompt, expected):
 ])
 def test_crossing_as_a_piece_of_its_own_in_a_persons_note_is_what_they_do(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego pulls out into the right lane to pass a bus.", ("car", "change_lane_to_right", "ego")),
+    ("On the dual carriageway the ego pulls out into the left lane to pass a slow lorry.",
+     ("car", "change_lane_to_left", "ego")),
+    ("A van pulls out into the right lane ahead of the ego.", ("car", "change_lane_to_right", "front")),
+])
+def test_pulling_out_into_a_named_lane_goes_to_that_side(prompt, expected):
+    assert expected in agents(prompt)

@@ -2866,7 +2866,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
                     u.meaning.startswith("road") and not turning) or (
                     not turning and any(x.word == "from" for x in units[k + 1:j])) or (
                     not turning and {"out", "from"} & set(units[k].base.split()) and not (
-                        j == k + 1 and len(u.tokens) == 1)):  # "pulling out of a stop on the right"
+                        j == k + 1 and len(u.tokens) == 1) and u.tokens[0].word not in ("into", "onto")):
+                # "pulling out of a stop on the right"; but "pulls out into the right lane": where it goes
                 return None  # where it comes from, not where it goes ("pulls out right": where it goes)
             r.mark(u)
             u.meaning = "used"
