@@ -3958,3 +3958,27 @@ def test_crossing_as_a_piece_of_its_own_in_a_persons_note_is_what_they_do(prompt
 ])
 def test_pulling_out_into_a_named_lane_goes_to_that_side(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The vehicle under test shall be a bus. It shall turn left at the junction.", [("bus", "turn_left", "ego")]),
+    ("The subject vehicle shall be a goods vehicle. A cyclist shall ride beside it on the left.",
+     [("truck", "go_straight", "ego"), ("cyclist", "go_straight", "left")]),
+])
+def test_what_a_test_says_the_ego_shall_be_is_its_type(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, other", [
+    ("The subject vehicle shall travel at 40 km/h behind a van. The subject vehicle driver shall not brake.",
+     ("car", "go_straight", "front")),
+    ("The VUT shall travel at 30 km/h. A pedestrian shall cross in front of it. The driver of the VUT shall not "
+     "brake.", ("pedestrian", "cross_the_road", "front")),
+])
+def test_the_driver_of_the_ego_is_the_ego(prompt, other):
+    assert agents(prompt) == sorted([("car", "go_straight", "ego"), other])
+
+
+def test_a_tests_dry_conditions_are_clear_weather():
+    assert lower("The ego turns right. The test shall be performed in dry conditions.").scenario.weather.condition \
+        == "clear"

@@ -365,11 +365,20 @@ def _driver_of(units: list[Unit]) -> list[Unit]:
             out.append(Unit(u.start, u.end, "agents", u.meaning, u.tokens[:-1]))  # "the van driver": the van
             continue
         if prev is not None and u.category == "agents" and u.tokens[-1].base in AT_THE_CONTROLS and \
-                len(u.tokens) == 1 and prev.category == "agents" and prev.meaning not in ("ego", "none", "pedestrian") \
+                len(u.tokens) == 1 and prev.category == "agents" and prev.meaning not in ("none", "pedestrian") \
                 and not prev.tokens[-1].possessive and not prev.tokens[-1].plural and \
-                prev.tokens[-1].sentence == u.tokens[0].sentence:
+                prev.tokens[-1].sentence == u.tokens[0].sentence and (prev.meaning != "ego" or (
+                    prev.end == u.start and prev.tokens[-1].word not in FIRST_PERSON | {"we", "you"})):
             out[-1] = Unit(prev.start, u.end, "agents", prev.meaning, prev.tokens)  # read as the vehicle's noun
-            continue
+            continue  # "the VUT driver": the ego, named by who drives it
+        if u.category == "agents" and u.meaning == "ego" and u.tokens[0].word not in FIRST_PERSON | {"we", "you"}:
+            j = len(out) - 1
+            while j >= 0 and out[j].word in ("the", "our", "this"):
+                j -= 1
+            if j >= 1 and out[j].word == "of" and out[j - 1].category == "agents" and \
+                    len(out[j - 1].tokens) == 1 and out[j - 1].tokens[0].base in AT_THE_CONTROLS and \
+                    out[j - 1].tokens[0].sentence == u.tokens[0].sentence:
+                del out[j - 1:]  # "the driver of the VUT": the ego
         out.append(u)
     return out
 
@@ -3604,6 +3613,7 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
 
 # "the SV is a patrol car", "I am employed as a bus driver": what the first noun is, said of it
 APPOSITION_WORDS = {"is", "was", "be", "are", "being", "as", "am", "employed", "working", "work", "works"}
+STATING_MODALS = {"shall", "will", "must", "should"}  # "the vehicle under test shall be a goods vehicle": it is one
 ROLE_NOUNS = {"target", "npc", "adversary", "actor", "agent", "dummy", "target vehicle", "participant", "object"}
 ROLE_NAMES = {"pov", "vru", "target", "npc", "adversary", "gvt", "tv", "vut", "lead vehicle", "principal other vehicle",
               "other vehicle", "bv", "obstacle"}
@@ -3808,7 +3818,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 _fold(r, prev.entity, np.entity)
                 continue
-            if all((u.category == "word" and u.word in APPOSITION_WORDS | {"like"}) or
+            if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
                    u.category == "comma" for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
