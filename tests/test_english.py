@@ -4311,3 +4311,80 @@ def test_whoever_a_rule_says_you_may_meet_is_nobody_in_the_scene(prompt, expecte
 def test_someone_the_narrator_saw_is_still_in_the_scene():
     assert ("police", "go_straight", "front_right") in agents(
         "When I saw a police car on the shoulder, I moved over.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("| id | type | role | lane | action |\n|----|------|------|------|--------|\n| EGO | hatchback | SUT | lane 1 | "
+     "keep lane |\n| V2 | lorry | lead veh | ego lane, 30 m ahead | stops |",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("name,kind,position,manoeuvre,speed_mph\nego,car,approach,turn_right,10\nbike1,cyclist,oncoming,straight,12",
+     [("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_straight")]),
+    ("agent   | start          | intent\nego     | south approach | straight\nnpc_x   | west (left)    | "
+     "turn right", [("car", "go_straight", "ego"), ("car", "turn_right", "road_of_left_turn")]),
+])
+def test_a_table_of_actors_reads_one_actor_a_row(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_a_tables_speed_column_gives_its_unit_and_its_time_column_the_stages():
+    scene = lower("| step | actor | what |\n|---|---|---|\n| 1 | ego | waits at the red light |\n"
+                  "| 1 | pedestrian | on crosswalk, crossing |\n| 2 (after the pedestrian is clear) | ego | "
+                  "goes straight |").scenario
+    assert len(scene.stages) == 2 and scene.stages[1].agents[0].action == "go_straight"
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(
+        "| step | actor | what |\n|---|---|---|\n| 1 | ego | waits |\n| 1 | pedestrian | on crosswalk, crossing |")
+    ego = lower("actor,type,speed_mph\nego,car,25\nnpc1,truck,30").scenario.ego
+    assert ego.speed is not None and ego.speed.unit == "mph" and float(ego.speed.value) == 25
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego: straight. Van: oncoming, turn left.", ("car", "turn_left", "road_of_straight")),
+    ("Ego: 30 km/h, keep lane. Bus: ahead, brake hard.", ("bus", "stop", "front")),
+])
+def test_a_bare_verb_later_in_a_keyed_line_is_the_keys(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and ("car", "go_straight", "ego") in found, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego: turns right. Cyclist: on crosswalk at exit arm, crossing.",
+     ("cyclist", "cross_the_road", "near_the_crosswalk")),
+    ("Ego: turns left. Ped1: pedestrian, xwalk at exit leg, crossing.",
+     ("pedestrian", "cross_the_road", "near_the_crosswalk")),
+])
+def test_crossing_as_a_piece_of_its_own_in_a_persons_note_is_what_they_do(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego pulls out into the right lane to pass a bus.", ("car", "change_lane_to_right", "ego")),
+    ("On the dual carriageway the ego pulls out into the left lane to pass a slow lorry.",
+     ("car", "change_lane_to_left", "ego")),
+    ("A van pulls out into the right lane ahead of the ego.", ("car", "change_lane_to_right", "front")),
+])
+def test_pulling_out_into_a_named_lane_goes_to_that_side(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The vehicle under test shall be a bus. It shall turn left at the junction.", [("bus", "turn_left", "ego")]),
+    ("The subject vehicle shall be a goods vehicle. A cyclist shall ride beside it on the left.",
+     [("truck", "go_straight", "ego"), ("cyclist", "go_straight", "left")]),
+])
+def test_what_a_test_says_the_ego_shall_be_is_its_type(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, other", [
+    ("The subject vehicle shall travel at 40 km/h behind a van. The subject vehicle driver shall not brake.",
+     ("car", "go_straight", "front")),
+    ("The VUT shall travel at 30 km/h. A pedestrian shall cross in front of it. The driver of the VUT shall not "
+     "brake.", ("pedestrian", "cross_the_road", "front")),
+])
+def test_the_driver_of_the_ego_is_the_ego(prompt, other):
+    assert agents(prompt) == sorted([("car", "go_straight", "ego"), other])
+
+
+def test_a_tests_dry_conditions_are_clear_weather():
+    assert lower("The ego turns right. The test shall be performed in dry conditions.").scenario.weather.condition \
+        == "clear"

@@ -306,6 +306,17 @@ def _linking(value: str) -> str:
     return " is "
 
 
+def _keyed(key: str, value: str) -> str:
+    """A key's line as a sentence with the key its subject: 'Van: oncoming, turn left' is 'Van is oncoming, and
+    turn left' (a later piece that starts with a bare verb is the key's too, no order to the ego)."""
+    pieces = value.split(", ")
+    for k in range(1, len(pieces)):
+        first = pieces[k].split()[0].lower() if pieces[k].split() else ""
+        if first in _verbs() and lexicon().base(first) == (first, False):
+            pieces[k] = "and " + pieces[k]
+    return f"{key}{_linking(value)}{', '.join(pieces)}"
+
+
 @lru_cache(maxsize=1)
 def _verbs() -> frozenset:
     return frozenset(words[0] for words, (category, _) in lexicon().phrases.items() if category == "actions")
@@ -344,6 +355,82 @@ def _heading_line(lines: list[str]) -> bool:
     if len(lines) > 2 and not lines[1].strip():
         return True
     return TITLE_MARK.search(first) is not None and lines[1].rstrip().endswith((".", "!", "?"))
+COLUMNS = {  # a table's header words, by what the cells under them say
+    "actor": {"actor", "agent", "id", "name", "vehicle", "object", "entity", "participant", "who", "label", "obj"},
+    "type": {"type", "kind", "class", "category", "vehicle type", "actor type", "model", "vehicle class"},
+    "time": {"t", "time", "step", "phase", "stage", "timestep", "time step", "tick", "seq", "sequence"},
+    "role": {"role", "purpose", "function"},
+    "speed": {"speed", "velocity", "v", "speed kph", "speed kmh", "speed mph", "speed km h", "init speed",
+              "initial speed", "target speed", "v0"},
+    "other": {"start", "start pos", "start position", "position", "pos", "lane", "location", "manoeuvre",
+              "maneuver", "action", "actions", "intent", "behaviour", "behavior", "what", "notes", "note",
+              "trigger", "init", "initial", "initial state", "end", "goal", "route", "path", "description", "does",
+              "event", "events", "state", "where", "start lane", "heading", "direction", "origin", "from", "to"},
+}
+SEPARATOR_ROW = re.compile(r"^[\s|:+=-]*-[\s|:+=-]*$")
+
+
+def _column(name: str) -> str | None:
+    """What a header cell names ('start_pos', 'speed (km/h)', 'Speed_kph'), or None for a word of no table."""
+    said = re.sub(r"[^a-z0-9]+", " ", name.lower()).strip()
+    for kind, names in COLUMNS.items():
+        if said in names or said.split()[:1] and said.split()[0] in names and kind == "speed":
+            return kind
+    return None
+
+
+def _cells(line: str, delimiter: str) -> list[str]:
+    return [c.strip() for c in line.strip().strip("|" if delimiter == "|" else "").split(delimiter)]
+
+
+def _tables(lines: list[str]) -> list[str]:
+    """A table of actors ('| actor | type | start | manoeuvre |', or comma-separated under a header row): each
+    row is one actor, told as a line of its own ('TV1: HGV, ego lane, +40 m, brakes to stop'); the header and
+    the rule under it are no scene. A role column beside a type column says what the test uses the actor for,
+    no agent of its own ('lead veh'); a bare speed takes the header's unit; a time column ('t0', 't1 (after the
+    cyclist clears)') orders the rows into stages."""
+    out: list[str] = []
+    k = 0
+    while k < len(lines):
+        delimiter = "|" if lines[k].count("|") >= 2 else "," if lines[k].count(",") >= 2 else None
+        header = _cells(lines[k], delimiter) if delimiter else []
+        kinds = [_column(c) for c in header]
+        if not delimiter or sum(kind is not None for kind in kinds) < 2 or not all(
+                kind is not None or not c for kind, c in zip(kinds, header)):
+            out.append(lines[k])
+            k += 1
+            continue
+        k += 1
+        rows = []
+        while k < len(lines) and (SEPARATOR_ROW.match(lines[k]) and delimiter == "|" or
+                                  len(_cells(lines[k], delimiter)) == len(header) and lines[k].strip()):
+            if not SEPARATOR_ROW.match(lines[k]):
+                rows.append(_cells(lines[k], delimiter))
+            k += 1
+        times: list[str] = []
+        for row in rows:
+            cell = {kind: value for kind, value in zip(kinds, row) if kind in ("actor", "type", "time")}
+            said = []
+            for kind, name, value in zip(kinds, header, row):
+                if kind in ("actor", "time") or kind == "role" and "type" in kinds or not value or value == "-":
+                    continue
+                if kind == "speed" and re.fullmatch(r"\d+(?:\.\d+)?", value):
+                    unit = re.search(r"mph|kph|kmh|km ?/ ?h|m ?/ ?s", name.lower())
+                    value = f"{value} {unit.group(0) if unit else 'km/h'}"
+                said.append(value)
+            subject = cell.get("actor") or ""
+            if not subject and said:
+                subject = said.pop(0)
+            value = ", ".join(said)
+            line = f"{subject}: {value}" if subject and value else subject or value
+            time = re.sub(r"\s*\(.*", "", cell.get("time", "")).strip()
+            if time and times and time != times[-1]:
+                condition = re.search(r"\((.*)\)", cell.get("time", ""))
+                line = f"{condition.group(1) if condition else 'then'}, {_keyed(subject, value)}"
+            if time and (not times or time != times[-1]):
+                times.append(time)
+            out.append(line)
+    return out
 
 
 def _lines(text: str) -> str:
@@ -353,7 +440,7 @@ def _lines(text: str) -> str:
     if "\n" not in text.strip():
         return _keyed_agents("\n".join(_without_outline_numbers([text])))
     out = []
-    lines = _without_answer_choices(_without_outline_numbers(text.strip().splitlines()))
+    lines = _tables(_without_answer_choices(_without_outline_numbers(text.strip().splitlines())))
     staged = False
     phased = any((m := KEY_LINE.match(line)) and PHASE_KEY.fullmatch(m.group(1).strip().lower()) for line in lines)
     speakers = _speakers(lines)
@@ -397,7 +484,7 @@ def _lines(text: str) -> str:
         elif not value:
             continue
         else:
-            out.append(f"{key}{_linking(value)}{value}.")
+            out.append(f"{_keyed(key, value)}.")
     return " ".join(out)
 
 
@@ -442,7 +529,7 @@ def _keyed_agents(text: str) -> str:
         m = KEY_LINE.match(piece)
         if m and _names_agent(m.group(1)) and m.group(2).strip():
             value = m.group(2).strip().rstrip('.;')
-            out.append(f"{m.group(1).strip()}{_linking(value)}{value}.")
+            out.append(f"{_keyed(m.group(1).strip(), value)}.")
         else:
             out.append(piece)
     return " ".join(out)
@@ -597,6 +684,13 @@ def _scenario_identifiers(text: str) -> str:
     return IDENTIFIER.sub(read, text)
 
 
+def _agent_label(m: re.Match) -> str:
+    """'bike1', 'moto2': an agent noun with a number joined to it is a name; other words keep their digits."""
+    entry = lexicon().phrases.get((lexicon().base(m.group(1))[0],))
+    return f"{m.group(1)}#{m.group(2)}" if entry and entry[0] == "agents" and entry[1] not in ("none", "ego") \
+        else m.group(0)
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -688,6 +782,7 @@ def tokenize(text: str) -> list[Token]:
                   text)  # "NPC_1", "Actor 2"
     text = re.sub(r"\b(in|for|until|till) v\d{1,2}(?:\.\d{1,2})?\b", r"\1 this version", text)  # "left out in v1": a release
     text = re.sub(r"\b([a-z]{1,3}|npc|actor|agent|target|object|adversary)(\d)\b", r"\1#\2", text)  # SV1, NPC2: labels
+    text = re.sub(r"\b([a-z]{4,12})(\d{1,2})\b", _agent_label, text)  # "bike1", "lorry2": a table's names
     tokens: list[Token] = []
     sentence = 0
     raw = TOKEN.findall(text)

@@ -373,11 +373,20 @@ def _driver_of(units: list[Unit]) -> list[Unit]:
             out.append(Unit(u.start, u.end, "agents", u.meaning, u.tokens[:-1]))  # "the van driver": the van
             continue
         if prev is not None and u.category == "agents" and u.tokens[-1].base in AT_THE_CONTROLS and \
-                len(u.tokens) == 1 and prev.category == "agents" and prev.meaning not in ("ego", "none", "pedestrian") \
+                len(u.tokens) == 1 and prev.category == "agents" and prev.meaning not in ("none", "pedestrian") \
                 and not prev.tokens[-1].possessive and not prev.tokens[-1].plural and \
-                prev.tokens[-1].sentence == u.tokens[0].sentence:
+                prev.tokens[-1].sentence == u.tokens[0].sentence and (prev.meaning != "ego" or (
+                    prev.end == u.start and prev.tokens[-1].word not in FIRST_PERSON | {"we", "you"})):
             out[-1] = Unit(prev.start, u.end, "agents", prev.meaning, prev.tokens)  # read as the vehicle's noun
-            continue
+            continue  # "the VUT driver": the ego, named by who drives it
+        if u.category == "agents" and u.meaning == "ego" and u.tokens[0].word not in FIRST_PERSON | {"we", "you"}:
+            j = len(out) - 1
+            while j >= 0 and out[j].word in ("the", "our", "this"):
+                j -= 1
+            if j >= 1 and out[j].word == "of" and out[j - 1].category == "agents" and \
+                    len(out[j - 1].tokens) == 1 and out[j - 1].tokens[0].base in AT_THE_CONTROLS and \
+                    out[j - 1].tokens[0].sentence == u.tokens[0].sentence:
+                del out[j - 1:]  # "the driver of the VUT": the ego
         out.append(u)
     return out
 
@@ -905,9 +914,15 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
     on_a_crossing = nxt in ("on", "along") and bool({t.word for t in tokens[m.end + 1:m.end + 4]} & {
         "crosswalk", "crosswalks", "zebra", "crossing"})  # "ped crossing on the crosswalk": a person crossing at it
+    lone_piece = len(span) == 1 and m.start > 0 and tokens[m.start - 1].word == "," and (
+        m.end >= len(tokens) or tokens[m.end].sentence != span[0].sentence or tokens[m.end].word == ",") and any(
+            (lexicon().phrases.get((t.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
+            for t in tokens[:m.start] if t.sentence == span[0].sentence)
+    # "cyclist: on crosswalk at exit arm, crossing": a note's piece of its own about a person, what they do
     if m.category == "road" and span[-1].word in ("crossing", "xing") and (
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
-            nxt in VERB_AFTER_CROSSING or on_a_crossing or (len(span) == 1 and (after_person or after_verb))) and \
+            nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or
+            (len(span) == 1 and (after_person or after_verb))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
                                          and len(span) == 1):
         # the verb: "a pedestrian crossing the road"; the noun stays: "no crossing", "the pedestrian crossing ahead is"
@@ -3016,7 +3031,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
                     u.meaning.startswith("road") and not turning) or (
                     not turning and any(x.word == "from" for x in units[k + 1:j])) or (
                     not turning and {"out", "from"} & set(units[k].base.split()) and not (
-                        j == k + 1 and len(u.tokens) == 1)):  # "pulling out of a stop on the right"
+                        j == k + 1 and len(u.tokens) == 1) and u.tokens[0].word not in ("into", "onto")):
+                # "pulling out of a stop on the right"; but "pulls out into the right lane": where it goes
                 return None  # where it comes from, not where it goes ("pulls out right": where it goes)
             r.mark(u)
             u.meaning = "used"
@@ -3783,6 +3799,7 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
 
 # "the SV is a patrol car", "I am employed as a bus driver": what the first noun is, said of it
 APPOSITION_WORDS = {"is", "was", "be", "are", "being", "as", "am", "employed", "working", "work", "works"}
+STATING_MODALS = {"shall", "will", "must", "should"}  # "the vehicle under test shall be a goods vehicle": it is one
 ROLE_NOUNS = {"target", "npc", "adversary", "actor", "agent", "dummy", "target vehicle", "participant", "object"}
 ROLE_NAMES = {"pov", "vru", "target", "npc", "adversary", "gvt", "tv", "vut", "lead vehicle", "principal other vehicle",
               "other vehicle", "bv", "obstacle"}
@@ -4005,7 +4022,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 _fold(r, prev.entity, np.entity)
                 continue
-            if all((u.category == "word" and u.word in APPOSITION_WORDS | {"like"}) or
+            if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
                    u.category == "comma" for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
