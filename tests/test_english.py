@@ -3905,3 +3905,12 @@ def test_a_sign_noun_said_once_for_two_signs_names_both(prompt, required, withou
 ])
 def test_yielding_to_someone_is_the_act_not_a_sign(prompt):
     assert "yield" not in road(prompt).required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We're merging left and there's a coach in the left lane just behind us, so we slot in behind it.",
+     ("bus", "go_straight", "back_left")),
+    ("A lorry sits in the right lane just behind me, so I pull in behind it.", ("truck", "go_straight", "back_right")),
+])
+def test_where_an_agent_is_said_to_be_first_is_where_it_starts(prompt, expected):
+    assert expected in agents(prompt)

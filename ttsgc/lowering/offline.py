@@ -3233,7 +3233,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
                     stage > reference.stage or "level" in reference.features)  # "then returns ahead of the bus": it
                 # was; "a truck right next to it, so the ego slots in behind it": beside, as said first
-                if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later:
+                said_first = reference is not None and u.meaning in INVERSE and \
+                    bool(reference.features & OPPOSITE_PLACES.get(INVERSE[u.meaning], set()))  # "a truck just behind
+                # us ... we slot in behind it": where it was said to be first is where it starts
+                if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later and \
+                        not said_first:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
                 r.mark(u)
                 continue
