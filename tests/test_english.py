@@ -3914,3 +3914,19 @@ def test_yielding_to_someone_is_the_act_not_a_sign(prompt):
 ])
 def test_where_an_agent_is_said_to_be_first_is_where_it_starts(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_an_agent_named_in_words_cut_off_and_named_again_is_one():
+    talk = ("HOST A: So we're in the right lane and we need to get left.\n"
+            "HOST B: And there's a coach\u2014\n"
+            "HOST A: A coach!\n"
+            "HOST B: Yes. There's a bus in the left lane just behind us, so we slot in behind it.")
+    found = agents(talk)
+    assert [a[0] for a in found].count("bus") == 1, found
+
+
+def test_words_cut_off_that_name_no_agent_again_stay():
+    talk = ("HOST A: It's dusk, we're going straight, and there's a cyclist on the right\u2014\n"
+            "HOST B: Oh no.\n"
+            "HOST A: And a van comes up behind us.")
+    assert ("cyclist", "go_straight", "right") in agents(talk)
