@@ -3930,3 +3930,11 @@ def test_words_cut_off_that_name_no_agent_again_stay():
             "HOST B: Oh no.\n"
             "HOST A: And a van comes up behind us.")
     assert ("cyclist", "go_straight", "right") in agents(talk)
+
+
+@pytest.mark.parametrize("prompt", [
+    "a taxi pulled out right in front of me on Mill Road and stopped. #london @MetPolice",
+    "@CyclingUK a taxi pulled out right in front of me on Mill Road and stopped. #cycling #roadsafety",
+])
+def test_a_posts_handles_and_hashtags_name_nobody_on_the_road(prompt):
+    assert agents(prompt) == [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]

@@ -97,6 +97,7 @@ def read_narration(prompt: str) -> Narration:
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
     text = _texting(text)
+    text = _without_tags(text)
     text = _restarts(text, notes)
     text = _asides(text)
     text = _street_corners(text)
@@ -147,6 +148,15 @@ def _screenplay_driver(text: str, notes: list[str]) -> str:
     named = "\n".join(lines)
     notes.append("read the screenplay's character at the wheel as the ego")
     return _drivers_pronoun(named, notes)
+
+
+TAG = re.compile(r"(?:(?<=\s)|^)[#@][A-Za-z][\w.]*", re.M)  # "#baddriving", "@WestMidsPolice"
+
+
+def _without_tags(text: str) -> str:
+    """'@WestMidsPolice is it even worth reporting?? #baddriving #M6': a post's handles and hashtags address and
+    file it; they name nobody on the road."""
+    return TAG.sub("", text)
 
 
 BROKEN_OFF = re.compile(r"([^.!?:,;\n]*?)\s*(?:\u2014|\u2013|--)\s*$")  # "And there's a lorry\u2014": cut off
