@@ -3938,3 +3938,11 @@ def test_words_cut_off_that_name_no_agent_again_stay():
 ])
 def test_a_posts_handles_and_hashtags_name_nobody_on_the_road(prompt):
     assert agents(prompt) == [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "a lorry broke down on the hard shoulder ahead of me and nobody moved over. come on people",
+    "a lorry broke down on the hard shoulder ahead of me. drive safe out there folks",
+])
+def test_the_readers_called_on_at_the_end_are_nobody_on_the_road(prompt):
+    assert not any(a[0] == "pedestrian" for a in agents(prompt)), agents(prompt)

@@ -1973,6 +1973,10 @@ NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear",
 # "never comes", "never arrived": one that is not there ("never came to a stop" is there, and did not stop)
 
 
+VOCATIVE_LEADS = {"cmon", "on", "seriously", "there", "please", "pls", "plz", "honestly", "guys", "lol", "smh",
+                  "ffs", "careful", "safe"}  # "come on people", "drive safe folks"
+
+
 def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     """Agent nouns the text talks about, that are nobody in the scene: an institution written to or blamed ('I
     reported it to the police', 'I do not blame the fire brigade'); people or vehicles in general ('kids are
@@ -2000,6 +2004,9 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                 last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
+    if last.word in ANYONE and (last.plural or last.word in ("folks", "people")) and not after and before and \
+            before[-1].word in VOCATIVE_LEADS:
+        return True  # "cmon people", "be safe out there people": the readers called on, nobody on the road
     words = [x.word for x in after[:5]]
     if u.meaning not in ("ego", "none") and not before and len(words) >= 2 and words[0] in COPULAS and \
             (words[1] in DAMAGED or words[1] in DEGREE and words[2:3] and words[2] in DAMAGED):
