@@ -3946,3 +3946,14 @@ def test_a_posts_handles_and_hashtags_name_nobody_on_the_road(prompt):
 ])
 def test_the_readers_called_on_at_the_end_are_nobody_on_the_road(prompt):
     assert not any(a[0] == "pedestrian" for a in agents(prompt)), agents(prompt)
+
+
+def test_you_in_a_post_written_to_someone_on_the_road_is_them():
+    post = ("To the van driver on Hill St this morning: I was going straight through the lights and you turned "
+            "left right across me. I nearly hit you.")
+    found = agents(post)
+    assert ("car", "go_straight", "ego") in found and any(a[0] == "car" and a[1] == "turn_left" for a in found), found
+
+
+def test_you_addressed_by_a_driving_instructor_stays_the_ego():
+    assert ("car", "turn_left", "ego") in agents("Dear learner: at the lights you turn left after the bus passes.")

@@ -98,6 +98,7 @@ def read_narration(prompt: str) -> Narration:
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
     text = _texting(text)
     text = _without_tags(text)
+    text = _addressee(text, notes)
     text = _restarts(text, notes)
     text = _asides(text)
     text = _street_corners(text)
@@ -157,6 +158,25 @@ def _without_tags(text: str) -> str:
     """'@WestMidsPolice is it even worth reporting?? #baddriving #M6': a post's handles and hashtags address and
     file it; they name nobody on the road."""
     return TAG.sub("", text)
+
+
+ADDRESSEE = re.compile(r"^\s*(?:psa|shout\s*out|a message|message|note|an open letter|open letter)?\s*(?:to|dear)\s+"
+                       r"(?:the|that|this)\s+((?:[a-z]+\s+){0,3}?(?:" + _NOUN[1:-1] +
+                       r"|cyclist|biker|rider|motorcyclist|pedestrian|jogger|driver))\b", re.I)
+
+
+def _addressee(text: str, notes: list[str]) -> str:
+    """'PSA to the cyclist who ran the red ...: I had the green ..., you came flying straight through': a post
+    written to someone on the road by a narrator who drove; 'you' is the one written to, not the ego."""
+    m = ADDRESSEE.match(text)
+    rest = text[m.end():] if m else ""
+    if m is None or not re.search(r"\b(?:i|i'm|me|my)\b", rest, re.I) or not re.search(r"\b(?:you|u)\b", rest, re.I):
+        return text
+    noun = m.group(1).split()[-1]
+    notes.append(f"read 'you' as the {noun} the text is written to")
+    rest = re.sub(r"\b(?:you|u)(?='re\b)", f"the {noun}", rest, flags=re.I)
+    rest = re.sub(r"\byour\b", f"the {noun}'s", rest, flags=re.I)
+    return text[:m.end()] + re.sub(r"\b(?:you|u)\b", f"the {noun}", rest, flags=re.I)
 
 
 BROKEN_OFF = re.compile(r"([^.!?:,;\n]*?)\s*(?:\u2014|\u2013|--)\s*$")  # "And there's a lorry\u2014": cut off
