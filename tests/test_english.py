@@ -3957,3 +3957,12 @@ def test_you_in_a_post_written_to_someone_on_the_road_is_them():
 
 def test_you_addressed_by_a_driving_instructor_stays_the_ego():
     assert ("car", "turn_left", "ego") in agents("Dear learner: at the lights you turn left after the bus passes.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "a lorry sat about 2m off my bumper for miles on the A1",
+    "some van sat right on my bumper all the way down the bypass",
+])
+def test_sitting_on_the_egos_bumper_is_tailgating_not_standing(prompt):
+    found = agents(prompt)
+    assert any(a[1] == "go_straight" and a[2] == "back" for a in found if a[2] != "ego"), found

@@ -669,6 +669,9 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
     says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
     words = [t.word for t in tokens[i:i + 8] if t.sentence == tokens[i].sentence]
+    if any(w in ("bumper", "tail") and words[k - 1:k] in (["my"], ["our"]) and words[k - 2:k - 1] in (
+            ["on"], ["off"]) for k, w in enumerate(words[:6])):
+        return True  # "a lorry sat about 2m off my bumper for 5 miles": it keeps pace behind, a tailgater
     if words[1:2] == ["the"]:
         del words[1]  # "sitting in (the) right-hand lane"
     if words[:1] != ["in"] or "lane" not in words[1:5]:
