@@ -3966,3 +3966,15 @@ def test_you_addressed_by_a_driving_instructor_stays_the_ego():
 def test_sitting_on_the_egos_bumper_is_tailgating_not_standing(prompt):
     found = agents(prompt)
     assert any(a[1] == "go_straight" and a[2] == "back" for a in found if a[2] != "ego"), found
+
+
+@pytest.mark.parametrize("prompt, time", [
+    ("This morning a bus pulled out in front of me on Mill Road.", None),
+    ("Yesterday afternoon a bus pulled out in front of me on Mill Road.", None),
+    ("Early this morning a bus pulled out in front of me on Mill Road.", "dawn"),
+    ("This morning at about 6 a bus pulled out in front of me on Mill Road.", "dawn"),
+    ("At 2 this afternoon a bus pulled out in front of me on Mill Road.", "noon"),
+])
+def test_this_morning_dates_the_event_unless_early_or_with_its_hour(prompt, time):
+    weather = lower(prompt).scenario.weather
+    assert (weather.time if weather else None) == time

@@ -1282,6 +1282,10 @@ def _weather(r: _Reader) -> Weather | None:
                            "happened, not the scene's time)")
             continue
         if u.meaning.startswith("time:") and _part_of_a_date(r.units, k):
+            hour = _hour_of_the_part(r.units, k)
+            if hour is not None:  # "this morning at about 7": seven in the morning
+                times.append(hour)
+                continue
             r.notes.append(f"left out: '{' '.join(t.word for t in u.tokens)}' (it dates the event, as a day's "
                            "morning or afternoon, and says nothing of the light)")
             continue
@@ -1307,19 +1311,32 @@ CLOCK_PARTS_OF_DAY = {"morning", "afternoon"}  # hours on a clock; "night", "dus
 
 
 def _part_of_a_date(units: list[Unit], k: int) -> bool:
-    """'On Friday morning', 'the afternoon of 9th October': the morning or afternoon of a named day says when it
-    happened, like a date; 'a foggy morning' or 'early morning' still says the light."""
+    """'On Friday morning', 'this morning', 'the afternoon of 9th October': the morning or afternoon of a named day
+    says when it happened, like a date; 'a foggy morning' or 'early (this) morning' still says the light."""
     u = units[k]
     if u.word not in CLOCK_PARTS_OF_DAY:
         return False
-    if k > 0 and units[k - 1].word in WEEKDAYS and not any(v.word == "early" for v in units[max(0, k - 4):k]):
-        return True
+    if k > 0 and units[k - 1].word in WEEKDAYS | {"this", "yesterday", "tomorrow"} and \
+            not any(v.word == "early" for v in units[max(0, k - 4):k]):
+        return True  # "on Friday morning", "this morning": which day, not how light it was
     after = [v.word for v in units[k + 1:k + 5]]
     if after[:1] == ["of"]:
         rest = after[1:] if after[1:2] != ["the"] else after[2:]
         return bool(rest) and (rest[0] in WEEKDAYS | MONTHS or rest[0] in ORDINALS or
                                read_number(rest[0]) is not None or rest[0].rstrip("stndrh").isdigit())
     return False
+
+
+def _hour_of_the_part(units: list[Unit], k: int) -> tuple[str, str] | None:
+    """'this morning at about 7', 'at 5 this afternoon': an hour said with the part of the day it falls in."""
+    near = units[max(0, k - 4):k] + units[k + 1:k + 5]
+    for j, v in enumerate(near):
+        value = _word_number(v.tokens[0]) if v.category in ("number", "numbers") else None
+        if value is not None and 1 <= value <= 12 and value == int(value) and j > 0 and \
+                near[j - 1].word in TIME_INTRODUCERS:
+            hour = int(value) % 12 + (12 if units[k].word == "afternoon" else 0)
+            return _hour_time(hour, f"{v.word} in the {units[k].word}")
+    return None
 
 
 SINCE = {"from", "since"}
