@@ -4388,3 +4388,76 @@ def test_the_driver_of_the_ego_is_the_ego(prompt, other):
 def test_a_tests_dry_conditions_are_clear_weather():
     assert lower("The ego turns right. The test shall be performed in dry conditions.").scenario.weather.condition \
         == "clear"
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We're merging left and there's a coach in the left lane just behind us, so we slot in behind it.",
+     ("bus", "go_straight", "back_left")),
+    ("A lorry sits in the right lane just behind me, so I pull in behind it.", ("truck", "go_straight", "back_right")),
+])
+def test_where_an_agent_is_said_to_be_first_is_where_it_starts(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_an_agent_named_in_words_cut_off_and_named_again_is_one():
+    talk = ("HOST A: So we're in the right lane and we need to get left.\n"
+            "HOST B: And there's a coach\u2014\n"
+            "HOST A: A coach!\n"
+            "HOST B: Yes. There's a bus in the left lane just behind us, so we slot in behind it.")
+    found = agents(talk)
+    assert [a[0] for a in found].count("bus") == 1, found
+
+
+def test_words_cut_off_that_name_no_agent_again_stay():
+    talk = ("HOST A: It's dusk, we're going straight, and there's a cyclist on the right\u2014\n"
+            "HOST B: Oh no.\n"
+            "HOST A: And a van comes up behind us.")
+    assert ("cyclist", "go_straight", "right") in agents(talk)
+
+
+@pytest.mark.parametrize("prompt", [
+    "a taxi pulled out right in front of me on Mill Road and stopped. #london @MetPolice",
+    "@CyclingUK a taxi pulled out right in front of me on Mill Road and stopped. #cycling #roadsafety",
+])
+def test_a_posts_handles_and_hashtags_name_nobody_on_the_road(prompt):
+    assert agents(prompt) == [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "a lorry broke down on the hard shoulder ahead of me and nobody moved over. come on people",
+    "a lorry broke down on the hard shoulder ahead of me. drive safe out there folks",
+])
+def test_the_readers_called_on_at_the_end_are_nobody_on_the_road(prompt):
+    assert not any(a[0] == "pedestrian" for a in agents(prompt)), agents(prompt)
+
+
+def test_you_in_a_post_written_to_someone_on_the_road_is_them():
+    post = ("To the van driver on Hill St this morning: I was going straight through the lights and you turned "
+            "left right across me. I nearly hit you.")
+    found = agents(post)
+    assert ("car", "go_straight", "ego") in found and any(a[0] == "car" and a[1] == "turn_left" for a in found), found
+
+
+def test_you_addressed_by_a_driving_instructor_stays_the_ego():
+    assert ("car", "turn_left", "ego") in agents("Dear learner: at the lights you turn left after the bus passes.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "a lorry sat about 2m off my bumper for miles on the A1",
+    "some van sat right on my bumper all the way down the bypass",
+])
+def test_sitting_on_the_egos_bumper_is_tailgating_not_standing(prompt):
+    found = agents(prompt)
+    assert any(a[1] == "go_straight" and a[2] == "back" for a in found if a[2] != "ego"), found
+
+
+@pytest.mark.parametrize("prompt, time", [
+    ("This morning a bus pulled out in front of me on Mill Road.", None),
+    ("Yesterday afternoon a bus pulled out in front of me on Mill Road.", None),
+    ("Early this morning a bus pulled out in front of me on Mill Road.", "dawn"),
+    ("This morning at about 6 a bus pulled out in front of me on Mill Road.", "dawn"),
+    ("At 2 this afternoon a bus pulled out in front of me on Mill Road.", "noon"),
+])
+def test_this_morning_dates_the_event_unless_early_or_with_its_hour(prompt, time):
+    weather = lower(prompt).scenario.weather
+    assert (weather.time if weather else None) == time

@@ -97,6 +97,9 @@ def read_narration(prompt: str) -> Narration:
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
     text = _texting(text)
+    text = _without_tags(text)
+    text = _addressee(text, notes)
+    text = _restarts(text, notes)
     text = _asides(text)
     text = _street_corners(text)
     text = _declared_ego(text, notes)
@@ -147,6 +150,59 @@ def _screenplay_driver(text: str, notes: list[str]) -> str:
     named = "\n".join(lines)
     notes.append("read the screenplay's character at the wheel as the ego")
     return _drivers_pronoun(named, notes)
+
+
+TAG = re.compile(r"(?:(?<=\s)|^)[#@][A-Za-z][\w.]*", re.M)  # "#baddriving", "@WestMidsPolice"
+
+
+def _without_tags(text: str) -> str:
+    """'@WestMidsPolice is it even worth reporting?? #baddriving #M6': a post's handles and hashtags address and
+    file it; they name nobody on the road."""
+    return TAG.sub("", text)
+
+
+ADDRESSEE = re.compile(r"^\s*(?:psa|shout\s*out|a message|message|note|an open letter|open letter)?\s*(?:to|dear)\s+"
+                       r"(?:the|that|this)\s+((?:[a-z]+\s+){0,3}?(?:" + _NOUN[1:-1] +
+                       r"|cyclist|biker|rider|motorcyclist|pedestrian|jogger|driver))\b", re.I)
+
+
+def _addressee(text: str, notes: list[str]) -> str:
+    """'PSA to the cyclist who ran the red ...: I had the green ..., you came flying straight through': a post
+    written to someone on the road by a narrator who drove; 'you' is the one written to, not the ego."""
+    m = ADDRESSEE.match(text)
+    rest = text[m.end():] if m else ""
+    if m is None or not re.search(r"\b(?:i|i'm|me|my)\b", rest, re.I) or not re.search(r"\b(?:you|u)\b", rest, re.I):
+        return text
+    noun = m.group(1).split()[-1]
+    notes.append(f"read 'you' as the {noun} the text is written to")
+    rest = re.sub(r"\b(?:you|u)(?='re\b)", f"the {noun}", rest, flags=re.I)
+    rest = re.sub(r"\byour\b", f"the {noun}'s", rest, flags=re.I)
+    return text[:m.end()] + re.sub(r"\b(?:you|u)\b", f"the {noun}", rest, flags=re.I)
+
+
+BROKEN_OFF = re.compile(r"([^.!?:,;\n]*?)\s*(?:\u2014|\u2013|--)\s*$")  # "And there's a lorry\u2014": cut off
+
+
+def _restarts(text: str, notes: list[str]) -> str:
+    """'B: And there's a lorry\u2014 / A: Lorry! Listen to him. / B: There's a truck in the left lane ...': a speaker
+    cut off before saying what the agent does starts again; the agent named in the broken-off words and echoed by
+    the other speaker is the one named again later, not one more."""
+    lines = text.split("\n")
+    for k, line in enumerate(lines):
+        m = BROKEN_OFF.search(line)
+        if m is None or not m.group(1).strip():
+            continue
+        kinds = _agent_kinds(m.group(1)) - {"ego"}
+        later = "\n".join(lines[k + 1:])
+        if not kinds or not kinds & _agent_kinds(later):
+            continue
+        named = [w for w in re.findall(r"[A-Za-z]+", m.group(1)) if _agent_kinds(w) & kinds]
+        lines[k] = line[:m.start(1)]
+        notes.append(f"read '{m.group(1).strip()[:40]}' (cut off) as said again later")
+        if k + 1 < len(lines) and named:  # "Lorry!": the other speaker echoing the word, no agent of its own
+            echo = rf"^(\s*(?:[A-Z][A-Za-z.' -]{{0,30}}:)?\s*)(?:an? |the )?{re.escape(named[-1])}\s*[!?.]"
+            lines[k + 1] = re.sub(echo, r"\1", lines[k + 1], flags=re.I)
+    return "\n".join(lines)
 
 
 def _without_letter_frame(text: str, notes: list[str]) -> str:

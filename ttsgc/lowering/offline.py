@@ -699,6 +699,9 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
     says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
     words = [t.word for t in tokens[i:i + 8] if t.sentence == tokens[i].sentence]
+    if any(w in ("bumper", "tail") and words[k - 1:k] in (["my"], ["our"]) and words[k - 2:k - 1] in (
+            ["on"], ["off"]) for k, w in enumerate(words[:6])):
+        return True  # "a lorry sat about 2m off my bumper for 5 miles": it keeps pace behind, a tailgater
     if words[1:2] == ["the"]:
         del words[1]  # "sitting in (the) right-hand lane"
     if words[:1] != ["in"] or "lane" not in words[1:5]:
@@ -1369,6 +1372,10 @@ def _weather(r: _Reader) -> Weather | None:
                            "happened, not the scene's time)")
             continue
         if u.meaning.startswith("time:") and _part_of_a_date(r.units, k):
+            hour = _hour_of_the_part(r.units, k)
+            if hour is not None:  # "this morning at about 7": seven in the morning
+                times.append(hour)
+                continue
             r.notes.append(f"left out: '{' '.join(t.word for t in u.tokens)}' (it dates the event, as a day's "
                            "morning or afternoon, and says nothing of the light)")
             continue
@@ -1395,8 +1402,8 @@ CLOCK_PARTS_OF_DAY = {"morning", "afternoon"}  # hours on a clock; "night", "dus
 
 
 def _part_of_a_date(units: list[Unit], k: int) -> bool:
-    """'On Friday morning', 'the afternoon of 9th October': the morning or afternoon of a named day says when it
-    happened, like a date; 'a foggy morning' or 'early morning' still says the light."""
+    """'On Friday morning', 'this morning', 'the afternoon of 9th October': the morning or afternoon of a named day
+    says when it happened, like a date; 'a foggy morning' or 'early (this) morning' still says the light."""
     u = units[k]
     if u.word not in CLOCK_PARTS_OF_DAY:
         return False
@@ -1411,6 +1418,18 @@ def _part_of_a_date(units: list[Unit], k: int) -> bool:
         return bool(rest) and (rest[0] in WEEKDAYS | MONTHS or rest[0] in ORDINALS or
                                read_number(rest[0]) is not None or rest[0].rstrip("stndrh").isdigit())
     return False
+
+
+def _hour_of_the_part(units: list[Unit], k: int) -> tuple[str, str] | None:
+    """'this morning at about 7', 'at 5 this afternoon': an hour said with the part of the day it falls in."""
+    near = units[max(0, k - 4):k] + units[k + 1:k + 5]
+    for j, v in enumerate(near):
+        value = _word_number(v.tokens[0]) if v.category in ("number", "numbers") else None
+        if value is not None and 1 <= value <= 12 and value == int(value) and j > 0 and \
+                near[j - 1].word in TIME_INTRODUCERS:
+            hour = int(value) % 12 + (12 if units[k].word == "afternoon" else 0)
+            return _hour_time(hour, f"{v.word} in the {units[k].word}")
+    return None
 
 
 SINCE = {"from", "since"}
@@ -2132,6 +2151,10 @@ def _met_in_a_rule(sentence: list[Token], before: list[Token], after: list[Token
         order.word in ("change", "slow", "move", "give", "pull", "keep", "stay", "wait", "yield", "stop")
 
 
+VOCATIVE_LEADS = {"cmon", "on", "seriously", "there", "please", "pls", "plz", "honestly", "guys", "lol", "smh",
+                  "ffs", "careful", "safe"}  # "come on people", "drive safe folks"
+
+
 def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     """Agent nouns the text talks about, that are nobody in the scene: an institution written to or blamed ('I
     reported it to the police', 'I do not blame the fire brigade'); people or vehicles in general ('kids are
@@ -2161,6 +2184,9 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
     if u.meaning not in ("ego", "none") and _met_in_a_rule(sentence, before, after):
         return True  # "when you see a police car stopped on the shoulder, change lanes": whoever one meets
+    if last.word in ANYONE and (last.plural or last.word in ("folks", "people")) and not after and before and \
+            before[-1].word in VOCATIVE_LEADS:
+        return True  # "cmon people", "be safe out there people": the readers called on, nobody on the road
     words = [x.word for x in after[:5]]
     if u.meaning not in ("ego", "none") and not before and len(words) >= 2 and words[0] in COPULAS and \
             (words[1] in DAMAGED or words[1] in DEGREE and words[2:3] and words[2] in DAMAGED):
@@ -3428,8 +3454,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 started = reference is not None and u.meaning in ("ahead", "behind") and \
                     u.meaning in reference.features and bool(reference.actions)  # "a BMW came up the inside lane,
                 # cut me up ... into the back of it": the first place said is where it started
+                said_first = reference is not None and u.meaning in INVERSE and \
+                    bool(reference.features & OPPOSITE_PLACES.get(INVERSE[u.meaning], set()))  # "a truck just behind
+                # us ... we slot in behind it": where it was said to be first is where it starts
                 if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later and \
-                        not started:
+                        not started and not said_first:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
                 r.mark(u)
                 continue
