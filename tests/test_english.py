@@ -3794,3 +3794,10 @@ def test_whoever_a_rule_says_you_may_meet_is_nobody_in_the_scene(prompt, expecte
 def test_someone_the_narrator_saw_is_still_in_the_scene():
     assert ("police", "go_straight", "front_right") in agents(
         "When I saw a police car on the shoulder, I moved over.")
+
+
+@pytest.mark.parametrize("prompt, condition", [("It was getting dark and raining really hard.", "hard_rain"),
+                                               ("Raining very lightly as the bus pulled out.", "soft_rain"),
+                                               ("It was raining pretty heavily on the motorway.", "hard_rain")])
+def test_how_hard_it_rains_said_after_an_intensifier_sets_the_rain(prompt, condition):
+    assert lower(prompt).scenario.weather.condition == condition
