@@ -4461,3 +4461,10 @@ def test_sitting_on_the_egos_bumper_is_tailgating_not_standing(prompt):
 def test_this_morning_dates_the_event_unless_early_or_with_its_hour(prompt, time):
     weather = lower(prompt).scenario.weather
     assert (weather.time if weather else None) == time
+
+
+@pytest.mark.parametrize("prompt, condition", [("It was getting dark and raining really hard.", "hard_rain"),
+                                               ("Raining very lightly as the bus pulled out.", "soft_rain"),
+                                               ("It was raining pretty heavily on the motorway.", "hard_rain")])
+def test_how_hard_it_rains_said_after_an_intensifier_sets_the_rain(prompt, condition):
+    assert lower(prompt).scenario.weather.condition == condition

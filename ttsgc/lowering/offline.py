@@ -1357,6 +1357,11 @@ def _number_before(tokens: list[Token], i: int) -> tuple[float | None, int]:
     return value, i
 
 
+INTENSIFIERS = {"quite", "really", "very", "pretty", "so", "fairly", "rather", "extremely", "incredibly", "that"}
+RAIN_DEGREES = {"hard": "hard_rain", "heavily": "hard_rain", "heavy": "hard_rain", "lightly": "soft_rain",
+                "light": "soft_rain", "softly": "soft_rain", "gently": "soft_rain"}
+
+
 def _weather(r: _Reader) -> Weather | None:
     conditions, times = [], []
     for k, u in enumerate(r.units):
@@ -1379,8 +1384,16 @@ def _weather(r: _Reader) -> Weather | None:
             r.notes.append(f"left out: '{' '.join(t.word for t in u.tokens)}' (it dates the event, as a day's "
                            "morning or afternoon, and says nothing of the light)")
             continue
-        (times if u.meaning.startswith("time:") else conditions).append(
-            (u.meaning.removeprefix("time:"), " ".join(t.word for t in u.tokens)))
+        meaning = u.meaning
+        degree = [x for x in r.units[k + 1:k + 3] if x.tokens[0].sentence == u.tokens[0].sentence]
+        while degree and degree[0].word in INTENSIFIERS:
+            degree = degree[1:]
+        if meaning == "mid_rain" and degree and degree[0].word in RAIN_DEGREES:
+            meaning = RAIN_DEGREES[degree[0].word]  # "raining quite hard", "raining very lightly"
+            r.mark(degree[0])
+            degree[0].category = "word"  # how hard it rained, said of no one
+        (times if meaning.startswith("time:") else conditions).append(
+            (meaning.removeprefix("time:"), " ".join(t.word for t in u.tokens)))
     clock = _clock_time(r)
     if clock and not times:
         times.append(clock)
