@@ -4468,3 +4468,23 @@ def test_this_morning_dates_the_event_unless_early_or_with_its_hour(prompt, time
                                                ("It was raining pretty heavily on the motorway.", "hard_rain")])
 def test_how_hard_it_rains_said_after_an_intensifier_sets_the_rain(prompt, condition):
     assert lower(prompt).scenario.weather.condition == condition
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I overtook a tractor instead of waiting behind it.", [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+    ("Instead of stopping, the bus ahead of me carried on.", [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+])
+def test_what_was_done_instead_of_is_not_done(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "Keep a safe distance to other road users while the bus ahead of you stops.",
+    "Be considerate towards other road users; a bus stops ahead of you.",
+])
+def test_other_road_users_in_general_are_nobody_in_the_scene(prompt):
+    assert [a[0] for a in agents(prompt)] == ["bus", "car"], agents(prompt)
+
+
+def test_a_centre_line_said_with_its_colour_is_that_marking():
+    assert "solid_single_white" in road("A van overtook me over the solid white centre line.").required_objects

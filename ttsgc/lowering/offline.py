@@ -2200,6 +2200,11 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     if last.word in ANYONE and (last.plural or last.word in ("folks", "people")) and not after and before and \
             before[-1].word in VOCATIVE_LEADS:
         return True  # "cmon people", "be safe out there people": the readers called on, nobody on the road
+    said_other = before[-2:-1] if before[-1:] and before[-1].word == "other" else before[-1:] if t.word == "other" \
+        else []
+    if last.plural and u.meaning == "generic" and said_other and \
+            said_other[0].word in GENERIC_AFTER | {"to", "towards", "toward", "around"}:
+        return True  # "clearance to other road users", "care for other vehicles": anyone else, in general
     words = [x.word for x in after[:5]]
     if u.meaning not in ("ego", "none") and not before and len(words) >= 2 and words[0] in COPULAS and \
             (words[1] in DAMAGED or words[1] in DEGREE and words[2:3] and words[2] in DAMAGED):
@@ -3218,6 +3223,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         verbs = []  # "the light turns red": the subject is a signal, no agent acts ("the junction is entered by
         # two cars": a place is the subject of a passive, its agent acts)
     verbs = [i for i in verbs if not _signal_change(units, i)]
+    for i, u in enumerate(units):  # "instead of waiting behind him": no one waits there, nor is placed by it
+        if u.category == "actions" and _instead_of(units, i):
+            for place in units[i + 1:]:
+                if place.category in ("comma", "actions", "agents", "sequence"):
+                    break
+                if place.category == "positions":
+                    place.meaning = "used"
     for i, u in enumerate(units):
         if u.category == "actions" and u.meaning == "try":
             r.mark(u)
@@ -3642,20 +3654,25 @@ def _requested(units: list[Unit], i: int) -> bool:
 PASSED_OVER = (("instead", "of"), ("rather", "than"), ("as", "opposed", "to"), ("in", "place", "of"))
 
 
+def _instead_of(units: list[Unit], i: int) -> bool:
+    """A verb said after 'instead of' or 'rather than': the manoeuvre that was not made."""
+    said_before = [t.word for u in units[max(0, i - 3):i] for t in u.tokens]
+    return any(said_before[-len(lead):] == list(lead) for lead in PASSED_OVER)
+
+
 def _denied_verb(units: list[Unit], i: int) -> bool:
     """'don't try to pass him', 'never overtakes', 'must learn how to yield': a verb said not to happen, or
     only talked about ('does not move' is a phrase of its own)."""
     if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
            for u in units[max(0, i - 3):i]):
         return True
-    said_before = [t.word for u in units[max(0, i - 3):i] for t in u.tokens]
-    if any(said_before[-len(lead):] == list(lead) for lead in PASSED_OVER):
-        return True  # "rolled through instead of coming to a stop": the manoeuvre that was not made
     after = [u.word for u in units[i + 1:i + 4]]
     if after[:1] and after[0] in ("impossible", "prohibited", "forbidden", "banned") or \
             after[:2] in (["not", "possible"], ["not", "allowed"], ["not", "permitted"], ["is", "impossible"]) or \
             after[:3] in (["is", "not", "possible"], ["is", "not", "allowed"], ["not", "an", "option"]):
         return True  # "overtaking not possible": the manoeuvre is ruled out
+    if _instead_of(units, i):
+        return True  # "rolled through instead of coming to a stop", "rather than stopping": the road not taken
     for u in reversed(units[max(0, i - 7):i]):
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
                                                "failing", "refused", "refuses", "without", "unable", "nowhere") or (
