@@ -4488,3 +4488,11 @@ def test_other_road_users_in_general_are_nobody_in_the_scene(prompt):
 
 def test_a_centre_line_said_with_its_colour_is_that_marking():
     assert "solid_single_white" in road("A van overtook me over the solid white centre line.").required_objects
+
+
+@pytest.mark.parametrize("prompt", [
+    "Autopilot (v11.4.9) did a weird thing: a semi in the left lane just ahead of me drifted into my lane.",
+    "On software version 2.3 a semi in the left lane just ahead of me drifted into my lane.",
+])
+def test_a_software_version_is_no_vehicle(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "front_left")]

@@ -723,6 +723,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\bm\d{2,3}\b|\b(?<=the )m\d\b", "motorway", text)  # "the M6", "on the M25"
     text = re.sub(r"\blv\b", "lead vehicle", text)  # "LV decelerates": the lead vehicle
     text = re.sub(r"\br\d{1,4}\b", " ", text)  # "R18 - T-junction": a run number, not a side
+    text = re.sub(r"\b(?:v|ver|version)\s?\d+(?:\.\d+)+[a-z]?\b", " ", text)  # "FSD v12.5", "version 4.2.1": a
+    # software version, no vehicle (V1, "vehicle 1" stay labels)
     text = re.sub(r"\b(\d{1,2})(?:st|nd|rd|th)\b",
                   lambda m: ORDINAL_WORDS.get(m.group(1), m.group(0)), text)  # "the 2nd car": the second
     text = re.sub(r"\b(l|r) to (l|r)\b", lambda m: " to ".join("left" if x == "l" else "right" for x in m.groups()),
