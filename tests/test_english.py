@@ -4496,3 +4496,12 @@ def test_a_centre_line_said_with_its_colour_is_that_marking():
 ])
 def test_a_software_version_is_no_vehicle(prompt):
     assert agents(prompt) == [("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "front_left")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A bus pulled in at a stop just ahead of me.",
+    "A taxi pulled in to the kerb in front of me.",
+    "Ahead of us a lorry pulled into a lay-by.",
+])
+def test_pulling_in_at_a_stopping_place_is_stopping_there(prompt):
+    assert [a[1] for a in agents(prompt) if a[2] != "ego"] == ["stop"], agents(prompt)
