@@ -4505,3 +4505,11 @@ def test_a_software_version_is_no_vehicle(prompt):
 ])
 def test_pulling_in_at_a_stopping_place_is_stopping_there(prompt):
     assert [a[1] for a in agents(prompt) if a[2] != "ego"] == ["stop"], agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "I turned right and a van was parked just round the corner.",
+    "We turn left into Mill Lane; a bin lorry is stopped just around the corner.",
+])
+def test_just_round_the_corner_from_a_turn_is_the_destination(prompt):
+    assert any(a[2] == "at_the_destination" and a[1] == "stop" for a in agents(prompt)), agents(prompt)
