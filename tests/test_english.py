@@ -4513,3 +4513,15 @@ def test_pulling_in_at_a_stopping_place_is_stopping_there(prompt):
 ])
 def test_just_round_the_corner_from_a_turn_is_the_destination(prompt):
     assert any(a[2] == "at_the_destination" and a[1] == "stop" for a in agents(prompt)), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A box van squeezed over into the right lane ahead of me.", ("car", "change_lane_to_right", "front")),
+    ("A coach is trying to muscle into the left lane just ahead of us.", ("bus", "change_lane_to_left", "front")),
+])
+def test_an_unknown_verb_of_motion_into_a_lane_beside_is_a_lane_change(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_vehicle_in_a_lane_beside_is_still_placed_there():
+    assert ("truck", "stop", "front_left") in agents("A truck parked in the left lane ahead of me.")

@@ -774,6 +774,20 @@ def _turning_named_as_a_place(tokens: list[Token], i: int) -> bool:
         k >= 0 and tokens[k].base in ("miss",)
 
 
+def _unknown_verb_before(tokens: list[Token], i: int) -> bool:
+    """A verb the lexicon does not know right before a place ('squeezed over into', 'barged into')."""
+    k = i - 1
+    if k >= 0 and tokens[k].word in ("over", "across", "back", "straight", "right", "suddenly", "sharply"):
+        k -= 1
+    if k < 0 or tokens[k].sentence != tokens[i].sentence:
+        return False
+    t = tokens[k]
+    lex = lexicon()
+    verb_form = t.word.endswith(("ed", "ing", "es")) or k > 0 and tokens[k - 1].word == "to"  # "trying to squeeze"
+    return verb_form and _lookup(lex, [t]) is None and \
+        t.word not in lex.function_words and t.base not in ("be", "have", "get")
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -855,6 +869,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
             tokens[m.start - 1].word in ("a", "an", "the", "this", "that", "very", "really"):
         return [Unit(m.start, m.end, "behaviours", "cautious", span)]  # "a slow bus": how it drives, no verb
+    if m.category == "positions" and m.meaning in ("side_left", "side_right") and span[0].word == "into" and \
+            span[-1].word == "lane" and _unknown_verb_before(tokens, m.start):
+        return [Unit(m.start, m.end, "actions", "lane_" + m.meaning[5:], span)]  # "squeezed over into the left
+        # lane", "muscled into the right lane": any verb of motion into a lane beside is a lane change
     if m.category == "positions" and [t.word for t in span] == ["abreast"] and m.start > 0 and \
             _word_number(tokens[m.start - 1]) is not None:
         return [Unit(m.start, m.end, "word", "abreast", span)]  # "riding two abreast": how they ride, side by side
