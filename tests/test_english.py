@@ -4525,3 +4525,37 @@ def test_an_unknown_verb_of_motion_into_a_lane_beside_is_a_lane_change(prompt, e
 
 def test_a_vehicle_in_a_lane_beside_is_still_placed_there():
     assert ("truck", "stop", "front_left") in agents("A truck parked in the left lane ahead of me.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A fire engine comes up behind us, so the ego ducks into the left lane.", ("car", "change_lane_to_left", "ego")),
+    ("A bus pulls out ahead and the ego nips into the right lane.", ("car", "change_lane_to_right", "ego")),
+    ("The ego tucks into the left lane behind a lorry.", ("car", "change_lane_to_left", "ego")),
+])
+def test_quick_short_moves_into_a_lane_change_lane(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van in the left lane is boxing the ego in at the lights.", ("car", "block_the_ego", "left")),
+    ("A lorry on my right boxed me in while I waited to merge.", ("truck", "block_the_ego", "right")),
+])
+def test_a_vehicle_boxing_the_ego_in_blocks_it(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, weather, expected", [
+    ("A police car comes storming up from behind and overtakes the ego.", None, ("police", "go_straight", "back")),
+    ("A lorry came storming down the outside lane past the ego.", None, None),
+    ("It was storming and a truck came towards us.", ("hard_rain", "noon"), None),
+    ("It was snowing in town and a truck came towards us.", ("snow", "noon"), None),
+    ("The rain was pouring down the windscreen as the ego turned left.", ("hard_rain", "noon"), None),
+])
+def test_a_weather_verb_of_a_road_user_heading_somewhere_is_its_motion(prompt, weather, expected):
+    scene = lower(prompt).scenario
+    assert (scene.weather and (scene.weather.condition, scene.weather.time)) == (weather or None)
+    assert expected is None or expected in agents(prompt)
+
+
+def test_tonight_is_the_night():
+    assert lower("Heavy rain tonight and a cyclist crosses in front of the ego.").scenario.weather.time == "night"

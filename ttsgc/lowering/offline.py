@@ -95,7 +95,8 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
               "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
-LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid", "swing"}  # "... into the
+LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid", "swing", "duck",
+                 "tuck", "slip", "hop", "nip"}  # "... into the
 # left lane": a lane change
 STEERING = {"move", "steer", "ease", "inch", "creep", "slide", "skid", "veer", "swerve", "pull", "merge", "shift", "go",
             "head", "drift", "swing"}
@@ -788,6 +789,24 @@ def _unknown_verb_before(tokens: list[Token], i: int) -> bool:
         t.word not in lex.function_words and t.base not in ("be", "have", "get")
 
 
+HEADINGS = {"up", "past", "through", "in", "into", "out", "off", "along", "across", "towards", "toward", "by",
+            "around", "round", "away", "onto", "over", "ahead", "behind", "alongside", "after"}
+
+
+def _heads_somewhere(tokens: list[Token], i: int) -> bool:
+    """A weather verb followed by where to ('storming up the outside lane', 'thundering past'): a vehicle rushing
+    there; 'storming', 'pouring down' alone are the weather. 'down' heads somewhere only before its road."""
+    if i >= len(tokens) or tokens[i].sentence != tokens[i - 1].sentence:
+        return False
+    subject = next((t for t in reversed(tokens[max(0, i - 7):i - 1]) if t.sentence == tokens[i].sentence and (
+        t.word in ("it", ",") or (lexicon().phrases.get((t.base,)) or ("", ""))[0] == "agents")), None)
+    if subject is None or subject.word in ("it", ",") or lexicon().phrases[(subject.base,)][1] == "none":
+        return False  # "it was snowing in town": the weather; "a van storming past": a road user rushing
+    word = tokens[i].word
+    return word in HEADINGS or word == "down" and i + 1 < len(tokens) and tokens[i + 1].word in (
+        "the", "a", "our", "my", "its", "this", "that")
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -895,6 +914,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         # target is "the target" or "a target"
     if m.category == "agents" and [t.word for t in span] == ["pickup"] and _picking_up(tokens, m.start, nxt):
         return [Unit(m.start, m.end, "word", "pickup", span)]  # "a late night pickup downtown": a fare, no truck
+    if m.category == "weather" and len(span) == 1 and span[0].word != span[0].base and not \
+            m.meaning.startswith("time:") and span[0].word.endswith(("ing", "ed", "s")) and \
+            (lexicon().phrases.get((span[0].base,)) or ("", ""))[0] == "weather" and _heads_somewhere(tokens, m.end):
+        return [Unit(m.start, m.end, "actions", "move", span)]  # "an ambulance storming up from behind": it rushes
     if m.category == "weather" and [t.word for t in span] == ["dark"] and nxt in COLOURS:
         return [Unit(m.start, m.end, "word", "dark", span)]  # "a dark blue saloon": a shade, not the night
     prev = tokens[m.start - 1] if m.start > 0 else None
@@ -2886,7 +2909,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 "ahead" not in e.features:
             e.features.add("behind")  # "came up the inside lane": along the lane beside, from behind
         if clause_units is not None and k is not None and (u.meaning in ("turn", "lane_change", "cut_in") or (
-                u.meaning == "move" and u.tokens[0].base in STEERING)):
+                u.meaning == "move" and u.tokens[0].base in STEERING | LANE_STEERING)):
             direction = _direction_after(r, clause_units, k)
         action = u.meaning
         if action == "walk" and clause_units is not None and k is not None and any(
