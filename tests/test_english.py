@@ -4559,3 +4559,18 @@ def test_a_weather_verb_of_a_road_user_heading_somewhere_is_its_motion(prompt, w
 
 def test_tonight_is_the_night():
     assert lower("Heavy rain tonight and a cyclist crosses in front of the ego.").scenario.weather.time == "night"
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("I was at the junction, the light went green, and I turned left.", ("car", "turn_left", "ego")),
+    ("The lights turned green and then the ego turns right while a van comes from the opposite direction.",
+     ("car", "turn_right", "ego")),
+])
+def test_the_first_turn_of_an_ego_that_did_nothing_before_is_its_action(prompt, ego):
+    found = agents(prompt)
+    assert ego in found and sum(a[2] == "ego" for a in found) == 1, found
+
+
+def test_a_turn_after_the_ego_waited_stays_in_its_later_stage():
+    found = agents("The ego waits at the red light. When it turns green the ego turns left.")
+    assert ("car", "stop", "ego") in found and ("car", "turn_left", "ego") in found

@@ -5171,15 +5171,26 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     stage_count = 1 + max([e.stage for e in r.entities] + [a[0] for e in r.entities for a in e.actions] + [0])
     stages: list[list[Agent]] = [[] for _ in range(stage_count)]
     ego_action = _ego_class(ego_entity, 0, junction) if ego_entity else None
+    first_act = 0  # "the light's gone green, and the ego is swinging left": nothing said of the ego before the
+    # stage begins, so the turn it first makes is its action, on its line in the first stage (the ego's one route
+    # binds a later turn only after a first-stage stop)
+    if ego_entity is not None and ego_action is None:
+        first_act = next((k for k in range(1, stage_count) if any(a[0] == k and a[1] == 2 and a[2] > 0
+                                                                  for a in ego_entity.actions)), 0)
+        if first_act and _ego_action(ego_entity, _ego_class(ego_entity, first_act, junction),
+                                     first_act) in V.TURN_ACTIONS:
+            ego_action = _ego_class(ego_entity, first_act, junction)
+        else:
+            first_act = 0
     ego_type = ego_entity.type if ego_entity else "car"
     ego = Agent(name="ego", type=ego_type if ego_type in V.EGO_TYPES else "car", is_ego=True,
-                action=_ego_action(ego_entity, ego_action, 0),
+                action=_ego_action(ego_entity, ego_action, first_act),
                 behavior=(ego_entity.behavior if ego_entity and ego_entity.behavior else V.DEFAULT_BEHAVIOR),
                 speed=ego_entity.speed if ego_entity else None)
     stages[0].append(ego)
     if ego_entity is not None:
         last = ego.action
-        for k in range(1, stage_count):
+        for k in range(first_act + 1, stage_count):
             if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
                 action = _ego_action(ego_entity, _ego_class(ego_entity, k, junction), k)
                 if action == last == "stop":
