@@ -4574,3 +4574,15 @@ def test_the_first_turn_of_an_ego_that_did_nothing_before_is_its_action(prompt, 
 def test_a_turn_after_the_ego_waited_stays_in_its_later_stage():
     found = agents("The ego waits at the red light. When it turns green the ego turns left.")
     assert ("car", "stop", "ego") in found and ("car", "turn_left", "ego") in found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Here comes a truck, cutting in from the left lane in front of the ego.",
+     [("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "front_left")]),
+    ("And here comes the hatchback, cutting across from the left lane in front of the ego.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("Oh and here comes a bus, pulling out from the stop in front of the ego.",
+     [("bus", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+])
+def test_here_comes_puts_its_subject_after_the_verb(prompt, expected):
+    assert agents(prompt) == expected

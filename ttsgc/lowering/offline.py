@@ -3571,7 +3571,7 @@ def _there(units: list[Unit], subject: list[Entity], previous: list[Entity]) -> 
 INVERTING_VERBS = {"come", "follow", "stand", "sit", "wait", "drive", "go", "ride", "walk", "run", "stop", "park",
                    "appear", "emerge", "approach", "travel", "move", "roll", "hold", "halt", "cycle", "drive up"}
 PLACE_PREPOSITIONS = {"from", "behind", "on", "in", "at", "into", "along", "across", "over", "next", "beside",
-                      "ahead", "out", "down", "up", "opposite", "directly", "right", "just", "then", "now", "there"}
+                      "ahead", "out", "down", "up", "opposite", "directly", "right", "just", "then", "now", "there", "here", "past", "round", "around"}
 
 
 def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -> NounPhrase | None:
@@ -3579,7 +3579,9 @@ def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -
     direction comes a PKW', 'Behind the ego follows a small car'. A clause that opens with a place, has no
     subject before its verb, and a verb of coming or standing in a finite form (not an order: 'follow a car')
     has as subject the new noun phrase right after the verb."""
-    if verb == 0 or not (units[0].category == "positions" or units[0].word in PLACE_PREPOSITIONS):
+    opening = next((j for j, u in enumerate(units[:verb]) if not (
+        u.category == "word" and u.word in INTERJECTIONS | {"but", ","})), verb)  # "And here comes ..."
+    if opening >= verb or not (units[opening].category == "positions" or units[opening].word in PLACE_PREPOSITIONS):
         return None
     v = units[verb]
     if v.tokens[0].base not in INVERTING_VERBS or v.tokens[0].word == v.tokens[0].base:
