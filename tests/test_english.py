@@ -4586,3 +4586,26 @@ def test_a_turn_after_the_ego_waited_stays_in_its_later_stage():
 ])
 def test_here_comes_puts_its_subject_after_the_verb(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Look, a child! A child running into the road in front of the ego!",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("A bus on the left, and a cyclist! A cyclist riding across the road in front of the ego!",
+     [("bus", "go_straight", "left"), ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
+    ("A truck! Another truck! Both stop in front of the ego.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front"), ("truck", "stop", "front")]),
+    ("A car stops. A car stops behind it.", [("car", "go_straight", "ego"), ("car", "stop", "front"),
+                                             ("car", "stop", "front")]),
+])
+def test_an_exclamation_said_again_is_one_agent(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A jogger comes across the road from the right in front of the ego.",
+     ("pedestrian", "cross_the_road", "front_right")),
+    ("A kid on a bike came straight across the road in front of me.", ("cyclist", "cross_the_road", "front")),
+])
+def test_coming_across_the_road_is_crossing_it(prompt, expected):
+    assert expected in agents(prompt)

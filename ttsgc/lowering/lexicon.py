@@ -691,6 +691,11 @@ def _agent_label(m: re.Match) -> str:
         else m.group(0)
 
 
+EXCLAIMED_AGAIN = re.compile(r"(?:(?<=^)|(?<=[.!?] )|(?<=[.!?]\n)|(?<=, )|(?<=\band ))"
+                             r"((?:(?:an?|the|this|that) )?[a-z]+(?: [a-z]+){0,2})(?:!+ ?|, )\1\b")
+# "a cyclist! a cyclist coming across", "sirens! sirens!": an exclamation said again is one thing
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -750,6 +755,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\n\s*\n", " . ", text)
     text = re.sub(r"s' ", "s 's ", text)
     text = re.sub(r"(^|[.!?]\s+)(dude|man|bro|mate|guys|dude|lol|omg|ok|okay|well|yeah)\s*,\s*", r"\1", text)  # "dude, a cop..."
+    text = EXCLAIMED_AGAIN.sub(r"\1", text)  # "a cyclist! a cyclist coming across ...": one cyclist, said twice
     text = re.sub(r"\bcouple\b(?! of)", "couple of people", text)  # "a couple were crossing": two people
     text = re.sub(r",? or (?:maybe|possibly|perhaps|probably) (?:an?|the|some) [a-z ]+?(?=[,.;!?]|$)", "",
                   text)  # "a truck, or maybe a van,": one agent, not an alternative as well
