@@ -4609,3 +4609,21 @@ def test_an_exclamation_said_again_is_one_agent(prompt, expected):
 ])
 def test_coming_across_the_road_is_crossing_it(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected, count", [
+    ("A van broke down on the shoulder ahead, and the driver is out and walking across the road in front of the ego.",
+     ("pedestrian", "cross_the_road", "front"), 3),
+    ("The driver is out of his mind and overtakes the ego.", ("car", "go_straight", "back_left"), 2),
+])
+def test_a_driver_said_to_be_out_is_on_foot(prompt, expected, count):
+    found = agents(prompt)
+    assert expected in found and len(found) == count, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A lorry broke down in front of the ego.", ("truck", "stop", "front")),
+    ("A pickup blew past us in the left lane.", ("car", "go_straight", "back_left")),
+])
+def test_irregular_past_tenses_of_driving_verbs(prompt, expected):
+    assert expected in agents(prompt)

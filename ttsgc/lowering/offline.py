@@ -2464,15 +2464,18 @@ GENERIC_AFTER = {"for", "about", "like", "of"}  # "for people entering": people 
 
 
 def _gets_out(units: list[Unit], head: int) -> bool:
-    """'the driver gets out', 'the rider climbs off': out of the vehicle, on foot."""
+    """'the driver gets out', 'the rider climbs off', 'the driver is out and walking': out of the vehicle, on
+    foot."""
     words = [t.word for u in units[head + 1:head + 4] for t in u.tokens]
     verbs = {"get", "gets", "got", "climb", "climbs", "climbed", "step", "steps", "stepped", "jump", "jumps", "jumped",
-             "hop", "hops", "hopped"}
+             "hop", "hops", "hopped", "is", "was", "are", "were", "now"}
     if units[head + 1:head + 2] and units[head + 1].category == "actions" and \
             units[head + 1].tokens[0].base in ("walk", "stroll", "wander", "stride", "stagger"):
         return True  # "the driver walked out from in front of it": on foot
-    return any(w in verbs and nxt in ("out", "off", "down") for w, nxt in zip(words, words[1:]))
-    # ("climbed down from the cab")
+    words += [""]
+    return any(w in verbs and nxt in ("out", "off", "down") and not (
+        w in AUXILIARIES and (after == "of" or nxt == "down")) for w, nxt, after in zip(words, words[1:], words[2:]))
+    # ("climbed down from the cab"; not "is out of his mind", "was down the road")
 
 
 KIN = {"mother", "mom", "mum", "father", "dad", "wife", "husband", "son", "daughter", "kid", "child", "passenger",
