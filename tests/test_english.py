@@ -4627,3 +4627,34 @@ def test_a_driver_said_to_be_out_is_on_foot(prompt, expected, count):
 ])
 def test_irregular_past_tenses_of_driving_verbs(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego is going straight and one two-wheeler which is in the right lane suddenly cuts in front of ego.",
+     ("motorcycle", "change_lane_to_left", "right")),
+    ("One aunty is standing on the footpath on left side.", ("pedestrian", "on_the_sidewalk", "left")),
+    ("One police jeep is coming from behind with siren.", ("police", "go_straight", "back")),
+])
+def test_vehicle_and_people_words_of_indian_english(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_kin_who_drives_is_no_pedestrian():
+    assert agents("My uncle was driving and a bus stopped ahead.") == [("bus", "stop", "front"),
+                                                                      ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected, crosswalk", [
+    ("One cyclist is coming from the left side road and crossing.", ("cyclist", "cross_the_road", "front_left"), False),
+    ("A boy was running along the footpath and crossing in front of ego.", ("pedestrian", "cross_the_road", "front"),
+     False),
+    ("The ego is approaching a junction with a light and crossing.", ("car", "go_straight", "ego"), True),
+])
+def test_crossing_joined_to_a_verb_in_ing_is_a_verb(prompt, expected, crosswalk):
+    assert expected in agents(prompt)
+    assert ("crosswalk" in road(prompt).required_objects) == crosswalk
+
+
+def test_coming_back_to_a_lane_changes_lane():
+    found = agents("Ego shifts to the left lane. After the truck has passed, ego comes back to the right lane.")
+    assert ("car", "change_lane_to_right", "ego") in found and ("car", "change_lane_to_left", "ego") in found

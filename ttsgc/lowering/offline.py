@@ -807,6 +807,19 @@ def _heads_somewhere(tokens: list[Token], i: int) -> bool:
         "the", "a", "our", "my", "its", "this", "that")
 
 
+def _coordinated_participle(tokens: list[Token], m: Match) -> bool:
+    """'a cyclist is coming from the side road and crossing': 'crossing' after 'and' that joins it to a verb in
+    -ing of the same clause is that road user's second verb, not a crosswalk ('a light and crossing')."""
+    if m.end - m.start != 1 or m.start < 2 or tokens[m.start - 1].word not in ("and", "then"):
+        return False
+    if (lexicon().phrases.get((tokens[m.start - 2].base,)) or ("", ""))[0] == "road" or \
+            tokens[m.start - 2].word in CORNER_WORDS | {"light", "lights", "signal", "signals"}:
+        return False  # "a junction with a light and crossing": the things the road has
+    before = [t for t in tokens[max(0, m.start - 9):m.start - 1] if t.sentence == tokens[m.start].sentence]
+    return any(t.word.endswith("ing") and (lexicon().phrases.get((t.base,)) or ("", ""))[0] == "actions"
+               for t in before)
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -965,8 +978,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     # "cyclist: on crosswalk at exit arm, crossing": a note's piece of its own about a person, what they do
     if m.category == "road" and span[-1].word in ("crossing", "xing") and (
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
-            nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or
-            (len(span) == 1 and (after_person or after_verb))) and \
+            nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or (len(span) == 1 and (
+                after_person or after_verb or _coordinated_participle(tokens, m)))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
                                          and len(span) == 1):
         # the verb: "a pedestrian crossing the road"; the noun stays: "no crossing", "the pedestrian crossing ahead is"
@@ -2480,7 +2493,8 @@ def _gets_out(units: list[Unit], head: int) -> bool:
 
 KIN = {"mother", "mom", "mum", "father", "dad", "wife", "husband", "son", "daughter", "kid", "child", "passenger",
        "friend", "sister", "brother", "grandma", "grandpa", "granny", "grandmother", "grandfather", "baby",
-       "girlfriend", "boyfriend", "partner", "family", "toddler", "teen", "teenager", "parent", "boy", "girl"}
+       "girlfriend", "boyfriend", "partner", "family", "toddler", "teen", "teenager", "parent", "boy", "girl",
+       "uncle", "aunt", "aunty", "auntie", "cousin"}
 
 
 KIN_NAMES = {"mom", "mum", "mommy", "mummy", "mama", "dad", "daddy", "papa", "grandma", "grandpa", "granny", "gran",
