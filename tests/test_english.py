@@ -4658,3 +4658,22 @@ def test_crossing_joined_to_a_verb_in_ing_is_a_verb(prompt, expected, crosswalk)
 def test_coming_back_to_a_lane_changes_lane():
     found = agents("Ego shifts to the left lane. After the truck has passed, ego comes back to the right lane.")
     assert ("car", "change_lane_to_right", "ego") in found and ("car", "change_lane_to_left", "ego") in found
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("A lorry sat on my bumper for 5 miles on the A1. i was doing 60 which is literally the limit.", "speed_97"),
+    ("i was doing 80, which is the limit, and a car overtook me.", "speed_80"),
+    ("i was doing 60 which is way over the limit and a truck passed me.", None),
+])
+def test_a_speed_said_to_be_the_limit_is_the_limit(prompt, limit):
+    assert [o for o in road(prompt).required_objects if o.startswith("speed_")] == ([limit] if limit else [])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("HGV broken down on the hard shoulder of the M62, right ahead of me. moved out a lane like you're supposed to.",
+     ("car", "change_lane_to_right", "ego")),
+    ("A truck is stopped on the shoulder ahead on the right, so the ego moves over one lane.",
+     ("car", "change_lane_to_left", "ego")),
+])
+def test_moving_out_a_lane_changes_lane_away_from_the_shoulder(prompt, expected):
+    assert expected in agents(prompt)

@@ -1252,14 +1252,15 @@ def _speed_limits(r: _Reader) -> list[str]:
             "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4] if x.sentence == t.sentence} \
             & (LIMIT_WORDS | LIMITED_PLACES) \
             and not (first > 1 and tokens[first - 2].word in LIMIT_WORDS | {"signed", "signposted"})  # "posted at 25"
-        if speed_of_someone:
+        said_limit = _said_to_be_the_limit(tokens, i)
+        if speed_of_someone and not said_limit:
             continue  # "a learner doing 20 in a 40 zone": 20 is the learner's speed, 40 the limit
         road_then_unit = first > 1 and {x.word for x in tokens[max(0, first - 3):first] if x.sentence == t.sentence
                                         and not (x.word == "lane" and _word_number(tokens[x.index - 1]) is None)
                                         } & LIMITED_PLACES and \
             not _speed_in_a_lane(tokens, first) and \
             after_unit[:1] and after_unit[0] in ("mph", "kmh", "kph", "km")  # "divided highway, 65 mph"
-        if not (around & LIMIT_WORDS or unit_then_road or road_then_unit or _a_bare_limit(tokens, first, i)) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
+        if not (around & LIMIT_WORDS or said_limit or unit_then_road or road_then_unit or _a_bare_limit(tokens, first, i)) or {x.word for x in tokens[i + 1: i + 2]} & {"lane", "lanes", "m", "meters",
                                                                                  "seconds", "s", "cars"}:
             continue
         rest = [x.word for x in tokens[i + 1: i + 4]]
@@ -1289,6 +1290,24 @@ def _speed_limits(r: _Reader) -> list[str]:
             out.append(f"speed_{limit}")
     return out
 
+
+
+LIMIT_HEDGES = {"is", "was", "the", "speed", "literally", "exactly", "just", "actually", "basically", "also", "bang",
+                "on", "right", "precisely", "legal", "posted"}  # "which is literally the limit"; not "way over the limit"
+
+
+def _said_to_be_the_limit(tokens: list[Token], i: int) -> bool:
+    """'I was doing 60, which is literally the limit', 'doing 30, that's the limit there': a speed the text
+    says is the limit names the limit too."""
+    after = [t.word for t in tokens[i + 1:i + 9] if t.sentence == tokens[i].sentence]
+    if after[:1] == [","]:
+        after = after[1:]
+    if not after or after[0] not in ("which", "that", "ie", "i.e", "exactly", "bang", "right"):
+        return False
+    if "limit" not in after:
+        return False
+    between = after[1:after.index("limit")]
+    return bool({"is", "was"} & set(between)) and "the" in between and set(between) <= LIMIT_HEDGES
 
 
 def _speed_in_a_lane(tokens: list[Token], first: int) -> bool:
