@@ -4593,6 +4593,8 @@ def test_here_comes_puts_its_subject_after_the_verb(prompt, expected):
      [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
     ("A bus on the left, and a cyclist! A cyclist riding across the road in front of the ego!",
      [("bus", "go_straight", "left"), ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
+    ("A bus on the left, and cyclist! A cyclist riding across road in front of ego!",
+     [("bus", "go_straight", "left"), ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
     ("A truck! Another truck! Both stop in front of the ego.",
      [("car", "go_straight", "ego"), ("truck", "stop", "front"), ("truck", "stop", "front")]),
     ("A car stops. A car stops behind it.", [("car", "go_straight", "ego"), ("car", "stop", "front"),

@@ -692,7 +692,8 @@ def _agent_label(m: re.Match) -> str:
 
 
 EXCLAIMED_AGAIN = re.compile(r"(?:(?<=^)|(?<=[.!?] )|(?<=[.!?]\n)|(?<=, )|(?<=\band ))"
-                             r"((?:(?:an?|the|this|that) )?[a-z]+(?: [a-z]+){0,2})(?:!+ ?|, )\1\b")
+                             r"((?:(?:an?|the|this|that) )?)([a-z]+(?: [a-z]+){0,2})(?:!+ ?|, )"
+                             r"(?:(?:an?|the|this|that) )?\2\b")
 # "a cyclist! a cyclist coming across", "sirens! sirens!": an exclamation said again is one thing
 
 
@@ -755,7 +756,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\n\s*\n", " . ", text)
     text = re.sub(r"s' ", "s 's ", text)
     text = re.sub(r"(^|[.!?]\s+)(dude|man|bro|mate|guys|dude|lol|omg|ok|okay|well|yeah)\s*,\s*", r"\1", text)  # "dude, a cop..."
-    text = EXCLAIMED_AGAIN.sub(r"\1", text)  # "a cyclist! a cyclist coming across ...": one cyclist, said twice
+    text = EXCLAIMED_AGAIN.sub(r"\1\2", text)  # "a cyclist! a cyclist coming across ...": one cyclist, said twice
     text = re.sub(r"\bcouple\b(?! of)", "couple of people", text)  # "a couple were crossing": two people
     text = re.sub(r",? or (?:maybe|possibly|perhaps|probably) (?:an?|the|some) [a-z ]+?(?=[,.;!?]|$)", "",
                   text)  # "a truck, or maybe a van,": one agent, not an alternative as well
