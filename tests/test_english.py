@@ -4679,3 +4679,13 @@ def test_a_speed_said_to_be_the_limit_is_the_limit(prompt, limit):
 ])
 def test_moving_out_a_lane_changes_lane_away_from_the_shoulder(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, later", [
+    ("Ego is standing at the signal. When the signal becomes green, ego will go straight.", ("car", "go_straight", "ego")),
+    ("Ego is waiting at red light. When light turns green, ego turns left.", ("car", "turn_left", "ego")),
+    ("Ego is standing at the signal. When signal becomes green, ego will go straight.", ("car", "go_straight", "ego")),
+])
+def test_a_signal_that_becomes_green_starts_the_next_stage(prompt, later):
+    found = agents(prompt)
+    assert ("car", "stop", "ego") in found and later in found, found
