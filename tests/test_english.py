@@ -4689,3 +4689,27 @@ def test_moving_out_a_lane_changes_lane_away_from_the_shoulder(prompt, expected)
 def test_a_signal_that_becomes_green_starts_the_next_stage(prompt, later):
     found = agents(prompt)
     assert ("car", "stop", "ego") in found and later in found, found
+
+
+@pytest.mark.parametrize("post, tags", [
+    ("a taxi pulled out of a side road right in front of me and i had to stop.", " @MetPoliceUK #cabbies #schoolrun"),
+    ("so grateful to the driver behind who waited while i went round a parked van", " #cycling @CyclingUK #BusLane"),
+    ("an HGV sat on my bumper for miles on the motorway in thick fog", " #tailgating #M6 @PoliceAmbulanceFans"),
+])
+def test_a_posts_handles_and_closing_tags_are_no_road_users(post, tags):
+    assert agents(post + tags) == agents(post)
+    assert agents("@WestMidsPolice " + post) == agents(post)
+
+
+def test_a_tag_inside_a_sentence_is_the_word_it_tags():
+    assert ("motorcycle", "go_straight", "front") in agents("a #motorbike was weaving ahead of me #scary")
+
+
+@pytest.mark.parametrize("prompt, count", [
+    ("A cyclist ran the red in front of me and I braked hard. be safe out there ppl", 0),
+    ("The van cut me off at the lights. slow down, folks!", 0),
+    ("A bus stopped and two people crossed in front of it. come on people", 2),
+    ("I was doing 30 and nearly hit people", 2),
+])
+def test_the_readers_a_post_speaks_to_are_nobody_in_the_scene(prompt, count):
+    assert sum(a[0] == "pedestrian" for a in agents(prompt)) == count

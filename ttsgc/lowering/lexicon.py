@@ -697,11 +697,29 @@ EXCLAIMED_AGAIN = re.compile(r"(?:(?<=^)|(?<=[.!?] )|(?<=[.!?]\n)|(?<=, )|(?<=\b
 # "a cyclist! a cyclist coming across", "sirens! sirens!": an exclamation said again is one thing
 
 
+HANDLE = re.compile(r"(?<![\w.@])@[A-Za-z_][A-Za-z0-9_]*")  # "@WestMidsPolice", not "a@b.com" nor "@ 30 mph"
+HASHTAG = re.compile(r"(?<![\w#&])#([A-Za-z][A-Za-z0-9_]*)")  # "#baddriving", not "car #2"
+TRAILING_TAGS = re.compile(r"(?:[ \t]*(?:#[A-Za-z][A-Za-z0-9_]+|@[A-Za-z_][A-Za-z0-9_]*)[.,!?]*)+[ \t]*$", re.M)
+TAG_WORDS = re.compile(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|[0-9]+")
+
+
+def _without_social_markup(text: str) -> str:
+    """A post's handles ('@WestMidsPolice is it worth reporting') name whom it is addressed to, and the tags it
+    ends with ('#cycling #schoolbus') file it under a topic: neither is a road user of the scene, whatever
+    words they are made of. A tag inside a sentence ('a #Tesla cut me off') is the word it tags."""
+    if "@" not in text and "#" not in text:
+        return text
+    text = TRAILING_TAGS.sub("", text)
+    text = HANDLE.sub(" ", text)
+    return HASHTAG.sub(lambda m: " ".join(TAG_WORDS.findall(m.group(1))).lower() if not m.group(1).isupper()
+                       else m.group(1), text)
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = _scenario_identifiers(_lines(_screenplay(text)))
+    text = _scenario_identifiers(_lines(_screenplay(_without_social_markup(text))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = re.sub(r"\b(it|that|there|he|she|what|who)'s (been|got|gotten|gone|had)\b", r"\1 has \2", text)

@@ -97,7 +97,6 @@ def read_narration(prompt: str) -> Narration:
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
     text = _texting(text)
-    text = _without_tags(text)
     text = _addressee(text, notes)
     text = _restarts(text, notes)
     text = _asides(text)
@@ -150,15 +149,6 @@ def _screenplay_driver(text: str, notes: list[str]) -> str:
     named = "\n".join(lines)
     notes.append("read the screenplay's character at the wheel as the ego")
     return _drivers_pronoun(named, notes)
-
-
-TAG = re.compile(r"(?:(?<=\s)|^)[#@][A-Za-z][\w.]*", re.M)  # "#baddriving", "@WestMidsPolice"
-
-
-def _without_tags(text: str) -> str:
-    """'@WestMidsPolice is it even worth reporting?? #baddriving #M6': a post's handles and hashtags address and
-    file it; they name nobody on the road."""
-    return TAG.sub("", text)
 
 
 ADDRESSEE = re.compile(r"^\s*(?:psa|shout\s*out|a message|message|note|an open letter|open letter)?\s*(?:to|dear)\s+"

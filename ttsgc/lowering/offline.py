@@ -2205,6 +2205,18 @@ GENERAL_TRUTH_VERBS = {"think", "thinks", "say", "says", "know", "knows", "belie
 AFTER_A_SCENE_COPULA = {"on", "in", "at", "by", "near", "next", "behind", "ahead", "there", "here", "all", "both",
                         "still", "already", "everywhere", "coming", "going", "parked", "stopped", "queued", "lined"}
 HISTORY_LINKS = {"in", "since", "until", "till"}
+ADDRESSEES = ANYONE | {"guys", "y'all", "yall", "ya", "all"}
+ADDRESS_CLOSERS = {",", "there", "here", "on", "cmon", "out", "up", "down", "safe", "careful", "please", "pls", "plz",
+                   "again", "now", "seriously", "honestly", "lol", "smh", "tbh", "ffs", "ok", "okay", "it", "already",
+                   "together", "slow", "thanks", "thank", "you", "though", "too", "guys", "folks", "c'mon"}
+
+
+def _addressed_readers(before: list[Token], after: list[Token], u: Unit) -> bool:
+    """'be safe out there ppl', 'cmon people', 'slow down, folks': the readers a post or a broadcast ends a
+    sentence by speaking to, nobody in the scene. Counted people ('two people') or the object of a verb or a
+    preposition ('nearly hit people', 'stopped for people') stay agents."""
+    return len(u.tokens) == 1 and u.tokens[0].word in ADDRESSEES and not after and \
+        (not before or before[-1].word in ADDRESS_CLOSERS)
 
 
 DAMAGED = {"totaled", "totalled", "damaged", "dented", "wrecked", "smashed", "scratched", "crushed", "destroyed",
@@ -2237,9 +2249,6 @@ def _met_in_a_rule(sentence: list[Token], before: list[Token], after: list[Token
         order.word in ("change", "slow", "move", "give", "pull", "keep", "stay", "wait", "yield", "stop")
 
 
-VOCATIVE_LEADS = {"cmon", "on", "seriously", "there", "please", "pls", "plz", "honestly", "guys", "lol", "smh",
-                  "ffs", "careful", "safe"}  # "come on people", "drive safe folks"
-
 
 def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     """Agent nouns the text talks about, that are nobody in the scene: an institution written to or blamed ('I
@@ -2252,6 +2261,8 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     after = [x for x in sentence if x.index > last.index]
     said = " ".join(x.word for x in u.tokens)
     lead = [x.word for x in before[-2:]]
+    if _addressed_readers(before, after, u):
+        return True
     if said in INSTITUTIONS and lead and (lead[-1] in ADDRESSED or lead[-1] == "the" and len(lead) == 2
                                          and lead[0] in ADDRESSED):
         return True
@@ -2270,9 +2281,6 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
     if u.meaning not in ("ego", "none") and _met_in_a_rule(sentence, before, after):
         return True  # "when you see a police car stopped on the shoulder, change lanes": whoever one meets
-    if last.word in ANYONE and (last.plural or last.word in ("folks", "people")) and not after and before and \
-            before[-1].word in VOCATIVE_LEADS:
-        return True  # "cmon people", "be safe out there people": the readers called on, nobody on the road
     said_other = before[-2:-1] if before[-1:] and before[-1].word == "other" else before[-1:] if t.word == "other" \
         else []
     if last.plural and u.meaning == "generic" and said_other and \
