@@ -4589,22 +4589,6 @@ def test_here_comes_puts_its_subject_after_the_verb(prompt, expected):
 
 
 @pytest.mark.parametrize("prompt, expected", [
-    ("Look, a child! A child running into the road in front of the ego!",
-     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
-    ("A bus on the left, and a cyclist! A cyclist riding across the road in front of the ego!",
-     [("bus", "go_straight", "left"), ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
-    ("A bus on the left, and cyclist! A cyclist riding across road in front of ego!",
-     [("bus", "go_straight", "left"), ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front")]),
-    ("A truck! Another truck! Both stop in front of the ego.",
-     [("car", "go_straight", "ego"), ("truck", "stop", "front"), ("truck", "stop", "front")]),
-    ("A car stops. A car stops behind it.", [("car", "go_straight", "ego"), ("car", "stop", "front"),
-                                             ("car", "stop", "front")]),
-])
-def test_an_exclamation_said_again_is_one_agent(prompt, expected):
-    assert agents(prompt) == expected
-
-
-@pytest.mark.parametrize("prompt, expected", [
     ("A jogger comes across the road from the right in front of the ego.",
      ("pedestrian", "cross_the_road", "front_right")),
     ("A kid on a bike came straight across the road in front of me.", ("cyclist", "cross_the_road", "front")),
@@ -4713,3 +4697,33 @@ def test_a_tag_inside_a_sentence_is_the_word_it_tags():
 ])
 def test_the_readers_a_post_speaks_to_are_nobody_in_the_scene(prompt, count):
     assert sum(a[0] == "pedestrian" for a in agents(prompt)) == count
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A lorry sat about 2m off my bumper for 5 miles in thick fog.", ("truck", "go_straight", "back")),
+    ("A lorry sat right on my bumper for miles.", ("truck", "go_straight", "back")),
+    ("A BMW stayed a foot off my back bumper all the way.", ("car", "go_straight", "back")),
+])
+def test_a_vehicle_sitting_on_the_egos_bumper_tailgates_it(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, count", [
+    ("A lorry was broken down on the shoulder. half the cars behind me didnt bother.", 1),
+    ("A lorry stopped. most of the cars behind me kept going.", 1),
+    ("A lorry stopped. two of the cars behind me stopped.", 3),
+])
+def test_a_share_of_an_uncounted_group_is_no_agent(prompt, count):
+    assert len(agents(prompt)) - 1 == count
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("a white transit in the right lane blocked me.",
+     [("car", "block_the_ego", "right"), ("car", "go_straight", "ego")]),
+    ("a white Transit-type van was approaching from my left at the junction.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),
+    ("I take public transit but today I drove and a bus stopped ahead.",
+     [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
+])
+def test_a_transit_is_a_van(prompt, expected):
+    assert agents(prompt) == expected

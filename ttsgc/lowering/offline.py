@@ -694,15 +694,16 @@ def _body_part(tokens: list[Token], m: Match) -> bool:
 
 
 PACE_PLACES = {"behind", "ahead", "alongside", "beside", "level", "next", "abreast"}
+TAIL_ENDS = {"bumper", "tail", "back", "rear", "boot", "trunk", "tailgate"}
 
 
 def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
     says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
     words = [t.word for t in tokens[i:i + 8] if t.sentence == tokens[i].sentence]
-    if any(w in ("bumper", "tail") and words[k - 1:k] in (["my"], ["our"]) and words[k - 2:k - 1] in (
-            ["on"], ["off"]) for k, w in enumerate(words[:6])):
-        return True  # "a lorry sat about 2m off my bumper for 5 miles": it keeps pace behind, a tailgater
+    if any(a in ("on", "off") and b in OWNERS | {"the", "its"} and c in TAIL_ENDS
+           for a, b, c in zip(words, words[1:], words[2:])):
+        return True  # "sat about 2m off my bumper for miles", "sitting right on our tail": tailgating
     if words[1:2] == ["the"]:
         del words[1]  # "sitting in (the) right-hand lane"
     if words[:1] != ["in"] or "lane" not in words[1:5]:
@@ -2211,6 +2212,21 @@ ADDRESS_CLOSERS = {",", "there", "here", "on", "cmon", "out", "up", "down", "saf
                    "together", "slow", "thanks", "thank", "you", "though", "too", "guys", "folks", "c'mon"}
 
 
+SHARES = {"half", "most", "many", "none", "majority", "lots", "loads", "plenty", "rest", "quarter", "third"}
+
+
+def _a_share_of(before: list[Token]) -> bool:
+    """'half the cars behind me didn't bother', 'most of the drivers': a share of a group nobody counted,
+    traffic in general, no agents of the scene."""
+    words = [t.word for t in before[-4:]]
+    if words[-1:] not in (["the"], ["those"], ["these"]):
+        return False
+    words = words[:-1]
+    if words[-1:] == ["of"]:
+        words = words[:-1]
+    return bool(words) and words[-1] in SHARES
+
+
 def _addressed_readers(before: list[Token], after: list[Token], u: Unit) -> bool:
     """'be safe out there ppl', 'cmon people', 'slow down, folks': the readers a post or a broadcast ends a
     sentence by speaking to, nobody in the scene. Counted people ('two people') or the object of a verb or a
@@ -2261,7 +2277,7 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     after = [x for x in sentence if x.index > last.index]
     said = " ".join(x.word for x in u.tokens)
     lead = [x.word for x in before[-2:]]
-    if _addressed_readers(before, after, u):
+    if _addressed_readers(before, after, u) or last.plural and _a_share_of(before):
         return True
     if said in INSTITUTIONS and lead and (lead[-1] in ADDRESSED or lead[-1] == "the" and len(lead) == 2
                                          and lead[0] in ADDRESSED):
