@@ -935,6 +935,19 @@ def test_a_adjective_one_is_another_agent_of_the_same_kind():
     assert [t for t, _, _ in found].count("car") == 3 and ("car", "go_straight", "front") in found
 
 
+@pytest.mark.parametrize("prompt, kind", [
+    ("An HGV was in lane 1 ahead of me. The artic then braked hard.", "truck"),
+    ("A tractor-trailer was ahead in the right lane. The semi braked hard.", "truck"),
+    ("A jogger ran across the road. The runner was wearing headphones.", "pedestrian"),
+])
+def test_a_definite_other_name_for_the_only_one_of_its_kind_named_before_is_that_one(prompt, kind):
+    assert [t for t, _, _ in agents(prompt)].count(kind) == 1, agents(prompt)
+
+
+def test_a_definite_other_name_in_the_same_clause_is_another_one():
+    assert [t for t, _, _ in agents("The oncoming SUV and the pickup behind it both stop.")].count("car") == 3
+
+
 def test_a_second_agent_after_and_then_by_repeats_the_passive():
     found = agents("The ego is overtaken on the right by an ambulance and then by a fire engine.")
     assert ("firetruck", "go_straight", "back_right") in found

@@ -2879,6 +2879,9 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"
                 or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN  # "a cyclist ... the bicycle": the same
                 or head.split()[-1] in GROUP_NOUNS and e.count > 1]  # "a crowd of fans ... the crowd": them
+        before = [e for e in pool if e.parent is None and e.count == 1 and e not in r.clause_mentions]
+        if not same and not other and len(pool) == 1 and before == pool:
+            same = pool  # "a lorry ... the HGV", "a jogger ... the runner": the one of its kind named before
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool:
         return []
