@@ -4740,3 +4740,40 @@ def test_a_share_of_an_uncounted_group_is_no_agent(prompt, count):
 ])
 def test_a_transit_is_a_van(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "Ego goes straight on green at a crossroads.",
+    "A car from the right runs its red light while the ego crosses the junction.",
+    "The van jumped his light and the ego braked at the junction.",
+])
+def test_a_light_gone_through_or_a_colour_driven_on_is_a_signal(prompt):
+    assert "traffic_light" in road(prompt).required_signals
+
+
+def test_a_vehicles_own_lights_are_no_signal():
+    assert "traffic_light" not in road("The bus stopped with its red lights flashing.").required_signals
+
+
+@pytest.mark.parametrize("prompt", [
+    "Broken-down HGV sitting on the hard shoulder ahead. Driver has got out and is walking across in front of the ego.",
+    "Van stopped ahead on the right. Driver gets out and walks across in front of us.",
+])
+def test_a_bare_driver_after_a_bare_vehicle_in_notes_is_its_driver_on_foot(prompt):
+    found = agents(prompt)
+    assert ("pedestrian", "cross_the_road", "front") in found and ("car", "go_straight", "ego") in found, found
+
+
+def test_a_bare_driver_of_the_ride_described_is_still_the_ego():
+    found = agents("4 stars. Car was clean, driver was friendly. A bus pulled out ahead of us.")
+    assert [t for t, _, _ in found] == ["bus", "car"], found
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("25 mph residential street. Kid chases a ball out from between parked cars.", "speed_40"),
+    ("On a 50 km/h urban road the ego follows a bus.", "speed_50"),
+    ("The ego drives on a 70 mph two-lane road.", "speed_113"),
+])
+def test_a_speed_that_qualifies_a_road_is_its_limit_and_nobodys_speed(prompt, limit):
+    scene = lower(prompt).scenario
+    assert limit in scene.road.required_objects and all(a.speed is None for a in scene.agents()), scene

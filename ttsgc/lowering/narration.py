@@ -434,9 +434,11 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
     if said is None and bare is None:
         return text
     before = text[:(said or bare).start()]
-    if said is None and re.search(r"\b(?:an?|the|some|this|that)\s+(?:[a-z]+\s+){0,2}?(?:" + _NOUN[1:-1] +
-                                  r"|cyclist|rider)s?\b", before, re.I):
-        return text  # "a truck pulled out. The driver ...": that vehicle's driver
+    if said is None and (re.search(r"\b(?:an?|the|some|this|that)\s+(?:[a-z]+\s+){0,2}?(?:" + _NOUN[1:-1] +
+                                   r"|cyclist|rider)s?\b", before, re.I) or re.search(
+            r"(?:^|[.!?]\s+)(?:[\w-]+\s+)?" + _NOUN + r"\b(?!\s+(?:was|is|were)\b)", before, re.I)):
+        return text  # "a truck pulled out. The driver ...", "Broken-down HGV ahead. Driver got out": its driver
+        # ("Car was clean, driver was friendly": the ride's own)
     names = [w for w in (said.group(1).split() if said and said.group(1) else []) if w not in NOT_NAMES]
     text = re.sub(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b(?:\s*,?\s*" + FULL_NAME + r")?",
                   "the ego", text) if said else text

@@ -821,6 +821,12 @@ def _coordinated_participle(tokens: list[Token], m: Match) -> bool:
                for t in before)
 
 
+def _runs_a_light(units: list[Unit], k: int) -> bool:
+    """'runs its red light', 'jumped his light': a signal the driver goes through, not the vehicle's own lamp."""
+    return [t.word for t in units[k].tokens][-1] == "light" and k > 1 and \
+        units[k - 2].tokens[0].base in ("run", "jump", "blow", "go", "shoot", "sail", "barrel", "race")
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -1091,8 +1097,11 @@ def _road(r: _Reader) -> RoadSpec:
                 {units[k - 1].word, units[k - 2].word} & HAND_HELD:
             r.mark(u)
             continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
+        if u.category == "word" and u.word in SIGNAL_COLOURS and k > 0 and \
+                units[k - 1].tokens[-1].word in ("on", "through", "against"):
+            put("traffic_light", False)  # "goes straight on green": the phrase took the "on", the colour is a signal's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
-                any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) or
+                any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) and not _runs_a_light(units, k) or
                 u.tokens[-1].word == "lights" and any(x.word in LAMP_STATES for x in units[max(0, k - 1):k + 2])):  # "a flashing red light": a signal
             r.mark(u)
             continue  # "the bus has stopped with its red lights flashing": its own lamps, not a signal
@@ -1215,6 +1224,27 @@ BRITISH_ROAD_WORDS = {"lorry", "zebra", "pushchair", "pelican", "puffin", "touca
 ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "route", "rte", "hwy", "highway", "interstate", "exit", "m"}
 
 
+SPEED_UNITS = (["mph"], ["km", "h"], ["kmh"], ["kph"], ["miles", "per", "hour"])
+BEFORE_A_ROADS_SPEED = {"a", "an", "the", "on", "in", "into", "onto", "along", "down", "up", ","}
+
+
+def _speed_of_a_road(tokens: list[Token], first: int, last: int) -> bool:
+    """'a 40 mph road', '25 mph residential street', 'on a 50 km/h urban road': a speed that qualifies a road
+    (up to two words between, 'urban', 'two-lane') is its limit, nobody's speed."""
+    sentence = tokens[last].sentence
+    if first > 0 and tokens[first - 1].sentence == sentence and tokens[first - 1].word not in BEFORE_A_ROADS_SPEED:
+        return False
+    after = [t.word for t in tokens[last + 1:last + 7] if t.sentence == sentence]
+    unit = next((len(u) for u in SPEED_UNITS if after[:len(u)] == u), 0)
+    if not unit:
+        return False
+    between = after[unit:unit + 3]
+    place = next((k for k, w in enumerate(between) if w in LIMITED_PLACES), None)
+    return place is not None and all(w.isalpha() and w not in ("in", "on", "at", "and", "to", "when", "while",
+                                                                 "through", "past", "towards", "the", "a")
+                                     for w in between[:place])
+
+
 def _road_number(tokens: list[Token], i: int) -> bool:
     """'I-95', 'US-101', 'Route 30', 'the M25': a number that names a road, not a speed."""
     return 0 < i < len(tokens) and tokens[i - 1].word in ROAD_NUMBER_PREFIXES and \
@@ -1245,9 +1275,7 @@ def _speed_limits(r: _Reader) -> list[str]:
         value, first = _number_before(tokens, i)
         around = {x.word for x in tokens[max(0, first - 4): i + 5]}
         after_unit = [x.word for x in tokens[i + 1: i + 5]]
-        unit_then_road = first > 0 and tokens[first - 1].word in ("a", "an", "the") and any(
-            after_unit[:n] in (["mph"], ["km", "h"], ["kmh"], ["kph"], ["miles", "per", "hour"])
-            and after_unit[n:n + 1] and after_unit[n] in LIMITED_PLACES for n in (1, 2, 3))  # "a 40 mph road"
+        unit_then_road = _speed_of_a_road(tokens, first, i)
         speed_of_someone = first > 0 and tokens[first - 1].word in (
             "doing", "going", "travelling", "traveling", "driving", "at", "about", "around", "approximately",
             "roughly", "nearly", "almost") and not {x.word for x in tokens[i + 1:i + 4] if x.sentence == t.sentence} \
@@ -2644,6 +2672,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
     if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
         definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
+    if bare and u.base in ("driver", "rider") and any(not e.is_ego and e.type not in V.VULNERABLE_TYPES
+                                                      for e in r.entities):
+        definite = True  # "Broken-down HGV on the shoulder. Driver has got out": its driver, in note style
     if not words and count is None and not plural and not label and head + 1 < len(units) and \
             units[head + 1].category == "positions" and any(
                 e.head.split()[-1] == u.base.split()[-1] and not e.is_ego and e.count == 1 and
@@ -4607,7 +4638,8 @@ def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
                 r.notes.append(f"left out: a trigger time of {value:g} s is above {V.TRIGGER_TIME_RANGE_S[1]:g} s")
             r.mark(u), r.mark(prev), r.mark(nxt)
         elif unit_word in ("kmh", "mph") and not any(t.word in LIMIT_WORDS for t in r.tokens[max(0, u.start - 4):
-                                                                                            u.start + 5]):
+                                                                                            u.start + 5]) and \
+                not _speed_of_a_road(r.tokens, u.start, u.end - 1):
             speed = Speed(value=value, unit="km/h" if unit_word == "kmh" else "mph")
             if speed.mps <= V.SPEED_RANGE_MPS[1]:
                 for e in subject:
