@@ -319,7 +319,7 @@ def test_a_vehicle_noun_after_ego_is_the_egos_own(prompt, ego_type):
 
 
 def test_a_driver_who_gets_out_walks_and_over_the_street_is_across_it():
-    assert ("pedestrian", "cross_the_road", "front") in agents(
+    assert ("pedestrian", "cross_the_road", "front_right") in agents(
         "A van stands on the hard shoulder ahead on the right. The driver gets out and walks over the street in "
         "front of the ego.")
 
@@ -4612,7 +4612,7 @@ def test_coming_across_the_road_is_crossing_it(prompt, expected):
 
 @pytest.mark.parametrize("prompt, expected, count", [
     ("A van broke down on the shoulder ahead, and the driver is out and walking across the road in front of the ego.",
-     ("pedestrian", "cross_the_road", "front"), 3),
+     ("pedestrian", "cross_the_road", "front_right"), 3),
     ("The driver is out of his mind and overtakes the ego.", ("car", "go_straight", "back_left"), 2),
 ])
 def test_a_driver_said_to_be_out_is_on_foot(prompt, expected, count):
@@ -4756,12 +4756,12 @@ def test_a_vehicles_own_lights_are_no_signal():
 
 
 @pytest.mark.parametrize("prompt", [
-    "Broken-down HGV sitting on the hard shoulder ahead. Driver has got out and is walking across in front of the ego.",
+    "Broken-down HGV on the hard shoulder ahead on the right. Driver has got out and is walking across in front of us.",
     "Van stopped ahead on the right. Driver gets out and walks across in front of us.",
 ])
 def test_a_bare_driver_after_a_bare_vehicle_in_notes_is_its_driver_on_foot(prompt):
     found = agents(prompt)
-    assert ("pedestrian", "cross_the_road", "front") in found and ("car", "go_straight", "ego") in found, found
+    assert ("pedestrian", "cross_the_road", "front_right") in found and ("car", "go_straight", "ego") in found, found
 
 
 def test_a_bare_driver_of_the_ride_described_is_still_the_ego():
@@ -4777,3 +4777,13 @@ def test_a_bare_driver_of_the_ride_described_is_still_the_ego():
 def test_a_speed_that_qualifies_a_road_is_its_limit_and_nobodys_speed(prompt, limit):
     scene = lower(prompt).scenario
     assert limit in scene.road.required_objects and all(a.speed is None for a in scene.agents()), scene
+
+
+@pytest.mark.parametrize("prompt, start", [
+    ("A stalled pickup on the hard shoulder up ahead on the right, and the driver is out and walking across the road "
+     "in front of the ego!", "front_right"),
+    ("A van is parked on the left ahead. The driver gets out and walks across in front of us.", "front_left"),
+    ("A lorry stopped ahead of us in our lane. The driver got out and walked across the road.", "front"),
+])
+def test_a_driver_on_foot_starts_at_the_side_of_the_vehicle_left(prompt, start):
+    assert ("pedestrian", "cross_the_road", start) in agents(prompt), agents(prompt)

@@ -165,6 +165,7 @@ class _Reader:
     order: int = 0
     clause_mentions: list = field(default_factory=list)  # entities named so far in the clause being read
     after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
+    got_out_of: dict = field(default_factory=dict)  # id of a person on foot -> the vehicle they got out of
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
 
@@ -2688,6 +2689,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
             count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
+    vehicle_left = None  # the vehicle a driver said to get out of left
     predicate = first > 0 and units[first - 1].word in COPULAS | {"be", "being", "been"}  # "whom I know to be the
     # driver of the HGV": says who the man is; he is not the HGV
     if predicate and u.base in ("driver", "rider", "motorist") and not plural:
@@ -2695,6 +2697,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural and \
             _gets_out(units, head):  # "the driver gets out and walks across": a person on foot now
         kind, definite = "pedestrian", False
+        left = [e for e in recent if not e.is_ego and e.type not in V.VULNERABLE_TYPES] or \
+            [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES]
+        vehicle_left = left[-1] if left else None
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
         driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
@@ -2787,6 +2792,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # "a silver Ford Focus ... the Ford": the make names it too
     if scenery and before >= lo and units[before].word == "between":
         entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
+    if vehicle_left is not None:
+        r.got_out_of[id(entity)] = vehicle_left
     if not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
@@ -4969,6 +4976,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             else []
     _witness_on_foot(r)
     _screens_on_the_crossers_side(r)
+    _out_of_a_vehicle_on_a_side(r)
     _numbered_lane_sides(r)
     _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
@@ -5127,6 +5135,19 @@ def _screens_on_the_crossers_side(r: _Reader) -> None:
             crosser.features.add(f"from_{own}")  # "out from between two lorries on my left": from the left
         if not any(a[4] == "stop" for a in e.actions):
             e.actions.append((e.stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # screens stand
+
+
+def _out_of_a_vehicle_on_a_side(r: _Reader) -> None:
+    """A driver who gets out of a vehicle standing on a side ('a stalled pickup on the right shoulder ... the driver
+    is out and walking across in front of the ego') starts at that side, whatever side the walk ends on."""
+    for e in r.entities:
+        vehicle = r.got_out_of.get(id(e))
+        if vehicle is None or _side_of(e.features) or "crosswalk" in e.features:
+            continue
+        side = _side_of(vehicle.features) or (
+            ("left" if _KEEPS_LEFT.get() else "right") if vehicle.road_type == "shoulder" else None)
+        if side is not None:
+            e.features.add(f"from_{side}")
 
 
 def _numbered_lane_sides(r: _Reader) -> None:
