@@ -834,3 +834,14 @@ def test_an_ego_that_waited_and_then_turns_takes_its_turn_with_the_stages_oncomi
     for player in ("sumo", "esmini"):
         assert not _verdict(report, player).collisions, report.table()
     assert report.ok, report.table()
+
+
+def test_a_later_vehicle_behind_the_ego_appears_behind_the_one_already_following_it(esmini, tmp_path):
+    """'An ambulance comes up behind the ego; after that a fire engine comes up behind it as well': the fire
+    engine appeared on the ambulance, still following the ego (esmini: overlapping, then a collision)."""
+    report = _played(tmp_path, "sirens", 'scenario "sirens"\nroad {\n    lanes >= 2\n}\nstage first {\n'
+                     '    ego car go_straight\n    ambulance a1 at back go_straight\n}\nstage second {\n'
+                     '    firetruck f1 at back go_straight\n}\n')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions and not _verdict(report, player).problems, report.table()
+    assert report.ok, report.table()

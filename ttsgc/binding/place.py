@@ -527,7 +527,10 @@ class Placer:
         dlane = 1 if where in LEFT_SIDE else -1 if where in RIGHT_SIDE else 0
         ahead = where in AHEAD
         behind = where in BEHIND
-        previous = [(a, l) for w, a, l in self._later if w == where]
+        keeping_pace = [(a, V.BODIES[a.type][0]) for a in self.scenario.stages[0].agents
+                        if not a.is_ego and a.relative_to_ego == where and a.action == "go_straight"]
+        previous = keeping_pace + [(a, l) for w, a, l in self._later if w == where]  # "an ambulance behind the
+        # ego; then a fire engine comes up behind as well": behind the ambulance, which still follows
         extra = sum(l + _spacing(p, a) for (p, _), (a, l) in zip([(None, 0)] + previous, previous))
         last = previous[-1][0] if previous else None
         ds = (ego_len / 2 + extra + _spacing(last, agent) + length / 2) * (1 if ahead else -1 if behind else 0)
