@@ -4787,3 +4787,14 @@ def test_a_speed_that_qualifies_a_road_is_its_limit_and_nobodys_speed(prompt, li
 ])
 def test_a_driver_on_foot_starts_at_the_side_of_the_vehicle_left(prompt, start):
     assert ("pedestrian", "cross_the_road", start) in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, other", [
+    ("The participant's vehicle follows a confederate vehicle on a two-lane road; the confederate vehicle brakes "
+     "hard.", ("car", "stop", "front")),
+    ("The participant turns left while a confederate pedestrian crosses the road ahead.",
+     ("pedestrian", "cross_the_road", "front")),
+])
+def test_a_studys_participant_drives_the_ego_and_its_confederates_are_the_others(prompt, other):
+    found = agents(prompt)
+    assert other in found and len(found) == 2 and [p for _, _, p in found].count("ego") == 1, found
