@@ -104,6 +104,16 @@ def test_a_book_given_as_the_prompt_is_refused_at_once(tmp_path, capsys):
     assert not (tmp_path / "p.xosc").exists()
 
 
+@pytest.mark.parametrize("unit", ["a ", "25 mph ", "a lorry\u2014 ", "the car then the bus and then the truck turns "])
+def test_a_run_on_prompt_at_the_longest_allowed_is_read_in_bounded_time(tmp_path, capsys, unit):
+    """Reading within a sentence was quadratic: one run-on sentence of 20,000 characters took 20 to 90 s."""
+    prompt = tmp_path / "p.txt"
+    prompt.write_text((unit * 20_000)[:19_900])
+    start = time.perf_counter()
+    code, _, _ = _run(capsys, "lower", prompt)
+    assert code in (ExitCode.OK, ExitCode.LOWERING_FAILED) and time.perf_counter() - start < 15
+
+
 def test_a_scene_of_thousands_of_agents_is_refused_naming_the_first_one_too_many(tmp_path, capsys):
     scene = tmp_path / "s.tsg"
     scene.write_text('scenario "x"\nstage a {\n    ego car go_straight\n'

@@ -715,6 +715,10 @@ def _without_social_markup(text: str) -> str:
                        else m.group(1), text)
 
 
+LONGEST_SENTENCE = 100  # tokens; the corpus's longest sentence has 71. A run-on text ends a sentence at its next
+# comma past this, or at twice this, so that what is read per sentence stays bounded
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -825,14 +829,18 @@ def tokenize(text: str) -> list[Token]:
         if word in SENTENCE_ENDS:
             current += 1
     titled = {sentence_of_raw[k] for k, w in enumerate(raw) if w == "\u00a7"}
+    said = 0  # tokens in the sentence so far
     for position, word in enumerate(raw):
         question = sentence_of_raw[position] in asks
         if word == "\u00a7":
             continue
-        if word in SENTENCE_ENDS:
+        if word in SENTENCE_ENDS or said >= LONGEST_SENTENCE and word == "," or said >= 2 * LONGEST_SENTENCE:
             if tokens and tokens[-1].sentence == sentence:
                 sentence += 1
-            continue
+                said = 0
+            if word in SENTENCE_ENDS or word == ",":
+                continue
+        said += 1
         if word in "()":
             word = ","
         possessive = False

@@ -179,6 +179,8 @@ def _restarts(text: str, notes: list[str]) -> str:
     the other speaker is the one named again later, not one more."""
     lines = text.split("\n")
     for k, line in enumerate(lines):
+        if not line.rstrip().endswith(("\u2014", "\u2013", "--")):
+            continue  # (searched only then: the pattern tried at every start of a long line is quadratic)
         m = BROKEN_OFF.search(line)
         if m is None or not m.group(1).strip():
             continue

@@ -21,6 +21,7 @@ scene for daily traffic"). Content words no rule places are reported with the ne
 from __future__ import annotations
 
 import re
+from bisect import bisect_left, bisect_right
 from contextvars import ContextVar
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
@@ -165,7 +166,6 @@ class _Reader:
     order: int = 0
     clause_mentions: list = field(default_factory=list)  # entities named so far in the clause being read
     after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
-    got_out_of: dict = field(default_factory=dict)  # id of a person on foot -> the vehicle they got out of
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
 
@@ -2054,7 +2054,7 @@ ASKING_FOR_A_SCENE = {"scene", "scenario", "simulation", "simulate", "create", "
 def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
     """'Should I have been able to stop?', 'Who should give way?', 'Do I have to wait?': a question about what
     ought to happen is no account of what did (a request for a scene is no such question)."""
-    words = [t.word for t in tokens if t.sentence == sentence]
+    words = [t.word for t in _sentence(tokens, sentence)]
     if len(words) < 2 or set(words) & ASKING_FOR_A_SCENE - {"have"}:
         return False
     if (words[0] in QUESTION_WORDS or words[:2] == ["in", "which"]) and set(words) & DEONTIC:
@@ -2070,9 +2070,9 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
 
 def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
     """'Once someone's on a zebra, you stop and you wait': advice for anyone at any time, no event of the scene."""
-    words = [x.word for x in tokens if x.sentence == sentence]
+    words = [x.word for x in _sentence(tokens, sentence)]
     if "you" in words and any(f.category == "agents" and _met_in_a_rule(
-            [x for x in tokens if x.sentence == sentence], [x for x in tokens[:f.start] if x.sentence == sentence],
+            _sentence(tokens, sentence), [x for x in tokens[:f.start] if x.sentence == sentence],
             [x for x in tokens[f.end:] if x.sentence == sentence]) for f in _matches_of(tokens, sentence)):
         return True  # "when you see a police car on the shoulder, change lanes": what anyone does then
     return any(w in ("once", "when", "whenever", "if") and words[k + 1] in ANYONE for k, w in enumerate(words[:-1])) \
@@ -2080,7 +2080,7 @@ def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
 
 
 def _matches_of(tokens: list[Token], sentence: int) -> list:
-    inside = [x.index for x in tokens if x.sentence == sentence]
+    inside = [x.index for x in _sentence(tokens, sentence)]
     return matches(tokens, inside[0], inside[-1] + 1) if inside else []
 
 
@@ -2091,7 +2091,7 @@ SIGN_WORDS = {"sign", "signs", "light", "lights", "line", "lines", "marking", "m
 def _standing_advice(tokens: list[Token], sentence: int) -> bool:
     """'Always look right and give way.', 'Never overtake there.', 'Next time wait.': advice for every drive, no
     event of this one."""
-    words = [x.word for x in tokens if x.sentence == sentence]
+    words = [x.word for x in _sentence(tokens, sentence)]
     if words[:2] == ["next", "time"]:
         words = words[1:]  # "Next time wait."
     if words[:2] in (["it", "is"], ["it", "would"], ["it", "will"]) and words[2:4] != ["to", "be"]:
@@ -2149,7 +2149,7 @@ def _in_general(tokens: list[Token], u: Unit) -> bool:
     t = u.tokens[0]
     if u.meaning == "ego" or not _bare_plural(tokens, u):
         return False
-    words = [x.word for x in tokens if x.sentence == t.sentence]
+    words = [x.word for x in _sentence(tokens, t.sentence)]
     return bool(HABITUAL & set(words)) or any(tuple(words[k:k + len(p)]) == p
                                               for p in HABITUAL_PHRASES for k in range(len(words)))
 
@@ -2161,7 +2161,7 @@ def _what_if(tokens: list[Token], u: Unit) -> bool:
     t = u.tokens[0]
     if t.index == 0 or tokens[t.index - 1].word not in ("a", "an", "another", "any"):
         return False
-    sentence = [x for x in tokens if x.sentence == t.sentence]
+    sentence = _sentence(tokens, t.sentence)
     opened = next((x for x in reversed(sentence) if x.index < t.index and x.word in ("if", ",")), None)
     if opened is None or opened.word != "if":
         return False
@@ -2197,7 +2197,7 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     if u.category == "agents" and (_in_general(tokens, u) or _what_if(tokens, u) or
                                    _only_talked_about(tokens, u)):
         return True
-    first = next(x for x in tokens if x.sentence == t.sentence)
+    first = _sentence(tokens, t.sentence)[0]
     before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
     counted = before is not None and (read_number(before.word) is not None or before.word in COUNTED_BY)
     if u.category == "agents" and len(u.tokens) == 1 and t.word in ANYONE and not counted and (
@@ -2301,7 +2301,7 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     unpredictable', 'harder than people think'); a topic said alone ('Motorcycles.'); a clause of history dated
     by its year ('the crossing patrol lady was withdrawn in 2020')."""
     t, last = u.tokens[0], u.tokens[-1]
-    sentence = [x for x in tokens if x.sentence == t.sentence]
+    sentence = _sentence(tokens, t.sentence)
     before = [x for x in sentence if x.index < t.index]
     after = [x for x in sentence if x.index > last.index]
     said = " ".join(x.word for x in u.tokens)
@@ -2359,6 +2359,21 @@ LEAVING_OUT = (("leave", "out"), ("leaving", "out"), ("drop",), ("dropped",), ("
                ("excluded",), ("omit",), ("omitted",), ("remove",), ("removed",), ("skip",), ("skipped",))
 
 
+def _sentence(tokens: list[Token], sentence: int) -> list[Token]:
+    """The tokens of one sentence, found by bisection: tokens come in sentence order, and a scan of the whole
+    text for each word read would make reading quadratic in its length."""
+    return tokens[bisect_left(tokens, sentence, key=_sentence_number):
+                  bisect_right(tokens, sentence, key=_sentence_number)]
+
+
+def _sentence_number(t: Token) -> int:
+    return t.sentence
+
+
+def _unit_start(u: Unit) -> int:
+    return u.start
+
+
 def _starts_with(words: list[str], phrases) -> bool:
     return any(tuple(words[:len(p)]) == p for p in phrases)
 
@@ -2372,14 +2387,14 @@ def _set_aside(tokens: list[Token], u: Unit) -> bool:
     t = u.tokens[0]
     if u.meaning == "ego":
         return False
-    sentence = [x for x in tokens if x.sentence == t.sentence]
+    sentence = _sentence(tokens, t.sentence)
     words = [x.word for x in sentence]
     bases = [x.base for x in sentence]
     ends = [k for k, w in enumerate(words) if w in (",", "but") or w == "and" and k + 1 < len(words) and
             words[k + 1] not in DETERMINERS and _word_number(sentence[k + 1]) is None] + [len(words)]
-    following = [x for x in tokens if x.sentence == t.sentence + 1]
+    following = _sentence(tokens, t.sentence + 1)
     at = next((k for k, x in enumerate(sentence) if x.index == t.index), None)
-    if at is None:
+    if at is None or not set(words[:at + 1]) & (PROPOSING | {p[0] for p in LEAVING_OUT}):
         return False
     for k in range(at + 1):
         said = next((p for p in LEAVING_OUT if tuple(words[k:k + len(p)]) == p), None)
@@ -2689,7 +2704,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
             count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
-    vehicle_left = None  # the vehicle a driver said to get out of left
+    vehicle_left = None  # the vehicle a driver is said to get out of
     predicate = first > 0 and units[first - 1].word in COPULAS | {"be", "being", "been"}  # "whom I know to be the
     # driver of the HGV": says who the man is; he is not the HGV
     if predicate and u.base in ("driver", "rider", "motorist") and not plural:
@@ -2792,8 +2807,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # "a silver Ford Focus ... the Ford": the make names it too
     if scenery and before >= lo and units[before].word == "between":
         entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
-    if vehicle_left is not None:
-        r.got_out_of[id(entity)] = vehicle_left
+    entity.relative_to = vehicle_left  # at the vehicle it got out of
     if not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
@@ -2876,8 +2890,9 @@ def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None
                                                                              "inc", "with")
             and any(u.category == "agents" and u.meaning == "ego" for u in window[1:3])):
         return True
-    if whole is not None and units[head] in whole:  # read on past the clause: "three cars wait, including yours"
-        units, head = whole, whole.index(units[head])
+    at = bisect_left(whole, units[head].start, key=_unit_start) if whole is not None else None
+    if at is not None and at < len(whole) and whole[at] is units[head]:  # read on past the clause: "three cars
+        units, head = whole, at  # wait, including yours"
     for k in range(head + 1, min(len(units) - 1, head + 9)):  # "three cars at a crossroads, including yours"
         if units[k].category == "agents" and units[k].meaning == "ego" and units[k + 1].word == "included" and \
                 units[k - 1].category == "comma":
@@ -3645,10 +3660,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     surface = [np.entity for np in phrases if np.entity is not None and np.index < first_verb]
     r.surface = surface[:1] if by is not None and surface else []
     mentioned = [np.entity for np in phrases if np.entity is not None]
-    for e in mentioned:
-        if e in recent:
-            recent.remove(e)
-        recent.append(e)
+    for e in mentioned:  # by identity: entities compare by value, and an equality test of each is costly
+        recent[:] = [x for x in recent if x is not e] + [e]
     return subject
 
 
@@ -5138,11 +5151,12 @@ def _screens_on_the_crossers_side(r: _Reader) -> None:
 
 
 def _out_of_a_vehicle_on_a_side(r: _Reader) -> None:
-    """A driver who gets out of a vehicle standing on a side ('a stalled pickup on the right shoulder ... the driver
-    is out and walking across in front of the ego') starts at that side, whatever side the walk ends on."""
+    """A person who gets out of a vehicle standing on a side ('a stalled pickup on the right shoulder ... the driver
+    is out and walking across in front of the ego') starts at that side, whatever place the walk is said to pass."""
     for e in r.entities:
-        vehicle = r.got_out_of.get(id(e))
-        if vehicle is None or _side_of(e.features) or "crosswalk" in e.features:
+        vehicle = e.relative_to
+        if e.type != "pedestrian" or vehicle is None or vehicle.type in V.VULNERABLE_TYPES or \
+                _side_of(e.features) or "crosswalk" in e.features:
             continue
         side = _side_of(vehicle.features) or (
             ("left" if _KEEPS_LEFT.get() else "right") if vehicle.road_type == "shoulder" else None)
