@@ -4798,3 +4798,21 @@ def test_a_driver_on_foot_starts_at_the_side_of_the_vehicle_left(prompt, start):
 def test_a_studys_participant_drives_the_ego_and_its_confederates_are_the_others(prompt, other):
     found = agents(prompt)
     assert other in found and len(found) == 2 and [p for _, _, p in found].count("ego") == 1, found
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("A woman crosses the road in front of the ego, which stops to let her pass.", ("car", "stop", "ego")),
+    ("A jogger runs out ahead of the ego vehicle, which brakes hard and stops.", ("car", "stop", "ego")),
+    ("A truck pulls out in front of the AV, which slows down and stops.", ("car", "stop", "ego")),
+    ("A car stops right ahead of me, which makes me brake.", ("car", "go_straight", "ego")),
+])
+def test_a_relative_set_off_by_a_comma_after_the_ego_is_about_the_ego(prompt, ego):
+    assert ego in agents(prompt), agents(prompt)
+
+
+def test_a_restrictive_or_plural_relative_after_the_ego_is_about_the_noun_before_it():
+    for prompt in ("Three cars ahead of the player, which each swerve across in front of it.",
+                   "Three cars ahead of the player that each swerve across in front of it."):
+        found = agents(prompt)
+        assert ("car", "go_straight", "ego") in found and found.count(("car", "change_lane_to_right", "front_left")) \
+            == 3, found

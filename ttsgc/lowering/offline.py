@@ -4926,8 +4926,12 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     for k, clause in enumerate(clauses):
         if clause.link in RELATIVES and recent:
             clause.antecedent = recent[-1]
-            if recent[-1].is_ego and len(recent) > 1 and k > 0 and _ego_placed_last(clauses[k - 1].units):
-                clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
+            other = recent[-2] if recent[-1].is_ego and len(recent) > 1 else recent[-1]
+            if k > 0 and _ego_placed_last(clauses[k - 1].units):
+                if _set_off_after_the_ego(tokens, clause, clauses[k - 1].units, other):
+                    clause.antecedent = _ego_entity(r, clause.stage)  # "in front of the ego, who stops"
+                elif recent[-1].is_ego and len(recent) > 1:
+                    clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
         if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
                 main_subject and _returns_to_the_main_subject(clause.units):
             previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
@@ -5180,7 +5184,11 @@ def _numbered_lane_sides(r: _Reader) -> None:
 
 
 def _ego_placed_last(units: list[Unit]) -> bool:
-    """'... ahead of the player': the clause ends on the ego as the object of a place phrase."""
+    """'... ahead of the player': the clause ends on the ego as the object of a place phrase (also one the
+    lexicon knows whole, 'ahead of the ego vehicle')."""
+    last = len(units) - 1 - (len(units) > 1 and units[-1].category == "word" and units[-1].word in EGO_HEADS)
+    if last >= 0 and units[last].category == "positions" and units[last].tokens[-1].word == "ego":
+        return True
     egos = [k for k, u in enumerate(units) if u.category == "agents" and u.meaning == "ego"]
     if not egos or egos[-1] != len(units) - 1:
         return False
@@ -5188,6 +5196,28 @@ def _ego_placed_last(units: list[Unit]) -> bool:
     while k >= 0 and units[k].category == "word" and units[k].word in ("the", "of", "a"):
         k -= 1
     return k >= 0 and units[k].category == "positions"
+
+
+EGO_HEADS = {"vehicle", "car"}  # "the ego vehicle" after a place phrase that ends in "the ego"
+
+
+def _set_off_after_the_ego(tokens: list[Token], clause: Clause, before: list[Unit], other: Entity) -> bool:
+    """'... in front of the ego, who comes to a stop': a relative set off by a comma right after the ego named
+    as a noun is about the ego, unless its verb agrees only with the plural named before it ('three cars ahead
+    of the player, which each swerve'). 'that' restricts the noun it follows, and nobody writes it of the ego."""
+    if clause.link not in ("who", "which") or not clause.units:
+        return False
+    at = clause.units[0].tokens[0].index - 1
+    while at > 0 and tokens[at].word != clause.link:
+        at -= 1
+    if at < 1 or tokens[at - 1].word != ",":
+        return False
+    if before[-1].tokens[-1].word in SPEAKERS:  # "right in front of me, which made me brake": what happened
+        return False
+    verb = next((u for u in clause.units if u.category == "actions"), None)
+    plural_verb = verb is not None and verb.tokens[0].word == verb.tokens[0].base and \
+        not verb.tokens[0].word.endswith(("ed", "ing"))
+    return not (plural_verb and other.count > 1)
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
