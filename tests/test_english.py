@@ -4816,3 +4816,13 @@ def test_a_restrictive_or_plural_relative_after_the_ego_is_about_the_noun_before
         found = agents(prompt)
         assert ("car", "go_straight", "ego") in found and found.count(("car", "change_lane_to_right", "front_left")) \
             == 3, found
+
+
+@pytest.mark.parametrize("prompt, placed", [
+    ("At the crossroads one car was waiting at the lights, on my left, and a van drove straight through.",
+     ("car", "stop", "road_of_left_turn")),
+    ("A lorry sat at the kerb, on our right, and a man walked out from behind it.", ("truck", "stop", "right")),
+    ("A bus was waiting at the stop, in the right lane, but a cyclist went past.", ("bus", "stop", "right")),
+])
+def test_a_place_set_off_after_a_clause_places_that_clauses_subject(prompt, placed):
+    assert placed in agents(prompt), agents(prompt)

@@ -1814,6 +1814,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             stage += 1
             condition = True
             continue
+        if u.category == "comma" and _a_place_said_after(out, current, link):
+            out[-1].units.extend(current)  # "one car stopped at the light, on my left, and the ambulance went
+            current, link = [], ","  # round it": where the car was, not where the ambulance went
+            continue
         if u.category == "comma":
             only_ego = all(x.category == "agents" and (x.meaning == "ego" or x.tokens[-1].label)
                            or x.category == "word" and x.word == "the" for x in current)  # appositions follow
@@ -1896,6 +1900,19 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+def _a_place_said_after(out: list[Clause], current: list[Unit], link: str) -> bool:
+    """', on my left,' between two commas after a clause with its subject and verb: an afterthought that places
+    that clause's subject; it has no subject or verb of its own to lend to what follows."""
+    if link != "," or not out or not current or current[0].word not in ("on", "in", "to", "at", "from"):
+        return False
+    if any(x.category in ("agents", "actions", "sequence") for x in current) or \
+            not any(x.category == "positions" for x in current):
+        return False
+    before = out[-1]
+    return before.units[-1].tokens[0].sentence == current[0].tokens[0].sentence and _has_agent(before.units) and \
+        _has_verb(before.units)
 
 
 VERDICT_SUBJECTS = {"that", "it", "this"}
