@@ -4826,3 +4826,14 @@ def test_a_restrictive_or_plural_relative_after_the_ego_is_about_the_noun_before
 ])
 def test_a_place_set_off_after_a_clause_places_that_clauses_subject(prompt, placed):
     assert placed in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, members", [
+    ("The ego waits to turn left while two oncoming vehicles (a bus and a van) pass through.",
+     [("bus", "go_straight", "road_of_straight"), ("car", "go_straight", "road_of_straight")]),
+    ("At the junction two vehicles from the right, a lorry and a taxi, go straight across.",
+     [("car", "go_straight", "road_of_right_turn"), ("truck", "go_straight", "road_of_right_turn")]),
+])
+def test_the_members_named_of_a_counted_group_are_what_the_group_was_said_to_be(prompt, members):
+    found = agents(prompt)
+    assert [a for a in found if a[2] != "ego"] == members, found

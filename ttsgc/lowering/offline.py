@@ -2963,7 +2963,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
 
 
 def _absorbed(r: _Reader, entity: Entity) -> bool:
-    """A new agent of a counted group already introduced ('four vehicles: a car, a bus...') is one of it."""
+    """A new agent of a counted group already introduced ('four vehicles: a car, a bus...') is one of it, and is
+    what the group was said to be ('two oncoming vehicles (a bus and a van)': both oncoming)."""
     for group in reversed(r.entities):
         if group.is_ego or group is entity or group.group_open <= 0:
             continue
@@ -2971,6 +2972,9 @@ def _absorbed(r: _Reader, entity: Entity) -> bool:
             taken = min(entity.count, group.group_open)
             group.group_open -= taken
             group.count -= taken
+            entity.features |= group.features
+            entity.behavior = entity.behavior or group.behavior
+            entity.actions = entity.actions or list(group.actions)
             return False
     return False
 
