@@ -4837,3 +4837,13 @@ def test_a_place_set_off_after_a_clause_places_that_clauses_subject(prompt, plac
 def test_the_members_named_of_a_counted_group_are_what_the_group_was_said_to_be(prompt, members):
     found = agents(prompt)
     assert [a for a in found if a[2] != "ego"] == members, found
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("A pedestrian, a child, crosses from the left.", "A pedestrian crosses from the left."),
+    ("A car, a taxi, pulls out from the right in front of us.", "A car pulls out from the right in front of us."),
+    ("A second cyclist, a courier, rides past on the left.", "A cyclist rides past on the left."),
+])
+def test_a_noun_of_the_same_kind_between_commas_before_the_verb_is_no_second_agent(prompt, plain):
+    found = agents(prompt)
+    assert found == agents(plain) and len(found) == 2, found

@@ -1864,7 +1864,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 _has_agent(current)  # "a man, whom I know to be its driver, walked out": the man's verb
             if (_has_verb(current) or condition or new_noun or joined or order or relative_ends) and not short_name \
                     and not ego_named \
-                    and not bracketed and not ego_make:
+                    and not bracketed and not ego_make and not _closed_apposition(current, units, k):
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -1900,6 +1900,22 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'A pedestrian, a child, crosses': a second noun of the same kind between two commas, and then the verb, is
+    what the first one is; a list goes on with 'and' or another noun ('a car, a bus and a van')."""
+    if not current or _has_verb(current) or current[-1].category != "agents" or current[-1].meaning in ("ego", "none"):
+        return False
+    j = k + 1
+    if j >= len(units) or units[j].word not in ("a", "an"):
+        return False
+    while j < len(units) and units[j].category != "agents":
+        if units[j].category not in ("word", "behaviours", "numbers", "number") or units[j].word in CLAUSE_WORDS:
+            return False
+        j += 1
+    return j + 2 < len(units) and units[j].meaning == current[-1].meaning and not units[j].tokens[-1].plural and \
+        not current[-1].tokens[-1].plural and units[j + 1].category == "comma" and units[j + 2].category == "actions"
 
 
 def _a_place_said_after(out: list[Clause], current: list[Unit], link: str) -> bool:
@@ -4245,6 +4261,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 _fold(r, prev.entity, np.entity)
+                continue
+            closed = between and all(u.category == "comma" for u in between) and not prev.entity.is_ego and \
+                units[np.first].word in ("a", "an") and np.entity.type == prev.entity.type and \
+                np.index + 2 < len(units) and units[np.index + 1].category == "comma" and \
+                units[np.index + 2].category == "actions"
+            if closed:  # "a pedestrian, a child, crosses": the pedestrian is a child
+                prev.entity.aliases.add(np.entity.head)
+                if np.entity in r.entities:
+                    r.entities.remove(np.entity)
                 continue
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
                    u.category == "comma" for u in between) and (
