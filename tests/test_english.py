@@ -4847,3 +4847,19 @@ def test_the_members_named_of_a_counted_group_are_what_the_group_was_said_to_be(
 def test_a_noun_of_the_same_kind_between_commas_before_the_verb_is_no_second_agent(prompt, plain):
     found = agents(prompt)
     assert found == agents(plain) and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("Three pedestrians (two adults and a child) cross in front of the ego.",
+     "Three pedestrians cross in front of the ego."),
+    ("Two cars come from the left, a taxi and a van.", "Two cars come from the left."),
+    ("The ego is followed by two cars (a taxi and a van).", "The ego is followed by two cars."),
+    ("Two pedestrians wait at the kerb, a child and a woman.", "Two pedestrians wait at the kerb."),
+])
+def test_the_members_listed_after_a_counted_group_are_no_new_agents(prompt, plain):
+    assert agents(prompt) == agents(plain), agents(prompt)
+
+
+def test_a_list_that_does_not_close_after_a_counted_group_is_more_agents():
+    assert len(agents("Two cars, a taxi and a van wait at the lights.")) == 5
+    assert len(agents("Two cars are parked on the left. A taxi and a van pull out.")) == 5

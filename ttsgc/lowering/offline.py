@@ -1903,19 +1903,37 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
 
 
 def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
-    """'A pedestrian, a child, crosses': a second noun of the same kind between two commas, and then the verb, is
-    what the first one is; a list goes on with 'and' or another noun ('a car, a bus and a van')."""
+    """'A pedestrian, a child, crosses', 'three pedestrians (two adults and a child) cross': nouns of the first
+    one's kind between two commas, as many as it counts, and then the verb, say what it is or who its members are;
+    a list goes on with 'and' or another noun ('a car, a bus and a van')."""
     if not current or _has_verb(current) or current[-1].category != "agents" or current[-1].meaning in ("ego", "none"):
         return False
-    j = k + 1
-    if j >= len(units) or units[j].word not in ("a", "an"):
-        return False
-    while j < len(units) and units[j].category != "agents":
-        if units[j].category not in ("word", "behaviours", "numbers", "number") or units[j].word in CLAUSE_WORDS:
+    group = current[-1]
+    wanted = 1
+    if group.tokens[-1].plural:
+        number = next((x for x in reversed(current[:-1]) if x.category != "word" or x.word in lexicon().function_words),
+                      None)
+        wanted = _word_number(number.tokens[0]) if number is not None and number.category in ("numbers", "number") \
+            else None
+        if not wanted or wanted < 2:
+            return False
+    named, count, j = 0, None, k + 1
+    while j < len(units):
+        x = units[j]
+        if x.category == "agents":
+            if x.meaning != group.meaning or count is None:
+                return False
+            named += count if x.tokens[-1].plural else 1
+            count = None
+        elif x.category in ("numbers", "number") or x.word in ("a", "an"):
+            count = _word_number(x.tokens[0]) if x.word not in ("a", "an") else 1
+        elif x.category == "comma" and count is None:
+            return named == wanted and j + 1 < len(units) and units[j + 1].category == "actions"
+        elif not (x.word == "and" and count is None or x.category in ("word", "behaviours") and count is not None
+                  and x.word not in lexicon().function_words):
             return False
         j += 1
-    return j + 2 < len(units) and units[j].meaning == current[-1].meaning and not units[j].tokens[-1].plural and \
-        not current[-1].tokens[-1].plural and units[j + 1].category == "comma" and units[j + 2].category == "actions"
+    return False
 
 
 def _a_place_said_after(out: list[Clause], current: list[Unit], link: str) -> bool:
@@ -3393,6 +3411,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
+    phrases = _members_listed(r, clause, phrases, recent)
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
@@ -4289,6 +4308,56 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+LIST_WORDS = {"a", "an", "and", "one", "two", "three", "four", "five", "six"}
+
+
+def _members_listed(r: _Reader, clause: Clause, phrases: list[NounPhrase], recent: list[Entity]) -> list[NounPhrase]:
+    """'three pedestrians (two adults and a child) cross', 'two cars come from the left, a taxi and a van': nouns
+    of a counted group's kind set off after it, as many as it counts, name its members; they are no new agents."""
+    units = clause.units
+
+    def counted(nps: list[NounPhrase]) -> int:
+        return sum(np.entity.count for np in nps)
+
+    def kin(np: NounPhrase, group: Entity) -> bool:
+        return np.entity is not None and np.introduced and not np.entity.is_ego and np.entity.type == group.type
+
+    def drop(members: list[NounPhrase]) -> list[NounPhrase]:
+        for m in members:
+            if m.entity in r.entities:
+                r.entities.remove(m.entity)
+        r.notes.append(f"read: {', '.join(m.entity.head for m in members)} as the members of the group named "
+                       "before them")
+        return [np for np in phrases if np not in members]
+
+    listing = [np for np in phrases if np.entity is not None]
+    if clause.link == "," and listing and all(kin(np, listing[0].entity) for np in listing) and all(
+            u.category in ("agents", "comma", "numbers", "number") or u.category == "word" and (
+                u.word in LIST_WORDS or u.word not in lexicon().function_words) for u in units):
+        group = next((e for e in reversed(recent) if not e.is_ego and e.count > 1 and e.stage == clause.stage and
+                      e.type == listing[0].entity.type), None)  # "..., a taxi and a van": a list with no verb
+        if group is not None and counted(listing) == group.count and group not in r.clause_mentions:
+            return drop(listing)
+    for k, np in enumerate(phrases):
+        group = np.entity
+        if group is None or not np.introduced or group.is_ego or group.generic or group.count < 2 or \
+                np.index + 1 >= len(units) or units[np.index + 1].category != "comma":
+            continue
+        members, end = [], np.index
+        for m in phrases[k + 1:]:
+            between = units[end + 1:m.first]
+            if not kin(m, group) or not all(u.category == "comma" or u.word == "and" for u in between):
+                break
+            members.append(m)
+            end = m.index
+            if counted(members) >= group.count:
+                break
+        closed = end + 1 == len(units) or units[end + 1].category == "comma"  # "(two adults and a child) cross"
+        if members and counted(members) == group.count and closed:
+            return drop(members)
+    return phrases
 
 
 def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> bool:
