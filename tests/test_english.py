@@ -4863,3 +4863,13 @@ def test_the_members_listed_after_a_counted_group_are_no_new_agents(prompt, plai
 def test_a_list_that_does_not_close_after_a_counted_group_is_more_agents():
     assert len(agents("Two cars, a taxi and a van wait at the lights.")) == 5
     assert len(agents("Two cars are parked on the left. A taxi and a van pull out.")) == 5
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("My car, which is a hatchback, waits at the lights while a bus turns left.",
+     "My car waits at the lights while a bus turns left."),
+    ("The ego, which is a city bus, waits at the stop.", "The ego bus waits at the stop."),
+    ("A vehicle, which was a white van, pulled out from the left.", "A white van pulled out from the left."),
+])
+def test_the_noun_after_the_copula_of_a_relative_is_what_its_noun_is(prompt, plain):
+    assert agents(prompt) == agents(plain), agents(prompt)

@@ -3412,6 +3412,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
     phrases = _members_listed(r, clause, phrases, recent)
+    phrases = _relative_says_what_it_is(r, clause, phrases)
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
@@ -4308,6 +4309,28 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _relative_says_what_it_is(r: _Reader, clause: Clause, phrases: list[NounPhrase]) -> list[NounPhrase]:
+    """'my car, which is a hatchback, waits', 'a man, who was a courier, stepped out': the noun after the copula
+    of a relative is what the relative's noun is, no new agent; the relative's noun stays its subject."""
+    units, noun = clause.units, clause.antecedent
+    if noun is None or len(units) < 2 or units[0].word not in COPULAS or not phrases or phrases[0].entity is None \
+            or not phrases[0].introduced or phrases[0].plural or units[phrases[0].first].word not in ("a", "an") \
+            or any(u.category == "actions" for u in units[:phrases[0].first]):
+        return phrases
+    said = phrases[0].entity
+    if noun.is_ego:
+        if said.type in V.EGO_TYPES and said.type != "car":
+            noun.type = said.type
+        if said in r.entities:
+            r.entities.remove(said)
+    elif said.type == noun.type or noun.head.split()[-1] in APPOSED_HEADS | {"car"}:
+        _fold(r, noun, said)  # "a vehicle, which was a white van, ..."
+    else:
+        return phrases
+    noun.aliases.add(said.head)
+    return phrases[1:]
 
 
 LIST_WORDS = {"a", "an", "and", "one", "two", "three", "four", "five", "six"}
