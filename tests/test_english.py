@@ -4798,3 +4798,78 @@ def test_a_driver_on_foot_starts_at_the_side_of_the_vehicle_left(prompt, start):
 def test_a_studys_participant_drives_the_ego_and_its_confederates_are_the_others(prompt, other):
     found = agents(prompt)
     assert other in found and len(found) == 2 and [p for _, _, p in found].count("ego") == 1, found
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("A woman crosses the road in front of the ego, which stops to let her pass.", ("car", "stop", "ego")),
+    ("A jogger runs out ahead of the ego vehicle, which brakes hard and stops.", ("car", "stop", "ego")),
+    ("A truck pulls out in front of the AV, which slows down and stops.", ("car", "stop", "ego")),
+    ("A car stops right ahead of me, which makes me brake.", ("car", "go_straight", "ego")),
+])
+def test_a_relative_set_off_by_a_comma_after_the_ego_is_about_the_ego(prompt, ego):
+    assert ego in agents(prompt), agents(prompt)
+
+
+def test_a_restrictive_or_plural_relative_after_the_ego_is_about_the_noun_before_it():
+    for prompt in ("Three cars ahead of the player, which each swerve across in front of it.",
+                   "Three cars ahead of the player that each swerve across in front of it."):
+        found = agents(prompt)
+        assert ("car", "go_straight", "ego") in found and found.count(("car", "change_lane_to_right", "front_left")) \
+            == 3, found
+
+
+@pytest.mark.parametrize("prompt, placed", [
+    ("At the crossroads one car was waiting at the lights, on my left, and a van drove straight through.",
+     ("car", "stop", "road_of_left_turn")),
+    ("A lorry sat at the kerb, on our right, and a man walked out from behind it.", ("truck", "stop", "right")),
+    ("A bus was waiting at the stop, in the right lane, but a cyclist went past.", ("bus", "stop", "right")),
+])
+def test_a_place_set_off_after_a_clause_places_that_clauses_subject(prompt, placed):
+    assert placed in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, members", [
+    ("The ego waits to turn left while two oncoming vehicles (a bus and a van) pass through.",
+     [("bus", "go_straight", "road_of_straight"), ("car", "go_straight", "road_of_straight")]),
+    ("At the junction two vehicles from the right, a lorry and a taxi, go straight across.",
+     [("car", "go_straight", "road_of_right_turn"), ("truck", "go_straight", "road_of_right_turn")]),
+])
+def test_the_members_named_of_a_counted_group_are_what_the_group_was_said_to_be(prompt, members):
+    found = agents(prompt)
+    assert [a for a in found if a[2] != "ego"] == members, found
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("A pedestrian, a child, crosses from the left.", "A pedestrian crosses from the left."),
+    ("A car, a taxi, pulls out from the right in front of us.", "A car pulls out from the right in front of us."),
+    ("A second cyclist, a courier, rides past on the left.", "A cyclist rides past on the left."),
+])
+def test_a_noun_of_the_same_kind_between_commas_before_the_verb_is_no_second_agent(prompt, plain):
+    found = agents(prompt)
+    assert found == agents(plain) and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("Three pedestrians (two adults and a child) cross in front of the ego.",
+     "Three pedestrians cross in front of the ego."),
+    ("Two cars come from the left, a taxi and a van.", "Two cars come from the left."),
+    ("The ego is followed by two cars (a taxi and a van).", "The ego is followed by two cars."),
+    ("Two pedestrians wait at the kerb, a child and a woman.", "Two pedestrians wait at the kerb."),
+])
+def test_the_members_listed_after_a_counted_group_are_no_new_agents(prompt, plain):
+    assert agents(prompt) == agents(plain), agents(prompt)
+
+
+def test_a_list_that_does_not_close_after_a_counted_group_is_more_agents():
+    assert len(agents("Two cars, a taxi and a van wait at the lights.")) == 5
+    assert len(agents("Two cars are parked on the left. A taxi and a van pull out.")) == 5
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("My car, which is a hatchback, waits at the lights while a bus turns left.",
+     "My car waits at the lights while a bus turns left."),
+    ("The ego, which is a city bus, waits at the stop.", "The ego bus waits at the stop."),
+    ("A vehicle, which was a white van, pulled out from the left.", "A white van pulled out from the left."),
+])
+def test_the_noun_after_the_copula_of_a_relative_is_what_its_noun_is(prompt, plain):
+    assert agents(prompt) == agents(plain), agents(prompt)

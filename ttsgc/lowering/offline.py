@@ -1814,6 +1814,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             stage += 1
             condition = True
             continue
+        if u.category == "comma" and _a_place_said_after(out, current, link):
+            out[-1].units.extend(current)  # "one car stopped at the light, on my left, and the ambulance went
+            current, link = [], ","  # round it": where the car was, not where the ambulance went
+            continue
         if u.category == "comma":
             only_ego = all(x.category == "agents" and (x.meaning == "ego" or x.tokens[-1].label)
                            or x.category == "word" and x.word == "the" for x in current)  # appositions follow
@@ -1860,7 +1864,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 _has_agent(current)  # "a man, whom I know to be its driver, walked out": the man's verb
             if (_has_verb(current) or condition or new_noun or joined or order or relative_ends) and not short_name \
                     and not ego_named \
-                    and not bracketed and not ego_make:
+                    and not bracketed and not ego_make and not _closed_apposition(current, units, k):
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -1896,6 +1900,53 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'A pedestrian, a child, crosses', 'three pedestrians (two adults and a child) cross': nouns of the first
+    one's kind between two commas, as many as it counts, and then the verb, say what it is or who its members are;
+    a list goes on with 'and' or another noun ('a car, a bus and a van')."""
+    if not current or _has_verb(current) or current[-1].category != "agents" or current[-1].meaning in ("ego", "none"):
+        return False
+    group = current[-1]
+    wanted = 1
+    if group.tokens[-1].plural:
+        number = next((x for x in reversed(current[:-1]) if x.category != "word" or x.word in lexicon().function_words),
+                      None)
+        wanted = _word_number(number.tokens[0]) if number is not None and number.category in ("numbers", "number") \
+            else None
+        if not wanted or wanted < 2:
+            return False
+    named, count, j = 0, None, k + 1
+    while j < len(units):
+        x = units[j]
+        if x.category == "agents":
+            if x.meaning != group.meaning or count is None:
+                return False
+            named += count if x.tokens[-1].plural else 1
+            count = None
+        elif x.category in ("numbers", "number") or x.word in ("a", "an"):
+            count = _word_number(x.tokens[0]) if x.word not in ("a", "an") else 1
+        elif x.category == "comma" and count is None:
+            return named == wanted and j + 1 < len(units) and units[j + 1].category == "actions"
+        elif not (x.word == "and" and count is None or x.category in ("word", "behaviours") and count is not None
+                  and x.word not in lexicon().function_words):
+            return False
+        j += 1
+    return False
+
+
+def _a_place_said_after(out: list[Clause], current: list[Unit], link: str) -> bool:
+    """', on my left,' between two commas after a clause with its subject and verb: an afterthought that places
+    that clause's subject; it has no subject or verb of its own to lend to what follows."""
+    if link != "," or not out or not current or current[0].word not in ("on", "in", "to", "at", "from"):
+        return False
+    if any(x.category in ("agents", "actions", "sequence") for x in current) or \
+            not any(x.category == "positions" for x in current):
+        return False
+    before = out[-1]
+    return before.units[-1].tokens[0].sentence == current[0].tokens[0].sentence and _has_agent(before.units) and \
+        _has_verb(before.units)
 
 
 VERDICT_SUBJECTS = {"that", "it", "this"}
@@ -2961,7 +3012,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
 
 
 def _absorbed(r: _Reader, entity: Entity) -> bool:
-    """A new agent of a counted group already introduced ('four vehicles: a car, a bus...') is one of it."""
+    """A new agent of a counted group already introduced ('four vehicles: a car, a bus...') is one of it, and is
+    what the group was said to be ('two oncoming vehicles (a bus and a van)': both oncoming)."""
     for group in reversed(r.entities):
         if group.is_ego or group is entity or group.group_open <= 0:
             continue
@@ -2969,6 +3021,9 @@ def _absorbed(r: _Reader, entity: Entity) -> bool:
             taken = min(entity.count, group.group_open)
             group.group_open -= taken
             group.count -= taken
+            entity.features |= group.features
+            entity.behavior = entity.behavior or group.behavior
+            entity.actions = entity.actions or list(group.actions)
             return False
     return False
 
@@ -3371,6 +3426,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 phrases.append(NounPhrase(target, i, i))
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
+    phrases = _members_listed(r, clause, phrases, recent)
+    phrases = _relative_says_what_it_is(r, clause, phrases)
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
@@ -4238,6 +4295,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if driver:  # "a learner driver in a little hatchback": the hatchback
                 _fold(r, prev.entity, np.entity)
                 continue
+            closed = between and all(u.category == "comma" for u in between) and not prev.entity.is_ego and \
+                units[np.first].word in ("a", "an") and np.entity.type == prev.entity.type and \
+                np.index + 2 < len(units) and units[np.index + 1].category == "comma" and \
+                units[np.index + 2].category == "actions"
+            if closed:  # "a pedestrian, a child, crosses": the pedestrian is a child
+                prev.entity.aliases.add(np.entity.head)
+                if np.entity in r.entities:
+                    r.entities.remove(np.entity)
+                continue
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
                    u.category == "comma" for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
@@ -4256,6 +4322,78 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _relative_says_what_it_is(r: _Reader, clause: Clause, phrases: list[NounPhrase]) -> list[NounPhrase]:
+    """'my car, which is a hatchback, waits', 'a man, who was a courier, stepped out': the noun after the copula
+    of a relative is what the relative's noun is, no new agent; the relative's noun stays its subject."""
+    units, noun = clause.units, clause.antecedent
+    if noun is None or len(units) < 2 or units[0].word not in COPULAS or not phrases or phrases[0].entity is None \
+            or not phrases[0].introduced or phrases[0].plural or units[phrases[0].first].word not in ("a", "an") \
+            or any(u.category == "actions" for u in units[:phrases[0].first]):
+        return phrases
+    said = phrases[0].entity
+    if noun.is_ego:
+        if said.type in V.EGO_TYPES and said.type != "car":
+            noun.type = said.type
+        if said in r.entities:
+            r.entities.remove(said)
+    elif said.type == noun.type or noun.head.split()[-1] in APPOSED_HEADS | {"car"}:
+        _fold(r, noun, said)  # "a vehicle, which was a white van, ..."
+    else:
+        return phrases
+    noun.aliases.add(said.head)
+    return phrases[1:]
+
+
+LIST_WORDS = {"a", "an", "and", "one", "two", "three", "four", "five", "six"}
+
+
+def _members_listed(r: _Reader, clause: Clause, phrases: list[NounPhrase], recent: list[Entity]) -> list[NounPhrase]:
+    """'three pedestrians (two adults and a child) cross', 'two cars come from the left, a taxi and a van': nouns
+    of a counted group's kind set off after it, as many as it counts, name its members; they are no new agents."""
+    units = clause.units
+
+    def counted(nps: list[NounPhrase]) -> int:
+        return sum(np.entity.count for np in nps)
+
+    def kin(np: NounPhrase, group: Entity) -> bool:
+        return np.entity is not None and np.introduced and not np.entity.is_ego and np.entity.type == group.type
+
+    def drop(members: list[NounPhrase]) -> list[NounPhrase]:
+        for m in members:
+            if m.entity in r.entities:
+                r.entities.remove(m.entity)
+        r.notes.append(f"read: {', '.join(m.entity.head for m in members)} as the members of the group named "
+                       "before them")
+        return [np for np in phrases if np not in members]
+
+    listing = [np for np in phrases if np.entity is not None]
+    if clause.link == "," and listing and all(kin(np, listing[0].entity) for np in listing) and all(
+            u.category in ("agents", "comma", "numbers", "number") or u.category == "word" and (
+                u.word in LIST_WORDS or u.word not in lexicon().function_words) for u in units):
+        group = next((e for e in reversed(recent) if not e.is_ego and e.count > 1 and e.stage == clause.stage and
+                      e.type == listing[0].entity.type), None)  # "..., a taxi and a van": a list with no verb
+        if group is not None and counted(listing) == group.count and group not in r.clause_mentions:
+            return drop(listing)
+    for k, np in enumerate(phrases):
+        group = np.entity
+        if group is None or not np.introduced or group.is_ego or group.generic or group.count < 2 or \
+                np.index + 1 >= len(units) or units[np.index + 1].category != "comma":
+            continue
+        members, end = [], np.index
+        for m in phrases[k + 1:]:
+            between = units[end + 1:m.first]
+            if not kin(m, group) or not all(u.category == "comma" or u.word == "and" for u in between):
+                break
+            members.append(m)
+            end = m.index
+            if counted(members) >= group.count:
+                break
+        closed = end + 1 == len(units) or units[end + 1].category == "comma"  # "(two adults and a child) cross"
+        if members and counted(members) == group.count and closed:
+            return drop(members)
+    return phrases
 
 
 def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> bool:
@@ -4939,8 +5077,12 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     for k, clause in enumerate(clauses):
         if clause.link in RELATIVES and recent:
             clause.antecedent = recent[-1]
-            if recent[-1].is_ego and len(recent) > 1 and k > 0 and _ego_placed_last(clauses[k - 1].units):
-                clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
+            other = recent[-2] if recent[-1].is_ego and len(recent) > 1 else recent[-1]
+            if k > 0 and _ego_placed_last(clauses[k - 1].units):
+                if _set_off_after_the_ego(tokens, clause, clauses[k - 1].units, other):
+                    clause.antecedent = _ego_entity(r, clause.stage)  # "in front of the ego, who stops"
+                elif recent[-1].is_ego and len(recent) > 1:
+                    clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
         if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
                 main_subject and _returns_to_the_main_subject(clause.units):
             previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
@@ -5194,7 +5336,11 @@ def _numbered_lane_sides(r: _Reader) -> None:
 
 
 def _ego_placed_last(units: list[Unit]) -> bool:
-    """'... ahead of the player': the clause ends on the ego as the object of a place phrase."""
+    """'... ahead of the player': the clause ends on the ego as the object of a place phrase (also one the
+    lexicon knows whole, 'ahead of the ego vehicle')."""
+    last = len(units) - 1 - (len(units) > 1 and units[-1].category == "word" and units[-1].word in EGO_HEADS)
+    if last >= 0 and units[last].category == "positions" and units[last].tokens[-1].word == "ego":
+        return True
     egos = [k for k, u in enumerate(units) if u.category == "agents" and u.meaning == "ego"]
     if not egos or egos[-1] != len(units) - 1:
         return False
@@ -5202,6 +5348,28 @@ def _ego_placed_last(units: list[Unit]) -> bool:
     while k >= 0 and units[k].category == "word" and units[k].word in ("the", "of", "a"):
         k -= 1
     return k >= 0 and units[k].category == "positions"
+
+
+EGO_HEADS = {"vehicle", "car"}  # "the ego vehicle" after a place phrase that ends in "the ego"
+
+
+def _set_off_after_the_ego(tokens: list[Token], clause: Clause, before: list[Unit], other: Entity) -> bool:
+    """'... in front of the ego, who comes to a stop': a relative set off by a comma right after the ego named
+    as a noun is about the ego, unless its verb agrees only with the plural named before it ('three cars ahead
+    of the player, which each swerve'). 'that' restricts the noun it follows, and nobody writes it of the ego."""
+    if clause.link not in ("who", "which") or not clause.units:
+        return False
+    at = clause.units[0].tokens[0].index - 1
+    while at > 0 and tokens[at].word != clause.link:
+        at -= 1
+    if at < 1 or tokens[at - 1].word != ",":
+        return False
+    if before[-1].tokens[-1].word in SPEAKERS:  # "right in front of me, which made me brake": what happened
+        return False
+    verb = next((u for u in clause.units if u.category == "actions"), None)
+    plural_verb = verb is not None and verb.tokens[0].word == verb.tokens[0].base and \
+        not verb.tokens[0].word.endswith(("ed", "ing"))
+    return not (plural_verb and other.count > 1)
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
