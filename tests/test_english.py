@@ -4873,3 +4873,24 @@ def test_a_list_that_does_not_close_after_a_counted_group_is_more_agents():
 ])
 def test_the_noun_after_the_copula_of_a_relative_is_what_its_noun_is(prompt, plain):
     assert agents(prompt) == agents(plain), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("A police car was behind me. The officers pulled me over.", ["car", "police"]),
+    ("A patrol car sat behind me for a mile. Officers then flagged me down.", ["car", "police"]),
+    ("A bin lorry stopped ahead. The bin men walked behind it.", ["car", "truck"]),
+    ("A garbage truck was stopped in my lane. The garbage men were running between the bins.", ["car", "truck"]),
+    ("A motorbike passed me on the right. The biker then cut in front of me.", ["car", "motorcycle"]),
+    ("An ambulance came up behind me. The paramedic waved at me.", ["ambulance", "car"]),
+])
+def test_the_people_of_a_vehicle_named_after_it_are_no_agents_of_their_own(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, walkers", [
+    ("A police car stopped ahead of me. Two officers got out and crossed the road.", 2),
+    ("A police car stopped ahead of me. The officers got out and crossed the road.", 2),
+    ("A bin lorry stopped ahead. Two bin men crossed in front of it.", 2),
+])
+def test_a_vehicles_people_counted_or_out_of_it_are_on_foot(prompt, walkers):
+    assert [t for t, _, _ in agents(prompt)].count("pedestrian") == walkers, agents(prompt)

@@ -184,6 +184,16 @@ def lexicon() -> Lexicon:
                    kinds, starts)
 
 
+@lru_cache(maxsize=1)
+def crews() -> dict[tuple[str, ...], frozenset[str]]:
+    """crews.txt: a person phrase -> the vehicle types whose own people it names ('the officers' of a police
+    car, 'the biker' of a motorbike)."""
+    found: dict = {}
+    for vehicle, words in _entries("crews"):
+        found.setdefault(words, set()).add(vehicle)
+    return {words: frozenset(types) for words, types in found.items()}
+
+
 TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z0-9]+|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
 LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bus|cyclist|bike|motorcycle|van|pedestrian"
                           r"|ped|pov|tv|npc|object))[ _]([A-H])\b(?![.'\u2019-]?[A-Za-z])")

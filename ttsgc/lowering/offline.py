@@ -30,8 +30,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, lexicon, matches, read_number,
-                                    tokenize)
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, crews, lexicon, matches,
+                                    read_number, tokenize)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -2614,13 +2614,13 @@ def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
 GENERIC_AFTER = {"for", "about", "like", "of"}  # "for people entering": people in general
 
 
-def _gets_out(units: list[Unit], head: int) -> bool:
+def _gets_out(units: list[Unit], head: int, walking: bool = True) -> bool:
     """'the driver gets out', 'the rider climbs off', 'the driver is out and walking': out of the vehicle, on
-    foot."""
+    foot. A driver who walks is out of the vehicle too ('walking' False: a vehicle's crew walks beside it)."""
     words = [t.word for u in units[head + 1:head + 4] for t in u.tokens]
     verbs = {"get", "gets", "got", "climb", "climbs", "climbed", "step", "steps", "stepped", "jump", "jumps", "jumped",
              "hop", "hops", "hopped", "is", "was", "are", "were", "now"}
-    if units[head + 1:head + 2] and units[head + 1].category == "actions" and \
+    if walking and units[head + 1:head + 2] and units[head + 1].category == "actions" and \
             units[head + 1].tokens[0].base in ("walk", "stroll", "wander", "stride", "stagger"):
         return True  # "the driver walked out from in front of it": on foot
     words += [""]
@@ -2771,11 +2771,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
         if driven:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
             return NounPhrase(driven[-1], head, first)
-    if definite and count is None and not plural and u.base in ("officer", "police officer", "policeman",
-                                                                 "policewoman", "traffic officer"):
-        patrols = [e for e in r.entities if not e.is_ego and e.type == "police"]
-        if patrols:  # "a police car came up behind me ... the car the officer was chasing": its officer
-            return NounPhrase(patrols[-1], head, first)
+    crewed = _crewed_vehicle(r, units, head, first, recent, definite or not words) if count is None else None
+    if crewed is not None:  # "a police car ... the officers pulled me over", "a motorbike ... the biker": its own
+        return NounPhrase(crewed, head, first)
     if definite and count is None and u.base in RIDING_PEOPLE and not plural and \
             not any(e.type == "pedestrian" for e in r.entities):
         riders = [e for e in recent if e.type in V.TWO_WHEELER_TYPES] or \
@@ -2871,6 +2869,27 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             units[first - 2].category == "positions":
         _modify(r, entity, units[first - 2], stage, strength=1)  # "oncoming traffic two cars": the cars are oncoming
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
+
+
+def _crewed_vehicle(r: _Reader, units: list[Unit], head: int, first: int, recent: list[Entity],
+                    definite: bool) -> Entity | None:
+    """The vehicle whose own people a definite (or bare) person noun names: 'a police car ... the officers',
+    'a bin lorry ... the bin men', 'a motorbike ... the biker'. They ride in it or work it, so they are no agents
+    of their own; one of the same noun named before ('an officer directing traffic ... the officer') is that
+    one, and people who get out are on foot."""
+    u = units[head]
+    if not definite or _gets_out(units, head, walking=False):
+        return None
+    phrase = tuple(u.base.split())
+    types = crews().get(phrase)
+    if first < head and units[head - 1].category == "word":  # "the bin men": the vehicle's word before them
+        types = crews().get((units[head - 1].word,) + phrase, types)
+    if not types or any(not e.is_ego and (e.head == u.base or e.type == u.meaning != "pedestrian")
+                        for e in r.entities):
+        return None
+    vehicles = [e for e in recent if not e.is_ego and e.type in types] or \
+        [e for e in r.entities if not e.is_ego and e.type in types]
+    return vehicles[-1] if vehicles else None
 
 
 def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
