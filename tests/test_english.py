@@ -4894,3 +4894,22 @@ def test_the_people_of_a_vehicle_named_after_it_are_no_agents_of_their_own(promp
 ])
 def test_a_vehicles_people_counted_or_out_of_it_are_on_foot(prompt, walkers):
     assert [t for t, _, _ in agents(prompt)].count("pedestrian") == walkers, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("A motorbike was ahead of me. The bike then swerved left.", ["car", "motorcycle"]),
+    ("A pickup was ahead of me. The truck braked suddenly.", ["car", "car"]),
+    ("A white van was ahead of me. The truck braked suddenly.", ["car", "car"]),
+    ("An e-scooter rider came up on my right. The scooter then cut across me.", ["car", "cyclist"]),
+])
+def test_a_loose_name_of_another_type_names_the_one_vehicle_it_fits(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("A pickup was ahead of me. The truck behind me honked.", ["car", "car", "truck"]),
+    ("A motorbike was ahead of me. A cyclist was on my left. The bike then swerved left.",
+     ["car", "cyclist", "motorcycle"]),
+])
+def test_a_loose_name_placed_elsewhere_or_of_its_own_type_is_not_the_other(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

@@ -184,14 +184,28 @@ def lexicon() -> Lexicon:
                    kinds, starts)
 
 
+def _grouped(name: str) -> dict[tuple[str, ...], frozenset[str]]:
+    found: dict = {}
+    for meaning, words in _entries(name):
+        found.setdefault(words, set()).add(meaning)
+    return {words: frozenset(meanings) for words, meanings in found.items()}
+
+
 @lru_cache(maxsize=1)
 def crews() -> dict[tuple[str, ...], frozenset[str]]:
     """crews.txt: a person phrase -> the vehicle types whose own people it names ('the officers' of a police
     car, 'the biker' of a motorbike)."""
+    return _grouped("crews")
+
+
+@lru_cache(maxsize=1)
+def loose_names() -> dict[str, frozenset[str]]:
+    """loose_names.txt: a noun of one type -> the first names of agents of another type it names again ('a
+    pickup ... the truck', 'a motorbike ... the bike')."""
     found: dict = {}
-    for vehicle, words in _entries("crews"):
-        found.setdefault(words, set()).add(vehicle)
-    return {words: frozenset(types) for words, types in found.items()}
+    for noun, first_name in _entries("loose_names"):
+        found.setdefault(noun, set()).add(" ".join(first_name))
+    return {noun: frozenset(names) for noun, names in found.items()}
 
 
 TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z0-9]+|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")

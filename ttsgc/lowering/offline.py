@@ -30,8 +30,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, crews, lexicon, matches,
-                                    read_number, tokenize)
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, crews, lexicon, loose_names,
+                                    matches, read_number, tokenize)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -3006,6 +3006,10 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
         if not same and not other and len(pool) == 1 and before == pool:
             same = pool  # "a lorry ... the HGV", "a jogger ... the runner": the one of its kind named before
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
+    if not any(e.type == kind for e in r.entities if not e.is_ego) and not both and not plural:
+        loose = loose_names().get(head, frozenset())  # "a pickup ... the truck", "a motorbike ... the bike"
+        pool = [e for e in r.entities if not e.is_ego and e.parent is None and (e.head in loose or e.head.split()[-1] in loose
+                                                                 or e.aliases & loose)]
     if not pool:
         return []
     if both or plural:
