@@ -4913,3 +4913,15 @@ def test_a_loose_name_of_another_type_names_the_one_vehicle_it_fits(prompt, kind
 ])
 def test_a_loose_name_placed_elsewhere_or_of_its_own_type_is_not_the_other(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("Police pursuit at the crossroads. A motorbike came through from the left with a police car behind it.",
+     ["car", "motorcycle", "police"]),
+    ("There was a police checkpoint ahead. A van stopped in front of me.", ["car", "car"]),
+    ("Near the taxi rank, a pedestrian stepped out in front of me.", ["car", "pedestrian"]),
+    ("The truck traffic was heavy. A car cut in front of me.", ["car", "car"]),
+    ("I waited by the bus shelter. A cyclist turned left in front of me.", ["car", "cyclist"]),
+])
+def test_a_vehicle_noun_that_only_describes_the_noun_after_it_is_no_agent(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

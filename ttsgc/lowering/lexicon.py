@@ -199,6 +199,12 @@ def crews() -> dict[tuple[str, ...], frozenset[str]]:
 
 
 @lru_cache(maxsize=1)
+def compound_heads() -> frozenset[str]:
+    """compounds.txt: nouns a vehicle noun in front of only describes ('the taxi rank', 'a police pursuit')."""
+    return frozenset(" ".join(words) for _, words in _entries("compounds"))
+
+
+@lru_cache(maxsize=1)
 def loose_names() -> dict[str, frozenset[str]]:
     """loose_names.txt: a noun of one type -> the first names of agents of another type it names again ('a
     pickup ... the truck', 'a motorbike ... the bike')."""

@@ -30,8 +30,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, crews, lexicon, loose_names,
-                                    matches, read_number, tokenize)
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, compound_heads, crews, lexicon,
+                                    loose_names, matches, read_number, tokenize)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -427,6 +427,12 @@ def _names_no_agent(units: list[Unit]) -> list[Unit]:
             continue
         street = nxt.word in STREET_WORDS and not (k > 0 and units[k - 1].word in ("a", "an", "the", "this", "that"))
         if street and not u.tokens[-1].plural or nxt.word in ORGANISATION_WORDS:
+            out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
+    for k, u in enumerate(units[:-1]):  # "a police pursuit", "the taxi rank", "truck traffic": said of a thing
+        nxt = units[k + 1]
+        if u.category == "agents" and u.meaning not in ("ego", "none") and not u.tokens[-1].plural and \
+                not u.tokens[-1].possessive and len(nxt.tokens) == 1 and nxt.word in compound_heads() \
+                and nxt.tokens[0].sentence == u.tokens[-1].sentence:
             out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
     return out
 
