@@ -4910,6 +4910,7 @@ def test_a_loose_name_of_another_type_names_the_one_vehicle_it_fits(prompt, kind
     ("A pickup was ahead of me. The truck behind me honked.", ["car", "car", "truck"]),
     ("A motorbike was ahead of me. A cyclist was on my left. The bike then swerved left.",
      ["car", "cyclist", "motorcycle"]),
+    ("A bus was stopped ahead on our right. The vehicle braked to a stop.", ["bus", "car"]),
 ])
 def test_a_loose_name_placed_elsewhere_or_of_its_own_type_is_not_the_other(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

@@ -3012,7 +3012,7 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
         if not same and not other and len(pool) == 1 and before == pool:
             same = pool  # "a lorry ... the HGV", "a jogger ... the runner": the one of its kind named before
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
-    if not any(e.type == kind for e in r.entities if not e.is_ego) and not both and not plural:
+    if not pool and not any(e.type == kind for e in r.entities if not e.is_ego) and not both and not plural:
         loose = loose_names().get(head, frozenset())  # "a pickup ... the truck", "a motorbike ... the bike"
         pool = [e for e in r.entities if not e.is_ego and e.parent is None and (e.head in loose or e.head.split()[-1] in loose
                                                                  or e.aliases & loose)]
