@@ -939,6 +939,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start].sentence == tokens[m.start - 1].sentence:
         return [Unit(m.start, m.end, "word", "target", span)]  # "the crosswalk by target": the shop; a test
         # target is "the target" or "a target"
+    if m.category == "agents" and [t.word for t in span] == ["pick", "up"] and _picks_someone_up(tokens, m.start, nxt):
+        return _units_of_one_word(tokens, m.start) + _units_of_one_word(tokens, m.start + 1)
+        # "stopped to pick up two women": the verb, no pickup truck
     if m.category == "agents" and [t.word for t in span] == ["pickup"] and _picking_up(tokens, m.start, nxt):
         return [Unit(m.start, m.end, "word", "pickup", span)]  # "a late night pickup downtown": a fare, no truck
     if m.category == "weather" and len(span) == 1 and span[0].word != span[0].base and not \
@@ -1016,6 +1019,45 @@ def _picking_up(tokens: list[Token], start: int, nxt: str) -> bool:
     """'late night pickup downtown', 'an airport pickup', 'the pickup point': a passenger collected, no vehicle."""
     prev = tokens[start - 1].word if start > 0 and tokens[start - 1].sentence == tokens[start].sentence else ""
     return prev in PICKUP_TIMES or nxt in PICKUP_PLACES
+
+
+OBJECT_STARTS_OF_PEOPLE = {"him", "her", "them", "me", "us", "someone", "somebody", "people", "passengers", "kids",
+                           "children", "pupils", "everyone"}
+
+
+def _picks_someone_up(tokens: list[Token], start: int, nxt: str) -> bool:
+    """'to pick up two women', 'stopped and pick up the kids': the verb with its object after it; a truck is 'a
+    pick up', 'his old pick up'."""
+    prev = tokens[start - 1].word if start > 0 and tokens[start - 1].sentence == tokens[start].sentence else ""
+    return prev in ("to", "and", "or", "then", "will", "would", "can", "could", "must", "should", "i", "we", "they",
+                    "he", "she", "you", "please") or nxt in DEFINITE | INDEFINITE | OWNERS | OBJECT_STARTS_OF_PEOPLE \
+        or read_number(nxt) is not None or (lexicon().phrases.get((nxt,)) or ("", ""))[0] == "numbers"
+
+
+CARRYING = {("pick", "up"), ("drop", "off"), ("let", "off"), ("let", "out"), ("let", "on"), ("set", "down"),
+            ("load", ""), ("unload", ""), ("collect", ""), ("ferry", ""), ("transport", ""), ("carry", "")}
+CARRYING_VERBS = {verb for verb, _ in CARRYING}
+
+
+def _carried(tokens: list[Token], start: int, end: int) -> str:
+    """'picking kids up', 'to drop off some pupils', 'letting people off', 'unloading schoolchildren': the people a
+    vehicle takes on or sets down are its passengers, no agents of their own ('taken'); a person carried in
+    someone's arms is 'held'; '' when neither."""
+    def base(i: int) -> str:
+        if not (0 <= i < len(tokens) and tokens[i].sentence == tokens[start].sentence):
+            return ""
+        word = tokens[i].word
+        for suffix, stem in (("ying", "y"), ("ies", "y"), ("ied", "y"), ("ting", ""), ("ping", ""), ("ing", ""),
+                             ("ped", ""), ("ed", ""), ("s", "")):  # "picking", "dropped", "ferries", "letting"
+            if word.endswith(suffix) and (word[:-len(suffix)] + stem) in CARRYING_VERBS:
+                return word[:-len(suffix)] + stem
+        return word
+    after = tokens[end].word if end < len(tokens) and tokens[end].sentence == tokens[start].sentence else ""
+    if base(start - 1) == "carry":
+        return "held"
+    taken = (base(start - 2), base(start - 1)) in CARRYING or (base(start - 1), after) in CARRYING or \
+        (base(start - 1), "") in CARRYING
+    return "taken" if taken else ""
 
 
 POSSESSIVES = {"its", "his", "her", "their"}
@@ -2707,6 +2749,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
         # "mom said no more driving": kin named as a name, by a text's writer
+    carried = kind == "pedestrian" and next(
+        (how for k in range(first, head + 1) if (how := _carried(r.tokens, units[k].start, u.end))), "")
+    if carried == "held" or carried and not _on_foot_in_the_scene(units, head):
+        return NounPhrase(None, head, first)  # "a school bus stopped ahead, picking kids up": its passengers;
+        # "a woman carrying a child crossed": the child is held, on foot only through her
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
             and not _of_a_group(units, first):
