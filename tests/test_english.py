@@ -4943,3 +4943,13 @@ def test_people_a_vehicle_takes_on_or_sets_down_are_its_passengers(prompt, kinds
 def test_people_set_down_who_then_cross_are_on_foot():
     found = agents("The bus let two kids off and they ran across in front of me.")
     assert [t for t, _, _ in found].count("pedestrian") == 2, found
+
+
+@pytest.mark.parametrize("prompt, walkers", [
+    ("A van stopped ahead of me. Some people behind us were mad.", 0),
+    ("A cyclist turned left in front of me and people were furious.", 0),
+    ("Some people were crossing the road ahead.", 2),
+    ("Some people stood at the kerb.", 2),
+])
+def test_uncounted_people_who_do_nothing_on_foot_are_no_pedestrians(prompt, walkers):
+    assert [t for t, _, _ in agents(prompt)].count("pedestrian") == walkers, agents(prompt)

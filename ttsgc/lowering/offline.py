@@ -2754,6 +2754,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if carried == "held" or carried and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "a school bus stopped ahead, picking kids up": its passengers;
         # "a woman carrying a child crossed": the child is held, on foot only through her
+    if u.tokens[-1].word in ("people", "folks") and (count is None or "some" in words) and \
+            not words - {"some", "the", "other"} and \
+            not any(m.category == "actions" for m in units[head + 1:]) and not _on_foot_in_the_scene(units, head):
+        return NounPhrase(None, head, first)  # "some people behind us were mad": uncounted, doing nothing on foot
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
             and not _of_a_group(units, first):
