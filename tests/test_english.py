@@ -4953,3 +4953,12 @@ def test_people_set_down_who_then_cross_are_on_foot():
 ])
 def test_uncounted_people_who_do_nothing_on_foot_are_no_pedestrians(prompt, walkers):
     assert [t for t, _, _ in agents(prompt)].count("pedestrian") == walkers, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("Jaywalker at night. Ped_1 crosses in front of the Ego from the right.", ["car", "pedestrian"]),
+    ("Stalled car. Car_1 is stopped in the ego lane ahead.", ["car", "car"]),
+    ("Truck ahead. Truck_2 is behind the ego.", ["car", "truck", "truck"]),
+])
+def test_a_heading_names_the_agent_its_description_names_by_label(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

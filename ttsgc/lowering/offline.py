@@ -154,6 +154,7 @@ class Entity:
     label: str = ""  # the name the text gives it ("SV1")
     includes_ego: bool = False  # "three cars including the ego": the ego shares what the group does
     aliases: set = field(default_factory=set)  # short names given in brackets ("(GVT)")
+    headline: bool = False  # named bare in the text's first sentence, as a heading names it ("Jaywalker mid-block.")
 
 
 @dataclass
@@ -2704,6 +2705,8 @@ def _model_year(word: str) -> bool:
     return len(word) == 4 and word.isdigit() and 1950 <= int(word) <= 2099
 
 
+HEADLINE_PLACES = {"ahead", "behind", "level", "side_left", "side_right", "from_left", "from_right", "road_left",
+                   "road_right", "road_straight", "destination"}  # "Truck ahead.": a note that places one, no heading
 DRIVER_CONTROLS = {"kept", "keep", "keeps", "held", "hold", "holds", "brought", "bring", "brings", "steered",
                    "steer", "steers", "stopped", "pulled", "moved", "put", "took", "drove", "parked"}
 
@@ -2777,8 +2780,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(rider, head, first)  # "a cyclist ... no lights on his bike": the cyclist's own
     label = u.tokens[-1].label
     if label:
-        named = next((e for e in r.entities if e.label == label), None)
-        if named is not None:
+        named = next((e for e in r.entities if e.label == label), None) or next(
+            (e for e in r.entities if e.headline and not e.label and not e.features & HEADLINE_PLACES
+             and e.type == kind and not plural and not words and count is None), None)
+        if named is not None:  # "Jaywalker mid-block. Ped_1 crosses ...": the one the heading named, now by name
+            named.label = named.label or label
             return NounPhrase(named, head, first)
     if count is not None and plural and _vague_part_of_the(units, first, head):
         count, words = None, words - {"some"}  # "a group of the children", "some of the kids": those said before
@@ -2883,6 +2889,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             r.mark(units[head + 1])
             units[head + 1].category = "word"  # "a street with cars parked both sides": said of the scenery
         return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
+    headline = not words and count is None and not plural and u.tokens[0].sentence == 0
     if count is None:
         count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
     if count is not None and count > 1 and not plural and u.base in ("group", "crowd", "family"):
@@ -2897,7 +2904,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.meaning == "generic" or u.base == "vehicle":  # "a vehicle": its type is left open
         kind = UNSPECIFIED.agent_type(kind, len(r.entities))
     entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
-                    generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label)
+                    generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label,
+                    headline=headline and not label)
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
     if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
