@@ -4962,3 +4962,13 @@ def test_uncounted_people_who_do_nothing_on_foot_are_no_pedestrians(prompt, walk
 ])
 def test_a_heading_names_the_agent_its_description_names_by_label(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("Night variant of the lead-vehicle-following scenario. The ego follows a bus in the same lane.", ["bus", "car"]),
+    ("The ego follows a lead vehicle. Car-following scenario at night.", ["car", "car"]),
+    ("A cyclist-overtaking scenario: the ego passes a cyclist riding ahead in the same lane.", ["car", "cyclist"]),
+    ("A cyclist scenario at dusk.", ["car", "cyclist"]),
+])
+def test_a_noun_in_the_name_of_the_case_is_the_agent_named_elsewhere(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

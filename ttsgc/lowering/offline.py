@@ -2642,12 +2642,17 @@ RIDING_PEOPLE = {"guy", "man", "woman", "lady", "dude", "kid", "lad", "bloke", "
 
 
 def _names_the_case(r: _Reader, units: list[Unit], head: int, kind: str) -> bool:
-    """'stopped veh scenario', 'cut-in car test': a noun naming the kind of case, when an agent of its kind is
-    introduced later on; with none later ('a cyclist scenario') it is the agent asked for."""
-    if head + 1 >= len(units) or units[head + 1].word not in CASE_NOUNS or units[head].tokens[-1].plural:
+    """'stopped veh scenario', 'cut-in car test', 'the lead-vehicle-following scenario': a noun naming the kind of
+    case, when an agent of its kind is introduced before or later on; with no other ('a cyclist scenario') it is the
+    agent asked for."""
+    case = head + 1 + (head + 2 < len(units) and units[head + 1].category in ("actions", "positions") and
+                       units[head + 1].tokens[-1].word.endswith("ing"))  # "the lead-vehicle-following scenario"
+    if case >= len(units) or units[case].word not in CASE_NOUNS or units[head].tokens[-1].plural:
         return False
-    end = units[head + 1].tokens[-1].index + 1
-    return any(m.category == "agents" and m.meaning == kind for m in matches(r.tokens, end))
+    end = units[case].tokens[-1].index + 1
+    vehicles = V.EGO_TYPES if units[head].meaning == "generic" or units[head].base.split()[-1] == "vehicle" else {kind}
+    return any(m.category == "agents" and m.meaning in vehicles for m in matches(r.tokens, end)) or \
+        any(not e.is_ego and e.type in vehicles for e in r.entities)  # "... a lead vehicle. Car-following scenario"
 
 
 def _vague_part_of_the(units: list[Unit], first: int, head: int) -> bool:
