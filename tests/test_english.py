@@ -4972,3 +4972,13 @@ def test_a_heading_names_the_agent_its_description_names_by_label(prompt, kinds)
 ])
 def test_a_noun_in_the_name_of_the_case_is_the_agent_named_elsewhere(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("a school bus was stopped right in front of me and i barely stopped in time coach better appreciate me",
+     ["bus", "car"]),
+    ("Tesla said the car was on Autopilot when a truck pulled out from the right.", ["car", "truck"]),
+    ("Taxi driver said he didn't see me when he pulled out from the left.", ["car", "car"]),
+])
+def test_a_bare_vehicle_word_that_speaks_is_a_person_or_a_firm(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

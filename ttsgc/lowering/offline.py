@@ -363,6 +363,9 @@ ORGANISATION_WORDS = {"company", "companies", "firm", "insurance", "insurer", "i
 
 
 AT_THE_CONTROLS = {"driver", "rider", "motorist", "operator", "cyclist"}
+SPEAKING = {"say", "says", "said", "tell", "tells", "told", "better", "reckons", "claims", "claimed", "insists",
+            "insisted", "confirmed", "confirms", "stated", "states", "announced", "announces", "replied", "responded",
+            "thinks", "thought", "yelled", "shouted", "texted", "emailed"}  # a bare noun before them is who speaks
 
 
 def _driver_of(units: list[Unit]) -> list[Unit]:
@@ -429,6 +432,14 @@ def _names_no_agent(units: list[Unit]) -> list[Unit]:
         street = nxt.word in STREET_WORDS and not (k > 0 and units[k - 1].word in ("a", "an", "the", "this", "that"))
         if street and not u.tokens[-1].plural or nxt.word in ORGANISATION_WORDS:
             out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)
+    for k, u in enumerate(units[:-1]):  # "coach better appreciate me", "Tesla said": a person or a firm speaks
+        nxt = units[k + 1]
+        if u.category == "agents" and u.meaning in V.EGO_TYPES and not u.tokens[-1].plural and \
+                not u.tokens[-1].possessive and nxt.word in SPEAKING and \
+                nxt.tokens[0].sentence == u.tokens[-1].sentence and u.tokens[-1].base not in AT_THE_CONTROLS | {
+                    "trucker", "cabbie"} and (k == 0 or units[k - 1].word not in DEFINITE | INDEFINITE | OWNERS
+                                              and units[k - 1].category not in ("numbers", "number")):
+            out[k] = Unit(u.start, u.end, "word", u.base, u.tokens)  # (bare: "the coach said" may be the bus's)
     for k, u in enumerate(units[:-1]):  # "a police pursuit", "the taxi rank", "truck traffic": said of a thing
         nxt = units[k + 1]
         if u.category == "agents" and u.meaning not in ("ego", "none") and not u.tokens[-1].plural and \
