@@ -4982,3 +4982,14 @@ def test_a_noun_in_the_name_of_the_case_is_the_agent_named_elsewhere(prompt, kin
 ])
 def test_a_bare_vehicle_word_that_speaks_is_a_person_or_a_firm(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("A second pedestrian, a child dummy, crosses from the left in front of the ego.", ["car", "pedestrian"]),
+    ("A car, a red Ford, cut in front of me.", ["car", "car"]),
+    ("A motorbike, a big Harley, overtook me on the right.", ["car", "motorcycle"]),
+    ("A car, a van, and a taxi were waiting at the light.", ["car", "car", "car", "car"]),
+    ("A car, a van, a taxi and a bus waited at the light.", ["bus", "car", "car", "car", "car"]),
+])
+def test_a_noun_set_between_commas_after_one_of_its_type_says_what_that_one_is(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

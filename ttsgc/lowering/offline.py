@@ -4500,6 +4500,22 @@ def _members_listed(r: _Reader, clause: Clause, phrases: list[NounPhrase], recen
     return phrases
 
 
+def _set_between_commas(clause: Clause, pending: list[Entity], new: list[Entity]) -> Entity | None:
+    """'A second pedestrian, a child dummy, crosses', 'a car, a red Ford, cut in': an indefinite noun of the same
+    type set between commas right after a clause that only named one agent, its verb after the second comma,
+    says what that one is; the new agent it made is that one."""
+    units = clause.units
+    if len(pending) != 1 or clause.link != "," or len(units) < 4 or units[0].word not in ("a", "an"):
+        return None
+    head = next((k for k, u in enumerate(units) if u.category == "agents"), None)
+    if head is None or head + 2 >= len(units) or units[head + 1].category != "comma" or \
+            units[head + 2].category != "actions" or units[head].tokens[-1].plural:
+        return None
+    same = [e for e in new if not e.is_ego and e.type == pending[0].type and e.count == 1
+            and e.head == units[head].base]
+    return same[0] if len(same) == 1 and not pending[0].is_ego and pending[0].count == 1 else None
+
+
 def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> bool:
     """'I was driving a bus', 'you're at the wheel of the ambulance', 'the player pulls the bus in', 'I was the
     front-seat passenger in my husband's Honda': a vehicle the speaking ego drives, steers or sits in is the ego's
@@ -5196,6 +5212,12 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             # one who waited acts again, not the one waited for
         before = len(r.entities)
         subject = _read_clause(r, clause, previous, recent, pending)
+        renamed = _set_between_commas(clause, pending, r.entities[before:])
+        if renamed is not None:  # "A car, a red Ford, cut in front of me": the car, said again
+            pending[0].aliases |= renamed.aliases | {renamed.head}
+            _fold(r, pending[0], renamed)
+            subject = [pending[0] if e is renamed else e for e in subject]
+            recent[:] = [pending[0] if e is renamed else e for e in recent]
         if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS:
             main_subject = subject
         if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
