@@ -4993,3 +4993,11 @@ def test_a_bare_vehicle_word_that_speaks_is_a_person_or_a_firm(prompt, kinds):
 ])
 def test_a_noun_set_between_commas_after_one_of_its_type_says_what_that_one_is(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("Three cars drive ahead of the ego. Car_1 brakes hard.", ["car", "car", "car", "car"]),
+    ("Two vehicles wait at the junction. Car_A turns left and Truck_B goes straight.", ["car", "car", "truck"]),
+])
+def test_a_label_first_said_of_a_counted_group_names_one_of_it(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

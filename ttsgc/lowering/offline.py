@@ -2802,6 +2802,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if named is not None:  # "Jaywalker mid-block. Ped_1 crosses ...": the one the heading named, now by name
             named.label = named.label or label
             return NounPhrase(named, head, first)
+        if first == 0 and not plural and count is None and any(
+                not e.is_ego and e.group_open > 0 and (e.type == kind or e.generic) for e in r.entities):
+            member = _existing(r, kind, u.meaning == "generic", False, False, False, recent)[0]
+            member.label = label  # "Three cars drive ahead. Car_1 brakes hard": one of the three, by its name
+            return NounPhrase(member, head, first)
     if count is not None and plural and _vague_part_of_the(units, first, head):
         count, words = None, words - {"some"}  # "a group of the children", "some of the kids": those said before
     if count is not None and count > 1 and not plural and words & {"some", "any"}:
