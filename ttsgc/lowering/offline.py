@@ -2768,15 +2768,17 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
         # "mom said no more driving": kin named as a name, by a text's writer
-    carried = kind == "pedestrian" and next(
+    carried = kind == "pedestrian" and count is None and next(
         (how for k in range(first, head + 1) if (how := _carried(r.tokens, units[k].start, u.end))), "")
     if carried == "held" or carried and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "a school bus stopped ahead, picking kids up": its passengers;
-        # "a woman carrying a child crossed": the child is held, on foot only through her
+        # "a woman carrying a child crossed": the child is held, on foot only through her ("drops off two kids in
+        # front of the ego": counted, they are put in the scene)
     if u.tokens[-1].word in ("people", "folks") and (count is None or "some" in words) and \
             not words - {"some", "the", "other"} and \
-            not any(m.category == "actions" for m in units[head + 1:]) and not _on_foot_in_the_scene(units, head):
+            not any(m.category == "actions" for m in units) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "some people behind us were mad": uncounted, doing nothing on foot
+        # and nothing done to them ("nearly hit people": they were on the road)
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
             and not _of_a_group(units, first):
