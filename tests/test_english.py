@@ -5004,3 +5004,30 @@ def test_a_noun_set_between_commas_after_one_of_its_type_says_what_that_one_is(p
 ])
 def test_a_label_first_said_of_a_counted_group_names_one_of_it(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+# -- standing and moving ----------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A man walks across in front of the ego, who comes to a stop to let him over.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("A cyclist rides out in front of the ego, who brakes to a halt.",
+     [("car", "stop", "ego"), ("cyclist", "cross_the_road", "front")]),
+])
+def test_a_relative_clause_set_off_by_a_comma_after_the_ego_is_the_egos(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A group of pedestrians was standing at the crosswalk waiting to cross.",
+     [("car", "go_straight", "ego"), ("pedestrian", "stop", "near_the_crosswalk"),
+      ("pedestrian", "stop", "near_the_crosswalk")]),
+    ("A man stands at the crossing waiting to cross.",
+     [("car", "go_straight", "ego"), ("pedestrian", "stop", "near_the_crosswalk")]),
+    ("A woman is waiting to cross at the zebra.",
+     [("car", "go_straight", "ego"), ("pedestrian", "stop", "near_the_crosswalk")]),
+    ("A car waits at the junction on the left to turn right.",
+     [("car", "go_straight", "ego"), ("car", "stop", "road_of_left_turn")]),
+])
+def test_what_a_waiting_agent_means_to_do_is_not_done_yet(prompt, expected):
+    assert agents(prompt) == expected

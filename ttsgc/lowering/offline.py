@@ -3211,10 +3211,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 k is not None and any(x.category == "positions" and x.meaning == "toward"
                                       for x in clause_units[k + 1:k + 3]):
             action = "cut_in"  # "a lorry on our left began to drift towards us": over into the ego's lane
-        waiting_to = clause_units is not None and k is not None and k >= 2 and clause_units[k - 1].word == "to" \
-            and clause_units[k - 2].category == "actions" and clause_units[k - 2].meaning == "stop"
-        if action == "cross" and e.type == "pedestrian" and waiting_to:
-            e.features.add("waits_to_cross")  # "standing on the pavement, waiting to cross": the crossing is to come
+        waiting_to = clause_units is not None and k is not None and _waiting_to(clause_units, k)
+        if action == "cross" and waiting_to:
+            e.features.add("waits_to_cross")  # "standing at the crossing, waiting to cross": the crossing is to come;
+            return  # it stands there (on the pavement, if said) until a later stage says it goes
         if waiting_to and set(u.base.split()) & OVERTAKING:
             e.actions = [a for a in e.actions if not (a[0] == stage and a[4] == "stop")]
             return  # "behind a cyclist, waiting to pass": following it, for a chance to pass
@@ -3324,6 +3324,20 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         # ("had stopped first and was proceeding straight across": what it does now outranks what it had done)
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+def _waiting_to(units: list[Unit], k: int) -> bool:
+    """'waiting to cross', 'waits at the kerb to cross', 'sat at the junction to turn right': the verb after 'to' is
+    what a waiting agent means to do, not yet done ('waits for the van to pass': the van's, not the waiter's)."""
+    if k < 2 or units[k - 1].word != "to":
+        return False
+    for u in reversed(units[max(0, k - 7):k - 1]):
+        if u.category == "actions":
+            return u.meaning == "stop"
+        if u.category == "agents" or u.word in ("for", "until", "till", "and", "but", "then", "while") or \
+                u.word in PRONOUNS | {"me", "us", "you"}:
+            return False
+    return False
 
 
 LONG_STAY = re.compile(r"(?:there |put |where it was |where they were )?(?:for (?:a (?:full |good |whole )?"
@@ -3736,6 +3750,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     x.category == "road" and x.meaning in V.CROSSWALK_OBJECTS for x in units[k + 1:k + 4])
                 for k, u in enumerate(units)):
             e.features.add("crosswalk")  # "a woman is waiting at the zebra crossing": at it
+        elif crosswalk and "waits_to_cross" in e.features and "on_sidewalk" not in e.features:
+            e.features.add("crosswalk")  # "a woman is waiting to cross at the zebra": at it
         if any(u.category == "road" and u.meaning == "junction" for u in units) and not e.is_ego and \
                 any(units[i].base in ("approach", "enter", "reach") for i in main_verbs):
             e.features.add("junction_approach")  # "a vehicle approaches the intersection"
@@ -5001,6 +5017,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if crossing and e.type == "pedestrian" and has_crosswalk and "off_crosswalk" not in f:
         f.add("crosswalk")  # "Mrs. Feeney was in that crosswalk? ... She was crossing from my left": on the one
         # crosswalk the road has, said in another sentence
+    if "waits_to_cross" in f and e.type in V.VULNERABLE_TYPES and has_crosswalk and "off_crosswalk" not in f:
+        f.add("crosswalk")  # "standing beside it, waiting to cross": waiting at the one crosswalk the road has
     if e.road_type == "shoulder" and not _side_of(f):
         f.add("side_left" if _KEEPS_LEFT.get() else "side_right")  # the shoulder is at the kerb edge (the left
         # where traffic keeps left), ahead unless said otherwise
