@@ -1567,7 +1567,7 @@ def test_the_noun_after_a_verb_and_before_a_participle_is_an_object():
 
 def test_a_fronted_side_is_a_place_not_the_owner_of_the_noun_after_it():
     assert agents("On the right-hand side a man with a dog waits to cross.") == sorted(
-        [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")])
+        [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front_right")])
     assert ("car", "go_straight", "ego") in agents("A van in the lane to the left of the ego cuts in front of it.")
 
 
@@ -5028,6 +5028,8 @@ def test_a_relative_clause_set_off_by_a_comma_after_the_ego_is_the_egos(prompt, 
      [("car", "go_straight", "ego"), ("pedestrian", "stop", "near_the_crosswalk")]),
     ("A car waits at the junction on the left to turn right.",
      [("car", "go_straight", "ego"), ("car", "stop", "road_of_left_turn")]),
+    ("An old man on the left is waiting to cross the road.",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front_left")]),
 ])
 def test_what_a_waiting_agent_means_to_do_is_not_done_yet(prompt, expected):
     assert agents(prompt) == expected

@@ -5008,7 +5008,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     """(position, oncoming) from the features, once the whole text is read: side x ahead/behind x which road,
     against the junction context and the lane the ego moves into (`target_side`)."""
     f = set(e.features)
-    crossing = (action == "cross" or (action == "walk" and "in_road" in f)) and e.type in V.VULNERABLE_TYPES
+    crossing = (action == "cross" or (action == "walk" and "in_road" in f) or "waits_to_cross" in f) and \
+        e.type in V.VULNERABLE_TYPES  # one waiting to cross is placed where its crossing will start
     person = e.type == "pedestrian" or crossing
     walking = e.type == "pedestrian" and not crossing and (
         action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
@@ -5154,6 +5155,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
             return "block_the_ego"  # stopped in front of the ego for minutes: the ego cannot go on
         if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder")):
             return "on_the_sidewalk"  # standing on the pavement or the verge
+        if e.type == "pedestrian" and "waits_to_cross" in e.features and position != "near_the_crosswalk":
+            return "on_the_sidewalk"  # waiting to cross where there is no crossing: at the kerb, on the pavement
         if e.type == "pedestrian" and any(a[4] == "walk" for a in e.actions) and not e.features & {"crosswalk",
                                                                                                  "in_road"}:
             return "on_the_sidewalk"  # "standing on the pavement, waiting": where it waits is the pavement
