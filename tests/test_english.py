@@ -5033,3 +5033,15 @@ def test_a_relative_clause_set_off_by_a_comma_after_the_ego_is_the_egos(prompt, 
 ])
 def test_what_a_waiting_agent_means_to_do_is_not_done_yet(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A motorcyclist was closing fast from behind and had to brake.",
+     [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back")]),
+    ("A van came up behind me and had to wait.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("A cyclist riding beside me had to slam on his brakes.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "right")]),
+    ("The car behind me had to stop.", [("car", "go_straight", "ego"), ("car", "stop", "back")]),
+])
+def test_a_stop_forced_on_an_agent_does_not_outrank_what_it_was_doing(prompt, expected):
+    assert agents(prompt) == expected

@@ -3319,11 +3319,33 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                                                                clause_units[max(0, k - 3) + 1:k + 1])) and \
             action == "stop"  # ("I had to stop dead" is no state before the story)
         # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
+        if action == "stop" and not e.is_ego and not earlier and clause_units is not None and k is not None and \
+                _forced_reaction(clause_units, k):
+            e.actions.append((stage, 1, ACTION_RANK["go_straight"], 0, action, direction))
+            if _moving_in_a_place(clause_units[:k]):  # "came up behind me and had to wait": coming, said in its place
+                e.actions.append((stage, strength, ACTION_RANK["move"], r.tick(), "move", None))
+            return  # "was closing fast and had to brake", "came up behind and had to wait": a reaction to another;
+            # what it was doing is its action ("the other driver had to stop", said of nothing else, still stops)
         e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
                           0 if earlier else r.tick(), action, direction))
         # ("had stopped first and was proceeding straight across": what it does now outranks what it had done)
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+def _forced_reaction(units: list[Unit], k: int) -> bool:
+    """'had to brake', 'was forced to stop', 'must wait': made to by someone else, not what it set out to do."""
+    if k >= 1 and units[k - 1].word == "must":
+        return True
+    return k >= 2 and units[k - 1].word == "to" and units[k - 2].category == "word" and \
+        units[k - 2].base in ("have", "force", "make", "oblige", "compel")
+
+
+def _moving_in_a_place(units: list[Unit]) -> bool:
+    """'coming up behind', 'approaching from the right': a place phrase that says its agent is on the move."""
+    phrases = lexicon().phrases
+    return any(phrases.get((t.base,)) == ("actions", "move") or phrases.get((t.word,)) == ("actions", "move")
+               for u in units if u.category == "positions" for t in u.tokens)
 
 
 def _waiting_to(units: list[Unit], k: int) -> bool:
