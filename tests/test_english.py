@@ -5045,3 +5045,13 @@ def test_what_a_waiting_agent_means_to_do_is_not_done_yet(prompt, expected):
 ])
 def test_a_stop_forced_on_an_agent_does_not_outrank_what_it_was_doing(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was waiting at the red light with a cyclist stopped in front of me. When it turned green we both set off.",
+     [("car", "go_straight", "ego"), ("car", "stop", "ego"), ("cyclist", "stop", "front")]),
+    ("I sat at the lights with a motorbike waiting in front of me. Once they changed, we both moved off.",
+     [("car", "go_straight", "ego"), ("car", "stop", "ego"), ("motorcycle", "stop", "front")]),
+])
+def test_one_standing_in_the_stage_it_is_named_in_stands_there_though_it_moves_off_later(prompt, expected):
+    assert agents(prompt) == expected

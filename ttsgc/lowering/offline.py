@@ -5016,6 +5016,9 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
     action = _action(e, e.stage)
     if action[0] is None or not any(a[1] == 2 for a in e.actions if a[0] == e.stage):
         later = _action(e)
+        if action[0] == "stop" and later[0] in ("move", "go_straight"):
+            return action  # "with a cyclist waiting in front of me; once it went green we both moved off": it stood
+            # in the stage it was named in; moving off is what the later stage does
         if later[0] is not None and (action[0] is None or any(a[1] == 2 for a in e.actions)):
             return later
     return action
