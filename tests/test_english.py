@@ -5055,3 +5055,19 @@ def test_a_stop_forced_on_an_agent_does_not_outrank_what_it_was_doing(prompt, ex
 ])
 def test_one_standing_in_the_stage_it_is_named_in_stands_there_though_it_moves_off_later(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Three cars including ours were cruising down the motorway in one lane, we were in the middle.",
+     [("car", "go_straight", "back"), ("car", "go_straight", "ego"), ("car", "go_straight", "front")]),
+    ("Five cars including ours sat at the red light, and we were the third one.",
+     [("car", "stop", "back"), ("car", "stop", "back"), ("car", "stop", "ego"), ("car", "stop", "front"),
+      ("car", "stop", "front")]),
+])
+def test_a_place_in_a_moving_column_is_no_place_in_a_queue(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_both_of_us_are_the_ego_and_the_other_one():
+    assert agents("A cyclist was ahead of me at the lights. Both of us turned right.") == [
+        ("car", "turn_right", "ego"), ("cyclist", "turn_right", "front")]

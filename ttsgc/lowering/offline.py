@@ -3555,6 +3555,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         r.mark(u)
         if u.word in ("both", "they", "them"):
             group = [e for e in recent if not e.is_ego][-2:] or list(previous_subject)
+            if u.word == "both" and [x.word for x in units[i + 1:i + 2]] == ["of"] and i + 2 < len(units) and \
+                    units[i + 2].category == "agents" and units[i + 2].meaning == "ego":
+                group = [e for e in recent if not e.is_ego][-1:] + [_ego_entity(r, stage)]  # "both of us": the
+                # ego and the other one
             if group:
                 phrases.append(NounPhrase(group[0], i, i, plural=True, group=group))
         elif u.word == "former" or u.word == "latter":
@@ -4121,7 +4125,9 @@ def _place_in_queue(r: _Reader) -> None:
         if not n or not mine and (rest[:1] not in (["in"], ["car"], ["vehicle"]) or not {"queue", "line"} & set(rest)):
             continue
         ego = ego or _ego_entity(r, 0)
-        if not any(a[4] == "stop" for a in ego.actions):
+        queueing = not mine or RED_OR_QUEUE & set(words) or any(a[4] == "stop" for a in with_ego.actions)
+        if queueing and not any(a[4] == "stop" for a in ego.actions):  # ("three cars including the ego driving
+            # in one lane, ego in the middle": a place in a moving platoon, no queue)
             ego.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
         members = [e for e in r.entities if with_ego is not None and e.parent is with_ego]  # "the first car"
         if with_ego is not None and n - 1 < with_ego.count + len(members) and "ahead" not in with_ego.features:
