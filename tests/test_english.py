@@ -5071,3 +5071,12 @@ def test_a_place_in_a_moving_column_is_no_place_in_a_queue(prompt, expected):
 def test_both_of_us_are_the_ego_and_the_other_one():
     assert agents("A cyclist was ahead of me at the lights. Both of us turned right.") == [
         ("car", "turn_right", "ego"), ("cyclist", "turn_right", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A taxi ahead had stopped but then moved off.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("The lorry in front waited for a moment but then drove on.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+])
+def test_but_then_goes_on_with_the_same_subject(prompt, expected):
+    assert agents(prompt) == expected

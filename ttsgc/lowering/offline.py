@@ -1857,7 +1857,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 stage += 1
             whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"}
             # "when the light goes green", "when it is safe": said in full
-            joined_on = (prev_word in ("and", ",") or u.tokens[0].word == "and" or u.word == "then" and
+            joined_on = (prev_word in ("and", ",", "but") or u.tokens[0].word == "and" or u.word == "then" and
                          nxt is not None and nxt.category == "actions" and had_verb) and \
                 not new_sentence and not _starts_subject(units, k + 1)  # "indicates right and then turns"; "a
             # van parked on the left then pulled out": the same subject goes on
