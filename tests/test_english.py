@@ -5080,3 +5080,18 @@ def test_both_of_us_are_the_ego_and_the_other_one():
 ])
 def test_but_then_goes_on_with_the_same_subject(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Act 1: the Ego waits at the stop line. Act 2: the Ego turns left after a truck from the right has gone past.",
+     [("car", "stop", "ego"), ("car", "turn_left", "ego"), ("truck", "go_straight", "road_of_right_turn")]),
+    ("Act 1: Ego holds at the red light behind a bus. Act 2, on green: Ego drives straight on.",
+     [("bus", "stop", "front"), ("car", "go_straight", "ego"), ("car", "stop", "ego")]),
+])
+def test_a_storyboards_later_act_is_a_later_stage(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_holding_at_a_stopping_place_is_standing_and_holding_a_speed_is_not():
+    assert agents("The ego holds at the stop line while a cyclist crosses from the left.")[0] == ("car", "stop", "ego")
+    assert agents("The lead car holds at 50 km/h.") == [("car", "go_straight", "ego"), ("car", "go_straight", "front")]
