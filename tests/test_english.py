@@ -4873,3 +4873,49 @@ def test_a_list_that_does_not_close_after_a_counted_group_is_more_agents():
 ])
 def test_the_noun_after_the_copula_of_a_relative_is_what_its_noun_is(prompt, plain):
     assert agents(prompt) == agents(plain), agents(prompt)
+
+
+# -- a safety driver's debrief, a study's staging ------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We were on the ring road behind a bus. The vehicle eased off to about 40 and held back.",
+     [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+    ("A lorry was double-parked in our lane and the vehicle just waited behind it, so I took over.",
+     [("car", "stop", "ego"), ("truck", "stop", "front")]),
+    ("Our second lap. A cyclist came up on our left and the vehicle slowed right down.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "left")]),
+])
+def test_a_crews_vehicle_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_vehicle_of_a_crew_stays_another_when_the_crew_names_other_vehicles_as_vehicles():
+    found = agents("We were parked when a vehicle came past us; the vehicle turned left at the corner.")
+    assert ("car", "turn_left", "road_of_left_turn") in found or any(
+        t == "car" and p != "ego" and a == "turn_left" for t, a, p in found), found
+
+
+@pytest.mark.parametrize("prompt", [
+    "A single confederate van is presented as oncoming traffic on the rural road.",
+    "On a straight road a truck appears as opposing traffic.",
+])
+def test_a_vehicle_cast_as_oncoming_traffic_is_oncoming(prompt):
+    assert [p for _, _, p in agents(prompt) if p != "ego"] == ["front_left"], agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "We held at the junction for an oncoming van. Once he'd cleared we completed the turn.",
+    "We waited for an oncoming lorry at the lights. Once it had vanished we made the left turn.",
+])
+def test_a_past_condition_without_a_comma_ends_where_we_act(prompt):
+    stages = lower(prompt).scenario.stages
+    assert len(stages) == 2 and [a.action for a in stages[1].agents] == ["turn_left"], stages
+    assert [a.action for a in stages[0].agents if not a.is_ego] == ["go_straight"], stages
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("once he'd cleared", "had"), ("we'd already stopped", "had"), ("i'd need a gap", "would"),
+    ("he'd stop there", "would"),
+])
+def test_d_after_a_pronoun_is_had_before_a_participle(text, expected):
+    assert expected in [t.word for t in tokenize(text)]

@@ -737,6 +737,9 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"'ll\b", " will", text)
     text = re.sub(r"'ve\b", " have", text)
     text = re.sub(r"'m\b", " am", text)
+    text = re.sub(r"'d (?=(?:already |just |never |not |finally )?(?:\w+(?<!e)ed|been|gone|got|gotten|done|seen|"
+                  r"taken|driven|left|come through|ridden|run|made|pulled)\b)", " had ", text)  # "once he'd cleared",
+    # "we'd already stopped": a past told in the past ("I'd need", "he'd stop": would)
     text = re.sub(r"'d\b", " would", text)
     text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
     text = re.sub(r"\b(?:can|could|would|will)\s+(?:you|u)\s+(?:please\s+|pls\s+|plz\s+)?(?=(?:make|create|build|"

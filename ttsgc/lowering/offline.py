@@ -2019,11 +2019,14 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
         return True  # "when the light flips to green the player turns left": the change said, then who acts
     pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
         u.category == "word" and u.word in SUBJECT_PRONOUNS
-    if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS for x in current)):
-        return False
+    if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS or _past_tense_verb(x)
+                                                                         for x in current)):
+        return False  # ("once he had cleared we went": a verb the lexicon does not know is still the verb)
     if current[-1].category == "word" and current[-1].word in COPULAS | AUXILIARIES:
         return False  # "once it is you ...": the pronoun belongs to the condition
-    return any(x.category == "actions" for x in units[k + 1:k + 3])
+    return any(x.category == "actions" for x in units[k + 1:k + 3]) or \
+        k + 1 < len(units) and _past_tense_verb(units[k + 1]) and \
+        any(x.category == "actions" for x in units[k + 2:k + 4])  # "once he'd cleared we completed the turn"
 
 
 OBLIGED = {"has", "have", "had", "needs", "need", "must", "to", "got", "gets", "then", "just", "will", "should"}
