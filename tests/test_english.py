@@ -4919,3 +4919,23 @@ def test_a_past_condition_without_a_comma_ends_where_we_act(prompt):
 ])
 def test_d_after_a_pronoun_is_had_before_a_participle(text, expected):
     assert expected in [t.word for t in tokenize(text)]
+
+
+@pytest.mark.parametrize("prompt, mover", [
+    ("We were following two vans when a pickup from the lane to our right squeezed in between us and them.",
+     ("car", "change_lane_to_left", "right")),
+    ("I was behind a bus when a taxi from the lane to my left nipped in between me and the bus.",
+     ("car", "change_lane_to_right", "left")),
+])
+def test_a_cut_in_between_the_ego_and_its_leaders_starts_beside_not_behind(prompt, mover):
+    assert mover in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, people", [
+    ("A school bus was stopped ahead on our right picking kids up; a cyclist passed us.", 0),
+    ("A coach stood at the kerb on the left letting passengers off, and we waited behind a van.", 0),
+    ("A bus picks up two children at the stop and they cross in front of the ego.", 2),
+])
+def test_the_people_a_vehicle_picks_up_or_sets_down_are_its_passengers(prompt, people):
+    found = agents(prompt)
+    assert sum(t == "pedestrian" for t, _, _ in found) == people and any(t == "bus" for t, _, _ in found), found

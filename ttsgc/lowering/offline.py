@@ -4750,8 +4750,8 @@ def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
                     e.features.add("behind")
                 elif base in LEADING:
                     e.features.add("ahead")
-                elif base in OVERTAKING:
-                    e.features.add("overtaking")
+                elif base in OVERTAKING and verb.meaning != "cut_in":  # "squeezed in between us and them":
+                    e.features.add("overtaking")  # into the gap ahead of us, from beside; not past us from behind
             elif e.is_ego and not t.is_ego:
                 if base in FOLLOWING or base in OVERTAKING:
                     t.features.add("ahead")
