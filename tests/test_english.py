@@ -4939,3 +4939,17 @@ def test_a_cut_in_between_the_ego_and_its_leaders_starts_beside_not_behind(promp
 def test_the_people_a_vehicle_picks_up_or_sets_down_are_its_passengers(prompt, people):
     found = agents(prompt)
     assert sum(t == "pedestrian" for t, _, _ in found) == people and any(t == "bus" for t, _, _ in found), found
+
+
+@pytest.mark.parametrize("prompt, required, without", [
+    ("The ego waits at a crossroads without signals, stop or yield control.", (),
+     ("traffic_light", "stop", "yield")),
+    ("The ego waits at a junction with no signal, stop or give way control, then turns left.", (),
+     ("traffic_light", "stop", "yield")),
+    ("A T-junction under give-way control; the ego turns right onto the main road.", ("yield",), ()),
+    ("Side road stop-controlled, main road uncontrolled. The ego turns left out of the side road.", ("stop",), ()),
+    ("An uncontrolled junction; a van comes from the left.", (), ("traffic_light", "stop", "yield")),
+])
+def test_a_junctions_controls_as_a_traffic_engineer_lists_them(prompt, required, without):
+    spec = road(prompt)
+    assert set(spec.required_signals) == set(required) and set(spec.without_signals) == set(without), spec

@@ -1036,6 +1036,7 @@ def _road(r: _Reader) -> RoadSpec:
             target.append(word)
 
     negated_in, removing = -1, False
+    uncontrolled: list[list[str]] = []
     for k, u in enumerate(units):
         if negated and u.tokens[0].sentence != negated_in:
             negated = False  # "no crossing. Road: mid-block": a denial ends with its sentence
@@ -1089,7 +1090,8 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
                 any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and (any(
                     x.category == "actions" and x.tokens[0].sentence == u.tokens[0].sentence
-                    for x in units[max(0, k - 6):k]) or _beside_a_lane_move(units, k)):
+                    for x in units[max(0, k - 6):k]) or _beside_a_lane_move(units, k)) and \
+                not _controls_listed_after(units, k):
             r.mark(u)
             negated = False
             continue  # "turned left without any signal", "lurches into my lane -- no signal, nothing": no
@@ -1130,6 +1132,8 @@ def _road(r: _Reader) -> RoadSpec:
                 if negated:
                     put("stop", True)
                     put("yield", True)
+            elif meaning.startswith("!") and "+" in meaning:
+                uncontrolled.append(meaning[1:].split("+"))  # decided once every control said is known
             elif meaning.startswith("!"):
                 for word in meaning[1:].split("+"):
                     put(word, True)
@@ -1156,6 +1160,10 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
             continue
         negated = False
+    for controls in uncontrolled:
+        if not set(controls) & set(fields["required_signals"]):  # "minor arm under give-way control, major road
+            for word in controls:  # uncontrolled": the major road has priority; the junction has its give-way
+                put(word, True)
     kinds = [w for w in fields["required_objects"] if w in V.CROSSWALK_OBJECTS and w != "crosswalk"]
     if kinds and "crosswalk" in fields["required_objects"]:
         fields["required_objects"].remove("crosswalk")  # "a zebra crossing ... stops before the crossing": one
@@ -1171,13 +1179,21 @@ def _road(r: _Reader) -> RoadSpec:
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
 
 
+def _controls_listed_after(units: list[Unit], k: int) -> bool:
+    """'with no signal, stop or yield control': the signal heads a list of a junction's controls, no indicator."""
+    return k + 2 < len(units) and units[k + 1].word in ("or", "and", "nor", ",") and (
+        units[k + 2].category == "road" and units[k + 2].meaning in ("stop", "yield") or
+        units[k + 2].category == "actions" and units[k + 2].base == "stop" and _sign_said_once_for_two(units, k + 2))
+
+
 def _sign_said_once_for_two(units: list[Unit], k: int) -> bool:
-    """'stop or give way signs', 'stop and yield signs': a first sign named by its word alone, its noun said with
-    the second."""
+    """'stop or give way signs', 'stop and yield signs', 'signals, stop or yield control': a first sign named by its
+    word alone, its noun said with the second."""
     if k + 2 >= len(units) or units[k + 1].word not in ("or", "and", "nor", ","):
         return False
     nxt = units[k + 2]
-    return nxt.category == "road" and nxt.meaning in ("yield", "stop") and nxt.tokens[-1].word in ("sign", "signs")
+    return nxt.category == "road" and nxt.meaning in ("yield", "stop") and \
+        nxt.tokens[-1].word in ("sign", "signs", "control", "controlled")
 
 
 LANE_MOVES = {"cut_in", "lane_change", "lane_left", "lane_right"}
