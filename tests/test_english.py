@@ -4953,3 +4953,15 @@ def test_the_people_a_vehicle_picks_up_or_sets_down_are_its_passengers(prompt, p
 def test_a_junctions_controls_as_a_traffic_engineer_lists_them(prompt, required, without):
     spec = road(prompt)
     assert set(spec.required_signals) == set(required) and set(spec.without_signals) == set(without), spec
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego waits to turn left while two oncoming vehicles (a lorry, followed by a taxi) pass through the junction.",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego"),
+      ("truck", "go_straight", "road_of_straight")]),
+    ("On a straight rural road the ego meets two oncoming vehicles (a van and a motorbike).",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_left"),
+      ("motorcycle", "go_straight", "front_left")]),
+])
+def test_a_counted_groups_members_named_in_brackets_share_its_words(prompt, expected):
+    assert agents(prompt) == expected
