@@ -4965,3 +4965,29 @@ def test_a_junctions_controls_as_a_traffic_engineer_lists_them(prompt, required,
 ])
 def test_a_counted_groups_members_named_in_brackets_share_its_words(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Participants follow a van on a two-lane road; the van brakes hard.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Study participants encounter a cyclist riding ahead of them in the same lane.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+])
+def test_a_studys_participants_in_the_plural_drive_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A pedestrian, an elderly man, crosses from the left in front of the ego.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
+    ("A second pedestrian, a child dummy, steps out from the right in front of the ego.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("A truck, a big fuel tanker, pulls out from the right lane in front of us.",
+     [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "front_right")]),
+])
+def test_a_general_noun_then_one_of_its_kind_set_off_by_commas_is_one_agent(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_list_of_one_kind_is_still_a_list():
+    assert [t for t, _, p in agents("A car, a van, and a taxi wait ahead of the ego.") if p != "ego"] == ["car"] * 3

@@ -1852,6 +1852,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
+            labelled = labelled or not _has_verb(current) and _kind_apposed_at(units, k, current)
             ego_make = bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and \
                 len(current[-1].tokens) > 1 and nxt is not None and (
                     nxt.word in ("a", "an") or nxt.word in COLOURS | {"white", "black", "dark"}) and closed
@@ -4328,12 +4329,14 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
                     or (between and prev.entity.head.split()[-1] in APPOSED_HEADS
-                        and units[np.first].word in ("a", "an"))):  # "a third-party vehicle, a silver hatchback,"
+                        and units[np.first].word in ("a", "an"))  # "a third-party vehicle, a silver hatchback,"
+                    or _kind_set_off(units, prev, np, between)):
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
                         a.type = b.type
-                elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS:
+                elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS or \
+                        _kind_set_off(units, prev, np, between):
                     _fold(r, a, b)
                     folded_at[id(prev)] = np.index  # "Target is a pedestrian dummy (EPTa)": the dummy's short name
                 if b in r.entities:
@@ -4466,6 +4469,31 @@ def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounP
         return True
     entry = lexicon().phrases.get((tokens[k].base,)) or lexicon().phrases.get((tokens[k].word,))
     return not (tokens[k].word in ("and", "or", "a", "an", "the") or entry is not None and entry[0] == "agents")
+
+
+def _kind_apposed_at(units: list[Unit], k: int, current: list[Unit]) -> bool:
+    """The comma at k opens '..., a child dummy, crosses' after a general noun of that kind: an apposition."""
+    if not current or current[-1].category != "agents" or current[-1].base.split()[-1] not in GENERAL_NOUNS or \
+            current[-1].meaning in ("ego", "none", "generic") or k + 1 >= len(units) or units[k + 1].word not in ("a", "an"):
+        return False
+    for j in range(k + 2, min(k + 6, len(units) - 2)):
+        if units[j].category == "agents":
+            return units[j].meaning == current[-1].meaning and units[j + 1].category == "comma" and \
+                units[j + 2].category == "actions"
+        if units[j].category not in ("word", "behaviours", "numbers") or units[j].word in ("and", "or"):
+            return False
+    return False
+
+
+def _kind_set_off(units: list[Unit], prev: NounPhrase, np: NounPhrase, between: list[Unit]) -> bool:
+    """'A second pedestrian, a child dummy, crosses', 'a pedestrian, an elderly man, steps out': a general noun, then
+    one of its kind set off by commas before the verb, says what it is; no second agent ('a car, a van, and a bus
+    wait' is a list: 'and' follows)."""
+    after = np.index + 1
+    return not prev.entity.is_ego and not np.entity.is_ego and prev.entity.head.split()[-1] in GENERAL_NOUNS and \
+        prev.entity.type == np.entity.type and [u.category for u in between] == ["comma"] and \
+        units[np.first].word in ("a", "an") and after + 1 < len(units) and units[after].category == "comma" and \
+        units[after + 1].category == "actions"
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
