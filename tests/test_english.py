@@ -4991,3 +4991,40 @@ def test_a_general_noun_then_one_of_its_kind_set_off_by_commas_is_one_agent(prom
 
 def test_a_list_of_one_kind_is_still_a_list():
     assert [t for t, _, p in agents("A car, a van, and a taxi wait ahead of the ego.") if p != "ego"] == ["car"] * 3
+
+
+def test_a_testers_abbreviations_read_as_words():
+    scene = lower("2 cars incl. ego wait at a red TL, ego second in line. When the TL turns green ego turns right.")
+    assert "traffic_light" in scene.scenario.road.required_signals
+    stages = scene.scenario.stages
+    assert len(stages) == 2 and [a.action for a in stages[1].agents] == ["turn_right"], stages
+    assert sorted((a.type, a.action) for a in stages[0].agents) == [("car", "stop"), ("car", "stop")], stages
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego waits at a red light. When the traffic light turns green, the ego goes straight.",
+    "We sat at the red. Once the traffic signal changed to green we went straight on.",
+])
+def test_a_signal_named_in_full_starts_a_stage_as_the_light_does(prompt):
+    stages = lower(prompt).scenario.stages
+    assert [[a.action for a in s.agents] for s in stages] == [["stop"], ["go_straight"]], stages
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Can we show the car turning right at a junction while a cyclist waits on the corner?",
+     [("car", "turn_right", "ego"), ("cyclist", "stop", "at_the_destination")]),
+    ("Could we have our car stopping for a kid who runs out?",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_the_team_that_asks_can_we_show_is_not_the_ego(prompt, expected):
+    found = agents(prompt)
+    assert [a for a in found if a[2] == "ego"] == [e for e in expected if e[2] == "ego"], found
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego turns left at the junction. Two vans come the other way, so it has to wait.",
+    "The ego car turns left; maybe a couple of buses coming the other way so it has to hold for a gap.",
+])
+def test_it_after_a_counted_group_is_not_the_group(prompt):
+    found = agents(prompt)
+    assert all(a != "stop" for t, a, p in found if p != "ego"), found

@@ -4570,6 +4570,13 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         vehicles = [e for e in recent if not e.is_ego and e.type not in V.VULNERABLE_TYPES]
         if vehicles:  # "When I saw the lights. It was coming up behind me": the narrator is never 'it'
             return vehicles[-1]
+    subjects = list({id(e): e for e in previous_subject}.values())  # a subject may be listed twice
+    group = bool(subjects) and not any(e.is_ego for e in subjects) and sum(e.count or 1 for e in subjects) > 1 and \
+        len({e.type for e in subjects}) == 1
+    if units[i].word == "it" and not as_object and group:  # "a couple of cars coming the other way so it has to
+        # wait": 'it' is no group; the one thing named before them
+        single = [e for e in recent if e not in previous_subject and e.type not in V.VULNERABLE_TYPES]
+        return single[-1] if single else next((e for e in recent if e.is_ego), None)
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
         things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
         if not things and previous_subject:
