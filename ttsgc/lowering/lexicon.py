@@ -570,28 +570,6 @@ def _agent_kinds(words: list[str]) -> list[str]:
     return out
 
 
-COUNTED_GROUP = re.compile(r"\b(two|three|four|2|3|4) ((?:[a-z]+ ){0,2}?)(vehicles|cars|road users|agents|actors|"
-                           r"targets|others) \(([^()]{1,100})\)")
-GROUP_COUNTS = {"two": 2, "three": 3, "four": 4, "2": 2, "3": 3, "4": 4}
-MEMBER = re.compile(r"\b(?:an?|one) (?=[a-z])")
-
-
-def _members_in_brackets(text: str) -> str:
-    """'two oncoming vehicles (a bus, followed by a passenger car)': a counted group whose members the bracket names
-    one by one; each member is one of the group and carries what the group's words say of all ('oncoming')."""
-    def members(m: re.Match) -> str:
-        inside, count = m.group(4), GROUP_COUNTS[m.group(1)]
-        kinds = [k for k in _agent_kinds(re.findall(r"[a-z]+", inside)) if k != "none"]
-        if len(MEMBER.findall(inside)) != count or len(kinds) != count:
-            return m.group(0)
-        shared = m.group(2)
-        if not shared:
-            return inside
-        return MEMBER.sub(lambda a: ("an " if shared[0] in "aeiou" else "a ") + shared, inside)
-
-    return COUNTED_GROUP.sub(members, text)
-
-
 def _described_in_brackets(text: str) -> str:
     """'the car behind me (gray Ford Escape)', 'a pickup (silver Honda Civic, older gentleman driving)': a
     bracket after an agent that only says its make, colour or who drove it names no second agent."""
@@ -823,7 +801,6 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag
-    text = _members_in_brackets(text)
     text = _described_in_brackets(text)
     text = re.sub(r"\bwe (were|are|was) ((?:two|three|four|five|six|\d) (?:cars|vehicles))\b", r"\2 including us \1",
                   text)  # "we were three cars stopped at the light": the ego one of them
