@@ -5095,3 +5095,158 @@ def test_a_storyboards_later_act_is_a_later_stage(prompt, expected):
 def test_holding_at_a_stopping_place_is_standing_and_holding_a_speed_is_not():
     assert agents("The ego holds at the stop line while a cyclist crosses from the left.")[0] == ("car", "stop", "ego")
     assert agents("The lead car holds at 50 km/h.") == [("car", "go_straight", "ego"), ("car", "go_straight", "front")]
+
+
+# -- a safety driver's debrief, a study's staging ------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We were on the ring road behind a bus. The vehicle eased off to about 40 and held back.",
+     [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+    ("A lorry was double-parked in our lane and the vehicle just waited behind it, so I took over.",
+     [("car", "stop", "ego"), ("truck", "stop", "front")]),
+    ("Our second lap. A cyclist came up on our left and the vehicle slowed right down.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "left")]),
+])
+def test_a_crews_vehicle_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_vehicle_of_a_crew_stays_another_when_the_crew_names_other_vehicles_as_vehicles():
+    found = agents("We were parked when a vehicle came past us; the vehicle turned left at the corner.")
+    assert ("car", "turn_left", "road_of_left_turn") in found or any(
+        t == "car" and p != "ego" and a == "turn_left" for t, a, p in found), found
+
+
+@pytest.mark.parametrize("prompt", [
+    "A single confederate van is presented as oncoming traffic on the rural road.",
+    "On a straight road a truck appears as opposing traffic.",
+])
+def test_a_vehicle_cast_as_oncoming_traffic_is_oncoming(prompt):
+    assert [p for _, _, p in agents(prompt) if p != "ego"] == ["front_left"], agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "We held at the junction for an oncoming van. Once he'd cleared we completed the turn.",
+    "We waited for an oncoming lorry at the lights. Once it had vanished we made the left turn.",
+])
+def test_a_past_condition_without_a_comma_ends_where_we_act(prompt):
+    stages = lower(prompt).scenario.stages
+    assert len(stages) == 2 and [a.action for a in stages[1].agents] == ["turn_left"], stages
+    assert [a.action for a in stages[0].agents if not a.is_ego] == ["go_straight"], stages
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("once he'd cleared", "had"), ("we'd already stopped", "had"), ("i'd need a gap", "would"),
+    ("he'd stop there", "would"),
+])
+def test_d_after_a_pronoun_is_had_before_a_participle(text, expected):
+    assert expected in [t.word for t in tokenize(text)]
+
+
+@pytest.mark.parametrize("prompt, mover", [
+    ("We were following two vans when a pickup from the lane to our right squeezed in between us and them.",
+     ("car", "change_lane_to_left", "right")),
+    ("I was behind a bus when a taxi from the lane to my left nipped in between me and the bus.",
+     ("car", "change_lane_to_right", "left")),
+])
+def test_a_cut_in_between_the_ego_and_its_leaders_starts_beside_not_behind(prompt, mover):
+    assert mover in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, people", [
+    ("A school bus was stopped ahead on our right picking kids up; a cyclist passed us.", 0),
+    ("A coach stood at the kerb on the left letting passengers off, and we waited behind a van.", 0),
+    ("A bus picks up two children at the stop and they cross in front of the ego.", 2),
+])
+def test_the_people_a_vehicle_picks_up_or_sets_down_are_its_passengers(prompt, people):
+    found = agents(prompt)
+    assert sum(t == "pedestrian" for t, _, _ in found) == people and any(t == "bus" for t, _, _ in found), found
+
+
+@pytest.mark.parametrize("prompt, required, without", [
+    ("The ego waits at a crossroads without signals, stop or yield control.", (),
+     ("traffic_light", "stop", "yield")),
+    ("The ego waits at a junction with no signal, stop or give way control, then turns left.", (),
+     ("traffic_light", "stop", "yield")),
+    ("A T-junction under give-way control; the ego turns right onto the main road.", ("yield",), ()),
+    ("Side road stop-controlled, main road uncontrolled. The ego turns left out of the side road.", ("stop",), ()),
+    ("An uncontrolled junction; a van comes from the left.", (), ("traffic_light", "stop", "yield")),
+])
+def test_a_junctions_controls_as_a_traffic_engineer_lists_them(prompt, required, without):
+    spec = road(prompt)
+    assert set(spec.required_signals) == set(required) and set(spec.without_signals) == set(without), spec
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego waits to turn left while two oncoming vehicles (a lorry, followed by a taxi) pass through the junction.",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego"),
+      ("truck", "go_straight", "road_of_straight")]),
+    ("On a straight rural road the ego meets two oncoming vehicles (a van and a motorbike).",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_left"),
+      ("motorcycle", "go_straight", "front_left")]),
+])
+def test_a_counted_groups_members_named_in_brackets_share_its_words(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Participants follow a van on a two-lane road; the van brakes hard.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Study participants encounter a cyclist riding ahead of them in the same lane.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+])
+def test_a_studys_participants_in_the_plural_drive_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A pedestrian, an elderly man, crosses from the left in front of the ego.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
+    ("A second pedestrian, a child dummy, steps out from the right in front of the ego.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("A truck, a big fuel tanker, pulls out from the right lane in front of us.",
+     [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "front_right")]),
+])
+def test_a_general_noun_then_one_of_its_kind_set_off_by_commas_is_one_agent(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_list_of_one_kind_is_still_a_list():
+    assert [t for t, _, p in agents("A car, a van, and a taxi wait ahead of the ego.") if p != "ego"] == ["car"] * 3
+
+
+def test_a_testers_abbreviations_read_as_words():
+    scene = lower("2 cars incl. ego wait at a red TL, ego second in line. When the TL turns green ego turns right.")
+    assert "traffic_light" in scene.scenario.road.required_signals
+    stages = scene.scenario.stages
+    assert len(stages) == 2 and [a.action for a in stages[1].agents] == ["turn_right"], stages
+    assert sorted((a.type, a.action) for a in stages[0].agents) == [("car", "stop"), ("car", "stop")], stages
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego waits at a red light. When the traffic light turns green, the ego goes straight.",
+    "We sat at the red. Once the traffic signal changed to green we went straight on.",
+])
+def test_a_signal_named_in_full_starts_a_stage_as_the_light_does(prompt):
+    stages = lower(prompt).scenario.stages
+    assert [[a.action for a in s.agents] for s in stages] == [["stop"], ["go_straight"]], stages
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Can we show the car turning right at a junction while a cyclist waits on the corner?",
+     [("car", "turn_right", "ego"), ("cyclist", "stop", "at_the_destination")]),
+    ("Could we have our car stopping for a kid who runs out?",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_the_team_that_asks_can_we_show_is_not_the_ego(prompt, expected):
+    found = agents(prompt)
+    assert [a for a in found if a[2] == "ego"] == [e for e in expected if e[2] == "ego"], found
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego turns left at the junction. Two vans come the other way, so it has to wait.",
+    "The ego car turns left; maybe a couple of buses coming the other way so it has to hold for a gap.",
+])
+def test_it_after_a_counted_group_is_not_the_group(prompt):
+    found = agents(prompt)
+    assert all(a != "stop" for t, a, p in found if p != "ego"), found

@@ -767,12 +767,22 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"'ll\b", " will", text)
     text = re.sub(r"'ve\b", " have", text)
     text = re.sub(r"'m\b", " am", text)
+    text = re.sub(r"'d (?=(?:already |just |never |not |finally )?(?:\w+(?<!e)ed|been|gone|got|gotten|done|seen|"
+                  r"taken|driven|left|come through|ridden|run|made|pulled)\b)", " had ", text)  # "once he'd cleared",
+    # "we'd already stopped": a past told in the past ("I'd need", "he'd stop": would)
     text = re.sub(r"'d\b", " would", text)
+    text = re.sub(r"\bincl\.?(?=\s)", "including", text)  # a tester's notes: "3 cars incl. ego" (no sentence end)
+    text = re.sub(r"\bapprox\.?(?=\s)", "about", text)
+    text = re.sub(r"\btl(s?)\b", r"traffic light\1", text)  # "stopped at a red TL", "when the TL goes green"
     text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
     text = re.sub(r"\b(?:can|could|would|will)\s+(?:you|u)\s+(?:please\s+|pls\s+|plz\s+)?(?=(?:make|create|build|"
                   r"generate|give|show|simulate|set|write|do|add|put|design|produce|model|mock|spin|whip|knock|"
                   r"throw|come up|code|script|draft|prepare|include)\b)", " ", text)  # the addressee, not the ego
     text = re.sub(r"\b(?:i|we)\s+(?:want|need|would like|'d like)\s+(?:you|u)\s+to\b", " ", text)
+    text = re.sub(r"\b(?:can|could|shall|should|let)\s+(?:we|us)\s+(?:please\s+|maybe\s+|also\s+)?(?=(?:show|see|have|"
+                  r"get|make|create|build|add|include|simulate|test|try|put|set up|model|demo|do)\b"
+                  r"(?!\s+(?:it|this|that|them|these|those)\b))", " ", text)
+    # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
     text = re.sub(r"\b(?:one|two|three|some) of (?:them|those|these)[ ,]+(?:no|wait|sorry|i mean|no wait|actually)"
                   r"[ ,]+((?:both|all|two|three|four) of (?:them|those|these))\b", r"\1", text)

@@ -104,6 +104,7 @@ def read_narration(prompt: str) -> Narration:
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
+    text = _crews_vehicle(text, notes)
     text = _screenplay_driver(text, notes)
     text = _protagonist(text, notes)
     text = _storys_driver(text, notes)
@@ -453,6 +454,29 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
         text = re.sub(rf"\b{re.escape(name)}\b", "the ego", text)
     notes.append("read the narrator's driver as the ego")
     return _drivers_pronoun(text, notes)
+
+
+CREW = re.compile(r"\b(?:we|us|our)\b", re.I)
+ANY_VEHICLE = re.compile(r"\b(?:(the)\s+)?(?:[a-z-]+\s+)?vehicles?\b", re.I)
+THE_VEHICLE_ACTS = re.compile(r"\b[Tt]he vehicle\b(?!'s\b|\s+(?:ahead|in|on|to|behind|beside|next|alongside|from|"
+                              r"that|which|who|of|at|with|coming|going|approaching|travelling|traveling|driving|"
+                              r"parked|stopped)\b)")
+
+
+def _crews_vehicle(text: str, notes: list[str]) -> str:
+    """'We stayed in lane two and the vehicle eased off', 'a van was double-parked in our lane and the vehicle just
+    sat behind it, so I disengaged': a crew riding an automated vehicle ('we', a safety driver) speaks of it as 'the
+    vehicle' and of itself as 'we'; both are the ego. Only when no other vehicle is called a vehicle ('a vehicle',
+    'the other vehicle', 'vehicles') and 'the vehicle' is not placed ('the vehicle ahead')."""
+    if not CREW.search(text) or "the ego" in text:
+        return text
+    mentions = list(ANY_VEHICLE.finditer(text))
+    if not mentions or any(m.group(1) is None or m.group(0).lower() != "the vehicle" for m in mentions):
+        return text
+    if not THE_VEHICLE_ACTS.search(text):
+        return text
+    notes.append("read 'the vehicle' of a crew that says 'we' as the ego")
+    return THE_VEHICLE_ACTS.sub("the ego", text)
 
 
 STORY_DRIVING = (r"came|drove|pulled|turned|braked|slowed|crept|eased|steered|indicated|swung|rolled|edged|nosed|"

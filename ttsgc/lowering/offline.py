@@ -1096,6 +1096,7 @@ def _road(r: _Reader) -> RoadSpec:
             target.append(word)
 
     negated_in, removing = -1, False
+    uncontrolled: list[list[str]] = []
     for k, u in enumerate(units):
         if negated and u.tokens[0].sentence != negated_in:
             negated = False  # "no crossing. Road: mid-block": a denial ends with its sentence
@@ -1149,7 +1150,8 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "road" and u.meaning == "traffic_light" and [t.word for t in u.tokens] == ["signal"] and \
                 any(x.word in ("without", "no", "never") for x in units[max(0, k - 3):k]) and (any(
                     x.category == "actions" and x.tokens[0].sentence == u.tokens[0].sentence
-                    for x in units[max(0, k - 6):k]) or _beside_a_lane_move(units, k)):
+                    for x in units[max(0, k - 6):k]) or _beside_a_lane_move(units, k)) and \
+                not _controls_listed_after(units, k):
             r.mark(u)
             negated = False
             continue  # "turned left without any signal", "lurches into my lane -- no signal, nothing": no
@@ -1190,6 +1192,8 @@ def _road(r: _Reader) -> RoadSpec:
                 if negated:
                     put("stop", True)
                     put("yield", True)
+            elif meaning.startswith("!") and "+" in meaning:
+                uncontrolled.append(meaning[1:].split("+"))  # decided once every control said is known
             elif meaning.startswith("!"):
                 for word in meaning[1:].split("+"):
                     put(word, True)
@@ -1216,6 +1220,10 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
             continue
         negated = False
+    for controls in uncontrolled:
+        if not set(controls) & set(fields["required_signals"]):  # "minor arm under give-way control, major road
+            for word in controls:  # uncontrolled": the major road has priority; the junction has its give-way
+                put(word, True)
     kinds = [w for w in fields["required_objects"] if w in V.CROSSWALK_OBJECTS and w != "crosswalk"]
     if kinds and "crosswalk" in fields["required_objects"]:
         fields["required_objects"].remove("crosswalk")  # "a zebra crossing ... stops before the crossing": one
@@ -1231,13 +1239,21 @@ def _road(r: _Reader) -> RoadSpec:
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
 
 
+def _controls_listed_after(units: list[Unit], k: int) -> bool:
+    """'with no signal, stop or yield control': the signal heads a list of a junction's controls, no indicator."""
+    return k + 2 < len(units) and units[k + 1].word in ("or", "and", "nor", ",") and (
+        units[k + 2].category == "road" and units[k + 2].meaning in ("stop", "yield") or
+        units[k + 2].category == "actions" and units[k + 2].base == "stop" and _sign_said_once_for_two(units, k + 2))
+
+
 def _sign_said_once_for_two(units: list[Unit], k: int) -> bool:
-    """'stop or give way signs', 'stop and yield signs': a first sign named by its word alone, its noun said with
-    the second."""
+    """'stop or give way signs', 'stop and yield signs', 'signals, stop or yield control': a first sign named by its
+    word alone, its noun said with the second."""
     if k + 2 >= len(units) or units[k + 1].word not in ("or", "and", "nor", ","):
         return False
     nxt = units[k + 2]
-    return nxt.category == "road" and nxt.meaning in ("yield", "stop") and nxt.tokens[-1].word in ("sign", "signs")
+    return nxt.category == "road" and nxt.meaning in ("yield", "stop") and \
+        nxt.tokens[-1].word in ("sign", "signs", "control", "controlled")
 
 
 LANE_MOVES = {"cut_in", "lane_change", "lane_left", "lane_right"}
@@ -1896,6 +1912,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
+            labelled = labelled or not _has_verb(current) and _kind_apposed_at(units, k, current)
             ego_make = bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and \
                 len(current[-1].tokens) > 1 and nxt is not None and (
                     nxt.word in ("a", "an") or nxt.word in COLOURS | {"white", "black", "dark"}) and closed
@@ -2079,11 +2096,14 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
         return True  # "when the light flips to green the player turns left": the change said, then who acts
     pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
         u.category == "word" and u.word in SUBJECT_PRONOUNS
-    if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS for x in current)):
-        return False
+    if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS or _past_tense_verb(x)
+                                                                         for x in current)):
+        return False  # ("once he had cleared we went": a verb the lexicon does not know is still the verb)
     if current[-1].category == "word" and current[-1].word in COPULAS | AUXILIARIES:
         return False  # "once it is you ...": the pronoun belongs to the condition
-    return any(x.category == "actions" for x in units[k + 1:k + 3])
+    return any(x.category == "actions" for x in units[k + 1:k + 3]) or \
+        k + 1 < len(units) and _past_tense_verb(units[k + 1]) and \
+        any(x.category == "actions" for x in units[k + 2:k + 4])  # "once he'd cleared we completed the turn"
 
 
 OBLIGED = {"has", "have", "had", "needs", "need", "must", "to", "got", "gets", "then", "just", "will", "should"}
@@ -4464,12 +4484,14 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
                     or (between and prev.entity.head.split()[-1] in APPOSED_HEADS
-                        and units[np.first].word in ("a", "an"))):  # "a third-party vehicle, a silver hatchback,"
+                        and units[np.first].word in ("a", "an"))  # "a third-party vehicle, a silver hatchback,"
+                    or _kind_set_off(units, prev, np, between)):
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
                         a.type = b.type
-                elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS:
+                elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS or \
+                        _kind_set_off(units, prev, np, between):
                     _fold(r, a, b)
                     folded_at[id(prev)] = np.index  # "Target is a pedestrian dummy (EPTa)": the dummy's short name
                 if b in r.entities:
@@ -4620,6 +4642,31 @@ def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounP
     return not (tokens[k].word in ("and", "or", "a", "an", "the") or entry is not None and entry[0] == "agents")
 
 
+def _kind_apposed_at(units: list[Unit], k: int, current: list[Unit]) -> bool:
+    """The comma at k opens '..., a child dummy, crosses' after a general noun of that kind: an apposition."""
+    if not current or current[-1].category != "agents" or current[-1].base.split()[-1] not in GENERAL_NOUNS or \
+            current[-1].meaning in ("ego", "none", "generic") or k + 1 >= len(units) or units[k + 1].word not in ("a", "an"):
+        return False
+    for j in range(k + 2, min(k + 6, len(units) - 2)):
+        if units[j].category == "agents":
+            return units[j].meaning == current[-1].meaning and units[j + 1].category == "comma" and \
+                units[j + 2].category == "actions"
+        if units[j].category not in ("word", "behaviours", "numbers") or units[j].word in ("and", "or"):
+            return False
+    return False
+
+
+def _kind_set_off(units: list[Unit], prev: NounPhrase, np: NounPhrase, between: list[Unit]) -> bool:
+    """'A second pedestrian, a child dummy, crosses', 'a pedestrian, an elderly man, steps out': a general noun, then
+    one of its kind set off by commas before the verb, says what it is; no second agent ('a car, a van, and a bus
+    wait' is a list: 'and' follows)."""
+    after = np.index + 1
+    return not prev.entity.is_ego and not np.entity.is_ego and prev.entity.head.split()[-1] in GENERAL_NOUNS and \
+        prev.entity.type == np.entity.type and [u.category for u in between] == ["comma"] and \
+        units[np.first].word in ("a", "an") and after + 1 < len(units) and units[after].category == "comma" and \
+        units[after + 1].category == "actions"
+
+
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
     """Two noun phrases that name one agent ("a learner driver in a hatchback", "the vehicle behind me, a
     white Ford Transit,"): the first takes the second's type and what was said of it, and the second goes."""
@@ -4694,6 +4741,13 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         vehicles = [e for e in recent if not e.is_ego and e.type not in V.VULNERABLE_TYPES]
         if vehicles:  # "When I saw the lights. It was coming up behind me": the narrator is never 'it'
             return vehicles[-1]
+    subjects = list({id(e): e for e in previous_subject}.values())  # a subject may be listed twice
+    group = bool(subjects) and not any(e.is_ego for e in subjects) and sum(e.count or 1 for e in subjects) > 1 and \
+        len({e.type for e in subjects}) == 1
+    if units[i].word == "it" and not as_object and group:  # "a couple of cars coming the other way so it has to
+        # wait": 'it' is no group; the one thing named before them
+        single = [e for e in recent if e not in previous_subject and e.type not in V.VULNERABLE_TYPES]
+        return single[-1] if single else next((e for e in recent if e.is_ego), None)
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
         things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
         if not things and previous_subject:
@@ -4918,8 +4972,8 @@ def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
                     e.features.add("behind")
                 elif base in LEADING:
                     e.features.add("ahead")
-                elif base in OVERTAKING:
-                    e.features.add("overtaking")
+                elif base in OVERTAKING and verb.meaning != "cut_in":  # "squeezed in between us and them":
+                    e.features.add("overtaking")  # into the gap ahead of us, from beside; not past us from behind
             elif e.is_ego and not t.is_ego:
                 if base in FOLLOWING or base in OVERTAKING:
                     t.features.add("ahead")
