@@ -5250,3 +5250,14 @@ def test_the_team_that_asks_can_we_show_is_not_the_ego(prompt, expected):
 def test_it_after_a_counted_group_is_not_the_group(prompt):
     found = agents(prompt)
     assert all(a != "stop" for t, a, p in found if p != "ego"), found
+
+
+@pytest.mark.parametrize("prompt, noun", [
+    ("A lorry that I had been following for miles turned left.", ("truck", "turn_left", "front")),
+    ("A lorry that I had been following for miles then turned left.", ("truck", "turn_left", "front")),
+    ("A taxi that we were stuck behind suddenly swerved to the left.", ("car", "change_lane_to_left", "front")),
+    ("A van that I had passed earlier then overtook me.", ("car", "go_straight", "back_left")),
+])
+def test_the_verb_after_a_relative_with_its_own_subject_is_its_nouns(prompt, noun):
+    found = agents(prompt)
+    assert noun in found and len(found) == 2, found

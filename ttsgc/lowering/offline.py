@@ -1851,7 +1851,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "sequence" and u.meaning == "then" and u.word == "then" and _has_agent(current) and \
                 not any(x.category == "actions" and not x.tokens[0].word.endswith("ing") for x in current) and \
                 not any(x.category == "comma" for x in current) and \
-                nxt is not None and nxt.category == "actions":
+                nxt is not None and nxt.category == "actions" and \
+                not (link in RELATIVES and _main_verb_after_a_relative(current, units, k + 1)):
             r.mark(u)
             stage += 1  # "the taxi then sped past": its subject opens the later stage's clause; so does "a
             # motorcyclist coming along the main road from our right then turned left": a subject and its participle
@@ -1868,13 +1869,15 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             # "into the next lane": which lane, not what comes next
             r.mark(u)
             had_verb = _has_verb(current)
+            noun_acts = link in RELATIVES and nxt is not None and _main_verb_after_a_relative(current, units, k + 1)
+            # "a van that I had passed then overtook me": the van overtook, not the one who had passed it
             if out or current:
                 close()
                 stage += 1
             whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"}
             # "when the light goes green", "when it is safe": said in full
             joined_on = (prev_word in ("and", ",", "but") or u.tokens[0].word == "and" or u.word == "then" and
-                         nxt is not None and nxt.category == "actions" and had_verb) and \
+                         nxt is not None and nxt.category == "actions" and had_verb and not noun_acts) and \
                 not new_sentence and not _starts_subject(units, k + 1)  # "indicates right and then turns"; "a
             # van parked on the left then pulled out": the same subject goes on
             state = u.meaning == "once" and nxt is not None and nxt.category == "word" and \
@@ -1968,6 +1971,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 continue
             close(u.word)
             continue
+        if link in RELATIVES and _main_verb_after_a_relative(current, units, k):
+            close(",")  # "a lorry that I had been following for miles turned left": the lorry turned
         current.append(u)
         if condition and u.category == "actions" and _subject_and_verb_follow(units, k + 1):
             close()  # "after the cyclist has passed ego turns right": the condition ends at its verb
@@ -1977,6 +1982,23 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+RELATIVE_SUBJECTS = {"i", "we", "you", "he", "she", "they"}
+
+
+def _main_verb_after_a_relative(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'that I was following', 'which we had passed': a relative with its own subject and verb ends where a second
+    finite verb comes, which is its noun's ('a lorry that I had been following turned left')."""
+    u = units[k]
+    if u.category != "actions" or len(current) < 2 or current[0].category != "agents" or \
+            current[0].tokens[0].word not in RELATIVE_SUBJECTS:
+        return False
+    t = u.tokens[0]
+    if t.word == t.base or t.word.endswith("ing") or current[-1].word in AUXILIARIES | {"to", "had", "have", "has"}:
+        return False  # "that I saw pull out", "that I was following": still the relative's
+    return any(x.category in ("actions", "positions") or x.word in AUXILIARIES | {"had", "have", "has"}
+               for x in current[1:])
 
 
 def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
@@ -5359,11 +5381,15 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if subject:
             previous = subject
         if clause.antecedent is not None and not clause.antecedent.is_ego and clause.antecedent not in subject and \
-                k + 1 < len(clauses) and clauses[k + 1].link == "," and clauses[k + 1].units and \
+                k + 1 < len(clauses) and clauses[k + 1].link in (",", "") and clauses[k + 1].units and \
                 clauses[k + 1].units[0].category == "actions" and \
-                not clauses[k + 1].units[0].tokens[0].word.endswith("ing"):
-            # "a man, whom I now know to be its driver, walked out": the man did
+                not clauses[k + 1].units[0].tokens[0].word.endswith("ing") and \
+                clauses[k + 1].units[0].tokens[0].sentence == clause.units[-1].tokens[0].sentence:
+            # "a man, whom I now know to be its driver, walked out": the man did; so "the bus I was stuck behind
+            # finally pulled away", where the later stage opens on the bus's verb
             previous = [clause.antecedent]
+            if clauses[k + 1].link == "":
+                clauses[k + 1].link = "and"
         verbless = not _has_verb(clause.units)
         r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
