@@ -5261,3 +5261,15 @@ def test_it_after_a_counted_group_is_not_the_group(prompt):
 def test_the_verb_after_a_relative_with_its_own_subject_is_its_nouns(prompt, noun):
     found = agents(prompt)
     assert noun in found and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("A cyclist, defined here as anyone riding a bicycle or a scooter, rides past the ego on the left.",
+     "A cyclist rides past the ego on the left."),
+    ("We test an overtake, that is, a manoeuvre in which a car passes a slower truck, with a van behind the ego.",
+     "We test an overtake with a van behind the ego."),
+    ("The ego meets a blockage, which we define as a parked bus or lorry standing in the lane. A lorry is parked "
+     "ahead of the ego.", "A lorry is parked ahead of the ego."),
+])
+def test_a_definition_speaks_of_a_kind_and_names_nobody_in_the_scene(prompt, plain):
+    assert agents(prompt) == agents(plain), agents(prompt)

@@ -2347,6 +2347,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     t = u.tokens[0]
     if u.category != "comma" and _set_aside(tokens, u):
         return True
+    if _in_a_definition(tokens, u):
+        return True
     if u.category == "agents" and (_in_general(tokens, u) or _what_if(tokens, u) or
                                    _only_talked_about(tokens, u)):
         return True
@@ -2565,6 +2567,29 @@ def _set_aside(tokens: list[Token], u: Unit) -> bool:
         pieces = [sentence[e + 1:] for e in ends if e > k and e < len(words)] + [following]
         if any(_starts_with([x.word for x in piece], TURNED_DOWN) and not {x.base for x in piece} & _agent_nouns()
                for piece in pieces):
+            return True
+    return False
+
+
+DEFINING = (("defined", "as"), ("defined", "here", "as"), ("define", "as"), ("defines", "as"), ("that", "is", ","),
+            ("i", "e"), ("in", "other", "words"), ("by", "which", "we", "mean"), ("by", "which", "i", "mean"))
+
+
+def _in_a_definition(tokens: list[Token], u: Unit) -> bool:
+    """'a pedestrian, defined here as any road user travelling on foot, crosses', 'a cut-in, that is, a situation
+    in which a vehicle enters the ego's lane': what a word means, from the defining words to the next comma or the
+    sentence's end, speaks of a kind, of nobody in the scene."""
+    t = u.tokens[0]
+    sentence = _sentence(tokens, t.sentence)
+    at = t.index - sentence[0].index
+    words = [x.word for x in sentence]
+    for k in range(at + 1):
+        said = next((p for p in DEFINING if tuple(words[k:k + len(p)]) == p), None)
+        if said is None:
+            continue
+        start = k + len(said)
+        end = next((e for e in range(start, len(words)) if words[e] == ","), len(words))
+        if k <= at < end:
             return True
     return False
 
