@@ -5273,3 +5273,16 @@ def test_the_verb_after_a_relative_with_its_own_subject_is_its_nouns(prompt, nou
 ])
 def test_a_definition_speaks_of_a_kind_and_names_nobody_in_the_scene(prompt, plain):
     assert agents(prompt) == agents(plain), agents(prompt)
+
+
+def test_the_one_after_a_noun_is_that_noun_and_not_the_subject_before_it():
+    found = agents("The ego follows a bus, the one that was stopped at the kerb.")
+    assert ("car", "go_straight", "ego") in found and ("bus", "stop", "front") in found, found
+
+
+@pytest.mark.parametrize("prompt, noun", [
+    ("A bus - the one that was stopped at the kerb - moves off.", ("bus", "go_straight", "front")),
+    ("A taxi, which had stopped ahead of us, drives off.", ("car", "go_straight", "front")),
+])
+def test_a_relative_before_its_nouns_own_verb_says_what_it_was_not_what_it_does(prompt, noun):
+    assert noun in agents(prompt), agents(prompt)

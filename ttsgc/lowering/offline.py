@@ -1780,6 +1780,7 @@ class Clause:
     antecedent: Entity | None = None  # a relative clause's noun
     link: str = ""  # the word that opened it (and, while, which...)
     after_subordinate: bool = False  # follows an 'if' / 'when' clause: its subject is its own
+    background: bool = False  # a relative on a noun whose own verb follows it: what the noun was, not what it does
 
 
 def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
@@ -1942,7 +1943,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 current[-3].category == "agents" and not joined  # "a principal other vehicle (POV) stationary"
             relative_ends = link in RELATIVES and nxt is not None and nxt.category == "actions" and \
                 _has_agent(current)  # "a man, whom I know to be its driver, walked out": the man's verb
-            if (_has_verb(current) or condition or new_noun or joined or order or relative_ends) and not short_name \
+            the_one = _the_one_after(current, units, k + 1)  # "a bus, the one that was stopped, moves off"
+            if (_has_verb(current) or condition or new_noun or joined or order or relative_ends or the_one) \
+                    and not short_name \
                     and not ego_named \
                     and not bracketed and not ego_make and not _closed_apposition(current, units, k):
                 close(",")
@@ -1982,6 +1985,13 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+def _the_one_after(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """', the one that was stopped at the kerb,' after a noun: that noun again, said which one it is."""
+    return bool(current) and current[-1].category == "agents" and current[-1].meaning not in ("ego", "none") and \
+        k + 2 < len(units) and units[k].word == "the" and units[k + 1].word == "one" and \
+        units[k + 2].word in RELATIVES | {"with", "on", "in", "at", "parked", "stopped", "waiting"}
 
 
 RELATIVE_SUBJECTS = {"i", "we", "you", "he", "she", "they"}
@@ -3748,7 +3758,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject = [e for e in [_implied(r, units, stage, verbs, inside)] if e is not None]
     if any(e.includes_ego for e in subject):  # "three cars including the ego wait": the ego waits too
         subject = subject + [_ego_entity(r, stage)]
-    if clause.condition:
+    if clause.condition or clause.background:
         strength = 1
     else:
         strength = 2
@@ -5355,6 +5365,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     pending: list[Entity] = []
     header: list[Unit] = []
     for k, clause in enumerate(clauses):
+        if clause.link == "," and k > 0 and recent and len(clause.units) > 2 and \
+                _the_one_after(clauses[k - 1].units, clause.units, 0):
+            clause.antecedent = next((e for e in reversed(recent) if not e.is_ego), None)
+            r.mark(clause.units[0]), r.mark(clause.units[1])
+            clause.units = clause.units[2 + (clause.units[2].word in RELATIVES):]  # the noun before, again
         if clause.link in RELATIVES and recent:
             clause.antecedent = recent[-1]
             other = recent[-2] if recent[-1].is_ego and len(recent) > 1 else recent[-1]
@@ -5363,6 +5378,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                     clause.antecedent = _ego_entity(r, clause.stage)  # "in front of the ego, who stops"
                 elif recent[-1].is_ego and len(recent) > 1:
                     clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
+        if clause.antecedent is not None and not clause.antecedent.is_ego and k + 1 < len(clauses) and \
+                clauses[k + 1].link == "," and clauses[k + 1].units and clauses[k + 1].units[0].category == "actions" \
+                and clauses[k + 1].units[0].tokens[0].sentence == clause.units[-1].tokens[0].sentence and \
+                not clauses[k + 1].units[0].tokens[0].word.endswith("ing"):
+            clause.background = True  # "a bus, the one that was stopped at the kerb, moves off": it moves off
         if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
                 main_subject and _returns_to_the_main_subject(clause.units):
             previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
