@@ -4843,6 +4843,9 @@ def test_the_members_named_of_a_counted_group_are_what_the_group_was_said_to_be(
     ("A pedestrian, a child, crosses from the left.", "A pedestrian crosses from the left."),
     ("A car, a taxi, pulls out from the right in front of us.", "A car pulls out from the right in front of us."),
     ("A second cyclist, a courier, rides past on the left.", "A cyclist rides past on the left."),
+    ("A pedestrian (an elderly man with a stick) crosses in front of the ego.",
+     "A pedestrian crosses in front of the ego."),
+    ("A cyclist, a courier in a yellow jacket, rides past on the left.", "A cyclist rides past on the left."),
 ])
 def test_a_noun_of_the_same_kind_between_commas_before_the_verb_is_no_second_agent(prompt, plain):
     found = agents(prompt)
@@ -4861,6 +4864,7 @@ def test_the_members_listed_after_a_counted_group_are_no_new_agents(prompt, plai
 
 
 def test_a_list_that_does_not_close_after_a_counted_group_is_more_agents():
+    assert len(agents("A car, a taxi with its light on, a van and a bus wait.")) == 5
     assert len(agents("Two cars, a taxi and a van wait at the lights.")) == 5
     assert len(agents("Two cars are parked on the left. A taxi and a van pull out.")) == 5
 

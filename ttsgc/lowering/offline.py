@@ -2029,7 +2029,10 @@ def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
     named, count, j = 0, None, k + 1
     while j < len(units):
         x = units[j]
-        if x.category == "agents":
+        if named == wanted == 1 and x.category not in ("comma", "agents"):
+            if x.category in ("actions", "sequence"):
+                return False  # "a pedestrian (an elderly man with a stick) crosses": what he has, said on the way
+        elif x.category == "agents":
             if x.meaning != group.meaning or count is None:
                 return False
             named += count if x.tokens[-1].plural else 1
@@ -2043,6 +2046,14 @@ def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
             return False
         j += 1
     return False
+
+
+def _closed_after(units: list[Unit], i: int) -> bool:
+    """From the noun at i, a tail with no verb or other agent up to a comma, and the verb right after it."""
+    j = i + 1
+    while j < len(units) and units[j].category not in ("comma", "actions", "agents", "sequence"):
+        j += 1
+    return j + 1 < len(units) and units[j].category == "comma" and units[j + 1].category == "actions"
 
 
 def _a_place_said_after(out: list[Clause], current: list[Unit], link: str) -> bool:
@@ -4529,8 +4540,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
             closed = between and all(u.category == "comma" for u in between) and not prev.entity.is_ego and \
                 units[np.first].word in ("a", "an") and np.entity.type == prev.entity.type and \
-                np.index + 2 < len(units) and units[np.index + 1].category == "comma" and \
-                units[np.index + 2].category == "actions"
+                _closed_after(units, np.index)
             if closed:  # "a pedestrian, a child, crosses": the pedestrian is a child
                 prev.entity.aliases.add(np.entity.head)
                 if np.entity in r.entities:
