@@ -4874,6 +4874,8 @@ def test_a_list_that_does_not_close_after_a_counted_group_is_more_agents():
      "My car waits at the lights while a bus turns left."),
     ("The ego, which is a city bus, waits at the stop.", "The ego bus waits at the stop."),
     ("A vehicle, which was a white van, pulled out from the left.", "A white van pulled out from the left."),
+    ("A motorbike, which I think was a Honda, overtook me on the right.", "A motorbike overtook me on the right."),
+    ("A car, which I think was a taxi, stopped ahead of me.", "A car stopped ahead of me."),
 ])
 def test_the_noun_after_the_copula_of_a_relative_is_what_its_noun_is(prompt, plain):
     assert agents(prompt) == agents(plain), agents(prompt)

@@ -4572,12 +4572,19 @@ def _relative_says_what_it_is(r: _Reader, clause: Clause, phrases: list[NounPhra
     """'my car, which is a hatchback, waits', 'a man, who was a courier, stepped out': the noun after the copula
     of a relative is what the relative's noun is, no new agent; the relative's noun stays its subject."""
     units, noun = clause.units, clause.antecedent
-    if noun is None or len(units) < 2 or units[0].word not in COPULAS or not phrases or phrases[0].entity is None \
-            or not phrases[0].introduced or phrases[0].plural or units[phrases[0].first].word not in ("a", "an") \
-            or any(u.category == "actions" for u in units[:phrases[0].first]):
+    hedge = 2 if len(units) > 2 and units[0].word in ("i", "we") and units[1].word in HEDGES else 0
+    # "which I think was a Honda"
+    if noun is None or len(units) < hedge + 2 or units[hedge].word not in COPULAS or not phrases or \
+            phrases[-1].entity is None or not phrases[-1].introduced or phrases[-1].plural or \
+            phrases[-1].first != hedge + 1 or units[phrases[-1].first].word not in ("a", "an") or \
+            any(u.category == "actions" for u in units[:phrases[-1].first]):
         return phrases
-    said = phrases[0].entity
-    if noun.is_ego:
+    said = phrases[-1].entity
+    make = said.type == "car" and said.head not in GENERAL_NOUNS and noun.type in V.EGO_TYPES
+    if make and not noun.is_ego:  # "a motorbike, which I think was a Honda,": its maker's name
+        if said in r.entities:
+            r.entities.remove(said)
+    elif noun.is_ego:
         if said.type in V.EGO_TYPES and said.type != "car":
             noun.type = said.type
         if said in r.entities:
@@ -4587,7 +4594,11 @@ def _relative_says_what_it_is(r: _Reader, clause: Clause, phrases: list[NounPhra
     else:
         return phrases
     noun.aliases.add(said.head)
-    return phrases[1:]
+    return [np for np in phrases if np.entity is not said and not (hedge and np.entity is not None and
+                                                                   np.entity.is_ego)]
+
+
+HEDGES = {"think", "thought", "believe", "believed", "guess", "reckon", "suppose"}
 
 
 LIST_WORDS = {"a", "an", "and", "one", "two", "three", "four", "five", "six"}
