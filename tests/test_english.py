@@ -5281,6 +5281,18 @@ def test_a_definition_speaks_of_a_kind_and_names_nobody_in_the_scene(prompt, pla
     assert agents(prompt) == agents(plain), agents(prompt)
 
 
+@pytest.mark.parametrize("prompt, plain", [
+    ("A car, like the one that hit my neighbour's van last week, ran the red light from the left.",
+     "A car ran the red light from the left."),
+    ("A van pulled out in front of me, which reminded me of a crash I saw last year involving a bus.",
+     "A van pulled out in front of me."),
+    ("A taxi, similar to the one that clipped a cyclist outside my house, cut in from the right.",
+     "A taxi cut in from the right."),
+])
+def test_what_the_scene_is_compared_with_names_nobody_in_it(prompt, plain):
+    assert agents(prompt) == agents(plain), agents(prompt)
+
+
 def test_the_one_after_a_noun_is_that_noun_and_not_the_subject_before_it():
     found = agents("The ego follows a bus, the one that was stopped at the kerb.")
     assert ("car", "go_straight", "ego") in found and ("bus", "stop", "front") in found, found

@@ -2368,7 +2368,7 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     t = u.tokens[0]
     if u.category != "comma" and _set_aside(tokens, u):
         return True
-    if _in_a_definition(tokens, u):
+    if _in_an_aside(tokens, u):
         return True
     if u.category == "agents" and (_in_general(tokens, u) or _what_if(tokens, u) or
                                    _only_talked_about(tokens, u)):
@@ -2594,18 +2594,21 @@ def _set_aside(tokens: list[Token], u: Unit) -> bool:
 
 DEFINING = (("defined", "as"), ("defined", "here", "as"), ("define", "as"), ("defines", "as"), ("that", "is", ","),
             ("i", "e"), ("in", "other", "words"), ("by", "which", "we", "mean"), ("by", "which", "i", "mean"))
+COMPARING = (("like", "the", "one"), ("like", "the", "ones"), ("similar", "to", "the", "one"), ("just", "like", "the"),
+             ("reminded", "me", "of"), ("reminds", "me", "of"), ("the", "same", "as", "the", "one"))
 
 
-def _in_a_definition(tokens: list[Token], u: Unit) -> bool:
+def _in_an_aside(tokens: list[Token], u: Unit) -> bool:
     """'a pedestrian, defined here as any road user travelling on foot, crosses', 'a cut-in, that is, a situation
-    in which a vehicle enters the ego's lane': what a word means, from the defining words to the next comma or the
-    sentence's end, speaks of a kind, of nobody in the scene."""
+    in which a vehicle enters the ego's lane': what a word means; 'a car, like the one that hit my van last week,',
+    'which reminded me of a crash involving a bus': what the scene is compared with. From those words to the next
+    comma or the sentence's end it speaks of a kind or of another time, of nobody in the scene."""
     t = u.tokens[0]
     sentence = _sentence(tokens, t.sentence)
     at = t.index - sentence[0].index
     words = [x.word for x in sentence]
     for k in range(at + 1):
-        said = next((p for p in DEFINING if tuple(words[k:k + len(p)]) == p), None)
+        said = next((p for p in DEFINING + COMPARING if tuple(words[k:k + len(p)]) == p), None)
         if said is None:
             continue
         start = k + len(said)
