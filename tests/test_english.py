@@ -5263,6 +5263,7 @@ def test_it_after_a_counted_group_is_not_the_group(prompt):
     ("A lorry that I had been following for miles then turned left.", ("truck", "turn_left", "front")),
     ("A taxi that we were stuck behind suddenly swerved to the left.", ("car", "change_lane_to_left", "front")),
     ("A van that I had passed earlier then overtook me.", ("car", "go_straight", "back_left")),
+    ("A truck that the ego is following brakes suddenly.", ("truck", "stop", "front")),
 ])
 def test_the_verb_after_a_relative_with_its_own_subject_is_its_nouns(prompt, noun):
     found = agents(prompt)
@@ -5304,3 +5305,8 @@ def test_the_one_after_a_noun_is_that_noun_and_not_the_subject_before_it():
 ])
 def test_a_relative_before_its_nouns_own_verb_says_what_it_was_not_what_it_does(prompt, noun):
     assert noun in agents(prompt), agents(prompt)
+
+
+def test_a_participle_right_after_a_noun_inside_a_relative_stays_the_nouns():
+    found = agents("Make a scene in which the ego waits at the lights with a lorry stopped beside it in the left lane.")
+    assert ("truck", "stop", "left") in found and ("car", "stop", "ego") in found, found

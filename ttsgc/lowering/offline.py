@@ -2001,14 +2001,17 @@ def _main_verb_after_a_relative(current: list[Unit], units: list[Unit], k: int) 
     """'that I was following', 'which we had passed': a relative with its own subject and verb ends where a second
     finite verb comes, which is its noun's ('a lorry that I had been following turned left')."""
     u = units[k]
-    if u.category != "actions" or len(current) < 2 or current[0].category != "agents" or \
-            current[0].tokens[0].word not in RELATIVE_SUBJECTS:
+    first = 1 if current and current[0].word == "the" else 0  # "a truck that the ego is following brakes"
+    if u.category != "actions" or len(current) < first + 2 or current[first].category != "agents" or not (
+            current[first].tokens[0].word in RELATIVE_SUBJECTS or current[first].meaning == "ego"):
         return False
     t = u.tokens[0]
-    if t.word == t.base or t.word.endswith("ing") or current[-1].word in AUXILIARIES | {"to", "had", "have", "has"}:
-        return False  # "that I saw pull out", "that I was following": still the relative's
+    if t.word == t.base or t.word.endswith("ing") or current[-1].word in AUXILIARIES | {"to", "had", "have", "has"} \
+            or current[-1].category == "agents":
+        return False  # "that I saw pull out", "that I was following": still the relative's; "in which the ego
+        # waits with a van stopped beside it": the van's participle
     return any(x.category in ("actions", "positions") or x.word in AUXILIARIES | {"had", "have", "has"}
-               for x in current[1:])
+               for x in current[first + 1:])
 
 
 def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
