@@ -5250,3 +5250,13 @@ def test_the_team_that_asks_can_we_show_is_not_the_ego(prompt, expected):
 def test_it_after_a_counted_group_is_not_the_group(prompt):
     found = agents(prompt)
     assert all(a != "stop" for t, a, p in found if p != "ego"), found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The lead car brakes, SpeedAction target 0, and the ego follows it.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Ego drives at a target speed of 50 km/h behind a bus.", [("bus", "go_straight", "front"),
+                                                               ("car", "go_straight", "ego")]),
+])
+def test_an_actions_target_value_is_no_target_vehicle(prompt, expected):
+    assert agents(prompt) == expected
