@@ -5368,3 +5368,15 @@ def test_it_after_a_counted_group_alone_is_the_ego(prompt, expected):
 ])
 def test_one_named_as_included_in_a_counted_group_is_one_of_it(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, start", [
+    ("Two vans were parked on my right, one behind the other. A girl ran out from between them into the road in "
+     "front of me.", "front_right"),
+    ("There were two cars parked on my left-hand side, one behind the other. A young boy ran out from between them "
+     "into the road right in front of me.", "front_left"),
+    ("Two cars shall be parked on the right, one behind the other. A child shall emerge from between the parked "
+     "cars and cross in front of the ego.", "front_right"),
+])
+def test_a_crosser_from_between_a_group_named_before_comes_from_its_side(prompt, start):
+    assert ("pedestrian", "cross_the_road", start) in agents(prompt), agents(prompt)

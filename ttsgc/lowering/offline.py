@@ -3525,6 +3525,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             r.clause_mentions.append(np.entity)
             if not np.entity.is_ego and units[np.first].word == "one" and np.entity.count == 1:
                 r.listed_one = (np.entity, units[np.first].tokens[0].sentence)
+            if not np.introduced and np.first > 0 and units[np.first - 1].word == "between" and \
+                    np.entity.count > 1 and not np.entity.is_ego and np.entity.type not in V.VULNERABLE_TYPES:
+                np.entity.features.add("screening")  # "... from between the parked cars": those said before
         lo = i + 1
     for np in phrases:  # "a family of four", "a group of six cyclists" ends in its noun; "a convoy of 3"
         e, i = np.entity, np.index
@@ -3630,6 +3633,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 # ego and the other one
             if group:
                 phrases.append(NounPhrase(group[0], i, i, plural=True, group=group))
+                if u.word == "them" and i > 0 and units[i - 1].word == "between" and group[0].count > 1 and \
+                        group[0].type not in V.VULNERABLE_TYPES:
+                    group[0].features.add("screening")  # "two vans parked on my right ... ran out from between
+                    # them": the vans a crosser emerges from
         elif u.word == "former" or u.word == "latter":
             pool = [e for e in recent if not e.is_ego][-2:]
             if pool:
@@ -5634,7 +5641,9 @@ def _screens_on_the_crossers_side(r: _Reader) -> None:
         if "screening" not in e.features or e.is_ego:
             continue
         crosser = next((c for c in reversed(r.entities[:k]) if not c.is_ego), None)
-        if crosser is None or crosser.type not in V.VULNERABLE_TYPES:
+        if crosser is None or crosser.type not in V.VULNERABLE_TYPES:  # named after them ('from between them')
+            crosser = next((c for c in r.entities[k + 1:] if not c.is_ego and c.type in V.VULNERABLE_TYPES), None)
+        if crosser is None:
             continue
         side = next((s for s in SIDES if f"from_{s}" in crosser.features or f"side_{s}" in crosser.features), None)
         if side and not _side_of(e.features):
