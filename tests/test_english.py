@@ -5310,3 +5310,133 @@ def test_a_relative_before_its_nouns_own_verb_says_what_it_was_not_what_it_does(
 def test_a_participle_right_after_a_noun_inside_a_relative_stays_the_nouns():
     found = agents("Make a scene in which the ego waits at the lights with a lorry stopped beside it in the left lane.")
     assert ("truck", "stop", "left") in found and ("car", "stop", "ego") in found, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("At the lights one truck is waiting on my left, one on my right and one behind me.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "back"), ("truck", "stop", "left"),
+      ("truck", "stop", "right")]),
+    ("One motorbike rides ahead of us, one in the left lane and one behind us.",
+     [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back"), ("motorcycle", "go_straight", "front"),
+      ("motorcycle", "go_straight", "left")]),
+    ("One cyclist waits on the left and one on the right of the ego.",
+     [("car", "go_straight", "ego"), ("cyclist", "stop", "left"), ("cyclist", "stop", "right")]),
+    ("The ego is boxed in by one car in front, one on the left and one on the right.",
+     [("car", "block_the_ego", "front"), ("car", "block_the_ego", "left"), ("car", "block_the_ego", "right"),
+      ("car", "go_straight", "ego")]),
+])
+def test_a_list_of_one_items_names_one_more_agent_each(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego gets hemmed in on the motorway: one truck ahead, one on the left and one on the right.",
+     [("car", "go_straight", "ego"), ("truck", "block_the_ego", "front"), ("truck", "block_the_ego", "left"),
+      ("truck", "block_the_ego", "right")]),
+    ("My car got boxed in on the high street, one bus ahead of me and one van on my right.",
+     [("bus", "block_the_ego", "front"), ("car", "block_the_ego", "right"), ("car", "go_straight", "ego")]),
+    ("The ego gets boxed in on a two-lane road: a bus in front and a van on its left.",
+     [("bus", "block_the_ego", "front"), ("car", "block_the_ego", "left"), ("car", "go_straight", "ego")]),
+])
+def test_the_vehicles_named_around_an_ego_boxed_in_by_nobody_box_it_in(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego gets blocked in the left lane, a car overtakes it on the right.",
+    "The ego was cut off. Two cars overtook it on the right.",
+    "The ego is blocked. A car passes on the left.",
+])
+def test_a_vehicle_passing_an_ego_boxed_in_does_not_box_it_in(prompt):
+    assert all(action != "block_the_ego" for _, action, _ in agents(prompt)), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We were the second of three cars driving along the high street.",
+     [("car", "go_straight", "back"), ("car", "go_straight", "ego"), ("car", "go_straight", "front")]),
+    ("I was the third of four cars in the queue at the red light.",
+     [("car", "stop", "back"), ("car", "stop", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]),
+    ("I was the last of three cars waiting at the stop sign.",
+     [("car", "stop", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]),
+])
+def test_the_ego_placed_as_the_nth_of_a_counted_group_is_one_of_it(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two vans are parked behind us and one on the right.",
+     [("car", "go_straight", "ego"), ("car", "stop", "back"), ("car", "stop", "back"), ("car", "stop", "right")]),
+    ("three buses in front of me and one in the left lane, motorway, morning",
+     [("bus", "go_straight", "front"), ("bus", "go_straight", "front"), ("bus", "go_straight", "front"),
+      ("bus", "go_straight", "left"), ("car", "go_straight", "ego")]),
+])
+def test_one_placed_apart_from_a_group_placed_together_is_one_more(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two cars are parked ahead, one on the left and one on the right.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front_left"), ("car", "stop", "front_right")]),
+    ("Two cyclists ride ahead of the ego, one on the left and one on the right.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_left"),
+      ("cyclist", "go_straight", "front_right")]),
+])
+def test_a_group_shared_out_by_one_items_is_not_added_to(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two cars ahead of the ego, one in the left lane and one in the right lane.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_left"), ("car", "go_straight", "front_right")]),
+    ("Two trucks behind us, one on the left, one on the right.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "back_left"), ("truck", "go_straight", "back_right")]),
+    ("We got boxed in by two vans, one on our left and one in front of us.",
+     [("car", "block_the_ego", "front"), ("car", "block_the_ego", "left"), ("car", "go_straight", "ego")]),
+])
+def test_each_member_of_a_group_placed_ahead_or_behind_is_there_in_its_own_lane(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The lead car brakes, SpeedAction target 0, and the ego follows it.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Ego drives at a target speed of 50 km/h behind a bus.", [("bus", "go_straight", "front"),
+                                                               ("car", "go_straight", "ego")]),
+])
+def test_an_actions_target_value_is_no_target_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two trucks come the other way, so it has to wait.",
+     [("car", "stop", "ego"), ("truck", "go_straight", "front_left"), ("truck", "go_straight", "front_left")]),
+    ("The ego is at a junction. A couple of vans are coming the other way, so it has to wait for a gap.",
+     [("car", "go_straight", "road_of_straight"), ("car", "go_straight", "road_of_straight"),
+      ("car", "stop", "ego")]),
+])
+def test_it_after_a_counted_group_alone_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Three cars, including a taxi, wait at the red light ahead of the ego.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "stop", "front"), ("car", "stop", "front")]),
+    ("Two trucks including a tanker drive ahead of the ego.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front"), ("truck", "go_straight", "front")]),
+    ("Four pedestrians, including a child, cross in front of the ego.",
+     [("car", "go_straight", "ego")] + [("pedestrian", "cross_the_road", "front")] * 4),
+])
+def test_one_named_as_included_in_a_counted_group_is_one_of_it(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, start", [
+    ("Two vans were parked on my right, one behind the other. A girl ran out from between them into the road in "
+     "front of me.", "front_right"),
+    ("There were two cars parked on my left-hand side, one behind the other. A young boy ran out from between them "
+     "into the road right in front of me.", "front_left"),
+    ("Two cars shall be parked on the right, one behind the other. A child shall emerge from between the parked "
+     "cars and cross in front of the ego.", "front_right"),
+])
+def test_a_crosser_from_between_a_group_named_before_comes_from_its_side(prompt, start):
+    assert ("pedestrian", "cross_the_road", start) in agents(prompt), agents(prompt)

@@ -155,6 +155,10 @@ class Entity:
     includes_ego: bool = False  # "three cars including the ego": the ego shares what the group does
     aliases: set = field(default_factory=set)  # short names given in brackets ("(GVT)")
     headline: bool = False  # named bare in the text's first sentence, as a heading names it ("Jaywalker mid-block.")
+    named_of: "Entity | None" = None  # the counted group it is named as included in ("three cars, including a
+    # taxi"): where the group is and what it does, unless said of this one
+    listed_after: "Entity | None" = None  # the 'one ...' list item before it: does what that one does, unless
+    # said to do otherwise ("one cyclist waits on the left and one on the right")
 
 
 @dataclass
@@ -169,6 +173,8 @@ class _Reader:
     after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
+    listed_one: tuple | None = None  # (agent, sentence) last named as a 'one ...' list item: the list may go on
+    # past a clause break ("one car in front, one on the left and one on the right")
 
     def mark(self, unit: Unit) -> None:
         self.used.update(range(unit.start, unit.end))
@@ -3039,7 +3045,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if scenery and before >= lo and units[before].word == "between":
         entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
     entity.relative_to = vehicle_left  # at the vehicle it got out of
-    if not _absorbed(r, entity):
+    if not _included_member(r, units, first, entity) and not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
@@ -3136,7 +3142,13 @@ def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
     return bool(OPPOSITE_PLACES.get(nxt.meaning, set()) & e.features)
 
 
+PLACES_IN_A_GROUP = {"first", "second", "third", "fourth", "fifth", "sixth", "2nd", "3rd", "4th", "5th", "6th", "last",
+                     "middle"}
+
+
 def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None) -> bool:
+    if _ego_placed_among(units, head):
+        return True
     window = [u for u in units[head + 1: head + 5] if u.category != "comma"]
     if (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting",
                                                                              "inc", "with")
@@ -3156,6 +3168,14 @@ def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None
                 after.meaning == "ego":
             return True
     return False
+
+
+def _ego_placed_among(units: list[Unit], head: int) -> bool:
+    """'we were the second of three cars', 'I was the last of four cars in the queue': the ego is one of them."""
+    of = next((k for k in range(head - 1, max(0, head - 4), -1) if units[k].word == "of"), None)
+    if of is None or of < 2 or units[of - 1].word not in PLACES_IN_A_GROUP:
+        return False
+    return any(u.category == "agents" and u.meaning == "ego" for u in units[max(0, of - 5):of - 1])
 
 
 GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclist", "pedestrian", "person",
@@ -3214,6 +3234,20 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
         return [others[-1]] if others else ([last] if last else [])  # "the other vehicle": the one not the ego
     mentioned = [e for e in recent if e in singles]
     return [mentioned[-1]] if mentioned else [singles[-1]]
+
+
+def _included_member(r: _Reader, units: list[Unit], first: int, entity: Entity) -> bool:
+    """'three cars, including a taxi, wait': the taxi is one of the three, not a fourth. Never absorbs it (it is
+    still an agent of its own); the group it is taken from counts one less. Returns False."""
+    if not (first >= 1 and units[first - 1].word == "including") or entity.count != 1:
+        return False
+    group = next((e for e in reversed(r.entities) if not e.is_ego), None)
+    if group is None or group.count < 2 or not (group.type == entity.type or group.generic):
+        return False
+    group.count -= 1
+    group.group_open = max(0, group.group_open - 1)
+    entity.named_of = group
+    return False
 
 
 def _absorbed(r: _Reader, entity: Entity) -> bool:
@@ -3563,6 +3597,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         phrases.append(np)
         if np.entity is not None:
             r.clause_mentions.append(np.entity)
+            if not np.entity.is_ego and units[np.first].word == "one" and np.entity.count == 1:
+                r.listed_one = (np.entity, units[np.first].tokens[0].sentence)
+            if not np.introduced and np.first > 0 and units[np.first - 1].word == "between" and \
+                    np.entity.count > 1 and not np.entity.is_ego and np.entity.type not in V.VULNERABLE_TYPES:
+                np.entity.features.add("screening")  # "... from between the parked cars": those said before
         lo = i + 1
     for np in phrases:  # "a family of four", "a group of six cyclists" ends in its noun; "a convoy of 3"
         e, i = np.entity, np.index
@@ -3634,7 +3673,20 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if i > 3 and units[i - 3].word in COPULAS and units[i - 4].word in ("mine", "i", "we", "ours"):
                 continue  # "mine was the second one": the ego's place among them, no member of its own
             placed_one = _the_one_placed(r, units, i)  # "the one in front slammed on his brakes": that member
-            member = placed_one or _member(r, recent)  # "two cars, one in front and one behind"
+            extra = _one_more_of_a_placed_group(r, units, i, phrases) if placed_one is None else None
+            member = placed_one or (None if extra else _member(r, recent))  # "two cars, one in front and one behind"
+            if extra is not None:
+                r.notes.append(f"inferred: 'one' placed apart from the {extra.head}s placed before is one more")
+            listed = extra or (_enumerated_one(r, units, i, phrases) if member is None else None)
+            if listed is not None:
+                member = Entity(len(r.entities), listed.type, False, clause.stage, head=listed.head,
+                                listed_after=listed)
+                r.entities.append(member)  # "one car in front, one on the left": a list of single agents
+                r.listed_one = (member, u.tokens[0].sentence)
+                r.notes.append(f"inferred: 'one ...' in a list after 'one {listed.head}' is another {listed.head}")
+                r.mark(u)
+                phrases.append(NounPhrase(member, i, i, introduced=True))
+                continue
             if member is not None:
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i))
@@ -3655,12 +3707,18 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 # ego and the other one
             if group:
                 phrases.append(NounPhrase(group[0], i, i, plural=True, group=group))
+                if u.word == "them" and i > 0 and units[i - 1].word == "between" and group[0].count > 1 and \
+                        group[0].type not in V.VULNERABLE_TYPES:
+                    group[0].features.add("screening")  # "two vans parked on my right ... ran out from between
+                    # them": the vans a crosser emerges from
         elif u.word == "former" or u.word == "latter":
             pool = [e for e in recent if not e.is_ego][-2:]
             if pool:
                 phrases.append(NounPhrase(pool[0] if u.word == "former" else pool[-1], i, i))
         else:
             target = _pronoun(units, i, phrases, r.surface or previous_subject, recent)
+            if target is None and u.word == "it" and _a_group(r.surface or previous_subject):
+                target = _ego_entity(r, stage)  # "two trucks come the other way, so it has to wait": the ego
             if target is None and u.word in ("she", "he") and _on_foot_in_the_scene(units, i) and \
                     not any(e.type == "pedestrian" for e in r.entities):
                 target = Entity(len(r.entities), "pedestrian", False, stage, head=u.word)
@@ -4213,6 +4271,9 @@ def _place_in_queue(r: _Reader) -> None:
         with_ego = next((e for e in r.entities if e.includes_ego and e.count > 0 and not e.is_ego), None)
         mine = rest[:1] == ["one"] and i > 1 and words[i - 1] == "the" and words[i - 2] in COPULAS and \
             with_ego is not None  # "we were three cars ..., mine was the second one"
+        if rest[:1] == ["of"] and i > 1 and words[i - 1] == "the" and words[i - 2] in COPULAS and \
+                with_ego is not None and (n or w == "last"):  # "I was the second of three cars": mine
+            n, mine = n or with_ego.count + 1, True
         if w == "middle" and words[max(0, i - 2):i] == ["in", "the"] and with_ego is not None and \
                 with_ego.count % 2 == 0 and rest[:1] != ["of"]:
             n, mine = with_ego.count // 2 + 1, True  # "three cars including ours, we were in the middle": second
@@ -4426,6 +4487,56 @@ def _the_one_placed(r: _Reader, units: list[Unit], i: int) -> Entity | None:
     place = units[i + 1].meaning
     found = [e for e in r.entities if not e.is_ego and e.count > 0 and place in e.features]
     return found[-1] if len(found) == 1 or found and found[-1].parent is not None else None
+
+
+def _place_follows(units: list[Unit], i: int) -> bool:
+    """'one on the left', 'one on my right': a place comes right after the word."""
+    for u in units[i + 1:i + 4]:
+        if u.category == "positions":
+            return True
+        if u.word in (",", "and", ";") or u.category == "actions" or (u.category == "agents" and u.meaning != "ego"):
+            return False
+    return False
+
+
+GROUP_PLACES = {"ahead", "behind", "level", "side_left", "side_right", "road_straight", "road_left", "road_right",
+                "from_left", "from_right", "shoulder", "sidewalk", "destination"}
+
+
+def _one_more_of_a_placed_group(r: _Reader, units: list[Unit], i: int, phrases: list[NounPhrase]) -> Entity | None:
+    """'two trucks ahead of me and one in the lane on my right': the two were placed together already, and one
+    'one' cannot share out two, so it is one more truck; 'two cars, one in front and one behind' shares them out."""
+    if not _place_follows(units, i) or i > 0 and units[i - 1].word not in (",", "and", ";", "plus"):
+        return None  # "the second one close behind the first": a member
+    group = next((e for e in reversed(r.entities) if not e.is_ego and e.parent is None and e.count >= 1), None)
+    if group is None or group.count < 2 or group.generic or group.includes_ego or group.group_open != group.count \
+            or any(m.parent is group for m in r.entities):
+        return None
+    said = next((np for np in phrases if np.entity is group and np.index < i), None)
+    placed = bool(group.features & GROUP_PLACES) or said is not None and any(
+        u.category == "positions" for u in units[said.index + 1:i])
+    if not placed:
+        return None
+    sentence = units[i].tokens[0].sentence
+    rest = [u for u in r.units if u.start >= units[i].start and u.tokens[0].sentence == sentence]
+    ones = sum(u.word == "one" for u in rest)
+    if ones >= group.count or any(u.word in ("other", "rest", "another", "second", "others") for u in rest):
+        return None
+    return group
+
+
+def _enumerated_one(r: _Reader, units: list[Unit], i: int, phrases: list[NounPhrase]) -> Entity | None:
+    """'one car in front, one on the left, one on the right': with no counted group before, a list item 'one' +
+    place after an agent itself counted 'one' names one more of that kind, placed there."""
+    if not _place_follows(units, i):
+        return None
+    before = [np for np in phrases if np.index < i and np.entity is not None and not np.entity.is_ego]
+    if i > 0 and units[i - 1].word in (",", "and", ";") and before:
+        last = before[-1]
+        return last.entity if units[last.first].word == "one" and last.entity.count == 1 else None
+    if i == 0 and r.listed_one is not None and r.listed_one[1] == units[i].tokens[0].sentence:
+        return r.listed_one[0]  # the list goes on past a clause break
+    return None
 
 
 def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
@@ -4817,7 +4928,8 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     # "forcing it to stop": whom it forced
     named_here = [np.entity for np in phrases if np.index < i and np.entity is not None and not np.entity.is_ego
                   and np.entity.type not in V.VULNERABLE_TYPES]
-    if units[i].word == "it" and not as_object and named_here and phrases[0].entity is named_here[0]:
+    if units[i].word == "it" and not as_object and named_here and phrases[0].entity is named_here[0] and \
+            named_here[0].count == 1:
         return named_here[0]  # "a van in the left lane decides it wants our lane": the clause's own subject
     naming = i + 2 < len(units) and units[i + 1].word in COPULAS and units[i + 2].word in ("a", "an", "the", "one")
     if units[i].word == "it" and not as_object and not naming and previous_subject and all(
@@ -4825,10 +4937,7 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         vehicles = [e for e in recent if not e.is_ego and e.type not in V.VULNERABLE_TYPES]
         if vehicles:  # "When I saw the lights. It was coming up behind me": the narrator is never 'it'
             return vehicles[-1]
-    subjects = list({id(e): e for e in previous_subject}.values())  # a subject may be listed twice
-    group = bool(subjects) and not any(e.is_ego for e in subjects) and sum(e.count or 1 for e in subjects) > 1 and \
-        len({e.type for e in subjects}) == 1
-    if units[i].word == "it" and not as_object and group:  # "a couple of cars coming the other way so it has to
+    if units[i].word == "it" and not as_object and _a_group(previous_subject):  # "a couple of cars coming the other way so it has to
         # wait": 'it' is no group; the one thing named before them
         single = [e for e in recent if e not in previous_subject and e.type not in V.VULNERABLE_TYPES]
         return single[-1] if single else next((e for e in recent if e.is_ego), None)
@@ -4856,6 +4965,13 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
 
 
 SPEAKERS = {"i", "me", "we", "us", "you", "my", "our", "your"}
+
+
+def _a_group(subject: list[Entity]) -> bool:
+    """The subject is a group ('two trucks', 'a car and a car'), whom a later 'it' cannot name."""
+    subjects = list({id(e): e for e in subject}.values())  # a subject may be listed twice
+    return bool(subjects) and not any(e.is_ego for e in subjects) and sum(e.count or 1 for e in subjects) > 1 and \
+        len({e.type for e in subjects}) == 1
 
 
 def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
@@ -5391,6 +5507,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     recent: list[Entity] = []
     pending: list[Entity] = []
     header: list[Unit] = []
+    boxed: dict = {}  # sentence -> the ego's block action told in the passive there, with no one said to do it
     for k, clause in enumerate(clauses):
         if clause.link == "," and k > 0 and recent and len(clause.units) > 2 and \
                 _the_one_after(clauses[k - 1].units, clause.units, 0):
@@ -5418,6 +5535,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             previous = main_subject  # "held position until the pickup had passed, then completed the left": the
             # one who waited acts again, not the one waited for
         before = len(r.entities)
+        ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         subject = _read_clause(r, clause, previous, recent, pending)
         renamed = _set_between_commas(clause, pending, r.entities[before:])
         if renamed is not None:  # "A car, a red Ford, cut in front of me": the car, said again
@@ -5425,6 +5543,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             _fold(r, pending[0], renamed)
             subject = [pending[0] if e is renamed else e for e in subject]
             recent[:] = [pending[0] if e is renamed else e for e in recent]
+        _boxed_in_by_those_listed(r, clause, before, ego_blocked, boxed)
         if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS:
             main_subject = subject
         if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
@@ -5470,6 +5589,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _screens_on_the_crossers_side(r)
     _out_of_a_vehicle_on_a_side(r)
     _numbered_lane_sides(r)
+    _listed_items_share(r)
+    _included_members_share(r)
+    _members_keep_the_group_place(r)
     _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
@@ -5617,7 +5739,9 @@ def _screens_on_the_crossers_side(r: _Reader) -> None:
         if "screening" not in e.features or e.is_ego:
             continue
         crosser = next((c for c in reversed(r.entities[:k]) if not c.is_ego), None)
-        if crosser is None or crosser.type not in V.VULNERABLE_TYPES:
+        if crosser is None or crosser.type not in V.VULNERABLE_TYPES:  # named after them ('from between them')
+            crosser = next((c for c in r.entities[k + 1:] if not c.is_ego and c.type in V.VULNERABLE_TYPES), None)
+        if crosser is None:
             continue
         side = next((s for s in SIDES if f"from_{s}" in crosser.features or f"side_{s}" in crosser.features), None)
         if side and not _side_of(e.features):
@@ -5641,6 +5765,67 @@ def _out_of_a_vehicle_on_a_side(r: _Reader) -> None:
             ("left" if _KEEPS_LEFT.get() else "right") if vehicle.road_type == "shoulder" else None)
         if side is not None:
             e.features.add(f"from_{side}")
+
+
+def _boxed_in_by_those_listed(r: _Reader, clause: Clause, before: int, ego_blocked: list[Entity],
+                              boxed: dict) -> None:
+    """'The ego gets boxed in: one car in front, one on the left, one on the right': the ego cannot block itself;
+    the vehicles the same sentence goes on to name, doing nothing more than driving, are the ones boxing it in."""
+    if not clause.units:
+        return
+    sentence = clause.units[0].tokens[0].sentence
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is not None and ego not in ego_blocked and not any(not e.is_ego for e in r.entities[before:]):
+        told = [a for a in ego.actions if a[4] == "block" and a[0] == clause.stage]
+        if told:
+            boxed[sentence] = told[-1]
+        return
+    named = [e for e in r.entities[before:] if not e.is_ego and e.type not in V.VULNERABLE_TYPES]
+    listed = len(named) >= 2 or (r.listed_one is not None and r.listed_one[0] in named)
+    if sentence not in boxed and not (sentence - 1 in boxed and listed):
+        return  # "gets boxed in: one car in front, ...": a list after a colon (a sentence break here) names them
+    told = boxed.get(sentence, boxed.get(sentence - 1))
+    for e in named:
+        if all(a[4] == "move" for a in e.actions) and "overtaking" not in e.features:
+            e.actions.append((clause.stage,) + told[1:])
+            e.features.add("blocks")
+            r.notes.append(f"inferred: '{e.head}' is one of those boxing the ego in")
+
+
+def _members_keep_the_group_place(r: _Reader) -> None:
+    """'Two cars ahead of the ego, one in the left lane and one in the right lane': each is ahead, in its lane;
+    a member taken before the group's own place was read gets that place too, unless said ahead or behind."""
+    for e in r.entities:
+        group = e.parent
+        if group is None or e.features & {"ahead", "behind", "level"}:
+            continue
+        if not group.features & {"side_left", "side_right"}:
+            continue  # "one on my left and one in front of me", "two on the left, four behind us": the place of
+            # the ones left in the group, not one they all share
+        e.features |= group.features & {"ahead", "behind"}
+
+
+def _included_members_share(r: _Reader) -> None:
+    """'three cars, including a taxi, wait at the red light ahead': the taxi is where the three are and does what
+    they do, unless the text places it or has it act on its own."""
+    for e in r.entities:
+        group = e.named_of
+        if group is None:
+            continue
+        if not e.features:
+            e.features |= group.features
+        if not e.actions:
+            e.actions = list(group.actions)
+        e.behavior = e.behavior or group.behavior
+
+
+def _listed_items_share(r: _Reader) -> None:
+    """A 'one ...' list item said to do nothing itself does what the item before it does: in 'one cyclist waits
+    on the left and one on the right' both wait."""
+    for e in r.entities:
+        if e.listed_after is not None and not e.actions:
+            e.actions = list(e.listed_after.actions)
+            e.behavior = e.behavior or e.listed_after.behavior
 
 
 def _numbered_lane_sides(r: _Reader) -> None:
