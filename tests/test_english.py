@@ -5310,3 +5310,16 @@ def test_a_relative_before_its_nouns_own_verb_says_what_it_was_not_what_it_does(
 def test_a_participle_right_after_a_noun_inside_a_relative_stays_the_nouns():
     found = agents("Make a scene in which the ego waits at the lights with a lorry stopped beside it in the left lane.")
     assert ("truck", "stop", "left") in found and ("car", "stop", "ego") in found, found
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("A pedestrian, defined here as any road user travelling on foot, crosses the road from the right in front of "
+     "the ego.", ["car", "pedestrian"]),
+    ("The scenario is a blocking event, which we define as another road user occupying the path of the ego. A van "
+     "parked on the shoulder ahead pulls out and blocks the ego.", ["car", "car"]),
+    ("We consider a cut-in, that is, a situation in which a vehicle from an adjacent lane enters the ego lane. "
+     "Specifically, a black sedan in the left lane changes lanes to the right in front of the ego.", ["car", "car"]),
+    ("A car that is parked on the right pulls out in front of me.", ["car", "car"]),
+])
+def test_the_nouns_of_a_definition_are_nobody_in_the_scene(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

@@ -2503,6 +2503,8 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                 last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
+    if u.meaning not in ("ego", "none") and _in_a_definition(before):
+        return True  # "a pedestrian, defined here as any road user on foot,": what the word means, nobody
     if u.meaning not in ("ego", "none") and _met_in_a_rule(sentence, before, after):
         return True  # "when you see a police car stopped on the shoulder, change lanes": whoever one meets
     said_other = before[-2:-1] if before[-1:] and before[-1].word == "other" else before[-1:] if t.word == "other" \
@@ -2526,6 +2528,23 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
             lo, hi = sorted((t.index, nxt.index))
             if not any(y.word == "," for y in tokens[lo:hi]):
                 return True  # "was withdrawn in 2020": before the scene, in the same clause
+    return False
+
+
+DEFINING = (("defined", "as"), ("defined", "here", "as"), ("define", "as"), ("defines", "as"), ("that", "is", ","),
+            ("in", "other", "words"), ("by", "which", "we", "mean"), ("we", "mean"), ("refers", "to"), ("refer", "to"),
+            ("meaning",), ("understood", "as"), ("is", "defined", "as"))
+
+
+def _in_a_definition(before: list[Token]) -> bool:
+    """'a blocking event, which we define as another road user occupying the path', 'a cut-in, that is, a
+    situation in which a vehicle enters the lane': the nouns of a definition say what a word means; the scene's
+    own agents are named outside it. The definition runs from its marker to the next comma."""
+    words = [x.word for x in before]
+    for k in range(len(words)):
+        marker = next((p for p in DEFINING if tuple(words[k:k + len(p)]) == p), None)
+        if marker is not None and len(words) - (k + len(marker)) <= 8 and "," not in words[k + len(marker):]:
+            return True
     return False
 
 
