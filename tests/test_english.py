@@ -5323,3 +5323,14 @@ def test_a_participle_right_after_a_noun_inside_a_relative_stays_the_nouns():
 ])
 def test_the_nouns_of_a_definition_are_nobody_in_the_scene(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("This scenario examines the response of the ego to an approaching emergency vehicle. A police car approaches "
+     "at high speed from behind in the left lane.", ["car", "police"]),
+    ("I want the emergency vehicle moment: a fire truck comes up behind us with the sirens going.",
+     ["car", "firetruck"]),
+    ("An emergency vehicle approaches from behind. A cyclist rides on my right.", ["ambulance", "car", "cyclist"]),
+])
+def test_a_kind_named_before_one_agent_of_it_is_that_agent(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

@@ -30,8 +30,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, compound_heads, crews, lexicon,
-                                    loose_names, matches, read_number, tokenize)
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, categories, compound_heads, crews,
+                                    lexicon, loose_names, matches, read_number, tokenize)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -3058,7 +3058,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if scenery and before >= lo and units[before].word == "between":
         entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
     entity.relative_to = vehicle_left  # at the vehicle it got out of
-    if not _absorbed(r, entity):
+    named_as_a_kind = _named_as_a_kind(r, entity)
+    if named_as_a_kind is not None:  # "an approaching emergency vehicle ... A police car approaches": that one
+        named_as_a_kind.type, named_as_a_kind.head = entity.type, entity.head
+        named_as_a_kind.aliases |= entity.aliases
+        entity = named_as_a_kind
+    elif not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
@@ -3233,6 +3238,16 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
         return [others[-1]] if others else ([last] if last else [])  # "the other vehicle": the one not the ego
     mentioned = [e for e in recent if e in singles]
     return [mentioned[-1]] if mentioned else [singles[-1]]
+
+
+def _named_as_a_kind(r: _Reader, entity: Entity) -> Entity | None:
+    """The one agent named before only by the kind the new one is of ('the emergency vehicle moment ... a fire truck
+    comes up behind us'); none when two of that kind were named, or the new one is counted."""
+    if entity.count != 1 or entity.label:
+        return None
+    kinds = [e for e in r.entities if not e.is_ego and e.count == 1 and e.parent is None and not e.label and
+             entity.type in categories().get(e.head, frozenset()) and e.type != entity.type]
+    return kinds[0] if len(kinds) == 1 else None
 
 
 def _absorbed(r: _Reader, entity: Entity) -> bool:
