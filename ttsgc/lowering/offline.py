@@ -4414,7 +4414,29 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
         return entity
     if cutting and named:
         return None  # "Double cut-in on a motorway ...": the name of the case, not the ego's doing
+    named_otherwise = _named_by_an_unknown_noun(r, units, verbs[0])
+    if named_otherwise is not None:
+        return named_otherwise  # "A taxi pulled out. The cabbie then stopped": the taxi, by a word not known
     return _ego_entity(r, stage)
+
+
+def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entity | None:
+    """'A taxi pulled out. The cabbie then stopped', 'A tractor was ahead. The farmer turned left': a subject said
+    definitely by a noun the lexicon does not know, after another agent was named, names that agent (the last one
+    named) again, and not the ego."""
+    tokens = r.tokens
+    k = units[verb].start - 1
+    while k >= 0 and (tokens[k].word in ("then", "now", "also", "still", "suddenly", "just", "finally") or
+                      tokens[k].word.endswith("ly") and len(tokens[k].word) > 4):
+        k -= 1
+    if k < 1 or tokens[k - 1].word != "the" or tokens[k].sentence != tokens[units[verb].start].sentence:
+        return None
+    word = tokens[k]
+    if word.word in lexicon().vocabulary or word.word in lexicon().function_words or word.misspelt or \
+            word.word.endswith(("ly", "ing", "ed", "s")) or len(word.word) < 3 or not word.word.isalpha():
+        return None
+    others = [e for e in r.entities if not e.is_ego and e.count == 1]
+    return others[-1] if others else None
 
 
 GROUP_NOUNS = {"family", "group", "crowd", "party", "gang", "bunch", "convoy", "column", "pack", "couple", "line",
