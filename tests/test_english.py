@@ -5342,5 +5342,15 @@ def test_a_kind_named_before_one_agent_of_it_is_that_agent(prompt, kinds):
     ("A BMW pulled out from the left. The Beemer then stopped.", ("car", "go_straight", "ego")),
 ])
 def test_a_subject_named_by_a_noun_not_known_is_the_agent_named_before_not_the_ego(prompt, expected):
+    """(The cabbie and the Beemer are known words too; the last sentence is read the same either way.)"""
     found = agents(prompt)
     assert expected in found and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A learner was ahead of me. The L-plater stalled at the lights.", [("car", "go_straight", "ego"),
+                                                                        ("car", "stop", "front")]),
+    ("A Beemer cut in front of me.", [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+])
+def test_nicknames_of_a_car_name_a_car(prompt, expected):
+    assert agents(prompt) == expected
