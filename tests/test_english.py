@@ -5337,12 +5337,10 @@ def test_a_kind_named_before_one_agent_of_it_is_that_agent(prompt, kinds):
 
 
 @pytest.mark.parametrize("prompt, expected", [
-    ("A taxi pulled out. The cabbie then stopped in front of me.", ("car", "go_straight", "ego")),
+    ("A van pulled out. The courier then stopped in front of me.", ("car", "go_straight", "ego")),
     ("A tractor was ahead. The farmer then turned left.", ("truck", "turn_left", "front")),
-    ("A BMW pulled out from the left. The Beemer then stopped.", ("car", "go_straight", "ego")),
 ])
 def test_a_subject_named_by_a_noun_not_known_is_the_agent_named_before_not_the_ego(prompt, expected):
-    """(The cabbie and the Beemer are known words too; the last sentence is read the same either way.)"""
     found = agents(prompt)
     assert expected in found and len(found) == 2, found
 

@@ -4421,9 +4421,9 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
 
 
 def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entity | None:
-    """'A taxi pulled out. The cabbie then stopped', 'A tractor was ahead. The farmer turned left': a subject said
-    definitely by a noun the lexicon does not know, after another agent was named, names that agent (the last one
-    named) again, and not the ego."""
+    """'A van pulled out. The courier then stopped', 'A tractor was ahead. The farmer turned left': a subject said
+    definitely by a noun the lexicon does not know as a word of its own, after another agent was named, names that
+    agent (the last one named) again, and not the ego."""
     tokens = r.tokens
     k = units[verb].start - 1
     while k >= 0 and (tokens[k].word in ("then", "now", "also", "still", "suddenly", "just", "finally") or
@@ -4432,7 +4432,8 @@ def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entit
     if k < 1 or tokens[k - 1].word != "the" or tokens[k].sentence != tokens[units[verb].start].sentence:
         return None
     word = tokens[k]
-    if word.word in lexicon().vocabulary or word.word in lexicon().function_words or word.misspelt or \
+    if (word.word,) in lexicon().phrases or (word.base,) in lexicon().phrases or \
+            word.word in lexicon().function_words or word.misspelt or \
             word.word.endswith(("ly", "ing", "ed", "s")) or len(word.word) < 3 or not word.word.isalpha():
         return None
     others = [e for e in r.entities if not e.is_ego and e.count == 1]
