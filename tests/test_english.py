@@ -5352,3 +5352,9 @@ def test_a_subject_named_by_a_noun_not_known_is_the_agent_named_before_not_the_e
 ])
 def test_nicknames_of_a_car_name_a_car(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_noun_not_known_after_a_copula_is_no_subject():
+    found = agents("Our car is sitting at a signalised intersection and it wants to turn left. And there's an oncoming "
+                   "pickup coming straight through. That's the whole unprotected-left problem in one sentence.")
+    assert ("car", "go_straight", "road_of_straight") in found, found

@@ -4431,6 +4431,9 @@ def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entit
         k -= 1
     if k < 1 or tokens[k - 1].word != "the" or tokens[k].sentence != tokens[units[verb].start].sentence:
         return None
+    if k >= 2 and tokens[k - 2].sentence == tokens[k].sentence and tokens[k - 2].word not in (
+            ",", "and", "but", "so", "then", "when", "while", "as", "until", "before", "after"):
+        return None  # the subject starts its clause ("that's the whole unprotected-left problem" is no subject)
     word = tokens[k]
     if (word.word,) in lexicon().phrases or (word.base,) in lexicon().phrases or \
             word.word in lexicon().function_words or word.misspelt or \
