@@ -3246,7 +3246,8 @@ def _named_as_a_kind(r: _Reader, entity: Entity) -> Entity | None:
     if entity.count != 1 or entity.label:
         return None
     kinds = [e for e in r.entities if not e.is_ego and e.count == 1 and e.parent is None and not e.label and
-             entity.type in categories().get(e.head, frozenset()) and e.type != entity.type]
+             entity.type in categories().get(e.head, frozenset()) and e.type != entity.type
+             and e not in r.clause_mentions]  # (in one clause, "VRU (cyclist, ...)" is an apposition's)
     return kinds[0] if len(kinds) == 1 else None
 
 
