@@ -5358,3 +5358,12 @@ def test_a_noun_not_known_after_a_copula_is_no_subject():
     found = agents("Our car is sitting at a signalised intersection and it wants to turn left. And there's an oncoming "
                    "pickup coming straight through. That's the whole unprotected-left problem in one sentence.")
     assert ("car", "go_straight", "road_of_straight") in found, found
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("Pickup ahead of me. Truck braked suddenly.", ["car", "car"]),
+    ("Motorbike ahead of me. Bike swerved left.", ["car", "motorcycle"]),
+    ("Car ahead of me. Truck behind me honked.", ["car", "car", "truck"]),
+])
+def test_a_bare_loose_name_in_notes_names_the_vehicle_it_fits(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

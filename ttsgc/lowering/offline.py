@@ -2936,6 +2936,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
                     and e.count == 1 for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
+    loose = loose_names().get(u.base, frozenset())
+    if bare and loose and not any(e.type == kind and not e.is_ego for e in r.entities) and any(
+            not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) for e in r.entities):
+        definite = True  # "Pickup ahead of me. Truck braked": the pickup, in note style
     if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
         definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
     if bare and u.base in ("driver", "rider") and any(not e.is_ego and e.type not in V.VULNERABLE_TYPES
