@@ -5440,3 +5440,60 @@ def test_one_named_as_included_in_a_counted_group_is_one_of_it(prompt, expected)
 ])
 def test_a_crosser_from_between_a_group_named_before_comes_from_its_side(prompt, start):
     assert ("pedestrian", "cross_the_road", start) in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("A pedestrian, defined here as any road user travelling on foot, crosses the road from the right in front of "
+     "the ego.", ["car", "pedestrian"]),
+    ("The scenario is a blocking event, which we define as another road user occupying the path of the ego. A van "
+     "parked on the shoulder ahead pulls out and blocks the ego.", ["car", "car"]),
+    ("We consider a cut-in, that is, a situation in which a vehicle from an adjacent lane enters the ego lane. "
+     "Specifically, a black sedan in the left lane changes lanes to the right in front of the ego.", ["car", "car"]),
+    ("A car that is parked on the right pulls out in front of me.", ["car", "car"]),
+])
+def test_the_nouns_of_a_definition_are_nobody_in_the_scene(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("This scenario examines the response of the ego to an approaching emergency vehicle. A police car approaches "
+     "at high speed from behind in the left lane.", ["car", "police"]),
+    ("I want the emergency vehicle moment: a fire truck comes up behind us with the sirens going.",
+     ["car", "firetruck"]),
+    ("An emergency vehicle approaches from behind. A cyclist rides on my right.", ["ambulance", "car", "cyclist"]),
+])
+def test_a_kind_named_before_one_agent_of_it_is_that_agent(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van pulled out. The courier then stopped in front of me.", ("car", "go_straight", "ego")),
+    ("A tractor was ahead. The farmer then turned left.", ("truck", "turn_left", "front")),
+])
+def test_a_subject_named_by_a_noun_not_known_is_the_agent_named_before_not_the_ego(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and len(found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A learner was ahead of me. The L-plater stalled at the lights.", [("car", "go_straight", "ego"),
+                                                                        ("car", "stop", "front")]),
+    ("A Beemer cut in front of me.", [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+])
+def test_nicknames_of_a_car_name_a_car(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_noun_not_known_after_a_copula_is_no_subject():
+    found = agents("Our car is sitting at a signalised intersection and it wants to turn left. And there's an oncoming "
+                   "pickup coming straight through. That's the whole unprotected-left problem in one sentence.")
+    assert ("car", "go_straight", "road_of_straight") in found, found
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("Pickup ahead of me. Truck braked suddenly.", ["car", "car"]),
+    ("Motorbike ahead of me. Bike swerved left.", ["car", "motorcycle"]),
+    ("Car ahead of me. Truck behind me honked.", ["car", "car", "truck"]),
+])
+def test_a_bare_loose_name_in_notes_names_the_vehicle_it_fits(prompt, kinds):
+    assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)

@@ -205,6 +205,15 @@ def compound_heads() -> frozenset[str]:
 
 
 @lru_cache(maxsize=1)
+def categories() -> dict[str, frozenset[str]]:
+    """categories.txt: a noun naming a kind of agent -> the agent types it covers ('emergency vehicle': police...)."""
+    found: dict = {}
+    for category, words in _entries("categories"):
+        found.setdefault(category, set()).update(words)
+    return {category: frozenset(types) for category, types in found.items()}
+
+
+@lru_cache(maxsize=1)
 def loose_names() -> dict[str, frozenset[str]]:
     """loose_names.txt: a noun of one type -> the first names of agents of another type it names again ('a
     pickup ... the truck', 'a motorbike ... the bike')."""

@@ -30,8 +30,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, compound_heads, crews, lexicon,
-                                    loose_names, matches, read_number, tokenize)
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, categories, compound_heads, crews,
+                                    lexicon, loose_names, matches, read_number, tokenize)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -2509,6 +2509,8 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                 last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
+    if u.meaning not in ("ego", "none") and _in_a_definition(before):
+        return True  # "a pedestrian, defined here as any road user on foot,": what the word means, nobody
     if u.meaning not in ("ego", "none") and _met_in_a_rule(sentence, before, after):
         return True  # "when you see a police car stopped on the shoulder, change lanes": whoever one meets
     said_other = before[-2:-1] if before[-1:] and before[-1].word == "other" else before[-1:] if t.word == "other" \
@@ -2532,6 +2534,23 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
             lo, hi = sorted((t.index, nxt.index))
             if not any(y.word == "," for y in tokens[lo:hi]):
                 return True  # "was withdrawn in 2020": before the scene, in the same clause
+    return False
+
+
+DEFINING = (("defined", "as"), ("defined", "here", "as"), ("define", "as"), ("defines", "as"), ("that", "is", ","),
+            ("in", "other", "words"), ("by", "which", "we", "mean"), ("we", "mean"), ("refers", "to"), ("refer", "to"),
+            ("meaning",), ("understood", "as"), ("is", "defined", "as"))
+
+
+def _in_a_definition(before: list[Token]) -> bool:
+    """'a blocking event, which we define as another road user occupying the path', 'a cut-in, that is, a
+    situation in which a vehicle enters the lane': the nouns of a definition say what a word means; the scene's
+    own agents are named outside it. The definition runs from its marker to the next comma."""
+    words = [x.word for x in before]
+    for k in range(len(words)):
+        marker = next((p for p in DEFINING if tuple(words[k:k + len(p)]) == p), None)
+        if marker is not None and len(words) - (k + len(marker)) <= 8 and "," not in words[k + len(marker):]:
+            return True
     return False
 
 
@@ -2923,6 +2942,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
                     and e.count == 1 for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
+    loose = loose_names().get(u.base, frozenset())
+    if bare and loose and not any(e.type == kind and not e.is_ego for e in r.entities) and any(
+            not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) for e in r.entities):
+        definite = True  # "Pickup ahead of me. Truck braked": the pickup, in note style
     if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
         definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
     if bare and u.base in ("driver", "rider") and any(not e.is_ego and e.type not in V.VULNERABLE_TYPES
@@ -3045,7 +3068,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if scenery and before >= lo and units[before].word == "between":
         entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
     entity.relative_to = vehicle_left  # at the vehicle it got out of
-    if not _included_member(r, units, first, entity) and not _absorbed(r, entity):
+    named_as_a_kind = _named_as_a_kind(r, entity)
+    if named_as_a_kind is not None:  # "an approaching emergency vehicle ... A police car approaches": that one
+        named_as_a_kind.type, named_as_a_kind.head = entity.type, entity.head
+        named_as_a_kind.aliases |= entity.aliases
+        entity = named_as_a_kind
+    elif not _included_member(r, units, first, entity) and not _absorbed(r, entity):
         r.entities.append(entity)
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
@@ -3248,6 +3276,17 @@ def _included_member(r: _Reader, units: list[Unit], first: int, entity: Entity) 
     group.group_open = max(0, group.group_open - 1)
     entity.named_of = group
     return False
+
+
+def _named_as_a_kind(r: _Reader, entity: Entity) -> Entity | None:
+    """The one agent named before only by the kind the new one is of ('the emergency vehicle moment ... a fire truck
+    comes up behind us'); none when two of that kind were named, or the new one is counted."""
+    if entity.count != 1 or entity.label:
+        return None
+    kinds = [e for e in r.entities if not e.is_ego and e.count == 1 and e.parent is None and not e.label and
+             entity.type in categories().get(e.head, frozenset()) and e.type != entity.type
+             and e not in r.clause_mentions]  # (in one clause, "VRU (cyclist, ...)" is an apposition's)
+    return kinds[0] if len(kinds) == 1 else None
 
 
 def _absorbed(r: _Reader, entity: Entity) -> bool:
@@ -4441,7 +4480,33 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
         return entity
     if cutting and named:
         return None  # "Double cut-in on a motorway ...": the name of the case, not the ego's doing
+    named_otherwise = _named_by_an_unknown_noun(r, units, verbs[0])
+    if named_otherwise is not None:
+        return named_otherwise  # "A taxi pulled out. The cabbie then stopped": the taxi, by a word not known
     return _ego_entity(r, stage)
+
+
+def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entity | None:
+    """'A van pulled out. The courier then stopped', 'A tractor was ahead. The farmer turned left': a subject said
+    definitely by a noun the lexicon does not know as a word of its own, after another agent was named, names that
+    agent (the last one named) again, and not the ego."""
+    tokens = r.tokens
+    k = units[verb].start - 1
+    while k >= 0 and (tokens[k].word in ("then", "now", "also", "still", "suddenly", "just", "finally") or
+                      tokens[k].word.endswith("ly") and len(tokens[k].word) > 4):
+        k -= 1
+    if k < 1 or tokens[k - 1].word != "the" or tokens[k].sentence != tokens[units[verb].start].sentence:
+        return None
+    if k >= 2 and tokens[k - 2].sentence == tokens[k].sentence and tokens[k - 2].word not in (
+            ",", "and", "but", "so", "then", "when", "while", "as", "until", "before", "after"):
+        return None  # the subject starts its clause ("that's the whole unprotected-left problem" is no subject)
+    word = tokens[k]
+    if (word.word,) in lexicon().phrases or (word.base,) in lexicon().phrases or \
+            word.word in lexicon().function_words or word.misspelt or \
+            word.word.endswith(("ly", "ing", "ed", "s")) or len(word.word) < 3 or not word.word.isalpha():
+        return None
+    others = [e for e in r.entities if not e.is_ego and e.count == 1]
+    return others[-1] if others else None
 
 
 GROUP_NOUNS = {"family", "group", "crowd", "party", "gang", "bunch", "convoy", "column", "pack", "couple", "line",
