@@ -5497,3 +5497,14 @@ def test_a_noun_not_known_after_a_copula_is_no_subject():
 ])
 def test_a_bare_loose_name_in_notes_names_the_vehicle_it_fits(prompt, kinds):
     assert sorted(t for t, _, _ in agents(prompt)) == kinds, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego is pulling away from the kerb when a cyclist comes up behind.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "back")]),
+    ("Our bus pulls away from the bus stop as a car overtakes it on the left.",
+     [("bus", "go_straight", "ego"), ("car", "go_straight", "back_left")]),
+    ("The ego pulls away from the kerb into the right lane.", [("car", "change_lane_to_right", "ego")]),
+])
+def test_the_ego_pulling_away_from_where_it_stood_moves_off(prompt, expected):
+    assert agents(prompt) == expected

@@ -3370,6 +3370,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action in ("cut_in", "move", "lane_change", "lane_left", "lane_right") and clause_units is not None and \
                 k is not None and _onto_the_roadside(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "steered right onto the gravel and stopped": off the road, no lane
+        if e.is_ego and action == "cut_in" and not direction and [t.base for t in u.tokens[:2]] == ["pull", "away"]:
+            action = "move"  # "the ego is a bus pulling away from a bus stop": it moves off; no lane is named
         if e.is_ego and action == "cut_in" and not direction and u.tokens[0].base in ("swerve", "jerk", "veer"):
             action = "move"  # "I slammed on the brakes and swerved": a jerk of the wheel, no lane named
         if action == "move" and u.base in LANE_STEERING and direction:
