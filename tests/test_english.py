@@ -5508,3 +5508,13 @@ def test_a_bare_loose_name_in_notes_names_the_vehicle_it_fits(prompt, kinds):
 ])
 def test_the_ego_pulling_away_from_where_it_stood_moves_off(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A lorry was parked in our lane and we just sat behind it and would not go round.",
+     [("car", "stop", "ego"), ("truck", "stop", "front")]),
+    ("The AV sat behind the stopped bus and would not pass it.", [("bus", "stop", "front"), ("car", "stop", "ego")]),
+    ("I sat behind a slow tractor for miles.", [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+])
+def test_the_ego_sitting_behind_one_that_stands_stands_too(prompt, expected):
+    assert agents(prompt) == expected

@@ -4028,6 +4028,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.features.add("in_junction")  # "my car slid out across the junction": the ego is at one
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
+                if u.meaning == "behind" and u.tokens[0].base in ("sit", "wait", "stand", "idle") and \
+                        reference is not None and any(a[4] in ("stop", "block") for a in reference.actions):
+                    e.actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "a van was
+                    # double-parked and we sat behind it": behind one that stands, it stands too
                 edge_after = i + 1 < len(units) and (units[i + 1].category == "positions" and units[i + 1].meaning in (
                     "shoulder", "sidewalk") or units[i + 1].word in LANE_EDGES)  # "against the nearside verge"
                 if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS and \
