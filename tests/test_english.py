@@ -5518,3 +5518,11 @@ def test_the_ego_pulling_away_from_where_it_stood_moves_off(prompt, expected):
 ])
 def test_the_ego_sitting_behind_one_that_stands_stands_too(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was slowing for the lights when a van ran into the back of me.",
+    "A van ran into the back of the ego.",
+])
+def test_one_that_runs_into_the_back_of_the_ego_came_from_behind(prompt):
+    assert agents(prompt) == [("car", "go_straight", "back"), ("car", "go_straight", "ego")]

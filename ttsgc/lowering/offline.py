@@ -5217,6 +5217,8 @@ def _vehicle_got_out_of(units, phrases, recent, person) -> Entity | None:
 def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
     """Places implied by verbs between an agent and the ego: following, leading, overtaking, hiding."""
     base = verb.tokens[0].base
+    if verb.tokens[-1].word == "of" and {t.word for t in verb.tokens} & {"back", "rear"}:
+        base = "rear end"  # "a van ran into the back of me": it came from behind
     if i + 1 < len(units) and units[i + 1].word in ("around", "round", "past") and base in STEERING | {"get"}:
         base = "around"  # "went around it", "got past the bus": what the mover passed is ahead of it
     obj = next((p for p in phrases if p.entity is not None and p.first - i <= 2), None)
