@@ -5526,3 +5526,13 @@ def test_the_ego_sitting_behind_one_that_stands_stands_too(prompt, expected):
 ])
 def test_one_that_runs_into_the_back_of_the_ego_came_from_behind(prompt):
     assert agents(prompt) == [("car", "go_straight", "back"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Lead vehicle ahead at 0 km/h.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("ego car 40 km/h, lead truck 40 km/h decelerating to 0", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("The lead car accelerates from a standstill.", [("car", "go_straight", "ego"), ("car", "go_straight", "front")]),
+    ("Ego initial speed 0, accelerates to 30 km/h.", [("car", "go_straight", "ego")]),
+])
+def test_a_speed_of_nothing_stands_and_a_start_from_it_moves(prompt, expected):
+    assert agents(prompt) == expected
