@@ -845,3 +845,18 @@ def test_a_later_vehicle_behind_the_ego_appears_behind_the_one_already_following
     for player in ("sumo", "esmini"):
         assert not _verdict(report, player).collisions and not _verdict(report, player).problems, report.table()
     assert report.ok, report.table()
+
+
+def test_a_queue_at_a_red_light_moves_off_with_the_ego_on_green(esmini, tmp_path):
+    """Three cars, the ego last, stand at a red light; on green the ego goes straight. The two ahead were left
+    standing, and the ego drove into them in both players."""
+    source = tmp_path / "queue.tsg"
+    source.write_text('scenario "queue"\nroad {\n    at junction\n    has traffic_light\n}\nstage red {\n'
+                      '    ego car stop\n    car c1 at front stop\n    car c2 at front stop behind c1\n}\n'
+                      'stage green {\n    ego car go_straight\n}\n')
+    out = tmp_path / "queue.xosc"
+    write(compile_and_prove(parse_file(source), out, log=lambda m: None)[0], out)
+    report = validate(out, "all")
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()

@@ -449,7 +449,35 @@ def _act(scene: BoundScene, k: int, name: str, minor: int) -> xosc.Act:
     for step in ego.later:
         if step.stage == k:
             act.add_maneuver_group(_later_ego_group(ego, step, minor))
+            for queued in queue_ahead_of_a_waiting_ego(scene, step):
+                act.add_maneuver_group(_moves_off_with_the_ego(queued, ego, step, minor))
     return act
+
+
+def queue_ahead_of_a_waiting_ego(scene: BoundScene, step: LaterAction) -> list[BoundAgent]:
+    """The vehicles standing ahead of the ego in its lane, when the ego stood until `step` and then drives on
+    ('three cars incl. the ego stopped at a red light ... when it goes green the ego goes straight'): the queue
+    it waited in moves off with it; left standing, the ego drives into it (in every player)."""
+    ego = next(a for a in scene.agents if a.is_ego)
+    if ego.start is None or ego.action != "stop" or step.action not in ("go_straight",) + tuple(V.TURN_ACTIONS) or \
+            any(x.action != "stop" for x in ego.later if x.stage < step.stage):
+        return []
+    along = 1 if ego.start.lane < 0 else -1  # a right lane (id < 0) drives along s
+    return [a for a in scene.agents if a.stage == 0 and not a.is_ego and a.action == "stop" and a.start is not None
+            and a.type != "pedestrian" and a.road_type == "driving" and a.lane_change is None
+            and (a.start.road, a.start.lane) == (ego.start.road, ego.start.lane)
+            and (a.start.s - ego.start.s) * along > 0]
+
+
+def _moves_off_with_the_ego(queued: BoundAgent, ego: BoundAgent, step: LaterAction, minor: int) -> xosc.ManeuverGroup:
+    """One of the queue ahead sets off when the ego does, at the ego's speed, so the gaps stay as they stood."""
+    speed = step.speed_mps if step.speed_mps is not None else ego.speed_mps
+    label = f"{queued.name}_moves_off_in_stage_{step.stage}"
+    set_off = xosc.AbsoluteSpeedAction(speed, xosc.TransitionDynamics(xosc.DynamicsShapes.step,
+                                                                      xosc.DynamicsDimension.time, 0))
+    trigger = _start_trigger(queued.model_copy(update={"trigger": step.trigger}), label, minor)
+    return _group(queued.name, f"{queued.name}_maneuver_in_stage_{step.stage}",
+                  f"{queued.name}_group_in_stage_{step.stage}", [(label, [("set_off", set_off)], trigger)])
 
 
 def _drives_its_route_first(scene: BoundScene) -> bool:
