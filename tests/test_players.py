@@ -860,3 +860,29 @@ def test_a_queue_at_a_red_light_moves_off_with_the_ego_on_green(esmini, tmp_path
     for player in ("sumo", "esmini"):
         assert not _verdict(report, player).collisions, report.table()
     assert report.ok, report.table()
+
+
+def test_an_ego_standing_behind_a_stopped_car_sets_off_to_go_round_it_later(esmini, tmp_path):
+    """'The hatchback stops for no reason, then I go round it into the right lane': the ego stood behind it, and
+    a lane change alone left it standing in esmini (no sideways move without moving on)."""
+    report = _played(tmp_path, "round", 'scenario "round"\nroad {\n    lanes >= 2\n}\nstage first {\n'
+                     '    ego car go_straight\n    car c1 at front stop\n}\nstage second {\n'
+                     '    ego car change_lane_to_right\n}\n')
+    for player in ("sumo", "esmini"):
+        assert all(a.achieved for a in _verdict(report, player).agents), report.table()
+    assert report.ok, report.table()
+
+
+
+def test_a_stage_with_a_walk_along_the_sidewalk_lasts_the_walk(tmp_path):
+    """A stage waits for every action of the one before, a walk of some 30 m among them; the scene was timed as
+    if a walk took 6 s, so it ended before the later stage began (a debrief with people walking on the sidewalk,
+    then the ego changing lanes: never played in either player)."""
+    from ttsgc.emit.xosc import stage_durations
+    source = tmp_path / "walk.tsg"
+    source.write_text('scenario "walk"\nroad {\n    lanes >= 2\n}\nstage first {\n    ego car go_straight\n'
+                      '    pedestrian p1 at right on_the_sidewalk\n}\nstage second {\n    ego car change_lane_to_left\n}\n')
+    scene = compile_scenario(parse_file(source), tmp_path / "walk.xosc").scene
+    walker = next(a for a in scene.agents if a.name == "p1")
+    walk_s = abs(walker.walk_to.s - walker.start.s) / walker.speed_mps
+    assert walk_s > 10 and stage_durations(scene)[0] >= walk_s, (walk_s, stage_durations(scene))

@@ -388,6 +388,9 @@ def stage_durations(scene: BoundScene) -> list[float]:
                 action = 45.0 / speed
             elif agent.cross_to is not None:
                 action = 40.0 / speed  # wide roads: a crossing may be 30 m and more
+            elif agent.walk_to is not None and agent.start is not None:
+                action = abs(agent.walk_to.s - agent.start.s) / speed + 2.0  # a walk along the sidewalk: its act
+                # completes when the walk does, and the next stage waits for it
             else:
                 action = 6.0
             longest = max(longest, wait + action)
@@ -448,10 +451,20 @@ def _act(scene: BoundScene, k: int, name: str, minor: int) -> xosc.Act:
     ego = next(a for a in scene.agents if a.is_ego)
     for step in ego.later:
         if step.stage == k:
-            act.add_maneuver_group(_later_ego_group(ego, step, minor))
+            act.add_maneuver_group(_later_ego_group(ego, step, minor, _ego_stands_before(scene, step)))
             for queued in queue_ahead_of_a_waiting_ego(scene, step):
                 act.add_maneuver_group(_moves_off_with_the_ego(queued, ego, step, minor))
     return act
+
+
+def _ego_stands_before(scene: BoundScene, step: LaterAction) -> bool:
+    """Whether the ego stands when `step` begins: told to stop (and nothing since), or stopped behind a vehicle
+    that stops."""
+    ego = next(a for a in scene.agents if a.is_ego)
+    earlier = [x for x in ego.later if x.stage < step.stage]
+    if earlier:
+        return earlier[-1].action == "stop"
+    return ego.action == "stop" or any(follower.is_ego for follower, _ in followers_of_stopping(scene))
 
 
 def queue_ahead_of_a_waiting_ego(scene: BoundScene, step: LaterAction) -> list[BoundAgent]:
@@ -500,9 +513,10 @@ def _on_the_far_road_m(ego: BoundAgent) -> float:
 BRAKE_RATE = V.BRAKE_RATE  # m/s² of a stop
 
 
-def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int) -> xosc.ManeuverGroup:
+def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int, standing: bool = False) -> xosc.ManeuverGroup:
     """The ego's action in a later stage, one event written as any agent's: the lane change relative to
-    itself, a speed it is given, a stop braking at its behaviour's rate; going straight holds its speed."""
+    itself (setting off first when it stands), a speed it is given, a stop braking at its behaviour's rate;
+    going straight holds its speed."""
     step_dynamics = xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0)
     actions = []
     if step.lane_change is not None:
@@ -518,6 +532,10 @@ def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int) -> xosc.Man
     elif step.speed_mps is not None:
         actions.append(("set_speed", xosc.AbsoluteSpeedAction(step.speed_mps, xosc.TransitionDynamics(
             xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, BRAKE_RATE[step.behavior]))))
+    elif step.lane_change is not None and standing:  # "the hatchback stops, then I go round it": a body that
+        # stands changes no lane (esmini moves it sideways only as it moves on)
+        actions.append(("set_off", xosc.AbsoluteSpeedAction(ego.speed_mps, xosc.TransitionDynamics(
+            xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, YIELD_SET_OFF_MPS2))))
     elif not actions:
         actions.append(("keep_speed", xosc.AbsoluteSpeedAction(ego.speed_mps, step_dynamics)))
     label = I.later_event_name(ego.name, step.stage, step.action)
