@@ -5536,3 +5536,125 @@ def test_one_that_runs_into_the_back_of_the_ego_came_from_behind(prompt):
 ])
 def test_a_speed_of_nothing_stands_and_a_start_from_it_moves(prompt, expected):
     assert agents(prompt) == expected
+
+
+# -- a student's report, a product manager's request ---------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("This study examines how the ego vehicle responds to an approaching emergency vehicle. A fire engine comes up "
+     "behind the ego on a two-lane road.", [("car", "go_straight", "ego"), ("firetruck", "go_straight", "back")]),
+])
+def test_an_emergency_vehicle_named_in_general_then_by_its_kind_is_one(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_two_emergency_vehicles_each_placed_stay_two():
+    found = agents("An emergency vehicle comes up behind the ego; an ambulance waits at the junction ahead.")
+    assert sum(t == "ambulance" for t, _, _ in found) == 2, found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A cyclist, defined here as any road user riding a bicycle, crosses from the left in front of the ego vehicle.",
+     [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front_left")]),
+    ("The scene is a blocking event, which we define as another road user occupying the path of the ego. A lorry "
+     "pulls out from the right and blocks the ego.",
+     [("car", "go_straight", "ego"), ("truck", "block_the_ego", "front_right")]),
+    ("We study a following scenario, that is, a situation in which a vehicle drives behind another vehicle. A van "
+     "follows the ego vehicle.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+])
+def test_a_reports_definitions_of_its_terms_name_no_agents(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("For our project we consider a lane change. The ego vehicle changes into the left lane behind a truck.",
+     ("car", "change_lane_to_left", "ego")),
+    ("In this study we examine a left turn: the ego vehicle turns left while a bus comes the other way.",
+     ("car", "turn_left", "ego")),
+])
+def test_a_reports_authors_saying_we_are_not_the_ego(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and [p for _, _, p in found].count("ego") == 1, found
+
+
+def test_what_a_report_expects_of_the_ego_is_its_check_not_the_scene():
+    found = agents("A cyclist crosses ahead of the ego on a straight road. We expect the ego to brake to a stop.")
+    assert ("car", "go_straight", "ego") in found, found
+
+
+def test_a_time_of_day_said_after_a_sequence_word_is_no_stage():
+    scene = lower("The test takes place at a four-way stop shortly after sunrise. A bus turns left in front of the ego.")
+    assert len(scene.scenario.stages) == 1 and scene.scenario.weather.time == "dawn", scene.scenario
+
+
+@pytest.mark.parametrize("prompt, objects, signals", [
+    ("A cyclist starts to cross when the ego is 15 m from the stop line.", ("stop_line",), ()),
+    ("Vehicle signal on red. The subject vehicle is held at the stop line.", ("stop_line",), ("traffic_light",)),
+    ("The pedestrian signal shows green and a man crosses in front of the ego.", (), ("traffic_light",)),
+])
+def test_a_signal_named_by_whom_it_controls_and_a_line_held_at_or_measured_from_are_on_the_road(prompt, objects,
+                                                                                                signals):
+    spec = road(prompt)
+    assert set(objects) <= set(spec.required_objects) and set(signals) <= set(spec.required_signals), spec
+    assert [t for t, _, p in agents(prompt) if p != "ego" and t == "car"] == [], agents(prompt)
+
+
+def test_a_distance_from_the_stop_line_is_no_stop_at_it():
+    assert ("car", "go_straight", "ego") in agents("A cyclist starts to cross when the ego is 15 m from the stop line.")
+
+
+@pytest.mark.parametrize("prompt, lanes", [
+    ("The ego approaches the junction in the left-hand one of two through lanes and turns left.", 2),
+    ("Arterial with three travel lanes per direction; a bus stops ahead of the ego.", 3),
+])
+def test_a_lane_count_with_a_traffic_engineers_kind_of_lane(prompt, lanes):
+    assert road(prompt).lanes == lanes
+
+
+@pytest.mark.parametrize("prompt, mover", [
+    ("A truck a bit ahead of us on the right slowly merges into our lane.",
+     ("truck", "change_lane_to_left", "front_right")),
+    ("A van a little ahead of me on the left cuts in.", ("car", "change_lane_to_right", "front_left")),
+])
+def test_a_little_ahead_of_us_on_a_side_places_the_mover_on_that_side(prompt, mover):
+    assert mover in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Something with a bus? A city bus is stopped ahead of our car, and we go around it on the left.",
+     [("bus", "stop", "front"), ("car", "change_lane_to_left", "ego")]),
+    ("Maybe something with a cyclist. A cyclist rides ahead of the ego and turns right at the junction.",
+     [("car", "go_straight", "ego"), ("cyclist", "turn_right", "front")]),
+])
+def test_a_requests_topic_named_again_in_its_scene_is_one_agent(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, people", [
+    ("Pedestrian 1 crosses the road ahead of the ego. Pedestrian 2 stands on the sidewalk.", 2),
+    ("Walker 1 crosses on the crosswalk. Walker 2 waits on the sidewalk next to the crosswalk.", 2),
+    ("Walker A crosses from the left. Walker B stands on the pavement.", 2),
+])
+def test_numbered_or_lettered_walkers_are_each_an_agent(prompt, people):
+    assert sum(t == "pedestrian" for t, _, _ in agents(prompt)) == people, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, count", [
+    ("Two trucks ahead of me and one in the lane on my right, on the highway.", 3),
+    ("Three pedestrians on the left and one on the right cross the road.", 4),
+    ("Two cars, one ahead and one behind.", 2),
+])
+def test_and_one_after_a_placed_group_is_one_more(prompt, count):
+    assert len([a for a in agents(prompt) if a[2] != "ego"]) == count, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("The ego changes lanes, on its right, to let the ambulance pass.", "change_lane_to_right"),
+    ("The ego changes lanes, to its right, and passes a slow truck.", "change_lane_to_right"),
+])
+def test_a_lane_changes_side_set_off_by_commas_is_its_direction(prompt, action):
+    assert ("car", action, "ego") in agents(prompt), agents(prompt)
+
+
+def test_a_move_between_numbered_lanes_is_a_lane_change():
+    assert any(p == "ego" and a.startswith("change_lane") for _, a, p in agents("The ego moves from lane 1 to lane 2."))

@@ -224,7 +224,7 @@ def loose_names() -> dict[str, frozenset[str]]:
 
 
 TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z0-9]+|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
-LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bus|cyclist|bike|motorcycle|van|pedestrian"
+LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bus|cyclist|bike|motorcycle|van|pedestrian|walker"
                           r"|ped|pov|tv|npc|object))[ _]([A-H])\b(?![.'\u2019-]?[A-Za-z])")
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 
@@ -780,6 +780,8 @@ def tokenize(text: str) -> list[Token]:
                   r"taken|driven|left|come through|ridden|run|made|pulled)\b)", " had ", text)  # "once he'd cleared",
     # "we'd already stopped": a past told in the past ("I'd need", "he'd stop": would)
     text = re.sub(r"'d\b", " would", text)
+    text = re.sub(r"\b(lanes?(?: \w+)?), ((?:on|to) (?:its|his|her|their|our|my) (?:left|right)),", r"\1 \2",
+                  text)  # "moves from lane 2 to lane 3, on its right, to clear the lane": the side of that lane
     text = re.sub(r"\bincl\.?(?=\s)", "including", text)  # a tester's notes: "3 cars incl. ego" (no sentence end)
     text = re.sub(r"\bapprox\.?(?=\s)", "about", text)
     text = re.sub(r"\btl(s?)\b", r"traffic light\1", text)  # "stopped at a red TL", "when the TL goes green"
@@ -857,9 +859,10 @@ def tokenize(text: str) -> list[Token]:
                   r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
     text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
                   r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
-    text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh|pov|sv|tv)[ _-](\d)\b"
+    text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh|pov|sv|tv|"
+                  r"pedestrian|walker|cyclist|van|lorry|motorcycle|motorbike|person)[ _-](\d)\b"
                   r"(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?|cars?))", r"\1\2",
-                  text)  # "NPC_1", "Actor 2"
+                  text)  # "NPC_1", "Actor 2", "Walker 2" (a simulator's names)
     text = re.sub(r"\b(in|for|until|till) v\d{1,2}(?:\.\d{1,2})?\b", r"\1 this version", text)  # "left out in v1": a release
     text = re.sub(r"\b([a-z]{1,3}|npc|actor|agent|target|object|adversary)(\d)\b", r"\1#\2", text)  # SV1, NPC2: labels
     text = re.sub(r"\b([a-z]{4,12})(\d{1,2})\b", _agent_label, text)  # "bike1", "lorry2": a table's names

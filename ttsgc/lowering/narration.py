@@ -100,6 +100,9 @@ def read_narration(prompt: str) -> Narration:
     text = _addressee(text, notes)
     text = _restarts(text, notes)
     text = _asides(text)
+    text = _authors(text, notes)
+    text = _expectations(text, notes)
+    text = _topic(text, notes)
     text = _street_corners(text)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
@@ -109,6 +112,52 @@ def read_narration(prompt: str) -> Narration:
     text = _protagonist(text, notes)
     text = _storys_driver(text, notes)
     return Narration(text, notes)
+
+
+AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report|thesis|paper|assignment|"
+                     r"coursework),?\s*)?\bwe (?:consider|examine|study|investigate|model|simulate|present|describe|analyse|analyze|"
+                     r"look at|focus on|propose|choose|chose|selected|select)\s+", re.I)
+
+
+def _authors(text: str, notes: list[str]) -> str:
+    """'For our project we consider a cut-in manoeuvre ... the ego': the authors of a report that names its ego say
+    'we' of their work, not of a vehicle."""
+    if not re.search(r"\bthe ego\b|\bego vehicle\b", text, re.I) or not AUTHORS.search(text):
+        return text
+    notes.append("read the report's 'we' as its authors")
+    return AUTHORS.sub(lambda m: "", text)
+
+
+EXPECTATION = re.compile(r"(?:^|(?<=[.!?]\s))(?:(?:we|i) (?:would )?(?:expect|anticipate|hope)|(?:we|i) want to "
+                         r"(?:see|verify|check|confirm) (?:whether|if|that)|the expected (?:behaviou?r|response|outcome) "
+                         r"is)\b[^.!?]*[.!?]?\s*", re.I)
+
+
+TOPIC = re.compile(r"^\s*(?:(?:so|ok|okay|maybe|perhaps|how about|what about|could we do|can we do|we need|i want)"
+                   r",?\s+)*(?:something|a scene|a scenario|one)\s+(?:with|involving|featuring|about)\s+(?:an?|some)\s+"
+                   r"([a-z -]{2,30}?)\s*[?.!:]\s*", re.I)
+
+
+def _topic(text: str, notes: list[str]) -> str:
+    """'Something with a bus? A city bus is stopped ahead of our car ...': a request that first names its topic,
+    then the scene; the agent of the topic is the one the scene names after it, not one more."""
+    m = TOPIC.match(text)
+    if m is None:
+        return text
+    kinds = _agent_kinds(m.group(1)) - {"ego", "none"}
+    if not kinds or not kinds <= _agent_kinds(text[m.end():]):
+        return text
+    notes.append(f"read '{m.group(0).strip()}' as the request's topic, named again in the scene")
+    return text[m.end():]
+
+
+def _expectations(text: str, notes: list[str]) -> str:
+    """'We expect the ego to yield to the jogger before proceeding.': what a report expects of the system under
+    test is what it checks, not what the scene scripts (as an 'Expected:' line is)."""
+    text, n = EXPECTATION.subn("", text)
+    if n:
+        notes.append("read what the report expects of the ego as its check, not the scene")
+    return text
 
 
 PROTAGONIST = re.compile(r"\b(?:our|the) (?:hero|heroine|protagonist)\b", re.I)

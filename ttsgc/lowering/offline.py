@@ -1106,6 +1106,11 @@ def _road(r: _Reader) -> RoadSpec:
     for k, u in enumerate(units):
         if negated and u.tokens[0].sentence != negated_in:
             negated = False  # "no crossing. Road: mid-block": a denial ends with its sentence
+        if u.category == "actions" and len(u.tokens) > 2:
+            for m in matches(list(u.tokens), 1):  # "held at the stop line": where it holds is on the road
+                if m.category == "road" and (m.meaning in V.OBJECTS or m.meaning in ("stop", "yield") and
+                                             m.end - m.start > 1):  # (not "flashing his lights": its own lamps)
+                    put(m.meaning, False)
         if u.category == "word" and u.word in NEGATIONS | REMOVED or (u.category == "word" and u.word.endswith("n't")) \
                 or (u.category == "numbers" and u.meaning == "0"):
             negated, negated_in = True, u.tokens[0].sentence
@@ -1445,6 +1450,9 @@ def _a_bare_limit(tokens: list[Token], first: int, i: int) -> bool:
 PER_DIRECTION = {"per", "each", "every", "in", "a", "one"}
 
 
+COUNTED_LANE_KINDS = {"through", "travel", "traffic", "running", "driving", "general", "approach", "thru", "moving"}
+
+
 def _lanes(r: _Reader, lanes: int | None) -> int | None:
     """'a two-lane road', 'three lanes in each direction' (which wins over a total: 'a four-lane avenue, two
     lanes each way'), 'multi-lane'."""
@@ -1454,6 +1462,8 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         if t.word not in ("lane", "lanes") or i == 0:
             continue
         prev = tokens[i - 1]
+        if prev.word in COUNTED_LANE_KINDS and i >= 2 and _word_number(tokens[i - 2]) is not None:
+            prev = tokens[i - 2]  # "two through lanes", "three travel lanes": a traffic engineer's kind of lane
         numbered = _numbered_lane(tokens, i) or _named_lane_of(tokens, i)
         if numbered is not None:  # "in lane two of three": lanes are numbered on one carriageway
             found.append(numbered)
@@ -1838,6 +1848,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             r.mark(u)
             continue  # "stop, even when it's clear": a concession; "the next bit was ...": which bit; "around 6pm,
             # maybe a bit later": when, roughly; no stage
+        if u.category == "sequence" and nxt is not None and nxt.category == "weather" and \
+                nxt.meaning.startswith("time:") and u.tokens[-1].word in ("after", "before"):
+            r.mark(u)
+            continue  # "shortly after sunrise", "just before dusk": the time of day, no later stage
         if u.category == "sequence" and prev_word in RELATIVES and units[k - 1].category == "word":
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
@@ -3711,6 +3725,15 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i, introduced=True))
                 continue
+            group = next((np.entity for np in reversed(phrases) if np.index < i and np.entity is not None and
+                          not np.entity.is_ego), None) or kin
+            if group is not None and group.count > 1 and _one_more_after_a_placed_group(units, i):
+                member = Entity(len(r.entities), group.type, False, clause.stage, head=group.head)
+                r.entities.append(member)  # "two trucks ahead of me and one on my right": a third truck
+                r.notes.append(f"inferred: 'and one' after {group.count} placed {group.head}s is one more")
+                r.mark(u)
+                phrases.append(NounPhrase(member, i, i, introduced=True))
+                continue
             if i > 3 and units[i - 3].word in COPULAS and units[i - 4].word in ("mine", "i", "we", "ours"):
                 continue  # "mine was the second one": the ego's place among them, no member of its own
             placed_one = _the_one_placed(r, units, i)  # "the one in front slammed on his brakes": that member
@@ -3906,10 +3929,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     ego_at = next((np.index for np in phrases if np.entity is not None and np.entity.is_ego), None)
     if not main_verbs and len(subject) == 1 and subject[0].is_ego and ego_at is not None and any(
             u.word in COPULAS for u in units[ego_at + 1:ego_at + 3]) and any(
-            u.category == "road" and not _denied(units, k) and (
+            u.category == "road" and not _denied(units, k) and u.tokens[0].word not in ("from", "of") and (
                 u.meaning in ("stop", "stop_line") or u.meaning == "traffic_light" and
                 any(t.word == "red" for t in u.tokens)) for k, u in enumerate(units) if k > ego_at):
         subject[0].actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "we're at a red"
+        # (not "is 20 m from the stop line": a distance to it)
     if not main_verbs and len(subject) == 1 and subject[0].is_ego:  # terse: "ego right at lights", "ego left"
         ego_np = next((p for p in phrases if p.entity is subject[0]), None)
         after = units[ego_np.index + 1] if ego_np is not None and ego_np.index + 1 < len(units) else None
@@ -4906,6 +4930,24 @@ def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounP
         return True
     entry = lexicon().phrases.get((tokens[k].base,)) or lexicon().phrases.get((tokens[k].word,))
     return not (tokens[k].word in ("and", "or", "a", "an", "the") or entry is not None and entry[0] == "agents")
+
+
+def _one_more_after_a_placed_group(units: list[Unit], i: int) -> bool:
+    """'two trucks ahead of me and one in the lane on my right': a counted group already placed, then 'and one' with
+    a place of its own is one more of them ('two cars, one ahead and one behind' places the two)."""
+    if i < 3 or units[i - 1].word != "and" or i + 1 >= len(units) or units[i + 1].category != "positions" and \
+            units[i + 1].word not in ("in", "on", "to", "at"):
+        return False
+    placed = False
+    for j in range(i - 2, -1, -1):
+        u = units[j]
+        if u.tokens[0].sentence != units[i].tokens[0].sentence or u.category == "comma":
+            return False
+        if u.category == "positions":
+            placed = True
+        elif u.category == "agents" and u.meaning != "ego":
+            return placed and u.tokens[-1].plural and j > 0 and units[j - 1].category in ("numbers", "number")
+    return False
 
 
 def _kind_apposed_at(units: list[Unit], k: int, current: list[Unit]) -> bool:
