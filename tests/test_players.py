@@ -886,3 +886,14 @@ def test_a_stage_with_a_walk_along_the_sidewalk_lasts_the_walk(tmp_path):
     walker = next(a for a in scene.agents if a.name == "p1")
     walk_s = abs(walker.walk_to.s - walker.start.s) / walker.speed_mps
     assert walk_s > 10 and stage_durations(scene)[0] >= walk_s, (walk_s, stage_durations(scene))
+
+
+def test_a_vehicle_pulling_off_the_shoulder_to_block_the_ego_crosses_every_lane_between(esmini, tmp_path):
+    """'A van parked on the hard shoulder ahead and to the right suddenly pulls out and blocks the ego': with the
+    ego in the far lane, one lane to the left left the van beside it, never in front (both players)."""
+    report = _played(tmp_path, "shoulder", 'scenario "shoulder"\nweather wet night\nroad {\n    lanes >= 2\n}\n'
+                     'stage main {\n    ego car go_straight\n    car c1 at front_right on shoulder block_the_ego '
+                     'aggressive\n}\n')
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "c1").achieved, report.table()
+    assert report.ok, report.table()

@@ -590,6 +590,12 @@ class Placer:
         lane_change = {"change_lane_to_left": 1, "change_lane_to_right": -1}.get(agent.action, into_turn_lane)
         if agent.action == "block_the_ego" and agent.relative_to_ego in LEFT_SIDE | RIGHT_SIDE:
             lane_change = -1 if agent.relative_to_ego in LEFT_SIDE else 1  # into the ego's lane
+            ego = self.ego_start
+            if start is not None and ego is not None and start.road == ego.road and \
+                    (start.lane > 0) == (ego.lane > 0) and abs(start.lane) != abs(ego.lane):
+                lane_change = abs(start.lane) - abs(ego.lane)  # as many lanes as lie between (left is towards the
+                # reference line on either side): "a van parked on the hard shoulder pulls out and blocks the ego"
+                # in the far lane crosses the near one too
         cross_to = walk_to = None
         if start is not None and agent.action == "cross_the_road":
             cross_to = self._far_side(start)
