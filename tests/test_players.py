@@ -897,3 +897,14 @@ def test_a_vehicle_pulling_off_the_shoulder_to_block_the_ego_crosses_every_lane_
     for player in ("sumo", "esmini"):
         assert _agent(report, player, "c1").achieved, report.table()
     assert report.ok, report.table()
+
+
+def test_an_ego_that_waits_then_turns_stops_behind_a_vehicle_standing_on_the_road_it_turns_into(esmini, tmp_path):
+    """'A police car has been parked on the road the ego is about to turn into. Once the light is green, a left
+    turn is made by the ego': the ego set off and drove into the police car (esmini)."""
+    report = _played(tmp_path, "wait_turn", 'scenario "wait_turn"\nroad {\n    at junction\n    has traffic_light\n}\n'
+                     'stage red {\n    ego car stop\n    police po1 at at_the_destination stop\n}\n'
+                     'stage green {\n    ego car turn_left\n}\n')
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()

@@ -236,7 +236,12 @@ def followers_of_stopping(scene: BoundScene) -> list[tuple[BoundAgent, BoundAgen
             return math.inf
         return None
 
-    movers = [a for a in scene.agents if vehicle(a) and a.action not in ("stop", "block_the_ego")
+    def sets_off_later(agent: BoundAgent) -> bool:  # an ego that waits, then drives on ('once green, we turn')
+        return agent.is_ego and agent.action == "stop" and any(
+            step.action in ("go_straight",) + tuple(V.TURN_ACTIONS) for step in agent.later)
+
+    movers = [a for a in scene.agents if vehicle(a) and (a.action not in ("stop", "block_the_ego") or
+                                                         sets_off_later(a))
               and not a.start_delay_s and a.speed_mps > 0]
     leaders = [a for a in scene.agents if vehicle(a) and a.action == "stop"]
     led: dict[str, BoundAgent] = {}
