@@ -568,18 +568,20 @@ class Placer:
         finally:
             self.u_ego = placed_at
 
-    def _ego_when_stage_starts(self) -> tuple[LanePos, float]:
+    def _ego_when_stage_starts(self, stage: int) -> tuple[LanePos, float]:
         """Where the ego drives (road, lane, about where on it) once a later stage starts, and at what speed:
         past the junction when its route leads through one (the emitter starts the next stage there), else on
-        its own road."""
+        its own road; in the lane its lane changes of the stages before have taken it to."""
         ego = self.scenario.ego
         speed = _speed(ego, self.frame.approach.speed_limit_kmh)
-        steps = [step for step in later_actions(self.scenario) if step.speed_mps is not None]
-        if steps:
-            speed = steps[-1].speed_mps
-        if self.ego_route and ego.action != "stop":
-            return self.ego_route[-1], speed
-        return self.ego_start, speed
+        steps = [step for step in later_actions(self.scenario) if step.stage < stage]
+        speed = next((step.speed_mps for step in reversed(steps) if step.speed_mps is not None), speed)
+        at = self.ego_route[-1] if self.ego_route and ego.action != "stop" else self.ego_start
+        to_the_left = LANE_CHANGE_OF_ACTION.get(ego.action, 0) + sum(step.lane_change or 0 for step in steps)
+        if to_the_left:  # left is towards the centre line on either side
+            lane = at.lane - to_the_left if at.lane > 0 else at.lane + to_the_left
+            at = at.model_copy(update={"lane": lane if lane * at.lane > 0 else at.lane})
+        return at, speed
 
     def _ahead_of_the_moving_ego(self, agent: Agent, stage: int) -> BoundAgent:
         """A later walker that crosses ahead of an ego driving on: it enters at the kerb on the ego's side, far
@@ -588,7 +590,7 @@ class Placer:
         Its start and far side are written relative to the ego when its stage starts (a RelativeLanePosition,
         which a player resolves when the entry or the trajectory starts, esmini's Trajectory::Freeze), since
         where the ego is then the binding cannot know to the metre."""
-        at, speed = self._ego_when_stage_starts()
+        at, speed = self._ego_when_stage_starts(stage)
         road = self.odr.roads[at.road]
         s = min(max(at.s, 0.0), road.length)
         section = road.section_at(s)
@@ -607,8 +609,10 @@ class Placer:
         braking = speed * speed / (2 * rate)
         stop_short = V.BODIES[ego.type][0] / 2 + V.BODIES[agent.type][1] / 2 + YIELD_MARGIN_M
         along = braking + stop_short  # where the brake starts, along the ego's lane from the walker's way
+        runs_out = agent.behavior == "aggressive"  # as ego_yields: the ego is not told to stop, a collision is asked for
         relative = RelativePos(dlane=kerb, ds=round(along + LATER_CROSSER_LEAD_M, 3), cross_dlane=far,
-                               yield_within_m=round(math.hypot(along, lateral), 3), yield_rate_mps2=rate)
+                               yield_within_m=None if runs_out else round(math.hypot(along, lateral), 3),
+                               yield_rate_mps2=None if runs_out else rate)
         return self._bound(agent, stage, None, self.frame, appear=relative)
 
     # -- building the record ------------------------------------------------------------------------------
