@@ -765,6 +765,24 @@ def test_a_later_walker_crosses_in_front_of_the_ego_that_stopped(esmini, tmp_pat
     assert report.ok, report.table()
 
 
+@pytest.mark.parametrize("road, ego, position", [
+    ("at junction", "go_straight", "front_right"), ("lanes >= 2", "go_straight", "front_right"),
+    ("at junction", "go_straight", "front"), ("lanes >= 2", "change_lane_to_left", "front_right")])
+def test_a_later_walker_crosses_in_front_of_the_moving_ego_which_stops_for_it(esmini, tmp_path, road, ego, position):
+    """A walker of a later stage placed relative to an ego that drives on appeared at the kerb and stood (no
+    far side to cross to). It now enters at the kerb ahead of the ego and crosses between two positions
+    relative to the ego, which a player resolves when the crossing starts; the ego stops for it as for a
+    first-stage crosser and goes on once it is across, in both players (from the lane the ego changed into)."""
+    report = _played(tmp_path, "later_walker", f'scenario "driving on, then a walker"\nroad {{\n    {road}\n}}\n'
+                     f'stage first {{\n    ego car {ego}\n}}\nstage second {{\n'
+                     f'    pedestrian p1 at {position} cross_the_road\n}}\n')
+    for player in ("sumo", "esmini"):
+        assert "crossed road" in _agent(report, player, "p1").reason, report.table()
+    assert report.ok and not report.collisions, report.table()
+    for player, trace in _both_players(tmp_path / "later_walker.xosc").items():
+        assert _stops_for(trace, "p1"), player
+
+
 def test_a_car_on_the_shoulder_changes_lane_into_the_road_in_sumo_too(esmini, tmp_path):
     """SUMO's network has no shoulder, so the player moves a car standing there itself, and a lane change
     of such a body was refused ('not possible off the SUMO lanes'): it changes lane as it drives along."""

@@ -53,8 +53,11 @@ class LanePos(_Data):
 class RelativePos(_Data):
     """Where a later-stage agent appears, relative to the ego when its stage starts."""
 
-    dlane: int  # +1: one lane to the ego's left
+    dlane: int  # +1: one lane to the ego's left (lanes counted as a player counts a dLane: lane 0 is none)
     ds: float  # metres ahead of the ego (negative: behind)
+    cross_dlane: int | None = None  # a crosser: the lane its crossing ends in, from the ego's as dlane is
+    yield_within_m: float | None = None  # the ego brakes once it is this near the crosser (its centre)...
+    yield_rate_mps2: float | None = None  # ... at this rate, and sets off again once the crossing is done
 
 
 class LaterAction(_Data):
@@ -280,6 +283,7 @@ class Placer:
         self.last_in_queue: dict[tuple, tuple[Agent, float, float]] = {}  # (stretch, lane, outward) -> last body
         self._later: list[tuple[str, Agent, float]] = []  # later-stage agents placed so far
         self.ego_start: LanePos | None = None
+        self.ego_route: tuple[LanePos, ...] = ()
         self.movement = ego_movement(scenario)
         self.ego_turn = self._pick_turn(approach, self.movement) if self.movement else None
         if self.movement and self.ego_turn is None:
@@ -341,6 +345,7 @@ class Placer:
         self.u_ego = self.occupied.slot(frame, self.ego_lane, self.u_ego, ego_len, -1)
         self.ego_start = frame.resolve(self.ego_lane, self.u_ego)
         placed = [self._bound(ego, 0, self.ego_start, frame).model_copy(update={"later": later_actions(s)})]
+        self.ego_route = placed[0].route
         for position in sorted(by_position, key=lambda p: list(V.POSITIONS).index(p)):
             downstream = position in AHEAD
             for agent in _queue(by_position[position], downstream):
@@ -523,6 +528,8 @@ class Placer:
             return self._place_agent(agent, stage)
         if agent.action == "cross_the_road" and self._ego_stands_until(stage):
             return self._beside_the_standing_ego(agent, stage)
+        if agent.action == "cross_the_road" and where in AHEAD and agent.type == "pedestrian":
+            return self._ahead_of_the_moving_ego(agent, stage)
         length, ego_len = V.BODIES[agent.type][0], V.BODIES[self.scenario.ego.type][0]
         dlane = 1 if where in LEFT_SIDE else -1 if where in RIGHT_SIDE else 0
         ahead = where in AHEAD
@@ -560,6 +567,53 @@ class Placer:
             return self._place_agent(agent, stage)
         finally:
             self.u_ego = placed_at
+
+    def _ego_when_stage_starts(self, stage: int) -> tuple[LanePos, float]:
+        """Where the ego drives (road, lane, about where on it) once a later stage starts, and at what speed:
+        past the junction when its route leads through one (the emitter starts the next stage there), else on
+        its own road; in the lane its lane changes of the stages before have taken it to."""
+        ego = self.scenario.ego
+        speed = _speed(ego, self.frame.approach.speed_limit_kmh)
+        steps = [step for step in later_actions(self.scenario) if step.stage < stage]
+        speed = next((step.speed_mps for step in reversed(steps) if step.speed_mps is not None), speed)
+        at = self.ego_route[-1] if self.ego_route and ego.action != "stop" else self.ego_start
+        to_the_left = LANE_CHANGE_OF_ACTION.get(ego.action, 0) + sum(step.lane_change or 0 for step in steps)
+        if to_the_left:  # left is towards the centre line on either side
+            lane = at.lane - to_the_left if at.lane > 0 else at.lane + to_the_left
+            at = at.model_copy(update={"lane": lane if lane * at.lane > 0 else at.lane})
+        return at, speed
+
+    def _ahead_of_the_moving_ego(self, agent: Agent, stage: int) -> BoundAgent:
+        """A later walker that crosses ahead of an ego driving on: it enters at the kerb on the ego's side, far
+        enough ahead that the ego stops for it as for a first-stage crosser (ego_yields: its comfortable brake
+        ending YIELD_MARGIN_M short of the walker's way), and crosses to the outermost lane of the far side.
+        Its start and far side are written relative to the ego when its stage starts (a RelativeLanePosition,
+        which a player resolves when the entry or the trajectory starts, esmini's Trajectory::Freeze), since
+        where the ego is then the binding cannot know to the metre."""
+        at, speed = self._ego_when_stage_starts(stage)
+        road = self.odr.roads[at.road]
+        s = min(max(at.s, 0.0), road.length)
+        section = road.section_at(s)
+        side = -1 if at.lane < 0 else 1
+        own, other = section.side(side), section.side(-side)  # each side's lanes, from the centre line out
+        if not own or not other or at.lane not in section.lanes:
+            raise PlacementError(f"road {at.road} has no far side for '{agent.name}' to cross to")
+        rank = [lane.id for lane in own].index(at.lane)
+        kerb = -(len(own) - 1 - rank)  # to the ego's right, out to its side's edge
+        far = rank + len(other)  # to its left, across the centre line to the far edge
+        centre = road.lane_point(s, at.lane)
+        edge = road.lane_point(s, own[-1].id)
+        lateral = math.hypot(edge.x - centre.x, edge.y - centre.y)
+        ego = self.scenario.ego
+        rate = YIELD_DECEL[ego.behavior]
+        braking = speed * speed / (2 * rate)
+        stop_short = V.BODIES[ego.type][0] / 2 + V.BODIES[agent.type][1] / 2 + YIELD_MARGIN_M
+        along = braking + stop_short  # where the brake starts, along the ego's lane from the walker's way
+        runs_out = agent.behavior == "aggressive"  # as ego_yields: the ego is not told to stop, a collision is asked for
+        relative = RelativePos(dlane=kerb, ds=round(along + LATER_CROSSER_LEAD_M, 3), cross_dlane=far,
+                               yield_within_m=None if runs_out else round(math.hypot(along, lateral), 3),
+                               yield_rate_mps2=None if runs_out else rate)
+        return self._bound(agent, stage, None, self.frame, appear=relative)
 
     # -- building the record ------------------------------------------------------------------------------
     def _bound(self, agent: Agent, stage: int, start: LanePos | None, frame: _Frame, turn: Turn | None = None,
@@ -914,6 +968,7 @@ YIELD_DECEL = {"cautious": 3.0, "normal": 3.5, "aggressive": 4.0}  # m/s², the 
 HARDEST_YIELD_DECEL = 4.5  # m/s², a firm stop (a SUMO car's own limit): stepping out later, the ego drives on
 YIELD_MARGIN_M = 2.0  # between the ego's front and the crosser's path when it has stopped
 YIELD_SET_OFF_MPS2 = 2.5  # how briskly the ego gets back to its speed once the crossing is clear
+LATER_CROSSER_LEAD_M = 10.0  # a later crosser enters this much beyond where the ego starts braking for it
 SET_OFF_M = 0.1  # how far a crosser has moved when the ego takes it as crossing
 
 

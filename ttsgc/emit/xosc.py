@@ -318,7 +318,12 @@ def _group(actor: str, maneuver_name: str, group_name: str, events) -> xosc.Mane
 
 def _trajectory_bound(agent: BoundAgent) -> bool:
     """Whether the agent moves along a trajectory of its own (crossing, or walking the sidewalk)."""
-    return agent.cross_to is not None or agent.walk_to is not None
+    return agent.cross_to is not None or agent.walk_to is not None or _crosses_relative_to_the_ego(agent)
+
+
+def _crosses_relative_to_the_ego(agent: BoundAgent) -> bool:
+    """A later crosser whose start and far side are known only relative to the ego when its stage starts."""
+    return agent.appear is not None and agent.appear.cross_dlane is not None
 
 
 def _initial_speed(agent: BoundAgent) -> float:
@@ -391,7 +396,7 @@ def stage_durations(scene: BoundScene) -> list[float]:
             speed = max(agent.speed_mps, 1.0)
             if agent.movement:
                 action = 45.0 / speed
-            elif agent.cross_to is not None:
+            elif agent.cross_to is not None or _crosses_relative_to_the_ego(agent):
                 action = 40.0 / speed  # wide roads: a crossing may be 30 m and more
             elif agent.walk_to is not None and agent.start is not None:
                 action = abs(agent.walk_to.s - agent.start.s) / speed + 2.0  # a walk along the sidewalk: its act
@@ -454,12 +459,38 @@ def _act(scene: BoundScene, k: int, name: str, minor: int) -> xosc.Act:
         act.add_maneuver_group(_group(agent.name, f"{agent.name}_maneuver", f"{agent.name}_group",
                                       _events(agent, scene, minor)))
     ego = next(a for a in scene.agents if a.is_ego)
+    for agent in scene.agents:
+        if agent.stage == k and _crosses_relative_to_the_ego(agent) and agent.appear.yield_within_m is not None \
+                and _ego_speed_in_stage(ego, k) > 0:
+            act.add_maneuver_group(_ego_yields_to_later_crosser(ego, agent, k, minor))
     for step in ego.later:
         if step.stage == k:
             act.add_maneuver_group(_later_ego_group(ego, step, minor, _ego_stands_before(scene, step)))
             for queued in queue_ahead_of_a_waiting_ego(scene, step):
                 act.add_maneuver_group(_moves_off_with_the_ego(queued, ego, step, minor))
     return act
+
+
+def _ego_yields_to_later_crosser(ego: BoundAgent, crosser: BoundAgent, k: int, minor: int) -> xosc.ManeuverGroup:
+    """The ego's stop for a crosser placed relative to it (binding's _ahead_of_the_moving_ego), as the
+    ego_yields act writes it for a crosser with a fixed way: it brakes once it is near the walker, who
+    enters beyond that distance and steps out at once, and sets off again once the crossing is done. In the
+    crosser's act, so the walker is in the scene when the distance is first read."""
+    appear = crosser.appear
+    brakes = f"{ego.name}_yields_to_{crosser.name}"
+    near = xosc.EntityTrigger(f"{brakes}_near", 0, xosc.ConditionEdge.none, xosc.RelativeDistanceCondition(
+        appear.yield_within_m, xosc.Rule.lessThan, _EUCLIDEAN[minor >= 1], crosser.name, alongroute=False,
+        freespace=False), ego.name)
+    brake = xosc.AbsoluteSpeedAction(0, xosc.TransitionDynamics(xosc.DynamicsShapes.linear,
+                                                                xosc.DynamicsDimension.rate, appear.yield_rate_mps2))
+    done = _all_of([_state(f"{crosser.name}_crossed", xosc.StoryboardElementType.event,
+                           f"{crosser.name}_{crosser.action}"),
+                    _state(f"{brakes}_done", xosc.StoryboardElementType.event, brakes)])
+    set_off = xosc.AbsoluteSpeedAction(_ego_speed_in_stage(ego, k), xosc.TransitionDynamics(
+        xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, YIELD_SET_OFF_MPS2))
+    return _group(ego.name, f"{brakes}_maneuver", f"{brakes}_group",
+                  [(brakes, [("brake", brake)], near), (f"{ego.name}_goes_on_after_{crosser.name}",
+                                                        [("set_off", set_off)], done)])
 
 
 def _ego_stands_before(scene: BoundScene, step: LaterAction) -> bool:
@@ -588,10 +619,22 @@ _EUCLIDEAN = {False: xosc.RelativeDistanceType.cartesianDistance, True: xosc.Rel
 WALK_VERTEX_M = 5.0  # vertex spacing of a walk along a sidewalk, so the polyline follows a curved road
 
 
-def _trajectory(agent: BoundAgent, minor: int) -> xosc.FollowTrajectoryAction:
+def _trajectory(agent: BoundAgent, minor: int, ego: BoundAgent | None = None,
+                along_s: int = 1) -> xosc.FollowTrajectoryAction:
     """A polyline from where it stands to where it goes, followed at the body's own speed (TimeReference None;
-    1.0 requires a time on every vertex: their order, which the players then ignore)."""
+    1.0 requires a time on every vertex: their order, which the players then ignore). A crosser placed
+    relative to the ego crosses between two positions relative to the ego: the standard resolves a
+    trajectory's relative positions when the action starts (esmini freezes them then), which is when it
+    enters, so they are where it stands and the far side level with it. Its vertices have no Orientation:
+    esmini then heads the walker along the polyline (given one, it stood at its start)."""
     start = agent.start
+    if _crosses_relative_to_the_ego(agent):
+        appear = agent.appear
+        points = [_relative_to(ego, dlane, appear.ds, along_s, facing=False)
+                  for dlane in (appear.dlane, appear.cross_dlane)]
+        trajectory = xosc.Trajectory(f"{agent.name}_path", False)
+        trajectory.add_shape(xosc.Polyline([0.0, 1.0] if minor == 0 else [], points))
+        return xosc.FollowTrajectoryAction(trajectory, xosc.FollowingMode.position)
     if agent.cross_to is not None:
         points = [start, agent.cross_to]
     else:
@@ -603,6 +646,15 @@ def _trajectory(agent: BoundAgent, minor: int) -> xosc.FollowTrajectoryAction:
     times = [float(k) for k in range(len(points))] if minor == 0 else []
     trajectory.add_shape(xosc.Polyline(times, [_lane_position(p) for p in points]))
     return xosc.FollowTrajectoryAction(trajectory, xosc.FollowingMode.position)
+
+
+def _relative_to(ego: BoundAgent, dlane: int, ds: float, along_s: int,
+                 facing: bool = True) -> xosc.RelativeLanePosition:
+    """A place `dlane` lanes to the ego's left and `ds` m ahead of it, in the road's terms (along_s: -1 when the
+    ego drives against s); facing its lane's way (as ego_lane_when_stage_starts says) unless told not to."""
+    facing = {} if along_s > 0 or not facing else {"orientation": xosc.Orientation(  # the left lane's way, against s
+        h=math.pi, reference=xosc.ReferenceContext.relative)}
+    return xosc.RelativeLanePosition(dlane * along_s, ego.name, 0, ds=ds * along_s + 0.0, **facing)
 
 
 def ego_lane_when_stage_starts(scene: BoundScene, k: int) -> int:
@@ -653,14 +705,11 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
     step = xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0)
     events = []
     setup = []  # done when its act starts: entering (later stages) and the route
+    ego = next(a for a in scene.agents if a.is_ego)
+    along_s = 1 if agent.stage == 0 or ego_lane_when_stage_starts(scene, agent.stage) < 0 else -1
     if agent.stage > 0:  # inactive until its stage: it enters now, where it stands or beside the ego as it is now
         if agent.appear is not None:
-            ego = next(a for a in scene.agents if a.is_ego)
-            along_s = 1 if ego_lane_when_stage_starts(scene, agent.stage) < 0 else -1
-            facing = {} if along_s > 0 else {"orientation": xosc.Orientation(  # the left lane's way, against s
-                h=math.pi, reference=xosc.ReferenceContext.relative)}
-            position = xosc.RelativeLanePosition(agent.appear.dlane * along_s, ego.name, 0,
-                                                 ds=agent.appear.ds * along_s + 0.0, **facing)
+            position = _relative_to(ego, agent.appear.dlane, agent.appear.ds, along_s)
         else:
             position = _lane_position(agent.start)
         setup += [("enter", xosc.AddEntityAction(agent.name, position)),
@@ -678,7 +727,7 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
             xosc.TransitionDynamics(xosc.DynamicsShapes.sinusoidal, xosc.DynamicsDimension.time, 3.0))))
     if _trajectory_bound(agent):
         actions += [("walk_speed", xosc.AbsoluteSpeedAction(agent.speed_mps, step)),
-                    ("path", _trajectory(agent, minor))]
+                    ("path", _trajectory(agent, minor, ego, along_s))]
     braking = []
     if agent.action in ("stop", "block_the_ego"):
         brake = BRAKE_RATE[agent.behavior]

@@ -47,6 +47,9 @@ class Action:
     orientation: tuple[str, float] | None = None  # a lane position's Orientation: (type, h), None when absent
     offset: float = 0.0  # a lane position's offset from its lane's centre, along the road's t (to the left)
     offsets: tuple[float, ...] = ()  # a trajectory's: each vertex's offset, as `offset`
+    # a trajectory's vertices given relative to an entity, (entity, dlane, ds) each: resolved when the action
+    # starts, as the standard and esmini (Trajectory::Freeze) do; waypoints is then empty
+    relatives: tuple[tuple[str, int, float], ...] = ()
 
 
 @dataclass
@@ -243,7 +246,10 @@ class _Reader:
                 if all(points):
                     offsets = tuple(_float(v.find("Position/LanePosition"), "offset", 0.0) for v in vertices)
                     return Action("trajectory", waypoints=points, offsets=offsets)
-                self.missing("a trajectory vertex other than a LanePosition")
+                relatives = tuple(_relative(v.find("Position")) for v in vertices)
+                if all(relatives):
+                    return Action("trajectory", relatives=relatives)
+                self.missing("a trajectory vertex other than a LanePosition, or all RelativeLanePosition")
                 return None
         self.missing(f"action {tag}" + (f"/{etree.QName(first[0]).localname}" if len(first) else ""))
         return None

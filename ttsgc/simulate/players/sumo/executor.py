@@ -370,8 +370,15 @@ class Executor:
         SUMO's hands for it)."""
         import libsumo as ts
 
+        waypoints = action.waypoints
+        if action.relatives:  # resolved now, when the action starts (the standard; esmini freezes them then)
+            waypoints = tuple(self.relative_in_opendrive(*relative) for relative in action.relatives)
+            if not all(waypoints):
+                self.run.problems.append(f"{event.name}: a trajectory vertex relative to an entity that is not on "
+                                         f"a road")
+                return
         points = []
-        for (road, lane, s), offset in zip(action.waypoints, action.offsets or [0.0] * len(action.waypoints)):
+        for (road, lane, s), offset in zip(waypoints, action.offsets or [0.0] * len(waypoints)):
             if road not in self.odr.roads:
                 self.run.problems.append(f"{event.name}: the trajectory names road {road}, which does not exist")
                 return
@@ -510,12 +517,33 @@ class Executor:
                     return False
         return True
 
+    def relative_in_opendrive(self, ref: str, dlane: int, ds: float) -> tuple[str, int, float] | None:
+        """A RelativeLanePosition as esmini reads it, in the road's terms: dLane lanes from the entity's lane
+        counted across the centre line as lanes (no lane 0: lane -1 and 4 lanes is lane 4), ds along s from
+        where it is now. None when the entity is on no road (inside a junction, or gone)."""
+        sample = self.last(ref)
+        if sample is None or not sample.road or sample.lane is None or sample.road not in self.odr.roads:
+            return None
+        dx, dy = self.network.offset
+        road = self.odr.roads[sample.road]
+        s = self._s_on_road(sample.road, sample.lane, sample.x + dx, sample.y + dy)
+        return sample.road, _lanes_beyond(sample.lane, dlane), round(min(max(s + ds, 0.0), road.length), 3)
+
     def _appear(self, entity: Entity, action: Action, event: Event, t: float) -> None:
         import libsumo as ts
 
         ref, dlane, ds = action.relative
         if ref not in self.present:
             self.run.problems.append(f"{event.name}: '{ref}' is not in the simulation to appear beside")
+            return
+        if entity.kind == "pedestrian":  # on a sidewalk or a shoulder SUMO's lanes may not have: in the road's
+            # own lanes, as esmini counts them
+            position = self.relative_in_opendrive(ref, dlane, ds)
+            if position is None:
+                self.run.spawns[entity.name] = Spawn(False, f"'{ref}' is on no road to appear beside at t={t:.1f}")
+                return
+            speed = next((a.value for a in event.actions if a.kind == "speed"), 0.0)
+            self.spawn(entity, position, speed, t)
             return
         edge = ts.vehicle.getRoadID(ref)
         # dLane and ds count in the road's terms (lane ids, s), SUMO's lanes in the driving direction: on an
@@ -914,6 +942,14 @@ def _compared(x: float, rule: str, value: float, slack: float = 0.0, equal_withi
     return {"greaterThan": x > value + slack, "greaterOrEqual": x >= value - slack, "lessThan": x < value - slack,
             "lessOrEqual": x <= value + slack, "equalTo": abs(x - value) < equal_within,
             "notEqualTo": abs(x - value) >= equal_within}.get(rule, False)
+
+
+def _lanes_beyond(lane: int, dlane: int) -> int:
+    """The lane id dlane lanes from `lane`, counting across the centre line without a lane 0 (esmini)."""
+    target = lane + dlane
+    if target == 0 or (target > 0) != (lane > 0):
+        target += 1 if dlane > 0 else -1
+    return target
 
 
 def _lane_pose(road, s: float, lane: int, offset: float = 0.0):
