@@ -3087,8 +3087,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         named_as_a_kind.type, named_as_a_kind.head = entity.type, entity.head
         named_as_a_kind.aliases |= entity.aliases
         entity = named_as_a_kind
-    elif not _included_member(r, units, first, entity) and not _absorbed(r, entity):
-        r.entities.append(entity)
+    else:
+        _take_from_the_group_it_is_included_in(r, units, first, entity)
+        if not _absorbed(r, entity):
+            r.entities.append(entity)
     for m in modifiers:
         _modify(r, entity, m, stage, strength=1)
     back = first - 1 - (first >= 2 and units[first - 1].category == "comma")  # "oncoming traffic, 2 cars"
@@ -3278,18 +3280,17 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     return [mentioned[-1]] if mentioned else [singles[-1]]
 
 
-def _included_member(r: _Reader, units: list[Unit], first: int, entity: Entity) -> bool:
-    """'three cars, including a taxi, wait': the taxi is one of the three, not a fourth. Never absorbs it (it is
-    still an agent of its own); the group it is taken from counts one less. Returns False."""
+def _take_from_the_group_it_is_included_in(r: _Reader, units: list[Unit], first: int, entity: Entity) -> None:
+    """'three cars, including a taxi, wait': the taxi is one of the three, not a fourth. It stays an agent of
+    its own; the group it is taken from counts one less."""
     if not (first >= 1 and units[first - 1].word == "including") or entity.count != 1:
-        return False
+        return
     group = next((e for e in reversed(r.entities) if not e.is_ego), None)
     if group is None or group.count < 2 or not (group.type == entity.type or group.generic):
-        return False
+        return
     group.count -= 1
     group.group_open = max(0, group.group_open - 1)
     entity.named_of = group
-    return False
 
 
 def _named_as_a_kind(r: _Reader, entity: Entity) -> Entity | None:
