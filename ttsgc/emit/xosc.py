@@ -466,7 +466,7 @@ def _act(scene: BoundScene, k: int, name: str, minor: int) -> xosc.Act:
     for step in ego.later:
         if step.stage == k:
             act.add_maneuver_group(_later_ego_group(ego, step, minor, _ego_stands_before(scene, step)))
-            for queued in queue_ahead_of_a_waiting_ego(scene, step):
+            for queued in _queue_ahead_of_a_waiting_ego(scene, step):
                 act.add_maneuver_group(_moves_off_with_the_ego(queued, ego, step, minor))
     return act
 
@@ -503,7 +503,7 @@ def _ego_stands_before(scene: BoundScene, step: LaterAction) -> bool:
     return ego.action == "stop" or any(follower.is_ego for follower, _ in followers_of_stopping(scene))
 
 
-def queue_ahead_of_a_waiting_ego(scene: BoundScene, step: LaterAction) -> list[BoundAgent]:
+def _queue_ahead_of_a_waiting_ego(scene: BoundScene, step: LaterAction) -> list[BoundAgent]:
     """The vehicles standing ahead of the ego in its lane, when the ego stood until `step` and then drives on
     ('three cars incl. the ego stopped at a red light ... when it goes green the ego goes straight'): the queue
     it waited in moves off with it; left standing, the ego drives into it (in every player)."""
