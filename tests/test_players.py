@@ -51,6 +51,13 @@ def _agent(report, player: str, name: str):
     return next(a for a in _verdict(report, player).agents if a.name == name)
 
 
+def _proven_without_collisions(report):
+    """Both players played the scene as it says, and nothing ran into anything."""
+    for player in ("sumo", "esmini"):
+        assert not _verdict(report, player).collisions, report.table()
+    assert report.ok, report.table()
+
+
 # -- every example, in esmini, judged from esmini's own trace -----------------------------------------------
 
 @pytest.mark.parametrize("path", example_scenarios(), ids=lambda p: p.stem)
@@ -737,9 +744,7 @@ def test_a_vehicle_behind_one_that_stops_stands_behind_it_in_esmini_too(esmini, 
     file makes it brake within its braking distance once the other stops; an ego that stops so never reaches
     the far road, so the next stage does not wait for it there."""
     report = _played(tmp_path, "follow", f'scenario "lead stops"\nroad {{\n    lanes >= 2\n}}\n{tsg}')
-    for player in ("sumo", "esmini"):
-        assert not _verdict(report, player).collisions, report.table()
-    assert report.ok, report.table()
+    _proven_without_collisions(report)
 
 
 def test_an_ego_changing_into_a_lane_where_a_vehicle_drives_level_with_it_drops_back_behind_it(esmini, tmp_path):
@@ -811,9 +816,7 @@ def test_an_ego_turning_into_a_road_where_a_vehicle_stands_stops_behind_it(esmin
     """A truck standing on the road the ego turns into, in its lane: esmini drove the ego into it."""
     report = _played(tmp_path, "corner", 'scenario "corner"\nroad {\n    at junction\n}\nstage main {\n'
                      '    ego car turn_left\n    truck t1 at at_the_destination stop\n}\n')
-    for player in ("sumo", "esmini"):
-        assert not _verdict(report, player).collisions, report.table()
-    assert report.ok, report.table()
+    _proven_without_collisions(report)
 
 
 def test_people_crossing_in_front_of_an_ego_told_to_stop_cross_ahead_of_where_it_stands(esmini, tmp_path):
@@ -822,9 +825,7 @@ def test_people_crossing_in_front_of_an_ego_told_to_stop_cross_ahead_of_where_it
     report = _played(tmp_path, "waits", 'scenario "waits"\nstage main {\n    ego car stop\n'
                      '    pedestrian p1 at front cross_the_road\n    pedestrian p2 at front cross_the_road\n'
                      '    pedestrian p3 at front cross_the_road behind p2\n}\n')
-    for player in ("sumo", "esmini"):
-        assert not _verdict(report, player).collisions, report.table()
-    assert report.ok, report.table()
+    _proven_without_collisions(report)
 
 
 @pytest.mark.parametrize("action", ["block_the_ego", "change_lane_to_right"])
@@ -849,9 +850,7 @@ def test_an_ego_that_waited_and_then_turns_takes_its_turn_with_the_stages_oncomi
     report = _played(tmp_path, "green", 'scenario "green"\nroad {\n    at junction\n    has traffic_light\n}\n'
                      'stage red {\n    ego car stop\n}\nstage green {\n    ego car turn_left\n'
                      '    car c1 at road_of_straight go_straight\n}\n')
-    for player in ("sumo", "esmini"):
-        assert not _verdict(report, player).collisions, report.table()
-    assert report.ok, report.table()
+    _proven_without_collisions(report)
 
 
 def test_a_later_vehicle_behind_the_ego_appears_behind_the_one_already_following_it(esmini, tmp_path):
@@ -875,9 +874,7 @@ def test_a_queue_at_a_red_light_moves_off_with_the_ego_on_green(esmini, tmp_path
     out = tmp_path / "queue.xosc"
     write(compile_and_prove(parse_file(source), out, log=lambda m: None)[0], out)
     report = validate(out, "all")
-    for player in ("sumo", "esmini"):
-        assert not _verdict(report, player).collisions, report.table()
-    assert report.ok, report.table()
+    _proven_without_collisions(report)
 
 
 def test_an_ego_standing_behind_a_stopped_car_sets_off_to_go_round_it_later(esmini, tmp_path):
@@ -923,6 +920,4 @@ def test_an_ego_that_waits_then_turns_stops_behind_a_vehicle_standing_on_the_roa
     report = _played(tmp_path, "wait_turn", 'scenario "wait_turn"\nroad {\n    at junction\n    has traffic_light\n}\n'
                      'stage red {\n    ego car stop\n    police po1 at at_the_destination stop\n}\n'
                      'stage green {\n    ego car turn_left\n}\n')
-    for player in ("sumo", "esmini"):
-        assert not _verdict(report, player).collisions, report.table()
-    assert report.ok, report.table()
+    _proven_without_collisions(report)
