@@ -2986,23 +2986,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural and \
             _gets_out(units, head):  # "the driver gets out and walks across": a person on foot now
         kind, definite = "pedestrian", False
-        left = [e for e in recent if not e.is_ego and e.type not in V.VULNERABLE_TYPES] or \
-            [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES]
-        vehicle_left = left[-1] if left else None
+        vehicle_left = _last_named(r, recent, lambda e: not e.is_ego and e.type not in V.VULNERABLE_TYPES)
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
-        driven = [e for e in recent if not e.is_ego and e.type not in ("pedestrian",)] or \
-            [e for e in r.entities if not e.is_ego and e.type != "pedestrian"]
-        if driven:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
-            return NounPhrase(driven[-1], head, first)
+        driven = _last_named(r, recent, lambda e: not e.is_ego and e.type != "pedestrian")
+        if driven is not None:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
+            return NounPhrase(driven, head, first)
     crewed = _crewed_vehicle(r, units, head, first, recent, definite or not words) if count is None else None
     if crewed is not None:  # "a police car ... the officers pulled me over", "a motorbike ... the biker": its own
         return NounPhrase(crewed, head, first)
     if definite and count is None and u.base in RIDING_PEOPLE and not plural and \
             not any(e.type == "pedestrian" for e in r.entities):
-        riders = [e for e in recent if e.type in V.TWO_WHEELER_TYPES] or \
-            [e for e in r.entities if e.type in V.TWO_WHEELER_TYPES]
-        if riders:  # "a cyclist swerving in the bike lane ... until the guy turned right": the rider
-            return NounPhrase(riders[-1], head, first)
+        rider = _last_named(r, recent, lambda e: e.type in V.TWO_WHEELER_TYPES)
+        if rider is not None:  # "a cyclist swerving in the bike lane ... until the guy turned right": the rider
+            return NounPhrase(rider, head, first)
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
@@ -3119,9 +3115,14 @@ def _crewed_vehicle(r: _Reader, units: list[Unit], head: int, first: int, recent
     if not types or any(not e.is_ego and (e.head == u.base or e.type == u.meaning != "pedestrian")
                         for e in r.entities):
         return None
-    vehicles = [e for e in recent if not e.is_ego and e.type in types] or \
-        [e for e in r.entities if not e.is_ego and e.type in types]
-    return vehicles[-1] if vehicles else None
+    return _last_named(r, recent, lambda e: not e.is_ego and e.type in types)
+
+
+def _last_named(r: _Reader, recent: list[Entity], fits) -> Entity | None:
+    """The last one that fits among those named lately, else among all named: whom 'the driver', 'the rider',
+    'the officers' belong to."""
+    return next((e for e in reversed(recent) if fits(e)), None) or \
+        next((e for e in reversed(r.entities) if fits(e)), None)
 
 
 def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
