@@ -1408,7 +1408,6 @@ def _speed_limits(r: _Reader) -> list[str]:
     return out
 
 
-
 LIMIT_HEDGES = {"is", "was", "the", "speed", "literally", "exactly", "just", "actually", "basically", "also", "bang",
                 "on", "right", "precisely", "legal", "posted"}  # "which is literally the limit"; not "way over the limit"
 
@@ -1936,7 +1935,6 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             labelled = labelled or len(tail) >= 2 and tail[-1].category == "positions" and \
                 tail[-2].category == "agents" and tail[-2].base.split()[-1] in APPOSED_HEADS | {"car"} and \
                 not _has_verb(current) and nxt is not None and nxt.word in ("a", "an") and closed
-            labelled = labelled or not _has_verb(current) and _kind_apposed_at(units, k, current)
             ego_make = bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and \
                 len(current[-1].tokens) > 1 and nxt is not None and (
                     nxt.word in ("a", "an") or nxt.word in COLOURS | {"white", "black", "dark"}) and closed
@@ -2491,7 +2489,6 @@ def _met_in_a_rule(sentence: list[Token], before: list[Token], after: list[Token
     return order.word not in SUBJECT_PRONOUNS and order.word == order.base and \
         lexicon().phrases.get((order.base,), ("",))[0] in ("actions",) or \
         order.word in ("change", "slow", "move", "give", "pull", "keep", "stay", "wait", "yield", "stop")
-
 
 
 def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
@@ -4765,14 +4762,12 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
                     or (between and prev.entity.head.split()[-1] in APPOSED_HEADS
-                        and units[np.first].word in ("a", "an"))  # "a third-party vehicle, a silver hatchback,"
-                    or _kind_set_off(units, prev, np, between)):
+                        and units[np.first].word in ("a", "an"))):  # "a third-party vehicle, a silver hatchback,"
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
                         a.type = b.type
-                elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS or \
-                        _kind_set_off(units, prev, np, between):
+                elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS:
                     _fold(r, a, b)
                     folded_at[id(prev)] = np.index  # "Target is a pedestrian dummy (EPTa)": the dummy's short name
                 if b in r.entities:
@@ -4865,22 +4860,6 @@ def _members_listed(r: _Reader, clause: Clause, phrases: list[NounPhrase], recen
     return phrases
 
 
-def _set_between_commas(clause: Clause, pending: list[Entity], new: list[Entity]) -> Entity | None:
-    """'A second pedestrian, a child dummy, crosses', 'a car, a red Ford, cut in': an indefinite noun of the same
-    type set between commas right after a clause that only named one agent, its verb after the second comma,
-    says what that one is; the new agent it made is that one."""
-    units = clause.units
-    if len(pending) != 1 or clause.link != "," or len(units) < 4 or units[0].word not in ("a", "an"):
-        return None
-    head = next((k for k, u in enumerate(units) if u.category == "agents"), None)
-    if head is None or head + 2 >= len(units) or units[head + 1].category != "comma" or \
-            units[head + 2].category != "actions" or units[head].tokens[-1].plural:
-        return None
-    same = [e for e in new if not e.is_ego and e.type == pending[0].type and e.count == 1
-            and e.head == units[head].base]
-    return same[0] if len(same) == 1 and not pending[0].is_ego and pending[0].count == 1 else None
-
-
 def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> bool:
     """'I was driving a bus', 'you're at the wheel of the ambulance', 'the player pulls the bus in', 'I was the
     front-seat passenger in my husband's Honda': a vehicle the speaking ego drives, steers or sits in is the ego's
@@ -4950,31 +4929,6 @@ def _one_more_after_a_placed_group(units: list[Unit], i: int) -> bool:
         elif u.category == "agents" and u.meaning != "ego":
             return placed and u.tokens[-1].plural and j > 0 and units[j - 1].category in ("numbers", "number")
     return False
-
-
-def _kind_apposed_at(units: list[Unit], k: int, current: list[Unit]) -> bool:
-    """The comma at k opens '..., a child dummy, crosses' after a general noun of that kind: an apposition."""
-    if not current or current[-1].category != "agents" or current[-1].base.split()[-1] not in GENERAL_NOUNS or \
-            current[-1].meaning in ("ego", "none", "generic") or k + 1 >= len(units) or units[k + 1].word not in ("a", "an"):
-        return False
-    for j in range(k + 2, min(k + 6, len(units) - 2)):
-        if units[j].category == "agents":
-            return units[j].meaning == current[-1].meaning and units[j + 1].category == "comma" and \
-                units[j + 2].category == "actions"
-        if units[j].category not in ("word", "behaviours", "numbers") or units[j].word in ("and", "or"):
-            return False
-    return False
-
-
-def _kind_set_off(units: list[Unit], prev: NounPhrase, np: NounPhrase, between: list[Unit]) -> bool:
-    """'A second pedestrian, a child dummy, crosses', 'a pedestrian, an elderly man, steps out': a general noun, then
-    one of its kind set off by commas before the verb, says what it is; no second agent ('a car, a van, and a bus
-    wait' is a list: 'and' follows)."""
-    after = np.index + 1
-    return not prev.entity.is_ego and not np.entity.is_ego and prev.entity.head.split()[-1] in GENERAL_NOUNS and \
-        prev.entity.type == np.entity.type and [u.category for u in between] == ["comma"] and \
-        units[np.first].word in ("a", "an") and after + 1 < len(units) and units[after].category == "comma" and \
-        units[after + 1].category == "actions"
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
@@ -5654,12 +5608,6 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         before = len(r.entities)
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         subject = _read_clause(r, clause, previous, recent, pending)
-        renamed = _set_between_commas(clause, pending, r.entities[before:])
-        if renamed is not None:  # "A car, a red Ford, cut in front of me": the car, said again
-            pending[0].aliases |= renamed.aliases | {renamed.head}
-            _fold(r, pending[0], renamed)
-            subject = [pending[0] if e is renamed else e for e in subject]
-            recent[:] = [pending[0] if e is renamed else e for e in recent]
         _boxed_in_by_those_listed(r, clause, before, ego_blocked, boxed)
         if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS:
             main_subject = subject
