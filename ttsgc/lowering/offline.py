@@ -2520,8 +2520,6 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
                 last.base != "vehicle" and any(m.category == "agents" and m.meaning == u.meaning
                                                for m in matches(tokens, last.index + 1)):
             return True  # "HOST B: Motorcycles." the topic, before the scene tells of one ("Actors:" heads a list)
-    if u.meaning not in ("ego", "none") and _in_a_definition(before):
-        return True  # "a pedestrian, defined here as any road user on foot,": what the word means, nobody
     if u.meaning not in ("ego", "none") and _met_in_a_rule(sentence, before, after):
         return True  # "when you see a police car stopped on the shoulder, change lanes": whoever one meets
     said_other = before[-2:-1] if before[-1:] and before[-1].word == "other" else before[-1:] if t.word == "other" \
@@ -2545,23 +2543,6 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
             lo, hi = sorted((t.index, nxt.index))
             if not any(y.word == "," for y in tokens[lo:hi]):
                 return True  # "was withdrawn in 2020": before the scene, in the same clause
-    return False
-
-
-DEFINING = (("defined", "as"), ("defined", "here", "as"), ("define", "as"), ("defines", "as"), ("that", "is", ","),
-            ("in", "other", "words"), ("by", "which", "we", "mean"), ("we", "mean"), ("refers", "to"), ("refer", "to"),
-            ("meaning",), ("understood", "as"), ("is", "defined", "as"))
-
-
-def _in_a_definition(before: list[Token]) -> bool:
-    """'a blocking event, which we define as another road user occupying the path', 'a cut-in, that is, a
-    situation in which a vehicle enters the lane': the nouns of a definition say what a word means; the scene's
-    own agents are named outside it. The definition runs from its marker to the next comma."""
-    words = [x.word for x in before]
-    for k in range(len(words)):
-        marker = next((p for p in DEFINING if tuple(words[k:k + len(p)]) == p), None)
-        if marker is not None and len(words) - (k + len(marker)) <= 8 and "," not in words[k + len(marker):]:
-            return True
     return False
 
 
@@ -3721,15 +3702,6 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 member = Entity(len(r.entities), kin.type, False, clause.stage, head=kin.head)
                 r.entities.append(member)  # "a red car in front, and a blue one behind it": another car
                 r.notes.append(f"inferred: 'a ... one' is another {kin.head}")
-                r.mark(u)
-                phrases.append(NounPhrase(member, i, i, introduced=True))
-                continue
-            group = next((np.entity for np in reversed(phrases) if np.index < i and np.entity is not None and
-                          not np.entity.is_ego), None) or kin
-            if group is not None and group.count > 1 and _one_more_after_a_placed_group(units, i):
-                member = Entity(len(r.entities), group.type, False, clause.stage, head=group.head)
-                r.entities.append(member)  # "two trucks ahead of me and one on my right": a third truck
-                r.notes.append(f"inferred: 'and one' after {group.count} placed {group.head}s is one more")
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i, introduced=True))
                 continue
@@ -4911,24 +4883,6 @@ def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounP
         return True
     entry = lexicon().phrases.get((tokens[k].base,)) or lexicon().phrases.get((tokens[k].word,))
     return not (tokens[k].word in ("and", "or", "a", "an", "the") or entry is not None and entry[0] == "agents")
-
-
-def _one_more_after_a_placed_group(units: list[Unit], i: int) -> bool:
-    """'two trucks ahead of me and one in the lane on my right': a counted group already placed, then 'and one' with
-    a place of its own is one more of them ('two cars, one ahead and one behind' places the two)."""
-    if i < 3 or units[i - 1].word != "and" or i + 1 >= len(units) or units[i + 1].category != "positions" and \
-            units[i + 1].word not in ("in", "on", "to", "at"):
-        return False
-    placed = False
-    for j in range(i - 2, -1, -1):
-        u = units[j]
-        if u.tokens[0].sentence != units[i].tokens[0].sentence or u.category == "comma":
-            return False
-        if u.category == "positions":
-            placed = True
-        elif u.category == "agents" and u.meaning != "ego":
-            return placed and u.tokens[-1].plural and j > 0 and units[j - 1].category in ("numbers", "number")
-    return False
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
