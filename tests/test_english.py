@@ -5169,6 +5169,11 @@ def test_the_people_a_vehicle_picks_up_or_sets_down_are_its_passengers(prompt, p
     assert sum(t == "pedestrian" for t, _, _ in found) == people and any(t == "bus" for t, _, _ in found), found
 
 
+@pytest.mark.parametrize("prompt", ["The bus stopped to pick up two women.", "A bus will pick up the kids ahead."])
+def test_pick_up_with_its_object_after_it_is_the_verb_and_no_pickup_truck(prompt):
+    assert [t for t, _, _ in agents(prompt)].count("car") == 1, agents(prompt)  # the ego only
+
+
 @pytest.mark.parametrize("prompt, required, without", [
     ("The ego waits at a crossroads without signals, stop or yield control.", (),
      ("traffic_light", "stop", "yield")),
