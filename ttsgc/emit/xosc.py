@@ -238,7 +238,7 @@ def followers_of_stopping(scene: BoundScene) -> list[tuple[BoundAgent, BoundAgen
 
     def sets_off_later(agent: BoundAgent) -> bool:  # an ego that waits, then drives on ('once green, we turn')
         return agent.is_ego and agent.action == "stop" and any(
-            step.action in ("go_straight",) + tuple(V.TURN_ACTIONS) for step in agent.later)
+            step.action in DRIVING_ON for step in agent.later)
 
     movers = [a for a in scene.agents if vehicle(a) and (a.action not in ("stop", "block_the_ego") or
                                                          sets_off_later(a))
@@ -508,7 +508,7 @@ def _queue_ahead_of_a_waiting_ego(scene: BoundScene, step: LaterAction) -> list[
     ('three cars incl. the ego stopped at a red light ... when it goes green the ego goes straight'): the queue
     it waited in moves off with it; left standing, the ego drives into it (in every player)."""
     ego = next(a for a in scene.agents if a.is_ego)
-    if ego.start is None or ego.action != "stop" or step.action not in ("go_straight",) + tuple(V.TURN_ACTIONS) or \
+    if ego.start is None or ego.action != "stop" or step.action not in DRIVING_ON or \
             any(x.action != "stop" for x in ego.later if x.stage < step.stage):
         return []
     along = 1 if ego.start.lane < 0 else -1  # a right lane (id < 0) drives along s
@@ -547,6 +547,7 @@ def _on_the_far_road_m(ego: BoundAgent) -> float:
 
 
 BRAKE_RATE = V.BRAKE_RATE  # m/s² of a stop
+DRIVING_ON = frozenset({"go_straight", *V.TURN_ACTIONS})  # what an ego that waited does when it sets off
 
 
 def _later_ego_group(ego: BoundAgent, step: LaterAction, minor: int, standing: bool = False) -> xosc.ManeuverGroup:
