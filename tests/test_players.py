@@ -921,3 +921,18 @@ def test_an_ego_that_waits_then_turns_stops_behind_a_vehicle_standing_on_the_roa
                      'stage red {\n    ego car stop\n    police po1 at at_the_destination stop\n}\n'
                      'stage green {\n    ego car turn_left\n}\n')
     _proven_without_collisions(report)
+
+
+def test_boxed_in_from_the_front_and_both_sides_every_blocker_pulls_in_ahead_of_the_ego(esmini, tmp_path):
+    """'One car in front, one on the left, one on the right, all slowing down and holding the ego there': the
+    side ones started level with the ego and pulled in onto it (not ahead when their action began), and onto
+    each other; now each starts ahead of the ones already in the ego's lane. In SUMO the ego stops behind the
+    nearest, and the others stand on beyond it, at the head of that queue."""
+    report = _played(tmp_path, "boxed", 'scenario "boxed"\nroad {\n    lanes >= 3\n}\nstage main {\n'
+                     '    ego car go_straight\n    car c1 at front block_the_ego\n    car c2 at left block_the_ego\n'
+                     '    car c3 at right block_the_ego\n}\n')
+    for player in ("sumo", "esmini"):
+        verdict = _verdict(report, player)
+        assert all(a.achieved for a in verdict.agents), report.table()
+        assert not [c for c in verdict.collisions if "ego" not in (c.a, c.b)], report.table()
+    assert report.ok, report.table()

@@ -92,6 +92,21 @@ def test_block_the_ego_and_its_failure(tmp_path):
     assert not _result(simulate(_edit(scene, drive_off)), "c1").achieved
 
 
+def test_a_blocker_standing_beyond_another_in_the_egos_path_heads_the_queue_the_ego_stopped_behind():
+    """'Boxed in': the ego (a braking player's) stops behind the nearest blocker; one that stands on beyond it,
+    in line, blocks too. One standing off the line, far down the road, or with nobody between, does not."""
+    from ttsgc.simulate.judge import _heads_a_queue
+    from ttsgc.simulate.trace import Sample
+    ego = Sample(t=9.0, x=0.0, y=0.0, h=0.0, speed=0.0)
+    near = Sample(t=9.0, x=7.0, y=0.1, h=0.0, speed=0.0)
+    assert _heads_a_queue(Sample(t=9.0, x=50.0, y=-0.2, h=0.0, speed=0.0), ego, [near])
+    assert not _heads_a_queue(Sample(t=9.0, x=50.0, y=3.5, h=0.0, speed=0.0), ego, [near])  # the next lane
+    assert not _heads_a_queue(Sample(t=9.0, x=200.0, y=0.0, h=0.0, speed=0.0), ego, [near])  # far beyond
+    assert not _heads_a_queue(Sample(t=9.0, x=50.0, y=0.0, h=0.0, speed=0.0), ego, [])  # nobody between
+    moving = Sample(t=9.0, x=0.0, y=0.0, h=0.0, speed=5.0)
+    assert not _heads_a_queue(Sample(t=9.0, x=50.0, y=0.0, h=0.0, speed=0.0), moving, [near])  # stopped for none
+
+
 def test_cross_the_road_and_its_failure(tmp_path):
     scene = _compiled("crushing", tmp_path)
     assert "crossed road" in _result(simulate(scene), "p1").reason

@@ -226,6 +226,12 @@ def _spacing(previous: Agent | None, agent: Agent) -> float:
     return _gap(agent)
 
 
+def _pulls_in_ahead(agent: Agent) -> bool:
+    """Blocks the ego from a lane beside it (not from behind: that one overtakes first)."""
+    where = agent.relative_to_ego
+    return agent.action == "block_the_ego" and where in LEFT_SIDE | RIGHT_SIDE and where not in BEHIND
+
+
 def _gap(agent: Agent) -> float:
     return agent.gap_m if agent.gap_m is not None else _default_gap(agent)
 
@@ -408,6 +414,8 @@ class Placer:
             target = (crosswalk - 1.5 - length / 2) if crosswalk is not None else min(
                 self.u_ego + 20.0, frame.length - length)
             outward = -1
+        elif _pulls_in_ahead(agent):
+            return self._ahead_to_pull_in(agent, stage, lane)
         elif where in AHEAD:
             edge = self.u_ego + ego_len / 2
             if stage == 0 and agent.action == "cross_the_road" and self.scenario.ego.action == "stop":
@@ -418,6 +426,18 @@ class Placer:
         else:  # left / right: beside the ego
             target, outward = self.u_ego, -1
         return self._put(agent, stage, frame, lane, target, outward)
+
+    def _ahead_to_pull_in(self, agent: Agent, stage: int, lane: LaneRef) -> BoundAgent:
+        """A vehicle that blocks the ego from a side lane starts ahead of the ego, or its pull-in would land on
+        the ego (a player changes lane when told, into whatever is there), and ahead of every body already
+        queued in the ego's lane, so that two blockers ("boxed in: one in front, one on each side") never pull
+        into one gap: it is counted into the ego lane's queue as well as its own."""
+        ego_len = V.BODIES[self.scenario.ego.type][0]
+        target = self._after(self.frame, self.ego_lane, self.u_ego + ego_len / 2, agent, +1)
+        bound = self._put(agent, stage, self.frame, lane, target, +1)
+        self.last_in_queue[(self.frame.approach.id, self.ego_lane, +1)] = \
+            self.last_in_queue[(self.frame.approach.id, lane, +1)]
+        return bound
 
     def _put(self, agent: Agent, stage: int, frame: _Frame, lane: LaneRef, target: float, outward: int,
              turn: Turn | None = None) -> BoundAgent:

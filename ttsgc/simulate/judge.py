@@ -331,7 +331,10 @@ def _check_agent(plan: Plan, trace: Trace, odr: OpenDrive, name: str, ego: str |
     if action == "stop":
         return result(*_stopped(after))
     if action == "block_the_ego":
-        return result(*_blocked(after, trace.samples.get(ego, []) if ego else [], bodies.get(ego), bodies[name]))
+        standing = [trail[-1] for other, trail in trace.samples.items()
+                    if other not in (name, ego) and trail and trail[-1].speed < STOPPED_MPS]
+        return result(*_blocked(after, trace.samples.get(ego, []) if ego else [], bodies.get(ego), bodies[name],
+                                standing))
     position = _start_position(plan, name)
     road = position[0] if position else samples[0].road
     if action in ("cross_the_road", "on_the_sidewalk") and road not in odr.roads:
@@ -452,9 +455,12 @@ def _stopped(after: list[Sample]) -> tuple[bool, str]:
     return False, f"never stood still (slowest {min(s.speed for s in after):.1f} m/s)"
 
 
-def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body: Body) -> tuple[bool, str]:
+def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body: Body,
+             standing: list[Sample] = ()) -> tuple[bool, str]:
     """Ahead of the ego when its action started, it came to stand on the ego's path: the ego then stopped
-    behind it, or (a player whose ego does not brake) ran into it or through its place."""
+    behind it, or (a player whose ego does not brake) ran into it or through its place, or it stands at the
+    head of a queue the ego stopped behind ("boxed in": the ego stops behind the nearest blocker, the others
+    stand on beyond it). `standing`: the last samples of the other bodies that ended standing."""
     since = _standstill(after)
     if since is None:
         return False, f"never stood still (slowest {min(s.speed for s in after):.1f} m/s)"
@@ -473,10 +479,29 @@ def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body
         side = -dx * math.sin(e.h) + dy * math.cos(e.h)
         if abs(side) < 2.0 and (-reach < ahead < reach or (e.t >= since and 0 < ahead < 40)):
             on_path.append(e)
+    if not on_path and _heads_a_queue(stop, ego_after[-1], standing):
+        return True, "stopped in the ego's path, beyond another that stands in it"
     if not on_path:
         return False, "stopped, but never in front of the ego"
     initial, slowest = first.speed, min(e.speed for e in on_path)
     return True, f"stopped in the ego's path (the ego went from {initial:.1f} to {slowest:.1f} m/s there)"
+
+
+QUEUE_REACH_M = 150.0  # how far down the ego's line a blocker beyond others may stand and still block it
+
+
+def _heads_a_queue(stop: Sample, ego: Sample, standing: list[Sample]) -> bool:
+    """Whether `stop` lies in line ahead of the standing ego, within QUEUE_REACH_M, with another standing body
+    in line between them (the one the ego stopped behind): the bodies a blocker ran on past during its pull-in
+    (some 60 m at motorway speed) are no gap the ego could use."""
+    def along(s: Sample) -> tuple[float, float]:
+        dx, dy = s.x - ego.x, s.y - ego.y
+        return dx * math.cos(ego.h) + dy * math.sin(ego.h), -dx * math.sin(ego.h) + dy * math.cos(ego.h)
+
+    ahead, side = along(stop)
+    if ego.speed >= STOPPED_MPS or not 0 < ahead < QUEUE_REACH_M or abs(side) >= 2.0:
+        return False
+    return any(0 < a < ahead and abs(b) < 2.0 for a, b in map(along, standing))
 
 
 def _crossed(odr: OpenDrive, road: str, first: Sample, after: list[Sample]) -> tuple[bool, str]:
