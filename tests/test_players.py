@@ -936,3 +936,25 @@ def test_boxed_in_from_the_front_and_both_sides_every_blocker_pulls_in_ahead_of_
         assert all(a.achieved for a in verdict.agents), report.table()
         assert not [c for c in verdict.collisions if "ego" not in (c.a, c.b)], report.table()
     assert report.ok, report.table()
+
+
+def test_an_ego_told_to_stop_for_a_car_pulling_out_stands_behind_it(esmini, tmp_path):
+    """'A car pulls out of a parking spot on the right and blocks me, so I stop': braking at once, the ego stood
+    some 40 m short of where the car came to stand, which blocked nothing (esmini); it brakes once the car is
+    in its lane."""
+    report = _played(tmp_path, "pulls_out", 'scenario "pulls_out"\nroad {\n    not at junction\n}\n'
+                     'stage main {\n    ego car stop\n    car c1 at front_right block_the_ego\n}\n')
+    for player in ("sumo", "esmini"):
+        assert _agent(report, player, "c1").achieved, report.table()
+    assert report.ok, report.table()
+    assert "ego_stop_after_c1_block_the_ego" in (tmp_path / "pulls_out.xosc").read_text()
+
+
+def test_an_ego_changing_lane_lets_a_faster_vehicle_coming_up_in_that_lane_pass_first(esmini, tmp_path):
+    """'Ego changes lanes left to get round a slow bus, a motorcycle in its blind spot (left rear)', the
+    motorcycle faster: told to change at once, the ego changed into the motorcycle (esmini)."""
+    report = _played(tmp_path, "mirror", 'scenario "mirror"\nroad {\n    lanes >= 2\n}\nstage main {\n'
+                     '    ego car change_lane_to_left\n    bus b1 at front go_straight cautious\n'
+                     '    motorcycle m1 at back_left go_straight speed 60 km/h\n}\n')
+    _proven_without_collisions(report)
+    assert "ego_passed_by_m1" in (tmp_path / "mirror.xosc").read_text()

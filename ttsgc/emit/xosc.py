@@ -688,6 +688,18 @@ def _level_in_the_lane_it_changes_into(agent: BoundAgent, scene: BoundScene) -> 
             and a.speed_mps > 0 and not a.start_delay_s]
 
 
+def _coming_up_in_the_lane_it_changes_into(agent: BoundAgent, scene: BoundScene) -> list[BoundAgent]:
+    """'V1 changes lanes to the left; V3, behind and to its left, is doing 45 mph': vehicles behind the ego on
+    the side it changes lane to that drive faster, so they come up level. A player changes lane when told,
+    into them (esmini); the ego lets them pass first, as a driver who looks in the mirror does."""
+    side = {"change_lane_to_left": "back_left", "change_lane_to_right": "back_right"}.get(agent.action)
+    if not agent.is_ego or agent.stage != 0 or side is None or agent.lane_change is None or agent.trigger:
+        return []
+    return [a for a in scene.agents if not a.is_ego and a.stage == 0 and a.relative_to_ego == side
+            and a.type != "pedestrian" and a.action == "go_straight" and not _trajectory_bound(a)
+            and a.speed_mps > agent.speed_mps and not a.start_delay_s and a.trigger is None]
+
+
 def _passes_the_ego_first(agent: BoundAgent, scene: BoundScene) -> BoundAgent | None:
     """The ego, when the agent comes up faster from behind in the lane beside and changes into the ego's lane
     ('comes speeding up on the left, overtakes and cuts in'): a player changes lane when told, into the ego;
@@ -698,6 +710,17 @@ def _passes_the_ego_first(agent: BoundAgent, scene: BoundScene) -> BoundAgent | 
             agent.trigger is not None or agent.speed_mps <= ego.speed_mps or agent.start_delay_s:
         return None
     return ego
+
+
+def _blocker_pulling_in(agent: BoundAgent, scene: BoundScene) -> str | None:
+    """The event an ego told to stop waits for when a vehicle pulls into its lane to block it ("a car pulls out
+    of a parking spot and blocks me, so I stop"): braking at once, the ego stood 40 m and more short of where
+    the blocker came to stand, which blocked nothing; it brakes once the blocker is in its lane."""
+    if not agent.is_ego or agent.action != "stop" or agent.trigger is not None:
+        return None
+    blocker = next((a for a in scene.agents if a.stage == 0 and a.action == "block_the_ego" and a.lane_change),
+                   None)
+    return f"{blocker.name}_{blocker.action}" if blocker is not None else None
 
 
 def _events(agent: BoundAgent, scene: BoundScene, minor: int):
@@ -766,7 +789,18 @@ def _events(agent: BoundAgent, scene: BoundScene, minor: int):
                     round((agent.length + passed.length) / 2 + 1.0, 3), xosc.Rule.lessThan, _EUCLIDEAN[minor >= 1],
                     passed.name, alongroute=False, freespace=False), agent.name)))
             clear_of += ((passed.name, round((agent.length + passed.length) / 2 + LANE_CHANGE_ROOM_M, 3)),)
-        events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits, clear_of, level)))
+        passers = _coming_up_in_the_lane_it_changes_into(agent, scene)
+        if passers:  # it waits for the last of them to draw level, then changes in once they are all past
+            last = max(passers, key=lambda a: a.distance_to_ego_m / (a.speed_mps - agent.speed_mps))
+            level = f"{agent.name}_passed_by_{last.name}"
+            events.append((level, [("hold", xosc.AbsoluteSpeedAction(agent.speed_mps, step))], xosc.EntityTrigger(
+                f"{level}_near", 0, xosc.ConditionEdge.none, xosc.RelativeDistanceCondition(
+                    round((agent.length + last.length) / 2 + 1.0, 3), xosc.Rule.lessThan, _EUCLIDEAN[minor >= 1],
+                    last.name, alongroute=False, freespace=False), agent.name)))
+            clear_of += tuple((a.name, round((agent.length + a.length) / 2 + LANE_CHANGE_ROOM_M, 3))
+                              for a in passers)
+        after = level or _blocker_pulling_in(agent, scene)
+        events.append((label, setup + actions, _start_trigger(agent, label, minor, walker_waits, clear_of, after)))
         if beside:  # it drops back to change in behind them, then drives on at its own speed
             events.append((f"{agent.name}_makes_room", [("slow", xosc.AbsoluteSpeedAction(
                 round(agent.speed_mps * MAKING_ROOM_SHARE, 3), xosc.TransitionDynamics(
