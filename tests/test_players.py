@@ -958,3 +958,24 @@ def test_an_ego_changing_lane_lets_a_faster_vehicle_coming_up_in_that_lane_pass_
                      '    motorcycle m1 at back_left go_straight speed 60 km/h\n}\n')
     _proven_without_collisions(report)
     assert "ego_passed_by_m1" in (tmp_path / "mirror.xosc").read_text()
+
+
+@pytest.mark.parametrize("obstacle", ["block_the_ego", "stop"])
+def test_an_ego_going_round_a_body_that_stands_in_its_lane_comes_up_behind_it_first(esmini, tmp_path, obstacle):
+    """'Stopped truck blocking my lane, ego changes left to go round': told to change at once, the ego left its
+    lane before the truck stood in it, so the truck blocked nothing (both players). The truck starts farther
+    ahead, and the ego pulls out once it is about to reach it."""
+    report = _played(tmp_path, "round", 'scenario "round"\nroad {\n    lanes >= 2\n}\nstage main {\n'
+                     f'    ego car change_lane_to_left\n    truck t1 at front {obstacle}\n}}\n')
+    _proven_without_collisions(report)
+    event = (tmp_path / "round.xosc").read_text().split('name="ego_change_lane_to_left"')[1].split("</Event>")[0]
+    assert "RelativeDistanceCondition" in event and 'entityRef="t1"' in event
+
+
+def test_an_ego_going_round_a_stopped_bus_lets_a_faster_car_in_the_next_lane_pass_first(esmini, tmp_path):
+    """A reconstruction: V1 changes left round a bus stopped ahead while V3, behind it on the left, does 45 mph.
+    The ego changed into V3 (esmini), and once it waited for V3, ran into the bus."""
+    report = _played(tmp_path, "bus", 'scenario "bus"\nroad {\n    lanes >= 3\n}\nstage main {\n'
+                     '    ego car change_lane_to_left\n    bus v2 at front stop\n'
+                     '    car v3 at back_left go_straight speed 45 mph\n}\n')
+    _proven_without_collisions(report)

@@ -226,6 +226,11 @@ def _spacing(previous: Agent | None, agent: Agent) -> float:
     return _gap(agent)
 
 
+GOING_ROUND_S = 2.0  # how long before it would reach a body standing in its lane an ego going round it starts
+# its 3 s lane change: three quarters across by then (a sinusoid), clear of a truck's width
+STANDING_FIRST_S = 1.5  # how long the body it goes round has stood when the ego pulls out
+
+
 def _pulls_in_ahead(agent: Agent) -> bool:
     """Blocks the ego from a lane beside it (not from behind: that one overtakes first)."""
     where = agent.relative_to_ego
@@ -356,6 +361,7 @@ class Placer:
             downstream = position in AHEAD
             for agent in _queue(by_position[position], downstream):
                 placed.append(self._place_agent(agent, 0))
+        placed[0] = self._ego_goes_round(placed[0], placed[1:])
         for k, stage in enumerate(s.stages[1:], start=1):
             groups: dict[str, list[Agent]] = {}
             for agent in stage.agents:
@@ -420,12 +426,42 @@ class Placer:
             edge = self.u_ego + ego_len / 2
             if stage == 0 and agent.action == "cross_the_road" and self.scenario.ego.action == "stop":
                 edge += self._ego_stopping_m()  # it crosses ahead of where the ego comes to stand, not under it
+            if stage == 0 and lane == self.ego_lane and self._goes_round(agent) and \
+                    (frame.approach.id, lane, +1) not in self.last_in_queue:
+                edge += self._room_to_go_round(agent)
             target, outward = self._after(frame, lane, edge, agent, +1), +1
         elif where in BEHIND:
             target, outward = self._after(frame, lane, self.u_ego - ego_len / 2, agent, -1), -1
         else:  # left / right: beside the ego
             target, outward = self.u_ego, -1
         return self._put(agent, stage, frame, lane, target, outward)
+
+    def _goes_round(self, agent: Agent) -> bool:
+        """Whether the ego, changing lane in the first stage at no trigger of its own, goes round this agent:
+        one that comes to stand ahead in its lane ('a stopped truck blocks my lane; I change left to go
+        round it')."""
+        ego = self.scenario.ego
+        return ego.action in LANE_CHANGE_OF_ACTION and ego.trigger is None and \
+            agent.relative_to_ego == "front" and agent.action in ("stop", "block_the_ego")
+
+    def _room_to_go_round(self, agent: Agent) -> float:
+        """How much farther ahead than its gap the body the ego goes round starts: its own braking distance and
+        what the ego runs before it starts its lane change, so the ego comes up behind it standing and then
+        pulls out (told to change at once, it changed before the body was in its way: blocked nothing)."""
+        limit = self.frame.approach.speed_limit_kmh
+        speed = _speed(agent, limit)
+        return speed ** 2 / (2 * V.BRAKE_RATE[agent.behavior]) + \
+            (GOING_ROUND_S + STANDING_FIRST_S) * _speed(self.scenario.ego, limit)
+
+    def _ego_goes_round(self, ego: BoundAgent, others: list[BoundAgent]) -> BoundAgent:
+        """The ego's lane change starts once it is about to reach the body it goes round (the nearest such)."""
+        agents = {a.name: a for a in self.scenario.stages[0].agents}
+        ahead = [a for a in others if a.stage == 0 and a.name in agents and self._goes_round(agents[a.name])]
+        if not ahead:
+            return ego
+        body = min(ahead, key=lambda a: a.distance_to_ego_m)
+        reach = GOING_ROUND_S * ego.speed_mps + (V.BODIES[ego.type][0] + V.BODIES[body.type][0]) / 2 + 2.0
+        return ego.model_copy(update={"trigger": Trigger(within_m=round(reach, 3), of=body.name)})
 
     def _ahead_to_pull_in(self, agent: Agent, stage: int, lane: LaneRef) -> BoundAgent:
         """A vehicle that blocks the ego from a side lane starts ahead of the ego, or its pull-in would land on

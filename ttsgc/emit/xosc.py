@@ -693,7 +693,7 @@ def _coming_up_in_the_lane_it_changes_into(agent: BoundAgent, scene: BoundScene)
     the side it changes lane to that drive faster, so they come up level. A player changes lane when told,
     into them (esmini); the ego lets them pass first, as a driver who looks in the mirror does."""
     side = {"change_lane_to_left": "back_left", "change_lane_to_right": "back_right"}.get(agent.action)
-    if not agent.is_ego or agent.stage != 0 or side is None or agent.lane_change is None or agent.trigger:
+    if not agent.is_ego or agent.stage != 0 or side is None or agent.lane_change is None:
         return []
     return [a for a in scene.agents if not a.is_ego and a.stage == 0 and a.relative_to_ego == side
             and a.type != "pedestrian" and a.action == "go_straight" and not _trajectory_bound(a)

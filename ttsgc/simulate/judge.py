@@ -458,7 +458,8 @@ def _stopped(after: list[Sample]) -> tuple[bool, str]:
 def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body: Body,
              standing: list[Sample] = ()) -> tuple[bool, str]:
     """Ahead of the ego when its action started, it came to stand on the ego's path: the ego then stopped
-    behind it, or (a player whose ego does not brake) ran into it or through its place, or it stands at the
+    behind it, came up behind it and went round it, or (a player whose ego does not brake) ran into it or
+    through its place, or it stands at the
     head of a queue the ego stopped behind ("boxed in": the ego stops behind the nearest blocker, the others
     stand on beyond it). `standing`: the last samples of the other bodies that ended standing."""
     since = _standstill(after)
@@ -472,12 +473,13 @@ def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body
     if (after[0].x - first.x) * math.cos(first.h) + (after[0].y - first.y) * math.sin(first.h) <= 0:
         return False, "was not ahead of the ego when its action started"
     reach = (ego_body.length if ego_body else 4.5) / 2 + body.length / 2
+    held_up = max(40.0, HELD_UP_S * first.speed)
     on_path = []
     for e in ego_after:
         dx, dy = stop.x - e.x, stop.y - e.y
         ahead = dx * math.cos(e.h) + dy * math.sin(e.h)
         side = -dx * math.sin(e.h) + dy * math.cos(e.h)
-        if abs(side) < 2.0 and (-reach < ahead < reach or (e.t >= since and 0 < ahead < 40)):
+        if abs(side) < 2.0 and (-reach < ahead < reach or (e.t >= since and 0 < ahead < held_up)):
             on_path.append(e)
     if not on_path and _heads_a_queue(stop, ego_after[-1], standing):
         return True, "stopped in the ego's path, beyond another that stands in it"
@@ -485,6 +487,11 @@ def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body
         return False, "stopped, but never in front of the ego"
     initial, slowest = first.speed, min(e.speed for e in on_path)
     return True, f"stopped in the ego's path (the ego went from {initial:.1f} to {slowest:.1f} m/s there)"
+
+
+HELD_UP_S = 3.0  # a body standing this many seconds ahead of the ego in its lane, at the speed the ego had when
+# the body's action began, holds it up (40 m at least): an ego going round it pulls out some 2 s before it
+# would reach it, and may have braked a little first
 
 
 QUEUE_REACH_M = 150.0  # how far down the ego's line a blocker beyond others may stand and still block it
