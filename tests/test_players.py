@@ -979,3 +979,19 @@ def test_an_ego_going_round_a_stopped_bus_lets_a_faster_car_in_the_next_lane_pas
                      '    ego car change_lane_to_left\n    bus v2 at front stop\n'
                      '    car v3 at back_left go_straight speed 45 mph\n}\n')
     _proven_without_collisions(report)
+
+
+def test_in_sumo_a_stops_event_completes_when_the_body_stands_as_in_esmini(tmp_path):
+    """A speed change at a rate is done when the speed is reached (esmini); the SUMO player ended the event when
+    the command was given, so a later stage began while the ego still rolled, and its stop was never seen."""
+    from ttsgc.simulate.players import player
+    from ttsgc.simulate.plan import read_plan
+    source = tmp_path / "halt.tsg"
+    source.write_text('scenario "halt"\nroad {\n    lanes >= 2\n}\nstage first {\n    ego car stop\n}\n'
+                      'stage second {\n    ego car change_lane_to_left\n}\n')
+    out = tmp_path / "halt.xosc"
+    write(compile_scenario(parse_file(source), out), out)
+    trace = player("sumo").play(read_plan(out), 1)
+    ego = trace.samples["ego"]
+    stands = next(s.t for s in ego if s.speed < 0.1)
+    assert trace.ended["ego_stop"] >= 0.8 * stands, (trace.ended["ego_stop"], stands)  # SUMO's slowDown lags

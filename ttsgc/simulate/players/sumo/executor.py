@@ -465,6 +465,18 @@ class Executor:
         lane = self.by_id.get(f"{edge}_{index}")
         return lane is not None and not lane.allow_pedestrians
 
+    def _speed_change_s(self, actor: str, action: Action) -> float:
+        """How long a speed change at a rate takes from the actor's speed now."""
+        import libsumo as ts
+
+        if actor in self.movers:
+            current = self.movers[actor].speed
+        elif actor in self.active:
+            current = ts.vehicle.getSpeed(actor)
+        else:
+            return 0.0
+        return abs(current - action.value) / action.rate
+
     def _speed(self, entity: Entity, action: Action, t: float) -> None:
         import libsumo as ts
 
@@ -725,12 +737,14 @@ class Executor:
                         not any(a.kind in ("add", "teleport") for a in event.actions):
                     continue  # added, not yet inserted: it cannot act before it is on the road
                 self.run.fired[event.name] = t
+                takes = [a.duration for a in event.actions if a.kind == "lane_change"] + \
+                    [self._speed_change_s(event.actor, a) for a in event.actions if a.kind == "speed" and a.rate]
                 for action in event.actions:
                     self.execute(event.actor, action, t, event)
                 if not any(m.path_event == event.name for m in self.movers.values()):
-                    # its actions are commands, done when given; a lane change when its time is up
-                    self.run.event_end[event.name] = t + max([a.duration for a in event.actions
-                                                              if a.kind == "lane_change"], default=0.0)
+                    # its actions are commands, done when given; a lane change or a speed change at a rate
+                    # when its time is up (esmini: a stop's event completes when the body stands)
+                    self.run.event_end[event.name] = t + max(takes, default=0.0)
             if all(self.run.event_end.get(e.name, math.inf) <= t for e in act.events):
                 self.run.act_end[act.name] = t
 
