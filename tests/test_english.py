@@ -5663,3 +5663,34 @@ def test_a_lane_changes_side_set_off_by_commas_is_its_direction(prompt, action):
 
 def test_a_move_between_numbered_lanes_is_a_lane_change():
     assert any(p == "ego" and a.startswith("change_lane") for _, a, p in agents("The ego moves from lane 1 to lane 2."))
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus turns left at a junction while a pedestrian crosses the road it turns into.",
+     [("bus", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination")]),
+    ("A truck changes lane to the left because a car is stopped ahead.",
+     [("car", "stop", "front"), ("truck", "change_lane_to_left", "ego")]),
+    ("A car drives down a residential street and a child runs out in front of it from the right.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("A police car follows a red sedan, which suddenly stops.",
+     [("car", "stop", "front"), ("police", "go_straight", "ego")]),
+    ("Coach in the middle lane of a motorway, an ambulance comes up fast, and our driver moves over to the left.",
+     [("ambulance", "go_straight", "front"), ("bus", "change_lane_to_left", "ego")]),
+])
+def test_a_text_that_names_no_ego_tells_its_scene_from_the_first_vehicle_it_names(prompt, expected):
+    """A third-person scene ('a bus turns left ...') or one naming the ego only as 'our driver' is told from its
+    first vehicle: it is the ego, not a vehicle ahead of an ego the reader made up."""
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "bus pulling out of a stop on the right, rain",
+    "Two-lane road, and this pickup's doing like forty. Don't try to pass him. Stay behind.",
+    "A van is parked on the right; a child runs out from behind it.",
+    "The lorry kept going rather than stopping at the red light.",
+])
+def test_a_vehicle_placed_relative_to_someone_or_an_order_to_the_driver_leaves_the_ego_unnamed(prompt):
+    """A place ('on the right', 'ahead') is relative to an onlooker, and an order is given to the one at the
+    wheel: then the ego is that onlooker, and the vehicle another."""
+    assert sum(1 for a in lower(prompt).scenario.agents() if a.relative_to_ego is None) == 1
+    assert ("car", "go_straight", "ego") in agents(prompt)

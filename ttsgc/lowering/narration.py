@@ -477,11 +477,14 @@ def _named_driver(text: str, notes: list[str]) -> str:
     return _drivers_pronoun(text, notes) if names or "the ego" in text else text
 
 
+NOT_A_CAR_PART = r"(?![\s-]+(?:side|seat|door|window|mirror)\b)"  # "my driver side mirror": the car's, no person
+
+
 def _passengers_driver(text: str, notes: list[str]) -> str:
     """'my driver eased off', 'Driver slowed way down': a passenger's account; whoever drives the narrator is the
     ego, named by role ('my driver', 'the driver' when no other vehicle is named before) or by name."""
-    said = re.search(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b(?:\s*,?\s*(" + FULL_NAME + r"))?",
-                     text)
+    said = re.search(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b" + NOT_A_CAR_PART +
+                     r"(?:\s*,?\s*(" + FULL_NAME + r"))?", text)
     bare = re.search(r"(?:^|[.!?,]\s+)(?:the\s+)?[Dd]river\b(?!\s+of\b)", text)
     if said is None and bare is None:
         return text
@@ -492,8 +495,8 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
         return text  # "a truck pulled out. The driver ...", "Broken-down HGV ahead. Driver got out": its driver
         # ("Car was clean, driver was friendly": the ride's own)
     names = [w for w in (said.group(1).split() if said and said.group(1) else []) if w not in NOT_NAMES]
-    text = re.sub(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b(?:\s*,?\s*" + FULL_NAME + r")?",
-                  "the ego", text) if said else text
+    text = re.sub(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b" + NOT_A_CAR_PART +
+                  r"(?:\s*,?\s*" + FULL_NAME + r")?", "the ego", text) if said else text
     text = re.sub(r"(^|[.!?,]\s+)(?:[Tt]he\s+)?[Dd]river\b(?!\s+of\b)", r"\1the ego", text)
     text = re.sub(r"(^|[.!?,]\s+)(?:[Tt]he\s+)?[Cc]ar\s+(?=(?:was|is|smelled|smelt|smells|looked|looks|felt|feels)\s+"
                   r"(?!in\b|on\b|at\b|ahead\b|behind\b|next\b|beside\b|stopped\b|parked\b|coming\b|going\b|"

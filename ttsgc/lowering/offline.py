@@ -5604,6 +5604,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
+    if not ego_words or "read the narrator's driver as the ego" in narration.notes:
+        _protagonist_vehicle(r, driver_named=bool(ego_words))
     _witness_on_foot(r)
     _screens_on_the_crossers_side(r)
     _out_of_a_vehicle_on_a_side(r)
@@ -5714,6 +5716,57 @@ def _what_i_was(tokens: list[Token], k: int) -> set[str]:
         out.append(t.word)
     pairs = {f"{a} {b}" for a, b in zip(out, out[1:])}
     return set(out) | pairs
+
+
+OWN_WAY = {"go_straight", "move", "turn", "turn_left", "turn_right", "lane_change", "lane_left", "lane_right", "u_turn",
+           "reach"}  # the classes of actions a vehicle does on its own way, not to or for someone else
+
+
+def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
+    """'A bus turns left at a junction while a pedestrian crosses', 'Semi on a county road, a cyclist on the
+    shoulder ahead': a text that names no ego, or names it only as the narrator's driver ('coach in the middle
+    lane ..., our driver moves over'), tells its scene from the first vehicle it names, placed nowhere (a place
+    would be relative to someone else: 'a bus pulling out on the right'). That vehicle is the ego's; an ego
+    the reader supplied for a verb with no subject is that vehicle too."""
+    first = next((e for e in sorted(r.entities, key=lambda e: e.key) if not e.is_ego), None)  # a group named
+    # first ("four vehicles wait: a car, a bus, ...") has count 0 once its members are named: no protagonist
+    if first is None or first.type not in V.EGO_TYPES - {"motorcycle"} or first.count != 1 or first.generic or \
+            first.features or first.relative_to is not None or first.parent is not None or first.named_of is not None:
+        return
+    earliest = min((a[0] for a in first.actions), default=0)
+    if not driver_named and (not any(a[4] in OWN_WAY for a in first.actions) or any(
+            a[0] == earliest and a[4] in ("stop", "block") for a in first.actions)):
+        return  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then pulled
+        # away": met by someone, who is the ego
+    opening = [u for u in r.units if u.start == 0 or r.tokens[u.start - 1].sentence != u.tokens[0].sentence]
+    named = next((u for u in r.units if u.category == "agents"), None)
+    if named is None or next(u for u in r.units if u.tokens[0].sentence == named.tokens[0].sentence and
+                             u.category != "word") is not named:
+        return  # "the queue reaches the retail park, and a lorry is edging along": the scene opens on no vehicle
+    if named.start > 0 and r.tokens[named.start - 1].word in ("the", "this", "that"):
+        return  # "the lorry kept going through the red light": one the onlooker points at, the onlooker the ego
+    if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
+        return  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
+    if not driver_named and any(t.word in SPEAKERS for t in r.tokens):
+        return  # "a semi hit my mirror": the one speaking is the ego
+    supplied = next((e for e in r.entities if e.is_ego), None)
+    if driver_named and supplied is not None:  # the driver is the ego, the vehicle theirs
+        supplied.type = first.type
+        supplied.actions += [a for a in first.actions if not any(b[0] == a[0] for b in supplied.actions)]
+        for e in r.entities:
+            if e.relative_to is first:
+                e.relative_to = supplied
+        r.entities.remove(first)
+        r.notes.append(f"read the {first.head} as the ego's: the text names the ego only as its driver")
+        return
+    if supplied is not None:  # made for a verb with no subject, or a turn the text implies
+        first.actions += [a for a in supplied.actions if not any(b[0] == a[0] for b in first.actions)]
+        for e in r.entities:
+            if e.relative_to is supplied:
+                e.relative_to = first
+        r.entities.remove(supplied)
+    first.is_ego = True
+    r.notes.append(f"read the {first.head} as the ego: the text names no other and places it nowhere")
 
 
 def _witness_on_foot(r: _Reader) -> None:
