@@ -93,7 +93,8 @@ class Narration:
 def read_narration(prompt: str) -> Narration:
     """The account a prompt gives, out of its document, with its ego's other names spelled as the ego."""
     notes: list[str] = []
-    text = _without_letter_frame(prompt, notes)
+    text = _gherkin(prompt, notes)
+    text = _without_letter_frame(text, notes)
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
     text = _texting(text)
@@ -112,6 +113,61 @@ def read_narration(prompt: str) -> Narration:
     text = _protagonist(text, notes)
     text = _storys_driver(text, notes)
     return Narration(text, notes)
+
+
+GHERKIN_STEP = re.compile(r"^[ \t]*(Given|When|Then|And|But|\*)[ \t]+(\S.*?)[ \t]*$")  # the keywords as written
+GHERKIN_HEADER = re.compile(r"^[ \t]*(Feature|Rule|Background|Scenario Outline|Scenario Template|Scenario|Example|"
+                            r"Examples|Scenarios)[ \t]*:[ \t]*(.*?)[ \t]*$", re.I)
+THEN_MODAL = re.compile(r"\b(?:may|can|could|might|will|shall|must|(?:is|are) (?:allowed|permitted|expected|"
+                        r"required|supposed|able) to)\b(?!\s+have\b)", re.I)
+GHERKIN_ASIDE = re.compile(r"^[ \t]*(?:@\S+(?:[ \t]+@\S+)*|#.*|\"\"\"|```)[ \t]*$")  # tags, comments, doc-string marks
+
+
+def _gherkin(text: str, notes: list[str]) -> str:
+    """'Given the ego is driving ... When a pedestrian steps out ... Then the ego should stop': acceptance criteria
+    in steps. The keywords are no words of the scene: a Then step is what the ego does in reaction to the When
+    step before it, so the two read as one sentence ('When a pedestrian steps out, the ego should stop'), not
+    as a 'then' that starts a stage; an And or But step goes on with the step before it. Whether the When starts
+    a stage ('When the light turns green') is the reader's to say, as in prose."""
+    lines = text.split("\n")
+    steps = [m.group(1) for m in map(GHERKIN_STEP.match, lines) if m]
+    headed = any(GHERKIN_HEADER.match(x) for x in lines)
+    if len(steps) < 2 or len({"Given", "When", "Then"} & set(steps)) < (1 if headed else 2):
+        return text
+    out: list[str] = []
+    condition: list[str] = []  # the When step (and its And steps) waiting for its Then
+    last = ""
+    for line in lines:
+        step, header = GHERKIN_STEP.match(line), GHERKIN_HEADER.match(line)
+        if header is not None:
+            out += [f"When {' and '.join(condition)}."] if condition else []
+            condition, last = [], ""
+            if header.group(2) and header.group(1).lower() in ("feature", "rule", "scenario", "example",
+                                                                 "scenario outline", "scenario template"):
+                out.append(f"Scenario: {header.group(2)}")  # the case's name, read for the road and weather
+            continue
+        if step is None:
+            if not GHERKIN_ASIDE.match(line):
+                out.append(line)
+            continue
+        keyword, body = step.group(1), step.group(2).rstrip(" .;")
+        keyword = last if keyword in ("And", "But", "*") and last else keyword
+        if keyword == "Then":  # "Then the ego may continue", "is expected to stop": what the ego is to do
+            body = THEN_MODAL.sub("should", body)
+        if keyword == "When":
+            if last != "When" and condition:
+                out.append(f"When {' and '.join(condition)}.")
+                condition = []
+            condition.append(body)
+        elif keyword == "Then" and condition:
+            out.append(f"When {' and '.join(condition)}, {body}.")
+            condition = []
+        else:
+            out.append(body + ".")
+        last = keyword
+    out += [f"When {' and '.join(condition)}."] if condition else []
+    notes.append("read the acceptance criteria's steps: each Then as the reaction to its When")
+    return "\n".join(out)
 
 
 AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report|thesis|paper|assignment|"

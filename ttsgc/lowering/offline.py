@@ -1907,7 +1907,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole
                   and not state and not (u.word == "after" and _a_wait_of_minutes(units, k)))
             continue
-        if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
+        if u.category == "word" and u.word == "when" and nxt is not None and (_reaching(units, k + 1) or
+                                                                             _completed(units, k + 1)):
             r.mark(u)
             close()
             stage += 1
@@ -2158,6 +2159,13 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
     if current and all(x.word in SIGNAL_COLOURS | {"to"} for x in current) and \
             current[-1].word in SIGNAL_COLOURS and _subject_then_its_verb(units, k):
         return True  # "when the light flips to green the player turns left": the change said, then who acts
+    ego = u.category == "agents" and u.meaning == "ego" or u.category == "word" and u.word == "the" and \
+        k + 1 < len(units) and units[k + 1].category == "agents" and units[k + 1].meaning == "ego"
+    if ego and len(current) >= 3 and current[-1].category in ("road", "agents", "positions") and \
+            (_has_verb(current) or any(x.word in ("has", "have", "had") for x in current)) and \
+            _subject_then_its_verb(units, k):
+        return True  # "when the bus has cleared the junction the ego turns right": the condition said in full
+        # (up to its object), then the ego and its verb
     pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
         u.category == "word" and u.word in SUBJECT_PRONOUNS
     if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS or _past_tense_verb(x)
@@ -2659,6 +2667,22 @@ def _reaching(units: list[Unit], k: int) -> bool:
         return True
     rest = units[units.index(verb) + 1: units.index(verb) + 4]
     return verb.base in ("approach", "enter") and any(u.category == "road" and u.meaning == "junction" for u in rest)
+
+
+def _completed(units: list[Unit], k: int) -> bool:
+    """'when the bus has cleared the junction', 'when they have gone by': a condition told in the present perfect
+    holds once a deed is done, the start of a later stage (as 'once' is); a subject, then has / have and a
+    participle."""
+    window = units[k:k + 6]
+    for j, u in enumerate(window):
+        if u.category == "comma" or u.tokens[0].sentence != units[k].tokens[0].sentence or u.category == "actions":
+            return False
+        if u.category == "word" and u.word in ("has", "have"):
+            said = [x for x in window[j + 1:j + 3] if x.word not in ADVERBS | {"fully", "completely", "safely"}]
+            subject = any(x.category == "agents" or x.word in PRONOUNS for x in window[:j])
+            return subject and bool(said) and (said[0].category == "actions" or said[0].category == "word" and
+                                               re.fullmatch(r"[a-z]{3,}(?:ed|en)", said[0].word) is not None)
+    return False
 
 
 # -- noun phrases and entities ------------------------------------------------------------------------------
@@ -3227,6 +3251,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"
                 or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN  # "a cyclist ... the bicycle": the same
                 or head.split()[-1] in GROUP_NOUNS and e.count > 1]  # "a crowd of fans ... the crowd": them
+        named = [e for e in same if e.head.split()[-1] == head.split()[-1] or head in e.aliases]
+        same = named or same  # "a delivery van ... a car behind ... the van": the van, not the car named last
         before = [e for e in pool if e.parent is None and e.count == 1 and e not in r.clause_mentions]
         if not same and not other and len(pool) == 1 and before == pool:
             same = pool  # "a lorry ... the HGV", "a jogger ... the runner": the one of its kind named before
