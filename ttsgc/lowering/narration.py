@@ -94,6 +94,7 @@ def read_narration(prompt: str) -> Narration:
     """The account a prompt gives, out of its document, with its ego's other names spelled as the ego."""
     notes: list[str] = []
     text = _gherkin(prompt, notes)
+    text = _bug_report(text, notes)
     text = _without_letter_frame(text, notes)
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
@@ -168,6 +169,73 @@ def _gherkin(text: str, notes: list[str]) -> str:
     out += [f"When {' and '.join(condition)}."] if condition else []
     notes.append("read the acceptance criteria's steps: each Then as the reaction to its When")
     return "\n".join(out)
+
+
+MARKUP = re.compile(r"\*\*|__|`+|^[ \t]*#{1,6}[ \t]+", re.M)  # "**Version**", "## Steps", "`generate`"
+REPORT_SECTION = re.compile(
+    r"^[ \t]*(?:[-*\u2022][ \t]*|\d{1,2}[.)][ \t]*)?(?P<key>steps to reproduce|steps to repro|repro(?:duction)? steps|"
+    r"how to reproduce|to reproduce|reproduction|repro|expected(?: behaviou?r| result| outcome| output)?|"
+    r"what i expected|actual(?: behaviou?r| result| outcome| output)?|observed(?: behaviou?r| result| output)?|"
+    r"what i got|what actually happens|what actually happened|versions?|env|environment|os|platform|build|commit|"
+    r"system(?: info)?|logs?|attachments?|screenshots?|workaround|severity|priority|frequency|reproducibility|"
+    r"scene|scenario|prompt|input|ask for|asked for|description|summary|context|details|"
+    r"scenario \(what i wanted\)|what i wanted|what i asked for|title|bug|issue)[ \t]*(?::|$)[ \t]*(?P<rest>.*)$", re.I)
+REPORT_KINDS = (("actual", "observed", "what i got", "what actually"), ("expected", "what i expected"),
+                ("steps", "how to", "to reproduce", "repro"))
+REPORT_ENVIRONMENT = ("version", "env", "os", "platform", "build", "commit", "system", "log", "attachment",
+                      "screenshot", "workaround", "severity", "priority", "frequency", "reproducibility")
+TOOL_STEP = re.compile(r"^(?:(?:then|and|now|just|simply|please)[ \t]+)?(?:generate|run|re-?run|open|watch|load|"
+                       r"compile|click|execute|launch|build|export|import|save|render|play|replay|observe|look|"
+                       r"check|inspect|view|install|invoke|press|paste|submit|start|call|use|lower)\b", re.I)
+
+
+TITLE_STOPS = re.compile(r"[.:;!?]+(?=\s)")
+
+
+def _bug_report(text: str, notes: list[str]) -> str:
+    """A bug report ('Steps to reproduce', 'Expected behaviour', 'Actual'): the scene is the one asked for in its
+    steps (or, told nowhere else, the one it expected); what went wrong under 'Actual' is no scene, nor are the
+    versions it ran, the steps that only work the tool ('Generate and open the .xosc'), or its markup."""
+    lines = MARKUP.sub("", text).split("\n")
+    kinds = {k for m in map(REPORT_SECTION.match, lines) if m
+             for k, starts in enumerate(REPORT_KINDS) if m.group("key").lower().startswith(starts)}
+    if len(kinds) < 2:
+        return text
+    first = next((k for k, x in enumerate(lines) if x.strip()), 0)
+    sections: list[tuple[str, list[str]]] = [("scene", [])]
+    for k, line in enumerate(lines):
+        m = REPORT_SECTION.match(line)
+        if m is None and k == first:  # "cut-in from right lane goes the wrong way (v0.8.1)": the report's title
+            sections.append(("title", [line.strip()]))
+            sections.append(("scene", []))
+            continue
+        if m is None:
+            sections[-1][1].append(line)
+            continue
+        key, rest = m.group("key").lower(), m.group("rest").strip()
+        kind = "actual" if key.startswith(REPORT_KINDS[0]) else "expected" if key.startswith(REPORT_KINDS[1]) \
+            else "environment" if key.startswith(REPORT_ENVIRONMENT) else "title" if key in (
+                "title", "bug", "issue", "summary") else "scene"
+        sections.append((kind, [rest] if rest else []))
+        if kind == "title":
+            sections.append(("scene", []))
+    scene = [_scene_step(x) for kind, said in sections if kind == "scene" for x in said]
+    told = [x for x in scene if x.strip()]
+    if not any(_agent_kinds(x) for x in told):  # the scene said only as what was expected
+        told += [_scene_step(x) for kind, said in sections if kind == "expected" for x in said]
+    titles = ["Title: " + TITLE_STOPS.sub(",", x) for kind, said in sections if kind == "title"
+              for x in said if x.strip()]  # one title, whatever marks it holds
+    notes.append("read the bug report's scene, not what it got ('Actual') nor how it was run")
+    return "\n".join(titles[:1] + [x for x in told if x.strip()])
+
+
+def _scene_step(line: str) -> str:
+    """One line of a report's steps as the scene it asks for: 'Generate and open the .xosc' works the tool, no
+    scene; '2. A silver sedan ... cuts in' is the scene, its number gone."""
+    line = re.sub(r"^[ \t]*(?:[-*\u2022][ \t]*|\d{1,2}[.)][ \t]*)", "", line)
+    line = re.sub(r"^(?:scene|scenario|prompt|input|ask(?:ed)? for|what i wanted)[ \t]*(?:\([^)]*\))?[ \t]*:[ \t]*",
+                  "", line, flags=re.I)
+    return "" if TOOL_STEP.match(line) else line
 
 
 AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report|thesis|paper|assignment|"

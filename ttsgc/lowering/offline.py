@@ -3493,7 +3493,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.behavior = e.behavior or "aggressive"
         if action in ("lane_left", "lane_right") and [t.base for t in u.tokens[:2]] == ["pull", "out"]:
             e.features.add("pulls_out")  # "pulls out to the left": a turn when it pulls out of a junction
-        if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS:
+        stative = clause_units is not None and k is not None and k > 0 and \
+            clause_units[k - 1].word in COPULAS | {"be", "been", "being"}  # "a truck is stopped dead ahead": it stands
+        if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS and not stative:
             e.features.add("stops_abruptly")  # "stops dead", "slams on the brakes": a sudden stop, not a halt
             e.behavior = e.behavior or "aggressive"
         if action == "turn" and e.is_ego and not direction and clause_units is not None and k is not None and \
@@ -4077,6 +4079,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 e.relative_to = e.relative_to or reference
                 r.mark(u)
                 continue
+            if u.meaning == "road_straight" and u.tokens[0].word == "across" and u.tokens[-1].word != "from" and \
+                    e.features & {"road_left", "road_right", "cross_road"} and i > 0 and \
+                    units[i - 1].category == "actions":
+                r.mark(u)  # "comes from the road on the left and goes straight across the junction": the way it
+                continue  # goes, not where it comes from
             _modify(r, e, u, stage, 1)
         if not targets:
             r.mark(u)
