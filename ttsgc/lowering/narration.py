@@ -95,6 +95,7 @@ def read_narration(prompt: str) -> Narration:
     notes: list[str] = []
     text = _gherkin(prompt, notes)
     text = _bug_report(text, notes)
+    text = _chatbot_request(text, notes)
     text = _without_letter_frame(text, notes)
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
@@ -121,7 +122,7 @@ GHERKIN_HEADER = re.compile(r"^[ \t]*(Feature|Rule|Background|Scenario Outline|S
                             r"Examples|Scenarios)[ \t]*:[ \t]*(.*?)[ \t]*$", re.I)
 THEN_MODAL = re.compile(r"\b(?:may|can|could|might|will|shall|must|(?:is|are) (?:allowed|permitted|expected|"
                         r"required|supposed|able) to)\b(?!\s+have\b)", re.I)
-GHERKIN_ASIDE = re.compile(r"^[ \t]*(?:@\S+(?:[ \t]+@\S+)*|#.*|\"\"\"|```)[ \t]*$")  # tags, comments, doc-string marks
+GHERKIN_ASIDE = re.compile(r"^[ \t]*(?:@\S+(?:[ \t]+@\S+)*|#.*|\"\"\"|```)[ \t]*$")  # tags, comments, doc strings
 
 
 def _gherkin(text: str, notes: list[str]) -> str:
@@ -171,62 +172,118 @@ def _gherkin(text: str, notes: list[str]) -> str:
     return "\n".join(out)
 
 
-MARKUP = re.compile(r"\*\*|__|`+|^[ \t]*#{1,6}[ \t]+", re.M)  # "**Version**", "## Steps", "`generate`"
+SENTENCE = re.compile(r"[^.!?\n]*(?:[.!?]+|\n|$)")
+ROLE_NOUNS = r"(?:expert|engineer|assistant|specialist|tester|designer|generator|simulator|model|ai|chatbot|" \
+    r"consultant|analyst|author|writer|planner|developer|programmer|researcher|instructor|professional|bot)"
+ROLE_PLAY = re.compile(r"^\s*(?:please\s+)?(?:(?:act|acting|behave) as|pretend (?:to be|you are)|imagine you are|"
+                       r"(?:assume|take|play) the role of|(?:you are|you're) (?:an?|the|my|our) (?:[a-z-]+\s+){0,3}?"
+                       + ROLE_NOUNS + r"\b|as an? (?:[a-z-]+\s+){0,3}?" + ROLE_NOUNS + r"\s*,)", re.I)
+# "Act as a simulation expert.", "You are a scenario generator."; not "You are approaching a zebra crossing."
+OUTPUT_ORDER = re.compile(r"^\s*(?:(?:please|also|then|finally|and|now|just|kindly)\s+)*(?:output|return|format|"
+                          r"respond|reply|answer|list|print|present|express|structure|emit|export|make sure|"
+                          r"keep (?:it|the (?:output|answer|response|scene|scenario|description|speeds?)|things|"
+                          r"everything|speeds?)|"
+                          r"ensure|be sure|avoid|the output|your output|your answer|your response|the answer|"
+                          r"the response|output format|response format|answer format)\b", re.I)
+META_AGENTS = re.compile(r"\b(?:(?:all|every|each|any|the|their|its|other|of)\s+)*(?:agents?|actors?|vehicles?|"
+                         r"road users?|participants?|entities|entity|objects?|npcs?|traffic participants?)\b", re.I)
+
+
+def _chatbot_request(text: str, notes: list[str]) -> str:
+    """'Act as a simulation expert. Create a cut-in scenario: ... Output the scene with all agents, their positions
+    and actions.': a prompt written for a chatbot casts it in a role and says how to answer; neither is the
+    scene. A sentence that gives the role, or an order about the answer ('Output ...', 'Keep it realistic',
+    'Make sure the speeds are plausible') that names no road user but the generic ones ('every agent'), is
+    left out."""
+    kept, dropped = [], []
+    for m in SENTENCE.finditer(text):
+        sentence = m.group(0)
+        body = re.sub(r"^\s*(?:[-*\u2022]\s*|\d{1,2}[.)]\s*)", "", sentence)
+        if ROLE_PLAY.match(body) or OUTPUT_ORDER.match(body) and _orders_only_the_answer(body):
+            dropped.append(sentence.strip())
+            kept.append("\n" if sentence.endswith("\n") else " ")
+            continue
+        kept.append(sentence)
+    if not dropped:
+        return text
+    notes.append(f"read past the request's words to the chatbot ('{dropped[0][:40]}')")
+    return "".join(kept)
+
+
+def _orders_only_the_answer(sentence: str) -> bool:
+    """An order about the answer names no road user but the generic ones, no weather and no road: 'Output the
+    scene with all agents' does; 'Make sure the truck is in the left lane' and 'Keep it rainy' do not."""
+    said = {m.category for m in matches(tokenize(META_AGENTS.sub(" ", sentence)))
+            if m.category != "agents" or m.meaning not in ("ego", "none")}  # "relative to the ego": whom to place by
+    return not said & {"agents", "weather", "road"} and not re.search(r"\d", sentence)  # "a 55 along there"
+
+
+MARKUP = re.compile(r"\*\*|__|`+|^[ \t]*(?:#{1,6}|>)[ \t]+", re.M)  # "**Version**", "## Steps", "`run`", "> quote"
 REPORT_SECTION = re.compile(
-    r"^[ \t]*(?:[-*\u2022][ \t]*|\d{1,2}[.)][ \t]*)?(?P<key>steps to reproduce|steps to repro|repro(?:duction)? steps|"
-    r"how to reproduce|to reproduce|reproduction|repro|expected(?: behaviou?r| result| outcome| output)?|"
-    r"what i expected|actual(?: behaviou?r| result| outcome| output)?|observed(?: behaviou?r| result| output)?|"
-    r"what i got|what actually happens|what actually happened|versions?|env|environment|os|platform|build|commit|"
+    r"^[ \t]*(?:[-*\u2022][ \t]*|\d{1,2}[.)][ \t]*)?(?P<key>steps to reproduce|steps to repro|"
+    r"repro(?:duction)? steps|"
+    r"how to reproduce|to reproduce|reproduction|repro|expected(?: behaviou?r| results?| outcome| output)?|"
+    r"desired(?: behaviou?r| result| outcome| output)?|what i expected|what should happen|"
+    r"actual(?: behaviou?r| results?| outcome| output)?|observed(?: behaviou?r| results?| output)?|"
+    r"current(?: behaviou?r| results?| output)|what i got|what happens instead|what happened instead|"
+    r"what actually happens|what actually happened|versions?|env|environment|os|platform|build|commit|"
     r"system(?: info)?|logs?|attachments?|screenshots?|workaround|severity|priority|frequency|reproducibility|"
-    r"scene|scenario|prompt|input|ask for|asked for|description|summary|context|details|"
-    r"scenario \(what i wanted\)|what i wanted|what i asked for|title|bug|issue)[ \t]*(?::|$)[ \t]*(?P<rest>.*)$", re.I)
-REPORT_KINDS = (("actual", "observed", "what i got", "what actually"), ("expected", "what i expected"),
-                ("steps", "how to", "to reproduce", "repro"))
+    r"scene|scenario|prompt|input|ask for|asked for|description|context|details|"
+    r"scenario \(what i wanted\)|what i wanted|what i asked for|title|bug|issue|summary|describe the bug|"
+    r"bug description)[ \t]*(?::|$)[ \t]*(?P<rest>.*)$", re.I)
+REPORT_KINDS = {"actual": ("actual", "observed", "current", "what i got", "what actually", "what happen"),
+                "expected": ("expected", "desired", "what i expected", "what should"),
+                "steps": ("steps", "how to", "to reproduce", "repro")}
 REPORT_ENVIRONMENT = ("version", "env", "os", "platform", "build", "commit", "system", "log", "attachment",
                       "screenshot", "workaround", "severity", "priority", "frequency", "reproducibility")
-TOOL_STEP = re.compile(r"^(?:(?:then|and|now|just|simply|please)[ \t]+)?(?:generate|run|re-?run|open|watch|load|"
-                       r"compile|click|execute|launch|build|export|import|save|render|play|replay|observe|look|"
-                       r"check|inspect|view|install|invoke|press|paste|submit|start|call|use|lower)\b", re.I)
-
-
+REPORT_TITLES = ("title", "bug", "issue", "summary", "describe the bug", "bug description")
+TOOL_STEP = re.compile(r"^(?:\$|(?:(?:then|and|now|just|simply|please)[ \t]+)?(?:generate|run|re-?run|open|watch|"
+                       r"load|compile|click|execute|launch|build|export|import|save|render|play|replay|observe|look|"
+                       r"check|inspect|view|install|invoke|press|paste|submit|start|call|use|lower|python|ttsgc|"
+                       r"pip)\b)", re.I)
+QUOTED = re.compile(r"[\"\u201c]([^\"\u201c\u201d]+)[\"\u201d]")
 TITLE_STOPS = re.compile(r"[.:;!?]+(?=\s)")
 
 
 def _bug_report(text: str, notes: list[str]) -> str:
     """A bug report ('Steps to reproduce', 'Expected behaviour', 'Actual'): the scene is the one asked for in its
     steps (or, told nowhere else, the one it expected); what went wrong under 'Actual' is no scene, nor are the
-    versions it ran, the steps that only work the tool ('Generate and open the .xosc'), or its markup."""
+    versions it ran, the steps that only work the tool ('Generate and open the .xosc'), or its markup. Its title
+    names the bug: read for the road and the weather only."""
     lines = MARKUP.sub("", text).split("\n")
-    kinds = {k for m in map(REPORT_SECTION.match, lines) if m
-             for k, starts in enumerate(REPORT_KINDS) if m.group("key").lower().startswith(starts)}
+    found = [m for m in map(REPORT_SECTION.match, lines) if m]
+    kinds = {kind for m in found for kind, starts in REPORT_KINDS.items()
+             if m.group("key").lower().startswith(starts)}
     if len(kinds) < 2:
         return text
     first = next((k for k, x in enumerate(lines) if x.strip()), 0)
     sections: list[tuple[str, list[str]]] = [("scene", [])]
+    field = False  # the last heading had its value on its own line ('Actual: ...'): a blank line ends it
     for k, line in enumerate(lines):
         m = REPORT_SECTION.match(line)
-        if m is None and k == first:  # "cut-in from right lane goes the wrong way (v0.8.1)": the report's title
-            sections.append(("title", [line.strip()]))
-            sections.append(("scene", []))
+        if m is None and k == first and len(line.split()) <= 15 and not line.rstrip().endswith("."):
+            sections += [("title", [line.strip()]), ("scene", [])]  # "cut-in from right lane goes the wrong way"
             continue
         if m is None:
+            if field and not line.strip():
+                sections.append(("scene", []))
+                field = False
             sections[-1][1].append(line)
             continue
         key, rest = m.group("key").lower(), m.group("rest").strip()
-        kind = "actual" if key.startswith(REPORT_KINDS[0]) else "expected" if key.startswith(REPORT_KINDS[1]) \
-            else "environment" if key.startswith(REPORT_ENVIRONMENT) else "title" if key in (
-                "title", "bug", "issue", "summary") else "scene"
+        kind = next((kind for kind, starts in REPORT_KINDS.items() if key.startswith(starts)), "scene")
+        kind = "environment" if key.startswith(REPORT_ENVIRONMENT) else "title" if key in REPORT_TITLES else kind
         sections.append((kind, [rest] if rest else []))
-        if kind == "title":
-            sections.append(("scene", []))
-    scene = [_scene_step(x) for kind, said in sections if kind == "scene" for x in said]
-    told = [x for x in scene if x.strip()]
-    if not any(_agent_kinds(x) for x in told):  # the scene said only as what was expected
-        told += [_scene_step(x) for kind, said in sections if kind == "expected" for x in said]
+        field = bool(rest)
+        if kind in ("title", "environment") and rest:
+            sections.append(("scene", []))  # "Version: 0.7.0": a field of one line
+    scene = [_scene_step(x) for kind, said in sections if kind in ("scene", "steps") for x in said]
+    if not any(_agent_kinds(x) - {"ego"} for x in scene):  # the scene said only as what was expected
+        scene += [_scene_step(x) for kind, said in sections if kind == "expected" for x in said]
     titles = ["Title: " + TITLE_STOPS.sub(",", x) for kind, said in sections if kind == "title"
               for x in said if x.strip()]  # one title, whatever marks it holds
     notes.append("read the bug report's scene, not what it got ('Actual') nor how it was run")
-    return "\n".join(titles[:1] + [x for x in told if x.strip()])
+    return "\n".join(titles[:1] + [x for x in scene if x.strip()])
 
 
 def _scene_step(line: str) -> str:
@@ -235,7 +292,9 @@ def _scene_step(line: str) -> str:
     line = re.sub(r"^[ \t]*(?:[-*\u2022][ \t]*|\d{1,2}[.)][ \t]*)", "", line)
     line = re.sub(r"^(?:scene|scenario|prompt|input|ask(?:ed)? for|what i wanted)[ \t]*(?:\([^)]*\))?[ \t]*:[ \t]*",
                   "", line, flags=re.I)
-    return "" if TOOL_STEP.match(line) else line
+    if TOOL_STEP.match(line):  # 'lower "a van is double-parked ahead ..." with seed 1': the prompt it was given
+        return ". ".join(x.strip().rstrip(".") for x in QUOTED.findall(line) if len(x.split()) >= 3)
+    return line
 
 
 AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report|thesis|paper|assignment|"
