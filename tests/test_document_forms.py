@@ -160,3 +160,18 @@ def test_a_painted_stop_line_is_a_stop_line():
     road = lower("The ego waits at a painted stop line.").scenario.road
     assert "stop_line" in road.required_objects + road.required_signals
     assert "stop_sign_on_road" not in road.required_objects + road.required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego waits at the junction. A lorry is waiting at the give-way line on the right. When the lorry drives "
+     "straight across, the ego stops.", ("truck", "go_straight", "road_of_right_turn")),
+    ("A motorbike waits on the ego's left at the lights. Once the lights change, the motorbike goes straight on and "
+     "the ego turns left.", ("motorcycle", "go_straight", "left")),
+])
+def test_one_that_waits_then_goes_straight_through_goes_straight(prompt, expected):
+    assert expected in agents(prompt), agents(prompt)
+
+
+def test_one_that_waits_then_only_moves_off_stood():
+    assert ("cyclist", "stop", "front") in agents(
+        "A cyclist waits in front of me at the red light. Once it goes green we both move off.")

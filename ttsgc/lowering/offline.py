@@ -3519,6 +3519,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             # what it was doing is its action ("the other driver had to stop", said of nothing else, still stops)
         e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
                           0 if earlier else r.tick(), action, direction))
+        if action == "go_straight" and "straight" in {t.word for t in u.tokens}:
+            e.features.add("straight_on")  # "goes straight through", said; not "moves off"
         # ("had stopped first and was proceeding straight across": what it does now outranks what it had done)
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
@@ -5307,6 +5309,10 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     if not chosen:
         return None, None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
+    if best[4] == "stop" and not e.is_ego and "straight_on" in e.features and any(
+            a[4] == "go_straight" and a[1] == best[1] and a[3] > best[3] for a in chosen):
+        return "go_straight", None  # "a pickup is stopped at the stop sign ... when the pickup proceeds straight
+        # through": it stood, then went straight across; going is what it does
     turned = next((a for a in chosen if a[4] == "turn" and a[1] == best[1] and a[3] > best[3]), None)
     if best[4] == "cut_in" and turned is not None and e.features & {"road_left", "road_right", "from_left",
                                                                     "from_right"}:
@@ -5332,6 +5338,11 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
 
 def _intro_action(e: Entity) -> tuple[str | None, str | None]:
     action = _action(e, e.stage)
+    if action[0] == "stop" and not e.is_ego and "straight_on" in e.features and any(
+            a[4] == "go_straight" and a[1] == 2 and a[0] > e.stage for a in e.actions):
+        return "go_straight", None  # "a cyclist waiting beside the ego ... when the light turns green, the ego lets
+        # the cyclist go straight through first": the crossing it waited for is what it does ("we both moved off"
+        # says no way, and it stood)
     if action[0] is None or not any(a[1] == 2 for a in e.actions if a[0] == e.stage):
         later = _action(e)
         if action[0] == "stop" and later[0] in ("move", "go_straight"):
