@@ -175,3 +175,15 @@ def test_one_that_waits_then_goes_straight_through_goes_straight(prompt, expecte
 def test_one_that_waits_then_only_moves_off_stood():
     assert ("cyclist", "stop", "front") in agents(
         "A cyclist waits in front of me at the red light. Once it goes green we both move off.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two other cars are at the junction. One is stopped on the road to the right, and the other comes from the "
+     "left and turns right.", [("car", "stop", "road_of_right_turn"), ("car", "turn_right", "road_of_left_turn")]),
+    ("Two cyclists ride ahead of the ego. One keeps going straight and the other turns left.",
+     [("cyclist", "go_straight", "front"), ("cyclist", "turn_left", "front")]),
+    ("There are three cars including the ego. One car is stopped on the road to the right, and the other comes "
+     "from the left.", [("car", "go_straight", "road_of_left_turn"), ("car", "stop", "road_of_right_turn")]),
+])
+def test_the_other_after_one_is_the_groups_other_member(prompt, expected):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == expected, agents(prompt)

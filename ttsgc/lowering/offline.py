@@ -3319,6 +3319,7 @@ def _absorbed(r: _Reader, entity: Entity) -> bool:
             taken = min(entity.count, group.group_open)
             group.group_open -= taken
             group.count -= taken
+            entity.named_of = group  # "three cars including the ego. One car is stopped ...": one of them
             entity.features |= group.features
             entity.behavior = entity.behavior or group.behavior
             entity.actions = entity.actions or list(group.actions)
@@ -3700,7 +3701,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     pronouns = []
     for i, u in enumerate(units):
-        if u.word in ORDINAL_MEMBERS and i > 0 and units[i - 1].word == "the" and not (
+        other = u.word == "other" and u.category == "word" and i + 1 < len(units) and (
+            units[i + 1].category == "actions" or units[i + 1].word in AUXILIARIES)  # "one is stopped on the right,
+        # and the other comes from the left": the group's other member, as its subject
+        if (u.word in ORDINAL_MEMBERS or other) and i > 0 and units[i - 1].word == "the" and not (
                 i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number")) and not any(
                 np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions") \
                 and not (i > 2 and units[i - 2].word in COPULAS and units[i - 3].word in ("mine", "i", "we", "ours")):
@@ -4645,7 +4649,8 @@ def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
     for group in reversed(r.entities):
         if group.is_ego or group.parent is not None:
             continue
-        if group.count == 1 and any(m.parent is group for m in r.entities) and not group.label:
+        if group.count == 1 and any(m.parent is group or m.named_of is group for m in r.entities) and \
+                not group.label:
             group.label = "#rest"  # "one from the left and one from the right": the second is what is left
             group.includes_ego = False  # "three cars including the ego ... the other one": not the ego again
             return group
