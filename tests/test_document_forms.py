@@ -187,3 +187,17 @@ def test_one_that_waits_then_only_moves_off_stood():
 ])
 def test_the_other_after_one_is_the_groups_other_member(prompt, expected):
     assert [a for a in agents(prompt) if a[2] != "ego"] == expected, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego comes up behind a lorry that has broken down in the right lane.", ("truck", "stop", "front")),
+    ("The ego pulls up behind a bus stopped in the left lane.", ("bus", "stop", "front")),
+])
+def test_the_lane_named_for_one_the_ego_comes_up_behind_is_the_egos_lane(prompt, expected):
+    assert expected in agents(prompt), agents(prompt)
+
+
+def test_one_in_a_lane_the_ego_is_not_said_to_follow_in_keeps_its_side():
+    assert ("bus", "go_straight", "front_left") in agents("A bus is in the left lane ahead. The ego stays in the "
+                                                          "right lane.")
+    assert ("car", "go_straight", "back_left") in agents("A van rides behind the ego in the left lane.")

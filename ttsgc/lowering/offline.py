@@ -4078,6 +4078,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later and \
                         not started and not said_first:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
+                    if u.meaning == "behind" and reference.stage == stage and not any(
+                            a[0] == stage and a[4] in LANE_MOVES | {"lane_left", "lane_right"} for a in e.actions):
+                        reference.features.add("ego_behind")  # in the ego's own lane, whichever lane that is
+                        # (not "merged right into lane one behind the coach": the lane it moves into)
                 r.mark(u)
                 continue
             if reference is not None and not reference.is_ego and u.category == "positions" and \
@@ -5384,6 +5388,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         # where traffic keeps left), ahead unless said otherwise
         if not f & {"behind", "level", "overtaking"}:
             f.add("ahead")
+    if "ego_behind" in f and e.road_type != "shoulder" and not f & {"bare_left", "bare_right", "level", "behind"}:
+        f -= {"side_left", "side_right"}  # "the ego comes up behind a truck broken down in the right lane": the lane
+        # named is the ego's too
     side = _side_of(f)
     lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     if "screening" in f and side and action == "stop" and not f & {"behind", "level"}:
