@@ -201,3 +201,8 @@ def test_one_in_a_lane_the_ego_is_not_said_to_follow_in_keeps_its_side():
     assert ("bus", "go_straight", "front_left") in agents("A bus is in the left lane ahead. The ego stays in the "
                                                           "right lane.")
     assert ("car", "go_straight", "back_left") in agents("A van rides behind the ego in the left lane.")
+
+
+def test_an_obliged_verb_placed_by_it_after_a_relative_clause_is_the_main_subjects():
+    assert ("car", "stop", "ego") in agents("The ego comes up behind a lorry that has broken down and has to wait "
+                                            "behind it.")

@@ -5748,8 +5748,13 @@ UNTIL_LINKS = {"until", "till", "before"}  # a clause of what is waited for: its
 def _returns_to_the_main_subject(units: list[Unit]) -> bool:
     """A bare verb whose object is 'it', 'him', 'her' or 'them' after a relative clause: the pronoun names the
     relative's noun, and nothing does a thing to itself, so the verb is the main clause's subject's."""
-    return len(units) >= 2 and units[0].category == "actions" and any(
-        u.category == "word" and u.word in ("it", "him", "her", "them") for u in units[1:3])
+    lead = 0
+    while lead < len(units) - 1 and units[lead].category == "word" and units[lead].word in OBLIGED:
+        lead += 1  # "and has to stop behind it": obliged, and still the verb's subject is to be found
+    return len(units) >= lead + 2 and units[lead].category == "actions" and any(
+        u.category == "word" and u.word in ("it", "him", "her", "them") or
+        u.category == "positions" and u.tokens[-1].word in ("it", "him", "her", "them")
+        for u in units[lead + 1:lead + 3])  # "... then overtakes it", "... and stops behind it"
 
 
 def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
