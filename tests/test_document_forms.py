@@ -206,3 +206,17 @@ def test_one_in_a_lane_the_ego_is_not_said_to_follow_in_keeps_its_side():
 def test_an_obliged_verb_placed_by_it_after_a_relative_clause_is_the_main_subjects():
     assert ("car", "stop", "ego") in agents("The ego comes up behind a lorry that has broken down and has to wait "
                                             "behind it.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("the ego is waiting at a red light, with a taxi waiting beside it in the lane to its right.",
+     ("car", "stop", "right")),
+    ("The ego waits at the lights, with a van waiting next to it in the lane on its right.", ("car", "stop", "right")),
+])
+def test_its_after_it_said_of_the_ego_is_the_egos(prompt, expected):
+    assert expected in agents(prompt), agents(prompt)
+
+
+def test_its_said_of_the_one_passed_is_still_its_own_side():
+    assert ("truck", "go_straight", "front") in [(t, a, p) for t, a, p in agents("The ego overtakes a slow truck "
+                                                                                  "on its left.")]

@@ -4011,6 +4011,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     r.mark(u)
                     u.meaning = "used"
     # positions, behaviours and road types: to the noun they follow, else the subject
+    ego_as_it = False  # "beside it" said of the ego: the 'its' after it is the ego's too
     for i, u in enumerate(units):
         if u.category not in ("positions", "behaviours") or u.meaning == "used":
             continue
@@ -4035,7 +4036,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
             u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
-                not any(e in subject for e in owner) and not in_its_place:
+                not any(e in subject for e in owner) and not in_its_place and not ego_as_it:
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
         if u.meaning in ("side_left", "side_right") and _side_of_passing_the_ego(units, i) and owner and \
@@ -4048,6 +4049,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         targets = owner if owner else []
         if reference is None and in_its_place:  # "a biker behind it", "a cop car right on its tail"
             reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
+        ego_as_it = ego_as_it or reference is not None and reference.is_ego and (
+            u.tokens[-1].word == "it" or i + 1 < len(units) and units[i + 1].word == "it")
 
         for e in targets:
             if e.is_ego and u.category == "positions":
