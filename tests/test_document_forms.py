@@ -220,3 +220,13 @@ def test_its_after_it_said_of_the_ego_is_the_egos(prompt, expected):
 def test_its_said_of_the_one_passed_is_still_its_own_side():
     assert ("truck", "go_straight", "front") in [(t, a, p) for t, a, p in agents("The ego overtakes a slow truck "
                                                                                   "on its left.")]
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("The ego is travelling in the right-hand lane of a three-lane motorway. The ego moves into the middle lane.",
+     "change_lane_to_left"),
+    ("The ego is in the left lane of a three-lane motorway. A lorry merges ahead, and the ego moves over to the "
+     "centre lane.", "change_lane_to_right"),
+])
+def test_a_move_into_the_middle_lane_is_away_from_the_side_lane_the_ego_is_in(prompt, action):
+    assert ("car", action, "ego") in agents(prompt), agents(prompt)

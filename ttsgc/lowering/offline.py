@@ -3520,6 +3520,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             # what it was doing is its action ("the other driver had to stop", said of nothing else, still stops)
         e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
                           0 if earlier else r.tick(), action, direction))
+        if action == "lane_change" and {"middle", "center"} & {t.word for t in u.tokens}:
+            e.features.add("to_the_middle")  # "moves into the middle lane": away from the side lane it is in
         if action == "go_straight" and "straight" in {t.word for t in u.tokens}:
             e.features.add("straight_on")  # "goes straight through", said; not "moves off"
         # ("had stopped first and was proceeding straight across": what it does now outranks what it had done)
@@ -4069,6 +4071,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS and \
                         not edge_after:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
+                    e.features.add("in_lane_" + u.meaning[5:])  # which side: a move to the middle is away from it
                 later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
                     stage > reference.stage or "level" in reference.features)  # "then returns ahead of the bus": it
                 # was; "a truck right next to it, so the ego slots in behind it": beside, as said first
@@ -6299,7 +6302,10 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
         direction = direction or signalled
         said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
             "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
-        return f"change_lane_to_{direction or said or _overtaking_side('ego_lane_change_direction')}"  # "pulling out"
+        inward = next((x for x in SIDES if f"in_lane_{SIDES[1 - SIDES.index(x)]}" in e.features), None) \
+            if "to_the_middle" in e.features else None  # "in the right-hand lane ... moves into the middle lane": left
+        return f"change_lane_to_{direction or said or inward or _overtaking_side('ego_lane_change_direction')}"
+        # ("pulling out": the side one overtakes on)
     return "go_straight"
 
 
