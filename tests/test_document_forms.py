@@ -230,3 +230,25 @@ def test_its_said_of_the_one_passed_is_still_its_own_side():
 ])
 def test_a_move_into_the_middle_lane_is_away_from_the_side_lane_the_ego_is_in(prompt, action):
     assert ("car", action, "ego") in agents(prompt), agents(prompt)
+
+
+def test_an_outlines_first_example_row_is_the_scene_and_its_table_no_agents():
+    outline = ("Scenario Outline: pedestrian crossing at different speeds\n"
+               "  Given the ego car drives at <speed> towards a zebra crossing in <weather>\n"
+               "  When a <actor> steps onto the crossing\n"
+               "  Then the ego car should stop\n\n"
+               "  Examples:\n"
+               "    | speed   | weather | actor      |\n"
+               "    | 30 km/h | rain    | child      |\n"
+               "    | 50 km/h | fog     | pedestrian |\n")
+    scene = lower(outline).scenario
+    assert agents(outline) == [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+    assert scene.weather is not None and scene.weather.condition == "mid_rain"
+
+
+def test_an_order_to_leave_road_users_out_says_there_are_none():
+    assert agents("Create a scenario where the ego turns left at an intersection and a pedestrian crosses from the "
+                  "left. Don't include any other vehicles.") == [("car", "turn_left", "ego"),
+                                                                 ("pedestrian", "cross_the_road", "front_left")]
+    assert len(agents("I want you to act as a scenario designer. A bus overtakes the ego. Do not add any "
+                      "pedestrians.")) == 2

@@ -136,6 +136,7 @@ def _gherkin(text: str, notes: list[str]) -> str:
     headed = any(GHERKIN_HEADER.match(x) for x in lines)
     if len(steps) < 2 or len({"Given", "When", "Then"} & set(steps)) < (1 if headed else 2):
         return text
+    lines = _outline_example(lines)
     out: list[str] = []
     condition: list[str] = []  # the When step (and its And steps) waiting for its Then
     last = ""
@@ -175,7 +176,8 @@ def _gherkin(text: str, notes: list[str]) -> str:
 SENTENCE = re.compile(r"[^.!?\n]*(?:[.!?]+|\n|$)")
 ROLE_NOUNS = r"(?:expert|engineer|assistant|specialist|tester|designer|generator|simulator|model|ai|chatbot|" \
     r"consultant|analyst|author|writer|planner|developer|programmer|researcher|instructor|professional|bot)"
-ROLE_PLAY = re.compile(r"^\s*(?:please\s+)?(?:(?:act|acting|behave) as|pretend (?:to be|you are)|imagine you are|"
+ROLE_PLAY = re.compile(r"^\s*(?:please\s+)?(?:(?:i want|i'd like|i would like|i need) you to )?"
+                       r"(?:(?:act|acting|behave) as|pretend (?:to be|you are)|imagine you are|"
                        r"(?:assume|take|play) the role of|(?:you are|you're) (?:an?|the|my|our) (?:[a-z-]+\s+){0,3}?"
                        + ROLE_NOUNS + r"\b|as an? (?:[a-z-]+\s+){0,3}?" + ROLE_NOUNS + r"\s*,)", re.I)
 # "Act as a simulation expert.", "You are a scenario generator."; not "You are approaching a zebra crossing."
@@ -185,6 +187,8 @@ OUTPUT_ORDER = re.compile(r"^\s*(?:(?:please|also|then|finally|and|now|just|kind
                           r"everything|speeds?)|"
                           r"ensure|be sure|avoid|the output|your output|your answer|your response|the answer|"
                           r"the response|output format|response format|answer format)\b", re.I)
+LEAVE_OUT = re.compile(r"^\s*(?:please\s+)?(?:don't|do not|never|avoid)\s+(?:include|add|put|place|spawn|have|use|"
+                       r"including|adding|putting|placing|spawning|having|using)\s+(?:in\s+)?(?:any\s+)?", re.I)
 META_AGENTS = re.compile(r"\b(?:(?:all|every|each|any|the|their|its|other|of)\s+)*(?:agents?|actors?|vehicles?|"
                          r"road users?|participants?|entities|entity|objects?|npcs?|traffic participants?)\b", re.I)
 
@@ -199,6 +203,10 @@ def _chatbot_request(text: str, notes: list[str]) -> str:
     for m in SENTENCE.finditer(text):
         sentence = m.group(0)
         body = re.sub(r"^\s*(?:[-*\u2022]\s*|\d{1,2}[.)]\s*)", "", sentence)
+        if LEAVE_OUT.match(body):  # "Don't include any other vehicles.": there are none
+            kept.append(sentence[:len(sentence) - len(body)] + LEAVE_OUT.sub("No ", body, count=1))
+            dropped.append(sentence.strip())
+            continue
         if ROLE_PLAY.match(body) or OUTPUT_ORDER.match(body) and _orders_only_the_answer(body):
             dropped.append(sentence.strip())
             kept.append("\n" if sentence.endswith("\n") else " ")
@@ -295,6 +303,24 @@ def _scene_step(line: str) -> str:
     if TOOL_STEP.match(line):  # 'lower "a van is double-parked ahead ..." with seed 1': the prompt it was given
         return ". ".join(x.strip().rstrip(".") for x in QUOTED.findall(line) if len(x.split()) >= 3)
     return line
+
+
+def _outline_example(lines: list[str]) -> list[str]:
+    """'Scenario Outline: ... the ego drives at <speed> ... Examples: | speed | 30 km/h |': an outline is one scene
+    per row of its table; the first row is the scene told (one scene, not all of them at once), and the table is
+    no scene of its own."""
+    start = next((k for k, x in enumerate(lines) if re.match(r"^[ \t]*(?:Examples|Scenarios)[ \t]*:", x, re.I)), None)
+    if start is None:
+        return lines
+    rows = [[c.strip() for c in x.strip().strip("|").split("|")] for x in lines[start + 1:] if x.strip().startswith("|")]
+    end = start + 1
+    while end < len(lines) and (lines[end].strip().startswith("|") or not lines[end].strip()):
+        end += 1
+    kept = lines[:start] + lines[end:]
+    if len(rows) < 2 or len(rows[1]) != len(rows[0]):
+        return kept
+    values = dict(zip(rows[0], rows[1]))
+    return [re.sub(r"<([^<>]+)>", lambda m: values.get(m.group(1).strip(), m.group(0)), x) for x in kept]
 
 
 AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report|thesis|paper|assignment|"
