@@ -252,3 +252,8 @@ def test_an_order_to_leave_road_users_out_says_there_are_none():
                                                                  ("pedestrian", "cross_the_road", "front_left")]
     assert len(agents("I want you to act as a scenario designer. A bus overtakes the ego. Do not add any "
                       "pedestrians.")) == 2
+
+
+def test_a_story_told_a_line_at_a_time_is_no_set_of_steps():
+    story = "We were stopped at the light.\nWhen it went green, I pulled off.\nThen a car cut in front of me."
+    assert len(lower(story).scenario.stages) == 2

@@ -134,8 +134,9 @@ def _gherkin(text: str, notes: list[str]) -> str:
     lines = text.split("\n")
     steps = [m.group(1) for m in map(GHERKIN_STEP.match, lines) if m]
     headed = any(GHERKIN_HEADER.match(x) for x in lines)
-    if len(steps) < 2 or len({"Given", "When", "Then"} & set(steps)) < (1 if headed else 2):
-        return text
+    if len(steps) < 2 or not ("Given" in steps and {"When", "Then"} & set(steps) or
+                               headed and {"When", "Then"} <= set(steps)):
+        return text  # (a story told a line at a time may start lines with 'When ...' and 'Then ...')
     lines = _outline_example(lines)
     out: list[str] = []
     condition: list[str] = []  # the When step (and its And steps) waiting for its Then
