@@ -255,5 +255,5 @@ def test_an_order_to_leave_road_users_out_says_there_are_none():
 
 
 def test_a_story_told_a_line_at_a_time_is_no_set_of_steps():
-    story = "We were stopped at the light.\nWhen it went green, I pulled off.\nThen a car cut in front of me."
+    story = "I was driving along.\nWhen a bus pulled out, I braked.\nThen a cyclist overtook me."
     assert len(lower(story).scenario.stages) == 2
