@@ -93,7 +93,10 @@ class Narration:
 def read_narration(prompt: str) -> Narration:
     """The account a prompt gives, out of its document, with its ego's other names spelled as the ego."""
     notes: list[str] = []
-    text = _without_letter_frame(prompt, notes)
+    text = _gherkin(prompt, notes)
+    text = _bug_report(text, notes)
+    text = _chatbot_request(text, notes)
+    text = _without_letter_frame(text, notes)
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
     text = _texting(text)
@@ -112,6 +115,213 @@ def read_narration(prompt: str) -> Narration:
     text = _protagonist(text, notes)
     text = _storys_driver(text, notes)
     return Narration(text, notes)
+
+
+GHERKIN_STEP = re.compile(r"^[ \t]*(Given|When|Then|And|But|\*)[ \t]+(\S.*?)[ \t]*$")  # the keywords as written
+GHERKIN_HEADER = re.compile(r"^[ \t]*(Feature|Rule|Background|Scenario Outline|Scenario Template|Scenario|Example|"
+                            r"Examples|Scenarios)[ \t]*:[ \t]*(.*?)[ \t]*$", re.I)
+THEN_MODAL = re.compile(r"\b(?:may|can|could|might|will|shall|must|(?:is|are) (?:allowed|permitted|expected|"
+                        r"required|supposed|able) to)\b(?!\s+have\b)", re.I)
+GHERKIN_ASIDE = re.compile(r"^[ \t]*(?:@\S+(?:[ \t]+@\S+)*|#.*|\"\"\"|```)[ \t]*$")  # tags, comments, doc strings
+
+
+def _gherkin(text: str, notes: list[str]) -> str:
+    """'Given the ego is driving ... When a pedestrian steps out ... Then the ego should stop': acceptance criteria
+    in steps. The keywords are no words of the scene: a Then step is what the ego does in reaction to the When
+    step before it, so the two read as one sentence ('When a pedestrian steps out, the ego should stop'), not
+    as a 'then' that starts a stage; an And or But step goes on with the step before it. Whether the When starts
+    a stage ('When the light turns green') is the reader's to say, as in prose."""
+    lines = text.split("\n")
+    steps = [m.group(1) for m in map(GHERKIN_STEP.match, lines) if m]
+    headed = any(GHERKIN_HEADER.match(x) for x in lines)
+    if len(steps) < 2 or not ("Given" in steps and {"When", "Then"} & set(steps) or
+                               headed and {"When", "Then"} <= set(steps)):
+        return text  # (a story told a line at a time may start lines with 'When ...' and 'Then ...')
+    lines = _outline_example(lines)
+    out: list[str] = []
+    condition: list[str] = []  # the When step (and its And steps) waiting for its Then
+    last = ""
+    for line in lines:
+        step, header = GHERKIN_STEP.match(line), GHERKIN_HEADER.match(line)
+        if header is not None:
+            out += [f"When {' and '.join(condition)}."] if condition else []
+            condition, last = [], ""
+            if header.group(2) and header.group(1).lower() in ("feature", "rule", "scenario", "example",
+                                                                 "scenario outline", "scenario template"):
+                out.append(f"Scenario: {header.group(2)}")  # the case's name, read for the road and weather
+            continue
+        if step is None:
+            if not GHERKIN_ASIDE.match(line):
+                out.append(line)
+            continue
+        keyword, body = step.group(1), step.group(2).rstrip(" .;")
+        keyword = last if keyword in ("And", "But", "*") and last else keyword
+        if keyword == "Then":  # "Then the ego may continue", "is expected to stop": what the ego is to do
+            body = THEN_MODAL.sub("should", body)
+        if keyword == "When":
+            if last != "When" and condition:
+                out.append(f"When {' and '.join(condition)}.")
+                condition = []
+            condition.append(body)
+        elif keyword == "Then" and condition:
+            out.append(f"When {' and '.join(condition)}, {body}.")
+            condition = []
+        else:
+            out.append(body + ".")
+        last = keyword
+    out += [f"When {' and '.join(condition)}."] if condition else []
+    notes.append("read the acceptance criteria's steps: each Then as the reaction to its When")
+    return "\n".join(out)
+
+
+SENTENCE = re.compile(r"[^.!?\n]*(?:[.!?]+|\n|$)")
+ROLE_NOUNS = r"(?:expert|engineer|assistant|specialist|tester|designer|generator|simulator|model|ai|chatbot|" \
+    r"consultant|analyst|author|writer|planner|developer|programmer|researcher|instructor|professional|bot)"
+ROLE_PLAY = re.compile(r"^\s*(?:please\s+)?(?:(?:i want|i'd like|i would like|i need) you to )?"
+                       r"(?:(?:act|acting|behave) as|pretend (?:to be|you are)|imagine you are|"
+                       r"(?:assume|take|play) the role of|(?:you are|you're) (?:an?|the|my|our) (?:[a-z-]+\s+){0,3}?"
+                       + ROLE_NOUNS + r"\b|as an? (?:[a-z-]+\s+){0,3}?" + ROLE_NOUNS + r"\s*,)", re.I)
+# "Act as a simulation expert.", "You are a scenario generator."; not "You are approaching a zebra crossing."
+OUTPUT_ORDER = re.compile(r"^\s*(?:(?:please|also|then|finally|and|now|just|kindly)\s+)*(?:output|return|format|"
+                          r"respond|reply|answer|list|print|present|express|structure|emit|export|make sure|"
+                          r"keep (?:it|the (?:output|answer|response|scene|scenario|description|speeds?)|things|"
+                          r"everything|speeds?)|"
+                          r"ensure|be sure|avoid|the output|your output|your answer|your response|the answer|"
+                          r"the response|output format|response format|answer format)\b", re.I)
+LEAVE_OUT = re.compile(r"^\s*(?:please\s+)?(?:don't|do not|never|avoid)\s+(?:include|add|put|place|spawn|have|use|"
+                       r"including|adding|putting|placing|spawning|having|using)\s+(?:in\s+)?(?:any\s+)?", re.I)
+META_AGENTS = re.compile(r"\b(?:(?:all|every|each|any|the|their|its|other|of)\s+)*(?:agents?|actors?|vehicles?|"
+                         r"road users?|participants?|entities|entity|objects?|npcs?|traffic participants?)\b", re.I)
+
+
+def _chatbot_request(text: str, notes: list[str]) -> str:
+    """'Act as a simulation expert. Create a cut-in scenario: ... Output the scene with all agents, their positions
+    and actions.': a prompt written for a chatbot casts it in a role and says how to answer; neither is the
+    scene. A sentence that gives the role, or an order about the answer ('Output ...', 'Keep it realistic',
+    'Make sure the speeds are plausible') that names no road user but the generic ones ('every agent'), is
+    left out."""
+    kept, dropped = [], []
+    for m in SENTENCE.finditer(text):
+        sentence = m.group(0)
+        body = re.sub(r"^\s*(?:[-*\u2022]\s*|\d{1,2}[.)]\s*)", "", sentence)
+        if LEAVE_OUT.match(body):  # "Don't include any other vehicles.": there are none
+            kept.append(sentence[:len(sentence) - len(body)] + LEAVE_OUT.sub("No ", body, count=1))
+            dropped.append(sentence.strip())
+            continue
+        if ROLE_PLAY.match(body) or OUTPUT_ORDER.match(body) and _orders_only_the_answer(body):
+            dropped.append(sentence.strip())
+            kept.append("\n" if sentence.endswith("\n") else " ")
+            continue
+        kept.append(sentence)
+    if not dropped:
+        return text
+    notes.append(f"read past the request's words to the chatbot ('{dropped[0][:40]}')")
+    return "".join(kept)
+
+
+def _orders_only_the_answer(sentence: str) -> bool:
+    """An order about the answer names no road user but the generic ones, no weather and no road: 'Output the
+    scene with all agents' does; 'Make sure the truck is in the left lane' and 'Keep it rainy' do not."""
+    said = {m.category for m in matches(tokenize(META_AGENTS.sub(" ", sentence)))
+            if m.category != "agents" or m.meaning not in ("ego", "none")}  # "relative to the ego": whom to place by
+    return not said & {"agents", "weather", "road"} and not re.search(r"\d", sentence)  # "a 55 along there"
+
+
+MARKUP = re.compile(r"\*\*|__|`+|^[ \t]*(?:#{1,6}|>)[ \t]+", re.M)  # "**Version**", "## Steps", "`run`", "> quote"
+REPORT_SECTION = re.compile(
+    r"^[ \t]*(?:[-*\u2022][ \t]*|\d{1,2}[.)][ \t]*)?(?P<key>steps to reproduce|steps to repro|"
+    r"repro(?:duction)? steps|"
+    r"how to reproduce|to reproduce|reproduction|repro|expected(?: behaviou?r| results?| outcome| output)?|"
+    r"desired(?: behaviou?r| result| outcome| output)?|what i expected|what should happen|"
+    r"actual(?: behaviou?r| results?| outcome| output)?|observed(?: behaviou?r| results?| output)?|"
+    r"current(?: behaviou?r| results?| output)|what i got|what happens instead|what happened instead|"
+    r"what actually happens|what actually happened|versions?|env|environment|os|platform|build|commit|"
+    r"system(?: info)?|logs?|attachments?|screenshots?|workaround|severity|priority|frequency|reproducibility|"
+    r"scene|scenario|prompt|input|ask for|asked for|description|context|details|"
+    r"scenario \(what i wanted\)|what i wanted|what i asked for|title|bug|issue|summary|describe the bug|"
+    r"bug description)[ \t]*(?::|$)[ \t]*(?P<rest>.*)$", re.I)
+REPORT_KINDS = {"actual": ("actual", "observed", "current", "what i got", "what actually", "what happen"),
+                "expected": ("expected", "desired", "what i expected", "what should"),
+                "steps": ("steps", "how to", "to reproduce", "repro")}
+REPORT_ENVIRONMENT = ("version", "env", "os", "platform", "build", "commit", "system", "log", "attachment",
+                      "screenshot", "workaround", "severity", "priority", "frequency", "reproducibility")
+REPORT_TITLES = ("title", "bug", "issue", "summary", "describe the bug", "bug description")
+TOOL_STEP = re.compile(r"^(?:\$|(?:(?:then|and|now|just|simply|please)[ \t]+)?(?:generate|run|re-?run|open|watch|"
+                       r"load|compile|click|execute|launch|build|export|import|save|render|play|replay|observe|look|"
+                       r"check|inspect|view|install|invoke|press|paste|submit|start|call|use|lower|python|ttsgc|"
+                       r"pip)\b)", re.I)
+QUOTED = re.compile(r"[\"\u201c]([^\"\u201c\u201d]+)[\"\u201d]")
+TITLE_STOPS = re.compile(r"[.:;!?]+(?=\s)")
+
+
+def _bug_report(text: str, notes: list[str]) -> str:
+    """A bug report ('Steps to reproduce', 'Expected behaviour', 'Actual'): the scene is the one asked for in its
+    steps (or, told nowhere else, the one it expected); what went wrong under 'Actual' is no scene, nor are the
+    versions it ran, the steps that only work the tool ('Generate and open the .xosc'), or its markup. Its title
+    names the bug: read for the road and the weather only."""
+    lines = MARKUP.sub("", text).split("\n")
+    found = [m for m in map(REPORT_SECTION.match, lines) if m]
+    kinds = {kind for m in found for kind, starts in REPORT_KINDS.items()
+             if m.group("key").lower().startswith(starts)}
+    if len(kinds) < 2:
+        return text
+    first = next((k for k, x in enumerate(lines) if x.strip()), 0)
+    sections: list[tuple[str, list[str]]] = [("scene", [])]
+    field = False  # the last heading had its value on its own line ('Actual: ...'): a blank line ends it
+    for k, line in enumerate(lines):
+        m = REPORT_SECTION.match(line)
+        if m is None and k == first and len(line.split()) <= 15 and not line.rstrip().endswith("."):
+            sections += [("title", [line.strip()]), ("scene", [])]  # "cut-in from right lane goes the wrong way"
+            continue
+        if m is None:
+            if field and not line.strip():
+                sections.append(("scene", []))
+                field = False
+            sections[-1][1].append(line)
+            continue
+        key, rest = m.group("key").lower(), m.group("rest").strip()
+        kind = next((kind for kind, starts in REPORT_KINDS.items() if key.startswith(starts)), "scene")
+        kind = "environment" if key.startswith(REPORT_ENVIRONMENT) else "title" if key in REPORT_TITLES else kind
+        sections.append((kind, [rest] if rest else []))
+        field = bool(rest)
+        if kind in ("title", "environment") and rest:
+            sections.append(("scene", []))  # "Version: 0.7.0": a field of one line
+    scene = [_scene_step(x) for kind, said in sections if kind in ("scene", "steps") for x in said]
+    if not any(_agent_kinds(x) - {"ego"} for x in scene):  # the scene said only as what was expected
+        scene += [_scene_step(x) for kind, said in sections if kind == "expected" for x in said]
+    titles = ["Title: " + TITLE_STOPS.sub(",", x) for kind, said in sections if kind == "title"
+              for x in said if x.strip()]  # one title, whatever marks it holds
+    notes.append("read the bug report's scene, not what it got ('Actual') nor how it was run")
+    return "\n".join(titles[:1] + [x for x in scene if x.strip()])
+
+
+def _scene_step(line: str) -> str:
+    """One line of a report's steps as the scene it asks for: 'Generate and open the .xosc' works the tool, no
+    scene; '2. A silver sedan ... cuts in' is the scene, its number gone."""
+    line = re.sub(r"^[ \t]*(?:[-*\u2022][ \t]*|\d{1,2}[.)][ \t]*)", "", line)
+    line = re.sub(r"^(?:scene|scenario|prompt|input|ask(?:ed)? for|what i wanted)[ \t]*(?:\([^)]*\))?[ \t]*:[ \t]*",
+                  "", line, flags=re.I)
+    if TOOL_STEP.match(line):  # 'lower "a van is double-parked ahead ..." with seed 1': the prompt it was given
+        return ". ".join(x.strip().rstrip(".") for x in QUOTED.findall(line) if len(x.split()) >= 3)
+    return line
+
+
+def _outline_example(lines: list[str]) -> list[str]:
+    """'Scenario Outline: ... the ego drives at <speed> ... Examples: | speed | 30 km/h |': an outline is one scene
+    per row of its table; the first row is the scene told (one scene, not all of them at once), and the table is
+    no scene of its own."""
+    start = next((k for k, x in enumerate(lines) if re.match(r"^[ \t]*(?:Examples|Scenarios)[ \t]*:", x, re.I)), None)
+    if start is None:
+        return lines
+    rows = [[c.strip() for c in x.strip().strip("|").split("|")] for x in lines[start + 1:] if x.strip().startswith("|")]
+    end = start + 1
+    while end < len(lines) and (lines[end].strip().startswith("|") or not lines[end].strip()):
+        end += 1
+    kept = lines[:start] + lines[end:]
+    if len(rows) < 2 or len(rows[1]) != len(rows[0]):
+        return kept
+    values = dict(zip(rows[0], rows[1]))
+    return [re.sub(r"<([^<>]+)>", lambda m: values.get(m.group(1).strip(), m.group(0)), x) for x in kept]
 
 
 AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report|thesis|paper|assignment|"

@@ -1907,7 +1907,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close(next_link="and" if joined_on else "", next_condition=u.meaning == "once" and not whole
                   and not state and not (u.word == "after" and _a_wait_of_minutes(units, k)))
             continue
-        if u.category == "word" and u.word == "when" and nxt is not None and _reaching(units, k + 1):
+        if u.category == "word" and u.word == "when" and nxt is not None and (_reaching(units, k + 1) or
+                                                                             _completed(units, k + 1)):
             r.mark(u)
             close()
             stage += 1
@@ -2158,6 +2159,13 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
     if current and all(x.word in SIGNAL_COLOURS | {"to"} for x in current) and \
             current[-1].word in SIGNAL_COLOURS and _subject_then_its_verb(units, k):
         return True  # "when the light flips to green the player turns left": the change said, then who acts
+    ego = u.category == "agents" and u.meaning == "ego" or u.category == "word" and u.word == "the" and \
+        k + 1 < len(units) and units[k + 1].category == "agents" and units[k + 1].meaning == "ego"
+    if ego and len(current) >= 3 and current[-1].category in ("road", "agents", "positions") and \
+            (_has_verb(current) or any(x.word in ("has", "have", "had") for x in current)) and \
+            _subject_then_its_verb(units, k):
+        return True  # "when the bus has cleared the junction the ego turns right": the condition said in full
+        # (up to its object), then the ego and its verb
     pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
         u.category == "word" and u.word in SUBJECT_PRONOUNS
     if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS or _past_tense_verb(x)
@@ -2659,6 +2667,22 @@ def _reaching(units: list[Unit], k: int) -> bool:
         return True
     rest = units[units.index(verb) + 1: units.index(verb) + 4]
     return verb.base in ("approach", "enter") and any(u.category == "road" and u.meaning == "junction" for u in rest)
+
+
+def _completed(units: list[Unit], k: int) -> bool:
+    """'when the bus has cleared the junction', 'when they have gone by': a condition told in the present perfect
+    holds once a deed is done, the start of a later stage (as 'once' is); a subject, then has / have and a
+    participle."""
+    window = units[k:k + 6]
+    for j, u in enumerate(window):
+        if u.category == "comma" or u.tokens[0].sentence != units[k].tokens[0].sentence or u.category == "actions":
+            return False
+        if u.category == "word" and u.word in ("has", "have"):
+            said = [x for x in window[j + 1:j + 3] if x.word not in ADVERBS | {"fully", "completely", "safely"}]
+            subject = any(x.category == "agents" or x.word in PRONOUNS for x in window[:j])
+            return subject and bool(said) and (said[0].category == "actions" or said[0].category == "word" and
+                                               re.fullmatch(r"[a-z]{3,}(?:ed|en)", said[0].word) is not None)
+    return False
 
 
 # -- noun phrases and entities ------------------------------------------------------------------------------
@@ -3227,6 +3251,8 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"
                 or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN  # "a cyclist ... the bicycle": the same
                 or head.split()[-1] in GROUP_NOUNS and e.count > 1]  # "a crowd of fans ... the crowd": them
+        named = [e for e in same if e.head.split()[-1] == head.split()[-1] or head in e.aliases]
+        same = named or same  # "a delivery van ... a car behind ... the van": the van, not the car named last
         before = [e for e in pool if e.parent is None and e.count == 1 and e not in r.clause_mentions]
         if not same and not other and len(pool) == 1 and before == pool:
             same = pool  # "a lorry ... the HGV", "a jogger ... the runner": the one of its kind named before
@@ -3293,6 +3319,7 @@ def _absorbed(r: _Reader, entity: Entity) -> bool:
             taken = min(entity.count, group.group_open)
             group.group_open -= taken
             group.count -= taken
+            entity.named_of = group  # "three cars including the ego. One car is stopped ...": one of them
             entity.features |= group.features
             entity.behavior = entity.behavior or group.behavior
             entity.actions = entity.actions or list(group.actions)
@@ -3467,7 +3494,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.behavior = e.behavior or "aggressive"
         if action in ("lane_left", "lane_right") and [t.base for t in u.tokens[:2]] == ["pull", "out"]:
             e.features.add("pulls_out")  # "pulls out to the left": a turn when it pulls out of a junction
-        if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS:
+        stative = clause_units is not None and k is not None and k > 0 and \
+            clause_units[k - 1].word in COPULAS | {"be", "been", "being"}  # "a truck is stopped dead ahead": it stands
+        if action == "stop" and not e.is_ego and {t.word for t in u.tokens} & ABRUPT_STOP_WORDS and not stative:
             e.features.add("stops_abruptly")  # "stops dead", "slams on the brakes": a sudden stop, not a halt
             e.behavior = e.behavior or "aggressive"
         if action == "turn" and e.is_ego and not direction and clause_units is not None and k is not None and \
@@ -3491,6 +3520,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             # what it was doing is its action ("the other driver had to stop", said of nothing else, still stops)
         e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
                           0 if earlier else r.tick(), action, direction))
+        if action == "lane_change" and {"middle", "center"} & {t.word for t in u.tokens}:
+            e.features.add("to_the_middle")  # "moves into the middle lane": away from the side lane it is in
+        if action == "go_straight" and "straight" in {t.word for t in u.tokens}:
+            e.features.add("straight_on")  # "goes straight through", said; not "moves off"
         # ("had stopped first and was proceeding straight across": what it does now outranks what it had done)
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
@@ -3670,7 +3703,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     pronouns = []
     for i, u in enumerate(units):
-        if u.word in ORDINAL_MEMBERS and i > 0 and units[i - 1].word == "the" and not (
+        other = u.word == "other" and u.category == "word" and i + 1 < len(units) and (
+            units[i + 1].category == "actions" or units[i + 1].word in AUXILIARIES)  # "one is stopped on the right,
+        # and the other comes from the left": the group's other member, as its subject
+        if (u.word in ORDINAL_MEMBERS or other) and i > 0 and units[i - 1].word == "the" and not (
                 i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number")) and not any(
                 np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions") \
                 and not (i > 2 and units[i - 2].word in COPULAS and units[i - 3].word in ("mine", "i", "we", "ours")):
@@ -3977,6 +4013,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     r.mark(u)
                     u.meaning = "used"
     # positions, behaviours and road types: to the noun they follow, else the subject
+    ego_as_it = False  # "beside it" said of the ego: the 'its' after it is the ego's too
     for i, u in enumerate(units):
         if u.category not in ("positions", "behaviours") or u.meaning == "used":
             continue
@@ -4001,7 +4038,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
             u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
-                not any(e in subject for e in owner) and not in_its_place:
+                not any(e in subject for e in owner) and not in_its_place and not ego_as_it:
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
         if u.meaning in ("side_left", "side_right") and _side_of_passing_the_ego(units, i) and owner and \
@@ -4014,6 +4051,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         targets = owner if owner else []
         if reference is None and in_its_place:  # "a biker behind it", "a cop car right on its tail"
             reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
+        ego_as_it = ego_as_it or reference is not None and reference.is_ego and (
+            u.tokens[-1].word == "it" or i + 1 < len(units) and units[i + 1].word == "it")
 
         for e in targets:
             if e.is_ego and u.category == "positions":
@@ -4032,6 +4071,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS and \
                         not edge_after:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
+                    e.features.add("in_lane_" + u.meaning[5:])  # which side: a move to the middle is away from it
                 later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
                     stage > reference.stage or "level" in reference.features)  # "then returns ahead of the bus": it
                 # was; "a truck right next to it, so the ego slots in behind it": beside, as said first
@@ -4044,6 +4084,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later and \
                         not started and not said_first:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
+                    if u.meaning == "behind" and reference.stage == stage and not any(
+                            a[0] == stage and a[4] in LANE_MOVES | {"lane_left", "lane_right"} for a in e.actions):
+                        reference.features.add("ego_behind")  # in the ego's own lane, whichever lane that is
+                        # (not "merged right into lane one behind the coach": the lane it moves into)
                 r.mark(u)
                 continue
             if reference is not None and not reference.is_ego and u.category == "positions" and \
@@ -4051,6 +4095,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 e.relative_to = e.relative_to or reference
                 r.mark(u)
                 continue
+            if u.meaning == "road_straight" and u.tokens[0].word == "across" and u.tokens[-1].word != "from" and \
+                    e.features & {"road_left", "road_right", "cross_road"} and i > 0 and \
+                    units[i - 1].category == "actions":
+                r.mark(u)  # "comes from the road on the left and goes straight across the junction": the way it
+                continue  # goes, not where it comes from
             _modify(r, e, u, stage, 1)
         if not targets:
             r.mark(u)
@@ -4610,7 +4659,8 @@ def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
     for group in reversed(r.entities):
         if group.is_ego or group.parent is not None:
             continue
-        if group.count == 1 and any(m.parent is group for m in r.entities) and not group.label:
+        if group.count == 1 and any(m.parent is group or m.named_of is group for m in r.entities) and \
+                not group.label:
             group.label = "#rest"  # "one from the left and one from the right": the second is what is left
             group.includes_ego = False  # "three cars including the ego ... the other one": not the ego again
             return group
@@ -5274,6 +5324,10 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     if not chosen:
         return None, None
     best = max(chosen, key=lambda a: (a[1], a[2], a[3]))
+    if best[4] == "stop" and not e.is_ego and "straight_on" in e.features and any(
+            a[4] == "go_straight" and a[1] == best[1] and a[3] > best[3] for a in chosen):
+        return "go_straight", None  # "a pickup is stopped at the stop sign ... when the pickup proceeds straight
+        # through": it stood, then went straight across; going is what it does
     turned = next((a for a in chosen if a[4] == "turn" and a[1] == best[1] and a[3] > best[3]), None)
     if best[4] == "cut_in" and turned is not None and e.features & {"road_left", "road_right", "from_left",
                                                                     "from_right"}:
@@ -5299,6 +5353,11 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
 
 def _intro_action(e: Entity) -> tuple[str | None, str | None]:
     action = _action(e, e.stage)
+    if action[0] == "stop" and not e.is_ego and "straight_on" in e.features and any(
+            a[4] == "go_straight" and a[1] == 2 and a[0] > e.stage for a in e.actions):
+        return "go_straight", None  # "a cyclist waiting beside the ego ... when the light turns green, the ego lets
+        # the cyclist go straight through first": the crossing it waited for is what it does ("we both moved off"
+        # says no way, and it stood)
     if action[0] is None or not any(a[1] == 2 for a in e.actions if a[0] == e.stage):
         later = _action(e)
         if action[0] == "stop" and later[0] in ("move", "go_straight"):
@@ -5335,6 +5394,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         # where traffic keeps left), ahead unless said otherwise
         if not f & {"behind", "level", "overtaking"}:
             f.add("ahead")
+    if "ego_behind" in f and e.road_type != "shoulder" and not f & {"bare_left", "bare_right", "level", "behind"}:
+        f -= {"side_left", "side_right"}  # "the ego comes up behind a truck broken down in the right lane": the lane
+        # named is the ego's too
     side = _side_of(f)
     lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     if "screening" in f and side and action == "stop" and not f & {"behind", "level"}:
@@ -5694,8 +5756,13 @@ UNTIL_LINKS = {"until", "till", "before"}  # a clause of what is waited for: its
 def _returns_to_the_main_subject(units: list[Unit]) -> bool:
     """A bare verb whose object is 'it', 'him', 'her' or 'them' after a relative clause: the pronoun names the
     relative's noun, and nothing does a thing to itself, so the verb is the main clause's subject's."""
-    return len(units) >= 2 and units[0].category == "actions" and any(
-        u.category == "word" and u.word in ("it", "him", "her", "them") for u in units[1:3])
+    lead = 0
+    while lead < len(units) - 1 and units[lead].category == "word" and units[lead].word in OBLIGED:
+        lead += 1  # "and has to stop behind it": obliged, and still the verb's subject is to be found
+    return len(units) >= lead + 2 and units[lead].category == "actions" and any(
+        u.category == "word" and u.word in ("it", "him", "her", "them") or
+        u.category == "positions" and u.tokens[-1].word in ("it", "him", "her", "them")
+        for u in units[lead + 1:lead + 3])  # "... then overtakes it", "... and stops behind it"
 
 
 def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
@@ -6288,7 +6355,10 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
         direction = direction or signalled
         said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
             "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
-        return f"change_lane_to_{direction or said or _overtaking_side('ego_lane_change_direction')}"  # "pulling out"
+        inward = next((x for x in SIDES if f"in_lane_{SIDES[1 - SIDES.index(x)]}" in e.features), None) \
+            if "to_the_middle" in e.features else None  # "in the right-hand lane ... moves into the middle lane": left
+        return f"change_lane_to_{direction or said or inward or _overtaking_side('ego_lane_change_direction')}"
+        # ("pulling out": the side one overtakes on)
     return "go_straight"
 
 
