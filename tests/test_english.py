@@ -5694,3 +5694,10 @@ def test_a_vehicle_placed_relative_to_someone_or_an_order_to_the_driver_leaves_t
     wheel: then the ego is that onlooker, and the vehicle another."""
     assert sum(1 for a in lower(prompt).scenario.agents() if a.relative_to_ego is None) == 1
     assert ("car", "go_straight", "ego") in agents(prompt)
+
+
+def test_with_no_ego_named_the_vehicle_others_are_placed_by_is_the_ego():
+    """'A little boy runs out into the road in front of the car': the car is where the scene is told from."""
+    assert agents("A little boy runs out into the road in front of the car.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert agents("A cyclist rides alongside the bus as it turns left.")[0] == ("bus", "turn_left", "ego")

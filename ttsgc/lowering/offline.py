@@ -5789,33 +5789,49 @@ OWN_WAY = {"go_straight", "move", "turn", "turn_left", "turn_right", "lane_chang
            "reach"}  # the classes of actions a vehicle does on its own way, not to or for someone else
 
 
-def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
-    """'A bus turns left at a junction while a pedestrian crosses', 'Semi on a county road, a cyclist on the
-    shoulder ahead': a text that names no ego, or names it only as the narrator's driver ('coach in the middle
-    lane ..., our driver moves over'), tells its scene from the first vehicle it names, placed nowhere (a place
-    would be relative to someone else: 'a bus pulling out on the right'). That vehicle is the ego's; an ego
-    the reader supplied for a verb with no subject is that vehicle too."""
-    first = next((e for e in sorted(r.entities, key=lambda e: e.key) if not e.is_ego), None)  # a group named
-    # first ("four vehicles wait: a car, a bus, ...") has count 0 once its members are named: no protagonist
-    if first is None or first.type not in V.EGO_TYPES - {"motorcycle"} or first.count != 1 or first.generic or \
-            first.features or first.relative_to is not None or first.parent is not None or first.named_of is not None:
-        return
+def _may_drive_the_scene(e: Entity) -> bool:
+    return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and not e.features and \
+        e.relative_to is None and e.parent is None and e.named_of is None
+
+
+def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
+    if not driver_named and any(t.word in SPEAKERS for t in r.tokens):
+        return None  # "a semi hit my mirror": the one speaking is the ego
+    ordered = sorted(r.entities, key=lambda e: e.key)
+    anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e) and
+                   any(o.relative_to is e for o in r.entities)), None)
+    if anchor is not None:
+        return anchor
+    first = next((e for e in ordered if not e.is_ego), None)  # a group named first ("four vehicles wait: a car,
+    # a bus, ...") has count 0 once its members are named: no protagonist
+    if first is None or not _may_drive_the_scene(first):
+        return None
     earliest = min((a[0] for a in first.actions), default=0)
     if not driver_named and (not any(a[4] in OWN_WAY for a in first.actions) or any(
             a[0] == earliest and a[4] in ("stop", "block") for a in first.actions)):
-        return  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then pulled
-        # away": met by someone, who is the ego
-    opening = [u for u in r.units if u.start == 0 or r.tokens[u.start - 1].sentence != u.tokens[0].sentence]
+        return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
+        # pulled away": met by someone, who is the ego
     named = next((u for u in r.units if u.category == "agents"), None)
     if named is None or next(u for u in r.units if u.tokens[0].sentence == named.tokens[0].sentence and
                              u.category != "word") is not named:
-        return  # "the queue reaches the retail park, and a lorry is edging along": the scene opens on no vehicle
+        return None  # "the queue reaches the retail park, and a lorry is edging along": it opens on no vehicle
     if named.start > 0 and r.tokens[named.start - 1].word in ("the", "this", "that"):
-        return  # "the lorry kept going through the red light": one the onlooker points at, the onlooker the ego
+        return None  # "the lorry kept going through the red light": one an onlooker points at, the ego
+    opening = [u for u in r.units if u.start == 0 or r.tokens[u.start - 1].sentence != u.tokens[0].sentence]
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
-        return  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
-    if not driver_named and any(t.word in SPEAKERS for t in r.tokens):
-        return  # "a semi hit my mirror": the one speaking is the ego
+        return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
+    return first
+
+
+def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
+    """A text that names no ego, or names it only as the narrator's driver, tells its scene from one vehicle:
+    the one the others are placed by ('a boy runs out in front of the car', 'on the car's left'), else the
+    first it opens on, placed nowhere and on its own way ('A bus turns left while a pedestrian crosses',
+    'Coach in the middle lane ..., our driver moves over'). That vehicle is the ego's; an ego the reader
+    supplied for a verb with no subject is that vehicle too."""
+    first = _the_one_told_from(r, driver_named)
+    if first is None:
+        return
     supplied = next((e for e in r.entities if e.is_ego), None)
     if driver_named and supplied is not None:  # the driver is the ego, the vehicle theirs
         supplied.type = first.type
