@@ -686,6 +686,25 @@ def test_misspelt_words_close_to_one_known_word_are_read_as_it_and_reported():
     assert "motrocycle (read as motorcycle)" in lowered.unknown
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    # an inflected verb with a slip in its stem: a letter missed, one doubled, two swapped
+    ("the ego car is truning lfet at teh junction adn a van is comming from the oposite direciton",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]),
+    ("bsu stoped ahaed of me so i chnaged lanes to the left",
+     [("bus", "stop", "front"), ("car", "change_lane_to_left", "ego")]),
+    ("a pedestrain is crosing infront of me, i stoped",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_typing_slips_in_verbs_and_short_words_are_read_as_the_words_meant(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_word_of_english_is_never_read_as_a_slip_of_another():
+    words = {t.word for t in tokenize("he was tuning the radio, touring the form of the speedo during a commute")}
+    assert {"tuning", "touring", "form", "speedo", "during", "commute"} <= words
+    assert not any(t.misspelt for t in tokenize("he was tuning the radio, touring the form of the speedo"))
+
+
 # -- general classes: reports, instructions, later stages ------------------------------------------------
 
 @pytest.mark.parametrize("prompt, expected", [

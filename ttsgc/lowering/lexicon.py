@@ -138,14 +138,76 @@ def _nearest(lex: "Lexicon", word: str) -> str | None:
 
 @lru_cache(maxsize=4096)
 def _corrected(lex: "Lexicon", word: str) -> str | None:
-    """A misspelling close enough to one known word to be read as it (one or two letters off)."""
-    pool = [w for w in lex.content_words if abs(len(w) - len(word)) <= 1 and w[0] == word[0]]
-    found = [w for w in difflib.get_close_matches(word, pool, n=2, cutoff=0.86)
+    """A typing slip read as the one known word it was meant to be ("pedestrain", "turnign", "lfet", "adn"), never
+    a word of English read as another ("tuning" stays, "form" is no "from"): a slip is one letter dropped, added,
+    doubled, changed, or two neighbours swapped (a long word may have two); short words only swap."""
+    if len(word) < 3 or not word.isalpha() or _english(word):
+        return None
+    forms = _known_forms(lex)
+    for kind in _slips(word):  # the likeliest slip first: a swap, a letter missed, one too many, one changed
+        found = {forms[w] for w in kind if w in forms and not (w.startswith(word) or word.startswith(w))}
+        # a letter more or less at the end makes another word ("speedo", "commuter"), not a slip
+        if len(found) == 1:
+            return found.pop()
+        if found:
+            return None
+    if len(word) < 8:
+        return None  # two slips only in a long word
+    pool = [w for w in forms if abs(len(w) - len(word)) <= 2 and w[0] == word[0]]
+    close = [w for w in difflib.get_close_matches(word, pool, n=2, cutoff=0.86)
              if not (w.startswith(word) or word.startswith(w))]  # "commute" is no misspelt "commuter"
-    if len(found) == 1 or (len(found) == 2 and difflib.SequenceMatcher(None, word, found[0]).ratio() >
-                           difflib.SequenceMatcher(None, word, found[1]).ratio()):
-        return found[0]
+    if len(close) == 1 or (len(close) == 2 and difflib.SequenceMatcher(None, word, close[0]).ratio() >
+                           difflib.SequenceMatcher(None, word, close[1]).ratio()):
+        return forms[close[0]]
     return None
+
+
+def _slips(word: str) -> tuple[set[str], ...]:
+    """The words a slip of one key could have been made from, by kind: a 3- or 4-letter word only by a swap; the
+    first letter is taken as typed, save in a swap."""
+    letters = "abcdefghijklmnopqrstuvwxyz"
+    swapped = {word[:i] + word[i + 1] + word[i] + word[i + 2:] for i in range(len(word) - 1)}
+    if len(word) < 5:
+        return (swapped,)
+    missed = {word[:i] + c + word[i:] for i in range(1, len(word) + 1) for c in letters}
+    extra = {word[:i] + word[i + 1:] for i in range(1, len(word))}
+    changed = {word[:i] + c + word[i + 1:] for i in range(1, len(word)) for c in letters}
+    return swapped, missed, extra, changed
+
+
+@lru_cache(maxsize=1)
+def _known_forms(lex: "Lexicon") -> dict[str, str]:
+    """Every form a known word is written in ("turn", "turns", "turned", "turning"), the form as its own key."""
+    forms: dict[str, str] = {}
+    for word in sorted(lex.vocabulary):
+        if len(word) < 3 or not word.isalpha():
+            continue
+        forms[word] = word
+        if word in lex.function_words or lex.base(word)[1] or word.endswith(("ing", "ed")) or \
+                word.endswith("s") and not word.endswith("ss"):
+            continue  # no suffix on a word that has one ("stops", "strobes" give no "stopsed", "strobesing")
+        if word.endswith("e"):
+            inflected = [word + "d", word[:-1] + "ing", word + "s"]
+        else:
+            stem = word + word[-1] if re.fullmatch(r"[a-z]?[^aeiouy][aeiou][bdgklmnprt]", word) else word
+            inflected = [stem + "ed", stem + "ing", word + ("es" if word.endswith(("s", "sh", "ch", "x")) else "s")]
+        for form in inflected:  # "stop": "stopped", "stopping", "stops"; "come": "coming"
+            forms.setdefault(form, form)
+    for inflected in lex.irregular:
+        forms.setdefault(inflected, inflected)
+    return forms
+
+
+@lru_cache(maxsize=8192)
+def _english(word: str) -> bool:
+    """A word an English dictionary has: written as meant, whatever the lexicon knows of it."""
+    return word in _dictionary()
+
+
+@lru_cache(maxsize=1)
+def _dictionary():
+    from spellchecker import SpellChecker  # a word-frequency list of English, read once and only for unknown words
+    return SpellChecker(language="en", distance=1)
 
 
 @lru_cache(maxsize=1)
@@ -906,9 +968,9 @@ def tokenize(text: str) -> list[Token]:
         for part in lex.spelling.get(word, word).split():
             base, inflected = lex.base(part)
             misspelt = ""
-            if base not in lex.vocabulary and len(part) >= 5 and part.isalpha() and not part.endswith("ing"):
+            if base not in lex.vocabulary and part.isalpha():
                 guess = _corrected(lex, part)
-                if guess is not None:  # "pedestrain", "interesection": read as the word meant
+                if guess is not None:  # "pedestrain", "interesection", "turing": read as the word meant
                     misspelt, part = part, guess
                     base, inflected = lex.base(part)
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
