@@ -699,6 +699,31 @@ def test_typing_slips_in_verbs_and_short_words_are_read_as_the_words_meant(promp
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    # "doubler": to overtake, with its side said "by the left"; "le sens": the direction
+    ("On the motorway a lorry doubles us by the right while a van circulates in the other sense.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_left"), ("truck", "go_straight", "back_right")]),
+    # "s'arrêter", "au feu rouge", "traverser"
+    ("My car is arrested at the feu rouge and an old man traverses the street in front of it.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    # "stationné en double file", "se rabattre sur la voie de droite"
+    ("A taxi is stationed in double file ahead of the ego vehicle, so the ego vehicle goes back on the left lane.",
+     [("car", "change_lane_to_left", "ego"), ("car", "stop", "front")]),
+    # "un poids lourd", "à contresens": an oncoming vehicle on a road without junction
+    ("Far from the crossroads, a heavy weight arrives in the opposite sense.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front_left")]),
+])
+def test_calques_of_french_are_read_as_the_english_meant(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_calque_is_read_only_where_it_means_nothing_else_in_english():
+    assert agents("A double parked van is ahead of a double decker bus.") == agents(
+        "A double-parked van is ahead of a double decker bus.")
+    assert road("At the crossroad with feux tricolores, I turn left.").required_signals == ("traffic_light",)
+    assert road("The ego marks the stop at the crossroad and then turns at right.").required_signals == ("stop",)
+
+
 def test_a_word_of_english_is_never_read_as_a_slip_of_another():
     words = {t.word for t in tokenize("he was tuning the radio, touring the form of the speedo during a commute")}
     assert {"tuning", "touring", "form", "speedo", "during", "commute"} <= words

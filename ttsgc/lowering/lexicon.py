@@ -186,16 +186,47 @@ def _known_forms(lex: "Lexicon") -> dict[str, str]:
         if word in lex.function_words or lex.base(word)[1] or word.endswith(("ing", "ed")) or \
                 word.endswith("s") and not word.endswith("ss"):
             continue  # no suffix on a word that has one ("stops", "strobes" give no "stopsed", "strobesing")
-        if word.endswith("e"):
-            inflected = [word + "d", word[:-1] + "ing", word + "s"]
-        else:
-            stem = word + word[-1] if re.fullmatch(r"[a-z]?[^aeiouy][aeiou][bdgklmnprt]", word) else word
-            inflected = [stem + "ed", stem + "ing", word + ("es" if word.endswith(("s", "sh", "ch", "x")) else "s")]
-        for form in inflected:  # "stop": "stopped", "stopping", "stops"; "come": "coming"
+        for suffix in ("ed", "ing", "s"):  # "stop": "stopped", "stopping", "stops"; "come": "coming"
+            form = inflected(word, suffix)
             forms.setdefault(form, form)
-    for inflected in lex.irregular:
-        forms.setdefault(inflected, inflected)
+    for form in lex.irregular:
+        forms.setdefault(form, form)
     return forms
+
+
+def inflected(word: str, suffix: str) -> str:
+    """A word with a regular ending: 'ed', 'ing' or 's' ("stop" -> "stopped", "come" -> "coming", "pass" ->
+    "passes")."""
+    if suffix == "s":
+        return word + ("es" if word.endswith(("s", "sh", "ch", "x")) else "s")
+    if word.endswith("e"):
+        return word + "d" if suffix == "ed" else word[:-1] + suffix
+    if re.fullmatch(r"[a-z]?[^aeiouy][aeiou][bdgklmnprt]", word):
+        return word + word[-1] + suffix  # one syllable ending vowel-consonant doubles it
+    return word + suffix
+
+
+@lru_cache(maxsize=1)
+def _calques() -> tuple[tuple[re.Pattern, str, dict], ...]:
+    """Phrases a speaker of another language writes word for word ("doubles the car", "in the opposite sense"),
+    with the English meant, from calques.txt: the first word in any form, a regular ending carried over."""
+    found = []
+    for meant, words in _entries("calques"):
+        forms = {inflected(words[0], suffix): suffix for suffix in ("s", "ed", "ing")} | {words[0]: ""} | {
+            form: "" for form, base in lexicon().irregular.items() if base == words[0]}  # "goes", "went": the base
+        pattern = re.compile(r"\b(?P<first>" + "|".join(re.escape(f) for f in sorted(forms, key=len, reverse=True))
+                             + ")" + "".join(r"[\s-]+" + re.escape(w) for w in words[1:]) + r"\b")
+        found.append((-len(words), pattern.pattern, pattern, meant, forms))
+    return tuple((pattern, meant, forms) for *_, pattern, meant, forms in sorted(found, key=lambda x: x[:2]))
+    # the longest phrase first
+
+
+def _without_calques(text: str) -> str:
+    for pattern, meant, forms in _calques():
+        head, _, tail = meant.partition(" ")
+        text = pattern.sub(lambda m: " ".join(filter(None, (
+            inflected(head, forms[m.group("first")]) if forms[m.group("first")] else head, tail))), text)
+    return text
 
 
 @lru_cache(maxsize=8192)
@@ -827,6 +858,7 @@ def tokenize(text: str) -> list[Token]:
     text = _scenario_identifiers(_lines(_screenplay(_without_social_markup(text))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
+    text = _without_calques(text)
     text = re.sub(r"\b(it|that|there|he|she|what|who)'s (been|got|gotten|gone|had)\b", r"\1 has \2", text)
     text = re.sub(r"\b(it|that|he|she|who)'s (\w+ed)(?= (?:over |up |out |off )?(?:a|an|the|my|our|his|her|their|us|me)\b)",
                   r"\1 has \2", text)  # "it's pulled over a pickup", "he's blocked the lane": has, not is
