@@ -717,6 +717,17 @@ def test_calques_of_french_are_read_as_the_english_meant(prompt, expected):
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("The car which is ahead of the ego vehicle brakes hard.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("The van that is in front of me stops suddenly.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("The lorry which drives behind us flashes its lights.", [("car", "go_straight", "ego"), ("truck", "go_straight", "back")]),
+    # the relative ends at its own verb: what the main clause says of the ego is no place of the car
+    ("The car which turns left is the ego.", [("car", "turn_left", "ego")]),
+])
+def test_a_definite_noun_placed_by_the_ego_in_its_relative_clause_is_another_road_user(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_a_calque_is_read_only_where_it_means_nothing_else_in_english():
     assert agents("A double parked van is ahead of a double decker bus.") == agents(
         "A double-parked van is ahead of a double decker bus.")

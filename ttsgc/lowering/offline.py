@@ -3023,7 +3023,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
         if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
-                not _ego_object_follows(units, head):
+                not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u):
             # ("the car overtakes us": the ego is named after it, so the car is another)
             ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
             r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
@@ -3176,6 +3176,25 @@ def _ego_object_follows(units: list[Unit], head: int) -> bool:
             return True  # "the car on my left": placed by the ego, so another
         if x.category == "agents" and x.meaning != "none":
             return False
+    return False
+
+
+def _placed_by_the_ego_in_its_relative(r: _Reader, noun: Unit) -> bool:
+    """'the car which is in front of me brakes', 'the bus that drives ahead of the ego vehicle': a relative clause
+    that places the noun by the ego, read as a clause of its own, still names the noun as another road user."""
+    at = next((i for i, x in enumerate(r.units) if x is noun), None)
+    if at is None or at + 2 >= len(r.units) or r.units[at + 1].word not in RELATIVES or \
+            r.units[at + 2].category == "agents":  # "the car which I drive": the relative's subject is another
+        return False
+    sentence, verbs = noun.tokens[0].sentence, 0
+    for x in r.units[at + 2:]:
+        verbs += x.category == "actions" or x.category == "word" and x.word in AUXILIARIES
+        if x.tokens[0].sentence != sentence or x.word == "," or x.category == "agents" and x.meaning != "ego" or \
+                verbs > 1:  # a second verb is the main clause's ("the car which turns left is the ego")
+            return False
+        if x.category == "agents" and x.meaning == "ego" or x.category == "positions" and {
+                t.word for t in x.tokens} & {"us", "our", "me", "my", "ego", "you", "your"}:
+            return True
     return False
 
 
