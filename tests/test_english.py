@@ -728,6 +728,18 @@ def test_a_definite_noun_placed_by_the_ego_in_its_relative_clause_is_another_roa
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two vans wait in a queue ahead of us, we are the last one. The first one turns left, the second one turns right.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "front"), ("car", "turn_right", "front")]),
+    ("We are three cars in a line, I am the last one. Suddenly the first one brakes, the second one stops behind it.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]),
+    ("Three cars including the ego drive in a line, the ego is the last one. The first one stops. The second one "
+     "turns right.", [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "turn_right", "front")]),
+])
+def test_the_first_one_and_the_second_one_are_members_of_the_group_the_ego_is_the_last_of(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_a_calque_is_read_only_where_it_means_nothing_else_in_english():
     assert agents("A double parked van is ahead of a double decker bus.") == agents(
         "A double-parked van is ahead of a double decker bus.")

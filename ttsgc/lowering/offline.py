@@ -3725,15 +3725,21 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         other = u.word == "other" and u.category == "word" and i + 1 < len(units) and (
             units[i + 1].category == "actions" or units[i + 1].word in AUXILIARIES)  # "one is stopped on the right,
         # and the other comes from the left": the group's other member, as its subject
-        if (u.word in ORDINAL_MEMBERS or other) and i > 0 and units[i - 1].word == "the" and not (
-                i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number")) and not any(
+        one_after = i + 1 < len(units) and units[i + 1].word == "one" and units[i + 1].category in ("numbers", "word")
+        said_first = u.category == "positions" and [t.word for t in u.tokens] == ["the", "first", "one"] and \
+            i + 1 < len(units) and units[i + 1].category in ("actions", "behaviours")  # "the first one brakes"
+        if (said_first or (u.word in ORDINAL_MEMBERS or other) and i > 0 and units[i - 1].word == "the" and (
+                one_after or not (i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number"))
+        )) and not any(
                 np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions") \
-                and not (i > 2 and units[i - 2].word in COPULAS and units[i - 3].word in ("mine", "i", "we", "ours")):
-            # ("mine was the second one": the ego's place among them, no member of its own)
+                and not _the_ego_is(units, i - 2):
+            # ("mine was the second one", "the ego is the last one": the ego's place among them, no member of its own)
             member = _member(r, recent)  # "two motorbikes, the first on the left and the second on the right"
-            if member is not None:
+            if member is not None:  # "three cars in a line; the first one brakes, the second one stops behind it"
                 r.mark(u)
-                phrases.append(NounPhrase(member, i, i - 1))
+                if one_after:
+                    r.mark(units[i + 1])
+                phrases.append(NounPhrase(member, i + one_after, i - (not said_first)))
             continue
         value = _word_number(u.tokens[0]) if u.category in ("numbers", "number") and len(u.tokens) == 1 else None
         if value is not None and 2 <= value <= MAX_AGENTS_PER_MENTION and not any(
@@ -3760,7 +3766,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i, introduced=True))
                 continue
-            if i > 3 and units[i - 3].word in COPULAS and units[i - 4].word in ("mine", "i", "we", "ours"):
+            if _the_ego_is(units, i - 3):
                 continue  # "mine was the second one": the ego's place among them, no member of its own
             placed_one = _the_one_placed(r, units, i)  # "the one in front slammed on his brakes": that member
             extra = _one_more_of_a_placed_group(r, units, i, phrases) if placed_one is None else None
@@ -4582,6 +4588,13 @@ GROUP_NOUNS = {"family", "group", "crowd", "party", "gang", "bunch", "convoy", "
                "queue", "peloton", "class", "team", "troop", "pedestrians", "people"}
 NOT_A_MEMBER_AFTER_ONE = {"of", "lane", "lanes", "way", "direction", "side", "after", "another", "by", "more",
                           "time", "day", "moment", "point", "second", "stage", "step", "phase", "hand"}
+def _the_ego_is(units: list[Unit], k: int) -> bool:
+    """'mine was', 'I am', 'the ego is' at units[k - 1:k + 1]: what follows says the ego's own place."""
+    return k > 0 and units[k].word in COPULAS and (
+        units[k - 1].word in ("mine", "i", "we", "ours") or units[k - 1].category == "agents" and
+        units[k - 1].meaning == "ego")
+
+
 ORDINAL_MEMBERS = {"first", "second", "third", "fourth", "fifth", "last", "latter", "former"}
 
 
