@@ -740,6 +740,18 @@ def test_the_first_one_and_the_second_one_are_members_of_the_group_the_ego_is_th
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("A pickup backs out of a driveway on the left as I drive past.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_left")]),
+    ("A taxi pulls out of a parking space on the right and blocks me, so I stop.",
+     [("car", "block_the_ego", "front_right"), ("car", "stop", "ego")]),
+    # said to be behind, it is behind
+    ("A car reverses out of a parking space behind me.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+])
+def test_a_vehicle_out_of_a_place_off_the_road_joins_it_ahead_on_its_side(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_a_calque_is_read_only_where_it_means_nothing_else_in_english():
     assert agents("A double parked van is ahead of a double decker bus.") == agents(
         "A double-parked van is ahead of a double decker bus.")

@@ -5470,7 +5470,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         return f"road_of_{bare}_turn", False
     if "junction_approach" in f and junction and not person and side is None and not f & {"ahead", "behind"}:
         return f"road_of_{UNSPECIFIED['side_of_a_crossing_road']}_turn", False
-    ahead, behind = "ahead" in f and "overtaking" not in f, "behind" in f or "overtaking" in f and "level" not in f
+    ahead, behind = ("ahead" in f or "off_road" in f and "behind" not in f) and "overtaking" not in f, \
+        "behind" in f or "overtaking" in f and "level" not in f  # out of a driveway: it joins the road ahead
     if lane_move and {"level", "into_ego_lane"} <= f and not behind:
         ahead = False  # "alongside me ... moved into my lane, directly in front of me": level, ending ahead
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
