@@ -759,6 +759,22 @@ def test_a_calque_is_read_only_where_it_means_nothing_else_in_english():
     assert road("The ego marks the stop at the crossroad and then turns at right.").required_signals == ("stop",)
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    # two words typed as one
+    ("ego turnsleft at the junction and a bus goes straightahead from the opposite side",
+     [("bus", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]),
+    # a letter missed in a four-letter word
+    ("car on my rigt merges into my lane", [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]),
+])
+def test_words_run_together_and_short_words_missing_a_letter_are_read_apart_and_whole(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_run_together_sign_is_read_and_english_compounds_stay_whole():
+    assert road("theres a stopsign and a ped crossing, im going strait").required_signals == ("stop",)
+    assert [t.word for t in tokenize("somewhere nowhere sideways")] == ["somewhere", "nowhere", "sideways"]
+
+
 def test_a_word_of_english_is_never_read_as_a_slip_of_another():
     words = {t.word for t in tokenize("he was tuning the radio, touring the form of the speedo during a commute")}
     assert {"tuning", "touring", "form", "speedo", "during", "commute"} <= words

@@ -140,7 +140,7 @@ def _nearest(lex: "Lexicon", word: str) -> str | None:
 def _corrected(lex: "Lexicon", word: str) -> str | None:
     """A typing slip read as the one known word it was meant to be ("pedestrain", "turnign", "lfet", "adn"), never
     a word of English read as another ("tuning" stays, "form" is no "from"): a slip is one letter dropped, added,
-    doubled, changed, or two neighbours swapped (a long word may have two); short words only swap."""
+    doubled, changed, or two neighbours swapped (a long word may have two); short words only swap or miss one."""
     if len(word) < 3 or not word.isalpha() or _english(word):
         return None
     forms = _known_forms(lex)
@@ -162,14 +162,35 @@ def _corrected(lex: "Lexicon", word: str) -> str | None:
     return None
 
 
+@lru_cache(maxsize=4096)
+def _run_together(lex: "Lexicon", word: str) -> str | None:
+    """Two words typed without the space between them ("stopsign", "turnsleft", "straightahead"), read apart when
+    they begin a phrase of the lexicon; a word of English stays whole."""
+    if len(word) < 5 or not word.isalpha() or _english(word):
+        return None
+    for k in range(2, len(word) - 1):
+        first, second = word[:k], word[k:]
+        if any((a, b) in _phrase_openings(lex) for a in {first, lex.base(first)[0]}
+               for b in {second, lex.base(second)[0]}):
+            return f"{first} {second}"
+    return None
+
+
+@lru_cache(maxsize=1)
+def _phrase_openings(lex: "Lexicon") -> frozenset:
+    return frozenset(phrase[:2] for phrase in lex.phrases if len(phrase) > 1)
+
+
 def _slips(word: str) -> tuple[set[str], ...]:
-    """The words a slip of one key could have been made from, by kind: a 3- or 4-letter word only by a swap; the
-    first letter is taken as typed, save in a swap."""
+    """The words a slip of one key could have been made from, by kind: a 3-letter word only by a swap, a 4-letter
+    one by a swap or a letter missed; the first letter is taken as typed, save in a swap."""
     letters = "abcdefghijklmnopqrstuvwxyz"
     swapped = {word[:i] + word[i + 1] + word[i] + word[i + 2:] for i in range(len(word) - 1)}
-    if len(word) < 5:
+    if len(word) < 4:
         return (swapped,)
     missed = {word[:i] + c + word[i:] for i in range(1, len(word) + 1) for c in letters}
+    if len(word) < 5:
+        return swapped, missed
     extra = {word[:i] + word[i + 1:] for i in range(1, len(word))}
     changed = {word[:i] + c + word[i + 1:] for i in range(1, len(word)) for c in letters}
     return swapped, missed, extra, changed
@@ -997,7 +1018,8 @@ def tokenize(text: str) -> list[Token]:
         label = ""
         if "#" in word:
             word, label = word.split("#")[0], word.replace("#", "")
-        for part in lex.spelling.get(word, word).split():
+        known = word in lex.spelling or lex.base(word)[0] in lex.vocabulary
+        for part in (lex.spelling.get(word) or (None if known else _run_together(lex, word)) or word).split():
             base, inflected = lex.base(part)
             misspelt = ""
             if base not in lex.vocabulary and part.isalpha():
