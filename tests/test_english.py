@@ -718,6 +718,21 @@ def test_calques_of_french_are_read_as_the_english_meant(prompt, expected):
 
 
 @pytest.mark.parametrize("prompt, expected", [
+    # "arriver par la droite", "brûler le feu rouge"
+    ("At the crossroad a van arrives by the right and burns the feu rouge.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]),
+    # "le feu passe au vert": a later stage
+    ("My car waits at the feu rouge; when the feu passes to green I turn at right.",
+     [("car", "stop", "ego"), ("car", "turn_right", "ego")]),
+    # "derrière un ballon": after it, into the road ahead
+    ("A little girl runs on the roadway behind a ball.", [("car", "go_straight", "ego"),
+                                                         ("pedestrian", "cross_the_road", "front")]),
+])
+def test_calques_of_french_signals_sides_and_sequences(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
     ("The car which is ahead of the ego vehicle brakes hard.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
     ("The van that is in front of me stops suddenly.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
     ("The lorry which drives behind us flashes its lights.", [("car", "go_straight", "ego"), ("truck", "go_straight", "back")]),
@@ -773,6 +788,13 @@ def test_words_run_together_and_short_words_missing_a_letter_are_read_apart_and_
 def test_a_run_together_sign_is_read_and_english_compounds_stay_whole():
     assert road("theres a stopsign and a ped crossing, im going strait").required_signals == ("stop",)
     assert [t.word for t in tokenize("somewhere nowhere sideways")] == ["somewhere", "nowhere", "sideways"]
+
+
+def test_a_stage_opens_when_the_traffic_light_named_in_full_turns_green_without_a_comma():
+    for prompt in ("The ego waits at the line. When the traffic light goes green it turns right.",
+                   "I wait at the junction and as soon as the traffic lights turn green I turn right."):
+        scene = lower(prompt).scenario
+        assert [[a.action for a in s.agents if a.is_ego] for s in scene.stages] == [["stop"], ["turn_right"]]
 
 
 def test_a_word_of_english_is_never_read_as_a_slip_of_another():
