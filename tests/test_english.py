@@ -797,6 +797,12 @@ def test_a_stage_opens_when_the_traffic_light_named_in_full_turns_green_without_
         assert [[a.action for a in s.agents if a.is_ego] for s in scene.stages] == [["stop"], ["turn_right"]]
 
 
+def test_a_slip_that_spells_another_word_is_read_as_meant_only_among_its_words():
+    assert agents("a lorry came form the left at the junction") == [("car", "go_straight", "ego"),
+                                                                  ("truck", "go_straight", "road_of_left_turn")]
+    assert "form" in [t.word for t in tokenize("the cars form a queue ahead of me")]
+
+
 def test_a_word_of_english_is_never_read_as_a_slip_of_another():
     words = {t.word for t in tokenize("he was tuning the radio, touring the form of the speedo during a commute")}
     assert {"tuning", "touring", "form", "speedo", "during", "commute"} <= words

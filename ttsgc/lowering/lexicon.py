@@ -145,8 +145,8 @@ def _corrected(lex: "Lexicon", word: str) -> str | None:
         return None
     forms = _known_forms(lex)
     for kind in _slips(word):  # the likeliest slip first: a swap, a letter missed, one too many, one changed
-        found = {forms[w] for w in kind if w in forms and not (w.startswith(word) or word.startswith(w))}
-        # a letter more or less at the end makes another word ("speedo", "commuter"), not a slip
+        found = {forms[w] for w in kind if w in forms and not word.startswith(w)}
+        # a letter more at the end makes another word ("speedo"), not a slip; one less is a slip ("brak")
         if len(found) == 1:
             return found.pop()
         if found:
@@ -232,7 +232,7 @@ def _calques() -> tuple[tuple[re.Pattern, str, dict], ...]:
     """Phrases a speaker of another language writes word for word ("doubles the car", "in the opposite sense"),
     with the English meant, from calques.txt: the first word in any form, a regular ending carried over."""
     found = []
-    for meant, words in _entries("calques"):
+    for meant, words in list(_entries("calques")) + _slipped_phrases():
         forms = {inflected(words[0], suffix): suffix for suffix in ("s", "ed", "ing")} | {words[0]: ""} | {
             form: "" for form, base in lexicon().irregular.items() if base == words[0]}  # "goes", "went": the base
         pattern = re.compile(r"\b(?P<first>" + "|".join(re.escape(f) for f in sorted(forms, key=len, reverse=True))
@@ -240,6 +240,18 @@ def _calques() -> tuple[tuple[re.Pattern, str, dict], ...]:
         found.append((-len(words), pattern.pattern, pattern, meant, forms))
     return tuple((pattern, meant, forms) for *_, pattern, meant, forms in sorted(found, key=lambda x: x[:2]))
     # the longest phrase first
+
+
+def _slipped_phrases() -> list[tuple[str, tuple[str, ...]]]:
+    """Slips that spell another word, read as meant only among the words they are slipped in ("comes form the
+    left"): spelling.txt's lines whose written side has several words."""
+    found = []
+    for line in (FOLDER / "spelling.txt").read_text(encoding="utf-8").splitlines():
+        line = line.split("#", 1)[0].strip()
+        written, _, meant = line.partition(":")
+        if " " in written.strip() and meant.strip():
+            found.append((meant.strip(), tuple(_normalize(written).split())))
+    return found
 
 
 def _without_calques(text: str) -> str:
@@ -277,7 +289,7 @@ def lexicon() -> Lexicon:
             irregular[word] = base
     for line in (FOLDER / "spelling.txt").read_text(encoding="utf-8").splitlines():
         line = line.split("#", 1)[0].strip()
-        if ":" in line:
+        if ":" in line and " " not in line.split(":", 1)[0].strip():  # a phrase is read among its words
             british, american = (x.strip() for x in line.split(":", 1))
             spelling[british] = american
     function = frozenset((FOLDER / "function.txt").read_text(encoding="utf-8").split("\n", 1)[1].split())
