@@ -145,8 +145,9 @@ def _corrected(lex: "Lexicon", word: str) -> str | None:
         return None
     forms = _known_forms(lex)
     for kind in _slips(word):  # the likeliest slip first: a swap, a letter missed, one too many, one changed
-        found = {forms[w] for w in kind if w in forms and not word.startswith(w)}
-        # a letter more at the end makes another word ("speedo"), not a slip; one less is a slip ("brak")
+        found = {forms[w] for w in kind if w in forms and not word.startswith(w) and (len(word) > 4 or _english(w))}
+        # a letter more at the end makes another word ("speedo"), not a slip; one less is a slip ("brak"); a short
+        # word is read only as a word, never as an abbreviation ("hrs" is no "rhs")
         if len(found) == 1:
             return found.pop()
         if found:
