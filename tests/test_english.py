@@ -771,6 +771,7 @@ def test_a_vehicle_out_of_a_place_off_the_road_joins_it_ahead_on_its_side(prompt
 
 
 def test_a_calque_is_read_only_where_it_means_nothing_else_in_english():
+    assert "folded" in [t.word for t in tokenize("Wait until the stop arm has folded back in.")]
     assert agents("A double parked van is ahead of a double decker bus.") == agents(
         "A double-parked van is ahead of a double decker bus.")
     assert road("At the crossroad with feux tricolores, I turn left.").required_signals == ("traffic_light",)
