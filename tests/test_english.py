@@ -805,6 +805,8 @@ def test_a_slip_that_spells_another_word_is_read_as_meant_only_among_its_words()
     assert agents("a lorry came form the left at the junction") == [("car", "go_straight", "ego"),
                                                                   ("truck", "go_straight", "road_of_left_turn")]
     assert "form" in [t.word for t in tokenize("the cars form a queue ahead of me")]
+    assert agents("the van infront suddenly breaks hard") == [("car", "go_straight", "ego"), ("car", "stop", "front")]
+    assert ("truck", "stop", "front") in agents("a lorry ahead of us broke down")
 
 
 def test_a_word_of_english_is_never_read_as_a_slip_of_another():
