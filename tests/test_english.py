@@ -727,6 +727,9 @@ def test_calques_of_french_are_read_as_the_english_meant(prompt, expected):
     # "derrière un ballon": after it, into the road ahead
     ("A little girl runs on the roadway behind a ball.", [("car", "go_straight", "ego"),
                                                          ("pedestrian", "cross_the_road", "front")]),
+    # "le véhicule ego", "arriver en face": one ego, and an oncoming car
+    ("On the narrow road the vehicle ego must stop on the side because a van arrives in face of it.",
+     [("car", "go_straight", "front_left"), ("car", "stop", "ego")]),
     # "se rabattre": to pull back in ahead of the one passed
     ("A scooter doubles my car by the left and folds back brutally in front of it.",
      [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_right", "back_left")]),
