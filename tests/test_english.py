@@ -779,6 +779,9 @@ def test_a_calque_is_read_only_where_it_means_nothing_else_in_english():
         "A double-parked van is ahead of a double decker bus.")
     assert road("At the crossroad with feux tricolores, I turn left.").required_signals == ("traffic_light",)
     assert road("The ego marks the stop at the crossroad and then turns at right.").required_signals == ("stop",)
+    scene = lower("At the crossroad a van which comes from the right does not respect the stop.").scenario
+    assert scene.road.required_signals == ("stop",) and [a.behavior for a in scene.agents() if not a.is_ego] == [
+        "aggressive"]
 
 
 @pytest.mark.parametrize("prompt, expected", [
