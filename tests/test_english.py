@@ -815,6 +815,20 @@ def test_a_slip_that_spells_another_word_is_read_as_meant_only_among_its_words()
     assert ("truck", "stop", "front") in agents("a lorry ahead of us broke down")
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    # articles dropped: a bare noun said to be there is introduced, not the ego named again
+    ("ego car turning right and theres car coming from the other direction",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_right", "ego")]),
+    ("ego car going straight and there is car parked on the right",
+     [("car", "go_straight", "ego"), ("car", "stop", "front_right")]),
+    # and the first one, the second one, with no article
+    ("three cars incl ego in a line, ego is last one. first one stops. second one turns left",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "turn_left", "front")]),
+])
+def test_terse_typing_without_articles(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_a_word_of_english_is_never_read_as_a_slip_of_another():
     words = {t.word for t in tokenize("he was tuning the radio, touring the form of the speedo during a commute")}
     assert {"tuning", "touring", "form", "speedo", "during", "commute"} <= words

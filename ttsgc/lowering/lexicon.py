@@ -233,7 +233,11 @@ def _calques() -> tuple[tuple[re.Pattern, str, dict], ...]:
     """Phrases a speaker of another language writes word for word ("doubles the car", "in the opposite sense"),
     with the English meant, from calques.txt: the first word in any form, a regular ending carried over."""
     found = []
-    for meant, words in list(_entries("calques")) + _slipped_phrases():
+    written = list(_entries("calques")) + _slipped_phrases()
+    for meant, words in list(written):  # terse writing drops articles: "goes back on right lane"
+        if "the" in words[1:] and len(words) > 2:
+            written.append((meant, tuple(w for w in words if w != "the")))
+    for meant, words in dict.fromkeys(written):
         forms = {inflected(words[0], suffix): suffix for suffix in ("s", "ed", "ing")} | {words[0]: ""} | {
             form: "" for form, base in lexicon().irregular.items() if base == words[0]}  # "goes", "went": the base
         pattern = re.compile(r"\b(?P<first>" + "|".join(re.escape(f) for f in sorted(forms, key=len, reverse=True))

@@ -548,6 +548,7 @@ def _agent_kinds(text: str) -> set[str]:
 
 TEXTING = ((r"\b(does|did|do|could|would|should|was|were|is|are|has|have|had|must|need)nt\b", r"\1n't"),
            (r"\bcant\b", "can't"), (r"\bwont\b", "won't"), (r"\bim\b", "i'm"), (r"\bive\b", "i've"),
+           (r"\btheres\b", "there's"),  # no word of its own, whatever follows ("theres car coming")
            (r"\b(there|that|it|what|he|she)s\b(?=\s+(?:a|an|the|this|like|no|some|two|three|so|just|gonna|going|"
             r"literally|always|never|not|been|still|on|in|at)\b)", r"\1's"),
            (r"\byoure\b", "you're"), (r"\btheyre\b", "they're"), (r"\bu\b(?=\s+(?:know|see|were|are|can|could|"

@@ -2973,8 +2973,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 units[head + 1].meaning in e.features for e in r.entities):
         definite = True  # "Ego: follows HGV. Actors: HGV ahead in the ego lane": the HGV already placed there
     ego_now = next((e for e in r.entities if e.is_ego), None)
+    existential = first >= 2 and units[first - 2].word == "there" and units[first - 1].word in (
+        "is", "was", "be", "comes", "came")  # "there's car coming the other way": introduced, never the ego
     if bare and ego_now is not None and u.base in ("vehicle", "car") and (
-            ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and \
+            ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and not existential and \
             not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego
     if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
@@ -3726,20 +3728,24 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             units[i + 1].category == "actions" or units[i + 1].word in AUXILIARIES)  # "one is stopped on the right,
         # and the other comes from the left": the group's other member, as its subject
         one_after = i + 1 < len(units) and units[i + 1].word == "one" and units[i + 1].category in ("numbers", "word")
-        said_first = u.category == "positions" and [t.word for t in u.tokens] == ["the", "first", "one"] and \
-            i + 1 < len(units) and units[i + 1].category in ("actions", "behaviours")  # "the first one brakes"
-        if (said_first or (u.word in ORDINAL_MEMBERS or other) and i > 0 and units[i - 1].word == "the" and (
-                one_after or not (i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number"))
-        )) and not any(
-                np.first <= i <= np.index for np in phrases) and not (i > 1 and units[i - 2].category == "positions") \
-                and not _the_ego_is(units, i - 2):
+        acts = lambda k: k < len(units) and units[k].category in ("actions", "behaviours")  # noqa: E731
+        said_first = u.category == "positions" and [t.word for t in u.tokens] in (
+            ["the", "first", "one"], ["first", "one"]) and acts(i + 1)  # "the first one brakes"
+        article = i > 0 and units[i - 1].word == "the"
+        lead = i - article  # where the noun phrase starts; terse writing drops the article ("first one brakes")
+        if (said_first or (u.word in ORDINAL_MEMBERS or other) and article and (one_after or not (
+                i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number"))) or
+                u.word in ORDINAL_MEMBERS and one_after and acts(i + 2)) and not any(
+                np.first <= i <= np.index for np in phrases) and not (lead > 0 and units[lead - 1].category ==
+                                                                      "positions") \
+                and not _the_ego_is(units, lead - 1):
             # ("mine was the second one", "the ego is the last one": the ego's place among them, no member of its own)
             member = _member(r, recent)  # "two motorbikes, the first on the left and the second on the right"
             if member is not None:  # "three cars in a line; the first one brakes, the second one stops behind it"
                 r.mark(u)
                 if one_after:
                     r.mark(units[i + 1])
-                phrases.append(NounPhrase(member, i + one_after, i - (not said_first)))
+                phrases.append(NounPhrase(member, i + one_after, i if said_first else lead))
             continue
         value = _word_number(u.tokens[0]) if u.category in ("numbers", "number") and len(u.tokens) == 1 else None
         if value is not None and 2 <= value <= MAX_AGENTS_PER_MENTION and not any(
@@ -3766,8 +3772,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i, introduced=True))
                 continue
-            if _the_ego_is(units, i - 3):
-                continue  # "mine was the second one": the ego's place among them, no member of its own
+            if _the_ego_is(units, i - 3) or _the_ego_is(units, i - 2):
+                continue  # "mine was the second one", "ego is last one": the ego's place among them, no member
             placed_one = _the_one_placed(r, units, i)  # "the one in front slammed on his brakes": that member
             extra = _one_more_of_a_placed_group(r, units, i, phrases) if placed_one is None else None
             member = placed_one or (None if extra else _member(r, recent))  # "two cars, one in front and one behind"
