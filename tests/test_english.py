@@ -798,6 +798,7 @@ def test_words_run_together_and_short_words_missing_a_letter_are_read_apart_and_
 def test_a_run_together_sign_is_read_and_english_compounds_stay_whole():
     assert road("theres a stopsign and a ped crossing, im going strait").required_signals == ("stop",)
     assert [t.word for t in tokenize("somewhere nowhere sideways")] == ["somewhere", "nowhere", "sideways"]
+    assert "targetvehicle" in [t.word for t in tokenize("the targetvehicle changes lane")]  # an identifier
 
 
 def test_a_stage_opens_when_the_traffic_light_named_in_full_turns_green_without_a_comma():

@@ -166,7 +166,7 @@ def _corrected(lex: "Lexicon", word: str) -> str | None:
 @lru_cache(maxsize=4096)
 def _run_together(lex: "Lexicon", word: str) -> str | None:
     """Two words typed without the space between them ("stopsign", "turnsleft", "straightahead"), read apart when
-    they begin a phrase of the lexicon; a word of English stays whole."""
+    they begin a phrase of the lexicon other than an agent's name; a word of English stays whole."""
     if len(word) < 5 or not word.isalpha() or _english(word):
         return None
     for k in range(2, len(word) - 1):
@@ -179,7 +179,9 @@ def _run_together(lex: "Lexicon", word: str) -> str | None:
 
 @lru_cache(maxsize=1)
 def _phrase_openings(lex: "Lexicon") -> frozenset:
-    return frozenset(phrase[:2] for phrase in lex.phrases if len(phrase) > 1)
+    """How phrases open, save agents' names: "targetvehicle", "leadvehicle" are a specification's identifiers,
+    whole names, not two words run together."""
+    return frozenset(phrase[:2] for phrase, entry in lex.phrases.items() if len(phrase) > 1 and entry[0] != "agents")
 
 
 def _slips(word: str) -> tuple[set[str], ...]:
