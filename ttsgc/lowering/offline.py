@@ -5709,7 +5709,6 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         _protagonist_vehicle(r, driver_named=bool(ego_words))
     _witness_on_foot(r)
     _screens_on_the_crossers_side(r)
-    _out_of_a_vehicle_on_a_side(r)
     _numbered_lane_sides(r)
     _listed_items_share(r)
     _included_members_share(r)
@@ -5945,20 +5944,6 @@ def _screens_on_the_crossers_side(r: _Reader) -> None:
             crosser.features.add(f"from_{own}")  # "out from between two lorries on my left": from the left
         if not any(a[4] == "stop" for a in e.actions):
             e.actions.append((e.stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # screens stand
-
-
-def _out_of_a_vehicle_on_a_side(r: _Reader) -> None:
-    """A person who gets out of a vehicle standing on a side ('a stalled pickup on the right shoulder ... the driver
-    is out and walking across in front of the ego') starts at that side, whatever place the walk is said to pass."""
-    for e in r.entities:
-        vehicle = e.relative_to
-        if e.type != "pedestrian" or vehicle is None or vehicle.type in V.VULNERABLE_TYPES or \
-                _side_of(e.features) or "crosswalk" in e.features:
-            continue
-        side = _side_of(vehicle.features) or (
-            ("left" if _KEEPS_LEFT.get() else "right") if vehicle.road_type == "shoulder" else None)
-        if side is not None:
-            e.features.add(f"from_{side}")
 
 
 def _boxed_in_by_those_listed(r: _Reader, clause: Clause, before: int, ego_blocked: list[Entity],
@@ -6303,7 +6288,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             and e.type not in V.VULNERABLE_TYPES  # "a parked bus on the right": at the kerb, no lane of its own
         if is_oncoming or parked_beside:
             oncoming.add(e.key)
-    for e in others:  # "in front of a truck": at the truck's place, unless the text placed it itself
+    for e in others:  # "in front of a truck", "the driver got out of the van on the left": at the truck's
+        # (the van's) place, unless the text placed it itself
         t = e.relative_to
         if t is None or t.key not in positions:
             continue
