@@ -5710,8 +5710,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _witness_on_foot(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
-    _listed_items_share(r)
-    _included_members_share(r)
+    _included_and_listed_items_share(r)
     _members_keep_the_group_place(r)
     _place_in_queue(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
@@ -5984,27 +5983,20 @@ def _members_keep_the_group_place(r: _Reader) -> None:
         e.features |= group.features & {"ahead", "behind"}
 
 
-def _included_members_share(r: _Reader) -> None:
-    """'three cars, including a taxi, wait at the red light ahead': the taxi is where the three are and does what
-    they do, unless the text places it or has it act on its own."""
+def _included_and_listed_items_share(r: _Reader) -> None:
+    """An agent named only with another, said to do nothing itself, does what that one does and how: 'three cars,
+    including a taxi, wait at the red light ahead' (the taxi is also where the three are, unless placed itself),
+    'one cyclist waits on the left and one on the right' (both wait). One that acts on its own keeps its act and
+    its manner ('... and one on the right turns right')."""
     for e in r.entities:
-        group = e.named_of
-        if group is None:
+        source = e.named_of or e.listed_after
+        if source is None:
             continue
-        if not e.features:
-            e.features |= group.features
+        if e.named_of is not None and not e.features:
+            e.features |= source.features
         if not e.actions:
-            e.actions = list(group.actions)
-        e.behavior = e.behavior or group.behavior
-
-
-def _listed_items_share(r: _Reader) -> None:
-    """A 'one ...' list item said to do nothing itself does what the item before it does: in 'one cyclist waits
-    on the left and one on the right' both wait."""
-    for e in r.entities:
-        if e.listed_after is not None and not e.actions:
-            e.actions = list(e.listed_after.actions)
-            e.behavior = e.behavior or e.listed_after.behavior
+            e.actions = list(source.actions)
+            e.behavior = e.behavior or source.behavior
 
 
 def _numbered_lane_sides(r: _Reader) -> None:
