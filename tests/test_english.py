@@ -5851,3 +5851,21 @@ def test_with_no_ego_named_the_vehicle_others_are_placed_by_is_the_ego():
     assert agents("A little boy runs out into the road in front of the car.") == [
         ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
     assert agents("A cyclist rides alongside the bus as it turns left.")[0] == ("bus", "turn_left", "ego")
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was driving north along the east kerb when a cyclist heading west crossed in front of me.",
+    "The ego is northbound, its right wheels by the east curb. A van parked against the east curb ahead; a boy runs "
+    "out from behind it, east to west across the ego's path.",
+])
+def test_an_ego_given_two_compass_headings_reads_the_same_in_every_run(prompt):
+    import os
+    import subprocess
+    import sys
+    root = Path(__file__).resolve().parents[1]
+    code = ("import sys; from ttsgc.lowering.offline import lower; from ttsgc.language import format_scenario; "
+            "print(format_scenario(lower(sys.argv[1]).scenario))")
+    readings = {subprocess.run([sys.executable, "-c", code, prompt], capture_output=True, text=True, check=True,
+                               cwd=root, env={**os.environ, "PYTHONPATH": str(root), "PYTHONHASHSEED": str(seed)}
+                               ).stdout for seed in (0, 1, 2, 5)}
+    assert len(readings) == 1, readings

@@ -6216,9 +6216,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                     "bare_left", "bare_right", "road_left", "road_right", "road_straight", "cross_road"}:
                 e.features -= {"side_left", "side_right"} | {f for f in e.features if f.startswith("lane_")}
                 e.features.add(f"side_{target_side}")
-    heading = next((f for f in (ego_entity.features if ego_entity else ()) if f.startswith("compass_")), None)
+    heading = _heading(ego_entity) if ego_entity else None
     for e in others:  # "the AV was travelling north ... a van heading south": compass headings against the ego's
-        own = next((f for f in e.features if f.startswith("compass_")), None)
+        own = _heading(e)
         if heading and own and own != heading and e.type in V.VULNERABLE_TYPES and COMPASS_OPPOSITE[heading] != own \
                 and not _side(e):  # "heading east ... ran across from the north side": from the ego's left
             e.features.add("side_left" if COMPASS_LEFT[heading] == own else "side_right")
@@ -6355,6 +6355,14 @@ def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
     if action == "cut_in" and direction is None and junction:
         return "move"  # "pull out at the stop sign to go straight": into the junction, no lane change
     return action
+
+
+def _heading(e: Entity) -> str | None:
+    """The one compass heading an agent is given; none when given several ('northbound ... the east curb ... east
+    to west'): which is its own is not known, and taking any one of a set would read the text differently from
+    one run to the next."""
+    headings = [f for f in e.features if f.startswith("compass_")]
+    return headings[0] if len(headings) == 1 else None
 
 
 def _placed(e: Entity) -> bool:
