@@ -5869,3 +5869,15 @@ def test_an_ego_given_two_compass_headings_reads_the_same_in_every_run(prompt):
                                cwd=root, env={**os.environ, "PYTHONPATH": str(root), "PYTHONHASHSEED": str(seed)}
                                ).stdout for seed in (0, 1, 2, 5)}
     assert len(readings) == 1, readings
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A 9-year-old child runs into the road in front of the ego.", 1),
+    ("An 8 year old boy crosses in front of the ego car.", 1),
+    ("The ego passes a seventy-year-old man walking on the sidewalk.", 1),
+    ("Two 12-year-olds cross ahead of the ego.", 2),
+    ("A 16 yo on a bike rides out from a driveway on the right.", 1),
+])
+def test_an_age_is_no_count(prompt, expected):
+    """'a 9-year-old child' is one child, not nine."""
+    assert sum(1 for a in lower(prompt).scenario.agents() if not a.is_ego) == expected

@@ -107,6 +107,7 @@ def read_narration(prompt: str) -> Narration:
     text = _expectations(text, notes)
     text = _topic(text, notes)
     text = _street_corners(text)
+    text = _ages(text)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
@@ -597,6 +598,19 @@ def _names_agents(text: str) -> bool:
 STREET = r"(?:[A-Z][a-z]+|\d{1,3}(?:st|nd|rd|th))(?:\s+(?:Street|St\.?|Avenue|Ave\.?|Road|Rd\.?|Boulevard|Blvd\.?))?"
 CORNER = re.compile(rf"\b((?i:at|on|near|by))\s+({STREET})\s+(?:and|&)\s+({STREET})\b(?!\s+(?:intersection|junction|"
                     r"crossroads?|corner))")
+
+
+AGE_NUMBER = (r"(?:\d{1,3}|(?:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)(?:[\s-]+(?:one|two|three|four|"
+              r"five|six|seven|eight|nine))?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
+              r"thirteen|fourteen|fifteen|sixteen|seventeen|eighteen|nineteen)")
+AGE = re.compile(rf"\b{AGE_NUMBER}(?:[\s-]+(?:years?|yrs?)[\s-]+old(?P<noun>s)?|[\s-]*(?:yo|y/o))\b", re.I)
+
+
+def _ages(text: str) -> str:
+    """'a 9-year-old child', 'an 8 year old boy', 'two 12-year-olds': an age, no count ('young'; the plural
+    noun 'children')."""
+    text = AGE.sub(lambda m: "children" if m.group("noun") else "young", text)
+    return re.sub(r"\ban young\b", "a young", text, flags=re.I)
 
 
 def _street_corners(text: str) -> str:
