@@ -108,6 +108,7 @@ def read_narration(prompt: str) -> Narration:
     text = _topic(text, notes)
     text = _street_corners(text)
     text = _ages(text)
+    text = _designated_ego(text, notes)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
@@ -631,6 +632,38 @@ def _vehicle_numbers(text: str) -> str:
                   r"(?:no\.?\s*|#)?\d{1,4}[a-z]?\b" + NOT_A_QUANTITY, lambda m: m.group(1), text,
                   flags=re.I)  # "at Junction 9", "Route 12"
     return re.sub(r"\(\s*(?:unit|no\.?|fleet no\.?)\s*\d+\s*,\s*", "(", text, flags=re.I)
+
+
+DESIGNATION = r"(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?(\d{1,2})"  # a crash report's names of its vehicles
+EGO_ROLE = r"(?:the\s+)?(?:ego|subject|sv|host)(?:\s+(?:vehicle|car|unit))?"
+DESIGNATED_EGO = (
+    re.compile(rf"\b{DESIGNATION}\s*\(\s*{EGO_ROLE}\s*(?:[,;:]\s*(?P<what>[^()]*?))?\s*\)", re.I),  # "V1 (ego)"
+    re.compile(rf"\b{EGO_ROLE}\s*\(\s*{DESIGNATION}\s*\)", re.I),  # "the subject vehicle (V1)"
+    re.compile(rf"\b{DESIGNATION}\s+(?:is|=)\s+{EGO_ROLE}\b", re.I))  # "V1 is the ego vehicle"
+
+
+def _designated_ego(text: str, notes: list[str]) -> str:
+    """'V1 (ego), a 2016 Honda Accord, is northbound ... V1 initiates its turn': a reconstruction names its vehicles
+    V1, V2 (or Unit 1, Unit 2) and says which one the ego is; every mention of that name is the ego, and what the
+    bracket says besides ('ego, 2019 Chevrolet Tahoe') describes it."""
+    for pattern in DESIGNATED_EGO:
+        m = pattern.search(text)
+        if m is not None:
+            break
+    else:
+        return text
+    number = next(g for g in m.groups() if g is not None and g.isdigit())
+    what = (m.groupdict().get("what") or "").strip()
+    if what and not re.match(r"(?i)(?:an?|the)\b", what):
+        what = "a " + what  # "(ego, 2019 Chevrolet Tahoe)": one
+    said = "the ego" + (f", {what}," if what else "")
+    text = text[:m.start()] + said + text[m.end():]
+    text = re.sub(rf"\b(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?{number}\b(?!\s*(?:mph|km|m\b|ft|feet|lanes?))",
+                  "the ego", text, flags=re.I)
+    text = re.sub(r"((?:^|[.!?]\s+|\n\s*))the ego\b", r"\1The ego", text)
+    text = re.sub(r"\bthe ego,\s*,", "the ego,", text)
+    notes.append(f"read V{number} as the ego (said so)")
+    return text
 
 
 def _declared_ego(text: str, notes: list[str]) -> str:

@@ -2741,6 +2741,11 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             in_determiner = True
         elif u.category == "number" and _model_year(u.word) and k + 1 == head - len(modifiers):
             modifiers.append(u)  # "a 2017 Camry": the year it was built, not how many
+        elif u.category == "number" and count is None and _named_after_a(units, k, lo):
+            modifiers.append(u)  # "a Ram 3500 pickup", "a 9 year old child": a model's or an age's number
+        elif u.category == "agents" and u.meaning not in ("ego", "none") and k + 1 == head - len(modifiers) and \
+                not words and count is None:
+            modifiers.append(u)  # "a Chevrolet Tahoe", "a Ford F-150 pickup": the maker's name before the model
         elif u.category == "number" and (words & {"a", "an"} or k > 0 and units[k - 1].word in ROAD_NUMBER_PREFIXES):
             break  # "on SR-99 a bus stops": a road's number, and no count stands before 'a'
         elif u.category == "number":
@@ -2850,6 +2855,25 @@ def _of_a_group(units: list[Unit], first: int) -> bool:
     """'a whole crowd of people': the people are the crowd, counted as one; 'a bus full of people' are not."""
     k = first - 1 if units[first].word == "of" else first - 2
     return k >= 0 and (units[k].category in ("agents", "numbers") or units[k].word in GROUP_NOUNS)
+
+
+def _named_after_a(units: list[Unit], k: int, lo: int) -> bool:
+    """A number in a noun phrase that 'a' opens ('a Ram 3500 pickup', 'a 9-year-old child', 'an F 150') counts
+    nothing: one is said, the number is part of a model's name or an age."""
+    if not units[k].word.isdigit():
+        return False
+    j = k - 1
+    while j >= lo and units[j].category in ("word", "agents") and units[j].word not in ("a", "an") and \
+            units[j].word not in lexicon().function_words and units[j].word not in DETERMINERS:
+        j -= 1
+    return j >= lo and units[j].category == "word" and units[j].word in ("a", "an")
+
+
+def _model_named_before(units: list[Unit], i: int) -> bool:
+    """'a Mazda 3 hatchback': the maker and the model's number name the hatchback, no vehicle of their own."""
+    return 0 < i and i + 2 < len(units) and units[i - 1].word in ("a", "an") and units[i].meaning not in (
+        "ego", "none") and units[i + 1].category == "number" and units[i + 1].word.isdigit() and \
+        units[i + 2].category == "agents" and units[i + 2].meaning not in ("ego", "none")
 
 
 def _model_year(word: str) -> bool:
@@ -3679,7 +3703,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     r.clause_mentions = []
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
         u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
-        and units[i + 1].meaning not in ("ego", "none"))]
+        and units[i + 1].meaning not in ("ego", "none")) and not _model_named_before(units, i)]
     lo = 0
     for i in heads:
         np = _resolve(r, units, i, lo, stage, recent)
