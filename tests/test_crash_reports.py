@@ -52,3 +52,58 @@ def test_a_make_a_model_and_a_model_number_name_one_vehicle(prompt, expected):
 def test_a_counted_number_still_counts():
     assert len(agents("3 cars wait at the light.")) == 4
     assert len(agents("A group of 3 cyclists waits.")) == 4
+
+
+# -- compass headings against the ego's ----------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego is eastbound on Main St. A box truck is northbound on 3rd Ave and drives through the intersection.",
+     ("truck", "go_straight", "road_of_right_turn")),  # north is an eastbound ego's left: the truck heads there
+    ("The ego travels south on Route 4. A sedan heading east runs the stop sign at the junction.",
+     ("car", "go_straight", "road_of_right_turn")),
+    ("The ego, westbound, reaches the crossroads. A bus coming from the north goes straight across.",
+     ("bus", "go_straight", "road_of_right_turn")),
+    ("The ego drives northbound through the junction and turns right onto eastbound Elm. A van is southbound on the "
+     "same street.", ("car", "go_straight", "road_of_straight")),
+])
+def test_compass_headings_place_crossing_and_oncoming_traffic(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Unit 1 (ego) is southbound on Lake Rd. A pickup is parked against the west curb ahead. A boy runs out from "
+     "behind it, west to east.", [("car", "go_straight", "ego"), ("car", "stop", "front_right"),
+                                  ("pedestrian", "cross_the_road", "front_right")]),
+    ("The ego heads east. A jogger crosses from the north side of the street.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
+    ("The ego is westbound. A woman is walking southbound across the road ahead.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
+])
+def test_compass_sides_and_origins_place_what_stands_and_who_crosses(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego is northbound on Park Ave at 30 mph.", [("car", "go_straight", "ego")]),
+    ("A cyclist rides along Stop Rd behind the ego.", [("car", "go_straight", "ego"),
+                                                       ("cyclist", "go_straight", "back")]),
+    ("The ego drives west on Park Blvd and a van is parked ahead.", [("car", "go_straight", "ego"),
+                                                                     ("car", "stop", "front")]),
+    ("The ego waits at the light on Turner Road; a bus is stopped on Stop Street ahead.",
+     [("bus", "stop", "front"), ("car", "stop", "ego")]),
+])
+def test_a_verbs_word_naming_a_street_names_nothing_of_the_scene(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+    assert "stop" not in lower(prompt).scenario.road.required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("V1 (ego) keeps its lane. V2, a truck in the right lane ahead, merges left; end the run before V2's left rear trailer "
+     "corner touches V1.",
+     [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "front_right")]),
+    ("The car behind me clipped my right rear bumper.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("A pickup behind the ego taps the ego's left rear bumper.", [("car", "go_straight", "back"),
+                                                                  ("car", "go_straight", "ego")]),
+])
+def test_a_side_that_names_a_vehicles_part_places_no_one(prompt, expected):
+    assert agents(prompt) == sorted(expected)

@@ -108,6 +108,7 @@ def read_narration(prompt: str) -> Narration:
     text = _topic(text, notes)
     text = _street_corners(text)
     text = _ages(text)
+    text = _street_names(text)
     text = _designated_ego(text, notes)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
@@ -618,6 +619,21 @@ def _street_corners(text: str) -> str:
     """'at Ninth and Walnut', 'the light at Grand and Fourth': two streets named together are their
     intersection."""
     return CORNER.sub(lambda m: f"{m.group(1)} the {m.group(2)} and {m.group(3)} intersection", text)
+
+
+STREET_ABBREVIATION = re.compile(r"\b([A-Za-z]+) (?=(?:St|Ave|Rd|Blvd|Pkwy|Hwy)\b)", re.I)
+STREET_NAMED = re.compile(r"(?<=[a-z,] )([A-Z][a-z]+) (?=(?:Street|Avenue|Road|Boulevard|Parkway|Highway)\b)")
+
+
+def _street_names(text: str) -> str:
+    """'on Park Ave', 'onto Stop Rd', 'along Cross Street': a word the reader knows as a verb, a place or a sign,
+    naming a street, names nothing of the scene (no parked car, no stop sign); makes ('Ford Road') and words the
+    reader does not know stay, they are read as names already."""
+    def name(m: re.Match) -> str:
+        entry = lexicon().phrases.get((m.group(1).lower(),))
+        return "" if entry is not None and entry[0] in ("actions", "positions", "road", "behaviours", "weather") \
+            else m.group(0)
+    return STREET_NAMED.sub(name, STREET_ABBREVIATION.sub(name, text))
 
 
 def _vehicle_numbers(text: str) -> str:

@@ -324,7 +324,8 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
                 m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front", "right",
                                                                "left", "rear", "back") and \
                 tokens[m.end].sentence == tokens[m.end - 1].sentence and (tokens[m.end - 1].possessive or
-                                                                           tokens[m.end].word in ("lane", "path")):
+                                                                           tokens[m.end].word in ("lane", "path")) \
+                and _part_after(tokens, m.end + 1) is None:  # "the ego's right rear door": a part of it
             span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
             meaning = {"front": "ahead", "right": "side_right", "left": "side_left", "rear": "behind",
                        "back": "behind"}.get(span[-1].word, "ego_lane")  # "on the ego's right"
@@ -718,6 +719,29 @@ def _body_part(tokens: list[Token], m: Match) -> bool:
         before == "the" and j > 1 and words[j - 2] == "over" or before == "over"
 
 
+VEHICLE_PARTS = {"corner", "bumper", "fender", "wing", "door", "wheel", "tyre", "tire", "panel", "quarter", "mirror",
+                 "headlight", "headlamp", "taillight", "lamp", "light", "lights", "indicator", "bodywork", "trailer"}
+
+
+def _a_vehicles_part(tokens: list[Token], m: Match) -> bool:
+    """'V2's left rear trailer corner', 'my right front fender', 'the left rear tyre': the side names a part of a
+    vehicle (where it was struck), not where anyone is."""
+    if m.start == 0 or m.end >= len(tokens) or not all(t.word in set(SIDES) | TAIL_ENDS | {"front", "side", "hand"}
+                                                       for t in tokens[m.start:m.end]):
+        return False
+    before = tokens[m.start - 1]
+    owned = before.possessive or before.word in OWNERS | POSSESSIVES or before.word == "s"  # "V2's"
+    part = _part_after(tokens, m.end)
+    return part is not None and (owned or before.word == "the" and part == m.end) and \
+        all(t.sentence == before.sentence for t in tokens[m.start - 1:part + 1])
+
+
+def _part_after(tokens: list[Token], k: int) -> int | None:
+    """Where a vehicle's part is named in the next two words ('rear trailer corner', 'front fender')."""
+    return next((j for j in range(k, min(k + 2, len(tokens))) if tokens[j].word in VEHICLE_PARTS and
+                 not tokens[j].plural), None)
+
+
 PACE_PLACES = {"behind", "ahead", "alongside", "beside", "level", "next", "abreast"}
 TAIL_ENDS = {"bumper", "tail", "back", "rear", "boot", "trunk", "tailgate"}
 
@@ -904,6 +928,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "actions" and m.start > 1 and tokens[m.start - 1].word in ("parallel", "bay", "reverse") and \
             tokens[m.start - 2].word in OWNERS | POSSESSIVES | {"the", "a"}:
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "your parallel park was fine": a manoeuvre named
+    if m.category == "positions" and _a_vehicles_part(tokens, m):
+        return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "V2's left rear trailer corner": no place
     if m.category == "positions" and _body_part(tokens, m):
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "a look over your right shoulder": no verge
     if m.category == "positions" and len(span) == 1 and span[0].word == "right" and _opens_talk(tokens, m):
@@ -3403,6 +3429,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
                 e.features.add("on_sidewalk")
+        elif u.meaning.startswith("compass_"):
+            _add_compass(r, e, u)
         else:
             e.features.add(u.meaning)
     elif u.category == "actions" and u.meaning == "same":
@@ -3572,6 +3600,67 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         # ("had stopped first and was proceeding straight across": what it does now outranks what it had done)
     elif u.category == "word" and u.word not in lexicon().function_words:
         pass
+
+
+COMPASS_SIDES = {"side", "curb", "kerb", "sidewalk", "pavement", "shoulder", "edge", "verge", "footway", "footpath",
+                 "corner", "curbside", "kerbside", "gutter", "crosswalk", "crossing", "leg", "approach", "sidewalks"}
+COMPASS_WORDS = {"north", "south", "east", "west"}
+DESTINATION_WORDS = {"onto", "into", "toward", "towards"}
+
+
+def _add_compass(r: _Reader, e: Entity, u: Unit) -> None:
+    """A compass word is where one heads ('northbound', 'heading west'), where it comes from ('from the north',
+    'east to west') or where it is ('on the east curb', 'the north side'). The first heading said is the heading:
+    'northbound ... turns left onto westbound 5th Ave' heads north, westbound is the road it turns onto."""
+    point = u.meaning[len("compass_"):]
+    at = lambda k: r.tokens[k].word if 0 <= k < len(r.tokens) else ""  # noqa: E731
+    bare = len(u.tokens) == 1 and u.tokens[0].word in COMPASS_WORDS
+    if bare and at(u.start - 1) == "to" and at(u.start - 2) in COMPASS_WORDS:
+        return  # "east to west": where it goes, said after where it comes from
+    if bare and (at(u.start - 1) == "from" or at(u.start - 1) == "the" and at(u.start - 2) == "from" or
+                 at(u.end) == "to" and at(u.end + 1) in COMPASS_WORDS):
+        if not any(f.startswith("compassfrom_") for f in e.features):
+            e.features.add("compassfrom_" + point)
+        return
+    if bare and at(u.end) in COMPASS_SIDES:
+        if not any(f.startswith("compassat_") for f in e.features):
+            e.features.add("compassat_" + point)
+        return
+    if at(u.start - 1) in DESTINATION_WORDS or any(f.startswith("compass_") for f in e.features):
+        return
+    e.features.add(u.meaning)
+
+
+def _compass_places(others: list[Entity], ego: Entity | None) -> None:
+    """Compass words against the ego's heading: one heading the other way is oncoming, one heading to the ego's
+    left crosses from its right; one from the north or on the north side, where the ego heads east, is on its
+    left."""
+    heading = _heading(ego) if ego else None
+    if heading is None:
+        return
+    left, ahead = COMPASS_LEFT[heading][8:], heading[8:]
+    right, back = COMPASS_OPPOSITE["compass_" + left][8:], COMPASS_OPPOSITE[heading][8:]
+    for e in others:
+        own = (_heading(e) or "")[8:] or None
+        came = next((f[12:] for f in e.features if f.startswith("compassfrom_")), None)
+        at = next((f[10:] for f in e.features if f.startswith("compassat_")), None)
+        person = e.type in V.VULNERABLE_TYPES
+        if person and came is None and own in (left, right) and at is None:
+            came = right if own == left else left  # "walking westbound" across a northbound ego: from its right
+        side = {left: "left", right: "right"}.get(came or at or "")
+        if side and not _side(e) and (person or at is not None and came is None):
+            e.features.add(f"side_{side}")  # "parked against the east curb", "runs east to west"
+        elif person:
+            continue
+        elif came is not None and came in (left, right):
+            e.features.add(f"road_{side}")  # "a van coming from the east"
+        elif came == ahead:
+            e.features.add("road_straight")
+        elif own == back:
+            e.features.add("road_straight")  # "V3 is northbound in the opposing lane" of a southbound ego
+        elif own in (left, right) and not e.features & {"road_left", "road_right"}:
+            e.features.add("road_right" if own == left else "road_left")  # westbound across a northbound ego:
+            # it comes from the ego's right
 
 
 def _forced_reaction(units: list[Unit], k: int) -> bool:
@@ -4112,7 +4201,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         for e in targets:
             if e.is_ego and u.category == "positions":
                 if u.meaning.startswith("compass_"):
-                    e.features.add(u.meaning)
+                    _add_compass(r, e, u)
                 if u.meaning == "road_straight" and {t.word for t in u.tokens} & JUNCTION_NOUNS:
                     e.features.add("in_junction")  # "my car slid out across the junction": the ego is at one
                 if u.meaning == "first_in_line":
@@ -6240,14 +6329,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                     "bare_left", "bare_right", "road_left", "road_right", "road_straight", "cross_road"}:
                 e.features -= {"side_left", "side_right"} | {f for f in e.features if f.startswith("lane_")}
                 e.features.add(f"side_{target_side}")
-    heading = _heading(ego_entity) if ego_entity else None
-    for e in others:  # "the AV was travelling north ... a van heading south": compass headings against the ego's
-        own = _heading(e)
-        if heading and own and own != heading and e.type in V.VULNERABLE_TYPES and COMPASS_OPPOSITE[heading] != own \
-                and not _side(e):  # "heading east ... ran across from the north side": from the ego's left
-            e.features.add("side_left" if COMPASS_LEFT[heading] == own else "side_right")
-        elif heading and own and own != heading:
-            e.features.add("road_straight" if COMPASS_OPPOSITE[heading] == own else "cross_road")
+    _compass_places(others, ego_entity)  # "the AV was travelling north ... a van heading south": oncoming
     if ego_entity is not None and "first_in_line" in ego_entity.features:
         for e in others:  # "three cars including the ego wait, the ego is first": the others queue behind it
             group = e.parent or e
