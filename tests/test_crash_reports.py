@@ -107,3 +107,23 @@ def test_a_verbs_word_naming_a_street_names_nothing_of_the_scene(prompt, expecte
 ])
 def test_a_side_that_names_a_vehicles_part_places_no_one(prompt, expected):
     assert agents(prompt) == sorted(expected)
+
+
+# -- the road a report describes ----------------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, lanes", [
+    ("Divided highway, two northbound lanes, posted 55 mph. The ego is in the left lane.", 2),
+    ("Four westbound lanes at the approach; the ego is in lane 3.", 4),
+    ("An arterial with three eastbound lanes and a bus stopped in the curb lane.", 3),
+])
+def test_lanes_counted_by_their_heading_are_the_lanes_of_one_direction(prompt, lanes):
+    assert lower(prompt).scenario.road.lanes == lanes
+
+
+@pytest.mark.parametrize("prompt", [
+    "Two-way stop: CR 12 approaches are stop-sign controlled and the ego is on the through road.",
+    "SH 6 is signed as the priority road, FM 1960 approaches are yield controlled.",
+])
+def test_a_county_or_state_roads_number_limits_no_speed(prompt):
+    objects = lower(prompt).scenario.road.required_objects
+    assert not [o for o in objects if o in ("speed_12", "speed_6", "speed_1960")]

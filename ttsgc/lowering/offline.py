@@ -1335,7 +1335,7 @@ LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "a
 MILES_WORDS = {"mph", "miles", "mile", "feet", "ft", "yards", "yd", "yds", "interstate", "freeway", "northbound",
                "southbound", "eastbound", "westbound"}  # a text that measures in miles, or a US highway's words
 BRITISH_ROAD_WORDS = {"lorry", "zebra", "pushchair", "pelican", "puffin", "toucan"}  # signed in miles an hour
-ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "route", "rte", "hwy", "highway", "interstate", "exit", "m"}
+ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "cr", "sh", "fm", "route", "rte", "hwy", "highway", "interstate", "exit", "m"}
 
 
 SPEED_UNITS = (["mph"], ["km", "h"], ["kmh"], ["kph"], ["miles", "per", "hour"])
@@ -1475,6 +1475,7 @@ def _a_bare_limit(tokens: list[Token], first: int, i: int) -> bool:
 PER_DIRECTION = {"per", "each", "every", "in", "a", "one"}
 
 
+BOUND_WORDS = {"northbound", "southbound", "eastbound", "westbound", "inbound", "outbound"}
 COUNTED_LANE_KINDS = {"through", "travel", "traffic", "running", "driving", "general", "approach", "thru", "moving"}
 
 
@@ -1487,7 +1488,8 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         if t.word not in ("lane", "lanes") or i == 0:
             continue
         prev = tokens[i - 1]
-        if prev.word in COUNTED_LANE_KINDS and i >= 2 and _word_number(tokens[i - 2]) is not None:
+        one_way = prev.word in BOUND_WORDS  # "three southbound lanes": the lanes of one direction
+        if prev.word in COUNTED_LANE_KINDS | BOUND_WORDS and i >= 2 and _word_number(tokens[i - 2]) is not None:
             prev = tokens[i - 2]  # "two through lanes", "three travel lanes": a traffic engineer's kind of lane
         numbered = _numbered_lane(tokens, i) or _named_lane_of(tokens, i)
         if numbered is not None:  # "in lane two of three": lanes are numbered on one carriageway
@@ -1505,8 +1507,8 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
         if not (t.word == "lanes" or t.word == "lane" and nxt not in ("change", "changes", "changing")):
             continue
         after = {x.word for x in tokens[i + 1: i + 4]}
-        per_direction = bool(after & {"direction", "way", "each", "per"}) and bool(after & PER_DIRECTION | after
-                                                                                  & {"direction", "way"})
+        per_direction = one_way or bool(after & {"direction", "way", "each", "per"}) and bool(
+            after & PER_DIRECTION | after & {"direction", "way"})
         r.used.update((i - 1, i))
         if n >= TOO_LARGE:
             r.notes.append("repaired: a lane count too large to read; used lanes >= 6")
