@@ -127,3 +127,27 @@ def test_lanes_counted_by_their_heading_are_the_lanes_of_one_direction(prompt, l
 def test_a_county_or_state_roads_number_limits_no_speed(prompt):
     objects = lower(prompt).scenario.road.required_objects
     assert not [o for o in objects if o in ("speed_12", "speed_6", "speed_1960")]
+
+
+# -- a heading that names the case ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Cyclist conflict, urban junction. The ego turns right while a courier on a bike goes straight on its right.",
+     [("car", "turn_right", "ego"), ("cyclist", "go_straight", "right")]),
+    ("Rear-end scenario, truck braking. The ego follows a delivery truck that brakes hard.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("Pre-crash reconstruction, emergency vehicle approach. V2, a fire engine, comes up behind V1 (ego).",
+     [("car", "go_straight", "ego"), ("firetruck", "go_straight", "back")]),
+    ("Bus(es) Stopped Ahead. The ego waits behind a school bus.", [("bus", "go_straight", "front"),
+                                                                  ("car", "stop", "ego")]),
+])
+def test_a_heading_that_names_the_case_by_its_agent_adds_no_agent(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_agents_named_after_a_heading_keep_their_own_places():
+    # the heading's agent gives way to the police car; the pedestrian after it is another agent with its own place
+    found = agents("Case summary, emergency vehicle passing. V1 (ego) waits in the right lane. V2, a police car, "
+                   "approaches from behind V1 in the left lane. Ped 1 stands on the sidewalk to V1's right.")
+    assert found == sorted([("car", "stop", "ego"), ("police", "go_straight", "back_left"),
+                            ("pedestrian", "on_the_sidewalk", "right")])

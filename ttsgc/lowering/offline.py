@@ -169,6 +169,7 @@ class _Reader:
     used: set = field(default_factory=set)  # token indexes some rule placed
     entities: list[Entity] = field(default_factory=list)
     order: int = 0
+    keys: int = 0  # entity keys handed out
     clause_mentions: list = field(default_factory=list)  # entities named so far in the clause being read
     after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
@@ -182,6 +183,12 @@ class _Reader:
     def tick(self) -> int:
         self.order += 1
         return self.order
+
+    def new_key(self) -> int:
+        """A key no other entity has had: entities are removed as they are found to be one (appositions,
+        headings), so the count of those left could name two."""
+        self.keys += 1
+        return self.keys - 1
 
 
 # -- units --------------------------------------------------------------------------------------------------
@@ -2941,7 +2948,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if is_ego:
         ego = next((e for e in r.entities if e.is_ego), None)
         if ego is None:
-            ego = Entity(len(r.entities), kind, True, stage, head=u.base)
+            ego = Entity(r.new_key(), kind, True, stage, head=u.base)
             r.entities.append(ego)
         elif kind != "car" and ego.type == "car":
             ego.type = kind
@@ -3115,7 +3122,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count = MAX_AGENTS_PER_MENTION
     if u.meaning == "generic" or u.base == "vehicle":  # "a vehicle": its type is left open
         kind = UNSPECIFIED.agent_type(kind, len(r.entities))
-    entity = Entity(len(r.entities), kind, False, stage, count=count, head=u.base,
+    entity = Entity(r.new_key(), kind, False, stage, count=count, head=u.base,
                     generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label,
                     headline=headline and not label)
     if u.base.split()[0] in ("lead", "leading"):
@@ -3134,12 +3141,17 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if scenery and before >= lo and units[before].word == "between":
         entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
     entity.relative_to = vehicle_left  # at the vehicle it got out of
-    named_as_a_kind = _named_as_a_kind(r, entity)
+    heading = _named_in_the_heading(r, entity, u.tokens[0].sentence)
+    if heading is not None:  # "Pre-crash scene, emergency vehicle yield. ... V2, an ambulance, approaches": it
+        r.notes.append(f"read the heading's '{heading.head}' as the case's name; the {entity.head} is the agent")
+        entity.headline = False
+        r.entities[r.entities.index(heading)] = entity  # what the heading said of it is the case's name
+    named_as_a_kind = None if heading is not None else _named_as_a_kind(r, entity)
     if named_as_a_kind is not None:  # "an approaching emergency vehicle ... A police car approaches": that one
         named_as_a_kind.type, named_as_a_kind.head = entity.type, entity.head
         named_as_a_kind.aliases |= entity.aliases
         entity = named_as_a_kind
-    else:
+    elif heading is None:
         _take_from_the_group_it_is_included_in(r, units, first, entity)
         if not _absorbed(r, entity):
             r.entities.append(entity)
@@ -3342,7 +3354,7 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     groups = [e for e in pool if e.group_open > 0]
     if groups:
         group = groups[-1]
-        member = Entity(len(r.entities), group.type if not group.generic else kind, False, group.stage,
+        member = Entity(r.new_key(), group.type if not group.generic else kind, False, group.stage,
                         head=group.head, parent=group, features=set(group.features),
                         actions=list(group.actions), behavior=group.behavior)
         group.group_open -= 1
@@ -3380,6 +3392,26 @@ def _named_as_a_kind(r: _Reader, entity: Entity) -> Entity | None:
              entity.type in categories().get(e.head, frozenset()) and e.type != entity.type
              and e not in r.clause_mentions]  # (in one clause, "VRU (cyclist, ...)" is an apposition's)
     return kinds[0] if len(kinds) == 1 else None
+
+
+HEADING_WORDS = {"scene", "scenario", "case", "reconstruction", "crash", "collision", "conflict", "brief", "typology",
+                 "type", "category", "report", "phase", "summary"}
+
+
+def _named_in_the_heading(r: _Reader, entity: Entity, sentence: int) -> Entity | None:
+    """'Pedestrian crossing at intersection, all-way stop, ladder crosswalk. Ego stopped while a kid and a parent
+    cross': a first line that lists what the case is (commas, or a word like scene or reconstruction, and no ego)
+    names the case by its agent; the one later introduced of that kind is the agent, not a second one."""
+    if sentence == 0 or entity.count != 1 or entity.is_ego:
+        return None
+    first = [t for t in r.tokens if t.sentence == 0]
+    if any(t.word == "ego" for t in first) or not (any(t.word in HEADING_WORDS for t in first) or any(
+            t.word == "," for t in first)):
+        return None
+    named = [e for e in r.entities if e.headline and not e.label and not e.is_ego and e.count == 1 and
+             e.parent is None and not e.features & HEADLINE_PLACES and e.stage == entity.stage and
+             (e.type == entity.type or entity.type in categories().get(e.head, frozenset()))]
+    return named[0] if len(named) == 1 else None
 
 
 def _absorbed(r: _Reader, entity: Entity) -> bool:
@@ -3881,7 +3913,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 j -= 1  # "a blue one", "another red one"
             kin = next((e for e in reversed(recent) if not e.is_ego), None)
             if j >= 0 and j < i - 1 and units[j].word in ("a", "an", "another") and kin is not None:
-                member = Entity(len(r.entities), kin.type, False, clause.stage, head=kin.head)
+                member = Entity(r.new_key(), kin.type, False, clause.stage, head=kin.head)
                 r.entities.append(member)  # "a red car in front, and a blue one behind it": another car
                 r.notes.append(f"inferred: 'a ... one' is another {kin.head}")
                 r.mark(u)
@@ -3896,7 +3928,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.notes.append(f"inferred: 'one' placed apart from the {extra.head}s placed before is one more")
             listed = extra or (_enumerated_one(r, units, i, phrases) if member is None else None)
             if listed is not None:
-                member = Entity(len(r.entities), listed.type, False, clause.stage, head=listed.head,
+                member = Entity(r.new_key(), listed.type, False, clause.stage, head=listed.head,
                                 listed_after=listed)
                 r.entities.append(member)  # "one car in front, one on the left": a list of single agents
                 r.listed_one = (member, u.tokens[0].sentence)
@@ -3938,7 +3970,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 target = _ego_entity(r, stage)  # "two trucks come the other way, so it has to wait": the ego
             if target is None and u.word in ("she", "he") and _on_foot_in_the_scene(units, i) and \
                     not any(e.type == "pedestrian" for e in r.entities):
-                target = Entity(len(r.entities), "pedestrian", False, stage, head=u.word)
+                target = Entity(r.new_key(), "pedestrian", False, stage, head=u.word)
                 r.entities.append(target)  # "Mrs. Feeney was in that crosswalk? ... She was crossing from my
                 r.notes.append(f"inferred: '{u.word}' on foot is a person in the scene")  # left": named before
                 phrases.append(NounPhrase(target, i, i, introduced=True))  # only by her name
@@ -4525,7 +4557,7 @@ def _place_in_queue(r: _Reader) -> None:
             if still_ahead <= 0:
                 with_ego.features.add("behind")
             else:
-                behind = Entity(len(r.entities), with_ego.type, False, with_ego.stage,
+                behind = Entity(r.new_key(), with_ego.type, False, with_ego.stage,
                                 count=with_ego.count - still_ahead, head=with_ego.head,
                                 features=set(with_ego.features) | {"behind"}, actions=list(with_ego.actions),
                                 behavior=with_ego.behavior)
@@ -4538,7 +4570,7 @@ def _place_in_queue(r: _Reader) -> None:
             e.features.add("ahead")  # "fourth in line behind a bus": the bus is one of those ahead
         ahead = sum(e.count for e in queued)
         if n - 1 > ahead and n - 1 <= MAX_AGENTS_PER_MENTION:
-            r.entities.append(Entity(len(r.entities), "car", False, 0, count=n - 1 - ahead, head="car",
+            r.entities.append(Entity(r.new_key(), "car", False, 0, count=n - 1 - ahead, head="car",
                                      features={"ahead"}))
             r.notes.append(f"inferred: '{w} in the queue' puts {n - 1 - ahead} car(s) ahead of the ego")
         r.used.update(range(i, i + 4))
@@ -4655,7 +4687,7 @@ def _bare_verb(u: Unit) -> bool:
 def _ego_entity(r: _Reader, stage: int) -> Entity:
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None:
-        ego = Entity(len(r.entities), "car", True, stage, head="ego")
+        ego = Entity(r.new_key(), "car", True, stage, head="ego")
         r.entities.append(ego)
     return ego
 
@@ -4670,7 +4702,7 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
     named = any(units[i].base in ("cut in", "cut off", "cut across", "cut") for i in verbs)  # "a cut-in", a noun
     turning_elsewhere = placed and any(units[i].meaning in ("u_turn",) for i in verbs)
     if placed and ((cutting and named) or turning_elsewhere):
-        entity = Entity(len(r.entities), "car", False, stage, head="car")
+        entity = Entity(r.new_key(), "car", False, stage, head="car")
         r.entities.append(entity)
         r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
         return entity
@@ -4728,7 +4760,7 @@ def _part_of_group(r: _Reader, n: int) -> Entity | None:
             return group  # the rest of it
         if group.count == n:
             return None
-        part = Entity(len(r.entities), group.type, False, group.stage, count=n, head=group.head, parent=group,
+        part = Entity(r.new_key(), group.type, False, group.stage, count=n, head=group.head, parent=group,
                       features=set(group.features), actions=[(a[0], 1) + a[2:] for a in group.actions],
                       behavior=group.behavior)
         group.count -= n
@@ -4819,7 +4851,7 @@ def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
             return group
         if group.count < 2:
             continue
-        member = Entity(len(r.entities), group.type, False, group.stage, head=group.head, parent=group,
+        member = Entity(r.new_key(), group.type, False, group.stage, head=group.head, parent=group,
                         features=set(group.features), actions=[(a[0], 1) + a[2:] for a in group.actions],
                         behavior=group.behavior)  # what the group does, unless the member is said to do otherwise
         group.count -= 1
@@ -6218,7 +6250,7 @@ def _headline(prompt: str, tokens: list[Token]) -> range:
     m = re.match(r"\s*([^.!?\n]{1,60})[.!]\s+\S", prompt)
     if m is None:
         return range(0)
-    words = re.findall(r"[A-Za-z][A-Za-z'-]*|\d+", m.group(1))
+    words = re.findall(r"[A-Za-z][A-Za-z'-]*|\d+", re.sub(r"\((?:e?s)\)", "", m.group(1)))  # "Vehicle(s) Changing Lanes"
     if not words or len(words) > 8 or not all(w[0].isupper() or w[0].isdigit() or w.lower() in TITLE_SMALL_WORDS
                                              for w in words) or words[0].lower() in SUBJECT_PRONOUNS | {"i'm"}:
         return range(0)
