@@ -151,3 +151,15 @@ def test_agents_named_after_a_heading_keep_their_own_places():
                    "approaches from behind V1 in the left lane. Ped 1 stands on the sidewalk to V1's right.")
     assert found == sorted([("car", "stop", "ego"), ("police", "go_straight", "back_left"),
                             ("pedestrian", "on_the_sidewalk", "right")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Cut-in risk: a van travels in the ego's blind spot on the right while the ego merges right.",
+     ("car", "go_straight", "back_right")),
+    ("Motorcycle in the ego's blind spot (right rear); ego changes lanes to the right.",
+     ("motorcycle", "go_straight", "back_right")),
+    ("A scooter lurks in my blind spot, left side, as I change lanes to the left.",
+     ("motorcycle", "go_straight", "back_left")),
+])
+def test_the_egos_blind_spot_is_behind_it_in_the_lane_beside(prompt, expected):
+    assert expected in agents(prompt)

@@ -329,18 +329,21 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
         if m is not None and m.category == "agents" and m.meaning == "ego" and (
                 tokens[m.end - 1].possessive or tokens[m.end - 1].word not in ("i", "we", "you", "me", "us")) and \
                 m.end < len(tokens) and tokens[m.end].word in ("lane", "path", "way", "side", "front", "right",
-                                                               "left", "rear", "back") and \
+                                                               "left", "rear", "back", "blind") and \
                 tokens[m.end].sentence == tokens[m.end - 1].sentence and (tokens[m.end - 1].possessive or
                                                                            tokens[m.end].word in ("lane", "path")) \
-                and _part_after(tokens, m.end + 1) is None:  # "the ego's right rear door": a part of it
-            span = tuple(tokens[m.start:m.end + 1])  # "the AV's lane", "the test vehicle's path"
+                and _part_after(tokens, m.end + 1) is None and (  # "the ego's right rear door": a part of it
+                    tokens[m.end].word != "blind" or [t.word for t in tokens[m.end + 1:m.end + 2]] == ["spot"]):
+            blind = tokens[m.end].word == "blind" and m.end + 1 < len(tokens) and tokens[m.end + 1].word == "spot"
+            span = tuple(tokens[m.start:m.end + 1 + blind])  # "the AV's lane", "the test vehicle's path"
             meaning = {"front": "ahead", "right": "side_right", "left": "side_left", "rear": "behind",
-                       "back": "behind"}.get(span[-1].word, "ego_lane")  # "on the ego's right"
+                       "back": "behind", "spot": "behind"}.get(span[-1].word, "ego_lane")  # "on the ego's right",
+            # "in the ego's blind spot": behind it, in the lane beside
             before = m.start - 1 if m.start > 0 and tokens[m.start - 1].word != "the" else m.start - 2
             if before >= 0 and tokens[before].word in ("into", "onto", "across"):  # "into the VUT's path"
                 meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
-            out.append(Unit(m.start, m.end + 1, "positions", meaning, span))
-            i = m.end + 1
+            out.append(Unit(m.start, m.end + 1 + blind, "positions", meaning, span))
+            i = m.end + 1 + blind
             if any(f.start < i < f.end for f in found.values()):  # "from the SV's left turns left": read on
                 found |= {f.start: f for f in matches(tokens, i)}
             continue
