@@ -163,3 +163,14 @@ def test_agents_named_after_a_heading_keep_their_own_places():
 ])
 def test_the_egos_blind_spot_is_behind_it_in_the_lane_beside(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, line", [
+    ("At the four-way stop the ego waits at the line while a pickup crosses from the left.", True),
+    ("Ego stopped at the white line as two children crossed.", True),
+    ("The ego is at the line when the light turns green.", True),
+    ("The ego waits at the line of parked cars for a gap.", False),
+    ("Three cars wait in line at the junction.", False),
+])
+def test_stopping_at_the_line_is_at_the_stop_line(prompt, line):
+    assert ("stop_line" in lower(prompt).scenario.road.required_objects) == line

@@ -1178,6 +1178,8 @@ def _road(r: _Reader) -> RoadSpec:
             r.mark(u)
             u.category, u.meaning = "road", "yield"
             continue
+        if u.category == "actions" and u.meaning == "stop" and _held_at_the_line(units, k):
+            put("stop_line", False)  # "waits at the line", "stopped at the white line": the stop line
         if u.category == "sequence" and {"light", "lights", "signal", "green"} & {t.word for t in u.tokens}:
             put("traffic_light", False)  # "when the light goes green": a signal there
         if u.category == "actions" and {"stop", "sign"} <= {t.word for t in u.tokens}:
@@ -1284,6 +1286,16 @@ def _road(r: _Reader) -> RoadSpec:
     if junction is not None:
         spec["junction"] = junction
     return RoadSpec.model_construct(**(RoadSpec().model_dump() | spec))
+
+
+def _held_at_the_line(units: list[Unit], k: int) -> bool:
+    """'waits at the line', 'stopped at the white line': where one stops at 'the line' it is the stop line (not
+    'the line of cars', not 'in line')."""
+    words = [u.word for u in units[k + 1:k + 5] if u.tokens[0].sentence == units[k].tokens[0].sentence]
+    if units[k].tokens[-1].word in ("at", "to"):
+        words = ["at"] + words
+    return words[:3] in (["at", "the", "line"], ["to", "the", "line"]) and words[3:4] != ["of"] or \
+        words[:4] in (["at", "the", "white", "line"], ["to", "the", "white", "line"]) and words[4:5] != ["of"]
 
 
 def _controls_listed_after(units: list[Unit], k: int) -> bool:
