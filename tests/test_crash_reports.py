@@ -174,3 +174,21 @@ def test_the_egos_blind_spot_is_behind_it_in_the_lane_beside(prompt, expected):
 ])
 def test_stopping_at_the_line_is_at_the_stop_line(prompt, line):
     assert ("stop_line" in lower(prompt).scenario.road.required_objects) == line
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Unit 1 (ego) waits at the light. Unit 2 and Unit 3, two cyclists, cross from the right; Unit 3 stops in the "
+     "middle.", [("car", "stop", "ego"), ("cyclist", "cross_the_road", "road_of_right_turn"),
+                 ("cyclist", "cross_the_road", "road_of_right_turn")]),
+    ("V1 (ego) follows V2, V3 and V4, three school buses in a line, at 30 mph.",
+     [("bus", "go_straight", "front")] * 3 + [("car", "go_straight", "ego")]),
+    ("The ego in the left lane passes V2 and V3, two tankers in the right lane ahead, 20 m apart. V3 brakes.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front_right"), ("truck", "stop", "front_right")]),
+])
+def test_designations_listed_before_a_counted_noun_are_its_members(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_in_tandem_is_how_they_travel_not_a_tandem_bicycle():
+    assert agents("Two motorcycles ride in tandem behind the ego.") == sorted(
+        [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back"), ("motorcycle", "go_straight", "back")])

@@ -110,6 +110,7 @@ def read_narration(prompt: str) -> Narration:
     text = _ages(text)
     text = _street_names(text)
     text = _designated_ego(text, notes)
+    text = _designated_groups(text, notes)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
@@ -680,6 +681,43 @@ def _designated_ego(text: str, notes: list[str]) -> str:
     text = re.sub(r"\bthe ego,\s*,", "the ego,", text)
     notes.append(f"read V{number} as the ego (said so)")
     return text
+
+
+LISTED_DESIGNATIONS = re.compile(
+    rf"\b((?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?\d{{1,2}}(?:\s*,\s*(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?\d{{1,2}})*,?\s+"
+    rf"(?:and|&)\s+(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?\d{{1,2}})\s*,\s*(?=(?:two|three|four|2|3|4)\s)", re.I)
+ORDINAL_NAMES = ("first", "second", "third", "fourth")
+
+
+def _designated_groups(text: str, notes: list[str]) -> str:
+    """'overtaking V2 and V3, two loaded logging trucks travelling in tandem': the names are the counted group's,
+    said once; where one of them is named alone later it is the first or the second of the group."""
+    for m in list(LISTED_DESIGNATIONS.finditer(text))[:1]:
+        names = re.findall(r"(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?(\d{1,2})", m.group(1), flags=re.I)
+        rest = text[m.end():]
+        head = next((w for w in re.findall(r"[a-z]+", rest.split(",")[0].lower())
+                     if w.endswith("s") and _vehicle_kind_of_plural(w)), None)
+        if head is None or len(names) > len(ORDINAL_NAMES):
+            return text
+        if re.search(r"(?:^|[.!?;]\s*|\n\s*)$", text[:m.start()]):
+            rest = re.sub(r"^([^,.;]*),\s*", r"\1 ", rest, count=1)  # "V2 and V3, two cyclists, cross": the
+            # subject, whose apposition closes before its verb
+        text = text[:m.start()] + rest
+        for k, number in enumerate(names):
+            text = re.sub(rf"\b(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?{number}\b(?!\s*(?:mph|km|m\b|ft|feet|lanes?))",
+                          f"the {ORDINAL_NAMES[k]} {_vehicle_kind_of_plural(head)}", text, flags=re.I)
+        text = re.sub(r"((?:^|[.!?]\s+|\n\s*))the (first|second|third|fourth)\b", r"\1The \2", text)
+        notes.append(f"read {', '.join('V' + n for n in names)} as the {head} named with them")
+    return text
+
+
+def _vehicle_kind_of_plural(word: str) -> str | None:
+    """'trucks' -> 'truck', 'buses' -> 'bus': the singular of an agent noun, or None."""
+    for singular in (word[:-1], word[:-2]):
+        entry = lexicon().phrases.get((singular,))
+        if entry is not None and entry[0] == "agents" and entry[1] not in ("ego", "none"):
+            return singular
+    return None
 
 
 def _declared_ego(text: str, notes: list[str]) -> str:
