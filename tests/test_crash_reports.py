@@ -192,3 +192,15 @@ def test_designations_listed_before_a_counted_noun_are_its_members(prompt, expec
 def test_in_tandem_is_how_they_travel_not_a_tandem_bicycle():
     assert agents("Two motorcycles ride in tandem behind the ego.") == sorted(
         [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back"), ("motorcycle", "go_straight", "back")])
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Cut-in from left at 60 mph. Sedan in left lane moves into ego lane just ahead.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("Cut-in from right lane. A white van swerves in front of the ego.",
+     [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+    ("Aggressive cut-in from the right lane ahead.", [("car", "change_lane_to_left", "front_right"),
+                                                      ("car", "go_straight", "ego")]),
+])
+def test_a_heading_that_says_only_what_was_done_is_done_by_the_vehicle_named_next(prompt, expected):
+    assert agents(prompt) == sorted(expected)

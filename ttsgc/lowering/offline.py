@@ -155,6 +155,7 @@ class Entity:
     includes_ego: bool = False  # "three cars including the ego": the ego shares what the group does
     aliases: set = field(default_factory=set)  # short names given in brackets ("(GVT)")
     headline: bool = False  # named bare in the text's first sentence, as a heading names it ("Jaywalker mid-block.")
+    implied: bool = False  # never named, only done ("cut-in from the right lane ahead"): someone did it
     named_of: "Entity | None" = None  # the counted group it is named as included in ("three cars, including a
     # taxi"): where the group is and what it does, unless said of this one
     listed_after: "Entity | None" = None  # the 'one ...' list item before it: does what that one does, unless
@@ -3160,7 +3161,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if heading is not None:  # "Pre-crash scene, emergency vehicle yield. ... V2, an ambulance, approaches": it
         r.notes.append(f"read the heading's '{heading.head}' as the case's name; the {entity.head} is the agent")
         entity.headline = False
-        r.entities[r.entities.index(heading)] = entity  # what the heading said of it is the case's name
+        if heading.implied:  # "Cut-in from right lane. A white van swerves in front": what it did, and from where
+            entity.features |= heading.features
+            entity.actions += heading.actions
+            entity.behavior = heading.behavior
+        r.entities[r.entities.index(heading)] = entity  # what a listing heading said of it is the case's name
     named_as_a_kind = None if heading is not None else _named_as_a_kind(r, entity)
     if named_as_a_kind is not None:  # "an approaching emergency vehicle ... A police car approaches": that one
         named_as_a_kind.type, named_as_a_kind.head = entity.type, entity.head
@@ -3420,12 +3425,14 @@ def _named_in_the_heading(r: _Reader, entity: Entity, sentence: int) -> Entity |
     if sentence == 0 or entity.count != 1 or entity.is_ego:
         return None
     first = [t for t in r.tokens if t.sentence == 0]
-    if any(t.word == "ego" for t in first) or not (any(t.word in HEADING_WORDS for t in first) or any(
-            t.word == "," for t in first)):
+    if any(t.word == "ego" for t in first):
         return None
+    listed = any(t.word in HEADING_WORDS for t in first) or any(t.word == "," for t in first)
     named = [e for e in r.entities if e.headline and not e.label and not e.is_ego and e.count == 1 and
-             e.parent is None and not e.features & HEADLINE_PLACES and e.stage == entity.stage and
-             (e.type == entity.type or entity.type in categories().get(e.head, frozenset()))]
+             e.parent is None and e.stage == entity.stage and (
+                 e.implied and entity.type not in V.VULNERABLE_TYPES  # "Cut-in from left. Sedan in left lane ..."
+                 or listed and not e.features & HEADLINE_PLACES and (
+                     e.type == entity.type or entity.type in categories().get(e.head, frozenset())))]
     return named[0] if len(named) == 1 else None
 
 
@@ -4717,7 +4724,8 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
     named = any(units[i].base in ("cut in", "cut off", "cut across", "cut") for i in verbs)  # "a cut-in", a noun
     turning_elsewhere = placed and any(units[i].meaning in ("u_turn",) for i in verbs)
     if placed and ((cutting and named) or turning_elsewhere):
-        entity = Entity(r.new_key(), "car", False, stage, head="car")
+        entity = Entity(r.new_key(), "car", False, stage, head="car",
+                        headline=units[verbs[0]].tokens[0].sentence == 0, implied=True)
         r.entities.append(entity)
         r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
         return entity
