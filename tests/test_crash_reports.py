@@ -204,3 +204,23 @@ def test_in_tandem_is_how_they_travel_not_a_tandem_bicycle():
 ])
 def test_a_heading_that_says_only_what_was_done_is_done_by_the_vehicle_named_next(prompt, expected):
     assert agents(prompt) == sorted(expected)
+
+
+# -- crash-typology names -------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("LTAP/OD, urban signal. Ego turns left on a green ball while a minivan proceeds straight.",
+     ("car", "go_straight", "road_of_straight")),
+    ("SCP at a two-way stop: ego straight through, pickup straight through.", ("car", "go_straight",
+                                                                               "road_of_left_turn")),
+    ("Lead vehicle stopped scenario. The ego approaches a delivery truck in its lane at 35 mph.",
+     ("truck", "stop", "front")),
+    ("LVS on a rural road: ego approaching at 45 mph, a pickup in its lane.", ("car", "stop", "front")),
+])
+def test_a_crash_type_places_the_one_other_vehicle_the_text_leaves_unplaced(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_crash_type_leaves_a_vehicle_the_text_places_where_it_is():
+    found = agents("LTAP/OD at signal. Ego turns left; a bus waits on the road to the right.")
+    assert ("bus", "stop", "road_of_right_turn") in found

@@ -347,6 +347,13 @@ def categories() -> dict[str, frozenset[str]]:
 
 
 @lru_cache(maxsize=1)
+def typologies() -> dict[tuple[str, ...], frozenset[str]]:
+    """typologies.txt: a crash-typology name ('LTAP/OD', 'lead vehicle stopped') -> the features it gives the one
+    other vehicle a text leaves unplaced."""
+    return {words: frozenset(meaning.split("+")) for meaning, words in _entries("typologies")}
+
+
+@lru_cache(maxsize=1)
 def loose_names() -> dict[str, frozenset[str]]:
     """loose_names.txt: a noun of one type -> the first names of agents of another type it names again ('a
     pickup ... the truck', 'a motorbike ... the bike')."""

@@ -31,7 +31,7 @@ from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
 from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, categories, compound_heads, crews,
-                                    lexicon, loose_names, matches, read_number, tokenize)
+                                    lexicon, loose_names, matches, read_number, tokenize, typologies)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -2848,7 +2848,8 @@ def _names_the_case(r: _Reader, units: list[Unit], head: int, kind: str) -> bool
     case, when an agent of its kind is introduced before or later on; with no other ('a cyclist scenario') it is the
     agent asked for."""
     case = head + 1 + (head + 2 < len(units) and units[head + 1].category in ("actions", "positions") and
-                       units[head + 1].tokens[-1].word.endswith("ing"))  # "the lead-vehicle-following scenario"
+                       units[head + 1].tokens[-1].word.endswith(("ing", "ed")))  # "the lead-vehicle-following
+    # scenario", "a lead vehicle stopped scenario"
     if case >= len(units) or units[case].word not in CASE_NOUNS or units[head].tokens[-1].plural:
         return False
     end = units[case].tokens[-1].index + 1
@@ -3717,6 +3718,27 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
         elif own in (left, right) and not e.features & {"road_left", "road_right"}:
             e.features.add("road_right" if own == left else "road_left")  # westbound across a northbound ego:
             # it comes from the ego's right
+
+
+PLACE_FEATURES = HEADLINE_PLACES | {"front_left", "front_right", "back_left", "back_right", "cross_road", "crosswalk",
+                                    "toward", "across_path", "overtaking", "far_side", "junction_approach"}
+
+
+def _typology_places(r: _Reader, others: list[Entity]) -> None:
+    """'LTAP/OD @ signal. Ego turns left, a sedan goes straight': the crash type a text is filed under says where the
+    one other vehicle is (oncoming; from a side road; the stopped lead vehicle), when the text does not."""
+    words = [t.word for t in r.tokens]
+    shape = next((features for k in range(len(words)) for name, features in typologies().items()
+                  if tuple(words[k:k + len(name)]) == name), None)
+    vehicles = [e for e in others if e.type not in V.VULNERABLE_TYPES]
+    if shape is None or len(vehicles) != 1:
+        return
+    e = vehicles[0]
+    if not e.features & PLACE_FEATURES:
+        e.features |= shape - {"stop"}
+        r.notes.append(f"inferred: '{e.head}' is placed as the crash type said names ({', '.join(sorted(shape))})")
+    if "stop" in shape and not e.actions:
+        e.actions.append((e.stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
 def _forced_reaction(units: list[Unit], k: int) -> bool:
@@ -6387,6 +6409,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features -= {"side_left", "side_right"} | {f for f in e.features if f.startswith("lane_")}
                 e.features.add(f"side_{target_side}")
     _compass_places(others, ego_entity)  # "the AV was travelling north ... a van heading south": oncoming
+    _typology_places(r, others)
     if ego_entity is not None and "first_in_line" in ego_entity.features:
         for e in others:  # "three cars including the ego wait, the ego is first": the others queue behind it
             group = e.parent or e
