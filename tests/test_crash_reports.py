@@ -23,6 +23,8 @@ def agents(prompt: str) -> list[tuple[str, str, str]]:
      [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_left")]),
     ("Vehicle 1 (subject vehicle) turns right at the junction while V1's driver watches a cyclist crossing.",
      [("car", "turn_right", "ego"), ("cyclist", "cross_the_road", "front")]),
+    ("V1, the ego vehicle, is eastbound at 30 mph. V2, a red sedan, is westbound and turns left in front of V1.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]),
 ])
 def test_a_designation_said_to_be_the_ego_is_the_ego_wherever_it_is_named(prompt, expected):
     assert agents(prompt) == sorted(expected)
@@ -224,3 +226,23 @@ def test_a_crash_type_places_the_one_other_vehicle_the_text_leaves_unplaced(prom
 def test_a_crash_type_leaves_a_vehicle_the_text_places_where_it_is():
     found = agents("LTAP/OD at signal. Ego turns left; a bus waits on the road to the right.")
     assert ("bus", "stop", "road_of_right_turn") in found
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("VRU: e-scooter rider crossing from the left at crosswalk, ego turning left. Rain.",
+     [("car", "turn_left", "ego"), ("cyclist", "go_straight", "road_of_left_turn")]),
+    ("Ego turns right; VRU (cyclist) going straight on the right.",
+     [("car", "turn_right", "ego"), ("cyclist", "go_straight", "right")]),
+    ("VRU crossing at the crosswalk. Ego turning right. Drizzle.",
+     [("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+])
+def test_a_vru_is_the_walker_or_rider_the_text_says_it_is(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt", [
+    "Animal crossing, rural. Deer from the right, ego straight at 50 mph, night.",
+    "A deer crossing sign is on the right; the ego drives past at night.",
+])
+def test_an_animal_crossing_is_no_pedestrian_crossing(prompt):
+    assert "crosswalk" not in lower(prompt).scenario.road.required_objects

@@ -656,7 +656,9 @@ EGO_ROLE = r"(?:the\s+)?(?:ego|subject|sv|host)(?:\s+(?:vehicle|car|unit))?"
 DESIGNATED_EGO = (
     re.compile(rf"\b{DESIGNATION}\s*\(\s*{EGO_ROLE}\s*(?:[,;:]\s*(?P<what>[^()]*?))?\s*\)", re.I),  # "V1 (ego)"
     re.compile(rf"\b{EGO_ROLE}\s*\(\s*{DESIGNATION}\s*\)", re.I),  # "the subject vehicle (V1)"
-    re.compile(rf"\b{DESIGNATION}\s+(?:is|=)\s+{EGO_ROLE}\b", re.I))  # "V1 is the ego vehicle"
+    re.compile(rf"\b{DESIGNATION}\s+(?:is|=)\s+{EGO_ROLE}\b", re.I),  # "V1 is the ego vehicle"
+    re.compile(rf"\b{DESIGNATION}\s*(?:,|--|\u2013|\u2014)\s*{EGO_ROLE}\s*(?:,|--|\u2013|\u2014)", re.I))
+# "V1, the ego vehicle, is eastbound"
 
 
 def _designated_ego(text: str, notes: list[str]) -> str:

@@ -5014,7 +5014,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     copula or prev.entity.label or (between and prev.entity.is_ego and (
                         units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
                     or (between and prev.entity.head.split()[-1] in APPOSED_HEADS
-                        and units[np.first].word in ("a", "an"))):  # "a third-party vehicle, a silver hatchback,"
+                        and units[np.first].word in ("a", "an"))  # "a third-party vehicle, a silver hatchback,"
+                    or (between and prev.entity.head in categories() and np.first == np.index and
+                        np.entity.type in categories()[prev.entity.head])):  # "a VRU (cyclist)": which one it is
                 a, b = prev.entity, np.entity
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
