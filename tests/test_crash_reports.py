@@ -246,3 +246,14 @@ def test_a_vru_is_the_walker_or_rider_the_text_says_it_is(prompt, expected):
 ])
 def test_an_animal_crossing_is_no_pedestrian_crossing(prompt):
     assert "crosswalk" not in lower(prompt).scenario.road.required_objects
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("V1 (ego) is southbound. V2 is eastbound on Oak St and V3 is westbound on Oak St; both enter the intersection.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn"),
+      ("car", "go_straight", "road_of_right_turn")]),
+    ("Unit 1 (ego) heads north. Unit 2 is parked ahead and Unit 3 is stopped behind Unit 1.",
+     [("car", "go_straight", "ego"), ("car", "stop", "back"), ("car", "stop", "front")]),
+])
+def test_a_named_vehicle_after_and_starts_its_own_clause(prompt, expected):
+    assert agents(prompt) == sorted(expected)

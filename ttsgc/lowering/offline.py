@@ -2189,7 +2189,8 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
         return True  # "an ambulance comes up behind me and I pull over"
     if not (_has_agent(current) and any(u.category == "word" and u.word in COPULAS for u in current)):
         return False
-    starts = rest[0].category == "agents" and rest[0].meaning == "ego" or rest[0].word in SUBJECT_PRONOUNS or (
+    starts = rest[0].category == "agents" and (rest[0].meaning == "ego" or bool(rest[0].tokens[-1].label)) or \
+        rest[0].word in SUBJECT_PRONOUNS or (  # "V2 is eastbound and V3 is westbound": a named one's own clause
         rest[0].word in ("the", "a", "an", "this", "that", "some", "another") and len(rest) > 1
         and rest[1].category == "agents" and rest[1].meaning != "none")  # "... and this guy swerves"
     if not starts:
