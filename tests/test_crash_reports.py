@@ -140,6 +140,10 @@ def test_a_county_or_state_roads_number_limits_no_speed(prompt):
      [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
     ("Pre-crash reconstruction, emergency vehicle approach. V2, a fire engine, comes up behind V1 (ego).",
      [("car", "go_straight", "ego"), ("firetruck", "go_straight", "back")]),
+    ("Rear-end, lead vehicle decelerating. Ego following a city bus at 40 km/h; bus brakes for a stop. Clear.",
+     [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
+    ("Lead vehicle stopped, rural road. Ego approaches a broken-down tractor at 50 km/h.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
     ("Bus(es) Stopped Ahead. The ego waits behind a school bus.", [("bus", "go_straight", "front"),
                                                                   ("car", "stop", "ego")]),
 ])

@@ -3433,9 +3433,15 @@ def _named_in_the_heading(r: _Reader, entity: Entity, sentence: int) -> Entity |
     named = [e for e in r.entities if e.headline and not e.label and not e.is_ego and e.count == 1 and
              e.parent is None and e.stage == entity.stage and (
                  e.implied and entity.type not in V.VULNERABLE_TYPES  # "Cut-in from left. Sedan in left lane ..."
-                 or listed and not e.features & HEADLINE_PLACES and (
-                     e.type == entity.type or entity.type in categories().get(e.head, frozenset())))]
+                 or listed and not e.features & HEADLINE_PLACES - _places_named(e) and (
+                     e.type == entity.type or entity.type in categories().get(e.head, frozenset()) or
+                     e.head.split()[-1] == "vehicle" and entity.type not in V.VULNERABLE_TYPES))]
     return named[0] if len(named) == 1 else None
+
+
+def _places_named(e: Entity) -> set[str]:
+    """The place a noun says by itself: a lead vehicle is ahead."""
+    return {"ahead"} if e.head.split()[0] in ("lead", "leading") else set()
 
 
 def _absorbed(r: _Reader, entity: Entity) -> bool:
