@@ -34,6 +34,7 @@ def test_the_designated_egos_bracket_describes_it_and_its_name_is_replaced_every
     told = read_narration("V1 (ego, 2019 Ford Escape) brakes. V2 hits V1's rear.").text
     assert told == "The ego, a 2019 Ford Escape, brakes. V2 hits the ego's rear."
     assert read_narration("V12 turns left. V1 waits.").text == "V12 turns left. V1 waits."  # no ego said: as written
+    assert read_narration("V1 (ego, eastbound) enters.").text == "The ego, eastbound, enters."  # no second agent
 
 
 # -- makes, models and their numbers ------------------------------------------------------------------------
@@ -80,6 +81,10 @@ def test_compass_headings_place_crossing_and_oncoming_traffic(prompt, expected):
      [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
     ("The ego is westbound. A woman is walking southbound across the road ahead.",
      [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("Ped 1 stepped off the west curb, walking east, into the path of V1 (ego), which was northbound.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
+    ("The ego heads north. A man walks north on the east sidewalk.",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]),
 ])
 def test_compass_sides_and_origins_place_what_stands_and_who_crosses(prompt, expected):
     assert agents(prompt) == sorted(expected)

@@ -673,8 +673,8 @@ def _designated_ego(text: str, notes: list[str]) -> str:
         return text
     number = next(g for g in m.groups() if g is not None and g.isdigit())
     what = (m.groupdict().get("what") or "").strip()
-    if what and not re.match(r"(?i)(?:an?|the)\b", what):
-        what = "a " + what  # "(ego, 2019 Chevrolet Tahoe)": one
+    if what and not re.match(r"(?i)(?:an?|the)\b", what) and _names_agents(what):
+        what = "a " + what  # "(ego, 2019 Chevrolet Tahoe)": one; "(ego, eastbound)" says how it goes
     said = "the ego" + (f", {what}," if what else "")
     text = text[:m.start()] + said + text[m.end():]
     text = re.sub(rf"\b(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?{number}\b(?!\s*(?:mph|km|m\b|ft|feet|lanes?))",

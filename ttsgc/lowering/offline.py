@@ -3709,6 +3709,8 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
         came = next((f[12:] for f in e.features if f.startswith("compassfrom_")), None)
         at = next((f[10:] for f in e.features if f.startswith("compassat_")), None)
         person = e.type in V.VULNERABLE_TYPES
+        if person and own in (left, right):
+            e.features.add("in_road")  # "walking east" across a northbound ego's road: across it
         if person and came is None and own in (left, right) and at is None:
             came = right if own == left else left  # "walking westbound" across a northbound ego: from its right
         side = {left: "left", right: "right"}.get(came or at or "")
