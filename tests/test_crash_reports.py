@@ -25,6 +25,10 @@ def agents(prompt: str) -> list[tuple[str, str, str]]:
      [("car", "turn_right", "ego"), ("cyclist", "cross_the_road", "front")]),
     ("V1, the ego vehicle, is eastbound at 30 mph. V2, a red sedan, is westbound and turns left in front of V1.",
      [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]),
+    ("Vehicle 2 (V2), a grey Nissan van, stopped ahead of Vehicle 1 (V1, ego). V1 stopped behind V2.",
+     [("car", "stop", "ego"), ("car", "stop", "front")]),
+    ("Ego = V1, northbound, 35 mph. V2, a bus, is stopped ahead of V1.",
+     [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
 ])
 def test_a_designation_said_to_be_the_ego_is_the_ego_wherever_it_is_named(prompt, expected):
     assert agents(prompt) == sorted(expected)

@@ -656,15 +656,22 @@ EGO_ROLE = r"(?:the\s+)?(?:ego|subject|sv|host)(?:\s+(?:vehicle|car|unit))?"
 DESIGNATED_EGO = (
     re.compile(rf"\b{DESIGNATION}\s*\(\s*{EGO_ROLE}\s*(?:[,;:]\s*(?P<what>[^()]*?))?\s*\)", re.I),  # "V1 (ego)"
     re.compile(rf"\b{EGO_ROLE}\s*\(\s*{DESIGNATION}\s*\)", re.I),  # "the subject vehicle (V1)"
+    re.compile(rf"\b{EGO_ROLE}\s*(?:=|:|\bis\b)\s*{DESIGNATION}\b", re.I),  # "Ego = V1"
     re.compile(rf"\b{DESIGNATION}\s+(?:is|=)\s+{EGO_ROLE}\b", re.I),  # "V1 is the ego vehicle"
     re.compile(rf"\b{DESIGNATION}\s*(?:,|--|\u2013|\u2014)\s*{EGO_ROLE}\s*(?:,|--|\u2013|\u2014)", re.I))
 # "V1, the ego vehicle, is eastbound"
+
+
+SAME_DESIGNATION = re.compile(rf"\b({DESIGNATION})\s*\(\s*(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?(\d{{1,2}})\s*(,\s*|(?=\)))",
+                              re.I)
 
 
 def _designated_ego(text: str, notes: list[str]) -> str:
     """'V1 (ego), a 2016 Honda Accord, is northbound ... V1 initiates its turn': a reconstruction names its vehicles
     V1, V2 (or Unit 1, Unit 2) and says which one the ego is; every mention of that name is the ego, and what the
     bracket says besides ('ego, 2019 Chevrolet Tahoe') describes it."""
+    text = SAME_DESIGNATION.sub(lambda m: m.group(1) + " (" if m.group(2) == m.group(3) else m.group(0), text)
+    text = re.sub(r"\s*\(\s*\)", "", text)  # "Vehicle 2 (V2)", "Vehicle 1 (V1, ego)": one name said twice
     for pattern in DESIGNATED_EGO:
         m = pattern.search(text)
         if m is not None:
