@@ -270,3 +270,13 @@ def test_an_animal_crossing_is_no_pedestrian_crossing(prompt):
 ])
 def test_a_named_vehicle_after_and_starts_its_own_clause(prompt, expected):
     assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, count", [
+    ("Ped crossing at midblock, no crosswalk, 2 peds from the right. Ego 25 mph. Dusk.", 3),
+    ("Jaywalker at mid-block, night, a teenager from the left, ego at 30 mph.", 2),
+    ("Ped crossing at the zebra, another ped waiting on the kerb.", 3),  # another: a second one
+    ("Car stops ahead, a car passes on the left.", 3),  # a sentence, no heading
+])
+def test_a_one_line_notes_first_item_heads_it(prompt, count):
+    assert len(agents(prompt)) == count

@@ -156,6 +156,7 @@ class Entity:
     aliases: set = field(default_factory=set)  # short names given in brackets ("(GVT)")
     headline: bool = False  # named bare in the text's first sentence, as a heading names it ("Jaywalker mid-block.")
     implied: bool = False  # never named, only done ("cut-in from the right lane ahead"): someone did it
+    said_at: int = -1  # the token it was first named at
     named_of: "Entity | None" = None  # the counted group it is named as included in ("three cars, including a
     # taxi"): where the group is and what it does, unless said of this one
     listed_after: "Entity | None" = None  # the 'one ...' list item before it: does what that one does, unless
@@ -3142,7 +3143,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         kind = UNSPECIFIED.agent_type(kind, len(r.entities))
     entity = Entity(r.new_key(), kind, False, stage, count=count, head=u.base,
                     generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label,
-                    headline=headline and not label)
+                    headline=headline and not label, said_at=u.tokens[0].index)
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
     if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
@@ -3159,7 +3160,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if scenery and before >= lo and units[before].word == "between":
         entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
     entity.relative_to = vehicle_left  # at the vehicle it got out of
-    heading = _named_in_the_heading(r, entity, u.tokens[0].sentence)
+    heading = _named_in_the_heading(r, entity, u.tokens[0], words) if not words & {
+        "another", "other", "second", "more"} else None
     if heading is not None:  # "Pre-crash scene, emergency vehicle yield. ... V2, an ambulance, approaches": it
         r.notes.append(f"read the heading's '{heading.head}' as the case's name; the {entity.head} is the agent")
         entity.headline = False
@@ -3420,17 +3422,28 @@ HEADING_WORDS = {"scene", "scenario", "case", "reconstruction", "crash", "collis
                  "type", "category", "report", "phase", "summary"}
 
 
-def _named_in_the_heading(r: _Reader, entity: Entity, sentence: int) -> Entity | None:
+def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[str]) -> Entity | None:
     """'Pedestrian crossing at intersection, all-way stop, ladder crosswalk. Ego stopped while a kid and a parent
     cross': a first line that lists what the case is (commas, or a word like scene or reconstruction, and no ego)
-    names the case by its agent; the one later introduced of that kind is the agent, not a second one."""
-    if sentence == 0 or entity.count != 1 or entity.is_ego:
+    names the case by its agent; the one later introduced of that kind is the agent, not a second one. A note
+    of one line lists its heading first: 'Ped crossing at midblock, no crosswalk, 2 peds from the right'."""
+    if entity.is_ego:
         return None
     first = [t for t in r.tokens if t.sentence == 0]
+    heading_end = len(r.tokens)
+    if said.sentence == 0:  # the heading is the note's first item, the agent named in a later one
+        heading_end = next((t.index for t in first if t.word == ","), said.index)
+        first = [t for t in first if t.index < heading_end]
+        if said.index <= heading_end or not (words or entity.count > 1) or any(
+                t.word != t.base and t.word.endswith(("s", "ed")) and
+                lexicon().phrases.get((t.base,), ("",))[0] == "actions" for t in first):
+            return None  # "Pedestrian crossing, pedestrian waiting": two, said bare; "Car stops, a car passes"
     if any(t.word == "ego" for t in first):
         return None
-    listed = any(t.word in HEADING_WORDS for t in first) or any(t.word == "," for t in first)
+    listed = any(t.word in HEADING_WORDS for t in first) or any(t.word == "," for t in first) or \
+        said.sentence == 0
     named = [e for e in r.entities if e.headline and not e.label and not e.is_ego and e.count == 1 and
+             e.said_at < heading_end and
              e.parent is None and e.stage == entity.stage and (
                  e.implied and entity.type not in V.VULNERABLE_TYPES  # "Cut-in from left. Sedan in left lane ..."
                  or listed and not e.features & HEADLINE_PLACES - _places_named(e) and (
@@ -4756,7 +4769,8 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
     turning_elsewhere = placed and any(units[i].meaning in ("u_turn",) for i in verbs)
     if placed and ((cutting and named) or turning_elsewhere):
         entity = Entity(r.new_key(), "car", False, stage, head="car",
-                        headline=units[verbs[0]].tokens[0].sentence == 0, implied=True)
+                        headline=units[verbs[0]].tokens[0].sentence == 0, implied=True,
+                        said_at=units[verbs[0]].tokens[0].index)
         r.entities.append(entity)
         r.notes.append(f"inferred: '{units[verbs[0]].base}' with no one named is a car's")
         return entity
