@@ -280,3 +280,15 @@ def test_a_named_vehicle_after_and_starts_its_own_clause(prompt, expected):
 ])
 def test_a_one_line_notes_first_item_heads_it(prompt, count):
     assert len(agents(prompt)) == count
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("V1 (ego), 2017 Kia Soul, is westbound. V2, Dodge Ram 2500 pickup, is stopped ahead of V1.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Ped 1, 8-year-old boy, runs across in front of Unit 1 (ego).",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("Unit 2, city bus, pulls out from stop on right ahead of Unit 1 (ego), eastbound.",
+     [("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+])
+def test_a_designations_apposition_without_its_article_says_what_it_is(prompt, expected):
+    assert agents(prompt) == sorted(expected)

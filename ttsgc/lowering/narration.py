@@ -111,6 +111,7 @@ def read_narration(prompt: str) -> Narration:
     text = _street_names(text)
     text = _designated_ego(text, notes)
     text = _designated_groups(text, notes)
+    text = _bare_appositions(text)
     text = _declared_ego(text, notes)
     text = _vehicle_numbers(text)
     text = _passengers_driver(text, notes)
@@ -727,6 +728,17 @@ def _vehicle_kind_of_plural(word: str) -> str | None:
         if entry is not None and entry[0] == "agents" and entry[1] not in ("ego", "none"):
             return singular
     return None
+
+
+BARE_APPOSITION = re.compile(r"\b((?:the ego|(?:V|Veh|Vehicle|Unit|U|Ped|P|Cyc|Cyclist|Pedestrian)\s?[#-]?\s?\d{1,2}))"
+                             r"(\s*(?:\([^()]*\)\s*)?,\s*)(?=\S)(?!(?:an?|the|which|who|whose|that|and|but|then|its|his|her)\b)"
+                             r"(?=([^,.;()]{2,60}?)\s*,)", re.I)
+
+
+def _bare_appositions(text: str) -> str:
+    """'V2, Ford F-150 pickup, is southbound', 'Ped 1, adult male, is crossing': a note that drops its articles
+    still says what a named one is; read with its article, as one ('a Ford F-150 pickup')."""
+    return BARE_APPOSITION.sub(lambda m: m.group(1) + m.group(2) + ("a " if _names_agents(m.group(3)) else ""), text)
 
 
 def _declared_ego(text: str, notes: list[str]) -> str:
