@@ -292,3 +292,13 @@ def test_a_one_line_notes_first_item_heads_it(prompt, count):
 ])
 def test_a_designations_apposition_without_its_article_says_what_it_is(prompt, expected):
     assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego is in lane 2 (center). V2, a truck in lane 3 (left lane) just ahead, makes a lane change to the right "
+     "into lane 2.", ("truck", "change_lane_to_right", "front_left")),
+    ("Lanes are numbered from the median. A van in lane 1 moves over to the left into lane 2 ahead of the ego.",
+     ("car", "change_lane_to_left", "front")),
+])
+def test_a_lane_change_said_with_its_side_keeps_it_whatever_the_lane_numbers(prompt, expected):
+    assert expected in agents(prompt)

@@ -6424,7 +6424,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     for e in others:  # "the HGV in lane one had to pull out into lane two": lanes count from the kerb
         into = next((int(f[10:]) for f in e.features if f.startswith("into_lane_")), None)
         own = next((int(f[5:]) for f in e.features if f.startswith("lane_") and f[5:].isdigit()), None)
-        if into is not None and own is not None and into != own:
+        said = any(a[4] in ("lane_left", "lane_right") or a[4] in ("lane_change", "cut_in") and a[5] for a in e.actions)
+        if into is not None and own is not None and into != own and not said:  # "to the right into lane 2": said
             e.actions.append((e.stage, 2, ACTION_RANK["cut_in"] + 1, r.tick(), "lane_right" if into > own else
                               "lane_left", None))
     if target_side and _joins_from_a_ramp(r.tokens):
