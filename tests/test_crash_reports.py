@@ -302,3 +302,13 @@ def test_a_designations_apposition_without_its_article_says_what_it_is(prompt, e
 ])
 def test_a_lane_change_said_with_its_side_keeps_it_whatever_the_lane_numbers(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Veh. 1 (ego) was eastbound. Veh. 2, a pickup, was westbound and turned left across Veh. 1's path.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]),
+    ("V-1 (ego) stopped at the light. V-2, a cyclist, passed V-1 on the right.",
+     [("car", "stop", "ego"), ("cyclist", "go_straight", "back_right")]),
+])
+def test_a_reports_designations_are_one_name_however_spelt(prompt, expected):
+    assert agents(prompt) == sorted(expected)

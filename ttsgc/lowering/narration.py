@@ -109,7 +109,7 @@ def read_narration(prompt: str) -> Narration:
     text = _street_corners(text)
     text = _ages(text)
     text = _street_names(text)
-    text = _designated_ego(text, notes)
+    text = _designated_ego(_designations_spelt_alike(text), notes)
     text = _designated_groups(text, notes)
     text = _bare_appositions(text)
     text = _declared_ego(text, notes)
@@ -665,6 +665,15 @@ DESIGNATED_EGO = (
 
 SAME_DESIGNATION = re.compile(rf"\b({DESIGNATION})\s*\(\s*(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?(\d{{1,2}})\s*(,\s*|(?=\)))",
                               re.I)
+
+
+SPELT_DESIGNATION = re.compile(r"\b(?:V|Veh|Vehicle|Unit)(?:\.\s?|\s?[#-]\s?|\s)(\d)\b"
+                               r"(?!\s*(?:mph|km|kmh|kph|m\b|metres|meters|ft|feet|lanes?|%|s\b|seconds|minutes))")
+
+
+def _designations_spelt_alike(text: str) -> str:
+    """'Veh. 2', 'V-2', 'Vehicle 2', 'Unit 2' are one report's way of naming V2 (and 'Veh.' ends no sentence)."""
+    return SPELT_DESIGNATION.sub(r"V\1", text)
 
 
 def _designated_ego(text: str, notes: list[str]) -> str:
