@@ -153,6 +153,8 @@ def test_a_county_or_state_roads_number_limits_no_speed(prompt):
      [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
     ("Lead vehicle stopped, rural road. Ego approaches a broken-down tractor at 50 km/h.",
      [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("Vehicle(s) not making a maneuver, opposite direction. Ego straight; oncoming truck drifts over the center "
+     "line.", [("car", "go_straight", "ego"), ("truck", "go_straight", "front_left")]),
     ("Bus(es) Stopped Ahead. The ego waits behind a school bus.", [("bus", "go_straight", "front"),
                                                                   ("car", "stop", "ego")]),
 ])

@@ -3446,14 +3446,17 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
              e.said_at < heading_end and
              e.parent is None and e.stage == entity.stage and (
                  e.implied and entity.type not in V.VULNERABLE_TYPES  # "Cut-in from left. Sedan in left lane ..."
-                 or listed and not e.features & HEADLINE_PLACES - _places_named(e) and (
+                 or listed and not e.features & HEADLINE_PLACES - _places_named(e, said.sentence) and (
                      e.type == entity.type or entity.type in categories().get(e.head, frozenset()) or
                      e.head.split()[-1] == "vehicle" and entity.type not in V.VULNERABLE_TYPES))]
     return named[0] if len(named) == 1 else None
 
 
-def _places_named(e: Entity) -> set[str]:
-    """The place a noun says by itself: a lead vehicle is ahead."""
+def _places_named(e: Entity, sentence: int) -> set[str]:
+    """The place a heading's noun says by itself: a lead vehicle is ahead; 'Vehicle(s) not making a maneuver,
+    opposite direction.' names where the case's vehicle comes from, said again where the text names it."""
+    if e.head == "vehicle" and sentence > 0:
+        return HEADLINE_PLACES
     return {"ahead"} if e.head.split()[0] in ("lead", "leading") else set()
 
 
