@@ -314,3 +314,14 @@ def test_a_lane_change_said_with_its_side_keeps_it_whatever_the_lane_numbers(pro
 ])
 def test_a_reports_designations_are_one_name_however_spelt(prompt, expected):
     assert agents(prompt) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A tanker is in the curb lane beside me.", ("truck", "go_straight", "right")),
+    ("V1 (ego) is in the curb lane. V2, a sedan, is in the median lane beside V1.", ("car", "go_straight", "left")),
+    ("On the motorway a lorry is in the kerb lane beside us.", ("truck", "go_straight", "left")),  # keeps left
+    ("V1 (ego) is northbound. V2 was making a left turn from the opposing left-turn lane.",
+     ("car", "turn_left", "road_of_straight")),
+])
+def test_lanes_named_by_their_edge_or_direction_place_who_is_in_them(prompt, expected):
+    assert expected in agents(prompt)

@@ -259,8 +259,9 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
     out = []
     for u in units:
         words = [t.word for t in u.tokens]
-        kerb = "nearside" in words or "near" in words and "side" in words or "inside" in words
-        far = "offside" in words or "off" in words and "side" in words
+        kerb = "nearside" in words or "near" in words and "side" in words or "inside" in words or \
+            bool({"kerb", "curb", "kerbside", "curbside"} & set(words))
+        far = "offside" in words or "off" in words and "side" in words or "median" in words
         if u.category == "positions" and u.meaning in swap and (kerb and u.meaning == "side_right"
                                                                or far and u.meaning == "side_left"):
             u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
