@@ -325,3 +325,13 @@ def test_a_reports_designations_are_one_name_however_spelt(prompt, expected):
 ])
 def test_lanes_named_by_their_edge_or_direction_place_who_is_in_them(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("V1 (ego) is westbound approaching the intersection. Ped 1 is standing on the northeast corner.",
+     ("pedestrian", "on_the_sidewalk", "front_right")),
+    ("The ego is eastbound at the crossroads; a woman waits on the north-west corner.",
+     ("pedestrian", "on_the_sidewalk", "front_left")),
+])
+def test_a_junctions_corner_by_the_compass_is_on_the_egos_side_of_it(prompt, expected):
+    assert expected in agents(prompt)

@@ -3686,6 +3686,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
 COMPASS_SIDES = {"side", "curb", "kerb", "sidewalk", "pavement", "shoulder", "edge", "verge", "footway", "footpath",
                  "corner", "curbside", "kerbside", "gutter", "crosswalk", "crossing", "leg", "approach", "sidewalks"}
 COMPASS_WORDS = {"north", "south", "east", "west"}
+CORNER_POINTS = {"northeast", "northwest", "southeast", "southwest"}
 DESTINATION_WORDS = {"onto", "into", "toward", "towards"}
 
 
@@ -3695,7 +3696,11 @@ def _add_compass(r: _Reader, e: Entity, u: Unit) -> None:
     'northbound ... turns left onto westbound 5th Ave' heads north, westbound is the road it turns onto."""
     point = u.meaning[len("compass_"):]
     at = lambda k: r.tokens[k].word if 0 <= k < len(r.tokens) else ""  # noqa: E731
-    bare = len(u.tokens) == 1 and u.tokens[0].word in COMPASS_WORDS
+    bare = all(t.word in COMPASS_WORDS | CORNER_POINTS for t in u.tokens) and len(u.tokens) <= 2
+    if point in CORNER_POINTS:  # "on the northeast corner": a corner is a place, never a heading
+        if at(u.end) in COMPASS_SIDES and not any(f.startswith("compassat_") for f in e.features):
+            e.features.add("compassat_" + point)
+        return
     if bare and at(u.start - 1) == "to" and at(u.start - 2) in COMPASS_WORDS:
         return  # "east to west": where it goes, said after where it comes from
     if bare and (at(u.start - 1) == "from" or at(u.start - 1) == "the" and at(u.start - 2) == "from" or
@@ -3730,9 +3735,12 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
             e.features.add("in_road")  # "walking east" across a northbound ego's road: across it
         if person and came is None and own in (left, right) and at is None:
             came = right if own == left else left  # "walking westbound" across a northbound ego: from its right
-        side = {left: "left", right: "right"}.get(came or at or "")
+        side = next((s for point, s in ((left, "left"), (right, "right")) if point in (came or at or "")), None)
+        # ("the northeast corner" of a westbound ego's junction is on its right: north is)
         if side and not _side(e) and (person or at is not None and came is None):
             e.features.add(f"side_{side}")  # "parked against the east curb", "runs east to west"
+            if at in CORNER_POINTS and not e.features & {"ahead", "behind", "level"}:
+                e.features.add("ahead")  # a corner of the junction the ego approaches
         elif person:
             continue
         elif came is not None and came in (left, right):
