@@ -5877,7 +5877,9 @@ def test_an_ego_given_two_compass_headings_reads_the_same_in_every_run(prompt):
     ("The ego passes a seventy-year-old man walking on the sidewalk.", 1),
     ("Two 12-year-olds cross ahead of the ego.", 2),
     ("A 16 yo on a bike rides out from a driveway on the right.", 1),
+    ("A 44-tonne artic waits at the lights ahead of the ego.", 1),
+    ("The ego follows a 12-metre bus and a 3-axle truck.", 2),
 ])
-def test_an_age_is_no_count(prompt, expected):
-    """'a 9-year-old child' is one child, not nine."""
+def test_an_age_or_a_measure_is_no_count(prompt, expected):
+    """'a 9-year-old child' is one child, not nine; 'a 44-tonne artic' one truck."""
     assert sum(1 for a in lower(prompt).scenario.agents() if not a.is_ego) == expected

@@ -610,11 +610,16 @@ AGE_NUMBER = (r"(?:\d{1,3}|(?:twenty|thirty|forty|fifty|sixty|seventy|eighty|nin
 AGE = re.compile(rf"\b{AGE_NUMBER}(?:[\s-]+(?:years?|yrs?)[\s-]+old(?P<noun>s)?|[\s-]*(?:yo|y/o))\b", re.I)
 
 
+MEASURE = re.compile(r"\b\d+(?:\.\d+)?-(?:tonnes?|tons?|tonner|t|foot|feet|ft|metres?|meters?|m|seaters?|axles?|"
+                     r"doors?|wheeled|passengers?|cylinders?|litres?|liters?)\b(?=\s+[a-z])", re.I)
+
+
 def _ages(text: str) -> str:
     """'a 9-year-old child', 'an 8 year old boy', 'two 12-year-olds': an age, no count ('young'; the plural
-    noun 'children')."""
+    noun 'children'); so is a measure said as an adjective ('our 44-tonne artics', 'a 12-metre bus')."""
     text = AGE.sub(lambda m: "children" if m.group("noun") else "young", text)
-    return re.sub(r"\ban young\b", "a young", text, flags=re.I)
+    text = MEASURE.sub("big", text)
+    return re.sub(r"\ban (young|big)\b", r"a \1", text, flags=re.I)
 
 
 def _street_corners(text: str) -> str:
