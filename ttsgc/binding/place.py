@@ -228,6 +228,7 @@ def _spacing(previous: Agent | None, agent: Agent) -> float:
 
 GOING_ROUND_S = 2.0  # how long before it would reach a body standing in its lane an ego going round it starts
 # its 3 s lane change: three quarters across by then (a sinusoid), clear of a truck's width
+LANE_CHANGE_ROOM_M = 3.0  # centre to centre beyond both half lengths: clear to change in beside another
 STANDING_FIRST_S = 1.5  # how long the body it goes round has stood when the ego pulls out
 
 
@@ -449,9 +450,26 @@ class Placer:
         what the ego runs before it starts its lane change, so the ego comes up behind it standing and then
         pulls out (told to change at once, it changed before the body was in its way: blocked nothing)."""
         limit = self.frame.approach.speed_limit_kmh
-        speed = _speed(agent, limit)
+        speed, ego_speed = _speed(agent, limit), _speed(self.scenario.ego, limit)
         return speed ** 2 / (2 * V.BRAKE_RATE[agent.behavior]) + \
-            (GOING_ROUND_S + STANDING_FIRST_S) * _speed(self.scenario.ego, limit)
+            (GOING_ROUND_S + STANDING_FIRST_S + self._passing_first_s(ego_speed, limit)) * ego_speed
+
+    def _passing_first_s(self, ego_speed: float, limit: float | None) -> float:
+        """How long the ego waits for the faster vehicles coming up behind in the lane it changes into to draw
+        level and get clear ahead (the emitter makes it let them pass first): the body it goes round stands
+        that much farther ahead, or the ego reaches it still waiting (a player's ego drives into it)."""
+        ego = self.scenario.ego
+        side = {"change_lane_to_left": "back_left", "change_lane_to_right": "back_right"}[ego.action]
+        ego_len, behind, longest = V.BODIES[ego.type][0], 0.0, 0.0
+        for other in self.scenario.stages[0].agents:
+            if other.is_ego or other.relative_to_ego != side or other.action != "go_straight":
+                continue
+            length = V.BODIES[other.type][0]
+            behind += _gap(other) + length  # queued one behind the other in that lane
+            faster = _speed(other, limit) - ego_speed
+            if faster > 0:
+                longest = max(longest, (behind + ego_len + LANE_CHANGE_ROOM_M) / faster)
+        return longest
 
     def _ego_goes_round(self, ego: BoundAgent, others: list[BoundAgent]) -> BoundAgent:
         """The ego's lane change starts once it is about to reach the body it goes round (the nearest such)."""

@@ -28,7 +28,7 @@ from lxml import etree
 from ttsgc import intent as I
 from ttsgc import xsd
 from ttsgc import vocabulary as V
-from ttsgc.binding.place import YIELD_SET_OFF_MPS2, BoundAgent, LanePos, LaterAction
+from ttsgc.binding.place import LANE_CHANGE_ROOM_M, YIELD_SET_OFF_MPS2, BoundAgent, LanePos, LaterAction
 from ttsgc.binding.scene import BoundScene
 from ttsgc.emit.lean_import import openscenario_writer
 from ttsgc.errors import TtsgcError
@@ -671,7 +671,6 @@ def ego_lane_when_stage_starts(scene: BoundScene, k: int) -> int:
     return ego.route[-1].lane if turned else ego.start.lane
 
 
-LANE_CHANGE_ROOM_M = 3.0  # centre to centre beyond both half lengths: clear to change in beside another
 MAKING_ROOM_SHARE = 0.7  # of its speed, while one drops back behind a vehicle level with it in the other lane
 MAKING_ROOM_RATE = 2.0  # m/s², easing off and back on
 
