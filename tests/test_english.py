@@ -5883,3 +5883,23 @@ def test_an_ego_given_two_compass_headings_reads_the_same_in_every_run(prompt):
 def test_an_age_or_a_measure_is_no_count(prompt, expected):
     """'a 9-year-old child' is one child, not nine; 'a 44-tonne artic' one truck."""
     assert sum(1 for a in lower(prompt).scenario.agents() if not a.is_ego) == expected
+
+
+# -- key=value tags ------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("ego=truck, lead=van braking, weather=rain, lanes=2",
+     [("car", "stop", "front"), ("truck", "go_straight", "ego")]),
+    ("lanes=3, rain, lead=car braking", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("weather=snow, time_of_day=night, ego=bus, oncoming=motorbike",
+     [("bus", "go_straight", "ego"), ("motorcycle", "go_straight", "front_left")]),
+])
+def test_a_key_value_tag_names_its_value_by_its_key(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, lanes", [("lanes=3, rain, lead=car braking", 3),
+                                           ("ego: car | lanes: 2 | fog", 2),
+                                           ("ego=bus, num_lanes=4, night", 4)])
+def test_a_counting_key_counts_its_value(prompt, lanes):
+    assert road(prompt).lanes == lanes

@@ -894,6 +894,36 @@ def _without_social_markup(text: str) -> str:
                        else m.group(1), text)
 
 
+@lru_cache(maxsize=1)
+def _tag_key_patterns() -> tuple[tuple[tuple[str, re.Pattern], ...], re.Pattern, re.Pattern]:
+    by_meaning: dict[str, list[str]] = {}
+    for meaning, words in _entries("tag_keys"):
+        by_meaning.setdefault(meaning, []).append(r"[\s_-]*".join(map(re.escape, words)))
+    keys = {meaning: "|".join(sorted(alternatives, key=len, reverse=True))
+            for meaning, alternatives in by_meaning.items()}
+    counts = tuple((meaning.split()[-1], re.compile(rf"(?<![\w=])(?:{alternatives})\s*[=:]\s*(\d+|[a-z]+)"
+                                                    rf"(?=\s*(?:[,|;/#]|$))", re.I | re.M))
+                   for meaning, alternatives in keys.items() if meaning.startswith("count "))
+    label = re.compile(rf"(?<![\w=])({keys['label']})\s*=\s*(?=\S)", re.I)
+    piped_label = re.compile(rf"(?<![\w=])({keys['label']})[ \t]*:[ \t]*(?=[^\s|])", re.I)
+    return counts, label, piped_label
+
+
+def _without_tag_keys(text: str) -> str:
+    """A scene typed as key=value tags ('ego=truck, lanes=2', 'weather: fog | lanes: 3') names each thing by its
+    key: the pair reads as the tag it stands for ('the ego truck', '2 lanes'), not as a sentence the colon ends
+    or a word glued to an '='."""
+    if "=" not in text and ":" not in text:
+        return text
+    counts, label, piped_label = _tag_key_patterns()
+    for noun, count in counts:
+        text = count.sub(lambda m: f"{m.group(1)} {noun}", text)
+    text = label.sub(lambda m: f"{m.group(1)} ", text)
+    # 'Weather: fog' heading a line of a catalogue ends its sentence as well; between pipes it is one tag of many
+    return "\n".join(piped_label.sub(lambda m: f"{m.group(1)} ", line) if "|" in line else line
+                      for line in text.split("\n"))
+
+
 LONGEST_SENTENCE = 100  # tokens; the corpus's longest sentence has 71. A run-on text ends a sentence at its next
 # comma past this, or at twice this, so that what is read per sentence stays bounded
 
@@ -902,7 +932,7 @@ def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = _scenario_identifiers(_lines(_screenplay(_without_social_markup(text))))
+    text = _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(text)))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _without_calques(text)
