@@ -5883,3 +5883,17 @@ def test_an_ego_given_two_compass_headings_reads_the_same_in_every_run(prompt):
 def test_an_age_or_a_measure_is_no_count(prompt, expected):
     """'a 9-year-old child' is one child, not nine; 'a 44-tonne artic' one truck."""
     assert sum(1 for a in lower(prompt).scenario.agents() if not a.is_ego) == expected
+
+
+# -- the same scene said other ways: sequence words, names of the ego, vehicle nouns --------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego waited at the give way line, after that pulled out to the right.",
+     [("car", "stop", "ego"), ("car", "turn_right", "ego")]),
+    ("Our bus stops at the red light and after that goes straight on.",
+     [("bus", "go_straight", "ego"), ("bus", "stop", "ego")]),
+    ("The test car waited behind the parked van, after that changed lanes to the left.",
+     [("car", "change_lane_to_left", "ego"), ("car", "stop", "ego"), ("car", "stop", "front")]),
+])
+def test_after_that_before_a_verb_goes_on_with_the_same_subject(prompt, expected):
+    assert agents(prompt) == expected

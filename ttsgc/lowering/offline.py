@@ -1911,8 +1911,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 nxt.word in ("another", "the", "other"):
             r.mark(u)
             continue  # "three cars swerve in, one after another": their order, not a later stage
-        if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and (
-                nxt.tokens[0].word.endswith("ing") or nxt.category == "actions"):
+        if u.category == "sequence" and u.base in ("after", "before") and nxt is not None and (
+                nxt.tokens[0].word.endswith("ing") or nxt.category == "actions"):  # the preposition alone: "after
+            # that turns right" is a later stage
             if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
                 skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
@@ -1933,10 +1934,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "sequence" and u.word == "then" and _then_of_a_verdict(units, k):
             r.mark(u)
             continue  # "then honestly that's fine, the car just holds its line": in that case, not later
-        if u.category == "sequence" and not (u.word == "after" and nxt is not None and
+        if u.category == "sequence" and not (u.base == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers") and
                                              not _a_wait_of_minutes(units, k)) and not (
-                u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
+                u.base == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
                 and prev_word not in ("for", "at", "all") and not (  # "for once", "at once"
                 u.word == "next" and len(u.tokens) == 1 and prev_word in ("the", "a", "this", "that", "its")):
             # "into the next lane": which lane, not what comes next
