@@ -30,7 +30,7 @@ from ttsgc.evaluate import agent_accuracy, agent_keys, load_gold, road_accuracy,
 from ttsgc.lowering import lower_prompt  # noqa: E402
 
 sys.path.insert(0, str(ROOT / "bench"))
-from rephrasings import REPHRASINGS as WRITERS_REWRITES  # noqa: E402
+from rephrasings import REPHRASINGS as WRITERS_REWRITES, ego_named  # noqa: E402
 
 PAPER = {"AA": 0.975, "RA": 0.940}  # GPT-4o with analysis and CoT, the paper's table "Results of plan quality"
 SUITES = (("dev", ROOT / "tests" / "corpus" / "dev"), ("test", ROOT / "tests" / "corpus" / "test"),
@@ -60,7 +60,7 @@ SIDE_BOUND = re.compile(r"nearside|offside|kerb|curb|undertak|inside|far ?side|n
                         r"|sidewalk|slow lane|fast lane|overtaking lane|\b[LR]\b", re.I)  # sides that do not mirror
 REPHRASINGS = {  # meaning-preserving rewrites: the gold stays the gold
     "the ego named the AV": lambda t: re.sub(r"\b([Tt])he ego( vehicle| car)?\b", lambda m: m.group(1) + "he AV", t),
-    "the ego named my car": lambda t: re.sub(r"\b[Tt]he ego( vehicle| car)?\b", "my car", t),
+    "the ego named my car": ego_named("my car"),
     "lower case": lambda t: t.lower().rstrip(".!"),
     "articles dropped": lambda t: re.sub(r"\b(the|a|an) ", "", t),
     "verbs rephrased": lambda t: re.sub(r"\bturns (left|right)\b", r"makes a \1 turn",

@@ -45,9 +45,12 @@ _EGO_BODY = r"(?: (?:vehicle|car))?(?! (?:truck|lorry|bus|van|motorcycle|motorbi
 
 
 def ego_named(name: str):
-    """'the ego' (or 'the ego vehicle', 'the ego car') named otherwise; an ego of another body keeps its name."""
+    """'the ego' (or 'the ego vehicle', 'the ego car') named otherwise; an ego of another body keeps its name, and
+    so does the role a vehicle is declared ('our van is the ego': 'our van is our vehicle' declares nothing)."""
     def rewrite(text: str) -> str:
         def named(m: re.Match) -> str:
+            if re.match(r"(?:my|our)\b", name, re.I) and re.search(r"\b(?:is|as|be|being|=)\s*$", text[:m.start()]):
+                return m.group(0)
             if m.group(1) == "T" and not name[0].isupper():
                 return name[0].upper() + name[1:]
             return name

@@ -5897,3 +5897,15 @@ def test_an_age_or_a_measure_is_no_count(prompt, expected):
 ])
 def test_after_that_before_a_verb_goes_on_with_the_same_subject(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Van 214 was turning left at a junction when an oncoming car went straight across. Van is the SUT.",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]),
+    ("Cab 7 stopped for a woman on the zebra. Can we get this with the cab as the system under test?",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("The taxi was waiting at the red light when a cyclist passed it on the right. The taxi is the subject vehicle.",
+     [("car", "stop", "ego"), ("cyclist", "go_straight", "back_right")]),
+])
+def test_a_vehicle_declared_the_ego_by_another_name_of_the_role_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
