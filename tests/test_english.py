@@ -5909,3 +5909,25 @@ def test_after_that_before_a_verb_goes_on_with_the_same_subject(prompt, expected
 ])
 def test_a_vehicle_declared_the_ego_by_another_name_of_the_role_is_the_ego(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The automated car was waiting at the lights while a cyclist crossed in front of it. Once the cyclist had "
+     "gone, the saloon turned right.", [("car", "stop", "ego"), ("car", "turn_right", "ego"),
+                                        ("cyclist", "cross_the_road", "front")]),
+    ("Can we show the hatchback changing to the left lane behind a slow bus?",
+     [("bus", "go_straight", "front"), ("car", "change_lane_to_left", "ego")]),
+    ("The driverless lorry waits at the junction for a cyclist passing from the left. Afterwards, the HGV turns left.",
+     [("cyclist", "go_straight", "road_of_left_turn"), ("truck", "stop", "ego"), ("truck", "turn_left", "ego")]),
+])
+def test_a_noun_of_the_egos_body_said_again_names_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, others", [
+    ("I was waiting at the lights. The sedan braked hard in front of me.", 1),  # a narrator's 'I' is no sedan
+    ("We were driving along the high street when the saloon pulled out of a side road on the left.", 1),
+    ("And here comes the blue car, cutting across from the left lane right in front of the ego car!", 1),
+])
+def test_a_body_noun_in_a_narrators_account_or_placed_by_the_ego_is_another_vehicle(prompt, others):
+    assert len([a for a in agents(prompt) if a[2] != "ego"]) == others, agents(prompt)

@@ -338,6 +338,12 @@ def compound_heads() -> frozenset[str]:
 
 
 @lru_cache(maxsize=1)
+def bodies() -> dict[str, str]:
+    """bodies.txt: a noun that names only a vehicle's body -> its type ('sedan': car, 'lorry': truck)."""
+    return {" ".join(words): kind for kind, words in _entries("bodies")}
+
+
+@lru_cache(maxsize=1)
 def categories() -> dict[str, frozenset[str]]:
     """categories.txt: a noun naming a kind of agent -> the agent types it covers ('emergency vehicle': police...)."""
     found: dict = {}

@@ -30,8 +30,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, categories, compound_heads, crews,
-                                    lexicon, loose_names, matches, read_number, tokenize, typologies)
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, bodies, categories, compound_heads,
+                                    crews, lexicon, loose_names, matches, read_number, tokenize, typologies)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -3098,14 +3098,16 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         while after < len(units) and _sentence_adverb(units[after]):
             after += 1  # "the car still has to deal with him", "the car just holds its line"
         nxt = units[after] if after < len(units) else None
-        if ego is not None and not plural and kind == ego.type and "other" not in words and (u.base in (
-                "car", "vehicle", "truck", "bus") or _names_the_ego_again(r, ego, u.base)) and (
+        if ego is not None and not plural and kind == ego.type and "other" not in words and (
+                u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
+                _names_the_ego_again(r, ego, u.base)) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
                 or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
-        if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
+        if ego is None and not plural and bodies().get(u.base) == "car" and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
-                not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u):
+                not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u) and \
+                not _ego_named_later_in_the_sentence(r, u):
             # ("the car overtakes us": the ego is named after it, so the car is another)
             ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
             r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
@@ -3226,6 +3228,16 @@ def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
         not e.is_ego and (e.head.split()[-1] == noun or noun in e.aliases) for e in r.entities)
 
 
+GENERAL_BODIES = {"car", "vehicle", "truck", "bus"}
+SELF_NAMES = {"i", "me", "we", "us", "you", "mine", "ours", "yours", "my own"}
+
+
+def _named_by_a_vehicle_noun(ego: Entity) -> bool:
+    """'The test car ... the sedan': an ego told of by a vehicle noun may be named again by another noun of its
+    body; a narrator's 'I' or 'we' is not, and 'the sedan' in their account is someone else's."""
+    return any(name.split()[-1] not in SELF_NAMES for name in ego.aliases | {ego.head} if name)
+
+
 def _past_tense_verb(u: Unit) -> bool:
     """A word the lexicon does not know, in the past tense ('the car behaved'): the verb after a subject."""
     return u.category == "word" and u.word.endswith("ed") and len(u.word) > 4 and \
@@ -3287,6 +3299,30 @@ def _placed_by_the_ego_in_its_relative(r: _Reader, noun: Unit) -> bool:
         if x.category == "agents" and x.meaning == "ego" or x.category == "positions" and {
                 t.word for t in x.tokens} & {"us", "our", "me", "my", "ego", "you", "your"}:
             return True
+    return False
+
+
+PLACING_WORDS = {"of", "to", "past", "behind", "beside", "alongside", "into", "at", "towards", "toward", "near"}
+
+
+def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
+    """'here comes the hatchback, cutting across right in front of the ego car': a sentence that places a vehicle
+    by the ego named after it, past the vehicle's clause, tells of another vehicle ('the car pulls up ..., and
+    our car goes': the ego named again as a subject is no such place)."""
+    sentence = u.tokens[-1].sentence
+    for k, x in enumerate(r.units):
+        if x.start < u.end or x.tokens[0].sentence != sentence:
+            continue
+        if x.category == "agents" and x.meaning not in ("ego", "none"):
+            return False  # "the car cope with a motorbike coming up behind us": the motorbike's place
+        if x.category == "positions" and {t.word for t in x.tokens} & {"us", "me", "ego", "you"}:
+            return True  # "... then slams on its brakes in front of me"
+        if x.category == "agents" and x.meaning == "ego":
+            before = k - 1
+            while before >= 0 and r.units[before].word in ("the", "our", "my"):
+                before -= 1
+            if before >= 0 and (r.units[before].category == "positions" or r.units[before].word in PLACING_WORDS):
+                return True
     return False
 
 
