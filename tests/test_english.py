@@ -5931,3 +5931,14 @@ def test_a_noun_of_the_egos_body_said_again_names_the_ego(prompt, expected):
 ])
 def test_a_body_noun_in_a_narrators_account_or_placed_by_the_ego_is_another_vehicle(prompt, others):
     assert len([a for a in agents(prompt) if a[2] != "ego"]) == others, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("An oncoming car and the AV reach a junction at the same time; the AV agent must yield.",
+     [("car", "go_straight", "road_of_straight"), ("car", "stop", "ego")]),
+    ("Behind the SUT truck a small car follows.", [("car", "go_straight", "back"), ("truck", "go_straight", "ego")]),
+    ("The AV truck turns right while a cyclist rides straight on its right.",
+     [("cyclist", "go_straight", "right"), ("truck", "turn_right", "ego")]),
+])
+def test_a_vehicle_noun_after_another_name_of_the_ego_is_the_egos_own(prompt, expected):
+    assert agents(prompt) == expected

@@ -470,13 +470,17 @@ def _names_no_agent(units: list[Unit]) -> list[Unit]:
 
 
 def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
-    """'Ego PKW turns right', 'behind the ego LKW', 'our hero's taxi': a vehicle noun right after the word ego
-    (or the ego's possessive) is the ego's own noun, as in 'the ego truck', not another agent."""
+    """'Ego PKW turns right', 'behind the ego LKW', 'our hero's taxi', 'the AV truck', 'the SUT agent': a vehicle
+    (or agent) noun right after the word ego, another name of the ego's role, or the ego's possessive is the ego's
+    own noun, as in 'the ego truck', not another agent."""
     out: list[Unit] = []
     for u in units:
         prev = out[-1] if out else None
-        if prev is not None and u.category == "agents" and u.meaning in V.EGO_TYPES and \
-                (prev.tokens[-1].word == "ego" or prev.tokens[-1].possessive and prev.category == "agents"
+        role = prev is not None and prev.category == "agents" and prev.meaning == "ego" and \
+            prev.tokens[-1].word not in SELF_NAMES and not prev.tokens[-1].plural  # "the AV", not "we"
+        if prev is not None and u.category == "agents" and (u.meaning in V.EGO_TYPES or role and u.meaning == "generic"
+                                                            and u.base in ("agent", "actor", "participant")) and \
+                (prev.tokens[-1].word == "ego" or role or prev.tokens[-1].possessive and prev.category == "agents"
                  and prev.meaning == "ego") and \
                 prev.tokens[-1].sentence == u.tokens[0].sentence and not u.tokens[-1].plural:
             if prev.category == "agents" and prev.meaning == "ego":
