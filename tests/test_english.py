@@ -5942,3 +5942,22 @@ def test_a_body_noun_in_a_narrators_account_or_placed_by_the_ego_is_another_vehi
 ])
 def test_a_vehicle_noun_after_another_name_of_the_ego_is_the_egos_own(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, mover", [
+    ("We were heading north, two lanes our side and a white SUV in the right lane just ahead of us cut across into "
+     "our lane.", ("car", "change_lane_to_left", "front_right")),
+    ("We were heading west on the bypass, three lanes our side and a dark van in the left lane just ahead of us cut "
+     "across into our lane.", ("car", "change_lane_to_right", "front_left")),
+])
+def test_and_before_a_new_subject_with_adjectives_and_its_verb_opens_a_clause(prompt, mover):
+    assert agents(prompt) == sorted([mover, ("car", "go_straight", "ego")])
+
+
+@pytest.mark.parametrize("prompt", [
+    "A sedan pulled up on your left a second before you did and an SUV is stopped across from you waiting to turn "
+    "left.",
+    "A taxi pulled up on my right just before I did and a bus is waiting across from me to turn left.",
+])
+def test_a_clause_ended_by_its_auxiliary_alone_gives_its_verb_to_no_one_after_and(prompt):
+    assert ("car", "turn_left", "ego") not in agents(prompt), agents(prompt)

@@ -2181,6 +2181,7 @@ def _then_of_a_verdict(units: list[Unit], k: int) -> bool:
 CONDITION_STATES = {"clear", "safe", "free", "possible", "ready", "past", "through", "gone", "done"}
 COPULAS = {"is", "are", "was", "were", "am"}
 SUBJECT_PRONOUNS = {"we", "i", "it", "they", "he", "she", "you"}
+PRO_VERBS = {"did", "does", "do", "had", "has", "have", "could", "would", "can", "will", "should"}
 
 
 def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) -> bool:
@@ -2194,12 +2195,14 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     if placed and rest[0].word in ("i", "we") and not any(u.word == "both" for u in rest) and any(
             x.category == "actions" for x in rest[1:3]):
         return True  # "an ambulance comes up behind me and I pull over"
-    if not (_has_agent(current) and any(u.category == "word" and u.word in COPULAS for u in current)):
+    pro_verb = bool(current) and current[-1].category == "word" and current[-1].word in PRO_VERBS  # "a second
+    # before you did and an SUV is stopped": the clause's verb said again by its auxiliary alone
+    if not (_has_agent(current) and (pro_verb or any(u.category == "word" and u.word in COPULAS for u in current))):
         return False
     starts = rest[0].category == "agents" and (rest[0].meaning == "ego" or bool(rest[0].tokens[-1].label)) or \
         rest[0].word in SUBJECT_PRONOUNS or (  # "V2 is eastbound and V3 is westbound": a named one's own clause
         rest[0].word in ("the", "a", "an", "this", "that", "some", "another") and len(rest) > 1
-        and rest[1].category == "agents" and rest[1].meaning != "none")  # "... and this guy swerves"
+        and _starts_noun(units, k + 2))  # "... and this guy swerves", "... and a white SUV ... cut across"
     if not starts:
         return False
     for x in units[k + 2:k + 10]:
@@ -2287,7 +2290,8 @@ def _starts_noun(units: list[Unit], k: int) -> bool:
     for u in units[k:k + 4]:
         if u.category == "agents":
             return u.meaning != "none"
-        if not (u.category in ("numbers", "number", "behaviours") or
+        if not (u.category in ("numbers", "number", "behaviours") or u.word in COLOURS | {"dark", "light", "white",
+                                                                                       "black"} or
                 (u.category == "word" and u.word in DETERMINERS | {"and"}) or
                 (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS)
                 or (u.category == "positions" and u.word in ADJECTIVE_POSITIONS and len(u.tokens) == 1)):
