@@ -5961,3 +5961,16 @@ def test_and_before_a_new_subject_with_adjectives_and_its_verb_opens_a_clause(pr
 ])
 def test_a_clause_ended_by_its_auxiliary_alone_gives_its_verb_to_no_one_after_and(prompt):
     assert ("car", "turn_left", "ego") not in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two lorries, a coach are waiting at the red light ahead of us.",
+     [("bus", "stop", "front"), ("truck", "stop", "front"), ("truck", "stop", "front")]),
+    ("A cyclist, a jogger are crossing in front of the ego from the right.",
+     [("cyclist", "cross_the_road", "front_right"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("A van, a small hatchback have stopped on the hard shoulder ahead on the left.",
+     [("car", "stop", "front_left"), ("car", "stop", "front_left")]),
+    ("A truck, a long articulated one, is parked ahead of the ego.", [("truck", "stop", "front")]),  # apposition
+])
+def test_noun_phrases_listed_with_a_comma_share_the_plural_verb_after_them(prompt, expected):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == expected

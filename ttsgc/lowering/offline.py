@@ -2021,6 +2021,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             relative_ends = link in RELATIVES and nxt is not None and nxt.category == "actions" and \
                 _has_agent(current)  # "a man, whom I know to be its driver, walked out": the man's verb
             the_one = _the_one_after(current, units, k + 1)  # "a bus, the one that was stopped, moves off"
+            if _a_list_sharing_a_plural_verb(current, units, k):
+                current.append(u)  # "two cars, a motorbike are coming": one subject, listed with a comma
+                continue
             if (_has_verb(current) or condition or new_noun or joined or order or relative_ends or the_one) \
                     and not short_name \
                     and not ego_named \
@@ -2282,6 +2285,30 @@ def _subject_and_verb_follow(units: list[Unit], k: int) -> bool:
                 units[j + 1].tokens[0].sentence == u.tokens[0].sentence
         if not (u.category == "word" and u.word in DETERMINERS):
             return False
+    return False
+
+
+PLURAL_VERBS = {"are", "were", "have"}
+
+
+def _a_list_sharing_a_plural_verb(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'two cars, a motorbike are coming', 'the ego, a motorcycle on its left wait': a noun phrase, a comma and
+    a singular noun phrase whose verb agrees only with both: a list without its 'and', no apposition, no clause."""
+    if not _has_agent(current) or _has_verb(current) or any(x.category == "comma" for x in current) or \
+            not _starts_noun(units, k + 1):
+        return False
+    head = next(j for j in range(k + 1, len(units)) if units[j].category == "agents")
+    if units[head].tokens[-1].plural or units[head].meaning == "ego":
+        return False
+    for x in units[head + 1:head + 12]:
+        if x.tokens[0].sentence != units[head].tokens[0].sentence or x.category == "agents" and \
+                x.meaning not in ("none", "ego") or x.word in CLAUSE_WORDS:
+            return False
+        if x.category == "word" and x.word in COPULAS | AUXILIARIES - {"to", "and", "then", "also", "keeps"}:
+            return x.word in PLURAL_VERBS
+        if x.category == "actions":
+            verb = x.tokens[0]
+            return not x.tokens[0].word.endswith("ing") and verb.word == verb.base and not verb.word.endswith("s")
     return False
 
 
