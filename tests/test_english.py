@@ -5974,3 +5974,14 @@ def test_a_clause_ended_by_its_auxiliary_alone_gives_its_verb_to_no_one_after_an
 ])
 def test_noun_phrases_listed_with_a_comma_share_the_plural_verb_after_them(prompt, expected):
     assert [a for a in agents(prompt) if a[2] != "ego"] == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("For our project we consider a cut-in, where a black sedan travelling in the left lane, slightly ahead of the "
+     "AV, changes lanes to the right directly in front of the AV.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("In this paper we study a cut-in where a white van in the right lane, just ahead of the SUT, moves left in "
+     "front of the SUT.", [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+])
+def test_authors_we_beside_an_ego_named_by_any_role_name_is_no_vehicle(prompt, expected):
+    assert agents(prompt) == expected

@@ -61,15 +61,21 @@ ROLE_BODIES = {"bus", "truck", "lorry", "van", "motorcycle", "motorbike", "taxi"
 
 
 @lru_cache(maxsize=1)
-def _declarations() -> tuple[re.Pattern, re.Pattern]:
-    """'Our van is the ego', '... as the SUT', '... is the vehicle under test': a vehicle declared the ego by any
-    of the lexicon's names of the ego's role (no pronoun, no owner, no body of its own: 'the ego truck' says more)."""
+def _ego_roles() -> str:
+    """The lexicon's names of the ego's role ('ego', 'SUT', 'AV', 'vehicle under test') as a pattern: no pronoun,
+    no owner, no body of its own ('the ego truck' says more)."""
     roles = {" ".join(words) for words, (category, meaning) in lexicon().phrases.items()
              if category == "agents" and meaning == "ego" and len(" ".join(words)) > 1
              and words[0] not in ("my", "our", "your", "the", "i", "me", "we", "us", "you", "mine", "ours", "yours")
              and not ROLE_BODIES & set(words) and "'" not in " ".join(words) and not words[-1].startswith("participant")}
-    role = "|".join(r"\s+".join(map(re.escape, name.split())) for name in sorted(roles, key=len, reverse=True))
-    pattern = DECLARATION_PATTERN.replace("EGO_ROLE", role)
+    return "|".join(r"\s+".join(map(re.escape, name.split())) for name in sorted(roles, key=len, reverse=True))
+
+
+@lru_cache(maxsize=1)
+def _declarations() -> tuple[re.Pattern, re.Pattern]:
+    """'Our van is the ego', '... as the SUT', '... is the vehicle under test': a vehicle declared the ego by any
+    name of the ego's role."""
+    pattern = DECLARATION_PATTERN.replace("EGO_ROLE", _ego_roles())
     return re.compile(pattern, re.I), re.compile(pattern.replace(_NOUN, r"([a-z]+)"), re.I)
 FLEET_ADJECTIVES = {"delivery", "box", "transit", "panel", "courier", "company", "work", "hire", "rental", "fleet",
                     "own", "passenger", "cargo", "parcel", "school", "city", "service"}
@@ -349,9 +355,9 @@ AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report
 
 
 def _authors(text: str, notes: list[str]) -> str:
-    """'For our project we consider a cut-in manoeuvre ... the ego': the authors of a report that names its ego say
-    'we' of their work, not of a vehicle."""
-    if not re.search(r"\bthe ego\b|\bego vehicle\b", text, re.I) or not AUTHORS.search(text):
+    """'For our project we consider a cut-in manoeuvre ... the ego' (or 'the AV', 'the SUT'): the authors of a report
+    that names its ego say 'we' of their work, not of a vehicle."""
+    if not re.search(rf"\bthe\s+(?:{_ego_roles()})\b|\bego vehicle\b", text, re.I) or not AUTHORS.search(text):
         return text
     notes.append("read the report's 'we' as its authors")
     return AUTHORS.sub(lambda m: "", text)
