@@ -5985,3 +5985,14 @@ def test_noun_phrases_listed_with_a_comma_share_the_plural_verb_after_them(promp
 ])
 def test_authors_we_beside_an_ego_named_by_any_role_name_is_no_vehicle(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("later", ["afterwards", "subsequently", "then"])
+def test_a_catalogue_summary_line_before_its_phases_keeps_only_its_start_whatever_word_says_later(later):
+    prompt = ("Case: Overtaking a slow tractor\n"
+              f"Ego: follows the tractor, {later} pulls out to overtake\n"
+              "Actors: tractor ahead in the ego lane; oncoming van in the opposite lane\n"
+              "Phase 1: ego follows the tractor while the van approaches\n"
+              "Phase 2: after the van has passed, ego changes to the left lane and overtakes")
+    assert [a for a in agents(prompt) if a[2] == "ego"] == [("car", "change_lane_to_left", "ego"),
+                                                          ("car", "go_straight", "ego")]
