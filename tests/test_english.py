@@ -5996,3 +5996,16 @@ def test_a_catalogue_summary_line_before_its_phases_keeps_only_its_start_whateve
               "Phase 2: after the van has passed, ego changes to the left lane and overtakes")
     assert [a for a in agents(prompt) if a[2] == "ego"] == [("car", "change_lane_to_left", "ego"),
                                                           ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "We waited for the cyclist to pass, and after that we made our turn.",
+    "I stopped for the jogger at the junction, and after that I made my turn.",
+    "We gave way to the bus at the junction, after that we took our turn.",
+])
+def test_someones_turn_after_a_word_of_sequence_is_a_turn_not_a_turning_named_as_a_place(prompt):
+    assert any(p == "ego" and a.startswith("turn") for _, a, p in agents(prompt)), agents(prompt)
+
+
+def test_a_turning_named_as_a_place_is_still_nobodys_turn():
+    assert not any(a.startswith("turn") for _, a, _ in agents("They got stuck just past the Elm Street turn."))

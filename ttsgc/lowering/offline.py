@@ -837,6 +837,8 @@ def _turning_named_as_a_place(tokens: list[Token], i: int) -> bool:
     while k >= 0 and tokens[k].sentence == tokens[i].sentence and (
             tokens[k].possessive or tokens[k].word not in DEFINITE | INDEFINITE) and i - k <= 4 and \
             tokens[k].word not in PLACE_OF_A_TURNING:
+        if tokens[k].word in SUBJECT_PRONOUNS | {"our", "my", "your", "his", "her", "its", "their"}:
+            return False  # "after that we made our turn": someone's turn, a clause of its own, no place
         k -= 1  # back over the turning's name: "the Sainsbury's", "the Elm Street"
     return k > 0 and tokens[k].word in DEFINITE | INDEFINITE and tokens[k - 1].word in PLACE_OF_A_TURNING or \
         k >= 0 and tokens[k].base in ("miss",)
