@@ -6009,3 +6009,13 @@ def test_someones_turn_after_a_word_of_sequence_is_a_turn_not_a_turning_named_as
 
 def test_a_turning_named_as_a_place_is_still_nobodys_turn():
     assert not any(a.startswith("turn") for _, a, _ in agents("They got stuck just past the Elm Street turn."))
+
+
+@pytest.mark.parametrize("prompt, other", [
+    ("Ego had to take a left turn at the crossroads, and one car was standing on the road where ego was going.",
+     ("car", "stop", "at_the_destination")),
+    ("The ego was turning right at the crossroads while a van was parked on the road where the ego was heading.",
+     ("car", "stop", "at_the_destination")),
+])
+def test_the_road_the_ego_heads_for_is_its_destination_in_any_tense(prompt, other):
+    assert other in agents(prompt), agents(prompt)
