@@ -194,7 +194,9 @@ _SUBJECT = (r"\b((?:[Tt]he|[Aa]n?|[Mm]y|[Oo]ur|[Aa]nother|[Tt]hat|[Tt]his) (?:(?
             r"|[Ii]t|[Hh]e|[Ss]he"
             r"|[Ee]go|[Tt]hey|[Ww]e|I|[Yy]ou)")
 # A noun that is no subject although a verb-like word follows it: 'at the bus stops', 'the left turns'.
-_NOT_A_SUBJECT_BEFORE = r"(?<!\bat )(?<!\bto )(?<!\bof )(?<!\bin )(?<!\bon )(?<!\bfor )(?<!\bby )(?<!\bwith )"
+_NOT_A_SUBJECT_BEFORE = (r"(?<!\bat )(?<!\bto )(?<!\bof )(?<!\bin )(?<!\bon )(?<!\bfor )(?<!\bby )(?<!\bwith )(?<!\bw/ )"
+                         r"(?<!there's )(?<!there is )(?<!there was )(?<!there were )(?<!\bsee )(?<!\bsaw )")
+# ('a scene with a fire engine parked', "there's a car parked": a participle after its noun, no verb of a subject)
 _HYPOTHETICAL = re.compile(r"\b(if|unless|should|would|could|will|shall|must|may|might|can|wants?|let|suppose"
                            r"|imagine|expected|expect|when(ever)?|once|until|before|after|as soon as|every|each"
                            r"|always|usually|often|never|please|generate|create|make|simulate|test|need|needs)\b|\?",
