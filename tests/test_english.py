@@ -6019,3 +6019,13 @@ def test_a_turning_named_as_a_place_is_still_nobodys_turn():
 ])
 def test_the_road_the_ego_heads_for_is_its_destination_in_any_tense(prompt, other):
     assert other in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "One cyclist rides across the ladder crosswalk when the ego is fifteen metres away and one car waits behind the "
+    "ego.",
+    "A child runs out when the ego is 20 m away and two cars wait behind the ego.",
+])
+def test_and_before_a_counted_subject_and_its_verb_ends_a_condition_with_a_copula(prompt):
+    assert ("car", "stop", "ego") not in agents(prompt), agents(prompt)
+    assert ("car", "stop", "back") in agents(prompt)

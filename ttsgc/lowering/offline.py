@@ -2206,8 +2206,9 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
         return False
     starts = rest[0].category == "agents" and (rest[0].meaning == "ego" or bool(rest[0].tokens[-1].label)) or \
         rest[0].word in SUBJECT_PRONOUNS or (  # "V2 is eastbound and V3 is westbound": a named one's own clause
-        rest[0].word in ("the", "a", "an", "this", "that", "some", "another") and len(rest) > 1
-        and _starts_noun(units, k + 2))  # "... and this guy swerves", "... and a white SUV ... cut across"
+        (rest[0].word in ("the", "a", "an", "this", "that", "some", "another") or rest[0].category in (
+            "number", "numbers")) and len(rest) > 1 and _starts_noun(units, k + 2))  # "... and this guy swerves",
+    # "... and a white SUV ... cut across", "when the ego is 15 m away and one car waits behind it"
     if not starts:
         return False
     for x in units[k + 2:k + 10]:
