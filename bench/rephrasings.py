@@ -46,11 +46,15 @@ _EGO_BODY = r"(?: (?:vehicle|car))?(?! (?:truck|lorry|bus|van|motorcycle|motorbi
 
 def ego_named(name: str):
     """'the ego' (or 'the ego vehicle', 'the ego car') named otherwise; an ego of another body keeps its name, and
-    so does the role a vehicle is declared ('our van is the ego': 'our van is our vehicle' declares nothing)."""
+    so does the role a vehicle is declared or set beside ('our van is the ego': 'our van is our vehicle' declares
+    nothing)."""
     def rewrite(text: str) -> str:
         def named(m: re.Match) -> str:
-            if re.match(r"(?:my|our)\b", name, re.I) and re.search(r"\b(?:is|as|be|being|=)\s*$", text[:m.start()]):
-                return m.group(0)
+            if re.match(r"(?:my|our)\b", name, re.I) and (
+                    re.search(r"(?:\b(?:is|as|be|being)|=|[(,\u2014-])\s*$", text[:m.start()]) or
+                    re.match(r"\s*(?:,\s+[A-Z]+'s|lane\b)", text[m.end():])):
+                return m.group(0)  # a declaration or an apposition ("her SUV (the ego)", "the ego, PRIYA's hatch"),
+                # or a compound ("the ego lane"): an owner's name says no such thing
             if m.group(1) == "T" and not name[0].isupper():
                 return name[0].upper() + name[1:]
             return name
