@@ -169,7 +169,6 @@ def _case_keeping(pairs):
 
 
 def contracted(text: str) -> str:
-    # 'it is' before a noun of time or weather stays ('it is raining' -> "it's raining" is fine too)
     return _case_keeping(_CONTRACTIONS)(text)
 
 
@@ -193,7 +192,6 @@ _TENSES = (("turns", "turned"), ("goes", "went"), ("stops", "stopped"), ("crosse
            ("makes", "made"), ("takes", "took"), ("appears", "appeared"), ("emerges", "emerged"),
            ("starts", "started"), ("begins", "began"), ("tries", "tried"), ("wants", "wanted"),
            ("needs", "needed"), ("sits", "sat"), ("has", "had"), ("rides", "rode"))
-_PLURAL_PRESENT = {"is": "are", "was": "were", "has": "have"}
 _SUBJECT = (r"\b((?:[Tt]he|[Aa]n?|[Mm]y|[Oo]ur|[Aa]nother|[Tt]hat|[Tt]his) (?:(?!its |his |her |their )[\w-]+ )?[\w-]+"
             r"|[Ii]t|[Hh]e|[Ss]he"
             r"|[Ee]go|[Tt]hey|[Ww]e|I|[Yy]ou)")
@@ -213,7 +211,6 @@ def present_to_past(text: str) -> str:
     if _HYPOTHETICAL.search(text) or _tense_count(text, [past for _, past in _TENSES if past != "cut"]):
         return text
     table = dict(_TENSES)
-    table.update({"are": "were"})
 
     def verb(m: re.Match) -> str:
         return f"{m.group(1)} {table[m.group(2)]}"
