@@ -3,7 +3,7 @@
     python bench/lowering_eval.py                 # offline rules on every suite
     python bench/lowering_eval.py --misses dev    # also list each prompt of the dev split that is not exact
     python bench/lowering_eval.py --only dev      # one suite only (repeatable)
-    python bench/lowering_eval.py --only dev --rephrased dev  # also: dev read mirrored and rephrased
+    python bench/lowering_eval.py --only dev --rephrased dev  # also: dev read mirrored and rephrased (bench/rephrasings.py)
     python bench/lowering_eval.py --llm anthropic # the LLM lowering (ANTHROPIC_API_KEY), with tokens per scene
 
 Suites: tests/corpus/{dev,test}/<voice>/*.txt with gold *.tsg beside (rules are written against dev only; test
@@ -28,6 +28,9 @@ sys.path.insert(0, str(ROOT))
 from ttsgc.errors import TtsgcError  # noqa: E402
 from ttsgc.evaluate import agent_accuracy, agent_keys, load_gold, road_accuracy, weather_accuracy  # noqa: E402
 from ttsgc.lowering import lower_prompt  # noqa: E402
+
+sys.path.insert(0, str(ROOT / "bench"))
+from rephrasings import REPHRASINGS as WRITERS_REWRITES, ego_named  # noqa: E402
 
 PAPER = {"AA": 0.975, "RA": 0.940}  # GPT-4o with analysis and CoT, the paper's table "Results of plan quality"
 SUITES = (("dev", ROOT / "tests" / "corpus" / "dev"), ("test", ROOT / "tests" / "corpus" / "test"),
@@ -57,12 +60,13 @@ SIDE_BOUND = re.compile(r"nearside|offside|kerb|curb|undertak|inside|far ?side|n
                         r"|sidewalk|slow lane|fast lane|overtaking lane|\b[LR]\b", re.I)  # sides that do not mirror
 REPHRASINGS = {  # meaning-preserving rewrites: the gold stays the gold
     "the ego named the AV": lambda t: re.sub(r"\b([Tt])he ego( vehicle| car)?\b", lambda m: m.group(1) + "he AV", t),
-    "the ego named my car": lambda t: re.sub(r"\b[Tt]he ego( vehicle| car)?\b", "my car", t),
+    "the ego named my car": ego_named("my car"),
     "lower case": lambda t: t.lower().rstrip(".!"),
     "articles dropped": lambda t: re.sub(r"\b(the|a|an) ", "", t),
     "verbs rephrased": lambda t: re.sub(r"\bturns (left|right)\b", r"makes a \1 turn",
                                         re.sub(r"\bgoes straight\b", "continues straight ahead",
                                                re.sub(r"\bstops\b", "comes to a halt", t))),
+    **WRITERS_REWRITES,
 }
 
 
@@ -91,6 +95,7 @@ def rephrased(folder: Path) -> None:
         except TtsgcError:
             worse += 1
     print(f"  {'mirrored':26} {worse:4} of {total} read otherwise than the mirrored gold")
+    as_written: dict[Path, float] = {}
     for name, rewrite in REPHRASINGS.items():
         worse = total = 0
         for p in prompts:
@@ -100,7 +105,9 @@ def rephrased(folder: Path) -> None:
             total += 1
             gold = load_gold(p.with_suffix(".tsg"))
             try:
-                before = agent_accuracy(gold, lower_prompt(text, "offline").scenario)
+                if p not in as_written:
+                    as_written[p] = agent_accuracy(gold, lower_prompt(text, "offline").scenario)
+                before = as_written[p]
                 worse += agent_accuracy(gold, lower_prompt(rewrite(text), "offline").scenario) < before
             except TtsgcError:
                 worse += 1

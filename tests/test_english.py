@@ -5903,3 +5903,149 @@ def test_a_key_value_tag_names_its_value_by_its_key(prompt, expected):
                                            ("ego=bus, num_lanes=4, night", 4)])
 def test_a_counting_key_counts_its_value(prompt, lanes):
     assert road(prompt).lanes == lanes
+
+
+# -- the same scene said other ways: sequence words, names of the ego, vehicle nouns --------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego waited at the give way line, after that pulled out to the right.",
+     [("car", "stop", "ego"), ("car", "turn_right", "ego")]),
+    ("Our bus stops at the red light and after that goes straight on.",
+     [("bus", "go_straight", "ego"), ("bus", "stop", "ego")]),
+    ("The test car waited behind the parked van, after that changed lanes to the left.",
+     [("car", "change_lane_to_left", "ego"), ("car", "stop", "ego"), ("car", "stop", "front")]),
+])
+def test_after_that_before_a_verb_goes_on_with_the_same_subject(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Van 214 was turning left at a junction when an oncoming car went straight across. Van is the SUT.",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]),
+    ("Cab 7 stopped for a woman on the zebra. Can we get this with the cab as the system under test?",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("The taxi was waiting at the red light when a cyclist passed it on the right. The taxi is the subject vehicle.",
+     [("car", "stop", "ego"), ("cyclist", "go_straight", "back_right")]),
+])
+def test_a_vehicle_declared_the_ego_by_another_name_of_the_role_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The automated car was waiting at the lights while a cyclist crossed in front of it. Once the cyclist had "
+     "gone, the saloon turned right.", [("car", "stop", "ego"), ("car", "turn_right", "ego"),
+                                        ("cyclist", "cross_the_road", "front")]),
+    ("Can we show the hatchback changing to the left lane behind a slow bus?",
+     [("bus", "go_straight", "front"), ("car", "change_lane_to_left", "ego")]),
+    ("The driverless lorry waits at the junction for a cyclist passing from the left. Afterwards, the HGV turns left.",
+     [("cyclist", "go_straight", "road_of_left_turn"), ("truck", "stop", "ego"), ("truck", "turn_left", "ego")]),
+])
+def test_a_noun_of_the_egos_body_said_again_names_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, others", [
+    ("I was waiting at the lights. The sedan braked hard in front of me.", 1),  # a narrator's 'I' is no sedan
+    ("We were driving along the high street when the saloon pulled out of a side road on the left.", 1),
+    ("And here comes the blue car, cutting across from the left lane right in front of the ego car!", 1),
+])
+def test_a_body_noun_in_a_narrators_account_or_placed_by_the_ego_is_another_vehicle(prompt, others):
+    assert len([a for a in agents(prompt) if a[2] != "ego"]) == others, agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("An oncoming car and the AV reach a junction at the same time; the AV agent must yield.",
+     [("car", "go_straight", "road_of_straight"), ("car", "stop", "ego")]),
+    ("Behind the SUT truck a small car follows.", [("car", "go_straight", "back"), ("truck", "go_straight", "ego")]),
+    ("The AV truck turns right while a cyclist rides straight on its right.",
+     [("cyclist", "go_straight", "right"), ("truck", "turn_right", "ego")]),
+])
+def test_a_vehicle_noun_after_another_name_of_the_ego_is_the_egos_own(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, mover", [
+    ("We were heading north, two lanes our side and a white SUV in the right lane just ahead of us cut across into "
+     "our lane.", ("car", "change_lane_to_left", "front_right")),
+    ("We were heading west on the bypass, three lanes our side and a dark van in the left lane just ahead of us cut "
+     "across into our lane.", ("car", "change_lane_to_right", "front_left")),
+])
+def test_and_before_a_new_subject_with_adjectives_and_its_verb_opens_a_clause(prompt, mover):
+    assert agents(prompt) == sorted([mover, ("car", "go_straight", "ego")])
+
+
+@pytest.mark.parametrize("prompt", [
+    "A sedan pulled up on your left a second before you did and an SUV is stopped across from you waiting to turn "
+    "left.",
+    "A taxi pulled up on my right just before I did and a bus is waiting across from me to turn left.",
+])
+def test_a_clause_ended_by_its_auxiliary_alone_gives_its_verb_to_no_one_after_and(prompt):
+    assert ("car", "turn_left", "ego") not in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two lorries, a coach are waiting at the red light ahead of us.",
+     [("bus", "stop", "front"), ("truck", "stop", "front"), ("truck", "stop", "front")]),
+    ("A cyclist, a jogger are crossing in front of the ego from the right.",
+     [("cyclist", "cross_the_road", "front_right"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("A van, a small hatchback have stopped on the hard shoulder ahead on the left.",
+     [("car", "stop", "front_left"), ("car", "stop", "front_left")]),
+    ("A truck, a long articulated one, is parked ahead of the ego.", [("truck", "stop", "front")]),  # apposition
+])
+def test_noun_phrases_listed_with_a_comma_share_the_plural_verb_after_them(prompt, expected):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("For our project we consider a cut-in, where a black sedan travelling in the left lane, slightly ahead of the "
+     "AV, changes lanes to the right directly in front of the AV.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("In this paper we study a cut-in where a white van in the right lane, just ahead of the SUT, moves left in "
+     "front of the SUT.", [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+])
+def test_authors_we_beside_an_ego_named_by_any_role_name_is_no_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("later", ["afterwards", "subsequently", "then"])
+def test_a_catalogue_summary_line_before_its_phases_keeps_only_its_start_whatever_word_says_later(later):
+    prompt = ("Case: Overtaking a slow tractor\n"
+              f"Ego: follows the tractor, {later} pulls out to overtake\n"
+              "Actors: tractor ahead in the ego lane; oncoming van in the opposite lane\n"
+              "Phase 1: ego follows the tractor while the van approaches\n"
+              "Phase 2: after the van has passed, ego changes to the left lane and overtakes")
+    assert [a for a in agents(prompt) if a[2] == "ego"] == [("car", "change_lane_to_left", "ego"),
+                                                          ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "We waited for the cyclist to pass, and after that we made our turn.",
+    "I stopped for the jogger at the junction, and after that I made my turn.",
+    "We gave way to the bus at the junction, after that we took our turn.",
+])
+def test_someones_turn_after_a_word_of_sequence_is_a_turn_not_a_turning_named_as_a_place(prompt):
+    assert any(p == "ego" and a.startswith("turn") for _, a, p in agents(prompt)), agents(prompt)
+
+
+def test_a_turning_named_as_a_place_is_still_nobodys_turn():
+    assert not any(a.startswith("turn") for _, a, _ in agents("They got stuck just past the Elm Street turn."))
+
+
+@pytest.mark.parametrize("prompt, other", [
+    ("Ego had to take a left turn at the crossroads, and one car was standing on the road where ego was going.",
+     ("car", "stop", "at_the_destination")),
+    ("The ego was turning right at the crossroads while a van was parked on the road where the ego was heading.",
+     ("car", "stop", "at_the_destination")),
+])
+def test_the_road_the_ego_heads_for_is_its_destination_in_any_tense(prompt, other):
+    assert other in agents(prompt), agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "One cyclist rides across the ladder crosswalk when the ego is fifteen metres away and one car waits behind the "
+    "ego.",
+    "A child runs out when the ego is 20 m away and two cars wait behind the ego.",
+])
+def test_and_before_a_counted_subject_and_its_verb_ends_a_condition_with_a_copula(prompt):
+    assert ("car", "stop", "ego") not in agents(prompt), agents(prompt)
+    assert ("car", "stop", "back") in agents(prompt)

@@ -338,6 +338,22 @@ def compound_heads() -> frozenset[str]:
 
 
 @lru_cache(maxsize=1)
+def _later_words() -> str:
+    """sequence.txt's words for 'later' said as an adverb ('then', 'after that', 'afterwards'), as a pattern; no
+    numbered stage, no signal turning green."""
+    named = {" ".join(words) for meaning, words in _entries("sequence") if meaning == "then" and len(words) <= 2
+             and not set(words) & {"stage", "phase", "step", "act", "light", "lights", "signal", "and", "in"}
+             and not any(w.isdigit() for w in words)}
+    return "|".join(r"\s+".join(name.split()) for name in sorted(named, key=len, reverse=True))
+
+
+@lru_cache(maxsize=1)
+def bodies() -> dict[str, str]:
+    """bodies.txt: a noun that names only a vehicle's body -> its type ('sedan': car, 'lorry': truck)."""
+    return {" ".join(words): kind for kind, words in _entries("bodies")}
+
+
+@lru_cache(maxsize=1)
 def categories() -> dict[str, frozenset[str]]:
     """categories.txt: a noun naming a kind of agent -> the agent types it covers ('emergency vehicle': police...)."""
     found: dict = {}
@@ -650,7 +666,8 @@ def _lines(text: str) -> str:
             staged = True  # "Phase 1:" goes on with the setup above it; each later phase is a stage
             continue
         if phased and not staged:
-            value = re.split(r",?\s+(?:and\s+)?then\b", value)[0]  # "Ego: follows HGV, then pulls out": the phases
+            value = re.split(rf",?\s+(?:and\s+)?(?:{_later_words()})\b", value)[0]  # "Ego: follows HGV, then (after
+            # that) pulls out": the phases
             # below tell what comes when; the line before them says who is there and how it starts
         if lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only

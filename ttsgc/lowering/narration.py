@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from ttsgc import vocabulary as V
 from ttsgc.lowering.lexicon import AT_THE_WHEEL_NAME, SLUGLINE, driver_named, known_word, lexicon, matches, tokenize
@@ -52,11 +53,30 @@ VEHICLE_NOUNS = {"van": "car", "cab": "car", "taxi": "car", "car": "car", "vehic
                  "moped": "motorcycle"}
 EGO_NOUN = {"car": "the ego", "truck": "the ego truck", "bus": "the ego bus", "motorcycle": "the ego motorcycle"}
 _NOUN = r"(van|cab|taxi|car|vehicle|minibus|pickup|suv|truck|lorry|hgv|bus|coach|motorcycle|motorbike|scooter|moped)"
-DECLARATION = re.compile(
+DECLARATION_PATTERN = (
     r"(?:,\s*|\b(?:with|using|having)\s+)?\b(?:(?:our|the|my|this|that)\s+)?(?:(?P<adjective>[a-z]+)\s+)?" + _NOUN +
-    r"(?:\s+(?:no\.?\s*|#)?\d+)?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+(?:the\s+|our\s+)?ego\b"
-    r"(?:\s+(?:vehicle|car))?(?:\s+for this)?(?:\s+please)?", re.I)
-ANY_DECLARATION = re.compile(DECLARATION.pattern.replace(_NOUN, r"([a-z]+)"), re.I)
+    r"(?:\s+(?:no\.?\s*|#)?\d+)?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+(?:the\s+|our\s+)?(?:EGO_ROLE)\b"
+    r"(?:\s+(?:vehicle|car))?(?:\s+for this)?(?:\s+please)?")
+ROLE_BODIES = {"bus", "truck", "lorry", "van", "motorcycle", "motorbike", "taxi", "cab", "shuttle", "coach"}
+
+
+@lru_cache(maxsize=1)
+def _ego_roles() -> str:
+    """The lexicon's names of the ego's role ('ego', 'SUT', 'AV', 'vehicle under test') as a pattern: no pronoun,
+    no owner, no body of its own ('the ego truck' says more)."""
+    roles = {" ".join(words) for words, (category, meaning) in lexicon().phrases.items()
+             if category == "agents" and meaning == "ego" and len(" ".join(words)) > 1
+             and words[0] not in ("my", "our", "your", "the", "i", "me", "we", "us", "you", "mine", "ours", "yours")
+             and not ROLE_BODIES & set(words) and "'" not in " ".join(words) and not words[-1].startswith("participant")}
+    return "|".join(r"\s+".join(map(re.escape, name.split())) for name in sorted(roles, key=len, reverse=True))
+
+
+@lru_cache(maxsize=1)
+def _declarations() -> tuple[re.Pattern, re.Pattern]:
+    """'Our van is the ego', '... as the SUT', '... is the vehicle under test': a vehicle declared the ego by any
+    name of the ego's role."""
+    pattern = DECLARATION_PATTERN.replace("EGO_ROLE", _ego_roles())
+    return re.compile(pattern, re.I), re.compile(pattern.replace(_NOUN, r"([a-z]+)"), re.I)
 FLEET_ADJECTIVES = {"delivery", "box", "transit", "panel", "courier", "company", "work", "hire", "rental", "fleet",
                     "own", "passenger", "cargo", "parcel", "school", "city", "service"}
 FLEET_NOUNS = r"van|cab|taxi|minibus|car|vehicle|unit|truck|lorry|bus|coach|motorcycle|motorbike|scooter"
@@ -335,9 +355,9 @@ AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report
 
 
 def _authors(text: str, notes: list[str]) -> str:
-    """'For our project we consider a cut-in manoeuvre ... the ego': the authors of a report that names its ego say
-    'we' of their work, not of a vehicle."""
-    if not re.search(r"\bthe ego\b|\bego vehicle\b", text, re.I) or not AUTHORS.search(text):
+    """'For our project we consider a cut-in manoeuvre ... the ego' (or 'the AV', 'the SUT'): the authors of a report
+    that names its ego say 'we' of their work, not of a vehicle."""
+    if not re.search(rf"\bthe\s+(?:{_ego_roles()})\b|\bego vehicle\b", text, re.I) or not AUTHORS.search(text):
         return text
     notes.append("read the report's 'we' as its authors")
     return AUTHORS.sub(lambda m: "", text)
@@ -758,12 +778,13 @@ def _bare_appositions(text: str) -> str:
 def _declared_ego(text: str, notes: list[str]) -> str:
     """'Our van is the ego', 'with the taxi as the ego', 'Van = ego': that vehicle, and its driver, are the ego
     wherever the text names them by role, by fleet name or by name."""
-    m = DECLARATION.search(text)
+    declaration, any_declaration = _declarations()
+    m = declaration.search(text)
     if m is not None:
         noun, kind = m.group(2).lower(), VEHICLE_NOUNS[m.group(2).lower()]  # the noun after the adjective
-        text = DECLARATION.sub("", text)
+        text = declaration.sub("", text)
     else:  # "our tram is the ego", "with the ambulance as the ego": a vehicle the reader knows by another noun
-        m = next((d for d in ANY_DECLARATION.finditer(text) if _vehicle_kind(d.group(2).lower())), None)
+        m = next((d for d in any_declaration.finditer(text) if _vehicle_kind(d.group(2).lower())), None)
         if m is None:
             return text
         noun, kind = m.group(2).lower(), _vehicle_kind(m.group(2).lower())

@@ -30,8 +30,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, categories, compound_heads, crews,
-                                    lexicon, loose_names, matches, read_number, tokenize, typologies)
+from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, bodies, categories, compound_heads,
+                                    crews, lexicon, loose_names, matches, read_number, tokenize, typologies)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -470,13 +470,17 @@ def _names_no_agent(units: list[Unit]) -> list[Unit]:
 
 
 def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
-    """'Ego PKW turns right', 'behind the ego LKW', 'our hero's taxi': a vehicle noun right after the word ego
-    (or the ego's possessive) is the ego's own noun, as in 'the ego truck', not another agent."""
+    """'Ego PKW turns right', 'behind the ego LKW', 'our hero's taxi', 'the AV truck', 'the SUT agent': a vehicle
+    (or agent) noun right after the word ego, another name of the ego's role, or the ego's possessive is the ego's
+    own noun, as in 'the ego truck', not another agent."""
     out: list[Unit] = []
     for u in units:
         prev = out[-1] if out else None
-        if prev is not None and u.category == "agents" and u.meaning in V.EGO_TYPES and \
-                (prev.tokens[-1].word == "ego" or prev.tokens[-1].possessive and prev.category == "agents"
+        role = prev is not None and prev.category == "agents" and prev.meaning == "ego" and \
+            prev.tokens[-1].word not in SELF_NAMES and not prev.tokens[-1].plural  # "the AV", not "we"
+        if prev is not None and u.category == "agents" and (u.meaning in V.EGO_TYPES or role and u.meaning == "generic"
+                                                            and u.base in ("agent", "actor", "participant")) and \
+                (prev.tokens[-1].word == "ego" or role or prev.tokens[-1].possessive and prev.category == "agents"
                  and prev.meaning == "ego") and \
                 prev.tokens[-1].sentence == u.tokens[0].sentence and not u.tokens[-1].plural:
             if prev.category == "agents" and prev.meaning == "ego":
@@ -833,6 +837,8 @@ def _turning_named_as_a_place(tokens: list[Token], i: int) -> bool:
     while k >= 0 and tokens[k].sentence == tokens[i].sentence and (
             tokens[k].possessive or tokens[k].word not in DEFINITE | INDEFINITE) and i - k <= 4 and \
             tokens[k].word not in PLACE_OF_A_TURNING:
+        if tokens[k].word in SUBJECT_PRONOUNS | {"our", "my", "your", "his", "her", "its", "their"}:
+            return False  # "after that we made our turn": someone's turn, a clause of its own, no place
         k -= 1  # back over the turning's name: "the Sainsbury's", "the Elm Street"
     return k > 0 and tokens[k].word in DEFINITE | INDEFINITE and tokens[k - 1].word in PLACE_OF_A_TURNING or \
         k >= 0 and tokens[k].base in ("miss",)
@@ -1911,8 +1917,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 nxt.word in ("another", "the", "other"):
             r.mark(u)
             continue  # "three cars swerve in, one after another": their order, not a later stage
-        if u.category == "sequence" and u.word in ("after", "before") and nxt is not None and (
-                nxt.tokens[0].word.endswith("ing") or nxt.category == "actions"):
+        if u.category == "sequence" and u.base in ("after", "before") and nxt is not None and (
+                nxt.tokens[0].word.endswith("ing") or nxt.category == "actions"):  # the preposition alone: "after
+            # that turns right" is a later stage
             if nxt.category == "actions" and not nxt.tokens[0].word.endswith("ing"):
                 skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
@@ -1933,10 +1940,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "sequence" and u.word == "then" and _then_of_a_verdict(units, k):
             r.mark(u)
             continue  # "then honestly that's fine, the car just holds its line": in that case, not later
-        if u.category == "sequence" and not (u.word == "after" and nxt is not None and
+        if u.category == "sequence" and not (u.base == "after" and nxt is not None and
                                              nxt.category in ("number", "numbers") and
                                              not _a_wait_of_minutes(units, k)) and not (
-                u.word == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
+                u.base == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
                 and prev_word not in ("for", "at", "all") and not (  # "for once", "at once"
                 u.word == "next" and len(u.tokens) == 1 and prev_word in ("the", "a", "this", "that", "its")):
             # "into the next lane": which lane, not what comes next
@@ -2016,6 +2023,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             relative_ends = link in RELATIVES and nxt is not None and nxt.category == "actions" and \
                 _has_agent(current)  # "a man, whom I know to be its driver, walked out": the man's verb
             the_one = _the_one_after(current, units, k + 1)  # "a bus, the one that was stopped, moves off"
+            if _a_list_sharing_a_plural_verb(current, units, k):
+                current.append(u)  # "two cars, a motorbike are coming": one subject, listed with a comma
+                continue
             if (_has_verb(current) or condition or new_noun or joined or order or relative_ends or the_one) \
                     and not short_name \
                     and not ego_named \
@@ -2176,6 +2186,7 @@ def _then_of_a_verdict(units: list[Unit], k: int) -> bool:
 CONDITION_STATES = {"clear", "safe", "free", "possible", "ready", "past", "through", "gone", "done"}
 COPULAS = {"is", "are", "was", "were", "am"}
 SUBJECT_PRONOUNS = {"we", "i", "it", "they", "he", "she", "you"}
+PRO_VERBS = {"did", "does", "do", "had", "has", "have", "could", "would", "can", "will", "should"}
 
 
 def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) -> bool:
@@ -2189,12 +2200,15 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     if placed and rest[0].word in ("i", "we") and not any(u.word == "both" for u in rest) and any(
             x.category == "actions" for x in rest[1:3]):
         return True  # "an ambulance comes up behind me and I pull over"
-    if not (_has_agent(current) and any(u.category == "word" and u.word in COPULAS for u in current)):
+    pro_verb = bool(current) and current[-1].category == "word" and current[-1].word in PRO_VERBS  # "a second
+    # before you did and an SUV is stopped": the clause's verb said again by its auxiliary alone
+    if not (_has_agent(current) and (pro_verb or any(u.category == "word" and u.word in COPULAS for u in current))):
         return False
     starts = rest[0].category == "agents" and (rest[0].meaning == "ego" or bool(rest[0].tokens[-1].label)) or \
         rest[0].word in SUBJECT_PRONOUNS or (  # "V2 is eastbound and V3 is westbound": a named one's own clause
-        rest[0].word in ("the", "a", "an", "this", "that", "some", "another") and len(rest) > 1
-        and rest[1].category == "agents" and rest[1].meaning != "none")  # "... and this guy swerves"
+        (rest[0].word in ("the", "a", "an", "this", "that", "some", "another") or rest[0].category in (
+            "number", "numbers")) and len(rest) > 1 and _starts_noun(units, k + 2))  # "... and this guy swerves",
+    # "... and a white SUV ... cut across", "when the ego is 15 m away and one car waits behind it"
     if not starts:
         return False
     for x in units[k + 2:k + 10]:
@@ -2277,12 +2291,37 @@ def _subject_and_verb_follow(units: list[Unit], k: int) -> bool:
     return False
 
 
+PLURAL_VERBS = {"are", "were", "have"}
+
+
+def _a_list_sharing_a_plural_verb(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'two cars, a motorbike are coming', 'the ego, a motorcycle on its left wait': a noun phrase, a comma and
+    a singular noun phrase whose verb agrees only with both: a list without its 'and', no apposition, no clause."""
+    if not _has_agent(current) or _has_verb(current) or any(x.category == "comma" for x in current) or \
+            not _starts_noun(units, k + 1):
+        return False
+    head = next(j for j in range(k + 1, len(units)) if units[j].category == "agents")
+    if units[head].tokens[-1].plural or units[head].meaning == "ego":
+        return False
+    for x in units[head + 1:head + 12]:
+        if x.tokens[0].sentence != units[head].tokens[0].sentence or x.category == "agents" and \
+                x.meaning not in ("none", "ego") or x.word in CLAUSE_WORDS:
+            return False
+        if x.category == "word" and x.word in COPULAS | AUXILIARIES - {"to", "and", "then", "also", "keeps"}:
+            return x.word in PLURAL_VERBS
+        if x.category == "actions":
+            verb = x.tokens[0]
+            return not x.tokens[0].word.endswith("ing") and verb.word == verb.base and not verb.word.endswith("s")
+    return False
+
+
 def _starts_noun(units: list[Unit], k: int) -> bool:
     """A noun phrase begins here: determiners, numbers and adjectives, then an agent noun."""
     for u in units[k:k + 4]:
         if u.category == "agents":
             return u.meaning != "none"
-        if not (u.category in ("numbers", "number", "behaviours") or
+        if not (u.category in ("numbers", "number", "behaviours") or u.word in COLOURS | {"dark", "light", "white",
+                                                                                       "black"} or
                 (u.category == "word" and u.word in DETERMINERS | {"and"}) or
                 (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS)
                 or (u.category == "positions" and u.word in ADJECTIVE_POSITIONS and len(u.tokens) == 1)):
@@ -3097,14 +3136,16 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         while after < len(units) and _sentence_adverb(units[after]):
             after += 1  # "the car still has to deal with him", "the car just holds its line"
         nxt = units[after] if after < len(units) else None
-        if ego is not None and not plural and kind == ego.type and "other" not in words and (u.base in (
-                "car", "vehicle", "truck", "bus") or _names_the_ego_again(r, ego, u.base)) and (
+        if ego is not None and not plural and kind == ego.type and "other" not in words and (
+                u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
+                _names_the_ego_again(r, ego, u.base)) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
                 or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
-        if ego is None and not plural and u.base in ("car", "vehicle") and "other" not in words and \
+        if ego is None and not plural and bodies().get(u.base) == "car" and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
-                not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u):
+                not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u) and \
+                not _ego_named_later_in_the_sentence(r, u):
             # ("the car overtakes us": the ego is named after it, so the car is another)
             ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
             r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
@@ -3225,6 +3266,16 @@ def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
         not e.is_ego and (e.head.split()[-1] == noun or noun in e.aliases) for e in r.entities)
 
 
+GENERAL_BODIES = {"car", "vehicle", "truck", "bus"}
+SELF_NAMES = {"i", "me", "we", "us", "you", "mine", "ours", "yours", "my own"}
+
+
+def _named_by_a_vehicle_noun(ego: Entity) -> bool:
+    """'The test car ... the sedan': an ego told of by a vehicle noun may be named again by another noun of its
+    body; a narrator's 'I' or 'we' is not, and 'the sedan' in their account is someone else's."""
+    return any(name.split()[-1] not in SELF_NAMES for name in ego.aliases | {ego.head} if name)
+
+
 def _past_tense_verb(u: Unit) -> bool:
     """A word the lexicon does not know, in the past tense ('the car behaved'): the verb after a subject."""
     return u.category == "word" and u.word.endswith("ed") and len(u.word) > 4 and \
@@ -3286,6 +3337,30 @@ def _placed_by_the_ego_in_its_relative(r: _Reader, noun: Unit) -> bool:
         if x.category == "agents" and x.meaning == "ego" or x.category == "positions" and {
                 t.word for t in x.tokens} & {"us", "our", "me", "my", "ego", "you", "your"}:
             return True
+    return False
+
+
+PLACING_WORDS = {"of", "to", "past", "behind", "beside", "alongside", "into", "at", "towards", "toward", "near"}
+
+
+def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
+    """'here comes the hatchback, cutting across right in front of the ego car': a sentence that places a vehicle
+    by the ego named after it, past the vehicle's clause, tells of another vehicle ('the car pulls up ..., and
+    our car goes': the ego named again as a subject is no such place)."""
+    sentence = u.tokens[-1].sentence
+    for k, x in enumerate(r.units):
+        if x.start < u.end or x.tokens[0].sentence != sentence:
+            continue
+        if x.category == "agents" and x.meaning not in ("ego", "none"):
+            return False  # "the car cope with a motorbike coming up behind us": the motorbike's place
+        if x.category == "positions" and {t.word for t in x.tokens} & {"us", "me", "ego", "you"}:
+            return True  # "... then slams on its brakes in front of me"
+        if x.category == "agents" and x.meaning == "ego":
+            before = k - 1
+            while before >= 0 and r.units[before].word in ("the", "our", "my"):
+                before -= 1
+            if before >= 0 and (r.units[before].category == "positions" or r.units[before].word in PLACING_WORDS):
+                return True
     return False
 
 
