@@ -230,6 +230,8 @@ GOING_ROUND_S = 2.0  # how long before it would reach a body standing in its lan
 # its 3 s lane change: three quarters across by then (a sinusoid), clear of a truck's width
 LANE_CHANGE_ROOM_M = 3.0  # centre to centre beyond both half lengths: clear to change in beside another
 STANDING_FIRST_S = 1.5  # how long the body it goes round has stood when the ego pulls out
+COMING_UP_IN_THE_LANE_CHANGED_TO = {"change_lane_to_left": "back_left", "change_lane_to_right": "back_right"}
+# where vehicles that come up level in the lane the ego changes into start (the ego lets the faster pass first)
 
 
 def _pulls_in_ahead(agent: Agent) -> bool:
@@ -459,7 +461,7 @@ class Placer:
         level and get clear ahead (the emitter makes it let them pass first): the body it goes round stands
         that much farther ahead, or the ego reaches it still waiting (a player's ego drives into it)."""
         ego = self.scenario.ego
-        side = {"change_lane_to_left": "back_left", "change_lane_to_right": "back_right"}[ego.action]
+        side = COMING_UP_IN_THE_LANE_CHANGED_TO[ego.action]
         ego_len, behind, longest = V.BODIES[ego.type][0], 0.0, 0.0
         for other in self.scenario.stages[0].agents:
             if other.is_ego or other.relative_to_ego != side or other.action != "go_straight":

@@ -28,7 +28,8 @@ from lxml import etree
 from ttsgc import intent as I
 from ttsgc import xsd
 from ttsgc import vocabulary as V
-from ttsgc.binding.place import LANE_CHANGE_ROOM_M, YIELD_SET_OFF_MPS2, BoundAgent, LanePos, LaterAction
+from ttsgc.binding.place import (COMING_UP_IN_THE_LANE_CHANGED_TO, LANE_CHANGE_ROOM_M, YIELD_SET_OFF_MPS2,
+                                 BoundAgent, LanePos, LaterAction)
 from ttsgc.binding.scene import BoundScene
 from ttsgc.emit.lean_import import openscenario_writer
 from ttsgc.errors import TtsgcError
@@ -691,7 +692,7 @@ def _coming_up_in_the_lane_it_changes_into(agent: BoundAgent, scene: BoundScene)
     """'V1 changes lanes to the left; V3, behind and to its left, is doing 45 mph': vehicles behind the ego on
     the side it changes lane to that drive faster, so they come up level. A player changes lane when told,
     into them (esmini); the ego lets them pass first, as a driver who looks in the mirror does."""
-    side = {"change_lane_to_left": "back_left", "change_lane_to_right": "back_right"}.get(agent.action)
+    side = COMING_UP_IN_THE_LANE_CHANGED_TO.get(agent.action)
     if not agent.is_ego or agent.stage != 0 or side is None or agent.lane_change is None:
         return []
     return [a for a in scene.agents if not a.is_ego and a.stage == 0 and a.relative_to_ego == side
