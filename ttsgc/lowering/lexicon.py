@@ -714,11 +714,12 @@ def _names_agent(key: str) -> bool:
 
 def _keyed_agents(text: str) -> str:
     """'Ego: going straight. Van: stopped, front-right.' on one line: each key that names an agent is the
-    subject of what follows it ('Van is stopped, front-right.'); other keys are left to the title rule."""
+    subject of what follows it ('Van is stopped, front-right.'), when two keys do or the line opens with one;
+    other keys are left to the title rule."""
     pieces = re.split(r"(?<=[.;|])\s+|\s+/\s+", text.strip())
     if sum(1 for p in pieces if (m := KEY_LINE.match(p)) and _names_agent(m.group(1))) < 2 and not (
-            len(pieces) == 1 and (m := KEY_LINE.match(pieces[0])) and _names_agent(m.group(1))
-            and m.group(1).strip().lower().split()[0] not in TITLE_KEYS):
+            (m := KEY_LINE.match(pieces[0])) and _names_agent(m.group(1))
+            and m.group(1).strip().lower().split()[0] not in TITLE_KEYS):  # "Ego: a sedan. A van pulls out."
         return text
     out = []
     for piece in pieces:

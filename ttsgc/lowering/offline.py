@@ -895,6 +895,10 @@ def _runs_a_light(units: list[Unit], k: int) -> bool:
         units[k - 2].tokens[0].base in ("run", "jump", "blow", "go", "shoot", "sail", "barrel", "race")
 
 
+PLANNING_WORDS = {"next", "date", "sprint", "release", "deadline", "week", "month", "end", "completion", "eod", "eow",
+                  "friday", "monday", "q1", "q2", "q3", "q4"}
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -910,6 +914,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "agents" and [t.word for t in span] == ["focus"] and nxt == "on" and not {
             t.word for t in tokens[m.end + 1:m.end + 4]} & {"left", "right", "side", "lane", "tail", "bumper"}:
         return [Unit(m.start, m.end, "word", "focus", span)]  # "the focus on the oncoming pair": no Ford
+    if m.category == "agents" and [t.word for t in span] == ["target"] and nxt in PLANNING_WORDS:
+        return [Unit(m.start, m.end, "word", "target", span)]  # "target next sprint": a date, no test target
     if m.category == "actions" and [t.base for t in span] == ["approach"] and m.start > 0 and \
             tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the", "an", "on"} and nxt in ("to", "of", "", ",", "into"):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "on the approach to the roundabout": a place
@@ -1056,9 +1062,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             (lexicon().phrases.get((t.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
             for t in tokens[:m.start] if t.sentence == span[0].sentence)
     # "cyclist: on crosswalk at exit arm, crossing": a note's piece of its own about a person, what they do
+    counted = len(span) > 1 and span[-1].word == "crossing" and (span[0].word in ("pedestrians", "peds") or (
+        m.start > 0 and (_word_number(tokens[m.start - 1]) or 0) >= 1))  # "two pedestrians crossing": people
     if m.category == "road" and span[-1].word in ("crossing", "xing") and (
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
-            nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or (len(span) == 1 and (
+            nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or counted or (len(span) == 1 and (
                 after_person or after_verb or _coordinated_participle(tokens, m)))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
                                          and len(span) == 1):
@@ -3073,9 +3081,17 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count = UNSPECIFIED.vague_count(count, len(r.entities))
     bare = not words and count is None and not plural and not label and not (
         head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
+    placed_by = _place_in_the_name(units, head, first)
+    doing = units[head + 1].meaning if first == lo and head + 1 < len(units) and \
+        units[head + 1].category == "actions" and units[head + 1].tokens[0].word.endswith("ing") else None
+    listed = doing is not None and any(x.category == "positions" for x in units[head:])
+    # "car cutting in from the left lane": a terse list's item, an agent with its own verb and place
     if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
-                    and e.count == 1 for e in r.entities):
-        definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one
+                    and e.count == 1 and (placed_by is None or placed_by in e.features)
+                    and not (doing and e.actions and doing not in {a[4] for a in e.actions}) for e in r.entities):
+        definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one;
+        # not "oncoming car turning left, lead car braking": a place in the name sets another apart; not "lead
+        # car braking, car cutting in", "a pedestrian crossing; pedestrian waiting": an item that does another thing
     loose = loose_names().get(u.base, frozenset())
     if bare and loose and not any(e.type == kind and not e.is_ego for e in r.entities) and any(
             not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) for e in r.entities):
@@ -3093,10 +3109,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     ego_now = next((e for e in r.entities if e.is_ego), None)
     existential = first >= 2 and units[first - 2].word == "there" and units[first - 1].word in (
         "is", "was", "be", "comes", "came")  # "there's car coming the other way": introduced, never the ego
-    if bare and ego_now is not None and u.base in ("vehicle", "car") and (
+    if bare and placed_by is None and ego_now is not None and u.base in ("vehicle", "car") and (
             ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and not existential and \
-            not any(not e.is_ego and e.type == "car" for e in r.entities):
-        return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego
+            not any(not e.is_ego and e.type == "car" for e in r.entities) and not listed:
+        return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego;
+        # "my car turns right, car cutting in from the left": a list's item, another car
     if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
             count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
@@ -3364,6 +3381,13 @@ def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
     return False
 
 
+def _place_in_the_name(units: list[Unit], head: int, first: int) -> str | None:
+    """The place a noun phrase carries in its own words: 'lead car' (ahead), 'oncoming car' (road_straight)."""
+    if units[head].base.split()[0] in ("lead", "leading"):
+        return "ahead"
+    return next((units[k].meaning for k in range(first, head) if units[k].category == "positions"), None)
+
+
 def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
     """'the car behind us' names another car than one already placed ahead."""
     nxt = units[head + 1] if head + 1 < len(units) else None
@@ -3410,6 +3434,9 @@ def _ego_placed_among(units: list[Unit], head: int) -> bool:
     return any(u.category == "agents" and u.meaning == "ego" for u in units[max(0, of - 5):of - 1])
 
 
+KIND_NOUNS = {"car", "vehicle", "truck", "lorry", "van", "bus", "coach", "suv", "sedan", "hatchback", "pickup", "taxi",
+              "cab", "motorcycle", "motorbike", "bike", "scooter", "moped", "tram", "minivan", "jeep", "ambulance",
+              "police", "firetruck", "engine", "hgv", "semi", "tractor"}  # no make
 GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclist", "pedestrian", "person",
                  "ambulance", "police", "police car", "firetruck", "fire truck", "sv", "pov", "target", "agent",
                  "people", "child", "kid", "man", "woman", "guy"}
@@ -4202,6 +4229,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 for u in units[before[0].index + 1:before[1].first]) and any(
                 u.category == "actions" for u in units[before[0].index + 1:before[1].first]):
             before = before[:1]  # "the AV handle(s) a cyclist swerving...": the first is the subject, then its object
+        elif len(before) >= 2 and before[0].entity.is_ego and verbs and \
+                units[first_verb].tokens[0].word.endswith("ing") and all(
+                u.category == "comma" for a, b in zip(before, before[1:]) for u in units[a.index + 1:b.first]) and all(
+                u.category != "word" or u.word not in ("and", "or", "with", "plus", "both", "all", "&", "each")
+                for u in units[before[0].index + 1:first_verb]):
+            before = before[1:]  # "Ego van, oncoming truck turning left": a terse list; the ego is an item of its own
         inverted = _inverted_subject(units, phrases, first_verb) if not before and verbs else None
         if inverted is not None:  # "from the right comes a bus": the place first, then the verb, then who
             before = [inverted]
@@ -5101,8 +5134,10 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 a.aliases |= b.aliases | {b.head}
                 _fold(r, a, b)
                 continue
-            mine = prev.entity.is_ego and len(units[prev.index].tokens) > 1 and _named_make(
-                between, np.entity.type)  # "my vehicle, a grey Vauxhall Astra,": its make and model
+            mine = prev.entity.is_ego and np.entity.type in V.EGO_TYPES and len(units[prev.index].tokens) > 1 and \
+                _named_make(units[prev.index + 1: np.index + 1], np.entity.type) and \
+                not _placed_after(units, np.index) and not _does_after(units, np.index)
+            # "my vehicle, a grey Vauxhall Astra,": its make and model; not "ego vehicle, a bus behind"
             if mine:
                 prev.entity.type = np.entity.type if np.entity.type != "car" else prev.entity.type
                 if np.entity in r.entities:
@@ -5121,9 +5156,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
                    u.category == "comma" for u in between) and (
-                    copula or prev.entity.label or (between and prev.entity.is_ego and (
-                        units[np.first].word in ("a", "an") or np.first == np.index))  # not "ego, oncoming SUV"
-                    or (between and prev.entity.head.split()[-1] in APPOSED_HEADS
+                    copula or prev.entity.label or (between and prev.entity.is_ego and np.entity.type in V.EGO_TYPES and
+                                                      not _placed_after(units, np.index) and (
+                        units[np.first].word in ("a", "an") and not _does_after(units, np.index) or
+                        np.first == np.index and (
+                        _closed_after(units, np.index) or len(units[prev.index].tokens) == 1 and
+                        units[np.index].end < len(r.tokens) and r.tokens[units[np.index].end].word == ",")))
+                    # "the ego, sedan, turns", "Ego (car)"; not "ego, oncoming SUV", "ego bus, lead car braking",
+                    # "the ego, a pedestrian and a truck", "ego, a bus behind,"
+                    or (between and prev.entity.head.split()[-1] in APPOSED_HEADS and not prev.entity.is_ego
                         and units[np.first].word in ("a", "an"))  # "a third-party vehicle, a silver hatchback,"
                     or (between and prev.entity.head in categories() and np.first == np.index and
                         np.entity.type in categories()[prev.entity.head])):  # "a VRU (cyclist)": which one it is
@@ -5248,11 +5289,24 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
         (between[-1].tokens[-1].word in OPERATED_FROM or between[-1].base in OPERATED_FROM)
 
 
-def _named_make(between: list[Unit], kind: str) -> bool:
-    """', a grey Vauxhall' before 'Astra': a comma, an article, colours and the maker's name, nothing more."""
-    words = [u for u in between if u.category != "comma"]
+def _placed_after(units: list[Unit], i: int) -> bool:
+    """'a bus behind', 'a van on the right': a place said right after the noun makes it one of the scene's
+    agents, not a name for the one before it."""
+    return i + 1 < len(units) and units[i + 1].category == "positions"
+
+
+def _does_after(units: list[Unit], i: int) -> bool:
+    """'ego, a van pulling out from the right': a noun with a verb of its own after it is another agent."""
+    return i + 1 < len(units) and units[i + 1].category == "actions"
+
+
+def _named_make(after: list[Unit], kind: str) -> bool:
+    """', a grey Vauxhall Astra' after the ego: a comma, an article, colours and the maker's name, nothing more.
+    A bare kind after the comma is another agent of a terse list ('ego van, oncoming truck', 'ego bus, lead car')."""
+    words = [u for u in after if u.category != "comma"]
+    named = words[:-1] or words[-1:] and words[-1].tokens[-1].base not in KIND_NOUNS
     words = words[1:] if words and words[0].word in ("a", "an") else words  # "my car, (a) grey Vauxhall Astra,"
-    return bool(between) and between[0].category == "comma" and all(
+    return bool(after) and after[0].category == "comma" and bool(named) and all(
         u.word in COLOURS | {"dark", "light", "white", "black", "grey", "gray"} or
         u.category == "agents" and u.meaning == kind for u in words)
 
