@@ -78,6 +78,15 @@ def test_the_main_verb_wins_over_participles_and_adjectives(prompt, expected):
     assert expected in agents(prompt)
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("Can you make a test where the ego drives straight with a taxi in front of the ego braking hard?",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("The ego slows down with a bus ahead of the ego stopping.", [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
+])
+def test_a_participle_after_a_noun_placed_by_the_ego_is_that_nouns(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
 def test_an_unknown_verb_one_slip_from_a_known_one_is_read_as_it_and_reported():
     lowered = lower("A car in front of the ego swervs.")
     assert "swervs (read as swerves)" in lowered.unknown

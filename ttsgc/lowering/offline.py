@@ -5471,6 +5471,12 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     if k < 0:
         return None
     np = next((p for p in phrases if p.index == k), None)
+    if np is not None and np.entity is not None and np.entity.is_ego and np.first > 1 and \
+            units[np.first - 1].category == "positions":
+        placed = next((p for p in phrases if p.index == np.first - 2), None)
+        if placed is not None and placed.entity is not None and not placed.entity.is_ego and \
+                units[i].tokens[0].word.endswith("ing"):
+            np = placed  # "with a taxi in front of the ego braking hard": the taxi brakes; the ego only places it
     if np is None or units[k].word in ("me", "us", "you", "him", "her", "them", "it", "i", "we", "he", "she", "they"):
         return None  # "a learner in front of me stalled": a pronoun takes no participle; the verb is finite
     aux = units[i - 1].category == "word" and units[i - 1].word in AUXILIARIES
