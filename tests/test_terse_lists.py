@@ -1,5 +1,6 @@
-"""Reading a scene typed as a terse list ('ego bus, lead car braking, two pedestrians crossing'): each item after
-the ego is an agent of its own, never a second name for the ego nor the same agent said again."""
+"""Reading a scene typed as a terse list ('ego bus, lead car braking, two pedestrians crossing') or as notes, one
+agent a line ('Van: stopped, front'): each item after the ego is an agent of its own, never a second name for the
+ego nor the same agent said again."""
 
 from __future__ import annotations
 
@@ -108,3 +109,31 @@ def test_every_item_of_a_generated_terse_list_is_one_agent_of_its_type():
         if got != want or [t for t, _, where in found if where == "ego"] != [ego_type]:
             wrong.append((prompt, found))
     assert wrong == []
+
+
+# -- notes: one agent a line, by key ------------------------------------------------------------------------
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego (truck): stopped. Truck: front, stopped.", [("truck", "stop", "ego"), ("truck", "stop", "front")]),
+    ("Ego car: braking to a stop. Car: front, stationary.", [("car", "stop", "ego"), ("car", "stop", "front")]),
+    ("- Ego: drives straight\n- Police car: left lane, ahead, braking hard\n- Car: ahead, stationary",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("police", "stop", "front_left")]),
+    ("Ego car: stopped. SUV: braking hard, behind. Truck: in front of ego, braking hard.",
+     [("car", "stop", "back"), ("car", "stop", "ego"), ("truck", "stop", "front")]),
+    ("Ego (truck): stopped\nAmbulance: going straight, behind ego\nVan: going straight, front",
+     [("ambulance", "go_straight", "back"), ("car", "go_straight", "front"), ("truck", "stop", "ego")]),
+    ("- Ego car: braking to a stop\n- SUV: braking hard, left lane, ahead\n- Truck: behind ego, going straight",
+     [("car", "stop", "ego"), ("car", "stop", "front_left"), ("truck", "go_straight", "back")]),
+    ("1. Ego car - braking to a stop\n2. Car - front, stationary\n3. HGV - behind ego, stationary",
+     [("car", "stop", "ego"), ("car", "stop", "front"), ("truck", "stop", "back")]),
+    ("EGO: drives straight. Cyclist: crossing from the right.",
+     [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front_right")]),
+])
+def test_each_key_of_a_note_that_names_an_agent_is_one_agent_where_its_line_puts_it(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_a_key_naming_a_vehicle_said_before_in_the_text_is_that_vehicle():
+    found = agents("Desc: double-parked delivery van blocking the ego lane\nEV: approaches and stops behind the van\n"
+                   "Van: stationary in EV lane, hazards on, never moves off")
+    assert [a for a in found if a[2] != "ego"] == [("car", "block_the_ego", "front")]

@@ -385,7 +385,15 @@ LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bu
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 
 
-KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/_-]{0,30}?)\s*[:|]\s*(.*)$")
+DASHED_KEY = re.compile(r"^\s*(?:[-*\u2022]\s*)?([A-Za-z][A-Za-z0-9 '/_-]{0,30}?(?:\s*\([A-Za-z0-9 ,/_-]{1,24}\))?)"
+                        r"\s+[-\u2013\u2014]\s+(.*)$")  # "Van - stopped, front": an agent's key set off by a dash
+def _dashed_agent_key(line: str) -> re.Match | None:
+    m = DASHED_KEY.match(line)
+    return m if m is not None and _names_agent(m.group(1)) else None
+
+
+KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/_-]{0,30}?(?:\s*\([A-Za-z0-9 ,/_-]{1,24}\))?)"
+                      r"\s*[:|]\s*(.*)$")  # "Ego (truck): turning left": a key with its type in brackets
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
               "description", "goal", "purpose", "report", "note", "story", "epic", "feature"}
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
@@ -501,14 +509,18 @@ def _linking(value: str) -> str:
     return " is "
 
 
+PLACE_WORDS = {"left", "right", "rear", "back", "front", "ahead", "behind", "level", "opposite", "oncoming", "near",
+               "far", "middle", "centre", "center", "inside", "outside"}
+
+
 def _keyed(key: str, value: str) -> str:
     """A key's line as a sentence with the key its subject: 'Van: oncoming, turn left' is 'Van is oncoming, and
     turn left' (a later piece that starts with a bare verb is the key's too, no order to the ego)."""
     pieces = value.split(", ")
     for k in range(1, len(pieces)):
         first = pieces[k].split()[0].lower() if pieces[k].split() else ""
-        if first in _verbs() and lexicon().base(first) == (first, False):
-            pieces[k] = "and " + pieces[k]
+        if first in _verbs() and lexicon().base(first) == (first, False) and first not in PLACE_WORDS:
+            pieces[k] = "and " + pieces[k]  # not "left lane, ahead", "rear": where it is
     return f"{key}{_linking(value)}{', '.join(pieces)}"
 
 
@@ -644,7 +656,7 @@ def _lines(text: str) -> str:
             continue
         line = line.replace("->", " and ").replace("\u2192", " and ")
         line = LABEL_COLUMN.sub(r"\1: ", line)  # "  TV1  car stopped ahead": a label in a column of its own
-        m = KEY_LINE.match(line)
+        m = KEY_LINE.match(line) or _dashed_agent_key(line)
         if k == 0 and m is None and _heading_line(lines):
             out.append("\u00a7 " + line.strip() + ".")  # a heading line over a blank line: the ticket's title
             continue
@@ -680,7 +692,7 @@ def _lines(text: str) -> str:
         elif not value:
             continue
         else:
-            out.append(f"{_keyed(key, value)}.")
+            out.append(f"{_keyed(_first_named(key, chr(10).join(lines[:k])), value)}.")
     return " ".join(out)
 
 
@@ -705,11 +717,35 @@ LABEL_KEY = re.compile(r"(?:npc|actor|agent|target|obj|object|adversary|vru|ped|
 
 def _names_agent(key: str) -> bool:
     """'Van', 'ego', 'NPC2', 'Actor_1', 'lead car': a key that names an agent, not a title."""
+    key = re.sub(r"\s*\(.*\)", "", key)  # "Ego (truck)": the key's name, its type aside
     words = tuple(_normalize(key).split())
     if LABEL_KEY.fullmatch(key.lower().strip()):
         return True
     entry = lexicon().phrases.get(words) or lexicon().phrases.get(words[-1:]) if words else None
     return bool(entry) and entry[0] == "agents" and entry[1] != "none" and len(words) <= 3
+
+
+NAMED_BEFORE = {"the", "a", "an", "my", "our", "your", "their", "his", "her", "its", "both", "other", "another", "this",
+                "that", "each", "every"}
+
+
+TYPE_ACRONYMS = {"SUV", "HGV", "LGV", "MPV"}  # written in capitals, and kinds of vehicle, not a role ('EV', 'POV')
+
+
+def _first_named(key: str, before: str) -> str:
+    """'SUV: behind. Truck: ahead': a key that names a kind of agent not named in the text before it introduces
+    one ('a truck is ahead'), so it is never read as a loose second name of an earlier one; the ego, a label
+    ('V2', 'Ped_1', 'EV'), a plural or a noun said before stays as written."""
+    written = re.sub(r"\s*\(.*\)", "", key).strip()
+    name = written.lower()
+    words = tuple(_normalize(name).split())
+    entry = lexicon().phrases.get(words) or lexicon().phrases.get(words[-1:]) if words else None
+    if not words or not _names_agent(key) or LABEL_KEY.fullmatch(name) or words[0] in NAMED_BEFORE or \
+            (entry is not None and entry[1] == "ego") or "ego" in words or lexicon().base(words[-1])[1] or \
+            re.search(r"\d", name) or len(words[-1]) == 1 or written.isupper() and written not in TYPE_ACRONYMS or \
+            re.search(rf"\b{re.escape(words[-1])}\b", re.sub(r"\(.*?\)", "", before), re.I):  # not "Ego (truck)"
+        return key
+    return f"a {key}"
 
 
 def _keyed_agents(text: str) -> str:
@@ -722,11 +758,11 @@ def _keyed_agents(text: str) -> str:
             and m.group(1).strip().lower().split()[0] not in TITLE_KEYS):  # "Ego: a sedan. A van pulls out."
         return text
     out = []
-    for piece in pieces:
+    for k, piece in enumerate(pieces):
         m = KEY_LINE.match(piece)
         if m and _names_agent(m.group(1)) and m.group(2).strip():
             value = m.group(2).strip().rstrip('.;')
-            out.append(f"{_keyed(m.group(1).strip(), value)}.")
+            out.append(f"{_keyed(_first_named(m.group(1).strip(), ' '.join(pieces[:k])), value)}.")
         else:
             out.append(piece)
     return " ".join(out)

@@ -1046,8 +1046,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                     "finish", "finishes", "while", "when", "still", "already")
     person_before = after_person or prev is not None and prev.word == "," and m.start > 1 and \
         tokens[m.start - 2].base in ("target", "dummy", "pedestrian", "cyclist", "child", "person") or \
-        prev is not None and (lexicon().phrases.get((prev.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
-    # "EBT crossing from the right": a word that names a person or a rider
+        prev is not None and (lexicon().phrases.get((prev.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES or \
+        prev is not None and prev.word in ("is", "are", "was", "were") and m.start > 1 and \
+        (lexicon().phrases.get((tokens[m.start - 2].base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
+    # "EBT crossing from the right": a word that names a person or a rider; "a cyclist is crossing from the left"
     if m.category == "positions" and m.meaning in ("road_left", "road_right") and span[0].word == "crossing" and \
             person_before:  # "a cyclist crossing from the right": a person crossing the road, from that side
         side = m.meaning[5:]
@@ -3086,15 +3088,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         units[head + 1].category == "actions" and units[head + 1].tokens[0].word.endswith("ing") else None
     listed = doing is not None and any(x.category == "positions" for x in units[head:])
     # "car cutting in from the left lane": a terse list's item, an agent with its own verb and place
-    if bare and any((e.head.split()[-1] == u.base.split()[-1] or u.base in e.aliases) and not e.is_ego
+    placed_here = _placed_in_its_sentence(r, u) if first == lo else set()
+    # "Ego car: stopped. Car: front, stationary", "Ambulance: behind. Van: stopped, ahead": a note's item, placed
+    if bare and any((e.head.split()[-1] == u.base.split()[-1] and e.type == kind or u.base in e.aliases) and not e.is_ego
                     and e.count == 1 and (placed_by is None or placed_by in e.features)
-                    and not (doing and e.actions and doing not in {a[4] for a in e.actions}) for e in r.entities):
+                    and not (doing and e.actions and doing not in {a[4] for a in e.actions})
+                    and not _placed_apart(placed_here, e) for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one;
         # not "oncoming car turning left, lead car braking": a place in the name sets another apart; not "lead
         # car braking, car cutting in", "a pedestrian crossing; pedestrian waiting": an item that does another thing
     loose = loose_names().get(u.base, frozenset())
     if bare and loose and not any(e.type == kind and not e.is_ego for e in r.entities) and any(
-            not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) for e in r.entities):
+            not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) and
+            not _placed_apart(placed_here, e) for e in r.entities):
         definite = True  # "Pickup ahead of me. Truck braked": the pickup, in note style
     if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
         definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
@@ -3111,7 +3117,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         "is", "was", "be", "comes", "came")  # "there's car coming the other way": introduced, never the ego
     if bare and placed_by is None and ego_now is not None and u.base in ("vehicle", "car") and (
             ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and not existential and \
-            not any(not e.is_ego and e.type == "car" for e in r.entities) and not listed:
+            not any(not e.is_ego and e.type == "car" for e in r.entities) and not listed and not placed_here:
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego;
         # "my car turns right, car cutting in from the left": a list's item, another car
     if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
@@ -3379,6 +3385,23 @@ def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
             if before >= 0 and (r.units[before].category == "positions" or r.units[before].word in PLACING_WORDS):
                 return True
     return False
+
+
+def _placed_in_its_sentence(r: _Reader, u: Unit) -> set[str]:
+    """The places said after a noun in its sentence, up to the next agent named: 'Van: stopped, left lane, ahead'."""
+    at = bisect_left(r.units, u.start, key=_unit_start)
+    places = set()
+    for x in r.units[at + 1:]:
+        if x.category == "agents" or x.tokens[0].sentence != u.tokens[0].sentence:
+            break
+        if x.category == "positions":
+            places.add(x.meaning)
+    return places
+
+
+def _placed_apart(places: set[str], e: Entity) -> bool:
+    """'SUV: behind. Truck: in front of ego': a place that contradicts where the one named before is."""
+    return any(OPPOSITE_PLACES.get(p, set()) & e.features for p in places)
 
 
 def _place_in_the_name(units: list[Unit], head: int, first: int) -> str | None:
