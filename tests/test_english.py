@@ -101,6 +101,16 @@ def test_re_mentions_pronouns_and_both_are_not_new_agents():
     assert [a for a in found if a[0] == "car" and a[2] != "ego"] == [("car", "go_straight", "back")]
 
 
+@pytest.mark.parametrize("prompt, others", [
+    ("I saw a pickup truck on my left. A white van was parked on the right. The pickup turned left in front of me.", 2),
+    ("There was a woman ahead of me. The pedestrian stopped suddenly.", 1),
+])
+def test_a_compounds_first_word_or_another_name_said_again_is_the_same_agent(prompt, others):
+    found = agents(prompt)
+    assert sum(where != "ego" for _, _, where in found) == others
+    assert all(t == "pedestrian" for t, _, where in found if where != "ego") or "woman" not in prompt
+
+
 def test_the_other_car_names_the_second_one():
     found = agents("A car waits on the left and a car waits on the right. The other car then drives off.")
     assert len([a for a in found if a[2] != "ego"]) == 2

@@ -3152,6 +3152,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             found = []  # "a car ahead ... the car behind us", "the car from the left and the car from the right"
         if found:
             if len(found) == 1:
+                found[0].aliases.add(u.base)  # "a woman ... the pedestrian": every name it is given
                 return NounPhrase(found[0], head, first, plural=plural)
             return NounPhrase(found[0], head, first, plural=True, group=found)
         ego = next((e for e in r.entities if e.is_ego), None)
@@ -3483,10 +3484,12 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
         head = " ".join(head.split()[:-1])  # "the van's driver", "the bus driver": the van, the bus
     if head and head not in GENERAL_NOUNS and not both and not plural:
         same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
+                or len(e.head.split()) > 1 and e.head.split()[0] == head  # "a pickup truck ... the pickup"
                 or e.head in GENERAL_NOUNS and e.head != "vehicle"
                 or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN  # "a cyclist ... the bicycle": the same
                 or head.split()[-1] in GROUP_NOUNS and e.count > 1]  # "a crowd of fans ... the crowd": them
-        named = [e for e in same if e.head.split()[-1] == head.split()[-1] or head in e.aliases]
+        named = [e for e in same if e.head.split()[-1] == head.split()[-1] or head in e.aliases or
+                 len(e.head.split()) > 1 and e.head.split()[0] == head]
         same = named or same  # "a delivery van ... a car behind ... the van": the van, not the car named last
         before = [e for e in pool if e.parent is None and e.count == 1 and e not in r.clause_mentions]
         if not same and not other and len(pool) == 1 and before == pool:
@@ -4814,6 +4817,7 @@ def _said_signals(r: _Reader) -> set[str]:
 VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people", "lad", "bloke",
                 "mate", "lunatic", "nutter", "maniac", "numpty", "muppet", "idiot", "jerk", "moron",
                 "chap", "fella", "fellow", "gentleman", "young man", "young woman", "teen", "teenager"}
+NAMED_ON_FOOT = {"pedestrian", "ped", "walker", "jogger", "runner", "pedestrian target"}
 VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
                         "block"}
 
@@ -6613,11 +6617,12 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
-        if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and (action in VEHICLE_ONLY_ACTIONS or any(
+        on_foot = bool(e.aliases & NAMED_ON_FOOT)  # "a woman ... the pedestrian stopped": named as one on foot
+        if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and (action in VEHICLE_ONLY_ACTIONS or any(
                 a[4] == "horn" for a in e.actions)):
             e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
             r.notes.append(f"inferred: '{e.head}' who {(action or 'horn').replace('_', ' ')}s drives a car")
-        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and action in ("move", "stop", "go_straight") and \
+        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and action in ("move", "stop", "go_straight") and \
                 e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
                 and e.road_type != "sidewalk":
             e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
