@@ -111,6 +111,20 @@ def test_a_compounds_first_word_or_another_name_said_again_is_the_same_agent(pro
     assert all(t == "pedestrian" for t, _, where in found if where != "ego") or "woman" not in prompt
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car ahead and another behind.", [("car", "go_straight", "back"), ("car", "go_straight", "front")]),
+    ("One car is ahead and another is behind.", [("car", "go_straight", "back"), ("car", "go_straight", "front")]),
+    ("There is a truck on the left and another on the right.",
+     [("truck", "go_straight", "left"), ("truck", "go_straight", "right")]),
+    ("A cyclist crosses from the left, then another from the right.",
+     [("cyclist", "cross_the_road", "front_left"), ("cyclist", "cross_the_road", "front_right")]),
+    ("Two mopeds weave through traffic. One of them cuts in front of me, and another is undertaking on the right.",
+     [("motorcycle", "change_lane_to_right", "front_left"), ("motorcycle", "go_straight", "back_right")]),
+])
+def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_next_member(prompt, expected):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == sorted(expected)
+
+
 def test_the_other_car_names_the_second_one():
     found = agents("A car waits on the left and a car waits on the right. The other car then drives off.")
     assert len([a for a in found if a[2] != "ego"]) == 2

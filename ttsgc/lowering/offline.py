@@ -2217,7 +2217,9 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     starts = rest[0].category == "agents" and (rest[0].meaning == "ego" or bool(rest[0].tokens[-1].label)) or \
         rest[0].word in SUBJECT_PRONOUNS or (  # "V2 is eastbound and V3 is westbound": a named one's own clause
         (rest[0].word in ("the", "a", "an", "this", "that", "some", "another") or rest[0].category in (
-            "number", "numbers")) and len(rest) > 1 and _starts_noun(units, k + 2))  # "... and this guy swerves",
+            "number", "numbers")) and len(rest) > 1 and _starts_noun(units, k + 2)) or (
+        rest[0].word == "another" and _stands_alone(units, k + 1))  # "... and another is behind",
+    # "... and this guy swerves",
     # "... and a white SUV ... cut across", "when the ego is 15 m away and one car waits behind it"
     if not starts:
         return False
@@ -4109,6 +4111,24 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(part, i, i, plural=True))
             continue
+        if u.word == "another" and u.category == "word" and not any(np.first <= i <= np.index for np in phrases) \
+                and _stands_alone(units, i):
+            kin = next((np.entity for np in phrases if np.index < i and np.entity is not None and
+                        not np.entity.is_ego), None) or next((e for e in previous_subject if not e.is_ego), None) or \
+                next((e for e in reversed(recent) if not e.is_ego), None)  # the subject before: "one of them cuts
+            # in front of the car, and another is undertaking": another of them
+            if kin is not None and kin.parent is not None:  # "two mopeds; one cuts in, another undertakes": the
+                member = _member(r, recent)  # group's next member
+            elif kin is not None:  # "a car ahead and another behind": one more of the kind named last, placed apart
+                member = Entity(r.new_key(), kin.type, False, clause.stage, head=kin.head, listed_after=kin)
+                r.entities.append(member)
+                r.notes.append(f"inferred: 'another' is another {kin.head}")
+            if kin is not None and member is not None:
+                r.mark(u)
+                if i + 1 < len(units) and units[i + 1].word == "one":
+                    r.mark(units[i + 1])
+                phrases.append(NounPhrase(member, i, i, introduced=True))
+                continue
         if u.word == "one" and u.category in ("word", "numbers") and not any(np.first <= i <= np.index
                                                                               for np in phrases) \
                 and not (i + 1 < len(units) and units[i + 1].category in ("agents",)) \
@@ -5038,6 +5058,16 @@ def _one_more_of_a_placed_group(r: _Reader, units: list[Unit], i: int, phrases: 
     if ones >= group.count or any(u.word in ("other", "rest", "another", "second", "others") for u in rest):
         return None
     return group
+
+
+def _stands_alone(units: list[Unit], i: int) -> bool:
+    """'another behind', 'and another one waits': 'another' with no noun of its own, up to a place, a verb,
+    a comma or the end ('another red car' and 'another one of them' have theirs)."""
+    j = i + 1
+    if j < len(units) and units[j].word == "one":
+        j += 1
+    return j >= len(units) or units[j].category in ("positions", "actions", "comma", "sequence") or \
+        units[j].word in AUXILIARIES | {"and", "but", "then", "who", "which", "that", "coming", "going"}
 
 
 def _enumerated_one(r: _Reader, units: list[Unit], i: int, phrases: list[NounPhrase]) -> Entity | None:
