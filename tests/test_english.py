@@ -125,6 +125,15 @@ def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_n
     assert [a for a in agents(prompt) if a[2] != "ego"] == sorted(expected)
 
 
+def test_a_passive_with_an_adverb_before_its_verb_is_a_passive_and_the_ego_driving_on_is_nothing_new():
+    found = agents("The ego's lane is blocked by a parked delivery van. The van is then passed by the ego, which "
+                   "moves over into the left lane.")
+    assert found == [("car", "block_the_ego", "front"), ("car", "change_lane_to_left", "ego"),
+                     ("car", "go_straight", "ego")]
+    assert agents("A van is parked ahead. The van is then passed by the ego.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
 def test_the_other_car_names_the_second_one():
     found = agents("A car waits on the left and a car waits on the right. The other car then drives off.")
     assert len([a for a in found if a[2] != "ego"]) == 2

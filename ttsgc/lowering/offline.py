@@ -895,6 +895,8 @@ def _runs_a_light(units: list[Unit], k: int) -> bool:
         units[k - 2].tokens[0].base in ("run", "jump", "blow", "go", "shoot", "sail", "barrel", "race")
 
 
+PASSIVE_ADVERBS = {"then", "also", "later", "soon", "suddenly", "eventually", "finally", "quickly", "slowly", "just",
+                   "now", "again", "immediately", "carefully"}
 PLANNING_WORDS = {"next", "date", "sprint", "release", "deadline", "week", "month", "end", "completion", "eod", "eow",
                   "friday", "monday", "q1", "q2", "q3", "q4"}
 
@@ -1030,8 +1032,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             prev is not None and prev.word in ("a", "the", "this", "that", "city", "school"):
         return [Unit(m.start, m.start + 1, "agents", "bus", span[:1]),  # "a bus stops": no bus stops
                 Unit(m.start + 1, m.end, "actions", "stop", span[1:])]
-    if m.category == "actions" and len(span) > 1 and span[-1].word == "by" and prev is not None and prev.word in (
-            "is", "are", "was", "were", "be", "been", "being", "gets", "got", "get"):
+    auxiliary = prev
+    if prev is not None and prev.word in PASSIVE_ADVERBS and m.start > 1:
+        auxiliary = tokens[m.start - 2]  # "the van is then passed by the ego"
+    if m.category == "actions" and len(span) > 1 and span[-1].word == "by" and auxiliary is not None and \
+            auxiliary.word in ("is", "are", "was", "were", "be", "been", "being", "gets", "got", "get"):
         return [Unit(m.start, m.end - 1, "actions", m.meaning, span[:-1]),  # "is passed by the ego": a passive
                 Unit(m.end - 1, m.end, "word", "by", span[-1:])]
     after_person = prev is not None and prev.base in ("pedestrian", "child", "kid", "ped", "cyclist", "person",
@@ -6607,8 +6612,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         for k in range(first_act + 1, stage_count):
             if any(a[0] == k and a[1] == 2 and a[2] > 0 for a in ego_entity.actions):
                 action = _ego_action(ego_entity, _ego_class(ego_entity, k, junction), k)
-                if action == last == "stop":
-                    continue  # "stopped at red ... kept the vehicle stopped until ...": still so, nothing new
+                if action == last and action in ("stop", "go_straight"):
+                    continue  # "stopped at red ... kept the vehicle stopped until ...", "the van is then passed by
+                    # the ego": still so, nothing new
                     # (a second lane change the same way is a manoeuvre of its own)
                 last = action
                 if language_allows_later_ego():
