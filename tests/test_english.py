@@ -183,6 +183,17 @@ def test_schoolchildren_counted_and_uncounted():
 
 # -- road -----------------------------------------------------------------------------------------------
 
+@pytest.mark.parametrize("prompt, lanes, objects", [
+    ("The ego drives on a 60 km/h arterial.", 1, ("speed_60",)),
+    ("The ego drives on a 40 mph dual carriageway.", 2, ("speed_64",)),
+    ("The ego drives on a 50 km/h residential street.", 1, ("speed_50",)),
+    ("A van cuts in on a divided highway.", 2, ()),
+])
+def test_the_limit_of_a_road_named_by_its_class_and_the_lanes_of_a_divided_road(prompt, lanes, objects):
+    road = lower(prompt).scenario.road
+    assert (road.lanes, road.required_objects) == (lanes, objects)
+
+
 @pytest.mark.parametrize("prompt, lanes", [("A car drives level with the ego on its left.", 2),
                                            ("The ego changes to the left lane.", 2),
                                            ("An oncoming car passes on a road with no junction.", 1),

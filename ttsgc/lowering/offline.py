@@ -1375,7 +1375,8 @@ LIMIT_WORDS = {"limit", "zone", "sign", "signs", "signed", "signposted", "limite
 
 
 LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "area", "stretch", "section", "lane",
-                  "avenue", "roadway", "carriageway", "route", "limit"}
+                  "avenue", "roadway", "carriageway", "route", "limit", "arterial", "boulevard", "expressway",
+                  "dual", "bypass", "parkway", "thoroughfare", "collector", "residential", "interstate", "autobahn"}
 
 
 MILES_WORDS = {"mph", "miles", "mile", "feet", "ft", "yards", "yd", "yds", "interstate", "freeway", "northbound",
@@ -1525,6 +1526,9 @@ BOUND_WORDS = {"northbound", "southbound", "eastbound", "westbound", "inbound", 
 COUNTED_LANE_KINDS = {"through", "travel", "traffic", "running", "driving", "general", "approach", "thru", "moving"}
 
 
+DIVIDED_ROADS = {("dual", "carriageway"), ("dual", "carriageways"), ("divided", "highway")}
+
+
 def _lanes(r: _Reader, lanes: int | None) -> int | None:
     """'a two-lane road', 'three lanes in each direction' (which wins over a total: 'a four-lane avenue, two
     lanes each way'), 'multi-lane'."""
@@ -1569,6 +1573,10 @@ def _lanes(r: _Reader, lanes: int | None) -> int | None:
                 found.append((True, int(n)))
                 r.used.add(i)
     if not found:
+        divided = any((t.word, nxt.word) in DIVIDED_ROADS for t, nxt in zip(tokens, tokens[1:]))
+        if divided and (lanes or 1) < 2:
+            r.notes.append("inferred: lanes >= 2 (a dual carriageway has two lanes each way)")
+            return 2
         return lanes
     per = [n for p, n in found if p]
     return max(per) if per else max([n for _, n in found] + [lanes or 0])
