@@ -1903,7 +1903,7 @@ def test_a_driver_sounding_the_horn_drives_and_driving_like_a_maniac_is_aggressi
 def test_a_witness_on_foot_is_a_pedestrian_and_the_vehicle_described_is_the_ego():
     found = agents("I was standing on the pavement a little way ahead when I saw a green minibus heading east. "
                    "A moped was travelling just in front of the minibus, and the minibus ran into it.")
-    assert found == [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "front"),
+    assert found == [("bus", "go_straight", "ego"), ("motorcycle", "go_straight", "front"),
                      ("pedestrian", "on_the_sidewalk", "front_left")]
 
 
@@ -1941,7 +1941,7 @@ def test_a_cars_width_is_a_measure_not_a_car():
 def test_numbered_lanes_say_the_lane_count_and_which_side():
     scene = lower("Dual carriageway. I was in lane one of two and a minibus in lane two came level with me.").scenario
     assert scene.road.lanes == 2
-    assert [(a.type, a.relative_to_ego) for a in scene.agents() if not a.is_ego] == [("car", "right")]
+    assert [(a.type, a.relative_to_ego) for a in scene.agents() if not a.is_ego] == [("bus", "right")]
     scene = lower("On the M1 in lane three of four, a tanker in lane two just ahead of me moved into my lane.").scenario
     assert scene.road.lanes == 4
     assert [(a.type, a.action, a.relative_to_ego) for a in scene.agents() if not a.is_ego] == [
@@ -2040,7 +2040,7 @@ def test_the_vehicle_i_was_in_is_the_ego(prompt, ego_type):
 def test_where_traffic_keeps_left_an_unsaid_overtaking_is_on_the_right():
     assert ("car", "change_lane_to_right", "ego") in agents(
         "Along the dual carriageway you pulled out to get past a slow tractor.")
-    assert ("car", "go_straight", "back_right") in agents("A minibus overtook us on the motorway.")
+    assert ("bus", "go_straight", "back_right") in agents("A minibus overtook us on the motorway.")
     assert ("car", "go_straight", "back_left") in agents("On the interstate a pickup overtook us.")
 
 
@@ -3219,7 +3219,7 @@ def test_one_of_them_corrected_to_both_of_them_is_both():
 ])
 def test_the_vehicle_named_as_the_ego_is_the_ego_wherever_it_is_mentioned(prompt):
     found = agents(prompt)
-    assert ("car", "turn_right", "ego") in found and len(found) == 2, found
+    assert ("bus", "turn_right", "ego") in found and len(found) == 2, found
 
 
 def test_another_vehicle_of_the_kind_named_as_the_ego_is_not_the_ego():
@@ -3771,7 +3771,7 @@ def test_a_letters_greeting_with_its_addressee_and_a_german_closing_are_not_the_
 def test_the_driver_a_vehicle_is_driven_by_is_the_ego_when_it_is_named_again():
     email = ("The minibus, driven by Marek, was on the high street. At the lights Marek turned left and a cyclist "
              "came up on the inside. The minibus is the ego.")
-    assert agents(email) == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "right")]
+    assert agents(email) == [("bus", "turn_left", "ego"), ("cyclist", "go_straight", "right")]
 
 
 @pytest.mark.parametrize("prompt, ego", [
@@ -4355,7 +4355,7 @@ def test_the_road_the_narrator_turns_into_is_the_destination_in_any_tense(prompt
     ("The player drives the getaway van down a back street.", "car"),
     ("The player pulls the bus in and waits at the stop.", "bus"),
     ("I was the front seat passenger in my brother's Skoda on the motorway.", "car"),
-    ("I was sitting in the passenger seat of my friend's minibus when we stopped.", "car"),
+    ("I was sitting in the passenger seat of my friend's minibus when we stopped.", "bus"),
 ])
 def test_a_vehicle_the_speaking_ego_drives_or_sits_in_is_the_egos_own(prompt, ego):
     found = [a.type for a in lower(prompt).scenario.agents()]
@@ -4430,8 +4430,8 @@ def test_a_sequence_word_after_a_place_that_starts_with_that_still_opens_a_stage
 @pytest.mark.parametrize("prompt, expected, absent", [
     ("You rolled past the give way line instead of stopping, and a van came from the right.",
      ("car", "go_straight", "ego"), ("car", "stop", "ego")),
-    ("The lorry kept going rather than stopping at the red light.", ("truck", "go_straight", "front"),
-     ("truck", "stop", "front")),
+    ("The lorry kept going rather than stopping at the red light.", ("truck", "go_straight", "ego"),
+     ("truck", "stop", "ego")),
     ("Rather than braking, the van swerved into the left lane.", ("car", "change_lane_to_left", "front"),
      ("car", "stop", "front")),
 ])
@@ -5140,7 +5140,7 @@ def test_a_vehicle_noun_that_only_describes_the_noun_after_it_is_no_agent(prompt
 @pytest.mark.parametrize("prompt, kinds", [
     ("A school bus was stopped ahead picking kids up.", ["bus", "car"]),
     ("A bus was unloading schoolchildren on the right.", ["bus", "car"]),
-    ("A minibus dropped off pupils at the school gate.", ["car", "car"]),
+    ("A minibus dropped off pupils at the school gate.", ["bus", "car"]),
     ("A taxi stopped ahead to pick up a passenger. A cyclist passed on my right.", ["car", "car", "cyclist"]),
     ("A bus was at the stop letting people off. A man then crossed in front of me.", ["bus", "car", "pedestrian"]),
     ("A woman carrying a child crossed in front of me.", ["car", "pedestrian"]),
@@ -5879,6 +5879,11 @@ def test_a_move_between_numbered_lanes_is_a_lane_change():
      [("car", "stop", "front"), ("police", "go_straight", "ego")]),
     ("Coach in the middle lane of a motorway, an ambulance comes up fast, and our driver moves over to the left.",
      [("ambulance", "go_straight", "front"), ("bus", "change_lane_to_left", "ego")]),
+    ("Just the minibus doing an ordinary left turn at a junction with traffic lights, early morning, fog.",
+     [("bus", "turn_left", "ego")]),
+    ("The lorry turns right while two cars come the other way.",
+     [("car", "go_straight", "road_of_straight"), ("car", "go_straight", "road_of_straight"),
+      ("truck", "turn_right", "ego")]),
 ])
 def test_a_text_that_names_no_ego_tells_its_scene_from_the_first_vehicle_it_names(prompt, expected):
     """A third-person scene ('a bus turns left ...') or one naming the ego only as 'our driver' is told from its
@@ -5890,7 +5895,6 @@ def test_a_text_that_names_no_ego_tells_its_scene_from_the_first_vehicle_it_name
     "bus pulling out of a stop on the right, rain",
     "Two-lane road, and this pickup's doing like forty. Don't try to pass him. Stay behind.",
     "A van is parked on the right; a child runs out from behind it.",
-    "The lorry kept going rather than stopping at the red light.",
 ])
 def test_a_vehicle_placed_relative_to_someone_or_an_order_to_the_driver_leaves_the_ego_unnamed(prompt):
     """A place ('on the right', 'ahead') is relative to an onlooker, and an order is given to the one at the

@@ -47,7 +47,7 @@ ASKS_FOR_OTHERS = re.compile(r"\b(?:any|other|anyone|anybody|anything)\b|\b(?:wa
 # "Were there other cars?", "Was there a bus behind you?", "Did you see his car?": a question of what was there
 EXISTENTIAL = re.compile(r"\b(?:any|anyone|anybody)\b|\b(?:was|were|is|are) there\b", re.I)
 
-VEHICLE_NOUNS = {"van": "car", "cab": "car", "taxi": "car", "car": "car", "vehicle": "car", "minibus": "car",
+VEHICLE_NOUNS = {"van": "car", "cab": "car", "taxi": "car", "car": "car", "vehicle": "car", "minibus": "bus",
                  "pickup": "car", "suv": "car", "truck": "truck", "lorry": "truck", "hgv": "truck", "bus": "bus",
                  "coach": "bus", "motorcycle": "motorcycle", "motorbike": "motorcycle", "scooter": "motorcycle",
                  "moped": "motorcycle"}

@@ -6286,8 +6286,6 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if named is None or next(u for u in r.units if u.tokens[0].sentence == named.tokens[0].sentence and
                              u.category != "word") is not named:
         return None  # "the queue reaches the retail park, and a lorry is edging along": it opens on no vehicle
-    if named.start > 0 and r.tokens[named.start - 1].word in ("the", "this", "that"):
-        return None  # "the lorry kept going through the red light": one an onlooker points at, the ego
     opening = [u for u in r.units if u.start == 0 or r.tokens[u.start - 1].sentence != u.tokens[0].sentence]
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
