@@ -144,6 +144,8 @@ class Entity:
     group_open: int = 0  # members of a counted group not yet named by a re-mention
     features: set = field(default_factory=set)  # position features, see positions.txt
     relative_to: "Entity | None" = None  # "in front of a truck": at the truck's place
+    relative_how: str = ""  # where it is from that one: "ahead", "behind", "level" ("behind the coach"), or how
+    # it drives by it: "follows", "leads"
     actions: list = field(default_factory=list)  # (stage, strength, rank, order, class, direction)
     behavior: str | None = None
     road_type: str | None = None
@@ -4515,7 +4517,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 continue
             if reference is not None and not reference.is_ego and u.category == "positions" and \
                     u.meaning in ("ahead", "behind", "level") and reference is not e:
-                e.relative_to = e.relative_to or reference
+                if e.relative_to is None:
+                    e.relative_to, e.relative_how = reference, u.meaning
                 r.mark(u)
                 continue
             if u.meaning == "road_straight" and u.tokens[0].word == "across" and u.tokens[-1].word != "from" and \
@@ -5728,6 +5731,9 @@ def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
                     t.features.add("followed")  # the ego follows it: in the ego's lane, whichever lane that is
                 elif base in LEADING:
                     t.features.add("behind")
+            elif not e.is_ego and not t.is_ego and e is not t and e.relative_to is None and \
+                    (base in FOLLOWING or base in LEADING):  # "a bus drives along; a car follows it": where the
+                e.relative_to, e.relative_how = t, "follows" if base in FOLLOWING else "leads"  # bus is, behind it
 
 
 QUANTITY_UNITS = {"kmh": "speed", "mph": "speed", "m": "distance", "meters": "distance", "meter": "distance",
@@ -6260,9 +6266,12 @@ OWN_WAY = {"go_straight", "move", "turn", "turn_left", "turn_right", "lane_chang
            "reach"}  # the classes of actions a vehicle does on its own way, not to or for someone else
 
 
+RELATIONS_TO_THE_EGO = {"follows": "behind", "leads": "ahead"}  # a relation by verb, as a place by the ego
+
+
 def _may_drive_the_scene(e: Entity) -> bool:
     return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and not e.features and \
-        e.relative_to is None and e.parent is None and e.named_of is None
+        (e.relative_to is None or e.relative_how in RELATIONS_TO_THE_EGO) and e.parent is None and e.named_of is None
 
 
 def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
@@ -6270,7 +6279,8 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
         return None  # "a semi hit my mirror": the one speaking is the ego
     ordered = sorted(r.entities, key=lambda e: e.key)
     anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e) and
-                   any(o.relative_to is e for o in r.entities)), None)
+                   any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities)), None)
+    # (not "a police car follows a red sedan": the follower is the one the scene is told from)
     if anchor is not None:
         return anchor
     first = next((e for e in ordered if not e.is_ego), None)  # a group named first ("four vehicles wait: a car,
@@ -6302,6 +6312,13 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
     if first is None:
         return
     supplied = next((e for e in r.entities if e.is_ego), None)
+    if first.relative_to is not None:  # "a police car follows a red sedan": the sedan drives ahead of the ego
+        first.relative_to.features |= {"ahead", "followed"} if first.relative_how == "follows" else {"behind"}
+        first.relative_to = None
+    for e in r.entities:
+        if e.relative_to is first and e.relative_how:  # "an ambulance comes up behind the coach": behind the ego
+            e.relative_to = None
+            e.features.add(RELATIONS_TO_THE_EGO.get(e.relative_how, e.relative_how))
     if driver_named and supplied is not None:  # the driver is the ego, the vehicle theirs
         supplied.type = first.type
         supplied.actions += [a for a in first.actions if not any(b[0] == a[0] for b in supplied.actions)]
