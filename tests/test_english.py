@@ -1900,6 +1900,17 @@ def test_a_driver_sounding_the_horn_drives_and_driving_like_a_maniac_is_aggressi
     assert [a.behavior for a in scene.agents() if not a.is_ego] == ["aggressive"]
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("One of our artics is sat at a red light waiting to turn right.", [("truck", "turn_right", "ego")]),
+    ("Driver in one of our 44-tonne artics is sat at a red light waiting to turn right at the crossroads. Two cars "
+     "coming the other way. Once the light goes green he starts his turn.",
+     [("car", "go_straight", "road_of_straight"), ("car", "go_straight", "road_of_straight"), ("truck", "stop", "ego"),
+      ("truck", "turn_right", "ego")]),
+])
+def test_one_of_our_vehicles_is_the_fleets_vehicle_the_scene_is_told_from(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_a_witness_on_foot_is_a_pedestrian_and_the_vehicle_described_is_the_ego():
     found = agents("I was standing on the pavement a little way ahead when I saw a green minibus heading east. "
                    "A moped was travelling just in front of the minibus, and the minibus ran into it.")

@@ -3024,6 +3024,16 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                                 units[owner].category == "word" else set())
     speakers = owners & {"my", "our"} or not words and owner >= 0 and (
         units[owner].category == "agents" and units[owner].meaning == "ego" and units[owner].tokens[-1].possessive)
+    fleet = first
+    while fleet > lo and units[fleet - 1].category == "word" and units[fleet - 1].word not in OWNERS | DETERMINERS:
+        fleet -= 1  # "one of our (big) artics"
+    at_its_wheel = fleet >= 5 and units[fleet - 4].word in ("in", "driving", "of") and \
+        units[fleet - 5].category == "agents" and units[fleet - 5].meaning == "ego"
+    fleets_one = plural and kind in V.EGO_TYPES and fleet >= 3 and [x.word for x in units[fleet - 3:fleet]] in (
+        ["one", "of", "our"], ["one", "of", "my"]) and (at_its_wheel or not any(e.is_ego for e in r.entities))
+    # "(the driver in) one of our artics": the fleet's vehicle the scene is told from
+    if fleets_one:
+        is_ego, plural = True, False
     if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
             u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
         is_ego = True  # "my little Fiat", "our battered old van": the speaker's own vehicle, however described
