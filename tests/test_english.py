@@ -1911,6 +1911,15 @@ def test_one_of_our_vehicles_is_the_fleets_vehicle_the_scene_is_told_from(prompt
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two children walk along the pavement on the car's left.",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "left"), ("pedestrian", "on_the_sidewalk", "left")]),
+    ("A cyclist rides on the bus's right.", [("bus", "go_straight", "ego"), ("cyclist", "go_straight", "right")]),
+])
+def test_a_side_said_of_a_vehicle_by_its_possessive_places_the_subject_from_that_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_a_witness_on_foot_is_a_pedestrian_and_the_vehicle_described_is_the_ego():
     found = agents("I was standing on the pavement a little way ahead when I saw a green minibus heading east. "
                    "A moped was travelling just in front of the minibus, and the minibus ran into it.")

@@ -4468,6 +4468,15 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             u.meaning = "into_ego_lane"  # "swerves right in front of me": where the cut-in ends, not where it began
         if u.meaning == "ahead" and _turns_in_front(units, i):
             u.meaning = "turned_in_front"  # "turns right in front of me": ahead, or across from its side road
+        possessor = next((np for np in phrases if np.index == i - 1 and np.entity is not None and
+                          not np.entity.is_ego), None) if u.category == "positions" and u.meaning in (
+            "side_left", "side_right", "ahead", "behind") and i > 0 and units[i - 1].tokens[-1].possessive else None
+        if possessor is not None and subject and possessor.entity not in subject:
+            for e in subject:  # "children walk on the car's left": the car is where they are placed from
+                if e.relative_to is None and not e.is_ego:
+                    e.relative_to, e.relative_how = possessor.entity, u.meaning
+            r.mark(u)
+            continue
         owner = _let_in_place(units, i, phrases, recent) or \
             _modifier_owner(units, i, phrases, subject, main_verbs, participles)
         in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
