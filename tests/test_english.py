@@ -5904,6 +5904,8 @@ def test_a_move_between_numbered_lanes_is_a_lane_change():
     ("A coach is in the middle lane. An ambulance comes up behind the coach.",
      [("ambulance", "go_straight", "back"), ("bus", "go_straight", "ego")]),
     ("A bus drives along. A car follows it.", [("bus", "go_straight", "ego"), ("car", "go_straight", "back")]),
+    ("A pedestrian crosses the road while a car approaches.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
     ("Just the minibus doing an ordinary left turn at a junction with traffic lights, early morning, fog.",
      [("bus", "turn_left", "ego")]),
     ("The lorry turns right while two cars come the other way.",

@@ -6304,6 +6304,9 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
         return anchor
     first = next((e for e in ordered if not e.is_ego), None)  # a group named first ("four vehicles wait: a car,
     # a bus, ...") has count 0 once its members are named: no protagonist
+    people_first = first is not None and first.type in V.VULNERABLE_TYPES
+    if people_first:  # "a wheelchair user trying to get across, and the car turning left doesn't look": the
+        first = next((e for e in ordered if not e.is_ego and e.type not in V.VULNERABLE_TYPES), None)  # vehicle
     if first is None or not _may_drive_the_scene(first):
         return None
     earliest = min((a[0] for a in first.actions), default=0)
@@ -6312,8 +6315,8 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
         # pulled away": met by someone, who is the ego
     named = next((u for u in r.units if u.category == "agents"), None)
-    if named is None or next(u for u in r.units if u.tokens[0].sentence == named.tokens[0].sentence and
-                             u.category != "word") is not named:
+    if not people_first and (named is None or next(u for u in r.units if u.tokens[0].sentence ==
+                                                    named.tokens[0].sentence and u.category != "word") is not named):
         return None  # "the queue reaches the retail park, and a lorry is edging along": it opens on no vehicle
     opening = [u for u in r.units if u.start == 0 or r.tokens[u.start - 1].sentence != u.tokens[0].sentence]
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
