@@ -183,6 +183,16 @@ def test_schoolchildren_counted_and_uncounted():
 
 # -- road -----------------------------------------------------------------------------------------------
 
+@pytest.mark.parametrize("prompt, without, position", [
+    ("A pedestrian crosses from the right, no marked crosswalk.", ("crosswalk",), "front_right"),
+    ("No painted crosswalk; a pedestrian crosses.", ("crosswalk",), "front"),
+])
+def test_a_denial_reaches_past_the_kind_of_what_it_denies(prompt, without, position):
+    scene = lower(prompt).scenario
+    assert scene.road.without_objects == without and scene.road.required_objects == ()
+    assert [a.relative_to_ego for a in scene.agents() if not a.is_ego] == [position]
+
+
 @pytest.mark.parametrize("prompt, lanes, objects", [
     ("The ego drives on a 60 km/h arterial.", 1, ("speed_60",)),
     ("The ego drives on a 40 mph dual carriageway.", 2, ("speed_64",)),

@@ -1149,6 +1149,10 @@ LAMP_STATES = {"flashing", "flash", "flashed", "going", "blazing", "strobing", "
                "pulsing", "whirling", "ablaze"}  # "lights strobing": a vehicle's own lamps, no signal
 
 
+DENIED_KINDS = {"marked", "painted", "designated", "proper", "formal", "official", "dedicated", "real", "actual",
+                "signalised", "signalized", "controlled", "pedestrian", "visible", "working"}
+
+
 def _road(r: _Reader) -> RoadSpec:
     fields: dict = {"required_signals": [], "without_signals": [], "required_objects": [], "without_objects": []}
     junction: bool | None = None
@@ -1288,8 +1292,9 @@ def _road(r: _Reader) -> RoadSpec:
                     and "any" not in said:  # "outside any crosswalk": there may be none
                 put(word, False)
         if u.category == "comma" or (u.category == "word" and u.word in
-                                     ("and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic")):
-            continue
+                                     {"and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic"}
+                                     | DENIED_KINDS):
+            continue  # "no marked crosswalk", "no proper give-way sign": the denial reaches past its kind
         if removing and u.category == "word" and u.word in ("the", "its", "their", "both"):
             continue  # "removed the stop sign and the stop line": each thing removed
         if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
@@ -1367,8 +1372,8 @@ def _denied(units: list[Unit], k: int) -> bool:
         if u.category == "word" and (u.word in NEGATIONS or u.word == "away") or \
                 u.category == "numbers" and u.meaning == "0":
             return True
-        if not (u.category == "word" and u.word in ("at", "a", "an", "any", "from", "near", "the")):
-            return False
+        if not (u.category == "word" and u.word in {"at", "a", "an", "any", "from", "near", "the"} | DENIED_KINDS):
+            return False  # ("no marked crosswalk": the denial reaches past its kind)
     return False
 
 
