@@ -4669,6 +4669,16 @@ def test_a_posts_handles_and_hashtags_name_nobody_on_the_road(prompt):
     assert agents(prompt) == [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]
 
 
+@pytest.mark.parametrize("prompt, weather", [
+    ("Ego turns left at the junction #rain #night", ("mid_rain", "night")),
+    ("a taxi pulled out in front of me and stopped #dashcam #fog", ("fog", "noon")),
+    ("a taxi pulled out in front of me and stopped #roadrage #Tesla", None),
+])
+def test_a_posts_closing_tags_that_name_weather_or_light_say_it_of_the_scene(prompt, weather):
+    said = lower(prompt).scenario.weather
+    assert ((said.condition, said.time) if said else None) == weather
+
+
 @pytest.mark.parametrize("prompt", [
     "a lorry broke down on the hard shoulder ahead of me and nobody moved over. come on people",
     "a lorry broke down on the hard shoulder ahead of me. drive safe out there folks",

@@ -936,13 +936,25 @@ TRAILING_TAGS = re.compile(r"(?:[ \t]*(?:#[A-Za-z][A-Za-z0-9_]+|@[A-Za-z_][A-Za-
 TAG_WORDS = re.compile(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|[0-9]+")
 
 
+def _weather_tags(m: re.Match) -> str:
+    """Of the tags a post ends with, those that name its weather or light ('#rain', '#NightDrive' is no topic of
+    weather: '#night' is) are said of the scene, as a last sentence; the rest file it under a topic."""
+    said = []
+    for tag in re.findall(r"#([A-Za-z][A-Za-z0-9_]*)", m.group(0)):
+        words = tuple(w.lower() for w in TAG_WORDS.findall(tag))
+        entry = lexicon().phrases.get(words)
+        if entry is not None and entry[0] == "weather":
+            said.append(" ".join(words))
+    return (" " + ", ".join(said) + ".") if said else ""
+
+
 def _without_social_markup(text: str) -> str:
     """A post's handles ('@WestMidsPolice is it worth reporting') name whom it is addressed to, and the tags it
     ends with ('#cycling #schoolbus') file it under a topic: neither is a road user of the scene, whatever
     words they are made of. A tag inside a sentence ('a #Tesla cut me off') is the word it tags."""
     if "@" not in text and "#" not in text:
         return text
-    text = TRAILING_TAGS.sub("", text)
+    text = TRAILING_TAGS.sub(_weather_tags, text)
     text = HANDLE.sub(" ", text)
     return HASHTAG.sub(lambda m: " ".join(TAG_WORDS.findall(m.group(1))).lower() if not m.group(1).isupper()
                        else m.group(1), text)
