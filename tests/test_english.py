@@ -125,6 +125,14 @@ def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_n
     assert [a for a in agents(prompt) if a[2] != "ego"] == sorted(expected)
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car parks on the left.", [("car", "go_straight", "ego"), ("car", "stop", "front_left")]),
+    ("The car parks are full, and a truck ahead stops.", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+])
+def test_a_car_that_parks_is_a_car_and_car_parks_are_places(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_a_passive_with_an_adverb_before_its_verb_is_a_passive_and_the_ego_driving_on_is_nothing_new():
     found = agents("The ego's lane is blocked by a parked delivery van. The van is then passed by the ego, which "
                    "moves over into the left lane.")

@@ -1034,6 +1034,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             prev is not None and prev.word in ("a", "the", "this", "that", "city", "school"):
         return [Unit(m.start, m.start + 1, "agents", "bus", span[:1]),  # "a bus stops": no bus stops
                 Unit(m.start + 1, m.end, "actions", "stop", span[1:])]
+    if m.category == "agents" and m.meaning == "none" and [t.word for t in span] == ["car", "parks"] and \
+            prev is not None and prev.word in ("a", "an", "one", "another", "this", "that", "each"):
+        return [Unit(m.start, m.start + 1, "agents", "car", span[:1]),  # "a car parks on the left": no car parks
+                Unit(m.start + 1, m.end, "actions", "stop", span[1:])]
     auxiliary = prev
     if prev is not None and prev.word in PASSIVE_ADVERBS and m.start > 1:
         auxiliary = tokens[m.start - 2]  # "the van is then passed by the ego"
