@@ -133,6 +133,15 @@ def test_a_car_that_parks_is_a_car_and_car_parks_are_places(prompt, expected):
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt", [
+    "One car waits on the left and one turns right.",
+    "One car waits on the left, and one turns right at the junction.",
+])
+def test_one_opening_a_clause_of_its_own_after_one_car_is_another_car(prompt):
+    found = agents(prompt)
+    assert sum(where != "ego" for _, _, where in found) == 2 and ("car", "stop", "road_of_left_turn") in found
+
+
 def test_a_passive_with_an_adverb_before_its_verb_is_a_passive_and_the_ego_driving_on_is_nothing_new():
     found = agents("The ego's lane is blocked by a parked delivery van. The van is then passed by the ego, which "
                    "moves over into the left lane.")

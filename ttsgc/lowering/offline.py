@@ -5116,14 +5116,17 @@ def _stands_alone(units: list[Unit], i: int) -> bool:
 
 def _enumerated_one(r: _Reader, units: list[Unit], i: int, phrases: list[NounPhrase]) -> Entity | None:
     """'one car in front, one on the left, one on the right': with no counted group before, a list item 'one' +
-    place after an agent itself counted 'one' names one more of that kind, placed there."""
-    if not _place_follows(units, i):
+    place after an agent itself counted 'one' names one more of that kind, placed there; so does a clause of
+    its own that opens on 'one' and its verb ('one car waits on the left and one turns right')."""
+    opens = i == 0 or i == 1 and units[0].word in ("and", "but", "while", "whereas")
+    acts = opens and i + 1 < len(units) and units[i + 1].category == "actions"
+    if not (_place_follows(units, i) or acts):
         return None
     before = [np for np in phrases if np.index < i and np.entity is not None and not np.entity.is_ego]
     if i > 0 and units[i - 1].word in (",", "and", ";") and before:
         last = before[-1]
         return last.entity if units[last.first].word == "one" and last.entity.count == 1 else None
-    if i == 0 and r.listed_one is not None and r.listed_one[1] == units[i].tokens[0].sentence:
+    if opens and r.listed_one is not None and r.listed_one[1] == units[i].tokens[0].sentence:
         return r.listed_one[0]  # the list goes on past a clause break
     return None
 
