@@ -470,15 +470,13 @@ def _blocked(after: list[Sample], ego: list[Sample], ego_body: Body | None, body
     if not ego_after:
         return False, "stopped, but the ego was not in the scene"
     first = ego_after[0]
-    if (after[0].x - first.x) * math.cos(first.h) + (after[0].y - first.y) * math.sin(first.h) <= 0:
+    if _in_frame_of(first, after[0])[0] <= 0:
         return False, "was not ahead of the ego when its action started"
     reach = (ego_body.length if ego_body else 4.5) / 2 + body.length / 2
     held_up = max(40.0, HELD_UP_S * first.speed)
     on_path = []
     for e in ego_after:
-        dx, dy = stop.x - e.x, stop.y - e.y
-        ahead = dx * math.cos(e.h) + dy * math.sin(e.h)
-        side = -dx * math.sin(e.h) + dy * math.cos(e.h)
+        ahead, side = _in_frame_of(e, stop)
         if abs(side) < 2.0 and (-reach < ahead < reach or (e.t >= since and 0 < ahead < held_up)):
             on_path.append(e)
     if not on_path and _heads_a_queue(stop, ego_after[-1], standing):
@@ -501,14 +499,17 @@ def _heads_a_queue(stop: Sample, ego: Sample, standing: list[Sample]) -> bool:
     """Whether `stop` lies in line ahead of the standing ego, within QUEUE_REACH_M, with another standing body
     in line between them (the one the ego stopped behind): the bodies a blocker ran on past during its pull-in
     (some 60 m at motorway speed) are no gap the ego could use."""
-    def along(s: Sample) -> tuple[float, float]:
-        dx, dy = s.x - ego.x, s.y - ego.y
-        return dx * math.cos(ego.h) + dy * math.sin(ego.h), -dx * math.sin(ego.h) + dy * math.cos(ego.h)
-
-    ahead, side = along(stop)
+    ahead, side = _in_frame_of(ego, stop)
     if ego.speed >= STOPPED_MPS or not 0 < ahead < QUEUE_REACH_M or abs(side) >= 2.0:
         return False
-    return any(0 < a < ahead and abs(b) < 2.0 for a, b in map(along, standing))
+    return any(0 < a < ahead and abs(b) < 2.0 for a, b in (_in_frame_of(ego, s) for s in standing))
+
+
+def _in_frame_of(viewer: Sample, seen: Sample) -> tuple[float, float]:
+    """Where `seen` is from `viewer`: metres ahead along its heading, and to its left."""
+    dx, dy = seen.x - viewer.x, seen.y - viewer.y
+    c, n = math.cos(viewer.h), math.sin(viewer.h)
+    return dx * c + dy * n, -dx * n + dy * c
 
 
 def _crossed(odr: OpenDrive, road: str, first: Sample, after: list[Sample]) -> tuple[bool, str]:
