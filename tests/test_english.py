@@ -126,6 +126,14 @@ def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_n
 
 
 @pytest.mark.parametrize("prompt, expected", [
+    ("The L4 vehicle turns left at the junction.", [("car", "turn_left", "ego")]),
+    ("A Level 4 shuttle turns right.", [("bus", "turn_right", "ego")]),
+])
+def test_an_automation_level_names_the_automated_vehicle_not_a_label(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
     ("A car parks on the left.", [("car", "go_straight", "ego"), ("car", "stop", "front_left")]),
     ("The car parks are full, and a truck ahead stops.", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
 ])

@@ -1101,6 +1101,8 @@ def tokenize(text: str) -> list[Token]:
                   r"(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?|cars?))", r"\1\2",
                   text)  # "NPC_1", "Actor 2", "Walker 2" (a simulator's names)
     text = re.sub(r"\b(in|for|until|till) v\d{1,2}(?:\.\d{1,2})?\b", r"\1 this version", text)  # "left out in v1": a release
+    text = re.sub(r"\b(?:l|level\s?)[2-5](?=\s+(?:automated\s+|autonomous\s+)?(?:vehicle|car|shuttle|truck|bus|taxi|"
+                  r"robotaxi|av)s?\b)", "automated", text)  # "the L4 vehicle": its automation level, no label
     text = re.sub(r"\b([a-z]{1,3}|npc|actor|agent|target|object|adversary)(\d)\b", r"\1#\2", text)  # SV1, NPC2: labels
     text = re.sub(r"\b([a-z]{4,12})(\d{1,2})\b", _agent_label, text)  # "bike1", "lorry2": a table's names
     tokens: list[Token] = []
