@@ -125,6 +125,15 @@ def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_n
     assert [a for a in agents(prompt) if a[2] != "ego"] == sorted(expected)
 
 
+@pytest.mark.parametrize("phrase, kind", [
+    ("a quad bike", "motorcycle"), ("a digger", "truck"), ("a street sweeper", "truck"), ("a hearse", "car"),
+    ("a paramedic car", "ambulance"), ("a U-Haul", "truck"), ("a man pushing a pram", "pedestrian"),
+])
+def test_less_common_road_users_are_read_as_their_kind(phrase, kind):
+    found = agents(f"The ego drives straight and {phrase} ahead stops.")
+    assert [t for t, _, where in found if where != "ego"] == [kind]
+
+
 @pytest.mark.parametrize("prompt, expected", [
     ("The L4 vehicle turns left at the junction.", [("car", "turn_left", "ego")]),
     ("A Level 4 shuttle turns right.", [("bus", "turn_right", "ego")]),

@@ -4881,6 +4881,7 @@ def _said_signals(r: _Reader) -> set[str]:
 VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people", "lad", "bloke",
                 "mate", "lunatic", "nutter", "maniac", "numpty", "muppet", "idiot", "jerk", "moron",
                 "chap", "fella", "fellow", "gentleman", "young man", "young woman", "teen", "teenager"}
+ON_FOOT_WITH = {"pushing", "wheeling", "walking", "carrying", "pulling", "holding", "leading", "with"}
 NAMED_ON_FOOT = {"pedestrian", "ped", "walker", "jogger", "runner", "pedestrian target"}
 VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
                         "block"}
@@ -6710,7 +6711,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.features.add("behind")
     for e in others:
         action, direction = _intro_action(e)
-        on_foot = bool(e.aliases & NAMED_ON_FOOT)  # "a woman ... the pedestrian stopped": named as one on foot
+        on_foot = bool(e.aliases & NAMED_ON_FOOT) or any(  # "a woman ... the pedestrian stopped": named as one on
+            t.word in ON_FOOT_WITH for t in r.tokens[e.said_at + 1:e.said_at + 3])  # foot; "a man pushing a pram"
         if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and (action in VEHICLE_ONLY_ACTIONS or any(
                 a[4] == "horn" for a in e.actions)):
             e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
