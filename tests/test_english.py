@@ -5972,6 +5972,22 @@ def test_a_text_that_names_no_ego_tells_its_scene_from_the_first_vehicle_it_name
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("I watch this every morning: a car drives down the street and a little boy runs out in front of it.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("I think it should be a bus turning left while a cyclist goes straight on its inside.",
+     [("bus", "turn_left", "ego"), ("cyclist", "go_straight", "front")]),
+    ("I was driving when a car pulled out in front of me.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("My dashcam caught a van turning left across a cyclist.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "front"), ("cyclist", "go_straight", "front")]),
+])
+def test_a_speaker_who_only_watches_or_asks_leaves_the_scene_to_the_vehicle_it_is_about(prompt, expected):
+    """'I watch', 'I think', 'I want' say nothing of the speaker on the road; 'I saw', 'I was driving', 'in front
+    of me', 'my dashcam' put the speaker in a vehicle there, and that vehicle is the ego."""
+    assert agents(prompt) == expected
+
+
 @pytest.mark.parametrize("prompt", [
     "bus pulling out of a stop on the right, rain",
     "Two-lane road, and this pickup's doing like forty. Don't try to pass him. Stay behind.",

@@ -6179,6 +6179,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             else []
     if not ego_words or "read the narrator's driver as the ego" in narration.notes:
         _protagonist_vehicle(r, driver_named=bool(ego_words))
+    elif _EGO_SPEAKS.get() and not _speaker_on_the_road(r):
+        _protagonist_vehicle(r, driver_named=False)  # "I watch drivers speed past the school ... a car speeding
+        # past, and a boy running out in front of it": an onlooker speaks; the scene is told from the car
     _witness_on_foot(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
@@ -6307,7 +6310,7 @@ def _may_drive_the_scene(e: Entity) -> bool:
 
 
 def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
-    if not driver_named and any(t.word in SPEAKERS for t in r.tokens):
+    if not driver_named and any(t.word in SPEAKERS for t in r.tokens) and _speaker_on_the_road(r):
         return None  # "a semi hit my mirror": the one speaking is the ego
     ordered = sorted(r.entities, key=lambda e: e.key)
     anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e) and
@@ -6335,6 +6338,45 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
     return first
+
+
+def _drives(after: list[Token]) -> bool:
+    """Whether the verb after a speaker ('I had been following', 'we pulled out') is one of the road."""
+    verb = next((t for t in after if t.word not in AUXILIARIES | {"just", "then", "also", "still", "already"}), None)
+    entry = lexicon().phrases.get((verb.base,)) if verb is not None else None
+    return entry is not None and entry[0] == "actions"
+
+
+SEEN_FROM_A_SEAT = {"saw", "see", "noticed", "notice", "spotted", "spot", "heard", "looked", "glanced", "checked",
+                    "clocked", "caught"}
+SPEAKER_PLACES = {"of", "behind", "beside", "past", "passed", "to", "at", "into", "towards", "toward", "overtook",
+                  "overtakes", "overtake", "hit", "cut", "followed", "follows", "by", "alongside", "round", "around",
+                  "with", "near"}  # "in front of me", "cut us up", "came at me": someone is placed by the speaker
+
+
+def _speaker_on_the_road(r: _Reader) -> bool:
+    """Whether the one who says 'I' or 'we' is in the scene: does something there, is someone's reference ('in
+    front of me', 'my lane'), or is spoken to ('you'). 'I watch drivers do thirty past the school. Please recreate
+    it: a car speeding past ...' is said by an onlooker; the scene is the car's."""
+    speaker = next((e for e in r.entities if e.is_ego and e.head in FIRST_PERSON | {"we", "us", "our"}), None)
+    if speaker is not None and (speaker.actions or speaker.features):
+        return True
+    words = [t.word for t in r.tokens]
+    for k, w in enumerate(words):
+        if w in ("you", "your", "yours") or w in ("i", "we") and k + 1 < len(words) and words[k + 1] in SEEN_FROM_A_SEAT:
+            return True  # "I saw a van pull out": seen from the driver's seat; "I watch drivers do thirty": onlooking
+        if w in ("i", "we") and _drives(r.tokens[k + 1:k + 5]):
+            return True  # "a lorry that I had been following": the speaker drives
+        if w in ("my", "our") and k + 1 < len(words) and words[k + 1] in ("dashcam", "dash", "camera", "footage",
+                                                                          "video", "recording"):
+            return True  # "my dashcam caught it": filmed from the speaker's car
+        if w in ("me", "us") and k > 0 and words[k - 1] in SPEAKER_PLACES:
+            return True
+        if w in ("my", "our") and k + 1 < len(words) and (lexicon().phrases.get((words[k + 1],)) or ("", ""))[0] in (
+                "agents", "positions", "bodies") or w in ("my", "our") and k + 1 < len(words) and words[k + 1] in (
+                "lane", "left", "right", "side", "mirror", "bumper", "bonnet", "windscreen", "way", "path"):
+            return True
+    return False
 
 
 def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
