@@ -125,6 +125,19 @@ def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_n
     assert [a for a in agents(prompt) if a[2] != "ego"] == sorted(expected)
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("residential street, jogger on right sidewalk, parked cars, dusk",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]),
+    ("Van driver on a residential street, cars parked both sides. A kid steps out in front of the van.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("Two parked cars on the right; a child runs out.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front_right"), ("car", "stop", "front_right"),
+      ("pedestrian", "cross_the_road", "front")]),
+])
+def test_parked_vehicles_said_with_no_count_are_scenery_and_counted_ones_are_agents(prompt, expected):
+    assert agents(prompt) == expected
+
+
 @pytest.mark.parametrize("phrase, kind", [
     ("a quad bike", "motorcycle"), ("a digger", "truck"), ("a street sweeper", "truck"), ("a hearse", "car"),
     ("a paramedic car", "ambulance"), ("a U-Haul", "truck"), ("a man pushing a pram", "pedestrian"),

@@ -144,6 +144,7 @@ class Entity:
     group_open: int = 0  # members of a counted group not yet named by a re-mention
     features: set = field(default_factory=set)  # position features, see positions.txt
     relative_to: "Entity | None" = None  # "in front of a truck": at the truck's place
+    uncounted: bool = False  # a plural said with no count ("parked cars", "cars parked both sides")
     relative_how: str = ""  # where it is from that one: "ahead", "behind", "level" ("behind the coach"), or how
     # it drives by it: "follows", "leads"
     actions: list = field(default_factory=list)  # (stage, strength, rank, order, class, direction)
@@ -3230,6 +3231,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             units[head + 1].category = "word"  # "a street with cars parked both sides": said of the scenery
         return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
     headline = not words and count is None and not plural and u.tokens[0].sentence == 0
+    uncounted = count is None and plural and not words & {"a", "an", "one", "another"}
     if count is None:
         count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
     if count is not None and count > 1 and not plural and u.base in ("group", "crowd", "family"):
@@ -3246,6 +3248,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     entity = Entity(r.new_key(), kind, False, stage, count=count, head=u.base,
                     generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label,
                     headline=headline and not label, said_at=u.tokens[0].index)
+    entity.uncounted = uncounted
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
     if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
@@ -6726,6 +6729,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     oncoming: set[str] = set()
     resolved: dict[int, tuple[str, str]] = {}
     for e in r.entities:
+        group = e.parent or e
+        if group.uncounted and "parked" in group.features and e.type not in V.VULNERABLE_TYPES and e.count > 0 and \
+                not e.is_ego and all(a[4] in ("stop", "move") for a in e.actions) and not e.label:
+            e.count = 0  # "residential street, parked cars, dusk": the street's scenery, said with no count
+            r.notes.append(f"left out: '{e.head}' parked, with no count, are the street's scenery")
         if e.type == "pedestrian" and "on_board" in e.features and e.count > 0:
             e.count = 0  # "the kids arguing in the back": passengers of the ego, nobody on the road
             r.notes.append(f"left out: '{e.head}' in the back of the ego's car (passengers, no agent)")
