@@ -125,6 +125,15 @@ def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_n
     assert [a for a in agents(prompt) if a[2] != "ego"] == sorted(expected)
 
 
+@pytest.mark.parametrize("prompt", [
+    "The ego goes straight and there isn't a car around.",
+    "The ego goes straight and there is not a single car around.",
+    "The ego goes straight; not one car in sight.",
+])
+def test_not_a_car_names_no_car(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego")]
+
+
 @pytest.mark.parametrize("prompt, expected", [
     ("residential street, jogger on right sidewalk, parked cars, dusk",
      [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]),

@@ -3022,6 +3022,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     r.mark(u)
     kind, is_ego = _agent_type(u)
     count, first, words, modifiers = _count_before(units, head, lo)
+    if first > lo and units[first - 1].word == "not" and (words & {"a", "an", "single"} or count == 1) and \
+            not is_ego:
+        count = 0  # "there isn't a car around", "not one car in sight", "not a single pedestrian"
     for k in range(first, head):
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
