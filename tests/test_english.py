@@ -125,6 +125,17 @@ def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_n
     assert [a for a in agents(prompt) if a[2] != "ego"] == sorted(expected)
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm in the middle lane doing 70, and a semi in the left lane just ahead of me starts drifting into my lane. "
+     "Car braked and moved over to the right lane.",
+     [("car", "change_lane_to_right", "ego"), ("truck", "change_lane_to_right", "front_left")]),
+    ("I stopped at the junction. Car came from the right.",
+     [("car", "go_straight", "road_of_right_turn"), ("car", "stop", "ego")]),
+])
+def test_a_bare_car_opening_a_speakers_note_is_the_speakers_unless_it_comes_from_somewhere(prompt, expected):
+    assert agents(prompt) == expected
+
+
 @pytest.mark.parametrize("prompt", [
     "The ego goes straight and there isn't a car around.",
     "The ego goes straight and there is not a single car around.",

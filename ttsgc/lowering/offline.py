@@ -3142,6 +3142,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) and
             not _placed_apart(placed_here, e) for e in r.entities):
         definite = True  # "Pickup ahead of me. Truck braked": the pickup, in note style
+    speaker_ego = next((e for e in r.entities if e.is_ego and e.head in SPEAKERS | {"i'm"}), None)
+    if bare and first == lo and u.base in ("car", "vehicle") and speaker_ego is not None and not placed_here and \
+            not listed and not any(not e.is_ego and e.type == "car" for e in r.entities):
+        definite = True  # "I'm in the middle lane ... Car braked and moved over": the speaker's car, note style
     if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
         definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
     if bare and u.base in ("driver", "rider") and any(not e.is_ego and e.type not in V.VULNERABLE_TYPES
