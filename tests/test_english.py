@@ -136,6 +136,16 @@ def test_a_bare_car_opening_a_speakers_note_is_the_speakers_unless_it_comes_from
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two cyclists, one of whom is a child, ride on the right.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "right"), ("cyclist", "go_straight", "right")]),
+    ("Three pedestrians, two of whom are children, cross ahead.",
+     [("car", "go_straight", "ego")] + [("pedestrian", "cross_the_road", "front")] * 3),
+])
+def test_what_some_members_of_a_group_are_said_in_passing_is_no_agent_beside_it(prompt, expected):
+    assert agents(prompt) == expected
+
+
 @pytest.mark.parametrize("prompt", [
     "The ego goes straight and there isn't a car around.",
     "The ego goes straight and there is not a single car around.",

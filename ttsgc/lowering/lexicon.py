@@ -866,6 +866,25 @@ def _agent_phrase(words: list[str] | tuple[str, ...]) -> tuple[str, ...] | None:
     return None
 
 
+MEMBERS_DESCRIBED = re.compile(r",?\s+(?:one|two|three|four|both|all|some|most|\d) of (?:whom|them|which|those)"
+                               r"(?:\s+(?:is|are|was|were|being))?\s+(?:an?\s+)?([a-z][a-z' -]{0,40}?)(?:\s*,(?=\s)|(?=\s*[.;:!?)]|$))",
+                               re.I)
+
+
+MEMBERS_PLACED = {"on", "in", "riding", "driving", "at", "from", "to", "into", "behind", "ahead", "beside", "near"}
+
+
+def _without_members_described(text: str) -> str:
+    """'two cyclists, one of whom is a child, ride ...', 'three pedestrians, two of them children,': what some
+    of a group are, said in passing, is no agent beside the group; a member that does something or is somewhere
+    ('one of which turns left', 'one of them on a scooter') is read as said."""
+    def said_of_members(m: re.Match) -> str:
+        said = m.group(1).lower().split()
+        acts = any(w in _verbs() or lexicon().base(w)[0] in _verbs() for w in said)
+        return m.group(0) if acts or said[:1] and said[0] in MEMBERS_PLACED else " "
+    return MEMBERS_DESCRIBED.sub(said_of_members, text)
+
+
 def _scenario_identifiers(text: str) -> str:
     """Scenario engineers name agents as program identifiers ('TargetVehicle', 'Car_1', 'FireTruck_1', or
     'Lead (car)' in an entities list) and re-mention them by that name: each becomes its agent noun carrying the
@@ -998,7 +1017,8 @@ def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(text)))))
+    text = _without_members_described(
+        _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(text))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _without_calques(text)
