@@ -146,6 +146,18 @@ def test_what_some_members_of_a_group_are_said_in_passing_is_no_agent_beside_it(
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("School bus stopped in front of you with three kids crossing road in front of it. You stopped. Don't move "
+     "again even if kids look clear.",
+     [("bus", "stop", "front"), ("car", "stop", "ego")] + [("pedestrian", "cross_the_road", "front")] * 3),
+    ("At 06:10 vehicle under test was travelling east when jogger ran across road from north side and was struck "
+     "by vehicle's front left corner.", [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
+])
+def test_a_bare_noun_said_again_without_its_article_is_the_one_said_before(prompt, expected):
+    """Notes drop their articles: 'kids' after 'three kids', 'vehicle' after 'vehicle under test'."""
+    assert agents(prompt) == expected
+
+
 @pytest.mark.parametrize("prompt", [
     "The ego goes straight and there isn't a car around.",
     "The ego goes straight and there is not a single car around.",

@@ -3137,6 +3137,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one;
         # not "oncoming car turning left, lead car braking": a place in the name sets another apart; not "lead
         # car braking, car cutting in", "a pedestrian crossing; pedestrian waiting": an item that does another thing
+    if not words and count is None and plural and not label and any(
+            not e.is_ego and e.count > 1 and e.head.split()[-1] == u.base.split()[-1] and
+            not _placed_apart(placed_here, e) for e in r.entities):
+        definite = True  # "three kids crossing in front of it ... even if kids look clear": the kids said before
     loose = loose_names().get(u.base, frozenset())
     if bare and loose and not any(e.type == kind and not e.is_ego for e in r.entities) and any(
             not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) and
@@ -3160,7 +3164,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     existential = first >= 2 and units[first - 2].word == "there" and units[first - 1].word in (
         "is", "was", "be", "comes", "came")  # "there's car coming the other way": introduced, never the ego
     if bare and placed_by is None and ego_now is not None and u.base in ("vehicle", "car") and (
-            ego_now.head.split()[-1] == u.base and len(ego_now.head.split()) > 1) and not existential and \
+            u.base in ego_now.head.split() and len(ego_now.head.split()) > 1) and not existential and \
             not any(not e.is_ego and e.type == "car" for e in r.entities) and not listed and not placed_here:
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego;
         # "my car turns right, car cutting in from the left": a list's item, another car
