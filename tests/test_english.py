@@ -126,6 +126,20 @@ def test_another_said_alone_is_one_more_of_the_kind_named_before_or_the_groups_n
 
 
 @pytest.mark.parametrize("prompt, expected", [
+    ("Two pedestrians cross at the crosswalk in front of the ego while a third walks along the sidewalk on its "
+     "right.", [("pedestrian", "cross_the_road", "near_the_crosswalk")] * 2 + [("pedestrian", "on_the_sidewalk",
+                                                                                 "right")]),
+    ("A sedan pulled up on your left a second before you did.", [("car", "stop", "left")]),
+    ("Some bloke speeding in a white hatchback in the lane to my left cuts in front of me.",
+     [("car", "change_lane_to_right", "left")]),
+    ("A pedestrian stands on the sidewalk next to a zebra crossing.", [("pedestrian", "on_the_sidewalk",
+                                                                        "near_the_crosswalk")]),
+])
+def test_a_third_said_alone_a_driver_speeding_in_a_car_and_a_place_next_to_a_crossing(prompt, expected):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
     ("I'm in the middle lane doing 70, and a semi in the left lane just ahead of me starts drifting into my lane. "
      "Car braked and moved over to the right lane.",
      [("car", "change_lane_to_right", "ego"), ("truck", "change_lane_to_right", "front_left")]),

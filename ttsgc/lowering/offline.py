@@ -1194,7 +1194,9 @@ def _road(r: _Reader) -> RoadSpec:
                 negated = False
             continue
         if u.category in ("road", "positions") and _then_doubted(units, k):
-            said = u.meaning if u.category == "road" else "crosswalk" if u.meaning == "crosswalk" else None
+            said = u.meaning if u.category == "road" else (
+                "continental_crosswalk" if "zebra" in {t.word for t in u.tokens} else "crosswalk"
+            ) if u.meaning == "crosswalk" else None
             if said in V.SIGNALS or said in V.OBJECTS:
                 put(said, True)  # "at a crosswalk? probably not": said, then taken back
             r.mark(u)
@@ -4159,7 +4161,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(part, i, i, plural=True))
             continue
-        if u.word == "another" and u.category == "word" and not any(np.first <= i <= np.index for np in phrases) \
+        one_more = u.word == "another" or u.word in ("second", "third", "fourth", "fifth") and i > 0 and \
+            units[i - 1].word in ("a", "an") and i + 1 < len(units) and \
+            units[i + 1].category in ("positions", "actions")  # "while a third walks along the sidewalk": one
+        # more ("a second before you did", "a second to react": a moment)
+        if one_more and u.category == "word" and not any(np.first <= i <= np.index for np in phrases) \
                 and _stands_alone(units, i):
             kin = next((np.entity for np in phrases if np.index < i and np.entity is not None and
                         not np.entity.is_ego), None) or next((e for e in previous_subject if not e.is_ego), None) or \
@@ -4170,7 +4176,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             elif kin is not None:  # "a car ahead and another behind": one more of the kind named last, placed apart
                 member = Entity(r.new_key(), kin.type, False, clause.stage, head=kin.head, listed_after=kin)
                 r.entities.append(member)
-                r.notes.append(f"inferred: 'another' is another {kin.head}")
+                r.notes.append(f"inferred: '{u.word}' is another {kin.head}")
             if kin is not None and member is not None:
                 r.mark(u)
                 if i + 1 < len(units) and units[i + 1].word == "one":
@@ -5232,8 +5238,11 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
+            seat = [u.word for u in between if not (u.category in ("actions", "behaviours") and
+                                                    u.tokens[0].word.endswith("ing"))] \
+                if len(between) == 2 else [u.word for u in between]  # "some bloke speeding in a white hatchback"
             driver = (prev.entity.head in DRIVERS or prev.entity.head.split()[-1] == "rider" and
-                      np.entity.type in V.TWO_WHEELER_TYPES) and ([u.word for u in between] in (
+                      np.entity.type in V.TWO_WHEELER_TYPES) and (seat in (
                 ["in"], ["driving"], ["on"], ["of"]) or not between and units[np.first].word == "of") or (
                 # "the driver of a stopped bus": the bus
                 prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
