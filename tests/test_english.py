@@ -140,6 +140,17 @@ def test_a_third_said_alone_a_driver_speeding_in_a_car_and_a_place_next_to_a_cro
 
 
 @pytest.mark.parametrize("prompt, expected", [
+    ("I was on the 7.5 tonne lorry last night and crept along behind another lorry for ten miles.",
+     [("truck", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+    ("SC-07: an ambulance approaches the ADS vehicle from behind; the ADS vehicle changes lane to the right.",
+     [("ambulance", "go_straight", "back"), ("car", "change_lane_to_right", "ego")]),
+    ("Just me on a wet country road at night, not another car around.", [("car", "go_straight", "ego")]),
+])
+def test_a_weight_a_document_identifier_and_not_another_count_nothing(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
     ("I'm in the middle lane doing 70, and a semi in the left lane just ahead of me starts drifting into my lane. "
      "Car braked and moved over to the right lane.",
      [("car", "change_lane_to_right", "ego"), ("truck", "change_lane_to_right", "front_left")]),

@@ -631,7 +631,9 @@ AGE = re.compile(rf"\b{AGE_NUMBER}(?:[\s-]+(?:years?|yrs?)[\s-]+old(?P<noun>s)?|
 
 
 MEASURE = re.compile(r"\b\d+(?:\.\d+)?-(?:tonnes?|tons?|tonner|t|foot|feet|ft|metres?|meters?|m|seaters?|axles?|"
-                     r"doors?|wheeled|passengers?|cylinders?|litres?|liters?)\b(?=\s+[a-z])", re.I)
+                     r"doors?|wheeled|passengers?|cylinders?|litres?|liters?)\b(?=\s+[a-z])|"
+                     r"\b\d+(?:\.\d+)?\s+(?:tonnes?|tons?|tonner|seaters?|axles?|wheelers?)\b(?=\s+[a-z])", re.I)
+# ('a 7.5 tonne lorry': a weight said apart from its number is no distance, as '10 metres ahead' is)
 
 
 def _ages(text: str) -> str:

@@ -3024,7 +3024,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     r.mark(u)
     kind, is_ego = _agent_type(u)
     count, first, words, modifiers = _count_before(units, head, lo)
-    if first > lo and units[first - 1].word == "not" and (words & {"a", "an", "single"} or count == 1) and \
+    if first > lo and units[first - 1].word == "not" and (words & {"a", "an", "single", "another"} or count == 1) and \
             not is_ego:
         count = 0  # "there isn't a car around", "not one car in sight", "not a single pedestrian"
     for k in range(first, head):
@@ -6279,7 +6279,7 @@ AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operat
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked", "drive", "steer", "pilot", "pull",
                    "operate", "ride", "sit", "passenger"}
-OPERATED_FROM = {"in", "of", "driving", "drove", "riding", "operating", "operated", "drive", "ride", "operate", "steer",
+OPERATED_FROM = {"in", "on", "of", "driving", "drove", "riding", "operating", "operated", "drive", "ride", "operate", "steer",
                  "pilot", "pull"}  # the word right before the ego's own vehicle
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
 
