@@ -456,6 +456,19 @@ def test_the_lexicon_is_a_file_per_category_with_british_spellings_and_multiword
         "A truck pulls out at the signalized junction.")
 
 
+def test_no_phrase_of_a_category_file_is_listed_under_two_meanings():
+    """The first line that names a phrase owns it; a later line naming it otherwise is dead text that reads as a
+    rule ('other vehicle' as a car after it was made generic), so none may be written."""
+    from ttsgc.lowering import lexicon as lexicon_module
+    twice = []
+    for category in lexicon_module.CATEGORIES:
+        seen: dict = {}
+        for meaning, words in lexicon_module._entries(category):
+            if seen.setdefault(words, meaning) != meaning:
+                twice.append((category, " ".join(words), seen[words], meaning))
+    assert twice == []
+
+
 # -- the whole lowering ---------------------------------------------------------------------------------
 
 def test_the_ego_going_straight_compiles(tmp_path):
