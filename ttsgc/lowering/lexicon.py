@@ -385,15 +385,15 @@ LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bu
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 
 
-DASHED_KEY = re.compile(r"^\s*(?:[-*\u2022]\s*)?([A-Za-z][A-Za-z0-9 '/_-]{0,30}?(?:\s*\([A-Za-z0-9 ,/_-]{1,24}\))?)"
-                        r"\s+[-\u2013\u2014]\s+(.*)$")  # "Van - stopped, front": an agent's key set off by a dash
+KEY_NAME = r"([A-Za-z][A-Za-z0-9 '/_-]{0,30}?(?:\s*\([A-Za-z0-9 ,/_-]{1,24}\))?)"  # "Ego (truck)": its type aside
+KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?" + KEY_NAME + r"\s*[:|]\s*(.*)$")
+DASHED_KEY = re.compile(r"^\s*(?:[-*\u2022]\s*)?" + KEY_NAME + r"\s+[-\u2013\u2014]\s+(.*)$")  # "Van - stopped, front"
+
+
 def _dashed_agent_key(line: str) -> re.Match | None:
+    """A line keyed by an agent set off by a dash ('2. Van - stopped, front'); a dash after other words is prose."""
     m = DASHED_KEY.match(line)
     return m if m is not None and _names_agent(m.group(1)) else None
-
-
-KEY_LINE = re.compile(r"^\s*(?:[-*\u2022]\s*)?(?:\(?[a-z0-9]\)\s*)?([A-Za-z][A-Za-z0-9 '/_-]{0,30}?(?:\s*\([A-Za-z0-9 ,/_-]{1,24}\))?)"
-                      r"\s*[:|]\s*(.*)$")  # "Ego (truck): turning left": a key with its type in brackets
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
               "description", "goal", "purpose", "report", "note", "story", "epic", "feature"}
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
@@ -956,8 +956,8 @@ TAG_WORDS = re.compile(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|[0-9]+")
 
 
 def _weather_tags(m: re.Match) -> str:
-    """Of the tags a post ends with, those that name its weather or light ('#rain', '#NightDrive' is no topic of
-    weather: '#night' is) are said of the scene, as a last sentence; the rest file it under a topic."""
+    """Of the tags a post ends with, those that name its weather or its light ('#rain', '#night') are said of the
+    scene, as a last sentence; the rest ('#dashcam', '#roadrage') file it under a topic."""
     said = []
     for tag in re.findall(r"#([A-Za-z][A-Za-z0-9_]*)", m.group(0)):
         words = tuple(w.lower() for w in TAG_WORDS.findall(tag))
