@@ -151,6 +151,17 @@ def test_a_weight_a_document_identifier_and_not_another_count_nothing(prompt, ex
 
 
 @pytest.mark.parametrize("prompt, expected", [
+    ("Three-lane motorway, I'm in the middle lane on the bike doing about 70. An ambulance is coming up behind me, "
+     "so I moved over to the left lane.", [("ambulance", "go_straight", "back"), ("motorcycle", "change_lane_to_left",
+                                                                                 "ego")]),
+    ("I saw a kid on a bike cross in front of me.", [("car", "go_straight", "ego"), ("cyclist", "cross_the_road",
+                                                                                     "front")]),
+])
+def test_the_bike_a_speaker_is_on_is_their_motorbike_and_someone_elses_bike_is_a_bicycle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
     ("I'm in the middle lane doing 70, and a semi in the left lane just ahead of me starts drifting into my lane. "
      "Car braked and moved over to the right lane.",
      [("car", "change_lane_to_right", "ego"), ("truck", "change_lane_to_right", "front_left")]),

@@ -3049,6 +3049,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # "(the driver in) one of our artics": the fleet's vehicle the scene is told from
     if fleets_one:
         is_ego, plural = True, False
+    on_the_bike = u.base in ("bike", "motorbike") and not plural and count is None and (
+        "my" in words or first > lo and units[first - 1].word == "on" and words & {"the", "my"}) and \
+        any(t.word in ("i", "me", "my", "i'm") for t in r.tokens) and \
+        not any(e.is_ego and e.type not in ("car", "motorcycle") for e in r.entities)
+    if on_the_bike:  # "coming up to the junction on the bike ... on my left": the rider's own; one who speaks
+        is_ego, kind = True, "motorcycle"  # cannot be a cyclist ego, so the bike is a motorbike
     if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
             u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
         is_ego = True  # "my little Fiat", "our battered old van": the speaker's own vehicle, however described
