@@ -4177,13 +4177,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                         not np.entity.is_ego), None) or next((e for e in previous_subject if not e.is_ego), None) or \
                 next((e for e in reversed(recent) if not e.is_ego), None)  # the subject before: "one of them cuts
             # in front of the car, and another is undertaking": another of them
-            if kin is not None and kin.parent is not None:  # "two mopeds; one cuts in, another undertakes": the
-                member = _member(r, recent)  # group's next member
-            elif kin is not None:  # "a car ahead and another behind": one more of the kind named last, placed apart
-                member = Entity(r.new_key(), kin.type, False, clause.stage, head=kin.head, listed_after=kin)
-                r.entities.append(member)
-                r.notes.append(f"inferred: '{u.word}' is another {kin.head}")
-            if kin is not None and member is not None:
+            # "two mopeds; one cuts in, another undertakes": the group's next member; "a car ahead and another
+            # behind": one more of the kind named last, placed apart
+            member = None if kin is None else _member(r, recent) if kin.parent is not None else \
+                _one_more_like(r, kin, clause.stage, f"'{u.word}' is another {kin.head}", listed_after=kin)
+            if member is not None:
                 r.mark(u)
                 if i + 1 < len(units) and units[i + 1].word == "one":
                     r.mark(units[i + 1])
@@ -4199,10 +4197,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 j -= 1  # "a blue one", "another red one"
             kin = next((e for e in reversed(recent) if not e.is_ego), None)
             if j >= 0 and j < i - 1 and units[j].word in ("a", "an", "another") and kin is not None:
-                member = Entity(r.new_key(), kin.type, False, clause.stage, head=kin.head)
-                r.entities.append(member)  # "a red car in front, and a blue one behind it": another car
-                r.notes.append(f"inferred: 'a ... one' is another {kin.head}")
-                r.mark(u)
+                member = _one_more_like(r, kin, clause.stage, f"'a ... one' is another {kin.head}")
+                r.mark(u)  # "a red car in front, and a blue one behind it": another car
                 phrases.append(NounPhrase(member, i, i, introduced=True))
                 continue
             if _the_ego_is(units, i - 3) or _the_ego_is(units, i - 2):
@@ -4214,11 +4210,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.notes.append(f"inferred: 'one' placed apart from the {extra.head}s placed before is one more")
             listed = extra or (_enumerated_one(r, units, i, phrases) if member is None else None)
             if listed is not None:
-                member = Entity(r.new_key(), listed.type, False, clause.stage, head=listed.head,
-                                listed_after=listed)
-                r.entities.append(member)  # "one car in front, one on the left": a list of single agents
-                r.listed_one = (member, u.tokens[0].sentence)
-                r.notes.append(f"inferred: 'one ...' in a list after 'one {listed.head}' is another {listed.head}")
+                member = _one_more_like(r, listed, clause.stage, f"'one ...' in a list after 'one {listed.head}' is "
+                                        f"another {listed.head}", listed_after=listed)
+                r.listed_one = (member, u.tokens[0].sentence)  # "one car in front, one on the left": single agents
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i, introduced=True))
                 continue
@@ -5129,6 +5123,15 @@ def _one_more_of_a_placed_group(r: _Reader, units: list[Unit], i: int, phrases: 
     if ones >= group.count or any(u.word in ("other", "rest", "another", "second", "others") for u in rest):
         return None
     return group
+
+
+def _one_more_like(r: _Reader, kin: Entity, stage: int, why: str, listed_after: Entity | None = None) -> Entity:
+    """A new agent of the kind of one named before ('a blue one', 'another', 'one on the left'), noted; one listed
+    after it does what it does unless said to do otherwise."""
+    member = Entity(r.new_key(), kin.type, False, stage, head=kin.head, listed_after=listed_after)
+    r.entities.append(member)
+    r.notes.append(f"inferred: {why}")
+    return member
 
 
 def _stands_alone(units: list[Unit], i: int) -> bool:
