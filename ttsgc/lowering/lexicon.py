@@ -715,13 +715,18 @@ LABEL_KEY = re.compile(r"(?:npc|actor|agent|target|obj|object|adversary|vru|ped|
                        r"|vehicle|unit|participant)[ _#]?\d{1,2}")
 
 
+def _key_words(key: str) -> tuple[str, tuple[str, ...], tuple | None]:
+    """A key's name ('Ego (truck)': its type in brackets aside), its words, and the lexicon's entry for them."""
+    name = re.sub(r"\s*\(.*\)", "", key).strip()
+    words = tuple(_normalize(name).split())
+    return name, words, lexicon().phrases.get(words) or lexicon().phrases.get(words[-1:]) if words else None
+
+
 def _names_agent(key: str) -> bool:
     """'Van', 'ego', 'NPC2', 'Actor_1', 'lead car': a key that names an agent, not a title."""
-    key = re.sub(r"\s*\(.*\)", "", key)  # "Ego (truck)": the key's name, its type aside
-    words = tuple(_normalize(key).split())
-    if LABEL_KEY.fullmatch(key.lower().strip()):
+    name, words, entry = _key_words(key)
+    if LABEL_KEY.fullmatch(name.lower()):
         return True
-    entry = lexicon().phrases.get(words) or lexicon().phrases.get(words[-1:]) if words else None
     return bool(entry) and entry[0] == "agents" and entry[1] != "none" and len(words) <= 3
 
 
@@ -736,10 +741,8 @@ def _first_named(key: str, before: str) -> str:
     """'SUV: behind. Truck: ahead': a key that names a kind of agent not named in the text before it introduces
     one ('a truck is ahead'), so it is never read as a loose second name of an earlier one; the ego, a label
     ('V2', 'Ped_1', 'EV'), a plural or a noun said before stays as written."""
-    written = re.sub(r"\s*\(.*\)", "", key).strip()
+    written, words, entry = _key_words(key)
     name = written.lower()
-    words = tuple(_normalize(name).split())
-    entry = lexicon().phrases.get(words) or lexicon().phrases.get(words[-1:]) if words else None
     if not words or not _names_agent(key) or LABEL_KEY.fullmatch(name) or words[0] in NAMED_BEFORE or \
             (entry is not None and entry[1] == "ego") or "ego" in words or lexicon().base(words[-1])[1] or \
             re.search(r"\d", name) or len(words[-1]) == 1 or written.isupper() and written not in TYPE_ACRONYMS or \
