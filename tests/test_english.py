@@ -6307,3 +6307,90 @@ def test_the_road_the_ego_heads_for_is_its_destination_in_any_tense(prompt, othe
 def test_and_before_a_counted_subject_and_its_verb_ends_a_condition_with_a_copula(prompt):
     assert ("car", "stop", "ego") not in agents(prompt), agents(prompt)
     assert ("car", "stop", "back") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A cyclist rode in front of me before turning left.", [("car", "go_straight", "ego"),
+                                                            ("cyclist", "turn_left", "front")]),
+    ("A van overtook me before cutting in.", [("car", "change_lane_to_right", "back_left"),
+                                              ("car", "go_straight", "ego")]),
+    ("I followed a cyclist before turning left.", [("car", "turn_left", "ego"), ("cyclist", "go_straight", "front")]),
+])
+def test_a_participle_after_before_or_while_is_done_by_the_subject_of_its_clause(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We were at the red light when an ambulance came through from the right. The kids were fascinated.",
+     [("ambulance", "go_straight", "road_of_right_turn"), ("car", "stop", "ego")]),
+    ("I was taking my mother to her appointment. My mother was shaken up but she is fine.",
+     [("car", "go_straight", "ego")]),
+    ("I stopped at the school. The children crossed in front of me.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_the_speakers_family_named_with_the_and_doing_nothing_on_the_road_rides_with_the_speaker(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_counted_group_including_the_speaker_at_a_red_light_waits_with_it():
+    assert agents("We were sitting at the red light, three cars including mine, and I was at the back of the queue.") \
+        == [("car", "stop", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]
+    assert agents("Three cars including the ego drive down the high street.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "front"), ("car", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Winter pick-up is in the dark now. A child ran out between the parked cars right in front of me.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("At pick-up time a pick-up truck stopped in front of me.", [("car", "go_straight", "ego"),
+                                                               ("car", "stop", "front")]),
+])
+def test_the_school_pick_up_is_a_time_and_a_pick_up_truck_a_car(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", ["The number 3 bus pulls away ahead of me.", "The platform 4 bus pulls away ahead of me."])
+def test_a_number_after_a_naming_noun_counts_nothing(prompt):
+    assert agents(prompt) == [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]
+
+
+def test_just_me_and_the_bike_is_the_speakers_motorbike():
+    assert agents("Just me and the bike, crawling along a country lane with no junctions for miles.") == [
+        ("motorcycle", "go_straight", "ego")]
+
+
+def test_a_clause_after_a_semicolon_with_no_subject_goes_on_with_the_subject_before_it():
+    assert agents("Ego: passenger car, follows its lane.\nChallenger: passenger car in the adjacent left lane, ahead "
+                  "of the ego; changes lane to the right into the ego lane.") == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+    assert agents("A truck is stopped ahead; overtake it on the left.") == [
+        ("car", "change_lane_to_left", "ego"), ("truck", "stop", "front")]
+
+
+def test_a_catalogues_functional_scenario_line_is_its_title():
+    assert agents("Functional scenario: Stationary obstacle in ego lane.\nEgo: follows lane.\n"
+                  "Obstacle: broken-down truck, stationary in the ego lane ahead.") == [
+        ("car", "go_straight", "ego"), ("truck", "stop", "front")]
+
+
+def test_a_crossing_cyclist_crosses_and_asks_for_no_crosswalk():
+    scenario = lower("A crossing cyclist at an unsignalised T-junction. Ego turns right.").scenario
+    assert "crosswalk" not in scenario.road.required_objects
+    assert sorted((a.type, a.action) for a in scenario.agents()) == [("car", "turn_right"),
+                                                                      ("cyclist", "cross_the_road")]
+    assert "crosswalk" in road("The ego stops at the crossing. A pedestrian crosses.").required_objects
+
+
+def test_bare_vehicle_in_an_operators_log_is_the_av_named_before():
+    assert agents("AV turning right on green. Two pedestrians on the crosswalk on the far side; vehicle waited for "
+                  "them to clear.") == [("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+                                        ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+    assert ("car", "go_straight", "road_of_left_turn") in agents(
+        "AV going straight at the junction. Vehicle approaching from the left.")
+
+
+def test_every_doer_and_joins_after_a_passives_by_does_what_the_first_does():
+    assert agents("The ego is overtaken by a van and a bus.") == [
+        ("bus", "go_straight", "back_left"), ("car", "go_straight", "back_left"), ("car", "go_straight", "ego")]
+    assert agents("The ego is overtaken by a van and a bus waits ahead.") == [
+        ("bus", "stop", "front"), ("car", "go_straight", "back_left"), ("car", "go_straight", "ego")]

@@ -36,6 +36,7 @@ class Token:
     question: bool = False  # in a sentence that asks ("What happens if a truck runs a red light?")
     title: bool = False  # in a title line ("Case: child after ball"): read for the road and weather only
     misspelt: str = ""  # the word as written, when it was read as the nearest known word ("pedestrain")
+    after_semicolon: bool = False  # its sentence follows a semicolon ("ahead of the ego; changes lane"): one thought
 
     @property
     def number(self) -> float | None:
@@ -395,7 +396,8 @@ def _dashed_agent_key(line: str) -> re.Match | None:
     m = DASHED_KEY.match(line)
     return m if m is not None and _names_agent(m.group(1)) else None
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
-              "description", "goal", "purpose", "report", "note", "story", "epic", "feature"}
+              "description", "goal", "purpose", "report", "note", "story", "epic", "feature",
+              "functional", "logical", "concrete"}  # "Functional scenario: Stationary obstacle in ego lane."
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
@@ -1146,6 +1148,7 @@ def tokenize(text: str) -> list[Token]:
             current += 1
     titled = {sentence_of_raw[k] for k, w in enumerate(raw) if w == "\u00a7"}
     said = 0  # tokens in the sentence so far
+    semicolon = False  # the last sentence ended with a semicolon
     for position, word in enumerate(raw):
         question = sentence_of_raw[position] in asks
         if word == "\u00a7":
@@ -1154,6 +1157,7 @@ def tokenize(text: str) -> list[Token]:
             if tokens and tokens[-1].sentence == sentence:
                 sentence += 1
                 said = 0
+                semicolon = word == ";"
             if word in SENTENCE_ENDS or word == ",":
                 continue
         said += 1
@@ -1179,7 +1183,7 @@ def tokenize(text: str) -> list[Token]:
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
                 and part not in ("is", "was", "has", "does", "goes", "bus", "police")
             tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question,
-                                sentence_of_raw[position] in titled, misspelt))
+                                sentence_of_raw[position] in titled, misspelt, semicolon))
     return tokens
 
 

@@ -158,6 +158,7 @@ class Entity:
     includes_ego: bool = False  # "three cars including the ego": the ego shares what the group does
     aliases: set = field(default_factory=set)  # short names given in brackets ("(GVT)")
     headline: bool = False  # named bare in the text's first sentence, as a heading names it ("Jaywalker mid-block.")
+    definite: bool = False  # first named with 'the', as someone known to the speaker ("the kids were fascinated")
     implied: bool = False  # never named, only done ("cut-in from the right lane ahead"): someone did it
     said_at: int = -1  # the token it was first named at
     named_of: "Entity | None" = None  # the counted group it is named as included in ("three cars, including a
@@ -180,6 +181,7 @@ class _Reader:
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
     listed_one: tuple | None = None  # (agent, sentence) last named as a 'one ...' list item: the list may go on
+    passive: object = None  # the last clause with a passive's doer ('overtaken by a van'): 'and a bus' may follow
     # past a clause break ("one car in front, one on the left and one on the right")
 
     def mark(self, unit: Unit) -> None:
@@ -1078,6 +1080,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     # "cyclist: on crosswalk at exit arm, crossing": a note's piece of its own about a person, what they do
     counted = len(span) > 1 and span[-1].word == "crossing" and (span[0].word in ("pedestrians", "peds") or (
         m.start > 0 and (_word_number(tokens[m.start - 1]) or 0) >= 1))  # "two pedestrians crossing": people
+    if m.category == "road" and [t.word for t in span] == ["crossing"] and nxt and \
+            (lexicon().phrases.get((tokens[m.end].base,)) or ("", ""))[1] in V.VULNERABLE_TYPES:
+        return [Unit(m.start, m.end, "actions", "cross", span)]  # "a crossing cyclist": one who crosses, no crosswalk
     if m.category == "road" and span[-1].word in ("crossing", "xing") and (
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
             nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or counted or (len(span) == 1 and (
@@ -1397,6 +1402,8 @@ MILES_WORDS = {"mph", "miles", "mile", "feet", "ft", "yards", "yd", "yds", "inte
                "southbound", "eastbound", "westbound"}  # a text that measures in miles, or a US highway's words
 BRITISH_ROAD_WORDS = {"lorry", "zebra", "pushchair", "pelican", "puffin", "toucan"}  # signed in miles an hour
 ROAD_NUMBER_PREFIXES = {"i", "us", "sr", "cr", "sh", "fm", "route", "rte", "hwy", "highway", "interstate", "exit", "m"}
+NUMBERED_NAMES = ROAD_NUMBER_PREFIXES | {"year", "class", "grade", "platform", "gate", "bay", "terminal", "pier",
+                                         "room", "floor", "zone", "number"}  # "Mr Patel from Year 4 cycles in"
 
 
 SPEED_UNITS = (["mph"], ["km", "h"], ["kmh"], ["kph"], ["miles", "per", "hour"])
@@ -2878,8 +2885,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         elif u.category == "agents" and u.meaning not in ("ego", "none") and k + 1 == head - len(modifiers) and \
                 not words and count is None:
             modifiers.append(u)  # "a Chevrolet Tahoe", "a Ford F-150 pickup": the maker's name before the model
-        elif u.category == "number" and (words & {"a", "an"} or k > 0 and units[k - 1].word in ROAD_NUMBER_PREFIXES):
-            break  # "on SR-99 a bus stops": a road's number, and no count stands before 'a'
+        elif u.category == "number" and (words & {"a", "an"} or k > 0 and units[k - 1].word in NUMBERED_NAMES):
+            break  # "on SR-99 a bus stops", "Year 4 cycles in": a road's or a name's number, no count
         elif u.category == "number":
             value = read_number(u.word) or 0
             count = int(min(value, TOO_LARGE)) if count is None else count
@@ -3019,6 +3026,13 @@ DRIVER_CONTROLS = {"kept", "keep", "keeps", "held", "hold", "holds", "brought", 
                    "steer", "steers", "stopped", "pulled", "moved", "put", "took", "drove", "parked"}
 
 
+def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: set[str]) -> bool:
+    """'my bike', 'on the bike', 'just me and the bike': the speaker's own, not a bike somewhere ahead."""
+    return "my" in words or first > lo and units[first - 1].word == "on" and bool(words & {"the", "my"}) or \
+        "the" in words and first >= 2 and units[first - 1].word == "and" and units[first - 2].word in ("me", "i") and \
+        (head + 1 == len(units) or units[head + 1].category != "positions")
+
+
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
     u = units[head]
     r.mark(u)
@@ -3049,11 +3063,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # "(the driver in) one of our artics": the fleet's vehicle the scene is told from
     if fleets_one:
         is_ego, plural = True, False
-    on_the_bike = u.base in ("bike", "motorbike") and not plural and count is None and (
-        "my" in words or first > lo and units[first - 1].word == "on" and words & {"the", "my"}) and \
-        any(t.word in ("i", "me", "my", "i'm") for t in r.tokens) and \
+    on_the_bike = u.base in ("bike", "motorbike") and not plural and count is None and \
+        _the_riders_own(units, head, first, lo, words) and any(t.word in ("i", "me", "my", "i'm") for t in r.tokens) and \
         not any(e.is_ego and e.type not in ("car", "motorcycle") for e in r.entities)
-    if on_the_bike:  # "coming up to the junction on the bike ... on my left": the rider's own; one who speaks
+    if on_the_bike:  # "coming up to the junction on the bike", "just me and the bike": the rider's own; one who speaks
         is_ego, kind = True, "motorcycle"  # cannot be a cyclist ego, so the bike is a motorbike
     if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
             u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
@@ -3155,9 +3168,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not _placed_apart(placed_here, e) for e in r.entities):
         definite = True  # "Pickup ahead of me. Truck braked": the pickup, in note style
     speaker_ego = next((e for e in r.entities if e.is_ego and e.head in SPEAKERS | {"i'm"}), None)
-    if bare and first == lo and u.base in ("car", "vehicle") and speaker_ego is not None and not placed_here and \
+    named_ego = next((e for e in r.entities if e.is_ego and e.type == "car"), None)
+    if bare and first == lo and (u.base in ("car", "vehicle") and speaker_ego is not None or
+                                 u.base == "vehicle" and named_ego is not None) and not placed_here and \
             not listed and not any(not e.is_ego and e.type == "car" for e in r.entities):
-        definite = True  # "I'm in the middle lane ... Car braked and moved over": the speaker's car, note style
+        definite = True  # "I'm in the middle lane ... Car braked and moved over": the speaker's car, note style;
+        # "AV turning right ... vehicle waited for them": the AV, as an operator's log names it again
     if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
         definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
     if bare and u.base in ("driver", "rider") and any(not e.is_ego and e.type not in V.VULNERABLE_TYPES
@@ -3268,6 +3284,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                     generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label,
                     headline=headline and not label, said_at=u.tokens[0].index)
     entity.uncounted = uncounted
+    entity.definite = "the" in words
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
     if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
@@ -4309,6 +4326,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             actor.entity.features.add("into_ego_lane")  # "the ego's lane is entered by a motorbike"
         objects = [np for np in phrases if np is not actor]
         r.mark(units[by])
+        r.passive = clause
     else:
         before = [np for np in phrases if np.index < first_verb and np.entity is not None
                   and not _is_reference(units, np)]
@@ -4360,6 +4378,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 and not (r.after_verbless and verbs and verbs[0] == 0 and _bare_verb(units[0])):
             # "ambulance behind with siren, pull over to the right": an order after a verbless description
             subject = list(previous_subject)
+        elif previous_subject and clause.link in PARTICIPLE_LINKS and verbs and verbs[0] == 0 and \
+                units[0].tokens[0].word.endswith("ing"):
+            subject = list(previous_subject)  # "a cyclist rode ahead of me before turning left": the cyclist turns
+        elif previous_subject and clause.link == "" and verbs and verbs[0] == 0 and units[0].tokens[0].after_semicolon \
+                and not _bare_verb(units[0]):  # ("a truck stopped ahead; overtake it": an order to the ego)
+            subject = list(previous_subject)  # "a car in the left lane; changes lane to the right": the same car
         elif verbs and any(np.entity is None and units[np.index].meaning == "none" and
                            first_verb - 3 <= np.index < first_verb for np in phrases):
             verbs = []  # "a deer ran out": its subject names no agent; nobody of the scene ran
@@ -4882,10 +4906,11 @@ def _place_in_queue(r: _Reader) -> None:
     if ego is None or not any(a[4] == "stop" and a[0] == 0 for a in ego.actions) or \
             not RED_OR_QUEUE & set(words) and "traffic_light" not in _said_signals(r) and not jammed:
         return
-    for e in r.entities:  # ahead in the queue, or level beside the ego at the line: standing too
+    for e in r.entities:  # ahead in the queue, level beside the ego at the line, or queued with it: standing too
         if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and e.stage == 0 and (
                 "ahead" in e.features and not e.features & {"side_left", "side_right", "road_straight", "toward"}
-                or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}):
+                or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}
+                or (e.parent or e).includes_ego and not e.features):  # "three cars including mine at the red"
             e.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
@@ -6170,8 +6195,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         _boxed_in_by_those_listed(r, clause, before, ego_blocked, boxed)
         if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS:
             main_subject = subject
-        if clause.units and clause.units[0].word == "by" and not _has_verb(clause.units) and previous and \
-                not any(e.is_ego for e in previous):
+        more_doers = clause.link == "and" and k > 0 and clauses[k - 1] is r.passive  # "by a van and a bus"
+        if clause.units and (clause.units[0].word == "by" or more_doers) and not _has_verb(clause.units) and \
+                previous and not any(e.is_ego for e in previous):
             for e in r.entities[before:]:  # "overtaken on the right by an ambulance and then by a fire engine"
                 if not e.is_ego and not e.actions:
                     e.features |= set().union(*(p.features for p in previous))
@@ -6294,6 +6320,7 @@ OPERATED_FROM = {"in", "on", "of", "driving", "drove", "riding", "operating", "o
 
 
 JUNCTION_NOUNS = {"junction", "intersection", "crossroads"}
+PARTICIPLE_LINKS = {"before", "while", "whilst", "when"}  # "... before turning left": said of the clause's subject
 UNTIL_LINKS = {"until", "till", "before"}  # a clause of what is waited for: its subject is not the story's
 
 
@@ -6763,6 +6790,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 not e.is_ego and all(a[4] in ("stop", "move") for a in e.actions) and not e.label:
             e.count = 0  # "residential street, parked cars, dusk": the street's scenery, said with no count
             r.notes.append(f"left out: '{e.head}' parked, with no count, are the street's scenery")
+        if e.type == "pedestrian" and e.definite and e.head in KIN and e.count > 0 and not e.actions and \
+                not e.features and not e.label and any(t.word in SPEAKERS for t in r.tokens):
+            e.count = 0  # "we sat at the red light ... the kids were fascinated": the speaker's own, on board
+            r.notes.append(f"left out: 'the {e.head}', doing nothing on the road, ride with the speaker")
         if e.type == "pedestrian" and "on_board" in e.features and e.count > 0:
             e.count = 0  # "the kids arguing in the back": passengers of the ego, nobody on the road
             r.notes.append(f"left out: '{e.head}' in the back of the ego's car (passengers, no agent)")
