@@ -6394,3 +6394,76 @@ def test_every_doer_and_joins_after_a_passives_by_does_what_the_first_does():
         ("bus", "go_straight", "back_left"), ("car", "go_straight", "back_left"), ("car", "go_straight", "ego")]
     assert agents("The ego is overtaken by a van and a bus waits ahead.") == [
         ("bus", "stop", "front"), ("car", "go_straight", "back_left"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Put the camera in the lorry so people can see what the driver sees. The lorry turns left.",
+     [("truck", "turn_left", "ego")]),
+    ("Drivers never look. A car turns left at the junction.", [("car", "turn_left", "ego")]),
+    ("People watch from the pavement as a car turns left.",
+     [("car", "turn_left", "ego"), ("pedestrian", "on_the_sidewalk", "right"),
+      ("pedestrian", "on_the_sidewalk", "right")]),
+])
+def test_people_in_general_who_see_or_think_are_no_agents_unless_placed(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("after", ["We called an ambulance.", "An ambulance came later.",
+                                   "The police arrived ten minutes later.", "A cop took our statements.",
+                                   "Paramedics checked us over."])
+def test_emergency_services_named_after_a_told_collision_came_to_help_and_are_no_agents(after):
+    assert agents("A car ran the red light and hit me. " + after) == [("car", "go_straight", "ego"),
+                                                                      ("car", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A car hit me. Then an ambulance came up behind us with its siren on.",
+    "A car nearly hit me. An ambulance came later.",
+    "The ego must not hit anything. An ambulance approaches.",
+])
+def test_an_emergency_vehicle_placed_or_after_no_collision_stays_in_the_scene(prompt):
+    assert any(a[0] == "ambulance" for a in agents(prompt))
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A box truck changed lanes into my lane from the right. The woman driving it stopped suddenly.",
+     [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "front_right")]),
+    ("A taxi was parked on my left. The guy was clearly speeding.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front_left")]),
+    ("A van stopped ahead of me. The man driving the van waved me through.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("A taxi stopped ahead. The guy got out and walked across the road.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("pedestrian", "cross_the_road", "front")]),
+    ("A car stopped. The man crossed the road in front of me.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_a_person_named_again_by_what_drives_a_vehicle_named_before_is_that_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("aside", ["Pedestrians in this town never use the crossing.", "Truck drivers have huge blind spots.",
+                                   "Everyone on the bus was fine.", "The traffic warden saw nothing."])
+def test_road_users_in_general_those_on_board_and_onlookers_who_only_saw_are_no_agents(aside):
+    assert agents("I was driving through town. A van pulls out of a side road on my left. " + aside) == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+
+
+@pytest.mark.parametrize("prompt", ["The pedestrian saw me and stopped.", "The traffic warden waved me through.",
+                                    "Two trucks have stopped ahead of me."])
+def test_one_who_saw_and_then_did_something_or_a_counted_plural_stays(prompt):
+    assert len(agents(prompt)) >= 2
+
+
+@pytest.mark.parametrize("prompt, other", [
+    ("I turn right into a side street and a woman is crossing it.", ("pedestrian", "cross_the_road")),
+    ("Turning left into Elm Street, there's a jogger crossing the mouth of the road.", ("pedestrian", "cross_the_road")),
+    ("I was turning right into the car park entrance when a man walked across it.", ("pedestrian", "cross_the_road")),
+    ("Ego turns left into the side road; a van is parked just inside it.", ("car", "stop")),
+])
+def test_the_road_the_ego_turns_into_said_again_is_its_destination(prompt, other):
+    assert other + ("at_the_destination",) in agents(prompt)
+
+
+def test_traffic_along_the_road_turned_onto_keeps_the_side_it_comes_from():
+    assert ("car", "go_straight", "road_of_right_turn") in agents(
+        "Give-way sign, the ego turns left onto the main road. A car approaches from the right on the main road.")

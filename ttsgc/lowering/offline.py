@@ -376,7 +376,7 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
             continue
         out.extend(_units_of_one_word(tokens, i))
         i += 1
-    return _driver_of(_names_no_agent(_ego_and_its_noun(_short_names(_turned_into(out)))))
+    return _driver_of(_names_no_agent(_ego_and_its_noun(_short_names(_again_the_road_turned_into(_turned_into(out))))))
 
 
 STREET_WORDS = {"street", "st", "road", "rd", "avenue", "ave", "drive", "dr", "boulevard", "blvd", "lane", "ln",
@@ -656,6 +656,60 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
             k = end
             named = True
     return out
+
+
+ROAD_NOUNS = {"road", "street", "avenue", "lane", "drive", "close", "boulevard", "crescent", "entrance", "driveway",
+              "way", "terrace", "place", "row", "parade"}
+INTO_THE_ROAD = {"across", "inside", "in", "into", "over"}  # "walked across it", "parked inside it" (not "along it")
+
+
+def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
+    """'I turn right into a side street and a woman is crossing it', 'turning left into Elm Street, a jogger crosses
+    the mouth of the road': once the ego is said to turn into a road, that road said again ('it', 'the road',
+    'there') in the same or the next sentence is where the ego is heading."""
+    out: list[Unit] = []
+    until = -1  # the last sentence in which the road turned into may be said again
+    k = 0
+    while k < len(units):
+        u = units[k]
+        sentence = u.tokens[0].sentence
+        if u.category == "actions" and u.meaning in ("turn_left", "turn_right", "turn") and (
+                u.tokens[-1].word in ("into", "onto") or k + 1 < len(units) and units[k + 1].word in ("into", "onto")) \
+                and _said_by_the_ego(units, k) and any(x.tokens[-1].word in ROAD_NOUNS and x.category != "agents"
+                                                       for x in units[k + 1:k + 5]):
+            out.append(u)
+            k += 1
+            end = next(j for j in range(k, min(k + 5, len(units))) if units[j].tokens[-1].word in ROAD_NOUNS)
+            out.extend(units[k:end + 1])
+            k = end + 1
+            until = sentence + 1
+            continue
+        before = out[-1] if out else None
+        done_to = before is not None and (before.category == "actions" and before.meaning == "cross" or
+                                          before.word in INTO_THE_ROAD)
+        if sentence <= until and done_to and u.word in ("it", "there") and u.category == "word":
+            out.append(Unit(u.start, u.end, "positions", "destination", u.tokens))
+            k += 1
+            continue
+        if sentence <= until and done_to and u.word == "the":
+            end = next((j for j in range(k + 1, min(k + 6, len(units)))
+                        if units[j].tokens[-1].word in ROAD_NOUNS and units[j].category != "agents"), None)
+            if end is not None and all(x.category == "word" for x in units[k:end]):
+                tokens = tuple(t for x in units[k:end + 1] for t in x.tokens)
+                out.append(Unit(u.start, units[end].end, "positions", "destination", tokens))
+                k = end + 1
+                continue
+        out.append(u)
+        k += 1
+    return out
+
+
+def _said_by_the_ego(units: list[Unit], k: int) -> bool:
+    """The turn at units[k] is the ego's: the agent before it in its sentence is the ego, or there is none."""
+    sentence = units[k].tokens[0].sentence
+    doer = next((x for x in reversed(units[:k]) if x.category == "agents" and x.tokens[0].sentence == sentence
+                 and x.meaning != "none"), None)
+    return doer is None or doer.meaning == "ego"
 
 
 def _short_names(units: list[Unit]) -> list[Unit]:
@@ -2473,7 +2527,7 @@ def _counterfactual(tokens: list[Token], t: Token) -> bool:
 
 
 HABITUAL = frozenset({"often", "usually", "always", "sometimes", "regularly", "normally", "generally", "typically",
-                      "constantly", "frequently", "routinely"})
+                      "constantly", "frequently", "routinely", "never", "rarely", "seldom"})
 HABITUAL_PHRASES = (("all", "the", "time"), ("every", "day"), ("every", "morning"), ("every", "evening"),
                     ("every", "time"), ("most", "days"), ("tend", "to"))
 def _bare_plural(tokens: list[Token], u: Unit) -> bool:
@@ -3026,6 +3080,24 @@ DRIVER_CONTROLS = {"kept", "keep", "keeps", "held", "hold", "holds", "brought", 
                    "steer", "steers", "stopped", "pulled", "moved", "put", "took", "drove", "parked"}
 
 
+IMPACTS = {"hit", "hits", "crashed", "collided", "smashed", "struck", "rammed", "rear", "t", "clipped", "crash",
+           "collision", "impact", "bumped", "slammed", "ploughed", "plowed", "totalled", "totaled", "wrecked"}
+RESPONDERS = {"ambulance", "police", "firetruck"}
+UNREAL_IMPACT = {"not", "never", "avoid", "avoided", "without", "almost", "nearly", "could", "would", "might", "to",
+                 "no", "near", "avoiding", "before", "if", "may", "must", "shall", "should", "will", "can"}
+
+
+def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
+    """'... and hit me. An ambulance came later', 'Paramedics checked us over': an emergency service first named in
+    a sentence after the one that tells of the collision, and placed nowhere, came to help: no agent of the scene."""
+    if e.type not in RESPONDERS or e.is_ego or e.label or e.said_at < 0 or \
+            e.features or any(a[4] not in ("move",) for a in e.actions):
+        return False
+    crash = next((t.sentence for t in r.tokens if t.word in IMPACTS and t.index < e.said_at and not any(
+        w.word in UNREAL_IMPACT for w in r.tokens[max(0, t.index - 3):t.index] if w.sentence == t.sentence)), None)
+    return crash is not None and r.tokens[e.said_at].sentence > crash
+
+
 def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: set[str]) -> bool:
     """'my bike', 'on the bike', 'just me and the bike': the speaker's own, not a bike somewhere ahead."""
     return "my" in words or first > lo and units[first - 1].word == "on" and bool(words & {"the", "my"}) or \
@@ -3103,6 +3175,16 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not any(m.category == "actions" for m in units) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "some people behind us were mad": uncounted, doing nothing on foot
         # and nothing done to them ("nearly hit people": they were on the road)
+    if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and not words and \
+            _minds_a_thing(units, head):
+        return NounPhrase(None, head, first)  # "so people can see what the driver sees", "drivers never look"
+    if plural and count is None and not words and not is_ego and _owned_by_all(units, head):
+        return NounPhrase(None, head, first)  # "truck drivers have huge blind spots": road users in general
+    if not plural and count is None and words & {"the", "this", "that"} and kind == "pedestrian" and \
+            u.base not in NAMED_ON_FOOT and not any(e.type == "pedestrian" for e in r.entities) and \
+            _minds_a_thing(units, head) and not any(m.category == "actions" and m.meaning != "try"
+                                                     for m in units[head + 2:]):
+        return NounPhrase(None, head, first)  # "the traffic warden saw nothing": one who saw or said, no agent
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
             and not _of_a_group(units, first):
@@ -3207,6 +3289,15 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
         driven = _last_named(r, recent, lambda e: not e.is_ego and e.type != "pedestrian")
         if driven is not None:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
+            return NounPhrase(driven, head, first)
+    at_the_wheel = _driven_by(r, units, head, recent) if count is None and not plural else None
+    if at_the_wheel is not None:  # "a box truck ... the woman driving it stopped": the truck, by its driver
+        return NounPhrase(at_the_wheel, head, first)
+    if definite and count is None and not plural and u.base in DRIVING_PEOPLE and not _gets_out(units, head) and \
+            not _on_foot_in_the_scene(units, head) and not any(e.type in V.VULNERABLE_TYPES for e in r.entities) and \
+            (head + 1 == len(units) or units[head + 1].category != "positions"):
+        driven = _last_named(r, recent, lambda e: not e.is_ego and e.type not in V.VULNERABLE_TYPES)
+        if driven is not None:  # "a taxi pulled out ... the guy never looked": nobody on foot named, its driver
             return NounPhrase(driven, head, first)
     crewed = _crewed_vehicle(r, units, head, first, recent, definite or not words) if count is None else None
     if crewed is not None:  # "a police car ... the officers pulled me over", "a motorbike ... the biker": its own
@@ -3349,6 +3440,24 @@ def _crewed_vehicle(r: _Reader, units: list[Unit], head: int, first: int, recent
                         for e in r.entities):
         return None
     return _last_named(r, recent, lambda e: not e.is_ego and e.type in types)
+
+
+DRIVING_PEOPLE = {"guy", "dude", "man", "woman", "lady", "bloke", "chap", "fella", "fellow", "gentleman", "idiot",
+                  "jerk", "moron", "lunatic", "nutter", "maniac", "numpty", "muppet", "culprit", "offender"}
+
+
+def _driven_by(r: _Reader, units: list[Unit], head: int, recent: list[Entity]) -> Entity | None:
+    """'the woman driving it', 'the man driving the van': the vehicle named before, by whoever drives it."""
+    if head + 2 >= len(units) or units[head + 1].tokens[0].word != "driving":
+        return None
+    after = units[head + 2]
+    if after.word in ("it", "that", "this"):
+        return _last_named(r, recent, lambda e: not e.is_ego and e.type not in V.VULNERABLE_TYPES)
+    if after.word in DEFINITE and head + 3 < len(units) and units[head + 3].category == "agents":
+        noun = units[head + 3]
+        return _last_named(r, recent, lambda e: not e.is_ego and e.type not in V.VULNERABLE_TYPES and (
+            e.head == noun.base or noun.base in e.aliases or e.type == noun.meaning))
+    return None
 
 
 def _last_named(r: _Reader, recent: list[Entity], fits) -> Entity | None:
@@ -3546,6 +3655,33 @@ WANTING = {"want", "need", "like", "expect", "wish", "prefer"}  # "I want a car 
 PERCEIVING = {"see", "saw", "seen", "observe", "notice", "watch", "spot", "witness", "hear", "heard", "noticed",
               "observed", "spotted", "watched", "witnessed"}
 RIDDEN = {"bike", "bicycle", "pushbike", "push bike", "pedal cycle", "motorbike", "motorcycle", "moped", "scooter"}
+
+
+MINDING = PERCEIVING | {"know", "understand", "realize", "realise", "learn", "think", "care", "remember", "forget",
+                        "look", "believe", "expect", "assume", "feel", "worry", "complain", "need", "want", "say",
+                        "said", "ask", "agree", "tell", "told", "admit", "explain", "confirm", "claim", "report"}
+def _owned_by_all(units: list[Unit], head: int) -> bool:
+    """'Truck drivers have huge blind spots': a bare plural said to have something, placed nowhere: road users in
+    general ('what they do as a habit' is read in _in_general)."""
+    rest = units[head + 1:]
+    return len(rest) >= 2 and rest[0].word in ("have", "has") and rest[1].category == "word" and \
+        rest[1].word != "to" and not any(m.category == "positions" and m.meaning != "behind" or
+                                         m.category == "actions" for m in rest[2:])
+
+
+MODALS = {"can", "could", "should", "would", "will", "must", "might", "may", "never", "always", "just", "do", "don't",
+          "dont", "really", "all", "to", "shall", "need", "have"}
+
+
+def _minds_a_thing(units: list[Unit], head: int) -> bool:
+    """'(so) people can see', 'drivers never look', 'I want drivers to understand': people in general, who see,
+    think or know, and do nothing on the road."""
+    k = head + 1
+    while k < len(units) and units[k].category == "word" and units[k].word in MODALS:
+        k += 1
+    return k < len(units) and units[k].tokens[0].base in MINDING and \
+        not any(m.category == "positions" for m in units[k + 1:])  # ("people watch from the pavement": there)
+
 
 
 def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
@@ -6433,7 +6569,9 @@ def _speaker_on_the_road(r: _Reader) -> bool:
             return True
         if w in ("my", "our") and k + 1 < len(words) and (lexicon().phrases.get((words[k + 1],)) or ("", ""))[0] in (
                 "agents", "positions", "bodies") or w in ("my", "our") and k + 1 < len(words) and words[k + 1] in (
-                "lane", "left", "right", "side", "mirror", "bumper", "bonnet", "windscreen", "way", "path"):
+                "lane", "left", "right", "side", "mirror", "bumper", "bonnet", "windscreen", "way", "path", "inside",
+                "outside", "nearside", "offside", "near", "off", "tail", "rear", "blind", "six", "front", "back", "wing",
+                "door", "rearview", "hood", "windshield", "nose"):
             return True
     return False
 
@@ -6790,6 +6928,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 not e.is_ego and all(a[4] in ("stop", "move") for a in e.actions) and not e.label:
             e.count = 0  # "residential street, parked cars, dusk": the street's scenery, said with no count
             r.notes.append(f"left out: '{e.head}' parked, with no count, are the street's scenery")
+        if e.count > 0 and _came_after_the_crash(r, e):
+            e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
+            r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
         if e.type == "pedestrian" and e.definite and e.head in KIN and e.count > 0 and not e.actions and \
                 not e.features and not e.label and any(t.word in SPEAKERS for t in r.tokens):
             e.count = 0  # "we sat at the red light ... the kids were fascinated": the speaker's own, on board
