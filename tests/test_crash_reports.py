@@ -155,7 +155,7 @@ def test_a_county_or_state_roads_number_limits_no_speed(prompt):
      [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
     ("Vehicle(s) not making a maneuver, opposite direction. Ego straight; oncoming truck drifts over the center "
      "line.", [("car", "go_straight", "ego"), ("truck", "go_straight", "front_left")]),
-    ("Bus(es) Stopped Ahead. The ego waits behind a school bus.", [("bus", "go_straight", "front"),
+    ("Bus(es) Stopped Ahead. The ego waits behind a school bus.", [("bus", "stop", "front"),
                                                                   ("car", "stop", "ego")]),
 ])
 def test_a_heading_that_names_the_case_by_its_agent_adds_no_agent(prompt, expected):

@@ -6467,3 +6467,31 @@ def test_the_road_the_ego_turns_into_said_again_is_its_destination(prompt, other
 def test_traffic_along_the_road_turned_onto_keeps_the_side_it_comes_from():
     assert ("car", "go_straight", "road_of_right_turn") in agents(
         "Give-way sign, the ego turns left onto the main road. A car approaches from the right on the main road.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van two cars ahead of me in my lane brakes.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("The lorry three cars in front of me stopped suddenly.", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("Two cars ahead of me brake.", [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]),
+])
+def test_cars_counted_right_after_another_vehicle_measure_how_far_it_is(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego is stopped behind a truck. Then the ego turns left.",
+     [("car", "stop", "ego"), ("car", "turn_left", "ego"), ("truck", "stop", "front")]),
+    ("The ego waits behind a bus.", [("bus", "stop", "front"), ("car", "stop", "ego")]),
+    ("The ego stops. A truck ahead turns left.", [("car", "stop", "ego"), ("truck", "turn_left", "front")]),
+    ("Stuck behind a lorry on a B-road for what felt like forever.", [("car", "stop", "ego"),
+                                                                     ("truck", "go_straight", "front")]),
+])
+def test_what_a_stopped_ego_stands_behind_doing_nothing_said_stands_too(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("verb, action", [("slows right down", "go_straight"), ("taps the brakes", "go_straight"),
+                                          ("brakes gently", "go_straight"), ("brakes hard", "stop"),
+                                          ("comes to a stop", "stop")])
+def test_a_light_touch_of_the_brakes_drives_on_and_right_before_a_particle_is_no_side(verb, action):
+    assert agents(f"A van ahead of me {verb}.") == [("car", "go_straight", "ego"), ("car", action, "front")]

@@ -960,6 +960,9 @@ PLANNING_WORDS = {"next", "date", "sprint", "release", "deadline", "week", "mont
                   "friday", "monday", "q1", "q2", "q3", "q4"}
 
 
+INTENSIFIED = {"down", "up", "out", "off", "back", "away", "along", "round", "around", "through"}  # 'right' before them
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -999,6 +1002,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             _word_number(tokens[m.end]) in (1, 2, 3, 4, 5):  # "pull out into lane two": a numbered lane, not ours
         return [Unit(m.start, m.end + 1, "positions", f"into_lane_{int(_word_number(tokens[m.end]))}",
                      tuple(tokens[m.start:m.end + 1]))]
+    if m.category == "positions" and [t.word for t in span] == ["right"] and m.start > 0 and nxt in INTENSIFIED and \
+            "actions" in ((lexicon().phrases.get((tokens[m.start - 1].base,)) or ("", ""))[0],
+                          (lexicon().phrases.get((tokens[m.start - 1].base, nxt)) or ("", ""))[0]):
+        return [Unit(m.start, m.end, "word", "right", span)]  # "slows right down", "pulled right out": how far
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stop"] and m.start > 0 and \
             tokens[m.start - 1].word in ("says", "said", "reads", "read", "saying", "reading"):
         return [Unit(m.start, m.end, "road", "stop", span)]  # "the sign says stop": a stop sign, nobody stopping
@@ -3160,6 +3167,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
         return NounPhrase(None, head, first)
+    if count is not None and plural and u.base in ("car", "vehicle") and first > 0 and \
+            units[first - 1].category == "agents" and units[first - 1].meaning not in ("ego", "none") and \
+            head + 1 < len(units) and units[head + 1].category == "positions" and \
+            units[head + 1].meaning in ("ahead", "behind"):
+        return NounPhrase(None, head, first)  # "a van two cars ahead of me": how far ahead it is, no cars named
     if (owners - {"your"} and u.tokens[-1].base in KIN or not words and first == head and
             u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
@@ -5039,8 +5051,19 @@ def _place_in_queue(r: _Reader) -> None:
     if jammed and not any(a[0] == 0 and a[2] > 0 for a in ego.actions):
         ego.actions.append((0, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "in stopped traffic": it stands
         r.notes.append("inferred: the ego stands in the stopped traffic")
-    if ego is None or not any(a[4] == "stop" and a[0] == 0 for a in ego.actions) or \
-            not RED_OR_QUEUE & set(words) and "traffic_light" not in _said_signals(r) and not jammed:
+    if ego is None or not any(a[4] == "stop" and a[0] == 0 for a in ego.actions):
+        return
+    if not RED_OR_QUEUE & set(words) and "traffic_light" not in _said_signals(r) and not jammed:
+        if any(w == "stuck" and words[k + 1:k + 2] == ["behind"] for k, w in enumerate(words)) or not any(
+                u.category == "actions" and u.meaning == "stop" and k + 1 < len(r.units) and
+                r.units[k + 1].category == "positions" and r.units[k + 1].meaning == "behind"
+                for k, u in enumerate(r.units)):
+            return  # "stuck behind a lorry on a B-road": it may crawl along, the ego with it; "travelling behind
+            # the truck stopped": behind it while moving
+        for e in r.entities:  # "the ego is stopped behind a truck": what it stands behind, doing nothing said, stands
+            if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and e.stage == 0 and \
+                    e.features <= {"ahead", "ego_behind"} and "ahead" in e.features and e.relative_to is None:
+                e.actions.append((0, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
         return
     for e in r.entities:  # ahead in the queue, level beside the ego at the line, or queued with it: standing too
         if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and e.stage == 0 and (
