@@ -6495,3 +6495,37 @@ def test_what_a_stopped_ego_stands_behind_doing_nothing_said_stands_too(prompt, 
                                           ("comes to a stop", "stop")])
 def test_a_light_touch_of_the_brakes_drives_on_and_right_before_a_particle_is_no_side(verb, action):
     assert agents(f"A van ahead of me {verb}.") == [("car", "go_straight", "ego"), ("car", action, "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("SV1 is oncoming truck, SV2 oncoming car following SV1.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_left"), ("truck", "go_straight", "front_left")]),
+    ("POV, heavy truck, enters from right.", [("car", "go_straight", "ego"), ("truck", "go_straight", "right")]),
+    ("Vehicle behind me, white Ford Transit, failed to stop.", [("car", "go_straight", "back"),
+                                                               ("car", "go_straight", "ego")]),
+    ("Two pedestrians cross at crosswalk while third walks along sidewalk on right.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+      ("pedestrian", "cross_the_road", "near_the_crosswalk"), ("pedestrian", "on_the_sidewalk", "right")]),
+    ("Two cars wait. Second turns left.", [("car", "go_straight", "ego"), ("car", "stop", "front"),
+                                          ("car", "turn_left", "front")]),
+    ("Bus pulled out right in front of me on bike and just sat there.",
+     [("bus", "block_the_ego", "front"), ("motorcycle", "go_straight", "ego")]),
+    ("so I'm turning right at junction and cyclist no jogger is crossing road I'm turning into",
+     [("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "at_the_destination")]),
+    ("A bus stops ahead, no cars around.", [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
+])
+def test_notes_that_drop_their_articles_read_as_with_them(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Lead car changed lane left, revealing stopped car in our lane.",
+     [("car", "change_lane_to_left", "front"), ("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Cut-out: lead vehicle changes to right adjacent lane and reveals stationary vehicle further ahead in ego lane.",
+     [("car", "change_lane_to_right", "front"), ("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Coming up to T-junction on bike and Corsa pulls out of side road on my left.",
+     [("car", "go_straight", "road_of_left_turn"), ("motorcycle", "go_straight", "ego")]),
+    ("A lad on bike passed me.", [("car", "go_straight", "ego"), ("cyclist", "go_straight", "back_left")]),
+])
+def test_a_bare_noun_said_in_another_state_or_a_bare_bike_the_speaker_rides(prompt, expected):
+    assert agents(prompt) == expected

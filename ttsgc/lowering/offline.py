@@ -545,8 +545,9 @@ def _retract_corrections(r: "_Reader") -> list[Unit]:
         while n < len(units) and n - j < 4 and units[n].category in ("word", "number", "numbers") and \
                 (units[n].word in NOUN_PHRASE_WORDS or units[n].category != "word"):
             n += 1
-        if not (j < n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none")):
-            continue
+        if not (j <= n < len(units) and units[n].category == "agents" and units[n].meaning not in ("ego", "none")) \
+                or n == j and units[n].tokens[-1].plural:  # ("a bus, no cars around": none, no correction)
+            continue  # "a car, no wait, a truck", "car no wait truck" (articles dropped)
         first = len(out) - 1
         while first > 0 and out[first - 1].category in ("word", "number", "numbers") and \
                 out[first - 1].word in NOUN_PHRASE_WORDS | {"two", "three"}:
@@ -3106,9 +3107,13 @@ def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
 
 
 def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: set[str]) -> bool:
-    """'my bike', 'on the bike', 'just me and the bike': the speaker's own, not a bike somewhere ahead."""
-    return "my" in words or first > lo and units[first - 1].word == "on" and bool(words & {"the", "my"}) or \
-        "the" in words and first >= 2 and units[first - 1].word == "and" and units[first - 2].word in ("me", "i") and \
+    """'my bike', 'on the bike', 'just me and (the) bike', 'in front of me on bike': the speaker's own, not a bike
+    somewhere ahead."""
+    after_me = first >= 2 and units[first - 2].tokens[-1].word in ("me", "i")  # "in front of me on bike"
+    someone_before = first >= 2 and units[first - 2].category == "agents" and units[first - 2].meaning != "ego"
+    return "my" in words or first > lo and units[first - 1].word == "on" and (
+        bool(words & {"the", "my"}) or not words and not someone_before) or \
+        words <= {"the"} and first >= 2 and units[first - 1].word == "and" and after_me and \
         (head + 1 == len(units) or units[head + 1].category != "positions")
 
 
@@ -3244,10 +3249,13 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     listed = doing is not None and any(x.category == "positions" for x in units[head:])
     # "car cutting in from the left lane": a terse list's item, an agent with its own verb and place
     placed_here = _placed_in_its_sentence(r, u) if first == lo else set()
+    described = next((m.meaning for m in modifiers if m.category == "actions"), None)  # "revealing stopped car":
+    # a state said before the noun sets it apart from one named before doing otherwise
     # "Ego car: stopped. Car: front, stationary", "Ambulance: behind. Van: stopped, ahead": a note's item, placed
     if bare and any((e.head.split()[-1] == u.base.split()[-1] and e.type == kind or u.base in e.aliases) and not e.is_ego
                     and e.count == 1 and (placed_by is None or placed_by in e.features)
                     and not (doing and e.actions and doing not in {a[4] for a in e.actions})
+                    and not (described and described not in {a[4] for a in e.actions})
                     and not _placed_apart(placed_here, e) for e in r.entities):
         definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one;
         # not "oncoming car turning left, lead car braking": a place in the name sets another apart; not "lead
@@ -3276,7 +3284,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if not words and count is None and not plural and not label and head + 1 < len(units) and \
             units[head + 1].category == "positions" and any(
                 e.head.split()[-1] == u.base.split()[-1] and not e.is_ego and e.count == 1 and
-                units[head + 1].meaning in e.features for e in r.entities):
+                units[head + 1].meaning in e.features and not (described and described not in {a[4] for a in e.actions})
+                for e in r.entities):
         definite = True  # "Ego: follows HGV. Actors: HGV ahead in the ego lane": the HGV already placed there
     ego_now = next((e for e in r.entities if e.is_ego), None)
     existential = first >= 2 and units[first - 2].word == "there" and units[first - 1].word in (
@@ -4311,7 +4320,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         lead = i - article  # where the noun phrase starts; terse writing drops the article ("first one brakes")
         if (said_first or (u.word in ORDINAL_MEMBERS or other) and article and (one_after or not (
                 i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number"))) or
-                u.word in ORDINAL_MEMBERS and one_after and acts(i + 2)) and not any(
+                u.word in ORDINAL_MEMBERS and one_after and acts(i + 2) or
+                u.category == "word" and u.word in ORDINAL_NUMBERS and acts(i + 1) and (
+                    i == 0 or units[i - 1].word in ("and", ",", "but", "then")) and
+                0 < ORDINAL_NUMBERS[u.word] <= _last_count(r)) and not any(  # "two cars wait, second turns left"
                 np.first <= i <= np.index for np in phrases) and not (lead > 0 and units[lead - 1].category ==
                                                                       "positions") \
                 and not _the_ego_is(units, lead - 1):
@@ -4332,9 +4344,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(part, i, i, plural=True))
             continue
-        one_more = u.word == "another" or u.word in ("second", "third", "fourth", "fifth") and i > 0 and \
-            units[i - 1].word in ("a", "an") and i + 1 < len(units) and \
-            units[i + 1].category in ("positions", "actions")  # "while a third walks along the sidewalk": one
+        one_more = u.word == "another" or u.word in ("second", "third", "fourth", "fifth") and i + 1 < len(units) and (
+            i > 0 and units[i - 1].word in ("a", "an") and units[i + 1].category in ("positions", "actions") or
+            (units[i - 1].word if i > 0 else clause.link) in ("while", "whilst", "and", "with", ",") and
+            units[i + 1].category == "actions" and _past_the_count(r, u.word))  # "while a third walks along the
+        # sidewalk", "two pedestrians cross while third walks": one
         # more ("a second before you did", "a second to react": a moment)
         if one_more and u.category == "word" and not any(np.first <= i <= np.index for np in phrases) \
                 and _stands_alone(units, i):
@@ -5233,6 +5247,7 @@ def _the_ego_is(units: list[Unit], k: int) -> bool:
 
 
 ORDINAL_MEMBERS = {"first", "second", "third", "fourth", "fifth", "last", "latter", "former"}
+ORDINAL_NUMBERS = {"second": 2, "third": 3, "fourth": 4, "fifth": 5}
 
 
 def _part_of_group(r: _Reader, n: int) -> Entity | None:
@@ -5316,6 +5331,17 @@ def _one_more_like(r: _Reader, kin: Entity, stage: int, why: str, listed_after: 
     r.entities.append(member)
     r.notes.append(f"inferred: {why}")
     return member
+
+
+def _last_count(r: _Reader) -> int:
+    """How many the last counted group named has (0: none named)."""
+    group = next((e for e in reversed(r.entities) if not e.is_ego and e.parent is None and e.count > 1), None)
+    return 0 if group is None else group.count + sum(1 for e in r.entities if e.parent is group)
+
+
+def _past_the_count(r: _Reader, ordinal: str) -> bool:
+    """'two pedestrians cross while third walks': an ordinal past the last group's count names one more."""
+    return _last_count(r) > 0 and ORDINAL_NUMBERS.get(ordinal, 0) == _last_count(r) + 1
 
 
 def _stands_alone(units: list[Unit], i: int) -> bool:
@@ -5441,7 +5467,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
                 and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
             placed = not prev.entity.is_ego and prev.entity.head.split()[-1] in APPOSED_HEADS | {"car"} and \
-                len(between) >= 2 and between[-1].category == "comma" and units[np.first].word in ("a", "an") and \
+                len(between) >= 2 and between[-1].category == "comma" and (
+                    units[np.first].word in ("a", "an") or _undetermined(units, np)) and \
                 np.index + 1 < len(units) and units[np.index + 1].category in ("comma", "word") and \
                 units[np.index + 1].word not in ("and", "or") and \
                 (between[0].category == "positions" or between[0].word in ("on", "in", "to") and any(
@@ -5475,8 +5502,10 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
+            bare = _undetermined(units, np)  # "SV1 is oncoming truck", "POV, heavy truck, enters": articles dropped
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
-                   u.category == "comma" for u in between) and (
+                   u.category == "comma" or bare and (copula or prev.entity.label) and u.category == "positions" and
+                   len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and np.entity.type in V.EGO_TYPES and
                                                       not _placed_after(units, np.index) and (
                         units[np.first].word in ("a", "an") and not _does_after(units, np.index) or
@@ -5486,7 +5515,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     # "the ego, sedan, turns", "Ego (car)"; not "ego, oncoming SUV", "ego bus, lead car braking",
                     # "the ego, a pedestrian and a truck", "ego, a bus behind,"
                     or (between and prev.entity.head.split()[-1] in APPOSED_HEADS and not prev.entity.is_ego
-                        and units[np.first].word in ("a", "an"))  # "a third-party vehicle, a silver hatchback,"
+                        and (units[np.first].word in ("a", "an") or bare and _closed_after(units, np.index)))
+                    # "a third-party vehicle, a silver hatchback,", "POV, heavy truck, enters"
                     or (between and prev.entity.head in categories() and np.first == np.index and
                         np.entity.type in categories()[prev.entity.head])):  # "a VRU (cyclist)": which one it is
                 a, b = prev.entity, np.entity
@@ -5501,6 +5531,12 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
         out.append(np)
     return out
+
+
+def _undetermined(units: list[Unit], np: NounPhrase) -> bool:
+    """A noun phrase said with no article, determiner or count ('white Ford Transit'), as notes drop them."""
+    return units[np.first].category not in ("numbers", "number") and \
+        units[np.first].word not in DETERMINERS | {"a", "an", "one", "another"}
 
 
 def _relative_says_what_it_is(r: _Reader, clause: Clause, phrases: list[NounPhrase]) -> list[NounPhrase]:
