@@ -6529,3 +6529,23 @@ def test_notes_that_drop_their_articles_read_as_with_them(prompt, expected):
 ])
 def test_a_bare_noun_said_in_another_state_or_a_bare_bike_the_speaker_rides(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two cyclists ride ahead of me. The pair turn left at the junction.",
+     [("car", "go_straight", "ego"), ("cyclist", "turn_left", "front"), ("cyclist", "turn_left", "front")]),
+    ("Two cyclists ride ahead of me. The two of them turn left at the junction.",
+     [("car", "go_straight", "ego"), ("cyclist", "turn_left", "front"), ("cyclist", "turn_left", "front")]),
+    ("A van and a truck wait at the lights. The former turns left.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "front"), ("truck", "stop", "front")]),
+    ("A van and a truck wait at the lights. The latter turns left.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("truck", "turn_left", "front")]),
+    ("A van and a truck wait at the lights. Each turns left.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "front"), ("truck", "turn_left", "front")]),
+])
+def test_the_pair_the_two_of_them_each_the_former_and_the_latter_name_those_just_named(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_street_lamps_lit_say_it_is_night():
+    assert lower("A cyclist crosses under the streetlights.").scenario.weather.time == "night"

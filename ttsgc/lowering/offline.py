@@ -4307,7 +4307,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 elif value is not None and 0 < value <= MAX_AGENTS_PER_MENTION:
                     group.count = int(value)  # "kids are crossing, three of them": the group's count
                 units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
-    pronouns = []
+    pronouns, together = [], set()
     for i, u in enumerate(units):
         other = u.word == "other" and u.category == "word" and i + 1 < len(units) and (
             units[i + 1].category == "actions" or units[i + 1].word in AUXILIARIES)  # "one is stopped on the right,
@@ -4318,7 +4318,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             ["the", "first", "one"], ["first", "one"]) and acts(i + 1)  # "the first one brakes"
         article = i > 0 and units[i - 1].word == "the"
         lead = i - article  # where the noun phrase starts; terse writing drops the article ("first one brakes")
-        if (said_first or (u.word in ORDINAL_MEMBERS or other) and article and (one_after or not (
+        if (said_first or (u.word in ORDINAL_MEMBERS - {"former", "latter"} or other) and article and (one_after or not (
                 i + 1 < len(units) and units[i + 1].category in ("agents", "numbers", "number"))) or
                 u.word in ORDINAL_MEMBERS and one_after and acts(i + 2) or
                 u.category == "word" and u.word in ORDINAL_NUMBERS and acts(i + 1) and (
@@ -4399,6 +4399,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i))
             continue
+        if _names_them_together(units, i) and not any(np.first <= i <= np.index for np in phrases):
+            together.add(i)  # "the pair turn left", "the two of them", "each turns left": they
+            pronouns.append(i)
+            continue
         if u.category == "word" and u.word in PRONOUNS and not any(np.first <= i <= np.index for np in phrases):
             if u.word == "both" and i + 1 < len(units) and units[i + 1].category in ("agents", "word") and \
                     (units[i + 1].category == "agents" or units[i + 1].word in DEFINITE):
@@ -4407,7 +4411,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in pronouns:
         u = units[i]
         r.mark(u)
-        if u.word in ("both", "they", "them"):
+        if u.word in ("both", "they", "them") or i in together:
             group = [e for e in recent if not e.is_ego][-2:] or list(previous_subject)
             if u.word == "both" and [x.word for x in units[i + 1:i + 2]] == ["of"] and i + 2 < len(units) and \
                     units[i + 2].category == "agents" and units[i + 2].meaning == "ego":
@@ -5331,6 +5335,18 @@ def _one_more_like(r: _Reader, kin: Entity, stage: int, why: str, listed_after: 
     r.entities.append(member)
     r.notes.append(f"inferred: {why}")
     return member
+
+
+def _names_them_together(units: list[Unit], i: int) -> bool:
+    """'the pair', 'the two (of them)', 'the duo', 'each (of them)' before a verb: those just named, together."""
+    u = units[i]
+    if u.category not in ("word", "numbers") or i + 1 >= len(units):
+        return False
+    after = i + 1 + 2 * ([x.word for x in units[i + 1:i + 3]] == ["of", "them"])
+    acts = after < len(units) and (units[after].category == "actions" or units[after].word in AUXILIARIES)
+    if u.word == "each":
+        return acts and (i == 0 or units[i - 1].word in ("and", ",", "then"))
+    return acts and u.word in ("pair", "duo", "two", "three") and i > 0 and units[i - 1].word == "the"
 
 
 def _last_count(r: _Reader) -> int:
