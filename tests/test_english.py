@@ -6549,3 +6549,17 @@ def test_the_pair_the_two_of_them_each_the_former_and_the_latter_name_those_just
 
 def test_street_lamps_lit_say_it_is_night():
     assert lower("A cyclist crosses under the streetlights.").scenario.weather.time == "night"
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The scene has three agents: the ego, a cyclist and a bus.",
+     [("bus", "go_straight", "front"), ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+    ("Three vehicles take part: a truck, a bus and the ego.",
+     [("bus", "go_straight", "front"), ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+    ("Two vehicles wait. The ego turns left.",
+     [("car", "stop", "front"), ("car", "stop", "front"), ("car", "turn_left", "ego")]),
+    ("Other traffic: two cars, one ahead of the ego and one behind it.",
+     [("car", "go_straight", "back"), ("car", "go_straight", "ego"), ("car", "go_straight", "front")]),
+])
+def test_the_ego_listed_in_a_counted_group_is_one_of_it_and_it_after_the_ego_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected

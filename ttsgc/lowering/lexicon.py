@@ -36,7 +36,7 @@ class Token:
     question: bool = False  # in a sentence that asks ("What happens if a truck runs a red light?")
     title: bool = False  # in a title line ("Case: child after ball"): read for the road and weather only
     misspelt: str = ""  # the word as written, when it was read as the nearest known word ("pedestrain")
-    after_semicolon: bool = False  # its sentence follows a semicolon ("ahead of the ego; changes lane"): one thought
+    opened_by: str = ""  # the mark that ended the sentence before its own (";" in "ahead of the ego; changes lane")
 
     @property
     def number(self) -> float | None:
@@ -1148,7 +1148,7 @@ def tokenize(text: str) -> list[Token]:
             current += 1
     titled = {sentence_of_raw[k] for k, w in enumerate(raw) if w == "\u00a7"}
     said = 0  # tokens in the sentence so far
-    semicolon = False  # the last sentence ended with a semicolon
+    mark = ""  # the mark that ended the last sentence
     for position, word in enumerate(raw):
         question = sentence_of_raw[position] in asks
         if word == "\u00a7":
@@ -1157,7 +1157,7 @@ def tokenize(text: str) -> list[Token]:
             if tokens and tokens[-1].sentence == sentence:
                 sentence += 1
                 said = 0
-                semicolon = word == ";"
+                mark = word if word in SENTENCE_ENDS else ""
             if word in SENTENCE_ENDS or word == ",":
                 continue
         said += 1
@@ -1183,7 +1183,7 @@ def tokenize(text: str) -> list[Token]:
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
                 and part not in ("is", "was", "has", "does", "goes", "bus", "police")
             tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question,
-                                sentence_of_raw[position] in titled, misspelt, semicolon))
+                                sentence_of_raw[position] in titled, misspelt, mark))
     return tokens
 
 

@@ -3167,6 +3167,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         elif kind != "car" and ego.type == "car":
             ego.type = kind
         ego.aliases.add(u.base)  # every name the ego is given ("an automated shuttle bus ... the shuttle")
+        _ego_listed_in_a_group(r, ego, units, first)
         return NounPhrase(ego, head, first)
     if u.meaning == "none":  # "stopped with flashing lights": no agent, and no claim on the verb before it
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
@@ -3819,6 +3820,15 @@ def _places_named(e: Entity, sentence: int) -> set[str]:
     if e.head == "vehicle" and sentence > 0:
         return HEADLINE_PLACES
     return {"ahead"} if e.head.split()[0] in ("lead", "leading") else set()
+
+
+def _ego_listed_in_a_group(r: _Reader, ego: Entity, units: list[Unit], first: int) -> None:
+    """'three agents: the ego, a cyclist and a bus': the ego named in the list of a counted kind is one of it."""
+    listed = units[first - 1].word in (",", "and") if first > 0 else units[first].tokens[0].opened_by == ":"
+    group = next((e for e in reversed(r.entities) if not e.is_ego and e.parent is None and e.named_of is None), None)
+    if listed and group is not None and group.generic and group.group_open > 0 and group.count > 0:
+        group.group_open -= 1
+        group.count -= 1
 
 
 def _absorbed(r: _Reader, entity: Entity) -> bool:
@@ -4547,7 +4557,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif previous_subject and clause.link in PARTICIPLE_LINKS and verbs and verbs[0] == 0 and \
                 units[0].tokens[0].word.endswith("ing"):
             subject = list(previous_subject)  # "a cyclist rode ahead of me before turning left": the cyclist turns
-        elif previous_subject and clause.link == "" and verbs and verbs[0] == 0 and units[0].tokens[0].after_semicolon \
+        elif previous_subject and clause.link == "" and verbs and verbs[0] == 0 and units[0].tokens[0].opened_by == ";" \
                 and not _bare_verb(units[0]):  # ("a truck stopped ahead; overtake it": an order to the ego)
             subject = list(previous_subject)  # "a car in the left lane; changes lane to the right": the same car
         elif verbs and any(np.entity is None and units[np.index].meaning == "none" and
@@ -5819,6 +5829,11 @@ def _a_group(subject: list[Entity]) -> bool:
 def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
     """'it' inside a place phrase ('a biker behind it'): the last agent named before, not the one placed; when
     that is the ego ('the ego waits; two cars behind it'), the place is the ego's, as every place is."""
+    for k in range(i - 2, -1, -1):  # "two cars, one ahead of the ego and one behind it": the ego, said last
+        if units[k].category == "agents" and units[k].meaning not in ("none", "ego"):
+            break
+        if units[k].category == "positions" and any(t.word == "ego" for t in units[k].tokens):
+            return None
     before = [np.entity for np in phrases if np.index < i and np.entity is not None]
     for e in reversed(recent + before):
         if e in owners or e.is_ego and _EGO_SPEAKS.get():
