@@ -6563,3 +6563,42 @@ def test_street_lamps_lit_say_it_is_night():
 ])
 def test_the_ego_listed_in_a_counted_group_is_one_of_it_and_it_after_the_ego_is_the_ego(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Scenario: unprotected left. Oncoming: 1 sedan, 1 box truck. Pedestrians: 2 crossing the destination road.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_straight"),
+      ("pedestrian", "cross_the_road", "at_the_destination"), ("pedestrian", "cross_the_road", "at_the_destination"),
+      ("truck", "go_straight", "road_of_straight")]),
+    ("T-junction, ego turning left out of a side road.\nTraffic from left: 1 HGV.\nFrom right: 2 cars.",
+     [("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_right_turn"),
+      ("car", "turn_left", "ego"), ("truck", "go_straight", "road_of_left_turn")]),
+    ("Ego: going straight.\nCrossing traffic from the right: a van, a motorbike.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "right"), ("motorcycle", "go_straight", "right")]),
+])
+def test_a_key_that_says_only_where_places_every_agent_its_value_lists_even_run_on_in_one_line(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_what_a_test_expects_run_on_in_one_line_stays_in_its_sentence():
+    assert ("car", "change_lane_to_right", "ego") in agents(
+        "An ambulance approaches the ADS vehicle from behind in the same lane. Expected response: the ADS vehicle "
+        "changes lane to the right. ODD: urban arterial, 2 lanes per direction.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We approached the pelican crossing and a man started crossing from the right.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("While the ego waits to turn left, a pedestrian crosses the side road it wants to enter.",
+     [("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination")]),
+    ("The ego turns right; a cyclist crosses the street the ego is about to enter.",
+     [("car", "turn_right", "ego"), ("cyclist", "cross_the_road", "at_the_destination")]),
+    ("A van comes round a bend towards us, and we both stop.",
+     [("car", "stop", "ego"), ("car", "stop", "front_left")]),
+    ("Two lanes, heavy traffic. The car in front slams on its brakes and the guy behind me doesn't stop in time.",
+     [("car", "go_straight", "back"), ("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("A line of cyclists ride ahead of me.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front"), ("cyclist", "go_straight", "front")]),
+])
+def test_crossings_begun_roads_to_be_entered_we_both_and_lines_of_riders(prompt, expected):
+    assert agents(prompt) == expected

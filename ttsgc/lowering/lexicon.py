@@ -642,10 +642,24 @@ def _tables(lines: list[str]) -> list[str]:
     return out
 
 
+INLINE_KEY = re.compile(r"(?<=[.;])[ \t]+(?=([A-Z][A-Za-z/-]*(?: [A-Za-z/-]+){0,2}):[ \t])")
+
+
+def _inline_key_break(m: re.Match) -> str:
+    """A line break before a key run on after a full stop; what a test expects stays in its sentence (the text
+    told it as part of the scene)."""
+    key = m.group(1).lower()
+    return m.group(0) if key in ORACLE_KEYS or key.split()[0] in ("expected", "acceptance", "pass", "success") \
+        else "\n"
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
+    if "\n" not in text.strip() and len(INLINE_KEY.findall(text)) >= 2:
+        text = INLINE_KEY.sub(_inline_key_break, text)  # "Scenario: unprotected left. Oncoming: 1 sedan, 1 box
+        # truck.": notes run on in one line, a key after each full stop
     if "\n" not in text.strip():
         return _keyed_agents("\n".join(_without_outline_numbers([text])))
     out = []
@@ -693,9 +707,26 @@ def _lines(text: str) -> str:
             out.append(f"no {key}.")
         elif not value:
             continue
+        elif _place_of_a_key(lowered) and _names_agent(value.split(", ")[0]):
+            place = _place_of_a_key(lowered)  # "Oncoming: 1 sedan, 1 box truck": each of them oncoming
+            out.append(", and ".join(f"{piece} {place}" for piece in value.split(", ")) + ".")
         else:
             out.append(f"{_keyed(_first_named(key, chr(10).join(lines[:k])), value)}.")
     return " ".join(out)
+
+
+KEY_PLACES = {"oncoming": "oncoming", "opposite": "oncoming", "opposing": "oncoming", "behind": "behind",
+              "rear": "behind", "ahead": "ahead", "front": "ahead", "in front": "ahead", "left": "on the left",
+              "right": "on the right", "from left": "from the left", "from right": "from the right",
+              "from the left": "from the left", "from the right": "from the right"}
+
+
+def _place_of_a_key(key: str) -> str | None:
+    """A key that says only where ('Oncoming', 'Traffic from the right', 'Behind'): the place of each agent its
+    value lists."""
+    words = [w for w in key.split() if w not in ("traffic", "vehicles", "vehicle", "cars", "agents", "actors",
+                                                 "crossing", "other")]
+    return KEY_PLACES.get(" ".join(words))
 
 
 def _speakers(lines: list[str]) -> set[str]:

@@ -623,6 +623,18 @@ TO_COME = AUXILIARIES | {"am", "about", "going", "due", "want", "wants", "wanted
                          "plans", "planned", "intend", "intends", "intended", "has", "have", "had", "set"}
 
 
+ENTERING = {"enter", "entering", "enters", "entered"}
+
+
+def _entered(units: list[Unit], j: int) -> bool:
+    """'(the road) it wants to enter', 'it is turning into': after 'it', the verb of heading into a road."""
+    while j < len(units) and units[j].category in ("word", "actions") and units[j].word in TO_COME | {"to"} and \
+            (units[j].category == "word" or units[j].meaning == "try"):
+        j += 1
+    return j < len(units) and (units[j].tokens[0].base in ENTERING or units[j].category == "actions" and
+                               units[j].meaning.startswith("turn"))
+
+
 def _turned_into(units: list[Unit]) -> list[Unit]:
     """'crossing the road I was turning into': a relative clause on a road noun naming where the ego turns."""
     out, k = [], 0
@@ -642,13 +654,21 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
         j = k + (k + 1 < len(units) and units[k].word in ("in", "into", "onto") and units[k + 1].word == "which")
         j += j < len(units) and units[j].word in ("that", "which")  # "the road (in which) the AV is turning"
         j += j < len(units) and units[j].word == "the"
-        if not (j < len(units) and units[j].category == "agents" and units[j].meaning == "ego"):
-            continue
+        if not (j < len(units) and (units[j].category == "agents" and units[j].meaning == "ego" or
+                                    units[j].word == "it" and _entered(units, j + 1))):
+            continue  # "the road the ego turns into", "the side road it wants to enter"
         j += 1
         while j < len(units) and units[j].category in ("word", "actions") and units[j].word in TO_COME | {"to"} and \
                 (units[j].category == "word" or units[j].meaning == "try"):
             j += 1  # "the road the ego is about to turn into", "the street we want to turn into"
         into = j + 1 < len(units) and units[j + 1].word in ("into", "onto")
+        if j < len(units) and units[j].tokens[0].base in ENTERING:  # "the side road the ego wants to enter"
+            end = j + 1
+            tokens = tuple(t for x in units[k:end] for t in x.tokens)
+            out.append(Unit(units[k].start, units[end - 1].end, "positions", "destination", tokens))
+            k = end
+            named = True
+            continue
         if j < len(units) and units[j].category == "actions" and units[j].meaning.startswith("turn") and (
                 into or units[k].word in ("in", "into", "onto")):
             end = j + 1 + into
@@ -964,6 +984,10 @@ PLANNING_WORDS = {"next", "date", "sprint", "release", "deadline", "week", "mont
 INTENSIFIED = {"down", "up", "out", "off", "back", "away", "along", "round", "around", "through"}  # 'right' before them
 
 
+ASPECT_VERBS = ("started", "starts", "start", "began", "begins", "begin", "kept", "keeps", "continued", "continues",
+                "tried", "tries")  # "started crossing": the crossing is done
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -1123,9 +1147,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     person_before = after_person or prev is not None and prev.word == "," and m.start > 1 and \
         tokens[m.start - 2].base in ("target", "dummy", "pedestrian", "cyclist", "child", "person") or \
         prev is not None and (lexicon().phrases.get((prev.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES or \
-        prev is not None and prev.word in ("is", "are", "was", "were") and m.start > 1 and \
-        (lexicon().phrases.get((tokens[m.start - 2].base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
-    # "EBT crossing from the right": a word that names a person or a rider; "a cyclist is crossing from the left"
+        prev is not None and prev.word in ("is", "are", "was", "were") + ASPECT_VERBS and m.start > 1 and \
+        ((lexicon().phrases.get((tokens[m.start - 2].base,)) or ("", ""))[1] in V.VULNERABLE_TYPES or
+         prev.word in ASPECT_VERBS and tokens[m.start - 2].word in ("he", "she", "they"))
+    # "EBT crossing from the right": a word that names a person or a rider; "a cyclist is crossing from the left",
+    # "a man started crossing from the right"
     if m.category == "positions" and m.meaning in ("road_left", "road_right") and span[0].word == "crossing" and \
             person_before:  # "a cyclist crossing from the right": a person crossing the road, from that side
         side = m.meaning[5:]
@@ -3106,6 +3132,11 @@ def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
     return crash is not None and r.tokens[e.said_at].sentence > crash
 
 
+def _said_parked(units: list[Unit], first: int, head: int) -> bool:
+    """'parked' said of the noun, before it ('a row of parked cars') or right after it ('a line of cars parked')."""
+    return any(u.tokens[0].word == "parked" for u in units[first:head + 2])
+
+
 def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: set[str]) -> bool:
     """'my bike', 'on the bike', 'just me and (the) bike', 'in front of me on bike': the speaker's own, not a bike
     somewhere ahead."""
@@ -3368,8 +3399,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         units[head + 1].tokens[0].word.endswith("ing")  # "a junction with cars coming from the right": agents
     if scenery and not doing and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
             not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
-            count is None and plural and before >= lo and "of" in words
-            and units[before].word in ("row", "line", "lot", "rows")):  # "a row of parked cars": scenery
+            count is None and plural and before >= lo and "of" in words and kind not in V.VULNERABLE_TYPES
+            and units[before].word in ("row", "line", "lot", "rows") and _said_parked(units, first, head)):
+        # "a row of parked cars": scenery ("a line of cyclists", "a line of cars waiting at the lights": agents)
         for k in range(before + 1, head):
             r.mark(units[k])
             units[k].category = "word"
@@ -4427,6 +4459,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     units[i + 2].category == "agents" and units[i + 2].meaning == "ego":
                 group = [e for e in recent if not e.is_ego][-1:] + [_ego_entity(r, stage)]  # "both of us": the
                 # ego and the other one
+            if u.word == "both" and i > 0 and units[i - 1].word in ("we", "us") and units[i - 1].category == "agents":
+                group = [e for e in recent if not e.is_ego][-1:]  # "we both have to stop": the ego (said by 'we')
+                # and the other one
             if group:
                 phrases.append(NounPhrase(group[0], i, i, plural=True, group=group))
                 if u.word == "them" and i > 0 and units[i - 1].word == "between" and group[0].count > 1 and \
@@ -7058,7 +7093,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 a[4] == "horn" for a in e.actions)):
             e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
             r.notes.append(f"inferred: '{e.head}' who {(action or 'horn').replace('_', ' ')}s drives a car")
-        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and action in ("move", "stop", "go_straight") and \
+        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and action in (
+                None, "move", "stop", "go_straight") and \
                 e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
                 and e.road_type != "sidewalk":
             e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
