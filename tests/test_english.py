@@ -6602,3 +6602,13 @@ def test_what_a_test_expects_run_on_in_one_line_stays_in_its_sentence():
 ])
 def test_crossings_begun_roads_to_be_entered_we_both_and_lines_of_riders(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("place, expected", [
+    ("on the traffic island ahead", ("pedestrian", "cross_the_road", "front")),
+    ("waiting at the bus stop ahead", ("pedestrian", "on_the_sidewalk", "front_right")),
+    ("at the bus stop on the left", ("pedestrian", "on_the_sidewalk", "left")),
+    ("on the shoulder ahead", ("pedestrian", "cross_the_road", "front_right")),
+])
+def test_a_woman_on_an_island_at_a_bus_stop_or_on_the_shoulder_is_on_foot(place, expected):
+    assert agents(f"A woman {place}.") == [("car", "go_straight", "ego"), expected]

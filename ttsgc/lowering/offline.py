@@ -3137,6 +3137,16 @@ def _said_parked(units: list[Unit], first: int, head: int) -> bool:
     return any(u.tokens[0].word == "parked" for u in units[first:head + 2])
 
 
+def _waits_where_people_wait(r: _Reader, e: Entity) -> bool:
+    """A person said at a bus or tram stop, a shelter or the kerb in the sentence that names them: on foot."""
+    if e.said_at < 0:
+        return False
+    words = [t.word for t in r.tokens if t.sentence == r.tokens[e.said_at].sentence]
+    pairs = set(zip(words, words[1:]))
+    return bool(pairs & {("bus", "stop"), ("tram", "stop"), ("bus", "shelter")}) or \
+        bool(set(words) & {"kerb", "curb", "pavement", "sidewalk", "footpath"})
+
+
 def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: set[str]) -> bool:
     """'my bike', 'on the bike', 'just me and (the) bike', 'in front of me on bike': the speaker's own, not a bike
     somewhere ahead."""
@@ -7088,17 +7098,22 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     for e in others:
         action, direction = _intro_action(e)
         on_foot = bool(e.aliases & NAMED_ON_FOOT) or any(  # "a woman ... the pedestrian stopped": named as one on
-            t.word in ON_FOOT_WITH for t in r.tokens[e.said_at + 1:e.said_at + 3])  # foot; "a man pushing a pram"
+            t.word in ON_FOOT_WITH for t in r.tokens[e.said_at + 1:e.said_at + 3]) or \
+            _waits_where_people_wait(r, e)  # foot; "a man pushing a pram"; "a woman waiting at the bus stop"
         if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and (action in VEHICLE_ONLY_ACTIONS or any(
                 a[4] == "horn" for a in e.actions)):
             e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
             r.notes.append(f"inferred: '{e.head}' who {(action or 'horn').replace('_', ' ')}s drives a car")
         elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and action in (
                 None, "move", "stop", "go_straight") and \
-                e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road"} \
-                and e.road_type != "sidewalk":
+                e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road",
+                                                                       "shoulder", "sidewalk"} \
+                and e.road_type not in ("sidewalk", "shoulder"):
             e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
             r.notes.append(f"inferred: '{e.head}' behind or ahead in the lane drives a car")
+        if e.type == "pedestrian" and action == "stop" and not e.features & {"crosswalk", "in_road", "waits_to_cross"} \
+                and _waits_where_people_wait(r, e):
+            e.features.add("on_sidewalk")  # "a woman waiting at the bus stop": standing on the pavement
         action = _sideways(action, junction)
         if e.type == "cyclist" and junction and action in (None, "move") and "ahead" in e.features and \
                 e.features & {"from_left", "from_right", "road_left", "road_right"}:
