@@ -6612,3 +6612,10 @@ def test_crossings_begun_roads_to_be_entered_we_both_and_lines_of_riders(prompt,
 ])
 def test_a_woman_on_an_island_at_a_bus_stop_or_on_the_shoulder_is_on_foot(place, expected):
     assert agents(f"A woman {place}.") == [("car", "go_straight", "ego"), expected]
+
+
+def test_an_ego_named_only_by_its_lane_is_still_the_ego():
+    assert agents("An articulated lorry swings wide to turn left, crossing into the ego's lane.") == [
+        ("car", "go_straight", "ego"), ("truck", "turn_left", "front")]
+    assert agents("A bus turns left while a pedestrian crosses.") == [
+        ("bus", "turn_left", "ego"), ("pedestrian", "cross_the_road", "front")]

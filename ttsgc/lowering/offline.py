@@ -6642,6 +6642,8 @@ def _may_drive_the_scene(e: Entity) -> bool:
 def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if not driver_named and any(t.word in SPEAKERS for t in r.tokens) and _speaker_on_the_road(r):
         return None  # "a semi hit my mirror": the one speaking is the ego
+    if not driver_named and any(t.word == "ego" for t in r.tokens):
+        return None  # "a lorry swings wide, crossing into the ego's lane": the ego is named, if only by its lane
     ordered = sorted(r.entities, key=lambda e: e.key)
     anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e) and
                    any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities)), None)
