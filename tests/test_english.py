@@ -6619,3 +6619,13 @@ def test_an_ego_named_only_by_its_lane_is_still_the_ego():
         ("car", "go_straight", "ego"), ("truck", "turn_left", "front")]
     assert agents("A bus turns left while a pedestrian crosses.") == [
         ("bus", "turn_left", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+@pytest.mark.parametrize("aside", ["Someone should fix that junction.", "The workers at the depot say it happens daily."])
+def test_a_person_said_only_to_judge_or_report_is_nobody_on_the_road(aside):
+    assert not any(a[0] == "pedestrian" for a in agents("A van pulls out on my left. " + aside))
+
+
+def test_a_person_asked_for_with_should_and_a_road_verb_stays():
+    assert agents("A pedestrian should cross in front of the ego.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]

@@ -3137,6 +3137,25 @@ def _said_parked(units: list[Unit], first: int, head: int) -> bool:
     return any(u.tokens[0].word == "parked" for u in units[first:head + 2])
 
 
+OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "said", "had", "reckon", "reckons",
+                "think", "thinks", "thought", "told", "tell", "tells"}
+
+
+def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
+    """A person whose sentence, after them and before any comma, goes on with a modal, a report or a past
+    perfect ('someone should fix that junction', 'the workers say', 'the lollipop lady had gone home') and
+    gives them nothing to do on the road: no one of the scene."""
+    if e.said_at < 0:
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    after = []
+    for t in r.tokens[e.said_at + 1:]:
+        if t.sentence != sentence or t.word == ",":
+            break
+        after.append(t.word)
+    return bool(set(after[:4]) & OFF_THE_ROAD)
+
+
 def _waits_where_people_wait(r: _Reader, e: Entity) -> bool:
     """A person said at a bus or tram stop, a shelter or the kerb in the sentence that names them: on foot."""
     if e.said_at < 0:
@@ -7068,6 +7087,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.count > 0 and _came_after_the_crash(r, e):
             e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
             r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
+        if e.type == "pedestrian" and e.count > 0 and not e.actions and not e.features and not e.label and \
+                _said_to_do_no_road_thing(r, e):
+            e.count = 0  # "someone should fix that junction", "the workers at the depot say": nobody on the road
+            r.notes.append(f"left out: '{e.head}' does nothing on the road")
         if e.type == "pedestrian" and e.definite and e.head in KIN and e.count > 0 and not e.actions and \
                 not e.features and not e.label and any(t.word in SPEAKERS for t in r.tokens):
             e.count = 0  # "we sat at the red light ... the kids were fascinated": the speaker's own, on board
