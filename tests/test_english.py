@@ -6629,3 +6629,23 @@ def test_a_person_said_only_to_judge_or_report_is_nobody_on_the_road(aside):
 def test_a_person_asked_for_with_should_and_a_road_verb_stays():
     assert agents("A pedestrian should cross in front of the ego.") == [
         ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego turns right into the side road.", [("car", "turn_right", "ego")]),
+    ("I turned left into a side street.", [("car", "turn_left", "ego")]),
+    ("A van rolled right into the back of me.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+])
+def test_right_before_into_is_a_side_after_a_turn_and_a_word_of_degree_after_other_verbs(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two cars from the right; second car turns left.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn"),
+      ("car", "turn_left", "road_of_right_turn")]),
+    ("A car waits. Second car arrives from the left.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "left"), ("car", "stop", "front")]),
+])
+def test_an_ordinal_with_no_article_names_a_member_of_the_group_named_before(prompt, expected):
+    assert agents(prompt) == expected

@@ -380,6 +380,8 @@ def loose_names() -> dict[str, frozenset[str]]:
     return {noun: frozenset(names) for noun, names in found.items()}
 
 
+TURNING_WORDS = {"turn", "turns", "turned", "turning", "swing", "swings", "swung", "swinging", "bear", "bears", "bore",
+                 "bearing", "veer", "veers", "veered", "veering", "hang", "hangs", "hung", "head", "heads", "headed"}
 TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z0-9]+|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
 LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bus|cyclist|bike|motorcycle|van|pedestrian|walker"
                           r"|ped|pov|tv|npc|object))[ _]([A-H])\b(?![.'\u2019-]?[A-Za-z])")
@@ -1142,8 +1144,10 @@ def tokenize(text: str) -> list[Token]:
                   text)  # "we were three cars stopped at the light": the ego one of them
     text = re.sub(r"\b((?:two|three|four|five|six|seven|eight|\d) [a-z]+s) ?, ((?:the |our |my )?(?:ego|hero)(?: car| vehicle)?)"
                   r" (?=[a-z]+ing\b)", r"\1 including \2 ,", text)  # "three cars, the ego bringing up the rear,"
-    text = re.sub(r"\bright (into|onto) (?=(?:the |my |our |his |her |its |their )?(?:back|rear|side|front|bumper)\b"
-                  r"|(?:me|us|him|her|it|them)\b)", r"\1 ", text)  # "rolled right into the back of me": no side
+    text = re.sub(r"\b([a-z]+) right (into|onto) (?=(?:the |my |our |his |her |its |their )?(?:back|rear|side|front|bumper)"
+                  r"\b(?! road| street| turning| lane| entrance)|(?:me|us|him|her|it|them)\b)",
+                  lambda m: m.group(0) if m.group(1) in TURNING_WORDS else f"{m.group(1)} {m.group(2)} ",
+                  text)  # "rolled right into the back of me": no side ("turns right into the side road": its turn)
     text = re.sub(r" \((?:all |both )?(?:children|kids|pedestrians|people|adults|cars|vehicles|cyclists|pupils)\)",
                   "", text)  # "ped_1, ped_2, ped_3 (children)": what the listed ones are
     text = re.sub(r"\s*=\s*", " is ", text)  # "Actor_1 = wheelchair user", "ego=car"

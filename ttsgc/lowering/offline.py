@@ -3310,6 +3310,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     listed = doing is not None and any(x.category == "positions" for x in units[head:])
     # "car cutting in from the left lane": a terse list's item, an agent with its own verb and place
     placed_here = _placed_in_its_sentence(r, u) if first == lo else set()
+    if words and words <= ORDINAL_MEMBERS and count is None and not plural and \
+            any(not e.is_ego and (e.parent is not None or e.count > 1) and e.type == kind for e in r.entities):
+        definite = True  # "two cars from the right ... went after 2nd car": the second of them, articles dropped
     described = next((m.meaning for m in modifiers if m.category == "actions"), None)  # "revealing stopped car":
     # a state said before the noun sets it apart from one named before doing otherwise
     # "Ego car: stopped. Car: front, stationary", "Ambulance: behind. Van: stopped, ahead": a note's item, placed
