@@ -6649,3 +6649,24 @@ def test_right_before_into_is_a_side_after_a_turn_and_a_word_of_degree_after_oth
 ])
 def test_an_ordinal_with_no_article_names_a_member_of_the_group_named_before(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+@pytest.mark.parametrize("verb", ["turns {} into", "turned {} onto", "is turning {} into", "makes a {} into",
+                                  "hangs a {} into", "swings {} into", "bears {} into"])
+@pytest.mark.parametrize("place", ["the side road", "the main road", "a car park", "the side street"])
+def test_a_turn_into_a_road_keeps_its_side_however_it_is_said(side, verb, place):
+    assert agents(f"The ego {verb.format(side)} {place}.") == [("car", f"turn_{side}", "ego")]
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+@pytest.mark.parametrize("verb", ["moves into the {} lane", "changes lanes to the {}", "pulls out to the {}",
+                                  "shifts over a lane to the {}", "merges {}", "slides into the lane on its {}",
+                                  "moves over to the {}", "drifts into the {} lane"])
+def test_a_lane_change_keeps_its_side_however_it_is_said(side, verb):
+    assert agents(f"The ego {verb.format(side)}.") == [("car", f"change_lane_to_{side}", "ego")]
+
+
+def test_a_car_a_lane_over_is_placed_there_and_changes_nothing():
+    assert agents("There is a car a lane to the left of me.") == [("car", "go_straight", "ego"),
+                                                                 ("car", "go_straight", "left")]
