@@ -1,7 +1,9 @@
 """How well the lowering reads sentence structures, apart from any writer's voice: scenes generated from
 templates whose reading the conventions fix, family by family (terse lists, notes one agent a line, plain
 clauses joined many ways, requests, junctions, composed positions, road users' names, verbs of stopping and
-going on), each checked agent by agent against the reading it must have.
+going on, a vehicle named again the ways accounts do, asides that name no one in the scene, turns and lane
+changes to either side), each checked agent by agent (or, where only that is fixed, type by type) against the
+reading it must have.
 
     python bench/structures.py                 # 300 scenes a family, seed 0
     python bench/structures.py --n 1000 --seed 3 --show 5
@@ -177,9 +179,59 @@ def verbs(draw: random.Random) -> Scene:
     return f"{subject} {verb}.", [("car", "go_straight", "ego"), (kind, action, "front")]
 
 
+def rementions(draw: random.Random) -> Scene:
+    """An account that names one vehicle, then names it again the ways reports and claims do."""
+    vehicles = [("a silver Honda Civic", "car", "Honda"), ("a white Transit van", "car", "van"),
+                ("a black SUV", "car", "SUV"), ("a taxi", "car", "taxi"), ("an articulated lorry", "truck", "lorry"),
+                ("a box truck", "truck", "truck"), ("a delivery van", "car", "van"), ("a sedan", "car", "sedan")]
+    firsts = ["{A} pulled out of a side road on my left", "{A} came the other way", "{A} was ahead of me in my lane",
+              "{A} overtook me on the right", "{A} was parked on my left", "there was {A} behind me"]
+    again = ["the other driver", "the other vehicle", "the third party", "the offending vehicle", "the culprit",
+             "the vehicle in question", "the {n} driver", "the driver of the {n}", "the {n}'s driver", "this guy",
+             "that idiot", "the {n}", "it", "the driver", "the guy", "the woman driving it", "the man driving the {n}"]
+    thens = ["{S} didn't indicate", "{S} never looked", "{S} braked hard", "{S} kept going", "{S} drove off",
+             "I honked but {S} ignored me"]
+    vehicle, kind, noun = draw.choice(vehicles)
+    said = [draw.choice(firsts).format(A=vehicle)] + [draw.choice(thens).format(S=draw.choice(again).format(n=noun))
+                                                      for _ in range(2)]
+    text = "I was driving to work on Tuesday morning. " + ". ".join(x[0].upper() + x[1:] for x in said) + "."
+    return text, Counter({("ego", "car"): 1, kind: 1})
+
+
+def asides(draw: random.Random) -> Scene:
+    """A plain scene and a sentence that names people or vehicles who are not in it."""
+    scenes = [("A van pulls out of a side road on my left", "car"), ("A lorry ahead of me brakes hard", "truck"),
+              ("A cyclist crosses in front of me from the right", "cyclist"), ("A bus comes the other way", "bus")]
+    aside = ["My wife was in the passenger seat", "The examiner marked it as a fault", "The safety driver took over",
+             "A witness filmed it on her phone", "Pedestrians in this town never use the crossing",
+             "Truck drivers have huge blind spots", "Everyone on the bus was fine", "The traffic warden saw nothing",
+             "Nobody was hurt", "There were no other cars", "Someone should fix that junction",
+             "The workers at the depot say it happens daily", "The kids in the back didn't notice",
+             "Cyclists get hurt like this all the time", "The police officer who took the report agreed",
+             "My son asked why the man was so angry"]
+    (scene, kind), extra = draw.choice(scenes), draw.choice(aside)
+    parts = ["I was driving through town", scene, extra] if draw.random() < .5 else \
+        ["I was driving through town", extra, scene]
+    return ". ".join(parts) + ".", Counter({("ego", "car"): 1, kind: 1})
+
+
+def sides(draw: random.Random) -> Scene:
+    """A turn into a road or a lane change, each said many ways, to either side."""
+    side = draw.choice(["left", "right"])
+    turns = ["turns {} into", "turned {} onto", "is turning {} into", "makes a {} into", "hangs a {} into",
+             "swings {} into", "bears {} into", "takes a {} into"]
+    roads = ["the side road", "the main road", "a car park", "the side street", "the high street"]
+    lanes = ["moves into the {} lane", "changes lanes to the {}", "pulls out to the {}", "shifts over a lane to the {}",
+             "merges {}", "slides into the lane on its {}", "moves over to the {}", "drifts into the {} lane"]
+    if draw.random() < .5:
+        return f"The ego {draw.choice(turns).format(side)} {draw.choice(roads)}.", [("car", f"turn_{side}", "ego")]
+    return f"The ego {draw.choice(lanes).format(side)}.", [("car", f"change_lane_to_{side}", "ego")]
+
+
 FAMILIES: dict[str, Callable[[random.Random], Scene]] = {
     "terse lists": terse_lists, "notes": notes, "clauses": clauses, "requests": requests, "junctions": junctions,
-    "positions": positions, "road users' names": names, "verbs of stopping and going": verbs}
+    "positions": positions, "road users' names": names, "verbs of stopping and going": verbs,
+    "vehicles named again": rementions, "asides naming no one": asides, "sides of turns, lanes": sides}
 
 
 def read(text: str) -> list[Key]:
