@@ -3143,8 +3143,8 @@ OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "sai
 
 def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
     """A person whose sentence, after them and before any comma, goes on with a modal, a report or a past
-    perfect ('someone should fix that junction', 'the workers say', 'the lollipop lady had gone home') and
-    gives them nothing to do on the road: no one of the scene."""
+    perfect ('someone should fix that junction', 'the workers at the depot say') and gives them nothing to do
+    on the road: no one of the scene."""
     if e.said_at < 0:
         return False
     sentence = r.tokens[e.said_at].sentence
@@ -3746,6 +3746,8 @@ RIDDEN = {"bike", "bicycle", "pushbike", "push bike", "pedal cycle", "motorbike"
 MINDING = PERCEIVING | {"know", "understand", "realize", "realise", "learn", "think", "care", "remember", "forget",
                         "look", "believe", "expect", "assume", "feel", "worry", "complain", "need", "want", "say",
                         "said", "ask", "agree", "tell", "told", "admit", "explain", "confirm", "claim", "report"}
+
+
 def _owned_by_all(units: list[Unit], head: int) -> bool:
     """'Truck drivers have huge blind spots': a bare plural said to have something, placed nowhere: road users in
     general ('what they do as a habit' is read in _in_general)."""
@@ -3767,7 +3769,6 @@ def _minds_a_thing(units: list[Unit], head: int) -> bool:
         k += 1
     return k < len(units) and units[k].tokens[0].base in MINDING and \
         not any(m.category == "positions" for m in units[k + 1:])  # ("people watch from the pavement": there)
-
 
 
 def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
