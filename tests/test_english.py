@@ -6670,3 +6670,14 @@ def test_a_lane_change_keeps_its_side_however_it_is_said(side, verb):
 def test_a_car_a_lane_over_is_placed_there_and_changes_nothing():
     assert agents("There is a car a lane to the left of me.") == [("car", "go_straight", "ego"),
                                                                  ("car", "go_straight", "left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego drives on an empty road without any pedestrians.", [("car", "go_straight", "ego")]),
+    ("No vehicles are parked on the street as the ego passes a school.", [("car", "go_straight", "ego")]),
+    ("No cars are coming, so the ego turns left.", [("car", "turn_left", "ego")]),
+    ("A man rides a bike ahead.", [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+    ("A woman was riding a scooter on my left.", [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "left")]),
+])
+def test_road_users_said_not_to_be_there_do_nothing_and_a_rider_is_the_ridden(prompt, expected):
+    assert agents(prompt) == expected

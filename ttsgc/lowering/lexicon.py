@@ -821,7 +821,7 @@ def _without_attribution(text: str) -> str:
 
 
 BRACKETED = re.compile(r" ?\(([^()]{1,80})\)")
-PLACE_WORDS = {"behind", "of", "to", "beside", "past", "alongside", "near", "ahead", "following", "passing"}
+PLACED_BY = {"behind", "of", "to", "beside", "past", "alongside", "near", "ahead", "following", "passing"}
 AT_THE_WHEEL = {"driving", "at the wheel", "behind the wheel", "driver", "drove", "older", "elderly", "young"}
 
 
@@ -848,7 +848,7 @@ def _described_in_brackets(text: str) -> str:
 
     def drop(m: re.Match) -> str:
         words = re.findall(r"[a-z]+", m.string[max(0, m.start() - 40):m.start()])[-4:]
-        if len(words) >= 2 and words[-1] in ("me", "us", "you", "ego") and words[-2] in PLACE_WORDS:
+        if len(words) >= 2 and words[-1] in ("me", "us", "you", "ego") and words[-2] in PLACED_BY:
             words = words[:-2]  # "the car behind me (...)": the bracket is the car's
         before = _agent_kinds(words)
         inside = re.findall(r"[a-z]+", m.group(1))

@@ -3185,6 +3185,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if first > lo and units[first - 1].word == "not" and (words & {"a", "an", "single", "another"} or count == 1) and \
             not is_ego:
         count = 0  # "there isn't a car around", "not one car in sight", "not a single pedestrian"
+    if first > lo and units[first - 1].word == "without" and not words - {"any", "a", "an", "other", "single"} and \
+            not is_ego and count in (None, 1):
+        count = 0  # "an empty road without any pedestrians", "without other traffic"
     for k in range(first, head):
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
@@ -4628,9 +4631,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif previous_subject and clause.link == "" and verbs and verbs[0] == 0 and units[0].tokens[0].opened_by == ";" \
                 and not _bare_verb(units[0]):  # ("a truck stopped ahead; overtake it": an order to the ego)
             subject = list(previous_subject)  # "a car in the left lane; changes lane to the right": the same car
-        elif verbs and any(np.entity is None and units[np.index].meaning == "none" and
+        elif verbs and any(np.entity is None and (units[np.index].meaning == "none" or _said_not_there(units, np)) and
                            first_verb - 3 <= np.index < first_verb for np in phrases):
-            verbs = []  # "a deer ran out": its subject names no agent; nobody of the scene ran
+            verbs = []  # "a deer ran out": its subject names no agent; nobody of the scene ran; nor did "no
+            # vehicles are parked on the street"
         elif verbs:
             inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
             subject = [e for e in [_implied(r, units, stage, verbs, inside)] if e is not None]
@@ -5270,6 +5274,13 @@ def _ego_entity(r: _Reader, stage: int) -> Entity:
     return ego
 
 
+def _said_not_there(units: list[Unit], np: NounPhrase) -> bool:
+    """A noun phrase said not to be there: 'no vehicles', 'not a single car', 'without any pedestrians'."""
+    return units[np.index].category == "agents" and (
+        units[np.first].category == "numbers" and units[np.first].meaning == "0" or
+        np.first > 0 and units[np.first - 1].word in ("not", "without") or units[np.first].word in ("no", "zero"))
+
+
 def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside=frozenset()) -> Entity | None:
     """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
     ('aggressive cut-in from right lane ahead' is a car's)."""
@@ -5487,6 +5498,10 @@ def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
     return None
 
 
+RIDING_ON = (["on"], ["riding"], ["astride"], ["rides"], ["rode"], ["ride"], ["is", "riding"], ["was", "riding"],
+             ["pedals"], ["pedalled"], ["pedaled"], ["pedaling"], ["pedalling"])  # "a man rides a bike": the cyclist
+
+
 def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> list[NounPhrase]:
     """'VUT is a bus', 'the ego, a city bus,', 'SV1 is an oncoming truck, SV2 an oncoming car': the second noun
     says what the first is; it is no new agent."""
@@ -5525,7 +5540,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and prev.plural and np.plural and not prev.entity.is_ego and np.entity.type in V.TWO_WHEELER_TYPES \
                 and (prev.entity.type == "pedestrian" or prev.entity.head.split()[-1] in ("riders", "rider")) \
-                and [u.word for u in units[prev.index + 1: np.first]] in (["on"], ["riding"], ["astride"]):
+                and [u.word for u in units[prev.index + 1: np.first]] in RIDING_ON:
             _fold(r, prev.entity, np.entity)  # "two kids on scooters": two riders, counted by the people
             continue
         if np.introduced and _at_the_wheel_of(units, out, np):
@@ -5558,7 +5573,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                       np.entity.type in V.TWO_WHEELER_TYPES) and (seat in (
                 ["in"], ["driving"], ["on"], ["of"]) or not between and units[np.first].word == "of") or (
                 # "the driver of a stopped bus": the bus
-                prev.entity.type == "pedestrian" and [u.word for u in between] in (["on"], ["riding"], ["astride"])
+                prev.entity.type == "pedestrian" and [u.word for u in between] in RIDING_ON
                 and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
             placed = not prev.entity.is_ego and prev.entity.head.split()[-1] in APPOSED_HEADS | {"car"} and \
                 len(between) >= 2 and between[-1].category == "comma" and (
