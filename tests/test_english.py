@@ -6681,3 +6681,13 @@ def test_a_car_a_lane_over_is_placed_there_and_changes_nothing():
 ])
 def test_road_users_said_not_to_be_there_do_nothing_and_a_rider_is_the_ridden(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("If a truck had pulled out, the ego would have braked.", [("car", "go_straight", "ego")]),
+    ("Had a truck pulled out, the ego would have braked.", [("car", "go_straight", "ego")]),
+    ("The ego stops at the lights. Had a cyclist been there, it would have been hit.", [("car", "stop", "ego")]),
+    ("Buses often pull out here. The ego turns left.", [("car", "turn_left", "ego")]),
+])
+def test_what_did_not_happen_or_happens_in_general_gives_its_verb_to_no_one(prompt, expected):
+    assert agents(prompt) == expected

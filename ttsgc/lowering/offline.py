@@ -2000,7 +2000,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             naming = False
         if naming:
             in_case_name.add(k)
-    units = [u for k, u in enumerate(r.units) if u.start not in skip and not _hypothetical(r.tokens, u)
+    units = [_as_nobody(u) if _hypothetical(r.tokens, u) else u for k, u in enumerate(r.units)
+             if u.start not in skip and (not _hypothetical(r.tokens, u) or _nobody_doing(r.tokens, u))
              and not u.tokens[0].title and k not in in_case_name]
     if in_case_name and not any(u.category == "agents" and u.meaning != "none" for u in units):
         units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u)
@@ -2584,20 +2585,34 @@ def _in_general(tokens: list[Token], u: Unit) -> bool:
                                               for p in HABITUAL_PHRASES for k in range(len(words)))
 
 
+def _nobody_doing(tokens: list[Token], u: Unit) -> bool:
+    """An agent said only in what did not happen or of a kind in general ('had a truck pulled out', 'buses often
+    pull out here') is kept as a noun that names no agent: its verb is then nobody's, not the ego's."""
+    return u.category == "agents" and u.meaning not in ("ego", "none") and (_what_if(tokens, u) or
+                                                                           _in_general(tokens, u))
+
+
+def _as_nobody(u: Unit) -> Unit:
+    return Unit(u.start, u.end, "agents", "none", u.tokens)
+
+
 def _what_if(tokens: list[Token], u: Unit) -> bool:
-    """'If a cyclist had been there, I would have hit him': someone said to be there in what did not happen.
+    """'If a cyclist had been there, I would have hit him', 'had a cyclist been there, ...': someone said to be
+    there in what did not happen.
     A present 'if a pedestrian steps out, the ego brakes' is a test's condition and stays; 'if the cyclist had
     not braked' speaks of one who was there."""
     t = u.tokens[0]
     if t.index == 0 or tokens[t.index - 1].word not in ("a", "an", "another", "any"):
         return False
     sentence = _sentence(tokens, t.sentence)
+    words = [x.word for x in sentence]
+    would_have = any(w in COUNTERFACTUAL_MODALS and "have" in words[k + 1:k + 3] for k, w in enumerate(words))
+    if sentence[0].word in ("had", "were") and t.index - 1 == sentence[1].index and would_have:
+        return True  # "Had a cyclist been there, it would have been hit": the 'if' said by the order of words
     opened = next((x for x in reversed(sentence) if x.index < t.index and x.word in ("if", ",")), None)
     if opened is None or opened.word != "if":
         return False
     clause = [x.word for x in sentence if x.index > t.index and x.word != ","][:4]
-    words = [x.word for x in sentence]
-    would_have = any(w in COUNTERFACTUAL_MODALS and "have" in words[k + 1:k + 3] for k, w in enumerate(words))
     return would_have and bool({"had", "were"} & set(clause))
 
 
@@ -7148,8 +7163,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 a[4] == "horn" for a in e.actions)):
             e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
             r.notes.append(f"inferred: '{e.head}' who {(action or 'horn').replace('_', ' ')}s drives a car")
-        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and action in (
-                None, "move", "stop", "go_straight") and \
+        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and (action in (
+                "move", "stop", "go_straight") or action is None and "behind" in e.features) and \
                 e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road",
                                                                        "shoulder", "sidewalk"} \
                 and e.road_type not in ("sidewalk", "shoulder"):
