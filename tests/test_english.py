@@ -6691,3 +6691,12 @@ def test_road_users_said_not_to_be_there_do_nothing_and_a_rider_is_the_ridden(pr
 ])
 def test_what_did_not_happen_or_happens_in_general_gives_its_verb_to_no_one(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van pulls into my lane from the right.", [("car", "change_lane_to_left", "front_right"),
+                                                  ("car", "go_straight", "ego")]),
+    ("A truck is parked in my lane.", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+])
+def test_a_vehicle_said_to_come_into_the_egos_lane_by_any_verb_cuts_in(prompt, expected):
+    assert agents(prompt) == expected

@@ -7182,7 +7182,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             action = "cross"  # "a child runs into the ego's path"
         if e.type == "pedestrian" and action in (None, "move") and "on_sidewalk" not in e.features:
             action = "cross"  # people on foot in the road cross it
-        if "into_ego_lane" in e.features and action in ("move", "lane_change"):
+        if "into_ego_lane" in e.features and (action in ("move", "lane_change") or
+                                               action is None and e.type not in V.VULNERABLE_TYPES):
             action = "cut_in"  # "moves from the left lane into the ego's lane"
         bare = next((side for side in SIDES if f"bare_{side}" in e.features), None)
         if "turned_in_front" in e.features:  # said of one on the ego's side: it came out of that side's road
