@@ -4976,7 +4976,7 @@ def test_a_turn_after_the_ego_waited_stays_in_its_later_stage():
     ("And here comes the hatchback, cutting across from the left lane in front of the ego.",
      [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
     ("Oh and here comes a bus, pulling out from the stop in front of the ego.",
-     [("bus", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+     [("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
 ])
 def test_here_comes_puts_its_subject_after_the_verb(prompt, expected):
     assert agents(prompt) == expected
@@ -6699,4 +6699,30 @@ def test_what_did_not_happen_or_happens_in_general_gives_its_verb_to_no_one(prom
     ("A truck is parked in my lane.", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
 ])
 def test_a_vehicle_said_to_come_into_the_egos_lane_by_any_verb_cuts_in(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car pulled out from the kerb ahead of me.", [("car", "change_lane_to_left", "front_right"),
+                                                     ("car", "go_straight", "ego")]),
+    ("A parked car pulled out in front of me.", [("car", "change_lane_to_left", "front_right"),
+                                                 ("car", "go_straight", "ego")]),
+    ("A bus pulled out from the stop ahead of me on the motorway.", [("bus", "change_lane_to_right", "front_left"),
+                                                                     ("car", "go_straight", "ego")]),
+    ("A pickup pulled out to overtake me.", [("car", "change_lane_to_left", "back"), ("car", "go_straight", "ego")]),
+    ("A van nosed out of a side road on my left.", [("car", "go_straight", "ego"),
+                                                    ("car", "go_straight", "road_of_left_turn")]),
+])
+def test_pulling_out_from_the_kerb_is_from_the_kerb_side_and_pulling_out_to_overtake_is_from_behind(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A motorbike crept up on my nearside on the motorway.", [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "left")]),
+    ("A motorbike was creeping up on my inside on the motorway.", [("car", "go_straight", "ego"),
+                                                                   ("motorcycle", "go_straight", "left")]),
+    ("A cyclist undertook me on the motorway.", [("car", "go_straight", "ego"), ("cyclist", "go_straight", "back_left")]),
+    ("The car in front jammed on the anchors.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+])
+def test_british_words_of_the_kerb_side_and_the_brakes(prompt, expected):
     assert agents(prompt) == expected

@@ -230,7 +230,7 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
-                     "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales"}  # "without indicating": keep-left countries' word
+                     "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
@@ -4087,10 +4087,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             clause_units[k + 1].word == "out"
         if action == "cut_in" and not e.is_ego and ([t.word for t in u.tokens][-1:] == ["out"] or out_after):
             e.features.add("moves_out")  # "the car in front pulls out", "swerves out": out of the lane it is in
-        if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside"} & {t.word for t in u.tokens}:
-            e.features |= {"side_right", "from_lane"}  # "pulls away from the kerb": from the kerb side, ahead
-        if action == "cut_in" and {"stop", "stand", "bay"} & {t.word for t in u.tokens}:
-            e.features.add("from_lane")  # "pulling out of a stop on the right": from where it stood, ahead
+        if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside", "stop", "stand", "bay"} & \
+                {t.word for t in u.tokens} or action == "cut_in" and "parked" in e.features and (
+                    "moves_out" in e.features or "out" in {t.word for t in u.tokens}):
+            e.features |= {"from_lane", "from_kerb"}  # "pulls away from the kerb", "pulling out of a stop on the
+            # right", "a parked car pulled out": from where it stood, ahead; at the kerb unless a side is said
         if e.is_ego and action == "cut_in" and direction is None and any(
                 a[0] == stage and a[4] in ("lane_left", "lane_right") for a in e.actions):
             return  # "merges left ... and has to slot in between them": the same lane change, its side said before
@@ -4315,6 +4316,9 @@ def _onto_the_roadside(units: list[Unit]) -> bool:
     return False
 
 
+ALONG = {"up", "along", "forward", "forwards", "ahead"}
+
+
 def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     """'turns onto the road to the left', 'changes lanes to the right': the side right after a verb."""
     turning = units[k].meaning in ("turn", "u_turn")
@@ -4332,6 +4336,9 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
                         j == k + 1 and len(u.tokens) == 1) and u.tokens[0].word not in ("into", "onto")):
                 # "pulling out of a stop on the right"; but "pulls out into the right lane": where it goes
                 return None  # where it comes from, not where it goes ("pulls out right": where it goes)
+            if not turning and u.tokens[0].word in ("on", "at", "beside", "alongside") and \
+                    {units[k].tokens[-1].word, *(x.word for x in units[k + 1:j])} & ALONG:
+                return None  # "creeping up on my inside": where it is as it moves, not where it steers to
             r.mark(u)
             u.meaning = "used"
             return "left" if "left" in u.base else "right"
@@ -6342,6 +6349,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
+    if side is None and "from_kerb" in f and action == "cut_in" and "ego_lane" not in f:
+        side = "left" if _KEEPS_LEFT.get() else "right"
     moving_out = "moves_out" in f and "ahead" in f and side is None and "ego_lane" not in f
     if action == "cut_in" and not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f
                                                                  or f"from_{side}" in f):
@@ -7202,6 +7211,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if action == "cut_in" and direction and "into_ego_lane" not in e.features:
             action = "lane_" + direction  # "swings into the right lane"
         passes = next((side for side in SIDES if f"passes_{side}" in e.features), None)
+        if passes is None and action == "cut_in" and not e.is_ego and {"moves_out", "overtaking"} <= e.features \
+                and _side_of(e.features) is None and "ahead" not in e.features:
+            passes = _overtaking_side("side_of_an_overtaker")  # "a pickup pulled out to overtake me": out of the
+            e.features.add("behind")  # ego's lane behind it, to the overtaking side
         if passes and action == "cut_in" and "moves_out" in e.features:
             action, direction = "lane_" + passes, passes  # "pulled out to overtake me on the right"
         if e.road_type == "shoulder" and action == "stop" and e.type not in V.VULNERABLE_TYPES and \
