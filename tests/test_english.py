@@ -2731,7 +2731,7 @@ def test_the_officer_is_the_patrol_car_and_lights_in_the_mirror_are_no_signal():
 
 def test_standing_water_puts_no_witness_on_foot():
     assert agents("I was alone. I hit standing water and a van came towards me.") == [
-        ("car", "go_straight", "ego"), ("car", "go_straight", "front")]
+        ("car", "go_straight", "ego"), ("car", "go_straight", "front_left")]
 
 
 def test_a_bus_letting_people_off_brings_no_pedestrians():
@@ -6725,4 +6725,18 @@ def test_pulling_out_from_the_kerb_is_from_the_kerb_side_and_pulling_out_to_over
     ("The car in front jammed on the anchors.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
 ])
 def test_british_words_of_the_kerb_side_and_the_brakes(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The car opposite me at the four way stop went first and turned left.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]),
+    ("The car facing me went first and turned left.", [("car", "go_straight", "ego"),
+                                                      ("car", "turn_left", "road_of_straight")]),
+    ("A taxi coming towards me at the junction turned right.", [("car", "go_straight", "ego"),
+                                                                ("car", "turn_right", "road_of_straight")]),
+    ("A car came towards me from the right at the crossroads.", [("car", "go_straight", "ego"),
+                                                                 ("car", "go_straight", "road_of_right_turn")]),
+])
+def test_the_ego_named_in_an_oncoming_place_is_not_a_doer_of_the_verbs(prompt, expected):
     assert agents(prompt) == expected
