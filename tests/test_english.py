@@ -6740,3 +6740,19 @@ def test_british_words_of_the_kerb_side_and_the_brakes(prompt, expected):
 ])
 def test_the_ego_named_in_an_oncoming_place_is_not_a_doer_of_the_verbs(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("There's a semi stopped on the shoulder up ahead on the left with its hazards going.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front_left")]),
+    ("A van was parked ahead with its engine running.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("A car was stopped ahead with a cyclist riding past it.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("cyclist", "go_straight", "front")]),
+    ("A ute was sitting right next to me in the right lane so I can't move over.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "right")]),
+    ("A BMW was sitting on my tail.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("The car ahead could not move.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("I cannot move over because of a van.", [("car", "go_straight", "ego"), ("car", "go_straight", "front")]),
+])
+def test_a_thing_doing_after_with_and_a_manoeuvre_that_could_not_be_made_are_nobodys_actions(prompt, expected):
+    assert agents(prompt) == expected

@@ -278,7 +278,37 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
-    return _kerb_sides(tokens, _read_units(tokens))
+    return _with_absolutes(_kerb_sides(tokens, _read_units(tokens)))
+
+
+UNABLE = {"ca", "can", "could", "cannot", "couldn", "unable", "able"}  # "can't move" (tokens "ca", "not move")
+GERUND_MODIFIERS = {"own", "hard", "heavy", "sudden", "harsh", "light", "gentle", "late", "full", "emergency", "some",
+                    "no", "little", "much", "more", "less", "quick", "slow", "fast", "careful", "constant", "aggressive",
+                    "cautious", "normal", "steady", "smooth", "abrupt", "erratic", "reckless", "dangerous"}
+
+
+def _with_absolutes(units: list[Unit]) -> list[Unit]:
+    """'a semi stopped on the shoulder with its hazards going', 'with the engine running': the -ing verb after
+    'with' and a thing that is no road user is that thing's, not a doing of the clause's subject."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.word != "with" or u.category != "word":
+            continue
+        j = k + 1
+        while j < len(units) and units[j].category == "word" and units[j].word in POSSESSIVES | {"the", "all", "a"}:
+            j += 1
+        thing = j < len(units) and (units[j].category == "agents" and units[j].meaning == "none" or
+                                    units[j].category == "word" and units[j].word.isalpha() and
+                                    units[j].word not in AUXILIARIES | GERUND_MODIFIERS and
+                                    not units[j].word.endswith("ly"))  # "with their own braking": a doing
+        while thing and j + 1 < len(units) and units[j + 1].category == "word" and units[j + 1].word.isalpha() and \
+                j - k < 3 and units[j + 1].word not in AUXILIARIES | {"and", "or"}:
+            j += 1  # "with its hazard lights going"
+        if thing and j + 1 < len(units) and units[j + 1].category == "actions" and \
+                units[j + 1].tokens[0].word.endswith("ing") and len(units[j + 1].tokens) == 1:
+            v = units[j + 1]
+            out[j + 1] = Unit(v.start, v.end, "word", v.tokens[0].word, v.tokens)
+    return out
 
 
 def _manner_adverb(t: Token) -> bool:
@@ -3992,6 +4022,14 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "walk" and clause_units is not None and k is not None and any(
                 x.category == "word" and x.word in ("across", "over") for x in clause_units[k + 1:k + 3]):
             action = "cross"  # "a granny shuffles slowly across": over the road
+        if action == "stop" and not e.is_ego and u.base == "sit" and clause_units is not None and k is not None and \
+                any(x.category == "positions" and x.meaning in ("level", "behind") for x in clause_units[k + 1:k + 3]):
+            action = "move"  # "a ute sitting right next to me", "sitting on my tail": keeping pace with the ego
+        if action == "stop" and len(u.tokens) > 1 and clause_units is not None and k is not None and (
+                u.tokens[0].word == "cannot" or u.tokens[0].word == "not" and k > 0 and
+                clause_units[k - 1].word in UNABLE) and k + 1 < len(clause_units) and \
+                clause_units[k + 1].word in ("over", "across", "out", "into", "left", "right", "past", "around", "round"):
+            return  # "so I can't move over": a lane change it could not make, not a stop ("couldn't move": stuck)
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
