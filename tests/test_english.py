@@ -6756,3 +6756,19 @@ def test_the_ego_named_in_an_oncoming_place_is_not_a_doer_of_the_verbs(prompt, e
 ])
 def test_a_thing_doing_after_with_and_a_manoeuvre_that_could_not_be_made_are_nobodys_actions(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Bus has the green at the crossroads and a fire engine comes through the red from the right. Our driver brakes "
+     "to a stop.", [("bus", "stop", "ego"), ("firetruck", "go_straight", "road_of_right_turn")]),
+    ("The ego has the green and a cyclist comes from the left.", [("car", "go_straight", "ego"),
+                                                                  ("cyclist", "go_straight", "road_of_left_turn")]),
+    ("A car drove across the crosswalk in front of me.", [("car", "go_straight", "ego"), ("car", "go_straight", "front")]),
+    ("A truck crossed the junction from the left.", [("car", "go_straight", "ego"),
+                                                    ("truck", "go_straight", "road_of_left_turn")]),
+    ("The car behind me pulled out around me.", [("car", "change_lane_to_left", "back"), ("car", "go_straight", "ego")]),
+    ("The car behind me pulled out round me.", [("car", "change_lane_to_left", "back"), ("car", "go_straight", "ego")]),
+])
+def test_a_held_green_ends_a_clause_and_a_vehicle_over_a_crossing_or_out_round_the_ego_is_no_cross_traffic(
+        prompt, expected):
+    assert agents(prompt) == expected

@@ -2207,7 +2207,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             current.append(u)  # "no option but to stop": one idiom, the verb is the one left without a choice's
             continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
-            if u.word in ("and", "or") and not _has_verb(current) and not _new_subject_after_copula(current, units, k):
+            if u.word in ("and", "or") and not _has_verb(current) and not _new_subject_after_copula(current, units, k) \
+                    and not _holds_the_green(current):
                 current.append(u)
                 continue
             if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
@@ -2926,6 +2927,13 @@ def _agent_nouns() -> frozenset[str]:
 
 def _has_verb(units: list[Unit]) -> bool:
     return any(u.category == "actions" and u.meaning not in ("try",) for u in units)
+
+
+def _holds_the_green(units: list[Unit]) -> bool:
+    """'the bus has the green, and a fire engine comes through the red': a predicate the road lexicon holds whole,
+    so what follows 'and' is another clause, not a second subject of the next verb."""
+    return any(u.category == "road" and len(u.tokens) > 1 and u.tokens[0].base in ("have", "get") and
+               any(x.category == "agents" for x in units[:units.index(u)]) for u in units)
 
 
 def _reaching(units: list[Unit], k: int) -> bool:
@@ -4022,6 +4030,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "walk" and clause_units is not None and k is not None and any(
                 x.category == "word" and x.word in ("across", "over") for x in clause_units[k + 1:k + 3]):
             action = "cross"  # "a granny shuffles slowly across": over the road
+        if action == "cross" and e.type not in V.VULNERABLE_TYPES and clause_units is not None and k is not None and \
+                any(x.category in ("road", "positions") and (x.meaning in V.CROSSWALK_OBJECTS | {"crosswalk", "stop_line"})
+                    for x in clause_units[k + 1:k + 4]):
+            action = "move"  # "the Fiesta went across the zebra": through the crossing, on its own road
         if action == "stop" and not e.is_ego and u.base == "sit" and clause_units is not None and k is not None and \
                 any(x.category == "positions" and x.meaning in ("level", "behind") for x in clause_units[k + 1:k + 3]):
             action = "move"  # "a ute sitting right next to me", "sitting on my tail": keeping pace with the ego
@@ -4123,7 +4135,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
         out_after = clause_units is not None and k is not None and k + 1 < len(clause_units) and \
             clause_units[k + 1].word == "out"
-        if action == "cut_in" and not e.is_ego and ([t.word for t in u.tokens][-1:] == ["out"] or out_after):
+        if action == "cut_in" and not e.is_ego and ([t.word for t in u.tokens][-1:] == ["out"] or out_after or
+                                                    [t.word for t in u.tokens][-2:-1] == ["out"]):
             e.features.add("moves_out")  # "the car in front pulls out", "swerves out": out of the lane it is in
         if action == "cut_in" and {"kerb", "curb", "kerbside", "curbside", "stop", "stand", "bay"} & \
                 {t.word for t in u.tokens} or action == "cut_in" and "parked" in e.features and (
@@ -6452,6 +6465,9 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
             return f"change_lane_to_{direction}" if direction else "go_straight"
         if side_now is None and position == "front" and "moves_out" in e.features:
             return "change_lane_to_right" if _KEEPS_LEFT.get() else "change_lane_to_left"  # out, away from the kerb
+        if side_now is None and position == "back" and "moves_out" in e.features:
+            return f"change_lane_to_{_overtaking_side('side_of_an_overtaker')}"  # "the car behind pulled out round
+            # me": out of the ego's lane to pass it
         if side_now is None:
             return "block_the_ego" if position == "front" and e.type != "pedestrian" else "go_straight"
         return "change_lane_to_right" if side_now == "left" else "change_lane_to_left"
