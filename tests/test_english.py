@@ -6772,3 +6772,13 @@ def test_a_thing_doing_after_with_and_a_manoeuvre_that_could_not_be_made_are_nob
 def test_a_held_green_ends_a_clause_and_a_vehicle_over_a_crossing_or_out_round_the_ego_is_no_cross_traffic(
         prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I pulled out to the right and went round the cyclist.", [("car", "change_lane_to_right", "ego"),
+                                                               ("cyclist", "go_straight", "front")]),
+    ("Three cars including the ego are queued at a red light, with the ego second in the queue. The car behind "
+     "honks.", [("car", "stop", "back"), ("car", "stop", "ego"), ("car", "stop", "front")]),
+])
+def test_going_round_keeps_the_side_pulled_out_to_and_the_car_behind_a_queued_ego_is_the_one_behind(prompt, expected):
+    assert agents(prompt) == expected

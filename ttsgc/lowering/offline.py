@@ -4083,7 +4083,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             circulating = any(t.word in ("roundabout", "rotary", "circle") for x in clause_units for t in x.tokens) \
                 and not (k + 2 < len(clause_units) and (clause_units[k + 2].category == "agents" or
                                                        clause_units[k + 2].word in ("it", "him", "her", "them")))
-            if not side and k >= 1 and clause_units[k - 1].word == "to":  # "changed lanes to the right to go around"
+            if not side:  # "changed lanes to the right to go around", "pulled out to the right and went round her"
                 side = next((a[4][5:] for a in reversed(e.actions) if a[0] == stage
                              and a[4] in ("lane_left", "lane_right")), None)  # the purpose of the change said
             if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round") and \
@@ -5194,12 +5194,19 @@ def _place_in_queue(r: _Reader) -> None:
             ego.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
         members = [e for e in r.entities if with_ego is not None and e.parent is with_ego]  # "the first car"
         if with_ego is not None and n - 1 < with_ego.count + len(members) and "ahead" not in with_ego.features:
-            still_ahead = n - 1 - len(members)  # "three cars including us, we were second": one ahead, one behind
+            still_ahead = n - 1 - len([m for m in members if "behind" not in m.features])  # "three cars including
+            # us, we were second": one ahead, one behind ("the car behind" is the one behind)
+            told = [x for x in r.entities if x.definite and "behind" in x.features and x.count == 1 and
+                    not x.is_ego and x.parent is None and x is not with_ego and x.type not in V.VULNERABLE_TYPES]
+            # "... we were second. The following vehicle fails to stop": the one behind, told of by itself
             if still_ahead <= 0:
                 with_ego.features.add("behind")
+                with_ego.count = max(0, with_ego.count - len(told))
+            elif with_ego.count - still_ahead - len(told) <= 0:
+                with_ego.count = still_ahead
             else:
                 behind = Entity(r.new_key(), with_ego.type, False, with_ego.stage,
-                                count=with_ego.count - still_ahead, head=with_ego.head,
+                                count=with_ego.count - still_ahead - len(told), head=with_ego.head,
                                 features=set(with_ego.features) | {"behind"}, actions=list(with_ego.actions),
                                 behavior=with_ego.behavior)
                 with_ego.count = still_ahead
