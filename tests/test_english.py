@@ -6782,3 +6782,14 @@ def test_a_held_green_ends_a_clause_and_a_vehicle_over_a_crossing_or_out_round_t
 ])
 def test_going_round_keeps_the_side_pulled_out_to_and_the_car_behind_a_queued_ego_is_the_one_behind(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("#cutin #highway truck from the right lane", [("car", "go_straight", "ego"),
+                                                    ("truck", "change_lane_to_left", "front_right")]),
+    ("Cut in test. A van in the left lane.", [("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]),
+    ("A truck in the right lane. I cut in front of it.", [("car", "change_lane_to_left", "ego"),
+                                                          ("truck", "go_straight", "right")]),
+])
+def test_a_scene_named_for_a_cut_in_gives_it_to_its_one_vehicle_beside_the_ego(prompt, expected):
+    assert agents(prompt) == expected

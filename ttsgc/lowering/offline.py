@@ -6635,6 +6635,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         _protagonist_vehicle(r, driver_named=False)  # "I watch drivers speed past the school ... a car speeding
         # past, and a boy running out in front of it": an onlooker speaks; the scene is told from the car
     _witness_on_foot(r)
+    _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
     _included_and_listed_items_share(r)
@@ -6870,6 +6871,30 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
         r.entities.remove(supplied)
     first.is_ego = True
     r.notes.append(f"read the {first.head} as the ego: the text names no other and places it nowhere")
+
+
+def _the_named_cut_in(r: _Reader) -> None:
+    """'#cutin truck from the right lane', 'Cut-in scenario: a van in the left lane': a scene named for a cut-in,
+    whose one vehicle in a lane beside the ego is said to do nothing, is that vehicle's cut-in."""
+    words = [t.word for t in r.tokens]
+    named = "cutin" in words or "cutins" in words or any(
+        w == "cut" and words[k + 1:k + 2] == ["in"] and (r.tokens[k].title or r.tokens[k].label or k == 0 or
+                                                       words[k + 2:k + 3] and words[k + 2] in SCENE_NAME_WORDS)
+        for k, w in enumerate(words))
+    if not named or any(a[4] in ("cut_in", "lane_change", "lane_left", "lane_right", "block") for e in r.entities
+                        for a in e.actions):
+        return
+    beside = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and e.count == 1 and
+              not any(a[2] > 0 for a in e.actions) and e.features & {"side_left", "side_right"} and
+              not e.features & {"road_left", "road_right", "road_straight", "toward", "behind"}]
+    others = [e for e in r.entities if not e.is_ego and e not in beside and e.count > 0]
+    if len(beside) == 1 and not any(not any(a[2] > 0 for a in e.actions) and e.type not in V.VULNERABLE_TYPES
+                                    for e in others):
+        beside[0].actions.append((beside[0].stage, 1, ACTION_RANK["cut_in"], r.tick(), "cut_in", None))
+        r.notes.append(f"inferred: the cut-in the scene is named for is the {beside[0].head}'s")
+
+
+SCENE_NAME_WORDS = {"scenario", "scene", "test", "case", "run", "event", ":", "-"}
 
 
 def _witness_on_foot(r: _Reader) -> None:
