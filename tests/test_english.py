@@ -6793,3 +6793,21 @@ def test_going_round_keeps_the_side_pulled_out_to_and_the_car_behind_a_queued_eg
 ])
 def test_a_scene_named_for_a_cut_in_gives_it_to_its_one_vehicle_beside_the_ego(prompt, expected):
     assert agents(prompt) == expected
+
+
+def stages(prompt: str) -> list[list[tuple[str, str, str | None]]]:
+    scenario = lower_prompt(prompt, "offline").scenario
+    return [[("ego" if a.is_ego else a.type, a.action, a.relative_to_ego) for a in st.agents] for st in scenario.stages]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego is stopped at a red light with a motorcycle beside it on the left. The light turns green and they both go.",
+    "Ego stopped at red. Motorcycle filters up on the left and stops beside us. Light goes green, both go.",
+])
+def test_both_after_the_ego_and_one_other_are_those_two_and_the_one_queued_beside_waits_first(prompt):
+    assert stages(prompt) == [[("ego", "stop", None), ("motorcycle", "stop", "left")], [("ego", "go_straight", None)]]
+
+
+def test_the_lane_said_to_be_the_egos_after_where_places_the_others_by_number():
+    assert agents("On the motorway a lorry in lane 1 started to move out into lane 2 where I was, so I braked.") == [
+        ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")]

@@ -4571,6 +4571,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if u.word == "both" and i > 0 and units[i - 1].word in ("we", "us") and units[i - 1].category == "agents":
                 group = [e for e in recent if not e.is_ego][-1:]  # "we both have to stop": the ego (said by 'we')
                 # and the other one
+            elif (u.word == "both" or i in together and u.word in ("pair", "two", "duo") or
+                  [x.word for x in units[i + 1:i + 2]] == ["both"]) and \
+                    len([e for e in recent if not e.is_ego and e.count == 1]) == 1 == len(
+                        [e for e in recent if not e.is_ego]) and any(e.is_ego for e in recent):
+                group = group + [_ego_entity(r, stage)]  # "a motorcycle stops beside the ego ... both go": the two
             if group:
                 phrases.append(NounPhrase(group[0], i, i, plural=True, group=group))
                 if u.word == "them" and i > 0 and units[i - 1].word == "between" and group[0].count > 1 and \
@@ -5246,7 +5251,9 @@ def _place_in_queue(r: _Reader) -> None:
                 e.actions.append((0, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
         return
     for e in r.entities:  # ahead in the queue, level beside the ego at the line, or queued with it: standing too
-        if not e.is_ego and not e.actions and e.type not in V.VULNERABLE_TYPES and e.stage == 0 and (
+        # (until a later stage says it goes: "the light turns green and both go")
+        if not e.is_ego and not any(a[0] == 0 for a in e.actions) and e.type not in V.VULNERABLE_TYPES and \
+                e.stage == 0 and (
                 "ahead" in e.features and not e.features & {"side_left", "side_right", "road_straight", "toward"}
                 or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}
                 or (e.parent or e).includes_ego and not e.features):  # "three cars including mine at the red"
@@ -7023,6 +7030,12 @@ def _numbered_lane_sides(r: _Reader) -> None:
                     for y in r.units[j + 1:k])  # "the ego is on a dual carriageway in lane one"
                 for j, x in enumerate(r.units[max(0, k - 8):k], start=max(0, k - 8))):
             own = int(u.meaning[5:])
+            break
+        said_after = [x.word for x in r.units[k + 1:k + 4] if x.category != "number"]
+        if u.category == "positions" and re.fullmatch(r"(into_)?lane_\d+", u.meaning) and \
+                said_after[:1] == ["where"] and any(
+                    x.category == "agents" and x.meaning == "ego" for x in r.units[k + 1:k + 5]):
+            own = int(u.meaning.split("_")[-1])  # "moved out into lane 2, where I was": the ego's lane, said after
             break
     if own is None:
         return
