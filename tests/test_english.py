@@ -6811,3 +6811,15 @@ def test_both_after_the_ego_and_one_other_are_those_two_and_the_one_queued_besid
 def test_the_lane_said_to_be_the_egos_after_where_places_the_others_by_number():
     assert agents("On the motorway a lorry in lane 1 started to move out into lane 2 where I was, so I braked.") == [
         ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two joggers run along the side of the road towards the ego.",
+     [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right"),
+      ("pedestrian", "on_the_sidewalk", "right")]),
+    ("A man was running along the verge.", [("car", "go_straight", "ego"),
+                                            ("pedestrian", "on_the_sidewalk", "front_right")]),
+    ("A child runs across the road.", [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_a_person_running_along_the_roadside_keeps_to_it(prompt, expected):
+    assert agents(prompt) == expected

@@ -4030,6 +4030,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "walk" and clause_units is not None and k is not None and any(
                 x.category == "word" and x.word in ("across", "over") for x in clause_units[k + 1:k + 3]):
             action = "cross"  # "a granny shuffles slowly across": over the road
+        if e.type == "pedestrian" and action in ("move", "cross") and clause_units is not None and k is not None and (
+                u.tokens[-1].word == "along" or k + 1 < len(clause_units) and clause_units[k + 1].word == "along"):
+            action = "walk"  # "two joggers run along the side of the road": along it, not across
         if action == "cross" and e.type not in V.VULNERABLE_TYPES and clause_units is not None and k is not None and \
                 any(x.category in ("road", "positions") and (x.meaning in V.CROSSWALK_OBJECTS | {"crosswalk", "stop_line"})
                     for x in clause_units[k + 1:k + 4]):
