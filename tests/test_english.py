@@ -6823,3 +6823,8 @@ def test_the_lane_said_to_be_the_egos_after_where_places_the_others_by_number():
 ])
 def test_a_person_running_along_the_roadside_keeps_to_it(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_passenger_of_the_other_driver_is_on_board_and_no_one_on_the_road():
+    assert agents("The other driver's passenger got out and started shouting. The other driver had jumped the red "
+                  "light from the right.") == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]

@@ -4031,8 +4031,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 x.category == "word" and x.word in ("across", "over") for x in clause_units[k + 1:k + 3]):
             action = "cross"  # "a granny shuffles slowly across": over the road
         if e.type == "pedestrian" and action in ("move", "cross") and clause_units is not None and k is not None and (
-                u.tokens[-1].word == "along" or k + 1 < len(clause_units) and clause_units[k + 1].word == "along"):
-            action = "walk"  # "two joggers run along the side of the road": along it, not across
+                u.tokens[-1].word == "along" or k + 1 < len(clause_units) and clause_units[k + 1].word == "along") and \
+                not any(x.meaning in ("crosswalk", *V.CROSSWALK_OBJECTS) for x in clause_units[k + 1:k + 4]):
+            action = "walk"  # "two joggers run along the side of the road": along it, not across (but "crossing
+            # along the crosswalk" is over it)
         if action == "cross" and e.type not in V.VULNERABLE_TYPES and clause_units is not None and k is not None and \
                 any(x.category in ("road", "positions") and (x.meaning in V.CROSSWALK_OBJECTS | {"crosswalk", "stop_line"})
                     for x in clause_units[k + 1:k + 4]):
@@ -4418,7 +4420,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     r.clause_mentions = []
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
         u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
-        and units[i + 1].meaning not in ("ego", "none")) and not _model_named_before(units, i)]
+        and units[i + 1].meaning not in ("ego", "none")) and not _model_named_before(units, i) and not (
+        u.tokens[-1].possessive and u.meaning in ("car", "pedestrian") and u.tokens[-1].base in DRIVING_PEOPLE | {"driver"} and
+        i + 1 < len(units) and units[i + 1].category == "agents" and units[i + 1].meaning == "none")]
+    # ("the other driver's passenger got out": the passenger, on board that car, no one on the road)
     lo = 0
     for i in heads:
         np = _resolve(r, units, i, lo, stage, recent)
