@@ -228,10 +228,35 @@ def sides(draw: random.Random) -> Scene:
     return f"The ego {draw.choice(lanes).format(side)}.", [("car", f"change_lane_to_{side}", "ego")]
 
 
+def around(draw: random.Random) -> Scene:
+    """Others moving round the ego as drivers tell it: out from the kerb, out to pass, towards it, beside it, parked
+    with something of theirs going."""
+    noun, kind = draw.choice([("car", "car"), ("van", "car"), ("taxi", "car"), ("pickup", "car"), ("truck", "truck"),
+                              ("lorry", "truck"), ("bus", "bus")])
+    side = draw.choice(["left", "right"])
+    opening = draw.choice(["", "I was driving through town. ", "On the way home, ", "The ego is on a two-lane road. "])
+    thing = draw.choice(["hazards going", "engine running", "hazard lights flashing", "indicator going"])
+    told = [
+        (f"a {noun} pulled out from the kerb ahead of me.", (kind, "change_lane_to_left", "front_right")),
+        (f"a parked {noun} pulled out in front of me.", (kind, "change_lane_to_left", "front_right")),
+        (f"a {noun} pulled out to overtake me.", (kind, "change_lane_to_left", "back")),
+        (f"the {noun} behind me pulled out round me.", (kind, "change_lane_to_left", "back")),
+        (f"a {noun} coming towards me turned {side} at the junction.", (kind, f"turn_{side}", "road_of_straight")),
+        (f"the {noun} opposite me at the junction turned {side}.", (kind, f"turn_{side}", "road_of_straight")),
+        (f"a {noun} was parked ahead with its {thing}.", (kind, "stop", "front")),
+        (f"a {noun} was sitting right next to me on my {side}.", (kind, "go_straight", side)),
+        (f"a {noun} was sitting on my tail.", (kind, "go_straight", "back")),
+    ]
+    text, agent = draw.choice(told)
+    return opening + text[0].upper() + text[1:] if not opening or opening.endswith(". ") else opening + text, \
+        [("car", "go_straight", "ego"), agent]
+
+
 FAMILIES: dict[str, Callable[[random.Random], Scene]] = {
     "terse lists": terse_lists, "notes": notes, "clauses": clauses, "requests": requests, "junctions": junctions,
     "positions": positions, "road users' names": names, "verbs of stopping and going": verbs,
-    "vehicles named again": rementions, "asides naming no one": asides, "sides of turns, lanes": sides}
+    "vehicles named again": rementions, "asides naming no one": asides, "sides of turns, lanes": sides,
+    "others round the ego": around}
 
 
 def read(text: str) -> list[Key]:
