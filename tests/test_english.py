@@ -6828,3 +6828,15 @@ def test_a_person_running_along_the_roadside_keeps_to_it(prompt, expected):
 def test_a_passenger_of_the_other_driver_is_on_board_and_no_one_on_the_road():
     assert agents("The other driver's passenger got out and started shouting. The other driver had jumped the red "
                   "light from the right.") == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I waited for the kids to cross.", [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front"),
+                                         ("pedestrian", "cross_the_road", "front")]),
+    ("I'm stopped at a four-way stop waiting for a cyclist to cross in front of me.",
+     [("car", "stop", "ego"), ("cyclist", "cross_the_road", "front")]),
+    ("The ego waits patiently for the bus to pull out.", [("bus", "change_lane_to_right", "front_left"),
+                                                          ("car", "stop", "ego")]),
+])
+def test_the_one_waited_for_does_the_verb_after_to(prompt, expected):
+    assert agents(prompt) == expected

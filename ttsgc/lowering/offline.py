@@ -5319,9 +5319,21 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
     if i < 3 or units[i - 1].word != "to":
         return []
     np = next((p for p in phrases if p.index == i - 2 and p.entity is not None), None)
-    if np is None or np.first == 0 or units[np.first - 1].word not in CAUSATIVES:
+    if np is None or np.first == 0 or units[np.first - 1].word not in CAUSATIVES and not _waited_for(units, np.first):
         return []
     return np.group or [np.entity]
+
+
+def _waited_for(units: list[Unit], first: int) -> bool:
+    """'I waited for the kids to cross', 'the ego stops for a cyclist to pass': the one waited for does the verb."""
+    j = first - 1
+    while j > 0 and (units[j].category == "behaviours" or units[j].word.endswith("ly")):
+        j -= 1  # "waits patiently for the bus"
+    before = units[j]
+    if before.category == "actions" and before.meaning == "stop" and before.tokens[-1].word == "for":
+        return True
+    return before.word == "for" and any(u.category == "actions" and u.meaning == "stop"
+                                        for u in units[max(0, first - 3):first - 1])
 
 
 # "the SV is a patrol car", "I am employed as a bus driver": what the first noun is, said of it
@@ -6422,7 +6434,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
-    if side is None and "from_kerb" in f and action == "cut_in" and "ego_lane" not in f:
+    if side is None and "from_kerb" in f and action == "cut_in" and not f & {"ego_lane", "behind"}:
         side = "left" if _KEEPS_LEFT.get() else "right"
     moving_out = "moves_out" in f and "ahead" in f and side is None and "ego_lane" not in f
     if action == "cut_in" and not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f
