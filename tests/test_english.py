@@ -6840,3 +6840,16 @@ def test_a_passenger_of_the_other_driver_is_on_board_and_no_one_on_the_road():
 ])
 def test_the_one_waited_for_does_the_verb_after_to(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego waits to turn right at the junction. Once the oncoming car has gone by, it turns right.",
+     [[("ego", "stop", None), ("car", "go_straight", "road_of_straight")], [("ego", "turn_right", None)]]),
+    ("A car is waiting to turn right at a crossroads. Once the oncoming car has gone by, it turns right.",
+     [[("ego", "stop", None), ("car", "go_straight", "road_of_straight")], [("ego", "turn_right", None)]]),
+    ("A driver is waiting to turn right at a crossroads. Once the oncoming car has gone by he turns right.",
+     [[("ego", "stop", None), ("car", "go_straight", "road_of_straight")], [("ego", "turn_right", None)]]),
+    ("The ego waits at the junction, looking out for cars.", [[("ego", "stop", None)]]),
+])
+def test_one_gone_by_in_a_condition_passes_while_the_waiting_one_waits_and_then_turns(prompt, expected):
+    assert stages(prompt) == expected

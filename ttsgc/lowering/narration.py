@@ -917,7 +917,11 @@ def _storys_driver(text: str, notes: list[str]) -> str:
     m = STORY_DRIVER.search(text)
     if m is None or re.search(rf"\b(?:{OTHER_PEOPLE[m.group(1).lower()]})s?\b", text[:m.start()], re.I):
         return text  # "a woman stepped out and she stopped": the woman
-    return _drivers_pronoun(text[:m.start()] + "the ego" + text[m.start() + len(m.group(1)):], notes)
+    text = text[:m.start()] + "the ego" + text[m.start() + len(m.group(1)):]
+    driver = re.search(r"\b(?:[Aa]|[Tt]he|[Oo]ne)\s+driver\b(?!\s+of\b|')", text[:m.start()])
+    if driver is not None:  # "a driver is waiting to turn right ... he turns": that driver
+        text = text[:driver.start()] + "the ego" + text[driver.end():]
+    return _drivers_pronoun(text, notes)
 
 
 def _drivers_pronoun(text: str, notes: list[str]) -> str:

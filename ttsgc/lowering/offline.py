@@ -165,6 +165,8 @@ class Entity:
     # taxi"): where the group is and what it does, unless said of this one
     listed_after: "Entity | None" = None  # the 'one ...' list item before it: does what that one does, unless
     # said to do otherwise ("one cyclist waits on the left and one on the right")
+    waits_to_turn: tuple = ()  # "a car is waiting to turn right": (stage, action, direction) of the turn to come,
+    # on its own way
 
 
 @dataclass
@@ -2223,9 +2225,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if link in RELATIVES and _main_verb_after_a_relative(current, units, k):
             close(",")  # "a lorry that I had been following for miles turned left": the lorry turned
         current.append(u)
-        if condition and u.category == "actions" and _subject_and_verb_follow(units, k + 1):
-            close()  # "after the cyclist has passed ego turns right": the condition ends at its verb
-            continue
+        if condition and (u.category == "actions" or u.category == "word" and u.word in VERB_PARTICLES and k > 0 and
+                          units[k - 1].category == "actions") and _subject_and_verb_follow(units, k + 1):
+            close()  # "after the cyclist has passed ego turns right": the condition ends at its verb (or the
+            continue  # particle after it: "once the oncoming car has gone by he turns")
         if condition and u.category == "word" and u.word in SIGNAL_COLOURS and len(current) >= 2 and \
                 current[-2].category == "actions" and _signal_change(current, len(current) - 2):
             close()  # "once it turns green we turn left": the condition ends at its colour
@@ -2925,6 +2928,30 @@ def _agent_nouns() -> frozenset[str]:
                      and meaning not in ("none", "ego") and len(words) == 1 for w in words)
 
 
+LOOKING = {"look", "looking", "looked", "watch", "watching", "watched", "check", "checking", "checked", "scan",
+           "scanning", "scanned", "eye", "search", "searching"}
+
+
+def _looked_out_for(units: list[Unit], first: int) -> bool:
+    """'looking out for cars', 'checks for pedestrians': what one looks for, in general; nobody in the scene."""
+    said = [t.word for u in units[max(0, first - 3):first] for t in u.tokens]
+    return said[-1:] == ["for"] and bool(set(said[:-1]) & LOOKING)
+
+
+VERB_PARTICLES = {"by", "past", "through", "off", "away", "out", "over", "across"}
+
+
+def _gone_by(units: list[Unit]) -> bool:
+    """'once the oncoming car has gone by', 'when the bus has passed', 'after it clears the junction': whoever the
+    condition is about has left."""
+    for k, u in enumerate(units):
+        words = set(u.base.split())
+        if u.category == "actions" and (words & {"pass", "clear", "past", "by"} or u.meaning == "move" and
+                                        k + 1 < len(units) and units[k + 1].word in ("by", "past", "through")):
+            return True
+    return False
+
+
 def _has_verb(units: list[Unit]) -> bool:
     return any(u.category == "actions" and u.meaning not in ("try",) for u in units)
 
@@ -3454,6 +3481,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if len(found) == 1 and not found[0].parent and (_placed_elsewhere(found[0], units, head) or (
                 found[0] in r.clause_mentions and head + 1 < len(units) and units[head + 1].category == "positions")):
             found = []  # "a car ahead ... the car behind us", "the car from the left and the car from the right"
+        said_places = {m.meaning for m in modifiers if m.category == "positions"} & {"road_straight", "toward",
+                                                                                     "road_left", "road_right"}
+        if len(found) == 1 and said_places and not said_places & found[0].features and not found[0].is_ego:
+            found = []  # "a car is waiting to turn ... once the oncoming car has gone by": another car
         if found:
             if len(found) == 1:
                 found[0].aliases.add(u.base)  # "a woman ... the pedestrian": every name it is given
@@ -3464,7 +3495,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         while after < len(units) and _sentence_adverb(units[after]):
             after += 1  # "the car still has to deal with him", "the car just holds its line"
         nxt = units[after] if after < len(units) else None
-        if ego is not None and not plural and kind == ego.type and "other" not in words and (
+        if ego is not None and not plural and kind == ego.type and "other" not in words and \
+                not any(m.category == "positions" for m in modifiers) and (  # ("the oncoming car": another)
                 u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
                 _names_the_ego_again(r, ego, u.base)) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
@@ -3498,6 +3530,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             r.mark(units[head + 1])
             units[head + 1].category = "word"  # "a street with cars parked both sides": said of the scenery
         return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
+    if plural and count is None and not words and not doing and _looked_out_for(units, first):
+        return NounPhrase(None, head, first)  # "looking out for cars and nothing else": cars in general
     headline = not words and count is None and not plural and u.tokens[0].sentence == 0
     uncounted = count is None and plural and not words & {"a", "an", "one", "another"}
     if count is None:
@@ -4072,6 +4106,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "behind a cyclist, waiting to pass": following it, for a chance to pass
         if waiting_to and (action in ("cut_in", "move", "lane_change", "lane_left", "lane_right") or
                            action in ("turn", "turn_left", "turn_right", "u_turn") and not e.is_ego):
+            if action in ("turn", "turn_left", "turn_right", "u_turn"):
+                e.waits_to_turn = (stage, action, direction)
             return  # "a bus is waiting to pull out of the side road", "cars waiting to turn": it waits; pulling out
             # or turning is to come (the ego's turn is its plan, read in its own stage)
         if action == "walk" and e.type == "pedestrian" and {t.word for t in u.tokens} & SIDEWALK_WORDS:
@@ -6580,6 +6616,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     clauses = _clauses(r, skip)
     previous: list[Entity] = []
     main_subject: list[Entity] = []  # the subject of the last clause that is not a relative one
+    outside_condition: list[Entity] = []  # the subject of the last clause that is not a condition
     recent: list[Entity] = []
     pending: list[Entity] = []
     header: list[Unit] = []
@@ -6610,9 +6647,20 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                 clause.units[0].category == "actions":
             previous = main_subject  # "held position until the pickup had passed, then completed the left": the
             # one who waited acts again, not the one waited for
+        if k > 0 and clauses[k - 1].condition and not clause.condition and outside_condition and clause.units and \
+                clause.units[0].word in ("it", "he", "she") and _gone_by(clauses[k - 1].units):
+            previous = outside_condition  # "the ego waits to turn; once the oncoming car has gone by, it turns": the
+            # one who waited, not the one gone
         before = len(r.entities)
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         subject = _read_clause(r, clause, previous, recent, pending)
+        if subject and not clause.condition:
+            outside_condition = subject
+        if clause.condition and clause.stage > 0 and _gone_by(clause.units):
+            for e in r.entities[before:]:  # "once the oncoming car has gone by, it turns": the car goes by while the
+                if not e.is_ego and e.stage == clause.stage:  # ego waits, in the stage before
+                    e.stage -= 1
+                    e.actions = [(a[0] - (a[0] == clause.stage),) + a[1:] for a in e.actions]
         _boxed_in_by_those_listed(r, clause, before, ego_blocked, boxed)
         if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS:
             main_subject = subject
@@ -6809,7 +6857,7 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if first is None or not _may_drive_the_scene(first):
         return None
     earliest = min((a[0] for a in first.actions), default=0)
-    if not driver_named and (not any(a[4] in OWN_WAY for a in first.actions) or any(
+    if not driver_named and not first.waits_to_turn and (not any(a[4] in OWN_WAY for a in first.actions) or any(
             a[0] == earliest and a[4] in ("stop", "block") for a in first.actions)):
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
         # pulled away": met by someone, who is the ego
@@ -6897,6 +6945,9 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
                 e.relative_to = first
         r.entities.remove(supplied)
     first.is_ego = True
+    if first.waits_to_turn:  # "a car is waiting to turn right": the ego's turn, as if said of the ego
+        stage, action, direction = first.waits_to_turn
+        first.actions.append((stage, 2, ACTION_RANK[action], r.tick(), action, direction))
     r.notes.append(f"read the {first.head} as the ego: the text names no other and places it nowhere")
 
 
