@@ -6853,3 +6853,19 @@ def test_the_one_waited_for_does_the_verb_after_to(prompt, expected):
 ])
 def test_one_gone_by_in_a_condition_passes_while_the_waiting_one_waits_and_then_turns(prompt, expected):
     assert stages(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("V1 was stationary at a red signal. V2 (HGV) failed to stop and struck V1 from behind.",
+     [("car", "stop", "ego"), ("truck", "go_straight", "back")]),
+    ("At approx 0815 hrs V1 (Ford Focus) was stationary at a red signal. V2 (HGV) failed to stop and struck V1 from "
+     "behind.", [("car", "stop", "ego"), ("truck", "go_straight", "back")]),
+    ("P1 (pedestrian) stepped into the carriageway from the offside footway. V1 braked but struck P1.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),  # keep left: offside right
+    ("The ego entered the junction and collided with a car coming from the nearside.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]),
+    ("A pedestrian crosses the ego's path from the right.", [("car", "go_straight", "ego"),
+                                                            ("pedestrian", "cross_the_road", "front_right")]),
+])
+def test_a_collision_reports_numbered_vehicles_times_and_kerb_sides(prompt, expected):
+    assert agents(prompt) == expected

@@ -209,6 +209,14 @@ def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
         t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
 
 
+def _first_numbered_vehicle(tokens: list[Token]) -> str:
+    """Collision reports number the vehicles (V1, Vehicle 2, Unit 1) and tell the scene of V1: with no ego and no
+    speaker named, V1 is the ego ('' when the text names one, or numbers no vehicle 1)."""
+    if any(t.word in ("ego", "sv", "vut", "sut", "av") or t.word in SPEAKERS for t in tokens):
+        return ""
+    return "v1" if any(t.label == "v1" for t in tokens) else ""
+
+
 EMERGENCY_SIGNS = {"siren", "sirens", "blue", "blues", "emergency", "ambulance", "paramedic", "paramedics", "fire",
                    "police", "beacon", "beacons", "responding"}
 
@@ -262,15 +270,15 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
     and a roundabout's first exit is a left turn, its third a right one (the lexicon says them for keeping right)."""
     if not _drives_on_the_left(tokens):
         return units
-    swap = {"side_right": "side_left", "side_left": "side_right"}
+    swap = {"side_right": "side_left", "side_left": "side_right", "from_right": "from_left", "from_left": "from_right"}
     out = []
     for u in units:
         words = [t.word for t in u.tokens]
         kerb = "nearside" in words or "near" in words and "side" in words or "inside" in words or \
             bool({"kerb", "curb", "kerbside", "curbside"} & set(words))
         far = "offside" in words or "off" in words and "side" in words or "median" in words
-        if u.category == "positions" and u.meaning in swap and (kerb and u.meaning == "side_right"
-                                                               or far and u.meaning == "side_left"):
+        if u.category == "positions" and u.meaning in swap and (kerb and u.meaning in ("side_right", "from_right")
+                                                               or far and u.meaning in ("side_left", "from_left")):
             u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
         if u.category == "actions" and u.meaning in EXIT_TURNS and "exit" in words and \
                 not {"left", "right"} & set(words):
@@ -2145,7 +2153,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             continue
         if u.category == "comma":
             only_ego = all(x.category == "agents" and (x.meaning == "ego" or x.tokens[-1].label)
-                           or x.category == "word" and x.word == "the" for x in current)  # appositions follow
+                           or x.category == "word" and x.word == "the" for x in current) or (
+                bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and
+                not _has_verb(current) and sum(x.category == "agents" for x in current) == 1 and
+                nxt is not None and (nxt.word in ("a", "an") or nxt.category == "agents" and next(
+                    (x.category == "comma" for x in units[k + 2:k + 5] if x.category in ("comma", "actions")),
+                    False)))  # appositions follow ("at 8am the ego (a Ford Focus)", "at 0815 hrs V1 (Ford Focus)")
             labelled = bool(current) and current[-1].category == "agents" and (
                 bool(current[-1].tokens[-1].label) or current[-1].base.split()[-1] in APPOSED_HEADS) and \
                 not _has_verb(current)  # "... that vehicle 1, the AV, was stopped", "VRU, a cyclist,": apposition
@@ -3031,6 +3044,9 @@ DETERMINERS = DEFINITE | INDEFINITE | {
 SAID_OF_SOME = DETERMINERS | OWNERS | COUNTED_BY | {"no"}  # before a plural: some of the kind, not the kind
 
 
+CLOCK_WORDS = {"hrs", "hours", "hr", "h", "am", "pm", "oclock", "o'clock", "gmt", "bst", "utc"}
+
+
 def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, int, set[str], list[Unit]]:
     """The count, determiner words and premodifiers in front of a noun: 'the two dangerous oncoming cars'.
     Modifiers stand between the determiner and the noun; the determiner ends the phrase on the left."""
@@ -3066,8 +3082,9 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             break
         elif units[head].meaning == "ego" and u.category == "actions":
             break  # "passed ego on right": the verb before the ego is no premodifier of it
-        elif u.category == "word" and u.word in DISTANCE_UNITS | {"foot", "inch", "inches"}:
-            break  # "missed me by like a foot mom said": a measure ends the phrase before it (texts lack commas)
+        elif u.category == "word" and u.word in DISTANCE_UNITS | {"foot", "inch", "inches"} | CLOCK_WORDS:
+            break  # "missed me by like a foot mom said": a measure ends the phrase before it (texts lack commas);
+            # so does a time ("at 0815 hrs V1 ...")
         elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)
                                             and not any(m.category == "actions" for m in modifiers)) or \
                 (u.category == "positions" and len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS) or \
@@ -5925,8 +5942,11 @@ def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounP
     by commas (dashes and brackets read as commas) right after another says what the first is, unless a list
     goes on after it ('the ego, a van, and a bus')."""
     if prev.index + 2 > np.first or units[prev.index + 1].category != "comma" or \
-            units[prev.index + 2].category != "word":
-        return False  # "ego, oncoming SUV (going straight), pedestrian": a bare noun after a comma is another
+            units[prev.index + 2].category != "word" and not (
+                prev.entity.is_ego and np.first == prev.index + 2 and np.index > np.first and
+                units[prev.index + 2].category == "agents"):
+        return False  # "ego, oncoming SUV (going straight), pedestrian": a bare noun after a comma is another;
+        # but "V1 (Ford Focus) was": a make and model in brackets after the ego is what it is
     if any(u.category not in ("word", "behaviours", "number", "numbers") or u.word in CLAUSE_WORDS | AUXILIARIES
            for u in units[prev.index + 2:np.first]):
         return False
@@ -6462,7 +6482,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if lane_move and {"level", "into_ego_lane"} <= f and not behind:
         ahead = False  # "alongside me ... moved into my lane, directly in front of me": level, ending ahead
     if ("ego_lane" in f or "followed" in f) and not lane_move and "into_ego_lane" not in f and "from_lane" not in f \
-            and ("overtaking" not in f or "behind" in f):  # "overtook us on the right, pulled in ahead": the side it
+            and ("overtaking" not in f or "behind" in f) and not (crossing and f & {"from_left", "from_right"}):  # "overtook us on the right, pulled in ahead": the side it
         # passed on; but "approached from behind in the same lane ... passed on the left": it starts behind, in it
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
     if side is None and "overtaking" in f and not ("behind" in f and junction is False):
@@ -6599,7 +6619,12 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     if not tokens:
         raise LoweringError("the prompt is empty")
     tokens = _ev_as_ego(tokens)
+    numbered = _first_numbered_vehicle(tokens)
+    if numbered:
+        tokens = [replace(t, word="ego", base="ego", label="") if t.label == numbered else t for t in tokens]
     r = _Reader(tokens, _units(tokens), notes=list(narration.notes))
+    if numbered:
+        r.notes.append(f"read {numbered.upper()} as the ego: the report numbers its vehicles and names no ego")
     _KEEPS_LEFT.set(_drives_on_the_left(tokens))
     ego_words = [u.tokens for u in r.units if u.category == "agents" and u.meaning == "ego"]
     _EGO_SPEAKS.set(bool(ego_words) and all(len(ts) == 1 and ts[0].word in SPEAKERS for ts in ego_words))
