@@ -6869,3 +6869,18 @@ def test_one_gone_by_in_a_condition_passes_while_the_waiting_one_waits_and_then_
 ])
 def test_a_collision_reports_numbered_vehicles_times_and_kerb_sides(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Coming through the village in the tipper, an old boy steps off the kerb onto the zebra.",
+     [("pedestrian", "cross_the_road", "near_the_crosswalk"), ("truck", "go_straight", "ego")]),
+    ("Heads up westbound. Rolling up on it now in the Kenworth: jackknifed semi blocking both lanes. Back it down.",
+     [("truck", "block_the_ego", "front"), ("truck", "go_straight", "ego")]),
+    ("Right lads, one for the sim. Some muppet in a white van cut me up.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("I'm in the artic on the motorway, sat at 56 on the limiter.", [("truck", "go_straight", "ego")]),
+    ("On the motorway a motorbike came up my inside.", [("car", "go_straight", "ego"),
+                                                        ("motorcycle", "go_straight", "left")]),
+])
+def test_a_drivers_own_cab_the_readers_spoken_to_and_trade_words(prompt, expected):
+    assert agents(prompt) == expected

@@ -59,7 +59,8 @@ UNSPECIFIED = OpenChoices({  # other seeds draw from templates/unspecified.toml 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
 DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone",
            "dude", "bloke", "lad", "chap", "mate", "fella", "idiot", "jerk", "moron", "lunatic", "nutter", "maniac",
-           "somebody", "young man", "old man", "teenager", "teen", "kid"}
+           "somebody", "young man", "old man", "teenager", "teen", "kid", "muppet", "numpty", "plonker", "pillock",
+           "wally", "clown", "prat", "twit", "nutcase", "boy racer"}
 SCENERY_PREPOSITIONS = {"between", "past", "among", "amongst", "through", "around", "beside", "by", "of", "in",
                         "with"}
 DEFINITE = {"the", "this", "that", "these", "those", "said"}
@@ -2758,6 +2759,22 @@ def _addressed_readers(before: list[Token], after: list[Token], u: Unit) -> bool
         (not before or before[-1].word in ADDRESS_CLOSERS)
 
 
+VOCATIVES = ADDRESSEES | {"lads", "gents", "boys", "fellas", "chaps", "team", "mates", "mate", "ladies", "drivers",
+                          "everyone", "peeps", "troops"}
+GREETINGS = {"right", "ok", "okay", "alright", "hey", "hi", "hello", "morning", "evening", "listen", "so", "well", "oi",
+             "cheers", "thanks", "evening", "afternoon"}
+
+
+def _opening_vocative(before: list[Token], after: list[Token], u: Unit) -> bool:
+    """'Right lads, one for the sim', 'Morning all, ...', 'Back it down, drivers.': those spoken to at the start or
+    the end of a sentence, set off by a comma, are the readers, nobody in the scene."""
+    if len(u.tokens) != 1 or u.tokens[0].word not in VOCATIVES:
+        return False
+    opening = all(t.word in GREETINGS for t in before) and after[:1] and after[0].word == ","
+    closing = before[-1:] and before[-1].word == "," and not after
+    return bool(opening or closing)
+
+
 DAMAGED = {"totaled", "totalled", "damaged", "dented", "wrecked", "smashed", "scratched", "crushed", "destroyed",
            "undriveable", "undrivable", "fine", "ok", "okay", "undamaged", "repaired", "gone"}
 DEGREE = {"badly", "completely", "totally", "slightly", "a", "now", "basically", "pretty", "all", "still"}
@@ -2799,7 +2816,7 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     after = [x for x in sentence if x.index > last.index]
     said = " ".join(x.word for x in u.tokens)
     lead = [x.word for x in before[-2:]]
-    if _addressed_readers(before, after, u) or last.plural and _a_share_of(before):
+    if _addressed_readers(before, after, u) or last.plural and _a_share_of(before) or _opening_vocative(before, after, u):
         return True
     if said in INSTITUTIONS and lead and (lead[-1] in ADDRESSED or lead[-1] == "the" and len(lead) == 2
                                          and lead[0] in ADDRESSED):
@@ -3475,6 +3492,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         driven = _last_named(r, recent, lambda e: not e.is_ego and e.type != "pedestrian")
         if driven is not None:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
             return NounPhrase(driven, head, first)
+        own = next((e for e in r.entities if e.is_ego and e.type not in V.VULNERABLE_TYPES), None)
+        if own is not None and not any(not e.is_ego and e.type != "pedestrian" for e in r.entities) and \
+                u.base == "driver" and own.aliases - {own.head}:
+            return NounPhrase(own, head, first)  # "put the camera in the lorry ... what the driver sees": its driver
     at_the_wheel = _driven_by(r, units, head, recent) if count is None and not plural else None
     if at_the_wheel is not None:  # "a box truck ... the woman driving it stopped": the truck, by its driver
         return NounPhrase(at_the_wheel, head, first)
@@ -4093,6 +4114,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and not e.is_ego and u.base == "sit" and clause_units is not None and k is not None and \
                 any(x.category == "positions" and x.meaning in ("level", "behind") for x in clause_units[k + 1:k + 3]):
             action = "move"  # "a ute sitting right next to me", "sitting on my tail": keeping pace with the ego
+        if action == "stop" and u.base == "sit" and clause_units is not None and k is not None and \
+                [x.word for x in clause_units[k + 1:k + 2]] == ["at"] and k + 2 < len(clause_units) and \
+                clause_units[k + 2].category in ("number", "numbers"):
+            action = "move"  # "sat at 56 on the limiter": a speed held, not a stop
         if action == "stop" and len(u.tokens) > 1 and clause_units is not None and k is not None and (
                 u.tokens[0].word == "cannot" or u.tokens[0].word == "not" and k > 0 and
                 clause_units[k - 1].word in UNABLE) and k + 1 < len(clause_units) and \
@@ -4445,7 +4470,7 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
                         j == k + 1 and len(u.tokens) == 1) and u.tokens[0].word not in ("into", "onto")):
                 # "pulling out of a stop on the right"; but "pulls out into the right lane": where it goes
                 return None  # where it comes from, not where it goes ("pulls out right": where it goes)
-            if not turning and u.tokens[0].word in ("on", "at", "beside", "alongside") and \
+            if not turning and (u.tokens[0].word in ("on", "at", "beside", "alongside") or units[j - 1].word == "on") and \
                     {units[k].tokens[-1].word, *(x.word for x in units[k + 1:j])} & ALONG:
                 return None  # "creeping up on my inside": where it is as it moves, not where it steers to
             r.mark(u)
@@ -5709,6 +5734,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if np.entity in r.entities:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
                 r.entities.remove(np.entity)
             continue
+        if np.introduced and _the_speakers_seat(r, units, np):
+            ego = _ego_entity(r, np.entity.stage)
+            ego.type = np.entity.type if np.entity.type != "car" else ego.type
+            ego.aliases.add(np.entity.head)  # "... The lorry turns left": the ego, named again
+            if np.entity in r.entities:  # "coming through the village in the tipper": the speaker's own vehicle
+                r.entities.remove(np.entity)
+            r.notes.append(f"read 'the {np.entity.head}' the speaker rides in as the ego's")
+            out.append(NounPhrase(ego, np.index, np.first))
+            continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
@@ -5913,6 +5947,26 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
         u.category in ("word", "actions") and (u.tokens[-1].word in AT_THE_WHEEL_OF or u.base in AT_THE_WHEEL_OF)
         for u in between) and \
         (between[-1].tokens[-1].word in OPERATED_FROM or between[-1].base in OPERATED_FROM)
+
+
+def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
+    """'I'm in the artic', 'coming through the village in the tipper', 'me leading in the DAF': in a first-person
+    account, the vehicle the speaker is in ('in the', 'in my') is the ego's own, unless it is placed or acts."""
+    e = np.entity
+    if e is None or e.is_ego or e.type not in V.EGO_TYPES or np.plural or e.count != 1 or np.first < 2 or \
+            units[np.first - 1].word != "in" or units[np.first].word not in ("the", "my", "our"):
+        return False
+    if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents"):
+        return False  # "in the van ahead", "in the car that pulled out": another
+    if any(x.is_ego and x.head not in FIRST_PERSON | {"we"} for x in r.entities):
+        return False
+    egos = [u for u in r.units if u.category == "agents" and u.meaning == "ego"]
+    if not egos:  # "Rolling up on it now in the Kenworth": no one named, a participle with no subject says where
+        sentence = units[np.first].tokens[0].sentence  # the teller sits
+        opening = [x for x in units[:np.first] if x.tokens[0].sentence == sentence]
+        return bool(opening) and opening[0].category == "actions" and opening[0].tokens[0].word.endswith("ing") and \
+            not any(x.category == "agents" for x in opening)
+    return any(u.tokens[0].word in SPEAKERS for u in egos)
 
 
 def _placed_after(units: list[Unit], i: int) -> bool:
