@@ -6884,3 +6884,20 @@ def test_a_collision_reports_numbered_vehicles_times_and_kerb_sides(prompt, expe
 ])
 def test_a_drivers_own_cab_the_readers_spoken_to_and_trade_words(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("ego waits at the 4 way stop, then once its clear ego turns right",
+     [[("ego", "stop", None)], [("ego", "turn_right", None)]]),
+    ("The ego waits at the stop sign. Once it's clear the ego turns right.",
+     [[("ego", "stop", None)], [("ego", "turn_right", None)]]),
+    ("pls someone set up a zebra crossing w/ a kid crossing from the right, ego just comes up to it.",
+     [[("ego", "go_straight", None), ("pedestrian", "cross_the_road", "near_the_crosswalk")]]),
+    ("Someone ran out in front of me.", [[("ego", "go_straight", None), ("pedestrian", "cross_the_road", "front")]]),
+    ("In the opposite direction come two cars that go straight.",
+     [[("ego", "go_straight", None), ("car", "go_straight", "front_left"), ("car", "go_straight", "front_left")]]),
+    ("A bus pulled out in front of me, so I stopped. You're supposed to give way to buses anyway.",
+     [[("ego", "stop", None), ("bus", "change_lane_to_right", "front_left")]]),
+])
+def test_chat_requests_and_second_language_english(prompt, expected):
+    assert stages(prompt) == expected

@@ -2240,9 +2240,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close(",")  # "a lorry that I had been following for miles turned left": the lorry turned
         current.append(u)
         if condition and (u.category == "actions" or u.category == "word" and u.word in VERB_PARTICLES and k > 0 and
-                          units[k - 1].category == "actions") and _subject_and_verb_follow(units, k + 1):
+                          units[k - 1].category == "actions" or u.category == "word" and u.word in CONDITION_STATES
+                          and k > 0 and units[k - 1].word in COPULAS | {"be"}) and _subject_and_verb_follow(units, k + 1):
             close()  # "after the cyclist has passed ego turns right": the condition ends at its verb (or the
-            continue  # particle after it: "once the oncoming car has gone by he turns")
+            continue  # particle after it: "once the oncoming car has gone by he turns"; or its state: "once it's
+            # clear the ego turns right")
         if condition and u.category == "word" and u.word in SIGNAL_COLOURS and len(current) >= 2 and \
                 current[-2].category == "actions" and _signal_change(current, len(current) - 2):
             close()  # "once it turns green we turn left": the condition ends at its colour
@@ -2759,6 +2761,9 @@ def _addressed_readers(before: list[Token], after: list[Token], u: Unit) -> bool
         (not before or before[-1].word in ADDRESS_CLOSERS)
 
 
+BUILDING = {"set", "make", "do", "build", "create", "write", "add", "knock", "whip", "simulate", "model", "code", "mock",
+            "script", "spin"}
+ASKING_FOR_HELP = {"pls", "please", "plz", "can", "could", "would", "will", "hey", "can't", "cant", "anyone", ",", "@"}
 VOCATIVES = ADDRESSEES | {"lads", "gents", "boys", "fellas", "chaps", "team", "mates", "mate", "ladies", "drivers",
                           "everyone", "peeps", "troops"}
 GREETINGS = {"right", "ok", "okay", "alright", "hey", "hi", "hello", "morning", "evening", "listen", "so", "well", "oi",
@@ -2818,6 +2823,9 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     lead = [x.word for x in before[-2:]]
     if _addressed_readers(before, after, u) or last.plural and _a_share_of(before) or _opening_vocative(before, after, u):
         return True
+    if said in ("someone", "somebody", "anyone", "anybody") and after and after[0].base in BUILDING and \
+            before and before[-1].word in ASKING_FOR_HELP:
+        return True  # "pls someone set up a zebra crossing", "can anyone make this": whoever is asked to build it
     if said in INSTITUTIONS and lead and (lead[-1] in ADDRESSED or lead[-1] == "the" and len(lead) == 2
                                          and lead[0] in ADDRESSED):
         return True
@@ -2826,6 +2834,9 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     if bare and u.meaning not in ("ego", "none"):
         if before[-1:] and before[-1].word == "than" or after[:1] and after[0].word in GENERAL_TRUTH_VERBS:
             return True  # "harder than people think", "people underestimate it"
+        if {"supposed", "always", "ought", "meant"} & {x.word for x in before} and \
+                any(x.word in ("you", "you're", "youre", "one", "drivers") for x in before):
+            return True  # "you're supposed to give way to buses anyway": what one does for buses, in general
         if len(after) >= 2 and after[0].word in ("are", "were") and not after[1].word.endswith("ing") and \
                 after[1].word not in AFTER_A_SCENE_COPULA and \
                 lexicon().phrases.get((after[1].word,), ("word",))[0] not in ("actions", "positions", "agents"):
@@ -5059,11 +5070,13 @@ def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -
     if opening >= verb or not (units[opening].category == "positions" or units[opening].word in PLACE_PREPOSITIONS):
         return None
     v = units[verb]
-    if v.tokens[0].base not in INVERTING_VERBS or v.tokens[0].word == v.tokens[0].base:
+    if v.tokens[0].base not in INVERTING_VERBS:
         return None
     after = next((np for np in phrases if np.index > verb), None)
     if after is None or not after.introduced or after.entity is None or after.entity.is_ego:
         return None
+    if v.tokens[0].word == v.tokens[0].base and not (after.plural or after.entity.count > 1):
+        return None  # an order ("behind the truck, follow a car"); but "in the opposite direction come two cars"
     if any(u.category not in ("behaviours", "word") or u.word not in lexicon().function_words | {"also"}
            and u.category != "behaviours" for u in units[verb + 1:after.first]):
         return None
