@@ -6901,3 +6901,20 @@ def test_a_drivers_own_cab_the_readers_spoken_to_and_trade_words(prompt, expecte
 ])
 def test_chat_requests_and_second_language_english(prompt, expected):
     assert stages(prompt) == expected
+
+
+def test_a_numbered_name_after_an_open_group_out_of_reach_reads_without_failing():
+    prompt = ("V1 was stationary at the pelican crossing outside St Mary's Primary School, traffic signals showing red "
+              "for vehicles. Ped 1 and Ped 2 (both juveniles, approx. 10 years) were crossing from V1's nearside. V2 "
+              "(silver BMW 3 Series) was travelling in the offside lane at excessive speed, passed V1 and went through "
+              "the red signal, narrowly missing Ped 2. V2 failed to stop at the scene. Two lanes in this direction.")
+    assert agents(prompt) == [("car", "go_straight", "back_right"), ("car", "stop", "ego"),
+                              ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+                              ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_reports_compass_abbreviations_and_straight_ahead_said_as_a_manoeuvre():
+    words = [t.word for t in tokenize("V1 was travelling N/B, V2 S/B, V3 E/B and V4 W/B.")]
+    assert [w for w in words if w.endswith("bound")] == ["northbound", "southbound", "eastbound", "westbound"]
+    assert agents("The ego turns left. A van proceeded straight ahead through the junction from the right.") == [
+        ("car", "go_straight", "road_of_right_turn"), ("car", "turn_left", "ego")]

@@ -1051,6 +1051,9 @@ LONGEST_SENTENCE = 100  # tokens; the corpus's longest sentence has 71. A run-on
 # comma past this, or at twice this, so that what is read per sentence stays bounded
 
 
+COMPASS_BOUND = {"n": "northbound", "s": "southbound", "e": "eastbound", "w": "westbound"}
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -1060,6 +1063,7 @@ def tokenize(text: str) -> list[Token]:
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _without_calques(text)
+    text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
     text = re.sub(r"\b(it|that|there|he|she|what|who)'s (been|got|gotten|gone|had)\b", r"\1 has \2", text)
     text = re.sub(r"\b(it|that|he|she|who)'s (\w+ed)(?= (?:over |up |out |off )?(?:a|an|the|my|our|his|her|their|us|me)\b)",
                   r"\1 has \2", text)  # "it's pulled over a pickup", "he's blocked the lane": has, not is

@@ -241,7 +241,7 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
-                     "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic"}  # "without indicating": keep-left countries' word
+                     "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic", "pelican", "puffin", "toucan"}  # "without indicating": keep-left countries' word
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
@@ -3418,9 +3418,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(named, head, first)
         if first == 0 and not plural and count is None and any(
                 not e.is_ego and e.group_open > 0 and (e.type == kind or e.generic) for e in r.entities):
-            member = _existing(r, kind, u.meaning == "generic", False, False, False, recent)[0]
-            member.label = label  # "Three cars drive ahead. Car_1 brakes hard": one of the three, by its name
-            return NounPhrase(member, head, first)
+            found = _existing(r, kind, u.meaning == "generic", False, False, False, recent)
+            if found:  # (none when the open group is out of reach of 'recent')
+                found[0].label = label  # "Three cars drive ahead. Car_1 brakes hard": one of the three, by its name
+                return NounPhrase(found[0], head, first)
     if count is not None and plural and _vague_part_of_the(units, first, head):
         count, words = None, words - {"some"}  # "a group of the children", "some of the kids": those said before
     if count is not None and count > 1 and not plural and words & {"some", "any"}:
