@@ -6918,3 +6918,14 @@ def test_a_reports_compass_abbreviations_and_straight_ahead_said_as_a_manoeuvre(
     assert [w for w in words if w.endswith("bound")] == ["northbound", "southbound", "eastbound", "westbound"]
     assert agents("The ego turns left. A van proceeded straight ahead through the junction from the right.") == [
         ("car", "go_straight", "road_of_right_turn"), ("car", "turn_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Snow day, and the gritter hasn't touched Park Lane. I was crawling along at 10 mph when four schoolchildren "
+     "crossed right in front of me.", [("car", "go_straight", "ego")] + [("pedestrian", "cross_the_road", "front")] * 4),
+    ("For once I was driving (yes, campaigners own cars too) and a cyclist came up the inside.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+    ("I stopped. Road was icy.", [("car", "stop", "ego")]),
+])
+def test_street_names_owned_kinds_and_ones_that_never_came_are_nobody(prompt, expected):
+    assert agents(prompt) == expected

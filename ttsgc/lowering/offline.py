@@ -289,7 +289,27 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
-    return _with_absolutes(_kerb_sides(tokens, _read_units(tokens)))
+    return _street_names(tokens, _with_absolutes(_kerb_sides(tokens, _read_units(tokens))))
+
+
+STREET_SUFFIXES = {"road", "street", "avenue", "drive", "way", "close", "crescent", "terrace", "place", "gardens",
+                   "hill", "row", "square", "parade", "lane", "rd", "st", "ave", "boulevard", "blvd"}
+
+
+def _street_names(tokens: list[Token], units: list[Unit]) -> list[Unit]:
+    """'the gritter hasn't touched Park Lane', 'turned into Cross Street': a one-word verb before a street's
+    suffix, with no article before it, is the street's name."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "actions" or len(u.tokens) != 1 or k + 1 >= len(units) or \
+                units[k + 1].tokens[0].word not in STREET_SUFFIXES or len(units[k + 1].tokens) != 1 or \
+                units[k + 1].tokens[0].sentence != u.tokens[0].sentence:
+            continue
+        before = tokens[u.start - 1].word if u.start > 0 else ""
+        if before in DETERMINERS or before in ("to", "will", "would", "can", "could", "must", "should", "not"):
+            continue  # "the park lane", "to stop, road clear"
+        out[k] = Unit(u.start, u.end, "word", u.tokens[0].word, u.tokens)
+    return out
 
 
 UNABLE = {"ca", "can", "could", "cannot", "couldn", "unable", "able"}  # "can't move" (tokens "ca", "not move")
@@ -2783,6 +2803,8 @@ def _opening_vocative(before: list[Token], after: list[Token], u: Unit) -> bool:
 DAMAGED = {"totaled", "totalled", "damaged", "dented", "wrecked", "smashed", "scratched", "crushed", "destroyed",
            "undriveable", "undrivable", "fine", "ok", "okay", "undamaged", "repaired", "gone"}
 DEGREE = {"badly", "completely", "totally", "slightly", "a", "now", "basically", "pretty", "all", "still"}
+OWNING = {"own", "owns", "buy", "buys", "sell", "sells", "hate", "hates", "love", "loves", "rent", "rents", "insure",
+          "insures", "ban", "bans", "banning", "allow", "allows"}
 NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear", "appeared", "appears"}
 # "never comes", "never arrived": one that is not there ("never came to a stop" is there, and did not stop)
 
@@ -2832,6 +2854,8 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     bare = _bare_plural(tokens, u) or last.plural and before[-1].word == "than" and \
         not (len(before) > 1 and before[-2].word in ("more", "fewer"))  # "harder than people think"
     if bare and u.meaning not in ("ego", "none"):
+        if before[-1:] and before[-1].word in OWNING:
+            return True  # "campaigners own cars too": cars in general
         if before[-1:] and before[-1].word == "than" or after[:1] and after[0].word in GENERAL_TRUTH_VERBS:
             return True  # "harder than people think", "people underestimate it"
         if {"supposed", "always", "ought", "meant"} & {x.word for x in before} and \
@@ -2856,6 +2880,11 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     if u.meaning not in ("ego", "none") and not before and len(words) >= 2 and words[0] in COPULAS and \
             (words[1] in DAMAGED or words[1] in DEGREE and words[2:3] and words[2] in DAMAGED):
         return True  # "Car is totaled.": the state of the writer's car after it all, no one on the road
+    if u.meaning not in ("ego", "none") and words[:2] in (["has", "not"], ["had", "not"], ["did", "not"],
+                                                          ["have", "not"]) and len(words) > 2 and \
+            words[2] in NEVER_CAME | {"touched", "touch", "been", "shown", "turned", "done"} and \
+            not (len(words) > 3 and words[3] in ("to", "a", "the", "into", "in", "at")):
+        return True  # "the gritter hasn't touched Park Lane", "the bus hadn't come": one that is not there
     if u.meaning not in ("ego", "none") and "never" in words[:3]:
         k = words.index("never")
         verb = after[k + 1] if k + 1 < len(after) else None
