@@ -6929,3 +6929,13 @@ def test_a_reports_compass_abbreviations_and_straight_ahead_said_as_a_manoeuvre(
 ])
 def test_street_names_owned_kinds_and_ones_that_never_came_are_nobody(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Just drove round and round the estate for an hour in the dark. Didn't see one other car!!",
+     [("car", "go_straight", "ego")]),
+    ("We didn't see a single cyclist all day.", [("car", "go_straight", "ego")]),
+    ("I went round the parked van.", [("car", "change_lane_to_left", "ego"), ("car", "stop", "front")]),
+])
+def test_none_seen_and_round_and_round_name_no_one_and_no_lane_change(prompt, expected):
+    assert agents(prompt) == expected

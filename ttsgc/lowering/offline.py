@@ -3342,6 +3342,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if first > lo and units[first - 1].word == "without" and not words - {"any", "a", "an", "other", "single"} and \
             not is_ego and count in (None, 1):
         count = 0  # "an empty road without any pedestrians", "without other traffic"
+    if first > lo + 1 and units[first - 1].base in ("see", "spot", "meet", "pass", "notice") and \
+            units[first - 2].word in ("not", "never") and not is_ego and count in (None, 1) and \
+            not words - {"any", "a", "an", "other", "single", "one", "another", "some"}:
+        count = 0  # "didn't see one other car", "never met a single cyclist"
     for k in range(first, head):
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
@@ -4210,8 +4214,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             if not side:  # "changed lanes to the right to go around", "pulled out to the right and went round her"
                 side = next((a[4][5:] for a in reversed(e.actions) if a[0] == stage
                              and a[4] in ("lane_left", "lane_right")), None)  # the purpose of the change said
+            at = clause_units[k + 1].tokens[0].index if k + 1 < len(clause_units) else -1
+            again = at >= 0 and ([t.word for t in r.tokens[at + 1:at + 3]] in (["and", "round"], ["and", "around"]) or
+                                 [t.word for t in r.tokens[max(0, at - 2):at]] in (["round", "and"], ["around", "and"]))
             if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round") and \
-                    not circulating:  # ("in the roundabout going around": round it, not round someone)
+                    not circulating and not again:  # ("in the roundabout going around": round it, not round
+                # someone; "drove round and round the estate": about it)
                 side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
