@@ -6939,3 +6939,16 @@ def test_street_names_owned_kinds_and_ones_that_never_came_are_nobody(prompt, ex
 ])
 def test_none_seen_and_round_and_round_name_no_one_and_no_lane_change(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego approaches to a pass of pedestrians with semaphore. There are two persons waiting in the sidewalk and "
+     "one old man that is crossing very slow. The ego stops.",
+     [[("ego", "stop", None), ("pedestrian", "on_the_sidewalk", "near_the_crosswalk"),
+       ("pedestrian", "on_the_sidewalk", "near_the_crosswalk"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]]),
+    ("sam pls: 3 cars incl ego queued at a red light, ego is the middle one. then it goes green and ego goes straight",
+     [[("ego", "stop", None), ("car", "stop", "front"), ("car", "stop", "back")], [("ego", "go_straight", None)]]),
+    ("We did the big roundabout and I went round and came off to the right.", [[("ego", "turn_right", None)]]),
+])
+def test_spanish_calques_the_middle_one_and_coming_off_a_roundabout(prompt, expected):
+    assert stages(prompt) == expected

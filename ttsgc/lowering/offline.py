@@ -5324,8 +5324,9 @@ def _place_in_queue(r: _Reader) -> None:
         if rest[:1] == ["of"] and i > 1 and words[i - 1] == "the" and words[i - 2] in COPULAS and \
                 with_ego is not None and (n or w == "last"):  # "I was the second of three cars": mine
             n, mine = n or with_ego.count + 1, True
-        if w == "middle" and words[max(0, i - 2):i] == ["in", "the"] and with_ego is not None and \
-                with_ego.count % 2 == 0 and rest[:1] != ["of"]:
+        if w == "middle" and (words[max(0, i - 2):i] == ["in", "the"] or words[i - 1:i] == ["the"] and
+                              rest[:1] == ["one"]) and with_ego is not None and \
+                with_ego.count % 2 == 0 and rest[:1] != ["of"]:  # ("ego is the middle one")
             n, mine = with_ego.count // 2 + 1, True  # "three cars including ours, we were in the middle": second
         if not n or not mine and (rest[:1] not in (["in"], ["car"], ["vehicle"]) or not {"queue", "line"} & set(rest)):
             continue
