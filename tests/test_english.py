@@ -6952,3 +6952,13 @@ def test_none_seen_and_round_and_round_name_no_one_and_no_lane_change(prompt, ex
 ])
 def test_spanish_calques_the_middle_one_and_coming_off_a_roundabout(prompt, expected):
     assert stages(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Turning left at the lights in the 44-tonner and a cyclist comes flying up the inside of me.",
+     [("cyclist", "go_straight", "right"), ("truck", "turn_left", "ego")]),
+    ("Two 44-tonners overtook me.", [("car", "go_straight", "ego"), ("truck", "go_straight", "back_left"),
+                                     ("truck", "go_straight", "back_left")]),
+])
+def test_a_tonner_is_a_lorry_and_the_one_the_speaker_turns_in_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected

@@ -636,10 +636,14 @@ MEASURE = re.compile(r"\b\d+(?:\.\d+)?-(?:tonnes?|tons?|tonner|t|foot|feet|ft|me
 # ('a 7.5 tonne lorry': a weight said apart from its number is no distance, as '10 metres ahead' is)
 
 
+TONNER = re.compile(r"\b\d+(?:\.\d+)?[\s-]tonner(s?)\b(?!\s+(?:lorry|lorries|truck|trucks|hgv|wagon|van))", re.I)
+
+
 def _ages(text: str) -> str:
     """'a 9-year-old child', 'an 8 year old boy', 'two 12-year-olds': an age, no count ('young'; the plural
     noun 'children'); so is a measure said as an adjective ('our 44-tonne artics', 'a 12-metre bus')."""
     text = AGE.sub(lambda m: "children" if m.group("noun") else "young", text)
+    text = TONNER.sub(lambda m: "truck" + (m.group(1) or ""), text)  # "in the 44-tonner": the lorry itself
     text = MEASURE.sub("big", text)
     return re.sub(r"\ban (young|big)\b", r"a \1", text, flags=re.I)
 

@@ -6014,10 +6014,11 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
         return False
     egos = [u for u in r.units if u.category == "agents" and u.meaning == "ego"]
     if not egos:  # "Rolling up on it now in the Kenworth": no one named, a participle with no subject says where
-        sentence = units[np.first].tokens[0].sentence  # the teller sits
+        sentence = units[np.first].tokens[0].sentence  # the teller sits ("... up the inside of me": a speaker)
         opening = [x for x in units[:np.first] if x.tokens[0].sentence == sentence]
         return bool(opening) and opening[0].category == "actions" and opening[0].tokens[0].word.endswith("ing") and \
-            not any(x.category == "agents" for x in opening)
+            not any(x.category == "agents" and x.meaning != "none" for x in opening) or \
+            any(t.word in SPEAKERS - {"you", "your"} for t in r.tokens)
     return any(u.tokens[0].word in SPEAKERS for u in egos)
 
 
