@@ -241,7 +241,9 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
-                     "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic", "pelican", "puffin", "toucan"}  # "without indicating": keep-left countries' word
+                     "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic",
+                     "pelican", "puffin", "toucan"}  # "without indicating", a pelican crossing: keep-left countries'
+# words
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
@@ -271,7 +273,8 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
     and a roundabout's first exit is a left turn, its third a right one (the lexicon says them for keeping right)."""
     if not _drives_on_the_left(tokens):
         return units
-    swap = {"side_right": "side_left", "side_left": "side_right", "from_right": "from_left", "from_left": "from_right"}
+    swap = {"side_right": "side_left", "side_left": "side_right", "from_right": "from_left",
+            "from_left": "from_right"}
     out = []
     for u in units:
         words = [t.word for t in u.tokens]
@@ -314,8 +317,9 @@ def _street_names(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 UNABLE = {"ca", "can", "could", "cannot", "couldn", "unable", "able"}  # "can't move" (tokens "ca", "not move")
 GERUND_MODIFIERS = {"own", "hard", "heavy", "sudden", "harsh", "light", "gentle", "late", "full", "emergency", "some",
-                    "no", "little", "much", "more", "less", "quick", "slow", "fast", "careful", "constant", "aggressive",
-                    "cautious", "normal", "steady", "smooth", "abrupt", "erratic", "reckless", "dangerous"}
+                    "no", "little", "much", "more", "less", "quick", "slow", "fast", "careful", "constant",
+                    "aggressive", "cautious", "normal", "steady", "smooth", "abrupt", "erratic", "reckless",
+                    "dangerous"}
 
 
 def _with_absolutes(units: list[Unit]) -> list[Unit]:
@@ -2261,7 +2265,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         current.append(u)
         if condition and (u.category == "actions" or u.category == "word" and u.word in VERB_PARTICLES and k > 0 and
                           units[k - 1].category == "actions" or u.category == "word" and u.word in CONDITION_STATES
-                          and k > 0 and units[k - 1].word in COPULAS | {"be"}) and _subject_and_verb_follow(units, k + 1):
+                          and k > 0 and units[k - 1].word in COPULAS | {"be"}) and \
+                _subject_and_verb_follow(units, k + 1):
             close()  # "after the cyclist has passed ego turns right": the condition ends at its verb (or the
             continue  # particle after it: "once the oncoming car has gone by he turns"; or its state: "once it's
             # clear the ego turns right")
@@ -2786,8 +2791,8 @@ BUILDING = {"set", "make", "do", "build", "create", "write", "add", "knock", "wh
 ASKING_FOR_HELP = {"pls", "please", "plz", "can", "could", "would", "will", "hey", "can't", "cant", "anyone", ",", "@"}
 VOCATIVES = ADDRESSEES | {"lads", "gents", "boys", "fellas", "chaps", "team", "mates", "mate", "ladies", "drivers",
                           "everyone", "peeps", "troops"}
-GREETINGS = {"right", "ok", "okay", "alright", "hey", "hi", "hello", "morning", "evening", "listen", "so", "well", "oi",
-             "cheers", "thanks", "evening", "afternoon"}
+GREETINGS = {"right", "ok", "okay", "alright", "hey", "hi", "hello", "morning", "evening", "afternoon", "listen", "so",
+             "well", "oi", "cheers", "thanks"}
 
 
 def _opening_vocative(before: list[Token], after: list[Token], u: Unit) -> bool:
@@ -2843,7 +2848,8 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     after = [x for x in sentence if x.index > last.index]
     said = " ".join(x.word for x in u.tokens)
     lead = [x.word for x in before[-2:]]
-    if _addressed_readers(before, after, u) or last.plural and _a_share_of(before) or _opening_vocative(before, after, u):
+    if _addressed_readers(before, after, u) or last.plural and _a_share_of(before) or \
+            _opening_vocative(before, after, u):
         return True
     if said in ("someone", "somebody", "anyone", "anybody") and after and after[0].base in BUILDING and \
             before and before[-1].word in ASKING_FOR_HELP:
