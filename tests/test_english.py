@@ -30,6 +30,12 @@ def agents(prompt: str) -> list[tuple[str, str, str]]:
     return sorted((a.type, a.action, a.relative_to_ego or "ego") for a in lower(prompt).scenario.agents())
 
 
+def stages(prompt: str) -> list[list[tuple[str, str, str | None]]]:
+    """Stage by stage, (type or 'ego', action, position) as the whole lowering writes them, plan inference too."""
+    scenario = lower_prompt(prompt, "offline").scenario
+    return [[("ego" if a.is_ego else a.type, a.action, a.relative_to_ego) for a in st.agents] for st in scenario.stages]
+
+
 def road(prompt: str):
     return lower(prompt).scenario.road
 
@@ -6793,11 +6799,6 @@ def test_going_round_keeps_the_side_pulled_out_to_and_the_car_behind_a_queued_eg
 ])
 def test_a_scene_named_for_a_cut_in_gives_it_to_its_one_vehicle_beside_the_ego(prompt, expected):
     assert agents(prompt) == expected
-
-
-def stages(prompt: str) -> list[list[tuple[str, str, str | None]]]:
-    scenario = lower_prompt(prompt, "offline").scenario
-    return [[("ego" if a.is_ego else a.type, a.action, a.relative_to_ego) for a in st.agents] for st in scenario.stages]
 
 
 @pytest.mark.parametrize("prompt", [

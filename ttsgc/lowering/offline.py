@@ -2178,12 +2178,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             continue
         if u.category == "comma":
             only_ego = all(x.category == "agents" and (x.meaning == "ego" or x.tokens[-1].label)
-                           or x.category == "word" and x.word == "the" for x in current) or (
-                bool(current) and current[-1].category == "agents" and current[-1].meaning == "ego" and
-                not _has_verb(current) and sum(x.category == "agents" for x in current) == 1 and
-                nxt is not None and (nxt.word in ("a", "an") or nxt.category == "agents" and next(
-                    (x.category == "comma" for x in units[k + 2:k + 5] if x.category in ("comma", "actions")),
-                    False)))  # appositions follow ("at 8am the ego (a Ford Focus)", "at 0815 hrs V1 (Ford Focus)")
+                           or x.category == "word" and x.word == "the" for x in current) or \
+                _ego_then_what_it_is(current, units, k)  # appositions follow
             labelled = bool(current) and current[-1].category == "agents" and (
                 bool(current[-1].tokens[-1].label) or current[-1].base.split()[-1] in APPOSED_HEADS) and \
                 not _has_verb(current)  # "... that vehicle 1, the AV, was stopped", "VRU, a cyclist,": apposition
@@ -2263,13 +2259,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if link in RELATIVES and _main_verb_after_a_relative(current, units, k):
             close(",")  # "a lorry that I had been following for miles turned left": the lorry turned
         current.append(u)
-        if condition and (u.category == "actions" or u.category == "word" and u.word in VERB_PARTICLES and k > 0 and
-                          units[k - 1].category == "actions" or u.category == "word" and u.word in CONDITION_STATES
-                          and k > 0 and units[k - 1].word in COPULAS | {"be"}) and \
-                _subject_and_verb_follow(units, k + 1):
-            close()  # "after the cyclist has passed ego turns right": the condition ends at its verb (or the
-            continue  # particle after it: "once the oncoming car has gone by he turns"; or its state: "once it's
-            # clear the ego turns right")
+        if condition and _ends_its_condition(units, k):
+            close()  # "after the cyclist has passed ego turns right"
+            continue
         if condition and u.category == "word" and u.word in SIGNAL_COLOURS and len(current) >= 2 and \
                 current[-2].category == "actions" and _signal_change(current, len(current) - 2):
             close()  # "once it turns green we turn left": the condition ends at its colour
@@ -3015,6 +3007,28 @@ def _looked_out_for(units: list[Unit], first: int) -> bool:
 
 
 VERB_PARTICLES = {"by", "past", "through", "off", "away", "out", "over", "across"}
+
+
+def _ends_its_condition(units: list[Unit], k: int) -> bool:
+    """A condition with no comma ends at its verb ('after the cyclist has passed ego turns right'), at the particle
+    after it ('once the oncoming car has gone by he turns') or at its state ('once it's clear the ego turns
+    right'), when a subject and its verb follow."""
+    u = units[k]
+    said = u.category == "actions" or k > 0 and u.category == "word" and (
+        u.word in VERB_PARTICLES and units[k - 1].category == "actions" or
+        u.word in CONDITION_STATES and units[k - 1].word in COPULAS | {"be"})
+    return said and _subject_and_verb_follow(units, k + 1)
+
+
+def _ego_then_what_it_is(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'at 8am the ego (a Ford Focus) was stationary', 'at 0815 hrs V1 (Ford Focus)': the ego ends an opening with
+    no verb and no other noun, and the comma at k sets off what it is (an article, or a make closed by a comma)."""
+    nxt = units[k + 1] if k + 1 < len(units) else None
+    if not current or current[-1].category != "agents" or current[-1].meaning != "ego" or _has_verb(current) or \
+            sum(x.category == "agents" for x in current) != 1 or nxt is None:
+        return False
+    closed = next((x.category == "comma" for x in units[k + 2:k + 5] if x.category in ("comma", "actions")), False)
+    return nxt.word in ("a", "an") or nxt.category == "agents" and closed
 
 
 def _gone_by(units: list[Unit]) -> bool:
