@@ -6963,3 +6963,19 @@ def test_spanish_calques_the_middle_one_and_coming_off_a_roundabout(prompt, expe
 ])
 def test_a_tonner_is_a_lorry_and_the_one_the_speaker_turns_in_is_the_ego(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("SC-07 Emergency vehicle approach from the rear. An ambulance approaches the ADS vehicle from behind in the same "
+     "lane.", [("ambulance", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("RTC, 2 veh. V1 stationary in queue at traffic lights. V2 failed to stop and ran into rear of V1.",
+     [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("Two-vehicle collision. The ego is stopped at a red light and a van runs into the back of it.",
+     [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("We were sat in the middle lane with the cruise set at 60 mph when a coach loomed ahead.",
+     [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+    ("We were sat in the middle lane at the red light, a coach ahead.",
+     [("bus", "stop", "front"), ("car", "stop", "ego")]),
+])
+def test_a_coded_title_a_crash_counted_by_its_vehicles_and_sitting_at_a_speed(prompt, expected):
+    assert agents(prompt) == expected

@@ -1101,6 +1101,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\bm\d{2,3}\b|\b(?<=the )m\d\b", "motorway", text)  # "the M6", "on the M25"
     text = re.sub(r"\blv\b", "lead vehicle", text)  # "LV decelerates": the lead vehicle
     text = re.sub(r"\br\d{1,4}\b", " ", text)  # "R18 - T-junction": a run number, not a side
+    text = re.sub(r"^\s*(?!(?:us|sr|cr|ca|fm|rt|rte|hwy|i|m|a|b|n|e|r|k|v)-)[a-z]{1,5}[-_]\d{1,5}\b", " case ",
+                  text)  # "SC-07 Emergency vehicle approach ...": an identifier opening the text heads a case
     text = re.sub(r"\b(?!(?:us|sr|cr|ca|fm|rt|rte|hwy|i|m|a|b|n|e|r|k)-)[a-z]{2,5}-\d{1,5}\b", " ",
                   text)  # "SC-07", "REQ-104", "TC-3": a document's identifier, no count (not "I-95", "SR-99")
     text = re.sub(r"\b(?:v|ver|version)\s?\d+(?:\.\d+)+[a-z]?\b", " ", text)  # "FSD v12.5", "version 4.2.1": a

@@ -908,6 +908,10 @@ PACE_PLACES = {"behind", "ahead", "alongside", "beside", "level", "next", "abrea
 TAIL_ENDS = {"bumper", "tail", "back", "rear", "boot", "trunk", "tailgate"}
 
 
+SPEED_UNITS = {"mph", "kmh", "kph", "kmph", "mps"}
+STILL_AT = {"traffic", "queue", "jam", "red", "lights", "light", "junction", "line"}
+
+
 def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
     says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
@@ -915,6 +919,10 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     if any(a in ("on", "off") and b in OWNERS | {"the", "its"} and c in TAIL_ENDS
            for a, b, c in zip(words, words[1:], words[2:])):
         return True  # "sat about 2m off my bumper for miles", "sitting right on our tail": tailgating
+    near = words[:12]
+    if any(w in ("cruise", "limiter") or w in SPEED_UNITS and k > 0 and read_number(near[k - 1]) is not None
+           for k, w in enumerate(near)) and not set(near) & STILL_AT:
+        return True  # "we were sat in the middle one with the cruise set at 60 mph": sitting at a speed drives on
     if words[1:2] == ["the"]:
         del words[1]  # "sitting in (the) right-hand lane"
     if words[:1] != ["in"] or "lane" not in words[1:5]:
@@ -3664,7 +3672,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if _including_ego(units, head, r.units):
         entity.count = max(0, count - 1)
         entity.includes_ego = True
-    if entity.count > 1 or entity.generic:
+    if entity.count > 1 or entity.generic or entity.includes_ego:
         entity.group_open = entity.count
     entity.aliases |= {m.base for m in units[max(lo, first - 1):head] if m.category == "agents" and m.meaning == kind}
     # "a silver Ford Focus ... the Ford": the make names it too
@@ -3889,8 +3897,22 @@ PLACES_IN_A_GROUP = {"first", "second", "third", "fourth", "fifth", "sixth", "2n
                      "middle"}
 
 
+CRASH_NAMES = {"collision", "crash", "accident", "rtc", "rta", "incident", "pile", "smash", "shunt", "prang"}
+
+
+def _counts_the_crash(units: list[Unit], head: int) -> bool:
+    """'a two-vehicle collision', 'RTC, 2 veh.', 'a collision involving two cars': the vehicles a crash is
+    counted by are all of its vehicles, the one the scene is told from among them."""
+    after = units[head + 1] if head + 1 < len(units) else None
+    if after is not None and after.word in CRASH_NAMES and not units[head].tokens[-1].plural:
+        return True  # "two-vehicle collision", "a three-car pile-up"
+    before = [u for u in units[max(0, head - 4):head] if u.category not in ("numbers", "number")]
+    return bool(before) and (before[-1].word in ("involving", "involved") or before[-1].category == "comma" and
+                             len(before) >= 2 and before[-2].word in CRASH_NAMES)
+
+
 def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None) -> bool:
-    if _ego_placed_among(units, head):
+    if _ego_placed_among(units, head) or _counts_the_crash(units, head):
         return True
     window = [u for u in units[head + 1: head + 5] if u.category != "comma"]
     if (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting",
@@ -4062,11 +4084,13 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
         return None
     listed = any(t.word in HEADING_WORDS for t in first) or any(t.word == "," for t in first) or \
         said.sentence == 0
+    coded = said.sentence > 0 and first and first[0].word == "case"  # "SC-07 Emergency vehicle approach from the
+    # rear.": a line opened by a document's identifier is the case's title, whatever places it says
     named = [e for e in r.entities if e.headline and not e.label and not e.is_ego and e.count == 1 and
              e.said_at < heading_end and
              e.parent is None and e.stage == entity.stage and (
                  e.implied and entity.type not in V.VULNERABLE_TYPES  # "Cut-in from left. Sedan in left lane ..."
-                 or listed and not e.features & HEADLINE_PLACES - _places_named(e, said.sentence) and (
+                 or listed and (coded or not e.features & HEADLINE_PLACES - _places_named(e, said.sentence)) and (
                      e.type == entity.type or entity.type in categories().get(e.head, frozenset()) or
                      e.head.split()[-1] == "vehicle" and entity.type not in V.VULNERABLE_TYPES))]
     return named[0] if len(named) == 1 else None
