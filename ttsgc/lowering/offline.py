@@ -1616,7 +1616,10 @@ def _speed_limits(r: _Reader) -> list[str]:
                              and read_number(t.word) is None) or _road_number(tokens, i):
             continue  # the tens of "thirty five": read at the units; "I-95" names a road
         value, first = _number_before(tokens, i)
-        around = {x.word for x in tokens[max(0, first - 4): i + 5]}
+        alone = all(first <= x.index <= i for x in tokens if x.sentence == t.sentence)
+        around = {x.word for x in tokens[max(0, first - 4): i + 5] if x.sentence == t.sentence or alone and
+                  x.sentence == t.sentence - 1}  # not "70 mph limit. 00:05 Ambulance ...": a limit is said in
+        # its own sentence, or answered alone after it ("What was the limit there? Fifty-five.")
         after_unit = [x.word for x in tokens[i + 1: i + 5]]
         unit_then_road = _speed_of_a_road(tokens, first, i)
         speed_of_someone = first > 0 and tokens[first - 1].word in (
@@ -3132,6 +3135,12 @@ SAID_OF_SOME = DETERMINERS | OWNERS | COUNTED_BY | {"no"}  # before a plural: so
 CLOCK_WORDS = {"hrs", "hours", "hr", "h", "am", "pm", "oclock", "o'clock", "gmt", "bst", "utc"}
 
 
+def _clock_stamp(hours: Unit, minutes: Unit) -> bool:
+    """'14:02', '00:05': the two numbers of a clock time, read as the tokens they are."""
+    return hours.word.isdigit() and int(hours.word) < 24 and len(minutes.word) == 2 and minutes.word.isdigit() \
+        and minutes.tokens[0].index == hours.tokens[-1].index + 1
+
+
 def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, int, set[str], list[Unit]]:
     """The count, determiner words and premodifiers in front of a noun: 'the two dangerous oncoming cars'.
     Modifiers stand between the determiner and the noun; the determiner ends the phrase on the left."""
@@ -3142,6 +3151,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
     in_determiner = False
     while k >= lo:
         u = units[k]
+        if k > lo and _clock_stamp(units[k - 1], u):
+            break  # "00:05 Ambulance closes up behind": a log's time, no count
         if u.category == "numbers":
             count = int(u.meaning) if count is None else count
             if u.word in VAGUE_COUNTS:
