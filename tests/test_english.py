@@ -6979,3 +6979,22 @@ def test_a_tonner_is_a_lorry_and_the_one_the_speaker_turns_in_is_the_ego(prompt,
 ])
 def test_a_coded_title_a_crash_counted_by_its_vehicles_and_sitting_at_a_speed(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A truck passed me. EMS + PD dispatched 14:03.", [("car", "go_straight", "ego"), ("truck", "go_straight",
+                                                                                        "back_left")]),
+    ("A truck passed me. Medic 4, Engine 2 en route.", [("car", "go_straight", "ego"),
+                                                        ("truck", "go_straight", "back_left")]),
+    ("I'm at a four-way stop going straight. A silver SUV from my right nearly T-boned me. The cop who showed up "
+     "later said it was 50/50.", [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]),
+    ("A police car arrived and stopped in front of me.", [("car", "go_straight", "ego"), ("police", "stop", "front")]),
+    ("A semi passed me. Truckers around here seem to think they own the road.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "back_left")]),
+    ("On Friday the bus I was on was waiting at the red light.", [("bus", "stop", "ego")]),
+    ("A car cut in, that's why mate.", [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("A car cut in and nearly hit my mate.", [("car", "change_lane_to_right", "front_left"),
+                                              ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_help_called_out_kinds_in_general_the_bus_the_speaker_was_on_and_a_word_of_address(prompt, expected):
+    assert agents(prompt) == expected

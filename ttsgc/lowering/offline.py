@@ -2640,9 +2640,10 @@ def _counterfactual(tokens: list[Token], t: Token) -> bool:
 
 
 HABITUAL = frozenset({"often", "usually", "always", "sometimes", "regularly", "normally", "generally", "typically",
-                      "constantly", "frequently", "routinely", "never", "rarely", "seldom"})
+                      "constantly", "frequently", "routinely", "never", "rarely", "seldom", "nowadays"})
 HABITUAL_PHRASES = (("all", "the", "time"), ("every", "day"), ("every", "morning"), ("every", "evening"),
-                    ("every", "time"), ("most", "days"), ("tend", "to"))
+                    ("every", "time"), ("most", "days"), ("tend", "to"), ("around", "here"), ("round", "here"),
+                    ("seem", "to"), ("these", "days"), ("in", "general"))  # "truckers around here seem to think"
 def _bare_plural(tokens: list[Token], u: Unit) -> bool:
     """A plural noun with no determiner, owner or count before it ('buses', 'kids'): a kind, not some of it."""
     t = u.tokens[0]
@@ -2804,8 +2805,12 @@ def _opening_vocative(before: list[Token], after: list[Token], u: Unit) -> bool:
     if len(u.tokens) != 1 or u.tokens[0].word not in VOCATIVES:
         return False
     opening = all(t.word in GREETINGS for t in before) and after[:1] and after[0].word == ","
-    closing = before[-1:] and before[-1].word == "," and not after
+    closing = before[-1:] and before[-1].word in {","} | GREETINGS | SPOKEN_TAGS and not after
     return bool(opening or closing)
+
+
+SPOKEN_TAGS = {"why", "honest", "innit", "yeah", "though", "eh", "ta", "seriously", "mind", "swear", "promise"}
+# "that's why mate", "cheers mate", "honest mate": a bare word of address ending what is said
 
 
 DAMAGED = {"totaled", "totalled", "damaged", "dented", "wrecked", "smashed", "scratched", "crushed", "destroyed",
@@ -3323,6 +3328,23 @@ def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
     crash = next((t.sentence for t in r.tokens if t.word in IMPACTS and t.index < e.said_at and not any(
         w.word in UNREAL_IMPACT for w in r.tokens[max(0, t.index - 3):t.index] if w.sentence == t.sentence)), None)
     return crash is not None and r.tokens[e.said_at].sentence > crash
+
+
+CALLED_OUT = {"dispatched", "requested", "enroute", "attended", "responded", "summoned", "notified", "called",
+              "arrived", "later", "afterwards", "afterward", ("en", "route"), ("showed", "up"), ("turned", "up"),
+              ("on", "scene"), ("came", "out"), ("on", "the", "way")}
+
+
+def _called_out(r: _Reader, e: Entity) -> bool:
+    """'EMS + PD dispatched 14:03', 'Trooper dispatched', 'Medic 4, Engine 2 en route', 'the cop who showed up later
+    said': an emergency service placed nowhere and only called to the scene, or come after it, is no agent of it."""
+    if e.type not in RESPONDERS or e.is_ego or e.label or e.said_at < 0 or \
+            e.features or any(a[4] not in ("move",) for a in e.actions):
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 10] if t.sentence == sentence]
+    said = set(after) | set(zip(after, after[1:])) | set(zip(after, after[1:], after[2:]))
+    return bool(said & CALLED_OUT)
 
 
 def _said_parked(units: list[Unit], first: int, head: int) -> bool:
@@ -5841,7 +5863,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if np.entity in r.entities:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
                 r.entities.remove(np.entity)
             continue
-        if np.introduced and _the_speakers_seat(r, units, np):
+        if np.introduced and (_the_speakers_seat(r, units, np) or _the_one_the_speaker_was_on(units, np)):
             ego = _ego_entity(r, np.entity.stage)
             ego.type = np.entity.type if np.entity.type != "car" else ego.type
             ego.aliases.add(np.entity.head)  # "... The lorry turns left": the ego, named again
@@ -6075,6 +6097,21 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
             not any(x.category == "agents" and x.meaning != "none" for x in opening) or \
             any(t.word in SPEAKERS - {"you", "your"} for t in r.tokens)
     return any(u.tokens[0].word in SPEAKERS for u in egos)
+
+
+ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", "sat", "driving"}
+
+
+def _the_one_the_speaker_was_on(units: list[Unit], np: NounPhrase) -> bool:
+    """'the bus I was on was waiting at the red light', 'the taxi we were in': a vehicle the speaker says they rode
+    in, in a relative clause right after it, is the ego's own."""
+    e = np.entity
+    if e is None or e.is_ego or e.type not in V.EGO_TYPES or np.plural or e.count != 1 or \
+            units[np.first].word not in ("the", "this", "that"):
+        return False
+    after = [u.tokens[0].word for u in units[np.index + 1:np.index + 4]]
+    return len(after) == 3 and after[0] in ("i", "we") and after[1] in ("was", "were", "am", "are") and \
+        after[2] in ABOARD
 
 
 def _placed_after(units: list[Unit], i: int) -> bool:
@@ -7484,7 +7521,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 not e.is_ego and all(a[4] in ("stop", "move") for a in e.actions) and not e.label:
             e.count = 0  # "residential street, parked cars, dusk": the street's scenery, said with no count
             r.notes.append(f"left out: '{e.head}' parked, with no count, are the street's scenery")
-        if e.count > 0 and _came_after_the_crash(r, e):
+        if e.count > 0 and (_came_after_the_crash(r, e) or _called_out(r, e)):
             e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
             r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
         if e.type == "pedestrian" and e.count > 0 and not e.actions and not e.features and not e.label and \
