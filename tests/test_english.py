@@ -6998,3 +6998,22 @@ def test_a_coded_title_a_crash_counted_by_its_vehicles_and_sitting_at_a_speed(pr
 ])
 def test_help_called_out_kinds_in_general_the_bus_the_speaker_was_on_and_a_word_of_address(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("REQ-AEB-112: When the subject vehicle approaches a signalised intersection at 50 km/h and a pedestrian steps "
+     "onto the crosswalk in front of it, the AEB function shall bring the subject vehicle to a standstill.",
+     [[("ego", "stop", None), ("pedestrian", "cross_the_road", "near_the_crosswalk")]]),
+    ("I stopped in the left lane, and 3 cars piled up right ahead of me and a truck stopped in the right lane "
+     "beside me.", [[("ego", "stop", None), ("car", "stop", "front"), ("car", "stop", "front"),
+                     ("car", "stop", "front"), ("truck", "stop", "right")]]),
+    ("A pedestrian ran across the road in front of me. Ped not struck.",
+     [[("ego", "go_straight", None), ("pedestrian", "cross_the_road", "front")]]),
+    ("I stopped at the line. The kid in the Civic behind me slammed right into me. He should've left more room.",
+     [[("ego", "stop", None), ("car", "go_straight", "back")]]),
+    ("A car on the left left me no room.", [[("ego", "go_straight", None), ("car", "go_straight", "left")]]),
+    ("I was turning right. A cyclist on my right slammed into my door. The officer didn't ticket anybody.",
+     [[("ego", "turn_right", None), ("cyclist", "go_straight", "right")]]),
+])
+def test_a_requirements_trigger_a_pile_up_a_clipped_name_room_left_and_an_officers_paperwork(prompt, expected):
+    assert stages(prompt) == expected

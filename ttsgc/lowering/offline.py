@@ -943,6 +943,20 @@ LEFT_THERE = {"on", "in", "at", "by", "there", "outside", "across", "behind", "p
               "unattended", "abandoned"}
 
 
+ROOM_WORDS = {"room", "space", "gap", "distance", "time", "margin"}
+
+
+def _left_room(tokens: list[Token], i: int) -> bool:
+    """'should have left more room', 'left a bigger gap', 'left me no space': the room someone leaves, no side."""
+    after = [t.word for t in tokens[i + 1:i + 5] if t.sentence == tokens[i].sentence]
+    return any(w in ROOM_WORDS for w in after[:4]) and after[0] in ROOM_MEASURES and i > 0 and \
+        tokens[i - 1].word in LEFT_AS_A_VERB_AFTER | {"should", "would", "could", "must", "always", "hadn't"}
+
+
+ROOM_MEASURES = {"more", "enough", "a", "no", "plenty", "some", "me", "him", "her", "them", "us", "any", "little",
+                 "too", "loads", "lots", "a", "the", "room", "space"}
+
+
 def _left_as_a_verb(tokens: list[Token], i: int) -> str | None:
     """'never left the sidewalk', 'he left the scene', 'the van left the junction': the past of 'leave', with
     its object after it, not a side ('move'). 'A lorry had been left on the hard shoulder', 'I was left sitting
@@ -1070,6 +1084,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "positions" and [t.word for t in span] == ["left"] and _left_room(tokens, m.start):
+        return [Unit(m.start, m.end, "word", "left", span)]  # "he should have left more room": no side, no act
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
         return [Unit(m.start, m.end, "actions", _left_as_a_verb(tokens, m.start), span)]
         # "the jogger never left the sidewalk": leave; "a lorry had been left on the hard shoulder": it stands
@@ -3074,8 +3090,10 @@ def _reaching(units: list[Unit], k: int) -> bool:
     window = units[k:k + 5]
     ego = any(u.category == "agents" and u.meaning == "ego" for u in window[:3])
     verb = next((u for u in window if u.category == "actions"), None)
-    if not ego or verb is None:
-        return False
+    if not ego or verb is None or any(u.word == "shall" for u in units if u.tokens[0].sentence ==
+                                      units[k].tokens[0].sentence):
+        return False  # "When the subject vehicle approaches the junction ..., the AEB shall stop it": a
+        # requirement's trigger, what the scene is, not a stage before it
     if verb.meaning == "reach":
         return True
     rest = units[units.index(verb) + 1: units.index(verb) + 4]
@@ -3203,6 +3221,11 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         first = head  # "ego following truck", "the ego is following slow-moving bus": the predicate's, not a noun's
         modifiers = []
     return count, first, words, modifiers
+
+
+def _clipped(short: str, name: str) -> bool:
+    """'ped' for 'pedestrian', 'veh' for 'vehicle', 'moto' for 'motorcycle': a name cut short, as notes write it."""
+    return 3 <= len(short) < len(name) and " " not in short and name.split()[-1].startswith(short)
 
 
 def _it_was_a(r: _Reader, units: list[Unit], first: int, recent: list[Entity]) -> Entity | None:
@@ -3353,7 +3376,9 @@ def _said_parked(units: list[Unit], first: int, head: int) -> bool:
 
 
 OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "said", "had", "reckon", "reckons",
-                "think", "thinks", "thought", "told", "tell", "tells"}
+                "think", "thinks", "thought", "told", "tell", "tells", "ticket", "ticketed", "tickets", "cite",
+                "cited", "fine", "fined", "arrest", "arrested", "charge", "charged", "book", "booked", "interviewed",
+                "questioned", "wrote", "write", "blamed", "blame"}  # "the officer didn't ticket anybody"
 
 
 def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
@@ -3539,7 +3564,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     described = next((m.meaning for m in modifiers if m.category == "actions"), None)  # "revealing stopped car":
     # a state said before the noun sets it apart from one named before doing otherwise
     # "Ego car: stopped. Car: front, stationary", "Ambulance: behind. Van: stopped, ahead": a note's item, placed
-    if bare and any((e.head.split()[-1] == u.base.split()[-1] and e.type == kind or u.base in e.aliases) and not e.is_ego
+    if bare and any((e.head.split()[-1] == u.base.split()[-1] and e.type == kind or u.base in e.aliases or
+                     _clipped(u.base, e.head) and e.type == kind) and not e.is_ego
                     and e.count == 1 and (placed_by is None or placed_by in e.features)
                     and not (doing and e.actions and doing not in {a[4] for a in e.actions})
                     and not (described and described not in {a[4] for a in e.actions})
