@@ -7017,3 +7017,31 @@ def test_help_called_out_kinds_in_general_the_bus_the_speaker_was_on_and_a_word_
 ])
 def test_a_requirements_trigger_a_pile_up_a_clipped_name_room_left_and_an_officers_paperwork(prompt, expected):
     assert stages(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego drives toward a zebra crossing. Two pedestrians step onto the crossing from the right kerb.",
+     [[("ego", "go_straight", None), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+       ("pedestrian", "cross_the_road", "near_the_crosswalk")]]),
+    ("I was waiting at the give-way sign when a van came round from my right, and the taxi waiting behind me "
+     "sounded its horn at me.", [[("ego", "stop", None), ("car", "go_straight", "road_of_right_turn"),
+                                  ("car", "stop", "back")]]),
+    ("The ego turns left. One truck comes from the opposite side, and behind it two cars.",
+     [[("ego", "turn_left", None), ("truck", "go_straight", "road_of_straight"),
+       ("car", "go_straight", "road_of_straight"), ("car", "go_straight", "road_of_straight")]]),
+    ("I was waiting at the give-way sign when a white van came round from my right, as though I ought to have "
+     "pulled out.", [[("ego", "stop", None), ("car", "go_straight", "road_of_right_turn")]]),
+    ("hey Siri note comma at the four way stop I was stopped comma a cyclist came through from the road on my right "
+     "going straight full stop tell Karen about it later",
+     [[("ego", "stop", None), ("cyclist", "go_straight", "road_of_right_turn")]]),
+])
+def test_a_crossing_from_a_kerb_two_bodies_of_car_behind_it_after_its_clause_ought_to_have_and_dictation(
+        prompt, expected):
+    assert stages(prompt) == expected
+
+
+def test_a_dictated_notes_spoken_marks_are_marks_and_its_wake_words_no_part_of_it():
+    from ttsgc.lowering.narration import read_narration
+    assert read_narration("hey Siri note a truck cut me off comma it was on my right full stop three lanes").text == \
+        "a truck cut me off, it was on my right. three lanes"
+    assert read_narration("The comma was missing. A car came.").text == "The comma was missing. A car came."

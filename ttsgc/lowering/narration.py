@@ -110,10 +110,34 @@ class Narration:
     notes: list[str] = field(default_factory=list)
 
 
+SPOKEN_MARKS = (("full stop", "."), ("period", "."), ("comma", ","), ("colon", ":"), ("semicolon", ";"),
+                ("question mark", "?"), ("exclamation mark", "!"), ("exclamation point", "!"),
+                ("new paragraph", "."), ("new line", "."))
+WAKE_WORDS = re.compile(r"^\s*(?:(?:hey|ok|okay)\s+(?:siri|google|alexa|car|assistant)|siri|alexa)\b[\s,]*"
+                        r"(?:(?:take\s+a\s+)?note(?:\s+(?:that|this))?\b[\s,:]*)?|^\s*(?:take\s+a\s+)?note\b[\s,:]*"
+                        r"(?=.*\b(?:comma|full stop)\b)", re.I)
+
+
+def _dictated(text: str, notes: list[str]) -> str:
+    """'hey Siri note a truck cut me off comma it was in the lane on my right full stop': speech to text says its
+    punctuation in words; two or more such words are marks, and the wake words and 'note' before them are no
+    part of the scene."""
+    spoken = re.findall(r"\b(?:full stop|comma|period|colon|question mark|new line)\b", text, re.I)
+    if len(spoken) < 2:
+        return text
+    text = WAKE_WORDS.sub("", text)
+    for words, mark in SPOKEN_MARKS:
+        text = re.sub(rf"\s*\b{words}\b", mark, text, flags=re.I)
+    text = re.sub(r"^[\s.,:;]+", "", text)
+    notes.append("read the spoken punctuation of a dictated note as marks")
+    return text
+
+
 def read_narration(prompt: str) -> Narration:
     """The account a prompt gives, out of its document, with its ego's other names spelled as the ego."""
     notes: list[str] = []
-    text = _gherkin(prompt, notes)
+    text = _dictated(prompt, notes)
+    text = _gherkin(text, notes)
     text = _bug_report(text, notes)
     text = _chatbot_request(text, notes)
     text = _without_letter_frame(text, notes)

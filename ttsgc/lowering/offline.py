@@ -2652,6 +2652,8 @@ def _counterfactual(tokens: list[Token], t: Token) -> bool:
             return False
         if x.word == "have" and j > 0 and tokens[j - 1].word in COUNTERFACTUAL_MODALS and not tokens[j - 1].question:
             return True
+        if x.word == "have" and j > 1 and [tokens[j - 2].word, tokens[j - 1].word] == ["ought", "to"]:
+            return True  # "as though I ought to have pulled out"
     return False
 
 
@@ -3354,8 +3356,8 @@ def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
 
 
 CALLED_OUT = {"dispatched", "requested", "enroute", "attended", "responded", "summoned", "notified", "called",
-              "arrived", "later", "afterwards", "afterward", ("en", "route"), ("showed", "up"), ("turned", "up"),
-              ("on", "scene"), ("came", "out"), ("on", "the", "way")}
+              ("en", "route"), ("showed", "up"), ("turned", "up"), ("on", "scene"), ("came", "out"),
+              ("on", "the", "way")}  # (not "came later": with no collision told, a later arrival is in the scene)
 
 
 def _called_out(r: _Reader, e: Entity) -> bool:
@@ -4045,6 +4047,20 @@ def _minds_a_thing(units: list[Unit], head: int) -> bool:
         not any(m.category == "positions" for m in units[k + 1:])  # ("people watch from the pavement": there)
 
 
+CAR_BODIES = {"taxi": "taxi", "cab": "taxi", "minicab": "taxi", "van": "van", "minivan": "minivan",
+              "suv": "suv", "pickup": "pickup", "ute": "pickup", "hatchback": "hatchback", "hatch": "hatchback",
+              "sedan": "sedan", "saloon": "sedan", "estate": "estate", "wagon": "estate", "coupe": "coupe",
+              "convertible": "convertible", "jeep": "jeep", "limo": "limo", "limousine": "limo", "camper": "camper",
+              "campervan": "camper", "motorhome": "camper"}
+
+
+def _other_body(head: str, named: str) -> bool:
+    """'a white van came round ... the taxi waiting behind me': two bodies of car, each said by its own name, are
+    two cars, not one named again."""
+    said, before = CAR_BODIES.get(head.split()[-1] if head else ""), CAR_BODIES.get(named.split()[-1] if named else "")
+    return said is not None and before is not None and said != before
+
+
 def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, both: bool,
               recent: list[Entity], head: str = "") -> list[Entity]:
     """The entities a definite noun phrase names: a counted group's next member, the other one, the last one."""
@@ -4064,7 +4080,7 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
                  len(e.head.split()) > 1 and e.head.split()[0] == head]
         same = named or same  # "a delivery van ... a car behind ... the van": the van, not the car named last
         before = [e for e in pool if e.parent is None and e.count == 1 and e not in r.clause_mentions]
-        if not same and not other and len(pool) == 1 and before == pool:
+        if not same and not other and len(pool) == 1 and before == pool and not _other_body(head, pool[0].head):
             same = pool  # "a lorry ... the HGV", "a jogger ... the runner": the one of its kind named before
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     if not pool and not any(e.type == kind for e in r.entities if not e.is_ego) and not both and not plural:
@@ -5110,6 +5126,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         reference = _reference_after(units, i, phrases)
         targets = owner if owner else []
+        if in_its_place and any(reference is t for t in targets):
+            reference = None  # "and behind it two cars": 'it' is said before them, the cars are not their own place
         if reference is None and in_its_place:  # "a biker behind it", "a cop car right on its tail"
             reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
         ego_as_it = ego_as_it or reference is not None and reference.is_ego and (
@@ -6682,7 +6700,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     for s in SIDES:
         if f"road_{s}" in f:
             if person and crossing and not junction:  # "crossing from the left" with no junction: from that kerb
-                return f"front_{s}", False
+                return ("near_the_crosswalk" if "crosswalk" in f else f"front_{s}"), False  # ("onto the zebra
+                # from the right kerb": at the crossing)
             return f"road_of_{s}_turn", False
     turner_from_a_side = (action or "").startswith("turn") and bool(f & {"from_left", "from_right"})
     if "destination" in f and not ("crosswalk" in f and crossing) and not turner_from_a_side:
