@@ -7045,3 +7045,19 @@ def test_a_dictated_notes_spoken_marks_are_marks_and_its_wake_words_no_part_of_i
     assert read_narration("hey Siri note a truck cut me off comma it was on my right full stop three lanes").text == \
         "a truck cut me off, it was on my right. three lanes"
     assert read_narration("The comma was missing. A car came.").text == "The comma was missing. A car came."
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The lights were green when Marguerite reached them, and she eased the Volvo left.", [("car", "go_straight",
+                                                                                            "ego")]),
+    ("I turned the car left at the crossroads.", [("car", "turn_left", "ego")]),
+    ("The ego turns left at a crossroads. Two cars come the other way, the second one behind the first.",
+     [("car", "go_straight", "road_of_straight"), ("car", "go_straight", "road_of_straight"),
+      ("car", "turn_left", "ego")]),
+    ("You're driving along a rural road. Ahead of you, a car is slowing to turn right into a farm track.",
+     [("car", "go_straight", "ego"), ("car", "turn_right", "front")]),
+    ("The ego, a bus, is waiting at the stop.", [("bus", "stop", "ego")]),
+])
+def test_the_car_steered_is_the_egos_a_member_placed_as_its_group_and_a_noun_with_its_own_verb_after_the_ego(
+        prompt, expected):
+    assert agents(prompt) == expected

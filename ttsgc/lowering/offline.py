@@ -6165,8 +6165,13 @@ def _placed_after(units: list[Unit], i: int) -> bool:
 
 
 def _does_after(units: list[Unit], i: int) -> bool:
-    """'ego, a van pulling out from the right': a noun with a verb of its own after it is another agent."""
-    return i + 1 < len(units) and units[i + 1].category == "actions"
+    """'ego, a van pulling out from the right', 'ahead of you, a car is slowing to turn': a noun with a verb of its
+    own after it (its auxiliaries read past) is another agent."""
+    k = i + 1
+    while k < len(units) and units[k].category == "word" and units[k].word in ("is", "was", "are", "were", "has",
+                                                                                "had", "been", "just", "then"):
+        k += 1
+    return k < len(units) and units[k].category == "actions"
 
 
 def _named_make(after: list[Unit], kind: str) -> bool:
@@ -7052,9 +7057,10 @@ FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operating", "operated", "on", "patrol",
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked", "drive", "steer", "pilot", "pull",
-                   "operate", "ride", "sit", "passenger"}
+                   "operate", "ride", "sit", "passenger", "ease", "nose", "swing", "guide", "edge", "inch", "turn"}
 OPERATED_FROM = {"in", "on", "of", "driving", "drove", "riding", "operating", "operated", "drive", "ride", "operate", "steer",
-                 "pilot", "pull"}  # the word right before the ego's own vehicle
+                 "pilot", "pull", "ease", "nose", "swing", "guide", "edge", "inch", "turn"}  # the word right before the ego's
+# own vehicle ("she eased the Volvo left": the car she drives)
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
 
 
@@ -7330,6 +7336,10 @@ def _members_keep_the_group_place(r: _Reader) -> None:
     a member taken before the group's own place was read gets that place too, unless said ahead or behind."""
     for e in r.entities:
         group = e.parent
+        if group is not None and not e.features and e.relative_to is None:
+            e.features |= group.features  # "two cars come the other way, the second one behind the first": taken
+            # from the group in the clause that places it, placed as the group is
+            continue
         if group is None or e.features & {"ahead", "behind", "level"}:
             continue
         if not group.features & {"side_left", "side_right"}:
