@@ -7061,3 +7061,15 @@ def test_a_dictated_notes_spoken_marks_are_marks_and_its_wake_words_no_part_of_i
 def test_the_car_steered_is_the_egos_a_member_placed_as_its_group_and_a_noun_with_its_own_verb_after_the_ego(
         prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two lanes each way, and a white hatchback in the lane to my left cuts straight in front of me.",
+     ("car", "change_lane_to_right", "left")),
+    ("This van pulls out of the left lane and cuts straight in front of me.",
+     ("car", "change_lane_to_right", "front_left")),
+    ("Doing 65 in the right lane and a car in the left lane dives in right in front of my bumper.",
+     ("car", "change_lane_to_right", "left")),
+])
+def test_in_front_of_the_ego_after_a_cut_in_is_where_it_ends_and_out_of_a_lane_is_where_it_came_from(prompt, expected):
+    assert expected in agents(prompt)

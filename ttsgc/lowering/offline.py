@@ -4217,8 +4217,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
     elif u.category == "positions":
         if u.meaning in ("side_left", "side_right") and not {t.word for t in u.tokens} & LANE_WORDS:
             e.features.add("bare_" + u.meaning[5:])
-        if u.meaning in ("side_left", "side_right") and u.tokens[0].word == "from":
-            e.features.add("from_lane")
+        before = [t.word for t in r.tokens[max(0, u.start - 3):u.start]]
+        if u.meaning in ("side_left", "side_right") and (u.tokens[0].word == "from" or before[-2:] == ["out", "of"]
+                                                         or before == ["out", "of", "the"]):
+            e.features.add("from_lane")  # "pulls out of the left lane": where it came from, as "from" says
         if u.meaning == "side_left" and {t.word for t in u.tokens} & {"far", "farside"} and \
                 "lane" not in {t.word for t in u.tokens}:
             e.features.add("far_side")  # the far lane of a road, or across a junction: decided in _position
@@ -6414,16 +6416,32 @@ def _swerves_in_front(units, i) -> bool:
         return False
     j = i - 1
     while j >= 0 and (units[j].category == "word" and units[j].word in SWERVE_ADVERBS or
-                      units[j].category == "behaviours" and len(units[j].tokens) == 1):
-        j -= 1  # "pulled sharply across in front of us": a manner adverb between the verb and its path
+                      units[j].category == "behaviours" and len(units[j].tokens) == 1 or
+                      [t.word for t in units[j].tokens] == ["straight"]):
+        j -= 1  # "pulled sharply across in front of us", "cuts straight in front of me": a manner adverb between
+        # the verb and its path
     verb = units[j] if j >= 0 else None
     if verb is None or verb.category != "actions" or not (
-            verb.meaning in ("cut_in", "lane_change") or verb.tokens[0].base in STEERING | {"swing", "dart", "cut"}):
-        return False
+            verb.meaning in ("cut_in", "lane_change") or verb.tokens[0].base in STEERING | {"swing", "dart", "cut"}
+            or verb.meaning in ("move", "stop", "block") and _from_a_side_lane(units, j)):
+        return False  # (any verb of one said in the lane beside: "from the left lane goes in front of us")
     if u.tokens[-1].word in ("me", "us", "you", "ego"):
         return True  # "in front of me"
     nxt = units[i + 1] if i + 1 < len(units) else None
-    return nxt is None or nxt.category == "agents" and nxt.meaning == "ego" or nxt.category == "comma"
+    return nxt is None or nxt.category == "agents" and nxt.meaning == "ego" or nxt.category == "comma" or \
+        nxt.word in ("my", "our")  # "dives in right in front of my bumper"
+
+
+def _from_a_side_lane(units, j) -> bool:
+    """Whether the clause before unit j names a lane beside the ego ('from the left lane', 'in the lane to my
+    left') as where the mover is."""
+    for u in reversed(units[:j]):
+        if u.category in ("comma", "sequence") or u.category == "word" and u.word in CLAUSE_WORDS - {"and"}:
+            return False
+        if u.category == "positions" and u.meaning in ("side_left", "side_right") and \
+                any(t.word in ("lane", "lanes") for t in u.tokens):
+            return True
+    return False
 
 
 def _turns_in_front(units, i) -> bool:
@@ -6742,8 +6760,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if side is None and "from_kerb" in f and action == "cut_in" and not f & {"ego_lane", "behind"}:
         side = "left" if _KEEPS_LEFT.get() else "right"
     moving_out = "moves_out" in f and "ahead" in f and side is None and "ego_lane" not in f
-    if action == "cut_in" and not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f
-                                                                 or f"from_{side}" in f):
+    if (action == "cut_in" or action == "lane_change" and "from_lane" in f and "into_ego_lane" in f) and \
+            not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f or
+                                                                    f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
     if side is None and "level" in f and not ahead and not behind:
