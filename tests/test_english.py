@@ -7073,3 +7073,18 @@ def test_the_car_steered_is_the_egos_a_member_placed_as_its_group_and_a_noun_wit
 ])
 def test_in_front_of_the_ego_after_a_cut_in_is_where_it_ends_and_out_of_a_lane_is_where_it_came_from(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm driving along, and a squad car comes out of the side road on my left and stops dead across the front of "
+     "me. Then two more pull up right behind me.",
+     [[("ego", "go_straight", None), ("police", "stop", "road_of_left_turn")],
+      [("police", "stop", "back"), ("police", "stop", "back")]]),
+    ("I'm waiting at the red, and a fire engine comes through from the road on my left, and then two more come "
+     "straight after it.",
+     [[("ego", "stop", None), ("firetruck", "go_straight", "road_of_left_turn")],
+      [("firetruck", "go_straight", "road_of_left_turn"), ("firetruck", "go_straight", "road_of_left_turn")]]),
+    ("Two more seconds and I'd have hit it.", [[("ego", "go_straight", None)]]),
+])
+def test_a_count_and_more_with_no_noun_are_more_of_the_kind_just_named(prompt, expected):
+    assert stages(prompt) == expected

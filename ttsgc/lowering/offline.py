@@ -4751,6 +4751,18 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(part, i, i, plural=True))
             continue
+        if value is not None and 1 <= value <= MAX_AGENTS_PER_MENTION and _more_said_alone(units, i) and \
+                not any(np.first <= i <= np.index for np in phrases):
+            kin = next((np.entity for np in phrases if np.index < i and np.entity is not None and
+                        not np.entity.is_ego), None) or next((e for e in reversed(recent) if not e.is_ego), None)
+            if kin is not None:  # "a squad car stops across the front of me. Then two more pull up behind me"
+                more = _one_more_like(r, kin, clause.stage, f"'{u.word} more' are more of the {kin.head}")
+                more.count = more.group_open = int(value)
+                more.named_of = kin  # where it is, unless said of them ("two more come straight after it")
+                r.mark(u)
+                r.mark(units[i + 1])
+                phrases.append(NounPhrase(more, i + 1, i, introduced=True, plural=value > 1))
+                continue
         one_more = u.word == "another" or u.word in ("second", "third", "fourth", "fifth") and i + 1 < len(units) and (
             i > 0 and units[i - 1].word in ("a", "an") and units[i + 1].category in ("positions", "actions") or
             (units[i - 1].word if i > 0 else clause.link) in ("while", "whilst", "and", "with", ",") and
@@ -5775,6 +5787,17 @@ def _one_more_of_a_placed_group(r: _Reader, units: list[Unit], i: int, phrases: 
     if ones >= group.count or any(u.word in ("other", "rest", "another", "second", "others") for u in rest):
         return None
     return group
+
+
+def _more_said_alone(units: list[Unit], i: int) -> bool:
+    """'two more pull up', 'then two more come straight after it', 'one more behind it': a count and 'more' with no
+    noun after them, doing or placed, name more of the kind just named."""
+    if i + 2 >= len(units) or units[i + 1].word != "more":
+        return False
+    nxt = units[i + 2]
+    return nxt.category in ("actions", "positions") or nxt.category == "word" and nxt.word in (
+        "come", "came", "comes", "pull", "pulled", "pulls", "follow", "followed", "follows", "are", "were", "arrive",
+        "arrived", "turn", "turned", "appear", "appeared", "join", "joined")
 
 
 def _one_more_like(r: _Reader, kin: Entity, stage: int, why: str, listed_after: Entity | None = None) -> Entity:
@@ -7376,8 +7399,8 @@ def _included_and_listed_items_share(r: _Reader) -> None:
         source = e.named_of or e.listed_after
         if source is None:
             continue
-        if e.named_of is not None and not e.features:
-            e.features |= source.features
+        if e.named_of is not None and not e.features & HEADLINE_PLACES:
+            e.features |= source.features  # (placed nowhere itself: "then two more come straight after it")
         if not e.actions:
             e.actions = list(source.actions)
             e.behavior = e.behavior or source.behavior
