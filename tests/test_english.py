@@ -7088,3 +7088,16 @@ def test_in_front_of_the_ego_after_a_cut_in_is_where_it_ends_and_out_of_a_lane_i
 ])
 def test_a_count_and_more_with_no_noun_are_more_of_the_kind_just_named(prompt, expected):
     assert stages(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car swings across in front of me, driving like a proper lunatic he was.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("A car came out of a side road on my left and nearly hit me. The cop said it was 50/50.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),
+    ("two kids on the zebra, foggy morning", [("car", "go_straight", "ego"),
+                                              ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+                                              ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+])
+def test_someone_named_by_a_role_who_does_nothing_and_is_nowhere_is_no_one_on_foot(prompt, expected):
+    assert agents(prompt) == expected

@@ -2827,6 +2827,11 @@ def _opening_vocative(before: list[Token], after: list[Token], u: Unit) -> bool:
     return bool(opening or closing)
 
 
+NAMED_BY_ROLE = (DRIVERS - {"kid", "person", "man", "woman", "lady", "someone", "somebody", "young man", "old man",
+                            "teenager", "teen", "lad"}) | {"officer", "cop", "policeman", "policewoman", "warden",
+                                                           "marshal", "copper", "trooper", "deputy", "constable"}
+# a driver, an officer, a mate: someone by role or a word for a driver, who does nothing and is nowhere in the
+# scene, is no one on foot in it ("that's why mate", "the officer didn't ticket anybody")
 SPOKEN_TAGS = {"why", "honest", "innit", "yeah", "though", "eh", "ta", "seriously", "mind", "swear", "promise"}
 # "that's why mate", "cheers mate", "honest mate": a bare word of address ending what is said
 
@@ -3380,7 +3385,8 @@ def _said_parked(units: list[Unit], first: int, head: int) -> bool:
 OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "said", "had", "reckon", "reckons",
                 "think", "thinks", "thought", "told", "tell", "tells", "ticket", "ticketed", "tickets", "cite",
                 "cited", "fine", "fined", "arrest", "arrested", "charge", "charged", "book", "booked", "interviewed",
-                "questioned", "wrote", "write", "blamed", "blame"}  # "the officer didn't ticket anybody"
+                "questioned", "wrote", "write", "blamed", "blame", "report", "statement", "statements", "agreed",
+                "agree", "agrees"}  # "the officer didn't ticket anybody", "the officer who took the report agreed"
 
 
 def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
@@ -7629,6 +7635,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 not e.features and not e.label and any(t.word in SPEAKERS for t in r.tokens):
             e.count = 0  # "we sat at the red light ... the kids were fascinated": the speaker's own, on board
             r.notes.append(f"left out: 'the {e.head}', doing nothing on the road, ride with the speaker")
+        if e.type in ("pedestrian", "police") and e.count > 0 and not e.actions and not e.features and \
+                not e.label and e.relative_to is None and e.parent is None and e.named_of is None and \
+                e.head in NAMED_BY_ROLE:
+            e.count = 0  # "driving like a proper lunatic he was", "the cop said it was 50/50": no one on foot
+            r.notes.append(f"left out: '{e.head}' does nothing and is nowhere in the scene")
         if e.type == "pedestrian" and "on_board" in e.features and e.count > 0:
             e.count = 0  # "the kids arguing in the back": passengers of the ego, nobody on the road
             r.notes.append(f"left out: '{e.head}' in the back of the ego's car (passengers, no agent)")
