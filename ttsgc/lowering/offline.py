@@ -7384,7 +7384,7 @@ def _members_keep_the_group_place(r: _Reader) -> None:
     a member taken before the group's own place was read gets that place too, unless said ahead or behind."""
     for e in r.entities:
         group = e.parent
-        if group is not None and not e.features and e.relative_to is None:
+        if group is not None and not e.features and e.relative_to is None and group.label != "#rest":
             e.features |= group.features  # "two cars come the other way, the second one behind the first": taken
             # from the group in the clause that places it, placed as the group is
             continue
