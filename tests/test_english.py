@@ -7101,3 +7101,14 @@ def test_a_count_and_more_with_no_noun_are_more_of_the_kind_just_named(prompt, e
 ])
 def test_someone_named_by_a_role_who_does_nothing_and_is_nowhere_is_no_one_on_foot(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Drove the fire engine to a car fire on the ring road. The car in front of me pulled over.",
+     [("car", "change_lane_to_right", "front"), ("firetruck", "go_straight", "ego")]),
+    ("First shout driving the fire engine: house fire on Elm Road. I went down a narrow street and a cyclist ahead of "
+     "me kept pedalling.", [("cyclist", "go_straight", "front"), ("firetruck", "go_straight", "ego")]),
+    ("A truck was driving the wrong way. I stopped.", [("car", "stop", "ego"), ("truck", "go_straight", "front")]),
+])
+def test_a_vehicle_driven_by_a_verb_with_no_subject_in_a_first_person_account_is_the_speakers(prompt, expected):
+    assert agents(prompt) == expected

@@ -5938,7 +5938,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if np.entity in r.entities:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
                 r.entities.remove(np.entity)
             continue
-        if np.introduced and (_the_speakers_seat(r, units, np) or _the_one_the_speaker_was_on(units, np)):
+        if np.introduced and (_the_speakers_seat(r, units, np) or _the_one_the_speaker_was_on(units, np) or
+                              _driven_with_no_subject(r, units, np)):
             ego = _ego_entity(r, np.entity.stage)
             ego.type = np.entity.type if np.entity.type != "car" else ego.type
             ego.aliases.add(np.entity.head)  # "... The lorry turns left": the ego, named again
@@ -6175,6 +6176,22 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
 
 
 ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", "sat", "driving"}
+
+
+def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
+    """'Drove the fire engine to a car fire on the ring road', 'First shout driving the fire engine: ...': in a
+    first-person account, a vehicle driven by a verb with no subject of its own is the speaker's."""
+    e = np.entity
+    if e is None or e.is_ego or e.type not in V.EGO_TYPES or np.plural or e.count != 1 or np.first < 1 or \
+            units[np.first].word not in ("the", "my", "our", "a", "an"):
+        return False
+    verb = units[np.first - 1]
+    if verb.category != "actions" or verb.tokens[0].base != "drive" or len(verb.tokens) != 1:
+        return False
+    sentence = verb.tokens[0].sentence
+    before = [u for u in units[:np.first - 1] if u.tokens[0].sentence == sentence]
+    return not any(u.category == "agents" for u in before) and any(t.word in ("i", "me", "my", "we", "us", "our")
+                                                                  for t in r.tokens)
 
 
 def _the_one_the_speaker_was_on(units: list[Unit], np: NounPhrase) -> bool:
