@@ -7112,3 +7112,17 @@ def test_someone_named_by_a_role_who_does_nothing_and_is_nowhere_is_no_one_on_fo
 ])
 def test_a_vehicle_driven_by_a_verb_with_no_subject_in_a_first_person_account_is_the_speakers(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Event: PCW | 2024-05-14 22:14:50 | Veh: Bus #77 | Light: dark. Driver comment: two lads stepped onto the "
+     "crossing.", [("bus", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+                   ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("Event: Following Distance < 1.0 s (x3) | 13:40-13:44 | Veh: Car 5 | Spd 45 -> 30 km/h. Lead object: bus.",
+     [("bus", "go_straight", "front"), ("car", "go_straight", "ego")]),
+    ("A northbound car turns left into Elm Street on the green while a southbound cyclist goes straight through.",
+     [("car", "turn_left", "ego"), ("cyclist", "go_straight", "road_of_straight")]),
+])
+def test_an_event_records_fields_and_a_scene_told_by_compass_headings(prompt, expected):
+    assert agents(prompt) == expected
+    assert not [w for w in road(prompt).required_objects if w.startswith("speed_")]  # a speed of its own, no limit

@@ -133,10 +133,32 @@ def _dictated(text: str, notes: list[str]) -> str:
     return text
 
 
+RECORD_VEHICLE_KEY = re.compile(r"(?<![\w-])(?:veh|vehicle|unit|asset|subject)\s*:\s*(?=[^\s|])", re.I)
+
+
+def _event_record(text: str, notes: list[str]) -> str:
+    """'Event: Harsh Braking | 2024-05-14 14:32:07 | Veh: Bus #77 | Spd 62 -> 19 km/h (x3)': a fleet system's
+    record dates itself and counts its alerts (no agents), and its vehicle field names the vehicle the record is
+    about, the ego."""
+    text = re.sub(r"\b(\d{1,2}:\d{2}):\d{2}(?:\.\d+)?\b", r"\1", text)  # seconds of a time stamp
+    text = re.sub(r"\b(\d{1,2}:\d{2})\s*[-\u2013]\s*\d{1,2}:\d{2}\b", r"\1", text)  # a span of time
+    text = re.sub(r"\b(?:\d{4}-\d{2}-\d{2}|\d{1,2}/\d{1,2}/\d{2,4})\b", " ", text)  # a date
+    text = re.sub(r"\(\s*x\s?\d+\s*\)|\bx\d+\b", " ", text)  # "(x3)": an alert's repeats
+    text = re.sub(r"\s*(?:->|\u2192|=>)\s*", " to ", text)
+    if text.count("|") >= 2 and RECORD_VEHICLE_KEY.search(text):
+        text = RECORD_VEHICLE_KEY.sub("Ego: ", text, count=1)
+        text = re.sub(r"\bEgo: (?:unit|veh|vehicle|no\.?|#)\s*#?\d+\s*(?:\(([^()]*)\))?",
+                      lambda m: f"Ego: {m.group(1) or ''}", text, count=1)  # "Unit 212 (Ford Transit)": the van
+        text = re.sub(r"\bspd\.?\s*:?\s*(\d+)(?:\s*to\s*\d+)?", r"doing \1", text, flags=re.I)  # its own speed
+        text = re.sub(r"\s*\|\s*", ". ", text)  # each field said apart
+        notes.append("read the record's vehicle field as the ego")
+    return text
+
+
 def read_narration(prompt: str) -> Narration:
     """The account a prompt gives, out of its document, with its ego's other names spelled as the ego."""
     notes: list[str] = []
-    text = _dictated(prompt, notes)
+    text = _event_record(_dictated(prompt, notes), notes)
     text = _gherkin(text, notes)
     text = _bug_report(text, notes)
     text = _chatbot_request(text, notes)

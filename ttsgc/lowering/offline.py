@@ -4505,8 +4505,8 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
             e.features.add(f"side_{side}")  # "parked against the east curb", "runs east to west"
             if at in CORNER_POINTS and not e.features & {"ahead", "behind", "level"}:
                 e.features.add("ahead")  # a corner of the junction the ego approaches
-        elif person:
-            continue
+        elif e.type == "pedestrian":
+            continue  # (a cyclist heading the other way comes towards the ego, as a car does)
         elif came is not None and came in (left, right):
             e.features.add(f"road_{side}")  # "a van coming from the east"
         elif came == ahead:
@@ -7174,7 +7174,8 @@ RELATIONS_TO_THE_EGO = {"follows": "behind", "leads": "ahead"}  # a relation by 
 
 
 def _may_drive_the_scene(e: Entity) -> bool:
-    return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and not e.features and \
+    return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and \
+        not {f for f in e.features if not f.startswith("compass_")} and \
         (e.relative_to is None or e.relative_how in RELATIONS_TO_THE_EGO) and e.parent is None and e.named_of is None
 
 
@@ -7203,7 +7204,8 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
         # pulled away": met by someone, who is the ego
     named = next((u for u in r.units if u.category == "agents"), None)
     if not people_first and (named is None or next(u for u in r.units if u.tokens[0].sentence ==
-                                                    named.tokens[0].sentence and u.category != "word") is not named):
+                                                    named.tokens[0].sentence and u.category != "word" and
+                                                    not u.meaning.startswith("compass_")) is not named):
         return None  # "the queue reaches the retail park, and a lorry is edging along": it opens on no vehicle
     opening = [u for u in r.units if u.start == 0 or r.tokens[u.start - 1].sentence != u.tokens[0].sentence]
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
