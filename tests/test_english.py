@@ -7126,3 +7126,18 @@ def test_a_vehicle_driven_by_a_verb_with_no_subject_in_a_first_person_account_is
 def test_an_event_records_fields_and_a_scene_told_by_compass_headings(prompt, expected):
     assert agents(prompt) == expected
     assert not [w for w in road(prompt).required_objects if w.startswith("speed_")]  # a speed of its own, no limit
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus goes straight through the junction, and a car sits waiting at the red to the bus's left.",
+     [("bus", "go_straight", "ego"), ("car", "stop", "road_of_left_turn")]),
+    ("A southbound car turns left onto Route 30 while a police car approaches from the car's right.",
+     [("car", "turn_left", "ego"), ("police", "go_straight", "road_of_right_turn")]),
+    ("The subject is a bus travelling straight through on its green. A fire engine is speeding up behind it.",
+     [("bus", "go_straight", "ego"), ("firetruck", "go_straight", "back")]),
+    ("The bus priority signal is green. A bus goes straight.", [("bus", "go_straight", "ego")]),
+    ("The bus signals right and pulls out.", [("bus", "change_lane_to_right", "front_left"),
+                                              ("car", "go_straight", "ego")]),
+])
+def test_a_brief_about_one_vehicle_places_the_others_by_it_and_a_nouns_modifier_names_no_one(prompt, expected):
+    assert agents(prompt) == expected

@@ -1142,6 +1142,8 @@ def tokenize(text: str) -> list[Token]:
     # "at 25% of the vehicle width": an offset, no count of vehicles
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
     text = re.sub(r"\b(v\d|vehicle \d|unit \d) \(([^()]*)\)", r"\1 , \2 ,", text)  # "vehicle 1 (the AV)": apposition
+    text = re.sub(r"\bthe subject (is|was|will be) (a|an) ", r"the ego \1 \2 ", text)  # "the subject is a bus": the
+    # vehicle a brief is about
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag

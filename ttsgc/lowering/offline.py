@@ -4518,6 +4518,11 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
             # it comes from the ego's right
 
 
+PLACED_HOW = {"parked", "in_road", "ego_lane", "in_a_side_lane", "on_board", "oncoming", "bare_left", "bare_right",
+              "in_junction", "first_in_line", "ego_behind", "followed", "screening", "into_ego_lane", "from_lane",
+              "from_kerb", "moves_out", "target_lane", "undertaking", "off_road", "blocks", "cuts_off"}
+# features that place a vehicle by the ego or say it is met by one ('parked', 'in the ego's lane'): whoever has
+# one is not the one the scene is told from
 PLACE_FEATURES = HEADLINE_PLACES | {"front_left", "front_right", "back_left", "back_right", "cross_road", "crosswalk",
                                     "toward", "across_path", "overtaking", "far_side", "junction_approach"}
 
@@ -5125,9 +5130,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                           not np.entity.is_ego), None) if u.category == "positions" and u.meaning in (
             "side_left", "side_right", "ahead", "behind") and i > 0 and units[i - 1].tokens[-1].possessive else None
         if possessor is not None and subject and possessor.entity not in subject:
+            came = possessor.first > 0 and units[possessor.first - 1].word == "from" and \
+                u.meaning in ("side_left", "side_right")  # "approaches from the car's right": from that side
             for e in subject:  # "children walk on the car's left": the car is where they are placed from
                 if e.relative_to is None and not e.is_ego:
-                    e.relative_to, e.relative_how = possessor.entity, u.meaning
+                    e.relative_to = possessor.entity
+                    e.relative_how = "from_" + u.meaning[5:] if came else u.meaning
             r.mark(u)
             continue
         owner = _let_in_place(units, i, phrases, recent) or \
@@ -7175,7 +7183,7 @@ RELATIONS_TO_THE_EGO = {"follows": "behind", "leads": "ahead"}  # a relation by 
 
 def _may_drive_the_scene(e: Entity) -> bool:
     return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and \
-        not {f for f in e.features if not f.startswith("compass_")} and \
+        not e.features & (PLACE_FEATURES | PLACED_HOW) and \
         (e.relative_to is None or e.relative_how in RELATIONS_TO_THE_EGO) and e.parent is None and e.named_of is None
 
 
@@ -7271,6 +7279,8 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
         if e.relative_to is first and e.relative_how:  # "an ambulance comes up behind the coach": behind the ego
             e.relative_to = None
             e.features.add(RELATIONS_TO_THE_EGO.get(e.relative_how, e.relative_how))
+            if e.relative_how in ("side_left", "side_right"):
+                e.features.add("bare_" + e.relative_how[5:])  # "to the bus's left": a side, no lane said
     if driver_named and supplied is not None:  # the driver is the ego, the vehicle theirs
         supplied.type = first.type
         supplied.actions += [a for a in first.actions if not any(b[0] == a[0] for b in supplied.actions)]
