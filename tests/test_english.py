@@ -6993,8 +6993,6 @@ def test_a_coded_title_a_crash_counted_by_its_vehicles_and_sitting_at_a_speed(pr
      [("car", "go_straight", "ego"), ("truck", "go_straight", "back_left")]),
     ("On Friday the bus I was on was waiting at the red light.", [("bus", "stop", "ego")]),
     ("A car cut in, that's why mate.", [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
-    ("A car cut in and nearly hit my mate.", [("car", "change_lane_to_right", "front_left"),
-                                              ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
 ])
 def test_help_called_out_kinds_in_general_the_bus_the_speaker_was_on_and_a_word_of_address(prompt, expected):
     assert agents(prompt) == expected
