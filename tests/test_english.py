@@ -7139,3 +7139,14 @@ def test_an_event_records_fields_and_a_scene_told_by_compass_headings(prompt, ex
 ])
 def test_a_brief_about_one_vehicle_places_the_others_by_it_and_a_nouns_modifier_names_no_one(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Insured vehicle (IV), a 2018 Toyota Camry, was making a left turn at a signalized intersection. Claimant "
+     "vehicle (CV), a Ford Escape traveling straight through from the opposite direction, struck IV's passenger side.",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]),
+    ("IV was stopped at a red signal. CV struck IV from behind. Liability: IV 90% / CV 10%.",
+     [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+])
+def test_an_insurance_files_insured_vehicle_is_the_ego_and_a_share_of_liability_no_count(prompt, expected):
+    assert agents(prompt) == expected

@@ -1144,6 +1144,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(v\d|vehicle \d|unit \d) \(([^()]*)\)", r"\1 , \2 ,", text)  # "vehicle 1 (the AV)": apposition
     text = re.sub(r"\bthe subject (is|was|will be) (a|an) ", r"the ego \1 \2 ", text)  # "the subject is a bus": the
     # vehicle a brief is about
+    text = re.sub(r"\b((?:insured|claimant|subject|host|third party|other|target) vehicle) \([a-z]{2,3}\)", r"\1",
+                  text)  # "Insured vehicle (IV), a 2018 Toyota Camry,": its short name, said once
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag

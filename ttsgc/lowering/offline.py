@@ -3208,7 +3208,7 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             break
         elif units[head].meaning == "ego" and u.category == "actions":
             break  # "passed ego on right": the verb before the ego is no premodifier of it
-        elif u.category == "word" and u.word in DISTANCE_UNITS | {"foot", "inch", "inches"} | CLOCK_WORDS:
+        elif u.category == "word" and u.word in DISTANCE_UNITS | {"foot", "inch", "inches", "percent"} | CLOCK_WORDS:
             break  # "missed me by like a foot mom said": a measure ends the phrase before it (texts lack commas);
             # so does a time ("at 0815 hrs V1 ...")
         elif u.category == "behaviours" or (u.category == "actions" and k + 1 == head - len(modifiers)
