@@ -7150,3 +7150,13 @@ def test_a_brief_about_one_vehicle_places_the_others_by_it_and_a_nouns_modifier_
 ])
 def test_an_insurance_files_insured_vehicle_is_the_ego_and_a_share_of_liability_no_count(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was waiting at the bus stop on Harcourt Road. A red hatchback came down the hill and turned left at the "
+     "junction. The bus I was waiting for still hadn't turned up, typical.", [("car", "turn_left", "ego")]),
+    ("I was standing on the footway a short distance ahead of the vehicle concerned, when I saw a silver Ford "
+     "Focus travelling towards me.", [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front_left")]),
+])
+def test_a_witness_on_foot_is_an_agent_only_when_placed_by_the_vehicles_and_a_bus_not_come_is_none(prompt, expected):
+    assert agents(prompt) == expected

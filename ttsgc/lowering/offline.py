@@ -2842,6 +2842,8 @@ DEGREE = {"badly", "completely", "totally", "slightly", "a", "now", "basically",
 OWNING = {"own", "owns", "buy", "buys", "sell", "sells", "hate", "hates", "love", "loves", "rent", "rents", "insure",
           "insures", "ban", "bans", "banning", "allow", "allows"}
 NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear", "appeared", "appears"}
+AWAITED_BY = {"i", "we", "you", "was", "were", "am", "are", "waiting", "for", "still", "yet", "that",
+              "which", "even", "they"}  # "the bus (I was waiting for) (still) hadn't come": who waits for it
 # "never comes", "never arrived": one that is not there ("never came to a stop" is there, and did not stop)
 
 
@@ -2914,6 +2916,9 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
             said_other[0].word in GENERIC_AFTER | {"to", "towards", "toward", "around"}:
         return True  # "clearance to other road users", "care for other vehicles": anyone else, in general
     words = [x.word for x in after[:5]]
+    lead = next((k for k, w in enumerate(x.word for x in after[:9]) if w not in AWAITED_BY), 0)
+    if lead and [x.word for x in after[lead:lead + 1]] in (["has"], ["had"], ["did"], ["have"]):
+        words = [x.word for x in after[lead:lead + 5]]  # "the bus I was waiting for still hadn't turned up"
     if u.meaning not in ("ego", "none") and not before and len(words) >= 2 and words[0] in COPULAS and \
             (words[1] in DAMAGED or words[1] in DEGREE and words[2:3] and words[2] in DAMAGED):
         return True  # "Car is totaled.": the state of the writer's car after it all, no one on the road
@@ -7350,8 +7355,13 @@ def _witness_on_foot(r: _Reader) -> None:
     first_sentence = [t.word for t in r.tokens if t.sentence == next(t.sentence for t in own)]
     side = "side_right" if "right" in first_sentence else "side_left"
     place = "ahead" if "ahead" in first_sentence else "behind" if "behind" in first_sentence else None
+    words = [t.word for t in r.tokens]
+    placed = place is not None or any(words[k + 1:k + 2] == ["me"] and w in ("towards", "toward", "past", "beside")
+                                      or words[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(words))
     ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
     ego.features = {"on_sidewalk", side} | ({place} if place else set())
+    if not placed:  # "I was waiting at the bus stop ... a red hatchback turned left": an onlooker, in no one's way
+        r.entities.remove(ego)
     subject.is_ego = True
     subject.features = {f for f in subject.features if f.startswith("compass_")}
     subject.relative_to = None
@@ -7360,7 +7370,8 @@ def _witness_on_foot(r: _Reader) -> None:
             e.relative_to = None  # "in front of the Ford": in front of the ego now
     r.entities.remove(subject)
     r.entities.insert(0, subject)
-    r.notes.append(f"inferred: the witness is on foot; the '{subject.head}' the statement is about is the ego")
+    r.notes.append(f"inferred: the witness is on foot{'' if placed else ', placed by no one (no agent)'}; the "
+                   f"'{subject.head}' the statement is about is the ego")
 
 
 def _screens_on_the_crossers_side(r: _Reader) -> None:
