@@ -7160,3 +7160,19 @@ def test_an_insurance_files_insured_vehicle_is_the_ego_and_a_share_of_liability_
 ])
 def test_a_witness_on_foot_is_an_agent_only_when_placed_by_the_vehicles_and_a_bus_not_come_is_none(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("There is pedestrian crossing without traffic light. Two pedestrians are crossing the road on it, ego stops "
+     "before the crossing.", [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+                              ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("A pedestrian crossing without looking steps out in front of me.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("The car in front of me stopped. I hit my brakes but slid right into the back of him.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("I wasn't moving and neither was the car behind me.", [("car", "stop", "back"), ("car", "stop", "ego")]),
+    ("A fire engine came down the right lane past me.", [("car", "go_straight", "ego"),
+                                                         ("firetruck", "go_straight", "back_right")]),
+])
+def test_a_crossing_without_lights_a_skid_into_the_back_neither_was_and_past_me_down_a_lane(prompt, expected):
+    assert agents(prompt) == expected

@@ -1071,6 +1071,13 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\blet's\b", "let us", text)
     text = _without_attribution(text)
     text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
+    text = re.sub(r"\b([a-z]+) (?:down|along|up|through) the ((?:left|right|middle|outside|inside|fast|slow|overtaking)"
+                  r"(?:-hand| hand)? lane) past (me|us|the ego|ego)\b", r"\1 past \3 in the \2",
+                  text)  # "came down the right lane past me": it passed me in that lane
+    text = re.sub(r"\b(was|were) not ([a-z]+ing)\b([^.;!?]*?)\b(?:and )?(?:neither|nor) (?:was|were) "
+                  r"((?:the|a|an|that|this|my|our) [a-z' ]+?)(?=\s*[.,;!?]|$)",
+                  r"\1 not \2\3 and \4 \1 not \2", text)  # "I wasn't moving and neither was the car behind
+    # me": the car behind was not moving either
     text = re.sub(r"'re\b", " are", text)
     text = re.sub(r"'ll\b", " will", text)
     text = re.sub(r"'ve\b", " have", text)

@@ -817,6 +817,9 @@ def _short_names(units: list[Unit]) -> list[Unit]:
 STILL_MOVING = {"going", "driving", "doing", "crawling", "travelling", "traveling", "moving", "trundling", "slow",
                 "dawdling", "plodding", "creeping", "rolling", "cruising"}
 EGO_WORDS = {"you", "i", "we", "player", "ego", "av", "sv"}
+SKIDS = {"slide", "slid", "skid", "skidded", "slip", "slipped", "plough", "plow", "smash", "slam", "crash", "roll"}
+UNCONTROLLED_BY = {"traffic", "light", "lights", "signal", "signals", "sign", "signs", "markings", "stripes",
+                   "controls", "any", "zebra", "lollipop", "island", "refuge", "belisha"}
 VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over", "into", "to", "toward", "towards",
                        "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
                        "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
@@ -1084,6 +1087,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "actions" and m.meaning == "cut_in" and span[-1].word == "into" and span[0].base in SKIDS and (
+            after[:2] in (["the", "back"], ["the", "rear"], ["the", "side"]) or after[:1] in (
+                ["him"], ["her"], ["me"], ["us"], ["it"], ["them"])):
+        return [Unit(m.start, m.end, "actions", "move", span)]  # "slid into the back of him": a skid into it,
+        # no move into a lane
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_room(tokens, m.start):
         return [Unit(m.start, m.end, "word", "left", span)]  # "he should have left more room": no side, no act
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
@@ -1265,7 +1273,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or counted or (len(span) == 1 and (
                 after_person or after_verb or _coordinated_participle(tokens, m)))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
-                                         and len(span) == 1):
+                                         and len(span) == 1) and not (
+                nxt in ("without", "with") and nxt2 in UNCONTROLLED_BY):  # "pedestrian crossing without traffic
+        # light": the crossing and what it lacks ("crossing without looking": a person crossing)
         # the verb: "a pedestrian crossing the road"; the noun stays: "no crossing", "the pedestrian crossing ahead is"
         out = []
         if len(span) > 1 and span[0].word in ("pedestrian", "pedestrians", "ped", "peds"):
