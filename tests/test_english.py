@@ -7176,3 +7176,14 @@ def test_a_witness_on_foot_is_an_agent_only_when_placed_by_the_vehicles_and_a_bu
 ])
 def test_a_crossing_without_lights_a_skid_into_the_back_neither_was_and_past_me_down_a_lane(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'd been stuck behind a cyclist in club colours for most of it.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+    ("I just got a ticket for not moving over. I was in the right lane and a trooper was stopped on the shoulder "
+     "ahead on the right.", [("car", "go_straight", "ego"), ("police", "stop", "front_right")]),
+    ("The car in front did not move.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+])
+def test_stuck_behind_a_slow_rider_and_not_moving_over_are_no_stop_of_the_ego(prompt, expected):
+    assert agents(prompt) == expected

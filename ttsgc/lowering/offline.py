@@ -817,6 +817,14 @@ def _short_names(units: list[Unit]) -> list[Unit]:
 STILL_MOVING = {"going", "driving", "doing", "crawling", "travelling", "traveling", "moving", "trundling", "slow",
                 "dawdling", "plodding", "creeping", "rolling", "cruising"}
 EGO_WORDS = {"you", "i", "we", "player", "ego", "av", "sv"}
+def _rides_slowly(tokens: list[Token], i: int) -> bool:
+    """'stuck behind a cyclist', 'stuck behind a tractor for miles': one that moves slowly holds the ego up; it is
+    not stopped."""
+    nouns = [t.base for t in tokens[i:i + 3] if t.word not in ("a", "an", "the", "this", "some", "slow")]
+    return bool(nouns) and nouns[0] in ("cyclist", "bike", "bicycle", "tractor", "learner", "horse", "rider",
+                                        "caravan", "milk float", "cyclists", "tractors")
+
+
 SKIDS = {"slide", "slid", "skid", "skidded", "slip", "slipped", "plough", "plow", "smash", "slam", "crash", "roll"}
 UNCONTROLLED_BY = {"traffic", "light", "lights", "signal", "signals", "sign", "signs", "markings", "stripes",
                    "controls", "any", "zebra", "lollipop", "island", "refuge", "belisha"}
@@ -1168,8 +1176,12 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             _sits_in_moving_traffic(tokens, m.end):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a motorbike sitting in the right lane just
         # behind you": where it keeps pace, not a stop
+    if m.category == "actions" and m.meaning == "stop" and [t.base for t in span][-1:] == ["move"] and \
+            span[0].word == "not" and nxt in ("over", "across", "aside"):
+        return [Unit(m.start, m.end, "word", "not", span)]  # "a ticket for not moving over": no lane change, no stop
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stuck"] and (
-            nxt in STILL_MOVING or nxt == "behind" and {t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING):
+            nxt in STILL_MOVING or nxt == "behind" and ({t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING
+                                                       or _rides_slowly(tokens, m.end + 1))):
         return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
     if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
             tokens[m.start - 1].word in ("a", "an", "the", "this", "that", "very", "really"):
