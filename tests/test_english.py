@@ -7187,3 +7187,12 @@ def test_a_crossing_without_lights_a_skid_into_the_back_neither_was_and_past_me_
 ])
 def test_stuck_behind_a_slow_rider_and_not_moving_over_are_no_stop_of_the_ego(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I sat behind the 42 bus on Kingsway for about a mile.", [("bus", "go_straight", "front"),
+                                                               ("car", "go_straight", "ego")]),
+    ("The 3 cars ahead stopped.", [("car", "go_straight", "ego")] + [("car", "stop", "front")] * 3),
+])
+def test_the_number_of_a_route_is_no_count_and_a_count_of_a_plural_is(prompt, expected):
+    assert agents(prompt) == expected

@@ -3222,8 +3222,11 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         elif u.category == "agents" and u.meaning not in ("ego", "none") and k + 1 == head - len(modifiers) and \
                 not words and count is None:
             modifiers.append(u)  # "a Chevrolet Tahoe", "a Ford F-150 pickup": the maker's name before the model
-        elif u.category == "number" and (words & {"a", "an"} or k > 0 and units[k - 1].word in NUMBERED_NAMES):
-            break  # "on SR-99 a bus stops", "Year 4 cycles in": a road's or a name's number, no count
+        elif u.category == "number" and (words & {"a", "an"} or k > 0 and units[k - 1].word in NUMBERED_NAMES or
+                                         k > 0 and units[k - 1].word == "the" and u.word.isdigit() and
+                                         not units[head].tokens[-1].plural):
+            break  # "on SR-99 a bus stops", "Year 4 cycles in", "the 42 bus": a road's, a name's or a route's
+            # number, no count
         elif u.category == "number":
             value = read_number(u.word) or 0
             count = int(min(value, TOO_LARGE)) if count is None else count
