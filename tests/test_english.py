@@ -7196,3 +7196,9 @@ def test_stuck_behind_a_slow_rider_and_not_moving_over_are_no_stop_of_the_ego(pr
 ])
 def test_the_number_of_a_route_is_no_count_and_a_count_of_a_plural_is(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_team_that_wants_to_test_a_junction_is_not_on_the_road_the_first_vehicle_is_the_ego():
+    assert agents("We want to test the unmarked crossroads at Hollow Lane: no signals, no stop or give-way signs. "
+                  "Model a car going straight across at dawn in fog, and a motorcyclist coming the other way "
+                  "turning right.") == [("car", "go_straight", "ego"), ("motorcycle", "turn_right", "road_of_straight")]

@@ -7253,9 +7253,14 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
 
 def _drives(after: list[Token]) -> bool:
     """Whether the verb after a speaker ('I had been following', 'we pulled out') is one of the road."""
-    verb = next((t for t in after if t.word not in AUXILIARIES | {"just", "then", "also", "still", "already"}), None)
-    entry = lexicon().phrases.get((verb.base,)) if verb is not None else None
-    return entry is not None and entry[0] == "actions"
+    for t in after:
+        if t.word in AUXILIARIES | {"just", "then", "also", "still", "already"}:
+            continue
+        entry = lexicon().phrases.get((t.base,))
+        if entry is not None and entry == ("actions", "try"):
+            continue  # "we want to test ...": the verb wanted says what is done
+        return entry is not None and entry[0] == "actions"
+    return False
 
 
 SEEN_FROM_A_SEAT = {"saw", "see", "noticed", "notice", "spotted", "spot", "heard", "looked", "glanced", "checked",
