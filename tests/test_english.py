@@ -7202,3 +7202,13 @@ def test_a_team_that_wants_to_test_a_junction_is_not_on_the_road_the_first_vehic
     assert agents("We want to test the unmarked crossroads at Hollow Lane: no signals, no stop or give-way signs. "
                   "Model a car going straight across at dawn in fog, and a motorcyclist coming the other way "
                   "turning right.") == [("car", "go_straight", "ego"), ("motorcycle", "turn_right", "road_of_straight")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The subject car approaches slowly. The head teacher's concern is drivers not slowing down enough.",
+     [("car", "go_straight", "ego")]),
+    ("Two drivers wait at the lights ahead of me.", [("car", "go_straight", "ego"), ("car", "stop", "front"),
+                                                     ("car", "stop", "front")]),
+])
+def test_drivers_said_bare_are_drivers_in_general_and_counted_ones_are_agents(prompt, expected):
+    assert agents(prompt) == expected

@@ -2699,6 +2699,8 @@ def _in_general(tokens: list[Token], u: Unit) -> bool:
     t = u.tokens[0]
     if u.meaning == "ego" or not _bare_plural(tokens, u):
         return False
+    if u.tokens[-1].word in ("drivers", "motorists"):
+        return True  # "the head teacher's concern is drivers not slowing down": drivers in general
     words = [x.word for x in _sentence(tokens, t.sentence)]
     return bool(HABITUAL & set(words)) or any(tuple(words[k:k + len(p)]) == p
                                               for p in HABITUAL_PHRASES for k in range(len(words)))
