@@ -143,9 +143,9 @@ def _event_record(text: str, notes: list[str]) -> str:
     text = re.sub(r"\b(\d{1,2}:\d{2}):\d{2}(?:\.\d+)?\b", r"\1", text)  # seconds of a time stamp
     text = re.sub(r"\b(\d{1,2}:\d{2})\s*[-\u2013]\s*\d{1,2}:\d{2}\b", r"\1", text)  # a span of time
     text = re.sub(r"\b(?:\d{4}-\d{2}-\d{2}|\d{1,2}/\d{1,2}/\d{2,4})\b", " ", text)  # a date
-    text = re.sub(r"\(\s*x\s?\d+\s*\)|\bx\d+\b", " ", text)  # "(x3)": an alert's repeats
-    text = re.sub(r"\s*(?:->|\u2192|=>)\s*", " to ", text)
+    text = re.sub(r"\(\s*x\s?\d+\s*\)", " ", text)  # "(x3)": an alert's repeats
     if text.count("|") >= 2 and RECORD_VEHICLE_KEY.search(text):
+        text = re.sub(r"\s*(?:->|\u2192|=>)\s*", " to ", text)  # "Spd 62 -> 19 km/h": from one speed to another
         text = RECORD_VEHICLE_KEY.sub("Ego: ", text, count=1)
         text = re.sub(r"\bEgo: (?:unit|veh|vehicle|no\.?|#)\s*#?\d+\s*(?:\(([^()]*)\))?",
                       lambda m: f"Ego: {m.group(1) or ''}", text, count=1)  # "Unit 212 (Ford Transit)": the van

@@ -822,7 +822,7 @@ def _rides_slowly(tokens: list[Token], i: int) -> bool:
     not stopped."""
     nouns = [t.base for t in tokens[i:i + 3] if t.word not in ("a", "an", "the", "this", "some", "slow")]
     return bool(nouns) and nouns[0] in ("cyclist", "bike", "bicycle", "tractor", "learner", "horse", "rider",
-                                        "caravan", "milk float", "cyclists", "tractors")
+                                        "caravan")
 
 
 SKIDS = {"slide", "slid", "skid", "skidded", "slip", "slipped", "plough", "plow", "smash", "slam", "crash", "roll"}
@@ -961,11 +961,11 @@ def _left_room(tokens: list[Token], i: int) -> bool:
     """'should have left more room', 'left a bigger gap', 'left me no space': the room someone leaves, no side."""
     after = [t.word for t in tokens[i + 1:i + 5] if t.sentence == tokens[i].sentence]
     return any(w in ROOM_WORDS for w in after[:4]) and after[0] in ROOM_MEASURES and i > 0 and \
-        tokens[i - 1].word in LEFT_AS_A_VERB_AFTER | {"should", "would", "could", "must", "always", "hadn't"}
+        tokens[i - 1].word in LEFT_AS_A_VERB_AFTER | {"should", "would", "could", "must", "always"}
 
 
 ROOM_MEASURES = {"more", "enough", "a", "no", "plenty", "some", "me", "him", "her", "them", "us", "any", "little",
-                 "too", "loads", "lots", "a", "the", "room", "space"}
+                 "too", "loads", "lots", "the", "room", "space"}
 
 
 def _left_as_a_verb(tokens: list[Token], i: int) -> str | None:
