@@ -7212,3 +7212,10 @@ def test_a_team_that_wants_to_test_a_junction_is_not_on_the_road_the_first_vehic
 ])
 def test_drivers_said_bare_are_drivers_in_general_and_counted_ones_are_agents(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("word", ["kiddies", "sprogs", "bairns"])
+def test_words_for_children_in_british_and_scots_speech_name_pedestrians(word):
+    assert agents(f"Two {word} walk across the zebra. You stop.") == [
+        ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")]
