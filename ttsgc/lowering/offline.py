@@ -817,6 +817,8 @@ def _short_names(units: list[Unit]) -> list[Unit]:
 STILL_MOVING = {"going", "driving", "doing", "crawling", "travelling", "traveling", "moving", "trundling", "slow",
                 "dawdling", "plodding", "creeping", "rolling", "cruising"}
 EGO_WORDS = {"you", "i", "we", "player", "ego", "av", "sv"}
+
+
 def _rides_slowly(tokens: list[Token], i: int) -> bool:
     """'stuck behind a cyclist', 'stuck behind a tractor for miles': one that moves slowly holds the ego up; it is
     not stopped."""
@@ -1654,7 +1656,7 @@ def _speed_limits(r: _Reader) -> list[str]:
                              and read_number(t.word) is None) or _road_number(tokens, i):
             continue  # the tens of "thirty five": read at the units; "I-95" names a road
         value, first = _number_before(tokens, i)
-        alone = all(first <= x.index <= i for x in tokens if x.sentence == t.sentence)
+        alone = all(first <= x.index <= i for x in _sentence(tokens, t.sentence))
         around = {x.word for x in tokens[max(0, first - 4): i + 5] if x.sentence == t.sentence or alone and
                   x.sentence == t.sentence - 1}  # not "70 mph limit. 00:05 Ambulance ...": a limit is said in
         # its own sentence, or answered alone after it ("What was the limit there? Fifty-five.")
@@ -3381,11 +3383,17 @@ UNREAL_IMPACT = {"not", "never", "avoid", "avoided", "without", "almost", "nearl
                  "no", "near", "avoiding", "before", "if", "may", "must", "shall", "should", "will", "can"}
 
 
+def _help_placed_nowhere(e: Entity) -> bool:
+    """An emergency service said to do nothing but come, and placed nowhere: help that may have come to the scene
+    rather than be in it."""
+    return e.type in RESPONDERS and not e.is_ego and not e.label and e.said_at >= 0 and not e.features and \
+        all(a[4] == "move" for a in e.actions)
+
+
 def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
     """'... and hit me. An ambulance came later', 'Paramedics checked us over': an emergency service first named in
     a sentence after the one that tells of the collision, and placed nowhere, came to help: no agent of the scene."""
-    if e.type not in RESPONDERS or e.is_ego or e.label or e.said_at < 0 or \
-            e.features or any(a[4] not in ("move",) for a in e.actions):
+    if not _help_placed_nowhere(e):
         return False
     crash = next((t.sentence for t in r.tokens if t.word in IMPACTS and t.index < e.said_at and not any(
         w.word in UNREAL_IMPACT for w in r.tokens[max(0, t.index - 3):t.index] if w.sentence == t.sentence)), None)
@@ -3400,8 +3408,7 @@ CALLED_OUT = {"dispatched", "requested", "enroute", "attended", "responded", "su
 def _called_out(r: _Reader, e: Entity) -> bool:
     """'EMS + PD dispatched 14:03', 'Trooper dispatched', 'Medic 4, Engine 2 en route', 'the cop who showed up later
     said': an emergency service placed nowhere and only called to the scene, or come after it, is no agent of it."""
-    if e.type not in RESPONDERS or e.is_ego or e.label or e.said_at < 0 or \
-            e.features or any(a[4] not in ("move",) for a in e.actions):
+    if not _help_placed_nowhere(e):
         return False
     sentence = r.tokens[e.said_at].sentence
     after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 10] if t.sentence == sentence]
@@ -6194,12 +6201,17 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
         (between[-1].tokens[-1].word in OPERATED_FROM or between[-1].base in OPERATED_FROM)
 
 
+def _one_vehicle(np: NounPhrase) -> bool:
+    """A single vehicle of a type the ego may be, newly named: what may turn out to be the ego's own."""
+    e = np.entity
+    return e is not None and not e.is_ego and e.type in V.EGO_TYPES and not np.plural and e.count == 1
+
+
 def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     """'I'm in the artic', 'coming through the village in the tipper', 'me leading in the DAF': in a first-person
     account, the vehicle the speaker is in ('in the', 'in my') is the ego's own, unless it is placed or acts."""
-    e = np.entity
-    if e is None or e.is_ego or e.type not in V.EGO_TYPES or np.plural or e.count != 1 or np.first < 2 or \
-            units[np.first - 1].word != "in" or units[np.first].word not in ("the", "my", "our"):
+    if not _one_vehicle(np) or np.first < 2 or units[np.first - 1].word != "in" or \
+            units[np.first].word not in ("the", "my", "our"):
         return False
     if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents"):
         return False  # "in the van ahead", "in the car that pulled out": another
@@ -6221,9 +6233,7 @@ ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", 
 def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     """'Drove the fire engine to a car fire on the ring road', 'First shout driving the fire engine: ...': in a
     first-person account, a vehicle driven by a verb with no subject of its own is the speaker's."""
-    e = np.entity
-    if e is None or e.is_ego or e.type not in V.EGO_TYPES or np.plural or e.count != 1 or np.first < 1 or \
-            units[np.first].word not in ("the", "my", "our", "a", "an"):
+    if not _one_vehicle(np) or np.first < 1 or units[np.first].word not in ("the", "my", "our", "a", "an"):
         return False
     verb = units[np.first - 1]
     if verb.category != "actions" or verb.tokens[0].base != "drive" or len(verb.tokens) != 1:
@@ -6237,9 +6247,7 @@ def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bo
 def _the_one_the_speaker_was_on(units: list[Unit], np: NounPhrase) -> bool:
     """'the bus I was on was waiting at the red light', 'the taxi we were in': a vehicle the speaker says they rode
     in, in a relative clause right after it, is the ego's own."""
-    e = np.entity
-    if e is None or e.is_ego or e.type not in V.EGO_TYPES or np.plural or e.count != 1 or \
-            units[np.first].word not in ("the", "this", "that"):
+    if not _one_vehicle(np) or units[np.first].word not in ("the", "this", "that"):
         return False
     after = [u.tokens[0].word for u in units[np.index + 1:np.index + 4]]
     return len(after) == 3 and after[0] in ("i", "we") and after[1] in ("was", "were", "am", "are") and \
@@ -7390,9 +7398,10 @@ def _witness_on_foot(r: _Reader) -> None:
     words = [t.word for t in r.tokens]
     placed = place is not None or any(words[k + 1:k + 2] == ["me"] and w in ("towards", "toward", "past", "beside")
                                       or words[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(words))
-    ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
-    ego.features = {"on_sidewalk", side} | ({place} if place else set())
-    if not placed:  # "I was waiting at the bus stop ... a red hatchback turned left": an onlooker, in no one's way
+    if placed:
+        ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
+        ego.features = {"on_sidewalk", side} | ({place} if place else set())
+    else:  # "I was waiting at the bus stop ... a red hatchback turned left": an onlooker, in no one's way
         r.entities.remove(ego)
     subject.is_ego = True
     subject.features = {f for f in subject.features if f.startswith("compass_")}
@@ -7696,9 +7705,12 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 not e.is_ego and all(a[4] in ("stop", "move") for a in e.actions) and not e.label:
             e.count = 0  # "residential street, parked cars, dusk": the street's scenery, said with no count
             r.notes.append(f"left out: '{e.head}' parked, with no count, are the street's scenery")
-        if e.count > 0 and (_came_after_the_crash(r, e) or _called_out(r, e)):
+        if e.count > 0 and _came_after_the_crash(r, e):
             e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
             r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
+        elif e.count > 0 and _called_out(r, e):
+            e.count = 0  # "EMS + PD dispatched 14:03": called to the scene, not in it
+            r.notes.append(f"left out: '{e.head}' is only called out to the scene")
         if e.type == "pedestrian" and e.count > 0 and not e.actions and not e.features and not e.label and \
                 _said_to_do_no_road_thing(r, e):
             e.count = 0  # "someone should fix that junction", "the workers at the depot say": nobody on the road
