@@ -7219,3 +7219,23 @@ def test_words_for_children_in_british_and_scots_speech_name_pedestrians(word):
     assert agents(f"Two {word} walk across the zebra. You stop.") == [
         ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
         ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+@pytest.mark.parametrize("prompt, lanes", [
+    ("A school bus was stopped ahead on our right picking kids up. We drove on.", 1),
+    ("The ego passes a bus that is stopped at a bus stop in the right lane ahead.", 2),
+    ("Got cut up by a Tesla, it came across from the lane on my left and slammed on right in front of me.", 2),
+])
+def test_a_vehicle_stopped_ahead_to_one_side_stands_at_the_kerb_unless_a_lane_is_said(prompt, lanes):
+    assert road(prompt).lanes == lanes
+
+
+@pytest.mark.parametrize("prompt, has", [
+    ("The ego turns to right in the crossroad with stop signal, and a bicycle comes from the left side.", ["stop"]),
+    ("One car comes from the opposite in a crossroad with give way signal, while the ego waits to turn left.",
+     ["yield"]),
+    ("One big truck stop on right shoulder in front of ego, hazard light is on.", []),
+    ("First blue-light drive: a broken-down HGV on the hard shoulder ahead.", []),
+])
+def test_a_sign_called_a_signal_is_the_sign_and_a_vehicles_own_lamps_are_no_traffic_light(prompt, has):
+    assert list(road(prompt).required_signals) == has

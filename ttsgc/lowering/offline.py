@@ -93,6 +93,7 @@ COMPASS_OPPOSITE = {"compass_north": "compass_south", "compass_south": "compass_
 COMPASS_LEFT = {"compass_north": "compass_west", "compass_east": "compass_north", "compass_south": "compass_east",
                 "compass_west": "compass_south"}  # the side on the left of a heading
 TALKED_ABOUT = {"learn", "how to", "avoid", "determine", "negotiate", "learn how to", "must learn", "let", "to let"}
+SIDE_MEANINGS = {"side_left", "side_right", "front_left", "front_right", "back_left", "back_right"}
 LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", "overtaking", "far", "farside",
               "near", "nearside", "side"}
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
@@ -4262,6 +4263,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
     elif u.category == "positions":
         if u.meaning in ("side_left", "side_right") and not {t.word for t in u.tokens} & LANE_WORDS:
             e.features.add("bare_" + u.meaning[5:])
+        elif u.meaning in SIDE_MEANINGS and {t.word for t in u.tokens} & {"lane", "lanes"}:
+            e.features.add("lane_said")  # "a bus stopped in the right lane ahead": in a lane, not at the kerb
         before = [t.word for t in r.tokens[max(0, u.start - 3):u.start]]
         if u.meaning in ("side_left", "side_right") and (u.tokens[0].word == "from" or before[-2:] == ["out", "of"]
                                                          or before == ["out", "of", "the"]):
@@ -7809,8 +7812,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
         resolved[e.key] = (action, direction)
         positions[e.key] = position
-        parked_beside = "parked" in e.features and action == "stop" and position in ("front_left", "front_right") \
-            and e.type not in V.VULNERABLE_TYPES  # "a parked bus on the right": at the kerb, no lane of its own
+        parked_beside = position in ("front_left", "front_right") and e.type not in V.VULNERABLE_TYPES and (
+            action == "stop" and "parked" in e.features and "lane_said" not in e.features
+            or action == "stop" and "ahead" in e.features and not e.features & {"lane_said", "from_lane"})
+        # "a parked bus on the right", "pulls out of a parking spot on the right and blocks me", "a school bus
+        # stopped ahead on our right": at the kerb, no lane of its own
         if is_oncoming or parked_beside:
             oncoming.add(e.key)
     for e in others:  # "in front of a truck", "the driver got out of the van on the left": at the truck's
