@@ -7239,3 +7239,17 @@ def test_a_vehicle_stopped_ahead_to_one_side_stands_at_the_kerb_unless_a_lane_is
 ])
 def test_a_sign_called_a_signal_is_the_sign_and_a_vehicles_own_lamps_are_no_traffic_light(prompt, has):
     assert list(road(prompt).required_signals) == has
+
+
+@pytest.mark.parametrize("prompt, limit", [
+    ("Imagine you are driving down a residential street with a 20 mph limit. A van is stopped ahead of you.",
+     "speed_32"),
+    ("Had to get past a cyclist on the 20 mph bit by the park.", "speed_32"),
+])
+def test_imagining_oneself_at_the_wheel_is_the_scene_and_a_speed_on_a_bit_of_road_is_its_limit(prompt, limit):
+    assert road(prompt).required_objects == (limit,)
+
+
+def test_imagining_oneself_in_a_role_is_still_the_request_to_the_chatbot():
+    lowered = lower_prompt("Imagine you are a simulation expert. A car turns left.", "offline")
+    assert any("read past the request's words" in n for n in lowered.notes)

@@ -249,10 +249,11 @@ SENTENCE = re.compile(r"[^.!?\n]*(?:[.!?]+|\n|$)")
 ROLE_NOUNS = r"(?:expert|engineer|assistant|specialist|tester|designer|generator|simulator|model|ai|chatbot|" \
     r"consultant|analyst|author|writer|planner|developer|programmer|researcher|instructor|professional|bot)"
 ROLE_PLAY = re.compile(r"^\s*(?:please\s+)?(?:(?:i want|i'd like|i would like|i need) you to )?"
-                       r"(?:(?:act|acting|behave) as|pretend (?:to be|you are)|imagine you are|"
-                       r"(?:assume|take|play) the role of|(?:you are|you're) (?:an?|the|my|our) (?:[a-z-]+\s+){0,3}?"
+                       r"(?:(?:act|acting|behave) as|pretend (?:to be|you are)|"
+                       r"(?:assume|take|play) the role of|(?:imagine )?(?:you are|you're) (?:an?|the|my|our) (?:[a-z-]+\s+){0,3}?"
                        + ROLE_NOUNS + r"\b|as an? (?:[a-z-]+\s+){0,3}?" + ROLE_NOUNS + r"\s*,)", re.I)
-# "Act as a simulation expert.", "You are a scenario generator."; not "You are approaching a zebra crossing."
+# "Act as a simulation expert.", "You are a scenario generator."; not "You are approaching a zebra crossing.", "Imagine
+# you are driving down a 20 mph street."
 OUTPUT_ORDER = re.compile(r"^\s*(?:(?:please|also|then|finally|and|now|just|kindly)\s+)*(?:output|return|format|"
                           r"respond|reply|answer|list|print|present|express|structure|emit|export|make sure|"
                           r"keep (?:it|the (?:output|answer|response|scene|scenario|description|speeds?)|things|"

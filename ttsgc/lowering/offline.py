@@ -1597,7 +1597,8 @@ LIMIT_WORDS = {"limit", "zone", "sign", "signs", "signed", "signposted", "limite
 
 LIMITED_PLACES = {"road", "street", "highway", "motorway", "freeway", "zone", "area", "stretch", "section", "lane",
                   "avenue", "roadway", "carriageway", "route", "limit", "arterial", "boulevard", "expressway",
-                  "dual", "bypass", "parkway", "thoroughfare", "collector", "residential", "interstate", "autobahn"}
+                  "dual", "bypass", "parkway", "thoroughfare", "collector", "residential", "interstate", "autobahn",
+                  "bit", "part", "stretches"}  # "the 20 mph bit by the park"
 
 
 MILES_WORDS = {"mph", "miles", "mile", "feet", "ft", "yards", "yd", "yds", "interstate", "freeway", "northbound",
