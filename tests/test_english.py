@@ -7253,3 +7253,17 @@ def test_imagining_oneself_at_the_wheel_is_the_scene_and_a_speed_on_a_bit_of_roa
 def test_imagining_oneself_in_a_role_is_still_the_request_to_the_chatbot():
     lowered = lower_prompt("Imagine you are a simulation expert. A car turns left.", "offline")
     assert any("read past the request's words" in n for n in lowered.notes)
+
+
+@pytest.mark.parametrize("prompt", [
+    "Semi on a two-lane county road, miles from any intersection. A pickup comes the other way.",
+    "The ego drives along a lane a long way from any junction; a cyclist rides ahead.",
+    "Nowhere near any roundabout, a van overtakes the ego.",
+])
+def test_a_road_said_to_be_far_from_any_junction_is_not_at_one(prompt):
+    assert road(prompt).junction is False
+
+
+def test_room_given_to_a_rider_is_no_word_misread():
+    lowered = lower_prompt("The ego waits, then moves over to the left to give the cyclist ahead room.", "offline")
+    assert "room" not in " ".join(lowered.unknown)
