@@ -7267,3 +7267,15 @@ def test_a_road_said_to_be_far_from_any_junction_is_not_at_one(prompt):
 def test_room_given_to_a_rider_is_no_word_misread():
     lowered = lower_prompt("The ego waits, then moves over to the left to give the cyclist ahead room.", "offline")
     assert "room" not in " ".join(lowered.unknown)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("IV was traveling straight on Lincoln Ave, followed by CV, a Jeep Wrangler. CV rear-ended IV.",
+     [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("At the crossroads, CV, a Mack dump truck, came from IV's left.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "road_of_left_turn")]),
+    ("CV, a Jeep Wrangler, followed IV.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("The ego drives along, followed by a truck.", [("car", "go_straight", "ego"), ("truck", "go_straight", "back")]),
+])
+def test_what_a_claimants_vehicle_is_said_after_it_and_followed_by_said_after_the_ego(prompt, expected):
+    assert agents(prompt) == expected

@@ -20,6 +20,7 @@ scene for daily traffic"). Content words no rule places are reported with the ne
 
 from __future__ import annotations
 
+import itertools
 import re
 from bisect import bisect_left, bisect_right
 from contextvars import ContextVar
@@ -2281,7 +2282,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if (_has_verb(current) or condition or new_noun or joined or order or relative_ends or the_one) \
                     and not short_name \
                     and not ego_named \
-                    and not bracketed and not ego_make and not _closed_apposition(current, units, k):
+                    and not bracketed and not ego_make and not _closed_apposition(current, units, k) \
+                    and not _what_a_label_is(current, units, k):  # "followed by CV, a Jeep Wrangler."
                 close(",")
             else:
                 current.append(u)  # "the ego, a city bus, is driven": the commas of an apposition
@@ -2347,6 +2349,22 @@ def _main_verb_after_a_relative(current: list[Unit], units: list[Unit], k: int) 
         # waits with a van stopped beside it": the van's participle
     return any(x.category in ("actions", "positions") or x.word in AUXILIARIES | {"had", "have", "has"}
                for x in current[first + 1:])
+
+
+def _what_a_label_is(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """', a Jeep Wrangler.' after a label ('CV', 'SV1', 'the target'): one noun with its article and no verb, up to
+    the sentence's end or the next comma, says what the labelled one is, whatever came before the label."""
+    last = current[-1] if current else None
+    if last is None or last.category != "agents" or last.meaning in ("ego", "none") or not (
+            last.tokens[-1].label or last.base.split()[-1] in APPOSED_HEADS) or k + 2 >= len(units) or \
+            units[k + 1].word not in ("a", "an"):
+        return False
+    sentence = units[k].tokens[0].sentence
+    rest = list(itertools.takewhile(lambda x: x.category != "comma" and x.tokens[0].sentence == sentence,
+                                    units[k + 2:]))
+    named = [j for j, x in enumerate(rest) if x.category == "agents"]  # "a Jeep Wrangler": a make and its model
+    return bool(named) and named == list(range(named[0], len(rest))) and \
+        not any(x.category in ("actions", "sequence", "positions") for x in rest)
 
 
 def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
@@ -4215,7 +4233,10 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
                  or listed and (coded or not e.features & HEADLINE_PLACES - _places_named(e, said.sentence)) and (
                      e.type == entity.type or entity.type in categories().get(e.head, frozenset()) or
                      e.head.split()[-1] == "vehicle" and entity.type not in V.VULNERABLE_TYPES))]
-    return named[0] if len(named) == 1 else None
+    if len(named) != 1 or said.sentence == 0 and named[0].said_at + 1 == heading_end and \
+            r.tokens[heading_end + 1].word in ("a", "an"):
+        return None  # "CV, a Jeep Wrangler, followed IV": the noun and what it is, no heading
+    return named[0]
 
 
 def _places_named(e: Entity, sentence: int) -> set[str]:
@@ -4972,6 +4993,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if any(u.category == "positions" and u.meaning == "ego_lane" for u in units[:by]) and actor.entity:
             actor.entity.features.add("into_ego_lane")  # "the ego's lane is entered by a motorbike"
         objects = [np for np in phrases if np is not actor]
+        if not objects and clause.link == "," and verbs and verbs[0] == 0 and previous_subject:
+            objects = [NounPhrase(previous_subject[0], -1, -1, group=list(previous_subject))]  # "the ego drives
+            # along, followed by a truck": the participle is said of the clause before's subject
         r.mark(units[by])
         r.passive = clause
     else:
@@ -5665,7 +5689,7 @@ ROLE_NOUNS = {"target", "npc", "adversary", "actor", "agent", "dummy", "target v
 ROLE_NAMES = {"pov", "vru", "target", "npc", "adversary", "gvt", "tv", "vut", "lead vehicle", "principal other vehicle",
               "other vehicle", "bv", "obstacle"}
 APPOSED_HEADS = {"vehicle", "agent", "actor", "user", "party", "vru", "target", "pov", "sv", "npc", "adversary",
-                 "participant", "object", "hero"}  # said what they are
+                 "participant", "object", "hero", "cv", "tpv", "iv"}  # said what they are
 
 
 DISTANCE_UNITS = {"m", "metres", "meters", "metre", "meter", "yards", "yard", "feet", "ft", "km", "miles", "mile"}
