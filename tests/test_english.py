@@ -7279,3 +7279,8 @@ def test_room_given_to_a_rider_is_no_word_misread():
 ])
 def test_what_a_claimants_vehicle_is_said_after_it_and_followed_by_said_after_the_ego(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_verbless_ego_before_a_comma_is_not_the_subject_of_the_next_vehicles_verb():
+    assert agents("SUT at 30 km/h, a parked van pulls out from the right kerb just ahead and stops across the lane, "
+                  "blocking the SUT.") == [("car", "block_the_ego", "front_right"), ("car", "go_straight", "ego")]

@@ -2590,10 +2590,13 @@ def _a_list_sharing_a_plural_verb(current: list[Unit], units: list[Unit], k: int
 
 def _starts_noun(units: list[Unit], k: int) -> bool:
     """A noun phrase begins here: determiners, numbers and adjectives, then an agent noun."""
-    for u in units[k:k + 4]:
+    for j, u in enumerate(units[k:k + 4]):
         if u.category == "agents":
             return u.meaning != "none"
-        if not (u.category in ("numbers", "number", "behaviours") or u.word in COLOURS | {"dark", "light", "white",
+        state = j > 0 and u.category == "actions" and len(u.tokens) == 1 and (
+            u.tokens[0].word.endswith("ed") or u.tokens[0].word == "stationary") and \
+            units[k + j - 1].word in DETERMINERS | {"a", "an", "one", "two", "three"}  # "a parked van": its state
+        if not (state or u.category in ("numbers", "number", "behaviours") or u.word in COLOURS | {"dark", "light", "white",
                                                                                        "black"} or
                 (u.category == "word" and u.word in DETERMINERS | {"and"}) or
                 (u.category == "word" and u.word not in lexicon().function_words and u.word not in CLAUSE_WORDS)
