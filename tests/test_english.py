@@ -7284,3 +7284,14 @@ def test_what_a_claimants_vehicle_is_said_after_it_and_followed_by_said_after_th
 def test_a_verbless_ego_before_a_comma_is_not_the_subject_of_the_next_vehicles_verb():
     assert agents("SUT at 30 km/h, a parked van pulls out from the right kerb just ahead and stops across the lane, "
                   "blocking the SUT.") == [("car", "block_the_ego", "front_right"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("In town the autonomous emergency braking gets its test. A cyclist shoots out of a side street on the right "
+     "across our bows, and the car stamps on the brakes all by itself, stopping short of him.",
+     [("car", "stop", "ego"), ("cyclist", "cross_the_road", "road_of_right_turn")]),
+    ("RP driving on Route 9. Says a pedestrian ran across the road in front of her, she swerved and stopped.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_by_itself_names_no_one_and_she_who_swerves_is_at_a_wheel_not_on_foot(prompt, expected):
+    assert agents(prompt) == expected

@@ -4904,6 +4904,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if u.word == "both" and i + 1 < len(units) and units[i + 1].category in ("agents", "word") and \
                     (units[i + 1].category == "agents" or units[i + 1].word in DEFINITE):
                 continue  # "both the truck and the pedestrian": coordination, not a pronoun
+            if u.word == "itself" and i > 0 and units[i - 1].word == "by":
+                r.mark(u)
+                continue  # "the car brakes all by itself": on its own, no one else named
             pronouns.append(i)
     for i in pronouns:
         u = units[i]
@@ -4936,6 +4939,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             target = _pronoun(units, i, phrases, r.surface or previous_subject, recent)
             if target is None and u.word == "it" and _a_group(r.surface or previous_subject):
                 target = _ego_entity(r, stage)  # "two trucks come the other way, so it has to wait": the ego
+            if target is None and _a_drivers_verb_after(units, i) and any(e.type == "pedestrian" for e in recent):
+                target = _ego_entity(r, stage)  # "a pedestrian ran across in front of her, she swerved": the one
+                # at the wheel, told of in the third person
             if target is None and u.word in ("she", "he") and _on_foot_in_the_scene(units, i) and \
                     not any(e.type == "pedestrian" for e in r.entities):
                 target = Entity(r.new_key(), "pedestrian", False, stage, head=u.word)
@@ -5349,6 +5355,8 @@ def _actor_of_a_named_action(units: list[Unit], verbs: list[int], phrases: list[
     'by'."""
     if not verbs or any(np.index < verbs[0] and np.entity is not None for np in phrases):
         return None
+    if units[verbs[0]].tokens[-1].word in SHORT_OF:
+        return None  # "stopping short of him": where it stopped, not who did
     j = verbs[0] + 1
     while j < len(units) and units[j].word in ACTION_NOUN_TAILS:
         j += 1
@@ -6391,7 +6399,10 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     """'it' as a subject is the last subject; as an object ('in front of it') the last thing named that is
     not the subject, usually the ego. 'she', 'him' name people."""
     if units[i].word in ("she", "her", "he", "him"):
-        people = [e for e in recent if e.type in V.VULNERABLE_TYPES]
+        drives = _a_drivers_verb_after(units, i)  # "a pedestrian ran out in front of her; she swerved"
+        people = [e for e in recent if e.type in V.VULNERABLE_TYPES and not (drives and e.type == "pedestrian")]
+        if drives and not people and any(e.type == "pedestrian" for e in recent):
+            return next((e for e in reversed(recent) if e.type != "pedestrian"), None)
         drivers = [e for e in recent if not e.is_ego] if units[i].word in ("he", "she") else []
         # "a coach started indicating ... so he could merge": the driver of the last vehicle
         return people[-1] if people else drivers[-1] if drivers else None
@@ -6438,6 +6449,14 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
 
 
 SPEAKERS = {"i", "me", "we", "us", "you", "my", "our", "your"}
+DRIVERS_VERBS = {"swerve", "brake", "steer", "skid", "accelerate", "indicate", "overtake", "stall", "slam", "stamp",
+                 "reverse", "floor", "hit the brakes"}  # what only one at a wheel or on a saddle does
+
+
+def _a_drivers_verb_after(units: list[Unit], i: int) -> bool:
+    """'she swerved', 'he braked': the pronoun is someone at a wheel or on a saddle, no one on foot."""
+    return units[i].word in ("she", "he") and i + 1 < len(units) and units[i + 1].category == "actions" and \
+        units[i + 1].tokens[0].base in DRIVERS_VERBS
 
 
 def _a_group(subject: list[Entity]) -> bool:
