@@ -7295,3 +7295,16 @@ def test_a_verbless_ego_before_a_comma_is_not_the_subject_of_the_next_vehicles_v
 ])
 def test_by_itself_names_no_one_and_she_who_swerves_is_at_a_wheel_not_on_foot(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_car_the_text_opens_on_is_the_speakers_own_and_the_system_holding_the_car_holds_the_ego():
+    assert stages("Watch as the car waits to turn right on a green at a busy downtown intersection. Two "
+                  "pedestrians step onto the zebra crossing of the street we're turning into, so the system holds "
+                  "the car in place. Once they're safely across, it completes the turn.") == [
+        [("ego", "stop", None), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+         ("pedestrian", "cross_the_road", "near_the_crosswalk")], [("ego", "turn_right", None)]]
+
+
+def test_right_where_it_is_is_no_side():
+    assert road("The driver signals left, but a motorcycle is in the left lane just behind us, so the system "
+                "keeps the car right where it is.").junction is None

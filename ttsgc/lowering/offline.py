@@ -3740,8 +3740,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
                 _names_the_ego_again(r, ego, u.base)) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
-                or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)):
-            return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop"
+                or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)
+                or first > 0 and units[first - 1].tokens[0].base in CONTROLLING):
+            return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop", "the
+            # system holds the car in place"
         if ego is None and not plural and bodies().get(u.base) == "car" and "other" not in words and \
                 not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
                 not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u) and \
@@ -3891,6 +3893,7 @@ def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
 
 
 GENERAL_BODIES = {"car", "vehicle", "truck", "bus"}
+CONTROLLING = {"hold", "bring", "keep", "steer", "guide", "ease", "brake"}  # what a system does to the car it drives
 SELF_NAMES = {"i", "me", "we", "us", "you", "mine", "ours", "yours", "my own"}
 
 
@@ -7146,6 +7149,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     elif _EGO_SPEAKS.get() and not _speaker_on_the_road(r):
         _protagonist_vehicle(r, driver_named=False)  # "I watch drivers speed past the school ... a car speeding
         # past, and a boy running out in front of it": an onlooker speaks; the scene is told from the car
+    _the_ego_said_again(r)
     _witness_on_foot(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
@@ -7277,9 +7281,23 @@ def _may_drive_the_scene(e: Entity) -> bool:
         (e.relative_to is None or e.relative_how in RELATIONS_TO_THE_EGO) and e.parent is None and e.named_of is None
 
 
+def _the_speakers_vehicle_named_first(r: _Reader) -> bool:
+    """A text that opens on one vehicle said with 'the' ('Watch as the car ...', 'At the stop, the car ...')
+    before it ever says 'we' or 'us' tells of the speakers' own vehicle."""
+    first = next((u for u in r.units if u.category == "agents" and u.meaning != "none"), None)
+    if first is None or first.meaning not in V.EGO_TYPES or first.tokens[-1].plural or first.start == 0 or \
+            r.tokens[first.start - 1].word != "the":
+        return False
+    speaker = next((t.index for t in r.tokens if t.word in SPEAKERS), None)
+    return speaker is not None and speaker >= first.end and \
+        not any(t.word in ("i", "me", "my", "you", "your") for t in r.tokens)
+
+
 def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
-    if not driver_named and any(t.word in SPEAKERS for t in r.tokens) and _speaker_on_the_road(r):
-        return None  # "a semi hit my mirror": the one speaking is the ego
+    if not driver_named and any(t.word in SPEAKERS for t in r.tokens) and _speaker_on_the_road(r) and \
+            not _the_speakers_vehicle_named_first(r):
+        return None  # "a semi hit my mirror": the one speaking is the ego (but "Watch as the car waits to turn
+        # right ... the street we're turning into": the car the text opens on is the one the speakers ride in)
     if not driver_named and any(t.word == "ego" for t in r.tokens):
         return None  # "a lorry swings wide, crossing into the ego's lane": the ego is named, if only by its lane
     ordered = sorted(r.entities, key=lambda e: e.key)
@@ -7420,6 +7438,23 @@ def _the_named_cut_in(r: _Reader) -> None:
 
 
 SCENE_NAME_WORDS = {"scenario", "scene", "test", "case", "run", "event", ":", "-"}
+
+
+def _the_ego_said_again(r: _Reader) -> None:
+    """'Watch as the car waits to turn ... the system holds the car in place': a vehicle named again with 'the',
+    of the ego's own kind, that does nothing and is placed nowhere, while no other of that noun was named, is
+    the ego, once the reading has settled who the ego is."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None:
+        return
+    for e in list(r.entities):
+        if e.is_ego or not e.definite or e.count != 1 or e.actions or e.features or e.relative_to is not None or \
+                e.type != ego.type or e.head not in GENERAL_BODIES or e.label or any(
+                    x is not e and not x.is_ego and x.head.split()[-1] == e.head for x in r.entities) or any(
+                    x.relative_to is e for x in r.entities):
+            continue
+        r.entities.remove(e)
+        r.notes.append(f"read 'the {e.head}' as the ego named again: it does nothing and is placed nowhere")
 
 
 def _witness_on_foot(r: _Reader) -> None:
