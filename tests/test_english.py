@@ -7308,3 +7308,13 @@ def test_a_car_the_text_opens_on_is_the_speakers_own_and_the_system_holding_the_
 def test_right_where_it_is_is_no_side():
     assert road("The driver signals left, but a motorcycle is in the left lane just behind us, so the system "
                 "keeps the car right where it is.").junction is None
+
+
+@pytest.mark.parametrize("prompt, signals, expected", [
+    ("The red car is driving down the street when a boy runs out into the road.", (),
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("The ego waits at the red light. A green bus waits beside it on the left.", ("traffic_light",),
+     [("bus", "stop", "left"), ("car", "stop", "ego")]),
+])
+def test_a_colour_before_a_vehicle_is_its_paint_not_a_signal(prompt, signals, expected):
+    assert (road(prompt).required_signals, agents(prompt)) == (signals, expected)

@@ -1254,6 +1254,9 @@ def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> lis
                         any(t.label for t in span[:-1]):  # "Bus_1 stops" is no "bus stops": a name ends its phrase
                     continue
                 entry = _lookup(lex, span)
+                if entry is not None and entry[0] == "road" and span[-1].word in SIGNAL_COLOURS and \
+                        i + n < len(tokens) and _names_an_agent(lex, tokens[i + n]):
+                    continue  # "the red car", "a green bus": the vehicle's colour, no signal
                 if entry is not None:
                     found = Match(i, i + n, entry[0], entry[1], " ".join(t.word for t in span))
                     break
@@ -1263,6 +1266,15 @@ def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> lis
         else:
             i += 1
     return out
+
+
+SIGNAL_COLOURS = {"red", "green", "amber", "yellow", "orange"}  # the colours a traffic light shows
+
+
+def _names_an_agent(lex: Lexicon, token: Token) -> bool:
+    """The word is a noun of an agent ('car', 'buses'), not one that names none."""
+    entry = lex.phrases.get((token.word,)) or lex.phrases.get((token.base,))
+    return entry is not None and entry[0] == "agents" and entry[1] != "none"
 
 
 def _lookup(lex: Lexicon, span: list[Token]):

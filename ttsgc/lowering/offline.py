@@ -31,8 +31,9 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
-from ttsgc.lowering.lexicon import (TOO_LARGE, Match, Token, _lookup, _names_agent, bodies, categories, compound_heads,
-                                    crews, lexicon, loose_names, matches, read_number, tokenize, typologies)
+from ttsgc.lowering.lexicon import (SIGNAL_COLOURS, TOO_LARGE, Match, Token, _lookup, _names_agent, bodies, categories,
+                                    compound_heads, crews, lexicon, loose_names, matches, read_number, tokenize,
+                                    typologies)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -5388,9 +5389,6 @@ def _ego_turn_in_a_place(r: _Reader, units: list[Unit], stage: int) -> None:
             r.mark(after)
             after.meaning = "used"
         ego.actions.append((stage, 2, ACTION_RANK["turn_left"], r.tick(), f"turn_{side}" if side else "turn", None))
-
-
-SIGNAL_COLOURS = {"red", "green", "amber", "yellow", "orange"}
 
 
 def _signal_change(units: list[Unit], i: int) -> bool:
