@@ -7318,3 +7318,14 @@ def test_right_where_it_is_is_no_side():
 ])
 def test_a_colour_before_a_vehicle_is_its_paint_not_a_signal(prompt, signals, expected):
     assert (road(prompt).required_signals, agents(prompt)) == (signals, expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Dude in a white pickup just swerved over from the lane on my right and cut in right in front of me.",
+     [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]),
+    ("First snow of the year and people already forgot how to drive. Going through on a green and a Jeep from the "
+     "left slides right through his red in front of me. Swear my heart stopped.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),
+])
+def test_where_a_swerve_came_from_people_in_general_and_the_speakers_heart(prompt, expected):
+    assert agents(prompt) == expected

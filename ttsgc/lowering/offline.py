@@ -3449,7 +3449,9 @@ OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "sai
                 "think", "thinks", "thought", "told", "tell", "tells", "ticket", "ticketed", "tickets", "cite",
                 "cited", "fine", "fined", "arrest", "arrested", "charge", "charged", "book", "booked", "interviewed",
                 "questioned", "wrote", "write", "blamed", "blame", "report", "statement", "statements", "agreed",
-                "agree", "agrees"}  # "the officer didn't ticket anybody", "the officer who took the report agreed"
+                "agree", "agrees", "forgot", "forget", "forgets", "forgotten", "know", "knows", "knew", "seem",
+                "seems", "seemed", "learn", "learned", "learnt"}  # "the officer didn't ticket anybody", "the officer
+# who took the report agreed", "people already forgot how to drive"
 
 
 def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
@@ -4715,7 +4717,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     for j, u in enumerate(units[k + 1: k + reach], start=k + 1):
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
-            if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or (
+            if u.tokens[0].word in ("from", "coming") or units[j - 1].word in ("from", "of") or \
+                    [t.word for t in u.tokens[1:2]] == ["from"] or (  # "swerved over from the lane on my right"
                     u.meaning.startswith("road") and not turning) or (
                     not turning and any(x.word == "from" for x in units[k + 1:j])) or (
                     not turning and {"out", "from"} & set(units[k].base.split()) and not (
