@@ -5498,7 +5498,7 @@ def test_holding_at_a_stopping_place_is_standing_and_holding_a_speed_is_not():
     ("A lorry was double-parked in our lane and the vehicle just waited behind it, so I took over.",
      [("car", "stop", "ego"), ("truck", "stop", "front")]),
     ("Our second lap. A cyclist came up on our left and the vehicle slowed right down.",
-     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "left")]),
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "back_left")]),
 ])
 def test_a_crews_vehicle_is_the_ego(prompt, expected):
     assert agents(prompt) == expected
@@ -7328,4 +7328,16 @@ def test_a_colour_before_a_vehicle_is_its_paint_not_a_signal(prompt, signals, ex
      [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),
 ])
 def test_where_a_swerve_came_from_people_in_general_and_the_speakers_heart(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego is in the left lane; a truck in the middle lane is level with it.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "right")]),
+    ("The ego drives in the right lane. A van follows the ego in the right lane.",
+     [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("I was driving in the left-hand lane when a cyclist passed me in the lane to my left.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "back_left")]),
+])
+def test_a_lane_named_by_its_place_on_the_road_is_placed_against_the_egos_named_lane(prompt, expected):
     assert agents(prompt) == expected

@@ -4296,6 +4296,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("bare_" + u.meaning[5:])
         elif u.meaning in SIDE_MEANINGS and {t.word for t in u.tokens} & {"lane", "lanes"}:
             e.features.add("lane_said")  # "a bus stopped in the right lane ahead": in a lane, not at the kerb
+            words = [t.word for t in u.tokens]
+            named = next((w for w, nxt in zip(words, words[1:]) if w in SIDES and nxt in ("lane", "hand")), None)
+            if named and not set(words) & {"my", "our", "your", "its", "his", "her", "their", "of", "ego"}:
+                e.features.add("named_lane_" + named)  # "in the left lane": a lane of the road, not one beside me
         before = [t.word for t in r.tokens[max(0, u.start - 3):u.start]]
         if u.meaning in ("side_left", "side_right") and (u.tokens[0].word == "from" or before[-2:] == ["out", "of"]
                                                          or before == ["out", "of", "the"]):
@@ -5252,6 +5256,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     e.features.add("in_junction")  # "my car slid out across the junction": the ego is at one
                 if u.meaning == "first_in_line":
                     e.features.add("first_in_line")
+                if u.meaning == "middle_lane" and not any(f.startswith("in_lane_") for f in e.features):
+                    e.features.add("in_lane_middle")  # "VUT in the middle lane": the lane others are placed by
                 if u.meaning == "behind" and u.tokens[0].base in ("sit", "wait", "stand", "idle") and \
                         reference is not None and any(a[4] in ("stop", "block") for a in reference.actions):
                     e.actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "a van was
@@ -7155,6 +7161,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
+    _named_lane_sides(r)
     _included_and_listed_items_share(r)
     _members_keep_the_group_place(r)
     _place_in_queue(r)
@@ -7612,6 +7619,44 @@ def _numbered_lane_sides(r: _Reader) -> None:
         side = "side_right" if theirs > own else "side_left"
         e.features.add(side)
         r.notes.append(f"inferred: '{e.head}' in lane {theirs} is to the {side[5:]} of the ego in lane {own}")
+
+
+NAMED_LANES = ("left", "middle", "right")  # across a road, left to right
+
+
+def _named_lane_sides(r: _Reader) -> None:
+    """'Our truck is in the right lane ..., a car just ahead of it in the middle lane', 'VUT in the middle lane; a
+    car from the left lane': where the ego's own lane is named, another's named lane is placed against it (the
+    same lane is the ego's; one named further left is to its left), not against the road's edge."""
+    def lane(e: Entity, own: bool) -> str | None:
+        if own:
+            return next((s for s in NAMED_LANES if f"in_lane_{s}" in e.features), None)
+        if "middle_lane" in e.features:
+            return "middle"
+        return next((s for s in SIDES if f"named_lane_{s}" in e.features), None)
+
+    ego = next((e for e in r.entities if e.is_ego), None)
+    own = lane(ego, True) if ego is not None else None
+    if own is None:
+        return
+    for e in r.entities:
+        theirs = lane(e, False) if not e.is_ego else None
+        if theirs is None or (theirs, own) == ("right", "left") or (theirs, own) == ("left", "right"):
+            continue  # (left of the ego in the left lane, right of it in the right lane: as said)
+        placed = {f"{p}{s}" for p in ("side_", "front_", "back_") for s in SIDES} & e.features
+        ahead = bool(placed & {"front_left", "front_right"}) or "ahead" in e.features
+        behind = bool(placed & {"back_left", "back_right"}) or "behind" in e.features
+        e.features -= placed | {"middle_lane", "bare_left", "bare_right"}
+        if theirs == own:
+            e.features |= {"ahead"} if ahead else {"behind"} if behind else set()
+            if not ahead and not behind:
+                e.features.add("level")
+            r.notes.append(f"inferred: '{e.head}' in the {theirs} lane is in the ego's own lane")
+            continue
+        side = "left" if NAMED_LANES.index(theirs) < NAMED_LANES.index(own) else "right"
+        e.features.add(f"side_{side}")
+        e.features |= {"ahead"} if ahead else {"behind"} if behind else set()
+        r.notes.append(f"inferred: '{e.head}' in the {theirs} lane is to the {side} of the ego in the {own} lane")
 
 
 def _ego_placed_last(units: list[Unit]) -> bool:
