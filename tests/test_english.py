@@ -7341,3 +7341,16 @@ def test_where_a_swerve_came_from_people_in_general_and_the_speakers_heart(promp
 ])
 def test_a_lane_named_by_its_place_on_the_road_is_placed_against_the_egos_named_lane(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Hi sim folks, I'm putting together the highway merge set. Our car drives in the left lane.",
+     [("car", "go_straight", "ego")]),
+    ("A car just ahead of me in the left lane keeps going.", [("car", "go_straight", "ego"),
+                                                             ("car", "go_straight", "front_left")]),
+    ("Our truck is in the right lane of a three-lane motorway, and a car just ahead of it in the middle lane "
+     "changes into the right lane in front of the truck.",
+     [("car", "change_lane_to_right", "front_left"), ("truck", "go_straight", "ego")]),
+])
+def test_a_named_set_of_tests_is_no_manoeuvre_and_a_lane_after_ahead_of_me_is_the_subjects(prompt, expected):
+    assert agents(prompt) == expected

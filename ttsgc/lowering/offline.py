@@ -5413,9 +5413,11 @@ def _signal_change(units: list[Unit], i: int) -> bool:
 def _named_manoeuvre(units: list[Unit], i: int) -> bool:
     """'at the start of the manoeuvre', 'during the turn': a manoeuvre named as a noun after a preposition,
     nobody's predicate."""
-    if i + 1 < len(units) and units[i + 1].word in ("test", "tests", "scenario", "case", "run", "scene", "event",
-                                                    "situation", "drill", "exercise", "check"):
-        return True  # "merge test", "cut-in scenario": the name of a test
+    if i + 1 < len(units) and units[i + 1].word in ("test", "tests", "scenario", "scenarios", "case", "cases", "run",
+                                                    "runs", "scene", "scenes", "event", "situation", "drill",
+                                                    "exercise", "check", "set", "suite", "batch", "series",
+                                                    "coverage", "backlog", "campaign", "library", "catalog"):
+        return True  # "merge test", "cut-in scenario", "the highway merge set": the name of a test or a set
     if i >= 2 and units[i - 1].word == "the" and units[i - 2].word in COPULAS and \
             units[i].meaning in ("cut_in", "lane_change", "block") and (
                 i + 1 == len(units) or units[i + 1].category == "comma" or
@@ -6545,9 +6547,11 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
                          for u in units[last.index + 1:i])
             if last.entity in subject and copula:
                 return subject  # "both the truck and the pedestrian are in the front right"
-            if last.entity.is_ego and subject and last.entity not in subject and last.first > 0 and \
-                    units[last.first - 1].category == "positions":
-                return subject  # "a bicyclist is coming up behind you on your right": the bicyclist's side
+            placed_by = last.first - 1 - (last.first > 1 and units[last.first - 1].word == "of")
+            if last.entity.is_ego and subject and last.entity not in subject and placed_by >= 0 and \
+                    units[placed_by].category == "positions":
+                return subject  # "a bicyclist is coming up behind you on your right", "a car just ahead of me in
+                # the left lane": the bicyclist's side, the car's lane
             return last.group or [last.entity]
         return subject
     last_verb = verb_before[-1]
