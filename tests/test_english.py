@@ -7354,3 +7354,10 @@ def test_a_lane_named_by_its_place_on_the_road_is_placed_against_the_egos_named_
 ])
 def test_a_named_set_of_tests_is_no_manoeuvre_and_a_lane_after_ahead_of_me_is_the_subjects(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_bug_ticket_written_on_one_line_is_read_for_its_repro_only():
+    assert agents("No spray from truck tyres on wet road. Repro: rural road with one lane each way, no junctions. "
+                  "Ego follows a cyclist while a truck comes the other way. Expected: spray behind the truck's "
+                  "wheels. Actual: no spray at all, and the truck's wheels don't turn.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front"), ("truck", "go_straight", "front_left")]

@@ -326,12 +326,31 @@ QUOTED = re.compile(r"[\"\u201c]([^\"\u201c\u201d]+)[\"\u201d]")
 TITLE_STOPS = re.compile(r"[.:;!?]+(?=\s)")
 
 
+INLINE_SECTION = re.compile(r"(?<=[.;)!?])[ \t]+(?=(?:steps to reproduce|steps|repro|expected(?: result| behaviou?r)?|"
+                            r"actual(?: result| behaviou?r)?|observed)[ \t]*:)", re.I)
+
+
+def _inline_report_sections(text: str) -> str:
+    """'SIM-482 Pedestrian spawns inside the curb. Steps: 1. ... Expected: ... Actual: ...': a ticket written on
+    one line, its sections each put on a line of their own (its opening sentence, the title, without its stop)."""
+    if len({m.group(0).split()[0].lower()[:6] for m in re.finditer(
+            r"\b(?:steps|repro|expected|actual|observed)\b(?=[^:\n]{0,20}:)", text, re.I)}) < 2:
+        return text
+    out = []
+    for line in text.split("\n"):
+        parts = INLINE_SECTION.split(line)
+        if len(parts) > 1 and not REPORT_SECTION.match(parts[0]):
+            parts[0] = parts[0].rstrip().rstrip(".")  # the title before the first section
+        out += parts
+    return "\n".join(out)
+
+
 def _bug_report(text: str, notes: list[str]) -> str:
     """A bug report ('Steps to reproduce', 'Expected behaviour', 'Actual'): the scene is the one asked for in its
     steps (or, told nowhere else, the one it expected); what went wrong under 'Actual' is no scene, nor are the
     versions it ran, the steps that only work the tool ('Generate and open the .xosc'), or its markup. Its title
     names the bug: read for the road and the weather only."""
-    lines = MARKUP.sub("", text).split("\n")
+    lines = _inline_report_sections(MARKUP.sub("", text)).split("\n")
     found = [m for m in map(REPORT_SECTION.match, lines) if m]
     kinds = {kind for m in found for kind, starts in REPORT_KINDS.items()
              if m.group("key").lower().startswith(starts)}
