@@ -7361,3 +7361,15 @@ def test_a_bug_ticket_written_on_one_line_is_read_for_its_repro_only():
                   "Ego follows a cyclist while a truck comes the other way. Expected: spray behind the truck's "
                   "wheels. Actual: no spray at all, and the truck's wheels don't turn.") == [
         ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front"), ("truck", "go_straight", "front_left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego follows a lorry. Students may choose the lorry's speed, and students who wish to may consider rain.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+    ("The ego waits at the crossing. Pedestrians should cross in front of the ego.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front"), ("pedestrian", "cross_the_road", "front")]),
+    ("A driver clipped a cyclist on the lane. Dozens of cyclists use the lane every day.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+])
+def test_people_told_what_they_may_do_and_dozens_said_of_every_day_are_no_agents(prompt, expected):
+    assert agents(prompt) == expected

@@ -2716,7 +2716,12 @@ def _bare_plural(tokens: list[Token], u: Unit) -> bool:
     if not u.tokens[-1].plural:
         return False
     before = tokens[t.index - 1] if t.index > 0 and tokens[t.index - 1].sentence == t.sentence else None
+    if before is not None and before.word == "of" and t.index > 1 and tokens[t.index - 2].word in VAGUE_MANY:
+        return True  # "dozens of cyclists use the lane every day": as many as one likes, a kind
     return before is None or before.word not in SAID_OF_SOME and read_number(before.word) is None
+
+
+VAGUE_MANY = {"dozens", "hundreds", "thousands", "scores", "lots", "loads", "plenty", "tons", "masses"}
 
 
 def _in_general(tokens: list[Token], u: Unit) -> bool:
@@ -2727,6 +2732,14 @@ def _in_general(tokens: list[Token], u: Unit) -> bool:
         return False
     if u.tokens[-1].word in ("drivers", "motorists"):
         return True  # "the head teacher's concern is drivers not slowing down": drivers in general
+    after = [x for x in tokens[u.tokens[-1].index + 1:u.tokens[-1].index + 6] if x.sentence == t.sentence]
+    told = after[:1] and after[0].word in ("should", "must", "may", "need", "ought", "might", "shall") or \
+        [x.word for x in after[:1]] == ["who"] and after[1:] and after[1].word in ("wish", "want", "prefer")
+    verb = next((x for x in after[1:] if x.word not in ("not", "also", "additionally", "carefully", "first", "be",
+                                                         "to", "wish", "want", "prefer", "may", "should")), None)
+    if told and verb is not None and (lexicon().phrases.get((verb.base,)) or ("",))[0] != "actions":
+        return True  # "Students may choose ...", "students who wish to may consider": those told what they may
+        # do, off the road (not "pedestrians should cross in front of the ego")
     words = [x.word for x in _sentence(tokens, t.sentence)]
     return bool(HABITUAL & set(words)) or any(tuple(words[k:k + len(p)]) == p
                                               for p in HABITUAL_PHRASES for k in range(len(words)))
@@ -3450,7 +3463,8 @@ OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "sai
                 "cited", "fine", "fined", "arrest", "arrested", "charge", "charged", "book", "booked", "interviewed",
                 "questioned", "wrote", "write", "blamed", "blame", "report", "statement", "statements", "agreed",
                 "agree", "agrees", "forgot", "forget", "forgets", "forgotten", "know", "knows", "knew", "seem",
-                "seems", "seemed", "learn", "learned", "learnt"}  # "the officer didn't ticket anybody", "the officer
+                "seems", "seemed", "learn", "learned", "learnt", "may", "need", "needs", "wish", "wishes", "can",
+                "will", "shall", "ought", "choose", "consider"}  # "the officer didn't ticket anybody", "the officer
 # who took the report agreed", "people already forgot how to drive"
 
 
