@@ -7367,7 +7367,8 @@ def test_a_bug_ticket_written_on_one_line_is_read_for_its_repro_only():
     ("The ego follows a lorry. Students may choose the lorry's speed, and students who wish to may consider rain.",
      [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
     ("The ego waits at the crossing. Pedestrians should cross in front of the ego.",
-     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front"), ("pedestrian", "cross_the_road", "front")]),
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+      ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
     ("A driver clipped a cyclist on the lane. Dozens of cyclists use the lane every day.",
      [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
 ])
