@@ -7374,3 +7374,13 @@ def test_a_bug_ticket_written_on_one_line_is_read_for_its_repro_only():
 ])
 def test_people_told_what_they_may_do_and_dozens_said_of_every_day_are_no_agents(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The farm track comes out onto the main road at a stop sign, so I've stopped there in the truck with a tractor "
+     "on the back. Van waiting on the road to my left. Then I went straight across once it was clear.",
+     [[("ego", "stop", None), ("car", "stop", "road_of_left_turn")], [("ego", "go_straight", None)]]),
+])
+def test_a_vehicle_on_the_back_is_a_load_and_the_truck_the_speaker_sits_in_is_the_ego(prompt, expected):
+    assert stages(prompt) == expected
+    assert lower_prompt(prompt, "offline").scenario.stages[0].agents[0].type == "truck"

@@ -3468,6 +3468,23 @@ OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "sai
 # who took the report agreed", "people already forgot how to drive"
 
 
+LOADED = (("on", "the", "back"), ("on", "the", "trailer"), ("on", "the", "flatbed"), ("on", "the", "bed"),
+           ("on", "tow"), ("in", "tow"), ("on", "the", "low", "loader"), ("on", "the", "hook"))
+
+
+def _a_load(r: _Reader, e: Entity) -> bool:
+    """'with a tractor on the back', 'a Fiesta back to the garage on the back of the truck': a vehicle said a few
+    words before it is placed on another's back or in tow is a load, no agent of the scene."""
+    if e.said_at < 0:
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    after = [t for t in r.tokens[e.said_at + 1:e.said_at + 12] if t.sentence == sentence]
+    words = [t.word for t in after]
+    at = next((k for k in range(len(words)) for p in LOADED if tuple(words[k:k + len(p)]) == p), None)
+    return at is not None and not any((lexicon().phrases.get((t.base,)) or ("",))[0] == "agents"
+                                      for t in after[:at])  # (not "in the truck with a tractor on the back")
+
+
 def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
     """A person whose sentence, after them and before any comma, goes on with a modal, a report or a past
     perfect ('someone should fix that junction', 'the workers at the depot say') and gives them nothing to do
@@ -6280,7 +6297,8 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
         return False
     if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents"):
         return False  # "in the van ahead", "in the car that pulled out": another
-    if any(x.is_ego and x.head not in FIRST_PERSON | {"we"} for x in r.entities):
+    named_ego = any(t.word == "ego" for t in r.tokens)  # (an ego supplied for a verb with no subject is 'ego')
+    if any(x.is_ego and x.head not in FIRST_PERSON | {"we"} and (x.head != "ego" or named_ego) for x in r.entities):
         return False
     egos = [u for u in r.units if u.category == "agents" and u.meaning == "ego"]
     if not egos:  # "Rolling up on it now in the Kenworth": no one named, a participle with no subject says where
@@ -7876,6 +7894,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.type == "pedestrian" and "on_board" in e.features and e.count > 0:
             e.count = 0  # "the kids arguing in the back": passengers of the ego, nobody on the road
             r.notes.append(f"left out: '{e.head}' in the back of the ego's car (passengers, no agent)")
+        if e.type not in V.VULNERABLE_TYPES and e.count > 0 and not e.actions and not _placed(e) and \
+                _a_load(r, e):
+            e.count = 0  # "in the truck with a tractor on the back", "a Fiesta ... on the back of the truck"
+            r.notes.append(f"left out: '{e.head}' is carried, not driven")
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
     for e in others:  # "the HGV in lane one had to pull out into lane two": lanes count from the kerb
