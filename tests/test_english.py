@@ -7384,3 +7384,10 @@ def test_people_told_what_they_may_do_and_dozens_said_of_every_day_are_no_agents
 def test_a_vehicle_on_the_back_is_a_load_and_the_truck_the_speaker_sits_in_is_the_ego(prompt, expected):
     assert stages(prompt) == expected
     assert lower_prompt(prompt, "offline").scenario.stages[0].agents[0].type == "truck"
+
+
+def test_a_queue_said_with_the_egos_wait_the_man_in_the_van_and_asking_after_someone():
+    assert stages("Dear Sylvia, you asked after my driving, so I shall be honest. I was waiting at the red light "
+                  "with a taxi in front of me and a white van behind. Then the light went green and I went straight "
+                  "on across the junction, and the young man in the van leaned on his horn.") == [
+        [("ego", "stop", None), ("car", "stop", "front"), ("car", "stop", "back")], [("ego", "go_straight", None)]]

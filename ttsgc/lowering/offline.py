@@ -2163,6 +2163,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 nxt.meaning.startswith("time:") and u.tokens[-1].word in ("after", "before"):
             r.mark(u)
             continue  # "shortly after sunrise", "just before dusk": the time of day, no later stage
+        if u.category == "sequence" and u.word == "after" and prev_word in AFTER_OF_A_VERB:
+            r.mark(u)
+            continue  # "you asked after my driving", "she looks after the kids": no time, a verb's own word
         if u.category == "sequence" and prev_word in RELATIVES and units[k - 1].category == "word":
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
@@ -2323,6 +2326,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
     return out
+
+
+AFTER_OF_A_VERB = {"ask", "asks", "asked", "asking", "look", "looks", "looked", "looking", "named", "take", "takes",
+                   "took", "taking", "inquire", "inquired", "enquire", "enquired"}
 
 
 def _the_one_after(current: list[Unit], units: list[Unit], k: int) -> bool:
@@ -5664,8 +5671,22 @@ def _place_in_queue(r: _Reader) -> None:
                 e.stage == 0 and (
                 "ahead" in e.features and not e.features & {"side_left", "side_right", "road_straight", "toward"}
                 or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}
-                or (e.parent or e).includes_ego and not e.features):  # "three cars including mine at the red"
+                or (e.parent or e).includes_ego and not e.features  # "three cars including mine at the red"
+                or "behind" in e.features and not e.features & {"side_left", "side_right", "overtaking"} and
+                _queued_with_the_ego(r, e)):  # "waiting at the red light with a van behind"
             e.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
+
+
+def _queued_with_the_ego(r: _Reader, e: Entity) -> bool:
+    """'I was waiting at the red light with a taxi in front of me and a white van behind': one said after 'with'
+    in the sentence of the ego's wait, no verb of its own between, waits in the queue too."""
+    if e.said_at < 0:
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    before = [t for t in r.tokens[:e.said_at] if t.sentence == sentence]
+    at = next((k for k in range(len(before) - 1, -1, -1) if before[k].word == "with"), None)
+    return at is not None and not any((lexicon().phrases.get((t.base,)) or ("",))[0] == "actions"
+                                      for t in before[at + 1:])
 
 
 STANDING_TRAFFIC = {"stop traffic", "stopped traffic", "traffic jam", "queue of traffic", "stationary traffic",
@@ -6060,6 +6081,14 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 and (prev.entity.type == "pedestrian" or prev.entity.head.split()[-1] in ("riders", "rider")) \
                 and [u.word for u in units[prev.index + 1: np.first]] in RIDING_ON:
             _fold(r, prev.entity, np.entity)  # "two kids on scooters": two riders, counted by the people
+            continue
+        if prev is not None and prev.introduced and not np.introduced and prev.entity is not None and \
+                np.entity is not None and not prev.entity.is_ego and not np.entity.is_ego and \
+                prev.entity.head in DRIVERS and prev.entity.count == 1 and \
+                np.entity.type not in V.VULNERABLE_TYPES and [u.word for u in units[prev.index + 1:np.first]] == ["in"]:
+            if prev.entity in r.entities:  # "the young man in the van leaned on his horn": the van's driver, the
+                r.entities.remove(prev.entity)  # van named again
+            out[-1] = np
             continue
         if np.introduced and _at_the_wheel_of(units, out, np):
             ego = next(p.entity for p in reversed(out) if p.entity is not None)
