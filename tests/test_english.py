@@ -7391,3 +7391,10 @@ def test_a_queue_said_with_the_egos_wait_the_man_in_the_van_and_asking_after_som
                   "with a taxi in front of me and a white van behind. Then the light went green and I went straight "
                   "on across the junction, and the young man in the van leaned on his horn.") == [
         [("ego", "stop", None), ("car", "stop", "front"), ("car", "stop", "back")], [("ego", "go_straight", None)]]
+
+
+def test_a_report_forms_vehicle_field_names_the_ego():
+    lowered = lower_prompt("Vehicle: Iveco 18 tonner. Location: A38 southbound. What happened: the car in front of "
+                           "me stopped suddenly and I stopped behind it.", "offline")
+    assert [(a.type, a.action, a.relative_to_ego) for a in lowered.scenario.agents()] == [
+        ("truck", "stop", None), ("car", "stop", "front")]

@@ -152,7 +152,14 @@ def _event_record(text: str, notes: list[str]) -> str:
         text = re.sub(r"\bspd\.?\s*:?\s*(\d+)(?:\s*to\s*\d+)?", r"doing \1", text, flags=re.I)  # its own speed
         text = re.sub(r"\s*\|\s*", ". ", text)  # each field said apart
         notes.append("read the record's vehicle field as the ego")
+    elif len(FORM_FIELD.findall(text)) >= 2 and RECORD_VEHICLE_KEY.search(text):
+        text = RECORD_VEHICLE_KEY.sub("Ego: ", text, count=1)  # "Vehicle: Ford Focus pool car. Location: ..."
+        notes.append("read the form's vehicle field as the ego")
     return text
+
+
+FORM_FIELD = re.compile(r"(?:^|(?<=[.\n]))\s*(?:location|what happened|time|weather|conditions|date|route|driver|"
+                        r"description|road|speed)\s*:", re.I)  # a report form's fields, each a label and its value
 
 
 def read_narration(prompt: str) -> Narration:
