@@ -7398,3 +7398,11 @@ def test_a_report_forms_vehicle_field_names_the_ego():
                            "me stopped suddenly and I stopped behind it.", "offline")
     assert [(a.type, a.action, a.relative_to_ego) for a in lowered.scenario.agents()] == [
         ("truck", "stop", None), ("car", "stop", "front")]
+
+
+def test_a_diagrams_highlighted_vehicle_is_the_ego_and_a_drivers_handbook_no_agent():
+    lowered = lower_prompt("This diagram from the bus driver's handbook shows the highlighted coach on a dual "
+                           "carriageway. The coach moves over to the left lane to pass a slow lorry ahead.", "offline")
+    ego = lowered.scenario.stages[0].agents[0]
+    assert (ego.type, ego.action) == ("bus", "change_lane_to_left")
+    assert [a.type for a in lowered.scenario.agents()] == ["bus", "truck"]
