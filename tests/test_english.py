@@ -7406,3 +7406,9 @@ def test_a_diagrams_highlighted_vehicle_is_the_ego_and_a_drivers_handbook_no_age
     ego = lowered.scenario.stages[0].agents[0]
     assert (ego.type, ego.action) == ("bus", "change_lane_to_left")
     assert [a.type for a in lowered.scenario.agents()] == ["bus", "truck"]
+
+
+def test_a_crash_databases_participant_is_the_one_its_bracket_names():
+    assert agents("Vehicle 1 (passenger car) was travelling straight. Participant 3 (pedestrian, 9 years) ran across "
+                  "the road in front of V1.") == [("car", "go_straight", "ego"),
+                                                  ("pedestrian", "cross_the_road", "front")]

@@ -776,7 +776,9 @@ SPELT_DESIGNATION = re.compile(r"\b(?:V|Veh|Vehicle|Unit)(?:\.\s?|\s?[#-]\s?|\s)
 
 
 def _designations_spelt_alike(text: str) -> str:
-    """'Veh. 2', 'V-2', 'Vehicle 2', 'Unit 2' are one report's way of naming V2 (and 'Veh.' ends no sentence)."""
+    """'Veh. 2', 'V-2', 'Vehicle 2', 'Unit 2' are one report's way of naming V2 (and 'Veh.' ends no sentence); a
+    crash database's 'Participant 3' is its P3."""
+    text = re.sub(r"\bparticipant\s?[#-]?\s?(\d{1,2})\b", r"P\1", text, flags=re.I)
     return SPELT_DESIGNATION.sub(r"V\1", text)
 
 
