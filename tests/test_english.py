@@ -7412,3 +7412,24 @@ def test_a_crash_databases_participant_is_the_one_its_bracket_names():
     assert agents("Vehicle 1 (passenger car) was travelling straight. Participant 3 (pedestrian, 9 years) ran across "
                   "the road in front of V1.") == [("car", "go_straight", "ego"),
                                                   ("pedestrian", "cross_the_road", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Vehicle 1 (passenger car) was travelling straight through a crossroads. Vehicle 2 (pickup truck) approached "
+     "from the road on the left. The front of V2 struck the left side of V1.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),
+    ("I was waiting to turn right into Church Street. Then, as I went round into Church Street, two ladies stepped "
+     "off the kerb and started across it.", [("car", "stop", "ego"), ("car", "turn_right", "ego"),
+                                             ("pedestrian", "cross_the_road", "at_the_destination"),
+                                             ("pedestrian", "cross_the_road", "at_the_destination")]),
+])
+def test_the_front_of_a_vehicle_is_no_place_and_going_round_into_a_street_is_a_turn(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_one_pulled_up_behind_a_vehicle_on_the_shoulder_is_on_it_too_and_needs_no_lane():
+    lowered = lower_prompt("A broken-down lorry on the hard shoulder just ahead on my left with a cop car pulled up "
+                           "behind it.", "offline").scenario
+    assert lowered.road.lanes == 1
+    assert [(a.type, a.road_type) for a in lowered.agents() if not a.is_ego] == [("truck", "shoulder"),
+                                                                               ("police", "shoulder")]

@@ -4452,7 +4452,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                  and x.meaning in ("side_left", "side_right")), None)
             circulating = any(t.word in ("roundabout", "rotary", "circle") for x in clause_units for t in x.tokens) \
                 and not (k + 2 < len(clause_units) and (clause_units[k + 2].category == "agents" or
-                                                       clause_units[k + 2].word in ("it", "him", "her", "them")))
+                                                       clause_units[k + 2].word in ("it", "him", "her", "them"))) \
+                or k + 2 < len(clause_units) and clause_units[k + 2].word in ("into", "onto")  # "went round into
+            # Church Street": a turn into it, no way round someone
             if not side:  # "changed lanes to the right to go around", "pulled out to the right and went round her"
                 side = next((a[4][5:] for a in reversed(e.actions) if a[0] == stage
                              and a[4] in ("lane_left", "lane_right")), None)  # the purpose of the change said
@@ -5242,6 +5244,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
+        if u.meaning in ("ahead", "behind") and [t.word for t in u.tokens] in (["front"], ["rear"], ["back"]) and \
+                u.start > 0 and r.tokens[u.start - 1].word == "the" and i + 1 < len(units) and \
+                units[i + 1].word == "of" and not any(x.category in ("agents", "actions") for x in units[:i]):
+            r.mark(u)
+            continue  # "The front of V2 struck the left side of V1": a part of V2, no place
         if u.meaning == "ego_lane" and i > 0 and (units[i - 1].word in ("into", "onto", "across") or (
                 units[i - 1].category == "actions" and units[i - 1].tokens[-1].word in ("into", "onto")) or (
                 units[i - 1].category == "actions" and units[i - 1].tokens[0].base in STEERING | {"come", "get"}
@@ -5302,8 +5309,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     # double-parked and we sat behind it": behind one that stands, it stands too
                 edge_after = i + 1 < len(units) and (units[i + 1].category == "positions" and units[i + 1].meaning in (
                     "shoulder", "sidewalk") or units[i + 1].word in LANE_EDGES)  # "against the nearside verge"
+                body_side = u.tokens[-1].word == "side" and (  # "struck the left side of V1": a part of it
+                    u.start > 0 and r.tokens[u.start - 1].word in ("the", "its", "my", "our", "his", "her") and
+                    u.end < len(r.tokens) and r.tokens[u.end].word == "of" or
+                    u.start > 0 and r.tokens[u.start - 1].word in ("my", "our", "its"))
                 if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS and \
-                        not edge_after:
+                        not edge_after and not body_side:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
                     e.features.add("in_lane_" + u.meaning[5:])  # which side: a move to the middle is away from it
                 later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
@@ -8023,6 +8034,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             continue
         if not _placed(e):
             positions[e.key] = positions[t.key]
+            if t.road_type == "shoulder" and e.road_type is None and e.type not in V.VULNERABLE_TYPES and \
+                    resolved[e.key][0] in ("stop", None):
+                e.road_type = "shoulder"  # "a cop car pulled up behind it" (a lorry on the hard shoulder): there too
+            if t.key in oncoming:
+                oncoming.add(e.key)  # (no lane of its own where the other needs none)
         elif not _placed(t) and not (t.type not in V.VULNERABLE_TYPES and t.features & {"ahead", "behind"}):
             positions[t.key] = positions[e.key]  # ... and the truck, placed nowhere itself, is where the text put
             # the other (but "a boy darted onto the crossing from behind a bus which had stopped just ahead of me",
