@@ -5498,7 +5498,7 @@ def test_holding_at_a_stopping_place_is_standing_and_holding_a_speed_is_not():
     ("A lorry was double-parked in our lane and the vehicle just waited behind it, so I took over.",
      [("car", "stop", "ego"), ("truck", "stop", "front")]),
     ("Our second lap. A cyclist came up on our left and the vehicle slowed right down.",
-     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "back_left")]),
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "left")]),
 ])
 def test_a_crews_vehicle_is_the_ego(prompt, expected):
     assert agents(prompt) == expected
