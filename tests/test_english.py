@@ -7433,3 +7433,14 @@ def test_one_pulled_up_behind_a_vehicle_on_the_shoulder_is_on_it_too_and_needs_n
     assert lowered.road.lanes == 1
     assert [(a.type, a.road_type) for a in lowered.agents() if not a.is_ego] == [("truck", "shoulder"),
                                                                                ("police", "shoulder")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Lady rang in about a flat battery, so I'm turning left into Albert Street in the truck, and there's a "
+     "delivery van stopped just round the corner in the street I'm turning into.",
+     [("car", "stop", "at_the_destination"), ("truck", "turn_left", "ego")]),
+    ("A Ford turned left across my path. My daughter was a rear-seat passenger and reports no injuries.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]),
+])
+def test_a_caller_and_a_passenger_are_no_one_on_the_road(prompt, expected):
+    assert agents(prompt) == expected

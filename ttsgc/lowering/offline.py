@@ -3471,7 +3471,8 @@ OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "sai
                 "questioned", "wrote", "write", "blamed", "blame", "report", "statement", "statements", "agreed",
                 "agree", "agrees", "forgot", "forget", "forgets", "forgotten", "know", "knows", "knew", "seem",
                 "seems", "seemed", "learn", "learned", "learnt", "may", "need", "needs", "wish", "wishes", "can",
-                "will", "shall", "ought", "choose", "consider"}  # "the officer didn't ticket anybody", "the officer
+                "will", "shall", "ought", "choose", "consider", "nowhere", "rang", "rung", "phoned", "rings",
+                "passenger"}  # "the officer didn't ticket anybody", "the officer
 # who took the report agreed", "people already forgot how to drive"
 
 
@@ -3504,7 +3505,7 @@ def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
         if t.sentence != sentence or t.word == ",":
             break
         after.append(t.word)
-    return bool(set(after[:4]) & OFF_THE_ROAD)
+    return bool(set(after[:5]) & OFF_THE_ROAD)
 
 
 def _waits_where_people_wait(r: _Reader, e: Entity) -> bool:
