@@ -7444,3 +7444,9 @@ def test_one_pulled_up_behind_a_vehicle_on_the_shoulder_is_on_it_too_and_needs_n
 ])
 def test_a_caller_and_a_passenger_are_no_one_on_the_road(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_text_opening_on_a_report_it_comes_from_still_opens_on_its_bus():
+    assert stages("This one's off an incident report. Single-decker on a high street coming up to a zebra crossing. "
+                  "A woman is at the kerb waiting to go, so the bus stops for her.") == [
+        [("ego", "stop", None), ("pedestrian", "on_the_sidewalk", "near_the_crosswalk")]]

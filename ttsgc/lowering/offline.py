@@ -7399,11 +7399,12 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if first is None or not _may_drive_the_scene(first):
         return None
     earliest = min((a[0] for a in first.actions), default=0)
-    if not driver_named and not first.waits_to_turn and (not any(a[4] in OWN_WAY for a in first.actions) or any(
-            a[0] == earliest and a[4] in ("stop", "block") for a in first.actions)):
+    opening = min((a for a in first.actions if a[0] == earliest), key=lambda a: a[3], default=None)
+    if not driver_named and not first.waits_to_turn and (not any(a[4] in OWN_WAY for a in first.actions) or
+                                                         opening is not None and opening[4] in ("stop", "block")):
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
         # pulled away": met by someone, who is the ego
-    named = next((u for u in r.units if u.category == "agents"), None)
+    named = next((u for u in r.units if u.category == "agents" and u.meaning != "none"), None)
     if not people_first and (named is None or next(u for u in r.units if u.tokens[0].sentence ==
                                                     named.tokens[0].sentence and u.category != "word" and
                                                     not u.meaning.startswith("compass_")) is not named):
