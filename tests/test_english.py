@@ -7450,3 +7450,17 @@ def test_a_text_opening_on_a_report_it_comes_from_still_opens_on_its_bus():
     assert stages("This one's off an incident report. Single-decker on a high street coming up to a zebra crossing. "
                   "A woman is at the kerb waiting to go, so the bus stops for her.") == [
         [("ego", "stop", None), ("pedestrian", "on_the_sidewalk", "near_the_crosswalk")]]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Hi all, I'm trying to set up a cut-in in esmini. The ego drives in the right lane and a white SUV a bit ahead "
+     "of it in the middle lane cuts in right in front of the ego. I tried a LaneChangeAction with a relative "
+     "target lane but the SUV just drifts off the road.",
+     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+    ("Static obstacle. A truck stands in the ego lane 80 m ahead. Ego performs LaneChangeAction to the left lane.",
+     [("car", "change_lane_to_left", "ego"), ("truck", "stop", "front")]),
+    ("The ego stops at its stop sign and a car from the right turns left in front of it. How do I start the ego's "
+     "second maneuver when the car has gone?", [("car", "stop", "ego"), ("car", "turn_left", "road_of_right_turn")]),
+])
+def test_a_scenario_formats_element_tried_and_a_scene_set_up_are_the_tool_talked_about(prompt, expected):
+    assert agents(prompt) == expected

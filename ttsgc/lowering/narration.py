@@ -168,7 +168,7 @@ def read_narration(prompt: str) -> Narration:
     text = _event_record(_dictated(prompt, notes), notes)
     text = _gherkin(text, notes)
     text = _bug_report(text, notes)
-    text = _chatbot_request(text, notes)
+    text = _chatbot_request(_tool_elements(text), notes)
     text = _without_letter_frame(text, notes)
     text = _testimony(text, notes)
     text = RATING.sub("", text, count=1) if RATING.match(text) else text
@@ -271,6 +271,23 @@ LEAVE_OUT = re.compile(r"^\s*(?:please\s+)?(?:don't|do not|never|avoid)\s+(?:inc
                        r"including|adding|putting|placing|spawning|having|using)\s+(?:in\s+)?(?:any\s+)?", re.I)
 META_AGENTS = re.compile(r"\b(?:(?:all|every|each|any|the|their|its|other|of)\s+)*(?:agents?|actors?|vehicles?|"
                          r"road users?|participants?|entities|entity|objects?|npcs?|traffic participants?)\b", re.I)
+
+
+TOOL_ELEMENT = re.compile(r"\b[A-Z][a-z]+(?:[A-Z][a-z]*)+(?:Action|Condition|Trigger|Controller|Position|Event|"
+                          r"Element|Group|Storyboard|Maneuver|Act|Story|Entity|Entities)s?\b")
+
+
+def _tool_elements(text: str) -> str:
+    """'I tried a LaneChangeAction', 'StoryboardElementStateCondition isn't firing': a scenario format's element
+    named by the one who writes with it, or said not to work, is the tool talked about, not an agent's manoeuvre
+    ('Ego performs LaneChangeAction to the left lane' is the scene's)."""
+    def tool(m: re.Match) -> str:
+        before = re.findall(r"[a-z']+", text[max(0, m.start() - 40):m.start()].lower())[-4:]
+        after = text[m.end():m.end() + 24].lower()
+        mine = bool({"i", "i'm", "i've", "my", "we", "our", "we've", "tried", "using", "added"} & set(before))
+        failing = re.match(r"\s*(?:isn't|is not|doesn't|does not|never|won't|keeps|just)\b", after) is not None
+        return "element" if mine or failing else m.group(0)
+    return TOOL_ELEMENT.sub(tool, text)
 
 
 def _chatbot_request(text: str, notes: list[str]) -> str:

@@ -5468,6 +5468,13 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
                                                     "exercise", "check", "set", "suite", "batch", "series",
                                                     "coverage", "backlog", "campaign", "library", "catalog"):
         return True  # "merge test", "cut-in scenario", "the highway merge set": the name of a test or a set
+    if i >= 2 and units[i - 1].word in ("a", "an", "the", "this", "that") and \
+            units[i - 2].tokens[-1].word in BUILDING_A_SCENE:
+        return True  # "trying to set up a cut-in in esmini", "how do I model the merge": the scene built, no act
+    if i >= 1 and units[i].tokens[0].word in ("maneuver", "manoeuvre", "maneuvers", "manoeuvres") and (
+            units[i - 1].word in ("first", "second", "third", "next", "last", "final", "other") or
+            units[i - 1].tokens[-1].possessive):
+        return True  # "the ego's second maneuver", "its last manoeuvre": the manoeuvre talked about, not made here
     if i >= 2 and units[i - 1].word == "the" and units[i - 2].word in COPULAS and \
             units[i].meaning in ("cut_in", "lane_change", "block") and (
                 i + 1 == len(units) or units[i + 1].category == "comma" or
@@ -5478,6 +5485,10 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
         i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
             "maneuver", "manoeuvre", "turn", "lane", "overtake", "merge", "cut")  # "at start of manoeuvre"
 
+
+BUILDING_A_SCENE = {"up", "build", "building", "built", "model", "modelling", "modeling", "modelled", "modeled",
+                    "simulate", "simulating", "script", "scripting", "implement", "implementing", "reproduce",
+                    "reproducing", "configure", "configuring", "create", "creating"}  # what one does to a scenario
 
 PLANNING = {"queued", "queues", "planned", "plans", "planning", "scheduled", "proposed", "intended", "considered",
             "requested", "commanded", "queue", "plan"}  # a planner's or a driver's manoeuvre still to come
