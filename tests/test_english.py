@@ -7464,3 +7464,10 @@ def test_a_text_opening_on_a_report_it_comes_from_still_opens_on_its_bus():
 ])
 def test_a_scenario_formats_element_tried_and_a_scene_set_up_are_the_tool_talked_about(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_phone_transcripts_speaker_labels_are_no_agents():
+    assert agents("Agent: Okay, can you tell me what happened?\nCaller: Yeah, so, um, I was stopped at a red light, "
+                  "and a city bus behind me just didn't stop and went right into the back of me.\nAgent: Was anyone "
+                  "else involved?\nCaller: No, just me and the bus.") == [("bus", "go_straight", "back"),
+                                                                            ("car", "stop", "ego")]

@@ -33,7 +33,9 @@ CLOSING = re.compile(r"^\s*(?:cheers|thanks|thank you|many thanks|thanks a lot|t
 RATING = re.compile(r"^\s*(?:(?:[0-5](?:\.5)?|one|two|three|four|five)\s*(?:/\s*5\s*)?stars?|[0-5]\s*/\s*5|"
                     r"[\u2605\u2606\u2B50]+)\s*[!.,:;\-]*\s*", re.I)
 SPEAKER = re.compile(r"^\s*((?:[A-Z][A-Z.'\-]*\s?){1,4}):\s*", re.M)  # "MR. PRICE:", "THE COURT:"
-QA_LABEL = re.compile(r"^\s*(Q|A|QUESTION|ANSWER|THE WITNESS)\s*[:.]\s*", re.I)
+QA_LABEL = re.compile(r"^\s*(Q|A|QUESTION|ANSWER|THE WITNESS|AGENT|CALLER|CUSTOMER|OPERATOR|INTERVIEWER|"
+                      r"HANDLER|CLAIMANT|INSURED|REP)\s*(?::|\.(?=\s))\s*", re.I)
+ASKERS = {"Q", "QUESTION", "AGENT", "OPERATOR", "INTERVIEWER", "HANDLER", "REP"}  # who asks, in a transcript
 NEGATIVE_ANSWER = re.compile(r"^\s*(?:no(?:\s+[a-z]+){0,2}|none|nobody|no one|nothing|not yet|not then|"
                              r"not that i (?:saw|could see|know of)|i (?:could not|couldn't|can't|cannot) (?:tell|say)|"
                              r"i (?:don't|do not) (?:know|remember|recall)|not sure|i'm not sure|i am not sure|"
@@ -612,7 +614,7 @@ def _testimony(text: str, notes: list[str]) -> str:
             notes.append(f"read past '{line.strip()[:40]}' (not the witness's account)")
             continue
         body = line[label.end():] if label else line
-        kind = ("Q" if label.group(1).upper()[0] == "Q" else "A") if label else ""  # "THE WITNESS:" answers
+        kind = ("Q" if label.group(1).upper() in ASKERS else "A") if label else ""  # "THE WITNESS:" answers
         if kind == "Q":
             body = TELL_US.sub("", body)  # "Tell us what the white SUV did.": the SUV is what the answer is about
         if kind == "Q" and "?" in body:  # "Q: You can answer." asks nothing
