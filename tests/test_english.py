@@ -7471,3 +7471,16 @@ def test_a_phone_transcripts_speaker_labels_are_no_agents():
                   "and a city bus behind me just didn't stop and went right into the back of me.\nAgent: Was anyone "
                   "else involved?\nCaller: No, just me and the bus.") == [("bus", "go_straight", "back"),
                                                                             ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Stop 1: Pupil turns left at the T-junction; a bus comes from the right.",
+     [("bus", "go_straight", "road_of_right_turn"), ("car", "turn_left", "ego")]),
+    ("Stop 7: puffin crossing, evening lesson. Pupil approaches on amber, then stops at the stop line while an "
+     "elderly man crosses.", [("car", "go_straight", "ego"), ("car", "stop", "ego"),
+                             ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("A pupil crosses the road in front of the ego.", [("car", "go_straight", "ego"),
+                                                       ("pedestrian", "cross_the_road", "front")]),
+])
+def test_a_learner_who_drives_is_at_the_wheel_and_a_pupil_who_crosses_is_on_foot(prompt, expected):
+    assert agents(prompt) == expected

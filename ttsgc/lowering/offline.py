@@ -7245,6 +7245,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         _protagonist_vehicle(r, driver_named=False)  # "I watch drivers speed past the school ... a car speeding
         # past, and a boy running out in front of it": an onlooker speaks; the scene is told from the car
     _the_ego_said_again(r)
+    _the_learner_at_the_wheel(r)
     _witness_on_foot(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
@@ -7552,6 +7553,31 @@ def _the_ego_said_again(r: _Reader) -> None:
             continue
         r.entities.remove(e)
         r.notes.append(f"read 'the {e.head}' as the ego named again: it does nothing and is placed nowhere")
+
+
+LEARNERS = {"pupil", "learner", "student", "trainee", "apprentice"}
+DRIVING_LESSON = {"lesson", "lessons", "instructor", "mirrors", "handbrake", "manoeuvres", "maneuvers"}
+VEHICLE_MANOEUVRES = {"turn", "turn_left", "turn_right", "u_turn", "lane_change", "lane_left", "lane_right", "cut_in"}
+
+
+def _the_learner_at_the_wheel(r: _Reader) -> None:
+    """'Stop 1: Pupil turns left at the T-junction': a learner who turns or changes lane is at the wheel of the
+    vehicle the scene is told from, the ego, not on foot."""
+    lesson = bool({t.word for t in r.tokens} & DRIVING_LESSON)
+    for e in list(r.entities):
+        if e.is_ego or e.type != "pedestrian" or e.count != 1 or e.head not in LEARNERS or not (
+                any(a[4] in VEHICLE_MANOEUVRES | {"go_straight"} for a in e.actions) or lesson and e.actions and
+                not any(a[4] in ("cross", "walk") for a in e.actions) and
+                not e.features & {"on_sidewalk", "crosswalk"}):  # "Pupil approaches on amber, then stops" in a
+            continue  # lesson plan: at the wheel
+        ego = _ego_entity(r, e.stage)
+        ego.actions += e.actions
+        ego.features |= e.features - {"on_sidewalk"}
+        for x in r.entities:
+            if x.relative_to is e:
+                x.relative_to = ego
+        r.entities.remove(e)
+        r.notes.append(f"read the {e.head} who drives as the ego")
 
 
 def _witness_on_foot(r: _Reader) -> None:
