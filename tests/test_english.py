@@ -7484,3 +7484,11 @@ def test_a_phone_transcripts_speaker_labels_are_no_agents():
 ])
 def test_a_learner_who_drives_is_at_the_wheel_and_a_pupil_who_crosses_is_on_foot(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_short_heading_names_its_case_and_crossing_outside_a_crosswalk_puts_none_there():
+    lowered = lower_prompt("Pedestrian crossing outside a crosswalk. Our vehicle is driving along a street when a "
+                           "pedestrian crosses the road ahead.", "offline").scenario
+    assert [(a.type, a.action, a.relative_to_ego) for a in lowered.agents()] == [
+        ("car", "go_straight", None), ("pedestrian", "cross_the_road", "front")]
+    assert "crosswalk" not in lowered.road.required_objects

@@ -1505,7 +1505,8 @@ def _road(r: _Reader) -> RoadSpec:
             said = {t.word for t in u.tokens}
             word = "continental_crosswalk" if "zebra" in said else "crosswalk"
             if not any(w in V.CROSSWALK_OBJECTS for w in fields["required_objects"] + fields["without_objects"]) \
-                    and "any" not in said:  # "outside any crosswalk": there may be none
+                    and "any" not in said and not (u.meaning == "off_crosswalk" and said & {"a", "an"}):
+                # "outside any crosswalk", "crossing outside a crosswalk": there may be none
                 put(word, False)
         if u.category == "comma" or (u.category == "word" and u.word in
                                      {"and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic"}
@@ -4271,7 +4272,10 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
     if any(t.word == "ego" for t in first):
         return None
     listed = any(t.word in HEADING_WORDS for t in first) or any(t.word == "," for t in first) or \
-        said.sentence == 0
+        said.sentence == 0 or len(first) <= 8 and not any(
+            t.word != t.base and not t.word.endswith("ing") and not t.plural and
+            (lexicon().phrases.get((t.base,)) or ("",))[0] == "actions" for t in first)  # "Pedestrian crossing
+    # outside a crosswalk.": a short line with no finite verb is a heading
     coded = said.sentence > 0 and first and first[0].word == "case"  # "SC-07 Emergency vehicle approach from the
     # rear.": a line opened by a document's identifier is the case's title, whatever places it says
     named = [e for e in r.entities if e.headline and not e.label and not e.is_ego and e.count == 1 and
