@@ -7492,3 +7492,15 @@ def test_a_short_heading_names_its_case_and_crossing_outside_a_crosswalk_puts_no
     assert [(a.type, a.action, a.relative_to_ego) for a in lowered.agents()] == [
         ("car", "go_straight", None), ("pedestrian", "cross_the_road", "front")]
     assert "crosswalk" not in lowered.road.required_objects
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("UC-12 Unprotected left turn. Actor: the automated vehicle (AV); the safety driver monitors. Preconditions: "
+     "the AV is waiting at the stop line on a green light. Main flow: 1. An oncoming car goes straight through the "
+     "intersection. 2. Once it has cleared, the AV turns left.",
+     [("car", "go_straight", "road_of_straight"), ("car", "stop", "ego"), ("car", "turn_left", "ego")]),
+    ("Our vehicle is following a sport utility vehicle when the SUV suddenly brakes to a halt.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+])
+def test_a_use_cases_actor_is_the_ego_and_a_body_spelt_out_is_its_abbreviation(prompt, expected):
+    assert agents(prompt) == expected

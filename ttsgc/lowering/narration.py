@@ -154,6 +154,10 @@ def _event_record(text: str, notes: list[str]) -> str:
         text = re.sub(r"\bspd\.?\s*:?\s*(\d+)(?:\s*to\s*\d+)?", r"doing \1", text, flags=re.I)  # its own speed
         text = re.sub(r"\s*\|\s*", ". ", text)  # each field said apart
         notes.append("read the record's vehicle field as the ego")
+    elif re.search(r"(?:^|(?<=[.\n]))\s*(?:primary\s+)?actor\s*:", text, re.I) and \
+            re.search(r"\b(?:preconditions?|main flow|trigger|postconditions?)\s*:", text, re.I):
+        text = re.sub(r"((?:^|(?<=[.\n]))\s*)(?:primary\s+)?actor\s*:\s*", r"\1Ego: ", text, count=1, flags=re.I)
+        notes.append("read the use case's actor as the ego")  # "UC-12 ... Actor: the automated vehicle (AV)."
     elif len(FORM_FIELD.findall(text)) >= 2 and RECORD_VEHICLE_KEY.search(text):
         text = RECORD_VEHICLE_KEY.sub("Ego: ", text, count=1)  # "Vehicle: Ford Focus pool car. Location: ..."
         notes.append("read the form's vehicle field as the ego")
@@ -188,7 +192,7 @@ def read_narration(prompt: str) -> Narration:
     text = _designated_groups(text, notes)
     text = _bare_appositions(text)
     text = _declared_ego(text, notes)
-    text = _vehicle_numbers(text)
+    text = _vehicle_numbers(_abbreviated_bodies(text))
     text = _passengers_driver(text, notes)
     text = _crews_vehicle(text, notes)
     text = _screenplay_driver(text, notes)
@@ -759,6 +763,11 @@ def _street_names(text: str) -> str:
         return "" if entry is not None and entry[0] in ("actions", "positions", "road", "behaviours", "weather") \
             else m.group(0)
     return STREET_NAMED.sub(name, STREET_ABBREVIATION.sub(name, text))
+
+
+def _abbreviated_bodies(text: str) -> str:
+    """'a sport utility vehicle ... the SUV': a body spelt out is the same as its abbreviation, said again."""
+    return re.sub(r"\bsport[- ]utility vehicle(s?)\b", r"SUV\1", text, flags=re.I)
 
 
 def _vehicle_numbers(text: str) -> str:
