@@ -7504,3 +7504,15 @@ def test_a_short_heading_names_its_case_and_crossing_outside_a_crosswalk_puts_no
 ])
 def test_a_use_cases_actor_is_the_ego_and_a_body_spelt_out_is_its_abbreviation(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("At the roundabout I took the exit to the right in the patrol car. A motorbike on the road I was heading into "
+     "was riding towards the roundabout.", [("motorcycle", "go_straight", "at_the_destination"),
+                                           ("police", "turn_right", "ego")]),
+    ("Stop 5: crossroads, traffic lights. Pupil turns right on the green. There's usually a jogger crossing the "
+     "road she's turning into as well.", [("car", "turn_right", "ego"),
+                                          ("pedestrian", "cross_the_road", "at_the_destination")]),
+])
+def test_the_road_the_one_at_the_wheel_heads_or_turns_into_is_the_destination(prompt, expected):
+    assert agents(prompt) == expected

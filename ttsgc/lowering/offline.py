@@ -7575,7 +7575,9 @@ def _the_learner_at_the_wheel(r: _Reader) -> None:
                 not e.features & {"on_sidewalk", "crosswalk"}):  # "Pupil approaches on amber, then stops" in a
             continue  # lesson plan: at the wheel
         ego = _ego_entity(r, e.stage)
-        ego.actions += e.actions
+        turned = {a[0] for a in e.actions if a[4] in ("turn_left", "turn_right") or a[4] == "turn" and a[5]}
+        ego.actions = [a for a in ego.actions if not (a[4] == "turn" and not a[5] and a[0] in turned)] + e.actions
+        # ("the road she's turning into": the turn the learner was said to make, with its side)
         ego.features |= e.features - {"on_sidewalk"}
         for x in r.entities:
             if x.relative_to is e:
