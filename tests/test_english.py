@@ -7516,3 +7516,13 @@ def test_a_use_cases_actor_is_the_ego_and_a_body_spelt_out_is_its_abbreviation(p
 ])
 def test_the_road_the_one_at_the_wheel_heads_or_turns_into_is_the_destination(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, lanes", [
+    ("Queens Road is a single carriageway. A van is parked on the nearside ahead; I pulled out to pass it and an "
+     "Audi came towards me.", 1),
+    ("It's pretty narrow, one lane each way. A box truck was parked on my right and I squeezed past it.", 1),
+    ("A three-lane motorway: I pulled out to pass a parked van.", 3),
+])
+def test_a_road_said_to_have_one_lane_each_way_gets_no_second_lane_from_a_pass(prompt, lanes):
+    assert road(prompt).lanes == lanes

@@ -1651,6 +1651,16 @@ def _measured_in_miles(tokens: list[Token]) -> bool:
             "i", "us", "interstate") for k, t in enumerate(tokens))
 
 
+ONE_LANE_EACH_WAY = (("single", "carriageway"), ("one", "lane", "each", "way"), ("one", "lane", "in", "each"),
+                     ("a", "lane", "each", "way"), ("single", "track"), ("single", "lane", "road"))
+
+
+def _one_lane_each_way(tokens: list[Token]) -> bool:
+    """'a single carriageway', 'one lane each way': a road with no second lane in a direction."""
+    words = [t.word for t in tokens]
+    return any(tuple(words[k:k + len(p)]) == p for p in ONE_LANE_EACH_WAY for k in range(len(words)))
+
+
 def _speed_limits(r: _Reader) -> list[str]:
     """'a 30 km/h speed limit', 'a speed limit of ninety', 'a limit of forty', 'twenty miles per hour'."""
     tokens, out = r.tokens, []
@@ -7284,6 +7294,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                                                any("road_straight" in e.features for e in r.entities) and turns)
     has_crosswalk = any(w in V.CROSSWALK_OBJECTS for w in road.required_objects)
     stages, oncoming = _compose(r, junction, has_crosswalk)
+    if road.lanes < 2 and _one_lane_each_way(r.tokens):
+        oncoming = set(oncoming) | {a.name for st in stages for a in st}  # "one lane each way", "single carriageway":
+        # one who pulls out round another, or passes, uses the other side's lane; no second lane is implied
     ego = stages[0][0]
     sampled_comments: dict[str, Comment] = {}
     if kind is not None:
