@@ -7526,3 +7526,9 @@ def test_the_road_the_one_at_the_wheel_heads_or_turns_into_is_the_destination(pr
 ])
 def test_a_road_said_to_have_one_lane_each_way_gets_no_second_lane_from_a_pass(prompt, lanes):
     assert road(prompt).lanes == lanes
+
+
+def test_a_pub_named_by_a_colour_is_no_signal_and_no_signs_is_no_limit():
+    lowered = lower_prompt("The crossroads by the Red Lion has no signs and no lights. A car turns left.", "offline")
+    assert lowered.scenario.road.required_signals == ()
+    assert not any("speed limit" in n for n in lowered.notes)

@@ -1255,8 +1255,10 @@ def matches(tokens: list[Token], start: int = 0, stop: int | None = None) -> lis
                     continue
                 entry = _lookup(lex, span)
                 if entry is not None and entry[0] == "road" and span[-1].word in SIGNAL_COLOURS and \
-                        i + n < len(tokens) and _names_an_agent(lex, tokens[i + n]):
-                    continue  # "the red car", "a green bus": the vehicle's colour, no signal
+                        i + n < len(tokens) and tokens[i + n].sentence == span[0].sentence and (
+                            _names_an_agent(lex, tokens[i + n]) or tokens[i + n].word.isalpha() and
+                            tokens[i + n].base not in lex.vocabulary and not tokens[i + n].misspelt):
+                    continue  # "the red car", "a green bus": the vehicle's colour; "by the Red Lion": a name
                 if entry is not None:
                     found = Match(i, i + n, entry[0], entry[1], " ".join(t.word for t in span))
                     break

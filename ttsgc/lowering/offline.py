@@ -1668,8 +1668,9 @@ def _speed_limits(r: _Reader) -> list[str]:
     for i, t in enumerate(tokens):
         value = _word_number(t)
         if value is None or (i + 1 < len(tokens) and _word_number(tokens[i + 1]) is not None
-                             and read_number(t.word) is None) or _road_number(tokens, i):
-            continue  # the tens of "thirty five": read at the units; "I-95" names a road
+                             and read_number(t.word) is None) or _road_number(tokens, i) or \
+                value == 0 and not t.word.isdigit():
+            continue  # the tens of "thirty five": read at the units; "I-95" names a road; "no signs" counts none
         value, first = _number_before(tokens, i)
         alone = all(first <= x.index <= i for x in _sentence(tokens, t.sentence))
         around = {x.word for x in tokens[max(0, first - 4): i + 5] if x.sentence == t.sentence or alone and
