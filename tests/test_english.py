@@ -7532,3 +7532,8 @@ def test_a_pub_named_by_a_colour_is_no_signal_and_no_signs_is_no_limit():
     lowered = lower_prompt("The crossroads by the Red Lion has no signs and no lights. A car turns left.", "offline")
     assert lowered.scenario.road.required_signals == ()
     assert not any("speed limit" in n for n in lowered.notes)
+
+
+def test_a_red_light_violation_by_crossing_traffic_puts_no_crosswalk_there():
+    assert road("Red-light violation by crossing traffic. Our vehicle proceeds straight through a signalized "
+                "intersection on a green light.").required_objects == ()
