@@ -7537,3 +7537,15 @@ def test_a_pub_named_by_a_colour_is_no_signal_and_no_signs_is_no_limit():
 def test_a_red_light_violation_by_crossing_traffic_puts_no_crosswalk_there():
     assert road("Red-light violation by crossing traffic. Our vehicle proceeds straight through a signalized "
                 "intersection on a green light.").required_objects == ()
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Quiet one today. One car all morning and it stopped for me and the two Patel girls at the crossing.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+      ("pedestrian", "cross_the_road", "near_the_crosswalk"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("I was stationary at a red light at a crossroads. Then I turned right through the red. A bus coming from the "
+     "road on my left had stopped for me.", [("bus", "stop", "road_of_left_turn"), ("car", "stop", "ego"),
+                                            ("car", "turn_right", "ego")]),
+])
+def test_a_speaker_who_sees_people_over_a_crossing_is_on_foot_and_a_driver_stopped_for_is_not(prompt, expected):
+    assert agents(prompt) == expected

@@ -7610,12 +7610,27 @@ def _witness_on_foot(r: _Reader) -> None:
     words = set().union(*said) if said else set()
     if words & {"standing water", "standing traffic", "standing queue"}:
         words -= {"standing"}  # "I hit standing water": what stood, not the witness
-    if not words & ON_FOOT or words & AT_THE_WHEEL:
+    patrol = _speaker_on_the_crossing(r.tokens, strong=bool(ego.actions))
+    if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL):
         return
-    own = [t for t in r.tokens if t.word in ("i", "i'm")]
+    own = [t for t in r.tokens if t.word in ("i", "i'm", "me", "my", "us", "we")]
     movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
-              and any(a[4] not in ("stop", "try") for a in e.actions)]
-    if not movers:
+              and any(a[4] not in ("stop", "try") or patrol for a in e.actions)]  # ("a van stops for us": the one
+    if not movers:  # met at the crossing)
+        return
+    if patrol:
+        subject = movers[0]
+        ego.is_ego, ego.type, ego.features, ego.road_type = False, "pedestrian", {"crosswalk"}, None
+        waits = any(t.word in ("stood", "standing", "waiting", "waited") and r.tokens[k - 1].word in ("me", "i", "was")
+                    for k, t in enumerate(r.tokens) if k)  # "with me stood on the kerb": waiting to cross
+        ego.actions = [(0, 2, ACTION_RANK["stop" if waits else "cross"], r.tick(), "stop" if waits else "cross",
+                        None)]
+        subject.is_ego = True
+        subject.features = {f for f in subject.features if f.startswith("compass_")}
+        r.entities.remove(subject)
+        r.entities.insert(0, subject)
+        r.notes.append(f"inferred: the speaker sees people over a crossing, on foot; the '{subject.head}' that meets "
+                       "them is the ego")
         return
     subject = movers[0]
     for e in [e for e in r.entities if not e.is_ego and e.head == "vehicle" and not e.actions and e is not subject]:
@@ -7641,6 +7656,21 @@ def _witness_on_foot(r: _Reader) -> None:
     r.entities.insert(0, subject)
     r.notes.append(f"inferred: the witness is on foot{'' if placed else ', placed by no one (no agent)'}; the "
                    f"'{subject.head}' the statement is about is the ego")
+
+
+PATROLLING = (("lollipop",), ("crossing", "with", "me"), ("over", "with", "me"), ("across", "with", "me"),
+              ("my", "crossing"), ("my", "stick"))
+STOPPED_FOR_ME = (("stopped", "for", "me"), ("stops", "for", "me"), ("stopped", "for", "us"), ("stops", "for", "us"))
+
+
+def _speaker_on_the_crossing(tokens: list[Token], strong: bool) -> bool:
+    """'I had four of the juniors crossing with me', 'I've got the lollipop out on the crossing', and, from a
+    speaker who does nothing on the road, 'it stopped for me and the two girls at the crossing': the speaker sees
+    people over a crossing, on foot, and the vehicles that meet them are the scene."""
+    words = [t.word for t in tokens]
+    cues = PATROLLING if strong else PATROLLING + STOPPED_FOR_ME
+    return any(t.word in ("crossing", "zebra", "crosswalk", "lights") for t in tokens) and \
+        any(tuple(words[k:k + len(p)]) == p for p in cues for k in range(len(words)))
 
 
 def _screens_on_the_crossers_side(r: _Reader) -> None:
