@@ -7549,3 +7549,16 @@ def test_a_red_light_violation_by_crossing_traffic_puts_no_crosswalk_there():
 ])
 def test_a_speaker_who_sees_people_over_a_crossing_is_on_foot_and_a_driver_stopped_for_is_not(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "Doing 65 in the right lane and some four-wheeler in the left lane dives in right in front of my bumper.",
+    "I'm in lane one on the limiter at 52. A Merc in lane two just ahead of me cuts straight across my front.",
+])
+def test_a_speaker_who_talks_as_a_truck_driver_drives_a_truck(prompt):
+    assert lower_prompt(prompt, "offline").scenario.stages[0].agents[0].type == "truck"
+
+
+def test_a_car_driver_is_no_trucker_for_a_trailer_towed_by_another():
+    assert lower_prompt("I was driving home when a car towing a trailer pulled out in front of me.",
+                        "offline").scenario.stages[0].agents[0].type == "car"

@@ -7275,6 +7275,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
                        "no template used")
     road = _ego_lane_road(r, road)
+    _a_truckers_own(r)
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
         road.junction is None and "traffic_light" in road.required_signals and (any(
             f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
@@ -7859,6 +7860,24 @@ def _set_off_after_the_ego(tokens: list[Token], clause: Clause, before: list[Uni
     plural_verb = verb is not None and verb.tokens[0].word == verb.tokens[0].base and \
         not verb.tokens[0].word.endswith(("ed", "ing"))
     return not (plural_verb and other.count > 1)
+
+
+TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty", "trailer"), ("my", "trailer"),
+                  ("my", "rig"), ("the", "rig"), ("my", "load"), ("tachograph",), ("tacho",))
+
+
+def _a_truckers_own(r: _Reader) -> None:
+    """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
+    the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name."""
+    words = [t.word for t in r.tokens]
+    if "ego" in words or not any(tuple(words[k:k + len(p)]) == p for p in TRUCKERS_WORDS for k in range(len(words))):
+        return
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None and set(words) & SPEAKERS:
+        ego = _ego_entity(r, 0)  # "doing 65 ... in front of my bumper": the speaker, told of by no noun
+    if ego is not None and ego.type == "car" and ego.head in FIRST_PERSON | {"we", "us", "our", "ego"}:
+        ego.type = "truck"
+        r.notes.append("inferred: the speaker talks as a truck driver; the ego is a truck")
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
