@@ -333,3 +333,15 @@ def test_later_agents_beside_the_ego_queue_behind_the_first_instead_of_overlappi
     assert c1.appear.ds == 0 and c2.appear.ds < 0 and b1.appear.ds < c2.appear.ds
     assert c1.appear.ds - c2.appear.ds >= (c1.length + c2.length) / 2
     assert c2.appear.ds - b1.appear.ds >= (c2.length + b1.length) / 2
+
+
+def test_an_ego_that_leaves_the_road_before_its_later_stage_is_a_verdict_not_a_crash(tmp_path):
+    """A later stage's speed change for a vehicle SUMO has already taken off the network at its route's end is no
+    internal error: the verdict says it left the scene, and the next road is tried."""
+    src = tmp_path / "s.tsg"
+    src.write_text('scenario "walkers at a mid-block zebra"\nroad {\n    lanes >= 2\n    not at junction\n'
+                   '    has continental_crosswalk\n}\nstage first {\n    ego car go_straight\n'
+                   '    pedestrian p1 at near_the_crosswalk cross_the_road\n'
+                   '    pedestrian p2 at near_the_crosswalk cross_the_road\n    pedestrian p3 at right on_the_sidewalk\n}\n'
+                   'stage second {\n    ego car stop\n}\n')
+    assert main(["compile", str(src), "-o", str(tmp_path / "s.xosc")]) in (0, 5)

@@ -7562,3 +7562,8 @@ def test_a_speaker_who_talks_as_a_truck_driver_drives_a_truck(prompt):
 def test_a_car_driver_is_no_trucker_for_a_trailer_towed_by_another():
     assert lower_prompt("I was driving home when a car towing a trailer pulled out in front of me.",
                         "offline").scenario.stages[0].agents[0].type == "car"
+
+
+def test_a_person_in_a_reported_question_is_no_one_on_the_road():
+    assert agents("I was driving through town. My son asked why the man was so angry. A bus comes the other way.") \
+        == [("bus", "go_straight", "front_left"), ("car", "go_straight", "ego")]

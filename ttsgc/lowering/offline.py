@@ -3517,7 +3517,9 @@ def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
         if t.sentence != sentence or t.word == ",":
             break
         after.append(t.word)
-    return bool(set(after[:5]) & OFF_THE_ROAD)
+    before = {t.word for t in r.tokens[max(0, e.said_at - 4):e.said_at] if t.sentence == sentence}
+    return bool(set(after[:5]) & OFF_THE_ROAD) or bool(before & {"why", "whether", "wondered", "asked"})
+    # ("my son asked why the man was so angry": a man in a question reported, no one on the road)
 
 
 def _waits_where_people_wait(r: _Reader, e: Entity) -> bool:

@@ -471,10 +471,10 @@ class Executor:
 
         if actor in self.movers:
             current = self.movers[actor].speed
-        elif actor in self.active:
+        elif actor in self.active and actor in ts.vehicle.getIDList():
             current = ts.vehicle.getSpeed(actor)
         else:
-            return 0.0
+            return 0.0  # (a vehicle that has left the network at its route's end changes no speed)
         return abs(current - action.value) / action.rate
 
     def _speed(self, entity: Entity, action: Action, t: float) -> None:
