@@ -342,6 +342,7 @@ def test_an_ego_that_leaves_the_road_before_its_later_stage_is_a_verdict_not_a_c
     src.write_text('scenario "walkers at a mid-block zebra"\nroad {\n    lanes >= 2\n    not at junction\n'
                    '    has continental_crosswalk\n}\nstage first {\n    ego car go_straight\n'
                    '    pedestrian p1 at near_the_crosswalk cross_the_road\n'
-                   '    pedestrian p2 at near_the_crosswalk cross_the_road\n    pedestrian p3 at right on_the_sidewalk\n}\n'
+                   '    pedestrian p2 at near_the_crosswalk cross_the_road\n'
+                   '    pedestrian p3 at right on_the_sidewalk\n}\n'
                    'stage second {\n    ego car stop\n}\n')
     assert main(["compile", str(src), "-o", str(tmp_path / "s.xosc")]) in (0, 5)

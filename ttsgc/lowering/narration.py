@@ -141,7 +141,7 @@ RECORD_VEHICLE_KEY = re.compile(r"(?<![\w-])(?:veh|vehicle|unit|asset|subject)\s
 def _event_record(text: str, notes: list[str]) -> str:
     """'Event: Harsh Braking | 2024-05-14 14:32:07 | Veh: Bus #77 | Spd 62 -> 19 km/h (x3)': a fleet system's
     record dates itself and counts its alerts (no agents), and its vehicle field names the vehicle the record is
-    about, the ego."""
+    about, the ego; so do a report form's 'Vehicle:' field and a use case's 'Actor:'."""
     text = re.sub(r"\b(\d{1,2}:\d{2}):\d{2}(?:\.\d+)?\b", r"\1", text)  # seconds of a time stamp
     text = re.sub(r"\b(\d{1,2}:\d{2})\s*[-\u2013]\s*\d{1,2}:\d{2}\b", r"\1", text)  # a span of time
     text = re.sub(r"\b(?:\d{4}-\d{2}-\d{2}|\d{1,2}/\d{1,2}/\d{2,4})\b", " ", text)  # a date
