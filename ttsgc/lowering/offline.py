@@ -3477,6 +3477,8 @@ def _said_parked(units: list[Unit], first: int, head: int) -> bool:
     return any(u.tokens[0].word == "parked" for u in units[first:head + 2])
 
 
+# After a person, words of what one says, knows, may do or was done to off the road ("the officer didn't ticket
+# anybody", "the officer who took the report agreed", "people already forgot how to drive", "lady rang in").
 OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "said", "had", "reckon", "reckons",
                 "think", "thinks", "thought", "told", "tell", "tells", "ticket", "ticketed", "tickets", "cite",
                 "cited", "fine", "fined", "arrest", "arrested", "charge", "charged", "book", "booked", "interviewed",
@@ -3484,8 +3486,7 @@ OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "sai
                 "agree", "agrees", "forgot", "forget", "forgets", "forgotten", "know", "knows", "knew", "seem",
                 "seems", "seemed", "learn", "learned", "learnt", "may", "need", "needs", "wish", "wishes", "can",
                 "will", "shall", "ought", "choose", "consider", "nowhere", "rang", "rung", "phoned", "rings",
-                "passenger"}  # "the officer didn't ticket anybody", "the officer
-# who took the report agreed", "people already forgot how to drive"
+                "passenger"}
 
 
 LOADED = (("on", "the", "back"), ("on", "the", "trailer"), ("on", "the", "flatbed"), ("on", "the", "bed"),
@@ -7582,15 +7583,16 @@ VEHICLE_MANOEUVRES = {"turn", "turn_left", "turn_right", "u_turn", "lane_change"
 
 
 def _the_learner_at_the_wheel(r: _Reader) -> None:
-    """'Stop 1: Pupil turns left at the T-junction': a learner who turns or changes lane is at the wheel of the
-    vehicle the scene is told from, the ego, not on foot."""
+    """'Stop 1: Pupil turns left at the T-junction', 'Pupil goes straight across': a learner who turns, changes lane
+    or goes straight, or who does anything but walk in a driving lesson ('Pupil approaches on amber, then stops'),
+    is at the wheel of the vehicle the scene is told from, the ego, not on foot."""
     lesson = bool({t.word for t in r.tokens} & DRIVING_LESSON)
     for e in list(r.entities):
         if e.is_ego or e.type != "pedestrian" or e.count != 1 or e.head not in LEARNERS or not (
                 any(a[4] in VEHICLE_MANOEUVRES | {"go_straight"} for a in e.actions) or lesson and e.actions and
                 not any(a[4] in ("cross", "walk") for a in e.actions) and
-                not e.features & {"on_sidewalk", "crosswalk"}):  # "Pupil approaches on amber, then stops" in a
-            continue  # lesson plan: at the wheel
+                not e.features & {"on_sidewalk", "crosswalk"}):
+            continue
         ego = _ego_entity(r, e.stage)
         turned = {a[0] for a in e.actions if a[4] in ("turn_left", "turn_right") or a[4] == "turn" and a[5]}
         ego.actions = [a for a in ego.actions if not (a[4] == "turn" and not a[5] and a[0] in turned)] + e.actions
@@ -8133,8 +8135,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         parked_beside = position in ("front_left", "front_right") and e.type not in V.VULNERABLE_TYPES and (
             action == "stop" and "parked" in e.features and "lane_said" not in e.features
             or action == "stop" and "ahead" in e.features and not e.features & {"lane_said", "from_lane"})
-        # "a parked bus on the right", "pulls out of a parking spot on the right and blocks me", "a school bus
-        # stopped ahead on our right": at the kerb, no lane of its own
+        # "a parked bus on the right", "a school bus stopped ahead on our right": at the kerb, no lane of its own
+        # (but "a bus stopped at a bus stop in the right lane ahead" is in a lane)
         if is_oncoming or parked_beside:
             oncoming.add(e.key)
     for e in others:  # "in front of a truck", "the driver got out of the van on the left": at the truck's
