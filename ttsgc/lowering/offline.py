@@ -6365,17 +6365,21 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     if not _one_vehicle(np) or np.first < 2 or units[np.first - 1].word != "in" or \
             units[np.first].word not in ("the", "my", "our"):
         return False
-    if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents"):
+    sentence = units[np.first].tokens[0].sentence
+    opening = [x for x in units[:np.first] if x.tokens[0].sentence == sentence]
+    unsaid = bool(opening) and opening[0].category == "actions" and \
+        not any(x.category == "agents" and x.meaning != "none" for x in opening)  # "Sat at the crossroads in the box
+    # van waiting to go": a sentence opened by what the speaker was doing, with no subject, says where they sit
+    if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents") and not (
+            unsaid and units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith("ing")):
         return False  # "in the van ahead", "in the car that pulled out": another
     named_ego = any(t.word == "ego" for t in r.tokens)  # (an ego supplied for a verb with no subject is 'ego')
     if any(x.is_ego and x.head not in FIRST_PERSON | {"we"} and (x.head != "ego" or named_ego) for x in r.entities):
         return False
     egos = [u for u in r.units if u.category == "agents" and u.meaning == "ego"]
     if not egos:  # "Rolling up on it now in the Kenworth": no one named, a participle with no subject says where
-        sentence = units[np.first].tokens[0].sentence  # the teller sits ("... up the inside of me": a speaker)
-        opening = [x for x in units[:np.first] if x.tokens[0].sentence == sentence]
-        return bool(opening) and opening[0].category == "actions" and opening[0].tokens[0].word.endswith("ing") and \
-            not any(x.category == "agents" and x.meaning != "none" for x in opening) or \
+        # the teller sits ("... up the inside of me": a speaker)
+        return unsaid and opening[0].tokens[0].word.endswith("ing") or \
             any(t.word in SPEAKERS - {"you", "your"} for t in r.tokens)
     return any(u.tokens[0].word in SPEAKERS for u in egos)
 
