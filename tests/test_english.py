@@ -7570,7 +7570,7 @@ def test_a_person_in_a_reported_question_is_no_one_on_the_road():
 
 
 def test_a_subjectless_opening_says_where_the_speaker_sits_even_with_what_they_were_doing_after():
-    lowered = lower_prompt("Sat at the crossroads in the box van waiting to go, and an ambulance comes tearing "
+    lowered = lower_prompt("Sat at the crossroads in the lorry waiting to go, and an ambulance comes tearing "
                            "across from the left on blue lights. I stayed put till it was gone.", "offline")
     assert [(a.type, a.action, a.relative_to_ego) for a in lowered.scenario.stages[0].agents] == [
         ("truck", "stop", None), ("ambulance", "go_straight", "road_of_left_turn")]
