@@ -7574,3 +7574,8 @@ def test_a_subjectless_opening_says_where_the_speaker_sits_even_with_what_they_w
                            "across from the left on blue lights. I stayed put till it was gone.", "offline")
     assert [(a.type, a.action, a.relative_to_ego) for a in lowered.scenario.stages[0].agents] == [
         ("truck", "stop", None), ("ambulance", "go_straight", "road_of_left_turn")]
+
+
+def test_a_person_who_drives_their_own_vehicle_is_its_driver_not_on_foot():
+    assert agents("A teenager was driving his Corsa too fast on the bypass when he hit a van coming the other way.") \
+        == [("car", "go_straight", "ego"), ("car", "go_straight", "front_left")]

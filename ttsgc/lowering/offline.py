@@ -7261,6 +7261,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.after_verbless = verbless and _has_agent(clause.units)
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
+    _drivers_of_their_own(r)
     if not ego_words or "read the narrator's driver as the ego" in narration.notes:
         _protagonist_vehicle(r, driver_named=bool(ego_words))
     elif _EGO_SPEAKS.get() and not _speaker_on_the_road(r):
@@ -7562,6 +7563,33 @@ def _the_named_cut_in(r: _Reader) -> None:
 
 
 SCENE_NAME_WORDS = {"scenario", "scene", "test", "case", "run", "event", ":", "-"}
+
+
+def _drivers_of_their_own(r: _Reader) -> None:
+    """'Liam Carter drove his Audi straight across', 'a man was driving her Kia': a person who drives, said with
+    the vehicle he or she owns in the same sentence, is that vehicle's driver, no one on foot."""
+    for e in list(r.entities):
+        if e.is_ego or e.type != "pedestrian" or e.count != 1 or e.said_at < 0 or not e.actions or \
+                any(a[4] in ("cross", "walk") for a in e.actions) or e.features & {"on_sidewalk", "crosswalk"}:
+            continue
+        sentence = r.tokens[e.said_at].sentence
+        words = [t for t in r.tokens[e.said_at + 1:] if t.sentence == sentence]
+        drives = next((k for k, t in enumerate(words) if t.base in ("drive", "driving", "drove", "driven")), None)
+        if drives is None:
+            continue
+        owned = next((v for v in r.entities if not v.is_ego and v.type not in V.VULNERABLE_TYPES and
+                      v.said_at > e.said_at and r.tokens[v.said_at].sentence == sentence and
+                      any(t.word in ("his", "her", "their") for t in r.tokens[max(0, v.said_at - 3):v.said_at])),
+                     None)
+        if owned is None:
+            continue
+        owned.actions += e.actions
+        owned.behavior = owned.behavior or e.behavior
+        for x in r.entities:
+            if x.relative_to is e:
+                x.relative_to = owned
+        r.entities.remove(e)
+        r.notes.append(f"read the {e.head} who drives the {owned.head} as its driver")
 
 
 def _the_ego_said_again(r: _Reader) -> None:
