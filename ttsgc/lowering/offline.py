@@ -1655,10 +1655,14 @@ ONE_LANE_EACH_WAY = (("single", "carriageway"), ("one", "lane", "each", "way"), 
                      ("a", "lane", "each", "way"), ("single", "track"), ("single", "lane", "road"))
 
 
+def _says_any(words: list[str], phrases) -> bool:
+    """Whether one of the phrases (tuples of words) is said, word for word, in the words."""
+    return any(tuple(words[k:k + len(p)]) == p for p in phrases for k in range(len(words)))
+
+
 def _one_lane_each_way(tokens: list[Token]) -> bool:
     """'a single carriageway', 'one lane each way': a road with no second lane in a direction."""
-    words = [t.word for t in tokens]
-    return any(tuple(words[k:k + len(p)]) == p for p in ONE_LANE_EACH_WAY for k in range(len(words)))
+    return _says_any([t.word for t in tokens], ONE_LANE_EACH_WAY)
 
 
 def _speed_limits(r: _Reader) -> list[str]:
@@ -2760,8 +2764,7 @@ def _in_general(tokens: list[Token], u: Unit) -> bool:
         return True  # "Students may choose ...", "students who wish to may consider": those told what they may
         # do, off the road (not "pedestrians should cross in front of the ego")
     words = [x.word for x in _sentence(tokens, t.sentence)]
-    return bool(HABITUAL & set(words)) or any(tuple(words[k:k + len(p)]) == p
-                                              for p in HABITUAL_PHRASES for k in range(len(words)))
+    return bool(HABITUAL & set(words)) or _says_any(words, HABITUAL_PHRASES)
 
 
 def _nobody_doing(tokens: list[Token], u: Unit) -> bool:
@@ -7522,18 +7525,12 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
     if driver_named and supplied is not None:  # the driver is the ego, the vehicle theirs
         supplied.type = first.type
         supplied.actions += [a for a in first.actions if not any(b[0] == a[0] for b in supplied.actions)]
-        for e in r.entities:
-            if e.relative_to is first:
-                e.relative_to = supplied
-        r.entities.remove(first)
+        _taken_over(r, first, supplied)
         r.notes.append(f"read the {first.head} as the ego's: the text names the ego only as its driver")
         return
     if supplied is not None:  # made for a verb with no subject, or a turn the text implies
         first.actions += [a for a in supplied.actions if not any(b[0] == a[0] for b in first.actions)]
-        for e in r.entities:
-            if e.relative_to is supplied:
-                e.relative_to = first
-        r.entities.remove(supplied)
+        _taken_over(r, supplied, first)
     first.is_ego = True
     if first.waits_to_turn:  # "a car is waiting to turn right": the ego's turn, as if said of the ego
         stage, action, direction = first.waits_to_turn
@@ -7585,11 +7582,16 @@ def _drivers_of_their_own(r: _Reader) -> None:
             continue
         owned.actions += e.actions
         owned.behavior = owned.behavior or e.behavior
-        for x in r.entities:
-            if x.relative_to is e:
-                x.relative_to = owned
-        r.entities.remove(e)
+        _taken_over(r, e, owned)
         r.notes.append(f"read the {e.head} who drives the {owned.head} as its driver")
+
+
+def _taken_over(r: _Reader, gone: Entity, into: Entity) -> None:
+    """One entity found to be another: whoever was placed by it is placed by the other, and it goes."""
+    for x in r.entities:
+        if x.relative_to is gone:
+            x.relative_to = into
+    r.entities.remove(gone)
 
 
 def _the_ego_said_again(r: _Reader) -> None:
@@ -7630,10 +7632,7 @@ def _the_learner_at_the_wheel(r: _Reader) -> None:
         ego.actions = [a for a in ego.actions if not (a[4] == "turn" and not a[5] and a[0] in turned)] + e.actions
         # ("the road she's turning into": the turn the learner was said to make, with its side)
         ego.features |= e.features - {"on_sidewalk"}
-        for x in r.entities:
-            if x.relative_to is e:
-                x.relative_to = ego
-        r.entities.remove(e)
+        _taken_over(r, e, ego)
         r.notes.append(f"read the {e.head} who drives as the ego")
 
 
@@ -7705,9 +7704,8 @@ def _speaker_on_the_crossing(tokens: list[Token], strong: bool) -> bool:
     speaker who does nothing on the road, 'it stopped for me and the two girls at the crossing': the speaker sees
     people over a crossing, on foot, and the vehicles that meet them are the scene."""
     words = [t.word for t in tokens]
-    cues = PATROLLING if strong else PATROLLING + STOPPED_FOR_ME
-    return any(t.word in ("crossing", "zebra", "crosswalk", "lights") for t in tokens) and \
-        any(tuple(words[k:k + len(p)]) == p for p in cues for k in range(len(words)))
+    return bool({"crossing", "zebra", "crosswalk", "lights"} & set(words)) and \
+        _says_any(words, PATROLLING if strong else PATROLLING + STOPPED_FOR_ME)
 
 
 def _screens_on_the_crossers_side(r: _Reader) -> None:
@@ -7906,7 +7904,7 @@ def _a_truckers_own(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
     the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name."""
     words = [t.word for t in r.tokens]
-    if "ego" in words or not any(tuple(words[k:k + len(p)]) == p for p in TRUCKERS_WORDS for k in range(len(words))):
+    if "ego" in words or not _says_any(words, TRUCKERS_WORDS):
         return
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None and set(words) & SPEAKERS:
