@@ -7579,3 +7579,63 @@ def test_a_subjectless_opening_says_where_the_speaker_sits_even_with_what_they_w
 def test_a_person_who_drives_their_own_vehicle_is_its_driver_not_on_foot():
     assert agents("A teenager was driving his Corsa too fast on the bypass when he hit a van coming the other way.") \
         == [("car", "go_straight", "ego"), ("car", "go_straight", "front_left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car ran the red light from my left and I stopped. I called an ambulance for the other driver.",
+     [("car", "go_straight", "road_of_left_turn"), ("car", "stop", "ego")]),
+    ("A car ran the red light from my left and I stopped. No EMS needed.",
+     [("car", "go_straight", "road_of_left_turn"), ("car", "stop", "ego")]),
+])
+def test_help_only_called_for_is_no_agent(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van cut in front of me, driving like a taxi driver.", [("car", "change_lane_to_right", "front_left"),
+                                                               ("car", "go_straight", "ego")]),
+    ("A car pulled out in front of me and stopped. It sounded like a truck hitting a wall.",
+     [("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]),
+    ("I'd like a bus coming the other way while I turn left.", [("bus", "go_straight", "road_of_straight"),
+                                                                ("car", "turn_left", "ego")]),
+])
+def test_a_vehicle_after_like_is_a_comparison_unless_it_is_wanted(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_one_who_asks_for_a_parked_vehicle_does_not_park():
+    assert agents("I would like a truck parked on the right.") == [("car", "go_straight", "ego"),
+                                                                    ("truck", "stop", "front_right")]
+
+
+def test_a_driver_who_tells_of_the_lollipop_lady_is_still_the_driver():
+    lowered = lower_prompt("I was stopped at the red at the crossing outside St Mary's while the lollipop lady took "
+                           "four little ones across. Then a moped came whizzing past me.", "offline")
+    ego = lowered.scenario.stages[0].agents[0]
+    assert (ego.type, ego.action) == ("car", "stop")
+
+
+@pytest.mark.parametrize("prompt", [
+    "Two lads dash onto the zebra crossing in front of me. The two lads run out onto the crossing.",
+    "Two kids are on the pavement, one of them in red. The two kids cross the road in front of me.",
+])
+def test_a_counted_group_named_again_with_its_count_is_the_same_group(prompt):
+    people = [a for a in agents(prompt) if a[0] == "pedestrian"]
+    assert len(people) == 2 and all(a[1] == "cross_the_road" for a in people)
+
+
+def test_one_of_them_described_leaves_the_group_its_count():
+    assert len([a for a in agents("Two kids are on the sidewalk, one of them holding a ball.")
+                if a[0] == "pedestrian"]) == 2
+
+
+def test_a_make_named_again_bare_with_its_place_is_the_same_vehicle():
+    assert agents("This guy in a white Silverado pickup cut me off. Silverado in the right lane swerves into my "
+                  "lane.") == [("car", "block_the_ego", "right"), ("car", "go_straight", "ego")]
+
+
+def test_a_chapter_line_in_the_third_person_goes_on_with_the_one_before():
+    prompt = ("0:04 - Cruising in the right lane\n0:09 - Gray Tacoma pickup riding next to me in the left lane\n"
+              "0:20 - He swerves in front of me and stops dead in my lane\n0:32 - Sits there honking\n")
+    assert ("car", "go_straight", "ego") in agents(prompt)
+

@@ -245,8 +245,8 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
                      "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic",
-                     "pelican", "puffin", "toucan"}  # "without indicating", a pelican crossing: keep-left countries'
-# words
+                     "pelican", "puffin", "toucan", "footpath", "ute"}  # "without indicating", a pelican crossing,
+# a ute: keep-left countries' words
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
@@ -3461,18 +3461,23 @@ def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
 
 CALLED_OUT = {"dispatched", "requested", "enroute", "attended", "responded", "summoned", "notified", "called",
               ("en", "route"), ("showed", "up"), ("turned", "up"), ("on", "scene"), ("came", "out"),
-              ("on", "the", "way")}  # (not "came later": with no collision told, a later arrival is in the scene)
+              ("on", "the", "way"), "needed", "required"}  # (not "came later": with no collision told, a later
+# arrival is in the scene)
+CALLED_FOR = {"call", "called", "calling", "phone", "phoned", "phoning", "ring", "rang", "ringing", "request",
+              "requested", "requesting", "summon", "summoned", "dial", "dialled", "dialed"}  # "I called an ambulance"
 
 
 def _called_out(r: _Reader, e: Entity) -> bool:
     """'EMS + PD dispatched 14:03', 'Trooper dispatched', 'Medic 4, Engine 2 en route', 'the cop who showed up later
-    said': an emergency service placed nowhere and only called to the scene, or come after it, is no agent of it."""
+    said', 'I called an ambulance': an emergency service placed nowhere and only called to the scene, or come after
+    it, is no agent of it."""
     if not _help_placed_nowhere(e):
         return False
     sentence = r.tokens[e.said_at].sentence
     after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 10] if t.sentence == sentence]
     said = set(after) | set(zip(after, after[1:])) | set(zip(after, after[1:], after[2:]))
-    return bool(said & CALLED_OUT)
+    before = {t.word for t in r.tokens[max(0, e.said_at - 3):e.said_at] if t.sentence == sentence}
+    return bool(said & CALLED_OUT or before & CALLED_FOR)
 
 
 def _said_parked(units: list[Unit], first: int, head: int) -> bool:
@@ -3730,6 +3735,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 units[head + 1].meaning in e.features and not (described and described not in {a[4] for a in e.actions})
                 for e in r.entities):
         definite = True  # "Ego: follows HGV. Actors: HGV ahead in the ego lane": the HGV already placed there
+    if not words and count is None and not plural and not label and head + 1 < len(units) and \
+            units[head + 1].category == "positions" and u.base not in GENERAL_BODIES and any(
+                u.base in e.aliases and not e.is_ego and e.count == 1 and not e.features & PLACE_FEATURES
+                for e in r.entities):
+        definite = True  # "a white Silverado pickup cut me off ... 0:22 Silverado in the right lane swerves": its
+        # make, named again where it was not yet placed
     ego_now = next((e for e in r.entities if e.is_ego), None)
     existential = first >= 2 and units[first - 2].word == "there" and units[first - 1].word in (
         "is", "was", "be", "comes", "came")  # "there's car coming the other way": introduced, never the ego
@@ -3775,6 +3786,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         rider = _last_named(r, recent, lambda e: e.type in V.TWO_WHEELER_TYPES)
         if rider is not None:  # "a cyclist swerving in the bike lane ... until the guy turned right": the rider
             return NounPhrase(rider, head, first)
+    counted = _counted_again(r, kind, u.base, count) if definite and count is not None and count > 1 else None
+    if counted:  # "Two lads dash onto the crossing ... the two lads run out": the same two
+        return NounPhrase(counted[0], head, first, plural=True, group=counted if len(counted) > 1 else [])
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
@@ -3899,6 +3913,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             units[first - 2].category == "positions":
         _modify(r, entity, units[first - 2], stage, strength=1)  # "oncoming traffic two cars": the cars are oncoming
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
+
+
+def _counted_again(r: _Reader, kind: str, base: str, count: int) -> list[Entity]:
+    """'the two lads' after 'two lads': a counted group named again with 'the' and its count is the group, with
+    the members already taken from it."""
+    for group in reversed(r.entities):
+        if group.is_ego or group.parent is not None or group.type != kind or \
+                base != group.head and base not in group.aliases:
+            continue
+        members = [e for e in r.entities if e.parent is group]
+        if group.count + len(members) == count:
+            return ([group] if group.count else []) + members
+    return []
 
 
 def _crewed_vehicle(r: _Reader, units: list[Unit], head: int, first: int, recent: list[Entity],
@@ -4862,8 +4889,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     for member in [m for m in members if m is not None]:
                         phrases.append(NounPhrase(member, i + 2, i))
                     units[i] = Unit(u.start, u.end, "word", "of", u.tokens)
-                elif value is not None and 0 < value <= MAX_AGENTS_PER_MENTION:
-                    group.count = int(value)  # "kids are crossing, three of them": the group's count
+                elif value is not None and 1 < value <= MAX_AGENTS_PER_MENTION:
+                    group.count = int(value)  # "kids are crossing, three of them": the group's count ("two kids
+                    # on the pavement, one of them in red": still two)
                 units[i + 2] = Unit(units[i + 2].start, units[i + 2].end, "word", "of", units[i + 2].tokens)
     pronouns, together = [], set()
     for i, u in enumerate(units):
@@ -5090,9 +5118,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         seen = seer is not None
         if seen:
             before = before[seer:]
-        wanted = len(before) >= 2 and before[0].entity.is_ego and 0 < first_verb < len(units) and \
-            units[first_verb - 1].word == "to" and any(u.tokens[0].base in WANTING
-                                                       for u in units[before[0].index + 1:before[1].first])
+        wanted = len(before) >= 2 and before[0].entity.is_ego and 0 < first_verb < len(units) and (
+            units[first_verb - 1].word == "to" or first_verb == before[1].index + 1 and
+            units[first_verb].tokens[0].word.endswith(("ed", "ing"))) and any(
+            u.tokens[0].base in WANTING for u in units[before[0].index + 1:before[1].first])
+        # "I want a car to cut in", "I'd like a truck parked on the right": the one wanted acts
         if seen or wanted:
             before = before[1:2]  # "I saw a van pull out", "I want a car to cut in": the one seen or wanted acts
         elif len(before) >= 2 and verbs and not any(
@@ -5137,6 +5167,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif previous_subject and clause.link == "" and verbs and verbs[0] == 0 and units[0].tokens[0].opened_by == ";" \
                 and not _bare_verb(units[0]):  # ("a truck stopped ahead; overtake it": an order to the ego)
             subject = list(previous_subject)  # "a car in the left lane; changes lane to the right": the same car
+        elif previous_subject and clause.link == "" and verbs and \
+                _said_of_another(r, units[verbs[0]].tokens[0], previous_subject):
+            subject = list(previous_subject)  # "He swerves in front of me and stops dead. Sits there honking": him
         elif verbs and any(np.entity is None and (units[np.index].meaning == "none" or _said_not_there(units, np)) and
                            first_verb - 3 <= np.index < first_verb for np in phrases):
             verbs = []  # "a deer ran out": its subject names no agent; nobody of the scene ran; nor did "no
@@ -5853,6 +5886,15 @@ def _said_not_there(units: list[Unit], np: NounPhrase) -> bool:
         np.first > 0 and units[np.first - 1].word in ("not", "without") or units[np.first].word in ("no", "zero"))
 
 
+def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) -> bool:
+    """A sentence opened by a verb in the third person ('Sits there honking') in a first-person account is not the
+    speaker's: it goes on with the one the sentence before was about."""
+    first_person = any(t.word in ("i", "i'm", "me", "my") for t in r.tokens)
+    return first_person and len(previous_subject) == 1 and not previous_subject[0].is_ego and \
+        verb.word.endswith("s") and not verb.word.endswith("ss") and verb.base != verb.word and \
+        not any(t.word.isalpha() for t in r.tokens[:verb.index] if t.sentence == verb.sentence)  # (after a time stamp)
+
+
 def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside=frozenset()) -> Entity | None:
     """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
     ('aggressive cut-in from right lane ahead' is a car's)."""
@@ -6091,6 +6133,11 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
     out: list[NounPhrase] = []
     folded_at: dict[int, int] = {}
     for np in phrases:
+        if np.introduced and np.entity is not None and _a_likeness(units, np):
+            if np.entity in r.entities:  # "driving like a taxi driver", "it sounded like a truck": a comparison
+                r.entities.remove(np.entity)
+            r.notes.append(f"left out: '{np.entity.head}' is only a comparison")
+            continue
         prev = out[-1] if out else None
         if prev is not None and prev.entity is not None and np.entity is not None and np.introduced and \
                 not np.plural and prev.entity.parent is not None and units[prev.index].word in ("them", "those",
@@ -6464,10 +6511,26 @@ def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounP
     return not (tokens[k].word in ("and", "or", "a", "an", "the") or entry is not None and entry[0] == "agents")
 
 
+LIKENESS_VERBS = {"look", "looks", "looked", "looking", "seem", "seems", "seemed", "seeming", "would", "d", "i",
+                  "we", "you", "they", "also", "really", "something", "anything", "vehicle", "vehicles", "one"}
+
+
+def _a_likeness(units: list[Unit], np: NounPhrase) -> bool:
+    """'driving like a taxi driver', 'it sounded like a truck hitting a wall': a vehicle named after 'like' that
+    follows what someone does is a comparison, no agent ('it looked like a police car' and 'I'd like a truck parked
+    on the right' name one)."""
+    if np.first < 2 or units[np.first - 1].word != "like" or units[np.first].word not in ("a", "an"):
+        return False
+    before = units[np.first - 2]
+    return before.word not in LIKENESS_VERBS and before.tokens[-1].word not in LIKENESS_VERBS and (
+        before.category in ("actions", "behaviours") or before.tokens[-1].word.endswith(("ed", "ing")))
+
+
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
     """Two noun phrases that name one agent ("a learner driver in a hatchback", "the vehicle behind me, a
     white Ford Transit,"): the first takes the second's type and what was said of it, and the second goes."""
     into.type = other.type
+    into.aliases |= other.aliases | {other.head}  # "this guy in a white Silverado ... Silverado swerves": him
     into.features |= other.features
     into.actions += other.actions
     into.behavior = into.behavior or other.behavior
@@ -7704,8 +7767,11 @@ def _speaker_on_the_crossing(tokens: list[Token], strong: bool) -> bool:
     speaker who does nothing on the road, 'it stopped for me and the two girls at the crossing': the speaker sees
     people over a crossing, on foot, and the vehicles that meet them are the scene."""
     words = [t.word for t in tokens]
+    patrol = tuple(w for w in PATROLLING if w != ("lollipop",) or not strong or not _says_any(
+        words, tuple(("lollipop", who) for who in ("lady", "man", "woman"))))  # "I was stopped while the lollipop
+    # lady took them across": a driver who tells of the patrol
     return bool({"crossing", "zebra", "crosswalk", "lights"} & set(words)) and \
-        _says_any(words, PATROLLING if strong else PATROLLING + STOPPED_FOR_ME)
+        _says_any(words, patrol if strong else patrol + STOPPED_FOR_ME)
 
 
 def _screens_on_the_crossers_side(r: _Reader) -> None:
