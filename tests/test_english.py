@@ -7639,3 +7639,64 @@ def test_a_chapter_line_in_the_third_person_goes_on_with_the_one_before():
               "0:20 - He swerves in front of me and stops dead in my lane\n0:32 - Sits there honking\n")
     assert ("car", "go_straight", "ego") in agents(prompt)
 
+
+
+def test_the_vehicle_a_complaint_opens_by_owning_is_the_ego_and_so_is_the_vehicle_after():
+    lowered = lower_prompt("I OWN A 2022 GMC TERRAIN. I WAS APPROACHING A ROUNDABOUT WITH A BOX TRUCK FOLLOWING CLOSE "
+                           "BEHIND ME. THEN THE VEHICLE BRAKED BY ITSELF TO A COMPLETE STOP.", "offline")
+    first, second = lowered.scenario.stages
+    assert [(a.type, a.action, a.relative_to_ego) for a in first.agents] == [
+        ("car", "go_straight", None), ("truck", "go_straight", "back")]
+    assert [(a.name, a.action) for a in second.agents] == [("ego", "stop")]
+
+
+def test_the_one_a_text_opens_on_by_an_unknown_noun_is_the_ego_when_named_again():
+    lowered = lower_prompt("THE CONTACT OWNS A 2020 NISSAN ROGUE. THE CONTACT STATED THAT WHILE DRIVING STRAIGHT, A "
+                           "PEDESTRIAN WAS CROSSING IN THE CROSSWALK. THE CONTACT THEN BRAKED TO A STOP.", "offline")
+    assert [(a.name, a.action) for a in lowered.scenario.stages[1].agents] == [("ego", "stop")]
+
+
+def test_a_verb_form_of_a_word_for_a_driver_names_no_one():
+    assert agents("The lane keeping assist jerked my vehicle toward the center line as an oncoming motorcycle was "
+                  "passing.") == [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "front_left")]
+
+
+def test_a_vehicle_not_seen_but_said_to_approach_is_there():
+    assert ("car", "go_straight", "road_of_left_turn") in agents(
+        "While turning left at the junction I did not see a van approaching from the left.")
+    assert agents("I didn't see a single car all morning.") == [("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm going straight through a green with a Tesla in front of me. Tesla just hooks a right across the cyclist.",
+     ("car", "turn_right", "front")),
+    ("A Jetta in the lane to my left dives right across in front of me.", ("car", "change_lane_to_right", "left")),
+    ("Some Audi in the lane to my right decides to dive across in front of me.",
+     ("car", "change_lane_to_left", "right")),
+])
+def test_slang_manoeuvres(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_an_unknown_make_before_a_lane_or_a_manoeuvre_is_a_car():
+    assert agents("I'm in the middle of three lanes. A Commodore in the left lane just ahead of me dives across into "
+                  "my lane.") == [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+    assert agents("The driver made an evasive lane change to the left.") == [("car", "change_lane_to_left", "ego")]
+
+
+def test_a_bare_plural_said_before_one_of_its_kind_is_named_speaks_in_general():
+    assert agents("Pedestrians step off the kerb here without looking. Yesterday an elderly man crossed in front of "
+                  "me.") == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_a_driver_a_case_is_about_is_the_ego_and_what_it_may_not_see_acts():
+    assert agents("An eastbound driver on Park Road may not see a fire engine coming out of the station on the right "
+                  "and turning right across their path.") == [("car", "go_straight", "ego"),
+                                                              ("firetruck", "turn_right", "road_of_right_turn")]
+
+
+def test_a_numbered_lane_said_before_anyone_is_named_is_the_tellers():
+    assert agents("Approaching in lane 2 in the TOV, saw a van stopped in lane 1 ahead.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front_left")]
+    assert agents("Attended lane 1 obstruction. A van stopped in lane 1 ahead of us.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]

@@ -1290,6 +1290,8 @@ def _lookup(lex: Lexicon, span: list[Token]):
     for key in keys:
         entry = lex.phrases.get(key)
         if entry is not None and (key == raw or entry[1] != "none") and not (
-                entry[0] == "road" and key[0] != raw[0] and raw[0].endswith(("ed", "ing"))):
-            return entry  # "the bus stops" is no "bus stop"; "stopped on the road" is no STOP on the road
+                entry[0] == "road" and key[0] != raw[0] and raw[0].endswith(("ed", "ing"))) and not (
+                entry[0] == "agents" and any(k != w and w.endswith("ed") for k, w in zip(key, raw))):
+            return entry  # "the bus stops" is no "bus stop"; "stopped on the road" is no STOP on the road; "the
+            # lane assist jerked my vehicle" names no jerk
     return None

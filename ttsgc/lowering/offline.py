@@ -189,6 +189,7 @@ class _Reader:
     listed_one: tuple | None = None  # (agent, sentence) last named as a 'one ...' list item: the list may go on
     passive: object = None  # the last clause with a passive's doer ('overtaken by a van'): 'and a bus' may follow
     # past a clause break ("one car in front, one on the left and one on the right")
+    owned: bool = False  # the text opened on the vehicle its teller owns: "the vehicle" is that one
 
     def mark(self, unit: Unit) -> None:
         self.used.update(range(unit.start, unit.end))
@@ -295,7 +296,31 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
-    return _street_names(tokens, _with_absolutes(_kerb_sides(tokens, _read_units(tokens))))
+    return _unknown_makes(tokens, _street_names(tokens, _with_absolutes(_kerb_sides(tokens, _read_units(tokens)))))
+
+
+LANE_PLACES = {"side_left", "side_right", "lane_said", "ego_lane", "into_ego_lane", "ahead", "behind"}
+
+
+def _unknown_makes(tokens: list[Token], units: list[Unit]) -> list[Unit]:
+    """'A Commodore in the left lane dives across', 'the Hilux cut in': a word the lexicon does not know, after an
+    article and right before a lane or a driver's manoeuvre, is a vehicle's make or model: a car."""
+    lex = lexicon()
+    out = list(units)
+    for k in range(1, len(units) - 1):
+        u, before, nxt = units[k], units[k - 1], units[k + 1]
+        t = u.tokens[0]
+        if u.category != "word" or len(u.tokens) != 1 or not t.word.isalpha() or len(t.word) < 4 or t.misspelt or \
+                t.label or t.word in lex.vocabulary or t.base in lex.vocabulary or t.word in ORDINAL_MEMBERS or \
+                t.word in ORDINAL_NUMBERS or \
+                before.word not in ("a", "an", "the", "this") or before.tokens[-1].sentence != t.sentence:
+            continue
+        verb = nxt.tokens[0]
+        if nxt.category == "positions" and nxt.meaning in LANE_PLACES and verb.word == "in" or \
+                nxt.category == "actions" and nxt.meaning in VEHICLE_ONLY_ACTIONS and (
+                    verb.word != verb.base or verb.word.endswith(("s", "ed", "ing"))):
+            out[k] = Unit(u.start, u.end, "agents", "car", u.tokens)  # (not "an evasive lane change")
+    return out
 
 
 STREET_SUFFIXES = {"road", "street", "avenue", "drive", "way", "close", "crescent", "terrace", "place", "gardens",
@@ -357,6 +382,13 @@ def _manner_adverb(t: Token) -> bool:
     return entry is None and t.word not in lexicon().function_words or entry is not None and entry[0] == "behaviours"
 
 
+def _inside_a_verb(tokens: list[Token], i: int) -> bool:
+    """A word that may stand between a verb and its particle: a manner adverb ('pulled sharply across'), or 'right'
+    before the particle ('dives right across in front of me': how far, no side)."""
+    return _manner_adverb(tokens[i]) or tokens[i].word == "right" and i + 1 < len(tokens) and \
+        tokens[i + 1].word in ("across", "over", "through", "out")
+
+
 def _units_of_one_word(tokens: list[Token], i: int) -> list[Unit]:
     """A token read alone: its own lexicon entry when it has one, else a word, a number or a comma."""
     t = tokens[i]
@@ -372,7 +404,7 @@ def _verbs_around_an_adverb(tokens: list[Token], found: dict[int, Match]) -> tup
     particle; the verb phrase is read without it, and the adverb on its own after it."""
     lex, split = lexicon(), set()
     for i, t in enumerate(tokens[1:-1], start=1):
-        if not _manner_adverb(t) or tokens[i - 1].sentence != t.sentence:
+        if not _inside_a_verb(tokens, i) or tokens[i - 1].sentence != t.sentence:
             continue
         before = next((f for f in found.values() if f.end == i), None)
         start = before.start if before is not None else i - 1
@@ -432,10 +464,11 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
             i = end  # "in lane two (of three)": which lane, counted from the kerb
             continue
         if m is not None and i in around_an_adverb:
-            adverb = next(k for k in range(m.start + 1, m.end) if _manner_adverb(tokens[k]))
+            adverb = next(k for k in range(m.start + 1, m.end) if _inside_a_verb(tokens, k))
             out.append(Unit(m.start, m.end, m.category, m.meaning,
                             tuple(x for x in tokens[m.start:m.end] if x.index != adverb)))
-            out.extend(_units_of_one_word(tokens, adverb))
+            out.extend(_units_of_one_word(tokens, adverb) if tokens[adverb].word != "right" else
+                       [Unit(adverb, adverb + 1, "word", "right", (tokens[adverb],))])
             i = m.end
             continue
         if m is not None:
@@ -1084,7 +1117,8 @@ PLANNING_WORDS = {"next", "date", "sprint", "release", "deadline", "week", "mont
                   "friday", "monday", "q1", "q2", "q3", "q4"}
 
 
-INTENSIFIED = {"down", "up", "out", "off", "back", "away", "along", "round", "around", "through"}  # 'right' before them
+INTENSIFIED = {"down", "up", "out", "off", "back", "away", "along", "round", "around", "through",
+               "across", "past"}  # 'right' before them
 
 
 ASPECT_VERBS = ("started", "starts", "start", "began", "begins", "begin", "kept", "keeps", "continued", "continues",
@@ -3449,6 +3483,17 @@ def _help_placed_nowhere(e: Entity) -> bool:
         all(a[4] == "move" for a in e.actions)
 
 
+def _said_in_general(r: _Reader, e: Entity) -> bool:
+    """'Left-hook risk to cyclists ... may not see a cyclist riding alongside', 'Pedestrians step off the kerb ...
+    we watched a taxi turn while an elderly man was halfway across': a bare plural, counted by no one, said before
+    one of its kind is named on its own in a later sentence, speaks of such agents in general."""
+    if not e.uncounted or e.definite or e.is_ego or e.parent is not None or e.said_at < 0 or e.label:
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    return any(f is not e and not f.is_ego and f.type == e.type and f.count == 1 and not f.uncounted and
+               f.parent is not e and f.said_at >= 0 and r.tokens[f.said_at].sentence > sentence for f in r.entities)
+
+
 def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
     """'... and hit me. An ambulance came later', 'Paramedics checked us over': an emergency service first named in
     a sentence after the one that tells of the collision, and placed nowhere, came to help: no agent of the scene."""
@@ -3565,8 +3610,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count = 0  # "an empty road without any pedestrians", "without other traffic"
     if first > lo + 1 and units[first - 1].base in ("see", "spot", "meet", "pass", "notice") and \
             units[first - 2].word in ("not", "never") and not is_ego and count in (None, 1) and \
-            not words - {"any", "a", "an", "other", "single", "one", "another", "some"}:
-        count = 0  # "didn't see one other car", "never met a single cyclist"
+            not words - {"any", "a", "an", "other", "single", "one", "another", "some"} and not (
+                not words & {"any", "other", "single", "one", "another", "some"} and head + 1 < len(units) and
+                units[head + 1].category in ("actions", "positions")):
+        count = 0  # "didn't see one other car", "never met a single cyclist" (not "did not see a van approaching
+        # from the left": one there, unseen)
     for k in range(first, head):
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
@@ -3789,6 +3837,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     counted = _counted_again(r, kind, u.base, count) if definite and count is not None and count > 1 else None
     if counted:  # "Two lads dash onto the crossing ... the two lads run out": the same two
         return NounPhrase(counted[0], head, first, plural=True, group=counted if len(counted) > 1 else [])
+    if definite and count is None and r.owned and u.base == "vehicle" and not plural and ego_now is not None and \
+            (head + 1 == len(units) or units[head + 1].category != "positions"):
+        return NounPhrase(ego_now, head, first)  # "I own a GMC Terrain ... then the vehicle braked by itself"
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
@@ -5112,7 +5163,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         before = [np for np in phrases if np.index < first_verb and np.entity is not None
                   and not _is_reference(units, np)]
         seer = next((j for j in range(len(before) - 2, -1, -1) if before[j].entity is not None
-                     and before[j].entity.is_ego and any(u.tokens[0].base in PERCEIVING
+                     and (before[j].entity.is_ego or before[j].entity.head in DRIVERS) and any(
+                         u.tokens[0].base in PERCEIVING
                                                          for u in units[before[j].index + 1:before[j + 1].first])),
                     None)  # "I admit I was looking at that and did not notice the car in front had stopped"
         seen = seer is not None
@@ -5938,6 +5990,10 @@ def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entit
             word.word in lexicon().function_words or word.misspelt or \
             word.word.endswith(("ly", "ing", "ed", "s")) or len(word.word) < 3 or not word.word.isalpha():
         return None
+    opening = [t.word for t in tokens if t.word.isalpha()][:2]
+    if opening == ["the", word.word] and tokens[k].index > 1:
+        return next((e for e in r.entities if e.is_ego), None)  # "The contact owns a Rogue ... The contact then
+        # braked": the one the text opens on, as a complaint names its teller
     others = [e for e in r.entities if not e.is_ego and e.count == 1]
     return others[-1] if others else None
 
@@ -6188,12 +6244,13 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 r.entities.remove(np.entity)
             continue
         if np.introduced and (_the_speakers_seat(r, units, np) or _the_one_the_speaker_was_on(units, np) or
-                              _driven_with_no_subject(r, units, np)):
+                              _driven_with_no_subject(r, units, np) or _owned_by_the_teller(r, units, np)):
             ego = _ego_entity(r, np.entity.stage)
             ego.type = np.entity.type if np.entity.type != "car" else ego.type
             ego.aliases.add(np.entity.head)  # "... The lorry turns left": the ego, named again
             if np.entity in r.entities:  # "coming through the village in the tipper": the speaker's own vehicle
                 r.entities.remove(np.entity)
+            r.owned = r.owned or _owned_by_the_teller(r, units, np)
             r.notes.append(f"read 'the {np.entity.head}' the speaker rides in as the ego's")
             out.append(NounPhrase(ego, np.index, np.first))
             continue
@@ -6432,6 +6489,20 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
         return unsaid and opening[0].tokens[0].word.endswith("ing") or \
             any(t.word in SPEAKERS - {"you", "your"} for t in r.tokens)
     return any(u.tokens[0].word in SPEAKERS for u in egos)
+
+
+OWNING = {"own", "owns", "owned", "owning"}
+
+
+def _owned_by_the_teller(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
+    """'I OWN A 2022 HYUNDAI SANTA FE', 'The contact owns a 2020 Nissan Rogue': the vehicle the teller of a complaint
+    opens by owning is the one the complaint is about, the ego's own."""
+    if not _one_vehicle(np) or np.first < 1 or units[np.first - 1].word not in OWNING:
+        return False
+    sentence = units[np.first].tokens[0].sentence
+    return not any(e.is_ego and e.head not in FIRST_PERSON | {"ego"} or not e.is_ego and e is not np.entity and
+                   e.type in V.EGO_TYPES for e in r.entities) and \
+        all(t.sentence == sentence for t in r.tokens[:units[np.first].start] if t.word.isalpha())
 
 
 ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", "sat", "driving"}
@@ -7407,9 +7478,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
 
 
 ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sidewalk", "footpath", "on foot",
-           "a pedestrian", "jogging", "bus stop"}
+           "a pedestrian", "jogging", "bus stop", "wheelchair", "chair", "to cross", "dropped curb", "at the curb",
+           "crossing the road", "crossing the street"}  # (a wheelchair user, waiting to cross; not "I stopped for
+# kids on the crossing")
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
-                "my vehicle", "my van", "my bike", "my lane", "in my"}
+                "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked"}
 FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operating", "operated", "on", "patrol",
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
@@ -7454,8 +7527,8 @@ def _what_i_was(tokens: list[Token], k: int) -> set[str]:
         if t.sentence != tokens[k].sentence or t.word in ("when", "while", "and", "as", "but", ",", "saw", "then"):
             break
         out.append(t.word)
-    pairs = {f"{a} {b}" for a, b in zip(out, out[1:])}
-    return set(out) | pairs
+    pairs = {f"{a} {b}" for a, b in zip(out, out[1:])} | {f"{a} {b} {c}" for a, b, c in zip(out, out[1:], out[2:])}
+    return set(out) | pairs - ({"in my"} if {"chair", "wheelchair"} & set(out) else set())  # "in my chair"
 
 
 OWN_WAY = {"go_straight", "move", "turn", "turn_left", "turn_right", "lane_change", "lane_left", "lane_right", "u_turn",
@@ -7491,6 +7564,11 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if not driver_named and any(t.word == "ego" for t in r.tokens):
         return None  # "a lorry swings wide, crossing into the ego's lane": the ego is named, if only by its lane
     ordered = sorted(r.entities, key=lambda e: e.key)
+    driver = next((e for e in ordered if not e.is_ego and e.head == "driver" and not e.definite and
+                   _may_drive_the_scene(e)), None)
+    if driver is not None and not driver_named:
+        return driver  # "an eastbound driver on Park Road may not see a fire engine coming out": the one the case
+        # is told from, as an audit or a rule names the road user it is about
     anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e) and
                    any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities)), None)
     # (not "a police car follows a red sedan": the follower is the one the scene is told from)
@@ -7876,6 +7954,8 @@ def _numbered_lane_sides(r: _Reader) -> None:
             own = int(u.meaning.split("_")[-1])  # "moved out into lane 2, where I was": the ego's lane, said after
             break
     if own is None:
+        own = _lane_said_of_no_one(r.units)
+    if own is None:
         return
     for e in r.entities:
         theirs = number(e) if not e.is_ego else None
@@ -7885,6 +7965,22 @@ def _numbered_lane_sides(r: _Reader) -> None:
         side = "side_right" if theirs > own else "side_left"
         e.features.add(side)
         r.notes.append(f"inferred: '{e.head}' in lane {theirs} is to the {side[5:]} of the ego in lane {own}")
+
+
+def _lane_said_of_no_one(units: list[Unit]) -> int | None:
+    """'Approaching in lane 2 in the TOV, saw a van stopped in lane 1': a numbered lane a sentence places before it
+    names anyone is the teller's own (not 'attended lane 1 obstruction': where the obstruction was)."""
+    for k, u in enumerate(units):
+        if u.category != "positions" or not re.fullmatch(r"lane_\d+", u.meaning):
+            continue
+        sentence = u.tokens[0].sentence
+        before = [x for x in units[:k] if x.tokens[0].sentence == sentence]
+        after = units[k + 1].word if k + 1 < len(units) else ""
+        if not any(x.category == "agents" and x.meaning not in ("none", "ego") for x in before) and \
+                after not in ("obstruction", "closure", "closed", "blocked", "shut") and \
+                not any(x.word in ("attended", "attend", "closed", "shut") for x in before[-2:]):
+            return int(u.meaning[5:])
+    return None
 
 
 NAMED_LANES = ("left", "middle", "right")  # across a road, left to right
@@ -8120,6 +8216,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 not e.is_ego and all(a[4] in ("stop", "move") for a in e.actions) and not e.label:
             e.count = 0  # "residential street, parked cars, dusk": the street's scenery, said with no count
             r.notes.append(f"left out: '{e.head}' parked, with no count, are the street's scenery")
+        if e.count > 0 and _said_in_general(r, e):
+            e.count = 0  # "pedestrians step off the kerb just as drivers turn; we watched an elderly man ...": the
+            r.notes.append(f"left out: '{e.head}' said of such agents in general; the one named after is the agent")
         if e.count > 0 and _came_after_the_crash(r, e):
             e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
             r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
