@@ -7700,3 +7700,25 @@ def test_a_numbered_lane_said_before_anyone_is_named_is_the_tellers():
         ("car", "go_straight", "ego"), ("car", "stop", "front_left")]
     assert agents("Attended lane 1 obstruction. A van stopped in lane 1 ahead of us.") == [
         ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+def test_a_teller_on_the_way_over_is_a_crossing_pedestrian_and_the_vehicle_met_is_the_ego():
+    assert agents("I was halfway over the zebra crossing on Mill Road in my chair when a silver hatchback pulled up "
+                  "and waited for me.") == [("car", "stop", "ego"),
+                                            ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_list_of_kinds_with_no_verb_and_a_plural_after_one_of_its_kind_speak_in_general():
+    assert agents("Watch as the car turns left, and the system picks out a cyclist crossing the road we're turning "
+                  "into. Pedestrians, cyclists, everyone: seen.") == [
+        ("car", "turn_left", "ego"), ("cyclist", "cross_the_road", "at_the_destination")]
+
+
+def test_a_key_said_to_have_no_value_names_no_agent():
+    assert agents("ego: straight. oncoming: 2 cars. pedestrians: none.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "front_left"), ("car", "go_straight", "front_left")]
+
+
+def test_family_said_to_be_in_the_car_ride_with_the_speaker():
+    assert agents("A truck in the left lane cut in front of me, I was with my wife and kids in the car.") == [
+        ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")]

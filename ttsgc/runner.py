@@ -104,6 +104,8 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
     except BaseException:  # interrupted, or the caller stopped: workers only compute, so end them at once
         for process in list((getattr(pool, "_processes", None) or {}).values()):
             process.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)  # and wait for the pool's own thread to see them gone, so that
+        # it is not woken at the interpreter's exit through a pipe already closed (a traceback after Ctrl-C)
         raise
     finally:
         pool.shutdown(wait=False, cancel_futures=True)

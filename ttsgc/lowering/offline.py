@@ -3483,6 +3483,18 @@ def _help_placed_nowhere(e: Entity) -> bool:
         all(a[4] == "move" for a in e.actions)
 
 
+ABOARD_WORDS = (("in", "the", "car"), ("in", "my", "car"), ("in", "our", "car"), ("in", "the", "back"),
+                ("on", "board"), ("with", "me"), ("with", "us"))
+
+
+def _said_aboard(r: _Reader, e: Entity) -> bool:
+    """'I was with my wife and kids in the car': people said to be in the speaker's vehicle, a few words on."""
+    if e.said_at < 0:
+        return False
+    after = [t.word for t in r.tokens[e.said_at:e.said_at + 7] if t.sentence == r.tokens[e.said_at].sentence]
+    return _says_any(after, ABOARD_WORDS)
+
+
 def _said_in_general(r: _Reader, e: Entity) -> bool:
     """'Left-hook risk to cyclists ... may not see a cyclist riding alongside', 'Pedestrians step off the kerb ...
     we watched a taxi turn while an elderly man was halfway across': a bare plural, counted by no one, said before
@@ -3490,8 +3502,16 @@ def _said_in_general(r: _Reader, e: Entity) -> bool:
     if not e.uncounted or e.definite or e.is_ego or e.parent is not None or e.said_at < 0 or e.label:
         return False
     sentence = r.tokens[e.said_at].sentence
+    after = r.tokens[e.said_at + 1] if e.said_at + 1 < len(r.tokens) else None
+    keyed = after is not None and (after.sentence != sentence and after.opened_by == ":" or
+                                   after.word in ("is", "are", "was", "were"))  # "Pedestrians: a group crossing"
+    idle = not e.actions and not e.features and not keyed  # "Pedestrians, cyclists, everyone: seen.", "... with old
+    # people"
+    if idle and not any(u.category == "actions" for u in r.units if u.tokens[0].sentence == sentence):
+        return True
     return any(f is not e and not f.is_ego and f.type == e.type and f.count == 1 and not f.uncounted and
-               f.parent is not e and f.said_at >= 0 and r.tokens[f.said_at].sentence > sentence for f in r.entities)
+               f.parent is not e and f.said_at >= 0 and (r.tokens[f.said_at].sentence > sentence or idle)
+               for f in r.entities)
 
 
 def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
@@ -3597,6 +3617,9 @@ def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: se
         (head + 1 == len(units) or units[head + 1].category != "positions")
 
 
+NONE_VALUES = {"none", "no", "0", "zero", "nil", "n/a", "na", "nobody", "nothing"}
+
+
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
     u = units[head]
     r.mark(u)
@@ -3608,6 +3631,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if first > lo and units[first - 1].word == "without" and not words - {"any", "a", "an", "other", "single"} and \
             not is_ego and count in (None, 1):
         count = 0  # "an empty road without any pedestrians", "without other traffic"
+    value = u.tokens[-1].index + 1
+    if not is_ego and value < len(r.tokens) and r.tokens[value].opened_by == ":" and \
+            r.tokens[value].sentence != u.tokens[-1].sentence and r.tokens[value].word in NONE_VALUES:
+        count = 0  # "pedestrians: none", "cyclists: 0": a key said to have no value
     if first > lo + 1 and units[first - 1].base in ("see", "spot", "meet", "pass", "notice") and \
             units[first - 2].word in ("not", "never") and not is_ego and count in (None, 1) and \
             not words - {"any", "a", "an", "other", "single", "one", "another", "some"} and not (
@@ -7479,8 +7506,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
 
 ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sidewalk", "footpath", "on foot",
            "a pedestrian", "jogging", "bus stop", "wheelchair", "chair", "to cross", "dropped curb", "at the curb",
-           "crossing the road", "crossing the street"}  # (a wheelchair user, waiting to cross; not "I stopped for
-# kids on the crossing")
+           "crossing the road", "crossing the street", "in the crosswalk", "rolling across", "wheeling across"}
+# (a wheelchair user, waiting to cross or on the way over; not "I stopped for kids on the crossing")
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
                 "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked"}
 FIRST_PERSON = {"i", "me", "my", "i'm"}
@@ -7523,7 +7550,7 @@ def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
 def _what_i_was(tokens: list[Token], k: int) -> set[str]:
     """The words of 'I was standing at the bus stop', up to the next clause."""
     out: list[str] = []
-    for t in tokens[k + 1:k + 9]:
+    for t in tokens[k + 1:k + 13]:
         if t.sentence != tokens[k].sentence or t.word in ("when", "while", "and", "as", "but", ",", "saw", "then"):
             break
         out.append(t.word)
@@ -7791,9 +7818,23 @@ def _witness_on_foot(r: _Reader) -> None:
     if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL):
         return
     own = [t for t in r.tokens if t.word in ("i", "i'm", "me", "my", "us", "we")]
+    crossing = bool(words & CROSSING_ON_FOOT) and not patrol  # "I was halfway over the zebra in my chair"
     movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
-              and any(a[4] not in ("stop", "try") or patrol for a in e.actions)]  # ("a van stops for us": the one
-    if not movers:  # met at the crossing)
+              and any(a[4] not in ("stop", "try") or patrol or crossing for a in e.actions)]  # ("a van stops for
+    if not movers:  # us": the one met at the crossing)
+        return
+    if crossing:
+        subject = movers[0]  # "... when a silver hatchback pulled up and waited for me": the one met on the way over
+        at_a_crossing = bool(words & {"crosswalk", "zebra", "crossing", "pelican", "puffin", "toucan"} - {"crossing"}
+                             or "the crossing" in words or "zebra crossing" in words)
+        ego.is_ego, ego.type, ego.road_type = False, "pedestrian", None
+        ego.features = {"crosswalk"} if at_a_crossing else {"ahead"}
+        ego.actions = [(0, 2, ACTION_RANK["cross"], r.tick(), "cross", None)]
+        subject.is_ego = True
+        subject.features = {f for f in subject.features if f.startswith("compass_")}
+        r.entities.remove(subject)
+        r.entities.insert(0, subject)
+        r.notes.append(f"inferred: the teller was crossing on foot; the '{subject.head}' that met them is the ego")
         return
     if patrol:
         subject = movers[0]
@@ -7835,6 +7876,8 @@ def _witness_on_foot(r: _Reader) -> None:
                    f"'{subject.head}' the statement is about is the ego")
 
 
+CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheeling across", "in the crosswalk",
+                    "across the road", "across the street"}  # what a teller on foot was doing: on the way over
 PATROLLING = (("lollipop",), ("crossing", "with", "me"), ("over", "with", "me"), ("across", "with", "me"),
               ("my", "crossing"), ("my", "stick"))
 STOPPED_FOR_ME = (("stopped", "for", "me"), ("stops", "for", "me"), ("stopped", "for", "us"), ("stops", "for", "us"))
@@ -8229,8 +8272,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 _said_to_do_no_road_thing(r, e):
             e.count = 0  # "someone should fix that junction", "the workers at the depot say": nobody on the road
             r.notes.append(f"left out: '{e.head}' does nothing on the road")
-        if e.type == "pedestrian" and e.definite and e.head in KIN and e.count > 0 and not e.actions and \
-                not e.features and not e.label and any(t.word in SPEAKERS for t in r.tokens):
+        if e.type == "pedestrian" and (e.definite or _said_aboard(r, e)) and e.head in KIN and e.count > 0 and \
+                not e.actions and not e.features and not e.label and any(t.word in SPEAKERS for t in r.tokens):
             e.count = 0  # "we sat at the red light ... the kids were fascinated": the speaker's own, on board
             r.notes.append(f"left out: 'the {e.head}', doing nothing on the road, ride with the speaker")
         if e.type in ("pedestrian", "police") and e.count > 0 and not e.actions and not e.features and \
