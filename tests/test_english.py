@@ -7722,3 +7722,31 @@ def test_a_key_said_to_have_no_value_names_no_agent():
 def test_family_said_to_be_in_the_car_ride_with_the_speaker():
     assert agents("A truck in the left lane cut in front of me, I was with my wife and kids in the car.") == [
         ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was in the middle lane and a truck that was in the left lane entered in my front without put the arrow.",
+     ("truck", "change_lane_to_right", "left")),
+    ("At the four-way stop a Camry across from me was waiting its turn.", ("car", "stop", "road_of_straight")),
+])
+def test_calques_and_idioms_of_waiting_and_cutting_in(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_speaker_who_puts_out_a_stop_arm_drives_a_bus_unless_the_arm_is_another_bus():
+    assert agents("I was stopped at the Oakwood Dr stop, red lights flashing and stop arm out. A black pickup coming "
+                  "the other way drove right past my arm.") == [("bus", "stop", "ego"),
+                                                                ("car", "go_straight", "front_left")]
+    assert ("car", "stop", "ego") in agents("I was stopped behind a school bus with its red lights flashing and the "
+                                            "stop arm out.")
+
+
+def test_a_posts_title_told_again_in_its_body_is_one_agent():
+    assert agents("Jeep tried to merge INTO me at a red light. OP here, on my motorcycle. Sitting at a red in the left "
+                  "lane, Jeep Wrangler in the right lane next to me just starts drifting over into my lane.") == [
+        ("car", "change_lane_to_left", "right"), ("motorcycle", "stop", "ego")]
+
+
+def test_someone_else_on_the_bike_is_not_the_speakers_bike():
+    assert agents("I'm going straight. A cyclist is riding on the shoulder ahead on my right. The guy on the bike "
+                  "deserves a medal.") == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_right")]

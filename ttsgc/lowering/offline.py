@@ -3611,8 +3611,8 @@ def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: se
     somewhere ahead."""
     after_me = first >= 2 and units[first - 2].tokens[-1].word in ("me", "i")  # "in front of me on bike"
     someone_before = first >= 2 and units[first - 2].category == "agents" and units[first - 2].meaning != "ego"
-    return "my" in words or first > lo and units[first - 1].word == "on" and (
-        bool(words & {"the", "my"}) or not words and not someone_before) or \
+    return "my" in words or first > lo and units[first - 1].word == "on" and not someone_before and (
+        "the" in words or not words) or \
         words <= {"the"} and first >= 2 and units[first - 1].word == "and" and after_me and \
         (head + 1 == len(units) or units[head + 1].category != "positions")
 
@@ -4398,6 +4398,10 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
             t.word != t.base and not t.word.endswith("ing") and not t.plural and
             (lexicon().phrases.get((t.base,)) or ("",))[0] == "actions" for t in first)  # "Pedestrian crossing
     # outside a crosswalk.": a short line with no finite verb is a heading
+    titled = said.sentence > 0 and r.tokens[-1].sentence >= 2 and any(
+        e.headline and 0 <= e.said_at <= 2 and not e.is_ego for e in r.entities)  # "Jeep tried to merge INTO me
+    # at a red light. OP here ... Jeep Wrangler in the right lane": a post's title, told again in its body
+    listed = listed or titled
     coded = said.sentence > 0 and first and first[0].word == "case"  # "SC-07 Emergency vehicle approach from the
     # rear.": a line opened by a document's identifier is the case's title, whatever places it says
     named = [e for e in r.entities if e.headline and not e.label and not e.is_ego and e.count == 1 and
@@ -8105,18 +8109,25 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
                   ("my", "rig"), ("the", "rig"), ("my", "load"), ("tachograph",), ("tacho",))
 
 
+BUS_DRIVERS_WORDS = (("stop", "arm"), ("my", "arm"), ("arm", "out"), ("my", "bus"))
+
+
 def _a_truckers_own(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
-    the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name."""
+    the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name; one who puts out
+    a stop arm drives a (school) bus."""
     words = [t.word for t in r.tokens]
-    if "ego" in words or not _says_any(words, TRUCKERS_WORDS):
-        return
+    told = [t.word for t in r.tokens if not t.question]  # (not "what's the rule when a school bus is stopped with
+    # its stop arm out?")
+    trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) else None
+    if "ego" in words or trade is None or any(e.type == trade and not e.is_ego for e in r.entities):
+        return  # ("stopped behind a school bus with its stop arm out": that bus's arm)
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None and set(words) & SPEAKERS:
         ego = _ego_entity(r, 0)  # "doing 65 ... in front of my bumper": the speaker, told of by no noun
     if ego is not None and ego.type == "car" and ego.head in FIRST_PERSON | {"we", "us", "our", "ego"}:
-        ego.type = "truck"
-        r.notes.append("inferred: the speaker talks as a truck driver; the ego is a truck")
+        ego.type = trade
+        r.notes.append(f"inferred: the speaker talks as a {trade} driver; the ego is a {trade}")
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
