@@ -7750,3 +7750,26 @@ def test_a_posts_title_told_again_in_its_body_is_one_agent():
 def test_someone_else_on_the_bike_is_not_the_speakers_bike():
     assert agents("I'm going straight. A cyclist is riding on the shoulder ahead on my right. The guy on the bike "
                   "deserves a medal.") == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_right")]
+
+
+def test_a_lane_change_given_up_is_not_made():
+    assert agents("I went to move into the right lane, but a pickup was in my blind spot, so I aborted and stayed in "
+                  "my lane.")[-1] == ("car", "go_straight", "ego")
+
+
+def test_both_after_two_named_in_the_clause_is_those_two():
+    assert agents("The ego is in the middle lane. A car from the left lane and a motorcycle from the right lane both "
+                  "cut into the ego's lane.") == [("car", "change_lane_to_right", "front_left"),
+                                                  ("car", "go_straight", "ego"),
+                                                  ("motorcycle", "change_lane_to_left", "front_right")]
+
+
+def test_school_children_and_a_test_applicant():
+    assert agents("The crossing guard walked out onto the crosswalk with three kindergartners and I stopped for "
+                  "them.").count(("pedestrian", "cross_the_road", "near_the_crosswalk")) == 4
+    assert ("car", "turn_right", "ego") in agents("Applicant turned right on red without first stopping.")
+
+
+def test_a_log_entry_is_about_the_vehicle_it_opens_on_and_places_the_others_by():
+    assert agents("Cam 9, 21:40: Dark grey Audi A4 parked at the curb outside the pizza place, hazards on. Patrol car "
+                  "pulls up behind it and stops.") == [("car", "stop", "ego"), ("police", "stop", "back")]

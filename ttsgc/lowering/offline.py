@@ -296,7 +296,30 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
-    return _unknown_makes(tokens, _street_names(tokens, _with_absolutes(_kerb_sides(tokens, _read_units(tokens)))))
+    return _aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(_kerb_sides(
+        tokens, _read_units(tokens))))))
+
+
+ABORTED = {"aborted", "abort", "aborts", "aborting", "abandoned", "abandons", "cancelled", "canceled", "cancels",
+           "refuses", "refused", "refuse"}
+STAYED_IN_LANE = (("stayed", "in", "my", "lane"), ("stayed", "in", "lane"), ("stays", "in", "its", "lane"),
+                  ("stayed", "in", "its", "lane"), ("kept", "my", "lane"), ("held", "my", "lane"),
+                  ("holds", "its", "lane"), ("stay", "in", "my", "lane"), ("stays", "in", "lane"))
+
+
+def _aborted_lane_changes(units: list[Unit]) -> list[Unit]:
+    """'went to move into the right lane ... so I aborted and stayed in my lane', 'the car flatly refuses the lane
+    change': a lane change given up in its own sentence is only tried."""
+    out = list(units)
+    for sentence in {u.tokens[0].sentence for u in units}:
+        words = [t.word for u in units if u.tokens[0].sentence == sentence for t in u.tokens]
+        if not (set(words) & ABORTED or _says_any(words, STAYED_IN_LANE)):
+            continue
+        for k, u in enumerate(out):
+            if u.tokens[0].sentence == sentence and u.category == "actions" and \
+                    u.meaning in ("lane_left", "lane_right", "lane_change"):
+                out[k] = Unit(u.start, u.end, "actions", "try", u.tokens)
+    return out
 
 
 LANE_PLACES = {"side_left", "side_right", "lane_said", "ego_lane", "into_ego_lane", "ahead", "behind"}
@@ -5096,6 +5119,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         r.mark(u)
         if u.word in ("both", "they", "them") or i in together:
             group = [e for e in recent if not e.is_ego][-2:] or list(previous_subject)
+            named_here = [np.entity for np in phrases if np.index < i and np.entity is not None and not np.entity.is_ego]
+            if u.word == "both" and len(named_here) >= 2:  # "a car from the left lane and a motorcycle from the right
+                phrases.append(NounPhrase(named_here[-2], i, i, plural=True, group=named_here[-2:]))  # lane both
+                continue  # cut in": the two just named
             if u.word == "both" and [x.word for x in units[i + 1:i + 2]] == ["of"] and i + 2 < len(units) and \
                     units[i + 2].category == "agents" and units[i + 2].meaning == "ego":
                 group = [e for e in recent if not e.is_ego][-1:] + [_ego_entity(r, stage)]  # "both of us": the
@@ -7610,6 +7637,9 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     people_first = first is not None and first.type in V.VULNERABLE_TYPES
     if people_first:  # "a wheelchair user trying to get across, and the car turning left doesn't look": the
         first = next((e for e in ordered if not e.is_ego and e.type not in V.VULNERABLE_TYPES), None)  # vehicle
+    if first is not None and not people_first and _told_by_it(r, first):
+        return first  # "Silver hatchback stopped at the red ... ped crosses in front of it ... hatchback proceeds":
+        # a log of the vehicle it opens on, the others placed by 'it'
     if first is None or not _may_drive_the_scene(first):
         return None
     earliest = min((a[0] for a in first.actions), default=0)
@@ -7627,6 +7657,25 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
     return first
+
+
+TOLD_BY_IT = (("in", "front", "of", "it"), ("ahead", "of", "it"), ("behind", "it"), ("on", "its", "right"),
+              ("on", "its", "left"), ("from", "its", "right"), ("from", "its", "left"), ("to", "its", "right"),
+              ("to", "its", "left"), ("its", "path"), ("across", "its", "front"))
+
+
+def _told_by_it(r: _Reader, first: Entity) -> bool:
+    """A text that opens on one vehicle, placed nowhere by the ego, and places the others by 'it' ('in front of it',
+    'on its right'): the vehicle a log entry is about."""
+    return first.type in V.EGO_TYPES and first.count == 1 and first.parent is None and not first.generic and \
+        not first.features & (HEADLINE_PLACES | SIDE_PLACES) and first.relative_to is None and \
+        _says_any([t.word for t in r.tokens], TOLD_BY_IT) and \
+        not any(e.is_ego and (e.aliases or e.type != "car") for e in r.entities) and \
+        all(e is first or e.type in V.VULNERABLE_TYPES or e.key > first.key for e in r.entities if not e.is_ego)
+
+
+SIDE_PLACES = {"side_left", "side_right", "front_left", "front_right", "back_left", "back_right", "from_left",
+               "from_right", "road_straight", "road_left", "road_right", "oncoming", "level"}
 
 
 def _drives(after: list[Token]) -> bool:
