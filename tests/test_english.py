@@ -7773,3 +7773,30 @@ def test_school_children_and_a_test_applicant():
 def test_a_log_entry_is_about_the_vehicle_it_opens_on_and_places_the_others_by():
     assert agents("Cam 9, 21:40: Dark grey Audi A4 parked at the curb outside the pizza place, hazards on. Patrol car "
                   "pulls up behind it and stops.") == [("car", "stop", "ego"), ("police", "stop", "back")]
+
+
+def test_the_ego_said_first_in_line_is_no_second_car():
+    assert agents("Ego car is waiting at red signal, as first car. Fire engine with siren comes from right side "
+                  "road.") == [("car", "stop", "ego"), ("firetruck", "go_straight", "road_of_right_turn")]
+
+
+def test_he_or_she_names_one_not_a_group():
+    found = agents("At the four-way stop by the library he waited for two older ladies to cross on the crosswalk. "
+                   "Then he went straight through.")
+    assert found.count(("pedestrian", "cross_the_road", "near_the_crosswalk")) == 2
+
+
+def test_a_manoeuvre_made_with_not_before_its_verb_is_not_made():
+    assert agents("The ego goes straight, he not make U-turn there.") == [("car", "go_straight", "ego")]
+
+
+def test_vehicles_said_with_no_count_doing_nothing_are_no_agents():
+    assert agents("My driver turned right. Three teenagers were standing on the sidewalk to our right throwing "
+                  "snowballs at cars.") == [("car", "turn_right", "ego")] + [
+        ("pedestrian", "on_the_sidewalk", "right")] * 3
+
+
+def test_the_driver_when_the_only_vehicle_is_the_egos_is_its_driver():
+    assert agents("The red car is driving down the street when a small boy runs out into the road from the right. "
+                  "The driver could not have seen the boy.") == [("car", "go_straight", "ego"),
+                                                                 ("pedestrian", "cross_the_road", "front_right")]

@@ -3530,8 +3530,9 @@ def _said_in_general(r: _Reader, e: Entity) -> bool:
                                    after.word in ("is", "are", "was", "were"))  # "Pedestrians: a group crossing"
     idle = not e.actions and not e.features and not keyed  # "Pedestrians, cyclists, everyone: seen.", "... with old
     # people"
-    if idle and not any(u.category == "actions" for u in r.units if u.tokens[0].sentence == sentence):
-        return True
+    if idle and (e.type not in V.VULNERABLE_TYPES or not any(u.category == "actions" for u in r.units
+                                                             if u.tokens[0].sentence == sentence)):
+        return True  # ("throwing snowballs at cars": vehicles said with no count, doing nothing, are no agents)
     return any(f is not e and not f.is_ego and f.type == e.type and f.count == 1 and not f.uncounted and
                f.parent is not e and f.said_at >= 0 and (r.tokens[f.said_at].sentence > sentence or idle)
                for f in r.entities)
@@ -3865,7 +3866,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(driven, head, first)
         own = next((e for e in r.entities if e.is_ego and e.type not in V.VULNERABLE_TYPES), None)
         if own is not None and not any(not e.is_ego and e.type != "pedestrian" for e in r.entities) and \
-                u.base == "driver" and own.aliases - {own.head}:
+                u.base == "driver" and (own.aliases - {own.head} or own.head not in SPEAKERS | FIRST_PERSON):
             return NounPhrase(own, head, first)  # "put the camera in the lorry ... what the driver sees": its driver
     at_the_wheel = _driven_by(r, units, head, recent) if count is None and not plural else None
     if at_the_wheel is not None:  # "a box truck ... the woman driving it stopped": the truck, by its driver
@@ -5716,7 +5717,8 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
                                                      "able", "unable", "time", "even", "ever", "really", "properly",
                                                      "so", "much", "once", "a", "all", "the", "way", "completely",
                                                      "fully", "full", "quite", "whatever", "for", "any", "of",
-                                                     "anyone", "anybody")) \
+                                                     "anyone", "anybody", "make", "makes", "made", "take",
+                                                     "takes", "took", "perform", "performs", "performed")) \
                 and u.category != "actions" and not (u.category == "agents" and u.meaning == "ego"):
             # ("nowhere whatever for any of us to pull over", "no room for me to move over")
             return False
@@ -6713,6 +6715,7 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     not the subject, usually the ego. 'she', 'him' name people."""
     if units[i].word in ("she", "her", "he", "him"):
         drives = _a_drivers_verb_after(units, i)  # "a pedestrian ran out in front of her; she swerved"
+        recent = [e for e in recent if e.count <= 1]  # "waited for two older ladies to cross ... then he went": one
         people = [e for e in recent if e.type in V.VULNERABLE_TYPES and not (drives and e.type == "pedestrian")]
         if drives and not people and any(e.type == "pedestrian" for e in recent):
             return next((e for e in reversed(recent) if e.type != "pedestrian"), None)
