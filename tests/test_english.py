@@ -7800,3 +7800,16 @@ def test_the_driver_when_the_only_vehicle_is_the_egos_is_its_driver():
     assert agents("The red car is driving down the street when a small boy runs out into the road from the right. "
                   "The driver could not have seen the boy.") == [("car", "go_straight", "ego"),
                                                                  ("pedestrian", "cross_the_road", "front_right")]
+
+
+def test_the_car_in_a_text_with_no_other_vehicle_is_the_ego():
+    lowered = lower_prompt("A pedestrian starts across the ladder crosswalk ahead. Watch as NightVision picks her out. "
+                           "Then it brings the car to a gentle stop.", "offline")
+    assert [(a.type, a.action) for a in lowered.scenario.stages[0].agents if a.is_ego] == [("car", "go_straight")]
+    assert not [a for stage in lowered.scenario.stages for a in stage.agents if a.type == "car" and not a.is_ego]
+
+
+def test_a_turn_said_bare_after_waiting_to_turn_is_the_turn_waited_for():
+    assert ("car", "turn_right", "road_of_straight") in agents(
+        "I was going straight through the lights, and a car coming from the other direction was waiting to turn right "
+        "across me, and he just turned, right in front of me.")

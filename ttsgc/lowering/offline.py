@@ -3921,10 +3921,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop", "the
             # system holds the car in place"
         if ego is None and not plural and bodies().get(u.base) == "car" and "other" not in words and \
-                not any(not e.is_ego for e in r.entities) and (nxt is None or nxt.category != "positions") and \
+                not any(not e.is_ego and e.type not in V.VULNERABLE_TYPES for e in r.entities) and \
+                (nxt is None or nxt.category != "positions") and \
                 not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u) and \
                 not _ego_named_later_in_the_sentence(r, u):
-            # ("the car overtakes us": the ego is named after it, so the car is another)
+            # ("the car overtakes us": the ego is named after it, so the car is another; "a pedestrian starts across
+            # ... it brings the car to a stop": no other vehicle, the car is the ego)
             ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
             r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
             return NounPhrase(ego, head, first)
@@ -4594,6 +4596,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 e.waits_to_turn = (stage, action, direction)
             return  # "a bus is waiting to pull out of the side road", "cars waiting to turn": it waits; pulling out
             # or turning is to come (the ego's turn is its plan, read in its own stage)
+        if action == "turn" and not direction and e.waits_to_turn and e.waits_to_turn[1] in ("turn_left", "turn_right"):
+            action = e.waits_to_turn[1]  # "waiting to turn right across me, and he just turned": the turn it waited
+            # to make
         if action == "walk" and e.type == "pedestrian" and {t.word for t in u.tokens} & SIDEWALK_WORDS:
             e.features.add("on_sidewalk")  # "standing on the pavement near the crossing": on the pavement, by it
         if action == "lane_change" and u.base == "change" and not direction and clause_units is not None and not \
