@@ -310,16 +310,13 @@ STAYED_IN_LANE = (("stayed", "in", "my", "lane"), ("stayed", "in", "lane"), ("st
 def _aborted_lane_changes(units: list[Unit]) -> list[Unit]:
     """'went to move into the right lane ... so I aborted and stayed in my lane', 'the car flatly refuses the lane
     change': a lane change given up in its own sentence is only tried."""
-    out = list(units)
-    for sentence in {u.tokens[0].sentence for u in units}:
-        words = [t.word for u in units if u.tokens[0].sentence == sentence for t in u.tokens]
-        if not (set(words) & ABORTED or _says_any(words, STAYED_IN_LANE)):
-            continue
-        for k, u in enumerate(out):
-            if u.tokens[0].sentence == sentence and u.category == "actions" and \
-                    u.meaning in ("lane_left", "lane_right", "lane_change"):
-                out[k] = Unit(u.start, u.end, "actions", "try", u.tokens)
-    return out
+    words: dict[int, list[str]] = {}
+    for u in units:
+        words.setdefault(u.tokens[0].sentence, []).extend(t.word for t in u.tokens)
+    given_up = {k for k, said in words.items() if set(said) & ABORTED or _says_any(said, STAYED_IN_LANE)}
+    return [Unit(u.start, u.end, "actions", "try", u.tokens)
+            if u.tokens[0].sentence in given_up and u.category == "actions" and
+            u.meaning in ("lane_left", "lane_right", "lane_change") else u for u in units]
 
 
 LANE_PLACES = {"side_left", "side_right", "lane_said", "ego_lane", "into_ego_lane", "ahead", "behind"}
@@ -3521,7 +3518,10 @@ def _said_aboard(r: _Reader, e: Entity) -> bool:
 def _said_in_general(r: _Reader, e: Entity) -> bool:
     """'Left-hook risk to cyclists ... may not see a cyclist riding alongside', 'Pedestrians step off the kerb ...
     we watched a taxi turn while an elderly man was halfway across': a bare plural, counted by no one, said before
-    one of its kind is named on its own in a later sentence, speaks of such agents in general."""
+    one of its kind is named on its own in a later sentence, speaks of such agents in general; so does one that
+    does nothing and is placed nowhere, when one of its kind is named on its own anywhere, when its sentence says
+    no one does anything ('Pedestrians, cyclists, everyone: seen.'), or when it is vehicles ('throwing snowballs
+    at cars')."""
     if not e.uncounted or e.definite or e.is_ego or e.parent is not None or e.said_at < 0 or e.label:
         return False
     sentence = r.tokens[e.said_at].sentence
@@ -4596,7 +4596,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 e.waits_to_turn = (stage, action, direction)
             return  # "a bus is waiting to pull out of the side road", "cars waiting to turn": it waits; pulling out
             # or turning is to come (the ego's turn is its plan, read in its own stage)
-        if action == "turn" and not direction and e.waits_to_turn and e.waits_to_turn[1] in ("turn_left", "turn_right"):
+        if action == "turn" and not direction and e.waits_to_turn and \
+                e.waits_to_turn[1] in ("turn_left", "turn_right"):
             action = e.waits_to_turn[1]  # "waiting to turn right across me, and he just turned": the turn it waited
             # to make
         if action == "walk" and e.type == "pedestrian" and {t.word for t in u.tokens} & SIDEWALK_WORDS:
@@ -5125,7 +5126,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         r.mark(u)
         if u.word in ("both", "they", "them") or i in together:
             group = [e for e in recent if not e.is_ego][-2:] or list(previous_subject)
-            named_here = [np.entity for np in phrases if np.index < i and np.entity is not None and not np.entity.is_ego]
+            named_here = [np.entity for np in phrases
+                          if np.index < i and np.entity is not None and not np.entity.is_ego]
             if u.word == "both" and len(named_here) >= 2:  # "a car from the left lane and a motorcycle from the right
                 phrases.append(NounPhrase(named_here[-2], i, i, plural=True, group=named_here[-2:]))  # lane both
                 continue  # cut in": the two just named
@@ -5228,8 +5230,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                   and not _is_reference(units, np)]
         seer = next((j for j in range(len(before) - 2, -1, -1) if before[j].entity is not None
                      and (before[j].entity.is_ego or before[j].entity.head in DRIVERS) and any(
-                         u.tokens[0].base in PERCEIVING
-                                                         for u in units[before[j].index + 1:before[j + 1].first])),
+                         u.tokens[0].base in PERCEIVING for u in units[before[j].index + 1:before[j + 1].first])),
                     None)  # "I admit I was looking at that and did not notice the car in front had stopped"
         seen = seer is not None
         if seen:
@@ -7486,7 +7487,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         r.notes.append(f"the scene kind '{asked[0]}' was asked for, but the prompt names its agents; "
                        "no template used")
     road = _ego_lane_road(r, road)
-    _a_truckers_own(r)
+    _a_drivers_trade(r)
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
         road.junction is None and "traffic_light" in road.required_signals and (any(
             f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
@@ -7594,7 +7595,9 @@ def _what_i_was(tokens: list[Token], k: int) -> set[str]:
             break
         out.append(t.word)
     pairs = {f"{a} {b}" for a, b in zip(out, out[1:])} | {f"{a} {b} {c}" for a, b, c in zip(out, out[1:], out[2:])}
-    return set(out) | pairs - ({"in my"} if {"chair", "wheelchair"} & set(out) else set())  # "in my chair"
+    if {"chair", "wheelchair"} & set(out):
+        pairs.discard("in my")  # "in my chair": on foot, not at a wheel
+    return set(out) | pairs
 
 
 OWN_WAY = {"go_straight", "move", "turn", "turn_left", "turn_right", "lane_change", "lane_left", "lane_right", "u_turn",
@@ -7886,8 +7889,7 @@ def _witness_on_foot(r: _Reader) -> None:
         return
     if crossing:
         subject = movers[0]  # "... when a silver hatchback pulled up and waited for me": the one met on the way over
-        at_a_crossing = bool(words & {"crosswalk", "zebra", "crossing", "pelican", "puffin", "toucan"} - {"crossing"}
-                             or "the crossing" in words or "zebra crossing" in words)
+        at_a_crossing = bool(words & {"crosswalk", "zebra", "pelican", "puffin", "toucan", "the crossing"})
         ego.is_ego, ego.type, ego.road_type = False, "pedestrian", None
         ego.features = {"crosswalk"} if at_a_crossing else {"ahead"}
         ego.actions = [(0, 2, ACTION_RANK["cross"], r.tick(), "cross", None)]
@@ -8169,7 +8171,7 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
 BUS_DRIVERS_WORDS = (("stop", "arm"), ("my", "arm"), ("arm", "out"), ("my", "bus"))
 
 
-def _a_truckers_own(r: _Reader) -> None:
+def _a_drivers_trade(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
     the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name; one who puts out
     a stop arm drives a (school) bus."""
@@ -8177,7 +8179,7 @@ def _a_truckers_own(r: _Reader) -> None:
     told = [t.word for t in r.tokens if not t.question]  # (not "what's the rule when a school bus is stopped with
     # its stop arm out?")
     trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) else None
-    if "ego" in words or trade is None or any(e.type == trade and not e.is_ego for e in r.entities):
+    if "ego" in words or trade is None or trade == "bus" and any(e.type == "bus" and not e.is_ego for e in r.entities):
         return  # ("stopped behind a school bus with its stop arm out": that bus's arm)
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None and set(words) & SPEAKERS:
@@ -8328,8 +8330,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             e.count = 0  # "residential street, parked cars, dusk": the street's scenery, said with no count
             r.notes.append(f"left out: '{e.head}' parked, with no count, are the street's scenery")
         if e.count > 0 and _said_in_general(r, e):
-            e.count = 0  # "pedestrians step off the kerb just as drivers turn; we watched an elderly man ...": the
-            r.notes.append(f"left out: '{e.head}' said of such agents in general; the one named after is the agent")
+            e.count = 0  # "pedestrians step off the kerb here ... we watched an elderly man cross": said in general
+            r.notes.append(f"left out: '{e.head}', with no count, said of such road users in general")
         if e.count > 0 and _came_after_the_crash(r, e):
             e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
             r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
