@@ -7813,3 +7813,9 @@ def test_a_turn_said_bare_after_waiting_to_turn_is_the_turn_waited_for():
     assert ("car", "turn_right", "road_of_straight") in agents(
         "I was going straight through the lights, and a car coming from the other direction was waiting to turn right "
         "across me, and he just turned, right in front of me.")
+
+
+def test_lights_going_is_no_one_going_and_there_was_opens_its_own_clause():
+    assert agents("I was in the right lane and there was a state trooper stopped on the shoulder up ahead on the "
+                  "right with his lights going.") == [("car", "go_straight", "ego"),
+                                                      ("police", "stop", "front_right")]

@@ -2553,6 +2553,8 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
     # before you did and an SUV is stopped": the clause's verb said again by its auxiliary alone
     if not (_has_agent(current) and (pro_verb or any(u.category == "word" and u.word in COPULAS for u in current))):
         return False
+    if rest[0].word == "there" and len(rest) > 1 and rest[1].word in COPULAS:
+        return True  # "I was in the right lane and there was a police car stopped on the shoulder": its own clause
     starts = rest[0].category == "agents" and (rest[0].meaning == "ego" or bool(rest[0].tokens[-1].label)) or \
         rest[0].word in SUBJECT_PRONOUNS or (  # "V2 is eastbound and V3 is westbound": a named one's own clause
         (rest[0].word in ("the", "a", "an", "this", "that", "some", "another") or rest[0].category in (
