@@ -7819,3 +7819,8 @@ def test_lights_going_is_no_one_going_and_there_was_opens_its_own_clause():
     assert agents("I was in the right lane and there was a state trooper stopped on the shoulder up ahead on the "
                   "right with his lights going.") == [("car", "go_straight", "ego"),
                                                       ("police", "stop", "front_right")]
+
+
+def test_the_moped_a_speaker_is_on_is_the_egos():
+    assert agents("on the moped doing food runs tonight. some guy double parked right in front of me so I went round "
+                  "him into the left lane.") == [("car", "stop", "front"), ("motorcycle", "change_lane_to_left", "ego")]

@@ -3690,7 +3690,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # "(the driver in) one of our artics": the fleet's vehicle the scene is told from
     if fleets_one:
         is_ego, plural = True, False
-    on_the_bike = u.base in ("bike", "motorbike") and not plural and count is None and \
+    on_the_bike = u.base in ("bike", "motorbike", "moped", "scooter", "motorcycle") and not plural and count is None and \
         _the_riders_own(units, head, first, lo, words) and any(t.word in ("i", "me", "my", "i'm") for t in r.tokens) and \
         not any(e.is_ego and e.type not in ("car", "motorcycle") for e in r.entities)
     if on_the_bike:  # "coming up to the junction on the bike", "just me and the bike": the rider's own; one who speaks
