@@ -6009,7 +6009,7 @@ def _said_not_there(units: list[Unit], np: NounPhrase) -> bool:
 def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) -> bool:
     """A sentence opened by a verb in the third person ('Sits there honking') in a first-person account is not the
     speaker's: it goes on with the one the sentence before was about."""
-    first_person = any(t.word in ("i", "i'm", "me", "my") for t in r.tokens)
+    first_person = any(t.word in FIRST_PERSON for t in r.tokens)
     return first_person and len(previous_subject) == 1 and not previous_subject[0].is_ego and \
         verb.word.endswith("s") and not verb.word.endswith("ss") and verb.base != verb.word and \
         not any(t.word.isalpha() for t in r.tokens[:verb.index] if t.sentence == verb.sentence)  # (after a time stamp)
@@ -6311,14 +6311,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if np.entity in r.entities:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
                 r.entities.remove(np.entity)
             continue
+        owned = np.introduced and _owned_by_the_teller(r, units, np)
         if np.introduced and (_the_speakers_seat(r, units, np) or _the_one_the_speaker_was_on(units, np) or
-                              _driven_with_no_subject(r, units, np) or _owned_by_the_teller(r, units, np)):
+                              _driven_with_no_subject(r, units, np) or owned):
             ego = _ego_entity(r, np.entity.stage)
             ego.type = np.entity.type if np.entity.type != "car" else ego.type
             ego.aliases.add(np.entity.head)  # "... The lorry turns left": the ego, named again
             if np.entity in r.entities:  # "coming through the village in the tipper": the speaker's own vehicle
                 r.entities.remove(np.entity)
-            r.owned = r.owned or _owned_by_the_teller(r, units, np)
+            r.owned = r.owned or owned
             r.notes.append(f"read 'the {np.entity.head}' the speaker rides in as the ego's")
             out.append(NounPhrase(ego, np.index, np.first))
             continue
@@ -7895,10 +7896,7 @@ def _witness_on_foot(r: _Reader) -> None:
         ego.is_ego, ego.type, ego.road_type = False, "pedestrian", None
         ego.features = {"crosswalk"} if at_a_crossing else {"ahead"}
         ego.actions = [(0, 2, ACTION_RANK["cross"], r.tick(), "cross", None)]
-        subject.is_ego = True
-        subject.features = {f for f in subject.features if f.startswith("compass_")}
-        r.entities.remove(subject)
-        r.entities.insert(0, subject)
+        _the_ego_now(r, subject)
         r.notes.append(f"inferred: the teller was crossing on foot; the '{subject.head}' that met them is the ego")
         return
     if patrol:
@@ -7908,10 +7906,7 @@ def _witness_on_foot(r: _Reader) -> None:
                     for k, t in enumerate(r.tokens) if k)  # "with me stood on the kerb": waiting to cross
         ego.actions = [(0, 2, ACTION_RANK["stop" if waits else "cross"], r.tick(), "stop" if waits else "cross",
                         None)]
-        subject.is_ego = True
-        subject.features = {f for f in subject.features if f.startswith("compass_")}
-        r.entities.remove(subject)
-        r.entities.insert(0, subject)
+        _the_ego_now(r, subject)
         r.notes.append(f"inferred: the speaker sees people over a crossing, on foot; the '{subject.head}' that meets "
                        "them is the ego")
         return
@@ -7929,16 +7924,22 @@ def _witness_on_foot(r: _Reader) -> None:
         ego.features = {"on_sidewalk", side} | ({place} if place else set())
     else:  # "I was waiting at the bus stop ... a red hatchback turned left": an onlooker, in no one's way
         r.entities.remove(ego)
-    subject.is_ego = True
-    subject.features = {f for f in subject.features if f.startswith("compass_")}
     subject.relative_to = None
     for e in r.entities:
         if e.relative_to is subject:
             e.relative_to = None  # "in front of the Ford": in front of the ego now
-    r.entities.remove(subject)
-    r.entities.insert(0, subject)
+    _the_ego_now(r, subject)
     r.notes.append(f"inferred: the witness is on foot{'' if placed else ', placed by no one (no agent)'}; the "
                    f"'{subject.head}' the statement is about is the ego")
+
+
+def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
+    """The vehicle an account on foot is about becomes the ego: first among the agents, placed by no one but its
+    compass heading."""
+    vehicle.is_ego = True
+    vehicle.features = {f for f in vehicle.features if f.startswith("compass_")}
+    r.entities.remove(vehicle)
+    r.entities.insert(0, vehicle)
 
 
 CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheeling across", "in the crosswalk",
