@@ -4699,7 +4699,7 @@ def test_whoever_a_rule_says_you_may_meet_is_nobody_in_the_scene(prompt, expecte
 
 
 def test_someone_the_narrator_saw_is_still_in_the_scene():
-    assert ("police", "go_straight", "front_right") in agents(
+    assert ("police", "stop", "front_right") in agents(
         "When I saw a police car on the shoulder, I moved over.")
 
 
@@ -7824,3 +7824,152 @@ def test_lights_going_is_no_one_going_and_there_was_opens_its_own_clause():
 def test_the_moped_a_speaker_is_on_is_the_egos():
     assert agents("on the moped doing food runs tonight. some guy double parked right in front of me so I went round "
                   "him into the left lane.") == [("car", "stop", "front"), ("motorcycle", "change_lane_to_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Our car drives straight through a four-way stop while a cyclist rides straight across from the road on the right.",
+     ("cyclist", "go_straight", "road_of_right_turn")),
+    ("At the crossroads a cyclist rides across from the right in front of me.",
+     ("cyclist", "cross_the_road", "road_of_right_turn")),
+])
+def test_a_cyclist_straight_across_from_a_side_road_goes_on_along_its_own_road(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "stuck behind a plow truck doing 15, two kids walking on the sidewalk on my right",
+    "I was stuck behind a car towing a caravan, crawling along.",
+])
+def test_stuck_behind_one_still_moving_is_no_stop(prompt):
+    assert ("car", "go_straight", "ego") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "There was a tractor-trailer on the right shoulder of I-95.",
+    "There is a disabled truck on the right shoulder, no flashers.",
+])
+def test_a_vehicle_on_the_shoulder_with_nothing_said_it_does_stands_there_ahead(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("truck", "stop", "front_right")]
+
+
+def test_an_absolute_after_a_comma_is_the_things_and_the_side_ends_at_the_comma():
+    assert ("police", "stop", "front_left") in agents(
+        "There is a patrol car stopped on the hard shoulder up ahead on our left, light bar going.")
+    assert agents("A car stopped ahead of me, hazards blinking.") == [("car", "go_straight", "ego"),
+                                                                     ("car", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("In thick fog I drove home. Suddenly stood a car without lights still on the road in front of me.",
+     ("car", "stop", "front")),
+    ("I drove in the city. Then crosses a boy on his bike the road from the right, without looking.",
+     ("cyclist", "cross_the_road", "front_right")),
+])
+def test_verb_second_order_with_no_place_first_has_its_subject_after_the_verb(prompt, expected):
+    found = agents(prompt)
+    assert expected in found and ("car", "go_straight", "ego") in found
+
+
+def test_an_order_to_come_across_someone_is_still_the_egos():
+    assert agents("Came across a cyclist on the bridge.") == [("car", "go_straight", "ego"),
+                                                             ("cyclist", "go_straight", "front")]
+
+
+def test_standing_still_in_a_lane_is_at_the_wheel_not_on_foot():
+    assert agents("There was a traffic jam. I stood still in the right lane. Over the hard shoulder an ambulance came "
+                  "from behind past us.") == [("ambulance", "go_straight", "back_right"), ("car", "stop", "ego")]
+
+
+def test_a_videos_time_stamp_is_no_count():
+    assert agents("0:42 the van just swings into my lane from the left lane.") == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("OP is the one driving the 40-tonne truck. A car cuts in front of him.", "truck"),
+    ("0:42 a van swings into OP's lane from the left lane.", "car"),
+])
+def test_the_original_poster_is_the_ego(prompt, ego):
+    found = agents(prompt)
+    assert (ego, "go_straight", "ego") in found and len([a for a in found if a[2] == "ego"]) == 1
+
+
+def test_the_co_op_is_a_shop():
+    assert agents("Two pedestrians cross in front of me outside the Co-op.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front"),
+        ("pedestrian", "cross_the_road", "front")]
+
+
+def test_a_cab_cam_is_no_cab_and_under_ones_nose_is_ahead():
+    assert agents("Watch my cab cam: a hatchback in the right lane cuts left right under my nose.") == [
+        ("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
+
+
+def test_help_asked_for_by_a_caller_is_no_agent():
+    assert agents("CALLER: I need police and an ambulance. / OPERATOR: Where are you? / CALLER: I'm stopped at the "
+                  "red light in my car.") == [("car", "stop", "ego")]
+
+
+def test_following_after_the_copula_is_a_verb():
+    assert agents("Ego car is following city bus in right lane.") == [("bus", "go_straight", "front"),
+                                                                     ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Three-lane motorway, I'm in the middle lane. HGV at my seven the whole time, holding its lane.",
+     ("truck", "go_straight", "back_left")),
+    ("Motorway, two lanes. Lorry at my twelve, steady.", ("truck", "go_straight", "front")),
+    ("Motorway, two lanes. Car at my three, level with me, pulls across into my lane.",
+     ("car", "change_lane_to_left", "right")),
+    ("Side road, yield sign at the end, I want to turn right. Car at my nine o'clock coming along the main road.",
+     ("car", "go_straight", "road_of_left_turn")),
+])
+def test_a_place_told_by_the_clock(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_time_on_the_clock_is_no_place():
+    assert agents("At eight o'clock a van pulled out in front of me.") == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+
+
+def test_scots_spellings_are_read_as_the_english_they_are():
+    assert agents("Ah wis sat at a red light when a polis car came up behind me wi the blues oan. Then ah nudged ower "
+                  "intae the left lane tae let it through.") == [
+        ("car", "change_lane_to_left", "ego"), ("car", "stop", "ego"), ("police", "go_straight", "back")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ootside the shop there's a zebra. The motor behind me had tae slam on.", ("car", "stop", "back")),
+    ("At night a machine is stopped on the shoulder on the right in front of me.",
+     ("car", "stop", "front_right")),
+])
+def test_a_motor_and_a_machine_are_cars(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_the_machine_the_speaker_stops_is_the_egos():
+    assert agents("At the light I stop the machine on the stop line.") == [("car", "stop", "ego")]
+
+
+def test_going_in_my_lane_is_going_into_it():
+    assert ("car", "change_lane_to_right", "left") in agents("A black Audi in the left lane enters in my lane.")
+    assert agents("A bus is stopped in my lane.") == [("bus", "stop", "front"), ("car", "go_straight", "ego")]
+
+
+def test_a_vehicle_that_emerges_in_the_oncoming_lane_is_oncoming_with_no_junction():
+    lowered = lower("A van emerges from the mist in the oncoming lane and passes.")
+    assert [(a.type, a.relative_to_ego) for a in lowered.scenario.agents() if not a.is_ego] == [("car", "front_left")]
+    assert not lowered.scenario.road.junction
+
+
+def test_a_bus_driver_moving_off_from_the_stop_is_at_the_wheel():
+    assert agents("I am a bus driver. I was moving off from the bus stop and changing out to the right lane, but a BMW "
+                  "came from behind on my right side.") == [("bus", "change_lane_to_right", "ego"),
+                                                            ("car", "go_straight", "back_right")]
+
+
+def test_a_captions_point_of_view_is_the_egos():
+    assert agents("POV: ur turning left at the lights and the dude coming the other way in a lifted pickup floors it "
+                  "thru the intersection") == [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]
+    assert ("car", "go_straight", "ego") not in agents("SV: a truck turning left. POV: a silver sedan traveling north.")

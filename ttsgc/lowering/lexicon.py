@@ -1233,7 +1233,7 @@ def tokenize(text: str) -> list[Token]:
                     misspelt, part = part, guess
                     base, inflected = lex.base(part)
             plural = inflected and (part.endswith("s") or part in lex.irregular) and not part.endswith("ss") \
-                and part not in ("is", "was", "has", "does", "goes", "bus", "police")
+                and part not in ("is", "was", "has", "does", "goes", "bus", "police", "mrs", "ms")
             tokens.append(Token(part, base, len(tokens), sentence, plural, possessive, label, question,
                                 sentence_of_raw[position] in titled, misspelt, mark))
     return tokens

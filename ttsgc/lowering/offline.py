@@ -297,7 +297,39 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 def _units(tokens: list[Token]) -> list[Unit]:
     return _aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(_kerb_sides(
-        tokens, _read_units(tokens))))))
+        tokens, _entering_in(_time_stamps(_read_units(tokens))))))))
+
+
+GOING_INTO = {"enter", "come", "move", "get", "swerve", "merge", "slide", "push", "squeeze", "put"}
+
+
+def _entering_in(units: list[Unit]) -> list[Unit]:
+    """'enters suddenly in my lane', 'comes in my lane' (Italian, Spanish, Portuguese: 'entra nella mia corsia'): 'in
+    my lane' after a verb of going is into it."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "positions" or u.meaning != "ego_lane" or u.tokens[0].word != "in":
+            continue
+        j = k - 1
+        while j >= 0 and (units[j].category == "behaviours" or units[j].word.endswith("ly") and
+                          units[j].category == "word"):
+            j -= 1
+        if j >= 0 and units[j].category == "actions" and len(units[j].tokens) == 1 and \
+                units[j].tokens[0].base in GOING_INTO:
+            out[k] = Unit(u.start, u.end, "positions", "into_ego_lane", u.tokens)
+    return out
+
+
+def _time_stamps(units: list[Unit]) -> list[Unit]:
+    """'0:42 the van swings in', '14:02 Caller reports': a clock's or a video's time (two numbers with nothing
+    between, the second of two digits) is no count and no speed."""
+    out = list(units)
+    for k in range(len(units) - 1):
+        a, b = units[k], units[k + 1]
+        if a.category in ("number", "numbers") and b.category in ("number", "numbers") and _clock_stamp(a, b):
+            out[k] = Unit(a.start, a.end, "word", a.word, a.tokens)
+            out[k + 1] = Unit(b.start, b.end, "word", b.word, b.tokens)
+    return out
 
 
 ABORTED = {"aborted", "abort", "aborts", "aborting", "abandoned", "abandons", "cancelled", "canceled", "cancels",
@@ -371,10 +403,19 @@ GERUND_MODIFIERS = {"own", "hard", "heavy", "sudden", "harsh", "light", "gentle"
 
 
 def _with_absolutes(units: list[Unit]) -> list[Unit]:
-    """'a semi stopped on the shoulder with its hazards going', 'with the engine running': the -ing verb after
-    'with' and a thing that is no road user is that thing's, not a doing of the clause's subject."""
+    """'a semi stopped on the shoulder with its hazards going', 'with the engine running', ', light bar going': the
+    -ing verb after 'with' (or a comma) and a thing that is no road user is that thing's, not a doing of the
+    clause's subject."""
     out = list(units)
     for k, u in enumerate(units):
+        if u.category == "comma" and k + 2 < len(units) and units[k + 1].category == "agents" and \
+                units[k + 1].meaning == "none":  # ", light bar going", ", hazards blinking": the same, with no 'with'
+            j = k + 2 if units[k + 2].category == "actions" else k + 3
+            if j < len(units) and units[j].category == "actions" and len(units[j].tokens) == 1 and \
+                    units[j].tokens[0].word.endswith("ing") and (j == k + 2 or units[k + 2].word.isalpha() and
+                                                                 units[k + 2].category == "word"):
+                out[j] = Unit(units[j].start, units[j].end, "word", units[j].tokens[0].word, units[j].tokens)
+            continue
         if u.word != "with" or u.category != "word":
             continue
         j = k + 1
@@ -871,8 +912,18 @@ def _short_names(units: list[Unit]) -> list[Unit]:
 
 
 STILL_MOVING = {"going", "driving", "doing", "crawling", "travelling", "traveling", "moving", "trundling", "slow",
-                "dawdling", "plodding", "creeping", "rolling", "cruising"}
+                "dawdling", "plodding", "creeping", "rolling", "cruising", "towing", "pulling", "hauling"}
 EGO_WORDS = {"you", "i", "we", "player", "ego", "av", "sv"}
+
+
+def _phrase_words(tokens: list[Token], i: int, n: int) -> list[str]:
+    """Up to n words from i, to the end of the phrase ("stuck behind a plow truck doing 15, two kids ...")."""
+    words = []
+    for t in tokens[i:i + n]:
+        if t.word in (",", ".", ";", ":", "and", "but"):
+            break
+        words.append(t.word)
+    return words
 
 
 def _rides_slowly(tokens: list[Token], i: int) -> bool:
@@ -934,6 +985,16 @@ OWNERS = {"my", "your", "his", "her", "their", "our"}
 BODY_PARTS = {"shoulder", "shoulders"}
 
 
+CORNERS = {"front_left", "front_right", "back_left", "back_right"}
+CLOCK_HOURS = {"one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
+               *(str(n) for n in range(1, 13))}
+
+
+def _a_clock_hour(span: list[Token]) -> bool:
+    """'at my two o'clock', 'at my seven': a place told by the clock (positions.txt)."""
+    return any(t.word in CLOCK_HOURS for t in span) and any(t.word in ("my", "your", "our") for t in span)
+
+
 def _body_part(tokens: list[Token], m: Match) -> bool:
     """'over your right shoulder', 'a shoulder check': the driver's shoulder, not the road's, nor a side."""
     words = [t.word for t in tokens]
@@ -969,8 +1030,12 @@ def _a_vehicles_part(tokens: list[Token], m: Match) -> bool:
 
 def _part_after(tokens: list[Token], k: int) -> int | None:
     """Where a vehicle's part is named in the next two words ('rear trailer corner', 'front fender')."""
-    return next((j for j in range(k, min(k + 2, len(tokens))) if tokens[j].word in VEHICLE_PARTS and
-                 not tokens[j].plural), None)
+    for j in range(k, min(k + 2, len(tokens))):
+        if tokens[j].word == ",":
+            return None  # "on our left, light bar going": the side ends at the comma
+        if tokens[j].word in VEHICLE_PARTS and not tokens[j].plural:
+            return j
+    return None
 
 
 PACE_PLACES = {"behind", "ahead", "alongside", "beside", "level", "next", "abreast"}
@@ -1191,6 +1256,16 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             _word_number(tokens[m.end]) in (1, 2, 3, 4, 5):  # "pull out into lane two": a numbered lane, not ours
         return [Unit(m.start, m.end + 1, "positions", f"into_lane_{int(_word_number(tokens[m.end]))}",
                      tuple(tokens[m.start:m.end + 1]))]
+    if m.category == "positions" and m.meaning in CORNERS and _a_clock_hour(span):
+        ahead, side = m.meaning.split("_")  # "a van at my two o'clock": ahead and to the right, each as said apart,
+        return [Unit(m.start, m.end - 1, "positions", "ahead" if ahead == "front" else "behind", span[:-1]),
+                Unit(m.end - 1, m.end, "positions", "side_" + side, span[-1:])]  # so a crossing or a road wins
+    if m.category == "agents" and [t.word for t in span] == ["pov"] and m.start == 0 and m.end < len(tokens) and \
+            tokens[m.end].word == "is" and not {t.word for t in tokens} & {"sv", "ego", "sv1", "v1"}:
+        return [Unit(m.start, m.end, "word", "pov", span)]  # "POV: ur turning left ...": a caption's point of view
+        # (the ego's), not a crash report's principal other vehicle
+    if m.category == "agents" and [t.word for t in span] == ["op"] and m.start > 0 and tokens[m.start - 1].word == "co":
+        return [Unit(m.start, m.end, "word", "op", span)]  # "outside the Co-op": a shop, not the original poster
     if m.category == "positions" and [t.word for t in span] == ["right"] and m.start > 0 and nxt in INTENSIFIED and \
             "actions" in ((lexicon().phrases.get((tokens[m.start - 1].base,)) or ("", ""))[0],
                           (lexicon().phrases.get((tokens[m.start - 1].base, nxt)) or ("", ""))[0]):
@@ -1239,7 +1314,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             span[0].word == "not" and nxt in ("over", "across", "aside"):
         return [Unit(m.start, m.end, "word", "not", span)]  # "a ticket for not moving over": no lane change, no stop
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stuck"] and (
-            nxt in STILL_MOVING or nxt == "behind" and ({t.word for t in tokens[m.end + 1:m.end + 4]} & STILL_MOVING
+            nxt in STILL_MOVING or nxt == "behind" and (set(_phrase_words(tokens, m.end + 1, 5)) & STILL_MOVING
                                                        or _rides_slowly(tokens, m.end + 1))):
         return [Unit(m.start, m.end, "word", "stuck", span)]  # "stuck behind a crawling van": slow, not stopped
     if m.category == "actions" and [t.word for t in span] == ["slow"] and m.start > 0 and \
@@ -3301,6 +3376,23 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
 
 ADJECTIVE_POSITIONS = {"oncoming", "opposing", "leading", "lead", "following", "trailing", "adjacent", "preceding",
                        "opposite", "front", "rear", "back", "tailgating"}
+TRANSITIVE_POSITIONS = {"following", "trailing", "tailgating", "leading", "preceding"}
+
+
+def _placed_on_the_way_in(between: list[Unit]) -> bool:
+    """'(the dude) coming the other way in (a pickup)': a verb in -ing and where it goes, then 'in' its vehicle."""
+    return len(between) >= 2 and between[-1].word == "in" and between[0].tokens[0].word.endswith("ing") and \
+        between[0].category in ("actions", "positions") and all(
+            u.category == "positions" or u.category == "word" and u.word in ("the", "other", "way", "from", "up",
+                                                                            "down", "along")
+            for u in between[1:-1])
+
+
+def _a_verb_after_the_copula(units: list[Unit], u: Unit) -> bool:
+    """'Ego car is following city bus': the -ing word right after 'is' is its verb (the bus is followed), not a
+    word for which one it is ('SV1 is oncoming truck')."""
+    k = units.index(u)
+    return u.word in TRANSITIVE_POSITIONS and k > 0 and units[k - 1].word in ("is", "are", "was", "were")
 DETERMINERS = DEFINITE | INDEFINITE | {
     "his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second", "third",
     "first", "same", "further", "additional", "extra", "its", "their",
@@ -3312,8 +3404,8 @@ CLOCK_WORDS = {"hrs", "hours", "hr", "h", "am", "pm", "oclock", "o'clock", "gmt"
 
 
 def _clock_stamp(hours: Unit, minutes: Unit) -> bool:
-    """'14:02', '00:05': the two numbers of a clock time, read as the tokens they are."""
-    return hours.word.isdigit() and int(hours.word) < 24 and len(minutes.word) == 2 and minutes.word.isdigit() \
+    """'14:02', '00:05', '12:45' (a video's minutes): the two numbers of a time, read as the tokens they are."""
+    return hours.word.isdigit() and int(hours.word) < 60 and len(minutes.word) == 2 and minutes.word.isdigit() \
         and minutes.tokens[0].index == hours.tokens[-1].index + 1
 
 
@@ -3555,7 +3647,8 @@ CALLED_OUT = {"dispatched", "requested", "enroute", "attended", "responded", "su
               ("on", "the", "way"), "needed", "required"}  # (not "came later": with no collision told, a later
 # arrival is in the scene)
 CALLED_FOR = {"call", "called", "calling", "phone", "phoned", "phoning", "ring", "rang", "ringing", "request",
-              "requested", "requesting", "summon", "summoned", "dial", "dialled", "dialed"}  # "I called an ambulance"
+              "requested", "requesting", "summon", "summoned", "dial", "dialled", "dialed", "need", "send"}
+# "I called an ambulance", "I need police and an ambulance" (a caller asking for help)
 
 
 def _called_out(r: _Reader, e: Entity) -> bool:
@@ -3567,7 +3660,7 @@ def _called_out(r: _Reader, e: Entity) -> bool:
     sentence = r.tokens[e.said_at].sentence
     after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 10] if t.sentence == sentence]
     said = set(after) | set(zip(after, after[1:])) | set(zip(after, after[1:], after[2:]))
-    before = {t.word for t in r.tokens[max(0, e.said_at - 3):e.said_at] if t.sentence == sentence}
+    before = {t.word for t in r.tokens[max(0, e.said_at - 5):e.said_at] if t.sentence == sentence}
     return bool(said & CALLED_OUT or before & CALLED_FOR)
 
 
@@ -4085,8 +4178,9 @@ def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
         not e.is_ego and (e.head.split()[-1] == noun or noun in e.aliases) for e in r.entities)
 
 
-GENERAL_BODIES = {"car", "vehicle", "truck", "bus"}
-CONTROLLING = {"hold", "bring", "keep", "steer", "guide", "ease", "brake"}  # what a system does to the car it drives
+GENERAL_BODIES = {"car", "vehicle", "truck", "bus", "machine", "motor"}  # (machine: an Italian or Russian "car")
+CONTROLLING = {"hold", "bring", "keep", "steer", "guide", "ease", "brake", "move", "stop", "park", "put", "drive",
+               "pull"}  # what a system (or its driver) does to the car it drives
 SELF_NAMES = {"i", "me", "we", "us", "you", "mine", "ours", "yours", "my own"}
 
 
@@ -4557,6 +4651,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 any(x.category in ("road", "positions") and (x.meaning in V.CROSSWALK_OBJECTS | {"crosswalk", "stop_line"})
                     for x in clause_units[k + 1:k + 4]):
             action = "move"  # "the Fiesta went across the zebra": through the crossing, on its own road
+        if action == "cross" and e.type not in V.VULNERABLE_TYPES and u.base == "emerge" and \
+                clause_units is not None and k is not None and any(
+                x.category == "positions" and x.meaning in ("road_straight", "toward") for x in clause_units[k + 1:k + 6]):
+            action = "move"  # "a van emerges from the mist in the oncoming lane": it comes on, along its own lane
+        if action == "cross" and e.type == "cyclist" and "straight" in {t.word for t in u.tokens}:
+            e.features.add("straight_across")  # "rides straight across from the road on the left": through the
+            # junction on its own road, when it comes from a side road (mid-block, over the ego's road)
         if action == "stop" and not e.is_ego and u.base == "sit" and clause_units is not None and k is not None and \
                 any(x.category == "positions" and x.meaning in ("level", "behind") for x in clause_units[k + 1:k + 3]):
             action = "move"  # "a ute sitting right next to me", "sitting on my tail": keeping pace with the ego
@@ -4628,6 +4729,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                     not circulating and not again:  # ("in the roundabout going around": round it, not round
                 # someone; "drove round and round the estate": about it)
                 side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
+            if side and _passing_one_off_the_lanes(r, clause_units, k):
+                side = None  # "a semi stopped on the shoulder ... I'm going past it in the right lane": no change
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
                 for x in clause_units[k + 1:k + 6]:
@@ -5566,9 +5669,12 @@ def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -
     has as subject the new noun phrase right after the verb."""
     opening = next((j for j, u in enumerate(units[:verb]) if not (
         u.category == "word" and u.word in INTERJECTIONS | {"but", ","})), verb)  # "And here comes ..."
-    if opening >= verb or not (units[opening].category == "positions" or units[opening].word in PLACE_PREPOSITIONS):
-        return None
     v = units[verb]
+    if all(u.category in ("behaviours", "comma") or u.word in INTERJECTIONS | TIME_ADVERBS
+           for u in units[opening:verb]):
+        return _inverted_at_the_start(units, phrases, verb)
+    if not (units[opening].category == "positions" or units[opening].word in PLACE_PREPOSITIONS):
+        return None
     if v.tokens[0].base not in INVERTING_VERBS:
         return None
     after = next((np for np in phrases if np.index > verb), None)
@@ -5580,6 +5686,30 @@ def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -
            and u.category != "behaviours" for u in units[verb + 1:after.first]):
         return None
     return after
+
+
+TIME_ADVERBS = {"then", "suddenly", "also", "now", "there", "here", "again", "just", "next"}
+COMING_AT_THE_START = {"come", "stand", "appear", "emerge", "run", "walk", "cross", "cycle"}  # none takes a road user
+# as object ("came across a cyclist" has a word between)
+
+
+def _inverted_at_the_start(units: list[Unit], phrases: list[NounPhrase], verb: int) -> NounPhrase | None:
+    """Verb-second order with no place first, from writers of Dutch or German: 'Suddenly stood a car on the road',
+    'Then crosses a boy on his bike the road'. A finite verb of coming, standing or crossing (not an order: 'cross
+    the road') right before a new noun phrase has that phrase as subject."""
+    v = units[verb]
+    if v.category != "actions" or v.tokens[0].base not in COMING_AT_THE_START or v.tokens[0].word == v.tokens[0].base:
+        return None
+    after = next((np for np in phrases if np.index > verb), None)
+    if after is None or not after.introduced or after.entity is None or after.entity.is_ego:
+        return None
+    if any(not (u.category in ("behaviours", "numbers", "number") or u.word in ARTICLES_AND_COUNTS)
+           for u in units[verb + 1:after.first]):
+        return None
+    return after
+
+
+ARTICLES_AND_COUNTS = {"a", "an", "the", "one", "some", "another", "also", "two", "three"}
 
 
 ACTION_NOUN_TAILS = {"action", "manoeuvre", "maneuver", "event", "move"}
@@ -6100,6 +6230,14 @@ def _part_of_group(r: _Reader, n: int) -> Entity | None:
     return None
 
 
+def _passing_one_off_the_lanes(r: _Reader, units: list[Unit], k: int) -> bool:
+    """'going past it in the right lane' when 'it' is the one stopped on the shoulder: the ego passes in its own
+    lane."""
+    said_again = any(u.word in ("it", "him", "her", "them") for u in units[k + 1:k + 3])
+    last = next((e for e in reversed(r.entities) if not e.is_ego and e.count == 1 and e.type != "pedestrian"), None)
+    return said_again and last is not None and last.road_type == "shoulder"
+
+
 def _side_of_passing_the_ego(units: list[Unit], i: int) -> bool:
     """'(overtook) me on the right', 'passed us on the left': the side a vehicle passes the ego on."""
     j = i - 1
@@ -6342,7 +6480,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
             seat = [u.word for u in between if not (u.category in ("actions", "behaviours") and
                                                     u.tokens[0].word.endswith("ing"))] \
-                if len(between) == 2 else [u.word for u in between]  # "some bloke speeding in a white hatchback"
+                if len(between) == 2 and not _placed_on_the_way_in(between) else \
+                ["in"] if _placed_on_the_way_in(between) else [u.word for u in between]
+            # "some bloke speeding in a white hatchback", "the dude coming the other way in a lifted pickup"
             driver = (prev.entity.head in DRIVERS or prev.entity.head.split()[-1] == "rider" and
                       np.entity.type in V.TWO_WHEELER_TYPES) and (seat in (
                 ["in"], ["driving"], ["on"], ["of"]) or not between and units[np.first].word == "of") or (
@@ -6388,7 +6528,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             bare = _undetermined(units, np)  # "SV1 is oncoming truck", "POV, heavy truck, enters": articles dropped
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
                    u.category == "comma" or bare and (copula or prev.entity.label) and u.category == "positions" and
-                   len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS for u in between) and (
+                   len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS and not _a_verb_after_the_copula(units, u)
+                   for u in between) and (
                     copula or prev.entity.label or (between and prev.entity.is_ego and np.entity.type in V.EGO_TYPES and
                                                       not _placed_after(units, np.index) and (
                         units[np.first].word in ("a", "an") and not _does_after(units, np.index) or
@@ -6507,14 +6648,14 @@ def _members_listed(r: _Reader, clause: Clause, phrases: list[NounPhrase], recen
 
 def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> bool:
     """'I was driving a bus', 'you're at the wheel of the ambulance', 'the player pulls the bus in', 'I was the
-    front-seat passenger in my husband's Honda': a vehicle the speaking ego drives, steers or sits in is the ego's
-    own, no other agent."""
+    front-seat passenger in my husband's Honda', 'OP is the one driving the truck': a vehicle the speaking ego
+    drives, steers or sits in is the ego's own, no other agent."""
     k = len(before) - 1
     seat = None
     if k >= 1 and before[k].entity is None and "passenger" in units[before[k].index].base.split():
         seat, k = before[k], k - 1  # "the front-seat passenger in ...": the passenger is the speaker
     if k < 0 or before[k].entity is None or not before[k].entity.is_ego or \
-            before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego"} or \
+            before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego", "op"} or \
             np.entity is None or np.entity.type not in V.EGO_TYPES or np.plural:
         return False
     between = units[before[k].index + 1: np.first]
@@ -6525,7 +6666,7 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
     return bool(between) and all(
         units.index(u) in inside_seat or wheel and u.category == "positions" and u.base == "behind" or
         u.category in ("word", "actions") and (u.tokens[-1].word in AT_THE_WHEEL_OF or u.base in AT_THE_WHEEL_OF)
-        for u in between) and \
+        or u.word == "one" for u in between) and \
         (between[-1].tokens[-1].word in OPERATED_FROM or between[-1].base in OPERATED_FROM)
 
 
@@ -7321,6 +7462,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
         if "waits_to_cross" in e.features and e.type == "pedestrian" and (
                 "on_sidewalk" in e.features or e.road_type == "sidewalk" or any(a[4] == "walk" for a in e.actions)):
             return "on_the_sidewalk"  # "standing on the pavement, waiting to cross": still on the pavement
+        if "straight_across" in e.features and position in ("road_of_left_turn", "road_of_right_turn"):
+            return "go_straight"
         return "cross_the_road" if e.type in V.VULNERABLE_TYPES else "go_straight"
     if action == "walk":
         if e.type != "pedestrian":
@@ -7552,9 +7695,12 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
            "crossing the road", "crossing the street", "in the crosswalk", "rolling across", "wheeling across"}
 # (a wheelchair user, waiting to cross or on the way over; not "I stopped for kids on the crossing")
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
-                "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked"}
+                "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked",
+                "right lane", "left lane", "middle lane", "inside lane", "outside lane", "fast lane", "slow lane",
+                "the lane", "moving off", "moved off", "pulling away", "pulled away", "pulling off", "pulled off"}
+# ("I stood still in the right lane": standing in traffic, at the wheel, not "Brook Lane"; "moving off from the bus stop")
 FIRST_PERSON = {"i", "me", "my", "i'm"}
-AT_THE_WHEEL_OF = {"was", "am", "were", "are", "in", "driving", "drove", "operating", "operated", "on", "patrol",
+AT_THE_WHEEL_OF = {"was", "am", "were", "are", "is", "in", "driving", "drove", "operating", "operated", "on", "patrol",
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked", "drive", "steer", "pilot", "pull",
                    "operate", "ride", "sit", "passenger", "ease", "nose", "swing", "guide", "edge", "inch", "turn"}
@@ -7875,8 +8021,8 @@ def _witness_on_foot(r: _Reader) -> None:
     """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
     and the vehicle the statement is about (the first that moves) is the ego."""
     ego = next((e for e in r.entities if e.is_ego), None)
-    if ego is None or ego.head not in FIRST_PERSON:
-        return
+    if ego is None or ego.head not in FIRST_PERSON or ego.type != "car":
+        return  # ("I am a bus driver ... moving off from the bus stop": at the wheel of the bus)
     said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")]
     words = set().union(*said) if said else set()
     if words & {"standing water", "standing traffic", "standing queue"}:
@@ -8437,6 +8583,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             e.features.add("behind")  # ego's lane behind it, to the overtaking side
         if passes and action == "cut_in" and "moves_out" in e.features:
             action, direction = "lane_" + passes, passes  # "pulled out to overtake me on the right"
+        if e.road_type == "shoulder" and action is None and e.type not in V.VULNERABLE_TYPES:
+            action = "stop"  # "a tractor-trailer on the right shoulder, no flashers": standing there
         if e.road_type == "shoulder" and action == "stop" and e.type not in V.VULNERABLE_TYPES and \
                 not e.features & {"ahead", "behind", "level", "overtaking"}:
             e.features.add("ahead")  # "a tractor-trailer on the right shoulder, hazards on": one the ego comes up to
