@@ -7973,3 +7973,32 @@ def test_a_captions_point_of_view_is_the_egos():
     assert agents("POV: ur turning left at the lights and the dude coming the other way in a lifted pickup floors it "
                   "thru the intersection") == [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]
     assert ("car", "go_straight", "ego") not in agents("SV: a truck turning left. POV: a silver sedan traveling north.")
+
+
+@pytest.mark.parametrize("later", ["An ambulance arrived ten minutes later.", "A police officer turned up later."])
+def test_help_that_arrives_after_the_collision_is_no_agent(later):
+    assert agents("A van pulled out in front of me and I hit it. " + later) == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+
+
+def test_turning_up_a_street_is_still_a_turn():
+    assert ("car", "turn_left", "ego") in agents("A car turned up Elm Street.")
+
+
+@pytest.mark.parametrize("habit", ["Cyclists use this road a lot too.",
+                                   "There's usually a lollipop lady there in the mornings."])
+def test_who_usually_is_there_is_no_agent_of_a_scene_told_in_the_past(habit):
+    assert agents("A van pulled out in front of me. " + habit) == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+
+
+def test_who_usually_is_there_is_the_scene_of_a_lesson_plan():
+    assert ("pedestrian", "cross_the_road", "at_the_destination") in agents(
+        "Stop 5: crossroads, traffic lights. Pupil turns right on the green. There's usually a jogger crossing the "
+        "road she's turning into as well.")
+
+
+@pytest.mark.parametrize("prompt", ["A car coming the other way drifted onto my side of the road.",
+                                    "An oncoming truck came over onto our side on the bend."])
+def test_onto_my_side_of_the_road_is_into_the_egos_lane(prompt):
+    assert [a[1:] for a in agents(prompt) if a[2] != "ego"] == [("change_lane_to_left", "front_left")]

@@ -1260,6 +1260,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         ahead, side = m.meaning.split("_")  # "a van at my two o'clock": ahead and to the right, each as said apart,
         return [Unit(m.start, m.end - 1, "positions", "ahead" if ahead == "front" else "behind", span[:-1]),
                 Unit(m.end - 1, m.end, "positions", "side_" + side, span[-1:])]  # so a crossing or a road wins
+    if m.category == "actions" and m.meaning == "turn" and [t.base for t in span] == ["turn"] and nxt == "up" and (
+            m.end + 1 >= len(tokens) or tokens[m.end + 1].sentence != span[0].sentence or
+            tokens[m.end + 1].word in ("later", "soon", "eventually", "after", "at", "and", ",", "then", "too", "as")):
+        return [Unit(m.start, m.end, "actions", "reach", span)]  # "a police officer turned up later": arrived
     if m.category == "agents" and [t.word for t in span] == ["pov"] and m.start == 0 and m.end < len(tokens) and \
             tokens[m.end].word == "is" and not {t.word for t in tokens} & {"sv", "ego", "sv1", "v1"}:
         return [Unit(m.start, m.end, "word", "pov", span)]  # "POV: ur turning left ...": a caption's point of view
@@ -3586,6 +3590,8 @@ DRIVER_CONTROLS = {"kept", "keep", "keeps", "held", "hold", "holds", "brought", 
 IMPACTS = {"hit", "hits", "crashed", "collided", "smashed", "struck", "rammed", "rear", "t", "clipped", "crash",
            "collision", "impact", "bumped", "slammed", "ploughed", "plowed", "totalled", "totaled", "wrecked"}
 RESPONDERS = {"ambulance", "police", "firetruck"}
+RESPONDING_PEOPLE = {"officer", "police officer", "policeman", "policewoman", "cop", "constable", "paramedic",
+                     "firefighter", "fireman", "medic", "trooper", "deputy", "sheriff"}  # on foot, come to help
 UNREAL_IMPACT = {"not", "never", "avoid", "avoided", "without", "almost", "nearly", "could", "would", "might", "to",
                  "no", "near", "avoiding", "before", "if", "may", "must", "shall", "should", "will", "can"}
 
@@ -3593,8 +3599,8 @@ UNREAL_IMPACT = {"not", "never", "avoid", "avoided", "without", "almost", "nearl
 def _help_placed_nowhere(e: Entity) -> bool:
     """An emergency service said to do nothing but come, and placed nowhere: help that may have come to the scene
     rather than be in it."""
-    return e.type in RESPONDERS and not e.is_ego and not e.label and e.said_at >= 0 and not e.features and \
-        all(a[4] == "move" for a in e.actions)
+    return (e.type in RESPONDERS or e.type == "pedestrian" and e.head in RESPONDING_PEOPLE) and not e.is_ego and \
+        not e.label and e.said_at >= 0 and not e.features and all(a[4] in ("move", "reach") for a in e.actions)
 
 
 ABOARD_WORDS = (("in", "the", "car"), ("in", "my", "car"), ("in", "our", "car"), ("in", "the", "back"),
@@ -3630,6 +3636,28 @@ def _said_in_general(r: _Reader, e: Entity) -> bool:
     return any(f is not e and not f.is_ego and f.type == e.type and f.count == 1 and not f.uncounted and
                f.parent is not e and f.said_at >= 0 and (r.tokens[f.said_at].sentence > sentence or idle)
                for f in r.entities)
+
+
+HABIT = (("usually",), ("normally",), ("generally",), ("typically",), ("often",), ("a", "lot"), ("all", "the", "time"),
+         ("every", "day"), ("every", "morning"), ("most", "days"), ("most", "mornings"), ("round", "here"),
+         ("around", "here"), ("tend", "to"), ("tends", "to"))
+
+
+def _said_of_a_habit(r: _Reader, e: Entity) -> bool:
+    """'Cyclists use this road a lot too', 'There's usually a lollipop lady there in the mornings': a road user in a
+    sentence of what usually happens is no agent of the scene told, when the text tells that scene in the past in
+    another sentence (a lesson plan's 'there's usually a jogger crossing' is its scene)."""
+    sentence = r.tokens[e.said_at].sentence if e.said_at >= 0 else None
+    words = [t.word for t in r.tokens if t.sentence == sentence]
+    told_in_the_past = any(t.sentence != sentence and (t.word in PAST_FORMS or t.word.endswith("ed") and
+                                                      t.base != t.word) for t in r.tokens)
+    return sentence is not None and told_in_the_past and _says_any(words, HABIT) and any(
+        f is not e and (f.is_ego or f.count > 0) and f.said_at >= 0 and r.tokens[f.said_at].sentence != sentence
+        for f in r.entities)
+
+
+PAST_FORMS = {"was", "were", "came", "went", "drove", "saw", "ran", "had", "got", "stood", "sat", "rode", "swung",
+              "shot", "flew", "spun", "slid"}  # irregular; a regular past ends in -ed
 
 
 def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
@@ -8481,6 +8509,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.count > 0 and _said_in_general(r, e):
             e.count = 0  # "pedestrians step off the kerb here ... we watched an elderly man cross": said in general
             r.notes.append(f"left out: '{e.head}', with no count, said of such road users in general")
+        if e.count > 0 and not e.is_ego and e.parent is None and not e.label and _said_of_a_habit(r, e):
+            e.count = 0  # "Cyclists use this road a lot", "There's usually a lollipop lady there": what is usual
+            r.notes.append(f"left out: '{e.head}' is said of what usually happens there, not of this scene")
         if e.count > 0 and _came_after_the_crash(r, e):
             e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
             r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
