@@ -8002,3 +8002,27 @@ def test_who_usually_is_there_is_the_scene_of_a_lesson_plan():
                                     "An oncoming truck came over onto our side on the bend."])
 def test_onto_my_side_of_the_road_is_into_the_egos_lane(prompt):
     assert [a[1:] for a in agents(prompt) if a[2] != "ego"] == [("change_lane_to_left", "front_left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Pt 52M rider of motorcycle, approx 40mph on main road at dusk. Car coming the other way turned right across "
+     "his path into a side road.", [("car", "turn_right", "road_of_straight"), ("motorcycle", "go_straight", "ego")]),
+    ("Minor injuries: 28F driver, stationary at red lights, shunted from behind by a taxi. Declined conveyance.",
+     [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("8yo F, pedestrian, ran out from between parked cars on the left and was struck by a car travelling approx "
+     "20mph. Pt GCS 14.", [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
+])
+def test_a_handover_tells_the_scene_from_the_patients_side(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_an_age_is_no_count_and_a_distance_stays_a_distance():
+    assert agents("Pt 34M, restrained driver of car travelling approx 30mph, struck by a van pulling out of a side "
+                  "road on his left.") == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+    assert agents("A car is stopped 50 m ahead.") == [("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt", ["I was stationary at red lights and was rear-ended by a taxi.",
+                                    "I was stationary at the lights when a taxi shunted me from behind."])
+def test_who_rear_ends_the_ego_comes_from_behind(prompt):
+    assert agents(prompt) == [("car", "go_straight", "back"), ("car", "stop", "ego")]

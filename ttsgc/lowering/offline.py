@@ -297,9 +297,10 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 def _units(tokens: list[Token]) -> list[Unit]:
     return _aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(_kerb_sides(
-        tokens, _entering_in(_time_stamps(_read_units(tokens))))))))
+        tokens, _entering_in(_ages(_time_stamps(_read_units(tokens)))))))))
 
 
+FROM_BEHIND_VERBS = {"rear end", "rear ended", "shunt", "run into the back of"}
 GOING_INTO = {"enter", "come", "move", "get", "swerve", "merge", "slide", "push", "squeeze", "put"}
 
 
@@ -317,6 +318,26 @@ def _entering_in(units: list[Unit]) -> list[Unit]:
         if j >= 0 and units[j].category == "actions" and len(units[j].tokens) == 1 and \
                 units[j].tokens[0].base in GOING_INTO:
             out[k] = Unit(u.start, u.end, "positions", "into_ego_lane", u.tokens)
+    return out
+
+
+AGE_MARKS = {"f", "yo", "yrs", "yr", "y"}
+DISTANCE_AFTER = {"ahead", "behind", "away", "from", "in", "of", "before", "after", "back", "to", "up", "down", "further",
+                  "short", "long", "wide", "out", "off", "past", "beyond", "later", "on", "into", "and", "or"}
+
+
+def _ages(units: list[Unit]) -> list[Unit]:
+    """'Pt 52M rider of motorcycle', '28F driver', '8yo F': a patient's age and sex, no count (but '50 m ahead' is a
+    distance)."""
+    out = list(units)
+    for k in range(len(units) - 1):
+        a, b = units[k], units[k + 1]
+        if a.category not in ("number", "numbers") or not a.word.isdigit() or len(b.tokens) != 1 or \
+                b.tokens[0].index != a.tokens[-1].index + 1:
+            continue
+        after = units[k + 2].word if k + 2 < len(units) else ""
+        if b.word in AGE_MARKS or b.word == "m" and after not in DISTANCE_AFTER and not after.isdigit():
+            out[k] = Unit(a.start, a.end, "word", a.word, a.tokens)
     return out
 
 
@@ -1268,6 +1289,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.end].word == "is" and not {t.word for t in tokens} & {"sv", "ego", "sv1", "v1"}:
         return [Unit(m.start, m.end, "word", "pov", span)]  # "POV: ur turning left ...": a caption's point of view
         # (the ego's), not a crash report's principal other vehicle
+    if m.category == "agents" and m.meaning == "ego" and [t.base for t in span] == ["iv"] and span[0].plural:
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "2 large bore IVs": drips, no insured vehicle
     if m.category == "agents" and [t.word for t in span] == ["op"] and m.start > 0 and tokens[m.start - 1].word == "co":
         return [Unit(m.start, m.end, "word", "op", span)]  # "outside the Co-op": a shop, not the original poster
     if m.category == "positions" and [t.word for t in span] == ["right"] and m.start > 0 and nxt in INTENSIFIED and \
@@ -1310,6 +1333,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.end + 3].word == "lane" and \
             any(t.word in EGO_WORDS for t in tokens[max(0, m.start - 3):m.start]):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "you sat in the left lane": where, not a stop
+    if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
+            nxt == "back":
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "I sat back behind the bike": hung back, moving
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
             _sits_in_moving_traffic(tokens, m.end):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a motorbike sitting in the right lane just
@@ -4679,6 +4705,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 any(x.category in ("road", "positions") and (x.meaning in V.CROSSWALK_OBJECTS | {"crosswalk", "stop_line"})
                     for x in clause_units[k + 1:k + 4]):
             action = "move"  # "the Fiesta went across the zebra": through the crossing, on its own road
+        if not e.is_ego and u.base in FROM_BEHIND_VERBS and clause_units is not None and k is not None and any(
+                x.category == "agents" and x.meaning == "ego" or x.word == "by" for x in clause_units[k + 1:k + 3]):
+            e.features.add("behind")  # "rear-ended by a taxi", "a taxi shunted me": it came from behind (not "two
+            # cars had shunted": into each other)
         if action == "cross" and e.type not in V.VULNERABLE_TYPES and u.base == "emerge" and \
                 clause_units is not None and k is not None and any(
                 x.category == "positions" and x.meaning in ("road_straight", "toward") for x in clause_units[k + 1:k + 6]):
@@ -7648,6 +7678,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_ego_said_again(r)
     _the_learner_at_the_wheel(r)
     _witness_on_foot(r)
+    _the_patients_vehicle(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
@@ -8105,6 +8136,40 @@ def _witness_on_foot(r: _Reader) -> None:
     _the_ego_now(r, subject)
     r.notes.append(f"inferred: the witness is on foot{'' if placed else ', placed by no one (no agent)'}; the "
                    f"'{subject.head}' the statement is about is the ego")
+
+
+PATIENT_WORDS = {"pt", "patient", "casualty", "moi", "atmist", "gcs", "injuries", "conveyance", "conveyed", "ems"}
+STRUCK_BY = (("struck", "by"), ("hit", "by"), ("knocked", "down", "by"), ("run", "over", "by"), ("knocked", "over", "by"),
+             ("clipped", "by"), ("hit", "by", "a"), ("struck", "by", "a"))
+
+
+def _the_patients_vehicle(r: _Reader) -> None:
+    """An ambulance crew's handover ('Pt 52M rider of motorcycle ...', 'MOI: restrained driver of car travelling
+    approx 30mph, struck by a van'): the scene is told from the patient's vehicle, named after 'driver of' or
+    'rider of'; a patient on foot or on a bike was met by the vehicle that struck them ('8yo F, pedestrian ...
+    struck by car'), which is the ego."""
+    words = [t.word for t in r.tokens]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if not PATIENT_WORDS & set(words) or ego is not None and ego.head not in ("ego", "i", "we", "us", "me", "driver"):
+        return
+    driven = next((e for e in r.entities if not e.is_ego and e.count == 1 and e.type in V.EGO_TYPES and
+                   e.type not in V.VULNERABLE_TYPES - {"motorcycle"} and e.said_at >= 2 and
+                   any(words[k] in ("driver", "rider", "passenger") and words[k + 1] in ("of", "in")
+                       for k in range(max(0, e.said_at - 4), e.said_at - 1))), None)
+    driven = driven or next((e for e in r.entities[:1] if not e.is_ego and e.head == "driver" and e.count == 1),
+                            None)  # "28F driver, stationary at red lights": the patient drove
+    on_foot = any(e.type in V.VULNERABLE_TYPES and e.count == 1 for e in r.entities if not e.is_ego)
+    striker = next((e for e in r.entities if not e.is_ego and e.count == 1 and e.type not in V.VULNERABLE_TYPES and
+                    any(tuple(words[k:e.said_at]) in STRUCK_BY or tuple(words[k:e.said_at - 1]) in STRUCK_BY
+                        for k in range(max(0, e.said_at - 4), e.said_at))), None)
+    vehicle = driven or (striker if on_foot else None)
+    if vehicle is None:
+        return
+    if ego is not None:
+        vehicle.actions += [a for a in ego.actions if not any(b[0] == a[0] for b in vehicle.actions)]
+        _taken_over(r, ego, vehicle)
+    _the_ego_now(r, vehicle)
+    r.notes.append(f"read the {vehicle.head} as the ego: a handover tells the scene from the patient's side")
 
 
 def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
