@@ -8026,3 +8026,15 @@ def test_an_age_is_no_count_and_a_distance_stays_a_distance():
                                     "I was stationary at the lights when a taxi shunted me from behind."])
 def test_who_rear_ends_the_ego_comes_from_behind(prompt):
     assert agents(prompt) == [("car", "go_straight", "back"), ("car", "stop", "ego")]
+
+
+def test_a_police_logs_shorthand():
+    assert agents("Dusk, wet road. RP in red Yaris at give way sign, waiting to turn R onto B4455. HGV approaching from "
+                  "her R, P/C from her L. Once both had passed, RP turned R.") == [
+        ("car", "stop", "ego"), ("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_left_turn"),
+        ("truck", "go_straight", "road_of_right_turn")]
+
+
+def test_a_marked_car_is_a_police_car():
+    assert agents("A marked car came up behind me with its lights on.") == [("car", "go_straight", "ego"),
+                                                                          ("police", "go_straight", "back")]

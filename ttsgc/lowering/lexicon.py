@@ -244,7 +244,7 @@ def _calques() -> tuple[tuple[re.Pattern, str, dict], ...]:
         forms = {inflected(words[0], suffix): suffix for suffix in ("s", "ed", "ing")} | {words[0]: ""} | {
             form: "" for form, base in lexicon().irregular.items() if base == words[0]}  # "goes", "went": the base
         pattern = re.compile(r"\b(?P<first>" + "|".join(re.escape(f) for f in sorted(forms, key=len, reverse=True))
-                             + ")" + "".join(r"[\s-]+" + re.escape(w) for w in words[1:]) + r"\b")
+                             + ")" + "".join(r"[\s/-]+" + re.escape(w) for w in words[1:]) + r"\b")
         found.append((-len(words), pattern.pattern, pattern, meant, forms))
     return tuple((pattern, meant, forms) for *_, pattern, meant, forms in sorted(found, key=lambda x: x[:2]))
     # the longest phrase first

@@ -6713,7 +6713,7 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
     if k >= 1 and before[k].entity is None and "passenger" in units[before[k].index].base.split():
         seat, k = before[k], k - 1  # "the front-seat passenger in ...": the passenger is the speaker
     if k < 0 or before[k].entity is None or not before[k].entity.is_ego or \
-            before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego", "op"} or \
+            before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego", "op", "rp"} or \
             np.entity is None or np.entity.type not in V.EGO_TYPES or np.plural:
         return False
     between = units[before[k].index + 1: np.first]
