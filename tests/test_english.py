@@ -8038,3 +8038,35 @@ def test_a_police_logs_shorthand():
 def test_a_marked_car_is_a_police_car():
     assert agents("A marked car came up behind me with its lights on.") == [("car", "go_straight", "ego"),
                                                                           ("police", "go_straight", "back")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car entered my lane from the left.", ("car", "change_lane_to_right", "front_left")),
+    ("A bus is stopped ahead, so I enter the right lane.", ("car", "change_lane_to_right", "ego")),
+    ("na so one danfo just swerve enter my lane from the lane by my left.", ("bus", "change_lane_to_right", "left")),
+])
+def test_entering_a_lane(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_entering_the_same_lane_as_a_turning_ego_is_no_cut_in():
+    assert not [a for a in agents("The ego vehicle is preparing to make a right turn while another vehicle from the "
+                                  "left also attempts to enter the same lane.") if a[1].startswith("change_lane")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("One keke was parked on the shoulder by my right, a small distance ahead of me.",
+     ("motorcycle", "stop", "front_right")),
+    ("The jeepney in front suddenly stopped to load passengers.", ("bus", "stop", "front")),
+    ("Two okadas dey behind me for my lane.", ("motorcycle", "go_straight", "back")),
+])
+def test_west_african_and_philippine_vehicles(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_holding_the_middle_lane_is_no_stop_and_an_aside_of_feeling_is_no_one():
+    assert ("car", "go_straight", "ego") in agents("Three lanes each way, I held the middle, steady, slow; a coupe on "
+                                                  "my right cut in ahead.")
+    assert ("car", "go_straight", "ego") in agents("Two lanes my way, a red convertible, to my surprise, swerved from "
+                                                  "the left lane and stopped dead in front of me.")
+    assert agents("I was held at the lights.") == [("car", "stop", "ego")]

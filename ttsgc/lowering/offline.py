@@ -306,9 +306,21 @@ GOING_INTO = {"enter", "come", "move", "get", "swerve", "merge", "slide", "push"
 
 def _entering_in(units: list[Unit]) -> list[Unit]:
     """'enters suddenly in my lane', 'comes in my lane' (Italian, Spanish, Portuguese: 'entra nella mia corsia'): 'in
-    my lane' after a verb of going is into it."""
+    my lane' after a verb of going is into it; 'entered my lane' is too, and 'entered the left lane' changes to it."""
     out = list(units)
     for k, u in enumerate(units):
+        j = k - 1 - (k > 1 and units[k - 1].word == "the")
+        entered = j >= 0 and units[j].category == "actions" and [t.base for t in units[j].tokens] == ["enter"]
+        if entered and u.category == "positions" and u.meaning == "ego_lane" and \
+                {t.word for t in u.tokens} & {"my", "our", "your", "ego"}:
+            out[k] = Unit(u.start, u.end, "positions", "into_ego_lane", u.tokens)  # "a car entered my lane" (not
+            # "attempts to enter the same lane": the one the ego turns into)
+            continue
+        if entered and u.category == "positions" and u.meaning in ("side_left", "side_right") and \
+                u.tokens[-1].word == "lane" and u.tokens[0].word in ("the", "left", "right"):
+            v = units[j]  # "I entered the left lane": a lane change to it
+            out[j] = Unit(v.start, v.end, "actions", "lane_" + u.meaning[5:], v.tokens)
+            continue
         if u.category != "positions" or u.meaning != "ego_lane" or u.tokens[0].word != "in":
             continue
         j = k - 1
@@ -1333,6 +1345,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.end + 3].word == "lane" and \
             any(t.word in EGO_WORDS for t in tokens[max(0, m.start - 3):m.start]):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "you sat in the left lane": where, not a stop
+    if m.category == "actions" and m.meaning == "stop" and [t.base for t in span] == ["hold"] and (
+            [t.word for t in tokens[m.end:m.end + 2]] in (["my", "lane"], ["my", "line"], ["our", "lane"],
+                                                          ["our", "line"]) or
+            nxt == "the" and m.end + 1 < len(tokens) and tokens[m.end + 1].word in LANE_NAMES):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "I held the middle, steady": kept to a lane
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
             nxt == "back":
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "I sat back behind the bike": hung back, moving
