@@ -334,13 +334,11 @@ def _entering_in(units: list[Unit]) -> list[Unit]:
 
 
 AGE_MARKS = {"f", "yo", "yrs", "yr", "y"}
-DISTANCE_AFTER = {"ahead", "behind", "away", "from", "in", "of", "before", "after", "back", "to", "up", "down", "further",
-                  "short", "long", "wide", "out", "off", "past", "beyond", "later", "on", "into", "and", "or"}
 
 
 def _ages(units: list[Unit]) -> list[Unit]:
-    """'Pt 52M rider of motorcycle', '28F driver', '8yo F': a patient's age and sex, no count (but '50 m ahead' is a
-    distance)."""
+    """'Pt 52M rider of motorcycle', '28F driver', '8yo F': a patient's age and sex, no count (but '50 m ahead' and
+    'within 9000 m' are distances)."""
     out = list(units)
     for k in range(len(units) - 1):
         a, b = units[k], units[k + 1]
@@ -348,9 +346,14 @@ def _ages(units: list[Unit]) -> list[Unit]:
                 b.tokens[0].index != a.tokens[-1].index + 1:
             continue
         after = units[k + 2].word if k + 2 < len(units) else ""
-        if b.word in AGE_MARKS or b.word == "m" and after not in DISTANCE_AFTER and not after.isdigit():
+        before = units[k - 1].word if k > 0 else ""
+        male = b.word == "m" and (after in AGED or before in PATIENT_WORDS) and int(a.word) <= 110
+        if b.word in AGE_MARKS and int(a.word) <= 110 or male:
             out[k] = Unit(a.start, a.end, "word", a.word, a.tokens)
     return out
+
+
+AGED = {"driver", "rider", "pedestrian", "cyclist", "passenger", "motorcyclist", "pt", "patient", ","}
 
 
 def _time_stamps(units: list[Unit]) -> list[Unit]:
