@@ -8072,3 +8072,16 @@ def test_holding_the_middle_lane_is_no_stop_and_an_aside_of_feeling_is_no_one():
     assert ("car", "go_straight", "ego") in agents("Two lanes my way, a red convertible, to my surprise, swerved from "
                                                   "the left lane and stopped dead in front of me.")
     assert agents("I was held at the lights.") == [("car", "stop", "ego")]
+
+
+def test_the_vehicle_the_speaker_took_is_the_egos():
+    assert agents("Early morning I took the pickup down to the bottom field. Round the corner there's a hatchback "
+                  "stuck sideways, blocking the whole lane.") == [("car", "block_the_ego", "front"),
+                                                                  ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("aside", ["Critical driving error, auto-fail.",
+                                   "Our sensors see the pedestrian before a human driver would."])
+def test_an_auto_fail_and_a_human_driver_are_no_cars(aside):
+    assert agents("A pickup on the cross street to our left turned left. " + aside) == [
+        ("car", "go_straight", "ego"), ("car", "turn_left", "road_of_left_turn")]

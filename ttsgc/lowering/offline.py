@@ -7782,10 +7782,11 @@ FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "are", "is", "in", "driving", "drove", "operating", "operated", "on", "patrol",
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked", "drive", "steer", "pilot", "pull",
-                   "operate", "ride", "sit", "passenger", "ease", "nose", "swing", "guide", "edge", "inch", "turn"}
+                   "operate", "ride", "sit", "passenger", "ease", "nose", "swing", "guide", "edge", "inch", "turn",
+                   "took", "take", "taking"}
 OPERATED_FROM = {"in", "on", "of", "driving", "drove", "riding", "operating", "operated", "drive", "ride", "operate", "steer",
-                 "pilot", "pull", "ease", "nose", "swing", "guide", "edge", "inch", "turn"}  # the word right before the ego's
-# own vehicle ("she eased the Volvo left": the car she drives)
+                 "pilot", "pull", "ease", "nose", "swing", "guide", "edge", "inch", "turn", "took", "take", "taking"}
+# the word right before the ego's own vehicle ("she eased the Volvo left": the car she drives; "I took the pickup")
 # "I was stationary in a marked police car", "you were operating the bus": the witness's own vehicle
 
 
