@@ -8085,3 +8085,15 @@ def test_the_vehicle_the_speaker_took_is_the_egos():
 def test_an_auto_fail_and_a_human_driver_are_no_cars(aside):
     assert agents("A pickup on the cross street to our left turned left. " + aside) == [
         ("car", "go_straight", "ego"), ("car", "turn_left", "road_of_left_turn")]
+
+
+def test_vehicles_said_after_the_ones_named_are_those_again():
+    assert agents("I was stopped at the sign when a car from my right and a van from the opposite side both went at "
+                  "the same time and collided in the middle. Nobody hurt, vehicles blocking the intersection.") == [
+        ("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_straight"), ("car", "stop", "ego")]
+
+
+def test_not_making_someone_wait_is_no_stop():
+    assert ("police", "go_straight", "back") in agents(
+        "A police car with its siren came up behind me; I changed lanes to the right, didn't make it wait, and "
+        "watched it pass me.")

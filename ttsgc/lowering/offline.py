@@ -3684,6 +3684,14 @@ def _said_in_general(r: _Reader, e: Entity) -> bool:
                for f in r.entities)
 
 
+def _the_vehicles_named_before(r: _Reader, e: Entity) -> bool:
+    """'vehicles blocking the intersection', 'both vehicles', said with no count after two or more vehicles were
+    named: those vehicles again, no new ones."""
+    return e.uncounted and not e.is_ego and e.head in ("vehicle", "vehicles") and e.said_at >= 0 and sum(
+        1 for f in r.entities if f is not e and not f.is_ego and f.type not in V.VULNERABLE_TYPES and f.count >= 1
+        and 0 <= f.said_at < e.said_at) >= 2
+
+
 HABIT = (("usually",), ("normally",), ("generally",), ("typically",), ("often",), ("a", "lot"), ("all", "the", "time"),
          ("every", "day"), ("every", "morning"), ("most", "days"), ("most", "mornings"), ("round", "here"),
          ("around", "here"), ("tend", "to"), ("tends", "to"))
@@ -5923,7 +5931,10 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
         return True  # "overtaking not possible": the manoeuvre is ruled out
     if _instead_of(units, i):
         return True  # "rolled through instead of coming to a stop", "rather than stopping": the road not taken
-    for u in reversed(units[max(0, i - 7):i]):
+    for k in range(i - 1, max(0, i - 7) - 1, -1):
+        u = units[k]
+        if u.word in ("it", "him", "her", "them") and k > 0 and units[k - 1].word in ("make", "made", "makes"):
+            continue  # "didn't make it wait": the one made to, after the causative
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
                                                "failing", "refused", "refuses", "without", "unable", "nowhere") or (
                 u.category == "numbers" and u.meaning == "0"):
@@ -8595,6 +8606,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.count > 0 and _said_in_general(r, e):
             e.count = 0  # "pedestrians step off the kerb here ... we watched an elderly man cross": said in general
             r.notes.append(f"left out: '{e.head}', with no count, said of such road users in general")
+        if e.count > 0 and _the_vehicles_named_before(r, e):
+            e.count = 0  # "a car from his right and a van ... collided, vehicles blocking the intersection": those two
+            r.notes.append(f"read '{e.head}s' as the vehicles named before")
         if e.count > 0 and not e.is_ego and e.parent is None and not e.label and _said_of_a_habit(r, e):
             e.count = 0  # "Cyclists use this road a lot", "There's usually a lollipop lady there": what is usual
             r.notes.append(f"left out: '{e.head}' is said of what usually happens there, not of this scene")
