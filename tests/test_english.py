@@ -8097,3 +8097,20 @@ def test_not_making_someone_wait_is_no_stop():
     assert ("police", "go_straight", "back") in agents(
         "A police car with its siren came up behind me; I changed lanes to the right, didn't make it wait, and "
         "watched it pass me.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We're tracking a blue hatchback northbound on Main, that's our ego for this one. A white van runs its red.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front")]),
+    ("The black pickup southbound on Elm is our ego, and it's making a right onto 3rd.",
+     [("car", "turn_right", "ego")]),
+    ("Our ego, a green hatchback in the right lane, is coming up on a tow truck stopped on the right shoulder.",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front_right")]),
+])
+def test_a_vehicle_named_as_the_ego_is_the_ego(prompt, expected):
+    assert [(t, a, p) for t, a, p in agents(prompt)] == sorted(expected)
+
+
+def test_a_place_by_the_ego_does_not_name_it():
+    assert ("car", "go_straight", "ego") in agents("A cyclist riding in front of the ego stops. Behind the ego, a "
+                                                  "motorcycle keeps coming at the same speed.")

@@ -7710,6 +7710,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_learner_at_the_wheel(r)
     _witness_on_foot(r)
     _the_patients_vehicle(r)
+    _named_as_the_ego(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
@@ -8168,6 +8169,40 @@ def _witness_on_foot(r: _Reader) -> None:
     _the_ego_now(r, subject)
     r.notes.append(f"inferred: the witness is on foot{'' if placed else ', placed by no one (no agent)'}; the "
                    f"'{subject.head}' the statement is about is the ego")
+
+
+def _named_as_the_ego(r: _Reader) -> None:
+    """'a blue hatchback northbound on Main, that's our ego', 'The black pickup on Elm is our ego', 'Our ego, a green
+    hatchback, ...', 'Ego for this one is the white van': a vehicle the text names as the ego is the ego, and the
+    ego said by that name is that vehicle."""
+    words = [t.word for t in r.tokens]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    for k, w in enumerate(words):
+        if w != "ego" or ego is None:
+            continue
+        sentence = r.tokens[k].sentence
+        lead = k - (k > 0 and words[k - 1] in ("our", "the"))
+        opens = lead == 0 or r.tokens[lead - 1].sentence != sentence  # "Our ego, a ..." (not "Behind the ego, a ...")
+        in_sentence = [e for e in r.entities if not e.is_ego and e.count == 1 and e.type in V.EGO_TYPES and
+                       e.type not in V.VULNERABLE_TYPES - {"motorcycle"} and e.said_at >= 0 and
+                       r.tokens[e.said_at].sentence == sentence]
+        named = None
+        if k > 1 and words[k - 1] in ("our", "the") and words[k - 2] == "is":
+            named = next((e for e in reversed(in_sentence) if e.said_at < k), None)  # "..., that's our ego"
+        elif opens and (words[k + 1:k + 3] in ([",", "a"], [",", "an"]) or
+                        words[k + 1:k + 5] == ["for", "this", "one", "is"]):
+            named = next((e for e in in_sentence if k < e.said_at <= k + 8), None)  # "Our ego, a green hatchback"
+        if named is not None:
+            named.actions += [a for a in ego.actions if not any(b[0] == a[0] for b in named.actions)]
+            lane = next((side for side in SIDES if f"side_{side}" in named.features and "lane_said" in named.features),
+                        None)  # "a green hatchback in the right lane": the lane the ego is in
+            kept = {f for f in ego.features if f.startswith("in_lane") or f == "in_a_side_lane"} | (
+                {"in_a_side_lane", f"in_lane_{lane}"} if lane else set())
+            _taken_over(r, ego, named)
+            _the_ego_now(r, named)
+            named.features |= kept
+            r.notes.append(f"read the {named.head} as the ego: the text names it so")
+            return
 
 
 PATIENT_WORDS = {"pt", "patient", "casualty", "moi", "atmist", "gcs", "injuries", "conveyance", "conveyed", "ems"}
