@@ -8114,3 +8114,16 @@ def test_a_vehicle_named_as_the_ego_is_the_ego(prompt, expected):
 def test_a_place_by_the_ego_does_not_name_it():
     assert ("car", "go_straight", "ego") in agents("A cyclist riding in front of the ego stops. Behind the ego, a "
                                                   "motorcycle keeps coming at the same speed.")
+
+
+def test_a_thing_said_then_none_is_denied_and_denies_nothing_after():
+    found = lower("STREET, CROSSWALK NONE, LIGHT GREEN. MAN CROSS FRONT-OF-ME. ME STOP.").scenario.road
+    assert "crosswalk" in found.without_objects and "traffic_light" in found.required_signals
+    assert lower("COUNTRY ROAD, NARROW, INTERSECTION NONE. CAR OPPOSITE-DIRECTION COME FAST.").scenario.road.junction \
+        is False
+
+
+def test_a_text_all_in_capitals_has_no_title():
+    assert ("motorcycle", "go_straight", "ego") in agents(
+        "ME RIDE MOTORCYCLE. INTERSECTION, LIGHT GREEN, ME GO STRAIGHT. CAR OPPOSITE-DIRECTION TURN LEFT "
+        "ACROSS FRONT-OF-ME.")

@@ -1570,6 +1570,9 @@ def _road(r: _Reader) -> RoadSpec:
                 if m.category == "road" and (m.meaning in V.OBJECTS or m.meaning in ("stop", "yield") and
                                              m.end - m.start > 1):  # (not "flashing his lights": its own lamps)
                     put(m.meaning, False)
+        if u.word == "none" and k > 0 and _none_after(units, k - 1):
+            r.mark(u)
+            continue  # "CROSSWALK NONE, LIGHT GREEN": the none closes what it follows, denying nothing after
         if u.category == "word" and u.word in NEGATIONS | REMOVED or (u.category == "word" and u.word.endswith("n't")) \
                 or (u.category == "numbers" and u.meaning == "0"):
             negated, negated_in = True, u.tokens[0].sentence
@@ -1651,6 +1654,7 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "road":
             r.mark(u)
             meaning = u.meaning
+            negated = negated or _none_after(units, k)
             if meaning == "none":
                 pass
             elif meaning == "junction":
@@ -1680,6 +1684,9 @@ def _road(r: _Reader) -> RoadSpec:
                     continue  # "light rain" is read as weather first; a stray "light" after weather is not a signal
                 put(meaning, negated)
             continue
+        if u.category == "positions" and u.meaning in ("crosswalk", "off_crosswalk") and _none_after(units, k):
+            put("continental_crosswalk" if "zebra" in {t.word for t in u.tokens} else "crosswalk", True)
+            continue  # "STREET, CROSSWALK NONE"
         if u.category == "positions" and u.meaning in ("crosswalk", "off_crosswalk"):  # "near the crosswalk": there is one
             said = {t.word for t in u.tokens}
             word = "continental_crosswalk" if "zebra" in said else "crosswalk"
@@ -1762,8 +1769,16 @@ def _then_doubted(units: list[Unit], k: int) -> bool:
     return any(a in ("probably", "prob", "maybe", "likely") and b == "not" for a, b in zip(after, after[1:]))
 
 
+def _none_after(units: list[Unit], k: int) -> bool:
+    """'CROSSWALK NONE', 'LIGHT NONE, SIGN NONE' (a sign-language gloss): the thing said, then denied."""
+    return k + 1 < len(units) and units[k + 1].word == "none" and units[k + 1].tokens[0].sentence == \
+        units[k].tokens[-1].sentence
+
+
 def _denied(units: list[Unit], k: int) -> bool:
-    """'no junction', 'not at a junction', 'without any junctions', 'away from junctions'."""
+    """'no junction', 'not at a junction', 'without any junctions', 'away from junctions', 'intersection none'."""
+    if _none_after(units, k):
+        return True
     for u in reversed(units[max(0, k - 3):k]):
         if u.category == "word" and (u.word in NEGATIONS or u.word == "away") or \
                 u.category == "numbers" and u.meaning == "0":
@@ -8534,8 +8549,9 @@ def _headline(prompt: str, tokens: list[Token]) -> range:
     """'Scenario 1 (Lead Vehicle Stopped). The subject vehicle ...', 'Overtake Challenge. The player ...': a first
     sentence in title case, without a verb, names the case, not its agents."""
     m = re.match(r"\s*([^.!?\n]{1,60})[.!]\s+\S", prompt)
-    if m is None:
-        return range(0)
+    letters = [c for c in prompt if c.isalpha()]
+    if m is None or sum(c.isupper() for c in letters) > 0.8 * len(letters):
+        return range(0)  # (a text all in capitals, as a sign-language gloss is written, has no title case to tell)
     words = re.findall(r"[A-Za-z][A-Za-z'-]*|\d+", re.sub(r"\((?:e?s)\)", "", m.group(1)))  # "Vehicle(s) Changing Lanes"
     if not words or len(words) > 8 or not all(w[0].isupper() or w[0].isdigit() or w.lower() in TITLE_SMALL_WORDS
                                              for w in words) or words[0].lower() in SUBJECT_PRONOUNS | {"i'm"}:
