@@ -8127,3 +8127,13 @@ def test_a_text_all_in_capitals_has_no_title():
     assert ("motorcycle", "go_straight", "ego") in agents(
         "ME RIDE MOTORCYCLE. INTERSECTION, LIGHT GREEN, ME GO STRAIGHT. CAR OPPOSITE-DIRECTION TURN LEFT "
         "ACROSS FRONT-OF-ME.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "Nothing turns you into a worse driver than an ambulance. I'm in the left lane and one comes up behind me, so I "
+    "move over into the right lane like a functioning adult.",
+    "A guy on a motorcycle pulls up in the lane to my left at the red and revs it. Buddy, my car has a car seat in "
+    "the back.",
+])
+def test_a_comparison_and_a_car_seat_name_no_one(prompt):
+    assert not [a for a in agents(prompt) if a[0] in ("car", "pedestrian") and a[2] != "ego"]

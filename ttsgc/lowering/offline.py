@@ -6901,14 +6901,17 @@ LIKENESS_VERBS = {"look", "looks", "looked", "looking", "seem", "seems", "seemed
 
 
 def _a_likeness(units: list[Unit], np: NounPhrase) -> bool:
-    """'driving like a taxi driver', 'it sounded like a truck hitting a wall': a vehicle named after 'like' that
-    follows what someone does is a comparison, no agent ('it looked like a police car' and 'I'd like a truck parked
-    on the right' name one)."""
+    """'driving like a taxi driver', 'it sounded like a truck hitting a wall', 'a worse driver than': a vehicle named
+    after 'like' that follows what someone does, or before 'than', is a comparison, no agent ('it looked like a
+    police car' and 'I'd like a truck parked on the right' name one)."""
+    if np.index + 1 < len(units) and units[np.index + 1].word == "than" and units[np.first].word in ("a", "an"):
+        return True  # "nothing turns you into a worse driver than an ambulance": a comparison
     if np.first < 2 or units[np.first - 1].word != "like" or units[np.first].word not in ("a", "an"):
         return False
     before = units[np.first - 2]
     return before.word not in LIKENESS_VERBS and before.tokens[-1].word not in LIKENESS_VERBS and (
-        before.category in ("actions", "behaviours") or before.tokens[-1].word.endswith(("ed", "ing")))
+        before.category in ("actions", "behaviours", "positions") or before.tokens[-1].word.endswith(("ed", "ing")))
+    # ("moved over into the right lane like a functioning adult")
 
 
 def _fold(r: _Reader, into: Entity, other: Entity) -> None:
