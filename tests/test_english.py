@@ -8137,3 +8137,13 @@ def test_a_text_all_in_capitals_has_no_title():
 ])
 def test_a_comparison_and_a_car_seat_name_no_one(prompt):
     assert not [a for a in agents(prompt) if a[0] in ("car", "pedestrian") and a[2] != "ego"]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Hazard H-22: pedestrian emerging from behind parked vehicles. Triggering condition: a child steps out between "
+    "two parked cars on the right-hand side ahead.",
+    "Scenario of pedestrian rush-out. Host vehicle is driving on a narrow road. A child suddenly runs out from the "
+    "right side and crosses in front of host vehicle.",
+])
+def test_a_road_user_in_a_cases_heading_names_the_case(prompt):
+    assert [a for a in agents(prompt) if a[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "front_right")]

@@ -3707,6 +3707,28 @@ def _the_vehicles_named_before(r: _Reader, e: Entity) -> bool:
         and 0 <= f.said_at < e.said_at) >= 2
 
 
+CASE_HEADINGS = CASE_NOUNS | {"hazard", "class", "title", "type", "category", "rush"}
+
+
+def _names_the_case_in_a_heading(r: _Reader, e: Entity) -> bool:
+    """'Hazard H-22: pedestrian emerging from behind parked vehicles.', 'Scenario class: pedestrian at an
+    unsignalized crosswalk.', 'Scenario of pedestrian rush-out.', 'a pedestrian-at-night case': a road user said
+    bare in a case's heading names the case, when one of its kind is told of in a later sentence."""
+    if e.is_ego or e.count != 1 or e.said_at < 0 or e.label or e.parent is not None:
+        return False
+    t = r.tokens[e.said_at]
+    words = [x.word for x in r.tokens if x.sentence == t.sentence]
+    keyed = t.opened_by == ":" and t.sentence > 0 and any(
+        x.word in CASE_HEADINGS for x in r.tokens if x.sentence == t.sentence - 1)  # "Scenario class: pedestrian"
+    before = r.tokens[e.said_at - 1].word if e.said_at > 0 and r.tokens[e.said_at - 1].sentence == t.sentence else ""
+    after = [x.word for x in r.tokens[e.said_at + 1:e.said_at + 5] if x.sentence == t.sentence]
+    named = before in ("", "of") and bool(set(words) & CASE_HEADINGS) or before in ("a", "an") and bool(
+        set(after) & CASE_NOUNS)  # "Scenario of pedestrian rush-out", "a pedestrian-at-night case"
+    return (keyed and before == "" or named) and any(
+        f is not e and not f.is_ego and f.type == e.type and f.said_at >= 0 and
+        r.tokens[f.said_at].sentence > t.sentence for f in r.entities)
+
+
 HABIT = (("usually",), ("normally",), ("generally",), ("typically",), ("often",), ("a", "lot"), ("all", "the", "time"),
          ("every", "day"), ("every", "morning"), ("most", "days"), ("most", "mornings"), ("round", "here"),
          ("around", "here"), ("tend", "to"), ("tends", "to"))
@@ -8663,6 +8685,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.count > 0 and _the_vehicles_named_before(r, e):
             e.count = 0  # "a car from his right and a van ... collided, vehicles blocking the intersection": those two
             r.notes.append(f"read '{e.head}s' as the vehicles named before")
+        if e.count > 0 and _names_the_case_in_a_heading(r, e):
+            e.count = 0  # "Hazard H-22: pedestrian emerging from behind parked vehicles. ... a child steps out"
+            r.notes.append(f"read the heading's '{e.head}' as the case's name")
         if e.count > 0 and not e.is_ego and e.parent is None and not e.label and _said_of_a_habit(r, e):
             e.count = 0  # "Cyclists use this road a lot", "There's usually a lollipop lady there": what is usual
             r.notes.append(f"left out: '{e.head}' is said of what usually happens there, not of this scene")
