@@ -8147,3 +8147,12 @@ def test_a_comparison_and_a_car_seat_name_no_one(prompt):
 ])
 def test_a_road_user_in_a_cases_heading_names_the_case(prompt):
     assert [a for a in agents(prompt) if a[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "front_right")]
+
+
+def test_what_the_tellers_companion_does_is_not_the_egos():
+    assert stages("You are driving a car. Your friend is sitting next to you. A bus is in front of you. The bus stops "
+                  "at a bus stop. Then you stop behind the bus.") == [
+        [("ego", "go_straight", None), ("bus", "stop", "front")], [("ego", "stop", None)]]
+    assert ("car", "go_straight", "ego") in agents(
+        "I was the front seat passenger in my husband's Honda, in the right-hand lane. A lorry in the left-hand lane "
+        "started to come over into our lane.")
