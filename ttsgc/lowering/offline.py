@@ -297,11 +297,21 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 def _units(tokens: list[Token]) -> list[Unit]:
     return _aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(_kerb_sides(
-        tokens, _entering_in(_ages(_time_stamps(_read_units(tokens)))))))))
+        tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))))))
 
 
 FROM_BEHIND_VERBS = {"rear end", "rear ended", "shunt", "run into the back of"}
 GOING_INTO = {"enter", "come", "move", "get", "swerve", "merge", "slide", "push", "squeeze", "put"}
+
+
+def _wanted_of_the_ego(units: list[Unit]) -> list[Unit]:
+    """'started honking at me to go', 'flashing us to pull out': what someone wants the ego to do is no doing of
+    theirs, nor yet of the ego's."""
+    return [Unit(u.start, u.end, "word", u.tokens[0].word, u.tokens)
+            if u.category == "actions" and k > 1 and units[k - 1].word == "to" and units[k - 2].category == "agents"
+            and units[k - 2].meaning == "ego" and units[k - 2].word in ("me", "us") and k > 2 and
+            units[k - 3].word in ("at", "honking", "hooting", "beeping", "flashing", "waving", "signalling", "signaling")
+            else u for k, u in enumerate(units)]
 
 
 def _entering_in(units: list[Unit]) -> list[Unit]:
@@ -6122,13 +6132,15 @@ def _place_in_queue(r: _Reader) -> None:
         return
     for e in r.entities:  # ahead in the queue, level beside the ego at the line, or queued with it: standing too
         # (until a later stage says it goes: "the light turns green and both go")
-        if not e.is_ego and not any(a[0] == 0 for a in e.actions) and e.type not in V.VULNERABLE_TYPES and \
-                e.stage == 0 and (
+        honks = any(a[0] == 0 for a in e.actions) and all(a[4] == "horn" for a in e.actions if a[0] == 0)
+        if not e.is_ego and (honks or not any(a[0] == 0 for a in e.actions)) and \
+                e.type not in V.VULNERABLE_TYPES and e.stage == 0 and (
                 "ahead" in e.features and not e.features & {"side_left", "side_right", "road_straight", "toward"}
                 or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}
                 or (e.parent or e).includes_ego and not e.features  # "three cars including mine at the red"
                 or "behind" in e.features and not e.features & {"side_left", "side_right", "overtaking"} and
-                _queued_with_the_ego(r, e)):  # "waiting at the red light with a van behind"
+                (honks or _queued_with_the_ego(r, e))):  # "waiting at the red light with a van behind"; "the guy
+            # behind me started honking": held up behind the ego
             e.actions.append((0, 2, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
