@@ -8160,8 +8160,8 @@ def test_what_the_tellers_companion_does_is_not_the_egos():
 
 @pytest.mark.parametrize("prompt", [
     "I was stopped at a red light waiting to turn right. The guy in the pickup behind me started honking at me to go.",
-    "A little old man was crossing really slowly at the crosswalk, and two cars behind us were honking. My driver "
-    "didn't budge till he was across.",
+    "A little old man was crossing really slowly at the crosswalk with the pedestrian light, and two cars behind us "
+    "were honking. My driver didn't budge till he was across.",
 ])
 def test_who_honks_behind_a_waiting_ego_waits_too(prompt):
     assert {a for a in agents(prompt) if a[2] == "back"} == {("car", "stop", "back")}
