@@ -8165,3 +8165,10 @@ def test_what_the_tellers_companion_does_is_not_the_egos():
 ])
 def test_who_honks_behind_a_waiting_ego_waits_too(prompt):
     assert {a for a in agents(prompt) if a[2] == "back"} == {("car", "stop", "back")}
+
+
+def test_where_after_the_road_turned_into_is_the_destination():
+    assert ("car", "stop", "at_the_destination") in agents(
+        "The ego turns left into a side road where a delivery van stands parked a short distance beyond the junction.")
+    assert ("cyclist", "stop", "at_the_destination") not in agents(
+        "I turned left at the junction where a cyclist was waiting.")

@@ -7738,6 +7738,14 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             for e in r.entities[before:]:  # "the ego changes into the left lane, where a van drives ahead"
                 if not e.is_ego:
                     e.features.add("target_lane")
+        elif clause.link == "where" and k > 0 and any(
+                u.category == "actions" and u.meaning in ("turn", "turn_left", "turn_right")
+                for u in clauses[k - 1].units) and any(t.word in ("into", "onto") for u in clauses[k - 1].units
+                                                       for t in u.tokens):
+            for e in r.entities[before:]:  # "turns left into a side road where a delivery van stands parked"
+                if not e.is_ego and not e.features & {"road_left", "road_right", "road_straight", "from_left",
+                                                       "from_right"}:
+                    e.features.add("destination")
         if subject:
             previous = subject
         if clause.antecedent is not None and not clause.antecedent.is_ego and clause.antecedent not in subject and \
