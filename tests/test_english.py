@@ -8172,3 +8172,7 @@ def test_where_after_the_road_turned_into_is_the_destination():
         "The ego turns left into a side road where a delivery van stands parked a short distance beyond the junction.")
     assert ("cyclist", "stop", "at_the_destination") not in agents(
         "I turned left at the junction where a cyclist was waiting.")
+
+
+def test_the_rider_of_the_motorbike_speaking_rides_it():
+    assert ("motorcycle", "go_straight", "ego") in agents("I was the rider of the motorbike. A car pulled out.")

@@ -6794,6 +6794,7 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
     seat = None
     if k >= 1 and before[k].entity is None and "passenger" in units[before[k].index].base.split():
         seat, k = before[k], k - 1  # "the front-seat passenger in ...": the passenger is the speaker
+
     if k < 0 or before[k].entity is None or not before[k].entity.is_ego or \
             before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego", "op", "rp"} or \
             np.entity is None or np.entity.type not in V.EGO_TYPES or np.plural:
@@ -7857,7 +7858,7 @@ AT_THE_WHEEL_OF = {"was", "am", "were", "are", "is", "in", "driving", "drove", "
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked", "drive", "steer", "pilot", "pull",
                    "operate", "ride", "sit", "passenger", "ease", "nose", "swing", "guide", "edge", "inch", "turn",
-                   "took", "take", "taking"}
+                   "took", "take", "taking", "driver", "rider"}  # ("I was the rider of the motorbike")
 OPERATED_FROM = {"in", "on", "of", "driving", "drove", "riding", "operating", "operated", "drive", "ride", "operate", "steer",
                  "pilot", "pull", "ease", "nose", "swing", "guide", "edge", "inch", "turn", "took", "take", "taking"}
 # the word right before the ego's own vehicle ("she eased the Volvo left": the car she drives; "I took the pickup")
