@@ -8252,8 +8252,8 @@ def _named_as_the_ego(r: _Reader) -> None:
         named = None
         if k > 1 and words[k - 1] in ("our", "the") and words[k - 2] == "is":
             named = next((e for e in reversed(in_sentence) if e.said_at < k), None)  # "..., that's our ego"
-        elif opens and (words[k + 1:k + 3] in ([",", "a"], [",", "an"]) or
-                        words[k + 1:k + 5] == ["for", "this", "one", "is"]):
+        elif opens and (words[k - 1:k + 3] in (["our", "ego", ",", "a"], ["our", "ego", ",", "an"]) or
+                        words[k + 1:k + 5] == ["for", "this", "one", "is"]):  # (not "ego, a bus behind": a list)
             named = next((e for e in in_sentence if k < e.said_at <= k + 8), None)  # "Our ego, a green hatchback"
         if named is not None:
             named.actions += [a for a in ego.actions if not any(b[0] == a[0] for b in named.actions)]
