@@ -8176,3 +8176,19 @@ def test_where_after_the_road_turned_into_is_the_destination():
 
 def test_the_rider_of_the_motorbike_speaking_rides_it():
     assert ("motorcycle", "go_straight", "ego") in agents("I was the rider of the motorbike. A car pulled out.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("JOB CARD 20417 - 2016 VW Golf. Customer states vehicle was stationary at a red light when it was struck in the "
+     "rear by a bus.", [("bus", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("Job card 8107 - 2013 Ford Focus. Customer states he was driving home at night when a man ran out from between "
+     "parked cars on the left and he hit him.", [("car", "go_straight", "ego"),
+                                                 ("pedestrian", "cross_the_road", "front_left")]),
+])
+def test_a_job_card_is_told_from_the_customers_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_big_number_before_one_vehicle_names_it():
+    assert len(agents("JOB CARD #4471 | 2017 Toyota Camry. Customer states: a white pickup came from the road on "
+                      "the left and hit the driver's door.")) == 2

@@ -4184,6 +4184,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         count = BARE_PLURAL_COUNT if plural and not words & {"a", "an", "one", "another"} else 1
     if count is not None and count > 1 and not plural and u.base in ("group", "crowd", "family"):
         count = BARE_PLURAL_COUNT
+    if count >= 100 and not plural:
+        r.notes.append(f"read the number before '{u.base}' as naming it, not counting")
+        count = 1  # "JOB CARD #4471 | 2017 Toyota Camry": a job's number before one car
     if count >= TOO_LARGE:
         r.notes.append(f"repaired: a count too large to read for {u.base}; used {MAX_AGENTS_PER_MENTION}")
         count = MAX_AGENTS_PER_MENTION
@@ -7774,6 +7777,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _witness_on_foot(r)
     _the_patients_vehicle(r)
     _named_as_the_ego(r)
+    _the_customers_vehicle(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
@@ -8256,16 +8260,44 @@ def _named_as_the_ego(r: _Reader) -> None:
                         words[k + 1:k + 5] == ["for", "this", "one", "is"]):  # (not "ego, a bus behind": a list)
             named = next((e for e in in_sentence if k < e.said_at <= k + 8), None)  # "Our ego, a green hatchback"
         if named is not None:
-            named.actions += [a for a in ego.actions if not any(b[0] == a[0] for b in named.actions)]
-            lane = next((side for side in SIDES if f"side_{side}" in named.features and "lane_said" in named.features),
-                        None)  # "a green hatchback in the right lane": the lane the ego is in
-            kept = {f for f in ego.features if f.startswith("in_lane") or f == "in_a_side_lane"} | (
-                {"in_a_side_lane", f"in_lane_{lane}"} if lane else set())
-            _taken_over(r, ego, named)
-            _the_ego_now(r, named)
-            named.features |= kept
-            r.notes.append(f"read the {named.head} as the ego: the text names it so")
+            _now_the_ego(r, named, "the text names it so")
             return
+
+
+def _now_the_ego(r: _Reader, vehicle: Entity, why: str) -> None:
+    """A vehicle found to be the ego takes over the ego said so far: what it did, the lane it is in, whoever was
+    placed by it."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    lane = next((side for side in SIDES if f"side_{side}" in vehicle.features and "lane_said" in vehicle.features),
+                None)  # "a green hatchback in the right lane": the lane the ego is in
+    kept = {"in_a_side_lane", f"in_lane_{lane}"} if lane else set()
+    if ego is not None:
+        vehicle.actions += [a for a in ego.actions if not any(b[0] == a[0] for b in vehicle.actions)]
+        kept |= {f for f in ego.features if f.startswith("in_lane") or f == "in_a_side_lane"}
+        _taken_over(r, ego, vehicle)
+    _the_ego_now(r, vehicle)
+    vehicle.features |= kept
+    r.notes.append(f"read the {vehicle.head} as the ego: {why}")
+
+
+CUSTOMER_WORDS = {"customer", "customers", "owner"}
+
+
+def _the_customers_vehicle(r: _Reader) -> None:
+    """'JOB CARD 20417 - 2016 VW Golf ... Customer states vehicle was stationary ...': a garage's job card opens on
+    the customer's vehicle (or says 'vehicle' of it), which the story is told from."""
+    words = [t.word for t in r.tokens]
+    if not any(w in CUSTOMER_WORDS and words[k + 1:k + 2] and words[k + 1] in ("states", "stated", "reports", "says")
+               for k, w in enumerate(words)):
+        return
+    ego = next((e for e in r.entities if e.is_ego), None)
+    first = min((e for e in r.entities if e.said_at >= 0), key=lambda e: e.said_at, default=None)
+    if first is None or first.is_ego or first.type not in V.EGO_TYPES or first.count != 1 or \
+            not (r.tokens[first.said_at].sentence == 0 or first.head == "vehicle") or \
+            first.features - {"compass_north", "compass_south", "parked"} or \
+            ego is not None and ego.head not in FIRST_PERSON | {"ego", "we", "us", "vehicle", "he", "she"}:
+        return
+    _now_the_ego(r, first, "a job card opens on the customer's vehicle")
 
 
 PATIENT_WORDS = {"pt", "patient", "casualty", "moi", "atmist", "gcs", "injuries", "conveyance", "conveyed", "ems"}
@@ -8295,11 +8327,7 @@ def _the_patients_vehicle(r: _Reader) -> None:
     vehicle = driven or (striker if on_foot else None)
     if vehicle is None:
         return
-    if ego is not None:
-        vehicle.actions += [a for a in ego.actions if not any(b[0] == a[0] for b in vehicle.actions)]
-        _taken_over(r, ego, vehicle)
-    _the_ego_now(r, vehicle)
-    r.notes.append(f"read the {vehicle.head} as the ego: a handover tells the scene from the patient's side")
+    _now_the_ego(r, vehicle, "a handover tells the scene from the patient's side")
 
 
 def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
