@@ -8192,3 +8192,18 @@ def test_a_job_card_is_told_from_the_customers_vehicle(prompt, expected):
 def test_a_big_number_before_one_vehicle_names_it():
     assert len(agents("JOB CARD #4471 | 2017 Toyota Camry. Customer states: a white pickup came from the road on "
                       "the left and hit the driver's door.")) == 2
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Manze, a matatu in front of me just stopped in the middle of the road to pick up passengers.",
+     ("bus", "stop", "front")),
+    ("Hapo Kangemi, a boda boda from the opposite side went straight.", ("motorcycle", "go_straight", "front_left")),
+    ("Marshrutka number 7 stays on the bus stop on the right, little before me. When I come close, it suddenly goes "
+     "out from the stop into my lane.", ("bus", "change_lane_to_left", "front_right")),
+])
+def test_minibuses_and_motorbike_taxis_of_other_countries(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_changing_to_my_lane_is_into_it():
+    assert ("car", "change_lane_to_left", "right") in agents("A car in the right lane changed to my lane.")

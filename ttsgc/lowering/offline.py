@@ -5665,6 +5665,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             r.mark(u)
             continue  # "The front of V2 struck the left side of V1": a part of V2, no place
         if u.meaning == "ego_lane" and i > 0 and (units[i - 1].word in ("into", "onto", "across") or (
+                units[i - 1].word == "to" and i > 1 and units[i - 2].category == "actions") or (
                 units[i - 1].category == "actions" and units[i - 1].tokens[-1].word in ("into", "onto")) or (
                 units[i - 1].category == "actions" and units[i - 1].tokens[0].base in STEERING | {"come", "get"}
                 and u.tokens[0].word == "in")):
