@@ -304,13 +304,16 @@ FROM_BEHIND_VERBS = {"rear end", "rear ended", "shunt", "run into the back of"}
 GOING_INTO = {"enter", "come", "move", "get", "swerve", "merge", "slide", "push", "squeeze", "put"}
 
 
+WANTING_OF_THE_EGO = {"at", "honking", "hooting", "beeping", "flashing", "waving", "signalling", "signaling"}
+
+
 def _wanted_of_the_ego(units: list[Unit]) -> list[Unit]:
     """'started honking at me to go', 'flashing us to pull out': what someone wants the ego to do is no doing of
     theirs, nor yet of the ego's."""
     return [Unit(u.start, u.end, "word", u.tokens[0].word, u.tokens)
             if u.category == "actions" and k > 1 and units[k - 1].word == "to" and units[k - 2].category == "agents"
             and units[k - 2].meaning == "ego" and units[k - 2].word in ("me", "us") and k > 2 and
-            units[k - 3].word in ("at", "honking", "hooting", "beeping", "flashing", "waving", "signalling", "signaling")
+            units[k - 3].word in WANTING_OF_THE_EGO
             else u for k, u in enumerate(units)]
 
 
@@ -3470,6 +3473,8 @@ def _a_verb_after_the_copula(units: list[Unit], u: Unit) -> bool:
     word for which one it is ('SV1 is oncoming truck')."""
     k = units.index(u)
     return u.word in TRANSITIVE_POSITIONS and k > 0 and units[k - 1].word in ("is", "are", "was", "were")
+
+
 DETERMINERS = DEFINITE | INDEFINITE | {
     "his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second", "third",
     "first", "same", "further", "additional", "extra", "its", "their",
@@ -4791,7 +4796,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             # cars had shunted": into each other)
         if action == "cross" and e.type not in V.VULNERABLE_TYPES and u.base == "emerge" and \
                 clause_units is not None and k is not None and any(
-                x.category == "positions" and x.meaning in ("road_straight", "toward") for x in clause_units[k + 1:k + 6]):
+                x.category == "positions" and x.meaning in ("road_straight", "toward")
+                for x in clause_units[k + 1:k + 6]):
             action = "move"  # "a van emerges from the mist in the oncoming lane": it comes on, along its own lane
         if action == "cross" and e.type == "cyclist" and "straight" in {t.word for t in u.tokens}:
             e.features.add("straight_across")  # "rides straight across from the road on the left": through the
@@ -6622,10 +6628,10 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
-            seat = [u.word for u in between if not (u.category in ("actions", "behaviours") and
-                                                    u.tokens[0].word.endswith("ing"))] \
-                if len(between) == 2 and not _placed_on_the_way_in(between) else \
-                ["in"] if _placed_on_the_way_in(between) else [u.word for u in between]
+            seat = ["in"] if _placed_on_the_way_in(between) else [
+                u.word for u in between if not (u.category in ("actions", "behaviours") and
+                                                u.tokens[0].word.endswith("ing"))] \
+                if len(between) == 2 else [u.word for u in between]
             # "some bloke speeding in a white hatchback", "the dude coming the other way in a lifted pickup"
             driver = (prev.entity.head in DRIVERS or prev.entity.head.split()[-1] == "rider" and
                       np.entity.type in V.TWO_WHEELER_TYPES) and (seat in (
@@ -6798,7 +6804,6 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
     seat = None
     if k >= 1 and before[k].entity is None and "passenger" in units[before[k].index].base.split():
         seat, k = before[k], k - 1  # "the front-seat passenger in ...": the passenger is the speaker
-
     if k < 0 or before[k].entity is None or not before[k].entity.is_ego or \
             before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego", "op", "rp"} or \
             np.entity is None or np.entity.type not in V.EGO_TYPES or np.plural:
@@ -7857,7 +7862,8 @@ AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cyclin
                 "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked",
                 "right lane", "left lane", "middle lane", "inside lane", "outside lane", "fast lane", "slow lane",
                 "the lane", "moving off", "moved off", "pulling away", "pulled away", "pulling off", "pulled off"}
-# ("I stood still in the right lane": standing in traffic, at the wheel, not "Brook Lane"; "moving off from the bus stop")
+# ("I stood still in the right lane": standing in traffic, at the wheel, not "Brook Lane"; "moving off from the
+# bus stop")
 FIRST_PERSON = {"i", "me", "my", "i'm"}
 AT_THE_WHEEL_OF = {"was", "am", "were", "are", "is", "in", "driving", "drove", "operating", "operated", "on", "patrol",
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
@@ -8302,8 +8308,8 @@ def _the_customers_vehicle(r: _Reader) -> None:
 
 
 PATIENT_WORDS = {"pt", "patient", "casualty", "moi", "atmist", "gcs", "injuries", "conveyance", "conveyed", "ems"}
-STRUCK_BY = (("struck", "by"), ("hit", "by"), ("knocked", "down", "by"), ("run", "over", "by"), ("knocked", "over", "by"),
-             ("clipped", "by"), ("hit", "by", "a"), ("struck", "by", "a"))
+STRUCK_BY = (("struck", "by"), ("hit", "by"), ("knocked", "down", "by"), ("run", "over", "by"),
+             ("knocked", "over", "by"), ("clipped", "by"))
 
 
 def _the_patients_vehicle(r: _Reader) -> None:
