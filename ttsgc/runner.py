@@ -102,10 +102,16 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
                 yield index, future.result()
         pool.shutdown(wait=True)  # idle workers exit at once, and no thread of the pool outlives it to stop a later fork
     except BaseException:  # interrupted, or the caller stopped: workers only compute, so end them at once
-        for process in list((getattr(pool, "_processes", None) or {}).values()):
+        processes = list((getattr(pool, "_processes", None) or {}).values())
+        for process in processes:
             process.terminate()
-        pool.shutdown(wait=True, cancel_futures=True)  # and wait for the pool's own thread to see them gone, so that
-        # it is not woken at the interpreter's exit through a pipe already closed (a traceback after Ctrl-C)
+        for process in processes:
+            process.join(timeout=5)
+        pool.shutdown(wait=False, cancel_futures=True)
+        manager = getattr(pool, "_executor_manager_thread", None)
+        if manager is not None:  # let the pool's own thread see them gone, so that it is not woken at the
+            manager.join(timeout=5)  # interpreter's exit through a pipe already closed (a traceback after Ctrl-C);
+            # bounded, as a worker ended holding the pool's queue lock can leave that thread waiting forever
         raise
     finally:
         pool.shutdown(wait=False, cancel_futures=True)
