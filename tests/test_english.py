@@ -8207,3 +8207,11 @@ def test_minibuses_and_motorbike_taxis_of_other_countries(prompt, expected):
 
 def test_changing_to_my_lane_is_into_it():
     assert ("car", "change_lane_to_left", "right") in agents("A car in the right lane changed to my lane.")
+
+
+def test_going_round_on_a_narrow_road_with_oncoming_traffic_is_no_lane_change():
+    assert ("car", "go_straight", "ego") in agents(
+        "On Fore Street the candidate came up behind a bus pulled in at a stop and went round it without checking the "
+        "road ahead was clear - an oncoming van had to slow down.")
+    assert ("car", "change_lane_to_left", "ego") in agents(
+        "A delivery lorry was stopped in my lane, so I went round it.")

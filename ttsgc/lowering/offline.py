@@ -4870,8 +4870,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             again = at >= 0 and ([t.word for t in r.tokens[at + 1:at + 3]] in (["and", "round"], ["and", "around"]) or
                                  [t.word for t in r.tokens[max(0, at - 2):at]] in (["round", "and"], ["around", "and"]))
             if not side and k + 1 < len(clause_units) and clause_units[k + 1].word in ("around", "round") and \
-                    not circulating and not again:  # ("in the roundabout going around": round it, not round
-                # someone; "drove round and round the estate": about it)
+                    not circulating and not again and not (
+                        _one_lane_with_oncoming(r.tokens) and not {"left", "right"} & {
+                            t.word for t in r.tokens if t.sentence == u.tokens[0].sentence}):
+                # ("in the roundabout going around": round it, not round someone; "drove round and round the
+                # estate": about it; on a narrow road with traffic coming the other way, round it in the one lane)
                 side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
             if side and _passing_one_off_the_lanes(r, clause_units, k):
                 side = None  # "a semi stopped on the shoulder ... I'm going past it in the right lane": no change
@@ -6378,6 +6381,16 @@ def _part_of_group(r: _Reader, n: int) -> Entity | None:
         r.entities.append(part)
         return part
     return None
+
+
+ONE_LANE_OR_ONCOMING = (("oncoming",), ("other", "way"), ("opposite", "direction"), ("towards", "me"), ("narrow",),
+                        ("one", "lane"), ("single", "carriageway"), ("single", "track"))
+
+
+def _one_lane_with_oncoming(tokens: list[Token]) -> bool:
+    """'Narrow street with two cars parked on my side, and a van coming the other way ... went round them': a road
+    of one lane each way, or traffic said to come the other way; going round is no change to another lane."""
+    return _says_any([t.word for t in tokens], ONE_LANE_OR_ONCOMING)
 
 
 def _passing_one_off_the_lanes(r: _Reader, units: list[Unit], k: int) -> bool:
