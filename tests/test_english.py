@@ -8215,3 +8215,10 @@ def test_going_round_on_a_narrow_road_with_oncoming_traffic_is_no_lane_change():
         "road ahead was clear - an oncoming van had to slow down.")
     assert ("car", "change_lane_to_left", "ego") in agents(
         "A delivery lorry was stopped in my lane, so I went round it.")
+
+
+def test_an_overtaker_on_a_road_with_oncoming_traffic_comes_from_behind_in_the_egos_lane():
+    lowered = lower("Two motorbikes came past me way too fast on the approach to a blind bend, with a logging truck "
+                    "coming the other way.")
+    assert [a.relative_to_ego for a in lowered.scenario.agents() if a.type == "motorcycle"] == ["back", "back"]
+    assert lowered.scenario.road.lanes is None

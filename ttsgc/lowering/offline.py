@@ -7530,7 +7530,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             and ("overtaking" not in f or "behind" in f) and not (crossing and f & {"from_left", "from_right"}):  # "overtook us on the right, pulled in ahead": the side it
         # passed on; but "approached from behind in the same lane ... passed on the left": it starts behind, in it
         side = None  # "stops in the ego lane"; but "from the right lane ... in the ego lane" keeps its origin
-    if side is None and "overtaking" in f and not ("behind" in f and junction is False):
+    if side is None and "overtaking" in f and not ("behind" in f and junction is False) and \
+            "over_the_centre_line" not in f:  # (on a road of one lane each way it passes in the lane coming the
+        # other way, behind the ego in its own: "two motorbikes came past me on the approach to a blind bend")
         side = _overtaking_side("side_of_an_overtaker")
         side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
@@ -8869,6 +8871,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.road_type == "shoulder" and action == "stop" and e.type not in V.VULNERABLE_TYPES and \
                 not e.features & {"ahead", "behind", "level", "overtaking"}:
             e.features.add("ahead")  # "a tractor-trailer on the right shoulder, hazards on": one the ego comes up to
+        if "overtaking" in e.features and not e.is_ego and _one_lane_with_oncoming(r.tokens) and \
+                _side_of(e.features) is None and "lane_said" not in e.features and not {
+                    "lanes", "dual", "motorway", "highway", "freeway", "expressway"} & {t.word for t in r.tokens}:
+            e.features.add("over_the_centre_line")
         position, is_oncoming = _position(e, action, junction, has_crosswalk, target_side)
         resolved[e.key] = (action, direction)
         positions[e.key] = position
