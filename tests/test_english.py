@@ -8222,3 +8222,10 @@ def test_an_overtaker_on_a_road_with_oncoming_traffic_comes_from_behind_in_the_e
                     "coming the other way.")
     assert [a.relative_to_ego for a in lowered.scenario.agents() if a.type == "motorcycle"] == ["back", "back"]
     assert (lowered.scenario.road.lanes or 1) == 1
+
+
+def test_a_place_said_after_a_comma_places_the_one_just_named():
+    assert agents("She was driving down a residential street with two people walking along the pavement on her "
+                  "right, a bit ahead.") == [("car", "go_straight", "ego"),
+                                             ("pedestrian", "on_the_sidewalk", "front_right"),
+                                             ("pedestrian", "on_the_sidewalk", "front_right")]

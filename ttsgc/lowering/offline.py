@@ -183,6 +183,7 @@ class _Reader:
     order: int = 0
     keys: int = 0  # entity keys handed out
     clause_mentions: list = field(default_factory=list)  # entities named so far in the clause being read
+    last_mentions: list = field(default_factory=list)  # those named in the clause read before
     after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
@@ -5207,7 +5208,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         r.mark(units[i])
     if roles:
         units = clause.units = [u for i, u in enumerate(units) if i not in roles]
-    r.clause_mentions = []
+    r.last_mentions, r.clause_mentions = r.clause_mentions, []
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
         u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
         and units[i + 1].meaning not in ("ego", "none")) and not _model_named_before(units, i) and not (
@@ -5520,6 +5521,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     if not subject and verbs and any(u.category == "agents" and u.base in ("everyone", "everybody")
                                      for u in units[:verbs[0]]):
         subject = [_ego_entity(r, stage)]  # "everyone pulling over": the ego among them
+    afterthought = not subject and not verbs and clause.link == "," and bool(units) and all(
+        u.category in ("positions", "word") for u in units) and any(u.category == "positions" for u in units) and \
+        previous_subject and all(e.is_ego for e in previous_subject)
+    placed_last = next((e for e in reversed(r.last_mentions) if not e.is_ego), None) if afterthought else None
+    if placed_last is not None:
+        subject = [placed_last]  # "driving with two people walking on the pavement on her right, a bit ahead": theirs
     if not subject:
         if clause.antecedent is not None:
             subject = [clause.antecedent]
