@@ -8229,3 +8229,10 @@ def test_a_place_said_after_a_comma_places_the_one_just_named():
                   "right, a bit ahead.") == [("car", "go_straight", "ego"),
                                              ("pedestrian", "on_the_sidewalk", "front_right"),
                                              ("pedestrian", "on_the_sidewalk", "front_right")]
+
+
+@pytest.mark.parametrize("after", ["An ambulance was on its way.",
+                                   "The ambulance station is just round the corner, so sirens are normal here."])
+def test_an_ambulance_on_its_way_or_its_station_is_no_agent(after):
+    assert agents("A car pulled out in front of me and hit me. " + after) == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]

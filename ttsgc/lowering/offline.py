@@ -1318,6 +1318,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.end].word == "is" and not {t.word for t in tokens} & {"sv", "ego", "sv1", "v1"}:
         return [Unit(m.start, m.end, "word", "pov", span)]  # "POV: ur turning left ...": a caption's point of view
         # (the ego's), not a crash report's principal other vehicle
+    if m.category == "positions" and m.meaning == "ego_lane" and [t.word for t in span][-1:] == ["way"] and \
+            m.start > 0 and tokens[m.start - 1].word == "on":
+        return [Unit(m.start, m.end, "word", "way", span)]  # "an ambulance was on its way": coming, no place
     if m.category == "agents" and m.meaning == "none" and span[0].word in OWNERS and span[-1].possessive:
         return [Unit(m.start, m.end, "word", span[-1].word, span)]  # "in my husband's Honda": whose it is, as said
     if m.category == "agents" and m.meaning == "ego" and [t.base for t in span] == ["iv"] and span[0].plural:
