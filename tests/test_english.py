@@ -8236,3 +8236,8 @@ def test_a_place_said_after_a_comma_places_the_one_just_named():
 def test_an_ambulance_on_its_way_or_its_station_is_no_agent(after):
     assert agents("A car pulled out in front of me and hit me. " + after) == [
         ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+
+
+def test_a_passer_by_who_called_the_police_is_no_agent():
+    assert agents("A van pulled out in front of me. A passer-by called the police.") == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]

@@ -3818,7 +3818,7 @@ OFF_THE_ROAD = {"should", "would", "could", "must", "might", "say", "says", "sai
                 "agree", "agrees", "forgot", "forget", "forgets", "forgotten", "know", "knows", "knew", "seem",
                 "seems", "seemed", "learn", "learned", "learnt", "may", "need", "needs", "wish", "wishes", "can",
                 "will", "shall", "ought", "choose", "consider", "nowhere", "rang", "rung", "phoned", "rings",
-                "passenger"}
+                "passenger", "called", "dialled", "dialed"}  # ("a passer-by called the police")
 
 
 LOADED = (("on", "the", "back"), ("on", "the", "trailer"), ("on", "the", "flatbed"), ("on", "the", "bed"),
