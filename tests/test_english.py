@@ -8241,3 +8241,9 @@ def test_an_ambulance_on_its_way_or_its_station_is_no_agent(after):
 def test_a_passer_by_who_called_the_police_is_no_agent():
     assert agents("A van pulled out in front of me. A passer-by called the police.") == [
         ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("before", ["", "I was driving along. "])
+def test_the_car_two_cars_ahead_is_another(before):
+    assert agents(before + "The car two cars ahead of me slammed on its brakes.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]

@@ -4149,13 +4149,14 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if ego is not None and not plural and kind == ego.type and "other" not in words and \
                 not any(m.category == "positions" for m in modifiers) and (  # ("the oncoming car": another)
                 u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
-                _names_the_ego_again(r, ego, u.base)) and (
+                _names_the_ego_again(r, ego, u.base)) and not _measured_by_others(units, after) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
                 or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)
                 or first > 0 and units[first - 1].tokens[0].base in CONTROLLING):
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop", "the
             # system holds the car in place"
         if ego is None and not plural and bodies().get(u.base) == "car" and "other" not in words and \
+                not _measured_by_others(units, after) and \
                 not any(not e.is_ego and e.type not in V.VULNERABLE_TYPES for e in r.entities) and \
                 (nxt is None or nxt.category != "positions") and \
                 not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u) and \
@@ -4319,6 +4320,12 @@ def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
     was named by it too."""
     return any(noun in name.split() for name in ego.aliases | {ego.head}) and not any(
         not e.is_ego and (e.head.split()[-1] == noun or noun in e.aliases) for e in r.entities)
+
+
+def _measured_by_others(units: list[Unit], k: int) -> bool:
+    """'the car two cars ahead of me': a count of vehicles and a place right after the noun say where it is."""
+    return k + 2 < len(units) and units[k].category in ("numbers", "number") and units[k + 1].category == "agents" \
+        and units[k + 2].category == "positions"
 
 
 GENERAL_BODIES = {"car", "vehicle", "truck", "bus", "machine", "motor"}  # (machine: an Italian or Russian "car")
