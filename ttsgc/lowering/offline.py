@@ -319,8 +319,7 @@ def _wanted_of_the_ego(units: list[Unit]) -> list[Unit]:
 
 
 def _entering_in(units: list[Unit]) -> list[Unit]:
-    """'enters suddenly in my lane', 'comes in my lane' (Italian, Spanish, Portuguese: 'entra nella mia corsia'): 'in
-    my lane' after a verb of going is into it; 'entered my lane' is too, and 'entered the left lane' changes to it."""
+    """'a car entered my lane': into it; 'I entered the left lane': a change to it."""
     out = list(units)
     for k, u in enumerate(units):
         j = k - 1 - (k > 1 and units[k - 1].word == "the")
@@ -334,17 +333,21 @@ def _entering_in(units: list[Unit]) -> list[Unit]:
                 u.tokens[-1].word == "lane" and u.tokens[0].word in ("the", "left", "right"):
             v = units[j]  # "I entered the left lane": a lane change to it
             out[j] = Unit(v.start, v.end, "actions", "lane_" + u.meaning[5:], v.tokens)
-            continue
-        if u.category != "positions" or u.meaning != "ego_lane" or u.tokens[0].word != "in":
-            continue
-        j = k - 1
-        while j >= 0 and (units[j].category == "behaviours" or units[j].word.endswith("ly") and
-                          units[j].category == "word"):
-            j -= 1
-        if j >= 0 and units[j].category == "actions" and len(units[j].tokens) == 1 and \
-                units[j].tokens[0].base in GOING_INTO:
-            out[k] = Unit(u.start, u.end, "positions", "into_ego_lane", u.tokens)
     return out
+
+
+def _going_in(units: list[Unit], i: int) -> bool:
+    """'is coming in ego lane', 'enters suddenly in my lane' (Italian, Spanish, Portuguese: 'entra nella mia
+    corsia'): 'in' the ego's lane right after a verb of going, past a manner adverb, is into it."""
+    if units[i].tokens[0].word != "in":
+        return False
+    j = i - 1
+    while j >= 0 and (units[j].category == "behaviours" or units[j].word.endswith("ly") and
+                      units[j].category == "word"):
+        j -= 1
+    return j >= 0 and units[j].category == "actions" and (
+        j == i - 1 and units[j].tokens[0].base in STEERING | {"come", "get"} or
+        len(units[j].tokens) == 1 and units[j].tokens[0].base in GOING_INTO)
 
 
 AGE_MARKS = {"f", "yo", "yrs", "yr", "y"}
@@ -1673,7 +1676,7 @@ def _road(r: _Reader) -> RoadSpec:
         if u.category == "road":
             r.mark(u)
             meaning = u.meaning
-            negated = negated or _none_after(units, k)
+            said_not = negated or _none_after(units, k)  # ("LIGHT NONE": this one only)
             if meaning == "none":
                 pass
             elif meaning == "junction":
@@ -1681,12 +1684,12 @@ def _road(r: _Reader) -> RoadSpec:
                 if junction is None or denied:
                     junction = not denied
             elif meaning == "no_junction":
-                junction = False if not negated else junction
+                junction = False if not said_not else junction
             elif meaning == "highway":
                 lanes = max(lanes or 0, 2)
                 junction = False if junction is None else junction
             elif meaning == "sign":
-                if negated:
+                if said_not:
                     put("stop", True)
                     put("yield", True)
             elif meaning.startswith("!") and "+" in meaning:
@@ -1695,13 +1698,13 @@ def _road(r: _Reader) -> RoadSpec:
                 for word in meaning[1:].split("+"):
                     put(word, True)
             elif meaning == "stop+junction":  # "a four-way stop": a stop sign at a junction
-                put("stop", negated)
+                put("stop", said_not)
                 junction = True if junction is None else junction
             else:
-                if meaning == "traffic_light" and u.tokens[0].word in ("light", "lights") and not negated and \
+                if meaning == "traffic_light" and u.tokens[0].word in ("light", "lights") and not said_not and \
                         k > 0 and units[k - 1].category == "weather":
                     continue  # "light rain" is read as weather first; a stray "light" after weather is not a signal
-                put(meaning, negated)
+                put(meaning, said_not)
             continue
         if u.category == "positions" and u.meaning in ("crosswalk", "off_crosswalk") and _none_after(units, k):
             put("continental_crosswalk" if "zebra" in {t.word for t in u.tokens} else "crosswalk", True)
@@ -5692,9 +5695,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue  # "The front of V2 struck the left side of V1": a part of V2, no place
         if u.meaning == "ego_lane" and i > 0 and (units[i - 1].word in ("into", "onto", "across") or (
                 units[i - 1].word == "to" and i > 1 and units[i - 2].category == "actions") or (
-                units[i - 1].category == "actions" and units[i - 1].tokens[-1].word in ("into", "onto")) or (
-                units[i - 1].category == "actions" and units[i - 1].tokens[0].base in STEERING | {"come", "get"}
-                and u.tokens[0].word == "in")):
+                units[i - 1].category == "actions" and units[i - 1].tokens[-1].word in ("into", "onto")) or
+                _going_in(units, i)):
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane", "is coming in ego lane"
         if u.meaning == "ahead" and _swerves_in_front(units, i):
             u.meaning = "into_ego_lane"  # "swerves right in front of me": where the cut-in ends, not where it began
