@@ -8247,3 +8247,58 @@ def test_a_passer_by_who_called_the_police_is_no_agent():
 def test_the_car_two_cars_ahead_is_another(before):
     assert agents(before + "The car two cars ahead of me slammed on its brakes.") == [
         ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+def test_one_followed_by_another_both_do_what_the_sentence_says_after():
+    assert agents("At a roundabout, our vehicle waits at the entry while a car, followed closely by a "
+                  "motorcyclist, approaches from our left.") == [
+        ("car", "go_straight", "road_of_left_turn"), ("car", "stop", "ego"),
+        ("motorcycle", "go_straight", "road_of_left_turn")]
+
+
+def test_labelled_vehicles_joined_by_and_share_the_verb():
+    assert agents("Vehicle 1 (passenger car) waits at the junction. Vehicle 2 (fire engine) and Vehicle 3 (police "
+                  "patrol car) approached from the road on the right.") == [
+        ("car", "stop", "ego"), ("firetruck", "go_straight", "road_of_right_turn"),
+        ("police", "go_straight", "road_of_right_turn")]
+
+
+def test_stopped_meaning_to_go_straight_then_going_is_two_stages():
+    assert stages("The ego had stopped at the stop line, intending to go straight. After the van had passed, the "
+                  "ego proceeded straight across.")[0][0] == ("ego", "stop", None)
+
+
+def test_a_case_numbers_title_line_names_no_agent():
+    prompt = ("TC-052: Red-light runner from the left\nPreconditions: Signalised crossroads, midday.\nSteps:\n"
+              "1. The SUT goes straight through the junction.\n2. A car coming from the road on the left runs its "
+              "red light.")
+    assert [a for a in agents(prompt) if a[0] == "pedestrian"] == []
+
+
+@pytest.mark.parametrize("label", ["TV1", "V2"])
+def test_a_label_in_brackets_after_a_vehicle_is_its_name(label):
+    assert agents(f"Ego in the middle lane. A white SUV ({label}) drives in the right lane slightly ahead of Ego. "
+                  f"{label} cuts into Ego's lane.") == [("car", "change_lane_to_left", "front_right"),
+                                                        ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("heading", ["Event 7: motorcycle at a junction.", "Abrupt stop of a motorcycle."])
+def test_a_road_user_in_a_numbered_or_nominal_heading_is_the_one_told_of_after(heading):
+    kinds = [a for a in agents(f"{heading} The ego waits. A motorcycle approaches from the right.")
+             if a[0] == "motorcycle"]
+    assert len(kinds) == 1
+
+
+@pytest.mark.parametrize("prevented", ["prevents a lane change to the right", "prevents an immediate lane change"])
+def test_a_lane_change_prevented_is_made_by_no_one(prevented):
+    assert agents(f"The ego drives in the left lane. A passenger car in the middle lane alongside the ego vehicle "
+                  f"{prevented}.") == [("car", "go_straight", "ego"), ("car", "go_straight", "right")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego vehicle turns left from the main road into a side street. A delivery truck is parked in the side "
+    "street just beyond the junction.",
+    "The participant is stopped at a red light, intending to turn right. A delivery truck is parked in the road "
+    "the participant is about to turn into."])
+def test_the_road_turned_into_named_again_or_by_a_participant_is_the_destination(prompt):
+    assert ("truck", "stop", "at_the_destination") in agents(prompt)

@@ -400,6 +400,8 @@ def _dashed_agent_key(line: str) -> re.Match | None:
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
               "description", "goal", "purpose", "report", "note", "story", "epic", "feature",
               "functional", "logical", "concrete"}  # "Functional scenario: Stationary obstacle in ego lane."
+NUMBERED_KEY = re.compile(r"\s*([A-Z][a-z]+ \d{1,3}[a-z]?|[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*)\s*:\s+")
+CASE_NUMBER = re.compile(r"[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*")  # 'TC-052', 'HZ-014': a case's number keys its title
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
@@ -663,6 +665,9 @@ def _lines(text: str) -> str:
         text = INLINE_KEY.sub(_inline_key_break, text)  # "Scenario: unprotected left. Oncoming: 1 sedan, 1 box
         # truck.": notes run on in one line, a key after each full stop
     if "\n" not in text.strip():
+        numbered = NUMBERED_KEY.match(text)
+        if numbered and not _names_agent(numbered.group(1)) and not PHASE_KEY.fullmatch(numbered.group(1).lower()):
+            text = text[numbered.end():]  # "Event 7: motorcycle at a junction. ...": which event, no scene word
         return _keyed_agents("\n".join(_without_outline_numbers([text])))
     out = []
     lines = _tables(_without_answer_choices(_without_outline_numbers(text.strip().splitlines())))
@@ -699,7 +704,8 @@ def _lines(text: str) -> str:
             value = re.split(rf",?\s+(?:and\s+)?(?:{_later_words()})\b", value)[0]  # "Ego: follows HGV, then (after
             # that) pulls out": the phases
             # below tell what comes when; the line before them says who is there and how it starts
-        if lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type"):
+        if lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type") or k == 0 and \
+                CASE_NUMBER.fullmatch(key) and not _names_agent(key) and not line.rstrip().endswith((".", "!", "?")):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
         elif lowered in PLAIN_KEYS or lowered.split()[0] in ROAD_KEYS:
             if lowered.split()[0] in ROAD_KEYS and not re.search(r"\blimit", value, re.I):
@@ -851,6 +857,8 @@ def _described_in_brackets(text: str) -> str:
         if len(words) >= 2 and words[-1] in ("me", "us", "you", "ego") and words[-2] in PLACED_BY:
             words = words[:-2]  # "the car behind me (...)": the bracket is the car's
         before = _agent_kinds(words)
+        if re.fullmatch(r"\s*[a-z]{1,4}[ _-]?\d{1,2}\s*", m.group(1)):
+            return m.group(0)  # "a white SUV (TV1)": the name it goes by after
         inside = re.findall(r"[a-z]+", m.group(1))
         kinds = [k for k in _agent_kinds(inside) if k not in ("pedestrian", "none")]  # the driver may be named
         if not before or before[-1] in ("ego", "none") or not kinds or any(

@@ -841,10 +841,15 @@ TO_COME = AUXILIARIES | {"am", "about", "going", "due", "want", "wants", "wanted
 ENTERING = {"enter", "entering", "enters", "entered"}
 
 
+def _to_come(u: Unit) -> bool:
+    """'is about', 'wants', 'to': the words between who and the verb of what it is yet to do."""
+    return u.category == "word" and u.word in TO_COME | {"to"} or u.category == "actions" and u.meaning == "try" and \
+        all(t.word in TO_COME | {"to"} for t in u.tokens)
+
+
 def _entered(units: list[Unit], j: int) -> bool:
     """'(the road) it wants to enter', 'it is turning into': after 'it', the verb of heading into a road."""
-    while j < len(units) and units[j].category in ("word", "actions") and units[j].word in TO_COME | {"to"} and \
-            (units[j].category == "word" or units[j].meaning == "try"):
+    while j < len(units) and _to_come(units[j]):
         j += 1
     return j < len(units) and (units[j].tokens[0].base in ENTERING or units[j].category == "actions" and
                                units[j].meaning.startswith("turn"))
@@ -868,13 +873,12 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
             continue
         j = k + (k + 1 < len(units) and units[k].word in ("in", "into", "onto") and units[k + 1].word == "which")
         j += j < len(units) and units[j].word in ("that", "which")  # "the road (in which) the AV is turning"
-        j += j < len(units) and units[j].word == "the"
+        j += j < len(units) and units[j].word == "the" and units[j].category == "word"
         if not (j < len(units) and (units[j].category == "agents" and units[j].meaning == "ego" or
                                     units[j].word == "it" and _entered(units, j + 1))):
             continue  # "the road the ego turns into", "the side road it wants to enter"
         j += 1
-        while j < len(units) and units[j].category in ("word", "actions") and units[j].word in TO_COME | {"to"} and \
-                (units[j].category == "word" or units[j].meaning == "try"):
+        while j < len(units) and _to_come(units[j]):
             j += 1  # "the road the ego is about to turn into", "the street we want to turn into"
         into = j + 1 < len(units) and units[j + 1].word in ("into", "onto")
         if j < len(units) and units[j].tokens[0].base in ENTERING:  # "the side road the ego wants to enter"
@@ -909,13 +913,16 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
     while k < len(units):
         u = units[k]
         sentence = u.tokens[0].sentence
-        if u.category == "actions" and u.meaning in ("turn_left", "turn_right", "turn") and (
-                u.tokens[-1].word in ("into", "onto") or k + 1 < len(units) and units[k + 1].word in ("into", "onto")) \
+        into = k + 1 if u.tokens[-1].word in ("into", "onto") else next(
+            (j + 1 for j in range(k + 1, min(k + 5, len(units))) if units[j].word in ("into", "onto")), None)
+        # "turns left into a side street", "turns left from the main road into a side street"
+        if u.category == "actions" and u.meaning in ("turn_left", "turn_right", "turn") and into is not None \
                 and _said_by_the_ego(units, k) and any(x.tokens[-1].word in ROAD_NOUNS and x.category != "agents"
-                                                       for x in units[k + 1:k + 5]):
-            out.append(u)
-            k += 1
-            end = next(j for j in range(k, min(k + 5, len(units))) if units[j].tokens[-1].word in ROAD_NOUNS)
+                                                       for x in units[into:into + 4]):
+            out.extend(units[k:into])
+            k = into
+            end = next(j for j in range(k, min(k + 4, len(units))) if units[j].tokens[-1].word in ROAD_NOUNS and
+                       units[j].category != "agents")
             out.extend(units[k:end + 1])
             k = end + 1
             until = sentence + 1
@@ -3748,6 +3755,8 @@ def _names_the_case_in_a_heading(r: _Reader, e: Entity) -> bool:
     after = [x.word for x in r.tokens[e.said_at + 1:e.said_at + 5] if x.sentence == t.sentence]
     named = before in ("", "of") and bool(set(words) & CASE_HEADINGS) or before in ("a", "an") and bool(
         set(after) & CASE_NOUNS)  # "Scenario of pedestrian rush-out", "a pedestrian-at-night case"
+    named = named or t.sentence == 0 and before in ("a", "an") and e.said_at > 1 and \
+        r.tokens[e.said_at - 2].word == "of" and len(words) <= 8  # "Abrupt stop of a taxi. ... A taxi ahead stops"
     return (keyed and before == "" or named) and any(
         f is not e and not f.is_ego and f.type == e.type and f.said_at >= 0 and
         r.tokens[f.said_at].sentence > t.sentence for f in r.entities)
@@ -5525,8 +5534,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         for np in before:
             subject += np.group or [np.entity]
         joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
-        if pending and len(before) >= 2 and joined and verbs and clause.link in ("", ","):
-            # "an ambulance, a police car and a van approach" (not "... a slow semi, so I signaled and I moved")
+        labelled = before and units[0].word in ("and", "or") and before[0].entity.label and all(e.label for e in pending)
+        if pending and (len(before) >= 2 or labelled) and joined and verbs and clause.link in ("", ","):
+            # "an ambulance, a police car and a van approach" (not "... a slow semi, so I signaled and I moved");
+            # "Vehicle 2 (fire engine) and Vehicle 3 (police car) approached"
             subject = list(pending) + subject
         objects = [np for np in phrases if (np.index > first_verb or _is_reference(units, np)) and np is not inverted]
     subject = [e for e in subject if e is not None]
@@ -6610,6 +6621,15 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if prev.entity in r.entities:
                 r.entities.remove(prev.entity)
             out[-1] = np
+            continue
+        if prev is not None and np.entity is not None and prev.entity is not None and np.introduced and \
+                np.entity.label and not prev.entity.label and not prev.entity.is_ego and prev.entity.count == 1 and \
+                len(units[np.index].tokens) == 1 and units[np.index].tokens[0].label and np.index + 1 < len(units) and \
+                units[np.index + 1].category == "comma" and \
+                [u.category for u in units[prev.index + 1: np.first]] == ["comma"]:
+            prev.entity.label = np.entity.label  # "a white SUV (TV1) ... TV1 cuts in": the name it goes by
+            if np.entity in r.entities:
+                r.entities.remove(np.entity)
             continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and prev.plural and np.plural and not prev.entity.is_ego and np.entity.type in V.TWO_WHEELER_TYPES \
@@ -7790,6 +7810,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                 if not e.is_ego and not e.features & {"road_left", "road_right", "road_straight", "from_left",
                                                        "from_right"}:
                     e.features.add("destination")
+        followed = next((i for i, u in enumerate(clause.units[1:], 1) if u.word == "followed" and
+                         clause.units[i - 1].category == "comma"), None)
+        if followed is not None and clause is r.passive and subject and not any(e.is_ego for e in subject):
+            led = [e for e in r.entities[before:] if not e.is_ego and e not in subject]
+            subject = led[:1] + subject  # "a car, followed by a motorcyclist, approaches from our left": both do
         if subject:
             previous = subject
         if clause.antecedent is not None and not clause.antecedent.is_ego and clause.antecedent not in subject and \
@@ -8973,6 +8998,8 @@ def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
     if later and waits and action in ("turn", "turn_left", "turn_right", "u_turn", "lane_left", "lane_right",
                                       "sideways_left", "sideways_right"):  # "pulls up ... and needs to go right"
         return "stop"
+    if later and waits and action in ("move", "go_straight") and later[0][4] in ("move", "go_straight"):
+        return "stop"  # "had stopped at the line, intending to go straight. After V2 had passed, V1 proceeded"
     if stage > 0 and action in ("move", "go_straight", None):
         before = [a for a in e.actions if a[0] < stage and a[1] == 2 and a[4] in ("turn_left", "turn_right")]
         if before and any(a[0] == stage for a in e.actions) and any(
