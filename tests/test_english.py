@@ -8302,3 +8302,29 @@ def test_a_lane_change_prevented_is_made_by_no_one(prevented):
     "the participant is about to turn into."])
 def test_the_road_turned_into_named_again_or_by_a_participant_is_the_destination(prompt):
     assert ("truck", "stop", "at_the_destination") in agents(prompt)
+
+
+@pytest.mark.parametrize("correction, expected", [
+    ("Actually change the van to a pickup.", ("car", "go_straight", "front_left")),
+    ("Make the truck a bus.", ("bus", "go_straight", "front_left"))])
+def test_a_request_corrected_in_the_same_message_names_one_agent(correction, expected):
+    said = agents(f"Country road, no junctions. An oncoming {'van' if 'van' in correction else 'truck'}, and I keep "
+                  f"going straight. {correction}")
+    assert said == sorted([("car", "go_straight", "ego"), expected])
+
+
+def test_the_driver_of_the_ego_vehicle_and_neither_road_user_are_no_agents():
+    assert agents("The ego vehicle travels in the middle lane. The driver of the ego vehicle is distracted. A cyclist "
+                  "rides on the shoulder ahead on the right. Neither road user interacts with the ego.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_right")]
+
+
+def test_a_sequence_word_before_anyone_of_the_scene_is_named_opens_no_stage():
+    assert len(stages("S5 was suggested by a member of my committee after a near miss she observed. The ego vehicle "
+                      "travels in the right lane and changes to the left lane.")) == 1
+
+
+def test_road_users_in_a_heading_are_the_ones_counted_after():
+    said = agents("SignalizedJunctionLeftTurn with pedestrians. The ego vehicle turns left at a signalized "
+                  "intersection where two pedestrians are crossing on a ladder crosswalk.")
+    assert [a for a in said if a[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "near_the_crosswalk")] * 2

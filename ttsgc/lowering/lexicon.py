@@ -875,6 +875,26 @@ TEST_PURPOSE = re.compile(r"[,\s]*\bso(?: that)? (?:(?:we|i|you|the team|enginee
                           r"measured|assessed|exercised|demonstrated|confirmed)\b)[^.;!?\n]*")
 
 
+CORRECTION = re.compile(r"\s*(?:(?:actually|oh|and|also|wait|sorry|no|ok|okay|but|hmm)[, ]+)*(?:please )?"
+                        r"(?:change|switch|turn|make|swap|replace) the ([a-z][a-z ]*?) (?:(?:in)?to |for |with )?"
+                        r"(?:an?|the) ([a-z][a-z ]*?)(?: instead)?(?: please)?\s*[.!]*\s*")
+
+
+def _as_corrected(text: str) -> str:
+    """A request corrected in the same message ('... an oncoming van. Actually change the van to a pickup.'):
+    the earlier mention is the one corrected, and the correction names no agent of its own."""
+    for sentence in re.findall(r"[^.!?\n]+[.!?]*", text):
+        m = CORRECTION.fullmatch(sentence)
+        if m is None or not _agent_kinds(m.group(1).split()) or not _agent_kinds(m.group(2).split()):
+            continue
+        at = text.find(sentence)
+        before = list(re.finditer(rf"\b{re.escape(m.group(1))}\b", text[:at]))
+        if before:
+            said = before[-1]
+            text = text[:said.start()] + m.group(2) + text[said.end():at] + text[at + len(sentence):]
+    return text
+
+
 def _without_story_frame(text: str) -> str:
     """A user story's frame says who asks and why, not what happens: 'As a safety engineer I want a scene
     where ... so that we can check the braking' is the scene between the two ('a scene where ...')."""
@@ -1109,6 +1129,7 @@ def tokenize(text: str) -> list[Token]:
                   r"(?!\s+(?:it|this|that|them|these|those)\b))", " ", text)
     # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
+    text = _as_corrected(text)
     text = re.sub(r"\b(?:one|two|three|some) of (?:them|those|these)[ ,]+(?:no|wait|sorry|i mean|no wait|actually)"
                   r"[ ,]+((?:both|all|two|three|four) of (?:them|those|these))\b", r"\1", text)
     # "one of them no both of them start walking": speech corrects itself, the last word stands

@@ -2564,6 +2564,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 current[-2].category == "actions" and _signal_change(current, len(current) - 2):
             close()  # "once it turns green we turn left": the condition ends at its colour
     close()
+    told = min((c.stage for c in out if _has_agent(c.units) or any(
+        u.category == "actions" and u.meaning not in ("try", "relate", "reach") for u in c.units)), default=0)
+    for c in out:  # "S5 was suggested ... after a near miss she observed. The ego vehicle travels ...": a later
+        c.stage = max(0, c.stage - told)  # stage opened before anyone of the scene is named opens nothing
     return out
 
 
@@ -3725,7 +3729,7 @@ def _said_in_general(r: _Reader, e: Entity) -> bool:
     if idle and (e.type not in V.VULNERABLE_TYPES or not any(u.category == "actions" for u in r.units
                                                              if u.tokens[0].sentence == sentence)):
         return True  # ("throwing snowballs at cars": vehicles said with no count, doing nothing, are no agents)
-    return any(f is not e and not f.is_ego and f.type == e.type and f.count == 1 and not f.uncounted and
+    return any(f is not e and not f.is_ego and f.type == e.type and f.count >= 1 and not f.uncounted and
                f.parent is not e and f.said_at >= 0 and (r.tokens[f.said_at].sentence > sentence or idle)
                for f in r.entities)
 
