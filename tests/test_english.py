@@ -8328,3 +8328,34 @@ def test_road_users_in_a_heading_are_the_ones_counted_after():
     said = agents("SignalizedJunctionLeftTurn with pedestrians. The ego vehicle turns left at a signalized "
                   "intersection where two pedestrians are crossing on a ladder crosswalk.")
     assert [a for a in said if a[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "near_the_crosswalk")] * 2
+
+
+def test_a_red_light_runner_in_a_heading_is_the_case_not_a_pedestrian():
+    said = agents("Assignment 5: red-light runner. The ego goes straight through a signalised crossroads on a green "
+                  "light. A motorcycle from the road on the left runs its red light at high speed.")
+    assert [a for a in said if a[0] == "pedestrian"] == []
+
+
+def test_road_users_asked_to_be_left_out_are_none():
+    said = agents("The ego vehicle turns left at an intersection while two oncoming cars go straight through. This "
+                  "is for our planner, so please leave pedestrians out.")
+    assert [a for a in said if a[0] == "pedestrian"] == []
+
+
+@pytest.mark.parametrize("denial", ["The person visible in the driver's seat is our safety operator, not an actor.",
+                                    "A man stands on the pavement, but he is not part of the scene."])
+def test_one_said_to_be_no_part_of_the_scene_is_no_agent(denial):
+    assert agents(f"The ego drives on. {denial}") == [("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("aside", ["The ambulance crew is not modelled.", "The bus's driver is not modelled.",
+                                   "Note that the ambulance is not to be modelled as stopping."])
+def test_what_is_not_modelled_of_an_agent_leaves_the_agent(aside):
+    assert ("ambulance" if "ambulance" in aside else "bus") in [
+        a[0] for a in agents(f"The ego drives on. An ambulance approaches from behind. A bus is stopped ahead. {aside}")]
+
+
+def test_the_scene_proposed_is_told_from_the_vehicle_proposed():
+    assert agents("We propose to test a car travelling along Mill Road as two cyclists cross in front of it from "
+                  "the right.") == [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front_right"),
+                                    ("cyclist", "cross_the_road", "front_right")]

@@ -1130,6 +1130,8 @@ def tokenize(text: str) -> list[Token]:
     # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
     text = _as_corrected(text)
+    text = re.sub(r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)|\b(?:leave out|exclude|omit) (?:the |any |all )?"
+                  r"([a-z]+s)\b", lambda m: f"no {m.group(1) or m.group(2)}", text)  # "please leave pedestrians out"
     text = re.sub(r"\b(?:one|two|three|some) of (?:them|those|these)[ ,]+(?:no|wait|sorry|i mean|no wait|actually)"
                   r"[ ,]+((?:both|all|two|three|four) of (?:them|those|these))\b", r"\1", text)
     # "one of them no both of them start walking": speech corrects itself, the last word stands

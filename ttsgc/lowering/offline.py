@@ -3766,6 +3766,35 @@ def _names_the_case_in_a_heading(r: _Reader, e: Entity) -> bool:
         r.tokens[f.said_at].sentence > t.sentence for f in r.entities)
 
 
+NO_PART = {"part", "actor", "actors", "agent", "agents", "modelled", "modeled", "simulated", "included"}
+
+
+def _says_no_part(units: list[Unit], tokens: list[Token]) -> bool:
+    """'he is not part of the scene', 'our safety operator, not an actor', 'the person at the wheel is our safety
+    operator': who the clause is about is in no way in the scene."""
+    said_tokens = [t for u in units for t in u.tokens]
+    words = [t.word for t in said_tokens] + [tokens[said_tokens[-1].index + 1].word if said_tokens and
+                                             said_tokens[-1].index + 1 < len(tokens) else ""]
+    said = next((k for k, u in enumerate(units) if "not" in [t.word for t in u.tokens]), None)
+    before = units[:said] if said is not None else []
+    while before and before[-1].category == "word" and before[-1].word in COPULAS | AUXILIARIES | {"need", "needs"}:
+        before = before[:-1]  # "he is not", "its driver need not be": who the denial is said of comes right before
+    if before and not (before[-1].category == "agents" or before[-1].word in ("he", "she", "they", "it")):
+        before = []  # "the ambulance crew is not modelled", "the crew on board are ..., not separate actors"
+    denied = any(w == "not" and any(words[j] in NO_PART and words[j + 1:j + 2] != ["as"] for j in range(
+        k + 1, min(k + 4, len(words) - 1))) for k, w in enumerate(words)) and \
+        any(u.category == "agents" and u.meaning != "none" or u.word in ("he", "she", "they", "it") for u in before) \
+        and not any(u.category == "agents" and u.meaning == "none" or any(
+            t.possessive or t.word in ("its", "his", "her", "their") for t in u.tokens) for u in before)
+    # (not "the lorry's driver is not modelled", "the child's parents, who are not modelled": they are not)
+    copula = next((k for k, u in enumerate(units) if u.word in COPULAS and u.category == "word"), None)
+    named = copula + 1 if copula is not None else len(units)
+    named += named < len(units) and units[named].word in ("a", "an", "the", "our", "my", "their", "your")
+    nobody = named < len(units) and units[named].category == "agents" and units[named].meaning == "none" and any(
+        u.category == "agents" and u.meaning != "none" for u in units[:copula])
+    return denied or nobody
+
+
 HABIT = (("usually",), ("normally",), ("generally",), ("typically",), ("often",), ("a", "lot"), ("all", "the", "time"),
          ("every", "day"), ("every", "morning"), ("most", "days"), ("most", "mornings"), ("round", "here"),
          ("around", "here"), ("tend", "to"), ("tends", "to"))
@@ -4537,7 +4566,7 @@ GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclis
 
 
 SIDEWALK_WORDS = {"pavement", "sidewalk", "footway", "footpath", "kerb", "curb"}
-WANTING = {"want", "need", "like", "expect", "wish", "prefer"}  # "I want a car to cut in": the car cuts in
+WANTING = {"want", "need", "like", "expect", "wish", "prefer", "propose"}  # "I want a car to cut in": the car cuts in
 PERCEIVING = {"see", "saw", "seen", "observe", "notice", "watch", "spot", "witness", "hear", "heard", "noticed",
               "observed", "spotted", "watched", "witnessed"}
 RIDDEN = {"bike", "bicycle", "pushbike", "push bike", "pedal cycle", "motorbike", "motorcycle", "moped", "scooter"}
@@ -7772,6 +7801,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         before = len(r.entities)
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         subject = _read_clause(r, clause, previous, recent, pending)
+        if _says_no_part(clause.units, tokens):
+            for e in subject:  # "the person in the driver's seat is our safety operator, not an actor"
+                e.features.add("no_part") if not e.is_ego else None
         if subject and not clause.condition:
             outside_condition = subject
         if clause.condition and clause.stage > 0 and _gone_by(clause.units):
@@ -8812,6 +8844,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.count > 0 and not e.is_ego and e.parent is None and not e.label and _said_of_a_habit(r, e):
             e.count = 0  # "Cyclists use this road a lot", "There's usually a lollipop lady there": what is usual
             r.notes.append(f"left out: '{e.head}' is said of what usually happens there, not of this scene")
+        if e.count > 0 and "no_part" in e.features:
+            e.count = 0
+            r.notes.append(f"left out: '{e.head}' is said to be no part of the scene")
         if e.count > 0 and _came_after_the_crash(r, e):
             e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
             r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
