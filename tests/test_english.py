@@ -8359,3 +8359,33 @@ def test_the_scene_proposed_is_told_from_the_vehicle_proposed():
     assert agents("We propose to test a car travelling along Mill Road as two cyclists cross in front of it from "
                   "the right.") == [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front_right"),
                                     ("cyclist", "cross_the_road", "front_right")]
+
+
+def test_a_scene_asked_for_in_a_titles_question_is_the_one_told_after():
+    said = agents("CARLA: make an NPC cut in and stop dead in front of the ego? Scene is a three-lane arterial. The "
+                  "ego goes straight in the middle lane, and a black sedan just ahead of it in the left lane swerves "
+                  "into its lane and stops, blocking it.")
+    assert said == [("car", "block_the_ego", "front_left"), ("car", "go_straight", "ego")]
+
+
+def test_a_release_number_ends_no_sentence_and_quoted_code_is_no_scene():
+    said = agents("How do I get a fire engine to turn left across the ego's path (CARLA 0.9.14)? The ego drives "
+                  "straight and a fire engine comes from the road on the right and turns left in front of it. I "
+                  "set `ignore_stop_signs=False` and `vehicle.apply_control()` on the RoadRunner map.")
+    assert said == [("car", "go_straight", "ego"), ("firetruck", "turn_left", "road_of_right_turn")]
+    quoted = road("The ego drives straight. I set `ignore_stop_signs=False` on it.")
+    assert quoted.required_signals == () and quoted.required_objects == ()
+
+
+@pytest.mark.parametrize("prompt", [
+    "# Fire engine runs the red. Ego is stopped at a red light; a fire engine from\n# the opposite direction turns "
+    "left across ego's path.",
+    '"""Fire engine runs the red.\n\nEgo is stopped at a red light; a fire engine from\nthe opposite direction turns '
+    'left across ego\'s path.\n"""'])
+def test_a_scene_in_a_code_comment_is_read_across_its_wrapped_lines(prompt):
+    assert agents(prompt) == [("car", "stop", "ego"), ("firetruck", "turn_left", "road_of_straight")]
+
+
+def test_the_egos_place_in_a_line_counts_it_among_the_line():
+    assert agents("Ego is stopped, third in a line of three cars at a four-way stop.") == [
+        ("car", "stop", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]

@@ -926,6 +926,8 @@ def _agent_phrase(words: list[str] | tuple[str, ...]) -> tuple[str, ...] | None:
     lex = lexicon()
     for n in (2, 1):
         tail = tuple(words[-n:])
+        if len(tail) == n and lex.phrases.get(tail, ("", ""))[0] == "agents" and lex.phrases[tail][1] == "none":
+            return None  # "RoadRunner": a tool's name, no runner
         if len(tail) == n and lex.phrases.get(tail, ("", ""))[0] == "agents" and \
                 lex.phrases[tail][1] not in ("none", "ego"):
             return tail
@@ -1082,10 +1084,30 @@ LONGEST_SENTENCE = 100  # tokens; the corpus's longest sentence has 71. A run-on
 COMPASS_BOUND = {"n": "northbound", "s": "southbound", "e": "eastbound", "w": "westbound"}
 
 
+COMMENT_MARK = re.compile(r"^[ \t]*(?:#+|//+)(?=[ \t]|$)[ \t]?")  # not "* ", "- ": a list's bullets
+
+
+def _comment_block(text: str) -> str:
+    """A scene told in a code comment ('# Ego is stopped at a red light; a fire engine from\n# the opposite
+    direction turns left'), or in a docstring's quotes: the comment marks taken off and its wrapped lines
+    joined, a blank comment line still parting paragraphs."""
+    unquoted = re.sub(r'^\s*(?:"""|\'\'\')|(?:"""|\'\'\')\s*$', "", text.strip())
+    lines = [line for line in unquoted.splitlines() if line.strip()]
+    if len(lines) < 2 or not (unquoted != text.strip() or all(COMMENT_MARK.match(line) for line in lines)):
+        return text
+    text = unquoted
+    out = [COMMENT_MARK.sub("", line).strip() if COMMENT_MARK.match(line) else line.strip() for line in text.splitlines()]
+    return "\n\n".join(" ".join(p.split("\n")) for p in "\n".join(out).split("\n\n")).strip()
+
+
+CODE_SPAN = re.compile(r"`[^`\n]*[().=<>/\[\]{}][^`\n]*`")  # "`vehicle.apply_control()`": code quoted, no scene
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
+    text = CODE_SPAN.sub(" ", _comment_block(text))
     text = _without_members_described(
         _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(text))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
@@ -1130,6 +1152,8 @@ def tokenize(text: str) -> list[Token]:
     # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
     text = _as_corrected(text)
+    text = re.sub(r"\bv?\d+(?:\.\d+){2,}\b", " ", text)  # "CARLA 0.9.14": a release, no sentence ends in it
+    text = re.sub(r"(?<![\w.])\.(xodr|xosc|xml|tsg|py|json|yaml|yml|csv|net\.xml)\b", r"\1", text)  # "the .xodr"
     text = re.sub(r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)|\b(?:leave out|exclude|omit) (?:the |any |all )?"
                   r"([a-z]+s)\b", lambda m: f"no {m.group(1) or m.group(2)}", text)  # "please leave pedestrians out"
     text = re.sub(r"\b(?:one|two|three|some) of (?:them|those|these)[ ,]+(?:no|wait|sorry|i mean|no wait|actually)"

@@ -3078,10 +3078,14 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
         return True  # "How are you meant to merge when trucks do this?": trucks in general
     if not t.question:
         return False
-    if first.word not in QUESTION_WORDS:
-        return False
-    later = {x.base for x in tokens if x.sentence > t.sentence}
-    return bool(later & _agent_nouns())
+    if first.word not in QUESTION_WORDS and not (t.sentence == 1 and first.opened_by == ":" and first.word in (
+            "make", "get", "have", "spawn", "create", "simulate", "force", "trigger")):
+        return False  # ("CARLA: make an NPC cut in and stop in front of the ego? Scene is ...": the title's question)
+    later = [x.base for x in tokens if x.sentence > t.sentence]
+    phrases = lexicon().phrases
+    return bool(set(later) & _agent_nouns()) or any(
+        phrases.get(pair, ("", ""))[0] == "agents" and phrases[pair][1] not in ("none", "ego")
+        for pair in zip(later, later[1:]))  # ("... a fire engine comes from the right")
 
 
 INSTITUTIONS = {"police", "fire brigade", "fire service", "fire and rescue", "ambulance service", "paramedics"}
@@ -4526,16 +4530,19 @@ def _counts_the_crash(units: list[Unit], head: int) -> bool:
 
 
 def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None) -> bool:
-    if _ego_placed_among(units, head) or _counts_the_crash(units, head):
+    at = bisect_left(whole, units[head].start, key=_unit_start) if whole is not None else None
+    if at is not None and (at >= len(whole) or whole[at] is not units[head]):
+        at = None
+    if _ego_placed_among(units, head) or at is not None and _ego_placed_among(whole, at) or \
+            _counts_the_crash(units, head):  # ("Ego is stopped, third in a line of three cars": past the comma)
         return True
     window = [u for u in units[head + 1: head + 5] if u.category != "comma"]
     if (bool(window) and window[0].category == "word" and window[0].word in ("including", "incl", "counting",
                                                                              "inc", "with")
             and any(u.category == "agents" and u.meaning == "ego" for u in window[1:3])):
         return True
-    at = bisect_left(whole, units[head].start, key=_unit_start) if whole is not None else None
-    if at is not None and at < len(whole) and whole[at] is units[head]:  # read on past the clause: "three cars
-        units, head = whole, at  # wait, including yours"
+    if at is not None:  # read on past the clause: "three cars wait, including yours"
+        units, head = whole, at
     for k in range(head + 1, min(len(units) - 1, head + 9)):  # "three cars at a crossroads, including yours"
         if units[k].category == "agents" and units[k].meaning == "ego" and units[k + 1].word == "included" and \
                 units[k - 1].category == "comma":
@@ -4552,6 +4559,11 @@ def _including_ego(units: list[Unit], head: int, whole: list[Unit] | None = None
 def _ego_placed_among(units: list[Unit], head: int) -> bool:
     """'we were the second of three cars', 'I was the last of four cars in the queue': the ego is one of them."""
     of = next((k for k in range(head - 1, max(0, head - 4), -1) if units[k].word == "of"), None)
+    line = next((j for j in range(of - 1, max(0, of - 4) - 1, -1) if units[j].tokens[0].word == "in"), None) \
+        if of is not None else None
+    if line is not None and [t.word for u in units[line:of] for t in u.tokens] in (
+            ["in", a, noun] for a in ("a", "the") for noun in ("line", "queue", "row", "convoy", "column")):
+        of = line  # "third in a line of three cars": the ego's place in it
     if of is None or of < 2 or units[of - 1].word not in PLACES_IN_A_GROUP:
         return False
     return any(u.category == "agents" and u.meaning == "ego" for u in units[max(0, of - 5):of - 1])
@@ -4737,7 +4749,7 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
 def _places_named(e: Entity, sentence: int) -> set[str]:
     """The place a heading's noun says by itself: a lead vehicle is ahead; 'Vehicle(s) not making a maneuver,
     opposite direction.' names where the case's vehicle comes from, said again where the text names it."""
-    if e.head == "vehicle" and sentence > 0:
+    if e.head.split()[-1] == "vehicle" and sentence > 0:  # ("Emergency vehicle approaching from behind.")
         return HEADLINE_PLACES
     return {"ahead"} if e.head.split()[0] in ("lead", "leading") else set()
 
