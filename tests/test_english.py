@@ -8389,3 +8389,34 @@ def test_a_scene_in_a_code_comment_is_read_across_its_wrapped_lines(prompt):
 def test_the_egos_place_in_a_line_counts_it_among_the_line():
     assert agents("Ego is stopped, third in a line of three cars at a four-way stop.") == [
         ("car", "stop", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]
+
+
+def test_a_headings_road_user_told_by_its_participle_is_the_one_told_after():
+    assert agents('"""Cyclist crossing from the right at an uncontrolled junction.\n\nEgo goes straight; a cyclist '
+                  'comes out of the road on the right and crosses\nin front of ego.\n"""') == [
+        ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "road_of_right_turn")]
+
+
+def test_people_crossing_short_of_the_zebra_crossing_are_not_on_it():
+    said = agents("A group of pedestrians crosses the road from the left about 50 m before the zebra crossing; ego "
+                  "goes straight.")
+    assert [a[2] for a in said if a[0] == "pedestrian"] == ["front_left", "front_left"]
+
+
+def test_it_after_actor_n_is_a_kind_is_the_one_before():
+    assert ("truck", "go_straight", "road_of_straight") in agents(
+        "The ego turns left at a crossroads. Actor 1 is a motorcycle coming from the opposite direction, and Actor 2 "
+        "is a box truck right behind it.")
+
+
+def test_an_annotators_instruction_names_no_agent():
+    assert agents("Clip shows the ego going straight. A fire engine comes out of the road on the right and turns "
+                  "left. Give Actor 2 the emergency attribute. Don't use the emergency-vehicle tag for the car.") == [
+        ("car", "go_straight", "ego"), ("firetruck", "turn_left", "road_of_right_turn")]
+
+
+def test_heading_away_from_the_junction_is_a_way_not_a_road_without_junction():
+    prompt = ("The ego turns left at a junction with traffic lights. A cyclist is riding along the street the ego "
+              "turns into, heading away from the junction.")
+    assert road(prompt).junction is True
+    assert ("cyclist", "go_straight", "at_the_destination") in agents(prompt)

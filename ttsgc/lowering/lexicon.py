@@ -857,7 +857,7 @@ def _described_in_brackets(text: str) -> str:
         if len(words) >= 2 and words[-1] in ("me", "us", "you", "ego") and words[-2] in PLACED_BY:
             words = words[:-2]  # "the car behind me (...)": the bracket is the car's
         before = _agent_kinds(words)
-        if re.fullmatch(r"\s*[a-z]{1,4}[ _-]?\d{1,2}\s*", m.group(1)):
+        if re.fullmatch(r"\s*(?:[a-z]{1,4}|actor|agent|target|object|participant|unit|npc)[ _-]?\d{1,2}\s*", m.group(1)):
             return m.group(0)  # "a white SUV (TV1)": the name it goes by after
         inside = re.findall(r"[a-z]+", m.group(1))
         kinds = [k for k in _agent_kinds(inside) if k not in ("pedestrian", "none")]  # the driver may be named
@@ -1153,6 +1153,9 @@ def tokenize(text: str) -> list[Token]:
     text = _without_story_frame(text)
     text = _as_corrected(text)
     text = re.sub(r"\bv?\d+(?:\.\d+){2,}\b", " ", text)  # "CARLA 0.9.14": a release, no sentence ends in it
+    text = re.sub(r"(?:^|(?<=[.!?]\s))(?:please )?(?:label|tag|annotate|flag|mark|give) (?:actor|agent|object|track|"
+                  r"this clip|the clip)\b[^.!?\n]*[.!?]?", " ", text)  # "Give Actor 2 the emergency
+    # attribute.", "Label Actor 2 as a cut-in": what the annotator writes, no scene
     text = re.sub(r"(?<![\w.])\.(xodr|xosc|xml|tsg|py|json|yaml|yml|csv|net\.xml)\b", r"\1", text)  # "the .xodr"
     text = re.sub(r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)|\b(?:leave out|exclude|omit) (?:the |any |all )?"
                   r"([a-z]+s)\b", lambda m: f"no {m.group(1) or m.group(2)}", text)  # "please leave pedestrians out"

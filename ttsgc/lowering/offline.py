@@ -1808,7 +1808,11 @@ def _denied(units: list[Unit], k: int) -> bool:
     """'no junction', 'not at a junction', 'without any junctions', 'away from junctions', 'intersection none'."""
     if _none_after(units, k):
         return True
-    for u in reversed(units[max(0, k - 3):k]):
+    for j in range(k - 1, max(0, k - 3) - 1, -1):
+        u = units[j]
+        if u.category == "word" and u.word == "away" and j > 0 and (units[j - 1].category == "actions" or
+                                                                  units[j - 1].word.endswith("ing")):
+            return False  # "a cyclist riding along the street, heading away from the junction": its way
         if u.category == "word" and (u.word in NEGATIONS or u.word == "away") or \
                 u.category == "numbers" and u.meaning == "0":
             return True
@@ -4737,13 +4741,22 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
              e.said_at < heading_end and
              e.parent is None and e.stage == entity.stage and (
                  e.implied and entity.type not in V.VULNERABLE_TYPES  # "Cut-in from left. Sedan in left lane ..."
-                 or listed and (coded or not e.features & HEADLINE_PLACES - _places_named(e, said.sentence)) and (
+                 or listed and (coded or _a_case_told(r, e) or
+                                not e.features & HEADLINE_PLACES - _places_named(e, said.sentence)) and (
                      e.type == entity.type or entity.type in categories().get(e.head, frozenset()) or
                      e.head.split()[-1] == "vehicle" and entity.type not in V.VULNERABLE_TYPES))]
     if len(named) != 1 or said.sentence == 0 and named[0].said_at + 1 == heading_end and \
             r.tokens[heading_end + 1].word in ("a", "an"):
         return None  # "CV, a Jeep Wrangler, followed IV": the noun and what it is, no heading
     return named[0]
+
+
+def _a_case_told(r: _Reader, e: Entity) -> bool:
+    """'Cyclist crossing from the right at an uncontrolled junction.' over the text: a heading noun and the
+    participle that tells its case, wherever that places it."""
+    after = r.tokens[e.said_at + 1] if 0 <= e.said_at < len(r.tokens) - 1 else None
+    return after is not None and after.sentence == 0 and r.tokens[e.said_at].sentence == 0 and \
+        after.word.endswith("ing") and e.said_at <= 2
 
 
 def _places_named(e: Entity, sentence: int) -> set[str]:
@@ -7158,8 +7171,12 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
             not any(np.index < i and np.entity is not None and not np.entity.is_ego and np.entity is not subject
                     for np in phrases):
         return previous_subject[0]  # "the ego is tailgated by a truck, and the car in front of it stops"
+    named_as = [np.entity for np in phrases if np.index < i and np.entity is not None and np.entity is not subject
+                and np.index + 2 < len(units) and units[np.index + 1].word in COPULAS and units[np.index + 1].category
+                == "word" and units[np.index + 2].word in ("a", "an")]  # "Actor 2 is a box truck right behind it":
+    # the truck is Actor 2, 'it' another
     for e in reversed(recent + owner[:-1]):
-        if e is not subject:
+        if e is not subject and not any(e is x for x in named_as):
             return e
     return None
 
