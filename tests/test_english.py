@@ -8420,3 +8420,37 @@ def test_heading_away_from_the_junction_is_a_way_not_a_road_without_junction():
               "turns into, heading away from the junction.")
     assert road(prompt).junction is True
     assert ("cyclist", "go_straight", "at_the_destination") in agents(prompt)
+
+
+def test_a_place_said_aside_ends_before_the_next_one_named():
+    assert agents("The ego car drives straight along a three-lane road. A bus travels in the lane to its left, level "
+                  "with it, and a hatchback follows the ego in the same lane.") == [
+        ("bus", "go_straight", "left"), ("car", "go_straight", "back"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("whose", ["the", "your"])
+def test_each_of_two_coordinated_road_users_keeps_its_own_side(whose):
+    said = agents(f"I am turning right out of a T-junction. Two cars are coming from {whose} left and a motorcycle "
+                  f"from {whose} right.")
+    assert ("motorcycle", "go_straight", "road_of_right_turn") in said
+    assert said.count(("car", "go_straight", "road_of_left_turn")) == 2
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego was going straight through on a green when an ambulance came across from the road on our left.",
+     ("ambulance", "go_straight", "road_of_left_turn")),
+    ("At the roundabout, ego stopped at the entry to yield to a car already circulating, coming from our left.",
+     ("car", "go_straight", "road_of_left_turn"))])
+def test_coming_across_or_along_from_our_side(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_what_a_road_user_was_taken_for_and_the_only_actor_are_no_agents():
+    assert agents("Ego turning left at a signalised intersection. A jogger was crossing the side street we were "
+                  "turning onto. Perception classified the jogger as a cyclist. Please repro with the jogger as the "
+                  "only actor.") == [("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination")]
+
+
+def test_mine_as_the_verb_of_a_request_is_no_speaker():
+    assert "mine" not in [t.word for t in tokenize("Please mine highway cut-ins from the right.")]
+    assert "mine" in [t.word for t in tokenize("The car beside mine cuts in.")]

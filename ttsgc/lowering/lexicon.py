@@ -1152,6 +1152,11 @@ def tokenize(text: str) -> list[Token]:
     # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
     text = _as_corrected(text)
+    text = re.sub(r"\b((?:mis)?classif(?:y|ies|ied|ying)|mislabel(?:l?ed|s)?|detect(?:s|ed)?|track(?:s|ed)|identif(?:y|ies|ied)|"
+                  r"mistook|mistak(?:es|en))\b([^.;!?]{0,60}?) (?:as|for) an? [a-z]+\b", r"\1\2",
+                  text)  # "perception classified the jogger as a cyclist": what it was taken for is no one
+    text = re.sub(r"(?:^|(?<=[.!?:]\s)|(?<=\bplease\s)|(?<=\bto\s))mine\b(?= (?:the |our |all |some |more )?[a-z-]+s\b)",
+                  "collect", text)  # "Please mine highway cut-ins": the verb, not the speaker's
     text = re.sub(r"\bv?\d+(?:\.\d+){2,}\b", " ", text)  # "CARLA 0.9.14": a release, no sentence ends in it
     text = re.sub(r"(?:^|(?<=[.!?]\s))(?:please )?(?:label|tag|annotate|flag|mark|give) (?:actor|agent|object|track|"
                   r"this clip|the clip)\b[^.!?\n]*[.!?]?", " ", text)  # "Give Actor 2 the emergency

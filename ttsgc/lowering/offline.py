@@ -2526,7 +2526,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if _a_list_sharing_a_plural_verb(current, units, k):
                 current.append(u)  # "two cars, a motorbike are coming": one subject, listed with a comma
                 continue
-            if (_has_verb(current) or condition or new_noun or joined or order or relative_ends or the_one) \
+            placed_aside = any(x.category == "positions" for x in current) and nxt is not None and \
+                nxt.word == "and" and k + 3 < len(units) and units[k + 2].word in ("a", "an") and \
+                units[k + 3].category == "agents"  # "..., level with it, and a hatchback follows"
+            if (_has_verb(current) or condition or new_noun or joined or order or relative_ends or the_one or
+                    placed_aside) \
                     and not short_name \
                     and not ego_named \
                     and not bracketed and not ego_make and not _closed_apposition(current, units, k) \
@@ -7267,7 +7271,9 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
             copula = any(u.category == "word" and u.word in ("is", "are", "was", "were", "be")
                          for u in units[last.index + 1:i])
             if last.entity in subject and copula:
-                return subject  # "both the truck and the pedestrian are in the front right"
+                said = [e for e in subject if any(p.entity is e or any(e is g for g in p.group) for p in before)]
+                return said or subject  # "both the truck and the pedestrian are in the front right" (not "two cars
+                # are coming from the left and a motorcycle from the right": the motorcycle's is its own)
             placed_by = last.first - 1 - (last.first > 1 and units[last.first - 1].word == "of")
             if last.entity.is_ego and subject and last.entity not in subject and placed_by >= 0 and \
                     units[placed_by].category == "positions":
