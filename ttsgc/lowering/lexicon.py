@@ -1155,7 +1155,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b((?:mis)?classif(?:y|ies|ied|ying)|mislabel(?:l?ed|s)?|detect(?:s|ed)?|track(?:s|ed)|identif(?:y|ies|ied)|"
                   r"mistook|mistak(?:es|en))\b([^.;!?]{0,60}?) (?:as|for) an? [a-z]+\b", r"\1\2",
                   text)  # "perception classified the jogger as a cyclist": what it was taken for is no one
-    text = re.sub(r"(?:^|(?<=[.!?:]\s)|(?<=\bplease\s)|(?<=\bto\s))mine\b(?= (?:the |our |all |some |more )?[a-z-]+s\b)",
+    text = re.sub(r"(?:^|(?<=[.!?:]\s)|(?<=\bplease\s)|(?<=\bto\s))mine\b(?= (?:[a-z-]+ ){0,2}[a-z-]+s\b)",
                   "collect", text)  # "Please mine highway cut-ins": the verb, not the speaker's
     text = re.sub(r"\bv?\d+(?:\.\d+){2,}\b", " ", text)  # "CARLA 0.9.14": a release, no sentence ends in it
     text = re.sub(r"(?:^|(?<=[.!?]\s))(?:please )?(?:label|tag|annotate|flag|mark|give) (?:actor|agent|object|track|"
