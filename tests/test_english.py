@@ -8454,3 +8454,16 @@ def test_what_a_road_user_was_taken_for_and_the_only_actor_are_no_agents():
 def test_mine_as_the_verb_of_a_request_is_no_speaker():
     assert "mine" not in [t.word for t in tokenize("Please mine highway cut-ins from the right.")]
     assert "mine" in [t.word for t in tokenize("The car beside mine cuts in.")]
+
+
+def test_a_patrol_car_on_the_shoulder_and_the_vehicle_it_pulled_over():
+    assert agents("You're in the right lane of an interstate and there's a patrol car stopped on the shoulder ahead, "
+                  "lights flashing, parked behind a pickup it has pulled over. You change into the left lane.") == [
+        ("car", "change_lane_to_left", "ego"), ("car", "stop", "front_right"), ("police", "stop", "front_right")]
+
+
+def test_a_snowplough_is_a_truck_and_sitting_in_the_middle_lane_is_driving():
+    assert agents("You're driving slowly behind a snowplough.") == [("car", "go_straight", "ego"),
+                                                                    ("truck", "go_straight", "front")]
+    assert agents("You're on a motorway, sitting in the middle lane, with a van close behind you.") == [
+        ("car", "go_straight", "back"), ("car", "go_straight", "ego")]

@@ -1152,6 +1152,9 @@ def tokenize(text: str) -> list[Token]:
     # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
     text = _as_corrected(text)
+    text = re.sub(r"\b(an? [a-z]+(?: [a-z]+)?) (?:that |which )?(?:it|he|she|they|the officer|the police) (?:has |had |have )?"
+                  r"(?:just )?pulled over\b", r"\1 that has been pulled over", text)  # "parked behind a pickup it
+    # has pulled over": the pickup stands, pulled over; the patrol car made no lane change
     text = re.sub(r"\b((?:mis)?classif(?:y|ies|ied|ying)|mislabel(?:l?ed|s)?|detect(?:s|ed)?|track(?:s|ed)|identif(?:y|ies|ied)|"
                   r"mistook|mistak(?:es|en))\b([^.;!?]{0,60}?) (?:as|for) an? [a-z]+\b", r"\1\2",
                   text)  # "perception classified the jogger as a cyclist": what it was taken for is no one

@@ -9008,6 +9008,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         t = e.relative_to
         if t is None or t.key not in positions:
             continue
+        if e.road_type == "shoulder" and t.road_type is None and not _placed(t) and \
+                t.type not in V.VULNERABLE_TYPES and resolved[t.key][0] in ("stop", None):
+            positions[t.key] = positions[e.key]  # "a patrol car stopped on the shoulder ahead, parked behind a
+            t.road_type = "shoulder"  # pickup it has pulled over": the pickup stands on the shoulder too
+            continue
         if not _placed(e):
             positions[e.key] = positions[t.key]
             if t.road_type == "shoulder" and e.road_type is None and e.type not in V.VULNERABLE_TYPES and \
