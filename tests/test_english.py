@@ -8467,3 +8467,21 @@ def test_a_snowplough_is_a_truck_and_sitting_in_the_middle_lane_is_driving():
                                                                     ("truck", "go_straight", "front")]
     assert agents("You're on a motorway, sitting in the middle lane, with a van close behind you.") == [
         ("car", "go_straight", "back"), ("car", "go_straight", "ego")]
+
+
+def test_passengers_waiting_at_the_stop_are_people_and_a_lane_change_planner_changes_no_lane():
+    said = agents("A bus is stopped ahead of the host vehicle in its lane, and three waiting passengers stand on the "
+                  "pavement on the host vehicle's right. S17 evaluates the lane-change planner.")
+    assert said.count(("pedestrian", "on_the_sidewalk", "right")) == 3 and ("car", "go_straight", "ego") in said
+
+
+def test_the_rightmost_lane_is_the_right_lane():
+    assert ("car", "go_straight", "back_left") in agents(
+        "The ego vehicle starts in the rightmost lane of a three-lane highway, while a sports car approaches from "
+        "behind in the middle lane.")
+
+
+def test_level_with_the_ego_then_into_its_lane_just_ahead_is_level():
+    assert ("car", "block_the_ego", "left") in agents(
+        "Ego drives in the right lane of a two-lane road. A sedan in the left lane, level with Ego, swerves into "
+        "Ego's lane just ahead and stops dead, blocking Ego.")

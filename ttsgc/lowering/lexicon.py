@@ -1152,6 +1152,13 @@ def tokenize(text: str) -> list[Token]:
     # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
     text = _as_corrected(text)
+    text = re.sub(r"\blane[- ]chang(?:e|ing) (planner|controller|module|logic|algorithm|policy|stack|behaviou?r|decision|"
+                  r"decisions|capability|performance|model)\b", r"\1",
+                  text)  # "evaluates the lane-change planner": what is tested, no lane change
+    text = re.sub(r"\b(waiting|queuing|queueing) passengers\b|\bpassengers(?= (?:are |were )?(?:standing|waiting|"
+                  r"queuing|queueing|stand|wait|queue) (?:on|at) the (?:pavement|sidewalk|kerb|curb|footway|stop|bus stop)"
+                  r"\b)", lambda m: f"{m.group(1) or ''} people".strip(),
+                  text)  # "three waiting passengers stand on the pavement": people at the stop, not on board
     text = re.sub(r"\b(an? [a-z]+(?: [a-z]+)?) (?:that |which )?(?:it|he|she|they|the officer|the police) (?:has |had |have )?"
                   r"(?:just )?pulled over\b", r"\1 that has been pulled over", text)  # "parked behind a pickup it
     # has pulled over": the pickup stands, pulled over; the patrol car made no lane change

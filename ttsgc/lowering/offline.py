@@ -7574,6 +7574,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
     if "target_lane" in f and target_side and not _side(e):
         f.add(f"side_{target_side}")
+    if {"level", "ahead", "into_ego_lane"} <= f:
+        f.discard("ahead")  # "in the left lane, level with Ego, swerves into Ego's lane just ahead": where it ends
     if crossing and e.type == "pedestrian" and has_crosswalk and "off_crosswalk" not in f:
         f.add("crosswalk")  # "Mrs. Feeney was in that crosswalk? ... She was crossing from my left": on the one
         # crosswalk the road has, said in another sentence
