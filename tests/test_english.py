@@ -8485,3 +8485,14 @@ def test_level_with_the_ego_then_into_its_lane_just_ahead_is_level():
     assert ("car", "block_the_ego", "left") in agents(
         "Ego drives in the right lane of a two-lane road. A sedan in the left lane, level with Ego, swerves into "
         "Ego's lane just ahead and stops dead, blocking Ego.")
+
+
+def test_a_lane_said_after_one_placed_alongside_another_is_its_own():
+    assert ("truck", "go_straight", "right") in agents(
+        "The ego crawls along behind a bus in the centre lane, with a truck alongside it in the right lane.")
+
+
+def test_people_who_tell_of_a_place_are_not_on_its_road():
+    said = agents("Several residents told us that turning right out of Quay Street feels unsafe. The scenario is a car "
+                  "turning right onto Harbour Road while a bus approaches from the left.")
+    assert not any(a[0] == "pedestrian" for a in said)

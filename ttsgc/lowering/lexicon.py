@@ -400,6 +400,8 @@ def _dashed_agent_key(line: str) -> re.Match | None:
 TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary", "sequence", "scene", "test",
               "description", "goal", "purpose", "report", "note", "story", "epic", "feature",
               "functional", "logical", "concrete"}  # "Functional scenario: Stationary obstacle in ego lane."
+CASE_WORDS = {"event", "scenario", "case", "exercise", "example", "test", "clip", "site", "problem", "question",
+              "assignment", "lab", "scene", "hazard", "item", "section", "task", "variant", "figure", "slide", "stop"}
 NUMBERED_KEY = re.compile(r"\s*([A-Z][a-z]+ \d{1,3}[a-z]?|[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*)\s*:\s+")
 CASE_NUMBER = re.compile(r"[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*")  # 'TC-052', 'HZ-014': a case's number keys its title
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
@@ -666,7 +668,7 @@ def _lines(text: str) -> str:
         # truck.": notes run on in one line, a key after each full stop
     if "\n" not in text.strip():
         numbered = NUMBERED_KEY.match(text)
-        if numbered and not _names_agent(numbered.group(1)) and not PHASE_KEY.fullmatch(numbered.group(1).lower()):
+        if numbered and numbered.group(1).split()[0].lower() in CASE_WORDS:
             text = text[numbered.end():]  # "Event 7: motorcycle at a junction. ...": which event, no scene word
         return _keyed_agents("\n".join(_without_outline_numbers([text])))
     out = []

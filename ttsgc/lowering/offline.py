@@ -3895,6 +3895,19 @@ def _a_load(r: _Reader, e: Entity) -> bool:
                                       for t in after[:at])  # (not "in the truck with a tractor on the back")
 
 
+TELLING = {"told", "tell", "tells", "said", "say", "says", "asked", "ask", "asks", "complained", "complain",
+           "complains", "wrote", "write", "writes", "reported", "report", "reports", "objected", "object", "objects"}
+
+
+def _tells(r: _Reader, e: Entity) -> bool:
+    """People whose own verb is one of telling ('residents told us that ...', 'parents have asked the council'):
+    they speak of the place; what they tell of is not theirs to do."""
+    after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 3] if t.sentence == r.tokens[e.said_at].sentence] \
+        if e.said_at >= 0 else []
+    return bool(after) and (after[0] in TELLING or after[0] in ("have", "has", "had") and after[1:2] and
+                            after[1] in TELLING)
+
+
 def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
     """A person whose sentence, after them and before any comma, goes on with a modal, a report or a past
     perfect ('someone should fix that junction', 'the workers at the depot say') and gives them nothing to do
@@ -7261,6 +7274,10 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
 
 def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) -> list[Entity]:
     before = [p for p in phrases if p.index < i and p.entity is not None]
+    while len(before) > 1 and not before[-1].introduced and units[before[-1].index].word in ("it", "him", "her", "them") \
+            and units[before[-1].index - 1].category == "positions" and before[-2].introduced and \
+            "lane" in {t.word for t in units[i].tokens}:
+        before.pop()  # "with a truck alongside it in the right lane": the truck's lane, not its
     last_verb = max([v for v in main_verbs if v < i] + [v for v in (participles or {}) if v < i], default=None)
     if last_verb is not None and participles and last_verb in participles:
         return participles[last_verb]  # "a van stopped beside it in the right lane": the van's
@@ -8890,6 +8907,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         elif e.count > 0 and _called_out(r, e):
             e.count = 0  # "EMS + PD dispatched 14:03": called to the scene, not in it
             r.notes.append(f"left out: '{e.head}' is only called out to the scene")
+        if e.type == "pedestrian" and e.count > 0 and not e.label and _tells(r, e):
+            e.count = 0  # "Several residents told us that turning right out of Quay Street feels unsafe"
+            r.notes.append(f"left out: '{e.head}' tell of the place, and are not on the road")
         if e.type == "pedestrian" and e.count > 0 and not e.actions and not e.features and not e.label and \
                 _said_to_do_no_road_thing(r, e):
             e.count = 0  # "someone should fix that junction", "the workers at the depot say": nobody on the road
