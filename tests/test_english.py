@@ -8462,10 +8462,10 @@ def test_a_patrol_car_on_the_shoulder_and_the_vehicle_it_pulled_over():
         ("car", "change_lane_to_left", "ego"), ("car", "stop", "front_right"), ("police", "stop", "front_right")]
 
 
-def test_a_snowplough_is_a_truck_and_sitting_in_the_middle_lane_is_driving():
+def test_a_snowplough_is_a_truck_and_sitting_in_the_fast_lane_is_driving():
     assert agents("You're driving slowly behind a snowplough.") == [("car", "go_straight", "ego"),
                                                                     ("truck", "go_straight", "front")]
-    assert agents("You're on a motorway, sitting in the middle lane, with a van close behind you.") == [
+    assert agents("You're on a motorway, sitting in the fast lane, with a van close behind you.") == [
         ("car", "go_straight", "back"), ("car", "go_straight", "ego")]
 
 

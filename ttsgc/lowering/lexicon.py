@@ -401,7 +401,7 @@ TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary",
               "description", "goal", "purpose", "report", "note", "story", "epic", "feature",
               "functional", "logical", "concrete"}  # "Functional scenario: Stationary obstacle in ego lane."
 CASE_WORDS = {"event", "scenario", "case", "exercise", "example", "test", "clip", "site", "problem", "question",
-              "assignment", "lab", "scene", "hazard", "item", "section", "task", "variant", "figure", "slide", "stop"}
+              "assignment", "lab", "scene", "hazard", "item", "section", "task", "variant", "figure", "slide"}
 NUMBERED_KEY = re.compile(r"\s*([A-Z][a-z]+ \d{1,3}[a-z]?|[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*)\s*:\s+")
 CASE_NUMBER = re.compile(r"[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*")  # 'TC-052', 'HZ-014': a case's number keys its title
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
