@@ -8496,3 +8496,16 @@ def test_people_who_tell_of_a_place_are_not_on_its_road():
     said = agents("Several residents told us that turning right out of Quay Street feels unsafe. The scenario is a car "
                   "turning right onto Harbour Road while a bus approaches from the left.")
     assert not any(a[0] == "pedestrian" for a in said)
+
+
+def test_a_title_cased_heading_after_an_example_number_is_a_title():
+    assert agents("Example 15: Right Turn With Oncoming Cyclist. The ego delivery van turns right at a signalised "
+                  "junction. A cyclist coming from the opposite direction rides straight through.") == [
+        ("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_straight")]
+
+
+def test_the_ego_named_in_brackets_is_named_again_by_its_noun():
+    said = agents("A motorcyclist (the subject vehicle) rides along Station Parade and comes up to a delivery van "
+                  "stopped in the lane ahead. The motorcyclist then stops behind the van.")
+    assert [a for a in said if a[0] == "motorcycle"] == [("motorcycle", a[1], "ego") for a in said
+                                                          if a[0] == "motorcycle"]

@@ -402,6 +402,8 @@ TITLE_KEYS = {"case", "name", "id", "scenario", "objective", "title", "summary",
               "functional", "logical", "concrete"}  # "Functional scenario: Stationary obstacle in ego lane."
 CASE_WORDS = {"event", "scenario", "case", "exercise", "example", "test", "clip", "site", "problem", "question",
               "assignment", "lab", "scene", "hazard", "item", "section", "task", "variant", "figure", "slide"}
+TITLE_CASED = re.compile(r"\s*((?:[A-Za-z][\w'-]*\s+){1,9}[A-Za-z][\w'-]*)[.!?]\s+\S")
+TITLE_SMALL_WORDS = {"a", "an", "the", "with", "of", "at", "in", "on", "and", "to", "for", "from", "by", "or", "vs"}
 NUMBERED_KEY = re.compile(r"\s*([A-Z][a-z]+ \d{1,3}[a-z]?|[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*)\s*:\s+")
 CASE_NUMBER = re.compile(r"[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*")  # 'TC-052', 'HZ-014': a case's number keys its title
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
@@ -670,6 +672,9 @@ def _lines(text: str) -> str:
         numbered = NUMBERED_KEY.match(text)
         if numbered and numbered.group(1).split()[0].lower() in CASE_WORDS:
             text = text[numbered.end():]  # "Event 7: motorcycle at a junction. ...": which event, no scene word
+            titled = TITLE_CASED.match(text)
+            if titled and all(w[0].isupper() or w.lower() in TITLE_SMALL_WORDS for w in titled.group(1).split()):
+                text = "\u00a7 " + text  # "Example 15: Right Turn With Oncoming Cyclist. The ego ...": its title
         return _keyed_agents("\n".join(_without_outline_numbers([text])))
     out = []
     lines = _tables(_without_answer_choices(_without_outline_numbers(text.strip().splitlines())))

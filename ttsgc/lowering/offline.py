@@ -6684,6 +6684,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
             if other.type in V.EGO_TYPES and other.type != "car":
                 ego.type = other.type  # "the ego, a city bus,", "Alex's delivery van -- the ego --"
+            ego.aliases.add(other.head)  # "a motorcyclist (the subject vehicle) ... The motorcyclist then stops"
             if other in r.entities:
                 r.entities.remove(other)
             if np.entity is ego:
