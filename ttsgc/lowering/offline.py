@@ -5577,7 +5577,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         r.passive = clause
     else:
         before = [np for np in phrases if np.index < first_verb and np.entity is not None
-                  and not _is_reference(units, np)]
+                  and not _is_reference(units, np) and not (np.first == 1 and units[0].word in LETTING and
+                                                             not np.entity.is_ego)]
+        # ("our vehicle slows, lets the bus pass, and then changes lanes": the bus is let; the vehicle goes on)
         seer = next((j for j in range(len(before) - 2, -1, -1) if before[j].entity is not None
                      and (before[j].entity.is_ego or before[j].entity.head in DRIVERS) and any(
                          u.tokens[0].base in PERCEIVING for u in units[before[j].index + 1:before[j + 1].first])),
