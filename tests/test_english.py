@@ -8509,3 +8509,22 @@ def test_the_ego_named_in_brackets_is_named_again_by_its_noun():
                   "stopped in the lane ahead. The motorcyclist then stops behind the van.")
     assert [a for a in said if a[0] == "motorcycle"] == [("motorcycle", a[1], "ego") for a in said
                                                           if a[0] == "motorcycle"]
+
+
+def test_a_triggering_conditions_road_users_are_the_ones_the_scene_names_again():
+    said = agents("Triggering condition: radar returns from a motorcycle lost in clutter. On a two-lane expressway the "
+                  "ego vehicle drives in the right lane. A motorcycle approaching fast from behind in the left lane "
+                  "cuts sharply into the ego's lane just in front of it.")
+    assert [a for a in said if a[0] == "motorcycle"] == [("motorcycle", "change_lane_to_right", "back_left")]
+
+
+def test_cannot_just_swerve_is_no_lane_change():
+    assert ("car", "go_straight", "ego") in agents(
+        "Ego drives straight on a two-lane road and a truck is stopped in our lane ahead. Put a car in the left lane "
+        "ahead of us too, so the ego can't just swerve round it.")
+
+
+def test_one_let_pass_is_not_the_subject_that_goes_on():
+    said = agents("Our vehicle approaches a police car stopped in our lane. A city bus is approaching from behind in "
+                  "the right lane. Our vehicle slows, lets the bus pass, and then changes lanes to the right.")
+    assert ("bus", "go_straight", "back_right") in said

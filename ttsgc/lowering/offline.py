@@ -3765,15 +3765,18 @@ def _names_the_case_in_a_heading(r: _Reader, e: Entity) -> bool:
         return False
     t = r.tokens[e.said_at]
     words = [x.word for x in r.tokens if x.sentence == t.sentence]
-    keyed = t.opened_by == ":" and t.sentence > 0 and any(
-        x.word in CASE_HEADINGS for x in r.tokens if x.sentence == t.sentence - 1)  # "Scenario class: pedestrian"
+    heading = {x.word for x in r.tokens if x.sentence == t.sentence - 1} if t.opened_by == ":" and t.sentence > 0 \
+        else set()
+    keyed = bool(heading & CASE_HEADINGS)  # "Scenario class: pedestrian"
+    triggered = {"triggering", "condition"} <= heading or {"trigger", "condition"} <= heading  # "Triggering condition:
+    # a motorcycle masked by a larger oncoming vehicle. ... a motorcycle follows close behind it": the case's kind
     before = r.tokens[e.said_at - 1].word if e.said_at > 0 and r.tokens[e.said_at - 1].sentence == t.sentence else ""
     after = [x.word for x in r.tokens[e.said_at + 1:e.said_at + 5] if x.sentence == t.sentence]
     named = before in ("", "of") and bool(set(words) & CASE_HEADINGS) or before in ("a", "an") and bool(
         set(after) & CASE_NOUNS)  # "Scenario of pedestrian rush-out", "a pedestrian-at-night case"
     named = named or t.sentence == 0 and before in ("a", "an") and e.said_at > 1 and \
         r.tokens[e.said_at - 2].word == "of" and len(words) <= 8  # "Abrupt stop of a taxi. ... A taxi ahead stops"
-    return (keyed and before == "" or named) and any(
+    return (keyed and before == "" or triggered and before in ("a", "an") or named) and any(
         f is not e and not f.is_ego and f.type == e.type and f.said_at >= 0 and
         r.tokens[f.said_at].sentence > t.sentence for f in r.entities)
 
@@ -3797,7 +3800,7 @@ def _says_no_part(units: list[Unit], tokens: list[Token]) -> bool:
         k + 1, min(k + 4, len(words) - 1))) for k, w in enumerate(words)) and \
         any(u.category == "agents" and u.meaning != "none" or u.word in ("he", "she", "they", "it") for u in before) \
         and not any(u.category == "agents" and u.meaning == "none" or any(
-            t.possessive or t.word in ("its", "his", "her", "their") for t in u.tokens) for u in before)
+            t.possessive or t.word == "its" for t in u.tokens) for u in before)
     # (not "the lorry's driver is not modelled", "the child's parents, who are not modelled": they are not)
     copula = next((k for k, u in enumerate(units) if u.word in COPULAS and u.category == "word"), None)
     named = copula + 1 if copula is not None else len(units)
@@ -6114,7 +6117,8 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
                                                      "so", "much", "once", "a", "all", "the", "way", "completely",
                                                      "fully", "full", "quite", "whatever", "for", "any", "of",
                                                      "anyone", "anybody", "make", "makes", "made", "take",
-                                                     "takes", "took", "perform", "performs", "performed")) \
+                                                     "takes", "took", "perform", "performs", "performed", "just",
+                                                     "simply", "easily", "safely", "then")) \
                 and u.category != "actions" and not (u.category == "agents" and u.meaning == "ego"):
             # ("nowhere whatever for any of us to pull over", "no room for me to move over")
             return False
