@@ -8528,3 +8528,32 @@ def test_one_let_pass_is_not_the_subject_that_goes_on():
     said = agents("Our vehicle approaches a police car stopped in our lane. A city bus is approaching from behind in "
                   "the right lane. Our vehicle slows, lets the bus pass, and then changes lanes to the right.")
     assert ("bus", "go_straight", "back_right") in said
+
+
+def test_the_road_users_counted_after_those_named_are_the_same():
+    said = agents("The ego enters a signalised intersection on a green light and turns left. Two oncoming cars "
+                  "proceed straight. A pedestrian is crossing at the crosswalk. The feature shall yield to all three "
+                  "road users before completing the turn.")
+    assert len(said) == 4
+
+
+def test_a_lane_change_said_not_to_be_required_is_not_made():
+    assert ("car", "go_straight", "ego") in agents(
+        "The subject vehicle cruises in the middle lane of a three-lane motorway. A car in the left lane cuts into "
+        "the SV's lane. The ACC shall restore a safe gap; a lane change by the SV is not required.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego goes straight on green, and an ambulance from the road on the left runs the red at speed. Please "
+    "build a red-runner case.",
+    "The host vehicle approaches on a green light. A fire engine crosses from the road on the right. Expected "
+    "HMI: an emergency-vehicle icon is shown to the driver."])
+def test_a_red_runner_case_and_an_emergency_vehicle_icon_are_no_agents(prompt):
+    said = agents(prompt)
+    assert not any(a[0] == "pedestrian" for a in said) and len(said) == 2
+
+
+def test_a_car_a_trooper_is_pulled_over_beside_stands_with_it():
+    assert ("car", "stop", "front_right") in agents(
+        "Dusk on a highway with two lanes each way, and a state trooper is stopped on the right shoulder behind a car "
+        "he's pulled over, lights flashing, so I move over to the left lane.")

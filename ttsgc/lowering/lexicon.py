@@ -1159,6 +1159,9 @@ def tokenize(text: str) -> list[Token]:
     # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
     text = _as_corrected(text)
+    text = re.sub(r"\b(?:an? |the |any )?(?:lane[- ]change|overtake|overtaking manoeuvre|overtaking maneuver|swerve|"
+                  r"evasive (?:manoeuvre|maneuver|lane change))\b[^.;!?]{0,30}? (?:is|was|are|were) not (?:required|"
+                  r"needed|necessary|expected|wanted)\b", " ", text)  # "a lane change by the SV is not required"
     text = re.sub(r"\blane[- ]chang(?:e|ing) (planner|controller|module|logic|algorithm|policy|stack|behaviou?r|decision|"
                   r"decisions|capability|performance|model)\b", r"\1",
                   text)  # "evaluates the lane-change planner": what is tested, no lane change
@@ -1166,7 +1169,7 @@ def tokenize(text: str) -> list[Token]:
                   r"queuing|queueing|stand|wait|queue) (?:on|at) the (?:pavement|sidewalk|kerb|curb|footway|stop|bus stop)"
                   r"\b)", lambda m: f"{m.group(1) or ''} people".strip(),
                   text)  # "three waiting passengers stand on the pavement": people at the stop, not on board
-    text = re.sub(r"\b(an? [a-z]+(?: [a-z]+)?) (?:that |which )?(?:it|he|she|they|the officer|the police) (?:has |had |have )?"
+    text = re.sub(r"\b(an? [a-z]+(?: [a-z]+)?) (?:that |which )?(?:it|he|she|they|the officer|the police) (?:has |had |have |is )?"
                   r"(?:just )?pulled over\b", r"\1 that has been pulled over", text)  # "parked behind a pickup it
     # has pulled over": the pickup stands, pulled over; the patrol car made no lane change
     text = re.sub(r"\b((?:mis)?classif(?:y|ies|ied|ying)|mislabel(?:l?ed|s)?|detect(?:s|ed)?|track(?:s|ed)|identif(?:y|ies|ied)|"

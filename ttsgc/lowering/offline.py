@@ -3749,9 +3749,15 @@ def _said_in_general(r: _Reader, e: Entity) -> bool:
 def _the_vehicles_named_before(r: _Reader, e: Entity) -> bool:
     """'vehicles blocking the intersection', 'both vehicles', said with no count after two or more vehicles were
     named: those vehicles again, no new ones."""
-    return e.uncounted and not e.is_ego and e.head in ("vehicle", "vehicles") and e.said_at >= 0 and sum(
-        1 for f in r.entities if f is not e and not f.is_ego and f.type not in V.VULNERABLE_TYPES and f.count >= 1
-        and 0 <= f.said_at < e.said_at) >= 2
+    if e.is_ego or e.said_at < 0:
+        return False
+    before = [f for f in r.entities if f is not e and not f.is_ego and f.count >= 1 and 0 <= f.said_at < e.said_at]
+    if e.head in ("road user", "road users", "agent", "agents", "actor", "actors", "participant", "participants") and \
+            not e.actions and not e.features and e.said_at > 0 and r.tokens[e.said_at - 1].word in ("all", "both", "the", "these", "those", "three", "two",
+                                                               "four", "five"):
+        return sum(f.count for f in before) >= max(2, e.count)  # "yield to all three road users": those named
+    return e.uncounted and e.head in ("vehicle", "vehicles") and sum(
+        1 for f in before if f.type not in V.VULNERABLE_TYPES) >= 2
 
 
 CASE_HEADINGS = CASE_NOUNS | {"hazard", "class", "title", "type", "category", "rush"}
@@ -3899,7 +3905,8 @@ def _a_load(r: _Reader, e: Entity) -> bool:
 
 
 TELLING = {"told", "tell", "tells", "said", "say", "says", "asked", "ask", "asks", "complained", "complain",
-           "complains", "wrote", "write", "writes", "reported", "report", "reports", "objected", "object", "objects"}
+           "complains", "wrote", "write", "writes", "reported", "report", "reports", "objected", "object", "objects",
+           "reckons", "reckoned", "thinks", "thought"}
 
 
 def _tells(r: _Reader, e: Entity) -> bool:
