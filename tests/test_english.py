@@ -8557,3 +8557,11 @@ def test_a_car_a_trooper_is_pulled_over_beside_stands_with_it():
     assert ("car", "stop", "front_right") in agents(
         "Dusk on a highway with two lanes each way, and a state trooper is stopped on the right shoulder behind a car "
         "he's pulled over, lights flashing, so I move over to the left lane.")
+
+
+def test_him_placing_one_after_another_told_by_i_is_the_other_driver():
+    assert ("car", "go_straight", "road_of_right_turn") in agents(
+        "I'm stopped at the yield sign and a Prius coming from the road on my right just blows through. Then a van "
+        "right behind him does the exact same thing.")
+    assert ("ambulance", "go_straight", "back") in agents(
+        "Customer states he was moving over into the right lane for an ambulance coming up behind him.")

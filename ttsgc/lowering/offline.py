@@ -7163,7 +7163,12 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         people = [e for e in recent if e.type in V.VULNERABLE_TYPES and not (drives and e.type == "pedestrian")]
         if drives and not people and any(e.type == "pedestrian" for e in recent):
             return next((e for e in reversed(recent) if e.type != "pedestrian"), None)
-        drivers = [e for e in recent if not e.is_ego] if units[i].word in ("he", "she") else []
+        told_in_person = any(e.is_ego for e in recent) and all(
+            e.head in FIRST_PERSON | {"we", "us", "our", "you", "ego"} for e in recent if e.is_ego)
+        drivers = [e for e in recent if not e.is_ego] if units[i].word in ("he", "she") or \
+            units[i].word == "him" and i > 0 and units[i - 1].category == "positions" and told_in_person else []
+        # ("I'm stopped ... a Prius blows through ... a van right behind him": the one driving the Prius; when the
+        # ego is 'he' himself ("customer states he was ... a car just behind him"), 'him' is the ego)
         # "a coach started indicating ... so he could merge": the driver of the last vehicle
         return people[-1] if people else drivers[-1] if drivers else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
