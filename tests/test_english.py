@@ -8565,3 +8565,9 @@ def test_him_placing_one_after_another_told_by_i_is_the_other_driver():
         "right behind him does the exact same thing.")
     assert ("ambulance", "go_straight", "back") in agents(
         "Customer states he was moving over into the right lane for an ambulance coming up behind him.")
+
+
+@pytest.mark.parametrize("place", ["right after the corner", "just past the corner"])
+def test_just_past_the_corner_the_ego_turns_round_is_where_it_heads(place):
+    assert ("bus", "stop", "at_the_destination") in agents(
+        f"When we turned right at the yield sign onto Pine Street, a bus was stopped at the bus stop {place}.")
