@@ -8352,7 +8352,8 @@ def test_one_said_to_be_no_part_of_the_scene_is_no_agent(denial):
                                    "Note that the ambulance is not to be modelled as stopping."])
 def test_what_is_not_modelled_of_an_agent_leaves_the_agent(aside):
     assert ("ambulance" if "ambulance" in aside else "bus") in [
-        a[0] for a in agents(f"The ego drives on. An ambulance approaches from behind. A bus is stopped ahead. {aside}")]
+        a[0] for a in agents(f"The ego drives on. An ambulance approaches from behind. A bus is stopped ahead. "
+                             f"{aside}")]
 
 
 def test_the_scene_proposed_is_told_from_the_vehicle_proposed():
@@ -8448,7 +8449,8 @@ def test_coming_across_or_along_from_our_side(prompt, expected):
 def test_what_a_road_user_was_taken_for_and_the_only_actor_are_no_agents():
     assert agents("Ego turning left at a signalised intersection. A jogger was crossing the side street we were "
                   "turning onto. Perception classified the jogger as a cyclist. Please repro with the jogger as the "
-                  "only actor.") == [("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination")]
+                  "only actor.") == [("car", "turn_left", "ego"),
+                                     ("pedestrian", "cross_the_road", "at_the_destination")]
 
 
 def test_mine_as_the_verb_of_a_request_is_no_speaker():

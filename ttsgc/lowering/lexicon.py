@@ -854,6 +854,9 @@ def _agent_kinds(words: list[str]) -> list[str]:
     return out
 
 
+BRACKETED_LABEL = re.compile(r"\s*(?:[a-z]{1,4}|actor|agent|target|object|participant|unit|npc)[ _-]?\d{1,2}\s*")
+
+
 def _described_in_brackets(text: str) -> str:
     """'the car behind me (gray Ford Escape)', 'a pickup (silver Honda Civic, older gentleman driving)': a
     bracket after an agent that only says its make, colour or who drove it names no second agent."""
@@ -864,7 +867,7 @@ def _described_in_brackets(text: str) -> str:
         if len(words) >= 2 and words[-1] in ("me", "us", "you", "ego") and words[-2] in PLACED_BY:
             words = words[:-2]  # "the car behind me (...)": the bracket is the car's
         before = _agent_kinds(words)
-        if re.fullmatch(r"\s*(?:[a-z]{1,4}|actor|agent|target|object|participant|unit|npc)[ _-]?\d{1,2}\s*", m.group(1)):
+        if BRACKETED_LABEL.fullmatch(m.group(1)):
             return m.group(0)  # "a white SUV (TV1)": the name it goes by after
         inside = re.findall(r"[a-z]+", m.group(1))
         kinds = [k for k in _agent_kinds(inside) if k not in ("pedestrian", "none")]  # the driver may be named
@@ -899,6 +902,43 @@ def _as_corrected(text: str) -> str:
         if before:
             said = before[-1]
             text = text[:said.start()] + m.group(2) + text[said.end():at] + text[at + len(sentence):]
+    return text
+
+
+ASIDES = (  # (pattern, replacement): what a text says around its scene, read for what it is
+    (r"\b(?:an? |the |any )?(?:lane[- ]change|overtake|overtaking manoeuvre|overtaking maneuver|swerve|evasive "
+     r"(?:manoeuvre|maneuver|lane change))\b[^.;!?]{0,30}? (?:is|was|are|were) not (?:required|needed|necessary|"
+     r"expected|wanted)\b", " "),  # "a lane change by the SV is not required": not made
+    (r"\blane[- ]chang(?:e|ing) (planner|controller|module|logic|algorithm|policy|stack|behaviou?r|decision|"
+     r"decisions|capability|performance|model)\b", r"\1"),  # "evaluates the lane-change planner": no lane change
+    (r"\b(waiting|queuing|queueing) passengers\b", r"\1 people"),  # "three waiting passengers stand on the
+    # pavement": people at the stop, not on board
+    (r"\bpassengers(?= (?:are |were )?(?:standing|waiting|queuing|queueing|stand|wait|queue) (?:on|at) the "
+     r"(?:pavement|sidewalk|kerb|curb|footway|stop|bus stop)\b)", "people"),
+    (r"\b(an? [a-z]+(?: [a-z]+)?) (?:that |which )?(?:it|he|she|they|the officer|the police) "
+     r"(?:has |had |have |is )?(?:just )?pulled over\b", r"\1 that has been pulled over"),  # "parked behind a
+    # pickup it has pulled over": the pickup stands, pulled over; the patrol car made no lane change
+    (r"\b((?:mis)?classif(?:y|ies|ied|ying)|mislabel(?:l?ed|s)?|detect(?:s|ed)?|track(?:s|ed)|"
+     r"identif(?:y|ies|ied)|mistook|mistak(?:es|en))\b([^.;!?]{0,60}?) (?:as|for) an? [a-z]+\b", r"\1\2"),
+    # "perception classified the jogger as a cyclist": what it was taken for is no one
+    (r"(?:^|(?<=[.!?:]\s)|(?<=\bplease\s)|(?<=\bto\s))mine\b(?= (?:[a-z-]+ ){0,2}[a-z-]+s\b)", "collect"),
+    # "Please mine highway cut-ins": the verb, not the speaker's
+    (r"\bv?\d+(?:\.\d+){2,}\b", " "),  # "CARLA 0.9.14": a release, no sentence ends in it
+    (r"(?:^|(?<=[.!?]\s))(?:please )?(?:label|tag|annotate|flag|mark|give) (?:actor|agent|object|track|this clip|"
+     r"the clip)\b[^.!?\n]*[.!?]?", " "),  # "Give Actor 2 the emergency attribute.": the annotator's, no scene
+    (r"(?<![\w.])\.(xodr|xosc|xml|tsg|py|json|yaml|yml|csv)\b", r"\1"),  # "the .xodr": no sentence ends
+    (r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)", r"no \1"),  # "please leave pedestrians out"
+    (r"\b(?:leave out|exclude|omit) (?:the |any |all )?([a-z]+s)\b", r"no \1"),
+)
+
+
+def _without_asides(text: str) -> str:
+    """What a request, a note or a report says around its scene, said as what it is: a manoeuvre no one makes, a
+    system named by its manoeuvre, what a road user was taken for, an annotator's instruction, a release number, a
+    file's extension, road users asked to be left out; and words that read otherwise there ('please mine ...',
+    passengers waiting at the stop, a vehicle pulled over by another)."""
+    for pattern, replacement in ASIDES:
+        text = re.sub(pattern, replacement, text)
     return text
 
 
@@ -1103,7 +1143,7 @@ def _comment_block(text: str) -> str:
     if len(lines) < 2 or not (unquoted != text.strip() or all(COMMENT_MARK.match(line) for line in lines)):
         return text
     text = unquoted
-    out = [COMMENT_MARK.sub("", line).strip() if COMMENT_MARK.match(line) else line.strip() for line in text.splitlines()]
+    out = [COMMENT_MARK.sub("", line).strip() for line in text.splitlines()]
     return "\n\n".join(" ".join(p.split("\n")) for p in "\n".join(out).split("\n\n")).strip()
 
 
@@ -1158,32 +1198,7 @@ def tokenize(text: str) -> list[Token]:
                   r"(?!\s+(?:it|this|that|them|these|those)\b))", " ", text)
     # "can we show the car turning left?": the team asking, not the ego
     text = _without_story_frame(text)
-    text = _as_corrected(text)
-    text = re.sub(r"\b(?:an? |the |any )?(?:lane[- ]change|overtake|overtaking manoeuvre|overtaking maneuver|swerve|"
-                  r"evasive (?:manoeuvre|maneuver|lane change))\b[^.;!?]{0,30}? (?:is|was|are|were) not (?:required|"
-                  r"needed|necessary|expected|wanted)\b", " ", text)  # "a lane change by the SV is not required"
-    text = re.sub(r"\blane[- ]chang(?:e|ing) (planner|controller|module|logic|algorithm|policy|stack|behaviou?r|decision|"
-                  r"decisions|capability|performance|model)\b", r"\1",
-                  text)  # "evaluates the lane-change planner": what is tested, no lane change
-    text = re.sub(r"\b(waiting|queuing|queueing) passengers\b|\bpassengers(?= (?:are |were )?(?:standing|waiting|"
-                  r"queuing|queueing|stand|wait|queue) (?:on|at) the (?:pavement|sidewalk|kerb|curb|footway|stop|bus stop)"
-                  r"\b)", lambda m: f"{m.group(1) or ''} people".strip(),
-                  text)  # "three waiting passengers stand on the pavement": people at the stop, not on board
-    text = re.sub(r"\b(an? [a-z]+(?: [a-z]+)?) (?:that |which )?(?:it|he|she|they|the officer|the police) (?:has |had |have |is )?"
-                  r"(?:just )?pulled over\b", r"\1 that has been pulled over", text)  # "parked behind a pickup it
-    # has pulled over": the pickup stands, pulled over; the patrol car made no lane change
-    text = re.sub(r"\b((?:mis)?classif(?:y|ies|ied|ying)|mislabel(?:l?ed|s)?|detect(?:s|ed)?|track(?:s|ed)|identif(?:y|ies|ied)|"
-                  r"mistook|mistak(?:es|en))\b([^.;!?]{0,60}?) (?:as|for) an? [a-z]+\b", r"\1\2",
-                  text)  # "perception classified the jogger as a cyclist": what it was taken for is no one
-    text = re.sub(r"(?:^|(?<=[.!?:]\s)|(?<=\bplease\s)|(?<=\bto\s))mine\b(?= (?:[a-z-]+ ){0,2}[a-z-]+s\b)",
-                  "collect", text)  # "Please mine highway cut-ins": the verb, not the speaker's
-    text = re.sub(r"\bv?\d+(?:\.\d+){2,}\b", " ", text)  # "CARLA 0.9.14": a release, no sentence ends in it
-    text = re.sub(r"(?:^|(?<=[.!?]\s))(?:please )?(?:label|tag|annotate|flag|mark|give) (?:actor|agent|object|track|"
-                  r"this clip|the clip)\b[^.!?\n]*[.!?]?", " ", text)  # "Give Actor 2 the emergency
-    # attribute.", "Label Actor 2 as a cut-in": what the annotator writes, no scene
-    text = re.sub(r"(?<![\w.])\.(xodr|xosc|xml|tsg|py|json|yaml|yml|csv|net\.xml)\b", r"\1", text)  # "the .xodr"
-    text = re.sub(r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)|\b(?:leave out|exclude|omit) (?:the |any |all )?"
-                  r"([a-z]+s)\b", lambda m: f"no {m.group(1) or m.group(2)}", text)  # "please leave pedestrians out"
+    text = _without_asides(_as_corrected(text))
     text = re.sub(r"\b(?:one|two|three|some) of (?:them|those|these)[ ,]+(?:no|wait|sorry|i mean|no wait|actually)"
                   r"[ ,]+((?:both|all|two|three|four) of (?:them|those|these))\b", r"\1", text)
     # "one of them no both of them start walking": speech corrects itself, the last word stands

@@ -3746,15 +3746,17 @@ def _said_in_general(r: _Reader, e: Entity) -> bool:
                for f in r.entities)
 
 
+ROLE_GROUPS = {"road user", "road users", "agent", "agents", "actor", "actors", "participant", "participants"}
+
+
 def _the_vehicles_named_before(r: _Reader, e: Entity) -> bool:
     """'vehicles blocking the intersection', 'both vehicles', said with no count after two or more vehicles were
-    named: those vehicles again, no new ones."""
+    named, and 'all three road users' after as many were named: those again, no new ones."""
     if e.is_ego or e.said_at < 0:
         return False
     before = [f for f in r.entities if f is not e and not f.is_ego and f.count >= 1 and 0 <= f.said_at < e.said_at]
-    if e.head in ("road user", "road users", "agent", "agents", "actor", "actors", "participant", "participants") and \
-            not e.actions and not e.features and e.said_at > 0 and r.tokens[e.said_at - 1].word in ("all", "both", "the", "these", "those", "three", "two",
-                                                               "four", "five"):
+    if e.head in ROLE_GROUPS and not e.actions and not e.features and e.said_at > 0 and \
+            r.tokens[e.said_at - 1].word in ("all", "both", "the", "these", "those", "two", "three", "four", "five"):
         return sum(f.count for f in before) >= max(2, e.count)  # "yield to all three road users": those named
     return e.uncounted and e.head in ("vehicle", "vehicles") and sum(
         1 for f in before if f.type not in V.VULNERABLE_TYPES) >= 2
@@ -5621,7 +5623,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         for np in before:
             subject += np.group or [np.entity]
         joined = any(u.category == "word" and u.word in ("and", "or") for u in units[:first_verb])
-        labelled = before and units[0].word in ("and", "or") and before[0].entity.label and all(e.label for e in pending)
+        labelled = before and units[0].word in ("and", "or") and before[0].entity.label and \
+            all(e.label for e in pending)
         if pending and (len(before) >= 2 or labelled) and joined and verbs and clause.link in ("", ","):
             # "an ambulance, a police car and a van approach" (not "... a slow semi, so I signaled and I moved");
             # "Vehicle 2 (fire engine) and Vehicle 3 (police car) approached"
@@ -7167,9 +7170,9 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
             e.head in FIRST_PERSON | {"we", "us", "our", "you", "ego"} for e in recent if e.is_ego)
         drivers = [e for e in recent if not e.is_ego] if units[i].word in ("he", "she") or \
             units[i].word == "him" and i > 0 and units[i - 1].category == "positions" and told_in_person else []
-        # ("I'm stopped ... a Prius blows through ... a van right behind him": the one driving the Prius; when the
-        # ego is 'he' himself ("customer states he was ... a car just behind him"), 'him' is the ego)
-        # "a coach started indicating ... so he could merge": the driver of the last vehicle
+        # "a coach started indicating ... so he could merge": the driver of the last vehicle; so is 'him' after a
+        # place in a text told by 'I' ("a Prius blows through ... a van right behind him"), while in one told of
+        # 'he' ("customer states he was ... a car just behind him") 'him' is the ego
         return people[-1] if people else drivers[-1] if drivers else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
                            (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind"))
@@ -7293,8 +7296,9 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
 
 def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) -> list[Entity]:
     before = [p for p in phrases if p.index < i and p.entity is not None]
-    while len(before) > 1 and not before[-1].introduced and units[before[-1].index].word in ("it", "him", "her", "them") \
-            and units[before[-1].index - 1].category == "positions" and before[-2].introduced and \
+    while len(before) > 1 and not before[-1].introduced and \
+            units[before[-1].index].word in ("it", "him", "her", "them") and \
+            units[before[-1].index - 1].category == "positions" and before[-2].introduced and \
             "lane" in {t.word for t in units[i].tokens}:
         before.pop()  # "with a truck alongside it in the right lane": the truck's lane, not its
     last_verb = max([v for v in main_verbs if v < i] + [v for v in (participles or {}) if v < i], default=None)
@@ -7876,7 +7880,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         subject = _read_clause(r, clause, previous, recent, pending)
         if _says_no_part(clause.units, tokens):
             for e in subject:  # "the person in the driver's seat is our safety operator, not an actor"
-                e.features.add("no_part") if not e.is_ego else None
+                if not e.is_ego:
+                    e.features.add("no_part")
         if subject and not clause.condition:
             outside_condition = subject
         if clause.condition and clause.stage > 0 and _gone_by(clause.units):
