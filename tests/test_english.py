@@ -8573,3 +8573,10 @@ def test_him_placing_one_after_another_told_by_i_is_the_other_driver():
 def test_just_past_the_corner_the_ego_turns_round_is_where_it_heads(place):
     assert ("bus", "stop", "at_the_destination") in agents(
         f"When we turned right at the yield sign onto Pine Street, a bus was stopped at the bus stop {place}.")
+
+
+def test_straight_across_the_junction_is_a_path_and_that_street_is_the_one_turned_into():
+    assert ("car", "go_straight", "road_of_right_turn") in agents(
+        "The ego waits at a stop sign to turn left while a car from the right goes straight across the junction.")
+    assert ("car", "block_the_ego", "at_the_destination") in agents(
+        "The ego turns left into a side street, and a delivery van is stopped in that street, blocking our way.")

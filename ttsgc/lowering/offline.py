@@ -934,7 +934,7 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
             out.append(Unit(u.start, u.end, "positions", "destination", u.tokens))
             k += 1
             continue
-        if sentence <= until and done_to and u.word == "the":
+        if sentence <= until and done_to and u.word in ("the", "that"):  # "a van is stopped in that street"
             end = next((j for j in range(k + 1, min(k + 6, len(units)))
                         if units[j].tokens[-1].word in ROAD_NOUNS and units[j].category != "agents"), None)
             if end is not None and all(x.category == "word" for x in units[k:end]):
