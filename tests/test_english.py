@@ -8580,3 +8580,9 @@ def test_straight_across_the_junction_is_a_path_and_that_street_is_the_one_turne
         "The ego waits at a stop sign to turn left while a car from the right goes straight across the junction.")
     assert ("car", "block_the_ego", "at_the_destination") in agents(
         "The ego turns left into a side street, and a delivery van is stopped in that street, blocking our way.")
+
+
+def test_what_the_speaker_spotted_and_then_had_to_do_is_the_speakers():
+    said = agents("Two lanes my side. There's a car broken down in my lane with no hazards on, I only spotted it at "
+                  "about 30 metres and had to swing out into the right-hand lane to get round it.")
+    assert ("car", "change_lane_to_right", "ego") in said and ("car", "stop", "front") in said

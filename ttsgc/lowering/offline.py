@@ -5596,7 +5596,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                      and (before[j].entity.is_ego or before[j].entity.head in DRIVERS) and any(
                          u.tokens[0].base in PERCEIVING for u in units[before[j].index + 1:before[j + 1].first])),
                     None)  # "I admit I was looking at that and did not notice the car in front had stopped"
-        seen = seer is not None
+        seen = seer is not None and not any(u.word == "and" for u in units[before[seer + 1].index + 1:first_verb])
+        # ("I only spotted it at about 30 metres and had to swing out": the speaker swings out, not what was seen)
         if seen:
             before = before[seer:]
         wanted = len(before) >= 2 and before[0].entity.is_ego and 0 < first_verb < len(units) and (
