@@ -8586,3 +8586,11 @@ def test_what_the_speaker_spotted_and_then_had_to_do_is_the_speakers():
     said = agents("Two lanes my side. There's a car broken down in my lane with no hazards on, I only spotted it at "
                   "about 30 metres and had to swing out into the right-hand lane to get round it.")
     assert ("car", "change_lane_to_right", "ego") in said and ("car", "stop", "front") in said
+
+
+def test_a_task_set_on_the_scene_and_a_crossing_told_by_its_markings():
+    prompt = ("The crossing is marked only with two parallel lines, without stripes, and has no traffic light. A "
+              "jogger crosses the road on it while the ego approaches cautiously. Evaluate the distance at which your "
+              "vehicle yields.")
+    assert ("car", "go_straight", "ego") in agents(prompt)
+    assert "parallel_open_crosswalk" in road(prompt).required_objects

@@ -929,6 +929,9 @@ ASIDES = (  # (pattern, replacement): what a text says around its scene, read fo
     (r"(?<![\w.])\.(xodr|xosc|xml|tsg|py|json|yaml|yml|csv)\b", r"\1"),  # "the .xodr": no sentence ends
     (r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)", r"no \1"),  # "please leave pedestrians out"
     (r"\b(?:leave out|exclude|omit) (?:the |any |all )?([a-z]+s)\b", r"no \1"),
+    (r"(?:^|(?<=[.!?]\s))(?:please )?(?:evaluate|assess|measure|verify|describe|discuss|explain)"
+     r"\b(?!\s*:)[^.!?\n]*[.!?]?", " "),  # "Evaluate the distance at which your vehicle yields.": the task set
+    # on the scene, no scene
 )
 
 
