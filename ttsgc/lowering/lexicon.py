@@ -937,9 +937,9 @@ ASIDES = (  # (pattern, replacement): what a text says around its scene, read fo
 
 def _without_asides(text: str) -> str:
     """What a request, a note or a report says around its scene, said as what it is: a manoeuvre no one makes, a
-    system named by its manoeuvre, what a road user was taken for, an annotator's instruction, a release number, a
-    file's extension, road users asked to be left out; and words that read otherwise there ('please mine ...',
-    passengers waiting at the stop, a vehicle pulled over by another)."""
+    system named by its manoeuvre, what a road user was taken for, an annotator's instruction, a task set on the
+    scene, a release number, a file's extension, road users asked to be left out; and words that read otherwise
+    there ('please mine ...', passengers waiting at the stop, a vehicle pulled over by another)."""
     for pattern, replacement in ASIDES:
         text = re.sub(pattern, replacement, text)
     return text
