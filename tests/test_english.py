@@ -8594,3 +8594,22 @@ def test_a_task_set_on_the_scene_and_a_crossing_told_by_its_markings():
               "vehicle yields.")
     assert ("car", "go_straight", "ego") in agents(prompt)
     assert "parallel_open_crosswalk" in road(prompt).required_objects
+
+
+@pytest.mark.parametrize("who", ["You are the driver of a car.", "I am the driver of a car."])
+def test_the_driver_of_a_vehicle_said_of_the_speaker_is_the_speakers_own(who):
+    said = agents(f"{who} A fire engine comes from the road on the right and goes straight across in front.")
+    assert ("car", "go_straight", "ego") in said and not any(k[0] == "car" and k[2] != "ego" for k in said)
+
+
+def test_one_of_our_vans_after_a_heading_that_names_its_manoeuvre_is_the_ego():
+    said = agents("Lane-change reminder. On Tuesday one of our service vans changed lanes to the left and cut right "
+                  "across the path of a silver hatchback that was coming up behind him in the left lane.")
+    assert sorted(said) == [("car", "change_lane_to_left", "ego"), ("car", "go_straight", "back_left")]
+
+
+def test_the_vehicle_the_speaker_sits_in_with_a_participle_after_it_is_the_speakers():
+    assert ("car", "stop", "front") not in agents(
+        "Foggy, and I was sat at the end of our yard in the Land Rover waiting to turn left. A lorry came from the "
+        "right.")
+    assert ("car", "stop", "front") in agents("I was stuck behind a guy in the pickup waiting to turn.")

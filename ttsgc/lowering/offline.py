@@ -4001,8 +4001,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     at_its_wheel = fleet >= 5 and units[fleet - 4].word in ("in", "driving", "of") and \
         units[fleet - 5].category == "agents" and units[fleet - 5].meaning == "ego"
     fleets_one = plural and kind in V.EGO_TYPES and fleet >= 3 and [x.word for x in units[fleet - 3:fleet]] in (
-        ["one", "of", "our"], ["one", "of", "my"]) and (at_its_wheel or not any(e.is_ego for e in r.entities))
-    # "(the driver in) one of our artics": the fleet's vehicle the scene is told from
+        ["one", "of", "our"], ["one", "of", "my"]) and (at_its_wheel or not any(
+            e.is_ego and (e.head != "ego" or any(t.word == "ego" for t in r.tokens)) for e in r.entities))
+    # "(the driver in) one of our artics": the fleet's vehicle the scene is told from; an ego supplied before for a
+    # heading's verb with no subject ("Lane-change reminder.") is that vehicle
     if fleets_one:
         is_ego, plural = True, False
     on_the_bike = u.base in ("bike", "motorbike", "moped", "scooter", "motorcycle") and not plural and count is None and \
@@ -6947,8 +6949,9 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
     drives, steers or sits in is the ego's own, no other agent."""
     k = len(before) - 1
     seat = None
-    if k >= 1 and before[k].entity is None and "passenger" in units[before[k].index].base.split():
-        seat, k = before[k], k - 1  # "the front-seat passenger in ...": the passenger is the speaker
+    if k >= 1 and before[k].entity is None and (
+            "passenger" in units[before[k].index].base.split() or units[before[k].index].base in AT_THE_CONTROLS):
+        seat, k = before[k], k - 1  # "the front-seat passenger in ...", "you are the driver of a car": the speaker
     if k < 0 or before[k].entity is None or not before[k].entity.is_ego or \
             before[k].entity.head not in FIRST_PERSON | {"we", "you", "player", "ego", "op", "rp"} or \
             np.entity is None or np.entity.type not in V.EGO_TYPES or np.plural:
@@ -6982,8 +6985,11 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     unsaid = bool(opening) and opening[0].category == "actions" and \
         not any(x.category == "agents" and x.meaning != "none" for x in opening)  # "Sat at the crossroads in the box
     # van waiting to go": a sentence opened by what the speaker was doing, with no subject, says where they sit
+    told = unsaid or units[np.first - 2].category != "agents" and any(  # "I was stopped at it in the pickup
+        x.category == "agents" and x.meaning == "ego" and x.tokens[0].word in FIRST_PERSON | {"we"} for x in opening)
+    # wanting to go straight over": the speaker's own clause, not a noun's ("a guy in the pickup waiting")
     if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents") and not (
-            unsaid and units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith("ing")):
+            told and units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith("ing")):
         return False  # "in the van ahead", "in the car that pulled out": another
     named_ego = any(t.word == "ego" for t in r.tokens)  # (an ego supplied for a verb with no subject is 'ego')
     if any(x.is_ego and x.head not in FIRST_PERSON | {"we"} and (x.head != "ego" or named_ego) for x in r.entities):
