@@ -8613,3 +8613,44 @@ def test_the_vehicle_the_speaker_sits_in_with_a_participle_after_it_is_the_speak
         "Foggy, and I was sat at the end of our yard in the Land Rover waiting to turn left. A lorry came from the "
         "right.")
     assert ("car", "stop", "front") in agents("I was stuck behind a guy in the pickup waiting to turn.")
+
+
+def test_a_connected_vehicle_use_case_tells_the_host_vehicle_and_the_remote_ones():
+    said = agents("The HV has stopped at the stop bar at the intersection and intends to go straight across. RV1 is "
+                  "approaching from the HV's right. RV2, a motorcycle, is approaching from the HV's left.")
+    assert ("car", "go_straight", "road_of_right_turn") in said
+    assert ("motorcycle", "go_straight", "road_of_left_turn") in said
+
+
+def test_a_place_said_not_to_be_and_the_same_lane_as_the_one_followed():
+    said = agents("The HV is travelling in the right lane of a freeway with two lanes in each direction. RV1, ahead of "
+                  "the HV in the left lane, brakes hard. Since RV1 is not in the HV's path, the HV continues.")
+    assert ("car", "stop", "front_left") in said
+    said = agents("The HV is travelling in the right lane of a road with two lanes in each direction. RV1, an "
+                  "ambulance, approaches from behind in the left lane and broadcasts its status; a police car "
+                  "escorting it follows RV1 in the same lane.")
+    assert ("ambulance", "go_straight", "back_left") in said
+
+
+def test_a_case_named_by_the_turn_another_makes_while_the_ego_goes_straight():
+    said = agents("Left Turn Across Path, HV going straight. The HV drives straight through a signalized "
+                  "intersection on green. RV1, approaching from the opposite direction, turns left across the HV's "
+                  "path.")
+    assert ("car", "go_straight", "ego") in said and ("car", "turn_left", "road_of_straight") in said
+
+
+def test_an_operators_log_names_its_own_vehicle_bare():
+    said = agents("10:42, light rain. A delivery van was double-parked in our lane with its hazards on. Shuttle braked "
+                  "to a stop behind it. Once the left lane was clear it changed lanes to the left and went round the "
+                  "van.")
+    assert ("bus", "stop", "ego") in said and ("bus", "change_lane_to_left", "ego") in said
+    assert ("truck", "go_straight", "ego") in agents(
+        "I'm rolling up in the truck, and the two cars that had bumped were still sat in my lane in front of me. "
+        "Ambulance had already been and gone.")
+
+
+def test_you_in_advice_after_the_scene_is_said_to_all():
+    said = agents("Be seen, be safe. In the dark yesterday, a driver on the A38 had to stop when a man dressed all in "
+                  "black walked out across the road in front of her car. If you're walking at night, please wear "
+                  "something bright.")
+    assert ("car", "stop", "ego") in said

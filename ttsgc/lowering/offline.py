@@ -564,6 +564,8 @@ def _read_units(tokens: list[Token]) -> list[Unit]:
             before = m.start - 1 if m.start > 0 and tokens[m.start - 1].word != "the" else m.start - 2
             if before >= 0 and tokens[before].word in ("into", "onto", "across"):  # "into the VUT's path"
                 meaning = "into_ego_lane" if meaning == "ego_lane" else meaning
+            if before >= 0 and tokens[before].word == "from" and meaning in ("side_left", "side_right"):
+                meaning = "from_" + meaning[5:]  # "approaching from the HV's left": as "from our left"
             out.append(Unit(m.start, m.end + 1 + blind, "positions", meaning, span))
             i = m.end + 1 + blind
             if any(f.start < i < f.end for f in found.values()):  # "from the SV's left turns left": read on
@@ -5790,6 +5792,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 "other", "first", "second", "former", "latter", "lead", "last"):
             r.mark(u)  # "two trucks, one behind the other": their order, not their place
             continue
+        lead = i - 1
+        while lead > i - 3 and lead > 0 and units[lead].word in ("in", "on", "at", "the", "a"):
+            lead -= 1
+        if u.category == "positions" and lead > 0 and units[lead].word in ("not", "never") and \
+                units[lead - 1].word in COPULAS:
+            r.mark(u)  # "since RV1 is not in the HV's path": a place it is said not to have
+            continue
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
         if u.meaning in ("ahead", "behind") and [t.word for t in u.tokens] in (["front"], ["rear"], ["back"]) and \
@@ -5820,6 +5829,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         owner = _let_in_place(units, i, phrases, recent) or \
             _modifier_owner(units, i, phrases, subject, main_verbs, participles)
+        if u.meaning == "ego_lane" and any(t.word == "same" for t in u.tokens) and owner and subject and \
+                not subject[0].is_ego and not any(e is subject[0] or e.is_ego for e in owner):
+            r.mark(u)  # "a police car follows RV1 in the same lane": the lane of the one followed, not the ego's
+            continue
         in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
             u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
@@ -7964,6 +7977,8 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_patients_vehicle(r)
     _named_as_the_ego(r)
     _the_customers_vehicle(r)
+    _the_logs_own_vehicle(r)
+    _the_named_turn_is_anothers(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
@@ -8211,8 +8226,11 @@ def _speaker_on_the_road(r: _Reader) -> bool:
     if speaker is not None and (speaker.actions or speaker.features):
         return True
     words = [t.word for t in r.tokens]
+    told = max((u.tokens[0].sentence for u in r.units if u.category == "agents" and u.meaning not in ("ego", "none")),
+               default=-1)  # the last sentence that names someone of the scene: 'you' after it is advice to all
     for k, w in enumerate(words):
-        if w in ("you", "your", "yours") or w in ("i", "we") and k + 1 < len(words) and words[k + 1] in SEEN_FROM_A_SEAT:
+        if w in ("you", "your", "yours") and r.tokens[k].sentence <= told or \
+                w in ("i", "we") and k + 1 < len(words) and words[k + 1] in SEEN_FROM_A_SEAT:
             return True  # "I saw a van pull out": seen from the driver's seat; "I watch drivers do thirty": onlooking
         if w in ("i", "we") and _drives(r.tokens[k + 1:k + 5]):
             return True  # "a lorry that I had been following": the speaker drives
@@ -8485,6 +8503,50 @@ def _the_customers_vehicle(r: _Reader) -> None:
             ego is not None and ego.head not in FIRST_PERSON | {"ego", "we", "us", "vehicle", "he", "she"}:
         return
     _now_the_ego(r, first, "a job card opens on the customer's vehicle")
+
+
+def _the_logs_own_vehicle(r: _Reader) -> None:
+    """'Shuttle braked to a stop behind it', 'a taxi sat behind us ... Shuttle stopped at the stop line': an
+    operator's log names its own vehicle bare, as a sentence's subject, while 'we' and 'us' are the ego; that
+    vehicle, placed by no one but in a lane of its own, is the ego's."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None:
+        if not any(t.word in ("we", "us", "our") for t in r.tokens):
+            return
+    elif not (ego.head in ("we", "us", "i", "me", "op") or ego.head == "ego" and
+              not any(t.word == "ego" for t in r.tokens)) or ego.type != "car" or \
+            any(name.split()[-1] not in SELF_NAMES | {"ego", "op"} for name in ego.aliases if name):
+        return  # the speakers, or an ego supplied for a verb with no subject, in no vehicle of their own ("I'm
+        # rolling up in the truck" is)
+    own = {"lane_said", "overtaking", "parked", "straight_on", "middle_lane"} | {f"named_lane_{side}" for side in SIDES}
+    candidates = [
+        e for e in r.entities if not e.is_ego and e.count == 1 and e.type in ("car", "bus", "truck") and
+        e.actions and not e.label and not any(
+            x is not e and not x.is_ego and x.head == e.head for x in r.entities) and
+        all(f in own or f.startswith("compass_") or f.startswith("side_") and f"named_lane_{f[5:]}" in e.features
+            for f in e.features) and
+        (e.relative_to is None or e.relative_how == "behind") and any(
+            t.word == e.head and (t.index == 0 or r.tokens[t.index - 1].sentence != t.sentence)
+            for t in r.tokens)]
+    if len(candidates) != 1:
+        return
+    vehicle = candidates[0]
+    if vehicle.relative_to is not None:  # "Shuttle braked to a stop behind it": the one it stops behind is ahead
+        vehicle.relative_to.features.add("ahead")
+        vehicle.relative_to = None
+    _now_the_ego(r, vehicle, "a log names its own vehicle bare")
+
+
+def _the_named_turn_is_anothers(r: _Reader) -> None:
+    """'Left Turn Across Path, HV going straight. ... RV1 turns left across the HV's path': a case named by a turn
+    the text then gives to another, while the ego is said to go straight in that stage, is the other's turn."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or "straight_on" not in ego.features:
+        return
+    for a in list(ego.actions):
+        if a[4] in ("turn_left", "turn_right") and any(b[0] == a[0] and b[4] == "go_straight" for b in ego.actions) \
+                and any(not e.is_ego and any(b[4] == a[4] for b in e.actions) for e in r.entities):
+            ego.actions.remove(a)
 
 
 PATIENT_WORDS = {"pt", "patient", "casualty", "moi", "atmist", "gcs", "injuries", "conveyance", "conveyed", "ems"}
