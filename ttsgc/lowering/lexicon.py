@@ -1151,13 +1151,15 @@ def _comment_block(text: str) -> str:
 
 
 CODE_SPAN = re.compile(r"`[^`\n]*[().=<>/\[\]{}][^`\n]*`")  # "`vehicle.apply_control()`": code quoted, no scene
+CAMEL_CASE = re.compile(r"\b[a-z]{2,}(?:[A-Z][a-z0-9]*)+\b")  # "I tried changeLane via TraCI", "lcSpeedGain": an
+# identifier of code, no words of the scene (not "vType passenger": its one letter names what follows)
 
 
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = CODE_SPAN.sub(" ", _comment_block(text))
+    text = CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _comment_block(text)))
     text = _without_members_described(
         _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(text))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names

@@ -2890,6 +2890,10 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
     """'Should I have been able to stop?', 'Who should give way?', 'Do I have to wait?': a question about what
     ought to happen is no account of what did (a request for a scene is no such question)."""
     words = [t.word for t in _sentence(tokens, sentence)]
+    if words[:1] == ["how"] and words[2:3] in (["i"], ["we"]) and any(
+            t.word == "ego" and t.sentence < sentence for t in tokens):
+        return True  # "... and a truck cuts into the ego's lane. How do I force that lane change?": how to build the
+        # scene told before, by one who builds it
     if len(words) < 2 or set(words) & ASKING_FOR_A_SCENE - {"have"}:
         return False
     if (words[0] in QUESTION_WORDS or words[:2] == ["in", "which"]) and set(words) & DEONTIC:
