@@ -8669,3 +8669,9 @@ def test_a_driving_stacks_document_names_the_ego_the_main_vehicle(ego):
                   f"the major road from the right side. {ego} must stop at the stop line first, then turn left after it "
                   "has passed.")
     assert ("car", "stop", "ego") in said and ("car", "turn_left", "ego") in said
+
+
+def test_someone_feared_for_in_the_future_is_no_one_of_the_scene():
+    said = agents("Yesterday I was driving out there with a guy on a bike riding on the shoulder just ahead of me on "
+                  "the right. Somebody is going to get killed out there.")
+    assert not any(k[0] == "pedestrian" for k in said)

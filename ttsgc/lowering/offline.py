@@ -3077,6 +3077,10 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
         return True
     if t.question and _asks_what_to_do(tokens, t.sentence):
         return True
+    after = [x.word for x in tokens[u.end:u.end + 3] if x.sentence == t.sentence]
+    if u.category == "agents" and t.word in ANYONE and not counted and (
+            after[:3] == ["is", "going", "to"] or after[:1] in (["will"], ["gonna"])):
+        return True  # "somebody is going to get killed out there": a fear for the future, no one of the scene
     if u.category == "agents" and t.word in ANYONE and before is not None and \
             before.word in ("once", "when", "whenever", "if") and any(
                 x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
