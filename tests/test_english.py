@@ -8657,8 +8657,8 @@ def test_you_in_advice_after_the_scene_is_said_to_all():
 
 
 def test_a_builders_how_question_and_code_identifiers_after_the_scene_are_no_scene():
-    said = agents("For my thesis I need a scene where the ego vehicle drives straight on a 2-lane edge and a truck in the "
-                  "left lane ahead of it changes into the ego's lane. How do I force that lane change at a given "
+    said = agents("For my thesis I need a scene where the ego vehicle drives straight on a 2-lane edge and a truck in "
+                  "the left lane ahead of it changes into the ego's lane. How do I force that lane change at a given "
                   "position? I tried changeLane via TraCI but the truck ignores it.")
     assert ("car", "go_straight", "ego") in said and ("truck", "change_lane_to_right", "front_left") in said
 
@@ -8666,8 +8666,8 @@ def test_a_builders_how_question_and_code_identifiers_after_the_scene_are_no_sce
 @pytest.mark.parametrize("ego", ["The main vehicle", "The ADC"])
 def test_a_driving_stacks_document_names_the_ego_the_main_vehicle(ego):
     said = agents(f"{ego} is on the minor road of a T junction with a stop sign. One obstacle vehicle approaches on "
-                  f"the major road from the right side. {ego} must stop at the stop line first, then turn left after it "
-                  "has passed.")
+                  f"the major road from the right side. {ego} must stop at the stop line first, then turn left after "
+                  "it has passed.")
     assert ("car", "stop", "ego") in said and ("car", "turn_left", "ego") in said
 
 

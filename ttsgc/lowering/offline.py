@@ -8515,7 +8515,7 @@ def _the_customers_vehicle(r: _Reader) -> None:
 
 def _the_logs_own_vehicle(r: _Reader) -> None:
     """'Shuttle braked to a stop behind it', 'a taxi sat behind us ... Shuttle stopped at the stop line': an
-    operator's log names its own vehicle bare, as a sentence's subject, while 'we' and 'us' are the ego; that
+    operator's log names its own vehicle bare, opening a sentence, while 'we' and 'us' are the ego; that one
     vehicle, placed by no one but in a lane of its own, is the ego's."""
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None:
