@@ -8647,6 +8647,9 @@ def test_an_operators_log_names_its_own_vehicle_bare():
     assert ("truck", "go_straight", "ego") in agents(
         "I'm rolling up in the truck, and the two cars that had bumped were still sat in my lane in front of me. "
         "Ambulance had already been and gone.")
+    assert ("car", "turn_right", "ego") in agents(  # a commentary's bare noun with its participle: another
+        "Night, rain. Approaching junction, turning right into Market Street. Car waiting to come out of Market "
+        "Street. Control asking for our ETA, leave it.")
 
 
 def test_you_in_advice_after_the_scene_is_said_to_all():
@@ -8675,3 +8678,18 @@ def test_someone_feared_for_in_the_future_is_no_one_of_the_scene():
     said = agents("Yesterday I was driving out there with a guy on a bike riding on the shoulder just ahead of me on "
                   "the right. Somebody is going to get killed out there.")
     assert not any(k[0] == "pedestrian" for k in said)
+
+
+@pytest.mark.parametrize("move", ["moves into your lane just in front of you", "enters suddenly in your lane in front "
+                                  "of you"])
+def test_in_front_after_the_lane_a_cut_in_ends_in_is_where_it_ends(move):
+    said = agents(f"It is raining. You are driving a car on the motorway. The motorway has three lanes. A van is in the "
+                  f"lane on your left. The van {move}.")
+    assert ("car", "change_lane_to_right", "left") in said
+
+
+def test_footage_sent_to_the_poster_is_told_from_the_driver_who_sent_it():
+    said = agents("Dashcam footage sent to us by the driver of a silver Corolla on the M6 last night. She's in the "
+                  "middle lane of the three-lane motorway when a white van in the lane to her left cuts dangerously "
+                  "across in front of her without indicating.")
+    assert sorted(said) == [("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]

@@ -7370,12 +7370,15 @@ def _swerves_in_front(units, i) -> bool:
     j = i - 1
     while j >= 0 and (units[j].category == "word" and units[j].word in SWERVE_ADVERBS or
                       units[j].category == "behaviours" and len(units[j].tokens) == 1 or
-                      [t.word for t in units[j].tokens] == ["straight"]):
+                      [t.word for t in units[j].tokens] == ["straight"] or
+                      units[j].category == "positions" and units[j].meaning in ("ego_lane", "into_ego_lane") or
+                      units[j].category == "comma" and j + 1 < i and units[j + 1].word == "just"):
         j -= 1  # "pulled sharply across in front of us", "cuts straight in front of me": a manner adverb between
-        # the verb and its path
+        # the verb and its path; "moves into your lane, just in front of you": the lane it ends in, said first
     verb = units[j] if j >= 0 else None
     if verb is None or verb.category != "actions" or not (
-            verb.meaning in ("cut_in", "lane_change") or verb.tokens[0].base in STEERING | {"swing", "dart", "cut"}
+            verb.meaning in ("cut_in", "lane_change") or
+            verb.tokens[0].base in STEERING | {"swing", "dart", "cut", "enter", "squeeze", "dive", "nip", "push"}
             or verb.meaning in ("move", "stop", "block") and _from_a_side_lane(units, j)):
         return False  # (any verb of one said in the lane beside: "from the left lane goes in front of us")
     if u.tokens[-1].word in ("me", "us", "you", "ego"):
@@ -8151,8 +8154,9 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if not driver_named and any(t.word == "ego" for t in r.tokens):
         return None  # "a lorry swings wide, crossing into the ego's lane": the ego is named, if only by its lane
     ordered = sorted(r.entities, key=lambda e: e.key)
-    driver = next((e for e in ordered if not e.is_ego and e.head == "driver" and not e.definite and
-                   _may_drive_the_scene(e)), None)
+    driver = next((e for e in ordered if not e.is_ego and e.head == "driver" and (not e.definite or [
+        t.word for t in r.tokens[e.said_at + 1:e.said_at + 3]] in (["of", "a"], ["of", "an"])) and
+                   _may_drive_the_scene(e)), None)  # ("the driver of a silver Corolla": named here first)
     if driver is not None and not driver_named:
         return driver  # "an eastbound driver on Park Road may not see a fire engine coming out": the one the case
         # is told from, as an audit or a rule names the road user it is about
@@ -8221,6 +8225,8 @@ def _drives(after: list[Token]) -> bool:
 
 SEEN_FROM_A_SEAT = {"saw", "see", "noticed", "notice", "spotted", "spot", "heard", "looked", "glanced", "checked",
                     "clocked", "caught"}
+SENT_TO = {"sent", "forwarded", "emailed", "posted", "submitted", "shared", "reported", "handed", "given", "shown",
+           "uploaded", "passed", "mailed", "delivered", "supplied", "provided"}
 SPEAKER_PLACES = {"of", "behind", "beside", "past", "passed", "to", "at", "into", "towards", "toward", "overtook",
                   "overtakes", "overtake", "hit", "cut", "followed", "follows", "by", "alongside", "round", "around",
                   "with", "near"}  # "in front of me", "cut us up", "came at me": someone is placed by the speaker
@@ -8245,8 +8251,9 @@ def _speaker_on_the_road(r: _Reader) -> bool:
         if w in ("my", "our") and k + 1 < len(words) and words[k + 1] in ("dashcam", "dash", "camera", "footage",
                                                                           "video", "recording"):
             return True  # "my dashcam caught it": filmed from the speaker's car
-        if w in ("me", "us") and k > 0 and words[k - 1] in SPEAKER_PLACES:
-            return True
+        if w in ("me", "us") and k > 0 and words[k - 1] in SPEAKER_PLACES and not (
+                k > 1 and words[k - 1] == "to" and words[k - 2] in SENT_TO):
+            return True  # (not "footage sent to us by the driver of a Corolla": told to them, not met on the road)
         if w in ("my", "our") and k + 1 < len(words) and (lexicon().phrases.get((words[k + 1],)) or ("", ""))[0] in (
                 "agents", "positions", "bodies") or w in ("my", "our") and k + 1 < len(words) and words[k + 1] in (
                 "lane", "left", "right", "side", "mirror", "bumper", "bonnet", "windscreen", "way", "path", "inside",
@@ -8534,8 +8541,10 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
         all(f in own or f.startswith("compass_") or f.startswith("side_") and f"named_lane_{f[5:]}" in e.features
             for f in e.features) and
         (e.relative_to is None or e.relative_how == "behind") and any(
-            t.word == e.head and (t.index == 0 or r.tokens[t.index - 1].sentence != t.sentence)
-            for t in r.tokens)]
+            t.word == e.head and (t.index == 0 or r.tokens[t.index - 1].sentence != t.sentence) and
+            t.index + 1 < len(r.tokens) and r.tokens[t.index + 1].sentence == t.sentence and
+            r.tokens[t.index + 1].word != "," and not r.tokens[t.index + 1].word.endswith("ing")
+            for t in r.tokens)]  # (not a commentary's "Car waiting to come out", a list's "Ego: SUV, turns right")
     if len(candidates) != 1:
         return
     vehicle = candidates[0]
@@ -8546,14 +8555,17 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
 
 
 def _the_named_turn_is_anothers(r: _Reader) -> None:
-    """'Left Turn Across Path, HV going straight. ... RV1 turns left across the HV's path': a case named by a turn
-    the text then gives to another, while the ego is said to go straight in that stage, is the other's turn."""
+    """'Left Turn Across Path, HV going straight. ... RV1 turns left across the HV's path', 'I go straight ... The
+    truck in front of me it turn right': a turn read for an ego said to go straight in that stage, which another
+    road user placed in the scene makes, is the other's (a case's name, a pronoun said again)."""
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None or "straight_on" not in ego.features:
         return
     for a in list(ego.actions):
-        if a[4] in ("turn_left", "turn_right") and any(b[0] == a[0] and b[4] == "go_straight" for b in ego.actions) \
-                and any(not e.is_ego and any(b[4] == a[4] for b in e.actions) for e in r.entities):
+        if a[4] in ("turn_left", "turn_right") and any(
+                b[0] == a[0] and b[4] == "go_straight" for b in ego.actions) and any(
+                not e.is_ego and (e.features or e.relative_to is not None) and any(b[4] == a[4] for b in e.actions)
+                for e in r.entities):  # (another placed somewhere: not one unplaced that may be the ego itself)
             ego.actions.remove(a)
 
 
