@@ -8693,3 +8693,23 @@ def test_footage_sent_to_the_poster_is_told_from_the_driver_who_sent_it():
                   "middle lane of the three-lane motorway when a white van in the lane to her left cuts dangerously "
                   "across in front of her without indicating.")
     assert sorted(said) == [("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]
+
+
+def test_an_ego_that_filters_or_rides_rides_a_motorbike():
+    assert ("motorcycle", "go_straight", "ego") in agents(
+        "You're filtering slowly between two lanes of stationary traffic. A car in the right-hand lane just ahead of "
+        "you pulls across into the left lane.")
+    assert ("car", "go_straight", "ego") in agents(
+        "I ride the centre's van to my appointments, and on Tuesday a sports car in the left lane cut right across in "
+        "front of us.")
+    assert ("car", "go_straight", "ego") in agents(
+        "Three lanes of queueing traffic, and a motorbike is filtering up between the lanes from behind me.")
+
+
+def test_a_crews_log_names_its_own_vehicle_as_one_known():
+    said = agents("Run 3318, 02:40, dark. An ambulance came up quickly behind us in our lane with lights and siren, "
+                  "and the truck changed to the right lane to let it by.")
+    assert ("truck", "change_lane_to_right", "ego") in said
+    said = agents("The truck was in the right lane of a three-lane section when a pickup in the center lane made a "
+                  "sudden cut-in directly in front of us with barely a truck length to spare.")
+    assert sorted(said) == [("car", "change_lane_to_right", "left"), ("truck", "go_straight", "ego")]

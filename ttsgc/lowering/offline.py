@@ -7990,6 +7990,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_customers_vehicle(r)
     _the_logs_own_vehicle(r)
     _the_named_turn_is_anothers(r)
+    _a_riders_ego(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
@@ -8521,27 +8522,31 @@ def _the_customers_vehicle(r: _Reader) -> None:
 
 
 def _the_logs_own_vehicle(r: _Reader) -> None:
-    """'Shuttle braked to a stop behind it', 'a taxi sat behind us ... Shuttle stopped at the stop line': an
-    operator's log names its own vehicle bare, opening a sentence, while 'we' and 'us' are the ego; that one
-    vehicle, placed by no one but in a lane of its own, is the ego's."""
+    """'Shuttle braked to a stop behind it', 'a taxi sat behind us ... Shuttle stopped at the stop line', 'when a
+    pickup cut in front of us ... so the truck yielded': a crew's log names its own vehicle bare or as one known
+    ('the truck'), opening a clause, while 'we' and 'us' are the ego; that one vehicle, placed by no one but in a
+    lane of its own, is the ego's."""
     ego = next((e for e in r.entities if e.is_ego), None)
-    if ego is None:
-        if not any(t.word in ("we", "us", "our") for t in r.tokens):
-            return
-    elif not (ego.head in ("we", "us", "i", "me", "op") or ego.head == "ego" and
-              not any(t.word == "ego" for t in r.tokens)) or ego.type != "car" or \
-            any(name.split()[-1] not in SELF_NAMES | {"ego", "op"} for name in ego.aliases if name):
+    if not any(t.word in ("we", "us", "our") for t in r.tokens):
+        return  # (a story's "Joe turned right ... The van behind him stopped": no crew telling of its vehicle)
+    if ego is not None and (
+            not (ego.head in ("we", "us", "i", "me", "op") or ego.head == "ego" and
+                 not any(t.word == "ego" for t in r.tokens)) or ego.type != "car" or
+            any(name.split()[-1] not in SELF_NAMES | {"ego", "op"} for name in ego.aliases if name)):
         return  # the speakers, or an ego supplied for a verb with no subject, in no vehicle of their own ("I'm
         # rolling up in the truck" is)
     own = {"lane_said", "overtaking", "parked", "straight_on", "middle_lane"} | {f"named_lane_{side}" for side in SIDES}
     candidates = [
         e for e in r.entities if not e.is_ego and e.count == 1 and e.type in ("car", "bus", "truck") and
-        e.actions and not e.label and not any(
+        (e.actions or any(f.startswith("named_lane_") for f in e.features)) and not e.label and not any(
             x is not e and not x.is_ego and x.head == e.head for x in r.entities) and
         all(f in own or f.startswith("compass_") or f.startswith("side_") and f"named_lane_{f[5:]}" in e.features
             for f in e.features) and
-        (e.relative_to is None or e.relative_how == "behind") and any(
-            t.word == e.head and (t.index == 0 or r.tokens[t.index - 1].sentence != t.sentence) and
+        (e.relative_to is None or e.relative_how == "behind" and not e.relative_to.is_ego) and any(
+            t.word == e.head and (t.index == 0 or r.tokens[t.index - 1].sentence != t.sentence or
+                                  e.definite and r.tokens[t.index - 1].word == "the" and (
+                                      t.index == 1 or r.tokens[t.index - 2].sentence != t.sentence or
+                                      r.tokens[t.index - 2].word in (",", "and", "so", "then", "but"))) and
             t.index + 1 < len(r.tokens) and r.tokens[t.index + 1].sentence == t.sentence and
             r.tokens[t.index + 1].word != "," and not r.tokens[t.index + 1].word.endswith("ing")
             for t in r.tokens)]  # (not a commentary's "Car waiting to come out", a list's "Ego: SUV, turns right")
@@ -8552,6 +8557,30 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
         vehicle.relative_to.features.add("ahead")
         vehicle.relative_to = None
     _now_the_ego(r, vehicle, "a log names its own vehicle bare")
+
+
+FILTERING = {"filter", "filters", "filtering", "filtered"}
+RIDING = {"ride", "rides", "riding", "rode"}
+
+
+def _a_riders_ego(r: _Reader) -> None:
+    """'You're filtering between two lanes of stationary traffic', 'you ease off and ride slowly towards it': an ego
+    named by no vehicle that filters through traffic, or is said to ride (not in or on something), rides a
+    motorbike; one on a bicycle is no ego this language has."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or ego.type != "car" or \
+            any(name.split()[-1] not in SELF_NAMES | {"ego", "rider"} for name in ego.aliases | {ego.head} if name):
+        return
+    words = [t.word for t in r.tokens]
+    said_of_the_ego = ("you", "i", "we", "you're", "i'm", "we're")
+    said = any(w in RIDING | FILTERING and not (words[k + 1:k + 2] and words[k + 1] in (  # not "I ride the van"
+        {"in", "on", "with", "as"} | DETERMINERS | OWNERS)) and (
+        words[k - 1:k] and words[k - 1] in said_of_the_ego or words[max(0, k - 2):k] in (
+            ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
+        w in FILTERING and (k == 0 or r.tokens[k - 1].sentence != r.tokens[k].sentence))  # "Filtering past a queue"
+        for k, w in enumerate(words))
+    if said or ego.head == "rider":
+        ego.type = "motorcycle"
 
 
 def _the_named_turn_is_anothers(r: _Reader) -> None:
