@@ -8713,3 +8713,12 @@ def test_a_crews_log_names_its_own_vehicle_as_one_known():
     said = agents("The truck was in the right lane of a three-lane section when a pickup in the center lane made a "
                   "sudden cut-in directly in front of us with barely a truck length to spare.")
     assert sorted(said) == [("car", "change_lane_to_right", "left"), ("truck", "go_straight", "ego")]
+
+
+def test_a_commentarys_nearside_and_its_participle_after_the_others_are_through():
+    assert ("car", "stop", "road_of_left_turn") in agents(
+        "Approaching crossroads, give way lines my side. Van waiting to emerge from the nearside road, cyclist ahead "
+        "of me, hanging back.")
+    said = agents("Stopped at the stop line. A lorry comes from the right. Once it is through, turning left.")
+    assert ("car", "stop", "ego") in said and ("car", "turn_left", "ego") in said
+    assert ("truck", "go_straight", "road_of_right_turn") in said

@@ -247,8 +247,9 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
                      "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic",
-                     "pelican", "puffin", "toucan", "footpath", "ute"}  # "without indicating", a pelican crossing,
-# a ute: keep-left countries' words
+                     "pelican", "puffin", "toucan", "footpath", "ute", "nearside", "offside", "kerb", "kerbside",
+                     "lollipop"}  # "without indicating", a pelican crossing, a ute, the kerb and its nearside:
+# keep-left countries' words
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
@@ -3419,6 +3420,8 @@ def _gone_by(units: list[Unit]) -> bool:
         if u.category == "actions" and (words & {"pass", "clear", "past", "by"} or u.meaning == "move" and
                                         k + 1 < len(units) and units[k + 1].word in ("by", "past", "through")):
             return True
+        if u.word in COPULAS and k + 1 < len(units) and units[k + 1].word in ("through", "past", "clear", "gone"):
+            return True  # "once both are through", "he's clear"
     return False
 
 
@@ -7906,6 +7909,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                 clause.units[0].word in ("it", "he", "she") and _gone_by(clauses[k - 1].units):
             previous = outside_condition  # "the ego waits to turn; once the oncoming car has gone by, it turns": the
             # one who waited, not the one gone
+        speaker = next((e for e in r.entities if e.is_ego), None)
+        if k > 0 and clauses[k - 1].condition and not clause.condition and speaker is not None and clause.units and \
+                clause.units[0].category == "actions" and clause.units[0].tokens[0].word.endswith("ing") and \
+                _gone_by(clauses[k - 1].units):
+            previous = [speaker]  # a commentary's "once both are through, turning left": the speaker's doing
         before = len(r.entities)
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         subject = _read_clause(r, clause, previous, recent, pending)
