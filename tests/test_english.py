@@ -8722,3 +8722,17 @@ def test_a_commentarys_nearside_and_its_participle_after_the_others_are_through(
     said = agents("Stopped at the stop line. A lorry comes from the right. Once it is through, turning left.")
     assert ("car", "stop", "ego") in said and ("car", "turn_left", "ego") in said
     assert ("truck", "go_straight", "road_of_right_turn") in said
+
+
+@pytest.mark.parametrize("prompt", [
+    "Scenario: ego turns left at a junction while a truck comes from the opposite direction.\nWeather: rain.",
+    "TC-1 FAILED. Scene: ego turns left at a junction while a truck comes from the opposite direction. Log: x.mcap."])
+def test_a_scene_key_whose_value_tells_the_scene_is_no_title(prompt):
+    said = agents(prompt)
+    assert ("car", "turn_left", "ego") in said and ("truck", "go_straight", "road_of_straight") in said
+
+
+def test_pulling_out_in_front_of_a_road_user_is_the_subjects_doing():
+    said = agents("The ego, turning left out of a T-junction, pulled out in front of a motorcycle coming from the "
+                  "right.")
+    assert ("motorcycle", "go_straight", "road_of_right_turn") in said

@@ -681,6 +681,7 @@ def _lines(text: str) -> str:
     staged = False
     phased = any((m := KEY_LINE.match(line)) and PHASE_KEY.fullmatch(m.group(1).strip().lower()) for line in lines)
     speakers = _speakers(lines)
+    gherkin = any(line.lstrip().startswith(("Given ", "When ", "Then ")) for line in lines)
     for k, line in enumerate(lines):
         if not line.strip():
             continue
@@ -711,7 +712,10 @@ def _lines(text: str) -> str:
             value = re.split(rf",?\s+(?:and\s+)?(?:{_later_words()})\b", value)[0]  # "Ego: follows HGV, then (after
             # that) pulls out": the phases
             # below tell what comes when; the line before them says who is there and how it starts
-        if lowered.split()[0] in TITLE_KEYS or lowered.startswith("crossing type") or k == 0 and \
+        told = "ego" in [w.lower() for w in value.split()[:2]] and len(value.split()) >= 5 and not gherkin
+        # "Scene: ego turning left at a signalised intersection, one oncoming sedan going straight": the scene
+        # itself, no title (but a Gherkin scenario's name, told again by its steps)
+        if lowered.split()[0] in TITLE_KEYS and not told or lowered.startswith("crossing type") or k == 0 and \
                 CASE_NUMBER.fullmatch(key) and not _names_agent(key) and not line.rstrip().endswith((".", "!", "?")):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
         elif lowered in PLAIN_KEYS or lowered.split()[0] in ROAD_KEYS:

@@ -6016,8 +6016,8 @@ def _actor_of_a_named_action(units: list[Unit], verbs: list[int], phrases: list[
     'by'."""
     if not verbs or any(np.index < verbs[0] and np.entity is not None for np in phrases):
         return None
-    if units[verbs[0]].tokens[-1].word in SHORT_OF:
-        return None  # "stopping short of him": where it stopped, not who did
+    if units[verbs[0]].tokens[-1].word in SHORT_OF | {"front"}:
+        return None  # "stopping short of him", "pulled out in front of a motorcycle": where it went, not who did
     j = verbs[0] + 1
     while j < len(units) and units[j].word in ACTION_NOUN_TAILS:
         j += 1
