@@ -8736,3 +8736,9 @@ def test_pulling_out_in_front_of_a_road_user_is_the_subjects_doing():
     said = agents("The ego, turning left out of a T-junction, pulled out in front of a motorcycle coming from the "
                   "right.")
     assert ("motorcycle", "go_straight", "road_of_right_turn") in said
+
+
+def test_a_querys_ego_type_is_what_the_ego_is():
+    said = agents("FIND clips WHERE ego_type = truck AND ego changes lane right AND car approaching in right lane "
+                  "behind ego")
+    assert sorted(said) == [("car", "go_straight", "back_right"), ("truck", "change_lane_to_right", "ego")]

@@ -936,6 +936,8 @@ ASIDES = (  # (pattern, replacement): what a text says around its scene, read fo
     (r"(?:^|(?<=[.!?]\s))(?:please )?(?:evaluate|assess|measure|verify|describe|discuss|explain)"
      r"\b(?!\s*:)[^.!?\n]*[.!?]?", " "),  # "Evaluate the distance at which your vehicle yields.": the task set
     # on the scene, no scene
+    (r"\bego[ _]?(?:type|class|kind)\s*(?:==?|:|is)\s*'?([a-z]+)'?", r"the ego is a \1,"),  # a query's "ego_type =
+    # 'bus'": what the ego is
 )
 
 
