@@ -8742,3 +8742,9 @@ def test_a_querys_ego_type_is_what_the_ego_is():
     said = agents("FIND clips WHERE ego_type = truck AND ego changes lane right AND car approaching in right lane "
                   "behind ego")
     assert sorted(said) == [("car", "go_straight", "back_right"), ("truck", "change_lane_to_right", "ego")]
+
+
+def test_an_eighteen_wheeler_and_a_stop_not_needed():
+    said = agents("An 18 wheeler was broken down on the shoulder ahead of me on the right, and I braked but didn't "
+                  "have to stop.")
+    assert ("truck", "stop", "front_right") in said and ("car", "go_straight", "ego") in said

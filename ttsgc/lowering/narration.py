@@ -728,8 +728,10 @@ AGE = re.compile(rf"\b{AGE_NUMBER}(?:[\s-]+(?:years?|yrs?)[\s-]+old(?P<noun>s)?|
 
 MEASURE = re.compile(r"\b\d+(?:\.\d+)?-(?:tonnes?|tons?|tonner|t|foot|feet|ft|metres?|meters?|m|seaters?|axles?|"
                      r"doors?|wheeled|passengers?|cylinders?|litres?|liters?)\b(?=\s+[a-z])|"
-                     r"\b\d+(?:\.\d+)?\s+(?:tonnes?|tons?|tonner|seaters?|axles?|wheelers?)\b(?=\s+[a-z])", re.I)
-# ('a 7.5 tonne lorry': a weight said apart from its number is no distance, as '10 metres ahead' is)
+                     r"\b\d+(?:\.\d+)?\s+(?:tonnes?|tons?|tonner|seaters?|axles?)\b(?=\s+[a-z])|"
+                     r"\b\d+\s+wheelers?\b(?=\s+(?:trucks?|lorry|lorries|rigs?|semis?|trailers?)\b)", re.I)
+# ('a 7.5 tonne lorry': a weight said apart from its number is no distance, as '10 metres ahead' is; 'an 18
+# wheeler was broken down' names the truck itself)
 
 
 TONNER = re.compile(r"\b\d+(?:\.\d+)?[\s-]tonner(s?)\b(?!\s+(?:lorry|lorries|truck|trucks|hgv|wagon|van))", re.I)

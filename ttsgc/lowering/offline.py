@@ -6155,9 +6155,10 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
                                                      "fully", "full", "quite", "whatever", "for", "any", "of",
                                                      "anyone", "anybody", "make", "makes", "made", "take",
                                                      "takes", "took", "perform", "performs", "performed", "just",
-                                                     "simply", "easily", "safely", "then")) \
+                                                     "simply", "easily", "safely", "then", "have", "has", "had",
+                                                     "need", "needs", "needed")) \
                 and u.category != "actions" and not (u.category == "agents" and u.meaning == "ego"):
-            # ("nowhere whatever for any of us to pull over", "no room for me to move over")
+            # ("nowhere whatever for any of us to pull over", "no room for me to move over", "didn't have to stop")
             return False
     return False
 
