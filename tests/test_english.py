@@ -8748,3 +8748,11 @@ def test_an_eighteen_wheeler_and_a_stop_not_needed():
     said = agents("An 18 wheeler was broken down on the shoulder ahead of me on the right, and I braked but didn't "
                   "have to stop.")
     assert ("truck", "stop", "front_right") in said and ("car", "go_straight", "ego") in said
+
+
+def test_a_scenario_languages_param_and_a_pushchair_without_its_article_are_no_one():
+    said = agents("ego = Car on a rural road. oncoming1 = Car in the opposite lane driving toward ego. param weather = "
+                  "snow, param timeOfDay = sunset.")
+    assert not any(k[0] == "pedestrian" for k in said)
+    said = agents("Female ped with pushchair crosses in front of the ego on the pedestrian crossing.")
+    assert [k for k in said if k[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "near_the_crosswalk")]
