@@ -8756,3 +8756,12 @@ def test_a_scenario_languages_param_and_a_pushchair_without_its_article_are_no_o
     assert not any(k[0] == "pedestrian" for k in said)
     said = agents("Female ped with pushchair crosses in front of the ego on the pedestrian crossing.")
     assert [k for k in said if k[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_markdown_bold_keys_and_a_description_key_are_read_as_the_scene():
+    said = agents("**Scenario: Unprotected Left Turn at Dusk**\n\n- **Ego vehicle:** Sedan, turning left\n"
+                  "- **Other actors:** Two oncoming cars going straight through the intersection")
+    assert sorted(said) == [("car", "go_straight", "road_of_straight")] * 2 + [("car", "turn_left", "ego")]
+    said = agents("**Scenario: Police Roadblock**\n\n**Description:** Late at night on a single-lane rural road, two "
+                  "patrol cars are parked across the ego's lane ahead, blocking the road completely.")
+    assert [k for k in said if k[0] == "police"] == [("police", "block_the_ego", "front")] * 2

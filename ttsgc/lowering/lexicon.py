@@ -715,7 +715,8 @@ def _lines(text: str) -> str:
         told = "ego" in [w.lower() for w in value.split()[:2]] and len(value.split()) >= 5 and not gherkin
         # "Scene: ego turning left at a signalised intersection, one oncoming sedan going straight": the scene
         # itself, no title (but a Gherkin scenario's name, told again by its steps)
-        if lowered.split()[0] in TITLE_KEYS and not told or lowered.startswith("crossing type") or k == 0 and \
+        if lowered.split()[0] in TITLE_KEYS and lowered not in PLAIN_KEYS and not told or \
+                lowered.startswith("crossing type") or k == 0 and \
                 CASE_NUMBER.fullmatch(key) and not _names_agent(key) and not line.rstrip().endswith((".", "!", "?")):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
         elif lowered in PLAIN_KEYS or lowered.split()[0] in ROAD_KEYS:
@@ -1091,6 +1092,9 @@ def _weather_tags(m: re.Match) -> str:
     return (" " + ", ".join(said) + ".") if said else ""
 
 
+MARKDOWN_EMPHASIS = re.compile(r"(\*\*|__)(?=\S)(.+?)(?<=\S)\1")  # "- **Ego vehicle:** Sedan": the words, not their bold
+
+
 def _without_social_markup(text: str) -> str:
     """A post's handles ('@WestMidsPolice is it worth reporting') name whom it is addressed to, and the tags it
     ends with ('#cycling #schoolbus') file it under a topic: neither is a road user of the scene, whatever
@@ -1165,7 +1169,7 @@ def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _comment_block(text)))
+    text = MARKDOWN_EMPHASIS.sub(r"\2", CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _comment_block(text))))
     text = _without_members_described(
         _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(text))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
