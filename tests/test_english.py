@@ -8765,3 +8765,11 @@ def test_markdown_bold_keys_and_a_description_key_are_read_as_the_scene():
     said = agents("**Scenario: Police Roadblock**\n\n**Description:** Late at night on a single-lane rural road, two "
                   "patrol cars are parked across the ego's lane ahead, blocking the road completely.")
     assert [k for k in said if k[0] == "police"] == [("police", "block_the_ego", "front")] * 2
+
+
+def test_the_road_turned_into_named_again_is_where_the_ego_heads():
+    said = agents("I turned right onto Walnut Street, and a school bus was parked on Walnut Street with its flashers on.")
+    assert ("bus", "stop", "at_the_destination") in said
+    said = agents("The ego waits at the give way line to turn left into the main road. A car on the main road comes "
+                  "from the right.")
+    assert ("car", "go_straight", "road_of_right_turn") in said

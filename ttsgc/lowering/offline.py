@@ -912,6 +912,7 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
     'there') in the same or the next sentence is where the ego is heading."""
     out: list[Unit] = []
     until = -1  # the last sentence in which the road turned into may be said again
+    name: list[str] = []  # its words, when they name it ("Walnut Street", "the main road"): said again anywhere
     k = 0
     while k < len(units):
         u = units[k]
@@ -927,9 +928,30 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
             end = next(j for j in range(k, min(k + 4, len(units))) if units[j].tokens[-1].word in ROAD_NOUNS and
                        units[j].category != "agents")
             out.extend(units[k:end + 1])
+            said = [t.word for x in units[k:end + 1] for t in x.tokens if t.word not in ("a", "an", "the")]
+            name = said if len(said) >= 2 and all(x.category == "word" for x in units[k:end]) else []
             k = end + 1
             until = sentence + 1
             continue
+        if name and u.category == "word" and u.word in ("on", "in", "along", "down", "up") and k + 1 < len(units):
+            first = k + 1 + (units[k + 1].word == "the")
+            span = list(itertools.takewhile(lambda x: x.tokens[0].sentence == sentence, units[first:first + 4]))
+            words = [t.word for x in span for t in x.tokens]
+            sided = any(x.category == "positions" and x.meaning in (
+                "from_left", "from_right", "road_left", "road_right", "road_straight", "toward", "oncoming",
+                "side_left", "side_right")
+                for x in units if x.tokens[0].sentence == sentence)  # ("a car on the main road comes from the
+            # right": the road is where it comes along, from its side)
+            if words[:len(name)] == name and not sided:  # "... onto Walnut Street; a school bus parked right there on
+                last = first + next(j for j in range(len(span)) if len([t for x in span[:j + 1] for t in x.tokens])
+                                    >= len(name))  # Walnut Street": where the ego is heading
+                if all(x.category in ("word", "road", "positions") for x in units[first:last + 1]) and \
+                        len([t for x in units[first:last + 1] for t in x.tokens]) == len(name):
+                    out.append(u)
+                    tokens = tuple(t for x in units[first:last + 1] for t in x.tokens)
+                    out.append(Unit(units[first].start, units[last].end, "positions", "destination", tokens))
+                    k = last + 1
+                    continue
         before = out[-1] if out else None
         done_to = before is not None and (before.category == "actions" and before.meaning == "cross" or
                                           before.word in INTO_THE_ROAD)
