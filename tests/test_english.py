@@ -8773,3 +8773,13 @@ def test_the_road_turned_into_named_again_is_where_the_ego_heads():
     said = agents("The ego waits at the give way line to turn left into the main road. A car on the main road comes "
                   "from the right.")
     assert ("car", "go_straight", "road_of_right_turn") in said
+
+
+@pytest.mark.parametrize("prompt", [
+    "On Friday evening the driver of a blue hatchback turned right at the junction, straight across the path of an "
+    "oncoming motorcyclist. Footage from the hatchback's own dashcam shows the rider had his headlight on.",
+    "Dashcam from a grey Civic turning right at the crossroads yesterday afternoon, straight across the path of an "
+    "oncoming motorcyclist. Both walked away."])
+def test_a_clip_is_told_from_the_vehicle_whose_camera_filmed_it(prompt):
+    said = agents(prompt)
+    assert ("car", "turn_right", "ego") in said and ("motorcycle", "go_straight", "road_of_straight") in said

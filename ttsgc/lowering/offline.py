@@ -8022,6 +8022,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_logs_own_vehicle(r)
     _the_named_turn_is_anothers(r)
     _a_riders_ego(r)
+    _the_camera_car(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
@@ -8588,6 +8589,39 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
         vehicle.relative_to.features.add("ahead")
         vehicle.relative_to = None
     _now_the_ego(r, vehicle, "a log names its own vehicle bare")
+
+
+CAMERA_WORDS = {"dashcam", "dashcams", "camera", "footage", "video", "clip", "cam"}
+
+
+def _the_camera_car(r: _Reader) -> None:
+    """'Footage from the hatchback's own dashcam shows ...', 'Dashcam from a grey Civic going straight across':
+    a clip is told from the vehicle whose camera filmed it; with no ego named but the teller, that vehicle is the
+    ego."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if any(t.word == "ego" for t in r.tokens) or ego is not None and (
+            ego.head not in ("ego", "we", "us") or ego.features):
+        return
+    words = [t.word for t in r.tokens]
+
+    def filmed(e: Entity) -> bool:
+        heads = {name.split()[-1] for name in e.aliases | {e.head} if name}
+        if e.head == "driver" and e.said_at >= 0:  # "the driver of a blue hatchback": the hatchback's
+            heads |= {x.word for x in r.tokens[e.said_at + 1:e.said_at + 6]
+                      if x.sentence == r.tokens[e.said_at].sentence}
+        for k, t in enumerate(r.tokens):
+            if t.word in heads and t.possessive and (words[k + 1:k + 2] and words[k + 1] in CAMERA_WORDS or
+                                                    words[k + 1:k + 3] and words[k + 1] == "own" and
+                                                    words[k + 2:k + 3] and words[k + 2] in CAMERA_WORDS):
+                return True  # "the hatchback's own dashcam"
+            if t.word in CAMERA_WORDS and words[k + 1:k + 2] in (["from"], ["of"]) and \
+                    k + 2 <= e.said_at <= k + 5 and words[k + 2] in ("a", "an", "the"):
+                return True  # "Dashcam from a grey Civic"
+        return False
+    filmers = [e for e in r.entities if not e.is_ego and e.count == 1 and e.type in V.EGO_TYPES and
+               e.type not in V.VULNERABLE_TYPES and filmed(e)]
+    if len(filmers) == 1:
+        _now_the_ego(r, filmers[0], "the clip is filmed from its camera")
 
 
 FILTERING = {"filter", "filters", "filtering", "filtered"}
