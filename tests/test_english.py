@@ -8683,8 +8683,8 @@ def test_someone_feared_for_in_the_future_is_no_one_of_the_scene():
 @pytest.mark.parametrize("move", ["moves into your lane just in front of you", "enters suddenly in your lane in front "
                                   "of you"])
 def test_in_front_after_the_lane_a_cut_in_ends_in_is_where_it_ends(move):
-    said = agents(f"It is raining. You are driving a car on the motorway. The motorway has three lanes. A van is in the "
-                  f"lane on your left. The van {move}.")
+    said = agents(f"It is raining. You are driving a car on the motorway. The motorway has three lanes. A van is in "
+                  f"the lane on your left. The van {move}.")
     assert ("car", "change_lane_to_right", "left") in said
 
 
@@ -8768,7 +8768,8 @@ def test_markdown_bold_keys_and_a_description_key_are_read_as_the_scene():
 
 
 def test_the_road_turned_into_named_again_is_where_the_ego_heads():
-    said = agents("I turned right onto Walnut Street, and a school bus was parked on Walnut Street with its flashers on.")
+    said = agents("I turned right onto Walnut Street, and a school bus was parked on Walnut Street with its "
+                  "flashers on.")
     assert ("bus", "stop", "at_the_destination") in said
     said = agents("The ego waits at the give way line to turn left into the main road. A car on the main road comes "
                   "from the right.")

@@ -1092,7 +1092,7 @@ def _weather_tags(m: re.Match) -> str:
     return (" " + ", ".join(said) + ".") if said else ""
 
 
-MARKDOWN_EMPHASIS = re.compile(r"(\*\*|__)(?=\S)(.+?)(?<=\S)\1")  # "- **Ego vehicle:** Sedan": the words, not their bold
+MARKDOWN_EMPHASIS = re.compile(r"(\*\*|__)(?=\S)(.+?)(?<=\S)\1")  # "- **Ego vehicle:** Sedan": words, not bold
 
 
 def _without_social_markup(text: str) -> str:
