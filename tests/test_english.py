@@ -1519,7 +1519,7 @@ def test_a_wide_vocabulary_of_road_users(noun, agent_type):
     ("A van on the right drifts over into the ego's lane ahead of it.", ("car", "change_lane_to_left", "front_right")),
     ("A pensioner steps off the kerb in front of us.", ("pedestrian", "cross_the_road", "front")),
     ("A lorry sits idling ahead of the ego.", ("truck", "stop", "front")),
-    ("A pickup on the offside overtakes us.", ("car", "go_straight", "back_left")),
+    ("A pickup on the offside overtakes us.", ("car", "go_straight", "back_right")),  # the offside: a British word
     ("A cyclist rides along on our kerb side.", ("cyclist", "go_straight", "right")),
 ])
 def test_verbs_and_places_as_drivers_say_them(prompt, expected):
@@ -6865,8 +6865,10 @@ def test_one_gone_by_in_a_condition_passes_while_the_waiting_one_waits_and_then_
      "behind.", [("car", "stop", "ego"), ("truck", "go_straight", "back")]),
     ("P1 (pedestrian) stepped into the carriageway from the offside footway. V1 braked but struck P1.",
      [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),  # keep left: offside right
-    ("The ego entered the junction and collided with a car coming from the nearside.",
-     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]),
+    ("The ego entered the junction and collided with a car coming from the nearside.",  # a British word: the
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),  # kerb side is the left
+    ("In the CPNA test the VUT drives straight and a pedestrian target crosses from the nearside.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),  # a protocol's: the right
     ("A pedestrian crosses the ego's path from the right.", [("car", "go_straight", "ego"),
                                                             ("pedestrian", "cross_the_road", "front_right")]),
 ])

@@ -247,9 +247,9 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
                      "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic",
-                     "pelican", "puffin", "toucan", "footpath", "ute", "nearside", "offside", "kerb", "kerbside",
-                     "lollipop"}  # "without indicating", a pelican crossing, a ute, the kerb and its nearside:
-# keep-left countries' words
+                     "pelican", "puffin", "toucan", "footpath", "ute", "lollipop", "nearside", "offside"}
+# "without indicating", a pelican crossing, a ute, a lollipop lady, the nearside and the offside: keep-left
+# countries' words (a test protocol's nearside is excluded by its own words)
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
