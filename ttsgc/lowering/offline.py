@@ -8570,7 +8570,8 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
     own = {"lane_said", "overtaking", "parked", "straight_on", "middle_lane"} | {f"named_lane_{side}" for side in SIDES}
     candidates = [
         e for e in r.entities if not e.is_ego and e.count == 1 and e.type in ("car", "bus", "truck") and
-        (e.actions or any(f.startswith("named_lane_") for f in e.features)) and not e.label and not any(
+        (e.actions or any(f.startswith("named_lane_") for f in e.features)) and not e.label and
+        not any(a[4] == "cut_in" for a in e.actions) and not any(  # ("the car in the left lane cuts in front of us")
             x is not e and not x.is_ego and x.head == e.head for x in r.entities) and
         all(f in own or f.startswith("compass_") or f.startswith("side_") and f"named_lane_{f[5:]}" in e.features
             for f in e.features) and
