@@ -8187,9 +8187,9 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if not driver_named and any(t.word == "ego" for t in r.tokens):
         return None  # "a lorry swings wide, crossing into the ego's lane": the ego is named, if only by its lane
     ordered = sorted(r.entities, key=lambda e: e.key)
-    driver = next((e for e in ordered if not e.is_ego and e.head == "driver" and (not e.definite or [
-        t.word for t in r.tokens[e.said_at + 1:e.said_at + 3]] in (["of", "a"], ["of", "an"])) and
-                   _may_drive_the_scene(e)), None)  # ("the driver of a silver Corolla": named here first)
+    driver = next((e for e in ordered if not e.is_ego and e.head == "driver" and _may_drive_the_scene(e) and (
+        not e.definite or [t.word for t in r.tokens[e.said_at + 1:e.said_at + 3]] in (["of", "a"], ["of", "an"]))),
+                  None)  # (so "the driver of a silver Corolla": named here for the first time)
     if driver is not None and not driver_named:
         return driver  # "an eastbound driver on Park Road may not see a fire engine coming out": the one the case
         # is told from, as an audit or a rule names the road user it is about
@@ -8589,7 +8589,7 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
     if vehicle.relative_to is not None:  # "Shuttle braked to a stop behind it": the one it stops behind is ahead
         vehicle.relative_to.features.add("ahead")
         vehicle.relative_to = None
-    _now_the_ego(r, vehicle, "a log names its own vehicle bare")
+    _now_the_ego(r, vehicle, "a crew's log names its own vehicle")
 
 
 CAMERA_WORDS = {"dashcam", "dashcams", "camera", "footage", "video", "clip", "cam"}
