@@ -8706,6 +8706,11 @@ def test_an_ego_that_filters_or_rides_rides_a_motorbike():
         "front of us.")
     assert ("car", "go_straight", "ego") in agents(
         "Three lanes of queueing traffic, and a motorbike is filtering up between the lanes from behind me.")
+    said = agents("Country lane, early morning. The rider comes round a left-hand bend and finds two cyclists riding "
+                  "side by side in the lane ahead.")
+    assert ("motorcycle", "go_straight", "ego") in said and ("cyclist", "go_straight", "front") in said
+    assert ("car", "go_straight", "ego") in agents(
+        "A cyclist came up on my left at the lights. The rider then went straight on.")
 
 
 def test_a_crews_log_names_its_own_vehicle_as_one_known():

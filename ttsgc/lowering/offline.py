@@ -8645,7 +8645,13 @@ def _a_riders_ego(r: _Reader) -> None:
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
         w in FILTERING and (k == 0 or r.tokens[k - 1].sentence != r.tokens[k].sentence))  # "Filtering past a queue"
         for k, w in enumerate(words))
-    if said or ego.head == "rider":
+    supplied = ego.head == "ego" and "ego" not in words
+    the_rider = supplied and any(
+        u.category == "word" and u.word == "rider" and k > 0 and r.units[k - 1].word == "the" and not any(
+            e.type in ("cyclist", "motorcycle") and 0 <= e.said_at < u.start for e in r.entities)
+        for k, u in enumerate(r.units))  # "The rider comes round a bend and finds two cyclists": the subject an ego
+    # was supplied for, with no one on two wheels named before it
+    if said or the_rider or ego.head == "rider":
         ego.type = "motorcycle"
 
 
