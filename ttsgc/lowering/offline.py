@@ -906,6 +906,10 @@ ROAD_NOUNS = {"road", "street", "avenue", "lane", "drive", "close", "boulevard",
 INTO_THE_ROAD = {"across", "inside", "in", "into", "over"}  # "walked across it", "parked inside it" (not "along it")
 
 
+SIDED_PLACES = {"from_left", "from_right", "road_left", "road_right", "road_straight", "toward", "oncoming",
+                "side_left", "side_right"}
+
+
 def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
     """'I turn right into a side street and a woman is crossing it', 'turning left into Elm Street, a jogger crosses
     the mouth of the road': once the ego is said to turn into a road, that road said again ('it', 'the road',
@@ -937,21 +941,19 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
             first = k + 1 + (units[k + 1].word == "the")
             span = list(itertools.takewhile(lambda x: x.tokens[0].sentence == sentence, units[first:first + 4]))
             words = [t.word for x in span for t in x.tokens]
-            sided = any(x.category == "positions" and x.meaning in (
-                "from_left", "from_right", "road_left", "road_right", "road_straight", "toward", "oncoming",
-                "side_left", "side_right")
-                for x in units if x.tokens[0].sentence == sentence)  # ("a car on the main road comes from the
-            # right": the road is where it comes along, from its side)
-            if words[:len(name)] == name and not sided:  # "... onto Walnut Street; a school bus parked right there on
-                last = first + next(j for j in range(len(span)) if len([t for x in span[:j + 1] for t in x.tokens])
-                                    >= len(name))  # Walnut Street": where the ego is heading
-                if all(x.category in ("word", "road", "positions") for x in units[first:last + 1]) and \
-                        len([t for x in units[first:last + 1] for t in x.tokens]) == len(name):
-                    out.append(u)
-                    tokens = tuple(t for x in units[first:last + 1] for t in x.tokens)
-                    out.append(Unit(units[first].start, units[last].end, "positions", "destination", tokens))
-                    k = last + 1
-                    continue
+            counts = list(itertools.accumulate(len(x.tokens) for x in span))  # tokens said up to each unit
+            last = next((j for j, n in enumerate(counts) if n >= len(name)), None)
+            if words[:len(name)] == name and counts[last] == len(name) and \
+                    all(x.category in ("word", "road", "positions") for x in span[:last + 1]) and not any(
+                    x.category == "positions" and x.meaning in SIDED_PLACES for x in units
+                    if x.tokens[0].sentence == sentence):  # "... onto Walnut Street; a school bus parked right
+                # there on Walnut Street": where the ego is heading (not "a car on the main road comes from the
+                # right": the road it comes along, from its side)
+                out.append(u)
+                tokens = tuple(t for x in span[:last + 1] for t in x.tokens)
+                out.append(Unit(span[0].start, span[last].end, "positions", "destination", tokens))
+                k = first + last + 1
+                continue
         before = out[-1] if out else None
         done_to = before is not None and (before.category == "actions" and before.meaning == "cross" or
                                           before.word in INTO_THE_ROAD)
@@ -4037,7 +4039,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         units[fleet - 5].category == "agents" and units[fleet - 5].meaning == "ego"
     fleets_one = plural and kind in V.EGO_TYPES and fleet >= 3 and [x.word for x in units[fleet - 3:fleet]] in (
         ["one", "of", "our"], ["one", "of", "my"]) and (at_its_wheel or not any(
-            e.is_ego and (e.head != "ego" or any(t.word == "ego" for t in r.tokens)) for e in r.entities))
+            e.is_ego and not _supplied(r, e) for e in r.entities))
     # "(the driver in) one of our artics": the fleet's vehicle the scene is told from; an ego supplied before for a
     # heading's verb with no subject ("Lane-change reminder.") is that vehicle
     if fleets_one:
@@ -6445,6 +6447,11 @@ def _bare_verb(u: Unit) -> bool:
         t.word not in NOT_VERBS
 
 
+def _supplied(r: _Reader, e: Entity) -> bool:
+    """An ego the reader supplied for a verb with no subject: named 'ego' while the text never says 'ego'."""
+    return e.is_ego and e.head == "ego" and not any(t.word == "ego" for t in r.tokens)
+
+
 def _ego_entity(r: _Reader, stage: int) -> Entity:
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None:
@@ -7038,8 +7045,7 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents") and not (
             told and units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith("ing")):
         return False  # "in the van ahead", "in the car that pulled out": another
-    named_ego = any(t.word == "ego" for t in r.tokens)  # (an ego supplied for a verb with no subject is 'ego')
-    if any(x.is_ego and x.head not in FIRST_PERSON | {"we"} and (x.head != "ego" or named_ego) for x in r.entities):
+    if any(x.is_ego and x.head not in FIRST_PERSON | {"we"} and not _supplied(r, x) for x in r.entities):
         return False
     egos = [u for u in r.units if u.category == "agents" and u.meaning == "ego"]
     if not egos:  # "Rolling up on it now in the Kenworth": no one named, a participle with no subject says where
@@ -7932,11 +7938,12 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                 clause.units[0].word in ("it", "he", "she") and _gone_by(clauses[k - 1].units):
             previous = outside_condition  # "the ego waits to turn; once the oncoming car has gone by, it turns": the
             # one who waited, not the one gone
-        speaker = next((e for e in r.entities if e.is_ego), None)
-        if k > 0 and clauses[k - 1].condition and not clause.condition and speaker is not None and clause.units and \
+        if k > 0 and clauses[k - 1].condition and not clause.condition and clause.units and \
                 clause.units[0].category == "actions" and clause.units[0].tokens[0].word.endswith("ing") and \
                 _gone_by(clauses[k - 1].units):
-            previous = [speaker]  # a commentary's "once both are through, turning left": the speaker's doing
+            speaker = next((e for e in r.entities if e.is_ego), None)
+            if speaker is not None:
+                previous = [speaker]  # a commentary's "once both are through, turning left": the speaker's doing
         before = len(r.entities)
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         subject = _read_clause(r, clause, previous, recent, pending)
@@ -8562,8 +8569,7 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
     if not any(t.word in ("we", "us", "our") for t in r.tokens):
         return  # (a story's "Joe turned right ... The van behind him stopped": no crew telling of its vehicle)
     if ego is not None and (
-            not (ego.head in ("we", "us", "i", "me", "op") or ego.head == "ego" and
-                 not any(t.word == "ego" for t in r.tokens)) or ego.type != "car" or
+            not (ego.head in ("we", "us", "i", "me", "op") or _supplied(r, ego)) or ego.type != "car" or
             any(name.split()[-1] not in SELF_NAMES | {"ego", "op"} for name in ego.aliases if name)):
         return  # the speakers, or an ego supplied for a verb with no subject, in no vehicle of their own ("I'm
         # rolling up in the truck" is)
@@ -8645,8 +8651,7 @@ def _a_riders_ego(r: _Reader) -> None:
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
         w in FILTERING and (k == 0 or r.tokens[k - 1].sentence != r.tokens[k].sentence))  # "Filtering past a queue"
         for k, w in enumerate(words))
-    supplied = ego.head == "ego" and "ego" not in words
-    the_rider = supplied and any(
+    the_rider = _supplied(r, ego) and any(
         u.category == "word" and u.word == "rider" and k > 0 and r.units[k - 1].word == "the" and not any(
             e.type in ("cyclist", "motorcycle") and 0 <= e.said_at < u.start for e in r.entities)
         for k, u in enumerate(r.units))  # "The rider comes round a bend and finds two cyclists": the subject an ego
