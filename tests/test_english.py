@@ -8791,3 +8791,134 @@ def test_the_road_turned_into_named_again_is_where_the_ego_heads():
 def test_a_clip_is_told_from_the_vehicle_whose_camera_filmed_it(prompt):
     said = agents(prompt)
     assert ("car", "turn_right", "ego") in said and ("motorcycle", "go_straight", "road_of_straight") in said
+
+
+def test_what_someone_of_theirs_does_is_not_the_egos():
+    said = agents("Create a scene at night where a man in dark clothes crosses in front of the ego from the right. The "
+                  "ego goes straight. His friend waits on the far side of the road.")
+    assert ("car", "go_straight", "ego") in said and len(said) == 2
+
+
+def test_a_stop_arrived_at_gives_way_to_the_way_meant_unless_a_later_stage_goes_on():
+    said = agents("You arrive at a four-way stop at the same time as a car on the road to your right. Both of you want "
+                  "to go straight. Who has the right-of-way?")
+    assert ("car", "go_straight", "ego") in said
+    told = stages("Player pulls up to a stop sign at a T-junction and needs to go right. A pickup is coming along "
+                  "from the left. Once it has cleared, the player makes the turn.")
+    assert told[0][0] == ("ego", "stop", None) and told[1][0] == ("ego", "turn_right", None)
+
+
+def test_a_fleet_records_unit_is_the_ego():
+    said = agents("Event type: Harsh braking. 14:32:07. Unit 4417 (tractor-trailer) in right lane of 3-lane "
+                  "interstate, 58 mph. Third-party sedan in the center lane, level with the cab, abruptly cut in "
+                  "ahead of the unit, no signal. Driver braked, no contact.")
+    assert ("truck", "go_straight", "ego") in said and [k for k in said if k[2] != "ego"] == [
+        ("car", "change_lane_to_right", "left")]
+    said = agents("Unit 12 at scene, 2 veh RTC at lights. V1 silver Astra stationary at red at the stop line, V2 white "
+                  "Transit van failed to stop and went into rear of V1.")
+    assert ("car", "stop", "ego") in said  # the reporting unit is not in the scene; V1 is
+
+
+def test_advice_after_the_scene_is_not_the_scene():
+    said = agents("Event type: Near collision. Unit 340 (tractor-trailer) turning left at an uncontrolled "
+                  "intersection. Oncoming motorcycle proceeding straight. Coachable: right-of-way, judging speed of "
+                  "oncoming two-wheelers.")
+    assert sorted(said) == [("motorcycle", "go_straight", "road_of_straight"), ("truck", "turn_left", "ego")]
+
+
+def test_a_learning_environments_agent_is_the_ego():
+    said = agents("I need an env for emergency-vehicle yielding. Agent is in the left lane of a two-lane road; an "
+                  "ambulance comes up fast behind it with sirens on, and the agent has to change to the right lane. "
+                  "Reward shaped on how quickly it clears the lane.")
+    assert ("car", "change_lane_to_right", "ego") in said and ("ambulance", "go_straight", "back") in said
+
+
+def test_an_agent_noun_in_a_compound_and_a_need_for_none_name_no_one():
+    said = agents("For the ped-safety task I want a straight road with a zebra crossing. One pedestrian walks across "
+                  "on the zebra as the ego approaches. No need for NPC cyclists in this one.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_move_out_of_its_lane_into_the_one_on_its_right_is_a_lane_change_right():
+    assert agents("The ego moves from its current lane into the adjacent lane on its right.") == [
+        ("car", "change_lane_to_right", "ego")]
+
+
+def test_a_definitions_agents_are_played_by_the_instance_told_after_it():
+    said = agents("stopping_with_lead: the ego decelerates to a stop behind a lead vehicle that has itself come to a "
+                  "halt. A typical log shows the ego stopping behind a box truck that is stopped in its lane.")
+    assert sorted(said) == [("car", "stop", "ego"), ("truck", "stop", "front")]
+
+
+def test_a_device_turned_on_is_no_turn_and_a_tool_step_keeps_the_scene_set_up_after_it():
+    said = agents("Steps to reproduce: turn fog on in AWSIM, ego drives at 50 km/h, and npc_1 is stopped in ego's lane "
+                  "about 100 m ahead with its hazards on. Expected behavior: ego stops behind npc_1.")
+    assert ("car", "go_straight", "ego") in said and ("car", "stop", "front") in said
+    said = agents("**Steps to reproduce**: launch `planning_simulator` with the sample map, put ego in front of the "
+                  "signalised intersection and set a goal so the route turns left on green. Spawn `npc_1` on the "
+                  "opposite approach, going straight through. **Expected behavior**: ego yields to `npc_1`.")
+    assert sorted(said) == [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]
+
+
+def test_a_country_said_to_drive_on_the_left_is_no_turn_of_the_ego():
+    said = agents("Ego turns right at an unsignalised intersection (we drive on the left here, so right is across "
+                  "traffic). A car comes from the opposite direction going straight.")
+    assert ("car", "turn_right", "ego") in said
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Highway, 5 lanes, numbered from the left. Ego in lane 3, all vehicles moving. Lane 2: 1 car slightly ahead. "
+     "Lane 4: 2 trucks, one level with the ego, one behind it.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_left"), ("truck", "go_straight", "back_right"),
+      ("truck", "go_straight", "right")]),
+    ("3 lanes. Ego: right lane, moving. Middle lane behind: 1 ambulance, fast, sirens on.",
+     [("ambulance", "go_straight", "back_left"), ("car", "go_straight", "ego")]),
+    ("Roundabout entry, single lane, give-way sign. Ego stopped at the give-way line. Circulating from the left: 2 "
+     "cars, passing.",
+     [("car", "go_straight", "road_of_left_turn")] * 2 + [("car", "stop", "ego")])])
+def test_a_layout_keyed_by_lane_places_what_follows_in_that_lane(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_one_named_by_where_it_is_is_the_one_placed_there():
+    said = agents("Motorway, 2 lanes. Ego in the right lane. Left lane: 1 car ahead, 1 car level with the ego, both "
+                  "moving. The car level with the ego cuts in front of the ego.")
+    assert ("car", "change_lane_to_right", "left") in said and ("car", "go_straight", "front_left") in said
+
+
+def test_a_driver_assistance_system_is_the_car_it_drives_and_a_kind_it_should_detect_is_no_one():
+    said = agents("Autopilot on a divided highway, two lanes each way, me in the right lane. Fire truck parked on the "
+                  "shoulder up ahead and AP didn't move over. Isn't it supposed to detect emergency vehicles now??")
+    assert not any(k[0] == "ambulance" for k in said)
+    said = agents("FSD in the city: a UPS truck was double parked in my lane with its flashers on and FSD just sat "
+                  "behind it for a full minute.")
+    assert ("car", "stop", "ego") in said and ("truck", "stop", "front") in said
+
+
+def test_let_in_ahead_of_me_is_where_it_goes_and_the_only_other_car_said_to_be_one_is_that_one():
+    said = agents("Right lane. A semi in the lane to my left just started coming over into my lane. I braked and let "
+                  "him in ahead of me.")
+    assert ("truck", "change_lane_to_right", "left") in said
+    said = agents("Two lanes my side, nobody in front of me. The only other car around was a Camry following behind "
+                  "me.")
+    assert [k for k in said if k[2] != "ego"] == [("car", "go_straight", "back")]
+
+
+def test_a_benchmarks_adversary_said_with_the_is_new_and_a_role_it_plays_is_no_one():
+    said = agents("The ego is stopped at a red light in the right lane, behind a stopped bus. The adversarial vehicle "
+                  "in the left lane swerves into the ego's path and stops, blocking it.")
+    assert ("bus", "stop", "front") in said and ("car", "block_the_ego", "left") in said
+    said = agents("The ego drives straight. An adversarial child darts out from the right and crosses in front of "
+                  "the ego. The child is the only adversarial agent in this scenario. A police car, added as a "
+                  "distractor, is parked ahead on the right.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right"),
+                            ("police", "stop", "front_right")]
+
+
+def test_passing_in_a_lane_by_one_on_the_shoulder_and_holding_position_beside_keep_their_lanes():
+    said = agents("A broken-down van stands on the hard shoulder ahead on the right while the subject vehicle passes in "
+                  "the right-hand lane at 60 km/h.")
+    assert ("car", "go_straight", "ego") in said
+    said = agents("The lead vehicle is a coach in the subject vehicle's lane. A second target vehicle holds position "
+                  "in the adjacent left lane right next to the subject vehicle.")
+    assert ("car", "go_straight", "left") in said

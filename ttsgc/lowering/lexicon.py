@@ -661,13 +661,50 @@ def _inline_key_break(m: re.Match) -> str:
         else "\n"
 
 
+ADVICE_KEY = re.compile(r"(?:^|(?<=[.;!?]))[ \t]*(?:coach|coachable|coaching|recommendations?|tips?|takeaways?|"
+                        r"lessons?(?: learned)?|corrective actions?|action taken)[ \t]*:", re.I | re.M)
+NEXT_KEY = re.compile(r"(?<=[.;])[ \t]+(?=[A-Z][A-Za-z/-]*(?: [A-Za-z/-]+){0,2}:[ \t])|\n")
+
+
+LANE_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*(?:the\s+)?(lanes?\s+\d(?:\s+and\s+\d)?|(?:(?:left|right|middle|centre|"
+                      r"center|inside|outside|fast|slow|overtaking|ego's|ego|same|nearside|offside)\s+lane)|"
+                      r"(?:(?:left|right|hard)\s+)?shoulder)((?:\s+(?:ahead|behind))?)[ \t]*:", re.I | re.M)
+MOVING_FROM_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*([A-Z][a-z]+ing)\s+(from the (?:left|right))[ \t]*:"
+                             r"[ \t]*([^.;\n]+)", re.M)
+
+
+def _lane_keys(text: str) -> str:
+    """'Lane 4: 2 trucks, one level with the ego', 'Middle lane behind: 1 ambulance', 'Hard shoulder: 1 truck',
+    'Circulating from the left: 2 cars': a layout keyed by lane or way says where what follows is, as 'in lane 4:'
+    would."""
+    def place(m: re.Match) -> str:
+        key, lead = m.group(1) + m.group(2), m.group(0)[:m.start(1) - m.start()]
+        if key.lower().startswith("lane"):
+            return lead + f"In {key}:"
+        return lead + ("On the " if "shoulder" in key.lower() else "In the ") + key + ":"
+    text = MOVING_FROM_KEY.sub(lambda m: f"{m.group(2).capitalize()}: {m.group(3)}, {m.group(1).lower()}", text)
+    # "Circulating from the left: 2 cars, passing": from the left come 2 cars, circulating
+    return LANE_KEY.sub(place, text)
+
+
+def _without_advice(text: str) -> str:
+    """'Coachable: right-of-way, judging speed of oncoming two-wheelers', 'Recommendation: provide a right-turn
+    lane': what someone should do about the scene after it is told, to the next key or the end of its line."""
+    while (m := ADVICE_KEY.search(text)) is not None:
+        end = NEXT_KEY.search(text, m.end())
+        text = text[:m.start()] + (text[end.start():] if end else "")
+    return text
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
+    text = _lane_keys(text)
     if "\n" not in text.strip() and len(INLINE_KEY.findall(text)) >= 2:
         text = INLINE_KEY.sub(_inline_key_break, text)  # "Scenario: unprotected left. Oncoming: 1 sedan, 1 box
         # truck.": notes run on in one line, a key after each full stop
+    text = _without_advice(text)
     if "\n" not in text.strip():
         numbered = NUMBERED_KEY.match(text)
         if numbered and numbered.group(1).split()[0].lower() in CASE_WORDS:
@@ -1165,6 +1202,17 @@ CAMEL_CASE = re.compile(r"\b[a-z]{2,}(?:[A-Z][a-z0-9]*)+\b")  # "I tried changeL
 # identifier of code, no words of the scene (not "vType passenger": its one letter names what follows)
 
 
+AGENT_COMPOUND = re.compile(r"\b(?:peds?|pedestrians?|cyclists?|bikes?|cars?|vehicles?|trucks?|bus|buses|"
+                            r"motorcycles?)-(safety|detection|following|friendly|free|heavy|related|focused|centric|"
+                            r"based|avoidance|aware|awareness|yielding|collision|crash|protection)\b")
+
+
+DEVICE_SWITCH = re.compile(r"\bturn(?:s|ed|ing)? (?:(on|off) )?((?:the |your |its |his |her |my |our )?"
+                           r"(?:fog|rain|snow|head ?lights?|lights|wipers|hazards|hazard lights|high beams?|engine|"
+                           r"ignition|radio|"
+                           r"indicator|blinker))(?(1)| (?:on|off))\b")
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -1175,6 +1223,10 @@ def tokenize(text: str) -> list[Token]:
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _without_calques(text)
+    text = AGENT_COMPOUND.sub(r"\1", text)  # "the ped-safety task", "a car-following model": no one on the road
+    text = DEVICE_SWITCH.sub(r"\2", text)  # "turn fog on in the simulator", "turn your headlights on": no turn
+    text = re.sub(r"\blet (him|her|them|it) (in|merge|over|out)( in)? (?:ahead of|in front of) (?:me|us)\b",
+                  r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
     text = re.sub(r"\b(it|that|there|he|she|what|who)'s (been|got|gotten|gone|had)\b", r"\1 has \2", text)
     text = re.sub(r"\b(it|that|he|she|who)'s (\w+ed)(?= (?:over |up |out |off )?(?:a|an|the|my|our|his|her|their|us|me)\b)",

@@ -192,7 +192,7 @@ def read_narration(prompt: str) -> Narration:
     text = _designated_groups(text, notes)
     text = _bare_appositions(text)
     text = _declared_ego(text, notes)
-    text = _vehicle_numbers(_abbreviated_bodies(text))
+    text = _vehicle_numbers(_abbreviated_bodies(_fleet_unit(_learning_agent(text, notes), notes)))
     text = _passengers_driver(text, notes)
     text = _crews_vehicle(text, notes)
     text = _screenplay_driver(text, notes)
@@ -422,9 +422,18 @@ def _scene_step(line: str) -> str:
     line = re.sub(r"^[ \t]*(?:[-*\u2022][ \t]*|\d{1,2}[.)][ \t]*)", "", line)
     line = re.sub(r"^(?:scene|scenario|prompt|input|ask(?:ed)? for|what i wanted)[ \t]*(?:\([^)]*\))?[ \t]*:[ \t]*",
                   "", line, flags=re.I)
-    if TOOL_STEP.match(line):  # 'lower "a van is double-parked ahead ..." with seed 1': the prompt it was given
-        return ". ".join(x.strip().rstrip(".") for x in QUOTED.findall(line) if len(x.split()) >= 3)
-    return line
+    if TOOL_STEP.match(line) and QUOTED.search(line):  # 'lower "a van is double-parked ahead ..." with seed 1': the
+        return ". ".join(x.strip().rstrip(".") for x in QUOTED.findall(line) if len(x.split()) >= 3)  # prompt given
+    return " ".join(_without_tool_work(x) for x in re.split(r"(?<=[.!?])\s+", line))
+
+
+def _without_tool_work(sentence: str) -> str:
+    """'launch planning_simulator with the sample map, put ego in front of the intersection': the clause that works
+    the tool goes, the scene set up after it stays (a sentence that only works the tool goes whole)."""
+    if not TOOL_STEP.match(sentence):
+        return sentence
+    rest = sentence.split(", ", 1)[1] if ", " in sentence else ""
+    return rest if len(rest.split()) >= 4 else ""
 
 
 def _outline_example(lines: list[str]) -> list[str]:
@@ -992,6 +1001,49 @@ ANY_VEHICLE = re.compile(r"\b(?:(the)\s+)?(?:[a-z-]+\s+)?vehicles?\b", re.I)
 THE_VEHICLE_ACTS = re.compile(r"\b[Tt]he vehicle\b(?!'s\b|\s+(?:ahead|in|on|to|behind|beside|next|alongside|from|"
                               r"that|which|who|of|at|with|coming|going|approaching|travelling|traveling|driving|"
                               r"parked|stopped)\b)")
+
+
+LEARNING = re.compile(r"\b(?:rewards?|rewarded|episodes?|env|envs|policy|curriculum|obs|observations?|rl|"
+                      r"reinforcement|training|trained|gym)\b", re.I)
+THE_AGENT = re.compile(r"\b(?:(?:the|our|my)\s+(?:rl\s+|learning\s+)?agent|(?:^|(?<=[.;:!?]\s))agent)\b(?!s\b|\s*_?\d)",
+                       re.I | re.M)
+
+
+def _learning_agent(text: str, notes: list[str]) -> str:
+    """'I need an env where the agent has to merge', 'Agent gets rewarded for ...': in a request for a learning
+    environment the agent is the vehicle the policy drives, the ego (the NPCs around it are not agents of it)."""
+    if not LEARNING.search(text) or not THE_AGENT.search(text):
+        return text
+    notes.append("read the learning environment's agent as the ego")
+    return THE_AGENT.sub("the ego", text)
+
+
+FLEET_UNIT = re.compile(r"\bunit\s*(?:no\.?\s*|#\s*)?(\d{1,5})\b(?:\s*\(([^()]{1,40})\))?", re.I)
+THE_UNIT = re.compile(r"(?<![\w-])(?:(the|of|behind|beside|past|around|passed|struck|hit|towards|toward|to|with|at|"
+                      r"alongside)\s+)?unit\b(?!\s*(?:no\.?\s*|#\s*)?\d)", re.I)
+
+
+def _fleet_unit(text: str, notes: list[str]) -> str:
+    """'Unit 4417 (tractor-trailer) in right lane ... cut in ahead of the unit. Driver braked': a fleet's record
+    names its own vehicle by a unit number, and that vehicle is the ego; only where the text names no ego, no
+    numbered vehicle and one unit alone (a crash report's Unit 1 and Unit 2 are its vehicles' labels)."""
+    units = {m.group(1) for m in FLEET_UNIT.finditer(text)}
+    if len(units) != 1 or re.search(r"\bego\b|\b(?:v|veh|vehicle)\s?#?\d\b|\bsubject\s+veh", text, re.I) or \
+            re.search(FLEET_UNIT.pattern + r"\s*(?:reports|reporting|at scene|on scene|attend)", text, re.I):
+        return text  # ("Unit 12 at scene ... V1 stationary at red": the unit reports a crash of vehicles it numbers)
+    notes.append("read the record's unit as the ego")
+    body = FLEET_UNIT.search(text).group(2) or ""
+    text = FLEET_UNIT.sub(lambda m: f"the ego {m.group(2)}" if m.group(2) else "the ego", text, count=1)
+    text = re.sub(r"(?:^|(?<=[.;!?]\s))[Dd]river\b", "the ego", text, flags=re.M)  # "Driver braked", said bare
+    if re.search(r"truck|trailer|lorry|semi|hgv|rig\b", body, re.I):
+        text = re.sub(r"\bthe (?:cab|trailer|tractor)\b", "the ego", text, flags=re.I)  # "level with the cab": its own
+
+    def own(m: re.Match) -> str:  # "the unit", "in front of unit", "Unit then braked"; not "a tractor unit"
+        opening = not text[:m.start()].rstrip() or text[:m.start()].rstrip()[-1] in ".;:!?"
+        if m.group(1) is None and not opening:
+            return m.group(0)
+        return "the ego" if m.group(1) is None or m.group(1).lower() == "the" else f"{m.group(1)} the ego"
+    return THE_UNIT.sub(own, text)
 
 
 def _crews_vehicle(text: str, notes: list[str]) -> str:

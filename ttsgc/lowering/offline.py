@@ -191,6 +191,7 @@ class _Reader:
     passive: object = None  # the last clause with a passive's doer ('overtaken by a van'): 'and a bus' may follow
     # past a clause break ("one car in front, one on the left and one on the right")
     owned: bool = False  # the text opened on the vehicle its teller owns: "the vehicle" is that one
+    staged: bool = False  # the text goes on to a later stage ("then", "once ...")
 
     def mark(self, unit: Unit) -> None:
         self.used.update(range(unit.start, unit.end))
@@ -268,7 +269,9 @@ def _drives_on_the_left(tokens: list[Token]) -> bool:
     road_numbers = any(t.word in ("a", "m", "b") and (t.label or k + 1 < len(tokens) and
                                                       tokens[k + 1].word.isdigit() and t.word != "a")
                        for k, t in enumerate(tokens))
-    return bool(words & LEFT_HAND_TRAFFIC or road_numbers) and not words & TEST_PROTOCOL
+    said = any([t.base for t in tokens[k:k + 4]] == ["drive", "on", "the", "left"] for k in range(len(tokens)))
+    # "we drive on the left here"
+    return bool(words & LEFT_HAND_TRAFFIC or road_numbers or said) and not words & TEST_PROTOCOL
 
 
 EXIT_TURNS = {"turn_left": "turn_right", "turn_right": "turn_left"}
@@ -2584,7 +2587,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 current.append(u)
                 continue
             if u.word == "as" and (nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if")
-                                   or prev_word in ("employed", "work", "works", "working")):  # "employed as a"
+                                   or prev_word in ("employed", "work", "works", "working")  # "employed as a"
+                                   or _in_the_role_of(units, k)):
                 current.append(u)
                 continue
             close(u.word)
@@ -4009,6 +4013,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if first > lo and units[first - 1].word == "without" and not words - {"any", "a", "an", "other", "single"} and \
             not is_ego and count in (None, 1):
         count = 0  # "an empty road without any pedestrians", "without other traffic"
+    if first > lo + 2 and [x.word for x in units[first - 3:first]] in (["no", "need", "for"], ["not", "need", "any"]) \
+            and not is_ego:
+        count = 0  # "no need for NPC pedestrians in this one", "we don't need any cyclists"
     value = u.tokens[-1].index + 1
     if not is_ego and value < len(r.tokens) and r.tokens[value].opened_by == ":" and \
             r.tokens[value].sentence != u.tokens[-1].sentence and r.tokens[value].word in NONE_VALUES:
@@ -4093,6 +4100,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and not words and \
             _minds_a_thing(units, head):
         return NounPhrase(None, head, first)  # "so people can see what the driver sees", "drivers never look"
+    if plural and count is None and not words and not is_ego and any(
+            units[k].base in SYSTEM_SKILLS for k in (first - 1, first) if 0 <= k < head):
+        return NounPhrase(None, head, first)  # "isn't it supposed to detect emergency vehicles now?": any such
     if plural and count is None and not words and not is_ego and _owned_by_all(units, head):
         return NounPhrase(None, head, first)  # "truck drivers have huge blind spots": road users in general
     if not plural and count is None and words & {"the", "this", "that"} and kind == "pedestrian" and \
@@ -4172,7 +4182,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) and
             not _placed_apart(placed_here, e) for e in r.entities):
         definite = True  # "Pickup ahead of me. Truck braked": the pickup, in note style
-    speaker_ego = next((e for e in r.entities if e.is_ego and e.head in SPEAKERS | {"i'm"}), None)
+    speaker_ego = next((e for e in r.entities if e.is_ego and (e.head in SPEAKERS | {"i'm"} or e.aliases & SPEAKERS)),
+                       None)  # ("FSD did something sketchy ... I'm in the middle lane": named first by its system)
     named_ego = next((e for e in r.entities if e.is_ego and e.type == "car"), None)
     if bare and first == lo and (u.base in ("car", "vehicle") and speaker_ego is not None or
                                  u.base == "vehicle" and named_ego is not None) and not placed_here and \
@@ -4212,6 +4223,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # driver of the HGV": says who the man is; he is not the HGV
     if predicate and u.base in ("driver", "rider", "motorist") and not plural:
         return NounPhrase(None, head, first)
+    if first >= 3 and units[first - 3].word in COPULAS and [x.word for x in units[first - 2:first]] == ["the", "only"] \
+            and not plural:
+        return NounPhrase(None, head, first)  # "the child is the only adversarial agent in this scenario": a role
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural and \
             _gets_out(units, head):  # "the driver gets out and walks across": a person on foot now
         kind, definite = "pedestrian", False
@@ -4247,9 +4261,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if definite and count is None and r.owned and u.base == "vehicle" and not plural and ego_now is not None and \
             (head + 1 == len(units) or units[head + 1].category != "positions"):
         return NounPhrase(ego_now, head, first)  # "I own a GMC Terrain ... then the vehicle braked by itself"
+    adversarial = any(t.word == "adversarial" for k in range(first, head + 1) for t in units[k].tokens)
+    if definite and adversarial and not any("adversarial" in e.aliases for e in r.entities):
+        definite = False  # "behind a stopped bus ... the adversarial vehicle in the left lane swerves": the benchmark
+        # names its adversary with 'the' the first time
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base)
+        placed_after = units[head + 1].meaning if head + 1 < len(units) and units[head + 1].category == "positions" \
+            else None
+        there = [e for e in r.entities
+                 if not e.is_ego and e.type == kind and e.count == 1 and placed_after in e.features]
+        if len(found) == 1 and placed_after not in found[0].features and len(there) == 1:
+            found = there  # "1 car ahead, 1 car level with the ego ... the car level with the ego cuts in": that one
         if len(found) == 1 and not found[0].parent and (_placed_elsewhere(found[0], units, head) or (
                 found[0] in r.clause_mentions and head + 1 < len(units) and units[head + 1].category == "positions")):
             found = []  # "a car ahead ... the car behind us", "the car from the left and the car from the right"
@@ -4345,6 +4369,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         entity.group_open = entity.count
     entity.aliases |= {m.base for m in units[max(lo, first - 1):head] if m.category == "agents" and m.meaning == kind}
     # "a silver Ford Focus ... the Ford": the make names it too
+    if adversarial:
+        entity.aliases.add("adversarial")
     if scenery and before >= lo and units[before].word == "between":
         entity.features.add("screening")  # "out from between two parked cars": the cars a crosser emerges from
     entity.relative_to = vehicle_left  # at the vehicle it got out of
@@ -4951,9 +4977,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "cross" and e.type == "cyclist" and "straight" in {t.word for t in u.tokens}:
             e.features.add("straight_across")  # "rides straight across from the road on the left": through the
             # junction on its own road, when it comes from a side road (mid-block, over the ego's road)
-        if action == "stop" and not e.is_ego and u.base == "sit" and clause_units is not None and k is not None and \
-                any(x.category == "positions" and x.meaning in ("level", "behind") for x in clause_units[k + 1:k + 3]):
-            action = "move"  # "a ute sitting right next to me", "sitting on my tail": keeping pace with the ego
+        pace_window = 3 if u.base == "sit" else 6 if u.base in ("hold position", "held position") else 0
+        if action == "stop" and not e.is_ego and pace_window and clause_units is not None and k is not None and any(
+                x.category == "positions" and x.meaning in ("level", "behind")
+                for x in clause_units[k + 1:k + pace_window]):
+            action = "move"  # "a ute sitting right next to me", "sitting on my tail", "holds position in the adjacent
+            # lane right next to the subject vehicle": keeping pace with the ego
         if action == "stop" and u.base == "sit" and clause_units is not None and k is not None and \
                 [x.word for x in clause_units[k + 1:k + 2]] == ["at"] and k + 2 < len(clause_units) and \
                 clause_units[k + 2].category in ("number", "numbers"):
@@ -5101,8 +5130,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("turn_intended")  # "waiting to turn out": a turn meant, not made
         if action == "reach" and e.is_ego and clause_units is not None and k is not None and \
                 {t.base for t in u.tokens} & {"arrive", "pull"} and _a_stop_control(clause_units[k + 1:k + 5]):
-            e.actions.append((stage, strength, ACTION_RANK["stop"], r.tick(), "stop", None))  # "I arrived at the
-            # all-way stop", "pulls up to a stop sign": it stops there (a turn said with it still wins)
+            e.actions.append((stage, strength if r.staged else 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+            # "I arrived at the all-way stop", "pulls up to a stop sign": it stops there; a way it means to go, said
+            # with it, wins ("both of you want to go straight"), unless the story goes on to a later stage
         earlier = clause_units is not None and k is not None and any(
             x.word == "had" and y.word != "to" for x, y in zip(clause_units[max(0, k - 3):k],
                                                                clause_units[max(0, k - 3) + 1:k + 1])) and \
@@ -5319,7 +5349,9 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     owned = next((j for j in range(k + 1, min(len(units), k + 4)) if units[j].category == "agents" and (
         units[j].meaning == "ego" and units[j].tokens[0].word in OWNERS or
         any(x.word in OWNERS for x in units[k + 1:j]))), None)  # "swings his little Fiat out into ...", "steer our van"
-    reach = (6 if turning else 4) + (owned - k if owned is not None else 0)
+    into_a_lane = k + 1 < len(units) and units[k + 1].word in ("into", "to") and any(
+        x.word == "lane" for x in units[k + 2:k + 5])  # "into the adjacent lane on its right": further on
+    reach = (6 if turning else 4) + (owned - k if owned is not None else 0) + 2 * into_a_lane
     for j, u in enumerate(units[k + 1: k + reach], start=k + 1):
         if u.category == "positions" and u.meaning in ("side_left", "side_right", "road_left", "road_right",
                                                         "from_left", "from_right"):
@@ -5328,7 +5360,8 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
                     u.meaning.startswith("road") and not turning) or (
                     not turning and any(x.word == "from" for x in units[k + 1:j])) or (
                     not turning and {"out", "from"} & set(units[k].base.split()) and not (
-                        j == k + 1 and len(u.tokens) == 1) and u.tokens[0].word not in ("into", "onto")):
+                        j == k + 1 and len(u.tokens) == 1) and u.tokens[0].word not in ("into", "onto") and
+                    units[k + 1].word not in ("into", "onto")):
                 # "pulling out of a stop on the right"; but "pulls out into the right lane": where it goes
                 return None  # where it comes from, not where it goes ("pulls out right": where it goes)
             if not turning and (u.tokens[0].word in ("on", "at", "beside", "alongside") or units[j - 1].word == "on") and \
@@ -5572,7 +5605,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
     phrases = _members_listed(r, clause, phrases, recent)
-    phrases = _relative_says_what_it_is(r, clause, phrases)
+    phrases = _said_to_be(r, units, _relative_says_what_it_is(r, clause, phrases))
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
@@ -6476,6 +6509,40 @@ def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) ->
         not any(t.word.isalpha() for t in r.tokens[:verb.index] if t.sentence == verb.sentence)  # (after a time stamp)
 
 
+INSTANCE_OPENINGS = (["for", "example"], ["for", "instance"], ["e", "g"], ["one", "instance"],
+                     ["in", "the", "instance"], ["concrete", "case"], ["concrete", "example"], ["a", "typical"],
+                     ["a", "clean", "example"],
+                     ["example", ","], ["say", "on"], ["say", "at"], ["say", "in"])
+
+
+def _an_instance_given(r: _Reader) -> None:
+    """'stopping_with_lead: the ego decelerates behind a lead vehicle that has come to a halt. A typical log shows
+    the ego stopping behind a box truck': a kind of scene defined, then an instance of it told; the instance names
+    the agents, and those of the definition are the kind's roles, played by them, not more agents."""
+    tokens = r.tokens
+    words = [t.word for t in tokens]
+    start = next((t.index for t in tokens if t.sentence > 0 and tokens[t.index - 1].sentence != t.sentence and (
+        any(words[t.index:t.index + len(o)] == o for o in INSTANCE_OPENINGS) or t.word in ("example", "instance") and
+        (t.index + 1 == len(tokens) or tokens[t.index + 1].sentence != t.sentence or words[t.index + 1] == "from"))),
+        None)  # "Example:", "Example from the logs:"
+    if start is None:
+        return
+    roles = [e for e in r.entities if not e.is_ego and 0 <= e.said_at < start]
+    if not roles or not any(not e.is_ego and e.said_at >= start and e.count > 0 for e in r.entities) or \
+            any(e.parent in roles for e in r.entities):
+        return
+    for e in roles:
+        r.entities.remove(e)
+    r.notes.append("read the agents of the definition as roles of the instance told after it")
+
+
+def _in_the_role_of(units: list[Unit], k: int) -> bool:
+    """'a police car, added as a distractor, is parked': 'as' before a noun phrase that names no agent and ends its
+    stretch of words says in what role, and opens no clause ('as a car approaches' does)."""
+    return k + 2 < len(units) and units[k + 1].word in ("a", "an") and units[k + 2].category == "word" and \
+        (k + 3 == len(units) or units[k + 3].category == "comma")
+
+
 def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside=frozenset()) -> Entity | None:
     """A predicate with no subject: the ego's ('left turn at crossroads'), unless it places someone else
     ('aggressive cut-in from right lane ahead' is a car's)."""
@@ -6497,7 +6564,21 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
     named_otherwise = _named_by_an_unknown_noun(r, units, verbs[0])
     if named_otherwise is not None:
         return named_otherwise  # "A taxi pulled out. The cabbie then stopped": the taxi, by a word not known
+    if _someone_of_theirs(r, units, verbs[0]):
+        return None
     return _ego_entity(r, stage)
+
+
+def _someone_of_theirs(r: _Reader, units: list[Unit], verb: int) -> bool:
+    """'His friend waits on the far side', 'their dog barked': a subject said as someone's by a noun the lexicon
+    does not know opens its clause; it is no agent, and what it does is not the ego's."""
+    tokens = r.tokens
+    k = units[verb].start - 1
+    if k < 1 or tokens[k - 1].word not in ("his", "her", "their") or not tokens[k].word.isalpha() or \
+            tokens[k].word in lexicon().function_words or (tokens[k].word,) in lexicon().phrases or \
+            tokens[k].sentence != tokens[units[verb].start].sentence:
+        return False
+    return k < 2 or tokens[k - 2].sentence != tokens[k].sentence or tokens[k - 2].word in (",", "and", "but", "so")
 
 
 def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entity | None:
@@ -6527,6 +6608,8 @@ def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entit
     return others[-1] if others else None
 
 
+SYSTEM_SKILLS = {"detect", "recognize", "recognise", "classify", "identify", "track", "handle", "perceive"}
+# a system's skills, named of a whole kind ("detect emergency vehicles")
 GROUP_NOUNS = {"family", "group", "crowd", "party", "gang", "bunch", "convoy", "column", "pack", "couple", "line",
                "queue", "peloton", "class", "team", "troop", "pedestrians", "people"}
 NOT_A_MEMBER_AFTER_ONE = {"of", "lane", "lanes", "way", "direction", "side", "after", "another", "by", "more",
@@ -6574,7 +6657,9 @@ def _one_lane_with_oncoming(tokens: list[Token]) -> bool:
 def _passing_one_off_the_lanes(r: _Reader, units: list[Unit], k: int) -> bool:
     """'going past it in the right lane' when 'it' is the one stopped on the shoulder: the ego passes in its own
     lane."""
-    said_again = any(u.word in ("it", "him", "her", "them") for u in units[k + 1:k + 3])
+    said_again = any(u.word in ("it", "him", "her", "them") for u in units[k + 1:k + 3]) or \
+        k + 1 < len(units) and units[k + 1].category == "positions" and units[k + 1].tokens[0].word == "in"
+    # ("a van stands on the hard shoulder while the subject vehicle passes in the right-hand lane")
     last = next((e for e in reversed(r.entities) if not e.is_ego and e.count == 1 and e.type != "pedestrian"), None)
     return said_again and last is not None and last.road_type == "shoulder"
 
@@ -6945,6 +7030,23 @@ def _relative_says_what_it_is(r: _Reader, clause: Clause, phrases: list[NounPhra
 
 
 HEDGES = {"think", "thought", "believe", "believed", "guess", "reckon", "suppose"}
+
+
+def _said_to_be(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> list[NounPhrase]:
+    """'the only other car around was a Camry following behind me': a vehicle named by 'the' for the first time,
+    then said by the copula to be one named by 'a', is that one vehicle, no second."""
+    if len(phrases) < 2 or any(np.entity is None for np in phrases[:2]):
+        return phrases
+    subject, said = phrases[0], phrases[1]
+    between = units[subject.index + 1:said.first]
+    if not (subject.introduced and said.introduced and not subject.entity.is_ego and not said.entity.is_ego and
+            units[0].word == "the" and subject.first <= 2 and units[said.first].word in ("a", "an") and between and
+            between[-1].word in ("was", "is") and all(u.category in ("word", "positions") for u in between) and
+            subject.entity.type in V.EGO_TYPES and said.entity.type in V.EGO_TYPES and
+            subject.entity.count == said.entity.count == 1):
+        return phrases
+    _fold(r, subject.entity, said.entity)
+    return [subject] + phrases[2:]
 
 
 LIST_WORDS = {"a", "an", "and", "one", "two", "three", "four", "five", "six"}
@@ -7901,6 +8003,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         skip |= set(asked[1])
         r.used.update(asked[1])
     clauses = _clauses(r, skip)
+    r.staged = any(c.stage for c in clauses)
     previous: list[Entity] = []
     main_subject: list[Entity] = []  # the subject of the last clause that is not a relative one
     outside_condition: list[Entity] = []  # the subject of the last clause that is not a condition
@@ -8030,6 +8133,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_named_turn_is_anothers(r)
     _a_riders_ego(r)
     _the_camera_car(r)
+    _an_instance_given(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _numbered_lane_sides(r)
