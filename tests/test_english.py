@@ -8922,3 +8922,44 @@ def test_passing_in_a_lane_by_one_on_the_shoulder_and_holding_position_beside_ke
     said = agents("The lead vehicle is a coach in the subject vehicle's lane. A second target vehicle holds position "
                   "in the adjacent left lane right next to the subject vehicle.")
     assert ("car", "go_straight", "left") in said
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Conflict 25. Subject: a grey SUV going straight through on green when a fire engine on blue lights came "
+     "through against the red from the subject's right.",
+     [("car", "go_straight", "ego"), ("firetruck", "go_straight", "road_of_right_turn")]),
+    ("Conflict 2 (signalised crossroads): left-turning car (the subject) on a permissive green against an opposing "
+     "through motorcycle. PET 0.8 s.",
+     [("car", "turn_left", "ego"), ("motorcycle", "go_straight", "road_of_straight")]),
+    ("Conflict 11, two-way stop. Subject: a northbound pickup on the minor leg going straight across. Conflicting "
+     "vehicle: an eastbound sedan on the major road, so approaching from the subject's left.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")])])
+def test_an_observers_subject_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_second_bike_after_a_motorcycle_is_a_motorcycle():
+    said = agents("I was turning left onto 22 and never saw the motorcycle coming from my left till he was right on "
+                  "me, with a second bike right behind him.")
+    assert [k[0] for k in said if k[2] != "ego"] == ["motorcycle", "motorcycle"]
+
+
+def test_a_dashed_list_run_on_in_a_line_and_scenery_said_so():
+    said = agents("Goal: end-of-queue braking. Constraints: - 3 lanes, ego in the middle lane at 110 km/h - 3 stopped "
+                  "cars ahead in ego lane (tail of a jam) - truck in the right lane, level with ego")
+    assert sorted(said) == [("car", "go_straight", "ego")] + [("car", "stop", "front")] * 3 + [
+        ("truck", "go_straight", "right")]
+    said = agents("Goal: bus pulling out. Constraints: - 2-lane urban road, ego in the right lane - city bus at a stop "
+                  "ahead on the right, pulls out into ego's lane - passengers waiting at the stop: scenery only")
+    assert ("car", "go_straight", "ego") in said and not any(k[0] == "pedestrian" for k in said)
+
+
+def test_a_translated_specifications_main_car_lane_and_absent_participants():
+    said = agents("2. Main car drive straight in the middle lane with speed 50km/h. 3. Target car in the left adjacent "
+                  "lane, a little ahead of main car, suddenly change lane into main car lane. 4. No other traffic "
+                  "participant.")
+    assert sorted(said) == [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+
+
+def test_the_ego_said_to_be_a_vehicle_with_its_heading_is_that_vehicle():
+    assert agents("The ego is a westbound semi turning right onto Mill.") == [("truck", "turn_right", "ego")]

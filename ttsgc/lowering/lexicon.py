@@ -701,6 +701,8 @@ def _lines(text: str) -> str:
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
     text = _lane_keys(text)
+    if re.search(r":[ \t]+-[ \t]+\S", text):  # "Constraints: - 3 lanes, ego in the middle - 3 stopped cars ahead":
+        text = re.sub(r"[ \t]+-[ \t]+(?=[A-Za-z0-9])", "\n- ", text)  # a dashed list run on in one line, an item a line
     if "\n" not in text.strip() and len(INLINE_KEY.findall(text)) >= 2:
         text = INLINE_KEY.sub(_inline_key_break, text)  # "Scenario: unprotected left. Oncoming: 1 sedan, 1 box
         # truck.": notes run on in one line, a key after each full stop
@@ -1225,6 +1227,8 @@ def tokenize(text: str) -> list[Token]:
     text = _without_calques(text)
     text = AGENT_COMPOUND.sub(r"\1", text)  # "the ped-safety task", "a car-following model": no one on the road
     text = DEVICE_SWITCH.sub(r"\2", text)  # "turn fog on in the simulator", "turn your headlights on": no turn
+    text = re.sub(r"\b(oncoming|opposing|an?|the) through (?=(?:car|vehicle|motorcycle|motorbike|truck|bus|cyclist|van|"
+                  r"sedan|suv|pickup|lorry)s?\b)", r"\1 ", text)  # "an opposing through motorcycle": going on
     text = re.sub(r"\blet (him|her|them|it) (in|merge|over|out)( in)? (?:ahead of|in front of) (?:me|us)\b",
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound

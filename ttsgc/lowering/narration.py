@@ -192,7 +192,8 @@ def read_narration(prompt: str) -> Narration:
     text = _designated_groups(text, notes)
     text = _bare_appositions(text)
     text = _declared_ego(text, notes)
-    text = _vehicle_numbers(_abbreviated_bodies(_fleet_unit(_learning_agent(text, notes), notes)))
+    text = _vehicle_numbers(_abbreviated_bodies(_fleet_unit(_learning_agent(_observed_subject(text, notes), notes),
+                                                            notes)))
     text = _passengers_driver(text, notes)
     text = _crews_vehicle(text, notes)
     text = _screenplay_driver(text, notes)
@@ -1001,6 +1002,24 @@ ANY_VEHICLE = re.compile(r"\b(?:(the)\s+)?(?:[a-z-]+\s+)?vehicles?\b", re.I)
 THE_VEHICLE_ACTS = re.compile(r"\b[Tt]he vehicle\b(?!'s\b|\s+(?:ahead|in|on|to|behind|beside|next|alongside|from|"
                               r"that|which|who|of|at|with|coming|going|approaching|travelling|traveling|driving|"
                               r"parked|stopped)\b)")
+
+
+SUBJECT_ROLE = re.compile(r"\(the subject\)|(?:^|(?<=[.;:!?(]\s)|(?<=[.;:!?(]))\s*subject\s*[:,]", re.I | re.M)
+THE_SUBJECT = re.compile(r"\b(?:the\s+)?subject\b(?!\s+(?:to|vehicle|car|veh|of|matter|area)\b)", re.I)
+
+
+def _observed_subject(text: str, notes: list[str]) -> str:
+    """'left-turning car (the subject) against an opposing through motorcycle', 'Subject: a grey SUV going
+    straight ... from the subject's right': an observer's write-up names the road user it watched the subject, and
+    the scene is told from it (a road 'subject to a 30 mph limit' says nothing of anyone)."""
+    if not SUBJECT_ROLE.search(text) or re.search(r"\bego\b", text, re.I):
+        return text
+    notes.append("read the observed subject as the ego")
+    text = re.sub(r"\b(\w+)\s*\(the subject\)", r"ego \1", text, flags=re.I)  # "left-turning ego car"
+    text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*:\s*(?=(?:a|an)\b)", r"\1The ego is ", text, flags=re.I | re.M)
+    text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*:\s*", r"\1Ego: ", text, flags=re.I | re.M)
+    text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*,\s*(?=(?:a|an|the)\b)", r"\1the ego, ", text, flags=re.I | re.M)
+    return THE_SUBJECT.sub("the ego", text)
 
 
 LEARNING = re.compile(r"\b(?:rewards?|rewarded|episodes?|env|envs|policy|curriculum|obs|observations?|rl|"

@@ -3526,7 +3526,8 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
 
 
 ADJECTIVE_POSITIONS = {"oncoming", "opposing", "leading", "lead", "following", "trailing", "adjacent", "preceding",
-                       "opposite", "front", "rear", "back", "tailgating"}
+                       "opposite", "front", "rear", "back", "tailgating", "northbound", "southbound", "eastbound",
+                       "westbound"}
 TRANSITIVE_POSITIONS = {"following", "trailing", "tailgating", "leading", "preceding"}
 
 
@@ -4073,6 +4074,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         ego.aliases.add(u.base)  # every name the ego is given ("an automated shuttle bus ... the shuttle")
         _ego_listed_in_a_group(r, ego, units, first)
         return NounPhrase(ego, head, first)
+    if not is_ego and any(x.word == "scenery" for x in units[head + 1:head + 6]):
+        return NounPhrase(None, head, first)  # "passengers waiting at the stop: scenery only"
     if u.meaning == "none":  # "stopped with flashing lights": no agent, and no claim on the verb before it
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
     if count == 0:  # "no other vehicles"
@@ -4117,6 +4120,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
+    like = next((e for e in reversed(r.entities) if not e.is_ego and e.head in loose_names().get(u.base, frozenset())
+                 and e.type != kind), None) if words & {"second", "another", "other"} and not plural else None
+    if like is not None and not any(e.type == kind and not e.is_ego for e in r.entities):
+        kind = like.type  # "the motorcycle coming from my left ... with a second bike right behind him": a motorbike
     said_again = _it_was_a(r, units, first, recent)
     if said_again is not None:
         said_again.type, said_again.head = kind, u.base
@@ -6494,10 +6501,12 @@ def _ego_entity(r: _Reader, stage: int) -> Entity:
 
 
 def _said_not_there(units: list[Unit], np: NounPhrase) -> bool:
-    """A noun phrase said not to be there: 'no vehicles', 'not a single car', 'without any pedestrians'."""
+    """A noun phrase said not to be there: 'no vehicles', 'not a single car', 'without any pedestrians', or only
+    there as scenery ('passengers waiting at the stop: scenery only')."""
     return units[np.index].category == "agents" and (
         units[np.first].category == "numbers" and units[np.first].meaning == "0" or
-        np.first > 0 and units[np.first - 1].word in ("not", "without") or units[np.first].word in ("no", "zero"))
+        np.first > 0 and units[np.first - 1].word in ("not", "without") or units[np.first].word in ("no", "zero") or
+        any(x.word == "scenery" for x in units[np.index + 1:np.index + 6]))
 
 
 def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) -> bool:
@@ -6963,6 +6972,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
             bare = _undetermined(units, np)  # "SV1 is oncoming truck", "POV, heavy truck, enters": articles dropped
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
+                   u.category == "word" and u.word in ("a", "an") and copula and prev.entity.is_ego or
+                   # ("the ego is a westbound semi turning right": the article before a heading said of the noun)
                    u.category == "comma" or bare and (copula or prev.entity.label) and u.category == "positions" and
                    len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS and not _a_verb_after_the_copula(units, u)
                    for u in between) and (
