@@ -1211,8 +1211,7 @@ AGENT_COMPOUND = re.compile(r"\b(?:peds?|pedestrians?|cyclists?|bikes?|cars?|veh
 
 DEVICE_SWITCH = re.compile(r"\bturn(?:s|ed|ing)? (?:(on|off) )?((?:the |your |its |his |her |my |our )?"
                            r"(?:fog|rain|snow|head ?lights?|lights|wipers|hazards|hazard lights|high beams?|engine|"
-                           r"ignition|radio|"
-                           r"indicator|blinker))(?(1)| (?:on|off))\b")
+                           r"ignition|radio|indicator|blinker))(?(1)| (?:on|off))\b")
 
 
 def tokenize(text: str) -> list[Token]:

@@ -192,8 +192,10 @@ def read_narration(prompt: str) -> Narration:
     text = _designated_groups(text, notes)
     text = _bare_appositions(text)
     text = _declared_ego(text, notes)
-    text = _vehicle_numbers(_abbreviated_bodies(_fleet_unit(_learning_agent(_observed_subject(text, notes), notes),
-                                                            notes)))
+    text = _observed_subject(text, notes)
+    text = _learning_agent(text, notes)
+    text = _fleet_unit(text, notes)
+    text = _vehicle_numbers(_abbreviated_bodies(text))
     text = _passengers_driver(text, notes)
     text = _crews_vehicle(text, notes)
     text = _screenplay_driver(text, notes)

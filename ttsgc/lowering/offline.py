@@ -4074,7 +4074,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         ego.aliases.add(u.base)  # every name the ego is given ("an automated shuttle bus ... the shuttle")
         _ego_listed_in_a_group(r, ego, units, first)
         return NounPhrase(ego, head, first)
-    if not is_ego and any(x.word == "scenery" for x in units[head + 1:head + 6]):
+    if not is_ego and _scenery_only(units, head):
         return NounPhrase(None, head, first)  # "passengers waiting at the stop: scenery only"
     if u.meaning == "none":  # "stopped with flashing lights": no agent, and no claim on the verb before it
         return NounPhrase(None, head, head if units[first].category == "actions" else first)
@@ -4120,10 +4120,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if u.base in RIDDEN and first > lo and units[first].word in POSSESSIVES and \
             units[first - 1].base in PUSHED_ALONG:
         return NounPhrase(None, head, first)  # "a lad pushing his bike across": a pedestrian, the bike his
-    like = next((e for e in reversed(r.entities) if not e.is_ego and e.head in loose_names().get(u.base, frozenset())
-                 and e.type != kind), None) if words & {"second", "another", "other"} and not plural else None
-    if like is not None and not any(e.type == kind and not e.is_ego for e in r.entities):
-        kind = like.type  # "the motorcycle coming from my left ... with a second bike right behind him": a motorbike
+    loosely = next((e for e in reversed(r.entities) if not e.is_ego and e.type != kind and
+                    e.head in loose_names().get(u.base, frozenset())), None) \
+        if words & {"second", "another", "other"} and not plural else None
+    if loosely is not None and not any(e.type == kind and not e.is_ego for e in r.entities):
+        kind = loosely.type  # "the motorcycle coming from my left ... with a second bike right behind him"
     said_again = _it_was_a(r, units, first, recent)
     if said_again is not None:
         said_again.type, said_again.head = kind, u.base
@@ -6506,7 +6507,12 @@ def _said_not_there(units: list[Unit], np: NounPhrase) -> bool:
     return units[np.index].category == "agents" and (
         units[np.first].category == "numbers" and units[np.first].meaning == "0" or
         np.first > 0 and units[np.first - 1].word in ("not", "without") or units[np.first].word in ("no", "zero") or
-        any(x.word == "scenery" for x in units[np.index + 1:np.index + 6]))
+        _scenery_only(units, np.index))
+
+
+def _scenery_only(units: list[Unit], head: int) -> bool:
+    """'passengers waiting at the stop: scenery only': road users said, right after, to be scenery."""
+    return any(x.word == "scenery" for x in units[head + 1:head + 6])
 
 
 def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) -> bool:
@@ -6520,8 +6526,7 @@ def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) ->
 
 INSTANCE_OPENINGS = (["for", "example"], ["for", "instance"], ["e", "g"], ["one", "instance"],
                      ["in", "the", "instance"], ["concrete", "case"], ["concrete", "example"], ["a", "typical"],
-                     ["a", "clean", "example"],
-                     ["example", ","], ["say", "on"], ["say", "at"], ["say", "in"])
+                     ["a", "clean", "example"], ["example", ","], ["say", "on"], ["say", "at"], ["say", "in"])
 
 
 def _an_instance_given(r: _Reader) -> None:
@@ -6617,8 +6622,8 @@ def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entit
     return others[-1] if others else None
 
 
+# A system's skills, said of a whole kind ("detect emergency vehicles").
 SYSTEM_SKILLS = {"detect", "recognize", "recognise", "classify", "identify", "track", "handle", "perceive"}
-# a system's skills, named of a whole kind ("detect emergency vehicles")
 GROUP_NOUNS = {"family", "group", "crowd", "party", "gang", "bunch", "convoy", "column", "pack", "couple", "line",
                "queue", "peloton", "class", "team", "troop", "pedestrians", "people"}
 NOT_A_MEMBER_AFTER_ONE = {"of", "lane", "lanes", "way", "direction", "side", "after", "another", "by", "more",
