@@ -8963,3 +8963,9 @@ def test_a_translated_specifications_main_car_lane_and_absent_participants():
 
 def test_the_ego_said_to_be_a_vehicle_with_its_heading_is_that_vehicle():
     assert agents("The ego is a westbound semi turning right onto Mill.") == [("truck", "turn_right", "ego")]
+
+
+def test_the_ego_named_again_by_its_type_in_a_note_is_the_ego():
+    said = agents("Conflict 19, mid-block. Subject: a city bus in the centre lane, going straight. A white hatchback in "
+                  "the left lane just ahead of the bus changed abruptly right into the centre lane. Bus braked.")
+    assert sorted(said) == [("bus", "go_straight", "ego"), ("car", "change_lane_to_right", "front_left")]

@@ -4223,6 +4223,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not any(not e.is_ego and e.type == "car" for e in r.entities) and not listed and not placed_here:
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego;
         # "my car turns right, car cutting in from the left": a list's item, another car
+    if (bare and first == head or definite and words <= {"the"} and first == head - 1) and first == lo and \
+            ego_now is not None and kind != "car" and ego_now.type == kind and count is None and not plural and \
+            not existential and not listed and not placed_here and \
+            not any(not e.is_ego and e.type == kind for e in r.entities):
+        return NounPhrase(ego_now, head, first)  # "Subject: a city bus in the centre lane ... Bus braked": the ego,
+        # named again by its type, as a note does
     if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
             count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
