@@ -8916,8 +8916,8 @@ def test_a_benchmarks_adversary_said_with_the_is_new_and_a_role_it_plays_is_no_o
 
 
 def test_passing_in_a_lane_by_one_on_the_shoulder_and_holding_position_beside_keep_their_lanes():
-    said = agents("A broken-down van stands on the hard shoulder ahead on the right while the subject vehicle passes in "
-                  "the right-hand lane at 60 km/h.")
+    said = agents("A broken-down van stands on the hard shoulder ahead on the right while the subject vehicle passes "
+                  "in the right-hand lane at 60 km/h.")
     assert ("car", "go_straight", "ego") in said
     said = agents("The lead vehicle is a coach in the subject vehicle's lane. A second target vehicle holds position "
                   "in the adjacent left lane right next to the subject vehicle.")
@@ -8966,6 +8966,6 @@ def test_the_ego_said_to_be_a_vehicle_with_its_heading_is_that_vehicle():
 
 
 def test_the_ego_named_again_by_its_type_in_a_note_is_the_ego():
-    said = agents("Conflict 19, mid-block. Subject: a city bus in the centre lane, going straight. A white hatchback in "
-                  "the left lane just ahead of the bus changed abruptly right into the centre lane. Bus braked.")
+    said = agents("Conflict 19, mid-block. Subject: a city bus in the centre lane, going straight. A white hatchback "
+                  "in the left lane just ahead of the bus changed abruptly right into the centre lane. Bus braked.")
     assert sorted(said) == [("bus", "go_straight", "ego"), ("car", "change_lane_to_right", "front_left")]
