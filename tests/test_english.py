@@ -8969,3 +8969,12 @@ def test_the_ego_named_again_by_its_type_in_a_note_is_the_ego():
     said = agents("Conflict 19, mid-block. Subject: a city bus in the centre lane, going straight. A white hatchback "
                   "in the left lane just ahead of the bus changed abruptly right into the centre lane. Bus braked.")
     assert sorted(said) == [("bus", "go_straight", "ego"), ("car", "change_lane_to_right", "front_left")]
+
+
+def test_a_newcomers_corrections_replace_what_they_correct():
+    said = agents("I want something simple: a car parked ahead of me in my lane, and I have to go around it by "
+                  "changing into the right lane. Hmm, maybe make the parked thing a delivery truck instead of a car.")
+    assert sorted(said) == [("car", "change_lane_to_right", "ego"), ("truck", "stop", "front")]
+    said = agents("My car goes straight through a junction on a green light, and a cyclist from the left road is "
+                  "crossing... no wait, the cyclist should be waiting at the light.")
+    assert ("cyclist", "stop", "road_of_left_turn") in said

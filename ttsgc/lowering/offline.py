@@ -788,12 +788,31 @@ CORRECTION_LEADS = {"wait", "actually", "no", "oh", "sorry", "hmm", "ok", "okay"
 SAID_COUNT = {"a", "an", "of", "some"}
 
 
+def _opens_a_correction(units: list[Unit]) -> bool:
+    """'no wait, the cyclist should be waiting', 'actually, the van is parked': a clause that takes back what was
+    just said of one named before."""
+    words = [t.word for u in units[:3] for t in u.tokens]
+    return words[:2] in (["no", "wait"], ["wait", "no"], ["i", "mean"]) or words[:1] in (["actually"], ["sorry"])
+
+
+def _made_the_thing(units: list[Unit], k: int) -> int | None:
+    """'maybe make the parked thing a delivery truck': 'make the' and a few words naming no agent, then 'a': the
+    unit of that 'a', as after 'make it'."""
+    if units[k].word != "make" or k + 2 >= len(units) or units[k + 1].word != "the":
+        return None
+    n = k + 2
+    while n < len(units) and n - k <= 4 and units[n].category in ("word", "actions") and \
+            units[n].word not in ("a", "an"):
+        n += 1
+    return n if n > k + 2 and n < len(units) and units[n].word in ("a", "an") else None
+
+
 def _later_corrections(r: "_Reader") -> list[Unit]:
     """'a bunch of kids crossing ... wait make it 3 kids', 'a car cuts in. actually make it a truck': a chat
     corrects itself later on; the count or type said last replaces the earlier one, where it was said."""
     units, k = list(r.units), 1
     while k < len(units):
-        end = _marker_end(units, k, LATER_CORRECTIONS)
+        end = _marker_end(units, k, LATER_CORRECTIONS) or _made_the_thing(units, k)
         if end is None:
             k += 1
             continue
@@ -828,6 +847,9 @@ def _later_corrections(r: "_Reader") -> list[Unit]:
             while stop < len(units) and stop - n < 5 and units[stop].category not in ("comma", "agents", "actions") \
                     and units[stop].tokens[0].sentence == units[n].tokens[0].sentence:
                 stop += 1
+            if stop < len(units) and units[stop].category == "agents" and units[stop - 1].word in ("a", "an") and \
+                    units[stop].tokens[0].sentence == units[n].tokens[0].sentence:
+                stop += 1  # "a delivery truck instead of a car": the car replaced, said again
         sentence = units[i].tokens[0].sentence
         moved = [Unit(u.start, u.end, u.category, u.meaning, tuple(replace(t, sentence=sentence) for t in u.tokens))
                  for u in units[j:n + 1]] + ([units[i]] if said is None else [])
@@ -8071,7 +8093,13 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                 previous = [speaker]  # a commentary's "once both are through, turning left": the speaker's doing
         before = len(r.entities)
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
+        said_until = r.order
         subject = _read_clause(r, clause, previous, recent, pending)
+        if _opens_a_correction(clause.units):
+            for e in subject[:1] if subject and subject[0] in r.entities[:before] else []:
+                if any(a[3] > said_until for a in e.actions):  # "a cyclist ... is crossing... no wait, the cyclist
+                    e.actions = [a for a in e.actions if a[3] > said_until or a[0] != clause.stage]  # should be
+                    # waiting": what it does is said again, and the new saying stands
         if _says_no_part(clause.units, tokens):
             for e in subject:  # "the person in the driver's seat is our safety operator, not an actor"
                 if not e.is_ego:
