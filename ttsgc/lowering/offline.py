@@ -5641,7 +5641,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     phrases.sort(key=lambda p: p.index)
     phrases = _appositions(r, units, phrases)
     phrases = _members_listed(r, clause, phrases, recent)
-    phrases = _said_to_be(r, units, _relative_says_what_it_is(r, clause, phrases))
+    phrases = _relative_says_what_it_is(r, clause, phrases)
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
@@ -6479,6 +6479,7 @@ def _waited_for(units: list[Unit], first: int) -> bool:
                                         for u in units[max(0, first - 3):first - 1])
 
 
+PLACE_ADVERBS = {"around", "nearby", "about"}  # "the only other car around was a Camry": where, before what it is
 # "the SV is a patrol car", "I am employed as a bus driver": what the first noun is, said of it
 APPOSITION_WORDS = {"is", "was", "be", "are", "being", "as", "am", "employed", "working", "work", "works"}
 STATING_MODALS = {"shall", "will", "must", "should"}  # "the vehicle under test shall be a goods vehicle": it is one
@@ -7005,6 +7006,8 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 continue
             bare = _undetermined(units, np)  # "SV1 is oncoming truck", "POV, heavy truck, enters": articles dropped
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
+                   u.category == "word" and u.word in PLACE_ADVERBS and copula or
+                   # ("the only other car around was a Camry": where it was, then what it was)
                    u.category == "word" and u.word in ("a", "an") and copula and prev.entity.is_ego or
                    # ("the ego is a westbound semi turning right": the article before a heading said of the noun)
                    u.category == "comma" or bare and (copula or prev.entity.label) and u.category == "positions" and
@@ -7074,23 +7077,6 @@ def _relative_says_what_it_is(r: _Reader, clause: Clause, phrases: list[NounPhra
 
 
 HEDGES = {"think", "thought", "believe", "believed", "guess", "reckon", "suppose"}
-
-
-def _said_to_be(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> list[NounPhrase]:
-    """'the only other car around was a Camry following behind me': a vehicle named by 'the' for the first time,
-    then said by the copula to be one named by 'a', is that one vehicle, no second."""
-    if len(phrases) < 2 or any(np.entity is None for np in phrases[:2]):
-        return phrases
-    subject, said = phrases[0], phrases[1]
-    between = units[subject.index + 1:said.first]
-    if not (subject.introduced and said.introduced and not subject.entity.is_ego and not said.entity.is_ego and
-            units[0].word == "the" and subject.first <= 2 and units[said.first].word in ("a", "an") and between and
-            between[-1].word in ("was", "is") and all(u.category in ("word", "positions") for u in between) and
-            subject.entity.type in V.EGO_TYPES and said.entity.type in V.EGO_TYPES and
-            subject.entity.count == said.entity.count == 1):
-        return phrases
-    _fold(r, subject.entity, said.entity)
-    return [subject] + phrases[2:]
 
 
 LIST_WORDS = {"a", "an", "and", "one", "two", "three", "four", "five", "six"}
