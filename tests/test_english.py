@@ -8978,3 +8978,45 @@ def test_a_newcomers_corrections_replace_what_they_correct():
     said = agents("My car goes straight through a junction on a green light, and a cyclist from the left road is "
                   "crossing... no wait, the cyclist should be waiting at the light.")
     assert ("cyclist", "stop", "road_of_left_turn") in said
+
+
+def test_weather_that_sits_or_falls_is_no_ones_doing():
+    said = agents("Early morning fog sitting over the bridge, visibility poor. Our ego is the white Tesla in the right "
+                  "lane. A motorbike in the lane on its left cuts across in front of it.")
+    assert ("car", "go_straight", "ego") in said
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("I drive the 22 bus. A boy on a moped came flying up the outside of me.", "bus"),
+    ("I pulled off to go straight across, and a pickup coming from my left ran its stop sign and missed the rear "
+     "of the bus by a few feet.", "bus"),
+    ("I was travelling along Albert Road at about 25 mph when a police car pulled out across in front of me, so I "
+     "then stopped to let it go. Two passengers were standing at the time.", "bus"),
+    ("At the signal the truck turned left on a green arrow while two oncoming cars sat at their red light. A woman "
+     "stood on the sidewalk of the road we turned onto.", "truck")])
+def test_the_speakers_vehicle_named_by_its_route_its_part_or_its_passengers(prompt, ego):
+    assert {k[0] for k in agents(prompt) if k[2] == "ego"} == {ego}
+
+
+def test_a_driver_who_signalled_changes_lane():
+    said = agents("I was stationary at the Library stop with the doors open. Once loading was done I signalled and "
+                  "moved out into the right lane.")
+    assert ("bus", "change_lane_to_right", "ego") in said
+
+
+def test_an_operators_note_on_its_numbered_vehicle():
+    said = agents("Unit 218, 02:10. It stopped behind a delivery truck double-parked in its lane, hazards on, driver "
+                  "nowhere around. Then, once I confirmed the left lane was clear, it changed into the left lane.")
+    assert sorted(said) == [("car", "change_lane_to_left", "ego"), ("car", "stop", "ego"), ("truck", "stop", "front")]
+    said = stages("Robotaxi 9 requested help on a right turn: a crowd was streaming across the crosswalk it needed, "
+                  "and it waited about 4 minutes. Then it made the turn once they thinned out.")
+    assert [[a for a in st if a[0] == "ego"] for st in said] == [[("ego", "stop", None)], [("ego", "turn_right", None)]]
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in said[0]
+    said = agents("Car 31 stopped on a narrow street when a patrol car with its lights on came up right behind it.")
+    assert sorted(said) == [("car", "stop", "ego"), ("police", "go_straight", "back")]
+
+
+def test_after_a_manoeuvre_named_as_a_noun_is_no_later_stage():
+    scene = lower_prompt("The ego turned left after a short wait, and a cyclist crossed in front of it.",
+                         "offline").scenario
+    assert len(scene.stages) == 1

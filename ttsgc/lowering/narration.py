@@ -195,6 +195,7 @@ def read_narration(prompt: str) -> Narration:
     text = _observed_subject(text, notes)
     text = _learning_agent(text, notes)
     text = _fleet_unit(text, notes)
+    text = _numbered_protagonist(text, notes)
     text = _vehicle_numbers(_abbreviated_bodies(text))
     text = _passengers_driver(text, notes)
     text = _crews_vehicle(text, notes)
@@ -782,6 +783,26 @@ def _street_names(text: str) -> str:
 def _abbreviated_bodies(text: str) -> str:
     """'a sport utility vehicle ... the SUV': a body spelt out is the same as its abbreviation, said again."""
     return re.sub(r"\bsport[- ]utility vehicle(s?)\b", r"SUV\1", text, flags=re.I)
+
+
+NUMBERED_VEHICLE = re.compile(r"(?:^|(?<=[.:;!?\n])\s*)(car|vehicle|av|robotaxi|shuttle|van|bus|truck)\s+#?(\d{1,5})\b"
+                              + NOT_A_QUANTITY + r"(?=\s+[a-z])", re.I)
+ANY_NUMBERED = re.compile(r"\b(?:" + FLEET_NOUNS + r"|av|robotaxi|shuttle|v|veh)\s*#?\s*(\d{1,5})\b" + NOT_A_QUANTITY,
+                          re.I)
+
+
+def _numbered_protagonist(text: str, notes: list[str]) -> str:
+    """'Car 12 called in at an all-way stop ... it went straight through', 'Robotaxi 9 requested help': an
+    operator's note opens a sentence on the one vehicle it numbers, the one it is about: the ego. Not where the
+    text names the ego, or numbers more than one vehicle (a crash report's Car 1 and Car 2)."""
+    found = NUMBERED_VEHICLE.search(text)
+    if found is None or re.search(r"\bego\b", text, re.I) or \
+            {m.group(1) for m in ANY_NUMBERED.finditer(text)} != {found.group(2)}:
+        return text
+    notes.append(f"read {found.group(1)} {found.group(2)} as the ego")
+    body = found.group(1).lower()
+    ego = "the ego " + body if body in ("bus", "truck", "shuttle") else "the ego"
+    return text[:found.start(1)] + ego + text[found.end(2):]
 
 
 def _vehicle_numbers(text: str) -> str:

@@ -300,9 +300,18 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
     return out
 
 
+def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
+    """'I signalled and moved out into the right lane': 'signalled' right after the one who did it is their
+    indicating, not a signalled junction."""
+    return [Unit(u.start, u.end, "actions", "try", u.tokens)
+            if k > 0 and u.category == "road" and len(u.tokens) == 1 and u.tokens[0].word in ("signaled", "signalled")
+            and units[k - 1].category == "agents" else u for k, u in enumerate(units)]
+
+
 def _units(tokens: list[Token]) -> list[Unit]:
-    return _aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(_kerb_sides(
-        tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))))))
+    units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
+    return _signalled_by_a_driver(_aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(
+        units)))))
 
 
 FROM_BEHIND_VERBS = {"rear end", "rear ended", "shunt", "run into the back of"}
@@ -1154,7 +1163,7 @@ PACE_PLACES = {"behind", "ahead", "alongside", "beside", "level", "next", "abrea
 TAIL_ENDS = {"bumper", "tail", "back", "rear", "boot", "trunk", "tailgate"}
 
 
-SPEED_UNITS = {"mph", "kmh", "kph", "kmph", "mps"}
+SPEED_UNIT_WORDS = {"mph", "kmh", "kph", "kmph", "mps"}
 STILL_AT = {"traffic", "queue", "jam", "red", "lights", "light", "junction", "line"}
 
 
@@ -1166,7 +1175,7 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
            for a, b, c in zip(words, words[1:], words[2:])):
         return True  # "sat about 2m off my bumper for miles", "sitting right on our tail": tailgating
     near = words[:12]
-    if any(w in ("cruise", "limiter") or w in SPEED_UNITS and k > 0 and read_number(near[k - 1]) is not None
+    if any(w in ("cruise", "limiter") or w in SPEED_UNIT_WORDS and k > 0 and read_number(near[k - 1]) is not None
            for k, w in enumerate(near)) and not set(near) & STILL_AT:
         return True  # "we were sat in the middle one with the cruise set at 60 mph": sitting at a speed drives on
     if words[1:2] == ["the"]:
@@ -2475,7 +2484,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 skip_next = True  # "after overtake it comes in": when, and no predicate of its own
             continue  # "after braking for a fox": when, not a stage
         if u.category == "sequence" and u.word == "after" and _has_verb(current) and \
-                not (nxt is not None and nxt.category == "number") and _no_verb_to_the_sentence_end(units, k + 1):
+                not (nxt is not None and nxt.category == "number") and (
+                    _no_verb_to_the_sentence_end(units, k + 1) or _a_manoeuvre_named_after(units, k)):
             r.mark(u)
             continue  # "two cars stopped ahead after a minor collision", "parked just after the junction": when
             # or where that was, said after it; what comes next is no later stage
@@ -2750,6 +2760,26 @@ def _no_verb_to_the_sentence_end(units: list[Unit], k: int) -> bool:
     rest = [u for u in units[k:] if u.tokens[0].sentence == sentence]
     return bool(rest) and not any(u.category in ("actions", "sequence") or u.word.endswith(("ed", "ing"))
                                   for u in rest)
+
+
+def _a_manoeuvre_named_after(units: list[Unit], k: int) -> bool:
+    """'asked for help after a hard brake on a boulevard, ...': 'after' and a manoeuvre named as a noun (an article,
+    its adjectives, the noun) with no verb to the clause's end says when, not a later stage."""
+    j = k + 1
+    if j >= len(units) or units[j].word not in ("a", "an", "the", "its", "his", "her", "their", "my", "our"):
+        return False
+    j += 1
+    while j < len(units) and units[j].category in ("behaviours", "word") and units[j].word not in (",", "and"):
+        j += 1
+    if j >= len(units) or units[j].category != "actions" or units[j].tokens[0].word.endswith(("ing", "ed", "s")):
+        return False
+    sentence = units[k].tokens[0].sentence
+    for u in units[j + 1:]:
+        if u.tokens[0].sentence != sentence or u.category == "comma" or u.word in ("and", "but"):
+            return True
+        if u.category in ("actions", "sequence") or u.category == "agents" and u.meaning != "none":
+            return False
+    return True
 
 
 def _a_wait_of_minutes(units: list[Unit], k: int) -> bool:
@@ -3226,8 +3256,8 @@ SPOKEN_TAGS = {"why", "honest", "innit", "yeah", "though", "eh", "ta", "seriousl
 DAMAGED = {"totaled", "totalled", "damaged", "dented", "wrecked", "smashed", "scratched", "crushed", "destroyed",
            "undriveable", "undrivable", "fine", "ok", "okay", "undamaged", "repaired", "gone"}
 DEGREE = {"badly", "completely", "totally", "slightly", "a", "now", "basically", "pretty", "all", "still"}
-OWNING = {"own", "owns", "buy", "buys", "sell", "sells", "hate", "hates", "love", "loves", "rent", "rents", "insure",
-          "insures", "ban", "bans", "banning", "allow", "allows"}
+HAVING_OF_A_KIND = {"own", "owns", "buy", "buys", "sell", "sells", "hate", "hates", "love", "loves", "rent", "rents",
+                    "insure", "insures", "ban", "bans", "banning", "allow", "allows"}
 NEVER_CAME = {"come", "came", "comes", "arrive", "arrived", "arrives", "appear", "appeared", "appears"}
 AWAITED_BY = {"i", "we", "you", "was", "were", "am", "are", "waiting", "for", "still", "yet", "that",
               "which", "even", "they"}  # "the bus (I was waiting for) (still) hadn't come": who waits for it
@@ -3280,7 +3310,7 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     bare = _bare_plural(tokens, u) or last.plural and before[-1].word == "than" and \
         not (len(before) > 1 and before[-2].word in ("more", "fewer"))  # "harder than people think"
     if bare and u.meaning not in ("ego", "none"):
-        if before[-1:] and before[-1].word in OWNING:
+        if before[-1:] and before[-1].word in HAVING_OF_A_KIND:
             return True  # "campaigners own cars too": cars in general
         if before[-1:] and before[-1].word == "than" or after[:1] and after[0].word in GENERAL_TRUTH_VERBS:
             return True  # "harder than people think", "people underestimate it"
@@ -6609,6 +6639,9 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
         return named_otherwise  # "A taxi pulled out. The cabbie then stopped": the taxi, by a word not known
     if _someone_of_theirs(r, units, verbs[0]):
         return None
+    if verbs[0] > 0 and units[verbs[0] - 1].category == "weather" and \
+            not units[verbs[0] - 1].meaning.startswith("time:"):
+        return None  # "fog sitting over the bridge", "rain coming down": the weather's doing ("night ride" is not)
     return _ego_entity(r, stage)
 
 
@@ -7206,14 +7239,20 @@ ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", 
 
 def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     """'Drove the fire engine to a car fire on the ring road', 'First shout driving the fire engine: ...': in a
-    first-person account, a vehicle driven by a verb with no subject of its own is the speaker's."""
-    if not _one_vehicle(np) or np.first < 1 or units[np.first].word not in ("the", "my", "our", "a", "an"):
+    first-person account, a vehicle driven by a verb with no subject of its own, or with the speaker as its subject
+    ('I drive the 22 bus'), is the speaker's."""
+    first = np.first - 2 if np.first >= 2 and units[np.first - 1].category in ("numbers", "number") and \
+        units[np.first - 2].word in ("the", "my", "our") else np.first  # "the 22 bus": its route number
+    if not _one_vehicle(np) or first < 1 or units[first].word not in ("the", "my", "our", "a", "an"):
         return False
-    verb = units[np.first - 1]
+    verb = units[first - 1]
     if verb.category != "actions" or verb.tokens[0].base != "drive" or len(verb.tokens) != 1:
         return False
     sentence = verb.tokens[0].sentence
-    before = [u for u in units[:np.first - 1] if u.tokens[0].sentence == sentence]
+    before = [u for u in units[:first - 1] if u.tokens[0].sentence == sentence]
+    if before and before[-1].category == "agents" and before[-1].meaning == "ego" and \
+            before[-1].tokens[0].word in ("i", "we") and not any(u.category == "agents" for u in before[:-1]):
+        return True  # "I drive the 22 bus": the speaker's own, said with the speaker as the subject
     return not any(u.category == "agents" for u in before) and any(t.word in ("i", "me", "my", "we", "us", "our")
                                                                   for t in r.tokens)
 
@@ -7387,9 +7426,12 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return single[-1] if single else next((e for e in recent if e.is_ego), None)
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
         things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
-        if not things and previous_subject:
+        if things:
+            return things[0]  # "a crowd streamed across the crosswalk it needed, and it waited": not the crowd
+        if previous_subject:
             vehicles = [e for e in recent if e.type not in V.VULNERABLE_TYPES]
-            return vehicles[-1] if vehicles else previous_subject[0]
+            return vehicles[-1] if vehicles else None  # ("a crowd streams across, and it waits": no one on foot is
+            # 'it'; the ego, unnamed so far)
     if not as_object:
         if previous_subject:
             return previous_subject[0]
@@ -8081,6 +8123,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         said_until = r.order
         subject = _read_clause(r, clause, previous, recent, pending)
+        aside = clause.link == "," and subject and all(e in r.entities[:before] for e in subject) and \
+            not _has_verb(clause.units) and k > 0
+        # "It stopped behind a truck double-parked in its lane, driver nowhere around. ..., it changed lane": a
+        # verbless aside on one named before leaves the subject where it was
         if _opens_a_correction(clause.units):
             for e in subject[:1] if subject and subject[0] in r.entities[:before] else []:
                 if any(a[3] > said_until for a in e.actions):  # "a cyclist ... is crossing... no wait, the cyclist
@@ -8090,7 +8136,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             for e in subject:  # "the person in the driver's seat is our safety operator, not an actor"
                 if not e.is_ego:
                     e.features.add("no_part")
-        if subject and not clause.condition:
+        if subject and not clause.condition and not aside:
             outside_condition = subject
         if clause.condition and clause.stage > 0 and _gone_by(clause.units):
             for e in r.entities[before:]:  # "once the oncoming car has gone by, it turns": the car goes by while the
@@ -8098,7 +8144,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                     e.stage -= 1
                     e.actions = [(a[0] - (a[0] == clause.stage),) + a[1:] for a in e.actions]
         _boxed_in_by_those_listed(r, clause, before, ego_blocked, boxed)
-        if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS:
+        if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS and not aside:
             main_subject = subject
         more_doers = clause.link == "and" and k > 0 and clauses[k - 1] is r.passive  # "by a van and a bus"
         if clause.units and (clause.units[0].word == "by" or more_doers) and not _has_verb(clause.units) and \
@@ -8137,7 +8183,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if followed is not None and clause is r.passive and subject and not any(e.is_ego for e in subject):
             led = [e for e in r.entities[before:] if not e.is_ego and e not in subject]
             subject = led[:1] + subject  # "a car, followed by a motorcyclist, approaches from our left": both do
-        if subject:
+        if subject and not aside:
             previous = subject
         if clause.antecedent is not None and not clause.antecedent.is_ego and clause.antecedent not in subject and \
                 k + 1 < len(clauses) and clauses[k + 1].link in (",", "") and clauses[k + 1].units and \
@@ -8160,6 +8206,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         _protagonist_vehicle(r, driver_named=False)  # "I watch drivers speed past the school ... a car speeding
         # past, and a boy running out in front of it": an onlooker speaks; the scene is told from the car
     _the_ego_said_again(r)
+    _the_speakers_vehicle_by_a_part(r)
     _the_learner_at_the_wheel(r)
     _witness_on_foot(r)
     _the_patients_vehicle(r)
@@ -8362,10 +8409,11 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
         # pulled away": met by someone, who is the ego
     named = next((u for u in r.units if u.category == "agents" and u.meaning != "none"), None)
-    if not people_first and (named is None or next(u for u in r.units if u.tokens[0].sentence ==
-                                                    named.tokens[0].sentence and u.category != "word" and
-                                                    not u.meaning.startswith("compass_")) is not named):
+    opens_on_it = named is not None and next(u for u in r.units if u.tokens[0].sentence == named.tokens[0].sentence
+                                             and u.category != "word" and not u.meaning.startswith("compass_")) is named
+    if not people_first and not opens_on_it and not _the_speakers_vehicle_named_first(r):
         return None  # "the queue reaches the retail park, and a lorry is edging along": it opens on no vehicle
+        # (but "At the signal the truck turned left ... the road we turned onto": the speakers' own, said first)
     opening = [u for u in r.units if u.start == 0 or r.tokens[u.start - 1].sentence != u.tokens[0].sentence]
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
@@ -8549,6 +8597,32 @@ def _the_ego_said_again(r: _Reader) -> None:
             continue
         r.entities.remove(e)
         r.notes.append(f"read 'the {e.head}' as the ego named again: it does nothing and is placed nowhere")
+
+
+MET_PARTS = {"front", "rear", "back", "side", "nose", "tail", "bumper", "nearside", "offside", "roof", "cab",
+             "door", "mirror", "wing", "corner", "bonnet", "hood", "boot", "trunk", "windscreen", "windshield"}
+
+
+def _the_speakers_vehicle_by_a_part(r: _Reader) -> None:
+    """'I pulled off to go straight across, and a pickup ... missed the rear of the bus': in a first-person account
+    whose vehicle is named nowhere else, a vehicle first said with 'the' as the one whose part was met, and no
+    other of its kind, is the speaker's own (not 'in front of the shuttle', a place)."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    speaker = FIRST_PERSON | {"we", "us", "our"}
+    if ego is None or ego.head not in speaker or ego.aliases - speaker or ego.type != "car":
+        return
+    for e in list(r.entities):
+        k = e.said_at
+        if e.is_ego or not e.definite or e.count != 1 or e.type not in V.EGO_TYPES or e.label or k < 3 or \
+                [t.word for t in r.tokens[k - 2:k]] != ["of", "the"] or r.tokens[k - 3].word not in MET_PARTS or \
+                r.tokens[k - 4].word == "in" or \
+                any(x is not e and not x.is_ego and x.type == e.type for x in r.entities):
+            continue
+        ego.type = e.type
+        ego.aliases.add(e.head)
+        _taken_over(r, e, ego)
+        r.notes.append(f"read 'the {e.head}' whose {r.tokens[k - 3].word} was met as the speaker's own")
+        return
 
 
 LEARNERS = {"pupil", "learner", "student", "trainee", "apprentice"}
@@ -9083,13 +9157,15 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
                   ("my", "rig"), ("the", "rig"), ("my", "load"), ("tachograph",), ("tacho",))
 
 
-BUS_DRIVERS_WORDS = (("stop", "arm"), ("my", "arm"), ("arm", "out"), ("my", "bus"))
+BUS_DRIVERS_WORDS = (("stop", "arm"), ("my", "arm"), ("arm", "out"), ("my", "bus"), ("standing", "passengers"),
+                     ("passengers", "were", "standing"), ("passengers", "on", "board"), ("doors", "open"),
+                     ("the", "terminus"), ("my", "route"))  # ("at the stop with the doors open")
 
 
 def _a_drivers_trade(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
     the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name; one who puts out
-    a stop arm drives a (school) bus."""
+    a stop arm, or has passengers standing, drives a bus."""
     words = [t.word for t in r.tokens]
     told = [t.word for t in r.tokens if not t.question]  # (not "what's the rule when a school bus is stopped with
     # its stop arm out?")
@@ -9162,12 +9238,14 @@ def _title(prompt: str, tokens: list[Token]) -> range:
         return range(0)
     if _names_agent(m.group(1)) and m.group(1).strip().lower().split()[0] not in ("scenario", "case", "test"):
         return range(0)  # "ped: dashes across": the key is the subject (lexicon._keyed_agents)
-    said = {(f.category, f.meaning) for f in matches(tokenize(m.group(1)))}
+    found = matches(tokenize(m.group(1)))
+    said = {(f.category, f.meaning) for f in found}
     if any(category == "actions" for category, _ in said) and (("agents", "ego") in said and (
-            m.group(1).strip().lower().split()[0] in ("the", "i", "we", "you", "player", "my", "our", "ego"))
+            m.group(1).strip().lower().split()[0] in ("the", "i", "we", "you", "player", "my", "our", "ego") or
+            any(f.start == 0 and (f.category, f.meaning) == ("agents", "ego") for f in found))
             or {t.word for t in tokenize(m.group(1))} & {"i", "me", "we", "us"}):
-        return range(0)  # "The player makes the left across oncoming traffic: ...", "A taxi cut me off: it ...": a
-        # sentence (a title names no speaker), not a title
+        return range(0)  # "The player makes the left across oncoming traffic: ...", "A taxi cut me off: it ...",
+        # "Robotaxi 9 requested help on a right turn: ...": a sentence (a title names no speaker), not a title
     counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+\w+s\b",
                         m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
     if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
