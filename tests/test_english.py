@@ -9020,3 +9020,43 @@ def test_after_a_manoeuvre_named_as_a_noun_is_no_later_stage():
     scene = lower_prompt("The ego turned left after a short wait, and a cyclist crossed in front of it.",
                          "offline").scenario
     assert len(scene.stages) == 1
+
+
+def test_the_ego_named_with_its_place_in_an_apposition_and_again_by_that_name():
+    said = agents("Our ego, a green hatchback in the right lane, is coming up on a tow truck stopped on the shoulder. "
+                  "There's a motorcycle riding alongside the hatchback in the lane to its left.")
+    assert ("motorcycle", "go_straight", "left") in said and [k for k in said if k[0] == "car"] == [
+        ("car", "go_straight", "ego")]
+
+
+def test_scenery_said_again_with_the_is_still_scenery():
+    said = agents("A kid on a bike suddenly shoots out of a driveway on the right between parked cars and crosses in "
+                  "front of us. Ego brakes to a halt. The parked cars hide everything but his helmet.")
+    assert not any(k[0] == "car" and k[2] != "ego" for k in said)
+
+
+def test_tram_tracks_are_no_tram():
+    said = agents("Crossroad of equal roads, no signs and no lights, only tram tracks go across. I want turn left. "
+                  "From right road comes cyclist and from left road comes taxi.")
+    assert not any(k[0] == "bus" for k in said)
+
+
+def test_a_configs_opening_scenario_key_is_its_name():
+    said = agents("scenario: stopped vehicle on shoulder. road: 2-lane rural road. ego: straight, right lane. obj: "
+                  "white van stopped on hard shoulder ahead right, hazards on.")
+    assert len([k for k in said if k[2] != "ego"]) == 1
+
+
+def test_someones_relation_on_the_pavement_is_a_pedestrian():
+    said = agents("Old man is crossing at crosswalk in front. His wife is standing on sidewalk at right side, she is "
+                  "not crossing.")
+    assert ("pedestrian", "on_the_sidewalk", "right") in said
+    said = agents("Two kids were waiting on the sidewalk ahead to the right, next to a zebra crossing. One of them "
+                  "darted onto the crossing, and our car stopped while her friend stayed on the sidewalk.")
+    assert len([k for k in said if k[0] == "pedestrian"]) == 2
+
+
+def test_the_driver_placed_behind_the_speaker_is_no_driver_named_before():
+    said = agents("At the yield sign, I came to a full stop and waited for a motorcyclist on the road to the left. The "
+                  "driver waiting behind us honked twice.")
+    assert ("car", "stop", "back") in said and ("motorcycle", "go_straight", "road_of_left_turn") in said

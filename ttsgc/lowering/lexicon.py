@@ -650,6 +650,7 @@ def _tables(lines: list[str]) -> list[str]:
     return out
 
 
+OPENING_TITLE_KEY = re.compile(r"\s*([A-Za-z]+)[ \t]*:[ \t]*([^.:\n]{1,80})\.[ \t]+[A-Za-z]+[ \t]*:")
 INLINE_KEY = re.compile(r"(?<=[.;])[ \t]+(?=([A-Z][A-Za-z/-]*(?: [A-Za-z/-]+){0,2}):[ \t])")
 
 
@@ -708,6 +709,11 @@ def _lines(text: str) -> str:
         # truck.": notes run on in one line, a key after each full stop
     text = _without_advice(text)
     if "\n" not in text.strip():
+        title = OPENING_TITLE_KEY.match(text)
+        if title and title.group(1).lower() in TITLE_KEYS and any(
+                f.category == "agents" and f.meaning not in ("ego", "none") for f in matches(tokenize(title.group(2)))):
+            text = "\u00a7 " + text[title.start(2):]  # "scenario: stopped vehicle on shoulder. road: ...": its name,
+            # whose vehicle the keys name again ("Scenario: unprotected left turn." is the ego's turn, read)
         numbered = NUMBERED_KEY.match(text)
         if numbered and numbered.group(1).split()[0].lower() in CASE_WORDS:
             text = text[numbered.end():]  # "Event 7: motorcycle at a junction. ...": which event, no scene word

@@ -183,6 +183,7 @@ class _Reader:
     order: int = 0
     keys: int = 0  # entity keys handed out
     clause_mentions: list = field(default_factory=list)  # entities named so far in the clause being read
+    scenery: set = field(default_factory=set)  # nouns said as scenery ("between parked cars"), said so again later
     last_mentions: list = field(default_factory=list)  # those named in the clause read before
     after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
@@ -308,10 +309,34 @@ def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
             and units[k - 1].category == "agents" else u for k, u in enumerate(units)]
 
 
+RELATIONS = {"wife", "husband", "friend", "brother", "sister", "buddy", "pal", "teacher", "neighbour", "neighbor",
+             "girlfriend", "boyfriend", "colleague", "coworker", "partner"}
+
+
+def _relations_on_the_pavement(units: list[Unit]) -> list[Unit]:
+    """'His wife is standing on sidewalk at right side', 'their teacher is waiting on the sidewalk': someone's
+    relation placed on the pavement in the same clause is a pedestrian there (said elsewhere, 'my wife was in the
+    car', 'I told my friend', no one on the road)."""
+    out = list(units)
+    for k, u in enumerate(units[1:], 1):
+        if u.category != "word" or u.word not in RELATIONS or units[k - 1].word not in ("his", "her", "their") or any(
+                a.category in ("numbers", "number") and b.category == "agents" and b.meaning == "pedestrian"
+                for a, b in zip(units[:k], units[1:k])):
+            continue  # ("two kids waiting ... one of them darted out ... her friend stayed": the other one)
+        for x in units[k + 1:k + 8]:
+            if x.tokens[0].sentence != u.tokens[0].sentence or x.category in ("agents", "comma", "sequence"):
+                break
+            if x.category == "positions" and x.meaning == "sidewalk" or \
+                    x.category == "actions" and any(t.word in SIDEWALK_WORDS for t in x.tokens):
+                out[k] = Unit(u.start, u.end, "agents", "pedestrian", u.tokens)  # ("is standing on sidewalk")
+                break
+    return out
+
+
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
-    return _signalled_by_a_driver(_aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(
-        units)))))
+    return _relations_on_the_pavement(_signalled_by_a_driver(_aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(
+        units))))))
 
 
 FROM_BEHIND_VERBS = {"rear end", "rear ended", "shunt", "run into the back of"}
@@ -4298,6 +4323,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         vehicle_left = _last_named(r, recent, lambda e: not e.is_ego and e.type not in V.VULNERABLE_TYPES)
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
         driven = _last_named(r, recent, lambda e: not e.is_ego and e.type != "pedestrian")
+        place = next((x for x in units[head + 1:head + 3] if x.category == "positions"), None)
+        if driven is not None and place is not None and place.meaning in ("behind", "ahead") and \
+                place.tokens[-1].word in SPEAKERS and place.meaning not in driven.features:
+            driven = None  # "waited for a motorcyclist on the road to the left. The driver waiting behind us
+            # honked": another, placed by the speaker where the one named before is not
         if driven is not None:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
             return NounPhrase(driven, head, first)
         own = next((e for e in r.entities if e.is_ego and e.type not in V.VULNERABLE_TYPES), None)
@@ -4363,7 +4393,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 _names_the_ego_again(r, ego, u.base)) and not _measured_by_others(units, after) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
                 or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)
-                or first > 0 and units[first - 1].tokens[0].base in CONTROLLING):
+                or first > 0 and units[first - 1].tokens[0].base in CONTROLLING or
+                first > 0 and units[first - 1].category == "positions" and u.base not in GENERAL_BODIES and
+                _names_the_ego_again(r, ego, u.base)):  # "our ego, a green hatchback, ... a motorcycle riding
+            # alongside the hatchback in the lane to its left": the place is the motorcycle's
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop", "the
             # system holds the car in place"
         if ego is None and not plural and bodies().get(u.base) == "car" and "other" not in words and \
@@ -4384,8 +4417,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         any(m.category == "word" and m.word in SCENERY_PREPOSITIONS for m in modifiers)  # "from between parked cars"
     doing = head + 1 < len(units) and units[head + 1].category in ("actions", "positions") and \
         units[head + 1].tokens[0].word.endswith("ing")  # "a junction with cars coming from the right": agents
-    if scenery and not doing and plural and count is None and kind not in V.VULNERABLE_TYPES and words <= {"the"} and (
-            not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
+    again = plural and count is None and words == {"the"} and u.base in r.scenery and \
+        not any(e.type == kind and not e.is_ego for e in r.entities)  # "... between parked cars. The parked cars hide
+    # everything": the scenery said again
+    if again or scenery and not doing and plural and count is None and kind not in V.VULNERABLE_TYPES and \
+            words <= {"the"} and (not words or not any(e.type == kind and not e.is_ego for e in r.entities)) or (
             count is None and plural and before >= lo and "of" in words and kind not in V.VULNERABLE_TYPES
             and units[before].word in ("row", "line", "lot", "rows") and _said_parked(units, first, head)):
         # "a row of parked cars": scenery ("a line of cyclists", "a line of cars waiting at the lights": agents)
@@ -4396,6 +4432,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 units[head + 1].tokens[0].word.endswith("ed"):
             r.mark(units[head + 1])
             units[head + 1].category = "word"  # "a street with cars parked both sides": said of the scenery
+        r.scenery.add(u.base)
         return NounPhrase(None, head, first)  # "a kid runs out between parked cars": scenery, no agents
     if plural and count is None and not words and not doing and _looked_out_for(units, first):
         return NounPhrase(None, head, first)  # "looking out for cars and nothing else": cars in general
@@ -7210,7 +7247,7 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents") and not (
             told and units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith("ing")):
         return False  # "in the van ahead", "in the car that pulled out": another
-    if any(x.is_ego and x.head not in FIRST_PERSON | {"we"} and not _supplied(r, x) for x in r.entities):
+    if any(x.is_ego and x.head not in FIRST_PERSON | {"we", "us", "our"} and not _supplied(r, x) for x in r.entities):
         return False
     egos = [u for u in r.units if u.category == "agents" and u.meaning == "ego"]
     if not egos:  # "Rolling up on it now in the Kenworth": no one named, a participle with no subject says where
@@ -7308,6 +7345,9 @@ def _set_off(tokens: list[Token], units: list[Unit], prev: NounPhrase, np: NounP
            for u in units[prev.index + 2:np.first]):
         return False
     after = np.index + 1  # the closing comma, then the sentence ends or goes on with no further list item
+    while prev.entity.is_ego and after < min(len(units), np.index + 7) and units[after].category not in (
+            "comma", "agents", "actions", "sequence") and units[after].word not in CLAUSE_WORDS | AUXILIARIES:
+        after += 1  # "our ego, a green hatchback in the right lane, is coming up": where the ego is, said with it
     if after >= len(units) or units[after].category != "comma":
         return False
     k = units[after].start + 1
