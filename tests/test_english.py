@@ -9060,3 +9060,26 @@ def test_the_driver_placed_behind_the_speaker_is_no_driver_named_before():
     said = agents("At the yield sign, I came to a full stop and waited for a motorcyclist on the road to the left. The "
                   "driver waiting behind us honked twice.")
     assert ("car", "stop", "back") in said and ("motorcycle", "go_straight", "road_of_left_turn") in said
+
+
+def test_one_sitting_behind_a_stopped_ego_stands_and_one_sitting_behind_a_moving_ego_follows():
+    assert ("police", "stop", "back") in agents("The ego is stopped at the red light. A patrol car sat behind the ego.")
+    assert ("police", "go_straight", "back") in agents("A patrol car sat behind me for miles.")
+
+
+def test_a_subject_said_again_by_a_pronoun_right_after_it():
+    said = agents("I drive the water truck and I have green arrow so I turn left, and the bus from the opposite side "
+                  "he stop for me, and one man he cross the street where I am going into, on the zebra crossing.")
+    assert ("bus", "stop", "road_of_straight") in said and ("pedestrian", "cross_the_road", "near_the_crosswalk") in said
+
+
+def test_a_driver_who_stood_still_at_a_give_way_sign_is_at_the_wheel():
+    said = agents("At the intersection there is a give-way sign for me. So I stood still. From the right came a car "
+                  "straight on.")
+    assert ("car", "stop", "ego") in said and ("car", "go_straight", "road_of_right_turn") in said
+
+
+def test_a_photo_is_taken_from_the_ego():
+    said = agents("Photo taken from a stopped car in light rain: a child in a yellow raincoat is crossing on a zebra "
+                  "crossing just in front of the bonnet.")
+    assert sorted(said) == [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]

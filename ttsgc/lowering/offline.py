@@ -6374,6 +6374,24 @@ ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth
 RED_OR_QUEUE = {"queue", "queued", "queueing", "queuing", "jam", "tailback", "red", "line"}
 
 
+SITTING = {"sat", "sitting", "sits", "sit"}
+
+
+def _sitting_behind_a_stopped_ego(r: _Reader) -> None:
+    """'The ego is stopped at the red light. A patrol car sat behind her': one that sits behind an ego standing
+    in that stage, doing nothing else, stands too ('sat behind me for miles' behind a moving ego follows)."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None:
+        return
+    for e in r.entities:
+        said = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 4]] if e.said_at >= 0 else []
+        ego_does = {a[4] for a in ego.actions if a[0] == e.stage}
+        if e.is_ego or e.actions or "behind" not in e.features or not set(said) & SITTING or \
+                "behind" not in said or ego_does != {"stop"}:
+            continue
+        e.actions.append((e.stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+
+
 def _place_in_queue(r: _Reader) -> None:
     """'third in the queue at a red light': two vehicles wait ahead of the ego; and whoever is ahead of an ego
     waiting in a queue or at a red light, doing nothing said, waits too."""
@@ -7431,6 +7449,16 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
 def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     """'it' as a subject is the last subject; as an object ('in front of it') the last thing named that is
     not the subject, usually the ego. 'she', 'him' name people."""
+    opening = phrases[0] if phrases else None
+    between = units[opening.index + 1:i] if opening is not None else []
+    if units[i].word in ("he", "she", "they") and opening is not None and opening.entity is not None and \
+            all(u.category == "word" and u.word in ("and", "but", "so", "then") for u in units[:opening.first]) and \
+            all(u.category == "positions" or u.word in ("from", "the", "of", "on", "in", "at", "side", "opposite")
+                for u in between) and i + 1 < len(units) and (units[i + 1].category == "actions" or (
+                units[i + 1].word in AUXILIARIES and i + 2 < len(units) and units[i + 2].category == "actions")) and \
+            all(p.entity is opening.entity for p in phrases if p.entity is not None):
+        return opening.entity  # "the bus from the opposite side he stop for me", "the ego he go straight": the
+        # subject said again, as some speakers do
     if units[i].word in ("she", "her", "he", "him"):
         drives = _a_drivers_verb_after(units, i)  # "a pedestrian ran out in front of her; she swerved"
         recent = [e for e in recent if e.count <= 1]  # "waited for two older ladies to cross ... then he went": one
@@ -8264,6 +8292,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _included_and_listed_items_share(r)
     _members_keep_the_group_place(r)
     _place_in_queue(r)
+    _sitting_behind_a_stopped_ego(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
     if asked is not None and others:
@@ -8700,6 +8729,8 @@ def _witness_on_foot(r: _Reader) -> None:
     words = set().union(*said) if said else set()
     if words & {"standing water", "standing traffic", "standing queue"}:
         words -= {"standing"}  # "I hit standing water": what stood, not the witness
+    if words & {"stood still", "stand still", "standing still"}:
+        words -= {"stood", "standing"}  # "a give-way sign for me, so I stood still": halted, on foot only if said
     patrol = _speaker_on_the_crossing(r.tokens, strong=bool(ego.actions))
     if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL):
         return
@@ -8852,7 +8883,7 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
     _now_the_ego(r, vehicle, "a crew's log names its own vehicle")
 
 
-CAMERA_WORDS = {"dashcam", "dashcams", "camera", "footage", "video", "clip", "cam"}
+CAMERA_WORDS = {"dashcam", "dashcams", "camera", "footage", "video", "clip", "cam", "photo", "photograph", "picture"}
 
 
 def _the_camera_car(r: _Reader) -> None:
@@ -8875,8 +8906,9 @@ def _the_camera_car(r: _Reader) -> None:
                                                     words[k + 1:k + 3] and words[k + 1] == "own" and
                                                     words[k + 2:k + 3] and words[k + 2] in CAMERA_WORDS):
                 return True  # "the hatchback's own dashcam"
-            if t.word in CAMERA_WORDS and words[k + 1:k + 2] in (["from"], ["of"]) and \
-                    k + 2 <= e.said_at <= k + 5 and words[k + 2] in ("a", "an", "the"):
+            j = k + 1 if words[k + 1:k + 2] in (["taken"], ["shot"], ["filmed"]) else k  # "Photo taken from a car"
+            if t.word in CAMERA_WORDS and words[j + 1:j + 2] in (["from"], ["of"]) and \
+                    j + 2 <= e.said_at <= j + 5 and words[j + 2] in ("a", "an", "the"):
                 return True  # "Dashcam from a grey Civic"
         return False
     filmers = [e for e in r.entities if not e.is_ego and e.count == 1 and e.type in V.EGO_TYPES and
@@ -9290,6 +9322,9 @@ def _title(prompt: str, tokens: list[Token]) -> range:
                         m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
     if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
         return range(0)  # "There are four cars: one in front ...": a sentence, not a title
+    if re.match(r"(?:dash\s?cam|camera|footage|video|clip|photo|picture|image|still)\b.*\bfrom\s+(?:a|an|the|my|our)\b",
+                m.group(1).strip().lower()):
+        return range(0)  # "Photo taken from a stopped car in light rain: a child ...": the car it was taken from
     if re.fullmatch(HEADER_OF_PLACE, m.group(1).strip().lower()):
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
     if _title_names_the_agent(m.group(1), prompt[m.end(1):]):
