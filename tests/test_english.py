@@ -9083,3 +9083,53 @@ def test_a_photo_is_taken_from_the_ego():
     said = agents("Photo taken from a stopped car in light rain: a child in a yellow raincoat is crossing on a zebra "
                   "crossing just in front of the bonnet.")
     assert sorted(said) == [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_sitting_in_a_motorway_lane_is_cruising_there():
+    said = agents("Suppose you're on a three-lane motorway on a clear day, sitting in the middle lane with the left lane "
+                  "completely empty, and a van is sitting close behind you in your lane.")
+    assert ("car", "go_straight", "ego") in said
+
+
+def test_being_ready_to_stop_and_what_a_sign_means_are_no_stop():
+    assert ("car", "go_straight", "ego") in agents("Elderly gent crossing, taking his time, so I'm ready to stop.")
+    assert ("motorcycle", "go_straight", "ego") in agents("We ride at a speed where we can stop. A kid runs out in "
+                                                          "front of the bike.")
+    said = agents("One of our reps was entering the roundabout at the yield sign, heading straight across, when a car "
+                  "already on the roundabout came from the left and clipped his front bumper. Yield means yield.")
+    assert ("car", "go_straight", "ego") in said
+
+
+def test_a_cut_in_the_speaker_asks_for_is_someone_elses():
+    said = agents("Hi Lena, I need a highway cut-in for the ACC tests. Three lanes each way, ego in the middle lane at "
+                  "110. A white van slightly ahead of us in the right lane cuts in aggressively.")
+    assert ("car", "go_straight", "ego") in said and ("car", "change_lane_to_left", "front_right") in said
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Reporting a close pass on Mill Lane. I was riding in the middle of the lane because of the potholes when a "
+     "silver hatchback came up behind me and overtook with maybe half a metre to spare.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+    ("Cycle commuter, reporting a white delivery van on Harbor Road, which has two lanes each way. I was riding in the "
+     "right lane and the van was in the left lane, a little behind me. The driver swerved right into my lane.",
+     [("car", "change_lane_to_right", "ego"), ("cyclist", "go_straight", "front_right")]),
+    ("I was crossing Western Avenue at the toucan crossing on a green cycle signal when a black BMW ran the red light "
+     "and shot through about a metre in front of me.",
+     [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "near_the_crosswalk")])])
+def test_a_cyclists_report_is_told_from_the_vehicle_reported(prompt, expected):
+    assert sorted(agents(prompt)) == sorted(expected)
+
+
+def test_a_case_told_of_the_driver_places_others_by_the_drivers_side():
+    said = agents("The most common pattern is a fire engine on blue lights coming from the driver's left through a red "
+                  "signal, while the driver goes straight ahead on green.")
+    assert ("firetruck", "go_straight", "road_of_left_turn") in said
+    said = agents("A child runs into the road mid-block from between parked cars on the driver's right, and the "
+                  "driver cannot stop in time.")
+    assert [k for k in said if k[0] == "car"] == [("car", "go_straight", "ego")]
+
+
+def test_a_cyclists_arm_out_is_no_bus_stop_arm():
+    said = agents("I was turning left into Hill Street with my arm out when a car coming towards me sped up and went "
+                  "through the lights on amber.")
+    assert not any(k[0] == "bus" for k in said)

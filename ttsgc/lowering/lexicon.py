@@ -1457,7 +1457,8 @@ def _lookup(lex: Lexicon, span: list[Token]):
     """The entry of a phrase written with each word as written or in its base form ("dashed white lines")."""
     keys = [()]
     for t in span:
-        keys = [k + (w,) for k in keys for w in dict.fromkeys((t.word, t.base))]
+        forms = (t.word, t.base) + ((t.word + "'s",) if t.possessive else ())  # "from the driver's left"
+        keys = [k + (w,) for k in keys for w in dict.fromkeys(forms)]
         if len(keys) > 16:
             keys = keys[:16]
     raw = keys[0]

@@ -333,10 +333,29 @@ def _relations_on_the_pavement(units: list[Unit]) -> list[Unit]:
     return out
 
 
+def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
+    """'I need a highway cut-in for the ACC tests', 'I'm trying to reproduce a cut-in at night': a cut-in named with
+    an article as what the speaker asks for is the case's name; the cut-in is someone else's, said after."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "actions" or u.meaning != "cut_in" or k == 0:
+            continue
+        j = k - 1
+        while j > 0 and units[j].category in ("road", "behaviours", "word") and units[j].word not in (
+                "a", "an", "the", ",", "and") and k - j < 3:
+            j -= 1
+        if units[j].category != "word" or units[j].word not in ("a", "an", "the") or not any(
+                x.category == "agents" and x.meaning == "ego" and x.tokens[0].word in ("i", "we")
+                and x.tokens[0].sentence == u.tokens[0].sentence for x in units[:j]):
+            continue
+        out[k] = Unit(u.start, u.end, "word", "cut in", u.tokens)
+    return out
+
+
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
-    return _relations_on_the_pavement(_signalled_by_a_driver(_aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(
-        units))))))
+    return _cut_in_named_as_a_case(_relations_on_the_pavement(_signalled_by_a_driver(_aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(
+        units)))))))
 
 
 FROM_BEHIND_VERBS = {"rear end", "rear ended", "shunt", "run into the back of"}
@@ -1192,6 +1211,9 @@ SPEED_UNIT_WORDS = {"mph", "kmh", "kph", "kmph", "mps"}
 STILL_AT = {"traffic", "queue", "jam", "red", "lights", "light", "junction", "line"}
 
 
+MOTORWAYS = {"motorway", "motorways", "highway", "freeway", "expressway", "interstate", "autobahn", "carriageway"}
+
+
 def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
     """'sitting in the outside lane just behind you': 'sit' with a lane and a place beside or behind the ego
     says where something keeps pace, as drivers say it; 'sitting in the lane, broken down' is still a stop."""
@@ -1207,6 +1229,13 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
         del words[1]  # "sitting in (the) right-hand lane"
     if words[:1] != ["in"] or "lane" not in words[1:5]:
         return False
+    sentence = {t.word for t in tokens if t.sentence == tokens[i].sentence}
+    speaker = {"you", "you're", "i", "i'm", "we", "we're"} & {t.word for t in tokens[:i]
+                                                             if t.sentence == tokens[i].sentence}
+    if speaker and {t.word for t in tokens} & MOTORWAYS and \
+            not sentence & (STILL_AT | {"stopped", "stationary", "broken", "parked"}):
+        return True  # "you're on a three-lane motorway ..., sitting in the middle lane": cruising there ("a van
+        # sits in the far side lane" stands)
     after = words[words.index("lane", 1) + 1:]
     after = after[1:] if after[:1] in (["just"], ["right"], ["slightly"], ["directly"]) else after
     return bool(after) and after[0] in PACE_PLACES
@@ -4334,6 +4363,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if own is not None and not any(not e.is_ego and e.type != "pedestrian" for e in r.entities) and \
                 u.base == "driver" and (own.aliases - {own.head} or own.head not in SPEAKERS | FIRST_PERSON):
             return NounPhrase(own, head, first)  # "put the camera in the lorry ... what the driver sees": its driver
+        if own is None and u.base == "driver" and not any(e.type != "pedestrian" for e in r.entities) and \
+                "other" not in words and not any(t.word == "ego" for t in r.tokens) and \
+                (head + 1 >= len(units) or units[head + 1].word != "of" and units[head + 1].category != "positions"):
+            return NounPhrase(_ego_entity(r, stage), head, first)  # "a child runs out from between parked cars on
+            # the driver's right, and the driver cannot stop in time": the one the case is told from
     at_the_wheel = _driven_by(r, units, head, recent) if count is None and not plural else None
     if at_the_wheel is not None:  # "a box truck ... the woman driving it stopped": the truck, by its driver
         return NounPhrase(at_the_wheel, head, first)
@@ -6694,6 +6728,8 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
         return named_otherwise  # "A taxi pulled out. The cabbie then stopped": the taxi, by a word not known
     if _someone_of_theirs(r, units, verbs[0]):
         return None
+    if any(u.word in ("means", "meant") for u in units) and not any(u.category == "agents" for u in units):
+        return None  # "Yield means yield.", "Stop means stop": what a sign means, said of no one
     if verbs[0] > 0 and units[verbs[0] - 1].category == "weather" and \
             not units[verbs[0] - 1].meaning.startswith("time:"):
         return None  # "fog sitting over the bridge", "rain coming down": the weather's doing ("night ride" is not)
@@ -8277,6 +8313,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_speakers_vehicle_by_a_part(r)
     _the_learner_at_the_wheel(r)
     _witness_on_foot(r)
+    _rider_reporting_a_driver(r)
     _the_patients_vehicle(r)
     _named_as_the_ego(r)
     _the_customers_vehicle(r)
@@ -8783,6 +8820,49 @@ def _witness_on_foot(r: _Reader) -> None:
                    f"'{subject.head}' the statement is about is the ego")
 
 
+PEDAL_WORDS = {"bicycle", "pedalling", "pedaling", "pedalled", "pedaled", "handlebar", "handlebars", "pushbike",
+               "toucan"}  # (not "a brake pedal")
+PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), ("i", "cycle"), ("cycle", "commuter"),
+                 ("my", "bicycle"), ("in", "the", "cycle", "lane"), ("in", "the", "bike", "lane"))  # (not "the cycle
+# courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
+MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
+SEEN_THE_OTHER_WAY = {"ahead": "behind", "behind": "ahead", "side_left": "side_right", "side_right": "side_left",
+                      "front_left": "back_right", "back_right": "front_left", "front_right": "back_left",
+                      "back_left": "front_right", "from_left": "from_right", "from_right": "from_left",
+                      "road_left": "road_right", "road_right": "road_left", "road_straight": "road_straight",
+                      "oncoming": "oncoming", "level": "level"}
+
+
+def _rider_reporting_a_driver(r: _Reader) -> None:
+    """'I was riding in the middle of the lane when a silver hatchback came up behind me and overtook with half a
+    metre to spare': a cyclist's report of a driver is told from the vehicle reported, the ego; the teller is a
+    cyclist, placed from there as the vehicle was placed from the teller (behind me: the cyclist ahead)."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    words = [t.word for t in r.tokens]
+    if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or ego.type != "car" or \
+            ego.aliases - FIRST_PERSON or not (set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES)) or set(words) & MOTOR_WORDS or \
+            any(e.type == "cyclist" and not e.is_ego for e in r.entities) or \
+            _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van"))):
+        return
+    movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
+              and e.relative_to is None and any(a[4] not in ("stop", "try") for a in e.actions)]
+    if not movers:
+        return
+    subject = movers[0]
+    own = ego.features & set(SEEN_THE_OTHER_WAY)
+    if _says_any(words, (("i", "was", "crossing"), ("i", "crossed"), ("toucan",))):
+        own = {"crosswalk"}  # "I was crossing at the toucan crossing when a BMW ran the red": on the crossing
+        ego.actions = [(0, 2, ACTION_RANK["cross"], r.tick(), "cross", None)]
+    ego.is_ego, ego.type = False, "cyclist"
+    ego.features = (ego.features - own) | (own or {SEEN_THE_OTHER_WAY[f] for f in subject.features
+                                                   if f in SEEN_THE_OTHER_WAY}) or ego.features | {"ahead"}
+    for e in r.entities:
+        if e.relative_to is subject:
+            e.relative_to = None  # "a taxi waiting behind him": behind the ego now
+    _the_ego_now(r, subject)
+    r.notes.append(f"inferred: the teller rides a bicycle; the '{subject.head}' reported is the ego")
+
+
 def _named_as_the_ego(r: _Reader) -> None:
     """'a blue hatchback northbound on Main, that's our ego', 'The black pickup on Elm is our ego', 'Our ego, a green
     hatchback, ...', 'Ego for this one is the white van': a vehicle the text names as the ego is the ego, and the
@@ -9229,9 +9309,10 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
                   ("my", "rig"), ("the", "rig"), ("my", "load"), ("tachograph",), ("tacho",))
 
 
-BUS_DRIVERS_WORDS = (("stop", "arm"), ("my", "arm"), ("arm", "out"), ("my", "bus"), ("standing", "passengers"),
-                     ("passengers", "were", "standing"), ("passengers", "on", "board"), ("doors", "open"),
-                     ("the", "terminus"), ("my", "route"))  # ("at the stop with the doors open")
+BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out"), (",", "arm", "out"), ("my", "bus"),
+                     ("standing", "passengers"), ("passengers", "were", "standing"), ("passengers", "on", "board"),
+                     ("doors", "open"), ("the", "terminus"), ("my", "route"))
+# ("at the stop with the doors open"; not a cyclist's "with my arm out")
 
 
 def _a_drivers_trade(r: _Reader) -> None:
