@@ -9133,3 +9133,19 @@ def test_a_cyclists_arm_out_is_no_bus_stop_arm():
     said = agents("I was turning left into Hill Street with my arm out when a car coming towards me sped up and went "
                   "through the lights on amber.")
     assert not any(k[0] == "bus" for k in said)
+
+
+def test_a_ride_hailing_drivers_rider_is_their_passenger():
+    said = agents("Re: the \"unsafe driving\" complaint from trip 4471-B. I was driving down Elm Street at about 25 mph, "
+                  "in the middle of the block. A guy in a black hoodie stepped off the curb on my right and walked "
+                  "straight out in front of me. Then I stopped. The rider hit his knee on the seat.")
+    assert {k[0] for k in said if k[2] == "ego"} == {"car"}
+
+
+def test_a_rule_of_the_road_before_the_scene_it_illustrates_is_no_part_of_it():
+    said = agents("A YIELD sign means slow down and be ready to stop to let any vehicle, pedestrian, or bicyclist pass "
+                  "before you proceed (DMV handbook). Scenario: the ego is turning right at a yield sign onto a busier "
+                  "road. A bicyclist is already riding along the road the ego is turning onto, and a car is coming "
+                  "from the left.")
+    assert sorted(said) == [("car", "go_straight", "road_of_left_turn"), ("car", "turn_right", "ego"),
+                            ("cyclist", "go_straight", "at_the_destination")]

@@ -1220,6 +1220,20 @@ DEVICE_SWITCH = re.compile(r"\bturn(?:s|ed|ing)? (?:(on|off) )?((?:the |your |it
                            r"ignition|radio|indicator|blinker))(?(1)| (?:on|off))\b")
 
 
+SCENE_MARKER = re.compile(r"(?<=[.:)])\s+(?:an?\s+)?(?:illustrating\s+|example\s+|the\s+|illustrative\s+)?"
+                          r"(?:scene|scenario)\s*:\s*(?=\S)", re.I)
+RULE_WORDS = re.compile(r"\b(?:rule|handbook|highway code|law|means|must|may|should|shall)\b", re.I)
+
+
+def rule_before_its_scene(text: str) -> str:
+    """'Rule 227: in wet weather, stopping distances ... double. Illustrating scene: heavy rain ...': a rule of the
+    road stated before the scene that illustrates it is no part of the scene; only what follows 'Scene:' is."""
+    m = SCENE_MARKER.search(text)
+    if m is None or not RULE_WORDS.search(text[:m.start()]):
+        return text
+    return text[m.end():]
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""

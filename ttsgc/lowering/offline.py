@@ -32,8 +32,8 @@ from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import read_narration
 from ttsgc.lowering.lexicon import (SIGNAL_COLOURS, TOO_LARGE, Match, Token, _lookup, _names_agent, bodies, categories,
-                                    compound_heads, crews, lexicon, loose_names, matches, read_number, tokenize,
-                                    typologies)
+                                    compound_heads, crews, lexicon, loose_names, matches, read_number,
+                                    rule_before_its_scene, tokenize, typologies)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -8153,7 +8153,7 @@ def _name(prompt: str) -> str:
 
 def lower(prompt: str, seed: int = 0) -> Lowered:
     """Lower an English prompt into a Scenario; LoweringError when nothing in it can be read as a scene."""
-    narration = read_narration(prompt)
+    narration = read_narration(rule_before_its_scene(prompt))
     prompt = narration.text
     tokens = tokenize(prompt)
     if not tokens:
@@ -9001,6 +9001,9 @@ FILTERING = {"filter", "filters", "filtering", "filtered"}
 RIDING = {"ride", "rides", "riding", "rode"}
 
 
+RIDE_HAILING = {"trip", "fare", "rating", "uber", "lyft", "rideshare", "passenger", "passengers"}
+
+
 def _a_riders_ego(r: _Reader) -> None:
     """'You're filtering between two lanes of stationary traffic', 'you ease off and ride slowly towards it': an ego
     named by no vehicle that filters through traffic, or is said to ride (not in or on something), rides a
@@ -9017,7 +9020,8 @@ def _a_riders_ego(r: _Reader) -> None:
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
         w in FILTERING and (k == 0 or r.tokens[k - 1].sentence != r.tokens[k].sentence))  # "Filtering past a queue"
         for k, w in enumerate(words))
-    the_rider = _supplied(r, ego) and any(
+    hailed = bool(set(words) & RIDE_HAILING)  # "The rider hit his knee on the seat": the passenger of a ride hailed
+    the_rider = _supplied(r, ego) and not hailed and any(
         u.category == "word" and u.word == "rider" and k > 0 and r.units[k - 1].word == "the" and not any(
             e.type in ("cyclist", "motorcycle") and 0 <= e.said_at < u.start for e in r.entities)
         for k, u in enumerate(r.units))  # "The rider comes round a bend and finds two cyclists": the subject an ego
