@@ -9070,7 +9070,8 @@ def test_one_sitting_behind_a_stopped_ego_stands_and_one_sitting_behind_a_moving
 def test_a_subject_said_again_by_a_pronoun_right_after_it():
     said = agents("I drive the water truck and I have green arrow so I turn left, and the bus from the opposite side "
                   "he stop for me, and one man he cross the street where I am going into, on the zebra crossing.")
-    assert ("bus", "stop", "road_of_straight") in said and ("pedestrian", "cross_the_road", "near_the_crosswalk") in said
+    assert ("bus", "stop", "road_of_straight") in said
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in said
 
 
 def test_a_driver_who_stood_still_at_a_give_way_sign_is_at_the_wheel():
@@ -9086,8 +9087,8 @@ def test_a_photo_is_taken_from_the_ego():
 
 
 def test_sitting_in_a_motorway_lane_is_cruising_there():
-    said = agents("Suppose you're on a three-lane motorway on a clear day, sitting in the middle lane with the left lane "
-                  "completely empty, and a van is sitting close behind you in your lane.")
+    said = agents("Suppose you're on a three-lane motorway on a clear day, sitting in the middle lane with the left "
+                  "lane completely empty, and a van is sitting close behind you in your lane.")
     assert ("car", "go_straight", "ego") in said
 
 
@@ -9136,9 +9137,9 @@ def test_a_cyclists_arm_out_is_no_bus_stop_arm():
 
 
 def test_a_ride_hailing_drivers_rider_is_their_passenger():
-    said = agents("Re: the \"unsafe driving\" complaint from trip 4471-B. I was driving down Elm Street at about 25 mph, "
-                  "in the middle of the block. A guy in a black hoodie stepped off the curb on my right and walked "
-                  "straight out in front of me. Then I stopped. The rider hit his knee on the seat.")
+    said = agents("Re: the \"unsafe driving\" complaint from trip 4471-B. I was driving down Elm Street at about 25 "
+                  "mph, in the middle of the block. A guy in a black hoodie stepped off the curb on my right and "
+                  "walked straight out in front of me. Then I stopped. The rider hit his knee on the seat.")
     assert {k[0] for k in said if k[2] == "ego"} == {"car"}
 
 

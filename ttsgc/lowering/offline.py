@@ -354,8 +354,10 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
 
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
-    return _cut_in_named_as_a_case(_relations_on_the_pavement(_signalled_by_a_driver(_aborted_lane_changes(_unknown_makes(tokens, _street_names(tokens, _with_absolutes(
-        units)))))))
+    units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
+    for reread in (_aborted_lane_changes, _signalled_by_a_driver, _relations_on_the_pavement, _cut_in_named_as_a_case):
+        units = reread(units)  # a unit read again by its neighbours, in this order
+    return units
 
 
 FROM_BEHIND_VERBS = {"rear end", "rear ended", "shunt", "run into the back of"}
@@ -8839,10 +8841,11 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     cyclist, placed from there as the vehicle was placed from the teller (behind me: the cyclist ahead)."""
     ego = next((e for e in r.entities if e.is_ego), None)
     words = [t.word for t in r.tokens]
+    on_a_bike = (set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES)) and not set(words) & MOTOR_WORDS and \
+        not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")))
     if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or ego.type != "car" or \
-            ego.aliases - FIRST_PERSON or not (set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES)) or set(words) & MOTOR_WORDS or \
-            any(e.type == "cyclist" and not e.is_ego for e in r.entities) or \
-            _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van"))):
+            ego.aliases - FIRST_PERSON or not on_a_bike or \
+            any(e.type == "cyclist" and not e.is_ego for e in r.entities):
         return
     movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
               and e.relative_to is None and any(a[4] not in ("stop", "try") for a in e.actions)]
