@@ -9150,3 +9150,9 @@ def test_a_rule_of_the_road_before_the_scene_it_illustrates_is_no_part_of_it():
                   "from the left.")
     assert sorted(said) == [("car", "go_straight", "road_of_left_turn"), ("car", "turn_right", "ego"),
                             ("cyclist", "go_straight", "at_the_destination")]
+
+
+def test_a_subject_with_a_predicate_of_its_own_does_not_share_the_next_ones_verb():
+    said = agents("The ego is on a two-lane road and a motorbike in the right lane, slightly ahead of it, suddenly "
+                  "cuts in front of the ego.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_left", "front_right")]

@@ -5829,6 +5829,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 u.category != "word" or u.word not in ("and", "or", "with", "plus", "both", "all", "&", "each")
                 for u in units[before[0].index + 1:first_verb]):
             before = before[1:]  # "Ego van, oncoming truck turning left": a terse list; the ego is an item of its own
+        if len(before) >= 2 and verbs and any(u.category == "word" and u.word in COPULAS for u in
+                                              units[before[0].index + 1:before[1].first]) and \
+                units[before[1].first - 1].word == "and":
+            before = before[1:]  # "the ego is on a two-lane road and a motorbike in the right lane, slightly ahead,
+            # cuts in": the first has a predicate of its own
         inverted = _inverted_subject(units, phrases, first_verb) if not before and verbs else None
         if inverted is not None:  # "from the right comes a bus": the place first, then the verb, then who
             before = [inverted]
@@ -7469,6 +7474,8 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
     if k < 0:
         return False
     u = units[k]
+    if u.category == "positions" and units[np.first].word in ("it", "him", "her", "them"):
+        return True  # "a motorbike in the right lane, slightly ahead of it, cuts in": whom the place is by
     if u.category == "positions" and u.meaning in ("ahead", "behind", "level", "side_left", "side_right",
                                                     "front_left", "front_right", "back_left", "back_right"):
         # "behind the ego a delivery van keeps its distance": the place is complete, the van is the subject
