@@ -7308,7 +7308,7 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     if np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "actions", "agents") and not (
             told and units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith("ing")):
         return False  # "in the van ahead", "in the car that pulled out": another
-    if any(x.is_ego and x.head not in FIRST_PERSON | {"we", "us", "our"} and not _supplied(r, x) for x in r.entities):
+    if any(x.is_ego and x.head not in SPEAKING_SELF and not _supplied(r, x) for x in r.entities):
         return False
     egos = [u for u in r.units if u.category == "agents" and u.meaning == "ego"]
     if not egos:  # "Rolling up on it now in the Kenworth": no one named, a participle with no subject says where
@@ -8413,6 +8413,7 @@ AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cyclin
 # ("I stood still in the right lane": standing in traffic, at the wheel, not "Brook Lane"; "moving off from the
 # bus stop")
 FIRST_PERSON = {"i", "me", "my", "i'm"}
+SPEAKING_SELF = FIRST_PERSON | {"we", "us", "our"}  # the names a teller gives itself, alone or in company
 AT_THE_WHEEL_OF = {"was", "am", "were", "are", "is", "in", "driving", "drove", "operating", "operated", "on", "patrol",
                    "uniformed", "mobile", "sitting", "riding", "at", "the", "wheel", "of", "duty", "routine", "alone",
                    "stationary", "parked", "a", "an", "marked", "unmarked", "drive", "steer", "pilot", "pull",
@@ -8579,7 +8580,7 @@ def _speaker_on_the_road(r: _Reader) -> bool:
     """Whether the one who says 'I' or 'we' is in the scene: does something there, is someone's reference ('in
     front of me', 'my lane'), or is spoken to ('you'). 'I watch drivers do thirty past the school. Please recreate
     it: a car speeding past ...' is said by an onlooker; the scene is the car's."""
-    speaker = next((e for e in r.entities if e.is_ego and e.head in FIRST_PERSON | {"we", "us", "our"}), None)
+    speaker = next((e for e in r.entities if e.is_ego and e.head in SPEAKING_SELF), None)
     if speaker is not None and (speaker.actions or speaker.features):
         return True
     words = [t.word for t in r.tokens]
@@ -8723,8 +8724,7 @@ def _the_speakers_vehicle_by_a_part(r: _Reader) -> None:
     whose vehicle is named nowhere else, a vehicle first said with 'the' as the one whose part was met, and no
     other of its kind, is the speaker's own (not 'in front of the shuttle', a place)."""
     ego = next((e for e in r.entities if e.is_ego), None)
-    speaker = FIRST_PERSON | {"we", "us", "our"}
-    if ego is None or ego.head not in speaker or ego.aliases - speaker or ego.type != "car":
+    if ego is None or ego.head not in SPEAKING_SELF or ego.aliases - SPEAKING_SELF or ego.type != "car":
         return
     for e in list(r.entities):
         k = e.said_at
