@@ -9156,3 +9156,49 @@ def test_a_subject_with_a_predicate_of_its_own_does_not_share_the_next_ones_verb
     said = agents("The ego is on a two-lane road and a motorbike in the right lane, slightly ahead of it, suddenly "
                   "cuts in front of the ego.")
     assert sorted(said) == [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_left", "front_right")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("When the subject vehicle turns right from a major road into a minor road while a pedestrian is crossing the "
+     "minor road, the system shall brake.", ("pedestrian", "cross_the_road", "at_the_destination")),
+    ("Made my full stop, then turned right onto Main. There was a kid on a bike already on Main, riding away from "
+     "the junction.", ("cyclist", "go_straight", "at_the_destination"))])
+def test_the_road_turned_into_said_again_by_its_name(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_one_following_another_from_a_side_is_placed_by_its_own_side():
+    said = agents("Our vehicle is stopped at the entry of a roundabout controlled by yield signs while a circulating "
+                  "car, followed closely by a motorcyclist, approaches from our left.")
+    assert ("motorcycle", "go_straight", "road_of_left_turn") in said
+
+
+def test_an_age_with_no_noun_after_it_is_a_child():
+    said = agents("The ego drives along a rural road. K, a seven-year-old, runs out from in front of a parked bus and "
+                  "across the ego's path.")
+    assert any(k[0] == "pedestrian" and k[1] == "cross_the_road" for k in said)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("D is driving her sedan north on Main Street at 40 mph. P, a pedestrian, steps off the curb into the crosswalk "
+     "in front of D. D does not brake and hits P.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("Dave drives his sedan north on Main Street. A pedestrian steps into the crosswalk in front of him.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("Client was riding his motorcycle eastbound on Lakeshore Dr. Says a black SUV in the lane to his left suddenly "
+     "cut into his lane without signaling.",
+     [("car", "change_lane_to_right", "left"), ("motorcycle", "go_straight", "ego")])])
+def test_a_party_at_the_wheel_told_of_by_name_letter_or_role_is_the_ego(prompt, expected):
+    assert agents(prompt) == sorted(expected)
+
+
+def test_of_two_parties_at_the_wheel_the_one_others_are_placed_by_is_the_ego():
+    said = agents("E is driving her van in the lane to D's right. D is driving his sedan straight through the "
+                  "intersection when a pickup runs the red light from D's left.")
+    assert said == [("car", "go_straight", "ego"), ("car", "go_straight", "right"),
+                    ("car", "go_straight", "road_of_left_turn")]
+
+
+def test_a_place_said_by_the_egos_possessive_is_the_place_said_by_ours():
+    assert agents("The ego goes straight through the intersection. A van is in the lane to the ego's right.") == \
+        agents("The ego goes straight through the intersection. A van is in the lane to our right.")

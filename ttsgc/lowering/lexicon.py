@@ -291,6 +291,10 @@ def lexicon() -> Lexicon:
     for words, entry in list(phrases.items()):  # terse writing drops articles: "change to left lane"
         if "the" in words[1:] and len(words) > 2:
             phrases.setdefault(tuple(w for w in words if w != "the"), entry)
+    for words, entry in list(phrases.items()):  # "the lane to our right" is "the lane to the ego's right"
+        if entry[0] == "positions" and "our" in words[1:]:
+            k = words.index("our")
+            phrases.setdefault(words[:k] + ("the", "ego's") + words[k + 1:], entry)
     irregular, spelling = {}, {}
     for base, words in _entries("inflections"):
         for word in " ".join(words).split():

@@ -201,6 +201,7 @@ def read_narration(prompt: str) -> Narration:
     text = _crews_vehicle(text, notes)
     text = _screenplay_driver(text, notes)
     text = _protagonist(text, notes)
+    text = _party_at_the_wheel(text, notes)
     text = _storys_driver(text, notes)
     return Narration(text, notes)
 
@@ -753,10 +754,17 @@ TONNER = re.compile(r"\b\d+(?:\.\d+)?[\s-]tonner(s?)\b(?!\s+(?:lorry|lorries|tru
 def _ages(text: str) -> str:
     """'a 9-year-old child', 'an 8 year old boy', 'two 12-year-olds': an age, no count ('young'; the plural
     noun 'children'); so is a measure said as an adjective ('our 44-tonne artics', 'a 12-metre bus')."""
-    text = AGE.sub(lambda m: "children" if m.group("noun") else "young", text)
+    text = AGE.sub(lambda m: "children" if m.group("noun") else "child" if _no_noun_after(text, m.end()) else "young",
+                   text)  # "K, a seven-year-old, runs out": the age names the child
     text = TONNER.sub(lambda m: "truck" + (m.group(1) or ""), text)  # "in the 44-tonner": the lorry itself
     text = MEASURE.sub("big", text)
     return re.sub(r"\ban (young|big)\b", r"a \1", text, flags=re.I)
+
+
+def _no_noun_after(text: str, end: int) -> bool:
+    """'a seven-year-old, runs out', 'the 8-year-old ran': nothing after an age for it to describe."""
+    m = re.match(r"\s*(?:[,.;:!?)]|$|(?:is|was|ran|runs|steps|stepped|darts|darted|who|had|has)\b)", text[end:])
+    return m is not None
 
 
 def _street_corners(text: str) -> str:
@@ -1110,6 +1118,51 @@ STORY_DRIVING = (r"came|drove|pulled|turned|braked|slowed|crept|eased|steered|in
                  r"slows|creeps|eases|steers|indicates|swings|edges|merges|follows|accelerates|heads|is driving")
 STORY_DRIVER = re.compile(rf"\b(she|he)\s+(?:[a-z]+ly\s+)?(?:{STORY_DRIVING})\b", re.I)
 FIRST_PERSON = re.compile(r"\b(?:i|me|my|we|us|our|ego)\b", re.I)
+
+
+PARTY_ROLES = r"(?:[Tt]he |[Mm]y |[Oo]ur )?(?:[Cc]lient|[Cc]laimant|[Ii]nsured|[Pp]olicyholder|[Dd]efendant|" \
+              r"[Pp]laintiff|[Cc]omplainant)"
+PARTY_LETTER = r"\b(?:[B-HJ-Z]|[A-Z]{2,3})\b(?!\.)"  # "D", "P", "IV" ("A" and "I" are words; "J. Smith" an initial)
+AFTER_A_LINK = "|".join(rf"(?<=\b{w}\s)" for w in ("when", "as", "while", "then", "and", "but"))
+PARTY_DRIVING = re.compile(
+    rf"(?:^|(?<=[.!?;:,]\s)|{AFTER_A_LINK})({PARTY_LETTER}|{NAME}|{PARTY_ROLES})"
+    rf"(?:,[^,.]{{1,60}},|\s*\([^()]{{1,60}}\))?\s+(?:[a-z]+ly\s+)?(?:{STORY_DRIVING}|wants to turn|waits|"
+    rf"was waiting|is waiting|was stopped|is stopped|stops|stopped|was changing lanes|changes lanes|"
+    rf"(?:is|was) (?:riding|driving|approaching|travelling|traveling|going|proceeding|heading)|"
+    rf"rides (?:his|her|their)|rode (?:his|her|their)|"
+    rf"(?P<told>(?:states|says|reports|told us|stated|said) (?:that )?(?:she|he) (?:was|is|had)))\b")
+PARTY_MARK = re.compile(r"\b(?:my|our) (?=client|insured)", re.I)  # a lawyer's "my client" tells of the client, not
+# of the lawyer at the wheel
+
+
+def _party_at_the_wheel(text: str, notes: list[str]) -> str:
+    """'D is driving her sedan north ... P steps into the crosswalk in front of D', 'Client was riding his motorcycle
+    ... a black SUV in the lane to his left': a case told of a party at the wheel, by a letter, a name or a role,
+    with no narrator and no ego named, is told from that party's seat. Of several parties at the wheel the one
+    the others are placed by ('from D's left', 'in front of D') is the ego, else the first. A name of no role
+    that only tells ('Customer states she was driving') is left to the story's 'she'."""
+    if FIRST_PERSON.search(PARTY_MARK.sub("", text)):
+        return text
+    drivers = []
+    for m in PARTY_DRIVING.finditer(text):
+        party = m.group(1)
+        a_name = not re.fullmatch(PARTY_LETTER, party) and not re.fullmatch(PARTY_ROLES, party)
+        if party in NOT_NAMES or (a_name or len(party) > 1) and known_word(party) or a_name and m.group("told") or \
+                party in drivers:
+            continue
+        drivers.append(party)
+    if not drivers:
+        return text
+
+    def placed_by(party: str) -> int:
+        said = re.escape(party)
+        return len(re.findall(rf"\b{said}'s\s+{POSSESSED}\b|\b(?:of|to|toward|towards|behind|past|beside)\s+{said}\b",
+                              text))
+    ego = max(drivers, key=lambda d: (placed_by(d), -drivers.index(d)))
+    said = re.escape(ego)
+    text = re.sub(rf"\b{said}\b", "the ego", text)  # ("D's left": the ego's left)
+    notes.append(f"read {ego} as the ego's driver")
+    return _drivers_pronoun(text, notes) if len(drivers) == 1 else text  # (of several, whose 'her' is unsaid)
 
 
 def _storys_driver(text: str, notes: list[str]) -> str:

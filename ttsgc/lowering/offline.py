@@ -1002,11 +1002,18 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
         u = units[k]
         sentence = u.tokens[0].sentence
         into = k + 1 if u.tokens[-1].word in ("into", "onto") else next(
-            (j + 1 for j in range(k + 1, min(k + 5, len(units))) if units[j].word in ("into", "onto")), None)
-        # "turns left into a side street", "turns left from the main road into a side street"
-        if u.category == "actions" and u.meaning in ("turn_left", "turn_right", "turn") and into is not None \
-                and _said_by_the_ego(units, k) and any(x.tokens[-1].word in ROAD_NOUNS and x.category != "agents"
-                                                       for x in units[into:into + 4]):
+            (j + 1 for j in range(k + 1, min(k + 7, len(units))) if units[j].word in ("into", "onto")), None)
+        # "turns left into a side street", "turns right from a major road into a minor road"
+        turned_by_the_ego = u.category == "actions" and u.meaning in ("turn_left", "turn_right", "turn") and \
+            into is not None and _said_by_the_ego(units, k)
+        if turned_by_the_ego and _street_named_alone(units, into):
+            out.extend(units[k:into + 1])  # "turned right onto Main. ... a kid on a bike already on Main"
+            name = [units[into].word]
+            k = into + 1
+            until = sentence + 1
+            continue
+        if turned_by_the_ego and any(x.tokens[-1].word in ROAD_NOUNS and x.category != "agents"
+                                     for x in units[into:into + 4]):
             out.extend(units[k:into])
             k = into
             end = next(j for j in range(k, min(k + 4, len(units))) if units[j].tokens[-1].word in ROAD_NOUNS and
@@ -1052,6 +1059,21 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
         out.append(u)
         k += 1
     return out
+
+
+NOT_STREETS = {"traffic", "view", "place", "position", "line", "gear", "reverse", "park", "it", "them", "him", "her"}
+
+
+def _street_named_alone(units: list[Unit], k: int) -> bool:
+    """'onto Walnut,', 'onto Main while ...': a street named by its name alone, a word the lexicon does not know
+    right after the turn's 'onto', with nothing after it in its phrase."""
+    if k >= len(units) or units[k].category != "word" or len(units[k].tokens) != 1:
+        return False
+    word = units[k].word
+    after = units[k + 1] if k + 1 < len(units) else None
+    return word.isalpha() and word not in lexicon().function_words and word not in NOT_STREETS and (
+        after is None or after.category == "comma" or after.tokens[0].sentence != units[k].tokens[0].sentence or
+        after.category == "word" and after.word in lexicon().function_words)
 
 
 def _said_by_the_ego(units: list[Unit], k: int) -> bool:
@@ -9731,7 +9753,8 @@ def _heading(e: Entity) -> str | None:
 
 def _placed(e: Entity) -> bool:
     return bool(e.features & {"side_left", "side_right", "front_left", "front_right", "back_left", "back_right",
-                              "road_straight", "road_left", "road_right", "destination", "crosswalk"})
+                              "road_straight", "road_left", "road_right", "destination", "crosswalk",
+                              "from_left", "from_right"})
 
 
 def _sideways(action: str | None, junction: bool) -> str | None:
