@@ -9202,3 +9202,24 @@ def test_of_two_parties_at_the_wheel_the_one_others_are_placed_by_is_the_ego():
 def test_a_place_said_by_the_egos_possessive_is_the_place_said_by_ours():
     assert agents("The ego goes straight through the intersection. A van is in the lane to the ego's right.") == \
         agents("The ego goes straight through the intersection. A van is in the lane to our right.")
+
+
+@pytest.mark.parametrize("prompt", ["The ego is a white SUV. A bus directly behind the SUV stops.",
+                                    "Ego: white SUV, right lane. A bus directly behind the SUV stops."])
+def test_the_noun_the_ego_is_said_to_be_names_it_again(prompt):
+    assert agents(prompt) == [("bus", "stop", "back"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Event 7781 - Cam 3, all-way stop, overcast.\n+0.0 s  Subject: box truck SB, comes to a stop at the stop "
+     "line.\n+4.2 s  Sedan from the west approach (subject's right) turns right.",
+     [("car", "turn_right", "road_of_right_turn"), ("truck", "stop", "ego")]),
+    ("RSU 41 | T-junction, give way sign | dusk\nobj A motorcycle = subject, stationary at the give-way line\n"
+     "obj B car approaching from A's left, going straight through",
+     [("car", "go_straight", "road_of_left_turn"), ("motorcycle", "stop", "ego")]),
+    ("Zebra crossing monitor (unsignalised) | snow, dark\n#1 subject: taxi approaching northbound\n#2 pedestrian "
+     "on the zebra, crossing in front of #1\n#3 jogger on the pavement to #1's left",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+      ("pedestrian", "on_the_sidewalk", "left")])])
+def test_a_logs_subject_is_the_ego_by_its_key_and_its_label(prompt, expected):
+    assert agents(prompt) == sorted(expected)

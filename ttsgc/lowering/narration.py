@@ -148,7 +148,10 @@ def _event_record(text: str, notes: list[str]) -> str:
     text = re.sub(r"\(\s*x\s?\d+\s*\)", " ", text)  # "(x3)": an alert's repeats
     if text.count("|") >= 2 and RECORD_VEHICLE_KEY.search(text):
         text = re.sub(r"\s*(?:->|\u2192|=>)\s*", " to ", text)  # "Spd 62 -> 19 km/h": from one speed to another
+        key = RECORD_VEHICLE_KEY.search(text).group(0)
         text = RECORD_VEHICLE_KEY.sub("Ego: ", text, count=1)
+        if key.lower().startswith("subject"):
+            text = THE_SUBJECT.sub("the ego", text)  # "(subject's right)", "ahead of the subject"
         text = re.sub(r"\bEgo: (?:unit|veh|vehicle|no\.?|#)\s*#?\d+\s*(?:\(([^()]*)\))?",
                       lambda m: f"Ego: {m.group(1) or ''}", text, count=1)  # "Unit 212 (Ford Transit)": the van
         text = re.sub(r"\bspd\.?\s*:?\s*(\d+)(?:\s*to\s*\d+)?", r"doing \1", text, flags=re.I)  # its own speed
@@ -1035,7 +1038,11 @@ THE_VEHICLE_ACTS = re.compile(r"\b[Tt]he vehicle\b(?!'s\b|\s+(?:ahead|in|on|to|b
                               r"parked|stopped)\b)")
 
 
-SUBJECT_ROLE = re.compile(r"\(the subject\)|(?:^|(?<=[.;:!?(]\s)|(?<=[.;:!?(]))\s*subject\s*[:,]", re.I | re.M)
+SUBJECT_ROLE = re.compile(r"\(the subject\)|(?:^|(?<=[.;:!?(]\s)|(?<=[.;:!?(]))\s*subject\s*[:,]|"
+                          r"(?<![\w'-])subject\s*[:=]|=\s*subject\b", re.I | re.M)
+SUBJECT_LABELLED = re.compile(r"(?:\bobj(?:ect)?\s+([A-Z])\s+|(#\d{1,3})\s+)?([a-z]+)\s*=\s*subject\b|"
+                              r"(#\d{1,3})\s+subject\s*:", re.I)  # "obj A motorcycle = subject", "#1 subject: taxi":
+# the label it is called by
 THE_SUBJECT = re.compile(r"\b(?:the\s+)?subject\b(?!\s+(?:to|vehicle|car|veh|of|matter|area)\b)", re.I)
 
 
@@ -1046,10 +1053,22 @@ def _observed_subject(text: str, notes: list[str]) -> str:
     if not SUBJECT_ROLE.search(text) or re.search(r"\bego\b", text, re.I):
         return text
     notes.append("read the observed subject as the ego")
+    m = SUBJECT_LABELLED.search(text)
+    label = m and (m.group(1) or m.group(2) or m.group(4))
+    if m and m.group(3):
+        text = text[:m.start()] + f"the ego {m.group(3)}" + text[m.end():]
+    if label:  # "approaching from A's left", "to #1's left", "in front of #1"
+        text = re.sub(rf"(?<![\w#]){re.escape(label)}(?='s\b)", "the ego", text)
+        if label[0] == "#":  # a log's numbered lines: the numbers are names, never counts
+            text = re.sub(rf"(?<![\w#]){re.escape(label)}\b(?!\s*subject)", "the ego", text)
+            text = re.sub(r"(?m)^([ \t]*)#\d{1,3}[ \t]+(?=\w)", r"\1", text)
     text = re.sub(r"\b(\w+)\s*\(the subject\)", r"ego \1", text, flags=re.I)  # "left-turning ego car"
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*:\s*(?=(?:a|an)\b)", r"\1The ego is ", text, flags=re.I | re.M)
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*:\s*", r"\1Ego: ", text, flags=re.I | re.M)
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*,\s*(?=(?:a|an|the)\b)", r"\1the ego, ", text, flags=re.I | re.M)
+    text = re.sub(r"(?<![\w'-])subject\s*=\s*", "Ego: ", text, flags=re.I)  # "subject = white SUV (trk 77)"
+    text = re.sub(r"(?<=\s)subject\s*:\s*", "\nEgo: ", text, flags=re.I)  # "+0.0 s  Subject: box truck SB": a key,
+    # on a line of its own
     return THE_SUBJECT.sub("the ego", text)
 
 

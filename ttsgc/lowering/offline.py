@@ -7143,6 +7143,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             # "my vehicle, a grey Vauxhall Astra,": its make and model; not "ego vehicle, a bus behind"
             if mine:
                 prev.entity.type = np.entity.type if np.entity.type != "car" else prev.entity.type
+                prev.entity.aliases.add(np.entity.head)
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
@@ -7183,6 +7184,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if a.is_ego:
                     if b.type in V.EGO_TYPES:
                         a.type = b.type
+                        a.aliases.add(b.head)  # "The ego is a white SUV. A bus behind the SUV": the ego again
                 elif a.label or a.head == "car" or a.head.split()[-1] in APPOSED_HEADS:
                     _fold(r, a, b)
                     folded_at[id(prev)] = np.index  # "Target is a pedestrian dummy (EPTa)": the dummy's short name
