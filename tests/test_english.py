@@ -9223,3 +9223,29 @@ def test_the_noun_the_ego_is_said_to_be_names_it_again(prompt):
       ("pedestrian", "on_the_sidewalk", "left")])])
 def test_a_logs_subject_is_the_ego_by_its_key_and_its_label(prompt, expected):
     assert agents(prompt) == sorted(expected)
+
+
+def test_vehicles_of_a_kind_told_apart_by_numbers_are_as_many():
+    said = agents("Hero car turns left on the green. Oncoming picture car 10 turns right into the same street. Picture "
+                  "car 11, also oncoming, goes straight through behind car 10.")
+    assert said == [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego"),
+                    ("car", "turn_right", "road_of_straight")]
+
+
+def test_a_shot_lists_extras_are_people_on_foot():
+    said = agents("Hero car drives straight through on the green. Two ND extras hold on the right-hand corner "
+                  "sidewalk.")
+    assert said == [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right"),
+                    ("pedestrian", "on_the_sidewalk", "right")]
+
+
+def test_a_court_report_is_told_from_the_seat_of_the_driver_named_in_full():
+    said = agents("The court heard that Alan Briggs, 47, was riding his motorcycle along the A59 when an oncoming "
+                  "Honda Jazz, driven by Margaret Ellis, turned right across him into Hall Lane. Mr Briggs was thrown "
+                  "over the bonnet.")
+    assert said == [("car", "turn_right", "road_of_straight"), ("motorcycle", "go_straight", "ego")]
+
+
+def test_children_in_the_back_of_the_car_are_passengers():
+    assert agents("The ego drives on. Two children were in the back of the car at the time.") == \
+        [("car", "go_straight", "ego")]

@@ -821,6 +821,7 @@ def _vehicle_numbers(text: str) -> str:
     vehicle or a place counts nothing and limits no speed."""
     text = re.sub(r"\b(?:the\s+)?(?:number|no\.|#)\s*\d+\s+" + _NOUN + r"\b", lambda m: "the " + m.group(1), text,
                   flags=re.I)
+    text = _numbered_alike(text)
     text = re.sub(r"\b(" + FLEET_NOUNS + r")\s+(?:no\.?\s*|#)?(\d{1,4})\b" + NOT_A_QUANTITY,
                   lambda m: m.group(1) if len(m.group(2)) > 1 or m.group(1).lower() in FLEET_ONLY else m.group(0), text,
                   flags=re.I)  # "car 1" and "unit 2" stay the labels a police report gives
@@ -828,6 +829,23 @@ def _vehicle_numbers(text: str) -> str:
                   r"(?:no\.?\s*|#)?\d{1,4}[a-z]?\b" + NOT_A_QUANTITY, lambda m: m.group(1), text,
                   flags=re.I)  # "at Junction 9", "Route 12"
     return re.sub(r"\(\s*(?:unit|no\.?|fleet no\.?)\s*\d+\s*,\s*", "(", text, flags=re.I)
+
+
+NUMBERED = re.compile(r"\b(car|truck|bus|van|vehicle)\s+(\d{1,4})\b" + NOT_A_QUANTITY, re.I)
+
+
+def _numbered_alike(text: str) -> str:
+    """'picture car 10 turns right; picture car 11 goes straight behind car 10': vehicles of one kind told apart
+    by numbers are as many vehicles, named as a report names them ('car 1', 'car 2'), not one fleet number."""
+    said: dict[str, dict[str, int]] = {}
+    for m in NUMBERED.finditer(text):
+        said.setdefault(m.group(1).lower(), {}).setdefault(m.group(2), 0)
+    renamed = {noun: {n: k + 1 for k, n in enumerate(numbers)} for noun, numbers in said.items()
+               if len(numbers) >= 2 and len(numbers) <= 9 and any(len(n) > 1 for n in numbers)}
+    if not renamed:
+        return text
+    return NUMBERED.sub(lambda m: f"{m.group(1)} {renamed[m.group(1).lower()][m.group(2)]}"
+                        if m.group(1).lower() in renamed else m.group(0), text)
 
 
 DESIGNATION = r"(?:V|Veh|Vehicle|Unit|U)\s?[#-]?\s?(\d{1,2})"  # a crash report's names of its vehicles
@@ -1142,12 +1160,13 @@ FIRST_PERSON = re.compile(r"\b(?:i|me|my|we|us|our|ego)\b", re.I)
 PARTY_ROLES = r"(?:[Tt]he |[Mm]y |[Oo]ur )?(?:[Cc]lient|[Cc]laimant|[Ii]nsured|[Pp]olicyholder|[Dd]efendant|" \
               r"[Pp]laintiff|[Cc]omplainant)"
 PARTY_LETTER = r"\b(?:[B-HJ-Z]|[A-Z]{2,3})\b(?!\.)"  # "D", "P", "IV" ("A" and "I" are words; "J. Smith" an initial)
-AFTER_A_LINK = "|".join(rf"(?<=\b{w}\s)" for w in ("when", "as", "while", "then", "and", "but"))
+AFTER_A_LINK = "|".join(rf"(?<=\b{w}\s)" for w in ("when", "as", "while", "then", "and", "but", "that"))
+TITLE = r"(?:(?:Mr|Mrs|Ms|Miss|Dr)\.?\s+)"
 PARTY_DRIVING = re.compile(
-    rf"(?:^|(?<=[.!?;:,]\s)|{AFTER_A_LINK})({PARTY_LETTER}|{NAME}|{PARTY_ROLES})"
+    rf"(?:^|(?<=[.!?;:,]\s)|{AFTER_A_LINK})({PARTY_LETTER}|{TITLE}?{FULL_NAME}|{PARTY_ROLES})"
     rf"(?:,[^,.]{{1,60}},|\s*\([^()]{{1,60}}\))?\s+(?:[a-z]+ly\s+)?(?:{STORY_DRIVING}|wants to turn|waits|"
     rf"was waiting|is waiting|was stopped|is stopped|stops|stopped|was changing lanes|changes lanes|"
-    rf"(?:is|was) (?:riding|driving|approaching|travelling|traveling|going|proceeding|heading)|"
+    rf"(?:is|was) (?:riding|driving|approaching|travelling|traveling|going|proceeding|heading|speeding)|"
     rf"rides (?:his|her|their)|rode (?:his|her|their)|"
     rf"(?P<told>(?:states|says|reports|told us|stated|said) (?:that )?(?:she|he) (?:was|is|had)))\b")
 PARTY_MARK = re.compile(r"\b(?:my|our) (?=client|insured)", re.I)  # a lawyer's "my client" tells of the client, not
@@ -1164,22 +1183,25 @@ def _party_at_the_wheel(text: str, notes: list[str]) -> str:
         return text
     drivers = []
     for m in PARTY_DRIVING.finditer(text):
-        party = m.group(1)
+        party = re.sub(rf"^{TITLE}", "", m.group(1))
         a_name = not re.fullmatch(PARTY_LETTER, party) and not re.fullmatch(PARTY_ROLES, party)
-        if party in NOT_NAMES or (a_name or len(party) > 1) and known_word(party) or a_name and m.group("told") or \
-                party in drivers:
+        if party in NOT_NAMES or (a_name or len(party) > 1) and known_word(party.split()[-1]) or \
+                a_name and m.group("told") or party in drivers:
             continue
         drivers.append(party)
     if not drivers:
         return text
 
+    def said(party: str) -> str:  # "Sarah Jennings", then "Mrs Jennings", "Jennings" or "Sarah"
+        return rf"(?:{TITLE}?{re.escape(party)}|{TITLE}?(?:{'|'.join(map(re.escape, party.split()))}))" \
+            if " " in party else re.escape(party)
+
     def placed_by(party: str) -> int:
-        said = re.escape(party)
-        return len(re.findall(rf"\b{said}'s\s+{POSSESSED}\b|\b(?:of|to|toward|towards|behind|past|beside)\s+{said}\b",
-                              text))
+        return len(re.findall(rf"\b{said(party)}'s\s+{POSSESSED}\b|"
+                              rf"\b(?:of|to|toward|towards|behind|past|beside)\s+{said(party)}\b", text))
     ego = max(drivers, key=lambda d: (placed_by(d), -drivers.index(d)))
-    said = re.escape(ego)
-    text = re.sub(rf"\b{said}\b", "the ego", text)  # ("D's left": the ego's left)
+    text = re.sub(rf"\b{said(ego)}'(?!s\b)", "the ego's", text)  # "Mrs Jennings' two children"
+    text = re.sub(rf"\b{said(ego)}\b", "the ego", text)  # ("D's left": the ego's left)
     notes.append(f"read {ego} as the ego's driver")
     return _drivers_pronoun(text, notes) if len(drivers) == 1 else text  # (of several, whose 'her' is unsaid)
 

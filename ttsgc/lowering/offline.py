@@ -1490,8 +1490,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
     if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
-            (m.end >= len(tokens) or tokens[m.end].word != "of"):
-        return [Unit(m.start, m.end, "positions", "on_board", span)]  # "kids arguing in the back": my passengers
+            (m.end >= len(tokens) or tokens[m.end].word != "of" or [t.word for t in tokens[m.end + 2:m.end + 3]] in (
+                ["car"], ["vehicle"], ["van"], ["cab"], ["taxi"], ["suv"])):
+        return [Unit(m.start, m.end, "positions", "on_board", span)]  # "kids arguing in the back", "two children
+        # were in the back of the car": my passengers
     if m.category == "actions" and m.start > 1 and tokens[m.start - 1].word in ("parallel", "bay", "reverse") and \
             tokens[m.start - 2].word in OWNERS | POSSESSIVES | {"the", "a"}:
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "your parallel park was fine": a manoeuvre named
