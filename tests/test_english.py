@@ -9249,3 +9249,30 @@ def test_a_court_report_is_told_from_the_seat_of_the_driver_named_in_full():
 def test_children_in_the_back_of_the_car_are_passengers():
     assert agents("The ego drives on. Two children were in the back of the car at the time.") == \
         [("car", "go_straight", "ego")]
+
+
+def test_a_crossing_denied_with_an_adverb_is_denied_and_nobody_crosses_at_it():
+    scenario = lower("A man stepped out into the road in front of me, and there isn't even a crossing on that "
+                     "stretch.").scenario
+    assert "crosswalk" in scenario.road.without_objects
+    assert [(a.type, a.action, a.relative_to_ego) for a in scenario.agents() if not a.is_ego] == \
+        [("pedestrian", "cross_the_road", "front")]
+
+
+def test_a_car_stopped_behind_the_speaker_is_another_car():
+    assert agents("I was stopped at the zebra crossing. The car stopped behind me beeped its horn.") == \
+        [("car", "stop", "back"), ("car", "stop", "ego")]
+
+
+def test_a_fright_said_as_a_turn_is_no_turn():
+    assert agents("I was stopped at the red with an ambulance coming across from the road on the left. Gave me "
+                  "such a turn!") == [("ambulance", "go_straight", "road_of_left_turn"), ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was waiting to turn left at the lights, and your grandfather was shouting from the passenger seat.",
+     [("car", "turn_left", "ego")]),
+    ("I was in the passenger seat of my mum's car when a bus pulled out in front of us.",
+     [("bus", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")])])
+def test_one_in_a_seat_of_the_ego_rides_in_it(prompt, expected):
+    assert agents(prompt) == expected

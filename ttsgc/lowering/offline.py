@@ -1489,6 +1489,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
+    if m.category == "agents" and m.meaning == "none" and span[-1].word == "seat" and m.start > 1 and \
+            tokens[m.start - 2].word in ("in", "from") and tokens[m.start - 1].word == "the" and \
+            (m.end >= len(tokens) or tokens[m.end].word != "of"):
+        return [Unit(m.start, m.end, "positions", "on_board", span)]  # "shouting from the passenger seat": riding
+        # with the ego (not "in the passenger seat of my mum's car": the speaker's own place)
     if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
             (m.end >= len(tokens) or tokens[m.end].word != "of" or [t.word for t in tokens[m.end + 2:m.end + 3]] in (
                 ["car"], ["vehicle"], ["van"], ["cab"], ["taxi"], ["suv"])):
@@ -1865,9 +1870,10 @@ def _road(r: _Reader) -> RoadSpec:
                 # "outside any crosswalk", "crossing outside a crosswalk": there may be none
                 put(word, False)
         if u.category == "comma" or (u.category == "word" and u.word in
-                                     {"and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic"}
-                                     | DENIED_KINDS):
-            continue  # "no marked crosswalk", "no proper give-way sign": the denial reaches past its kind
+                                     {"and", "or", "nor", "a", "an", "any", "either", "sign", "signs", "traffic",
+                                      "even", "really", "actually", "ever", "single"} | DENIED_KINDS):
+            continue  # "no marked crosswalk", "no proper give-way sign", "isn't even a crossing": the denial
+            # reaches past its kind and its adverb
         if removing and u.category == "word" and u.word in ("the", "its", "their", "both"):
             continue  # "removed the stop sign and the stop line": each thing removed
         if u.category == "agents" and u.meaning == "none" and u.word == "traffic":
@@ -4633,7 +4639,12 @@ def _names_the_ego_again(r: _Reader, ego: Entity, noun: str) -> bool:
 
 
 def _measured_by_others(units: list[Unit], k: int) -> bool:
-    """'the car two cars ahead of me': a count of vehicles and a place right after the noun say where it is."""
+    """'the car two cars ahead of me': a count of vehicles and a place right after the noun say where it is;
+    'the car stopped behind me': a participle and a place by the speaker."""
+    if k + 1 < len(units) and units[k].category == "actions" and len(units[k].tokens) == 1 and \
+            units[k].word.endswith(("ed", "ing")) and units[k + 1].category == "positions" and \
+            any(t.word in SPEAKING_SELF | {"ego"} for t in units[k + 1].tokens):
+        return True
     return k + 2 < len(units) and units[k].category in ("numbers", "number") and units[k + 1].category == "agents" \
         and units[k + 2].category == "positions"
 
@@ -8391,6 +8402,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     junction = road.junction is not False and (junction_words or turns or junction_features or
                                                any("road_straight" in e.features for e in r.entities) and turns)
     has_crosswalk = any(w in V.CROSSWALK_OBJECTS for w in road.required_objects)
+    if any(w in V.CROSSWALK_OBJECTS for w in road.without_objects):
+        for e in r.entities:
+            e.features.discard("crosswalk")  # "a man stepped out ..., and there isn't even a crossing": at none
     stages, oncoming = _compose(r, junction, has_crosswalk)
     if road.lanes < 2 and _one_lane_each_way(r.tokens):
         oncoming = set(oncoming) | {a.name for st in stages for a in st}  # "one lane each way", "single carriageway":
@@ -9558,7 +9572,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             r.notes.append(f"left out: '{e.head}' does nothing and is nowhere in the scene")
         if e.type == "pedestrian" and "on_board" in e.features and e.count > 0:
             e.count = 0  # "the kids arguing in the back": passengers of the ego, nobody on the road
-            r.notes.append(f"left out: '{e.head}' in the back of the ego's car (passengers, no agent)")
+            r.notes.append(f"left out: '{e.head}' rides in the ego's car (a passenger, no agent)")
         if e.type not in V.VULNERABLE_TYPES and e.count > 0 and not e.actions and not _placed(e) and \
                 _a_load(r, e):
             e.count = 0  # "in the truck with a tractor on the back", "a Fiesta ... on the back of the truck"
