@@ -4223,7 +4223,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             head + 1 < len(units) and units[head + 1].category == "positions" and \
             units[head + 1].meaning in ("ahead", "behind"):
         return NounPhrase(None, head, first)  # "a van two cars ahead of me": how far ahead it is, no cars named
-    if (owners - {"your"} and u.tokens[-1].base in KIN or not words and first == head and
+    told_to = "your" in owners and any(t.word == "i" for t in r.tokens)  # "I had to drive your grandfather": the
+    # listener's kin, as a teller speaks to them
+    if ((owners - {"your"} or told_to) and u.tokens[-1].base in KIN or not words and first == head and
             u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
         # "mom said no more driving": kin named as a name, by a text's writer
