@@ -9282,3 +9282,23 @@ def test_the_listeners_kin_a_teller_drives_is_a_passenger():
     assert agents("I had to drive your grandfather to his eye appointment. A young fellow on a moped was weaving "
                   "about just in front of me.") == [("car", "go_straight", "ego"),
                                                     ("motorcycle", "go_straight", "front")]
+
+
+def test_a_lane_change_goes_to_the_side_said_after_the_lanes_it_names():
+    assert agents("V1 (insured) was westbound on the expressway, three lanes. V1 changed lanes from lane 1 to lane 2, "
+                  "to its right.") == [("car", "change_lane_to_right", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Unit 1 (subject vehicle) was stopped at a red signal. Unit 2, Engine 14 of the county fire department, came "
+     "from the cross street on Unit 1's left and turned right.", ("firetruck", "turn_right", "road_of_left_turn")),
+    ("The ego waits at the junction while Medic 12 comes from the road on the left.",
+     ("ambulance", "go_straight", "road_of_left_turn"))])
+def test_a_fire_or_ambulance_unit_named_by_its_call_sign(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_two_friends_crossing_are_two_people_on_foot():
+    said = agents("D waits at the stop line of a four-way stop while two friends, P and Q, cross in the crosswalk in "
+                  "front of her.")
+    assert said.count(("pedestrian", "cross_the_road", "near_the_crosswalk")) == 2

@@ -821,6 +821,8 @@ def _vehicle_numbers(text: str) -> str:
     vehicle or a place counts nothing and limits no speed."""
     text = re.sub(r"\b(?:the\s+)?(?:number|no\.|#)\s*\d+\s+" + _NOUN + r"\b", lambda m: "the " + m.group(1), text,
                   flags=re.I)
+    text = re.sub(r"\b(?:Engine|Ladder|Quint)\s+\d{1,3}\b", "fire engine", text)  # a fire service's units by call sign
+    text = re.sub(r"\bMedic\s+\d{1,3}\b", "ambulance", text)
     text = _numbered_alike(text)
     text = re.sub(r"\b(" + FLEET_NOUNS + r")\s+(?:no\.?\s*|#)?(\d{1,4})\b" + NOT_A_QUANTITY,
                   lambda m: m.group(1) if len(m.group(2)) > 1 or m.group(1).lower() in FLEET_ONLY else m.group(0), text,

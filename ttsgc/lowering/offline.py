@@ -355,9 +355,31 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
-    for reread in (_aborted_lane_changes, _signalled_by_a_driver, _relations_on_the_pavement, _cut_in_named_as_a_case):
+    for reread in (_aborted_lane_changes, _signalled_by_a_driver, _relations_on_the_pavement, _cut_in_named_as_a_case,
+                   _lane_change_to_a_side_said_after):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+def _lane_change_to_a_side_said_after(units: list[Unit]) -> list[Unit]:
+    """'V1 changed lanes from lane 1 to lane 2, to its right': the side said after a lane change, past the lanes it
+    names, is where it goes (not the lane it was in)."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "actions" or u.meaning != "lane_change":
+            continue
+        for j in range(k + 1, min(k + 13, len(units))):
+            x = units[j]
+            if x.tokens[0].sentence != u.tokens[0].sentence or x.category in ("agents", "actions"):
+                break
+            if x.category == "positions" and x.meaning in ("side_left", "side_right"):
+                said = [t.word for y in units[max(k + 1, j - 2):j] for t in y.tokens] + [t.word for t in x.tokens]
+                if x.tokens[-1].word in ("left", "right") and (x.tokens[0].word == "to" or said[-3:-1] in (
+                        ["to", "its"], ["to", "the"], ["to", "his"], ["to", "her"], ["to", "their"])):
+                    out[k] = Unit(u.start, u.end, "actions", "lane_" + x.meaning[5:], u.tokens)
+                    out[j] = Unit(x.start, x.end, "word", x.word, x.tokens)
+                break
+    return out
 
 
 FROM_BEHIND_VERBS = {"rear end", "rear ended", "shunt", "run into the back of"}
