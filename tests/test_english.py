@@ -9302,3 +9302,16 @@ def test_two_friends_crossing_are_two_people_on_foot():
     said = agents("D waits at the stop line of a four-way stop while two friends, P and Q, cross in the crosswalk in "
                   "front of her.")
     assert said.count(("pedestrian", "cross_the_road", "near_the_crosswalk")) == 2
+
+
+def test_a_subject_said_again_by_he_after_and_is_that_subject_only():
+    said = agents("The ego car he is stopping in the right lane because the signal is red, and one taxi waiting in "
+                  "left lane beside him, then the signal become green and the ego he go straight.")
+    assert ("car", "stop", "left") in said
+
+
+def test_lamps_flashing_and_the_travel_lane_are_no_movement():
+    said = agents("Scenario class: stationary emergency vehicle in the travel lane. Our vehicle approaches a police "
+                  "car stopped in our lane with its emergency lights flashing. Our vehicle slows, and then changes "
+                  "lanes to the right to proceed around the police car.")
+    assert ("police", "stop", "front") in said

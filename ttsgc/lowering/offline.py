@@ -1511,6 +1511,13 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
+    if m.category == "actions" and [t.word for t in span] == ["travel"] and m.end < len(tokens) and \
+            tokens[m.end].word in ("lane", "lanes"):
+        return [Unit(m.start, m.end, "word", "travel", span)]  # "stopped in the travel lane": a lane's kind
+    if m.category == "actions" and len(span) == 1 and span[0].word in LAMP_STATES and m.start > 0 and \
+            tokens[m.start - 1].word in LAMPS:
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a police car stopped with its lights flashing":
+        # its lamps, no movement
     if m.category == "agents" and m.meaning == "none" and span[-1].word == "seat" and m.start > 1 and \
             tokens[m.start - 2].word in ("in", "from") and tokens[m.start - 1].word == "the" and \
             (m.end >= len(tokens) or tokens[m.end].word != "of"):
@@ -1735,6 +1742,8 @@ PUSHED_ALONG = {"push", "wheel", "walk", "drag", "carry", "lift", "lead", "pushi
 HAND_HELD = {"holding", "holds", "held", "carrying", "carries", "waving", "waves", "raising", "raises"}
 
 
+LAMPS = {"lights", "light", "lamps", "hazards", "hazard", "beacons", "beacon", "blues", "strobes", "flashers",
+         "indicators", "indicator", "blinkers", "blinker", "headlights", "headlamps"}
 LAMP_STATES = {"flashing", "flash", "flashed", "going", "blazing", "strobing", "strobe", "blinking", "spinning",
                "pulsing", "whirling", "ablaze"}  # "lights strobing": a vehicle's own lamps, no signal
 
@@ -7558,7 +7567,8 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
     opening = phrases[0] if phrases else None
     between = units[opening.index + 1:i] if opening is not None else []
     if units[i].word in ("he", "she", "they") and opening is not None and opening.entity is not None and \
-            all(u.category == "word" and u.word in ("and", "but", "so", "then") for u in units[:opening.first]) and \
+            (opening.first == 0 or units[opening.first - 1].category == "comma" or
+             units[opening.first - 1].word in ("and", "but", "so", "then")) and \
             all(u.category == "positions" or u.word in ("from", "the", "of", "on", "in", "at", "side", "opposite")
                 for u in between) and i + 1 < len(units) and (units[i + 1].category == "actions" or (
                 units[i + 1].word in AUXILIARIES and i + 2 < len(units) and units[i + 2].category == "actions")) and \
