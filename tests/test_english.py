@@ -9315,3 +9315,25 @@ def test_lamps_flashing_and_the_travel_lane_are_no_movement():
                   "car stopped in our lane with its emergency lights flashing. Our vehicle slows, and then changes "
                   "lanes to the right to proceed around the police car.")
     assert ("police", "stop", "front") in said
+
+
+def test_the_last_thing_waited_for_is_not_the_subject_after_then():
+    assert stages("Unprotected left, no light, just a yield sign. It waited for 2 oncoming cars and a motorcycle "
+                  "then went.")[1] == [("ego", "turn_left", None)]
+
+
+def test_an_emoji_between_words_ends_a_sentence():
+    said = agents("FSD handled a cut-in like a champ on my commute \U0001F64C semi in the right lane merged in "
+                  "front of my car, 3 lanes \U0001F327\ufe0f and it just backed off smooth.")
+    assert ("car", "go_straight", "ego") in said and not any(k[0] == "truck" and k[2] == "ego" for k in said)
+
+
+def test_the_guy_honking_behind_an_ego_at_the_light_stands():
+    assert ("car", "stop", "back") in agents(
+        "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")
+
+
+def test_ones_turn_in_an_order_is_no_manoeuvre():
+    said = agents("The AV is going straight through a crossroads on a green light. A bus is waiting at the red light "
+                  "on the road to the left. Blind pedestrians listen to know when it is their turn.")
+    assert ("bus", "stop", "road_of_left_turn") in said

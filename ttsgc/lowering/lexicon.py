@@ -1144,6 +1144,21 @@ def _weather_tags(m: re.Match) -> str:
 MARKDOWN_EMPHASIS = re.compile(r"(\*\*|__)(?=\S)(.+?)(?<=\S)\1")  # "- **Ego vehicle:** Sedan": words, not bold
 
 
+EMOJI = re.compile(r"[\U0001F000-\U0001FAFF\u2600-\u27BF\u2B00-\u2BFF][\uFE0F\u200D\U0001F3FB-\U0001F3FF"
+                   r"\U0001F000-\U0001FAFF\u2600-\u27BF]*")
+EMOJI_BETWEEN_WORDS = re.compile(rf"(?<=[A-Za-z0-9)])\s*(?:{EMOJI.pattern})(?:\s*(?:{EMOJI.pattern}))*\s+"
+                                 r"(?!(?:and|while|but|as|when|so|because|then|until|before|after)\b)(?=[A-Za-z@#])")
+
+
+def _emoji_breaks(text: str) -> str:
+    """'FSD handled a cut-in like a champ on my commute 🙌 semi in the right lane merged ...': a post's emoji
+    between words ends what was said before it, as a full stop does (not before a word that links on: 'in front
+    of us 😤 while two pedestrians ...')."""
+    if not EMOJI.search(text):
+        return text
+    return EMOJI_BETWEEN_WORDS.sub(". ", text)
+
+
 def _without_social_markup(text: str) -> str:
     """A post's handles ('@WestMidsPolice is it worth reporting') name whom it is addressed to, and the tags it
     ends with ('#cycling #schoolbus') file it under a topic: neither is a road user of the scene, whatever
@@ -1244,7 +1259,7 @@ def tokenize(text: str) -> list[Token]:
     lex = lexicon()
     text = MARKDOWN_EMPHASIS.sub(r"\2", CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _comment_block(text))))
     text = _without_members_described(
-        _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(text))))))
+        _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(_emoji_breaks(text)))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _without_calques(text)

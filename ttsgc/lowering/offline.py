@@ -344,12 +344,17 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
         while j > 0 and units[j].category in ("road", "behaviours", "word") and units[j].word not in (
                 "a", "an", "the", ",", "and") and k - j < 3:
             j -= 1
+        met = j > 0 and units[j - 1].tokens[-1].word in MET_VERBS  # "FSD handled a cut-in like a champ"
         if units[j].category != "word" or units[j].word not in ("a", "an", "the") or not any(
-                x.category == "agents" and x.meaning == "ego" and x.tokens[0].word in ("i", "we")
+                x.category == "agents" and x.meaning == "ego" and (x.tokens[0].word in ("i", "we") or met)
                 and x.tokens[0].sentence == u.tokens[0].sentence for x in units[:j]):
             continue
         out[k] = Unit(u.start, u.end, "word", "cut in", u.tokens)
     return out
+
+
+MET_VERBS = {"handled", "handles", "handle", "handling", "survived", "avoided", "witnessed", "managed", "spotted",
+             "caught", "nailed", "saw"}  # what one does to a manoeuvre someone else makes
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
@@ -1511,6 +1516,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
+    if m.category == "actions" and [t.word for t in span] == ["turn"] and m.start > 1 and \
+            tokens[m.start - 1].word in OWNERS and tokens[m.start - 2].word in ("is", "was", "be", "s"):
+        return [Unit(m.start, m.end, "word", "turn", span)]  # "to know when it is their turn": one's turn in an
+        # order, no manoeuvre
     if m.category == "actions" and [t.word for t in span] == ["travel"] and m.end < len(tokens) and \
             tokens[m.end].word in ("lane", "lanes"):
         return [Unit(m.start, m.end, "word", "travel", span)]  # "stopped in the travel lane": a lane's kind
@@ -2530,6 +2539,20 @@ class Clause:
     background: bool = False  # a relative on a noun whose own verb follows it: what the noun was, not what it does
 
 
+def _listed_before_then(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'it waited for 2 oncoming cars and a motorcycle then went': the last of the things waited for, not the
+    subject of what follows 'then' (which is the waiter's)."""
+    if not current or current[-1].category != "agents" or not any(
+            x.category == "actions" and x.meaning == "stop" for x in current):
+        return False
+    j = k + 1
+    while j < len(units) and (units[j].word in ("a", "an", "the", "another") or units[j].category in (
+            "numbers", "number", "positions", "behaviours")):
+        j += 1
+    return j + 1 < len(units) and units[j].category == "agents" and units[j + 1].word == "then" and \
+        units[j + 1].tokens[0].sentence == units[k].tokens[0].sentence
+
+
 def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
     in_case_name: set[int] = set()  # "car-to-pedestrian farside adult": a test case's name, up to the next comma
     naming = False
@@ -2728,8 +2751,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             current.append(u)  # "no option but to stop": one idiom, the verb is the one left without a choice's
             continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
-            if u.word in ("and", "or") and not _has_verb(current) and not _new_subject_after_copula(current, units, k) \
-                    and not _holds_the_green(current):
+            if u.word in ("and", "or") and (not _has_verb(current) and not _new_subject_after_copula(
+                    current, units, k) and not _holds_the_green(current) or _listed_before_then(current, units, k)):
                 current.append(u)
                 continue
             if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
@@ -6583,7 +6606,8 @@ def _place_in_queue(r: _Reader) -> None:
         # (until a later stage says it goes: "the light turns green and both go")
         honks = any(a[0] == 0 for a in e.actions) and all(a[4] == "horn" for a in e.actions if a[0] == 0)
         if not e.is_ego and (honks or not any(a[0] == 0 for a in e.actions)) and \
-                e.type not in V.VULNERABLE_TYPES and e.stage == 0 and (
+                (e.type not in V.VULNERABLE_TYPES or honks and e.head in VAGUE_PEOPLE) and e.stage == 0 and (
+                # ("the guy behind me honking": a driver, read as one at the wheel later)
                 "ahead" in e.features and not e.features & {"side_left", "side_right", "road_straight", "toward"}
                 or "level" in e.features and not e.features & {"ahead", "behind", "road_straight", "toward"}
                 or (e.parent or e).includes_ego and not e.features  # "three cars including mine at the red"
