@@ -9337,3 +9337,10 @@ def test_ones_turn_in_an_order_is_no_manoeuvre():
     said = agents("The AV is going straight through a crossroads on a green light. A bus is waiting at the red light "
                   "on the road to the left. Blind pedestrians listen to know when it is their turn.")
     assert ("bus", "stop", "road_of_left_turn") in said
+
+
+@pytest.mark.parametrize("prompt", [
+    "FSD handled a cut-in like a champ. A semi in the right lane merged right in front of my car on I-5, 3 lanes, and "
+    "my car just backed off smooth."])
+def test_right_in_front_is_how_close_and_backing_off_is_no_place(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "right")]

@@ -1516,6 +1516,18 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
+    if m.category == "positions" and len(span) == 1 and span[0].word in ("backed", "backs", "backing") and \
+            m.end < len(tokens) and tokens[m.end].word in ("off", "away"):
+        return [Unit(m.start, m.end, "actions", "move", span)]  # "it just backed off smooth": it eased off, no place
+    if m.category == "actions" and len(span) == 2 and span[-1].word in ("right", "left") and \
+            m.meaning.startswith("lane_") and [t.word for t in tokens[m.end:m.end + 2]] in (
+                ["in", "front"], ["ahead", "of"], ["behind", "me"], ["behind", "us"], ["next", "to"], ["beside", "me"],
+                ["beside", "us"]):
+        verb = matches(list(span[:1]))
+        return [Unit(m.start, m.start + 1, verb[0].category, verb[0].meaning, span[:1]) if verb else
+                Unit(m.start, m.start + 1, "word", span[0].word, span[:1]),
+                Unit(m.start + 1, m.end, "word", span[-1].word, span[1:])]  # "merged right in front of my car": how
+        # close, not which way
     if m.category == "actions" and [t.word for t in span] == ["turn"] and m.start > 1 and \
             tokens[m.start - 1].word in OWNERS and tokens[m.start - 2].word in ("is", "was", "be", "s"):
         return [Unit(m.start, m.end, "word", "turn", span)]  # "to know when it is their turn": one's turn in an
