@@ -9344,3 +9344,10 @@ def test_ones_turn_in_an_order_is_no_manoeuvre():
     "my car just backed off smooth."])
 def test_right_in_front_is_how_close_and_backing_off_is_no_place(prompt):
     assert agents(prompt) == [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "right")]
+
+
+def test_asking_who_someone_was_keeps_them_in_the_scene():
+    said = agents("Who was the absolute idiot on the motorbike weaving in and out of traffic last night? I was sat at "
+                  "the lights and he cut in right in front of me from the right-hand lane.")
+    assert ("car", "stop", "ego") in said and any(k[0] == "motorcycle" and k[1] == "change_lane_to_left"
+                                                    for k in said)

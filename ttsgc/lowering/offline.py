@@ -3295,6 +3295,11 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     readers of a forum post or people in general are nobody in the scene. Nor are kinds spoken of in general
     or someone in what did not happen (_in_general, _what_if)."""
     t = u.tokens[0]
+    asked = _sentence(tokens, t.sentence)
+    if t.question and len(asked) > 2 and asked[0].word == "who" and asked[1].word in ("was", "is", "were") and \
+            asked[2].word == "the":
+        return False  # "Who was the idiot on the motorbike weaving in and out of traffic last night?": asks who
+        # someone in the scene was
     if u.category != "comma" and _set_aside(tokens, u):
         return True
     if _in_an_aside(tokens, u):
