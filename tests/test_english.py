@@ -9351,3 +9351,9 @@ def test_asking_who_someone_was_keeps_them_in_the_scene():
                   "the lights and he cut in right in front of me from the right-hand lane.")
     assert ("car", "stop", "ego") in said and any(k[0] == "motorcycle" and k[1] == "change_lane_to_left"
                                                     for k in said)
+
+
+def test_a_car_ahead_is_not_the_one_beside():
+    said = agents("The ego vehicle is traveling on a highway at night, with a pickup in the right lane beside it, when "
+                  "the car ahead of the ego suddenly brakes hard and stops.")
+    assert ("car", "go_straight", "right") in said and ("car", "stop", "front") in said

@@ -4758,7 +4758,8 @@ def _sentence_adverb(u: Unit) -> bool:
     return u.category == "word" and (u.word in ADVERBS or u.word.endswith("ly") and len(u.word) > 4)
 
 
-OPPOSITE_PLACES = {"ahead": {"behind"}, "behind": {"ahead", "overtaking"}, "side_left": {"side_right"},
+OPPOSITE_PLACES = {"ahead": {"behind", "level"}, "behind": {"ahead", "overtaking", "level"},
+                   "side_left": {"side_right"},
                    "side_right": {"side_left"}, "from_left": {"from_right", "road_right"},
                    "from_right": {"from_left", "road_left"}, "road_left": {"road_right", "from_right"},
                    "road_right": {"road_left", "from_left"}}
