@@ -839,11 +839,13 @@ NUMBERED = re.compile(r"\b(car|truck|bus|van|vehicle)\s+(\d{1,4})\b" + NOT_A_QUA
 def _numbered_alike(text: str) -> str:
     """'picture car 10 turns right; picture car 11 goes straight behind car 10': vehicles of one kind told apart
     by numbers are as many vehicles, named as a report names them ('car 1', 'car 2'), not one fleet number."""
-    said: dict[str, dict[str, int]] = {}
+    said: dict[str, list[str]] = {}
     for m in NUMBERED.finditer(text):
-        said.setdefault(m.group(1).lower(), {}).setdefault(m.group(2), 0)
+        numbers = said.setdefault(m.group(1).lower(), [])
+        if m.group(2) not in numbers:
+            numbers.append(m.group(2))
     renamed = {noun: {n: k + 1 for k, n in enumerate(numbers)} for noun, numbers in said.items()
-               if len(numbers) >= 2 and len(numbers) <= 9 and any(len(n) > 1 for n in numbers)}
+               if 2 <= len(numbers) <= 9 and any(len(n) > 1 for n in numbers)}
     if not renamed:
         return text
     return NUMBERED.sub(lambda m: f"{m.group(1)} {renamed[m.group(1).lower()][m.group(2)]}"

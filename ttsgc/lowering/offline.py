@@ -333,6 +333,10 @@ def _relations_on_the_pavement(units: list[Unit]) -> list[Unit]:
     return out
 
 
+MET_VERBS = {"handled", "handles", "handle", "handling", "survived", "avoided", "witnessed", "managed", "spotted",
+             "caught", "nailed", "saw"}  # what one does to a manoeuvre someone else makes
+
+
 def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
     """'I need a highway cut-in for the ACC tests', 'I'm trying to reproduce a cut-in at night': a cut-in named with
     an article as what the speaker asks for is the case's name; the cut-in is someone else's, said after."""
@@ -352,9 +356,6 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
         out[k] = Unit(u.start, u.end, "word", "cut in", u.tokens)
     return out
 
-
-MET_VERBS = {"handled", "handles", "handle", "handling", "survived", "avoided", "witnessed", "managed", "spotted",
-             "caught", "nailed", "saw"}  # what one does to a manoeuvre someone else makes
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
