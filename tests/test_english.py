@@ -9269,15 +9269,6 @@ def test_a_fright_said_as_a_turn_is_no_turn():
                   "such a turn!") == [("ambulance", "go_straight", "road_of_left_turn"), ("car", "stop", "ego")]
 
 
-@pytest.mark.parametrize("prompt, expected", [
-    ("I was waiting to turn left at the lights, and your grandfather was shouting from the passenger seat.",
-     [("car", "turn_left", "ego")]),
-    ("I was in the passenger seat of my mum's car when a bus pulled out in front of us.",
-     [("bus", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")])])
-def test_one_in_a_seat_of_the_ego_rides_in_it(prompt, expected):
-    assert agents(prompt) == expected
-
-
 def test_the_listeners_kin_a_teller_drives_is_a_passenger():
     assert agents("I had to drive your grandfather to his eye appointment. A young fellow on a moped was weaving "
                   "about just in front of me.") == [("car", "go_straight", "ego"),

@@ -1540,11 +1540,6 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word in LAMPS:
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a police car stopped with its lights flashing":
         # its lamps, no movement
-    if m.category == "agents" and m.meaning == "none" and span[-1].word == "seat" and m.start > 1 and \
-            tokens[m.start - 2].word in ("in", "from") and tokens[m.start - 1].word == "the" and \
-            (m.end >= len(tokens) or tokens[m.end].word != "of"):
-        return [Unit(m.start, m.end, "positions", "on_board", span)]  # "shouting from the passenger seat": riding
-        # with the ego (not "in the passenger seat of my mum's car": the speaker's own place)
     if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
             (m.end >= len(tokens) or tokens[m.end].word != "of" or [t.word for t in tokens[m.end + 2:m.end + 3]] in (
                 ["car"], ["vehicle"], ["van"], ["cab"], ["taxi"], ["suv"])):
