@@ -357,7 +357,6 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
     return out
 
 
-
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
