@@ -9348,3 +9348,70 @@ def test_a_car_ahead_is_not_the_one_beside():
     said = agents("The ego vehicle is traveling on a highway at night, with a pickup in the right lane beside it, when "
                   "the car ahead of the ego suddenly brakes hard and stops.")
     assert ("car", "go_straight", "right") in said and ("car", "stop", "front") in said
+
+
+def test_a_plain_person_in_a_vehicle_is_that_vehicle():
+    said = agents("I had stopped at the four-way stop when a young fellow in a pickup came from the road on my right "
+                  "and turned left in front of me.")
+    assert said == [("car", "stop", "ego"), ("car", "turn_left", "road_of_right_turn")]
+
+
+def test_a_plain_person_who_crosses_is_kept_though_at_the_wheel_words_name_them():
+    said = agents("I stopped to let an old gentleman with a stick cross, only for a young man on a motorbike to come "
+                  "up behind me.")
+    assert ("pedestrian", "cross_the_road", "front") in said or any(k[0] == "pedestrian" for k in said)
+
+
+def test_the_drivers_of_a_town_are_a_kind():
+    assert agents("You would not believe the drivers down here. I waited at the stop sign when a van came from the "
+                  "right and turned left.") == [("car", "stop", "ego"), ("car", "turn_left", "road_of_right_turn")]
+
+
+def test_a_records_unit_named_in_capitals_is_the_ego():
+    said = agents("Event: Harsh Braking | 2024-05-14 14:32:07 | Veh: Unit 212 (Ford Transit) | Spd 62 -> 19 km/h | "
+                  "Posted 60 km/h. Lead vehicle braked suddenly to a full stop in ego lane.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+def test_a_car_in_front_after_a_lead_vehicle_is_that_vehicle():
+    assert agents("Lead vehicle braked suddenly to a full stop in ego lane. Driver comment: car in front slammed on "
+                  "for no reason.") == [("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Sitting at the green waiting to make my left with the plow, an SUV coming the other way slid through.",
+    "I was stopped first with the truck and a pickup from the road on my right turned left in front of me.",
+    "I had the truck stopped at the yield sign when the fire engine came along from my right.",
+    "Small hatchback stopped on the right shoulder ahead of me. Slowed the truck down and gave them room."])
+def test_the_vehicle_a_speaker_works_with_or_handles_is_the_egos(prompt):
+    assert any(k[0] == "truck" and k[2] == "ego" for k in agents(prompt))
+
+
+@pytest.mark.parametrize("prompt", ["I collided with the truck.", "The bus stopped. I stopped the car behind the bus."])
+def test_a_vehicle_met_or_placed_is_not_the_speakers(prompt):
+    said = agents(prompt)
+    assert ("car", "stop" if "stopped" in prompt else "go_straight", "ego") in said and len(said) == 2
+
+
+def test_the_speakers_own_vehicle_named_again_is_not_the_one_named_before():
+    said = agents("Semi pulled over on the right shoulder up ahead. I moved the truck over a lane to give him room.")
+    assert any(k[0::2] == ("truck", "ego") for k in said) and ("truck", "stop", "front_right") in said
+
+
+def test_the_van_of_one_the_speaker_places_is_theirs():
+    said = agents("I'm coming past the station and a girl steps out onto the zebra, so I had to stop dead. And the "
+                  "eejit behind me in the white van was flying.")
+    assert ("car", "go_straight", "back") in said
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A semi pulled over on the right shoulder up ahead.", ("truck", "stop", "front_right")),
+    ("A car pulled over in front of me.", ("car", "change_lane_to_right", "front"))])
+def test_pulled_over_on_a_place_stands_there(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_the_listener_addressed_is_not_the_ego():
+    said = agents("You won't believe this, a guy on a motorcycle in January. Passed me on the left doing 60 while I'm "
+                  "salting the right lane in the truck.")
+    assert sorted(said) == [("motorcycle", "go_straight", "back_left"), ("truck", "go_straight", "ego")]

@@ -853,6 +853,9 @@ def _first_named(key: str, before: str) -> str:
     return f"a {key}"
 
 
+EGO_KEYS = {"ego", "ego vehicle", "ego car", "subject vehicle"}
+
+
 def _keyed_agents(text: str) -> str:
     """'Ego: going straight. Van: stopped, front-right.' on one line: each key that names an agent is the
     subject of what follows it ('Van is stopped, front-right.'), when two keys do or the line opens with one;
@@ -860,8 +863,9 @@ def _keyed_agents(text: str) -> str:
     pieces = re.split(r"(?<=[.;|])\s+|\s+/\s+", text.strip())
     if sum(1 for p in pieces if (m := KEY_LINE.match(p)) and _names_agent(m.group(1))) < 2 and not (
             (m := KEY_LINE.match(pieces[0])) and _names_agent(m.group(1))
-            and m.group(1).strip().lower().split()[0] not in TITLE_KEYS):  # "Ego: a sedan. A van pulls out."
-        return text
+            and m.group(1).strip().lower().split()[0] not in TITLE_KEYS) and not any(
+            (m := KEY_LINE.match(p)) and m.group(1).strip().lower() in EGO_KEYS for p in pieces):
+        return text  # "Ego: a sedan. A van pulls out.", "Event: Harsh Braking. Ego: Ford Transit. Lead vehicle ..."
     out = []
     for k, piece in enumerate(pieces):
         m = KEY_LINE.match(piece)

@@ -59,10 +59,13 @@ UNSPECIFIED = OpenChoices({  # other seeds draw from templates/unspecified.toml 
 })
 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
-DRIVERS = {"driver", "learner", "learner driver", "motorist", "guy", "man", "woman", "lady", "person", "someone",
-           "dude", "bloke", "lad", "chap", "mate", "fella", "idiot", "jerk", "moron", "lunatic", "nutter", "maniac",
-           "somebody", "young man", "old man", "teenager", "teen", "kid", "muppet", "numpty", "plonker", "pillock",
-           "wally", "clown", "prat", "twit", "nutcase", "boy racer"}
+PLAIN_PEOPLE = {"person", "someone", "somebody", "man", "woman", "lady", "kid", "lad", "teen", "teenager", "young man",
+                "young woman", "old man", "old woman", "old lady", "old guy", "old timer", "old gentleman", "fellow",
+                "gentleman", "elderly man", "elderly woman", "elderly lady", "youngster"}
+# people named by who they are, not by a role: on foot unless the text puts them at the wheel
+DRIVERS = PLAIN_PEOPLE | {"driver", "learner", "learner driver", "motorist", "guy", "dude", "bloke", "chap", "mate",
+                          "fella", "idiot", "jerk", "moron", "lunatic", "nutter", "maniac", "muppet", "numpty",
+                          "plonker", "pillock", "wally", "clown", "prat", "twit", "nutcase", "boy racer"}
 SCENERY_PREPOSITIONS = {"between", "past", "among", "amongst", "through", "around", "beside", "by", "of", "in",
                         "with"}
 DEFINITE = {"the", "this", "that", "these", "those", "said"}
@@ -1293,6 +1296,9 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
 
 
 HEDGE_VERBS = {"think", "guess", "reckon", "believe", "suppose", "mean"}
+TOLD_TO_THE_LISTENER = (("wo", "not", "believe"), ("would", "not", "believe"), ("will", "not", "believe"),
+                        ("will", "never", "believe"), ("would", "never", "believe"), ("will", "never", "guess"),
+                        ("know", "what"), ("guessed", "it"), ("can", "imagine"), ("could", "imagine"))
 
 
 LEFT_AS_A_VERB_AFTER = {"never", "not", "had", "has", "have", "just", "finally", "eventually", "already", "then",
@@ -1455,6 +1461,15 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
         return [Unit(m.start, m.end, "actions", _left_as_a_verb(tokens, m.start), span)]
         # "the jogger never left the sidewalk": leave; "a lorry had been left on the hard shoulder": it stands
+    if m.category == "actions" and m.meaning == "lane_right" and [t.base for t in span] == ["pull", "over"] and \
+            nxt in ("on", "at", "in") and after[1:2] != ["front"]:
+        return [Unit(m.start, m.end, "actions", "stop", span)]  # "a semi pulled over on the right shoulder": where
+        # it stands ("pulled over into the right lane", "pulled over onto the shoulder": a move)
+    if m.category == "agents" and len(span) == 1 and span[0].base in ("plow", "plough") and not (
+            span[0].word in ("plow", "plough", "plows", "ploughs") and m.start > 0 and
+            tokens[m.start - 1].word in OWNERS | DEFINITE | {"a", "another", "other"}):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "with the plow": a snowplow; "ploughed into
+        # the back of me", "we plow the ramps first": a verb
     if m.category == "agents" and [t.word for t in span] == ["focus"] and nxt == "on" and not {
             t.word for t in tokens[m.end + 1:m.end + 4]} & {"left", "right", "side", "lane", "tail", "bumper"}:
         return [Unit(m.start, m.end, "word", "focus", span)]  # "the focus on the oncoming pair": no Ford
@@ -1516,6 +1531,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
+    if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["you"] and \
+            _says_any([t.word for t in tokens[m.end:m.end + 3]], TOLD_TO_THE_LISTENER):
+        return [Unit(m.start, m.end, "word", "you", span)]  # "You won't believe this, a guy on a motorcycle": the
+        # listener, addressed, not the one driving
     if m.category == "positions" and len(span) == 1 and span[0].word in ("backed", "backs", "backing") and \
             m.end < len(tokens) and tokens[m.end].word in ("off", "away"):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "it just backed off smooth": it eased off, no place
@@ -3204,6 +3223,10 @@ HABITUAL = frozenset({"often", "usually", "always", "sometimes", "regularly", "n
 HABITUAL_PHRASES = (("all", "the", "time"), ("every", "day"), ("every", "morning"), ("every", "evening"),
                     ("every", "time"), ("most", "days"), ("tend", "to"), ("around", "here"), ("round", "here"),
                     ("seem", "to"), ("these", "days"), ("in", "general"))  # "truckers around here seem to think"
+LOCALITIES = (("down", "here"), ("up", "here"), ("out", "here"), ("in", "this", "town"), ("in", "this", "city"),
+              ("in", "this", "country"), ("nowadays",))
+
+
 def _bare_plural(tokens: list[Token], u: Unit) -> bool:
     """A plural noun with no determiner, owner or count before it ('buses', 'kids'): a kind, not some of it."""
     t = u.tokens[0]
@@ -3222,7 +3245,12 @@ def _in_general(tokens: list[Token], u: Unit) -> bool:
     """'Buses often use this road', 'Taxis do that all the time': a bare plural in a sentence of what happens
     habitually speaks of a kind, not of anyone in the scene."""
     t = u.tokens[0]
-    if u.meaning == "ego" or not _bare_plural(tokens, u):
+    if u.meaning == "ego":
+        return False
+    if u.tokens[-1].word in ("drivers", "motorists") and t.index and tokens[t.index - 1].word in ("the", "these") \
+            and _says_any([x.word for x in tokens[t.index + 1:t.index + 4]], HABITUAL_PHRASES + LOCALITIES):
+        return True  # "you would not believe the drivers down here": the town's drivers, a kind
+    if not _bare_plural(tokens, u):
         return False
     if u.tokens[-1].word in ("drivers", "motorists"):
         return True  # "the head teacher's concern is drivers not slowing down": drivers in general
@@ -3396,9 +3424,8 @@ def _opening_vocative(before: list[Token], after: list[Token], u: Unit) -> bool:
     return bool(opening or closing)
 
 
-NAMED_BY_ROLE = (DRIVERS - {"kid", "person", "man", "woman", "lady", "someone", "somebody", "young man", "old man",
-                            "teenager", "teen", "lad"}) | {"officer", "cop", "policeman", "policewoman", "warden",
-                                                           "marshal", "copper", "trooper", "deputy", "constable"}
+NAMED_BY_ROLE = (DRIVERS - PLAIN_PEOPLE) | {"officer", "cop", "policeman", "policewoman", "warden", "marshal", "copper",
+                                           "trooper", "deputy", "constable"}
 # a driver, an officer, a mate: someone by role or a word for a driver, who does nothing and is nowhere in the
 # scene, is no one on foot in it ("that's why mate", "the officer didn't ticket anybody")
 SPOKEN_TAGS = {"why", "honest", "innit", "yeah", "though", "eh", "ta", "seriously", "mind", "swear", "promise"}
@@ -4411,10 +4438,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         definite = True  # "Broken-down HGV on the shoulder. Driver has got out": its driver, in note style
     if not words and count is None and not plural and not label and head + 1 < len(units) and \
             units[head + 1].category == "positions" and any(
-                e.head.split()[-1] == u.base.split()[-1] and not e.is_ego and e.count == 1 and
+                (e.head.split()[-1] == u.base.split()[-1] or e.type == kind and
+                 {e.head.split()[-1], u.base} <= {"car", "vehicle"}) and not e.is_ego and e.count == 1 and
                 units[head + 1].meaning in e.features and not (described and described not in {a[4] for a in e.actions})
                 for e in r.entities):
-        definite = True  # "Ego: follows HGV. Actors: HGV ahead in the ego lane": the HGV already placed there
+        definite = True  # "Ego: follows HGV. Actors: HGV ahead in the ego lane": the HGV already placed there;
+        # "Lead vehicle braked ... car in front slammed on": a car and a vehicle, one in that place
     if not words and count is None and not plural and not label and head + 1 < len(units) and \
             units[head + 1].category == "positions" and u.base not in GENERAL_BODIES and any(
                 u.base in e.aliases and not e.is_ego and e.count == 1 and not e.features & PLACE_FEATURES
@@ -4438,6 +4467,15 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
             count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
+    if words <= {"the", "my", "our"} and words and count is None and not plural and kind in V.EGO_TYPES and \
+            first >= 1 and units[first - 1].tokens[-1].base in HANDLING and len(units[first - 1].tokens) == 1 and \
+            (first == lo or first - 1 == lo or units[first - 2].category == "agents" and
+             units[first - 2].meaning == "ego" and units[first - 2].word in ("i", "we")) and \
+            any(t.word in ("i", "we", "me", "my") for t in r.tokens) and \
+            not (head + 1 < len(units) and units[head + 1].category in ("positions", "agents")):
+        ego = _ego_entity(r, stage)  # "Semi pulled over on the shoulder. I moved the truck over a lane": the
+        ego.type = kind if kind != "car" else ego.type  # speaker's own, though a truck was named before
+        return NounPhrase(ego, head, first)
     vehicle_left = None  # the vehicle a driver is said to get out of
     predicate = first > 0 and units[first - 1].word in COPULAS | {"be", "being", "been"}  # "whom I know to be the
     # driver of the HGV": says who the man is; he is not the HGV
@@ -6779,8 +6817,10 @@ def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) ->
     """A sentence opened by a verb in the third person ('Sits there honking') in a first-person account is not the
     speaker's: it goes on with the one the sentence before was about."""
     first_person = any(t.word in FIRST_PERSON for t in r.tokens)
-    return first_person and len(previous_subject) == 1 and not previous_subject[0].is_ego and \
-        verb.word.endswith("s") and not verb.word.endswith("ss") and verb.base != verb.word and \
+    done_to_me = verb.index + 1 < len(r.tokens) and r.tokens[verb.index + 1].word in ("me", "us") and \
+        verb.word.endswith("ed")  # "a guy on a motorcycle. Passed me on the left": the speaker is its object
+    return first_person and len(previous_subject) == 1 and not previous_subject[0].is_ego and (
+        verb.word.endswith("s") and not verb.word.endswith("ss") and verb.base != verb.word or done_to_me) and \
         not any(t.word.isalpha() for t in r.tokens[:verb.index] if t.sentence == verb.sentence)  # (after a time stamp)
 
 
@@ -7398,12 +7438,22 @@ def _one_vehicle(np: NounPhrase) -> bool:
     return e is not None and not e.is_ego and e.type in V.EGO_TYPES and not np.plural and e.count == 1
 
 
+MEETING_WITH = {"collide", "crash", "clash", "tangle", "meet", "level", "contact", "impact", "up", "along", "alongside",
+                "pace", "race", "neck", "merge", "share", "deal", "cope", "struggle", "compete"}
+# "collided with the truck", "drew level with the bus", "caught up with the van": another vehicle, met
+
+
 def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     """'I'm in the artic', 'coming through the village in the tipper', 'me leading in the DAF': in a first-person
-    account, the vehicle the speaker is in ('in the', 'in my') is the ego's own, unless it is placed or acts."""
-    if not _one_vehicle(np) or np.first < 2 or units[np.first - 1].word != "in" or \
-            units[np.first].word not in ("the", "my", "our"):
+    account, the vehicle the speaker is in ('in the', 'in my') is the ego's own, unless it is placed or acts; so is
+    the one a speaker works with ('waiting to make my left with the plow'), unless met with ('collided with')."""
+    if not _one_vehicle(np) or np.first < 2 or units[np.first].word not in ("the", "my", "our"):
         return False
+    if not (units[np.first - 1].word == "in" or units[np.first - 1].word == "with" and
+            units[np.first - 2].category != "agents" and units[np.first - 2].tokens[-1].base not in MEETING_WITH):
+        return False
+    if units[np.first - 2].category == "positions" and units[np.first - 2].tokens[-1].word in ("me", "us"):
+        return False  # "the eejit behind me in the white van": the van of one the speaker places
     sentence = units[np.first].tokens[0].sentence
     opening = [x for x in units[:np.first] if x.tokens[0].sentence == sentence]
     unsaid = bool(opening) and opening[0].category == "actions" and \
@@ -7442,16 +7492,26 @@ def _owned_by_the_teller(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
 ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", "sat", "driving"}
 
 
+HANDLING = {"move", "slow", "stop", "pull", "ease", "bring", "swing", "put", "park", "steer", "nose", "edge", "inch",
+            "reverse", "back", "turn", "drive"}  # what a driver does to the vehicle they drive
+
+
 def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     """'Drove the fire engine to a car fire on the ring road', 'First shout driving the fire engine: ...': in a
     first-person account, a vehicle driven by a verb with no subject of its own, or with the speaker as its subject
-    ('I drive the 22 bus'), is the speaker's."""
+    ('I drive the 22 bus', 'I moved the truck over', 'I had the truck stopped'), is the speaker's."""
     first = np.first - 2 if np.first >= 2 and units[np.first - 1].category in ("numbers", "number") and \
         units[np.first - 2].word in ("the", "my", "our") else np.first  # "the 22 bus": its route number
     if not _one_vehicle(np) or first < 1 or units[first].word not in ("the", "my", "our", "a", "an"):
         return False
     verb = units[first - 1]
-    if verb.category != "actions" or verb.tokens[0].base != "drive" or len(verb.tokens) != 1:
+    handled = verb.tokens[-1].base in HANDLING and units[first].word in ("the", "my", "our") and not (
+        np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "agents")) or \
+        verb.tokens[-1].word in ("had", "have", "got") and units[first].word in ("the", "my", "our") and \
+        np.index + 1 < len(units) and \
+        units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith("ed")
+    # "I moved the truck over a lane", "slowed the truck down", "I had the truck stopped at the yield sign"
+    if not handled and (verb.category != "actions" or verb.tokens[0].base != "drive") or len(verb.tokens) != 1:
         return False
     sentence = verb.tokens[0].sentence
     before = [u for u in units[:first - 1] if u.tokens[0].sentence == sentence]
