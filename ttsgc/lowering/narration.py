@@ -152,8 +152,9 @@ def _event_record(text: str, notes: list[str]) -> str:
         text = RECORD_VEHICLE_KEY.sub("Ego: ", text, count=1)
         if key.lower().startswith("subject"):
             text = THE_SUBJECT.sub("the ego", text)  # "(subject's right)", "ahead of the subject"
-        text = re.sub(r"\bEgo: (?:unit|veh|vehicle|no\.?|#)\s*#?\d*\s*(?:\(([^()]*)\))?",
-                      lambda m: f"Ego: {m.group(1) or ''}", text, count=1, flags=re.I)  # "Unit 212 (Ford Transit)": the van
+        text = re.sub(r"\bEgo: (?:(?:unit|veh|vehicle|no)\b\.?|#)\s*#?\d*\s*(?:\(([^()]*)\))?",
+                      lambda m: f"Ego: {m.group(1) or ''}", text, count=1, flags=re.I)
+        # "Unit 212 (Ford Transit)": the van
         text = re.sub(r"\bspd\.?\s*:?\s*(\d+)(?:\s*to\s*\d+)?", r"doing \1", text, flags=re.I)  # its own speed
         text = re.sub(r"\s*\|\s*", ". ", text)  # each field said apart
         notes.append("read the record's vehicle field as the ego")
