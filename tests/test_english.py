@@ -9415,3 +9415,48 @@ def test_the_listener_addressed_is_not_the_ego():
     said = agents("You won't believe this, a guy on a motorcycle in January. Passed me on the left doing 60 while I'm "
                   "salting the right lane in the truck.")
     assert sorted(said) == [("motorcycle", "go_straight", "back_left"), ("truck", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("Sitting at the bus stop on the corner waiting for the 43, I watched a woman in a little hatchback nearly get "
+     "hit. She was driving along the main road and a motorbike came flying out of the side road on her right.",
+     ("car", "go_straight", "ego")),
+    ("In broad daylight, mind you. I was across the street outside the pharmacy and watched a car turning right at "
+     "the corner nearly take out two kids on bicycles who were riding across in the crosswalk.",
+     ("car", "turn_right", "ego")),
+    ("From the bench outside the chemist's I watched a little red car come out of Church Street and turn left onto "
+     "the main road.", ("car", "turn_left", "ego"))])
+def test_a_teller_watching_from_the_roadside_is_no_agent(prompt, ego):
+    said = agents(prompt)
+    assert ego in said and not any(k[0] == "pedestrian" and k[1] != "cross_the_road" for k in said)
+
+
+def test_a_teller_on_a_scooter_halfway_over_a_zebra_is_on_foot():
+    said = agents("I was halfway over the zebra crossing outside the post office on my scooter when a silver car came "
+                  "straight at me and never slowed down.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_what_followed_the_vehicle_a_teller_met_follows_the_ego():
+    said = agents("I'd got a good way over the zebra on the Parade when a blue Nissan came straight through without "
+                  "stopping, and a taxi right behind it did the very same. My daughter wants me to give the scooter "
+                  "up but I won't.")
+    assert sorted(said) == [("car", "go_straight", "back"), ("car", "go_straight", "ego"),
+                            ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_place_named_for_people_names_none_and_a_teller_who_froze_stands():
+    said = agents("I was on the zebra by the infants' school when a police car came tearing down the hill, and I just "
+                  "froze in the middle.")
+    assert sorted(said) == [("pedestrian", "stop", "near_the_crosswalk"), ("police", "go_straight", "ego")]
+
+
+def test_a_teller_going_over_on_the_green_man_crosses_at_a_crossing():
+    said = agents("At the lights I was going over on the green man when a car turning right out of the High Street "
+                  "cut across right in front of me.")
+    assert ("car", "turn_right", "ego") in said and ("pedestrian", "cross_the_road", "near_the_crosswalk") in said
+
+
+def test_a_plurals_possessive_is_one_word():
+    assert [(t.word, t.possessive) for t in tokenize("the infants' school")] == [
+        ("the", False), ("infants", True), ("school", False)]

@@ -1348,7 +1348,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\bcross-roads?\b", "crossroads", text)  # the junction, not "cross road"
     text = re.sub(r"(?<=[a-z0-9])-(?=[a-z0-9])", " ", text)
     text = re.sub(r"\n\s*\n", " . ", text)
-    text = re.sub(r"s' ", "s 's ", text)
+    text = re.sub(r"s' ", "s's ", text)  # "the infants' school": a plural's possessive
     text = re.sub(r"(^|[.!?]\s+)(dude|man|bro|mate|guys|dude|lol|omg|ok|okay|well|yeah)\s*,\s*", r"\1", text)  # "dude, a cop..."
     text = EXCLAIMED_AGAIN.sub(r"\1\2", text)  # "a cyclist! a cyclist coming across ...": one cyclist, said twice
     text = re.sub(r"\bcouple\b(?! of)", "couple of people", text)  # "a couple were crossing": two people

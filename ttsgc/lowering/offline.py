@@ -1532,9 +1532,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["you"] and \
-            _says_any([t.word for t in tokens[m.end:m.end + 3]], TOLD_TO_THE_LISTENER):
-        return [Unit(m.start, m.end, "word", "you", span)]  # "You won't believe this, a guy on a motorcycle": the
-        # listener, addressed, not the one driving
+            (_says_any([t.word for t in tokens[m.end:m.end + 3]], TOLD_TO_THE_LISTENER) or
+             m.start > 0 and tokens[m.start - 1].word == "mind" and (
+                 m.end == len(tokens) or tokens[m.end].sentence != span[0].sentence or tokens[m.end].word == ",")):
+        return [Unit(m.start, m.end, "word", "you", span)]  # "You won't believe this, a guy on a motorcycle", "in
+        # broad daylight, mind you": the listener, addressed, not the one driving
     if m.category == "positions" and len(span) == 1 and span[0].word in ("backed", "backs", "backing") and \
             m.end < len(tokens) and tokens[m.end].word in ("off", "away"):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "it just backed off smooth": it eased off, no place
@@ -4328,6 +4330,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         return NounPhrase(None, head, first)  # "a school bus stopped ahead, picking kids up": its passengers;
         # "a woman carrying a child crossed": the child is held, on foot only through her ("drops off two kids in
         # front of the ego": counted, they are put in the scene)
+    if plural and u.tokens[-1].possessive and count is None and head + 1 < len(units) and \
+            units[head + 1].word in PEOPLES_PLACES:
+        return NounPhrase(None, head, first)  # "on the zebra by the infants' school": a place named for them
     if u.tokens[-1].word in ("people", "folks") and (count is None or "some" in words) and \
             not words - {"some", "the", "other"} and \
             not any(m.category == "actions" for m in units) and not _on_foot_in_the_scene(units, head):
@@ -7496,6 +7501,10 @@ HANDLING = {"move", "slow", "stop", "pull", "ease", "bring", "swing", "put", "pa
             "reverse", "back", "turn", "drive"}  # what a driver does to the vehicle they drive
 
 
+PEOPLES_PLACES = {"school", "hospital", "playground", "park", "centre", "center", "home", "ward", "nursery", "club",
+                  "library", "clinic", "academy", "college", "entrance", "gate", "gates", "section", "zone", "area"}
+
+
 def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     """'Drove the fire engine to a car fire on the ring road', 'First shout driving the fire engine: ...': in a
     first-person account, a vehicle driven by a verb with no subject of its own, or with the speaker as its subject
@@ -8575,7 +8584,11 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
 
 ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sidewalk", "footpath", "on foot",
            "a pedestrian", "jogging", "bus stop", "wheelchair", "chair", "to cross", "dropped curb", "at the curb",
-           "crossing the road", "crossing the street", "in the crosswalk", "rolling across", "wheeling across"}
+           "crossing the road", "crossing the street", "in the crosswalk", "rolling across", "wheeling across",
+           "bench", "was across the street", "was across the road", "on the porch", "on my porch", "in the garden",
+           "in my garden", "at the window", "at my window", "over the zebra", "on the zebra", "across the zebra",
+           "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal"}
+# (or watching from the roadside, or on the way over)
 # (a wheelchair user, waiting to cross or on the way over; not "I stopped for kids on the crossing")
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
                 "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked",
@@ -8622,14 +8635,20 @@ def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
                          if a[4] in ("lane_left", "lane_right") else a for a in e.actions]
 
 
-def _what_i_was(tokens: list[Token], k: int) -> set[str]:
-    """The words of 'I was standing at the bus stop', up to the next clause."""
+STILL_PARTICIPLES = {"sitting", "sat", "standing", "stood", "waiting", "walking"}
+
+
+def _what_i_was(tokens: list[Token], k: int, start: int | None = None) -> set[str]:
+    """The words of 'I was standing at the bus stop', up to the next clause (from `start`, for an opening
+    'Sitting at the bus stop, I ...')."""
     out: list[str] = []
-    for t in tokens[k + 1:k + 13]:
-        if t.sentence != tokens[k].sentence or t.word in ("when", "while", "and", "as", "but", ",", "saw", "then"):
+    start = k + 1 if start is None else start
+    for t in tokens[start:start + 12]:
+        if t.sentence != tokens[k].sentence or t.word in ("when", "while", "and", "as", "but", ",", "saw", "then",
+                                                         "for"):  # ("I stopped for a lady on the zebra": hers)
             break
         out.append(t.word)
-    pairs = {f"{a} {b}" for a, b in zip(out, out[1:])} | {f"{a} {b} {c}" for a, b, c in zip(out, out[1:], out[2:])}
+    pairs = {" ".join(out[i:i + n]) for n in (2, 3, 4) for i in range(len(out) - n + 1)}
     if {"chair", "wheelchair"} & set(out):
         pairs.discard("in my")  # "in my chair": on foot, not at a wheel
     return set(out) | pairs
@@ -8778,6 +8797,17 @@ def _speaker_on_the_road(r: _Reader) -> bool:
     return False
 
 
+def _placed_by_the_ego_now(r: _Reader, vehicle: Entity) -> None:
+    """What was placed by a vehicle that turns out to be the ego is placed by the ego ("an ambulance comes up
+    behind the coach": behind the ego)."""
+    for e in r.entities:
+        if e.relative_to is vehicle and e.relative_how:
+            e.relative_to = None
+            e.features.add(RELATIONS_TO_THE_EGO.get(e.relative_how, e.relative_how))
+            if e.relative_how in ("side_left", "side_right"):
+                e.features.add("bare_" + e.relative_how[5:])  # "to the bus's left": a side, no lane said
+
+
 def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
     """A text that names no ego, or names it only as the narrator's driver, tells its scene from one vehicle:
     the one the others are placed by ('a boy runs out in front of the car', 'on the car's left'), else the
@@ -8791,12 +8821,7 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
     if first.relative_to is not None:  # "a police car follows a red sedan": the sedan drives ahead of the ego
         first.relative_to.features |= {"ahead", "followed"} if first.relative_how == "follows" else {"behind"}
         first.relative_to = None
-    for e in r.entities:
-        if e.relative_to is first and e.relative_how:  # "an ambulance comes up behind the coach": behind the ego
-            e.relative_to = None
-            e.features.add(RELATIONS_TO_THE_EGO.get(e.relative_how, e.relative_how))
-            if e.relative_how in ("side_left", "side_right"):
-                e.features.add("bare_" + e.relative_how[5:])  # "to the bus's left": a side, no lane said
+    _placed_by_the_ego_now(r, first)
     if driver_named and supplied is not None:  # the driver is the ego, the vehicle theirs
         supplied.type = first.type
         supplied.actions += [a for a in first.actions if not any(b[0] == a[0] for b in supplied.actions)]
@@ -8940,29 +8965,42 @@ def _witness_on_foot(r: _Reader) -> None:
     """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
     and the vehicle the statement is about (the first that moves) is the ego."""
     ego = next((e for e in r.entities if e.is_ego), None)
-    if ego is None or ego.head not in FIRST_PERSON or ego.type != "car":
+    told_by_me = ego is not None and (ego.head in FIRST_PERSON or ego.head == "ego" and not any(
+        t.word == "ego" for t in r.tokens) and any(t.word in FIRST_PERSON for t in r.tokens))  # ("Sitting at the bus
+    # stop ..., I watched": the teller, first as a participle's subject)
+    on_a_scooter = ego is not None and ego.type == "motorcycle" and _says_any([t.word for t in r.tokens],
+                                                                             (("my", "scooter"),))
+    if not told_by_me or ego.type != "car" and not on_a_scooter:
         return  # ("I am a bus driver ... moving off from the bus stop": at the wheel of the bus)
-    said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")]
+    said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")] + \
+        [_what_i_was(r.tokens, k, k) for k, t in enumerate(r.tokens) if t.word in STILL_PARTICIPLES | {"from"} and
+         (k == 0 or r.tokens[k - 1].sentence != t.sentence)]  # "Sitting at the bus stop ..., I watched a car",
+    # "From the bench outside the chemist's I watched"
     words = set().union(*said) if said else set()
     if words & {"standing water", "standing traffic", "standing queue"}:
         words -= {"standing"}  # "I hit standing water": what stood, not the witness
     if words & {"stood still", "stand still", "standing still"}:
         words -= {"stood", "standing"}  # "a give-way sign for me, so I stood still": halted, on foot only if said
     patrol = _speaker_on_the_crossing(r.tokens, strong=bool(ego.actions))
-    if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL):
-        return
+    if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL) or on_a_scooter and not words & CROSSING_ON_FOOT:
+        return  # ("halfway over the zebra crossing on my scooter": a mobility scooter, on the way over)
     own = [t for t in r.tokens if t.word in ("i", "i'm", "me", "my", "us", "we")]
-    crossing = bool(words & CROSSING_ON_FOOT) and not patrol  # "I was halfway over the zebra in my chair"
+    far_side = words & {"was across the street", "was across the road"}  # on the other side, watching
+    crossing = bool(words & CROSSING_ON_FOOT) and not patrol and not far_side  # "I was halfway over the zebra in my
+    # chair"
     movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
               and any(a[4] not in ("stop", "try") or patrol or crossing for a in e.actions)]  # ("a van stops for
     if not movers:  # us": the one met at the crossing)
         return
     if crossing:
         subject = movers[0]  # "... when a silver hatchback pulled up and waited for me": the one met on the way over
-        at_a_crossing = bool(words & {"crosswalk", "zebra", "pelican", "puffin", "toucan", "the crossing"})
+        at_a_crossing = bool(words & {"crosswalk", "zebra", "pelican", "puffin", "toucan", "the crossing", "green man",
+                                      "walk signal"})
         ego.is_ego, ego.type, ego.road_type = False, "pedestrian", None
         ego.features = {"crosswalk"} if at_a_crossing else {"ahead"}
-        ego.actions = [(0, 2, ACTION_RANK["cross"], r.tick(), "cross", None)]
+        froze = any(a[4] == "stop" for a in ego.actions) and any(t.word in ("froze", "frozen") for t in r.tokens)
+        # "I was on the zebra ... and I just froze in the middle"
+        ego.actions = [(0, 2, ACTION_RANK["stop" if froze else "cross"], r.tick(), "stop" if froze else "cross", None)]
         _the_ego_now(r, subject)
         r.notes.append(f"inferred: the teller was crossing on foot; the '{subject.head}' that met them is the ego")
         return
@@ -8991,10 +9029,6 @@ def _witness_on_foot(r: _Reader) -> None:
         ego.features = {"on_sidewalk", side} | ({place} if place else set())
     else:  # "I was waiting at the bus stop ... a red hatchback turned left": an onlooker, in no one's way
         r.entities.remove(ego)
-    subject.relative_to = None
-    for e in r.entities:
-        if e.relative_to is subject:
-            e.relative_to = None  # "in front of the Ford": in front of the ego now
     _the_ego_now(r, subject)
     r.notes.append(f"inferred: the witness is on foot{'' if placed else ', placed by no one (no agent)'}; the "
                    f"'{subject.head}' the statement is about is the ego")
@@ -9258,7 +9292,12 @@ def _the_patients_vehicle(r: _Reader) -> None:
 
 def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
     """The vehicle an account on foot is about becomes the ego: first among the agents, placed by no one but its
-    compass heading."""
+    compass heading; what was placed by it is placed by the ego ("in front of the Ford": in front of the ego now)."""
+    vehicle.relative_to = None
+    _placed_by_the_ego_now(r, vehicle)
+    for e in [e for e in r.entities if e.head in ("scooter", "mobility scooter") and not e.actions and
+              not e.features and not e.is_ego and e.relative_to is None]:
+        r.entities.remove(e)  # "my daughter wants me to give the scooter up": the teller's own, on foot
     vehicle.is_ego = True
     vehicle.features = {f for f in vehicle.features if f.startswith("compass_")}
     r.entities.remove(vehicle)
@@ -9266,7 +9305,9 @@ def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
 
 
 CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheeling across", "in the crosswalk",
-                    "across the road", "across the street"}  # what a teller on foot was doing: on the way over
+                    "across the road", "across the street", "over the zebra", "on the zebra", "across the zebra",
+                    "green man", "walk signal"}
+# what a teller on foot was doing: on the way over
 PATROLLING = (("lollipop",), ("crossing", "with", "me"), ("over", "with", "me"), ("across", "with", "me"),
               ("my", "crossing"), ("my", "stick"))
 STOPPED_FOR_ME = (("stopped", "for", "me"), ("stops", "for", "me"), ("stopped", "for", "us"), ("stops", "for", "us"))
