@@ -9460,3 +9460,22 @@ def test_a_teller_going_over_on_the_green_man_crosses_at_a_crossing():
 def test_a_plurals_possessive_is_one_word():
     assert [(t.word, t.possessive) for t in tokenize("the infants' school")] == [
         ("the", False), ("infants", True), ("school", False)]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Police are appealing for witnesses after a van ran the red light in front of me.",
+    "Police say they are aware of the footage. A van ran the red light in front of me.",
+    "A van ran the red light in front of me. Police are urging drivers to slow down."])
+def test_police_who_speak_of_a_scene_are_not_in_it(prompt):
+    assert not any(k[0] == "police" for k in agents(prompt))
+
+
+def test_a_recovery_truck_on_its_way_is_not_in_the_scene():
+    said = agents("A stalled SUV is sitting in my lane ahead. Tow truck is on the way.")
+    assert not any(k[0] == "truck" for k in said) and ("car", "stop", "front") in said
+
+
+def test_he_after_a_vehicle_placed_by_him_is_the_one_placed_by():
+    said = agents("An ambulance came up behind him in the outside lane and he moved across into the left lane to let "
+                  "it through.")
+    assert ("car", "change_lane_to_left", "ego") in said and any(k[0] == "ambulance" for k in said)

@@ -3973,6 +3973,7 @@ DRIVER_CONTROLS = {"kept", "keep", "keeps", "held", "hold", "holds", "brought", 
 IMPACTS = {"hit", "hits", "crashed", "collided", "smashed", "struck", "rammed", "rear", "t", "clipped", "crash",
            "collision", "impact", "bumped", "slammed", "ploughed", "plowed", "totalled", "totaled", "wrecked"}
 RESPONDERS = {"ambulance", "police", "firetruck"}
+RECOVERY_VEHICLES = {"tow truck", "recovery truck", "recovery vehicle", "breakdown truck", "wrecker", "tow"}
 RESPONDING_PEOPLE = {"officer", "police officer", "policeman", "policewoman", "cop", "constable", "paramedic",
                      "firefighter", "fireman", "medic", "trooper", "deputy", "sheriff"}  # on foot, come to help
 UNREAL_IMPACT = {"not", "never", "avoid", "avoided", "without", "almost", "nearly", "could", "would", "might", "to",
@@ -3980,9 +3981,10 @@ UNREAL_IMPACT = {"not", "never", "avoid", "avoided", "without", "almost", "nearl
 
 
 def _help_placed_nowhere(e: Entity) -> bool:
-    """An emergency service said to do nothing but come, and placed nowhere: help that may have come to the scene
-    rather than be in it."""
-    return (e.type in RESPONDERS or e.type == "pedestrian" and e.head in RESPONDING_PEOPLE) and not e.is_ego and \
+    """An emergency service or a recovery truck said to do nothing but come, and placed nowhere: help that may have
+    come to the scene rather than be in it ('Tow truck is on the way')."""
+    return (e.type in RESPONDERS or e.type == "pedestrian" and e.head in RESPONDING_PEOPLE or
+            e.head in RECOVERY_VEHICLES) and not e.is_ego and \
         not e.label and e.said_at >= 0 and not e.features and all(a[4] in ("move", "reach") for a in e.actions)
 
 
@@ -4193,6 +4195,22 @@ def _tells(r: _Reader, e: Entity) -> bool:
         if e.said_at >= 0 else []
     return bool(after) and (after[0] in TELLING or after[0] in ("have", "has", "had") and after[1:2] and
                             after[1] in TELLING)
+
+
+APPEALING = TELLING | {"appeal", "appealing", "appealed", "urge", "urging", "urged", "want", "wants", "warn",
+                       "warning", "warned", "advise", "advising", "advised", "investigating", "investigate", "closed",
+                       "close", "closing", "aware", "asking", "believe", "believes"}
+AS_A_FORCE = {"police", "officers", "detectives", "the police"}  # the force, not a car of it
+
+
+def _police_as_a_source(r: _Reader, e: Entity) -> bool:
+    """'Police are appealing for witnesses', 'Leicestershire Police say they are aware', 'Police have closed Bank
+    Street': a news item's police, placed nowhere and doing nothing on the road, speak of the scene or act off it."""
+    if not _help_placed_nowhere(e) or e.type != "police" or e.head not in AS_A_FORCE:
+        return False
+    after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 3] if t.sentence == r.tokens[e.said_at].sentence]
+    after = after[1:] if after[:1] and after[0] in ("are", "is", "have", "has", "had", "were", "was") else after
+    return bool(after) and after[0] in APPEALING
 
 
 def _said_to_do_no_road_thing(r: _Reader, e: Entity) -> bool:
@@ -5874,7 +5892,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if pool:
                 phrases.append(NounPhrase(pool[0] if u.word == "former" else pool[-1], i, i))
         else:
-            target = _pronoun(units, i, phrases, r.surface or previous_subject, recent)
+            target = _ego_entity(r, stage) if _placed_by_the_same_pronoun(r, u) else \
+                _pronoun(units, i, phrases, r.surface or previous_subject, recent)
             if target is None and u.word == "it" and _a_group(r.surface or previous_subject):
                 target = _ego_entity(r, stage)  # "two trucks come the other way, so it has to wait": the ego
             if target is None and _a_drivers_verb_after(units, i) and any(e.type == "pedestrian" for e in recent):
@@ -7665,6 +7684,17 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
         # "in my mirror a police car": a place that ends in its own noun is complete, the noun after it the subject
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
                                                "towards", "toward", "for", "with", "besides", "from", "near")
+
+
+def _placed_by_the_same_pronoun(r: _Reader, u: Unit) -> bool:
+    """'an ambulance came up behind him in the outside lane and he moved across': in an account told of 'he', the
+    one a vehicle was just placed by ('behind him') is the one 'he' names again: the ego, not that vehicle."""
+    objects = {"he": "him", "she": "her"}
+    if u.word not in objects or any(t.word in FIRST_PERSON | {"we", "us", "ego"} for t in r.tokens):
+        return False
+    sentence = u.tokens[0].sentence
+    return any(x.category == "positions" and (x.tokens[-1].word == objects[u.word] or y.word == objects[u.word]) and
+               y.start < u.start and x.tokens[0].sentence == sentence for x, y in zip(r.units, r.units[1:]))
 
 
 def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
@@ -9726,6 +9756,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         elif e.count > 0 and _called_out(r, e):
             e.count = 0  # "EMS + PD dispatched 14:03": called to the scene, not in it
             r.notes.append(f"left out: '{e.head}' is only called out to the scene")
+        elif e.count > 0 and _police_as_a_source(r, e):
+            e.count = 0  # "Police are appealing for witnesses", "Leicestershire Police say": they speak of it
+            r.notes.append(f"left out: '{e.head}' speak of the scene, and are not on the road")
         if e.type == "pedestrian" and e.count > 0 and not e.label and _tells(r, e):
             e.count = 0  # "Several residents told us that turning right out of Quay Street feels unsafe"
             r.notes.append(f"left out: '{e.head}' tell of the place, and are not on the road")
