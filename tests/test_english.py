@@ -9479,3 +9479,27 @@ def test_he_after_a_vehicle_placed_by_him_is_the_one_placed_by():
     said = agents("An ambulance came up behind him in the outside lane and he moved across into the left lane to let "
                   "it through.")
     assert ("car", "change_lane_to_left", "ego") in said and any(k[0] == "ambulance" for k in said)
+
+
+def test_riding_the_scooter_with_no_subject_is_the_speakers():
+    said = agents("riding the lime scooter home down the high street last night, and some taxi sat right on my back "
+                  "wheel the whole way.")
+    assert sorted(said) == [("car", "go_straight", "back"), ("motorcycle", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "3 lane hwy, im in the middle, box truck in the right lane ahead of me merges into my lane. then i hit the "
+    "blinker and it moved me over to the left lane on its own",
+    "delivery truck double parked in my lane and OP just sat behind it. then i nudged the blinker and OP took me "
+    "around it into the left lane by itself"])
+def test_a_system_moving_the_speaker_moves_the_ego(prompt):
+    assert stages(prompt)[-1] == [("ego", "change_lane_to_left", None)]
+
+
+@pytest.mark.parametrize("prompt", [
+    "i was sitting at a stop sign waiting to turn left and 2 cars were coming from the opposite direction. once they "
+    "passed i took over and made the left",
+    "The ego waits at the stop line. Once the oncoming car passes the ego turns left."])
+def test_a_condition_ends_where_the_ego_speaks_again(prompt):
+    said = stages(prompt)
+    assert said[0][0] == ("ego", "stop", None) and said[1] == [("ego", "turn_left", None)]

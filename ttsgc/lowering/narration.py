@@ -207,7 +207,25 @@ def read_narration(prompt: str) -> Narration:
     text = _protagonist(text, notes)
     text = _party_at_the_wheel(text, notes)
     text = _storys_driver(text, notes)
+    text = _moved_by_the_system(text)
     return Narration(text, notes)
+
+
+SYSTEM_MOVES_ME = re.compile(
+    r"\b(it|op|openpilot|autopilot|fsd|the car|my car|the system|bluecruise|super ?cruise|pilot assist)\s+"
+    r"(moved|moves|took|takes|steered|steers|put|puts|nudged|nudges|swung|swings|eased|eases)\s+(?:me|us)\s+"
+    r"(?=(?:over|around|round|across|into|back|out|to the|onto)\b)", re.I)
+ON_ITS_OWN = {"moved": "moved", "moves": "moves", "took": "went", "takes": "goes", "steered": "steered",
+              "steers": "steers", "put": "moved", "puts": "moves", "nudged": "moved", "nudges": "moves",
+              "swung": "swung", "swings": "swings", "eased": "eased", "eases": "eases"}
+
+
+def _moved_by_the_system(text: str) -> str:
+    """'I hit the blinker and it moved me over to the left lane', 'OP took me around it into the left lane': a
+    driver-assist system moving the speaker moves the speaker's own car, the ego ('it' is the car, not the truck
+    named before)."""
+    return SYSTEM_MOVES_ME.sub(lambda m: f"{'my car' if m.group(1).lower() == 'it' else m.group(1)} "
+                                         f"{ON_ITS_OWN[m.group(2).lower()]} ", text)
 
 
 GHERKIN_STEP = re.compile(r"^[ \t]*(Given|When|Then|And|But|\*)[ \t]+(\S.*?)[ \t]*$")  # the keywords as written

@@ -2625,6 +2625,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()
         prev_word = units[k - 1].tokens[-1].word if k and not new_sentence else ""
         # (the word right before, in this sentence: "stopped at the crossing. Once ..." is no "at once")
+        if condition and current and current[-1].category == "actions" and u.category == "agents" and \
+                u.meaning == "ego" and (u.tokens[0].word in ("i", "we") or [t.word for t in u.tokens][-1:] == ["ego"]):
+            close()  # "once they passed i took over and made the left": the condition ends where its comma would
         if u.category == "sequence" and (prev_word == "even" or u.word == "next" and len(u.tokens) == 1 and
                                          prev_word in ("the", "a", "this") or
                                          u.word == "later" and prev_word in ("bit", "little", "or", "maybe")):
@@ -7533,7 +7536,8 @@ def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bo
     if not _one_vehicle(np) or first < 1 or units[first].word not in ("the", "my", "our", "a", "an"):
         return False
     verb = units[first - 1]
-    handled = verb.tokens[-1].base in HANDLING and units[first].word in ("the", "my", "our") and not (
+    handled = (verb.tokens[-1].base in HANDLING or verb.tokens[-1].base == "ride" and
+               np.entity.type in V.TWO_WHEELER_TYPES) and units[first].word in ("the", "my", "our") and not (
         np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "agents")) or \
         verb.tokens[-1].word in ("had", "have", "got") and units[first].word in ("the", "my", "our") and \
         np.index + 1 < len(units) and \
@@ -9101,10 +9105,7 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     ego.is_ego, ego.type = False, "cyclist"
     ego.features = (ego.features - own) | (own or {SEEN_THE_OTHER_WAY[f] for f in subject.features
                                                    if f in SEEN_THE_OTHER_WAY}) or ego.features | {"ahead"}
-    for e in r.entities:
-        if e.relative_to is subject:
-            e.relative_to = None  # "a taxi waiting behind him": behind the ego now
-    _the_ego_now(r, subject)
+    _the_ego_now(r, subject)  # ("a taxi waiting behind him": behind the ego now)
     r.notes.append(f"inferred: the teller rides a bicycle; the '{subject.head}' reported is the ego")
 
 
