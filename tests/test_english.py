@@ -9503,3 +9503,22 @@ def test_a_system_moving_the_speaker_moves_the_ego(prompt):
 def test_a_condition_ends_where_the_ego_speaks_again(prompt):
     said = stages(prompt)
     assert said[0][0] == ("ego", "stop", None) and said[1] == [("ego", "turn_left", None)]
+
+
+def test_a_list_heading_key_names_no_agent():
+    said = agents("Road layer: motorway, three lanes per direction. Traffic participants: the ego vehicle travels in "
+                  "the middle lane at constant speed; a passenger car drives in the left adjacent lane slightly ahead "
+                  "of the ego and performs a lane change into the ego lane.")
+    assert sorted(said) == [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+
+
+def test_a_named_street_joined_from_a_side_is_the_side_road():
+    said = agents("I proceeded through the junction with Hall Lane on a green light. A car came out of Hall Lane on my "
+                  "right and went straight through the red light at speed, directly in front of me.")
+    assert ("car", "go_straight", "road_of_right_turn") in said
+
+
+@pytest.mark.parametrize("prompt", ["Environment: light snowfall, dusk. A car stops ahead.",
+                                    "There was light traffic and a car stopped ahead."])
+def test_light_before_weather_or_traffic_is_how_much(prompt):
+    assert "traffic_light" not in road(prompt).required_signals

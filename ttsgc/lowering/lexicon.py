@@ -774,6 +774,8 @@ def _lines(text: str) -> str:
             out.append(value + ".")  # "Light: dusk, drizzle" is the weather, not a traffic light
         elif value.lower() in NOTHING:
             out.append(f"no {key}.")
+        elif lowered.split()[-1] in LIST_HEADINGS and value:
+            out.append(value + ".")  # "Traffic participants: the ego vehicle travels ...": what it lists, as said
         elif not value:
             continue
         elif _place_of_a_key(lowered) and _names_agent(value.split(", ")[0]):
@@ -829,7 +831,12 @@ def _names_agent(key: str) -> bool:
     name, words, entry = _key_words(key)
     if LABEL_KEY.fullmatch(name.lower()):
         return True
+    if words and words[-1] in LIST_HEADINGS:
+        return False  # "Traffic participants: the ego vehicle travels ...; a passenger car ...": a list's heading
     return bool(entry) and entry[0] == "agents" and entry[1] != "none" and len(words) <= 3
+
+
+LIST_HEADINGS = {"participants", "actors", "agents", "users", "objects", "entities", "vehicles", "others"}
 
 
 NAMED_BEFORE = {"the", "a", "an", "my", "our", "your", "their", "his", "her", "its", "both", "other", "another", "this",

@@ -191,7 +191,7 @@ def read_narration(prompt: str) -> Narration:
     text = _topic(text, notes)
     text = _street_corners(text)
     text = _ages(text)
-    text = _street_names(text)
+    text = _side_street_named(_street_names(text))
     text = _designated_ego(_designations_spelt_alike(text), notes)
     text = _designated_groups(text, notes)
     text = _bare_appositions(text)
@@ -797,6 +797,17 @@ def _street_corners(text: str) -> str:
 
 STREET_ABBREVIATION = re.compile(r"\b([A-Za-z]+) (?=(?:St|Ave|Rd|Blvd|Pkwy|Hwy)\b)", re.I)
 STREET_NAMED = re.compile(r"(?<=[a-z,] )([A-Z][a-z]+) (?=(?:Street|Avenue|Road|Boulevard|Parkway|Highway)\b)")
+
+
+SIDE_STREET_NAMED = re.compile(r"\b(out of|from) (?:[A-Z][a-z]+ ){1,3}(?:Lane|Road|Street|Avenue|Close|Drive|Way|Rd|St|"
+                               r"Ave|Crescent|Place|Grove|Terrace|Row|Gardens)\b(?= (?:on|to) (?:my|our|the ego's) "
+                               r"(?:right|left)\b)")
+
+
+def _side_street_named(text: str) -> str:
+    """'A Ford came out of Hall Lane on my right': a street named by the side it joins from is the side road on
+    that side, wherever else the vehicle is said to go ('directly in front of me')."""
+    return SIDE_STREET_NAMED.sub(r"\1 the side road", text)
 
 
 def _street_names(text: str) -> str:

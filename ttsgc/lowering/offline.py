@@ -1461,6 +1461,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "positions" and [t.word for t in span] == ["left"] and _left_as_a_verb(tokens, m.start):
         return [Unit(m.start, m.end, "actions", _left_as_a_verb(tokens, m.start), span)]
         # "the jogger never left the sidewalk": leave; "a lorry had been left on the hard shoulder": it stands
+    if m.category == "road" and [t.word for t in span] == ["light"] and nxt and (
+            (lexicon().phrases.get((nxt,)) or ("",))[0] == "weather" or nxt in ("traffic", "snowfall", "showers")):
+        return [Unit(m.start, m.end, "word", "light", span)]  # "light snowfall, dusk", "light traffic": how much
     if m.category == "actions" and m.meaning == "lane_right" and [t.base for t in span] == ["pull", "over"] and \
             nxt in ("on", "at", "in") and after[1:2] != ["front"]:
         return [Unit(m.start, m.end, "actions", "stop", span)]  # "a semi pulled over on the right shoulder": where
