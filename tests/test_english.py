@@ -9522,3 +9522,9 @@ def test_a_named_street_joined_from_a_side_is_the_side_road():
                                     "There was light traffic and a car stopped ahead."])
 def test_light_before_weather_or_traffic_is_how_much(prompt):
     assert "traffic_light" not in road(prompt).required_signals
+
+
+def test_a_capitalised_name_is_never_read_as_a_slip_of_a_known_word():
+    assert not any(k[0] == "truck" for k in agents("A white BMW cut in front of me on the M1 near Kegworth."))
+    assert [t.word for t in tokenize("a pedestrain crossed near Kegworth")] == [
+        "a", "pedestrian", "crossed", "near", "kegworth"]

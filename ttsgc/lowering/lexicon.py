@@ -1264,6 +1264,9 @@ def rule_before_its_scene(text: str) -> str:
     return text[m.end():]
 
 
+PROPER_NAME = re.compile(r"(?<=[a-z0-9,;] )([A-Z][a-z]{3,})\b")  # "near Kegworth": a place, not a Kenworth
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -1272,6 +1275,7 @@ def tokenize(text: str) -> list[Token]:
     text = _without_members_described(
         _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(_emoji_breaks(text)))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
+    names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _without_calques(text)
     text = AGENT_COMPOUND.sub(r"\1", text)  # "the ped-safety task", "a car-following model": no one on the road
@@ -1445,7 +1449,7 @@ def tokenize(text: str) -> list[Token]:
         for part in (lex.spelling.get(word) or (None if known else _run_together(lex, word)) or word).split():
             base, inflected = lex.base(part)
             misspelt = ""
-            if base not in lex.vocabulary and part.isalpha():
+            if base not in lex.vocabulary and part.isalpha() and part not in names:
                 guess = _corrected(lex, part)
                 if guess is not None:  # "pedestrain", "interesection", "turing": read as the word meant
                     misspelt, part = part, guess
