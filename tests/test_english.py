@@ -9528,3 +9528,9 @@ def test_a_capitalised_name_is_never_read_as_a_slip_of_a_known_word():
     assert not any(k[0] == "truck" for k in agents("A white BMW cut in front of me on the M1 near Kegworth."))
     assert [t.word for t in tokenize("a pedestrain crossed near Kegworth")] == [
         "a", "pedestrian", "crossed", "near", "kegworth"]
+
+
+def test_the_man_driving_a_truck_named_before_is_not_the_speaker():
+    said = agents("I was driving to work on Tuesday morning. A box truck came the other way. The man driving the truck "
+                  "braked hard.")
+    assert ("car", "go_straight", "ego") in said and not any(k[0] == "truck" and k[2] == "ego" for k in said)

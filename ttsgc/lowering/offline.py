@@ -4497,9 +4497,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
     if words <= {"the", "my", "our"} and words and count is None and not plural and kind in V.EGO_TYPES and \
-            first >= 1 and units[first - 1].tokens[-1].base in HANDLING and len(units[first - 1].tokens) == 1 and \
-            (first == lo or first - 1 == lo or units[first - 2].category == "agents" and
-             units[first - 2].meaning == "ego" and units[first - 2].word in ("i", "we")) and \
+            first >= 1 and units[first - 1].tokens[-1].base in HANDLING - {"drive"} and \
+            len(units[first - 1].tokens) == 1 and (_opens_its_sentence(r, units[first - 1]) or first >= 2 and
+                                                   units[first - 2].category == "agents" and
+                                                   units[first - 2].meaning == "ego" and
+                                                   units[first - 2].word in ("i", "we")) and \
             any(t.word in ("i", "we", "me", "my") for t in r.tokens) and \
             not (head + 1 < len(units) and units[head + 1].category in ("positions", "agents")):
         ego = _ego_entity(r, stage)  # "Semi pulled over on the shoulder. I moved the truck over a lane": the
@@ -7528,6 +7530,12 @@ HANDLING = {"move", "slow", "stop", "pull", "ease", "bring", "swing", "put", "pa
 
 PEOPLES_PLACES = {"school", "hospital", "playground", "park", "centre", "center", "home", "ward", "nursery", "club",
                   "library", "clinic", "academy", "college", "entrance", "gate", "gates", "section", "zone", "area"}
+
+
+def _opens_its_sentence(r: _Reader, u: Unit) -> bool:
+    """Whether the unit is the first word of its sentence ('Slowed the truck down'), with no subject before it."""
+    k = u.tokens[0].index
+    return k == 0 or r.tokens[k - 1].sentence != u.tokens[0].sentence
 
 
 def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
