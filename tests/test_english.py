@@ -9359,7 +9359,7 @@ def test_a_plain_person_in_a_vehicle_is_that_vehicle():
 def test_a_plain_person_who_crosses_is_kept_though_at_the_wheel_words_name_them():
     said = agents("I stopped to let an old gentleman with a stick cross, only for a young man on a motorbike to come "
                   "up behind me.")
-    assert ("pedestrian", "cross_the_road", "front") in said or any(k[0] == "pedestrian" for k in said)
+    assert any(k[0] == "pedestrian" for k in said)  # (a guard: plain people at the wheel are not dropped as roles)
 
 
 def test_the_drivers_of_a_town_are_a_kind():
@@ -9506,9 +9506,10 @@ def test_a_condition_ends_where_the_ego_speaks_again(prompt):
 
 
 def test_a_list_heading_key_names_no_agent():
-    said = agents("Road layer: motorway, three lanes per direction. Traffic participants: the ego vehicle travels in "
-                  "the middle lane at constant speed; a passenger car drives in the left adjacent lane slightly ahead "
-                  "of the ego and performs a lane change into the ego lane.")
+    said = agents("Functional scenario FS-HW-03, cut-in from the left. Road layer: motorway, three lanes per "
+                  "direction. Traffic participants: the ego vehicle travels in the middle lane at constant speed; a "
+                  "passenger car drives in the left adjacent lane slightly ahead of the ego and performs a lane "
+                  "change into the ego lane.")
     assert sorted(said) == [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
 
 
