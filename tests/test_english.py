@@ -9535,3 +9535,9 @@ def test_the_man_driving_a_truck_named_before_is_not_the_speaker():
     said = agents("I was driving to work on Tuesday morning. A box truck came the other way. The man driving the truck "
                   "braked hard.")
     assert ("car", "go_straight", "ego") in said and not any(k[0] == "truck" and k[2] == "ego" for k in said)
+
+
+def test_a_vehicle_coming_out_of_the_street_turned_into_is_at_the_destination():
+    said = agents("As I was turning right into Cedar Close from the main road, a white van came out of Cedar Close "
+                  "at speed.")
+    assert ("car", "turn_right", "ego") in said and any(k[0] == "car" and k[2] == "at_the_destination" for k in said)

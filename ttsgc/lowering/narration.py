@@ -818,7 +818,11 @@ def _street_names(text: str) -> str:
         entry = lexicon().phrases.get((m.group(1).lower(),))
         return "" if entry is not None and entry[0] in ("actions", "positions", "road", "behaviours", "weather") \
             else m.group(0)
+    text = STREET_SUFFIX_VERB.sub(r"\1 Road", text)  # "Cedar Close", "Ocean Drive": a street, not closing in
     return STREET_NAMED.sub(name, STREET_ABBREVIATION.sub(name, text))
+
+
+STREET_SUFFIX_VERB = re.compile(r"(?<=[a-z,] )([A-Z][a-z]+) (?:Close|Drive)\b")
 
 
 def _abbreviated_bodies(text: str) -> str:

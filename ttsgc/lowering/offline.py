@@ -1054,7 +1054,9 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
             k = end + 1
             until = sentence + 1
             continue
-        if name and u.category == "word" and u.word in ("on", "in", "along", "down", "up") and k + 1 < len(units):
+        if name and u.category == "word" and (u.word in ("on", "in", "along", "down", "up", "from") or u.word == "of"
+                                              and k and units[k - 1].tokens[-1].word == "out") and k + 1 < len(units):
+            # ("turning right into Cedar Close ... a van came out of Cedar Close": from where the ego heads)
             first = k + 1 + (units[k + 1].word == "the")
             span = list(itertools.takewhile(lambda x: x.tokens[0].sentence == sentence, units[first:first + 4]))
             words = [t.word for x in span for t in x.tokens]
