@@ -9541,3 +9541,9 @@ def test_a_vehicle_coming_out_of_the_street_turned_into_is_at_the_destination():
     said = agents("As I was turning right into Cedar Close from the main road, a white van came out of Cedar Close "
                   "at speed.")
     assert ("car", "turn_right", "ego") in said and any(k[0] == "car" and k[2] == "at_the_destination" for k in said)
+
+
+def test_a_teller_holding_traffic_at_a_works_board_is_on_foot_and_no_agent():
+    said = agents("Evening shift, sun low. The number 7 bus was stopped at my board at the front of the queue with two "
+                  "cyclists waiting behind it. When I spun it to GO the bus pulled off and both cyclists followed it.")
+    assert any(k[0] == "bus" and k[2] == "ego" for k in said) and not any(k[0] == "pedestrian" for k in said)

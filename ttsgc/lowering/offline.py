@@ -9008,6 +9008,12 @@ def _the_learner_at_the_wheel(r: _Reader) -> None:
         r.notes.append(f"read the {e.head} who drives as the ego")
 
 
+TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), ("stop", "slow", "bat"),
+                   ("my", "stop", "go"), ("flagging",), ("my", "end"), ("to", "my", "red"), ("at", "my", "red"),
+                   ("spun", "the", "board"), ("spun", "it", "to"), ("waved", "through"))
+# a road-works operative's words for holding and releasing traffic: the teller is on foot at the roadside
+
+
 def _witness_on_foot(r: _Reader) -> None:
     """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
     and the vehicle the statement is about (the first that moves) is the ego."""
@@ -9029,6 +9035,10 @@ def _witness_on_foot(r: _Reader) -> None:
     if words & {"stood still", "stand still", "standing still"}:
         words -= {"stood", "standing"}  # "a give-way sign for me, so I stood still": halted, on foot only if said
     patrol = _speaker_on_the_crossing(r.tokens, strong=bool(ego.actions))
+    controlling = not words & {"driving", "drove", "my car", "my van", "my vehicle", "in my"} and \
+        _says_any([t.word for t in r.tokens], TRAFFIC_CONTROL)
+    if controlling:  # "The number 7 bus was stopped at my board ... When I spun it to GO the bus pulled off"
+        words = (words - AT_THE_WHEEL) | {"standing"}
     if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL) or on_a_scooter and not words & CROSSING_ON_FOOT:
         return  # ("halfway over the zebra crossing on my scooter": a mobility scooter, on the way over)
     own = [t for t in r.tokens if t.word in ("i", "i'm", "me", "my", "us", "we")]
@@ -9036,7 +9046,8 @@ def _witness_on_foot(r: _Reader) -> None:
     crossing = bool(words & CROSSING_ON_FOOT) and not patrol and not far_side  # "I was halfway over the zebra in my
     # chair"
     movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
-              and any(a[4] not in ("stop", "try") or patrol or crossing for a in e.actions)]  # ("a van stops for
+              and any(a[4] not in ("stop", "try") or patrol or crossing or controlling for a in e.actions)]
+    # (those held at a works board are the scene as much as those that go; "a van stops for
     if not movers:  # us": the one met at the crossing)
         return
     if crossing:
@@ -9069,8 +9080,9 @@ def _witness_on_foot(r: _Reader) -> None:
     side = "side_right" if "right" in first_sentence else "side_left"
     place = "ahead" if "ahead" in first_sentence else "behind" if "behind" in first_sentence else None
     words = [t.word for t in r.tokens]
-    placed = place is not None or any(words[k + 1:k + 2] == ["me"] and w in ("towards", "toward", "past", "beside")
-                                      or words[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(words))
+    placed = not controlling and (place is not None or any(
+        words[k + 1:k + 2] == ["me"] and w in ("towards", "toward", "past", "beside") or
+        words[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(words)))  # (one at a works board: no one)
     if placed:
         ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
         ego.features = {"on_sidewalk", side} | ({place} if place else set())
