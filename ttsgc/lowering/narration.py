@@ -797,6 +797,7 @@ def _street_corners(text: str) -> str:
 
 STREET_ABBREVIATION = re.compile(r"\b([A-Za-z]+) (?=(?:St|Ave|Rd|Blvd|Pkwy|Hwy)\b)", re.I)
 STREET_NAMED = re.compile(r"(?<=[a-z,] )([A-Z][a-z]+) (?=(?:Street|Avenue|Road|Boulevard|Parkway|Highway)\b)")
+STREET_SUFFIX_VERB = re.compile(r"(?<=[a-z,] )([A-Z][a-z]+) (?:Close|Drive)\b")
 
 
 SIDE_STREET_NAMED = re.compile(r"\b(out of|from) (?:[A-Z][a-z]+ ){1,3}(?:Lane|Road|Street|Avenue|Close|Drive|Way|Rd|St|"
@@ -820,9 +821,6 @@ def _street_names(text: str) -> str:
             else m.group(0)
     text = STREET_SUFFIX_VERB.sub(r"\1 Road", text)  # "Cedar Close", "Ocean Drive": a street, not closing in
     return STREET_NAMED.sub(name, STREET_ABBREVIATION.sub(name, text))
-
-
-STREET_SUFFIX_VERB = re.compile(r"(?<=[a-z,] )([A-Z][a-z]+) (?:Close|Drive)\b")
 
 
 def _abbreviated_bodies(text: str) -> str:

@@ -8635,8 +8635,8 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
            "bench", "was across the street", "was across the road", "on the porch", "on my porch", "in the garden",
            "in my garden", "at the window", "at my window", "over the zebra", "on the zebra", "across the zebra",
            "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal"}
-# (or watching from the roadside, or on the way over)
-# (a wheelchair user, waiting to cross or on the way over; not "I stopped for kids on the crossing")
+# (a wheelchair user, waiting to cross or on the way over; one watching from a bench, a porch or across the street;
+# not "I stopped for kids on the crossing")
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
                 "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked",
                 "right lane", "left lane", "middle lane", "inside lane", "outside lane", "fast lane", "slow lane",
