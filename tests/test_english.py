@@ -9547,3 +9547,9 @@ def test_a_teller_holding_traffic_at_a_works_board_is_on_foot_and_no_agent():
     said = agents("Evening shift, sun low. The number 7 bus was stopped at my board at the front of the queue with two "
                   "cyclists waiting behind it. When I spun it to GO the bus pulled off and both cyclists followed it.")
     assert any(k[0] == "bus" and k[2] == "ego" for k in said) and not any(k[0] == "pedestrian" for k in said)
+
+
+def test_and_before_a_pronoun_with_its_verb_opens_a_clause():
+    said = agents("An ambulance came up behind him in the outside lane and he moved across into the left lane to let "
+                  "it through.")
+    assert sorted(said) == [("ambulance", "go_straight", "back_right"), ("car", "change_lane_to_left", "ego")]

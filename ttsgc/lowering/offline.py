@@ -2787,8 +2787,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             current.append(u)  # "no option but to stop": one idiom, the verb is the one left without a choice's
             continue
         if u.category == "word" and u.word in CLAUSE_WORDS:
-            if u.word in ("and", "or") and (not _has_verb(current) and not _new_subject_after_copula(
-                    current, units, k) and not _holds_the_green(current) or _listed_before_then(current, units, k)):
+            pronoun_acts = nxt is not None and nxt.word in ("he", "she", "they", "i", "we") and \
+                k + 2 < len(units) and units[k + 2].category == "actions"  # "an ambulance came up behind him and he
+            # moved across": a new subject with its verb, though the place before swallowed the first verb
+            joined = not _has_verb(current) and not _new_subject_after_copula(current, units, k) and \
+                not _holds_the_green(current) and not pronoun_acts
+            if u.word in ("and", "or") and (joined or _listed_before_then(current, units, k)):
                 current.append(u)
                 continue
             if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
