@@ -4503,12 +4503,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
     if words <= {"the", "my", "our"} and words and count is None and not plural and kind in V.EGO_TYPES and \
-            first >= 1 and units[first - 1].tokens[-1].base in HANDLING - {"drive"} and \
-            len(units[first - 1].tokens) == 1 and (_opens_its_sentence(r, units[first - 1]) or first >= 2 and
-                                                   units[first - 2].category == "agents" and
-                                                   units[first - 2].meaning == "ego" and
-                                                   units[first - 2].word in ("i", "we")) and \
-            any(t.word in ("i", "we", "me", "my") for t in r.tokens) and \
+            _handled_by_the_speaker(r, units, first) and \
             not (head + 1 < len(units) and units[head + 1].category in ("positions", "agents")):
         ego = _ego_entity(r, stage)  # "Semi pulled over on the shoulder. I moved the truck over a lane": the
         ego.type = kind if kind != "car" else ego.type  # speaker's own, though a truck was named before
@@ -7538,10 +7533,21 @@ PEOPLES_PLACES = {"school", "hospital", "playground", "park", "centre", "center"
                   "library", "clinic", "academy", "college", "entrance", "gate", "gates", "section", "zone", "area"}
 
 
-def _opens_its_sentence(r: _Reader, u: Unit) -> bool:
-    """Whether the unit is the first word of its sentence ('Slowed the truck down'), with no subject before it."""
-    k = u.tokens[0].index
-    return k == 0 or r.tokens[k - 1].sentence != u.tokens[0].sentence
+def _handled_by_the_speaker(r: _Reader, units: list[Unit], first: int) -> bool:
+    """'Slowed the truck down', 'I moved the truck over': a one-word verb of handling a vehicle (not driving it),
+    opening its sentence or said by 'I' or 'we', in a first-person account."""
+    if first < 1 or units[first - 1].tokens[-1].base not in HANDLING - {"drive"} or len(units[first - 1].tokens) != 1:
+        return False
+    said_by_me = first >= 2 and units[first - 2].category == "agents" and units[first - 2].meaning == "ego" and \
+        units[first - 2].word in ("i", "we")
+    return (_opens_its_sentence(r.tokens, units[first - 1].tokens[0]) or said_by_me) and \
+        any(t.word in ("i", "we", "me", "my") for t in r.tokens)
+
+
+def _opens_its_sentence(tokens: list[Token], t: Token) -> bool:
+    """Whether the token is the first word of its sentence ('Slowed the truck down', 'Filtering past a queue'), with
+    no subject before it."""
+    return t.index == 0 or tokens[t.index - 1].sentence != t.sentence
 
 
 def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
@@ -9031,7 +9037,7 @@ def _witness_on_foot(r: _Reader) -> None:
         return  # ("I am a bus driver ... moving off from the bus stop": at the wheel of the bus)
     said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")] + \
         [_what_i_was(r.tokens, k, k) for k, t in enumerate(r.tokens) if t.word in STILL_PARTICIPLES | {"from"} and
-         (k == 0 or r.tokens[k - 1].sentence != t.sentence)]  # "Sitting at the bus stop ..., I watched a car",
+         _opens_its_sentence(r.tokens, t)]  # "Sitting at the bus stop ..., I watched a car",
     # "From the bench outside the chemist's I watched"
     words = set().union(*said) if said else set()
     if words & {"standing water", "standing traffic", "standing queue"}:
@@ -9293,7 +9299,7 @@ def _a_riders_ego(r: _Reader) -> None:
         {"in", "on", "with", "as"} | DETERMINERS | OWNERS)) and (
         words[k - 1:k] and words[k - 1] in said_of_the_ego or words[max(0, k - 2):k] in (
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
-        w in FILTERING and (k == 0 or r.tokens[k - 1].sentence != r.tokens[k].sentence))  # "Filtering past a queue"
+        w in FILTERING and _opens_its_sentence(r.tokens, r.tokens[k]))  # "Filtering past a queue"
         for k, w in enumerate(words))
     hailed = bool(set(words) & RIDE_HAILING)  # "The rider hit his knee on the seat": the passenger of a ride hailed
     the_rider = _supplied(r, ego) and not hailed and any(
