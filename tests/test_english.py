@@ -9553,3 +9553,28 @@ def test_and_before_a_pronoun_with_its_verb_opens_a_clause():
     said = agents("An ambulance came up behind him in the outside lane and he moved across into the left lane to let "
                   "it through.")
     assert sorted(said) == [("ambulance", "go_straight", "back_right"), ("car", "change_lane_to_left", "ego")]
+
+
+def test_the_car_of_a_driver_read_as_the_ego_is_the_ego():
+    said = agents("A driver had to stop when a man walked out across the road in front of her car.")
+    assert sorted(said) == [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_an_inverted_subject_after_a_whole_place_takes_its_verb_and_place():
+    said = agents("The ego drives on a country road. At the same time comes in the opposite direction a bus.")
+    assert sorted(said) == [("bus", "go_straight", "front_left"), ("car", "go_straight", "ego")]
+    said = agents("The ego drives on the left lane. In front of the ego stand already two cars.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]
+    said = agents("The ego drives. Then comes to a stop behind a truck.")  # 'behind' takes the truck: no inversion
+    assert ("car", "stop", "ego") in said and any(k[0] == "truck" and k[2] == "front" for k in said)
+
+
+def test_a_junctions_arms_named_as_approaches():
+    said = agents("A pickup on the right approach turns left across the intersection; the ego waits at its stop line.")
+    assert sorted(said) == [("car", "stop", "ego"), ("car", "turn_left", "road_of_right_turn")]
+
+
+def test_coming_towards_the_ego_on_the_road_it_turned_into_is_at_the_destination():
+    said = agents("The ego turns left. On the street where I turned in, two kids on bikes came towards me.")
+    assert sorted(said) == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "at_the_destination"),
+                            ("cyclist", "go_straight", "at_the_destination")]

@@ -30,7 +30,7 @@ from functools import lru_cache
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
-from ttsgc.lowering.narration import read_narration
+from ttsgc.lowering.narration import OTHER_PEOPLE, read_narration
 from ttsgc.lowering.lexicon import (SIGNAL_COLOURS, TOO_LARGE, Match, Token, _lookup, _names_agent, bodies, categories,
                                     compound_heads, crews, lexicon, loose_names, matches, read_number,
                                     rule_before_its_scene, tokenize, typologies)
@@ -6353,10 +6353,19 @@ def _inverted_subject(units: list[Unit], phrases: list[NounPhrase], verb: int) -
         return None
     if v.tokens[0].word == v.tokens[0].base and not (after.plural or after.entity.count > 1):
         return None  # an order ("behind the truck, follow a car"); but "in the opposite direction come two cars"
-    if any(u.category not in ("behaviours", "word") or u.word not in lexicon().function_words | {"also"}
-           and u.category != "behaviours" for u in units[verb + 1:after.first]):
+    if any(not _a_whole_place(u) and (u.category not in ("behaviours", "word") or u.word not in
+                                      lexicon().function_words | {"also", "already"} and u.category != "behaviours")
+           for u in units[verb + 1:after.first]):
         return None
     return after
+
+
+def _a_whole_place(u: Unit) -> bool:
+    """'in the opposite direction', 'from the left' between an inverted verb and its subject ('comes in the opposite
+    direction a bus'): a place complete in itself; not 'behind', 'in front of', which take the next noun as theirs
+    ('comes to a stop behind a truck')."""
+    return u.category == "positions" and u.tokens[-1].word not in PLACE_PREPOSITIONS | {"of", "to", "by", "with",
+                                                                                          "near", "towards", "toward"}
 
 
 TIME_ADVERBS = {"then", "suddenly", "also", "now", "there", "here", "again", "just", "next"}
@@ -6374,8 +6383,8 @@ def _inverted_at_the_start(units: list[Unit], phrases: list[NounPhrase], verb: i
     after = next((np for np in phrases if np.index > verb), None)
     if after is None or not after.introduced or after.entity is None or after.entity.is_ego:
         return None
-    if any(not (u.category in ("behaviours", "numbers", "number") or u.word in ARTICLES_AND_COUNTS)
-           for u in units[verb + 1:after.first]):
+    if any(not (u.category in ("behaviours", "numbers", "number") or u.word in ARTICLES_AND_COUNTS or
+                _a_whole_place(u)) for u in units[verb + 1:after.first]):
         return None
     return after
 
@@ -8223,8 +8232,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "across_path" in f and (action or "").startswith("turn") and not f & {
             "road_left", "road_right", "from_left", "from_right", "side_left", "side_right", "cross_road"}:
         f.add("road_straight")  # "turned left across our path": the oncoming turner
-    if "toward" in f and not lane_move and not (side and f"bare_{side}" not in f):
-        f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no
+    if "toward" in f and not lane_move and not (side and f"bare_{side}" not in f) and "destination" not in f:
+        f.add("road_straight")  # "comes towards the ego": oncoming; "drifts towards the ego" from a lane: no; on
+        # the road the ego turns into ("on the street where I turned in, two kids came towards me"): there
     if "far_side" in f and junction and not person and not lane_move:
         f -= {"side_left", "from_lane", "bare_left"}  # "from the far side" of a junction: across it
         f.add("destination" if (action == "stop" or action == "block" and "parked" in f) and "from_lane" not in
@@ -8552,6 +8562,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     elif _EGO_SPEAKS.get() and not _speaker_on_the_road(r):
         _protagonist_vehicle(r, driver_named=False)  # "I watch drivers speed past the school ... a car speeding
         # past, and a boy running out in front of it": an onlooker speaks; the scene is told from the car
+    _the_drivers_own_vehicle(r)
     _the_ego_said_again(r)
     _the_speakers_vehicle_by_a_part(r)
     _the_learner_at_the_wheel(r)
@@ -8941,6 +8952,30 @@ def _drivers_of_their_own(r: _Reader) -> None:
         owned.behavior = owned.behavior or e.behavior
         _taken_over(r, e, owned)
         r.notes.append(f"read the {e.head} who drives the {owned.head} as its driver")
+
+
+def _the_drivers_own_vehicle(r: _Reader) -> None:
+    """'a driver had to stop when a man walked out in front of her car': the ego read from a person at the wheel
+    drives the vehicle that is 'hers' (his, theirs) wherever it is named after, unless someone else of that
+    pronoun was named before it ('a man walked out in front of his car': the man's)."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or ego.head not in DRIVERS:
+        return
+    for v in list(r.entities):
+        if v.is_ego or v.type in V.VULNERABLE_TYPES or v.count != 1 or v.actions or v.said_at < 1 or \
+                v.relative_to is not None or v.features & {"ahead", "behind", "side_left", "side_right", "toward"}:
+            continue
+        owner = r.tokens[v.said_at - 1].word if r.tokens[v.said_at - 1].word in ("his", "her", "their") else \
+            r.tokens[v.said_at - 2].word if v.said_at > 1 else ""
+        if owner not in ("his", "her", "their"):
+            continue
+        others = re.compile(rf"\b(?:{OTHER_PEOPLE['he' if owner == 'his' else 'she']})s?\b") if owner != "their" \
+            else None
+        if others and any(others.fullmatch(e.head.split()[-1]) for e in r.entities
+                          if not e.is_ego and e.said_at < v.said_at and e.type in V.VULNERABLE_TYPES):
+            continue
+        _taken_over(r, v, ego)
+        r.notes.append(f"read the {v.head} as the {ego.head}'s own: the ego")
 
 
 def _taken_over(r: _Reader, gone: Entity, into: Entity) -> None:
