@@ -9578,3 +9578,12 @@ def test_coming_towards_the_ego_on_the_road_it_turned_into_is_at_the_destination
     said = agents("The ego turns left. On the street where I turned in, two kids on bikes came towards me.")
     assert sorted(said) == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "at_the_destination"),
                             ("cyclist", "go_straight", "at_the_destination")]
+
+
+def test_an_unknown_word_after_a_paint_colour_that_drives_is_a_car():
+    assert sorted(agents("A silver Zafira pulled out in front of me.")) == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+    assert sorted(agents("A red Kuga overtook me on the right.")) == [
+        ("car", "go_straight", "back_right"), ("car", "go_straight", "ego")]
+    said = agents("I was driving down Elm Street. A guy in a black hoodie stepped off the curb in front of me.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]  # his clothes

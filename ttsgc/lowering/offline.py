@@ -498,7 +498,8 @@ LANE_PLACES = {"side_left", "side_right", "lane_said", "ego_lane", "into_ego_lan
 
 def _unknown_makes(tokens: list[Token], units: list[Unit]) -> list[Unit]:
     """'A Commodore in the left lane dives across', 'the Hilux cut in': a word the lexicon does not know, after an
-    article and right before a lane or a driver's manoeuvre, is a vehicle's make or model: a car."""
+    article and right before a lane or a driver's manoeuvre, is a vehicle's make or model: a car. After a paint
+    colour ('a silver Zafira pulled out', 'Black Fortuner from left lane cut in') any doing or place will do."""
     lex = lexicon()
     out = list(units)
     for k in range(1, len(units) - 1):
@@ -506,15 +507,24 @@ def _unknown_makes(tokens: list[Token], units: list[Unit]) -> list[Unit]:
         t = u.tokens[0]
         if u.category != "word" or len(u.tokens) != 1 or not t.word.isalpha() or len(t.word) < 4 or t.misspelt or \
                 t.label or t.word in lex.vocabulary or t.base in lex.vocabulary or t.word in ORDINAL_MEMBERS or \
-                t.word in ORDINAL_NUMBERS or \
-                before.word not in ("a", "an", "the", "this") or before.tokens[-1].sentence != t.sentence:
+                t.word in ORDINAL_NUMBERS or before.tokens[-1].sentence != t.sentence:
+            continue
+        painted = before.word in PAINT and (k == 1 or units[k - 2].word in ("a", "an", "the", "this", "his", "her",
+                                                                            "their", "one", "some") and not (
+            k > 2 and units[k - 3].word in ("in", "wearing", "with")) or units[k - 2].tokens[-1].sentence != t.sentence)
+        # (not "a guy in a black hoodie": what he wears)
+        if before.word not in ("a", "an", "the", "this") and not painted:
             continue
         verb = nxt.tokens[0]
         if nxt.category == "positions" and nxt.meaning in LANE_PLACES and verb.word == "in" or \
                 nxt.category == "actions" and nxt.meaning in VEHICLE_ONLY_ACTIONS and (
-                    verb.word != verb.base or verb.word.endswith(("s", "ed", "ing"))):
+                    verb.word != verb.base or verb.word.endswith(("s", "ed", "ing"))) or \
+                painted and (nxt.category == "actions" and nxt.meaning in VEHICLE_ONLY_ACTIONS | {"move", "stop"} and
+                             verb.word != verb.base or
+                             nxt.category == "positions" and nxt.meaning in LANE_PLACES | {"side_left", "side_right"}):
             out[k] = Unit(u.start, u.end, "agents", "car", u.tokens)  # (not "an evasive lane change")
     return out
+
 
 
 STREET_SUFFIXES = {"road", "street", "avenue", "drive", "way", "close", "crescent", "terrace", "place", "gardens",
@@ -1168,6 +1178,8 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
 LANE_EDGES = {"kerb", "curb", "verge", "gutter", "centre", "center", "edge", "line", "lines", "kerbside", "curbside"}
 COLOURS = {"blue", "green", "grey", "gray", "red", "brown", "purple", "coloured", "colored", "metallic", "silver",
            "orange", "yellow", "pink"}
+PAINT = COLOURS | {"black", "white", "dark", "maroon", "beige", "gold", "navy", "bronze", "burgundy", "cream"}  # a
+# vehicle's paint ("a silver Zafira")
 SCENE_NOUNS = {"scene", "scenario", "situation", "case", "simulation", "setup", "test", "one", "example", "sim",
                "level", "map", "run"}
 
