@@ -9587,3 +9587,24 @@ def test_an_unknown_word_after_a_paint_colour_that_drives_is_a_car():
         ("car", "go_straight", "back_right"), ("car", "go_straight", "ego")]
     said = agents("I was driving down Elm Street. A guy in a black hoodie stepped off the curb in front of me.")
     assert sorted(said) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]  # his clothes
+
+
+def test_a_passenger_who_gets_off_and_crosses_is_a_pedestrian():
+    said = agents("The ego waits behind a bus at the stop, and a passenger who has just got off walks across the road "
+                  "in front of the bus.")
+    assert sorted(said) == [("bus", "stop", "front"), ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]
+    said = agents("You're following a bus. It stops at a bus stop and one of the passengers getting off walks straight "
+                  "out in front of it to cross the road.")
+    assert ("pedestrian", "cross_the_road", "front") in said and ("bus", "stop", "front") in said
+    assert not any(k[0] == "pedestrian" for k in agents("A bus full of passengers stopped ahead of the ego."))
+
+
+def test_a_new_subject_that_is_no_agent_takes_no_verb_from_the_one_before():
+    assert sorted(agents("A bus stops ahead and a dog runs out.")) == [("bus", "stop", "front"),
+                                                                        ("car", "go_straight", "ego")]
+
+
+def test_a_driver_standing_by_the_vehicle_is_on_foot():
+    said = agents("A truck is stopped on the hard shoulder ahead on the right with its driver standing beside it on the "
+                  "shoulder.")
+    assert ("truck", "stop", "front_right") in said and any(k[0] == "pedestrian" for k in said)

@@ -363,10 +363,26 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
-    for reread in (_aborted_lane_changes, _signalled_by_a_driver, _relations_on_the_pavement, _cut_in_named_as_a_case,
+    for reread in (_passengers_on_foot, _aborted_lane_changes, _signalled_by_a_driver, _relations_on_the_pavement, _cut_in_named_as_a_case,
                    _lane_change_to_a_side_said_after):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+def _passengers_on_foot(units: list[Unit]) -> list[Unit]:
+    """'one passenger gets off and crosses the road', 'a passenger who has just got off walks across': one who
+    rides is no agent, until the sentence has them walk or cross before anyone else is named."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "agents" or u.meaning != "none" or u.tokens[-1].base not in ("passenger", "passengers"):
+            continue
+        for x in units[k + 1:k + 9]:
+            if x.tokens[0].sentence != u.tokens[-1].sentence or x.category == "agents" and x.meaning != "none":
+                break
+            if x.category == "actions" and x.meaning in ("cross", "walk"):
+                out[k] = Unit(u.start, u.end, "agents", "pedestrian", u.tokens)
+                break
+    return out
 
 
 def _lane_change_to_a_side_said_after(units: list[Unit]) -> list[Unit]:
@@ -3930,12 +3946,15 @@ GENERIC_AFTER = {"for", "about", "like", "of"}  # "for people entering": people 
 def _gets_out(units: list[Unit], head: int, walking: bool = True) -> bool:
     """'the driver gets out', 'the rider climbs off', 'the driver is out and walking': out of the vehicle, on
     foot. A driver who walks is out of the vehicle too ('walking' False: a vehicle's crew walks beside it)."""
-    words = [t.word for u in units[head + 1:head + 4] for t in u.tokens]
+    words = [t.word for u in units[head + 1:head + 5] for t in u.tokens]
     verbs = {"get", "gets", "got", "climb", "climbs", "climbed", "step", "steps", "stepped", "jump", "jumps", "jumped",
-             "hop", "hops", "hopped", "is", "was", "are", "were", "now"}
+             "hop", "hops", "hopped", "is", "was", "are", "were", "now", "getting", "climbing", "stepping", "jumping",
+             "hopping"}
     if walking and units[head + 1:head + 2] and units[head + 1].category == "actions" and \
             units[head + 1].tokens[0].base in ("walk", "stroll", "wander", "stride", "stagger"):
         return True  # "the driver walked out from in front of it": on foot
+    if walking and words[:1] in (["standing"], ["stood"]):
+        return True  # "its driver standing beside it on the shoulder": out of it, on foot
     words += [""]
     return any(w in verbs and nxt in ("out", "off", "down") and not (
         w in AUXILIARIES and (after == "of" or nxt == "down")) for w, nxt, after in zip(words, words[1:], words[2:]))
@@ -6050,6 +6069,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             subject = [clause.antecedent]
         elif clause.condition:
             subject = []
+        elif verbs and any(np.entity is None and units[np.index].meaning == "none" and
+                           units[np.first].word in INDEFINITE | DEFINITE and np.first == 0 and
+                           first_verb - 3 <= np.index < first_verb for np in phrases):
+            verbs = []  # "a bus stops and a dog runs out": a new subject that names no agent; the bus did not run
+            # (but "sirens going, and turned left": the same one goes on)
         elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate \
                 and not _imperative_on(units, verbs, phrases, previous_subject) \
                 and not (r.after_verbless and verbs and verbs[0] == 0 and _bare_verb(units[0])):
