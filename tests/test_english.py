@@ -9608,3 +9608,16 @@ def test_a_driver_standing_by_the_vehicle_is_on_foot():
     said = agents("A truck is stopped on the hard shoulder ahead on the right with its driver standing beside it on the "
                   "shoulder.")
     assert ("truck", "stop", "front_right") in said and any(k[0] == "pedestrian" for k in said)
+
+
+def test_people_named_by_trade_or_as_a_figure_are_on_foot():
+    assert agents("A vendor was walking on the sidewalk to my right.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "A figure in dark clothes steps off the kerb and walks across in front of me.")
+    assert ("pedestrian", "cross_the_road", "front") in agents("Elderly gent crossing, taking his time.")
+
+
+def test_a_person_before_a_streets_suffix_names_the_street():
+    said = agents("He drove straight across the crossroads at Northgate and Vicar Lane against a red signal.")
+    assert not any(k[0] == "pedestrian" for k in said)

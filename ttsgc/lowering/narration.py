@@ -751,7 +751,8 @@ def _names_agents(text: str) -> bool:
     return any(m.category == "agents" and m.meaning not in ("ego", "none") for m in matches(tokenize(text)))
 
 
-STREET = r"(?:[A-Z][a-z]+|\d{1,3}(?:st|nd|rd|th))(?:\s+(?:Street|St\.?|Avenue|Ave\.?|Road|Rd\.?|Boulevard|Blvd\.?))?"
+STREET = r"(?:[A-Z][a-z]+|\d{1,3}(?:st|nd|rd|th))(?:\s+(?:Street|St\.?|Avenue|Ave\.?|Road|Rd\.?|Boulevard|Blvd\.?|" \
+         r"Lane|Ln\.?|Drive|Way|Close|Grove|Crescent|Place|Terrace|Parade|Square))?"
 CORNER = re.compile(rf"\b((?i:at|on|near|by))\s+({STREET})\s+(?:and|&)\s+({STREET})\b(?!\s+(?:intersection|junction|"
                     r"crossroads?|corner))")
 

@@ -61,7 +61,8 @@ UNSPECIFIED = OpenChoices({  # other seeds draw from templates/unspecified.toml 
 VAGUE_COUNTS = {"some", "few", "several", "multiple", "various", "a"}
 PLAIN_PEOPLE = {"person", "someone", "somebody", "man", "woman", "lady", "kid", "lad", "teen", "teenager", "young man",
                 "young woman", "old man", "old woman", "old lady", "old guy", "old timer", "old gentleman", "fellow",
-                "gentleman", "elderly man", "elderly woman", "elderly lady", "youngster"}
+                "gentleman", "elderly man", "elderly woman", "elderly lady", "youngster", "gent", "old gent",
+                "elderly gent", "lass"}
 # people named by who they are, not by a role: on foot unless the text puts them at the wheel
 DRIVERS = PLAIN_PEOPLE | {"driver", "learner", "learner driver", "motorist", "guy", "dude", "bloke", "chap", "mate",
                           "fella", "idiot", "jerk", "moron", "lunatic", "nutter", "maniac", "muppet", "numpty",
@@ -548,11 +549,12 @@ STREET_SUFFIXES = {"road", "street", "avenue", "drive", "way", "close", "crescen
 
 
 def _street_names(tokens: list[Token], units: list[Unit]) -> list[Unit]:
-    """'the gritter hasn't touched Park Lane', 'turned into Cross Street': a one-word verb before a street's
-    suffix, with no article before it, is the street's name."""
+    """'the gritter hasn't touched Park Lane', 'turned into Cross Street', 'at Northgate and Vicar Lane': a one-word
+    verb or person before a street's suffix, with no article before it, is the street's name."""
     out = list(units)
     for k, u in enumerate(units):
-        if u.category != "actions" or len(u.tokens) != 1 or k + 1 >= len(units) or \
+        if not (u.category == "actions" or u.category == "agents" and u.meaning == "pedestrian") or \
+                len(u.tokens) != 1 or k + 1 >= len(units) or \
                 units[k + 1].tokens[0].word not in STREET_SUFFIXES or len(units[k + 1].tokens) != 1 or \
                 units[k + 1].tokens[0].sentence != u.tokens[0].sentence:
             continue
