@@ -9621,3 +9621,9 @@ def test_people_named_by_trade_or_as_a_figure_are_on_foot():
 def test_a_person_before_a_streets_suffix_names_the_street():
     said = agents("He drove straight across the crossroads at Northgate and Vicar Lane against a red signal.")
     assert not any(k[0] == "pedestrian" for k in said)
+
+
+def test_an_agents_noun_naming_another_scenario_is_no_agent():
+    said = agents("The ego drives straight; a truck cuts in from the right. This is similar to the bus scenario we did "
+                  "last week.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "front_right")]

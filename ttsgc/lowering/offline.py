@@ -364,10 +364,25 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
-    for reread in (_passengers_on_foot, _aborted_lane_changes, _signalled_by_a_driver, _relations_on_the_pavement, _cut_in_named_as_a_case,
+    for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver, _relations_on_the_pavement, _cut_in_named_as_a_case,
                    _lane_change_to_a_side_said_after):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+OTHER_SCENARIO_NOUNS = {"scenario", "scenarios", "scene", "scenes", "test", "tests", "case", "cases"}
+
+
+def _other_scenarios_named(units: list[Unit]) -> list[Unit]:
+    """'similar to the bus scenario we did last week', 'like the truck test from yesterday': an agent's noun naming
+    another scenario, with 'the', is no agent of this one."""
+    out = list(units)
+    for k, u in enumerate(units[1:-1], 1):
+        if u.category == "agents" and u.meaning not in ("ego", "none") and len(u.tokens) == 1 and \
+                units[k - 1].word == "the" and units[k + 1].word in OTHER_SCENARIO_NOUNS and \
+                units[k + 1].tokens[0].sentence == u.tokens[0].sentence:
+            out[k] = Unit(u.start, u.end, "word", u.tokens[0].word, u.tokens)
+    return out
 
 
 def _passengers_on_foot(units: list[Unit]) -> list[Unit]:
