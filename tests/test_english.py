@@ -9627,3 +9627,15 @@ def test_an_agents_noun_naming_another_scenario_is_no_agent():
     said = agents("The ego drives straight; a truck cuts in from the right. This is similar to the bus scenario we did "
                   "last week.")
     assert sorted(said) == [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "front_right")]
+
+
+def test_after_a_relative_clause_a_verb_done_to_its_noun_is_the_main_subjects():
+    assert stages("The ego slows down behind a truck that is stopped in its lane, then changes to the left lane to pass "
+                  "it.") == [[("ego", "go_straight", None), ("truck", "stop", "front")],
+                             [("ego", "change_lane_to_left", None)]]
+
+
+def test_the_same_direction_as_the_ego_is_a_likeness_not_a_clause():
+    said = agents("A cyclist traveling in the same direction as the ego, ahead on the right, swerves left to avoid a "
+                  "pothole.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("cyclist", "change_lane_to_left", "front_right")]

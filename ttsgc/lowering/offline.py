@@ -2845,7 +2845,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 continue
             if u.word == "as" and (nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if")
                                    or prev_word in ("employed", "work", "works", "working")  # "employed as a"
-                                   or _in_the_role_of(units, k)):
+                                   or _in_the_role_of(units, k)
+                                   or any(x.word == "same" for x in current[-3:])):  # "in the same direction as"
+                # the ego": a likeness, no clause
                 current.append(u)
                 continue
             close(u.word)
@@ -8741,10 +8743,16 @@ def _returns_to_the_main_subject(units: list[Unit]) -> bool:
     lead = 0
     while lead < len(units) - 1 and units[lead].category == "word" and units[lead].word in OBLIGED:
         lead += 1  # "and has to stop behind it": obliged, and still the verb's subject is to be found
-    return len(units) >= lead + 2 and units[lead].category == "actions" and any(
-        u.category == "word" and u.word in ("it", "him", "her", "them") or
-        u.category == "positions" and u.tokens[-1].word in ("it", "him", "her", "them")
-        for u in units[lead + 1:lead + 3])  # "... then overtakes it", "... and stops behind it"
+    if len(units) < lead + 2 or units[lead].category != "actions":
+        return False
+    for u in units[lead + 1:lead + 5]:  # "... then overtakes it", "... and stops behind it", "... then changes to
+        # the left lane to pass it"
+        if u.category == "word" and u.word in ("it", "him", "her", "them") or \
+                u.category == "positions" and u.tokens[-1].word in ("it", "him", "her", "them"):
+            return True
+        if u.category == "agents":
+            return False
+    return False
 
 
 def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
