@@ -9639,3 +9639,8 @@ def test_the_same_direction_as_the_ego_is_a_likeness_not_a_clause():
     said = agents("A cyclist traveling in the same direction as the ego, ahead on the right, swerves left to avoid a "
                   "pothole.")
     assert sorted(said) == [("car", "go_straight", "ego"), ("cyclist", "change_lane_to_left", "front_right")]
+
+
+def test_a_request_to_make_the_ego_a_kind_sets_its_kind():
+    assert agents("Make the ego a bus that stops at a bus stop.") == [("bus", "stop", "ego")]
+    assert agents("Let the ego be a truck. It turns left.") == [("truck", "turn_left", "ego")]

@@ -195,7 +195,7 @@ def read_narration(prompt: str) -> Narration:
     text = _designated_ego(_designations_spelt_alike(text), notes)
     text = _designated_groups(text, notes)
     text = _bare_appositions(text)
-    text = _declared_ego(text, notes)
+    text = _declared_ego(_ego_made_a_kind(text), notes)
     text = _observed_subject(text, notes)
     text = _learning_agent(text, notes)
     text = _fleet_unit(text, notes)
@@ -983,6 +983,16 @@ def _bare_appositions(text: str) -> str:
     """'V2, Ford F-150 pickup, is southbound', 'Ped 1, adult male, is crossing': a note that drops its articles
     still says what a named one is; read with its article, as one ('a Ford F-150 pickup')."""
     return BARE_APPOSITION.sub(lambda m: m.group(1) + m.group(2) + ("a " if _names_agents(m.group(3)) else ""), text)
+
+
+EGO_MADE = re.compile(r"\b(?:make|let|have|set)\s+(?:the\s+)?ego(?:\s+(?:vehicle|car))?\s+(?:to\s+)?(?:be\s+)?"
+                      r"(?=(?:a|an)\s)", re.I)
+
+
+def _ego_made_a_kind(text: str) -> str:
+    """'Make the ego a bus that stops at a bus stop', 'let the ego be a truck': a request for the ego's kind,
+    said as what the ego is."""
+    return EGO_MADE.sub("the ego is ", text)
 
 
 def _declared_ego(text: str, notes: list[str]) -> str:
