@@ -9644,3 +9644,9 @@ def test_the_same_direction_as_the_ego_is_a_likeness_not_a_clause():
 def test_a_request_to_make_the_ego_a_kind_sets_its_kind():
     assert agents("Make the ego a bus that stops at a bus stop.") == [("bus", "stop", "ego")]
     assert agents("Let the ego be a truck. It turns left.") == [("truck", "turn_left", "ego")]
+
+
+def test_a_turn_asked_for_with_an_article_is_the_egos():
+    assert sorted(agents("Create an unprotected left turn with an oncoming truck.")) == [
+        ("car", "turn_left", "ego"), ("truck", "go_straight", "road_of_straight")]
+    assert agents("How do I model the turn in esmini?") == [("car", "go_straight", "ego")]  # the tool asked about

@@ -6507,8 +6507,10 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
                                                     "coverage", "backlog", "campaign", "library", "catalog"):
         return True  # "merge test", "cut-in scenario", "the highway merge set": the name of a test or a set
     if i >= 2 and units[i - 1].word in ("a", "an", "the", "this", "that") and \
-            units[i - 2].tokens[-1].word in BUILDING_A_SCENE:
+            units[i - 2].tokens[-1].word in BUILDING_A_SCENE and not (
+                units[i - 1].word in ("a", "an") and units[i].meaning in ("turn_left", "turn_right", "turn", "u_turn")):
         return True  # "trying to set up a cut-in in esmini", "how do I model the merge": the scene built, no act
+        # (but "simulate a left turn with an oncoming truck": the turn the scene is, the ego's)
     if i >= 1 and units[i].tokens[0].word in ("maneuver", "manoeuvre", "maneuvers", "manoeuvres") and (
             units[i - 1].word in ("first", "second", "third", "next", "last", "final", "other") or
             units[i - 1].tokens[-1].possessive):
