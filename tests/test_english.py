@@ -9650,3 +9650,9 @@ def test_a_turn_asked_for_with_an_article_is_the_egos():
     assert sorted(agents("Create an unprotected left turn with an oncoming truck.")) == [
         ("car", "turn_left", "ego"), ("truck", "go_straight", "road_of_straight")]
     assert agents("How do I model the turn in esmini?") == [("car", "go_straight", "ego")]  # the tool asked about
+
+
+def test_an_on_ramp_joins_from_the_right():
+    said = agents("A car on the on-ramp merges in front of the ego.")
+    assert ("car", "go_straight", "ego") in said and any(k[0] == "car" and k[1] == "change_lane_to_left" and
+                                                         k[2].endswith("right") for k in said)
