@@ -9656,3 +9656,11 @@ def test_an_on_ramp_joins_from_the_right():
     said = agents("A car on the on-ramp merges in front of the ego.")
     assert ("car", "go_straight", "ego") in said and any(k[0] == "car" and k[1] == "change_lane_to_left" and
                                                          k[2].endswith("right") for k in said)
+
+
+def test_overtaking_one_already_in_the_other_lane_keeps_the_egos_lane():
+    said = agents("My car drive on the road with 2 lanes in each direction. On the right lane, little bit in front of "
+                  "me, is going slowly a truck and I am overtaking him on the left lane.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("truck", "go_straight", "front_right")]
+    assert ("car", "change_lane_to_left", "ego") in agents("A van is parked on the right. I overtake it on the left.")
+    assert ("bus", "stop", "front") in agents("There is a microbus stopped in front of the ego.")

@@ -5417,7 +5417,7 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 # ("in the roundabout going around": round it, not round someone; "drove round and round the
                 # estate": about it; on a narrow road with traffic coming the other way, round it in the one lane)
                 side = _overtaking_side("ego_lane_change_direction")  # "I have to go around it": the next lane
-            if side and _passing_one_off_the_lanes(r, clause_units, k):
+            if side and _passing_one_off_the_lanes(r, clause_units, k, side):
                 side = None  # "a semi stopped on the shoulder ... I'm going past it in the right lane": no change
             if side:
                 action, direction = "lane_" + side, side  # "we overtake it on the left": out into that lane
@@ -7072,14 +7072,20 @@ def _one_lane_with_oncoming(tokens: list[Token]) -> bool:
     return _says_any([t.word for t in tokens], ONE_LANE_OR_ONCOMING)
 
 
-def _passing_one_off_the_lanes(r: _Reader, units: list[Unit], k: int) -> bool:
-    """'going past it in the right lane' when 'it' is the one stopped on the shoulder: the ego passes in its own
-    lane."""
+def _passing_one_off_the_lanes(r: _Reader, units: list[Unit], k: int, side: str) -> bool:
+    """'going past it in the right lane' when 'it' is the one stopped on the shoulder, 'a truck on the right lane
+    ... I am overtaking him on the left lane': the one passed is off the ego's lane, on the other side, so the
+    ego passes in its own lane."""
     said_again = any(u.word in ("it", "him", "her", "them") for u in units[k + 1:k + 3]) or \
-        k + 1 < len(units) and units[k + 1].category == "positions" and units[k + 1].tokens[0].word == "in"
+        k + 1 < len(units) and units[k + 1].category == "positions" and units[k + 1].tokens[0].word in ("in", "on")
     # ("a van stands on the hard shoulder while the subject vehicle passes in the right-hand lane")
     last = next((e for e in reversed(r.entities) if not e.is_ego and e.count == 1 and e.type != "pedestrian"), None)
-    return said_again and last is not None and last.road_type == "shoulder"
+    other = {"left": "right", "right": "left"}[side]
+    return said_again and last is not None and (last.road_type == "shoulder" or
+                                                f"side_{other}" in last.features and not last.features & {
+                                                    "parked", "ego_behind"} and
+                                                not any(a[4] == "stop" for a in last.actions))
+    # (a van parked on the right, or "behind a truck in the right lane", is passed by pulling out round it)
 
 
 def _side_of_passing_the_ego(units: list[Unit], i: int) -> bool:
