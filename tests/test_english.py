@@ -9664,3 +9664,13 @@ def test_overtaking_one_already_in_the_other_lane_keeps_the_egos_lane():
     assert sorted(said) == [("car", "go_straight", "ego"), ("truck", "go_straight", "front_right")]
     assert ("car", "change_lane_to_left", "ego") in agents("A van is parked on the right. I overtake it on the left.")
     assert ("bus", "stop", "front") in agents("There is a microbus stopped in front of the ego.")
+
+
+def test_one_stepping_out_from_a_row_of_parked_cars_on_one_side_comes_from_that_side():
+    said = agents("It's a 20 mph limit through town with a line of parked cars on your right. A kid runs out from "
+                  "between them, right in front of me.")
+    assert ("pedestrian", "cross_the_road", "front_right") in said
+    said = agents("A child in a navy coat suddenly ran out between the parked cars right in front of me.")
+    assert ("pedestrian", "cross_the_road", "front") in said  # 'right in front': how near, no side
+    assert ("pedestrian", "cross_the_road", "front") in agents("Cars are parked on both sides. A child runs out from "
+                                                               "between them.")

@@ -8641,6 +8641,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _an_instance_given(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
+    _out_from_the_parked_row(r)
     _numbered_lane_sides(r)
     _named_lane_sides(r)
     _included_and_listed_items_share(r)
@@ -9045,6 +9046,37 @@ def _the_drivers_own_vehicle(r: _Reader) -> None:
             continue
         _taken_over(r, v, ego)
         r.notes.append(f"read the {v.head} as the {ego.head}'s own: the ego")
+
+
+SIDE_WORDS = {"left": "left", "right": "right", "nearside": "right", "offside": "left"}
+
+
+def _out_from_the_parked_row(r: _Reader) -> None:
+    """'a line of parked cars on your right. A kid runs out from between them': one who steps out from between or
+    behind parked vehicles named as scenery on one side of the road comes from that side."""
+    words = [t.word for t in r.tokens]
+    sides = set()
+    for k, w in enumerate(words):
+        if w == "parked":
+            span = [j for j in range(max(1, k - 6), min(len(words), k + 7)) if r.tokens[j].sentence ==
+                    r.tokens[k].sentence]
+            said = {SIDE_WORDS[words[j]] for j in span if words[j] in SIDE_WORDS and (
+                words[j] in ("nearside", "offside") or words[j - 1] in OWNERS | {"the", "on", "to"})}
+            # (not "right in front of me": how near)
+            if "both" in (words[j] for j in span) or len(said) > 1:
+                return  # "parked cars on both sides": from either
+            sides |= said
+    if len(sides) != 1 or any(not e.is_ego and "parked" in e.features for e in r.entities):
+        return  # (a parked vehicle named as an agent screens the crosser in its own way)
+    side = sides.pop()
+    for e in r.entities:
+        if e.type != "pedestrian" or not any(a[4] == "cross" for a in e.actions) or \
+                _side_of(e.features) or e.features & {"road_left", "road_right", "crosswalk"} or e.said_at < 0:
+            continue
+        sentence = [t.word for t in r.tokens if t.sentence == r.tokens[e.said_at].sentence]
+        if any(w in ("between", "behind") and set(sentence[k + 1:k + 4]) & {"them", "parked", "cars", "vehicles"}
+               for k, w in enumerate(sentence)):
+            e.features.add(f"from_{side}")
 
 
 def _taken_over(r: _Reader, gone: Entity, into: Entity) -> None:
