@@ -9674,3 +9674,10 @@ def test_one_stepping_out_from_a_row_of_parked_cars_on_one_side_comes_from_that_
     assert ("pedestrian", "cross_the_road", "front") in said  # 'right in front': how near, no side
     assert ("pedestrian", "cross_the_road", "front") in agents("Cars are parked on both sides. A child runs out from "
                                                                "between them.")
+
+
+def test_a_vehicle_stood_on_the_shoulder_is_met_by_the_ego_and_stands():
+    said = agents("There was a broken-down car on the hard shoulder and a police car behind it.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("car", "stop", "front_right"),
+                            ("police", "stop", "front_right")]
+    assert ("cyclist", "go_straight", "right") in agents("A cyclist is on the shoulder to the right of the ego.")

@@ -8388,6 +8388,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
         if e.type == "pedestrian":  # standing on the pavement or the verge, said no more: stays there
             return "on_the_sidewalk" if "on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder") \
                 and "crosswalk" not in e.features else "cross_the_road"
+        if e.road_type == "shoulder" and e.type not in V.TWO_WHEELER_TYPES and not e.is_ego:
+            return "stop"  # "a broken-down car on the hard shoulder and a police car behind it": stood there too
         return "go_straight"
     if action in ("turn_left", "turn_right"):
         return action
@@ -8800,8 +8802,10 @@ RELATIONS_TO_THE_EGO = {"follows": "behind", "leads": "ahead"}  # a relation by 
 
 
 def _may_drive_the_scene(e: Entity) -> bool:
+    """(Not one stopped on the shoulder: 'a broken-down car on the hard shoulder and a police car behind it' are met
+    by the ego.)"""
     return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and \
-        not e.features & (PLACE_FEATURES | PLACED_HOW) and \
+        not e.features & (PLACE_FEATURES | PLACED_HOW) and e.road_type != "shoulder" and \
         (e.relative_to is None or e.relative_how in RELATIONS_TO_THE_EGO) and e.parent is None and e.named_of is None
 
 
@@ -8841,7 +8845,7 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     people_first = first is not None and first.type in V.VULNERABLE_TYPES
     if people_first:  # "a wheelchair user trying to get across, and the car turning left doesn't look": the
         first = next((e for e in ordered if not e.is_ego and e.type not in V.VULNERABLE_TYPES), None)  # vehicle
-    if first is not None and not people_first and _told_by_it(r, first):
+    if first is not None and not people_first and first.road_type != "shoulder" and _told_by_it(r, first):
         return first  # "Silver hatchback stopped at the red ... ped crosses in front of it ... hatchback proceeds":
         # a log of the vehicle it opens on, the others placed by 'it'
     if first is None or not _may_drive_the_scene(first):
