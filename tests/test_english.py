@@ -9681,3 +9681,13 @@ def test_a_vehicle_stood_on_the_shoulder_is_met_by_the_ego_and_stands():
     assert sorted(said) == [("car", "go_straight", "ego"), ("car", "stop", "front_right"),
                             ("police", "stop", "front_right")]
     assert ("cyclist", "go_straight", "right") in agents("A cyclist is on the shoulder to the right of the ego.")
+
+
+def test_the_infinitive_after_a_participle_is_the_participles_owners():
+    assert sorted(agents("The ego comes to a stop behind a car waiting to turn left.")) == [
+        ("car", "stop", "ego"), ("car", "stop", "front")]
+
+
+def test_driving_past_a_queue_in_the_other_lane_keeps_the_egos_lane():
+    said = agents("There is a queue of four cars in the left lane, and the ego drives past them in the right lane.")
+    assert ("car", "go_straight", "ego") in said and said.count(("car", "stop", "left")) == 4

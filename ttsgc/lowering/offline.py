@@ -6124,6 +6124,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     main_verbs = []
     participles: dict[int, list[Entity]] = {}
     for i in verbs:
+        if i > 1 and units[i - 1].word == "to" and i - 2 in participles:
+            participles[i] = participles[i - 2]  # "behind a car waiting to turn left": the car's turn to come
+            for e in participles[i]:
+                _modify(r, e, units[i], stage, 1, units, i)
+            continue
         owner = _participle_owner(units, i, phrases, subject, verbs)
         if owner is not None and not main_verbs and participles and not any(v > i for v in verbs) and \
                 all(e in subject for owners in participles.values() for e in owners) and owner.entity not in subject \
@@ -7079,12 +7084,13 @@ def _passing_one_off_the_lanes(r: _Reader, units: list[Unit], k: int, side: str)
     said_again = any(u.word in ("it", "him", "her", "them") for u in units[k + 1:k + 3]) or \
         k + 1 < len(units) and units[k + 1].category == "positions" and units[k + 1].tokens[0].word in ("in", "on")
     # ("a van stands on the hard shoulder while the subject vehicle passes in the right-hand lane")
-    last = next((e for e in reversed(r.entities) if not e.is_ego and e.count == 1 and e.type != "pedestrian"), None)
+    last = next((e for e in reversed(r.entities) if not e.is_ego and e.count >= 1 and e.type != "pedestrian"), None)
     other = {"left": "right", "right": "left"}[side]
     return said_again and last is not None and (last.road_type == "shoulder" or
                                                 f"side_{other}" in last.features and not last.features & {
                                                     "parked", "ego_behind"} and
-                                                not any(a[4] == "stop" for a in last.actions))
+                                                ("lane_said" in last.features or
+                                                 not any(a[4] == "stop" for a in last.actions)))
     # (a van parked on the right, or "behind a truck in the right lane", is passed by pulling out round it)
 
 
