@@ -9691,3 +9691,8 @@ def test_the_infinitive_after_a_participle_is_the_participles_owners():
 def test_driving_past_a_queue_in_the_other_lane_keeps_the_egos_lane():
     said = agents("There is a queue of four cars in the left lane, and the ego drives past them in the right lane.")
     assert ("car", "go_straight", "ego") in said and said.count(("car", "stop", "left")) == 4
+
+
+def test_a_count_with_a_word_before_its_noun_lists_the_members_after_a_colon():
+    assert sorted(agents("2 NPC cars: one in front of the ego, one behind.")) == [
+        ("car", "go_straight", "back"), ("car", "go_straight", "ego"), ("car", "go_straight", "front")]

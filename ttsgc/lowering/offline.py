@@ -9837,8 +9837,9 @@ def _title(prompt: str, tokens: list[Token]) -> range:
             or {t.word for t in tokenize(m.group(1))} & {"i", "me", "we", "us"}):
         return range(0)  # "The player makes the left across oncoming traffic: ...", "A taxi cut me off: it ...",
         # "Robotaxi 9 requested help on a right turn: ...": a sentence (a title names no speaker), not a title
-    counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+\w+s\b",
-                        m.group(1).lower())  # "Nine pedestrians: four on the left ...": what is listed, no title
+    counted = re.search(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+(?:\w+\s+)?\w+s\b",
+                        m.group(1).lower())  # "Nine pedestrians: four on the left ...", "2 NPC cars: one in
+    # front, one behind": what is listed, no title
     if counted or re.match(r"there\b|.*\b(is|are|was|were)\b", m.group(1).strip().lower()):
         return range(0)  # "There are four cars: one in front ...": a sentence, not a title
     if re.match(r"(?:dash\s?cam|camera|footage|video|clip|photo|picture|image|still)\b.*\bfrom\s+(?:a|an|the|my|our)\b",
