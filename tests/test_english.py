@@ -9696,3 +9696,12 @@ def test_driving_past_a_queue_in_the_other_lane_keeps_the_egos_lane():
 def test_a_count_with_a_word_before_its_noun_lists_the_members_after_a_colon():
     assert sorted(agents("2 NPC cars: one in front of the ego, one behind.")) == [
         ("car", "go_straight", "back"), ("car", "go_straight", "ego"), ("car", "go_straight", "front")]
+
+
+def test_a_reports_opening_sentence_passed_on_someone_is_no_scene():
+    said = agents("A pensioner who turned across the path of a motorcyclist has been banned from driving for a year. "
+                  "The court heard that the motorcyclist was riding along the A59 when an oncoming car turned right "
+                  "across him.")
+    assert not any(k[0] == "pedestrian" for k in said)
+    assert ("car", "turn_right", "road_of_straight") in said
+    assert any(k[0] == "pedestrian" for k in agents("A pedestrian has been hurt. A car hit her as she crossed."))
