@@ -9705,3 +9705,9 @@ def test_a_reports_opening_sentence_passed_on_someone_is_no_scene():
     assert not any(k[0] == "pedestrian" for k in said)
     assert ("car", "turn_right", "road_of_straight") in said
     assert any(k[0] == "pedestrian" for k in agents("A pedestrian has been hurt. A car hit her as she crossed."))
+
+
+def test_a_speaker_who_rides_after_and_rides_a_motorbike():
+    assert agents("You ease off and ride slowly towards the crossing.")[0][:1] == ("motorcycle",)
+    assert ("car", "go_straight", "ego") in agents("My uber driver was fast. I got in and ride was smooth, then a bus "
+                                                   "pulled out.")

@@ -9441,13 +9441,17 @@ def _a_riders_ego(r: _Reader) -> None:
         return
     words = [t.word for t in r.tokens]
     said_of_the_ego = ("you", "i", "we", "you're", "i'm", "we're")
+    hailed = bool(set(words) & RIDE_HAILING)  # "The rider hit his knee on the seat": the passenger of a ride hailed
     said = any(w in RIDING | FILTERING and not (words[k + 1:k + 2] and words[k + 1] in (  # not "I ride the van"
         {"in", "on", "with", "as"} | DETERMINERS | OWNERS)) and (
         words[k - 1:k] and words[k - 1] in said_of_the_ego or words[max(0, k - 2):k] in (
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
-        w in FILTERING and _opens_its_sentence(r.tokens, r.tokens[k]))  # "Filtering past a queue"
+        w in FILTERING and _opens_its_sentence(r.tokens, r.tokens[k]) or  # "Filtering past a queue"
+        not hailed and words[k - 1:k] == ["and"] and words[k + 1:k + 2] != ["was"] and not (
+            words[k + 1:k + 2] and words[k + 1] in AUXILIARIES) and any(
+            words[j] in said_of_the_ego and r.tokens[j].sentence == r.tokens[k].sentence
+            for j in range(max(0, k - 5), k - 1)))  # "you ease off and ride slowly"
         for k, w in enumerate(words))
-    hailed = bool(set(words) & RIDE_HAILING)  # "The rider hit his knee on the seat": the passenger of a ride hailed
     the_rider = _supplied(r, ego) and not hailed and any(
         u.category == "word" and u.word == "rider" and k > 0 and r.units[k - 1].word == "the" and not any(
             e.type in ("cyclist", "motorcycle") and 0 <= e.said_at < u.start for e in r.entities)
