@@ -9605,8 +9605,8 @@ def test_a_new_subject_that_is_no_agent_takes_no_verb_from_the_one_before():
 
 
 def test_a_driver_standing_by_the_vehicle_is_on_foot():
-    said = agents("A truck is stopped on the hard shoulder ahead on the right with its driver standing beside it on the "
-                  "shoulder.")
+    said = agents("A truck is stopped on the hard shoulder ahead on the right with its driver standing beside it "
+                  "on the shoulder.")
     assert ("truck", "stop", "front_right") in said and any(k[0] == "pedestrian" for k in said)
 
 
@@ -9630,8 +9630,8 @@ def test_an_agents_noun_naming_another_scenario_is_no_agent():
 
 
 def test_after_a_relative_clause_a_verb_done_to_its_noun_is_the_main_subjects():
-    assert stages("The ego slows down behind a truck that is stopped in its lane, then changes to the left lane to pass "
-                  "it.") == [[("ego", "go_straight", None), ("truck", "stop", "front")],
+    assert stages("The ego slows down behind a truck that is stopped in its lane, then changes to the left lane to "
+                  "pass it.") == [[("ego", "go_straight", None), ("truck", "stop", "front")],
                              [("ego", "change_lane_to_left", None)]]
 
 

@@ -364,8 +364,8 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
-    for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver, _relations_on_the_pavement, _cut_in_named_as_a_case,
-                   _lane_change_to_a_side_said_after):
+    for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
+                   _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
 
@@ -556,7 +556,6 @@ def _unknown_makes(tokens: list[Token], units: list[Unit]) -> list[Unit]:
                              nxt.category == "positions" and nxt.meaning in LANE_PLACES | {"side_left", "side_right"}):
             out[k] = Unit(u.start, u.end, "agents", "car", u.tokens)  # (not "an evasive lane change")
     return out
-
 
 
 STREET_SUFFIXES = {"road", "street", "avenue", "drive", "way", "close", "crescent", "terrace", "place", "gardens",
@@ -7085,13 +7084,13 @@ def _passing_one_off_the_lanes(r: _Reader, units: list[Unit], k: int, side: str)
         k + 1 < len(units) and units[k + 1].category == "positions" and units[k + 1].tokens[0].word in ("in", "on")
     # ("a van stands on the hard shoulder while the subject vehicle passes in the right-hand lane")
     last = next((e for e in reversed(r.entities) if not e.is_ego and e.count >= 1 and e.type != "pedestrian"), None)
+    if not said_again or last is None:
+        return False
     other = {"left": "right", "right": "left"}[side]
-    return said_again and last is not None and (last.road_type == "shoulder" or
-                                                f"side_{other}" in last.features and not last.features & {
-                                                    "parked", "ego_behind"} and
-                                                ("lane_said" in last.features or
-                                                 not any(a[4] == "stop" for a in last.actions)))
+    in_the_other_lane = f"side_{other}" in last.features and not last.features & {"parked", "ego_behind"} and (
+        "lane_said" in last.features or not any(a[4] == "stop" for a in last.actions))
     # (a van parked on the right, or "behind a truck in the right lane", is passed by pulling out round it)
+    return last.road_type == "shoulder" or in_the_other_lane
 
 
 def _side_of_passing_the_ego(units: list[Unit], i: int) -> bool:
@@ -9058,7 +9057,13 @@ def _the_drivers_own_vehicle(r: _Reader) -> None:
         r.notes.append(f"read the {v.head} as the {ego.head}'s own: the ego")
 
 
-SIDE_WORDS = {"left": "left", "right": "right", "nearside": "right", "offside": "left"}
+SIDE_WORDS = {"left": "left", "right": "right", "nearside": "right", "offside": "left"}  # where traffic keeps right
+
+
+def _kerb_side(word: str) -> str:
+    """The side a side word names: the nearside is the kerb's, on the left where traffic keeps left."""
+    side = SIDE_WORDS[word]
+    return {"left": "right", "right": "left"}[side] if word in ("nearside", "offside") and _KEEPS_LEFT.get() else side
 
 
 def _out_from_the_parked_row(r: _Reader) -> None:
@@ -9070,7 +9075,7 @@ def _out_from_the_parked_row(r: _Reader) -> None:
         if w == "parked":
             span = [j for j in range(max(1, k - 6), min(len(words), k + 7)) if r.tokens[j].sentence ==
                     r.tokens[k].sentence]
-            said = {SIDE_WORDS[words[j]] for j in span if words[j] in SIDE_WORDS and (
+            said = {_kerb_side(words[j]) for j in span if words[j] in SIDE_WORDS and (
                 words[j] in ("nearside", "offside") or words[j - 1] in OWNERS | {"the", "on", "to"})}
             # (not "right in front of me": how near)
             if "both" in (words[j] for j in span) or len(said) > 1:
@@ -9447,8 +9452,7 @@ def _a_riders_ego(r: _Reader) -> None:
         words[k - 1:k] and words[k - 1] in said_of_the_ego or words[max(0, k - 2):k] in (
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
         w in FILTERING and _opens_its_sentence(r.tokens, r.tokens[k]) or  # "Filtering past a queue"
-        not hailed and words[k - 1:k] == ["and"] and words[k + 1:k + 2] != ["was"] and not (
-            words[k + 1:k + 2] and words[k + 1] in AUXILIARIES) and any(
+        not hailed and words[k - 1:k] == ["and"] and not (words[k + 1:k + 2] and words[k + 1] in AUXILIARIES) and any(
             words[j] in said_of_the_ego and r.tokens[j].sentence == r.tokens[k].sentence
             for j in range(max(0, k - 5), k - 1)))  # "you ease off and ride slowly"
         for k, w in enumerate(words))
