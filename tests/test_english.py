@@ -9711,3 +9711,10 @@ def test_a_speaker_who_rides_after_and_rides_a_motorbike():
     assert agents("You ease off and ride slowly towards the crossing.")[0][:1] == ("motorcycle",)
     assert ("car", "go_straight", "ego") in agents("My uber driver was fast. I got in and ride was smooth, then a bus "
                                                    "pulled out.")
+
+
+def test_the_lane_and_the_car_of_the_ego_said_with_of():
+    said = agents("Suddenly one motorcycle is entering in the lane of the ego from the right.")
+    assert said == [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_left", "front_right")]
+    said = agents("The car of the ego is turning right and one cyclist is going straight in his right side.")
+    assert sorted(said) == [("car", "turn_right", "ego"), ("cyclist", "go_straight", "right")]

@@ -989,9 +989,14 @@ EGO_MADE = re.compile(r"\b(?:make|let|have|set)\s+(?:the\s+)?ego(?:\s+(?:vehicle
                       r"(?=(?:a|an)\s)", re.I)
 
 
+EGOS_OWN_WITH_OF = re.compile(r"\b(?:the\s+)?(car|vehicle|truck|bus|van|motorcycle|motorbike)\s+of\s+(?:the\s+)?ego\b",
+                              re.I)
+
+
 def _ego_made_a_kind(text: str) -> str:
     """'Make the ego a bus that stops at a bus stop', 'let the ego be a truck': a request for the ego's kind,
-    said as what the ego is."""
+    said as what the ego is; 'the car of the ego', as Romance languages say it, is the ego."""
+    text = EGOS_OWN_WITH_OF.sub(lambda m: f"the ego {m.group(1).lower()}", text)
     return EGO_MADE.sub("the ego is ", text)
 
 

@@ -459,16 +459,21 @@ def _entering_in(units: list[Unit]) -> list[Unit]:
 
 def _going_in(units: list[Unit], i: int) -> bool:
     """'is coming in ego lane', 'enters suddenly in my lane' (Italian, Spanish, Portuguese: 'entra nella mia
-    corsia'): 'in' the ego's lane right after a verb of going, past a manner adverb, is into it."""
-    if units[i].tokens[0].word != "in":
+    corsia', 'is entering in the lane of the ego'): 'in' the ego's lane right after a verb of going, past a
+    manner adverb, is into it."""
+    if units[i].tokens[0].word == "in":
+        j = i - 1
+    elif i > 0 and units[i - 1].word == "in":
+        j = i - 2  # "in" read apart from "the lane of the ego"
+    else:
         return False
-    j = i - 1
+    verb_next = j
     while j >= 0 and (units[j].category == "behaviours" or units[j].word.endswith("ly") and
                       units[j].category == "word"):
         j -= 1
     return j >= 0 and units[j].category == "actions" and (
-        j == i - 1 and units[j].tokens[0].base in STEERING | {"come", "get"} or
-        len(units[j].tokens) == 1 and units[j].tokens[0].base in GOING_INTO)
+        j == verb_next and units[j].tokens[0].base in STEERING | {"come", "get"} or
+        units[j].tokens[-1].base in GOING_INTO and all(t.word in AUXILIARIES for t in units[j].tokens[:-1]))
 
 
 AGE_MARKS = {"f", "yo", "yrs", "yr", "y"}
