@@ -9718,3 +9718,9 @@ def test_the_lane_and_the_car_of_the_ego_said_with_of():
     assert said == [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_left", "front_right")]
     said = agents("The car of the ego is turning right and one cyclist is going straight in his right side.")
     assert sorted(said) == [("car", "turn_right", "ego"), ("cyclist", "go_straight", "right")]
+
+
+def test_each_lane_said_to_have_someone_is_a_clause_of_its_own():
+    said = agents("Ego is in the middle lane. Left lane has one bus, right lane has one truck.")
+    assert sorted(said) == [("bus", "go_straight", "left"), ("car", "go_straight", "ego"),
+                            ("truck", "go_straight", "right")]

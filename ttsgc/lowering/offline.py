@@ -385,6 +385,14 @@ def _other_scenarios_named(units: list[Unit]) -> list[Unit]:
     return out
 
 
+def _another_lane_has(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'Left lane has one bus, right lane has one truck': a lane said to have someone opens a clause of its own
+    after one that said the same of another lane."""
+    j = k + 1 + (k + 1 < len(units) and units[k + 1].word == "the")
+    return j + 1 < len(units) and units[j].category == "positions" and units[j].meaning in ("side_left", "side_right") \
+        and units[j + 1].word in ("has", "have", "had") and any(x.word in ("has", "have", "had") for x in current)
+
+
 def _passengers_on_foot(units: list[Unit]) -> list[Unit]:
     """'one passenger gets off and crosses the road', 'a passenger who has just got off walks across': one who
     rides is no agent, until the sentence has them walk or cross before anyone else is named."""
@@ -2817,7 +2825,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 nxt.word == "and" and k + 3 < len(units) and units[k + 2].word in ("a", "an") and \
                 units[k + 3].category == "agents"  # "..., level with it, and a hatchback follows"
             if (_has_verb(current) or condition or new_noun or joined or order or relative_ends or the_one or
-                    placed_aside) \
+                    placed_aside or _another_lane_has(current, units, k)) \
                     and not short_name \
                     and not ego_named \
                     and not bracketed and not ego_make and not _closed_apposition(current, units, k) \
@@ -2840,7 +2848,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 k + 2 < len(units) and units[k + 2].category == "actions"  # "an ambulance came up behind him and he
             # moved across": a new subject with its verb, though the place before swallowed the first verb
             joined = not _has_verb(current) and not _new_subject_after_copula(current, units, k) and \
-                not _holds_the_green(current) and not pronoun_acts
+                not _holds_the_green(current) and not pronoun_acts and not _another_lane_has(current, units, k)
             if u.word in ("and", "or") and (joined or _listed_before_then(current, units, k)):
                 current.append(u)
                 continue
