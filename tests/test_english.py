@@ -9724,3 +9724,8 @@ def test_each_lane_said_to_have_someone_is_a_clause_of_its_own():
     said = agents("Ego is in the middle lane. Left lane has one bus, right lane has one truck.")
     assert sorted(said) == [("bus", "go_straight", "left"), ("car", "go_straight", "ego"),
                             ("truck", "go_straight", "right")]
+
+
+def test_a_cyclist_heading_across_the_egos_heading_rides_the_road_on_that_side():
+    said = agents("The ego heads east; a cyclist heading north goes straight across the junction.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "road_of_right_turn")]

@@ -5578,7 +5578,7 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
         own = (_heading(e) or "")[8:] or None
         came = next((f[12:] for f in e.features if f.startswith("compassfrom_")), None)
         at = next((f[10:] for f in e.features if f.startswith("compassat_")), None)
-        person = e.type in V.VULNERABLE_TYPES
+        person = e.type == "pedestrian"  # (a northbound cyclist across an eastbound ego rides the road on its right)
         if person and own in (left, right):
             e.features.add("in_road")  # "walking east" across a northbound ego's road: across it
         if person and came is None and own in (left, right) and at is None:
