@@ -385,14 +385,6 @@ def _other_scenarios_named(units: list[Unit]) -> list[Unit]:
     return out
 
 
-def _another_lane_has(current: list[Unit], units: list[Unit], k: int) -> bool:
-    """'Left lane has one bus, right lane has one truck': a lane said to have someone opens a clause of its own
-    after one that said the same of another lane."""
-    j = k + 1 + (k + 1 < len(units) and units[k + 1].word == "the")
-    return j + 1 < len(units) and units[j].category == "positions" and units[j].meaning in ("side_left", "side_right") \
-        and units[j + 1].word in ("has", "have", "had") and any(x.word in ("has", "have", "had") for x in current)
-
-
 def _passengers_on_foot(units: list[Unit]) -> list[Unit]:
     """'one passenger gets off and crosses the road', 'a passenger who has just got off walks across': one who
     rides is no agent, until the sentence has them walk or cross before anyone else is named."""
@@ -2641,6 +2633,14 @@ def _listed_before_then(current: list[Unit], units: list[Unit], k: int) -> bool:
         j += 1
     return j + 1 < len(units) and units[j].category == "agents" and units[j + 1].word == "then" and \
         units[j + 1].tokens[0].sentence == units[k].tokens[0].sentence
+
+
+def _another_lane_has(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'Left lane has one bus, right lane has one truck': a lane said to have someone opens a clause of its own
+    after one that said the same of another lane."""
+    j = k + 1 + (k + 1 < len(units) and units[k + 1].word == "the")
+    return j + 1 < len(units) and units[j].category == "positions" and units[j].meaning in ("side_left", "side_right") \
+        and units[j + 1].word in ("has", "have", "had") and any(x.word in ("has", "have", "had") for x in current)
 
 
 def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
