@@ -9057,9 +9057,9 @@ def _the_drivers_own_vehicle(r: _Reader) -> None:
         if v.is_ego or v.type in V.VULNERABLE_TYPES or v.count != 1 or v.actions or v.said_at < 1 or \
                 v.relative_to is not None or v.features & {"ahead", "behind", "side_left", "side_right", "toward"}:
             continue
-        owner = r.tokens[v.said_at - 1].word if r.tokens[v.said_at - 1].word in ("his", "her", "their") else \
-            r.tokens[v.said_at - 2].word if v.said_at > 1 else ""
-        if owner not in ("his", "her", "their"):
+        owner = next((t.word for t in reversed(r.tokens[max(0, v.said_at - 2):v.said_at])
+                      if t.word in ("his", "her", "their")), None)  # "her car", "her old car"
+        if owner is None:
             continue
         others = re.compile(rf"\b(?:{OTHER_PEOPLE['he' if owner == 'his' else 'she']})s?\b") if owner != "their" \
             else None
