@@ -9729,3 +9729,72 @@ def test_each_lane_said_to_have_someone_is_a_clause_of_its_own():
 def test_a_cyclist_heading_across_the_egos_heading_rides_the_road_on_that_side():
     said = agents("The ego heads east; a cyclist heading north goes straight across the junction.")
     assert sorted(said) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "road_of_right_turn")]
+
+
+def test_a_person_standing_on_the_shoulder_stands_on_the_road_not_a_pavement():
+    said = agents("A truck is stopped on the hard shoulder ahead with its driver standing beside it on the shoulder.")
+    assert ("pedestrian", "stop", "front_right") in said
+    assert ("pedestrian", "on_the_sidewalk", "right") in agents("A man stands on the pavement on the right.")
+
+
+def test_alongside_wins_over_the_blind_spot():
+    said = agents("Ego turns right at a signalised intersection with a cyclist riding alongside on our right, in the "
+                  "blind spot, going straight through.")
+    assert ("cyclist", "go_straight", "right") in said
+    assert ("motorcycle", "go_straight", "back_left") in agents("A motorbike is in the ego's blind spot on the left.")
+
+
+def test_a_relative_after_a_place_phrase_ending_in_a_pronoun_is_about_the_one_placed():
+    said = agents("An oncoming bus is waiting to turn left and hides a motorbike next to it, which turns left across "
+                  "our path.")
+    assert ("bus", "stop", "road_of_straight") in said and ("motorcycle", "turn_left", "road_of_straight") in said
+
+
+def test_one_more_added_to_a_heading_line_is_not_the_headings_agent():
+    said = agents("Pedestrian standing on the pavement right next to a crosswalk, not crossing, as the ego drives "
+                  "past, plus a jogger on the right-hand sidewalk just ahead of us running the same way.")
+    assert sorted(k for k in said if k[0] == "pedestrian") == [
+        ("pedestrian", "on_the_sidewalk", "front_right"), ("pedestrian", "on_the_sidewalk", "near_the_crosswalk")]
+
+
+def test_a_manoeuvre_someone_is_kept_from_is_not_made():
+    assert agents("A truck in the left lane keeps the ego from changing lanes.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "left")]
+    assert agents("A car alongside in the left lane stops the ego from moving over.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "left")]
+    assert ("car", "change_lane_to_left", "ego") in agents("The ego changes lanes to the left to pass a truck.")
+
+
+def test_blocking_the_escape_path_is_driving_alongside():
+    said = agents("Gap - SV following a lead vehicle that brakes to a stop, wet road at night, POV alongside in the "
+                  "adjacent left lane blocking the escape path.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("car", "go_straight", "left"), ("car", "stop", "front")]
+
+
+def test_the_lead_car_is_not_one_named_beside_the_ego():
+    assert agents("A van drives on the left. The lead car brakes.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "left"), ("car", "stop", "front")]
+    assert agents("A car is ahead of the ego in the left lane. The lead car brakes.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front_left")]
+
+
+def test_a_lane_count_with_a_plus_is_at_least_that_many():
+    assert road("Truck cut-in from the right adjacent lane on a 3+ lane highway.").lanes == 3
+    assert road("A 4+ lanes road with a car ahead.").lanes == 4
+
+
+def test_the_exit_arm_is_where_the_ego_heads_and_mid_crossing_is_crossing():
+    assert ("cyclist", "go_straight", "at_the_destination") in agents(
+        "The ego turns right at the roundabout while a cyclist rides on the ego's exit arm.")
+    said = agents("No coverage for: ego going straight over a ladder crosswalk with one ped standing on the pavement "
+                  "and another already mid-crossing from the left.")
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in said and len(said) == 3
+
+
+def test_what_perception_makes_of_road_users_is_no_one_on_the_road():
+    said = agents("A bus has pulled in at a stop in the right-hand lane ahead, and three people walk out in front of "
+                  "it and cross our lane from right to left. Check we keep three separate pedestrian tracks instead "
+                  "of one merged blob.")
+    assert said.count(("pedestrian", "cross_the_road", "front_right")) == 3 and len(said) == 5
+    assert agents("Can we get an env where the ego drives down a street and there's a stopped delivery van in its "
+                  "lane ahead?") == [("car", "go_straight", "ego"), ("car", "stop", "front")]

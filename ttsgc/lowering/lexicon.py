@@ -992,6 +992,7 @@ ASIDES = (  # (pattern, replacement): what a text says around its scene, read fo
     (r"(?:^|(?<=[.!?]\s))(?:please )?(?:label|tag|annotate|flag|mark|give) (?:actor|agent|object|track|this clip|"
      r"the clip)\b[^.!?\n]*[.!?]?", " "),  # "Give Actor 2 the emergency attribute.": the annotator's, no scene
     (r"(?<![\w.])\.(xodr|xosc|xml|tsg|py|json|yaml|yml|csv)\b", r"\1"),  # "the .xodr": no sentence ends
+    (r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1"),  # "a 3+ lane highway": at least three lanes
     (r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)", r"no \1"),  # "please leave pedestrians out"
     (r"\b(?:leave out|exclude|omit) (?:the |any |all )?([a-z]+s)\b", r"no \1"),
     (r"(?:^|(?<=[.!?]\s))(?:please )?(?:evaluate|assess|measure|verify|describe|discuss|explain)"
@@ -1244,6 +1245,10 @@ AGENT_COMPOUND = re.compile(r"\b(?:peds?|pedestrians?|cyclists?|bikes?|cars?|veh
                             r"motorcycles?)-(safety|detection|following|friendly|free|heavy|related|focused|centric|"
                             r"based|avoidance|aware|awareness|yielding|collision|crash|protection)\b")
 
+PERCEIVED = re.compile(r"\b(?:peds?|pedestrians?|cyclists?|cars?|vehicles?|trucks?|bus|buses|motorcycles?|"
+                       r"motorbikes?|vrus?)\s(tracks?|track ids?|detections?|detector|tracker|bounding boxes|"
+                       r"labels?|classifier|hypothes[ie]s)\b")  # what perception makes of road users
+
 
 DEVICE_SWITCH = re.compile(r"\bturn(?:s|ed|ing)? (?:(on|off) )?((?:the |your |its |his |her |my |our )?"
                            r"(?:fog|rain|snow|head ?lights?|lights|wipers|hazards|hazard lights|high beams?|engine|"
@@ -1279,6 +1284,7 @@ def tokenize(text: str) -> list[Token]:
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _without_calques(text)
     text = AGENT_COMPOUND.sub(r"\1", text)  # "the ped-safety task", "a car-following model": no one on the road
+    text = PERCEIVED.sub(r"\1", text)  # "keep three separate pedestrian tracks": a tracker's, no one on the road
     text = DEVICE_SWITCH.sub(r"\2", text)  # "turn fog on in the simulator", "turn your headlights on": no turn
     text = re.sub(r"\b(oncoming|opposing|an?|the) through (?=(?:car|vehicle|motorcycle|motorbike|truck|bus|cyclist|van|"
                   r"sedan|suv|pickup|lorry)s?\b)", r"\1 ", text)  # "an opposing through motorcycle": going on

@@ -1493,6 +1493,22 @@ ASPECT_VERBS = ("started", "starts", "start", "began", "begins", "begin", "kept"
                 "tried", "tries")  # "started crossing": the crossing is done
 
 
+KEEPERS = {"keep", "prevent", "stop", "bar", "hinder", "deter", "discourage"}
+
+
+def _kept_from(tokens: list[Token], m: Match) -> bool:
+    """'keeps the ego from changing lanes', 'prevents us from overtaking': the keeping verb and the manoeuvre kept
+    from (a gerund after 'from', a keeper a few words before it in the sentence)."""
+    sentence = tokens[m.start].sentence
+    if m.start > 1 and tokens[m.start - 1].word == "from" and tokens[m.start].word.endswith("ing"):
+        return any(t.base in KEEPERS and t.sentence == sentence for t in tokens[max(0, m.start - 6):m.start - 2])
+    if m.end - m.start != 1 or tokens[m.start].base not in KEEPERS:
+        return False
+    later = tokens[m.end + 1:m.end + 6]
+    return any(t.word == "from" and k + 1 < len(later) and later[k + 1].word.endswith("ing") and
+               t.sentence == sentence for k, t in enumerate(later))
+
+
 def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     """'a pedestrian crossing the road' is a person crossing, 'a pedestrian crossing' is a crosswalk;
     'parked right at the corner' says where exactly, not which side."""
@@ -1502,6 +1518,17 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
+    if m.category == "actions" and m.end - m.start == 1 and span[0].word.endswith("ed") and \
+            span[0].word != span[0].base and m.start > 0 and \
+            tokens[m.start - 1].word in ("a", "an", "one", "the") and nxt and \
+            tokens[m.end].base not in lexicon().function_words and lexicon().phrases.get((tokens[m.end].base,)) is None \
+            and (m.end + 1 == len(tokens) or tokens[m.end + 1].sentence != span[0].sentence or
+                 tokens[m.end + 1].base in lexicon().function_words):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "one merged blob": a participle before a noun
+        # the lexicon does not know says what the thing is, no one's act
+    if m.category == "actions" and _kept_from(tokens, m):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "an oncoming car keeping the ego from moving
+        # over": neither keeps to a manoeuvre, and the one kept does not make it
     if m.category == "actions" and m.meaning == "cut_in" and span[-1].word == "into" and span[0].base in SKIDS and (
             after[:2] in (["the", "back"], ["the", "rear"], ["the", "side"]) or after[:1] in (
                 ["him"], ["her"], ["me"], ["us"], ["it"], ["them"])):
@@ -1614,6 +1641,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word in LAMPS:
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a police car stopped with its lights flashing":
         # its lamps, no movement
+    if m.category == "positions" and m.meaning == "level" and [t.word for t in tokens[m.end:m.end + 1]] in (
+            ["a"], ["the"]) and m.end + 1 < len(tokens) and tokens[m.end + 1].word in ("crosswalk", "crossing", "zebra"):
+        return [Unit(m.start, m.end, "positions", "crosswalk", span)]  # "standing right next to a crosswalk": by it
     if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
             (m.end >= len(tokens) or tokens[m.end].word != "of" or [t.word for t in tokens[m.end + 2:m.end + 3]] in (
                 ["car"], ["vehicle"], ["van"], ["cab"], ["taxi"], ["suv"])):
@@ -4643,6 +4673,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                                                                                      "road_left", "road_right"}
         if len(found) == 1 and said_places and not said_places & found[0].features and not found[0].is_ego:
             found = []  # "a car is waiting to turn ... once the oncoming car has gone by": another car
+        if len(found) == 1 and u.base.split()[0] in ("lead", "leading") and "ahead" not in found[0].features and \
+                found[0].features & {"level", "behind", "side_left", "side_right", "road_straight"}:
+            found = [e for e in r.entities if not e.is_ego and e.count == 1 and e.head.split()[0] in (
+                "lead", "leading")][-1:]  # "a van alongside on the left, while the lead car brakes": the one
+            # ahead is another, the lead named before if there is one
         if found:
             if len(found) == 1:
                 found[0].aliases.add(u.base)  # "a woman ... the pedestrian": every name it is given
@@ -5193,6 +5228,11 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
                 t.word != t.base and t.word.endswith(("s", "ed")) and
                 lexicon().phrases.get((t.base,), ("",))[0] == "actions" for t in first):
             return None  # "Pedestrian crossing, pedestrian waiting": two, said bare; "Car stops, a car passes"
+        at = said.index - 1
+        while at > heading_end and r.tokens[at].word in ("a", "an", "one", "the", "another"):
+            at -= 1
+        if r.tokens[at].word in ("plus", "and", "also"):
+            return None  # "Pedestrian standing by a crosswalk, not crossing, plus a jogger on the sidewalk": one more
     if any(t.word == "ego" for t in first):
         return None
     listed = any(t.word in HEADING_WORDS for t in first) or any(t.word == "," for t in first) or \
@@ -7206,9 +7246,12 @@ def _past_the_count(r: _Reader, ordinal: str) -> bool:
 
 def _stands_alone(units: list[Unit], i: int) -> bool:
     """'another behind', 'and another one waits': 'another' with no noun of its own, up to a place, a verb,
-    a comma or the end ('another red car' and 'another one of them' have theirs)."""
+    a comma or the end, past an adverb ('another already mid-crossing'; 'another red car' and 'another one of them'
+    have theirs)."""
     j = i + 1
     if j < len(units) and units[j].word == "one":
+        j += 1
+    while j < len(units) and (_sentence_adverb(units[j]) or units[j].category == "behaviours"):
         j += 1
     return j >= len(units) or units[j].category in ("positions", "actions", "comma", "sequence") or \
         units[j].word in AUXILIARIES | {"and", "but", "then", "who", "which", "that", "coming", "going"}
@@ -8288,6 +8331,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
     if "target_lane" in f and target_side and not _side(e):
         f.add(f"side_{target_side}")
+    if {"level", "behind"} <= f and "overtaking" not in f:
+        f.discard("behind")  # "riding alongside on our right, in the blind spot": level is said, and the blind
+        # spot only says where the mirror cannot see it
     if {"level", "ahead", "into_ego_lane"} <= f:
         f.discard("ahead")  # "in the left lane, level with Ego, swerves into Ego's lane just ahead": where it ends
     if crossing and e.type == "pedestrian" and has_crosswalk and "off_crosswalk" not in f:
@@ -8444,8 +8490,11 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "stop":
         if e.type != "pedestrian" and position == "front" and "stays_long" in e.features:
             return "block_the_ego"  # stopped in front of the ego for minutes: the ego cannot go on
-        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type in ("sidewalk", "shoulder")):
-            return "on_the_sidewalk"  # standing on the pavement or the verge
+        if e.type == "pedestrian" and e.road_type == "shoulder" and "on_sidewalk" not in e.features:
+            return "stop"  # "the driver standing on the hard shoulder beside it": stood on the road's shoulder, not a
+            # pavement
+        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type == "sidewalk"):
+            return "on_the_sidewalk"  # standing on the pavement
         if e.type == "pedestrian" and "waits_to_cross" in e.features and position != "near_the_crosswalk":
             return "on_the_sidewalk"  # waiting to cross where there is no crossing: at the kerb, on the pavement
         if e.type == "pedestrian" and any(a[4] == "walk" for a in e.actions) and not e.features & {"crosswalk",
@@ -8537,6 +8586,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                     clause.antecedent = _ego_entity(r, clause.stage)  # "in front of the ego, who stops"
                 elif recent[-1].is_ego and len(recent) > 1:
                     clause.antecedent = recent[-2]  # "three cars ahead of the player that each swerve": the cars
+            elif k > 0 and len(recent) > 1 and not recent[-2].is_ego and _placed_by_a_pronoun(clauses[k - 1].units):
+                clause.antecedent = recent[-2]  # "hides a motorbike next to it, which turns left": the one placed by
+                # 'it', not the one 'it' names again
         if clause.antecedent is not None and not clause.antecedent.is_ego and k + 1 < len(clauses) and \
                 clauses[k + 1].link == "," and clauses[k + 1].units and clauses[k + 1].units[0].category == "actions" \
                 and clauses[k + 1].units[0].tokens[0].sentence == clause.units[-1].tokens[0].sentence and \
@@ -9740,6 +9792,12 @@ def _ego_placed_last(units: list[Unit]) -> bool:
     while k >= 0 and units[k].category == "word" and units[k].word in ("the", "of", "a"):
         k -= 1
     return k >= 0 and units[k].category == "positions"
+
+
+def _placed_by_a_pronoun(units: list[Unit]) -> bool:
+    """'... a motorbike next to it': the clause ends on a pronoun that is the object of a place phrase."""
+    return len(units) > 2 and units[-1].category == "word" and units[-1].word in ("it", "him", "her", "them") and \
+        units[-2].category == "positions" and units[-3].category == "agents"
 
 
 EGO_HEADS = {"vehicle", "car"}  # "the ego vehicle" after a place phrase that ends in "the ego"
