@@ -9798,3 +9798,30 @@ def test_what_perception_makes_of_road_users_is_no_one_on_the_road():
     assert said.count(("pedestrian", "cross_the_road", "front_right")) == 3 and len(said) == 5
     assert agents("Can we get an env where the ego drives down a street and there's a stopped delivery van in its "
                   "lane ahead?") == [("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+def test_a_tool_named_after_a_runner_is_no_one_on_foot():
+    assert agents("Is this doable with the Python API alone, or do I need ScenarioRunner for the light timing? The "
+                  "ego waits at a red light.") == [("car", "stop", "ego")]
+    assert ("pedestrian", "cross_the_road", "front") in agents("A runner crosses in front of the ego.")
+
+
+def test_the_ego_in_a_queue_of_counted_cars_waits_behind_them_standing():
+    said = agents("Heavy traffic: the ego is in a queue of five cars at a red light.")
+    assert said.count(("car", "stop", "front")) == 5 and ("car", "stop", "ego") in said
+
+
+def test_the_street_the_ego_turns_into_said_with_its_direction_gives_the_egos_turn():
+    assert agents("The oncoming truck turns right into the same street the ego is turning left into.") == [
+        ("car", "turn_left", "ego"), ("truck", "turn_right", "road_of_straight")]
+    assert agents("A pedestrian crosses the road I am turning right into.") == [
+        ("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "at_the_destination")]
+
+
+def test_what_one_is_made_to_do_and_where_is_theirs():
+    assert agents("A delivery van double-parked on the right forces the ego to pass it in the oncoming lane.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front_right")]
+    assert agents("A truck stopped ahead makes the ego change to the left lane.") == [
+        ("car", "change_lane_to_left", "ego"), ("truck", "stop", "front")]
+    assert ("motorcycle", "change_lane_to_right", "front_left") in agents(
+        "can u make a scooter cutting in from the left lane right in front of ego, snowy night")

@@ -992,7 +992,6 @@ ASIDES = (  # (pattern, replacement): what a text says around its scene, read fo
     (r"(?:^|(?<=[.!?]\s))(?:please )?(?:label|tag|annotate|flag|mark|give) (?:actor|agent|object|track|this clip|"
      r"the clip)\b[^.!?\n]*[.!?]?", " "),  # "Give Actor 2 the emergency attribute.": the annotator's, no scene
     (r"(?<![\w.])\.(xodr|xosc|xml|tsg|py|json|yaml|yml|csv)\b", r"\1"),  # "the .xodr": no sentence ends
-    (r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1"),  # "a 3+ lane highway": at least three lanes
     (r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)", r"no \1"),  # "please leave pedestrians out"
     (r"\b(?:leave out|exclude|omit) (?:the |any |all )?([a-z]+s)\b", r"no \1"),
     (r"(?:^|(?<=[.!?]\s))(?:please )?(?:evaluate|assess|measure|verify|describe|discuss|explain)"
@@ -1291,6 +1290,11 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\blet (him|her|them|it) (in|merge|over|out)( in)? (?:ahead of|in front of) (?:me|us)\b",
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
+    text = re.sub(r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1", text)  # "a 3+ lane highway": at least three lanes
+    text = re.sub(r"\b((?:street|road|side road|side street|avenue|lane) (?:that |which )?)(the ego|i|we|you) "
+                  r"((?:is |am |are |was |were )?(?:turning|turns|turned|turn)) (left|right) (into|onto)\b",
+                  r"\1\2 \3 \5, while \2 \3 \4", text)  # "into the same street the ego is turning left into":
+    # the street the ego turns into, and the ego's turn
     text = re.sub(r"\b(it|that|there|he|she|what|who)'s (been|got|gotten|gone|had)\b", r"\1 has \2", text)
     text = re.sub(r"\b(it|that|he|she|who)'s (\w+ed)(?= (?:over |up |out |off )?(?:a|an|the|my|our|his|her|their|us|me)\b)",
                   r"\1 has \2", text)  # "it's pulled over a pickup", "he's blocked the lane": has, not is

@@ -1493,6 +1493,16 @@ ASPECT_VERBS = ("started", "starts", "start", "began", "begins", "begin", "kept"
                 "tried", "tries")  # "started crossing": the crossing is done
 
 
+def _an_unknown_noun_ends_the_phrase(tokens: list[Token], k: int) -> bool:
+    """'one merged blob': the word at k is none the lexicon knows, and a function word or the sentence's end
+    follows it ('a stopped delivery van' goes on to its noun)."""
+    known = lexicon()
+    if tokens[k].base in known.function_words or known.phrases.get((tokens[k].base,)) is not None:
+        return False
+    return k + 1 == len(tokens) or tokens[k + 1].sentence != tokens[k].sentence or \
+        tokens[k + 1].base in known.function_words
+
+
 KEEPERS = {"keep", "prevent", "stop", "bar", "hinder", "deter", "discourage"}
 
 
@@ -1519,11 +1529,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         return [Unit(m.start, m.end, "word", "right", span)]
     after = [t.word for t in tokens[m.end:m.end + 3]]
     if m.category == "actions" and m.end - m.start == 1 and span[0].word.endswith("ed") and \
-            span[0].word != span[0].base and m.start > 0 and \
-            tokens[m.start - 1].word in ("a", "an", "one", "the") and nxt and \
-            tokens[m.end].base not in lexicon().function_words and lexicon().phrases.get((tokens[m.end].base,)) is None \
-            and (m.end + 1 == len(tokens) or tokens[m.end + 1].sentence != span[0].sentence or
-                 tokens[m.end + 1].base in lexicon().function_words):
+            span[0].word != span[0].base and m.start > 0 and tokens[m.start - 1].word in ("a", "an", "one", "the") \
+            and nxt and _an_unknown_noun_ends_the_phrase(tokens, m.end):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "one merged blob": a participle before a noun
         # the lexicon does not know says what the thing is, no one's act
     if m.category == "actions" and _kept_from(tokens, m):
@@ -1641,8 +1648,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word in LAMPS:
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a police car stopped with its lights flashing":
         # its lamps, no movement
-    if m.category == "positions" and m.meaning == "level" and [t.word for t in tokens[m.end:m.end + 1]] in (
-            ["a"], ["the"]) and m.end + 1 < len(tokens) and tokens[m.end + 1].word in ("crosswalk", "crossing", "zebra"):
+    if m.category == "positions" and m.meaning == "level" and [t.word for t in tokens[m.end:m.end + 2]] in (
+            [a, c] for a in ("a", "the") for c in ("crosswalk", "crossing", "zebra")):
         return [Unit(m.start, m.end, "positions", "crosswalk", span)]  # "standing right next to a crosswalk": by it
     if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
             (m.end >= len(tokens) or tokens[m.end].word != "of" or [t.word for t in tokens[m.end + 2:m.end + 3]] in (
@@ -4762,7 +4769,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     entity.definite = "the" in words
     if u.base.split()[0] in ("lead", "leading"):
         entity.features.add("ahead")
-    if first >= 1 and "of" in words and units[first - 1].word in ("queue", "line", "row", "jam"):
+    if first >= 1 and "of" in words and units[first - 1].tokens[-1].word in ("queue", "line", "row", "jam"):
         entity.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "a queue of four cars"
     elif u.base == "tailgater":
         entity.features.add("behind")
@@ -6855,6 +6862,7 @@ VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "tur
 
 
 LETTING = {"let", "lets", "letting"}
+MAKING = {"make", "makes", "made", "making"}  # before a bare verb: "makes the ego stop"
 CAUSATIVES = {"force", "forced", "forces", "forcing", "cause", "caused", "causes", "causing", "make", "made", "makes",
               "making", "compel", "compelled", "require", "required", "requires", "oblige", "obliged"}
 
@@ -6876,14 +6884,15 @@ def _left_no_option(units: list[Unit], i: int, phrases: list[NounPhrase]) -> lis
 
 def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entity]:
     """'a truck forced the AV to change lanes': the verb after 'to' is the object's doing; so is the bare verb
-    after 'let' ('I let the van merge': the van merges, not I)."""
+    after 'let' or 'make' ('I let the van merge': the van merges, not I; 'makes the ego change lanes')."""
     left = _left_no_option(units, i, phrases)
     if left:
         return left
     if i >= 2 and units[i - 1].word != "to":
         np = next((p for p in phrases if p.index == i - 1 and p.entity is not None), None)
-        if np is not None and np.first > 0 and units[np.first - 1].word in LETTING:
-            return np.group or [np.entity]
+        if np is not None and np.first > 0 and (units[np.first - 1].word in LETTING or units[np.first - 1].word in
+                                                 MAKING and units[i].tokens[0].word == units[i].tokens[0].base):
+            return np.group or [np.entity]  # ("make a scooter cutting in": the scene asked for)
     if i < 3 or units[i - 1].word != "to":
         return []
     np = next((p for p in phrases if p.index == i - 2 and p.entity is not None), None)
@@ -8041,6 +8050,11 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
         last = objects_between[-1]
         if last.introduced and not last.entity.is_ego:
             return [last.entity]
+    made = next((p for p in before if p.index == last_verb - 2), None)
+    if made is not None and units[last_verb - 1].word == "to" and made.first > 0 and \
+            units[made.first - 1].word in CAUSATIVES:
+        return made.group or [made.entity]  # "a van double-parked on the right forces the ego to pass it in the
+        # oncoming lane": the lane is where the one made to pass goes
     return subject
 
 
