@@ -9825,3 +9825,43 @@ def test_what_one_is_made_to_do_and_where_is_theirs():
         ("car", "change_lane_to_left", "ego"), ("truck", "stop", "front")]
     assert ("motorcycle", "change_lane_to_right", "front_left") in agents(
         "can u make a scooter cutting in from the left lane right in front of ego, snowy night")
+
+
+def test_after_a_reason_clause_the_one_who_acted_acts_again():
+    assert agents("The ego slows down because a tractor is driving slowly ahead, then overtakes it when the "
+                  "oncoming lane is clear.") == [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+
+
+def test_a_chat_message_that_says_the_whole_scene_again_is_read_from_there_with_its_weather():
+    lowered = lower("and also add a scooter. the whole thing: ego car turns right into a side street with a yield "
+                    "sign, a scooter coming from the road on the right, and a van parked in the side street we're "
+                    "turning into. night, heavy rain")
+    assert len(list(lowered.scenario.agents())) == 3
+    lowered = lower("Same as our right turn at a stop sign, but swap the cyclist for a motorcycle and make it foggy at "
+                    "dawn. So: the ego comes to a stop at the stop sign while a motorcycle comes straight through "
+                    "from the road on the left, then the ego turns right.")
+    assert (lowered.scenario.weather.condition, lowered.scenario.weather.time) == ("fog", "dawn")
+    assert not any(a.type == "cyclist" for a in lowered.scenario.agents())
+
+
+def test_the_extra_one_is_one_more():
+    said = agents("so: ego turns right at the traffic lights, a car waiting on the street we turn into, and the extra "
+                  "car following behind us")
+    assert ("car", "go_straight", "back") in said and ("car", "stop", "at_the_destination") in said
+
+
+def test_both_after_a_pair_just_counted_is_the_pair():
+    assert agents("ego on a 3 lane highway, two cars ahead of us in our lane both braking to a stop") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]
+
+
+def test_a_manoeuvre_naming_a_review_is_no_manoeuvre():
+    said = agents("For the merge-safety review, please build a scene in which the ego car drives in the right lane "
+                  "and a truck on the hard shoulder ahead pulls out into our lane.")
+    assert ("car", "go_straight", "ego") in said
+
+
+def test_the_lane_one_swerved_in_from_stays_its_lane_when_the_ego_stops_behind_it():
+    said = agents("A sedan just ahead of the ego in the left lane swerves into our path and stops, and our vehicle "
+                  "must come to a stop behind it.")
+    assert ("car", "block_the_ego", "front_left") in said

@@ -976,6 +976,8 @@ ASIDES = (  # (pattern, replacement): what a text says around its scene, read fo
      r"expected|wanted)\b", " "),  # "a lane change by the SV is not required": not made
     (r"\blane[- ]chang(?:e|ing) (planner|controller|module|logic|algorithm|policy|stack|behaviou?r|decision|"
      r"decisions|capability|performance|model)\b", r"\1"),  # "evaluates the lane-change planner": no lane change
+    (r"\b(?:merge|merging|cut[- ]in|overtaking|braking)[- ](safety|review|team|kpis?|metrics?)\b", r"\1"),  # "for the
+    # merge-safety review": what a review is about, no merge
     (r"\b(waiting|queuing|queueing) passengers\b", r"\1 people"),  # "three waiting passengers stand on the
     # pavement": people at the stop, not on board
     (r"\bpassengers(?= (?:are |were )?(?:standing|waiting|queuing|queueing|stand|wait|queue) (?:on|at) the "
@@ -1268,6 +1270,26 @@ def rule_before_its_scene(text: str) -> str:
     return text[m.end():]
 
 
+RESTATED = re.compile(r"(?:^|(?<=[.!?]\s))(?:(?:ok|okay|right|so)[ ,]+)?(?:the |so the |this is the |here is the |"
+                      r"here's the )?(?:(?:whole|full|complete|entire) (?:thing|scene|scenario|setup|set up|picture)"
+                      r"|so|everything together|all together)\s*:\s*", re.I)
+
+
+def _restated(text: str) -> str:
+    """'and also add a scooter. the whole thing: ego car turns right ...': a chat message that says a change and
+    then the whole scene again; the scene is what follows the last such 'whole thing:', with the weather the change
+    asked for ('make it foggy at dawn. So: ...')."""
+    found = list(RESTATED.finditer(text))
+    if not found or found[-1].end() == len(text):
+        return text
+    words = re.findall(r"[a-z]+", text[:found[-1].start()].lower())
+    phrases = lexicon().phrases
+    weather = [" ".join(words[k:k + n]) for n in (3, 2, 1) for k in range(len(words) - n + 1)
+               if phrases.get(tuple(words[k:k + n]), ("",))[0] == "weather"]
+    said = [w for w in weather if not any(w != other and w in other for other in weather)]
+    return (f"Weather: {', '.join(said)}. " if said else "") + text[found[-1].end():]
+
+
 PROPER_NAME = re.compile(r"(?<=[a-z0-9,;] )([A-Z][a-z]{3,})\b")  # "near Kegworth": a place, not a Kenworth
 
 
@@ -1275,7 +1297,7 @@ def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
     lex = lexicon()
-    text = MARKDOWN_EMPHASIS.sub(r"\2", CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _comment_block(text))))
+    text = MARKDOWN_EMPHASIS.sub(r"\2", CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _restated(_comment_block(text)))))
     text = _without_members_described(
         _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(_emoji_breaks(text)))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
@@ -1291,6 +1313,8 @@ def tokenize(text: str) -> list[Token]:
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
     text = re.sub(r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1", text)  # "a 3+ lane highway": at least three lanes
+    text = re.sub(r"\bthe (?:extra|additional) (?=[a-z]+\b)", "another ", text)  # "and the extra car following
+    # behind us": one more, not one named before
     text = re.sub(r"\b((?:street|road|side road|side street|avenue|lane) (?:that |which )?)(the ego|i|we|you) "
                   r"((?:is |am |are |was |were )?(?:turning|turns|turned|turn)) (left|right) (into|onto)\b",
                   r"\1\2 \3 \5, while \2 \3 \4", text)  # "into the same street the ego is turning left into":

@@ -5987,6 +5987,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             if u.word == "both" and len(named_here) >= 2:  # "a car from the left lane and a motorcycle from the right
                 phrases.append(NounPhrase(named_here[-2], i, i, plural=True, group=named_here[-2:]))  # lane both
                 continue  # cut in": the two just named
+            if u.word == "both" and named_here and named_here[-1].count == 2:
+                phrases.append(NounPhrase(named_here[-1], i, i, plural=True, group=[named_here[-1]]))
+                continue  # "two cars ahead of us in our lane both braking to a stop": the pair just named
             if u.word == "both" and [x.word for x in units[i + 1:i + 2]] == ["of"] and i + 2 < len(units) and \
                     units[i + 2].category == "agents" and units[i + 2].meaning == "ego":
                 group = [e for e in recent if not e.is_ego][-1:] + [_ego_entity(r, stage)]  # "both of us": the
@@ -8360,9 +8363,10 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
         # where traffic keeps left), ahead unless said otherwise
         if not f & {"behind", "level", "overtaking"}:
             f.add("ahead")
-    if "ego_behind" in f and e.road_type != "shoulder" and not f & {"bare_left", "bare_right", "level", "behind"}:
+    if "ego_behind" in f and e.road_type != "shoulder" and not f & {"bare_left", "bare_right", "level", "behind",
+                                                                      "into_ego_lane"}:
         f -= {"side_left", "side_right"}  # "the ego comes up behind a truck broken down in the right lane": the lane
-        # named is the ego's too
+        # named is the ego's too (not one it swerved in from: "swerves into our path and stops ... behind it")
     side = _side_of(f)
     lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     if "screening" in f and side and action == "stop" and not f & {"behind", "level"}:
@@ -8611,7 +8615,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
                 main_subject and _returns_to_the_main_subject(clause.units):
             previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
-        if k > 0 and clauses[k - 1].link in UNTIL_LINKS and main_subject and clause.units and \
+        if k > 0 and clauses[k - 1].link in SIDE_LINKS and main_subject and clause.units and \
                 clause.units[0].category == "actions":
             previous = main_subject  # "held position until the pickup had passed, then completed the left": the
             # one who waited acts again, not the one waited for
@@ -8650,7 +8654,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                     e.stage -= 1
                     e.actions = [(a[0] - (a[0] == clause.stage),) + a[1:] for a in e.actions]
         _boxed_in_by_those_listed(r, clause, before, ego_blocked, boxed)
-        if subject and clause.antecedent is None and clause.link not in UNTIL_LINKS and not aside:
+        if subject and clause.antecedent is None and clause.link not in SIDE_LINKS and not aside:
             main_subject = subject
         more_doers = clause.link == "and" and k > 0 and clauses[k - 1] is r.passive  # "by a van and a bus"
         if clause.units and (clause.units[0].word == "by" or more_doers) and not _has_verb(clause.units) and \
@@ -8830,6 +8834,8 @@ OPERATED_FROM = {"in", "on", "of", "driving", "drove", "riding", "operating", "o
 JUNCTION_NOUNS = {"junction", "intersection", "crossroads"}
 PARTICIPLE_LINKS = {"before", "while", "whilst", "when"}  # "... before turning left": said of the clause's subject
 UNTIL_LINKS = {"until", "till", "before"}  # a clause of what is waited for: its subject is not the story's
+SIDE_LINKS = UNTIL_LINKS | {"because", "since"}  # and of a reason: "slows because a tractor is ahead, then
+# overtakes it": the one who slowed acts again
 
 
 def _returns_to_the_main_subject(units: list[Unit]) -> bool:
