@@ -9865,3 +9865,24 @@ def test_the_lane_one_swerved_in_from_stays_its_lane_when_the_ego_stops_behind_i
     said = agents("A sedan just ahead of the ego in the left lane swerves into our path and stops, and our vehicle "
                   "must come to a stop behind it.")
     assert ("car", "block_the_ego", "front_left") in said
+
+
+def test_in_the_lane_to_its_right_places_the_one_named_beside_the_subject():
+    said = agents("Ego turning right at a signalised intersection with a cyclist going straight in the lane to its "
+                  "right.")
+    assert ("cyclist", "go_straight", "right") in said
+    assert ("motorcycle", "change_lane_to_right", "left") in agents(
+        "I worry for these delivery lads on mopeds weaving through the traffic on a three-lane city road. One of them "
+        "cuts in front of the car from the lane on its left, and another is undertaking on the right, behind.")
+
+
+def test_the_one_the_ego_moves_in_behind_is_in_the_lane_it_moves_into():
+    assert agents("ego merges into the right lane behind a slow van") == [
+        ("car", "change_lane_to_right", "ego"), ("car", "go_straight", "front_right")]
+    assert ("truck", "go_straight", "front") in agents("You are following a lorry and intend to pull out into the "
+                                                       "right-hand lane. Get as close as possible behind the lorry.")
+
+
+def test_just_ahead_after_cutting_into_the_egos_lane_is_where_the_cut_in_ends():
+    assert ("car", "change_lane_to_left", "right") in agents(
+        "A van travelling in the lane to our right cut into the ego's lane just ahead of it.")

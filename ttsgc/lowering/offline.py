@@ -6322,6 +6322,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             u.meaning = "into_ego_lane"  # "moves ... into the ego's lane", "is coming in ego lane"
         if u.meaning == "ahead" and _swerves_in_front(units, i):
             u.meaning = "into_ego_lane"  # "swerves right in front of me": where the cut-in ends, not where it began
+        if u.meaning == "ahead" and i > 0 and units[i - 1].meaning == "into_ego_lane":
+            u.meaning = "into_ego_lane"  # "cut into the ego's lane just ahead of it": where the cut-in ends
         if u.meaning == "ahead" and _turns_in_front(units, i):
             u.meaning = "turned_in_front"  # "turns right in front of me": ahead, or across from its side road
         possessor = next((np for np in phrases if np.index == i - 1 and np.entity is not None and
@@ -6345,9 +6347,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
             u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
-                not any(e in subject for e in owner) and not in_its_place and not ego_as_it:
+                not any(e in subject for e in owner) and not in_its_place and not ego_as_it and \
+                not ([t.word for t in u.tokens[:2]] == ["in", "the"] and "lane" in {t.word for t in u.tokens}):
             r.mark(u)
-            continue  # "pass the slow truck on its left": a side of the truck, not the truck's place
+            continue  # "pass the slow truck on its left": a side of the truck, not the truck's place ("with a
+            # cyclist in the lane to its right": the lane beside the subject, where the cyclist is)
         if u.meaning in ("side_left", "side_right") and _side_of_passing_the_ego(units, i) and owner and \
                 all(not e.is_ego and {"behind", "moves_out"} <= e.features for e in owner):
             for e in owner:  # "the van behind me pulled out to overtake me on the right": out of the ego's lane,
@@ -6399,10 +6403,14 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 if reference is not None and not reference.is_ego and u.meaning in INVERSE and not later and \
                         not started and not said_first:
                     reference.features.add(INVERSE[u.meaning])  # "the ego follows behind a truck": it is ahead
-                    if u.meaning == "behind" and reference.stage == stage and not any(
-                            a[0] == stage and a[4] in LANE_MOVES | {"lane_left", "lane_right"} for a in e.actions):
+                    moving = any(a[0] == stage and a[4] in LANE_MOVES | {"lane_left", "lane_right"} for a in e.actions)
+                    if u.meaning == "behind" and reference.stage == stage and not moving:
                         reference.features.add("ego_behind")  # in the ego's own lane, whichever lane that is
                         # (not "merged right into lane one behind the coach": the lane it moves into)
+                    elif u.meaning == "behind" and reference.stage == stage and e.is_ego and any(
+                            x.category == "actions" and x.meaning in LANE_MOVES | {"lane_left", "lane_right"}
+                            for x in units[:i]):
+                        reference.features.add("target_lane")  # "merges into the right lane behind a slow van"
                 r.mark(u)
                 continue
             if reference is not None and not reference.is_ego and u.category == "positions" and \
