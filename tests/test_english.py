@@ -9886,3 +9886,15 @@ def test_the_one_the_ego_moves_in_behind_is_in_the_lane_it_moves_into():
 def test_just_ahead_after_cutting_into_the_egos_lane_is_where_the_cut_in_ends():
     assert ("car", "change_lane_to_left", "right") in agents(
         "A van travelling in the lane to our right cut into the ego's lane just ahead of it.")
+
+
+def test_a_bike_lane_runs_along_the_kerb():
+    assert ("cyclist", "go_straight", "right") in agents("The ego yields to a cyclist on the bike lane before "
+                                                         "turning right.")
+    assert road("45 mph limit, no bike lane. A cyclist rides on the shoulder ahead. Please put in a bike lane.").lanes \
+        in (None, 1)
+
+
+def test_flashing_its_lights_is_said_of_the_one_that_flashes_and_ends_no_clause_of_the_ego():
+    assert agents("The car coming the other way flashes its lights and the ego turns left in front of it.") == [
+        ("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]

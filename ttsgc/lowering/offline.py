@@ -293,7 +293,8 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
     for u in units:
         words = [t.word for t in u.tokens]
         kerb = "nearside" in words or "near" in words and "side" in words or "inside" in words or \
-            bool({"kerb", "curb", "kerbside", "curbside"} & set(words))
+            bool({"kerb", "curb", "kerbside", "curbside"} & set(words)) or \
+            "lane" in words and bool({"bike", "cycle", "bicycle"} & set(words))
         far = "offside" in words or "off" in words and "side" in words or "median" in words
         if u.category == "positions" and u.meaning in swap and (kerb and u.meaning in ("side_right", "from_right")
                                                                or far and u.meaning in ("side_left", "from_left")):
