@@ -9899,3 +9899,19 @@ def test_a_bike_lane_runs_along_the_kerb():
 def test_flashing_its_lights_is_said_of_the_one_that_flashes_and_ends_no_clause_of_the_ego():
     assert agents("The car coming the other way flashes its lights and the ego turns left in front of it.") == [
         ("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]
+
+
+def test_a_state_said_before_the_ego_is_the_egos():
+    assert agents("A cyclist overtakes the stationary ego on the right and then turns right at the junction.") == [
+        ("car", "stop", "ego"), ("cyclist", "go_straight", "back_right")]
+    assert ("truck", "go_straight", "back_right") in agents("A truck passed ego on the right.")
+
+
+def test_walking_a_dog_across_the_road_is_crossing_it():
+    assert ("pedestrian", "cross_the_road", "front") in agents("A man walks his dog across the road in front of "
+                                                               "the ego.")
+
+
+def test_a_skateboarder_rolling_into_the_road_rides_across_it():
+    assert ("cyclist", "cross_the_road", "front_left") in agents("A teenager on a skateboard rolls into the road from "
+                                                                 "the left.")

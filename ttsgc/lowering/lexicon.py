@@ -1313,6 +1313,9 @@ def tokenize(text: str) -> list[Token]:
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
     text = re.sub(r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1", text)  # "a 3+ lane highway": at least three lanes
+    text = re.sub(r"\b(walks?|walked|walking|pushe?s?|pushed|pushing|wheels?|wheeled|wheeling) (his|her|their|a|the) "
+                  r"(dog|pram|stroller|buggy|pushchair|trolley|cart) (across|over) (the|a) (road|street|crossing|zebra|"
+                  r"crosswalk)\b", r"\1 \4 \5 \6 with \2 \3", text)  # "walks his dog across the road": he crosses
     text = re.sub(r"\bthe (?:extra|additional) (?=[a-z]+\b)", "another ", text)  # "and the extra car following
     # behind us": one more, not one named before
     text = re.sub(r"\b((?:street|road|side road|side street|avenue|lane) (?:that |which )?)(the ego|i|we|you) "

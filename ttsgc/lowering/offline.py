@@ -3943,8 +3943,9 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             in_determiner = True
         elif in_determiner:
             break
-        elif units[head].meaning == "ego" and u.category == "actions":
-            break  # "passed ego on right": the verb before the ego is no premodifier of it
+        elif units[head].meaning == "ego" and u.category == "actions" and not (
+                k > lo and units[k - 1].word in DETERMINERS and k + 1 == head):
+            break  # "passed ego on right": the verb before the ego is no premodifier of it ("the stationary ego" is)
         elif u.category == "word" and u.word in DISTANCE_UNITS | {"foot", "inch", "inches", "percent"} | CLOCK_WORDS:
             break  # "missed me by like a foot mom said": a measure ends the phrase before it (texts lack commas);
             # so does a time ("at 0815 hrs V1 ...")
@@ -4436,6 +4437,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             ego.type = kind
         ego.aliases.add(u.base)  # every name the ego is given ("an automated shuttle bus ... the shuttle")
         _ego_listed_in_a_group(r, ego, units, first)
+        for m in modifiers:
+            if m.category == "actions":
+                _modify(r, ego, m, stage, strength=1)  # "a cyclist overtakes the stationary ego": it stands
         return NounPhrase(ego, head, first)
     if not is_ego and _scenery_only(units, head):
         return NounPhrase(None, head, first)  # "passengers waiting at the stop: scenery only"
