@@ -9915,3 +9915,11 @@ def test_walking_a_dog_across_the_road_is_crossing_it():
 def test_a_skateboarder_rolling_into_the_road_rides_across_it():
     assert ("cyclist", "cross_the_road", "front_left") in agents("A teenager on a skateboard rolls into the road from "
                                                                  "the left.")
+
+
+def test_with_one_on_its_left_places_that_one_beside_the_subject():
+    said = agents("Heavy traffic on a three-lane highway: the ego is in the center lane with a truck on its left and "
+                  "a car on its right.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("car", "go_straight", "right"),
+                            ("truck", "go_straight", "left")]
+    assert ("truck", "go_straight", "front") in agents("The ego passes the slow truck on its left.")

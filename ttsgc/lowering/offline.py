@@ -6351,8 +6351,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
             u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
+        accompanied = any(np.entity is owner[0] and np.first > 0 and units[np.first - 1].word == "with"
+                          for np in phrases) if owner else False  # "the ego, with a truck on its left": its own
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
-                not any(e in subject for e in owner) and not in_its_place and not ego_as_it and \
+                not any(e in subject for e in owner) and not in_its_place and not ego_as_it and not accompanied and \
                 not ([t.word for t in u.tokens[:2]] == ["in", "the"] and "lane" in {t.word for t in u.tokens}):
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place ("with a
