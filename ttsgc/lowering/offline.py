@@ -3729,16 +3729,25 @@ def _in_an_aside(tokens: list[Token], u: Unit) -> bool:
     t = u.tokens[0]
     sentence = _sentence(tokens, t.sentence)
     at = t.index - sentence[0].index
-    words = [x.word for x in sentence]
-    for k in range(at + 1):
-        said = next((p for p in DEFINING + COMPARING if tuple(words[k:k + len(p)]) == p), None)
+    if at >= len(sentence):
+        return False  # (a token read apart from its sentence's list holds no aside)
+    comma = next((k for k in range(at, -1, -1) if sentence[k].word == ","), -1)  # an aside that began before the
+    # last comma ended there: only the words since, and a pattern's length before, can open one that holds `at`
+    for k in range(max(0, comma - ASIDE_LONGEST), at + 1):
+        if sentence[k].word not in ASIDE_OPENERS:
+            continue
+        said = next((p for p in DEFINING + COMPARING if tuple(x.word for x in sentence[k:k + len(p)]) == p), None)
         if said is None:
             continue
         start = k + len(said)
-        end = next((e for e in range(start, len(words)) if words[e] == ","), len(words))
+        end = next((e for e in range(start, len(sentence)) if sentence[e].word == ","), len(sentence))
         if k <= at < end:
             return True
     return False
+
+
+ASIDE_OPENERS = {p[0] for p in DEFINING + COMPARING}
+ASIDE_LONGEST = max(len(p) for p in DEFINING + COMPARING)
 
 
 @lru_cache(maxsize=1)
@@ -4217,11 +4226,14 @@ def _said_of_a_habit(r: _Reader, e: Entity) -> bool:
     """'Cyclists use this road a lot too', 'There's usually a lollipop lady there in the mornings': a road user in a
     sentence of what usually happens is no agent of the scene told, when the text tells that scene in the past in
     another sentence (a lesson plan's 'there's usually a jogger crossing' is its scene)."""
-    sentence = r.tokens[e.said_at].sentence if e.said_at >= 0 else None
-    words = [t.word for t in r.tokens if t.sentence == sentence]
+    if e.said_at < 0:
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    if not _says_any([t.word for t in _sentence(r.tokens, sentence)], HABIT):
+        return False
     told_in_the_past = any(t.sentence != sentence and (t.word in PAST_FORMS or t.word.endswith("ed") and
                                                       t.base != t.word) for t in r.tokens)
-    return sentence is not None and told_in_the_past and _says_any(words, HABIT) and any(
+    return told_in_the_past and any(
         f is not e and (f.is_ego or f.count > 0) and f.said_at >= 0 and r.tokens[f.said_at].sentence != sentence
         for f in r.entities)
 
@@ -9507,13 +9519,15 @@ def _the_camera_car(r: _Reader) -> None:
             ego.head not in ("ego", "we", "us") or ego.features):
         return
     words = [t.word for t in r.tokens]
+    cues = [k for k, t in enumerate(r.tokens) if t.possessive or t.word in CAMERA_WORDS]  # where a camera is named
 
     def filmed(e: Entity) -> bool:
         heads = {name.split()[-1] for name in e.aliases | {e.head} if name}
         if e.head == "driver" and e.said_at >= 0:  # "the driver of a blue hatchback": the hatchback's
             heads |= {x.word for x in r.tokens[e.said_at + 1:e.said_at + 6]
                       if x.sentence == r.tokens[e.said_at].sentence}
-        for k, t in enumerate(r.tokens):
+        for k in cues:
+            t = r.tokens[k]
             if t.word in heads and t.possessive and (words[k + 1:k + 2] and words[k + 1] in CAMERA_WORDS or
                                                     words[k + 1:k + 3] and words[k + 1] == "own" and
                                                     words[k + 2:k + 3] and words[k + 2] in CAMERA_WORDS):
