@@ -1055,10 +1055,12 @@ def test_a_word_of_english_is_never_read_as_a_slip_of_another():
     ("The vehicle had been travelling at about 30 km/h when a pedestrian stepped off the kerb on the right "
      "and crossed in front of it.",
      [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
-    # the ego braking without coming to a halt is a reaction, not its action
+    # the ego braking without coming to a halt is a reaction, not its action; "directly ahead" after "merged into
+    # its lane" is where the merge ends, so the SUV starts in the lane to its left (CONVENTIONS: "in the lane to my
+    # left" that cuts in is left)
     ("The AV was travelling in the right lane when a silver SUV in the lane to its left merged into its lane "
      "directly ahead. The AV braked to avoid a collision.",
-     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
+     [("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]),
     # a bare verb opening a clause and done to the agent just named is an instruction to the ego
     ("stopped bus ahead, overtake it on the left",
      [("bus", "stop", "front"), ("car", "change_lane_to_left", "ego")]),
@@ -1516,7 +1518,8 @@ def test_a_wide_vocabulary_of_road_users(noun, agent_type):
 @pytest.mark.parametrize("prompt, expected", [
     ("The estate car ahead of us comes to a standstill.", ("car", "stop", "front")),
     ("A hatchback in the left lane nudges into our lane.", ("car", "change_lane_to_right", "left")),
-    ("A van on the right drifts over into the ego's lane ahead of it.", ("car", "change_lane_to_left", "front_right")),
+    ("A van on the right drifts over into the ego's lane ahead of it.", ("car", "change_lane_to_left", "right")),
+    # ("ahead of it" after "into the ego's lane" is where the drift ends: it starts level, on the right)
     ("A pensioner steps off the kerb in front of us.", ("pedestrian", "cross_the_road", "front")),
     ("A lorry sits idling ahead of the ego.", ("truck", "stop", "front")),
     ("A pickup on the offside overtakes us.", ("car", "go_straight", "back_right")),  # the offside: a British word
@@ -2668,7 +2671,7 @@ def test_place_names_that_are_traffic_words_name_no_agent_or_stop():
 
 def test_the_guy_after_a_rider_is_that_rider():
     assert agents("A cyclist wobbled in the bike lane ahead of us until the guy turned right.") == [
-        ("car", "go_straight", "ego"), ("cyclist", "turn_right", "front")]
+        ("car", "go_straight", "ego"), ("cyclist", "turn_right", "front_right")]  # the bike lane is at the kerb
 
 
 def test_easing_into_a_lane_changes_lane():
@@ -6201,8 +6204,8 @@ def test_a_vehicle_declared_the_ego_by_another_name_of_the_role_is_the_ego(promp
     ("The automated car was waiting at the lights while a cyclist crossed in front of it. Once the cyclist had "
      "gone, the saloon turned right.", [("car", "stop", "ego"), ("car", "turn_right", "ego"),
                                         ("cyclist", "cross_the_road", "front")]),
-    ("Can we show the hatchback changing to the left lane behind a slow bus?",
-     [("bus", "go_straight", "front"), ("car", "change_lane_to_left", "ego")]),
+    ("Can we show the hatchback changing to the left lane behind a slow bus?",  # the bus is in the lane it moves to
+     [("bus", "go_straight", "front_left"), ("car", "change_lane_to_left", "ego")]),
     ("The driverless lorry waits at the junction for a cyclist passing from the left. Afterwards, the HGV turns left.",
      [("cyclist", "go_straight", "road_of_left_turn"), ("truck", "stop", "ego"), ("truck", "turn_left", "ego")]),
 ])

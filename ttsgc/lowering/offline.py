@@ -5366,6 +5366,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
                 e.features.add("on_sidewalk")
+            if u.meaning == "shoulder" and {t.word for t in u.tokens} & {"verge", "verges", "grass", "grassy"}:
+                e.features.add("on_verge")  # the grass beside the road, where people walk
         elif u.meaning.startswith("compass_"):
             _add_compass(r, e, u)
         else:
@@ -8535,11 +8537,11 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "stop":
         if e.type != "pedestrian" and position == "front" and "stays_long" in e.features:
             return "block_the_ego"  # stopped in front of the ego for minutes: the ego cannot go on
-        if e.type == "pedestrian" and e.road_type == "shoulder" and "on_sidewalk" not in e.features:
+        if e.type == "pedestrian" and e.road_type == "shoulder" and not e.features & {"on_sidewalk", "on_verge"}:
             return "stop"  # "the driver standing on the hard shoulder beside it": stood on the road's shoulder, not a
             # pavement
-        if e.type == "pedestrian" and ("on_sidewalk" in e.features or e.road_type == "sidewalk"):
-            return "on_the_sidewalk"  # standing on the pavement
+        if e.type == "pedestrian" and (e.features & {"on_sidewalk", "on_verge"} or e.road_type == "sidewalk"):
+            return "on_the_sidewalk"  # standing on the pavement or the verge
         if e.type == "pedestrian" and "waits_to_cross" in e.features and position != "near_the_crosswalk":
             return "on_the_sidewalk"  # waiting to cross where there is no crossing: at the kerb, on the pavement
         if e.type == "pedestrian" and any(a[4] == "walk" for a in e.actions) and not e.features & {"crosswalk",
