@@ -1649,8 +1649,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word in LAMPS:
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "a police car stopped with its lights flashing":
         # its lamps, no movement
-    if m.category == "positions" and m.meaning == "level" and [t.word for t in tokens[m.end:m.end + 2]] in (
-            [a, c] for a in ("a", "the") for c in ("crosswalk", "crossing", "zebra")):
+    if m.category == "positions" and m.meaning == "level" and after[:1] in (["a"], ["the"]) and \
+            after[1:2] in (["crosswalk"], ["crossing"], ["zebra"]):
         return [Unit(m.start, m.end, "positions", "crosswalk", span)]  # "standing right next to a crosswalk": by it
     if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
             (m.end >= len(tokens) or tokens[m.end].word != "of" or [t.word for t in tokens[m.end + 2:m.end + 3]] in (
@@ -3730,7 +3730,7 @@ def _in_an_aside(tokens: list[Token], u: Unit) -> bool:
     sentence = _sentence(tokens, t.sentence)
     at = t.index - sentence[0].index
     if at >= len(sentence):
-        return False  # (a token read apart from its sentence's list holds no aside)
+        return False  # a unit placed past its sentence's tokens opens no aside (as the slices before read it)
     comma = next((k for k in range(at, -1, -1) if sentence[k].word == ","), -1)  # an aside that began before the
     # last comma ended there: only the words since, and a pattern's length before, can open one that holds `at`
     for k in range(max(0, comma - ASIDE_LONGEST), at + 1):
