@@ -94,6 +94,7 @@ ACTION_RANK = {  # the more specific predicate wins among equally strong ones
     "go_straight": 1, "move": 1,
 }
 SIDES = ("left", "right")
+OTHER_SIDE = {"left": "right", "right": "left"}
 COMPASS_OPPOSITE = {"compass_north": "compass_south", "compass_south": "compass_north",
                     "compass_east": "compass_west", "compass_west": "compass_east"}
 COMPASS_LEFT = {"compass_north": "compass_west", "compass_east": "compass_north", "compass_south": "compass_east",
@@ -263,7 +264,7 @@ _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the e
 def _overtaking_side(key: str) -> str:
     """The side an unsaid overtaking takes: the conventions' (right-hand traffic) unless the text keeps left."""
     side = UNSPECIFIED[key]
-    return {"left": "right", "right": "left"}[side] if _KEEPS_LEFT.get() else side
+    return OTHER_SIDE[side] if _KEEPS_LEFT.get() else side
 TEST_PROTOCOL = {"vut", "target", "ncap", "kmh", "km", "kph", "epta", "ebta", "cpnc", "cpfa", "cpla", "gvt", "sut"}
 
 
@@ -6365,11 +6366,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
             u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
-        accompanied = any(np.entity is owner[0] and np.first > 0 and units[np.first - 1].word == "with"
-                          for np in phrases) if owner else False  # "the ego, with a truck on its left": its own
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
-                not any(e in subject for e in owner) and not in_its_place and not ego_as_it and not accompanied and \
-                not ([t.word for t in u.tokens[:2]] == ["in", "the"] and "lane" in {t.word for t in u.tokens}):
+                not any(e in subject for e in owner) and not in_its_place and not ego_as_it and \
+                not ([t.word for t in u.tokens[:2]] == ["in", "the"] and "lane" in {t.word for t in u.tokens}) and \
+                not any(np.entity is owner[0] and np.first > 0 and units[np.first - 1].word == "with"
+                        for np in phrases):  # ("the ego, with a truck on its left": the truck's own place)
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place ("with a
             # cyclist in the lane to its right": the lane beside the subject, where the cyclist is)
@@ -7180,7 +7181,7 @@ def _passing_one_off_the_lanes(r: _Reader, units: list[Unit], k: int, side: str)
     last = next((e for e in reversed(r.entities) if not e.is_ego and e.count >= 1 and e.type != "pedestrian"), None)
     if not said_again or last is None:
         return False
-    other = {"left": "right", "right": "left"}[side]
+    other = OTHER_SIDE[side]
     in_the_other_lane = f"side_{other}" in last.features and not last.features & {"parked", "ego_behind"} and (
         "lane_said" in last.features or not any(a[4] == "stop" for a in last.actions))
     # (a van parked on the right, or "behind a truck in the right lane", is passed by pulling out round it)
@@ -8451,7 +8452,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
             "over_the_centre_line" not in f:  # (on a road of one lane each way it passes in the lane coming the
         # other way, behind the ego in its own: "two motorbikes came past me on the approach to a blind bend")
         side = _overtaking_side("side_of_an_overtaker")
-        side = {"left": "right", "right": "left"}[side] if "undertaking" in f else side  # passing on the kerb side
+        side = OTHER_SIDE[side] if "undertaking" in f else side  # passing on the kerb side
     if action == "block" and side and ("from_lane" in f or f"from_{side}" in f) and not behind:
         ahead = True  # "cuts off the ego from the right adjacent lane"
     if side is None and "from_kerb" in f and action == "cut_in" and not f & {"ego_lane", "behind"}:
@@ -9177,7 +9178,7 @@ SIDE_WORDS = {"left": "left", "right": "right", "nearside": "right", "offside": 
 def _kerb_side(word: str) -> str:
     """The side a side word names: the nearside is the kerb's, on the left where traffic keeps left."""
     side = SIDE_WORDS[word]
-    return {"left": "right", "right": "left"}[side] if word in ("nearside", "offside") and _KEEPS_LEFT.get() else side
+    return OTHER_SIDE[side] if word in ("nearside", "offside") and _KEEPS_LEFT.get() else side
 
 
 def _out_from_the_parked_row(r: _Reader) -> None:
@@ -9202,7 +9203,7 @@ def _out_from_the_parked_row(r: _Reader) -> None:
         if e.type != "pedestrian" or not any(a[4] == "cross" for a in e.actions) or \
                 _side_of(e.features) or e.features & {"road_left", "road_right", "crosswalk"} or e.said_at < 0:
             continue
-        sentence = [t.word for t in r.tokens if t.sentence == r.tokens[e.said_at].sentence]
+        sentence = [t.word for t in _sentence(r.tokens, r.tokens[e.said_at].sentence)]
         if any(w in ("between", "behind") and set(sentence[k + 1:k + 4]) & {"them", "parked", "cars", "vehicles"}
                for k, w in enumerate(sentence)):
             e.features.add(f"from_{side}")
