@@ -9926,3 +9926,147 @@ def test_with_one_on_its_left_places_that_one_beside_the_subject():
     assert sorted(said) == [("car", "go_straight", "ego"), ("car", "go_straight", "right"),
                             ("truck", "go_straight", "left")]
     assert ("truck", "go_straight", "front") in agents("The ego passes the slow truck on its left.")
+
+
+def test_dodge_is_a_verb_unless_a_determiner_makes_it_the_make():
+    assert agents("The ego drives on. A cyclist dodging a pothole swerves into its lane.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "change_lane_to_left", "front_right")]
+    assert agents("The ego drives straight. A pedestrian darts out and the ego has to dodge him.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert ("car", "change_lane_to_left", "front_right") in agents("The ego drives straight; a red Dodge pulls out "
+                                                                   "from the right.")
+
+
+def test_the_noun_after_a_lane_and_behind_places_the_subject_and_takes_no_verb():
+    assert agents("Ego in the middle lane. A motorcycle in the left lane behind ego cuts into our lane.") == [
+        ("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_right", "back_left")]
+
+
+def test_lead_alone_before_a_finite_verb_is_the_lead_vehicle_said_again():
+    assert agents("Ego following a lead vehicle at 40 mph, lead slams on its brakes and comes to a full stop.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+    assert agents("Ego follows a truck; this could lead to a crash.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+
+
+def test_a_test_tracks_soft_targets_are_cars():
+    assert agents("CCRb, 12 m headway. GST brakes hard, down to a standstill.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+def test_two_compound_names_of_one_last_word_name_two_agents():
+    said = agents("VUT approaching the zebra. Kid dummy waiting at the kerb by the crossing, steps out and crosses. "
+                  "Adult dummy on the footway to the right further up, just walking along, not crossing.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+                            ("pedestrian", "on_the_sidewalk", "front_right")]
+    assert ("pedestrian", "on_the_sidewalk", "right") in agents(
+        "The VUT drives. Child dummy crosses at the zebra. Adult dummy on the footway to the right, just walking "
+        "along.")
+
+
+def test_losing_the_light_is_dusk_and_no_traffic_light():
+    scene = lower("Bike target in the VUT's lane riding away. Light rain, running it before we lose the light.")
+    assert scene.scenario.weather.time == "sunset"
+    assert "traffic_light" not in scene.scenario.road.required_signals
+
+
+def test_like_someone_after_an_agent_asked_for_describes_that_agent():
+    assert agents("One more with a pedestrian, like someone jaywalking across the road from the left.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left")]
+
+
+def test_that_same_street_is_the_street_the_ego_turns_into():
+    assert ("car", "stop", "at_the_destination") in agents("The ego turns left into a side street. A van is parked "
+                                                           "on that street.")
+    assert ("ambulance", "go_straight", "road_of_left_turn") in agents(
+        "The ego waits to turn right onto a boulevard when an ambulance races along that boulevard from the left.")
+
+
+def test_a_place_set_off_after_a_pronoun_object_places_the_subject():
+    said = agents("Four-way stop. The ego stops. A hatchback pulls up on the road to its right, and a pickup across "
+                  "from it, on the opposite road, is turning left.")
+    assert ("car", "stop", "road_of_right_turn") in said and ("car", "turn_left", "road_of_straight") in said
+
+
+def test_a_state_after_the_object_of_finding_is_the_objects():
+    assert agents("The ego finds a van double-parked ahead.") == [("car", "go_straight", "ego"),
+                                                                  ("car", "stop", "front")]
+
+
+def test_choices_weighed_are_none_made():
+    assert agents("The ego approaches a bus stopped ahead. The ego has to decide whether to pull around the bus "
+                  "or wait.") == [("bus", "stop", "front"), ("car", "go_straight", "ego")]
+
+
+def test_nowhere_near_the_crosswalk_has_one_that_no_one_is_at():
+    prompt = "The ego is turning right at a traffic light when a man crosses the street, nowhere near the crosswalk."
+    assert "crosswalk" in road(prompt).required_objects
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") not in agents(prompt)
+    assert "crosswalk" in road("A man crosses mid-block, nowhere near a crosswalk.").without_objects
+
+
+def test_people_on_the_sidewalk_by_a_vehicle_ahead_are_ahead_on_the_kerb_side():
+    assert ("pedestrian", "on_the_sidewalk", "front_right") in agents(
+        "City bus stopped at a bus stop in ego's lane, two people standing on the sidewalk next to it.")
+
+
+def test_a_sentence_taking_back_the_one_before_leaves_out_whom_it_added():
+    said = agents("Could I get one where the test vehicle is driving and a person crosses at the zebra crossing in "
+                  "front of it. Oh and maybe a second person waiting on the pavement? Actually no, just the one "
+                  "crossing, sorry.")
+    assert said == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+    assert ("pedestrian", "on_the_sidewalk", "right") in agents("The ego drives. A pedestrian waits on the pavement. "
+                                                                "Actually no cars are parked.")
+
+
+def test_weather_denied_past_an_article_is_not_the_weather():
+    assert lower("The ego drives in the rain, normal rain not a storm.").scenario.weather.condition == "mid_rain"
+    assert lower("Carriageway still wet from the earlier rain, after dark.").scenario.weather.condition == "wet"
+
+
+def test_where_traffic_keeps_left_pulling_over_and_the_nearside_lane_are_left():
+    said = agents("Urban dual carriageway. The test car is running in the offside lane when an ambulance comes up "
+                  "behind it. The car pulls over into the nearside lane to let it through.")
+    assert sorted(said) == [("ambulance", "go_straight", "back"), ("car", "change_lane_to_left", "ego")]
+
+
+def test_the_turn_said_first_is_made_when_the_ego_pulls_out_after_waiting():
+    assert stages("T-intxn, ego on minor rd at give way sign, turning L onto main rd. veh from R going straight. "
+                  "ego waits for it, then pulls out.")[-1] == [("ego", "turn_left", None)]
+
+
+def test_sitting_in_a_blind_spot_keeps_pace():
+    assert ("car", "go_straight", "back_right") in agents("The ego drives. A car is sitting in its right rear blind "
+                                                          "spot.")
+
+
+def test_a_lane_change_wanted_is_made_when_said_again_later():
+    said = stages("The ego car wants to move into the right lane, but another vehicle is sitting in its right rear "
+                  "blind spot. The ego should hold its lane until that vehicle passes, and then make the lane "
+                  "change.")
+    assert [s[0] for s in said] == [("ego", "go_straight", None), ("ego", "change_lane_to_right", None)]
+
+
+def test_a_counted_group_said_again_by_its_last_word_and_count_is_that_group():
+    assert agents("Two delivery vans parked on the right. A child comes out from between the two vans.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front_right"), ("car", "stop", "front_right"),
+        ("pedestrian", "cross_the_road", "front_right")]
+
+
+def test_going_by_on_a_side_after_the_ego_moved_over_is_in_its_own_lane():
+    said = stages("ego on 2-lane arterial, L lane. ambulance coming up behind in ego lane. ego moves over to R lane, "
+                  "amb goes by on L. after that ego merges back L.")
+    assert ("ambulance", "go_straight", "back") in said[0] and said[1] == [("ego", "change_lane_to_left", None)]
+
+
+def test_a_word_wondered_about_with_a_question_mark_does_not_end_the_sentence():
+    assert ("firetruck", "stop", "front_right") in agents(
+        "so the ego is on a motorway, and theres a fire engine, sorry, fire truck? whatever its called, stopped on "
+        "the hard shoulder a bit ahead on the right.")
+
+
+def test_a_lane_named_after_the_ego_moved_is_placed_against_its_new_lane():
+    said = stages("Three-lane road. The ego, in the right lane, has to move over into the middle lane. A truck is in "
+                  "the middle lane ahead of it. Then a white van from the right lane forces its way in ahead of it.")
+    assert ("truck", "go_straight", "front_left") in said[0]
+    assert said[1] == [("car", "change_lane_to_left", "front_right")]

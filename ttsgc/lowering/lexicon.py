@@ -1426,6 +1426,9 @@ def tokenize(text: str) -> list[Token]:
                   text)  # "rolled right into the back of me": no side ("turns right into the side road": its turn)
     text = re.sub(r" \((?:all |both )?(?:children|kids|pedestrians|people|adults|cars|vehicles|cyclists|pupils)\)",
                   "", text)  # "ped_1, ped_2, ped_3 (children)": what the listed ones are
+    text = re.sub(r"\?\s+(?:whatever (?:it'?s|they'?re|that'?s) called|or whatever|or something|whatever you call "
+                  r"(?:it|them))\b,?", ",", text)  # "a fire engine, sorry, fire truck? whatever its called, stopped
+    # on the hard shoulder": a word wondered about, the sentence goes on
     text = re.sub(r"\s*=\s*", " is ", text)  # "Actor_1 = wheelchair user", "ego=car"
     text = re.sub(r"\b(\d{1,2})\s?x\b", r"\1", text)  # "2x pedestrians"
     text = re.sub(r" \(([a-z]{2,6}[a-z0-9]?)\)", r" , \1 ,", text)  # "a pedestrian target (EPTa)": its short name

@@ -31,8 +31,8 @@ from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import OTHER_PEOPLE, read_narration
-from ttsgc.lowering.lexicon import (SIGNAL_COLOURS, TOO_LARGE, Match, Token, _lookup, _names_agent, bodies, categories,
-                                    compound_heads, crews, lexicon, loose_names, matches, read_number,
+from ttsgc.lowering.lexicon import (SIGNAL_COLOURS, TOO_LARGE, Match, Token, _lookup, _names_agent, _verbs, bodies,
+                                    categories, compound_heads, crews, lexicon, loose_names, matches, read_number,
                                     rule_before_its_scene, tokenize, typologies)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
@@ -300,6 +300,9 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
         if u.category == "positions" and u.meaning in swap and (kerb and u.meaning in ("side_right", "from_right")
                                                                or far and u.meaning in ("side_left", "from_left")):
             u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
+        if u.category == "actions" and u.meaning == "lane_right" and [t.base for t in u.tokens][:2] in (
+                ["pull", "over"], ["pull", "in"]) and not {"left", "right"} & set(words):
+            u = Unit(u.start, u.end, u.category, "lane_left", u.tokens)  # "pulls over to let it through": to the kerb
         if u.category == "actions" and u.meaning in EXIT_TURNS and "exit" in words and \
                 not {"left", "right"} & set(words):
             u = Unit(u.start, u.end, u.category, EXIT_TURNS[u.meaning], u.tokens)  # "take the third exit"
@@ -1122,9 +1125,16 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
                 out.append(Unit(span[0].start, span[last].end, "positions", "destination", tokens))
                 k = first + last + 1
                 continue
+        if u.category == "positions" and u.meaning == "destination" and k and units[k - 1].tokens[-1].word in \
+                ROAD_NOUNS:
+            until = sentence + 1  # "the street it's turning into": said again as "that same street"
         before = out[-1] if out else None
         done_to = before is not None and (before.category == "actions" and before.meaning == "cross" or
-                                          before.word in INTO_THE_ROAD)
+                                          before.word in INTO_THE_ROAD or before.word in ALONG_A_ROAD and
+                                          (u.word == "that" or k + 1 < len(units) and units[k + 1].word == "same")
+                                          and not any(x.meaning in ("from_left", "from_right")
+                                                      for x in units[k + 1:k + 6] if x.category == "positions"))
+        # (not "raced along that boulevard from the left": from its side)
         if sentence <= until and done_to and u.word in ("it", "there") and u.category == "word":
             out.append(Unit(u.start, u.end, "positions", "destination", u.tokens))
             k += 1
@@ -1142,6 +1152,7 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
     return out
 
 
+ALONG_A_ROAD = {"down", "along", "up", "on", "in"}  # "riding the wrong way down that same street"
 NOT_STREETS = {"traffic", "view", "place", "position", "line", "gear", "reverse", "park", "it", "them", "him", "her"}
 
 
@@ -1505,6 +1516,8 @@ def _an_unknown_noun_ends_the_phrase(tokens: list[Token], k: int) -> bool:
         tokens[k + 1].base in known.function_words
 
 
+RETURNING = {"move", "merge", "pull", "swing", "cut", "go", "get", "come", "pop", "drift", "steer", "tuck", "slot",
+             "change", "head", "return", "ease", "nip", "dive", "switch"}  # "... back left": back to that lane
 KEEPERS = {"keep", "prevent", "stop", "bar", "hinder", "deter", "discourage"}
 
 
@@ -1560,6 +1573,25 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             tokens[m.start - 1].word in OWNERS | DEFINITE | {"a", "another", "other"}):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "with the plow": a snowplow; "ploughed into
         # the back of me", "we plow the ramps first": a verb
+    if m.category == "positions" and m.meaning in ("back_left", "back_right") and len(span) == 2 and \
+            m.start > 0 and tokens[m.start - 1].base in RETURNING:
+        return [Unit(m.start, m.start + 1, "word", "back", span[:1]),
+                Unit(m.start + 1, m.end, "positions", "side_" + span[1].word, span[1:])]  # "merges back left":
+        # back to the lane on the left, no place behind
+    if m.category == "actions" and m.meaning == "stop" and [t.base for t in span] == ["sit"] and \
+            after[:1] in (["in"], ["right"], ["just"]) and "blind" in [t.word for t in tokens[m.end:m.end + 6]]:
+        return [Unit(m.start, m.end, "actions", "move", span)]  # "a car sitting in its blind spot": keeping pace
+    if m.category == "agents" and [t.word for t in span] == ["lead"] and not span[0].label and not (
+            nxt and tokens[m.end].base in _verbs() and tokens[m.end].base not in lexicon().function_words and
+            tokens[m.end].word != tokens[m.end].base and not tokens[m.end].word.endswith("ing") and
+            (m.start == 0 or tokens[m.start - 1].word not in MODALS | {"to", "take", "takes", "took", "taking"})):
+        return [Unit(m.start, m.end, "word", "lead", span)]  # "lead slams on its brakes": the lead vehicle; "could
+        # lead to a crash", "takes the lead": no one
+    if m.category == "agents" and len(span) == 1 and span[0].base == "dodge" and (
+            span[0].word != "dodge" or m.start == 0 or not (tokens[m.start - 1].word in DETERMINERS | OWNERS |
+                                                            POSSESSIVES | COLOURS or tokens[m.start - 1].possessive)):
+        return [Unit(m.start, m.end, "word", span[0].word, span)]  # "swerved to dodge a pothole", "a cyclist dodging
+        # the door": the verb; "a red Dodge", "the dodge": the make
     if m.category == "agents" and [t.word for t in span] == ["focus"] and nxt == "on" and not {
             t.word for t in tokens[m.end + 1:m.end + 4]} & {"left", "right", "side", "lane", "tail", "bumper"}:
         return [Unit(m.start, m.end, "word", "focus", span)]  # "the focus on the oncoming pair": no Ford
@@ -2423,8 +2455,11 @@ def _weather(r: _Reader) -> Weather | None:
     for k, u in enumerate(r.units):
         if u.category != "weather":
             continue
-        before = r.units[k - 1] if k else None
-        if before is not None and before.category == "word" and before.word in ("no", "without", "not"):
+        j = k - 1
+        while j > 0 and r.units[j].word in ("a", "an", "any") and len(r.units[j].tokens) == 1:
+            j -= 1  # "normal rain, not a storm"
+        before = r.units[j] if j >= 0 else None
+        if before is not None and before.category in ("word", "numbers") and before.word in ("no", "without", "not"):
             r.mark(u)
             continue
         r.mark(u)
@@ -4557,13 +4592,15 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     described = next((m.meaning for m in modifiers if m.category == "actions"), None)  # "revealing stopped car":
     # a state said before the noun sets it apart from one named before doing otherwise
     # "Ego car: stopped. Car: front, stationary", "Ambulance: behind. Van: stopped, ahead": a note's item, placed
-    if bare and any((e.head.split()[-1] == u.base.split()[-1] and e.type == kind or u.base in e.aliases or
-                     _clipped(u.base, e.head) and e.type == kind) and not e.is_ego
+    if bare and any((e.head.split()[-1] == u.base.split()[-1] and e.type == kind and not (
+                        " " in u.base and " " in e.head and u.base != e.head) or u.base in e.aliases or
+                     (_clipped(u.base, e.head) or e.head.split()[0] == u.base) and e.type == kind) and not e.is_ego
                     and e.count == 1 and (placed_by is None or placed_by in e.features)
                     and not (doing and e.actions and doing not in {a[4] for a in e.actions})
                     and not (described and described not in {a[4] for a in e.actions})
                     and not _placed_apart(placed_here, e) for e in r.entities):
-        definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van": the same one;
+        definite = True  # "ego behind cyclist, cyclist swerves left", "a white van ... behind van", "a lead vehicle
+        # ... lead slams on": the same one; not "kid dummy ... adult dummy";
         # not "oncoming car turning left, lead car braking": a place in the name sets another apart; not "lead
         # car braking, car cutting in", "a pedestrian crossing; pedestrian waiting": an item that does another thing
     if not words and count is None and plural and not label and any(
@@ -4839,8 +4876,8 @@ def _counted_again(r: _Reader, kind: str, base: str, count: int) -> list[Entity]
     the members already taken from it."""
     for group in reversed(r.entities):
         if group.is_ego or group.parent is not None or group.type != kind or \
-                base != group.head and base not in group.aliases:
-            continue
+                base not in (group.head, group.head.split()[-1]) and base not in group.aliases:
+            continue  # ("two balloon cars ... the two cars")
         members = [e for e in r.entities if e.parent is group]
         if group.count + len(members) == count:
             return ([group] if group.count else []) + members
@@ -5809,9 +5846,12 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
             if not turning and (u.tokens[0].word in ("on", "at", "beside", "alongside") or units[j - 1].word == "on") and \
                     {units[k].tokens[-1].word, *(x.word for x in units[k + 1:j])} & ALONG:
                 return None  # "creeping up on my inside": where it is as it moves, not where it steers to
+            if not turning and u.tokens[0].word == "on" and units[k + 1].word in ("by", "past") and any(
+                    e.is_ego and any(a[4] in ("lane_left", "lane_right") for a in e.actions) for e in r.entities):
+                return None  # "ego moves over to the R lane, amb goes by on L": past, in the lane the ego left
             r.mark(u)
-            u.meaning = "used"
-            return "left" if "left" in u.base else "right"
+            side, u.meaning = u.meaning.rsplit("_", 1)[-1], "used"
+            return side  # (by its meaning: "the nearside lane" is the left where traffic keeps left)
         if j == owned:
             continue  # "swings his little Fiat out into the left lane": the vehicle steered, then where it goes
         if u.category in ("actions",) or (u.category == "agents" and u.meaning != "none"):
@@ -6055,7 +6095,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     _shared_premodifier(units, phrases)
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
              and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
-             and not _named_manoeuvre(units, i) and not _requested(units, i) and not _planned(units, i)]
+             and not _named_manoeuvre(units, i) and not _requested(units, i) and not _planned(units, i)
+             and not _weighed(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
             u.category == "road" and u.meaning != "junction" for u in units[max(0, verbs[0] - 2):verbs[0]]):
         verbs = []  # "the light turns red": the subject is a signal, no agent acts ("the junction is entered by
@@ -6641,6 +6682,11 @@ def _planned(units: list[Unit], i: int) -> bool:
         i >= 2 and units[i - 1].word in ("a", "an", "the", "its", "another") and planning(units[i - 2])
 
 
+def _weighed(units: list[Unit], i: int) -> bool:
+    """'has to decide whether to pull around the bus or wait': each choice weighed is none made."""
+    return any(u.category == "word" and u.word == "whether" for u in units[max(0, i - 8):i])
+
+
 REQUESTING = {"signal", "signals", "signaled", "signalled", "signaling", "signalling", "tell", "tells", "told",
               "ask", "asks", "asked", "order", "orders", "ordered", "instruct", "instructs", "instructed", "direct",
               "directs", "directed", "beckon", "beckons", "beckoned", "motion", "motions", "motioned", "motioning"}
@@ -7025,6 +7071,37 @@ def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) ->
 INSTANCE_OPENINGS = (["for", "example"], ["for", "instance"], ["e", "g"], ["one", "instance"],
                      ["in", "the", "instance"], ["concrete", "case"], ["concrete", "example"], ["a", "typical"],
                      ["a", "clean", "example"], ["example", ","], ["say", "on"], ["say", "at"], ["say", "in"])
+
+
+TAKING_BACK = (["actually", "no"], ["scratch", "that"], ["scrap", "that"], ["never", "mind"], ["forget", "that"],
+               ["on", "second", "thought"], ["on", "second", "thoughts"])
+
+
+def _taken_back(r: _Reader) -> None:
+    """'maybe a second person waiting on the pavement? actually no, just the one crossing': a sentence that opens
+    by taking back the one before, naming no one new and asking for nothing instead, leaves out whom that one
+    added."""
+    tokens = r.tokens
+    words = [t.word for t in tokens]
+    for t in tokens:
+        if t.sentence == 0 or tokens[t.index - 1].sentence == t.sentence:
+            continue
+        said = next((o for o in TAKING_BACK if words[t.index:t.index + len(o)] == o), None)
+        end = t.index + len(said) if said else 0
+        unit = next((u for u in r.units if u.start == end), None)
+        if said is None or end < len(tokens) and tokens[end].sentence == t.sentence and (
+                unit is None or unit.category != "comma"):
+            continue  # ("actually no cars are parked": a denial, not a taking back)
+        sentence = [x.word for x in tokens if x.sentence == t.sentence]
+        if any(e.said_at >= 0 and tokens[e.said_at].sentence == t.sentence for e in r.entities if not e.is_ego) or \
+                {"make", "instead", "change", "replace", "swap"} & set(sentence):
+            continue  # "actually no, make it a truck": a correction, read as such
+        dropped = [e for e in r.entities if not e.is_ego and e.said_at >= 0 and
+                   tokens[e.said_at].sentence == t.sentence - 1]
+        for e in dropped:
+            r.entities.remove(e)
+        if dropped:
+            r.notes.append(f"left out {', '.join(e.head for e in dropped)}: taken back by '{' '.join(said)}'")
 
 
 def _an_instance_given(r: _Reader) -> None:
@@ -7489,6 +7566,16 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 if np.entity in r.entities:
                     r.entities.remove(np.entity)
                 continue
+            example = between and between[0].category == "comma" and all(
+                u.category == "comma" or u.word in ("like", "say", "maybe", "probably") for u in between) and \
+                not prev.entity.is_ego and not prev.entity.actions and np.entity.type == prev.entity.type and \
+                prev.entity.count == 1 and np.index + 1 < len(units) and units[np.index + 1].category == "actions" \
+                and units[np.index + 1].tokens[0].word.endswith("ing")
+            if example:  # "one with a pedestrian, like someone jaywalking across": the one asked for, described
+                prev.entity.aliases.add(np.entity.head)
+                _fold(r, prev.entity, np.entity)
+                out.append(replace(np, entity=prev.entity, introduced=False))
+                continue
             bare = _undetermined(units, np)  # "SV1 is oncoming truck", "POV, heavy truck, enters": articles dropped
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
                    u.category == "word" and u.word in PLACE_ADVERBS and copula or
@@ -7879,7 +7966,7 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
         if u.meaning in ("ahead", "behind") and len(u.tokens) == 1 and k > 0 and (
                 units[k - 1].word in DISTANCE_UNITS or units[k - 1].word in ("up", "further", "way", "just")):
             return False  # "twenty-five metres ahead a lorry sits", "up ahead a bus": a place, then the subject
-        if u.meaning not in ("ahead", "behind", "level") and u.tokens[-1].word not in ("of", "to") and \
+        if u.meaning not in ("ahead", "behind", "level") and u.tokens[-1].word not in ("of", "to", "behind") and \
                 units[np.first].word not in ("of", "to"):
             return False  # "on the left-hand side a woman waits": a place, then the subject ("left of a van" places)
         return u.tokens[-1].word in PLACES_BEFORE_A_NOUN or units[np.first].word in ("of", "to")
@@ -8039,7 +8126,8 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     later = any(v > i and not (units[v - 1].category == "word" and units[v - 1].word == "to") for v in verbs)
     word = units[i].tokens[0].word  # a later finite verb makes this one a participle; 'to pass' is none
     participle = word.endswith("ing") or word.endswith("ed") or word in (
-        "parked", "stopped", "stood", "stuck", "broken", "stationary", "idle", "motionless", "immobile") or light
+        "parked", "stopped", "stood", "stuck", "broken", "stationary", "idle", "motionless", "immobile") or light or \
+        units[i].tokens[-1].word in ("parked", "stopped")  # "finds a van double-parked ahead"
     # "encounters a POV stationary in its lane": a state said of the object
     if np.entity is not None and np.entity.is_ego and not light and not (
             i == k + 1 and word.endswith("ing") and later and np is phrases[0] and np.first == 0):
@@ -8054,9 +8142,11 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
     before = [p for p in phrases if p.index < i and p.entity is not None]
     while len(before) > 1 and not before[-1].introduced and \
             units[before[-1].index].word in ("it", "him", "her", "them") and \
-            units[before[-1].index - 1].category == "positions" and before[-2].introduced and \
-            "lane" in {t.word for t in units[i].tokens}:
-        before.pop()  # "with a truck alongside it in the right lane": the truck's lane, not its
+            units[before[-1].index - 1].category == "positions" and before[-2].introduced and (
+                "lane" in {t.word for t in units[i].tokens} or
+                any(x.category == "comma" for x in units[before[-1].index + 1:i])):
+        before.pop()  # "with a truck alongside it in the right lane": the truck's lane, not its; "a pickup across
+        # from it, on the opposite road,": the pickup's road
     last_verb = max([v for v in main_verbs if v < i] + [v for v in (participles or {}) if v < i], default=None)
     if last_verb is not None and participles and last_verb in participles:
         return participles[last_verb]  # "a van stopped beside it in the right lane": the van's
@@ -8171,8 +8261,9 @@ def _reference_after(units, i, phrases) -> Entity | None:
     between = units[i + 1: np.first] + units[np.first:np.index]
     if all((u.category == "word" and (u.word in ("of", "the", "a", "an", "to", "that", "this")
                                       or u.word not in lexicon().function_words))
-           or u.category in ("actions", "behaviours", "numbers") for u in between):
-        return np.entity  # "from behind a parked bus"
+           or u.category in ("actions", "behaviours", "numbers") for u in between) and \
+            not any(u.category == "actions" and u.meaning == "try" for u in units[i + 1:np.first]):
+        return np.entity  # "from behind a parked bus" (not "into the nearside lane to let it through": the one let)
     return None
 
 
@@ -8645,8 +8736,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
                 main_subject and _returns_to_the_main_subject(clause.units):
             previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
-        if k > 0 and clauses[k - 1].link in SIDE_LINKS and main_subject and clause.units and \
-                clause.units[0].category == "actions":
+        if k > 0 and clauses[k - 1].link in SIDE_LINKS and main_subject and clause.units and (
+                clause.units[0].category == "actions" or clause.units[0].word in DOING_A_MANOEUVRE and
+                any(u.category == "actions" for u in clause.units[1:3])):  # ("..., and then make the lane change")
             previous = main_subject  # "held position until the pickup had passed, then completed the left": the
             # one who waited acts again, not the one waited for
         if k > 0 and clauses[k - 1].condition and not clause.condition and outside_condition and clause.units and \
@@ -8759,6 +8851,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _a_riders_ego(r)
     _the_camera_car(r)
     _an_instance_given(r)
+    _taken_back(r)
     _the_named_cut_in(r)
     _screens_on_the_crossers_side(r)
     _out_from_the_parked_row(r)
@@ -8864,6 +8957,8 @@ OPERATED_FROM = {"in", "on", "of", "driving", "drove", "riding", "operating", "o
 JUNCTION_NOUNS = {"junction", "intersection", "crossroads"}
 PARTICIPLE_LINKS = {"before", "while", "whilst", "when"}  # "... before turning left": said of the clause's subject
 UNTIL_LINKS = {"until", "till", "before"}  # a clause of what is waited for: its subject is not the story's
+DOING_A_MANOEUVRE = {"make", "makes", "made", "do", "does", "did", "perform", "performs", "performed", "complete",
+                     "completes", "completed", "execute", "executes", "executed"}
 SIDE_LINKS = UNTIL_LINKS | {"because", "since"}  # and of a reason: "slows because a tractor is ahead, then
 # overtakes it": the one who slowed acts again
 
@@ -9811,8 +9906,20 @@ def _named_lane_sides(r: _Reader) -> None:
     own = lane(ego, True) if ego is not None else None
     if own is None:
         return
+    moves = [a for a in ego.actions if a[1] == 2 and (a[4] in ("lane_left", "lane_right") or
+                                                     a[4] in ("lane_change", "cut_in") and a[5] in SIDES)]
+    moved_at = min((a[0] for a in moves), default=None)
+    step = {"left": -1, "right": 1}.get(moves[0][4][5:] if moves and moves[0][4].startswith("lane_") else
+                                        moves[0][5] if moves else "")
+    after = "middle" if "to_the_middle" in ego.features and own != "middle" else \
+        NAMED_LANES[NAMED_LANES.index(own) + step] if step and 0 <= NAMED_LANES.index(own) + step < 3 else None
+    if "to_the_middle" in ego.features and moved_at is None:
+        moved_at = min((a[0] for a in ego.actions if a[4] in ("lane_change", "cut_in")), default=None)
     for e in r.entities:
         theirs = lane(e, False) if not e.is_ego else None
+        own = after if after and moved_at is not None and e.stage > moved_at else lane(ego, True)
+        # ("the ego moves over into the middle lane ... Then a van from the right lane forces its way in": the
+        # lane the ego is in by then)
         if theirs is None or (theirs, own) == ("right", "left") or (theirs, own) == ("left", "right"):
             continue  # (left of the ego in the left lane, right of it in the right lane: as said)
         placed = {f"{p}{s}" for p in ("side_", "front_", "back_") for s in SIDES} & e.features
@@ -10220,6 +10327,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             continue
         if not _placed(e):
             positions[e.key] = positions[t.key]
+            if "on_sidewalk" in e.features and positions[t.key] in ("front", "back"):
+                positions[e.key] += "_" + UNSPECIFIED["side_of_a_sidewalk_walker"]  # "two people on the sidewalk
+                # next to it" (a bus stopped ahead): on the pavement beside it, off the ego's lane
             if t.road_type == "shoulder" and e.road_type is None and e.type not in V.VULNERABLE_TYPES and \
                     resolved[e.key][0] in ("stop", None):
                 e.road_type = "shoulder"  # "a cop car pulled up behind it" (a lorry on the hard shoulder): there too
@@ -10282,9 +10392,15 @@ def _ego_class(e: Entity, stage: int, junction: bool) -> str | None:
     if later and waits and action in ("turn", "turn_left", "turn_right", "u_turn", "lane_left", "lane_right",
                                       "sideways_left", "sideways_right"):  # "pulls up ... and needs to go right"
         return "stop"
+    held = [a for a in e.actions if a[0] == stage and a[1] == 2 and a[4] in ("move", "go_straight", "stop")]
+    if action in ("lane_left", "lane_right") and held and any(a[4] in ("lane_change", "cut_in") and a[5] is None
+                                                              for a in later):
+        return max(held, key=lambda a: (a[2], a[3]))[4]  # "wants to move into the right lane ... holds its lane
+        # until it passes, and then makes the lane change": the change is made in the later stage
     if later and waits and action in ("move", "go_straight") and later[0][4] in ("move", "go_straight"):
         return "stop"  # "had stopped at the line, intending to go straight. After V2 had passed, V1 proceeded"
-    if stage > 0 and action in ("move", "go_straight", None):
+    if stage > 0 and (action in ("move", "go_straight", None) or action == "cut_in" and direction is None and junction):
+        # ("waits for both, then pulls out": into the junction)
         before = [a for a in e.actions if a[0] < stage and a[1] == 2 and a[4] in ("turn_left", "turn_right")]
         if before and any(a[0] == stage for a in e.actions) and any(
                 a[0] == stage - 1 and a[4] == "stop" and a[1] == 2 for a in e.actions):
@@ -10335,8 +10451,9 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
         return f"change_lane_to_{action[5:]}"
     if action in ("lane_change", "cut_in"):
         direction = direction or signalled
-        said = next((a[4].rsplit("_", 1)[-1] for a in e.actions if a[0] == stage and a[4] in (
-            "lane_left", "lane_right", "sideways_left", "sideways_right")), None)  # "merging ... move right"
+        said = next((a[4].rsplit("_", 1)[-1] for a in sorted(e.actions, key=lambda a: a[0] != stage)
+                     if a[0] <= stage and a[4] in ("lane_left", "lane_right", "sideways_left", "sideways_right")),
+                    None)  # "merging ... move right"; "wants to move into the right lane ... then makes the change"
         inward = next((x for x in SIDES if f"in_lane_{SIDES[1 - SIDES.index(x)]}" in e.features), None) \
             if "to_the_middle" in e.features else None  # "in the right-hand lane ... moves into the middle lane": left
         return f"change_lane_to_{direction or said or inward or _overtaking_side('ego_lane_change_direction')}"
