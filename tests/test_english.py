@@ -10070,3 +10070,20 @@ def test_a_lane_named_after_the_ego_moved_is_placed_against_its_new_lane():
                   "the middle lane ahead of it. Then a white van from the right lane forces its way in ahead of it.")
     assert ("truck", "go_straight", "front_left") in said[0]
     assert said[1] == [("car", "change_lane_to_left", "front_right")]
+
+
+def test_a_vehicle_named_as_if_known_that_is_nowhere_and_does_nothing_is_no_agent():
+    assert ("police", "go_straight", "front") not in agents(
+        "The ego follows a slow truck in lane 1. A 4x4 overtook both of us in lane 2, far too quick; reg noted for "
+        "the police.")
+    assert agents("A cyclist crosses in front of the ego from the left. The van was nowhere to be seen.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "front_left")]
+    assert ("truck", "go_straight", "front") in agents("The ego follows the truck through the village.")
+
+
+def test_arriving_at_a_red_light_or_a_stop_said_before_is_stopping():
+    assert agents("The ego arrives at a red light.") == [("car", "stop", "ego")]
+    assert stages("At a four-way stop, the ego arrives at the same time as a car on its left; the other car goes "
+                  "first, then the ego turns right.") == [[("ego", "stop", None), ("car", "go_straight",
+                                                                                    "road_of_left_turn")],
+                                                          [("ego", "turn_right", None)]]

@@ -5608,7 +5608,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 k > 0 and clause_units[k - 1].word == "to":
             e.features.add("turn_intended")  # "waiting to turn out": a turn meant, not made
         if action == "reach" and e.is_ego and clause_units is not None and k is not None and \
-                {t.base for t in u.tokens} & {"arrive", "pull"} and _a_stop_control(clause_units[k + 1:k + 5]):
+                {t.base for t in u.tokens} & {"arrive", "pull"} and _a_stop_control(
+                    clause_units[k + 1:k + 5] + clause_units[max(0, k - 6):k]):  # ("at a four-way stop, it arrives")
             e.actions.append((stage, strength if r.staged else 1, ACTION_RANK["stop"], r.tick(), "stop", None))
             # "I arrived at the all-way stop", "pulls up to a stop sign": it stops there; a way it means to go, said
             # with it, wins ("both of you want to go straight"), unless the story goes on to a later stage
@@ -5787,7 +5788,7 @@ def _stands_across(units: list[Unit]) -> bool:
 def _a_stop_control(units: list[Unit]) -> bool:
     """'the all-way stop', 'a stop sign', 'the give way line', 'a red light': a place where drivers stop."""
     return any(u.category == "road" and u.meaning in ("stop", "stop+junction", "yield", "stop_line") or
-               u.word == "red" for u in units)
+               any(t.word == "red" for t in u.tokens) for u in units)
 
 
 SHORT_OF = {"from", "short", "away", "off"}
@@ -6410,8 +6411,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
                 not any(e in subject for e in owner) and not in_its_place and not ego_as_it and \
                 not ([t.word for t in u.tokens[:2]] == ["in", "the"] and "lane" in {t.word for t in u.tokens}) and \
-                not any(np.entity is owner[0] and np.first > 0 and units[np.first - 1].word == "with"
-                        for np in phrases):  # ("the ego, with a truck on its left": the truck's own place)
+                not any(np.entity is owner[0] and np.first > 0 and units[np.first - 1].word in ("with", "as")
+                        for np in phrases):  # ("the ego, with a truck on its left": the truck's own place; "at
+            # the same time as a car on its left")
             r.mark(u)
             continue  # "pass the slow truck on its left": a side of the truck, not the truck's place ("with a
             # cyclist in the lane to its right": the lane beside the subject, where the cyclist is)
@@ -10213,6 +10215,13 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.head in NAMED_BY_ROLE:
             e.count = 0  # "driving like a proper lunatic he was", "the cop said it was 50/50": no one on foot
             r.notes.append(f"left out: '{e.head}' does nothing and is nowhere in the scene")
+        if e.definite and e.count == 1 and e.type != "pedestrian" and not e.features and \
+                not [a for a in e.actions if a[2] > 0] and not e.label and e.relative_to is None and \
+                e.parent is None and e.named_of is None and not any(x.relative_to is e for x in r.entities):
+            # "reg noted for the police", "the van was nowhere to be seen": a vehicle named with 'the' as one known,
+            # said of nothing before, with no place and no doing, is none of the scene's
+            e.count = 0
+            r.notes.append(f"left out: 'the {e.head}', named as if known, is nowhere and does nothing in the scene")
         if e.type == "pedestrian" and "on_board" in e.features and e.count > 0:
             e.count = 0  # "the kids arguing in the back": passengers of the ego, nobody on the road
             r.notes.append(f"left out: '{e.head}' rides in the ego's car (a passenger, no agent)")
