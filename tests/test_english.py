@@ -10087,3 +10087,26 @@ def test_arriving_at_a_red_light_or_a_stop_said_before_is_stopping():
                   "first, then the ego turns right.") == [[("ego", "stop", None), ("car", "go_straight",
                                                                                     "road_of_left_turn")],
                                                           [("ego", "turn_right", None)]]
+
+
+def test_a_clause_of_only_a_new_agent_after_one_placed_and_doing_says_the_same_of_it():
+    assert ("cyclist", "go_straight", "road_of_straight") in agents(
+        "The ego waits to turn left. Two oncoming cars pass, then a cyclist.")
+    assert ("car", "stop", "front_right") in agents("A truck is parked on the right, and a van.")
+    assert ("car", "change_lane_to_right", "front_left") in agents(
+        "First a motorcycle came up from behind me on my left. Then a Prius that was just ahead of me in the left "
+        "lane swung over into my lane.")
+
+
+def test_a_lane_change_is_given_up_only_by_the_one_that_makes_it():
+    assert ("car", "change_lane_to_right", "front_left") in agents(
+        "The ego is in the middle lane. A car on the left changes into the middle lane in front of the ego, and a "
+        "truck on the right stays in its lane.")
+    assert ("car", "change_lane_to_right", "ego") not in agents(
+        "I went to move into the right lane but a car was there so I aborted and stayed in my lane.")
+
+
+def test_a_school_buss_own_stop_arm_is_no_sign_of_the_road():
+    prompt = "On a rainy evening, the ego stops behind a school bus with its stop sign extended while children cross."
+    assert "stop" not in road(prompt).required_signals
+    assert "stop" in road("A pickup drove across from my left without stopping at its stop sign.").required_signals

@@ -530,9 +530,23 @@ def _aborted_lane_changes(units: list[Unit]) -> list[Unit]:
     for u in units:
         words.setdefault(u.tokens[0].sentence, []).extend(t.word for t in u.tokens)
     given_up = {k for k, said in words.items() if set(said) & ABORTED or _says_any(said, STAYED_IN_LANE)}
+
+    def by_another(k: int) -> bool:  # "a car changes into the middle lane, and a truck stays in its lane": the
+        # one who stays is someone named after the lane change, and the change is made
+        later = [x for x in units[k + 1:] if x.tokens[0].sentence == units[k].tokens[0].sentence]
+        said = [t.word for x in later for t in x.tokens]
+        ends = list(itertools.accumulate(len(x.tokens) for x in later))
+        at = next((n for n in range(len(said)) if said[n] in ABORTED or
+                   any(tuple(said[n:n + len(p)]) == p for p in STAYED_IN_LANE)), None)
+        if at is None:
+            return False
+        before = [j for j, x in enumerate(later) if ends[j] <= at and x.category == "agents"]
+        return bool(before) and later[before[-1]].meaning not in ("ego", "none") and before[-1] > 0 and \
+            later[before[-1] - 1].word in ("a", "an", "another")
     return [Unit(u.start, u.end, "actions", "try", u.tokens)
             if u.tokens[0].sentence in given_up and u.category == "actions" and
-            u.meaning in ("lane_left", "lane_right", "lane_change") else u for u in units]
+            u.meaning in ("lane_left", "lane_right", "lane_change") and not by_another(k) else u
+            for k, u in enumerate(units)]
 
 
 LANE_PLACES = {"side_left", "side_right", "lane_said", "ego_lane", "into_ego_lane", "ahead", "behind"}
@@ -7075,6 +7089,35 @@ INSTANCE_OPENINGS = (["for", "example"], ["for", "instance"], ["e", "g"], ["one"
                      ["a", "clean", "example"], ["example", ","], ["say", "on"], ["say", "at"], ["say", "in"])
 
 
+GAPPING_LINKS = {"then", "and", "too", "also", "well", "followed", "next", "finally"}
+GAPPING_WORDS = {"then", "and", "too", "also", "as", "well", "after", "that", "by", "next", "finally", "a", "an",
+                 "another", "one", "more", ",", "followed"}
+
+
+def _gapped(r: _Reader, clause: "Clause", previous: list[Entity], new: list[Entity]) -> None:
+    """'two oncoming cars pass, then a cyclist': a clause of only a new agent, after a clause that said where its
+    subject was and what it did, says the same of the new one (the verb and the place are gapped)."""
+    if len(new) != 1 or new[0].is_ego or new[0].features or new[0].actions or len(previous) != 1 or \
+            previous[0].is_ego or previous[0].type in V.VULNERABLE_TYPES and new[0].type not in V.VULNERABLE_TYPES:
+        return
+    if any(u.category not in ("agents", "word", "comma", "sequence", "numbers") or
+           u.category == "word" and u.word not in GAPPING_WORDS for u in clause.units):
+        return
+    last = clause.units[-1]
+    if not (clause.link in ("and", "then") or clause.stage > previous[0].stage or any(
+            u.category == "sequence" or u.word in GAPPING_LINKS for u in clause.units)) or \
+            last.end < len(r.tokens) and r.tokens[last.end].sentence == last.tokens[-1].sentence:
+        return  # ("then a Prius that was just ahead of me ...": its own clause goes on)
+    model = previous[0]
+    places = {f for f in model.features if f in PLACE_FEATURES or f in ("ahead", "behind", "level", "toward")}
+    said = [a for a in model.actions if a[1] == 2 and a[0] == model.stage]
+    if not places or not said:
+        return
+    new[0].features |= model.features - {"no_part", "on_board", "followed", "headline"}
+    new[0].actions += [(new[0].stage, 2, a[2], r.tick(), a[4], a[5]) for a in said]
+    r.notes.append(f"read '{new[0].head}' as doing what '{model.head}' did, where it did")
+
+
 TAKING_BACK = (["actually", "no"], ["scratch", "that"], ["scrap", "that"], ["never", "mind"], ["forget", "that"],
                ["on", "second", "thought"], ["on", "second", "thoughts"])
 
@@ -8757,6 +8800,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         said_until = r.order
         subject = _read_clause(r, clause, previous, recent, pending)
+        _gapped(r, clause, previous, r.entities[before:])
         aside = clause.link == "," and subject and all(e in r.entities[:before] for e in subject) and \
             not _has_verb(clause.units) and k > 0
         # "It stopped behind a truck double-parked in its lane, driver nowhere around. ..., it changed lane": a
