@@ -10110,3 +10110,14 @@ def test_a_school_buss_own_stop_arm_is_no_sign_of_the_road():
     prompt = "On a rainy evening, the ego stops behind a school bus with its stop sign extended while children cross."
     assert "stop" not in road(prompt).required_signals
     assert "stop" in road("A pickup drove across from my left without stopping at its stop sign.").required_signals
+
+
+def test_the_target_road_is_the_road_the_ego_turns_into():
+    assert ("pedestrian", "cross_the_road", "at_the_destination") in agents(
+        "Ego performs an unprotected left turn; oncoming NPC goes straight; pedestrian crosses the target road.")
+
+
+def test_a_parked_vehicle_placed_by_a_crosser_stands_at_the_kerb_and_asks_for_no_lane():
+    prompt = "A pedestrian crosses from the left in front of the ego, occluded by a parked van."
+    assert ("car", "stop", "front_left") in agents(prompt)
+    assert road(prompt).lanes in (None, 1)

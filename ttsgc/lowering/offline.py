@@ -10386,8 +10386,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             if t.road_type == "shoulder" and e.road_type is None and e.type not in V.VULNERABLE_TYPES and \
                     resolved[e.key][0] in ("stop", None):
                 e.road_type = "shoulder"  # "a cop car pulled up behind it" (a lorry on the hard shoulder): there too
-            if t.key in oncoming:
-                oncoming.add(e.key)  # (no lane of its own where the other needs none)
+            if t.key in oncoming or positions[e.key] in ("front_left", "front_right") and \
+                    e.type not in V.VULNERABLE_TYPES and "parked" in e.features and "lane_said" not in e.features:
+                oncoming.add(e.key)  # (no lane of its own where the other needs none; "occluded by a parked van": at
+                # the kerb the crosser comes from)
         elif not _placed(t) and not (t.type not in V.VULNERABLE_TYPES and t.features & {"ahead", "behind"}):
             positions[t.key] = positions[e.key]  # ... and the truck, placed nowhere itself, is where the text put
             # the other (but "a boy darted onto the crossing from behind a bus which had stopped just ahead of me",
