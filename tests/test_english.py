@@ -10121,3 +10121,8 @@ def test_a_parked_vehicle_placed_by_a_crosser_stands_at_the_kerb_and_asks_for_no
     prompt = "A pedestrian crosses from the left in front of the ego, occluded by a parked van."
     assert ("car", "stop", "front_left") in agents(prompt)
     assert road(prompt).lanes in (None, 1)
+
+
+def test_pulling_out_to_overtake_on_a_side_is_a_lane_change_to_that_side():
+    assert ("car", "change_lane_to_left", "back") in agents("A car behind the ego pulls out to overtake on the left.")
+    assert ("car", "go_straight", "back_left") in agents("A car behind the ego overtakes on the left.")

@@ -7315,8 +7315,8 @@ def _side_of_passing_the_ego(units: list[Unit], i: int) -> bool:
     j = i - 1
     if j >= 0 and units[j].category == "agents" and units[j].meaning == "ego":
         j -= 1
-    return j >= 0 and units[j].category == "actions" and bool(set(units[j].base.split()) & OVERTAKING) and \
-        j < i - 1
+    return j >= 0 and units[j].category == "actions" and bool(set(units[j].base.split()) & OVERTAKING) and (
+        j < i - 1 or units[i].tokens[0].word == "on")  # ("pulls out to overtake on the left": the ego unsaid)
 
 
 def _the_one_placed(r: _Reader, units: list[Unit], i: int) -> Entity | None:
