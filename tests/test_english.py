@@ -10126,3 +10126,11 @@ def test_a_parked_vehicle_placed_by_a_crosser_stands_at_the_kerb_and_asks_for_no
 def test_pulling_out_to_overtake_on_a_side_is_a_lane_change_to_that_side():
     assert ("car", "change_lane_to_left", "back") in agents("A car behind the ego pulls out to overtake on the left.")
     assert ("car", "go_straight", "back_left") in agents("A car behind the ego overtakes on the left.")
+
+
+def test_neither_vehicle_names_the_two_said_before_and_denies_the_verb():
+    said = agents("The ego approaches an uncontrolled intersection. A pickup approaches from the right at the same "
+                  "time, and neither vehicle slows down.")
+    assert said == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]
+    assert ("bus", "go_straight", "road_of_left_turn") in agents(
+        "The ego waits at the junction. A van and a bus come from the left; neither of them stops.")

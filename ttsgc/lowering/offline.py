@@ -3950,7 +3950,7 @@ def _a_verb_after_the_copula(units: list[Unit], u: Unit) -> bool:
 
 DETERMINERS = DEFINITE | INDEFINITE | {
     "his", "her", "my", "other", "both", "all", "each", "every", "more", "than", "over", "of", "second", "third",
-    "first", "same", "further", "additional", "extra", "its", "their",
+    "first", "same", "further", "additional", "extra", "its", "their", "neither", "either",
 }
 SAID_OF_SOME = DETERMINERS | OWNERS | COUNTED_BY | {"no"}  # before a plural: some of the kind, not the kind
 
@@ -4458,6 +4458,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
     plural = u.tokens[-1].plural and not is_ego
+    if words & {"neither", "either"} and not plural:
+        words, plural = (words - {"neither", "either"}) | {"both"}, True  # "neither vehicle slows": the two named
     owner = first - 1  # "our little Fiat", "the ego's electric hatch": over the adjectives to whose it is
     while not words and owner > first - 3 and owner > 0 and units[owner].category == "word" and \
             units[owner].word not in OWNERS | DETERMINERS | AUXILIARIES | {"there", "here"}:
@@ -6734,6 +6736,11 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
     if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
            for u in units[max(0, i - 3):i]):
         return True
+    for u in reversed(units[max(0, i - 4):i]):
+        if u.word == "neither":
+            return True  # "neither vehicle slows down"
+        if u.category not in ("agents", "word"):
+            break
     after = [u.word for u in units[i + 1:i + 4]]
     if after[:1] and after[0] in ("impossible", "prohibited", "forbidden", "banned") or \
             after[:2] in (["not", "possible"], ["not", "allowed"], ["not", "permitted"], ["is", "impossible"]) or \
