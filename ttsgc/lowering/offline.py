@@ -7096,6 +7096,16 @@ INSTANCE_OPENINGS = (["for", "example"], ["for", "instance"], ["e", "g"], ["one"
                      ["a", "clean", "example"], ["example", ","], ["say", "on"], ["say", "at"], ["say", "in"])
 
 
+def _an_unknown_verb_after(r: _Reader, e: Entity) -> bool:
+    """'until the bus had cleared': a verb the lexicon does not know, right after the noun, says it does
+    something."""
+    k = e.said_at + 1
+    while k < len(r.tokens) and r.tokens[k].word in ("had", "has", "have", "just", "finally", "been"):
+        k += 1
+    return 0 < k < len(r.tokens) and r.tokens[k].sentence == r.tokens[e.said_at].sentence and \
+        r.tokens[k].word.endswith("ed") and r.tokens[k].word not in lexicon().vocabulary
+
+
 GAPPING_LINKS = {"then", "and", "too", "also", "well", "followed", "next", "finally"}
 GAPPING_WORDS = {"then", "and", "too", "also", "as", "well", "after", "that", "by", "next", "finally", "a", "an",
                  "another", "one", "more", ",", "followed"}
@@ -10268,7 +10278,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             r.notes.append(f"left out: '{e.head}' does nothing and is nowhere in the scene")
         if e.definite and e.count == 1 and e.type != "pedestrian" and not e.features and \
                 not [a for a in e.actions if a[2] > 0] and not e.label and e.relative_to is None and \
-                e.parent is None and e.named_of is None and not any(x.relative_to is e for x in r.entities):
+                e.parent is None and e.named_of is None and not any(x.relative_to is e for x in r.entities) and \
+                not _an_unknown_verb_after(r, e):
             # "reg noted for the police", "the van was nowhere to be seen": a vehicle named with 'the' as one known,
             # said of nothing before, with no place and no doing, is none of the scene's
             e.count = 0
