@@ -7096,6 +7096,17 @@ INSTANCE_OPENINGS = (["for", "example"], ["for", "instance"], ["e", "g"], ["one"
                      ["a", "clean", "example"], ["example", ","], ["say", "on"], ["say", "at"], ["say", "in"])
 
 
+def _object_of_a_deed(r: _Reader, e: Entity) -> bool:
+    """'I collided with the truck', 'we hit the van': one a verb of the road is done to or with is met there."""
+    k = e.said_at - 1
+    while k > 0 and r.tokens[k].word in DETERMINERS | OWNERS or k > 0 and r.tokens[k].word in COLOURS:
+        k -= 1
+    if k > 0 and r.tokens[k].word in ("with", "into", "past", "behind"):
+        k -= 1
+    return k >= 0 and r.tokens[k].sentence == r.tokens[e.said_at].sentence and r.tokens[k].base in _verbs() and \
+        r.tokens[k].base not in lexicon().function_words
+
+
 def _an_unknown_verb_after(r: _Reader, e: Entity) -> bool:
     """'until the bus had cleared': a verb the lexicon does not know, right after the noun, says it does
     something."""
@@ -10279,7 +10290,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.definite and e.count == 1 and e.type != "pedestrian" and not e.features and \
                 not [a for a in e.actions if a[2] > 0] and not e.label and e.relative_to is None and \
                 e.parent is None and e.named_of is None and not any(x.relative_to is e for x in r.entities) and \
-                not _an_unknown_verb_after(r, e):
+                not _an_unknown_verb_after(r, e) and not _object_of_a_deed(r, e):
             # "reg noted for the police", "the van was nowhere to be seen": a vehicle named with 'the' as one known,
             # said of nothing before, with no place and no doing, is none of the scene's
             e.count = 0
