@@ -7099,7 +7099,7 @@ INSTANCE_OPENINGS = (["for", "example"], ["for", "instance"], ["e", "g"], ["one"
 def _object_of_a_deed(r: _Reader, e: Entity) -> bool:
     """'I collided with the truck', 'we hit the van': one a verb of the road is done to or with is met there."""
     k = e.said_at - 1
-    while k > 0 and r.tokens[k].word in DETERMINERS | OWNERS or k > 0 and r.tokens[k].word in COLOURS:
+    while k > 0 and r.tokens[k].word in DETERMINERS | OWNERS | COLOURS:
         k -= 1
     if k > 0 and r.tokens[k].word in ("with", "into", "past", "behind"):
         k -= 1
