@@ -7160,10 +7160,11 @@ def _taken_back(r: _Reader) -> None:
         if t.sentence == 0 or tokens[t.index - 1].sentence == t.sentence:
             continue
         said = next((o for o in TAKING_BACK if words[t.index:t.index + len(o)] == o), None)
-        end = t.index + len(said) if said else 0
+        if said is None:
+            continue
+        end = t.index + len(said)
         unit = next((u for u in r.units if u.start == end), None)
-        if said is None or end < len(tokens) and tokens[end].sentence == t.sentence and (
-                unit is None or unit.category != "comma"):
+        if end < len(tokens) and tokens[end].sentence == t.sentence and (unit is None or unit.category != "comma"):
             continue  # ("actually no cars are parked": a denial, not a taking back)
         sentence = [x.word for x in tokens if x.sentence == t.sentence]
         if any(e.said_at >= 0 and tokens[e.said_at].sentence == t.sentence for e in r.entities if not e.is_ego) or \
@@ -9977,21 +9978,21 @@ def _named_lane_sides(r: _Reader) -> None:
         return next((s for s in SIDES if f"named_lane_{s}" in e.features), None)
 
     ego = next((e for e in r.entities if e.is_ego), None)
-    own = lane(ego, True) if ego is not None else None
-    if own is None:
+    start = lane(ego, True) if ego is not None else None
+    if start is None:
         return
     moves = [a for a in ego.actions if a[1] == 2 and (a[4] in ("lane_left", "lane_right") or
                                                      a[4] in ("lane_change", "cut_in") and a[5] in SIDES)]
     moved_at = min((a[0] for a in moves), default=None)
     step = {"left": -1, "right": 1}.get(moves[0][4][5:] if moves and moves[0][4].startswith("lane_") else
                                         moves[0][5] if moves else "")
-    after = "middle" if "to_the_middle" in ego.features and own != "middle" else \
-        NAMED_LANES[NAMED_LANES.index(own) + step] if step and 0 <= NAMED_LANES.index(own) + step < 3 else None
+    after = "middle" if "to_the_middle" in ego.features and start != "middle" else \
+        NAMED_LANES[NAMED_LANES.index(start) + step] if step and 0 <= NAMED_LANES.index(start) + step < 3 else None
     if "to_the_middle" in ego.features and moved_at is None:
         moved_at = min((a[0] for a in ego.actions if a[4] in ("lane_change", "cut_in")), default=None)
     for e in r.entities:
         theirs = lane(e, False) if not e.is_ego else None
-        own = after if after and moved_at is not None and e.stage > moved_at else lane(ego, True)
+        own = after if after and moved_at is not None and e.stage > moved_at else start
         # ("the ego moves over into the middle lane ... Then a van from the right lane forces its way in": the
         # lane the ego is in by then)
         if theirs is None or (theirs, own) == ("right", "left") or (theirs, own) == ("left", "right"):
