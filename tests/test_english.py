@@ -9322,6 +9322,30 @@ def test_an_emoji_between_words_ends_a_sentence():
     assert ("car", "go_straight", "ego") in said and not any(k[0] == "truck" and k[2] == "ego" for k in said)
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("a \U0001F6B6 steps onto the zebra crossing in front of me", [("car", "go_straight", "ego"),
+                                                                  ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("stuck behind a slow \U0001F69B on a country road", [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+    ("\U0001F691 w/ sirens coming up behind me", [("ambulance", "go_straight", "back"), ("car", "go_straight", "ego")]),
+])
+def test_a_picture_where_a_noun_would_stand_is_that_noun(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_picture_after_its_own_noun_or_where_no_noun_could_stand_names_no_one_more():
+    said = agents("2 kids \U0001F6B6\U0001F6B6 walking on the sidewalk to my right")
+    assert said.count(("pedestrian", "on_the_sidewalk", "right")) == 2 and len(said) == 3
+    said = agents("stopped at the stop sign, a cyclist came blowing thru from the left no helmet no lights \U0001F6B2")
+    assert [a for a in said if a[0] == "cyclist"] == [("cyclist", "go_straight", "road_of_left_turn")]
+
+
+def test_pictures_of_the_weather_and_arrows_read_as_words():
+    scene = lower("early morning \U0001F327\ufe0f a car ahead brakes \u2192 i stop").scenario
+    assert scene.weather.condition == "mid_rain" and len(scene.stages) == 2
+    assert stages("a bus stopped ahead of me n a ped walks out in front of it, crossing from the right")[0] == [
+        ("ego", "go_straight", None), ("bus", "stop", "front"), ("pedestrian", "cross_the_road", "front_right")]
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")

@@ -1163,6 +1163,65 @@ EMOJI_BETWEEN_WORDS = re.compile(rf"(?<=[A-Za-z0-9)])\s*(?:{EMOJI.pattern})(?:\s
                                  r"(?!(?:and|while|but|as|when|so|because|then|until|before|after)\b)(?=[A-Za-z@#])")
 
 
+@lru_cache(maxsize=1)
+def _symbols() -> tuple[dict[str, str], re.Pattern]:
+    words = {symbol: meaning for meaning, phrase in _entries("symbols") for symbol in phrase}
+    alternatives = "|".join(re.escape(s) for s in sorted(words, key=len, reverse=True))
+    return words, re.compile(rf"(?:{alternatives})(?:[\uFE0F\U0001F3FB-\U0001F3FF]|\u200D\S)*")
+
+
+def _entry_of(lex: Lexicon, words: str) -> tuple[str, str]:
+    phrase = tuple(words.lower().split())
+    entry = lex.phrases.get(phrase) or (lex.phrases.get((lex.base(phrase[0])[0],)) if len(phrase) == 1 else None)
+    return entry or ("", "")
+
+
+PICTURE_DETERMINERS = {"a", "an", "the", "my", "our", "your", "his", "her", "their", "this", "that", "another",
+                       "other", "some", "one", "two", "three", "four", "five", "no", "every", "each"}
+
+
+def _names_one(lex: Lexicon, before: str, after: str) -> bool:
+    """Whether a road user's picture stands where its noun would: after a determiner or a count, perhaps with a
+    word that describes it between ('a 🚶 steps', 'a slow 🚛', '2 🚗'), or opening what is said with more to come
+    ('🚑 w/ sirens coming up'). Elsewhere it only shows what was said ('no helmet no lights 🚲', 'Think bike! 🏍️
+    On Friday ...')."""
+    words = re.findall(r"[a-z0-9']+|[^\sa-z0-9']", before.lower())[-2:]
+    if not words or words[-1] in ".!?:;\n":
+        return bool(re.match(r"\s*[a-z]", after))
+    determiner = [w in PICTURE_DETERMINERS or w.isdigit() for w in words]
+    signal = words[0] == "the" and words[-1] in ("red", "amber", "green", "yellow")  # 'against the red 🚒': a light
+    return determiner[-1] or len(words) == 2 and determiner[0] and words[1].isalpha() and not signal and \
+        _entry_of(lex, words[1])[0] not in ("agents", "road", "weather")
+
+
+def _symbols_as_words(text: str) -> str:
+    """'a 🚶 steps onto the zebra', 'at the 🚦': a picture written for a word is that word (symbols.txt). One
+    that follows a word of its own kind only shows it ('2 kids 🚶🚶', 'a jogger 🏃 runs', 'rainy 🌧'), as does a
+    road user's picture where no noun could stand (`_names_one`); a picture of the weather, a light or a sign
+    stays after its word, so that it still ends what came before it, as any picture between words does."""
+    words, symbol = _symbols()
+    if not symbol.search(text):
+        return text
+    lex = lexicon()
+    out, at, before = [], 0, ("", "")
+    for m in symbol.finditer(text):
+        between = text[at:m.start()]
+        if between.strip():  # a word or a mark since the last picture: what it shows is that word's
+            before = _entry_of(lex, re.findall(r"[A-Za-z']+|\S", between)[-1])
+        said = words[m.group(0)[0]] if m.group(0)[0] in words else words[m.group(0)[:2]]
+        entry = _entry_of(lex, said)
+        shown = entry[0] == before[0] == "agents" or (entry == before and entry[0] != "")
+        out.append(between)
+        if entry[0] == "sequence":
+            out.append(f" {said} ")
+        elif entry[0] == "agents":
+            out.append("" if shown else f" {said} " if _names_one(lex, text[:m.start()], text[m.end():]) else m.group(0))
+        else:
+            out.append(m.group(0) if shown else f" {said} {m.group(0)}")
+        at, before = m.end(), entry
+    return re.sub(r"(?<=\S)  +(?=\S)", " ", "".join(out) + text[at:])
+
+
 def _emoji_breaks(text: str) -> str:
     """'FSD handled a cut-in like a champ on my commute 🙌 semi in the right lane merged ...': a post's emoji
     between words ends what was said before it, as a full stop does (not before a word that links on: 'in front
@@ -1299,7 +1358,7 @@ def tokenize(text: str) -> list[Token]:
     lex = lexicon()
     text = MARKDOWN_EMPHASIS.sub(r"\2", CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _restated(_comment_block(text)))))
     text = _without_members_described(
-        _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(_emoji_breaks(text)))))))
+        _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(_emoji_breaks(_symbols_as_words(text))))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
