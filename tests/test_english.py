@@ -9346,6 +9346,45 @@ def test_pictures_of_the_weather_and_arrows_read_as_words():
         ("ego", "go_straight", None), ("bus", "stop", "front"), ("pedestrian", "cross_the_road", "front_right")]
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("There was a lorry pulled in on the hard shoulder just ahead on the left with the hazards going.",
+     ("truck", "stop", "front_left")),
+    ("A squad car pulled in on the verge ahead on the left.", ("police", "stop", "front_left")),
+])
+def test_pulled_in_on_the_place_it_stands_is_stopped_there(prompt, expected):
+    assert agents(prompt) == [("car", "go_straight", "ego"), expected]
+
+
+def test_pulling_out_and_going_right_is_the_turn():
+    assert stages("At the yield sign I waited for a lorry from the right to pass and then pulled out and went "
+                  "right.")[1] == [("ego", "turn_right", None)]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A truck ahead. I pulled out to pass it. Then I pulled back in.", "change_lane_to_right"),
+    ("A truck ahead. I pulled out to pass it. Once I got past the truck I pulled back in.", "change_lane_to_right"),
+    ("Stuck behind a slow truck. I pull out to overtake and there's a bakkie coming at me from the other way, then I "
+     "had to duck back in behind the truck.", "change_lane_to_left"),
+])
+def test_pulling_back_in_returns_to_the_side_pulled_out_from(prompt, expected):
+    assert stages(prompt)[-1] == [("ego", expected, None)]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Suddenly angkot in front of ego stop for take passenger.", ("bus", "stop", "front")),
+    ("One ojek in left lane beside ego.", ("motorcycle", "go_straight", "left")),
+    ("One ibu is walking on sidewalk on left side.", ("pedestrian", "on_the_sidewalk", "left")),
+    ("A bakkie is parked ahead of me.", ("car", "stop", "front")),
+])
+def test_road_users_named_in_the_words_of_other_countries(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_pedestrian_crossover_is_a_crosswalk():
+    scene = road("I'm coming up to one of those pedestrian crossovers and two kids start across.")
+    assert "crosswalk" in scene.required_objects
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")

@@ -1212,7 +1212,11 @@ def _symbols_as_words(text: str) -> str:
         entry = _entry_of(lex, said)
         shown = entry[0] == before[0] == "agents" or (entry == before and entry[0] != "")
         out.append(between)
-        if entry[0] == "sequence":
+        line = text[:m.start()].rsplit("\n", 1)[-1]
+        heading = not symbol.sub("", line).strip() and re.match(r"[\W\d_]*[A-Z]", symbol.sub("", text[m.end():]))
+        if heading:  # '🚌🛑 Today on SR 50 a trooper ...': pictures before the first word of a line that opens
+            out.append(m.group(0))  # with a capital are its banner, not words of it
+        elif entry[0] == "sequence":
             out.append(f" {said} ")
         elif entry[0] == "agents":
             out.append("" if shown else f" {said} " if _names_one(lex, text[:m.start()], text[m.end():]) else m.group(0))

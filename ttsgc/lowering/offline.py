@@ -254,9 +254,10 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
                      "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic",
-                     "pelican", "puffin", "toucan", "footpath", "ute", "lollipop", "nearside", "offside"}
-# "without indicating", a pelican crossing, a ute, a lollipop lady, the nearside and the offside: keep-left
-# countries' words (a test protocol's nearside is excluded by its own words)
+                     "pelican", "puffin", "toucan", "footpath", "ute", "lollipop", "nearside", "offside", "bakkie",
+                     "bakkies", "garda", "gardai", "boreen", "angkot", "ojek", "matatu", "kombi"}
+# "without indicating", a pelican crossing, a ute, a lollipop lady, the nearside and the offside, a bakkie, the
+# gardai, an angkot: keep-left countries' words (a test protocol's nearside is excluded by its own words)
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
 _EGO_SPEAKS: ContextVar[bool] = ContextVar("ego_speaks", default=False)  # the ego is only ever "I" or "we"
 
@@ -370,9 +371,27 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
-                   _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after):
+                   _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
+                   _pulled_in_where_it_stands):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+def _pulled_in_where_it_stands(units: list[Unit]) -> list[Unit]:
+    """'a lorry pulled in on the hard shoulder', 'a squad car pulled in on the verge ahead': pulled in, over or up
+    on the place it stands is stopped there (pulling onto it, or into a lane, is a move). And 'pulled out and went
+    right': the pulling out is how the way said next begins, not a move of its own."""
+    out = list(units)
+    for k, u in enumerate(units[:-1]):
+        place = units[k + 1]
+        pulled = u.category == "actions" and [t.base for t in u.tokens][:1] == ["pull"] and len(u.tokens) == 2
+        if pulled and u.tokens[1].word in ("in", "over", "up") and place.category == "positions" and \
+                place.meaning == "shoulder" and place.tokens[0].word == "on":
+            out[k] = Unit(u.start, u.end, "actions", "stop", u.tokens)
+        if pulled and u.tokens[1].word == "out" and place.word == "and" and k + 2 < len(units) and \
+                units[k + 2].category == "actions" and units[k + 2].meaning in ("sideways_left", "sideways_right"):
+            out[k] = Unit(u.start, u.end, "word", "pulled out", u.tokens)
+    return out
 
 
 OTHER_SCENARIO_NOUNS = {"scenario", "scenarios", "scene", "scenes", "test", "tests", "case", "cases"}
@@ -3180,9 +3199,10 @@ def _main_clause_after_condition(current: list[Unit], units: list[Unit], k: int)
         # (up to its object), then the ego and its verb
     pronoun = u.category == "agents" and u.meaning == "ego" and u.word in ("i", "we", "you") or \
         u.category == "word" and u.word in SUBJECT_PRONOUNS
-    if not pronoun or len(current) < 2 or not (_has_verb(current) or any(x.word in COPULAS or _past_tense_verb(x)
-                                                                         for x in current)):
-        return False  # ("once he had cleared we went": a verb the lexicon does not know is still the verb)
+    if not pronoun or len(current) < 2 or not (_has_verb(current) or any(
+            x.word in COPULAS | {"got", "get", "gets"} or _past_tense_verb(x) for x in current)):
+        return False  # ("once he had cleared we went", "once I got past the lorry I pulled in": a verb the lexicon
+        # does not know is still the verb)
     if current[-1].category == "word" and current[-1].word in COPULAS | AUXILIARIES:
         return False  # "once it is you ...": the pronoun belongs to the condition
     return any(x.category == "actions" for x in units[k + 1:k + 3]) or \
@@ -5495,6 +5515,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             action, direction = "move", None  # "steered right onto the gravel and stopped": off the road, no lane
         if e.is_ego and action == "cut_in" and not direction and [t.base for t in u.tokens[:2]] == ["pull", "away"]:
             action = "move"  # "the ego is a bus pulling away from a bus stop": it moves off; no lane is named
+        if e.is_ego and action == "cut_in" and not direction and "back" in {t.word for t in u.tokens}:
+            e.features.add(f"returns_{stage}")  # "then pulled back in": to the lane it pulled out of
         if e.is_ego and action == "cut_in" and not direction and u.tokens[0].base in ("swerve", "jerk", "veer"):
             action = "move"  # "I slammed on the brakes and swerved": a jerk of the wheel, no lane named
         if action == "move" and u.base in LANE_STEERING and direction:
@@ -10541,6 +10563,11 @@ def _ego_action(e: Entity | None, action: str | None, stage: int) -> str:
                     None)  # "merging ... move right"; "wants to move into the right lane ... then makes the change"
         inward = next((x for x in SIDES if f"in_lane_{SIDES[1 - SIDES.index(x)]}" in e.features), None) \
             if "to_the_middle" in e.features else None  # "in the right-hand lane ... moves into the middle lane": left
+        moves = ("lane_change", "cut_in", "lane_left", "lane_right")
+        out = max((a for a in e.actions if a[0] < stage and a[4] in moves), key=lambda a: a[0], default=None) \
+            if f"returns_{stage}" in e.features and not direction else None
+        if out is not None:  # "pulled out to pass it ... then pulled back in": back to the side it left
+            return f"change_lane_to_{OTHER_SIDE[_ego_action(e, out[4], out[0]).rsplit('_', 1)[-1]]}"
         return f"change_lane_to_{direction or said or inward or _overtaking_side('ego_lane_change_direction')}"
         # ("pulling out": the side one overtakes on)
     return "go_straight"
