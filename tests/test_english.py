@@ -9385,6 +9385,46 @@ def test_a_pedestrian_crossover_is_a_crosswalk():
     assert "crosswalk" in scene.required_objects
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("Test car waiting to turn right into a side road, three of us coming the other way going straight on. It "
+     "has to let the last rider past.",
+     [("car", "turn_right", "ego")] + [("cyclist", "go_straight", "road_of_straight")] * 3),
+    ("Mini roundabout on the club route. I'm taking the lane going straight over with the test car sat behind me.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+    ("Sunday club run, four of us riding two abreast, test car coming up behind. Back marker shouts \"car back!\" and "
+     "we single out.", [("car", "go_straight", "ego")] + [("cyclist", "go_straight", "front")] * 4),
+])
+def test_riders_telling_of_the_vehicle_under_test_are_cyclists_placed_from_it(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_motorcyclist_telling_of_the_ego_is_not_read_as_a_cyclist():
+    said = agents("Saw this from behind on my motorbike: the ego is the car in front of me, sat at the give way.")
+    assert not any(a[0] == "cyclist" for a in said)
+
+
+def test_after_with_the_ego_placed_by_the_subject_places_the_subject():
+    assert agents("A cyclist rides in the lane with the ego right behind it.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+    assert ("cyclist", "go_straight", "front") in agents("A van is parked ahead with a cyclist behind it.")
+
+
+def test_a_word_problems_speeds_in_metres_per_second_and_its_questions():
+    lowered = lower("Car A is travelling at 22 m/s in the right-hand lane, accelerating at 1.5 m/s\u00b2. An ambulance "
+                    "comes up behind it in the same lane.\n(a) How far behind car A is the ambulance after 3 s?\n"
+                    "(b) Find the speed of the two vehicles.")
+    assert [(a.type, a.action, a.relative_to_ego) for a in lowered.scenario.stages[0].agents[1:]] == [
+        ("ambulance", "go_straight", "back")]
+    assert lowered.scenario.stages[0].agents[0].speed.value == 79 and len(lowered.scenario.stages) == 1
+
+
+def test_the_vehicle_named_first_in_a_lane_of_its_own_is_the_one_the_others_are_placed_by():
+    assert agents("A car is travelling in the right-hand lane of a two-lane road. A bus pulls out into the car's "
+                  "lane.") == [("bus", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+    assert ("truck", "go_straight", "right") in agents(
+        "Car in the left lane was sitting level with a semi in the right lane.")
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")

@@ -494,6 +494,13 @@ FIRST_PHASES = {"1", "a", "one"}
 CHECKING = {"check", "checks", "verify", "verifies", "ensure", "ensures", "confirm", "confirms", "assert", "asserts"}
 
 
+EXERCISE_ITEM = re.compile(r"\s*(?:\(?[a-h]\)|\(?(?:i|ii|iii|iv|v|vi)\)|[a-h]\.)\s+(?:how|what|when|where|which|why|"
+                           r"find|calculate|determine|show|work out|estimate|explain|convert|sketch|draw|does|do|did|"
+                           r"is|are|was|will|would|should|can|could|at what|by how|assume|hence|using|given|state|"
+                           r"describe|compare|suggest|deduce)\b", re.I)  # "(a) How long does it take the car to
+# catch up?", "(b) Find the stopping distance.": a word problem's questions, asked of the scene, are none of it
+
+
 def _without_answer_choices(lines: list[str]) -> list[str]:
     """A multiple-choice question's answers ('A  Move off quickly', '(b) On the left', '[ ] Sound your horn')
     are what a reader might do, not the scene: after a line that asks, lines marked A, B, C... (or 1, 2, 3, or
@@ -726,7 +733,8 @@ def _lines(text: str) -> str:
                 text = "\u00a7 " + text  # "Example 15: Right Turn With Oncoming Cyclist. The ego ...": its title
         return _keyed_agents("\n".join(_without_outline_numbers([text])))
     out = []
-    lines = _tables(_without_answer_choices(_without_outline_numbers(text.strip().splitlines())))
+    lines = _tables(_without_answer_choices(_without_outline_numbers(
+        [line for line in text.strip().splitlines() if not EXERCISE_ITEM.match(line)])))
     staged = False
     phased = any((m := KEY_LINE.match(line)) and PHASE_KEY.fullmatch(m.group(1).strip().lower()) for line in lines)
     speakers = _speakers(lines)
@@ -1356,6 +1364,10 @@ def _restated(text: str) -> str:
 PROPER_NAME = re.compile(r"(?<=[a-z0-9,;] )([A-Z][a-z]{3,})\b")  # "near Kegworth": a place, not a Kenworth
 
 
+ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?s)")
+METRES_PER_SECOND = re.compile(r"\b(\d{1,3}(?:\.\d+)?)\s*(?:m\s?/\s?s|ms\^?-1|metres per second|meters per second)\b")
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -1375,6 +1387,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\blet (him|her|them|it) (in|merge|over|out)( in)? (?:ahead of|in front of) (?:me|us)\b",
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
+    text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
+    text = METRES_PER_SECOND.sub(lambda m: f"{round(float(m.group(1)) * 3.6)} km/h", text)  # "at 22 m/s": a speed
     text = re.sub(r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1", text)  # "a 3+ lane highway": at least three lanes
     text = re.sub(r"\b(walks?|walked|walking|pushe?s?|pushed|pushing|wheels?|wheeled|wheeling) (his|her|their|a|the) "
                   r"(dog|pram|stroller|buggy|pushchair|trolley|cart) (across|over) (the|a) (road|street|crossing|zebra|"

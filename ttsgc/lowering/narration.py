@@ -207,8 +207,61 @@ def read_narration(prompt: str) -> Narration:
     text = _protagonist(text, notes)
     text = _party_at_the_wheel(text, notes)
     text = _storys_driver(text, notes)
+    text = _riders_beside_the_ego(text, notes)
     text = _moved_by_the_system(text)
     return Narration(text, notes)
+
+
+RIDING = re.compile(r"\b(?:(?:my|our|their)\s+(?:bicycles?|back\s+wheel)|on\s+(?:the|my|our|their)\s+bicycles?|"
+                    r"club\s+(?:run|ride|route)|ride\s+leader|(?:of\s+us|we|i|i'm|we're)\s+(?:riding|cycling)|"
+                    r"of\s+our\s+\w+\s+(?:is|are|was|were)\s+(?:riding|cycling)|"
+                    r"two\s+abreast|single\s+out|(?:our|the\s+last|the\s+front|back)\s+(?:riders?|marker)|sportive|"
+                    r"chaingang|peloton)\b", re.I)
+DRIVING_MYSELF = re.compile(r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)?\s+(?:driving|drove|drive)\b|"
+                            r"\b(?:my|our)\s+(?:car|van|truck|lorry)\b|\bin\s+the\s+(?:test\s+)?(?:car|vehicle)\b",
+                            re.I)
+MOTORBIKE = re.compile(r"\b(?:motorbikes?|motorcycles?|mopeds?|scooters?|bikers?|motorcyclists?|throttle)\b", re.I)
+NUMBER = r"(two|three|four|five|six|seven|eight|nine|ten|\d{1,2})"
+OUR_PEOPLE = r"(?:us|our\s+(?:lads|riders|girls|juniors|mates|group|club|members))"
+GROUPS_OF_US = (  # a group's count, said of the cyclists in the third person
+    (re.compile(rf"\b(?:the\s+)?{NUMBER}\s+of\s+{OUR_PEOPLE}", re.I), r"\1 cyclists"),
+    (re.compile(rf"\bone\s+of\s+{OUR_PEOPLE}", re.I), "a cyclist"),
+    (re.compile(rf"\bour\s+group\s+of\s+{NUMBER}\b", re.I), r"a group of \1 cyclists"),
+    (re.compile(r"\b(?:the\s+lot|all|both)\s+of\s+us\b", re.I), "the cyclists"),
+)
+AS_ONE = {"i'm": "{} is", "i am": "{} is", "i was": "{} was", "i've": "{} has", "i'd": "{} had", "i": "{}",
+          "me": "{}", "my": "{}'s", "myself": "{}"}
+AS_MANY = {"i'm": "the cyclists are", "i am": "the cyclists are", "i was": "the cyclists were",
+           "i've": "the cyclists have", "i'd": "the cyclists had", "i": "the cyclists", "me": "the cyclists",
+           "my": "the cyclists'", "myself": "the cyclists", "we're": "the cyclists are", "we are": "the cyclists are",
+           "we": "the cyclists", "us": "the cyclists", "our": "the cyclists'", "ourselves": "the cyclists"}
+FIRST_PERSON_WORDS = re.compile(r"\b(" + "|".join(w.replace(" ", r"\s+") for w in sorted(AS_MANY, key=len,
+                                                                                         reverse=True)) + r")\b", re.I)
+
+
+def _riders_beside_the_ego(text: str, notes: list[str]) -> str:
+    """'I'm riding a door's width out with the test car sat behind me', 'four of us riding two abreast, test car
+    coming up behind': a rider telling of a vehicle named as the one under test is a cyclist by it, not its
+    driver; the teller's words are said of the cyclist (or the cyclists, when the teller rides in a group), in the
+    third person, so that each is placed from the ego."""
+    if not RIDING.search(text) or DRIVING_MYSELF.search(text) or MOTORBIKE.search(text) or \
+            not re.search(rf"\b(?:{_ego_roles()})\b", text, re.I) or \
+            not re.search(r"\b(?:i|me|my|we|us|our)\b", text, re.I):
+        return text
+    for pattern, said in GROUPS_OF_US:
+        text = pattern.sub(said, text)
+    many = bool(re.search(r"\bcyclists\b|\b(?:we|us)\b", text, re.I))
+    named: list[str] = []
+
+    def said_of_them(m: re.Match) -> str:
+        word = re.sub(r"\s+", " ", m.group(1).lower())
+        if many or word not in AS_ONE:
+            return AS_MANY[word]
+        named.append(word)
+        return AS_ONE[word].format("a cyclist" if len(named) == 1 else "the cyclist")
+
+    notes.append("read the teller as a cyclist beside the vehicle under test")
+    return FIRST_PERSON_WORDS.sub(said_of_them, text)
 
 
 SYSTEM_MOVES_ME = re.compile(
@@ -731,6 +784,10 @@ BELIEF = re.compile(r"\b(?:i|we) (?:thought|figured|assumed|feared|was sure|were
                     r"(?=\s+(?:lmao|lol|haha|and then|but|turns out|turned out|then)\b|[.,;!?]|$)", re.I)
 
 
+CALL_OUT = re.compile(r"[\"\u201c](?:car|cars|truck|lorry|van|bus|bike|rider|horse|runner)\s+"
+                      r"(?:back|up|down|left|right|ahead|behind|coming|front)!*[\"\u201d]", re.I)
+
+
 def _asides(text: str) -> str:
     """'a big box truck, like a moving truck': a likeness is no second vehicle; 'a 2019 Harley': a model year
     counts nothing; 'I thought I was getting pulled over': what the narrator feared did not happen."""
@@ -738,6 +795,7 @@ def _asides(text: str) -> str:
     text = BELIEF.sub("", text)
     text = re.sub(r"\b(?:it\s+)?turn(?:s|ed)\s+out\s+(?=(?:that|he|she|it|they|i|we|the|to)\b)", "", text,
                   flags=re.I)  # "turns out he was ...": what was learnt, no turn
+    text = CALL_OUT.sub('""', text)  # 'shouts "car back!"': a warning called out, no car of its own
     return re.sub(r"\b(a|an|the|my|his|her|their|our|your)\s+(?:19[5-9]\d|20[0-4]\d)\s+(?=[A-Za-z])", r"\1 ", text,
                   flags=re.I)
 

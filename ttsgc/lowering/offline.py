@@ -648,6 +648,9 @@ def _with_absolutes(units: list[Unit]) -> list[Unit]:
         j = k + 1
         while j < len(units) and units[j].category == "word" and units[j].word in POSSESSIVES | {"the", "all", "a"}:
             j += 1
+        if _placed_by_the_subject(units, j):  # "riding in the lane with the test car sat behind the cyclist": the
+            out[k] = Unit(u.start, u.end, "comma", ",", (replace(u.tokens[0], word=",", base=","),))  # ego's place
+            continue
         thing = j < len(units) and (units[j].category == "agents" and units[j].meaning == "none" or
                                     units[j].category == "word" and units[j].word.isalpha() and
                                     units[j].word not in AUXILIARIES | GERUND_MODIFIERS and
@@ -660,6 +663,24 @@ def _with_absolutes(units: list[Unit]) -> list[Unit]:
             v = units[j + 1]
             out[j + 1] = Unit(v.start, v.end, "word", v.tokens[0].word, v.tokens)
     return out
+
+
+RELATIONS_TO_ONE = {"behind", "ahead", "level"}
+
+
+def _placed_by_the_subject(units: list[Unit], j: int) -> bool:
+    """'with the test car (sat) behind the cyclist', 'with the ego right behind it': after 'with', the ego placed
+    by one named again, said of the ego as a clause of its own (not 'with a cyclist behind it', where the one
+    after 'with' is placed)."""
+    if j >= len(units) or units[j].category != "agents" or units[j].meaning != "ego":
+        return False
+    k = j + 1
+    while k < len(units) and units[k].category == "word" and units[k].word in ("sat", "sitting", "right", "just"):
+        k += 1
+    pronouns = ("it", "him", "her", "them")
+    return k < len(units) and units[k].category == "positions" and units[k].meaning in RELATIONS_TO_ONE and (
+        units[k].tokens[-1].word in pronouns or k + 1 < len(units) and (
+            units[k + 1].word in pronouns + ("the",) or units[k + 1].category == "agents"))
 
 
 def _manner_adverb(t: Token) -> bool:
@@ -9113,11 +9134,14 @@ OWN_WAY = {"go_straight", "move", "turn", "turn_left", "turn_right", "lane_chang
 RELATIONS_TO_THE_EGO = {"follows": "behind", "leads": "ahead"}  # a relation by verb, as a place by the ego
 
 
-def _may_drive_the_scene(e: Entity) -> bool:
+def _may_drive_the_scene(e: Entity, own_lane: bool = False) -> bool:
     """(Not one stopped on the shoulder: 'a broken-down car on the hard shoulder and a police car behind it' are met
-    by the ego.)"""
+    by the ego.) With own_lane, a lane it is named in is its own ('Car A is travelling in the right-hand lane. An
+    ambulance comes up behind it')."""
+    lanes = {f for f in e.features if f.startswith("named_lane_")} if own_lane else set()
+    features = e.features - lanes - {f"side_{f[len('named_lane_'):]}" for f in lanes}
     return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and \
-        not e.features & (PLACE_FEATURES | PLACED_HOW) and e.road_type != "shoulder" and \
+        not features & (PLACE_FEATURES | PLACED_HOW) and e.road_type != "shoulder" and \
         (e.relative_to is None or e.relative_how in RELATIONS_TO_THE_EGO) and e.parent is None and e.named_of is None
 
 
@@ -9147,8 +9171,11 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if driver is not None and not driver_named:
         return driver  # "an eastbound driver on Park Road may not see a fire engine coming out": the one the case
         # is told from, as an audit or a rule names the road user it is about
-    anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e) and
-                   any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities)), None)
+    named_first = next((e for e in ordered if not e.is_ego), None)
+    anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e, own_lane=e is named_first) and (
+        any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities) or
+        e.said_at >= 0 and any(t.possessive and t.word == e.head and r.tokens[t.index - 1].word == "the"
+                               for t in r.tokens[e.said_at + 1:]))), None)  # "pulls out into the car's lane"
     # (not "a police car follows a red sedan": the follower is the one the scene is told from)
     if anchor is not None:
         return anchor
