@@ -6126,8 +6126,10 @@ def test_with_no_ego_named_the_vehicle_others_are_placed_by_is_the_ego():
     "I was driving north along the east kerb when a cyclist heading west crossed in front of me.",
     "The ego is northbound, its right wheels by the east curb. A van parked against the east curb ahead; a boy runs "
     "out from behind it, east to west across the ego's path.",
+    "Patrol car in lane 2 directly ahead of the ego; ego's in lane 2 behind it. Another car in lane 1 alongside the "
+    "ego and one in lane 3 just ahead of it.",
 ])
-def test_an_ego_given_two_compass_headings_reads_the_same_in_every_run(prompt):
+def test_an_agent_given_two_headings_or_lanes_reads_the_same_in_every_run(prompt):
     import os
     import subprocess
     import sys
@@ -9423,6 +9425,23 @@ def test_the_vehicle_named_first_in_a_lane_of_its_own_is_the_one_the_others_are_
                   "lane.") == [("bus", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
     assert ("truck", "go_straight", "right") in agents(
         "Car in the left lane was sitting level with a semi in the right lane.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was sat upstairs at the front. We were in the left lane and a hatchback that was in the lane to our right "
+     "swung in right in front of the bus. The people standing downstairs were thrown about.",
+     [("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "front_right")]),
+    ("Travelling back on the overnight coach last night, three lanes and we were in the inside lane, and a lorry in "
+     "the middle lane right beside us started drifting over into our lane.",
+     [("bus", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")]),
+])
+def test_a_passenger_tells_of_the_bus_they_ride_as_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_bus_driver_named_or_a_bus_stop_is_no_bus_ridden():
+    said = agents("We were stopped behind a yellow school bus with its red lights flashing. The bus driver waved.")
+    assert ("car", "stop", "ego") in said
 
 
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():

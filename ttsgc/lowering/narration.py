@@ -189,6 +189,7 @@ def read_narration(prompt: str) -> Narration:
     text = _authors(text, notes)
     text = _expectations(text, notes)
     text = _topic(text, notes)
+    text = _passengers_bus(text, notes)
     text = _street_corners(text)
     text = _ages(text)
     text = _side_street_named(_street_names(text))
@@ -212,14 +213,49 @@ def read_narration(prompt: str) -> Narration:
     return Narration(text, notes)
 
 
+ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|down)stairs\s+at\s+the|top\s+deck|"
+                      r"(?:on|in)\s+(?:the|our|this)\s+(?:bus|coach)\b"
+                      r"(?!\s+(?:stop|stops|lane|lanes|bay|station|shelter)\b)|"
+                      r"(?:our|your)\s+(?:bus|coach)\b|greyhound|overnight\s+coach|"
+                      r"(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b)", re.I)
+OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
+OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|city\s+|double[\s-]decker\s+)?"
+                     r"(?:bus|coach|greyhound)\b(?!\s+(?:stop|stops|lane|lanes|bay|shelter|station|route|company)\b)|"
+                     r"\b(?:the\s+)?number\s+\d{1,3}[a-z]?(?:\s+bus)?\b|\broute\s+\d{1,3}\b(?:\s+bus)?|"
+                     r"\bthe\s+(?:first\s+|last\s+)?\d{1,3}[a-z]?\b(?=\s+(?:on|out|from|today|this|stopped|pulled|was|"
+                     r"had|at|into))", re.I)
+BUS_DRIVER = re.compile(r"\b(?:our|your|the|my)\s+(?:bus\s+|coach\s+)?driver\b(?!\s+of\b)", re.I)
+
+
+def _passengers_bus(text: str, notes: list[str]) -> str:
+    """'I was sat upstairs at the front ... a hatchback swung in right in front of the bus. The driver slammed on':
+    a passenger's account of the bus or coach they ride; the bus (by any name: 'the number 38', 'the 7', 'our
+    coach') and its driver are the ego, which is a bus, and 'we' are on it."""
+    if not ON_A_BUS.search(text) or DRIVING_MYSELF.search(text) or OTHER_BUS.search(text) or \
+            re.search(r"\bego\b", text, re.I) or not re.search(r"\b(?:i|me|my|we|us|our)\b", text, re.I):
+        return text
+    text, named = OUR_BUS.subn("the ego bus", text)
+    text = re.sub(r"\bthe\s+driver\s+(?:of|on)\s+the\s+ego\s+bus\b", "the ego bus", text, flags=re.I)
+    text = BUS_DRIVER.sub("the ego", text)
+    text = re.sub(r"\b(i|we)\s+(?:was|were|am|are|'m|'re)\s+(?:sat|sitting|seated|standing)\s+(?:right\s+)?"
+                  r"(?:up|down)stairs\b(?:\s+(?:at|by|near)\s+the\s+(?:front|back|window))?", r"\1 was on board", text,
+                  flags=re.I)  # "I was sat upstairs at the front": where on the bus, not the bus standing
+    text = re.sub(r"\b(?:the\s+)?(?:people|passengers|ones|folk)\s+(?:standing|sitting|sat|seated)\s+"
+                  r"(?:up|down)stairs\b", "the passengers", text, flags=re.I)  # "the people standing downstairs went
+    # flying": on board
+    notes.append("read the bus the teller rides as the ego")
+    return text if named else "The ego is a bus. " + text
+
+
 RIDING = re.compile(r"\b(?:(?:my|our|their)\s+(?:bicycles?|back\s+wheel)|on\s+(?:the|my|our|their)\s+bicycles?|"
                     r"club\s+(?:run|ride|route)|ride\s+leader|(?:of\s+us|we|i|i'm|we're)\s+(?:riding|cycling)|"
                     r"of\s+our\s+\w+\s+(?:is|are|was|were)\s+(?:riding|cycling)|"
                     r"two\s+abreast|single\s+out|(?:our|the\s+last|the\s+front|back)\s+(?:riders?|marker)|sportive|"
                     r"chaingang|peloton)\b", re.I)
 DRIVING_MYSELF = re.compile(r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)?\s+(?:driving|drove|drive)\b|"
-                            r"\b(?:my|our)\s+(?:car|van|truck|lorry)\b|\bin\s+the\s+(?:test\s+)?(?:car|vehicle)\b",
-                            re.I)
+                            r"\b(?:my|our)\s+(?:car|van|truck|lorry)\b|"
+                            r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)\s+in\s+the\s+(?:test\s+)?"
+                            r"(?:car|vehicle)\b", re.I)
 MOTORBIKE = re.compile(r"\b(?:motorbikes?|motorcycles?|mopeds?|scooters?|bikers?|motorcyclists?|throttle)\b", re.I)
 NUMBER = r"(two|three|four|five|six|seven|eight|nine|ten|\d{1,2})"
 OUR_PEOPLE = r"(?:us|our\s+(?:lads|riders|girls|juniors|mates|group|club|members))"

@@ -5740,8 +5740,8 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
     right, back = COMPASS_OPPOSITE["compass_" + left][8:], COMPASS_OPPOSITE[heading][8:]
     for e in others:
         own = (_heading(e) or "")[8:] or None
-        came = next((f[12:] for f in e.features if f.startswith("compassfrom_")), None)
-        at = next((f[10:] for f in e.features if f.startswith("compassat_")), None)
+        came = next((f[12:] for f in sorted(e.features) if f.startswith("compassfrom_")), None)
+        at = next((f[10:] for f in sorted(e.features) if f.startswith("compassat_")), None)
         person = e.type == "pedestrian"  # (a northbound cyclist across an eastbound ego rides the road on its right)
         if person and own in (left, right):
             e.features.add("in_road")  # "walking east" across a northbound ego's road: across it
@@ -9963,7 +9963,7 @@ def _numbered_lane_sides(r: _Reader) -> None:
     """'I was in lane one, the van in lane two': lanes are counted from the kerb (lane 1 is the nearside lane in
     British and European usage), so a higher number is to the ego's right."""
     def number(e: Entity) -> int | None:
-        return next((int(f[5:]) for f in e.features if f.startswith("lane_") and f[5:].isdigit()), None)
+        return next((int(f[5:]) for f in sorted(e.features) if f.startswith("lane_") and f[5:].isdigit()), None)
 
     own = None
     for k, u in enumerate(r.units):  # "I'm in lane 1", "the player is in lane 2": the ego's own lane
@@ -10355,8 +10355,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     target_side = ego.action.rsplit("_", 1)[-1] if ego.action.startswith("change_lane") else None
     for e in others:  # "the HGV in lane one had to pull out into lane two": lanes count from the kerb
-        into = next((int(f[10:]) for f in e.features if f.startswith("into_lane_")), None)
-        own = next((int(f[5:]) for f in e.features if f.startswith("lane_") and f[5:].isdigit()), None)
+        into = next((int(f[10:]) for f in sorted(e.features) if f.startswith("into_lane_")), None)
+        own = next((int(f[5:]) for f in sorted(e.features) if f.startswith("lane_") and f[5:].isdigit()), None)
         said = any(a[4] in ("lane_left", "lane_right") or a[4] in ("lane_change", "cut_in") and a[5] for a in e.actions)
         if into is not None and own is not None and into != own and not said:  # "to the right into lane 2": said
             e.actions.append((e.stage, 2, ACTION_RANK["cut_in"] + 1, r.tick(), "lane_right" if into > own else
@@ -10551,7 +10551,7 @@ def _heading(e: Entity) -> str | None:
     """The one compass heading an agent is given; none when given several ('northbound ... the east curb ... east
     to west'): which is its own is not known, and taking any one of a set would read the text differently from
     one run to the next."""
-    headings = [f for f in e.features if f.startswith("compass_")]
+    headings = [f for f in sorted(e.features) if f.startswith("compass_")]
     return headings[0] if len(headings) == 1 else None
 
 
