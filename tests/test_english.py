@@ -9444,6 +9444,24 @@ def test_a_bus_driver_named_or_a_bus_stop_is_no_bus_ridden():
     assert ("car", "stop", "ego") in said
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus comes from the left, so the ego waits. When the bus has passed, then drives the ego in and turns left.",
+     [("ego", "turn_left", None)]),
+    ("The ego is in the middle lane. After that changes the ego lane to the right.",
+     [("ego", "change_lane_to_right", None)]),
+])
+def test_a_verb_put_before_the_ego_as_in_swedish_or_german_is_the_egos(prompt, expected):
+    assert stages(prompt)[-1] == expected
+
+
+def test_the_ego_after_a_verb_that_follows_a_comma_stays_its_object():
+    assert ("car", "go_straight", "back") in agents("A car comes from behind, passes the ego and cuts in.")
+
+
+def test_coming_against_us_is_coming_the_other_way():
+    assert ("car", "go_straight", "front_left") in agents("A car comes against me on the narrow street.")
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")

@@ -1364,6 +1364,14 @@ def _restated(text: str) -> str:
 PROPER_NAME = re.compile(r"(?<=[a-z0-9,;] )([A-Z][a-z]{3,})\b")  # "near Kegworth": a place, not a Kenworth
 
 
+INVERTED_VERBS = r"(drives|goes|turns|changes|continues|waits|enters|accelerates|brakes|starts|pulls|moves)"
+VERB_FIRST = re.compile(r"((?:\bthen\s+|(?:^|[.!?;]\s*)(?:after that|afterwards|now|next|finally)\s+,?\s*|"
+                        r"(?:^|[.!?;]\s*)(?:when|once|after|as soon as)\b[^.!?;,]{1,80},\s*(?:then\s+)?))"
+                        + INVERTED_VERBS + r"\s+(the\s+ego(?:\s+car|\s+vehicle)?)\b", re.M)
+# "when the bus has passed, then drives the ego in", "after that changes the ego lane to the right": the verb put
+# first, as in Swedish, German or Dutch, with the ego after it as its subject
+
+
 ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?s)")
 METRES_PER_SECOND = re.compile(r"\b(\d{1,3}(?:\.\d+)?)\s*(?:m\s?/\s?s|ms\^?-1|metres per second|meters per second)\b")
 
@@ -1404,6 +1412,7 @@ def tokenize(text: str) -> list[Token]:
                   r"\1 has \2", text)  # "it's pulled over a pickup", "he's blocked the lane": has, not is
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
     text = re.sub(r"\blet's\b", "let us", text)
+    text = VERB_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3)} {m.group(2)}", text)
     text = _without_attribution(text)
     text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
     text = re.sub(r"\b([a-z]+) (?:down|along|up|through) the ((?:left|right|middle|outside|inside|fast|slow|overtaking)"
