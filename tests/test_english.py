@@ -9462,6 +9462,18 @@ def test_coming_against_us_is_coming_the_other_way():
     assert ("car", "go_straight", "front_left") in agents("A car comes against me on the narrow street.")
 
 
+def test_an_order_to_stay_behind_then_move_over_is_the_egos():
+    assert stages("A lorry is ahead. Stay behind it, then move into the right lane.") == [
+        [("ego", "go_straight", None), ("truck", "go_straight", "front")], [("ego", "change_lane_to_right", None)]]
+    assert agents("A car stays behind us.") == [("car", "go_straight", "back"), ("car", "go_straight", "ego")]
+
+
+def test_a_driver_who_signals_is_indicating_and_lane_n_of_m_counts_the_lanes():
+    scene = lower("The host vehicle signals and changes lanes to the right.").scenario
+    assert "traffic_light" not in scene.road.required_signals
+    assert road("Lane 2 of 3. An HGV in lane 1 swerves into your lane.").lanes == 3
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")

@@ -1398,6 +1398,7 @@ def tokenize(text: str) -> list[Token]:
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
     text = METRES_PER_SECOND.sub(lambda m: f"{round(float(m.group(1)) * 3.6)} km/h", text)  # "at 22 m/s": a speed
     text = re.sub(r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1", text)  # "a 3+ lane highway": at least three lanes
+    text = re.sub(r"\blane (\d) of (\d)\b(?! lanes?\b)", r"lane \1 of \2 lanes", text)  # "Lane 2 of 3": one of three
     text = re.sub(r"\b(walks?|walked|walking|pushe?s?|pushed|pushing|wheels?|wheeled|wheeling) (his|her|their|a|the) "
                   r"(dog|pram|stroller|buggy|pushchair|trolley|cart) (across|over) (the|a) (road|street|crossing|zebra|"
                   r"crosswalk)\b", r"\1 \4 \5 \6 with \2 \3", text)  # "walks his dog across the road": he crosses

@@ -312,11 +312,12 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
 
 
 def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
-    """'I signalled and moved out into the right lane': 'signalled' right after the one who did it is their
-    indicating, not a signalled junction."""
+    """'I signalled and moved out into the right lane', 'the host vehicle signals and changes lanes': 'signalled'
+    right after the one who did it is their indicating, not a signalled junction."""
     return [Unit(u.start, u.end, "actions", "try", u.tokens)
-            if k > 0 and u.category == "road" and len(u.tokens) == 1 and u.tokens[0].word in ("signaled", "signalled")
-            and units[k - 1].category == "agents" else u for k, u in enumerate(units)]
+            if k > 0 and u.category == "road" and len(u.tokens) == 1 and u.tokens[0].word in (
+                "signaled", "signalled", "signals", "signaling", "signalling")
+            and units[k - 1].category == "agents" and units[k - 1].meaning != "none" else u for k, u in enumerate(units)]
 
 
 RELATIONS = {"wife", "husband", "friend", "brother", "sister", "buddy", "pal", "teacher", "neighbour", "neighbor",
