@@ -317,7 +317,8 @@ def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
     return [Unit(u.start, u.end, "actions", "try", u.tokens)
             if k > 0 and u.category == "road" and len(u.tokens) == 1 and u.tokens[0].word in (
                 "signaled", "signalled", "signals", "signaling", "signalling")
-            and units[k - 1].category == "agents" and units[k - 1].meaning != "none" else u for k, u in enumerate(units)]
+            and units[k - 1].category == "agents" and units[k - 1].meaning != "none" else u
+            for k, u in enumerate(units)]
 
 
 RELATIONS = {"wife", "husband", "friend", "brother", "sister", "buddy", "pal", "teacher", "neighbour", "neighbor",
