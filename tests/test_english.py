@@ -9325,9 +9325,10 @@ def test_an_emoji_between_words_ends_a_sentence():
 
 
 @pytest.mark.parametrize("prompt, expected", [
-    ("a \U0001F6B6 steps onto the zebra crossing in front of me", [("car", "go_straight", "ego"),
-                                                                  ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
-    ("stuck behind a slow \U0001F69B on a country road", [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
+    ("a \U0001F6B6 steps onto the zebra crossing in front of me",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("stuck behind a slow \U0001F69B on a country road",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front")]),
     ("\U0001F691 w/ sirens coming up behind me", [("ambulance", "go_straight", "back"), ("car", "go_straight", "ego")]),
 ])
 def test_a_picture_where_a_noun_would_stand_is_that_noun(prompt, expected):

@@ -1227,7 +1227,8 @@ def _symbols_as_words(text: str) -> str:
         elif entry[0] == "sequence":
             out.append(f" {said} ")
         elif entry[0] == "agents":
-            out.append("" if shown else f" {said} " if _names_one(lex, text[:m.start()], text[m.end():]) else m.group(0))
+            named = _names_one(lex, text[:m.start()], text[m.end():])
+            out.append("" if shown else f" {said} " if named else m.group(0))
         else:
             out.append(m.group(0) if shown else f" {said} {m.group(0)}")
         at, before = m.end(), entry
@@ -1382,7 +1383,8 @@ def tokenize(text: str) -> list[Token]:
     lex = lexicon()
     text = MARKDOWN_EMPHASIS.sub(r"\2", CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _restated(_comment_block(text)))))
     text = _without_members_described(
-        _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(_emoji_breaks(_symbols_as_words(text))))))))
+        _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(
+            _emoji_breaks(_symbols_as_words(text))))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
