@@ -9475,6 +9475,12 @@ def test_a_driver_who_signals_is_indicating_and_lane_n_of_m_counts_the_lanes():
     assert road("Lane 2 of 3. An HGV in lane 1 swerves into your lane.").lanes == 3
 
 
+def test_running_the_yellow_is_at_a_signal_and_a_yellow_line_is_none():
+    assert "traffic_light" in road("An oncoming pickup decides to run the yellow while the ego turns left."
+                                   ).required_signals
+    assert "traffic_light" not in road("A yellow taxi is parked on the yellow line ahead.").required_signals
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")
