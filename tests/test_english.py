@@ -9481,6 +9481,37 @@ def test_running_the_yellow_is_at_a_signal_and_a_yellow_line_is_none():
     assert "traffic_light" not in road("A yellow taxi is parked on the yellow line ahead.").required_signals
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("Cases:\na) When the light turns red, the ego stops.\nb) When the light is green, the ego turns left in front of "
+     "an oncoming car.", ("car", "go_straight", "road_of_straight")),
+    ("The red lights on the bus were flashing, so I stopped, but the car behind me went around me and passed the bus.",
+     ("car", "stop", "ego")),
+    ("Vehicle B drives alongside the ego and then enters the ego lane.", ("car", "change_lane_to_right", "front_left")),
+    ("The police officer signals the ego to stop.", ("car", "stop", "ego")),
+    ("We were driving around Lake Garda when a scooter overtook us on the left.",
+     ("motorcycle", "go_straight", "back_left")),
+])
+def test_what_the_newer_readings_leave_as_it_was(prompt, expected):
+    """Lettered cases that are no questions, a bus the teller does not ride, 'the ego lane' after a verb, an order
+    signalled to someone, 'Lake Garda': each read as before the readings of pictures, passengers and word order."""
+    assert expected in agents(prompt)
+
+
+def test_a_test_written_with_we_about_cyclists_has_no_cyclist_teller():
+    said = agents("In this test we check that the ego vehicle overtakes two cyclists riding two abreast with enough "
+                  "clearance.")
+    assert [a for a in said if a[0] == "cyclist"] == [("cyclist", "go_straight", "front")] * 2
+
+
+def test_an_acceleration_spelled_out_an_arrow_between_values_and_kin_in_pictures_are_no_speed_stage_or_agent():
+    scene = lower("A car ahead accelerates from rest at 2 meters per second squared.").scenario
+    assert all(a.speed is None for a in scene.agents())
+    scene = lower("Speed drops 80 \u2192 30 km/h as the ego enters the work zone behind a truck.").scenario
+    assert len(scene.stages) == 1
+    assert not any(a[0] == "pedestrian" for a in agents(
+        "Me and my \U0001F469 were driving home when a cyclist swerved into our lane."))
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")

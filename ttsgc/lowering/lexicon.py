@@ -494,11 +494,13 @@ FIRST_PHASES = {"1", "a", "one"}
 CHECKING = {"check", "checks", "verify", "verifies", "ensure", "ensures", "confirm", "confirms", "assert", "asserts"}
 
 
-EXERCISE_ITEM = re.compile(r"\s*(?:\(?[a-h]\)|\(?(?:i|ii|iii|iv|v|vi)\)|[a-h]\.)\s+(?:how|what|when|where|which|why|"
-                           r"find|calculate|determine|show|work out|estimate|explain|convert|sketch|draw|does|do|did|"
-                           r"is|are|was|will|would|should|can|could|at what|by how|assume|hence|using|given|state|"
-                           r"describe|compare|suggest|deduce)\b", re.I)  # "(a) How long does it take the car to
-# catch up?", "(b) Find the stopping distance.": a word problem's questions, asked of the scene, are none of it
+EXERCISE_ITEM = re.compile(r"\s*(?:\(?[a-h]\)|\(?(?:i|ii|iii|iv|v|vi)\)|[a-h]\.)\s+(?:(?:how|what|find|calculate|"
+                           r"determine|work out|estimate|explain|convert|at what|by how|hence|deduce|compare|"
+                           r"show that|prove)\b.*|"
+                           r".*\?\s*)$",
+                           re.I)  # "(a) How long does it take the car to catch up?", "(b) Find the stopping
+# distance.": a word problem's questions, asked of the scene, are none of it (not "a) When the light turns red, the
+# ego stops": a case of its own)
 
 
 def _without_answer_choices(lines: list[str]) -> list[str]:
@@ -1224,10 +1226,13 @@ def _symbols_as_words(text: str) -> str:
         heading = not symbol.sub("", line).strip() and re.match(r"[\W\d_]*[A-Z]", symbol.sub("", text[m.end():]))
         if heading:  # '🚌🛑 Today on SR 50 a trooper ...': pictures before the first word of a line that opens
             out.append(m.group(0))  # with a capital are its banner, not words of it
-        elif entry[0] == "sequence":
-            out.append(f" {said} ")
+        elif entry[0] == "sequence":  # "80 → 30 km/h", "lane 2 → lane 1": from one value to the next
+            values = re.search(r"\d\s*$", text[:m.start()]) or re.match(r"\s*(?:\d|lane\b)", text[m.end():], re.I)
+            out.append(" to " if values else f" {said} ")
         elif entry[0] == "agents":
-            named = _names_one(lex, text[:m.start()], text[m.end():])
+            named = _names_one(lex, text[:m.start()], text[m.end():]) and not (  # "me and my 👩": kin, on board
+                said in ("pedestrian", "child") and re.search(r"\b(?:my|our|his|her|their|the)\s*$", text[:m.start()],
+                                                              re.I))
             out.append("" if shown else f" {said} " if named else m.group(0))
         else:
             out.append(m.group(0) if shown else f" {said} {m.group(0)}")
@@ -1368,12 +1373,14 @@ PROPER_NAME = re.compile(r"(?<=[a-z0-9,;] )([A-Z][a-z]{3,})\b")  # "near Kegwort
 INVERTED_VERBS = r"(drives|goes|turns|changes|continues|waits|enters|accelerates|brakes|starts|pulls|moves)"
 VERB_FIRST = re.compile(r"((?:\bthen\s+|(?:^|[.!?;]\s*)(?:after that|afterwards|now|next|finally)\s+,?\s*|"
                         r"(?:^|[.!?;]\s*)(?:when|once|after|as soon as)\b[^.!?;,]{1,80},\s*(?:then\s+)?))"
-                        + INVERTED_VERBS + r"\s+(the\s+ego(?:\s+car|\s+vehicle)?)\b", re.M)
+                        + INVERTED_VERBS + r"\s+(the\s+ego(?:\s+car|\s+vehicle)?)\b"
+                        r"(?!'s|\s+(?:lane|lanes|path|route|car's|vehicle's)\b)", re.M)
 # "when the bus has passed, then drives the ego in", "after that changes the ego lane to the right": the verb put
 # first, as in Swedish, German or Dutch, with the ego after it as its subject
 
 
-ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?s)")
+ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*(?:m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?s)|(?:metres|meters) per second "
+                          r"(?:squared|per second))")
 METRES_PER_SECOND = re.compile(r"\b(\d{1,3}(?:\.\d+)?)\s*(?:m\s?/\s?s|ms\^?-1|metres per second|meters per second)\b")
 
 

@@ -213,10 +213,13 @@ def read_narration(prompt: str) -> Narration:
     return Narration(text, notes)
 
 
+NOT_ITS_BODY = r"(?!\s+(?:stop|stops|lane|lanes|bay|station|shelter|route|company)\b)"
 ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|down)stairs\s+at\s+the|top\s+deck|"
-                      r"(?:on|in)\s+(?:the|our|this)\s+(?:bus|coach)\b"
-                      r"(?!\s+(?:stop|stops|lane|lanes|bay|station|shelter)\b)|"
-                      r"(?:our|your)\s+(?:bus|coach)\b|greyhound|overnight\s+coach|"
+                      r"(?:i|we)(?:'m|'re|\s+am|\s+are|\s+was|\s+were)\s+(?:sat\s+|sitting\s+|riding\s+|"
+                      r"travelling\s+|traveling\s+)?(?:on|aboard)\s+(?:the|our|this|a)\s+(?:bus|coach)\b" +
+                      NOT_ITS_BODY +
+                      r"|(?:i|we)\s+(?:rode|took|caught|got\s+on)\s+(?:the|our|a)\s+(?:bus|coach)\b" + NOT_ITS_BODY +
+                      r"|(?:our|your)\s+(?:bus|coach)\b" + NOT_ITS_BODY + r"|overnight\s+coach|"
                       r"(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b)", re.I)
 OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
 OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|city\s+|double[\s-]decker\s+)?"
@@ -224,7 +227,8 @@ OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|c
                      r"\b(?:the\s+)?number\s+\d{1,3}[a-z]?(?:\s+bus)?\b|\broute\s+\d{1,3}\b(?:\s+bus)?|"
                      r"\bthe\s+(?:first\s+|last\s+)?\d{1,3}[a-z]?\b(?=\s+(?:on|out|from|today|this|stopped|pulled|was|"
                      r"had|at|into))", re.I)
-BUS_DRIVER = re.compile(r"\b(?:our|your|the|my)\s+(?:bus\s+|coach\s+)?driver\b(?!\s+of\b)", re.I)
+BUS_DRIVER = re.compile(r"\b(?:(?:our|your|my)\s+(?:bus\s+|coach\s+)?driver|the\s+(?:bus|coach)\s+driver)\b"
+                        r"(?!\s+(?:of|in|ahead|behind|next)\b)", re.I)
 
 
 def _passengers_bus(text: str, notes: list[str]) -> str:
@@ -247,15 +251,22 @@ def _passengers_bus(text: str, notes: list[str]) -> str:
     return text if named else "The ego is a bus. " + text
 
 
-RIDING = re.compile(r"\b(?:(?:my|our|their)\s+(?:bicycles?|back\s+wheel)|on\s+(?:the|my|our|their)\s+bicycles?|"
-                    r"club\s+(?:run|ride|route)|ride\s+leader|(?:of\s+us|we|i|i'm|we're)\s+(?:riding|cycling)|"
-                    r"of\s+our\s+\w+\s+(?:is|are|was|were)\s+(?:riding|cycling)|"
-                    r"two\s+abreast|single\s+out|(?:our|the\s+last|the\s+front|back)\s+(?:riders?|marker)|sportive|"
-                    r"chaingang|peloton)\b", re.I)
+RIDING = re.compile(r"\b(?:(?:i|we)(?:'m|'re|\s+am|\s+are|\s+was|\s+were)?\s+(?:riding|cycling|rode|cycled)|"
+                    r"of\s+us\s+(?:riding|cycling|single|two\s+abreast|in\s+single)|"
+                    r"(?:my|our)\s+(?:bicycles?|club|club\s+run|group\s+ride|riders|lads|juniors|back\s+wheel)|"
+                    r"of\s+our\s+\w+\s+(?:is|are|was|were)\s+(?:riding|cycling)|on\s+(?:my|our)\s+bicycles?|"
+                    r"(?:the\s+last|the\s+front)\s+rider|back\s+marker|ride\s+leader|club\s+(?:run|route))\b",
+                    re.I)  # the teller said to ride, or one of the teller's group
 DRIVING_MYSELF = re.compile(r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)?\s+(?:driving|drove|drive)\b|"
-                            r"\b(?:my|our)\s+(?:car|van|truck|lorry)\b|"
+                            r"\b(?:my|our)\s+(?:car|van|truck|lorry|test\s+car|test\s+vehicle)\b|"
+                            r"\b(?:safety|test)\s+driver\b|"
                             r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)\s+in\s+the\s+(?:test\s+)?"
-                            r"(?:car|vehicle)\b", re.I)
+                            r"(?:car|vehicle|av)\b", re.I)
+UNDER_TEST = re.compile(r"\b(?:test\s+(?:car|vehicle)|av|autonomous\s+(?:car|vehicle)|self[\s-]driving\s+(?:car|"
+                        r"vehicle)|driverless\s+(?:car|vehicle)|automated\s+(?:car|vehicle)|robotaxi|vehicle\s+under\s+"
+                        r"test|ego(?:\s+car|\s+vehicle)?|vut|sut)\b", re.I)
+CALL_OUT = re.compile(r"[\"\u201c](?:car|cars|truck|lorry|van|bus|bike|rider|horse|runner)\s+"
+                      r"(?:back|up|down|left|right|ahead|behind|coming|front)!*[\"\u201d]", re.I)
 MOTORBIKE = re.compile(r"\b(?:motorbikes?|motorcycles?|mopeds?|scooters?|bikers?|motorcyclists?|throttle)\b", re.I)
 NUMBER = r"(two|three|four|five|six|seven|eight|nine|ten|\d{1,2})"
 OUR_PEOPLE = r"(?:us|our\s+(?:lads|riders|girls|juniors|mates|group|club|members))"
@@ -281,9 +292,9 @@ def _riders_beside_the_ego(text: str, notes: list[str]) -> str:
     driver; the teller's words are said of the cyclist (or the cyclists, when the teller rides in a group), in the
     third person, so that each is placed from the ego."""
     if not RIDING.search(text) or DRIVING_MYSELF.search(text) or MOTORBIKE.search(text) or \
-            not re.search(rf"\b(?:{_ego_roles()})\b", text, re.I) or \
-            not re.search(r"\b(?:i|me|my|we|us|our)\b", text, re.I):
+            not UNDER_TEST.search(text):
         return text
+    text = CALL_OUT.sub('""', text)  # 'shouts "car back!"': a warning called out, the test car named again
     for pattern, said in GROUPS_OF_US:
         text = pattern.sub(said, text)
     many = bool(re.search(r"\bcyclists\b|\b(?:we|us)\b", text, re.I))
@@ -820,10 +831,6 @@ BELIEF = re.compile(r"\b(?:i|we) (?:thought|figured|assumed|feared|was sure|were
                     r"(?=\s+(?:lmao|lol|haha|and then|but|turns out|turned out|then)\b|[.,;!?]|$)", re.I)
 
 
-CALL_OUT = re.compile(r"[\"\u201c](?:car|cars|truck|lorry|van|bus|bike|rider|horse|runner)\s+"
-                      r"(?:back|up|down|left|right|ahead|behind|coming|front)!*[\"\u201d]", re.I)
-
-
 def _asides(text: str) -> str:
     """'a big box truck, like a moving truck': a likeness is no second vehicle; 'a 2019 Harley': a model year
     counts nothing; 'I thought I was getting pulled over': what the narrator feared did not happen."""
@@ -831,7 +838,6 @@ def _asides(text: str) -> str:
     text = BELIEF.sub("", text)
     text = re.sub(r"\b(?:it\s+)?turn(?:s|ed)\s+out\s+(?=(?:that|he|she|it|they|i|we|the|to)\b)", "", text,
                   flags=re.I)  # "turns out he was ...": what was learnt, no turn
-    text = CALL_OUT.sub('""', text)  # 'shouts "car back!"': a warning called out, no car of its own
     return re.sub(r"\b(a|an|the|my|his|her|their|our|your)\s+(?:19[5-9]\d|20[0-4]\d)\s+(?=[A-Za-z])", r"\1 ", text,
                   flags=re.I)
 

@@ -255,7 +255,7 @@ def _ego_vehicle_abbreviated(tokens: list[Token], found) -> bool:
 LEFT_HAND_TRAFFIC = {"motorway", "carriageway", "hgv", "constable", "footway", "pavement", "indicate", "indicated",
                      "indicating", "indicator", "indicators", "uk", "britain", "england", "scotland", "wales", "artic",
                      "pelican", "puffin", "toucan", "footpath", "ute", "lollipop", "nearside", "offside", "bakkie",
-                     "bakkies", "garda", "gardai", "boreen", "angkot", "ojek", "matatu", "kombi"}
+                     "bakkies", "gardai", "boreen", "angkot", "ojek", "matatu"}
 # "without indicating", a pelican crossing, a ute, a lollipop lady, the nearside and the offside, a bakkie, the
 # gardai, an angkot: keep-left countries' words (a test protocol's nearside is excluded by its own words)
 _KEEPS_LEFT: ContextVar[bool] = ContextVar("keeps_left", default=False)
@@ -317,8 +317,18 @@ def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
     return [Unit(u.start, u.end, "actions", "try", u.tokens)
             if k > 0 and u.category == "road" and len(u.tokens) == 1 and u.tokens[0].word in (
                 "signaled", "signalled", "signals", "signaling", "signalling")
-            and units[k - 1].category == "agents" and units[k - 1].meaning != "none" else u
-            for k, u in enumerate(units)]
+            and units[k - 1].category == "agents" and units[k - 1].meaning != "none" and not _signalled_to(units, k)
+            else u for k, u in enumerate(units)]
+
+
+def _signalled_to(units: list[Unit], k: int) -> bool:
+    """'the officer signals the ego to stop', 'signals to us': an order given to someone, not indicating."""
+    j = k + 1
+    while j < len(units) and units[j].word in ("the", "a", "an", "us", "me", "him", "her", "them"):
+        if units[j].word in ("us", "me", "him", "her", "them"):
+            return True
+        j += 1
+    return j < len(units) and (units[j].category == "agents" or units[j].word == "to")
 
 
 RELATIONS = {"wife", "husband", "friend", "brother", "sister", "buddy", "pal", "teacher", "neighbour", "neighbor",
