@@ -9512,6 +9512,18 @@ def test_an_acceleration_spelled_out_an_arrow_between_values_and_kin_in_pictures
         "Me and my \U0001F469 were driving home when a cyclist swerved into our lane."))
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car on the left of the ego and one on the right.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "left"), ("car", "go_straight", "right")]),
+    ("Ego in lane 2. Another car in lane 1 alongside the ego and one in lane 3 just ahead of it.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_right"), ("car", "go_straight", "left")]),
+    ("Two cars: one on the left of the ego and one on the right.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "left"), ("car", "go_straight", "right")]),
+])
+def test_and_one_with_a_place_of_its_own_is_one_more_of_the_kind(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")

@@ -384,9 +384,27 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
-                   _pulled_in_where_it_stands):
+                   _pulled_in_where_it_stands, _one_more_of_the_kind):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+def _one_more_of_the_kind(units: list[Unit]) -> list[Unit]:
+    """'a car on the left of the ego and one on the right', 'a car in lane 1 and one in lane 3': 'one' with a place
+    of its own, after a single road user named with 'a' in the same sentence and no count, is one more of its
+    kind (not 'two cars: one on the left and one on the right', the members of a count)."""
+    out = list(units)
+    for k, u in enumerate(units[2:-1], 2):
+        if u.category != "numbers" or u.word != "one" or units[k - 1].word not in ("and", ",") or \
+                units[k + 1].category != "positions":
+            continue
+        sentence = [x for x in units[:k] if x.tokens[0].sentence == u.tokens[0].sentence]
+        named = [j for j, x in enumerate(sentence) if x.category == "agents" and x.meaning not in ("ego", "none")]
+        counted = any(x.category == "numbers" for x in sentence)
+        if named and not counted and sentence[named[-1] - 1].word in ("a", "an", "another") and \
+                not sentence[named[-1]].tokens[-1].plural:
+            out[k] = Unit(u.start, u.end, "agents", sentence[named[-1]].meaning, u.tokens)
+    return out
 
 
 def _pulled_in_where_it_stands(units: list[Unit]) -> list[Unit]:
