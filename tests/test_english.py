@@ -9524,6 +9524,12 @@ def test_and_one_with_a_place_of_its_own_is_one_more_of_the_kind(prompt, expecte
     assert agents(prompt) == expected
 
 
+def test_a_van_unloading_outside_a_shop_stands_and_the_shop_and_the_trolley_are_no_one():
+    assert agents("I'm in the right lane, level with a van unloading outside a shop in the left lane. A bloke with a "
+                  "sack trolley walks across in front of me.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "left"), ("pedestrian", "cross_the_road", "front")]
+
+
 def test_the_guy_honking_behind_an_ego_at_the_light_stands():
     assert ("car", "stop", "back") in agents(
         "My car was first at the red light and stayed stopped. Better than the guy behind me honking.")
