@@ -496,11 +496,9 @@ CHECKING = {"check", "checks", "verify", "verifies", "ensure", "ensures", "confi
 
 EXERCISE_ITEM = re.compile(r"\s*(?:\(?[a-h]\)|\(?(?:i|ii|iii|iv|v|vi)\)|[a-h]\.)\s+(?:(?:how|what|find|calculate|"
                            r"determine|work out|estimate|explain|convert|at what|by how|hence|deduce|compare|"
-                           r"show that|prove)\b.*|"
-                           r".*\?\s*)$",
-                           re.I)  # "(a) How long does it take the car to catch up?", "(b) Find the stopping
-# distance.": a word problem's questions, asked of the scene, are none of it (not "a) When the light turns red, the
-# ego stops": a case of its own)
+                           r"show that|prove)\b.*|.*\?\s*)$", re.I)
+# "(a) How long does it take the car to catch up?", "(b) Find the stopping distance.": a word problem's questions,
+# asked of the scene, are none of it (not "a) When the light turns red, the ego stops": a case of its own)
 
 
 def _without_answer_choices(lines: list[str]) -> list[str]:
@@ -1196,7 +1194,7 @@ def _names_one(lex: Lexicon, before: str, after: str) -> bool:
     ('🚑 w/ sirens coming up'). Elsewhere it only shows what was said ('no helmet no lights 🚲', 'Think bike! 🏍️
     On Friday ...')."""
     words = re.findall(r"[a-z0-9']+|[^\sa-z0-9']", before.lower())[-2:]
-    if not words or words[-1] in ".!?:;\n":
+    if not words or words[-1] in ".!?:;":
         return bool(re.match(r"\s*[a-z]", after))
     determiner = [w in PICTURE_DETERMINERS or w.isdigit() for w in words]
     signal = words[0] == "the" and words[-1] in ("red", "amber", "green", "yellow")  # 'against the red 🚒': a light

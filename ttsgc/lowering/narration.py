@@ -223,7 +223,7 @@ ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|do
                       r"(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b)", re.I)
 OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
 OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|city\s+|double[\s-]decker\s+)?"
-                     r"(?:bus|coach|greyhound)\b(?!\s+(?:stop|stops|lane|lanes|bay|shelter|station|route|company)\b)|"
+                     r"(?:bus|coach|greyhound)\b" + NOT_ITS_BODY + r"|"
                      r"\b(?:the\s+)?number\s+\d{1,3}[a-z]?(?:\s+bus)?\b|\broute\s+\d{1,3}\b(?:\s+bus)?|"
                      r"\bthe\s+(?:first\s+|last\s+)?\d{1,3}[a-z]?\b(?=\s+(?:on|out|from|today|this|stopped|pulled|was|"
                      r"had|at|into))", re.I)
@@ -262,7 +262,7 @@ DRIVING_MYSELF = re.compile(r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)?\
                             r"\b(?:safety|test)\s+driver\b|"
                             r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)\s+in\s+the\s+(?:test\s+)?"
                             r"(?:car|vehicle|av)\b", re.I)
-UNDER_TEST = re.compile(r"\b(?:test\s+(?:car|vehicle)|av|autonomous\s+(?:car|vehicle)|self[\s-]driving\s+(?:car|"
+UNDER_TEST = re.compile(r"\b(?:test\s+(?:car|vehicle)|(?:the|our|an)\s+av|autonomous\s+(?:car|vehicle)|self[\s-]driving\s+(?:car|"
                         r"vehicle)|driverless\s+(?:car|vehicle)|automated\s+(?:car|vehicle)|robotaxi|vehicle\s+under\s+"
                         r"test|ego(?:\s+car|\s+vehicle)?|vut|sut)\b", re.I)
 CALL_OUT = re.compile(r"[\"\u201c](?:car|cars|truck|lorry|van|bus|bike|rider|horse|runner)\s+"

@@ -384,7 +384,7 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
-                   _pulled_in_where_it_stands, _one_more_of_the_kind):
+                   _pulled_in_or_out, _one_more_of_the_kind):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
 
@@ -407,7 +407,7 @@ def _one_more_of_the_kind(units: list[Unit]) -> list[Unit]:
     return out
 
 
-def _pulled_in_where_it_stands(units: list[Unit]) -> list[Unit]:
+def _pulled_in_or_out(units: list[Unit]) -> list[Unit]:
     """'a lorry pulled in on the hard shoulder', 'a squad car pulled in on the verge ahead': pulled in, over or up
     on the place it stands is stopped there (pulling onto it, or into a lane, is a move). And 'pulled out and went
     right': the pulling out is how the way said next begins, not a move of its own."""
