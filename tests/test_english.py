@@ -9401,6 +9401,16 @@ def test_riders_telling_of_the_vehicle_under_test_are_cyclists_placed_from_it(pr
     assert agents(prompt) == expected
 
 
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was crossing the road when the test car turned left towards me.",
+     [("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("I was standing at the kerb waiting to cross when the AV pulled up and stopped for me.",
+     [("car", "stop", "ego"), ("pedestrian", "on_the_sidewalk", "front")]),
+])
+def test_a_walker_telling_of_the_vehicle_under_test_is_a_pedestrian_by_it(prompt, expected):
+    assert agents(prompt) == expected
+
+
 def test_a_motorcyclist_telling_of_the_ego_is_not_read_as_a_cyclist():
     said = agents("Saw this from behind on my motorbike: the ego is the car in front of me, sat at the give way.")
     assert not any(a[0] == "cyclist" for a in said)

@@ -208,7 +208,7 @@ def read_narration(prompt: str) -> Narration:
     text = _protagonist(text, notes)
     text = _party_at_the_wheel(text, notes)
     text = _storys_driver(text, notes)
-    text = _riders_beside_the_ego(text, notes)
+    text = _tellers_beside_the_ego(text, notes)
     text = _moved_by_the_system(text)
     return Narration(text, notes)
 
@@ -270,7 +270,7 @@ CALL_OUT = re.compile(r"[\"\u201c](?:car|cars|truck|lorry|van|bus|bike|rider|hor
 MOTORBIKE = re.compile(r"\b(?:motorbikes?|motorcycles?|mopeds?|scooters?|bikers?|motorcyclists?|throttle)\b", re.I)
 NUMBER = r"(two|three|four|five|six|seven|eight|nine|ten|\d{1,2})"
 OUR_PEOPLE = r"(?:us|our\s+(?:lads|riders|girls|juniors|mates|group|club|members))"
-GROUPS_OF_US = (  # a group's count, said of the cyclists in the third person
+GROUPS_OF_US = (  # a group's count, said of the riders (or walkers) in the third person
     (re.compile(rf"\b(?:the\s+)?{NUMBER}\s+of\s+{OUR_PEOPLE}", re.I), r"\1 cyclists"),
     (re.compile(rf"\bone\s+of\s+{OUR_PEOPLE}", re.I), "a cyclist"),
     (re.compile(rf"\bour\s+group\s+of\s+{NUMBER}\b", re.I), r"a group of \1 cyclists"),
@@ -278,36 +278,43 @@ GROUPS_OF_US = (  # a group's count, said of the cyclists in the third person
 )
 AS_ONE = {"i'm": "{} is", "i am": "{} is", "i was": "{} was", "i've": "{} has", "i'd": "{} had", "i": "{}",
           "me": "{}", "my": "{}'s", "myself": "{}"}
-AS_MANY = {"i'm": "the cyclists are", "i am": "the cyclists are", "i was": "the cyclists were",
-           "i've": "the cyclists have", "i'd": "the cyclists had", "i": "the cyclists", "me": "the cyclists",
-           "my": "the cyclists'", "myself": "the cyclists", "we're": "the cyclists are", "we are": "the cyclists are",
-           "we": "the cyclists", "us": "the cyclists", "our": "the cyclists'", "ourselves": "the cyclists"}
+AS_MANY = {"i'm": "the {}s are", "i am": "the {}s are", "i was": "the {}s were", "i've": "the {}s have",
+           "i'd": "the {}s had", "i": "the {}s", "me": "the {}s", "my": "the {}s'", "myself": "the {}s",
+           "we're": "the {}s are", "we are": "the {}s are", "we": "the {}s", "us": "the {}s", "our": "the {}s'",
+           "ourselves": "the {}s"}
+WALKING = re.compile(r"\b(?:(?:i|we)(?:'m|'re|\s+am|\s+are|\s+was|\s+were)?\s+(?:crossing|walking|stepping|"
+                     r"stepped\s+(?:out|onto|off)|standing\s+(?:at|on)\s+the\s+(?:kerb|curb|crossing|corner|zebra)|"
+                     r"waiting\s+to\s+cross)|(?:my|our)\s+(?:guide\s+dog|white\s+cane|pram|buggy|stroller|"
+                     r"pushchair))\b", re.I)  # the teller said to be on foot
 FIRST_PERSON_WORDS = re.compile(r"\b(" + "|".join(w.replace(" ", r"\s+") for w in sorted(AS_MANY, key=len,
                                                                                          reverse=True)) + r")\b", re.I)
 
 
-def _riders_beside_the_ego(text: str, notes: list[str]) -> str:
+def _tellers_beside_the_ego(text: str, notes: list[str]) -> str:
     """'I'm riding a door's width out with the test car sat behind me', 'four of us riding two abreast, test car
-    coming up behind': a rider telling of a vehicle named as the one under test is a cyclist by it, not its
-    driver; the teller's words are said of the cyclist (or the cyclists, when the teller rides in a group), in the
-    third person, so that each is placed from the ego."""
-    if not RIDING.search(text) or DRIVING_MYSELF.search(text) or MOTORBIKE.search(text) or \
+    coming up behind', 'I was crossing the road when the test car turned left towards me': a rider or a walker
+    telling of a vehicle named as the one under test is a cyclist or a pedestrian by it, not its driver; the
+    teller's words are said of them (of the group, when the teller rides in one), in the third person, so that
+    each is placed from the ego."""
+    riding, walking = RIDING.search(text), WALKING.search(text)
+    if not (riding or walking) or DRIVING_MYSELF.search(text) or MOTORBIKE.search(text) or \
             not UNDER_TEST.search(text):
         return text
+    noun = "cyclist" if riding else "pedestrian"
     text = CALL_OUT.sub('""', text)  # 'shouts "car back!"': a warning called out, the test car named again
     for pattern, said in GROUPS_OF_US:
-        text = pattern.sub(said, text)
-    many = bool(re.search(r"\bcyclists\b|\b(?:we|us)\b", text, re.I))
+        text = pattern.sub(said.replace("cyclist", noun), text)
+    many = bool(re.search(rf"\b{noun}s\b|\b(?:we|us)\b", text, re.I))
     named: list[str] = []
 
     def said_of_them(m: re.Match) -> str:
         word = re.sub(r"\s+", " ", m.group(1).lower())
         if many or word not in AS_ONE:
-            return AS_MANY[word]
+            return AS_MANY[word].format(noun)
         named.append(word)
-        return AS_ONE[word].format("a cyclist" if len(named) == 1 else "the cyclist")
+        return AS_ONE[word].format(f"a {noun}" if len(named) == 1 else f"the {noun}")
 
-    notes.append("read the teller as a cyclist beside the vehicle under test")
+    notes.append(f"read the teller as a {noun} beside the vehicle under test")
     return FIRST_PERSON_WORDS.sub(said_of_them, text)
 
 
