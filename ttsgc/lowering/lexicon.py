@@ -1175,7 +1175,7 @@ EMOJI_BETWEEN_WORDS = re.compile(rf"(?<=[A-Za-z0-9)])\s*(?:{EMOJI.pattern})(?:\s
 def _symbols() -> tuple[dict[str, str], re.Pattern]:
     words = {symbol: meaning for meaning, phrase in _entries("symbols") for symbol in phrase}
     alternatives = "|".join(re.escape(s) for s in sorted(words, key=len, reverse=True))
-    return words, re.compile(rf"(?:{alternatives})(?:[\uFE0F\U0001F3FB-\U0001F3FF]|\u200D\S)*")
+    return words, re.compile(rf"(?P<symbol>{alternatives})(?:[\uFE0F\U0001F3FB-\U0001F3FF]|\u200D\S)*")
 
 
 def _entry_of(lex: Lexicon, words: str) -> tuple[str, str]:
@@ -1216,7 +1216,7 @@ def _symbols_as_words(text: str) -> str:
         between = text[at:m.start()]
         if between.strip():  # a word or a mark since the last picture: what it shows is that word's
             before = _entry_of(lex, re.findall(r"[A-Za-z']+|\S", between)[-1])
-        said = words[m.group(0)[0]] if m.group(0)[0] in words else words[m.group(0)[:2]]
+        said = words[m.group("symbol")]
         entry = _entry_of(lex, said)
         shown = entry[0] == before[0] == "agents" or (entry == before and entry[0] != "")
         out.append(between)

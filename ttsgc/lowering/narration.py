@@ -262,9 +262,9 @@ DRIVING_MYSELF = re.compile(r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)?\
                             r"\b(?:safety|test)\s+driver\b|"
                             r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)\s+in\s+the\s+(?:test\s+)?"
                             r"(?:car|vehicle|av)\b", re.I)
-UNDER_TEST = re.compile(r"\b(?:test\s+(?:car|vehicle)|(?:the|our|an)\s+av|autonomous\s+(?:car|vehicle)|self[\s-]driving\s+(?:car|"
-                        r"vehicle)|driverless\s+(?:car|vehicle)|automated\s+(?:car|vehicle)|robotaxi|vehicle\s+under\s+"
-                        r"test|ego(?:\s+car|\s+vehicle)?|vut|sut)\b", re.I)
+UNDER_TEST = re.compile(r"\b(?:test\s+(?:car|vehicle)|(?:the|our|an)\s+av|autonomous\s+(?:car|vehicle)|"
+                        r"self[\s-]driving\s+(?:car|vehicle)|driverless\s+(?:car|vehicle)|automated\s+(?:car|vehicle)|"
+                        r"robotaxi|vehicle\s+under\s+test|ego(?:\s+car|\s+vehicle)?|vut|sut)\b", re.I)
 CALL_OUT = re.compile(r"[\"\u201c](?:car|cars|truck|lorry|van|bus|bike|rider|horse|runner)\s+"
                       r"(?:back|up|down|left|right|ahead|behind|coming|front)!*[\"\u201d]", re.I)
 MOTORBIKE = re.compile(r"\b(?:motorbikes?|motorcycles?|mopeds?|scooters?|bikers?|motorcyclists?|throttle)\b", re.I)
