@@ -10352,3 +10352,41 @@ def test_neither_vehicle_names_the_two_said_before_and_denies_the_verb():
     assert said == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]
     assert ("bus", "go_straight", "road_of_left_turn") in agents(
         "The ego waits at the junction. A van and a bus come from the left; neither of them stops.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego goes straight at the crossroads; a cyclist comes from the right and runs the red, like every cyclist in "
+     "town.", [("car", "go_straight", "ego"), ("cyclist", "go_straight", "road_of_right_turn")]),
+    ("The ego follows a lead car that brakes hard. Never trust a cab.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("A car ahead brakes hard. My dad drives a bus for a living.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("A car ahead brakes hard; it handles like a bus.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+])
+def test_a_vehicle_of_which_nothing_is_said_among_others_told_is_a_passing_mention(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, kept", [
+    ("A car ahead brakes hard. There is also a truck.", ("truck", "go_straight", "front")),
+    ("A car overtakes the ego on the left and a truck appears.", ("truck", "go_straight", "front")),
+    ("Ego vehicle at a junction, a car from the right, a motorcycle and a bus.", ("bus", "go_straight", "front")),
+    ("A cyclist rides on the right. Include one more car.", ("car", "go_straight", "front")),
+    ("The ego is stuck behind a slow truck when a car overtakes both on the left.", ("truck", "go_straight", "front")),
+    ("A car and a truck.", ("truck", "go_straight", "front")),
+    ("A lead vehicle brakes hard. A motorcycle splits the lane.", ("motorcycle", "go_straight", "front")),
+    ("A lead vehicle brakes hard. The ego yields to a bus.", ("bus", "go_straight", "front")),
+    ("A lead vehicle brakes hard. A police car, sirens on.", ("police", "go_straight", "front")),
+    ("A car turns left across the ego's path. A truck, then a bus.", ("truck", "go_straight", "front")),
+    ("A car turns left across the ego's path; in the distance a truck.", ("truck", "go_straight", "front")),
+])
+def test_a_vehicle_put_in_the_scene_listed_or_met_stays_with_nothing_said_of_it(prompt, kept):
+    assert kept in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A boy on a bike rolled across the street in front of us.", ("cyclist", "cross_the_road", "front")),
+    ("A woman trailed across the street in front of the ego car.", ("pedestrian", "cross_the_road", "front")),
+])
+def test_rolling_or_trailing_across_the_road_is_crossing_it(prompt, expected):
+    assert expected in agents(prompt)

@@ -6913,6 +6913,85 @@ def _sitting_behind_a_stopped_ego(r: _Reader) -> None:
         e.actions.append((e.stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
+MET_BY_ANOTHER = {"behind", "let", "letting", "overtaking", "overtake", "overtook", "following", "follow",
+                  "followed", "passing", "pass", "passed", "past", "around", "for", "with", "between", "than", "of",
+                  "to", "at", "after", "hit", "hits", "hitting", "avoid", "avoids", "avoiding", "miss", "misses",
+                  "missed", "notice", "notices", "noticed", "see", "sees", "saw", "seen", "spot", "spots", "spotted",
+                  "block", "blocks", "clip", "clips", "clipped", "clipping", "startle", "startles", "startling",
+                  "into", "across", "towards", "toward"}
+PUT_IN_THE_SCENE = {"there", "there's", "also", "too", "add", "adds", "include", "includes", "including", "plus",
+                    "nearby", "around", "present", "appear", "appears", "appeared", "scene", "additionally", "with",
+                    "spawn", "place", "put", "distance", "just", "only"}
+CLAUSE_OPENERS = {",", ";", ":", "-", "and", "then", "while", "when", "as", "but", "meanwhile", "until", "once"}
+LIST_MARKS = {",", ";", "/", "-", "and", "or", "then"}
+RENAMING = {"maybe", "well", "really", "ie", "probably", "possibly", "rather", "instead"}
+OWNERS_AND_KINDS = {"his", "her", "my", "our", "their", "your", "every", "any", "each", "like", "trust", "own"}
+
+
+def _anything_said_of(e: Entity) -> bool:
+    return bool(e.features or e.actions or e.relative_to is not None or e.speed or e.gap_m or e.trigger or
+                e.behavior or e.label or e.road_type or e.parent is not None)
+
+
+def _passing_mentions(r: _Reader) -> None:
+    """'his Audi', 'pickup drivers in the rain are idiots', 'never trust a cab': a vehicle of which nothing is
+    said, in a text where others are told what they do, is a passing mention, not an agent. One that opens its
+    clause ('a truck sheds its load', 'Meanwhile a motorcycle.'), is put in the scene ('there is also a truck',
+    'a bus was at the stop'), listed beside another ('a car from the right, a motorcycle and a bus') or met by
+    another ('behind a slow truck', 'yields to a bus') stays; so do people, often in a scene with nothing said."""
+    if not any(not e.is_ego and e.count > 0 and _anything_said_of(e) for e in r.entities):
+        return
+    for e in r.entities:
+        if e.is_ego or e.count <= 0 or e.said_at < 0 or _anything_said_of(e) or e.type == "pedestrian":
+            continue
+        owned_or_any = set(_in_its_sentence(r, e, e.said_at - 3, e.said_at)) & OWNERS_AND_KINDS
+        if not owned_or_any and (_opens_its_clause(r, e) or _put_in_the_scene(r, e) or _listed(r, e)):
+            continue
+        r.notes.append(f"read '{e.head}' as a passing mention: nothing is said of what it does or where it is")
+        e.count = 0
+
+
+def _in_its_sentence(r: _Reader, e: Entity, start: int, end: int) -> list[str]:
+    sentence = r.tokens[e.said_at].sentence
+    return [t.word for t in r.tokens[max(0, start):end] if t.sentence == sentence]
+
+
+def _opens_its_clause(r: _Reader, e: Entity) -> bool:
+    """The subject of a verb ('a truck sheds its load', 'a van catches fire') or a fragment of its own ('A police
+    car.', 'Meanwhile a motorcycle.'): at most an article and two words between it and its clause's start."""
+    before = _in_its_sentence(r, e, e.said_at - 4, e.said_at)
+    opener = max((k for k, w in enumerate(before) if w in CLAUSE_OPENERS), default=-1)
+    lead = before[opener + 1:]
+    if not (opener >= 0 or len(before) < 4) or len(lead) > 3 or set(lead) & (OWNERS_AND_KINDS | MET_BY_ANOTHER):
+        return False
+    heads = set(e.head.split())
+    after = [w for w in _in_its_sentence(r, e, e.said_at + 1, e.said_at + 4) if w not in heads] + [""]
+    verb = after[0].isalpha() and (after[0].endswith(("s", "ed")) and not after[0].endswith(("ers", "ss")) or
+                                   after[0] in AUXILIARIES - {"then", "also", "to", "and"})
+    return verb or len(_in_its_sentence(r, e, 0, len(r.tokens))) <= 8
+
+
+def _put_in_the_scene(r: _Reader, e: Entity) -> bool:
+    after = _in_its_sentence(r, e, e.said_at + 1, e.said_at + 3) + ["", ""]
+    return bool(set(_in_its_sentence(r, e, e.said_at - 4, e.said_at)) & MET_BY_ANOTHER or
+                set(_in_its_sentence(r, e, 0, len(r.tokens))) & PUT_IN_THE_SCENE) or \
+        after[0] in COPULAS and not after[1].endswith("ed")  # "a bus was at the stop", not "was transported"
+
+
+def _listed(r: _Reader, e: Entity) -> bool:
+    """'a car from the right, a motorcycle and a bus', 'a truck, the ego, and a van wait', 'a truck, then a bus':
+    named in a list with another; not 'dark SUV, maybe a Tahoe', which names one twice."""
+    sentence = r.tokens[e.said_at].sentence
+    for o in r.entities:
+        if o is e or o.said_at < 0 or r.tokens[o.said_at].sentence != sentence or \
+                not 0 < abs(o.said_at - e.said_at) <= 12:
+            continue
+        between = [t.word for t in r.tokens[min(o.said_at, e.said_at) + 1:max(o.said_at, e.said_at)]]
+        if set(between) & LIST_MARKS and not set(between) & RENAMING:
+            return True
+    return False
+
+
 def _place_in_queue(r: _Reader) -> None:
     """'third in the queue at a red light': two vehicles wait ahead of the ego; and whoever is ahead of an ego
     waiting in a queue or at a red light, doing nothing said, waits too."""
@@ -9009,6 +9088,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _members_keep_the_group_place(r)
     _place_in_queue(r)
     _sitting_behind_a_stopped_ego(r)
+    _passing_mentions(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
     if asked is not None and others:
