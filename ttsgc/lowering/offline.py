@@ -6938,7 +6938,8 @@ def _passing_mentions(r: _Reader) -> None:
     said, in a text where others are told what they do, is a passing mention, not an agent. One that opens its
     clause ('a truck sheds its load', 'Meanwhile a motorcycle.'), is put in the scene ('there is also a truck',
     'a bus was at the stop'), listed beside another ('a car from the right, a motorcycle and a bus') or met by
-    another ('behind a slow truck', 'yields to a bus') stays; so do people, often in a scene with nothing said."""
+    another ('behind a slow truck', 'yields to a bus') stays, unless it is someone's own or any of its kind
+    ('my dad drives a bus', 'like every cyclist in town'); people stay, often in a scene with nothing said."""
     if not any(not e.is_ego and e.count > 0 and _anything_said_of(e) for e in r.entities):
         return
     for e in r.entities:
