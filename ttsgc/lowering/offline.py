@@ -6953,8 +6953,7 @@ def _passing_mentions(r: _Reader) -> None:
 
 
 def _in_its_sentence(r: _Reader, e: Entity, start: int, end: int) -> list[str]:
-    sentence = r.tokens[e.said_at].sentence
-    return [t.word for t in r.tokens[max(0, start):end] if t.sentence == sentence]
+    return [t.word for t in _sentence(r.tokens, r.tokens[e.said_at].sentence) if start <= t.index < end]
 
 
 def _opens_its_clause(r: _Reader, e: Entity) -> bool:
