@@ -10390,3 +10390,31 @@ def test_a_vehicle_put_in_the_scene_listed_or_met_stays_with_nothing_said_of_it(
 ])
 def test_rolling_or_trailing_across_the_road_is_crossing_it(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The driver behind me was an idiot.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("The vehicle behind me was a bus.", [("bus", "go_straight", "back"), ("car", "go_straight", "ego")]),
+])
+def test_what_a_placed_one_is_said_to_be_is_no_second_agent(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_definite_noun_told_apart_by_what_it_did_is_not_the_ego():
+    assert agents("The ego brakes. The car that cut in was a white van.") == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+    assert agents("The car that I was driving turned left.") == [("car", "turn_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bus pulled in at a stop ahead on the right, and two people are waiting on the pavement by the stop.",
+     ("pedestrian", "on_the_sidewalk", "front_right")),
+    ("A bus is stopped at the stop ahead of the ego in its lane. Three extras wait at the bus stop on the sidewalk.",
+     ("pedestrian", "on_the_sidewalk", "front_right")),
+    ("The ego is behind a bus stopped at a bus stop, and a woman stands on the sidewalk to the right, level with "
+     "the bus.", ("pedestrian", "on_the_sidewalk", "front_right")),
+    ("The ego turns left at the lights. A lady was walking along the sidewalk on the far right corner.",
+     ("pedestrian", "on_the_sidewalk", "front_right")),
+])
+def test_one_on_the_pavement_at_the_stop_level_with_a_vehicle_or_on_the_far_corner_is_ahead(prompt, expected):
+    assert expected in agents(prompt)

@@ -4838,6 +4838,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             after += 1  # "the car still has to deal with him", "the car just holds its line"
         nxt = units[after] if after < len(units) else None
         if ego is not None and not plural and kind == ego.type and "other" not in words and \
+                not _picked_out_by_what_it_did(r, u) and \
                 not any(m.category == "positions" for m in modifiers) and (  # ("the oncoming car": another)
                 u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
                 _names_the_ego_again(r, ego, u.base)) and not _measured_by_others(units, after) and (
@@ -5111,6 +5112,18 @@ def _placed_by_the_ego_in_its_relative(r: _Reader, noun: Unit) -> bool:
 
 
 PLACING_WORDS = {"of", "to", "past", "behind", "beside", "alongside", "into", "at", "towards", "toward", "near"}
+
+
+def _picked_out_by_what_it_did(r: _Reader, u: Unit) -> bool:
+    """'The ego brakes. The car that cut in was a white van': a definite noun told apart by a relative whose
+    subject it is names the one that did it, not the ego ('the car that I drive', 'the car which the ego follows':
+    the relative has a subject of its own)."""
+    at = u.end
+    if at + 1 >= len(r.tokens) or r.tokens[at].word not in ("that", "which") or \
+            r.tokens[at].sentence != u.tokens[-1].sentence:
+        return False
+    nxt = r.tokens[at + 1]
+    return nxt.word not in SPEAKERS | PRONOUNS | {"the", "a", "an", "ego", "he", "she", "they", "it"}
 
 
 def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
@@ -5491,6 +5504,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.road_type = e.road_type or u.meaning
             if u.meaning == "sidewalk":
                 e.features.add("on_sidewalk")
+                if {t.word for t in u.tokens} & {"corner", "corners"} and "far" in {
+                        t.word for t in r.tokens[max(0, u.start - 3):u.end]}:
+                    e.features.add("on_the_far_corner")  # "on the far right corner": across the junction ahead
             if u.meaning == "shoulder" and {t.word for t in u.tokens} & {"verge", "verges", "grass", "grassy"}:
                 e.features.add("on_verge")  # the grass beside the road, where people walk
         elif u.meaning.startswith("compass_"):
@@ -6583,7 +6599,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             r.mark(u)
     for e in subject:
         if e.type == "pedestrian" and not e.is_ego and e.relative_to is None:
-            e.relative_to = _vehicle_got_out_of(units, phrases, recent, e)  # at the vehicle it climbed out of
+            e.relative_to = _vehicle_got_out_of(units, phrases, recent, e) or _the_one_at_the_stop(units, recent)
+            # at the vehicle it climbed out of; "waiting on the pavement by the stop": at the bus stopped there
     _numbers(r, units, subject)
     _there(units, subject, previous_subject)
     surface = [np.entity for np in phrases if np.entity is not None and np.index < first_verb]
@@ -7765,7 +7782,14 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     u.category in ("positions", "comma") or u.category == "agents" and u.meaning == "ego"
                     or u.word in ("the", "of", "on", "in", "to", "my", "our", "your") for u in between)
                 # "the vehicle on my left, a red minivan,": the vehicle is the minivan
-            if placed:  # "the vehicle behind me, a white Ford Transit, failed to stop": the vehicle is the Ford
+            said_to_be = not prev.entity.is_ego and units[prev.first].word == "the" and len(between) >= 2 and \
+                between[-1].category == "word" and between[-1].word in COPULAS and \
+                units[np.first].word in ("a", "an") and (prev.entity.type == "pedestrian") == (np.entity.type == "pedestrian") and \
+                between[0].category == "positions" and all(
+                    u.category == "positions" or u.category == "agents" and u.meaning == "ego" or
+                    u.word in ("the", "of", "on", "in", "to", "my", "our", "your") for u in between[:-1])
+            # "the driver behind me was an idiot", "the car in the left lane was a taxi": what the one placed is
+            if placed or said_to_be:  # "the vehicle behind me, a white Ford Transit, failed to stop": the vehicle is the Ford
                 a, b = prev.entity, np.entity
                 a.head = b.head
                 a.aliases |= b.aliases | {b.head}
@@ -8524,6 +8548,16 @@ def _vehicle_got_out_of(units, phrases, recent, person) -> Entity | None:
     return None
 
 
+def _the_one_at_the_stop(units: list[Unit], recent: list[Entity]) -> Entity | None:
+    """'a bus pulled in at a stop ahead ... two people waiting by the stop': the stop named again is where the
+    vehicle last seen standing stands."""
+    for a, b in zip(units, units[1:]):
+        if a.word in ("the", "that") and [t.word for t in b.tokens][-2:] in (["stop"], ["bus", "stop"]):
+            return next((e for e in reversed(recent) if not e.is_ego and e.type not in V.VULNERABLE_TYPES and
+                         any(x[4] == "stop" for x in e.actions)), None)
+    return None
+
+
 def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
     """Places implied by verbs between an agent and the ego: following, leading, overtaking, hiding."""
     base = verb.tokens[0].base
@@ -8787,6 +8821,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if side and action == "stop" and "parked" in f and not person and \
             not f & {"ahead", "behind", "level", "overtaking"} and "target_lane" not in f:
         ahead = True  # "a bus parked on the right", "a lorry parked on the nearside": met ahead
+    if "on_the_far_corner" in f and not behind and "level" not in f:
+        ahead = True  # (the near corner is beside the ego, at its stop line)
     if walking:
         if has_crosswalk and (side is None or "crosswalk" in f) and not f & {"ahead", "behind"}:
             return "near_the_crosswalk", False  # standing by the crossing ("on your left near the crossing")
@@ -10567,6 +10603,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             positions[t.key] = positions[e.key]  # "a patrol car stopped on the shoulder ahead, parked behind a
             t.road_type = "shoulder"  # pickup it has pulled over": the pickup stands on the shoulder too
             continue
+        if _placed(e) and positions[e.key] in SIDES and e.type == "pedestrian" and e.relative_how == "level" and \
+                positions[t.key].startswith(("front", "back")) and not e.features & {"ahead", "behind", "level"}:
+            positions[e.key] = positions[t.key].split("_")[0] + "_" + positions[e.key]  # "on the sidewalk to the
+            continue  # right, level with the bus" (a bus ahead): on that side, where the bus is
         if not _placed(e):
             positions[e.key] = positions[t.key]
             if "on_sidewalk" in e.features and positions[t.key] in ("front", "back"):
