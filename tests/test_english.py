@@ -10418,3 +10418,18 @@ def test_a_definite_noun_told_apart_by_what_it_did_is_not_the_ego():
 ])
 def test_one_on_the_pavement_at_the_stop_level_with_a_vehicle_or_on_the_far_corner_is_ahead(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_what_traffic_does_in_general_is_not_the_egos_doing():
+    assert agents("Merging traffic is the hard part. A car on the ramp to my right merged into my lane.") == [
+        ("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
+    assert agents("Turning left across oncoming traffic at a crossroads.") == [("car", "turn_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A truck moves left into the ego's lane.", ("truck", "change_lane_to_left", "front_right")),
+    ("A truck moves right into the ego's lane.", ("truck", "change_lane_to_right", "front_left")),
+    ("A car behind the ego moves left into the ego's lane.", ("car", "change_lane_to_left", "back_right")),
+])
+def test_moving_to_a_side_into_the_egos_lane_starts_in_the_lane_on_the_other_side(prompt, expected):
+    assert expected in agents(prompt)

@@ -7393,6 +7393,10 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
         return entity
     if cutting and named:
         return None  # "Double cut-in on a motorway ...": the name of the case, not the ego's doing
+    v = verbs[0]
+    if units[v].tokens[-1].word.endswith("ing") and v + 2 < len(units) and units[v + 1].category == "agents" and \
+            units[v + 1].meaning == "none" and (units[v + 2].word in COPULAS or units[v + 2].category == "actions"):
+        return None  # "merging traffic is still its weakness": what the traffic does, said of no one in the scene
     named_otherwise = _named_by_an_unknown_noun(r, units, verbs[0])
     if named_otherwise is not None:
         return named_otherwise  # "A taxi pulled out. The cabbie then stopped": the taxi, by a word not known
@@ -8814,6 +8818,9 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
                                                                     f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
+    if action in ("lane_left", "lane_right") and "into_ego_lane" in f and side is None and "ego_lane" not in f:
+        side = OTHER_SIDE[action[5:]]  # "a truck moves left into the ego's lane": from the lane on its right,
+        ahead = ahead or not behind and "level" not in f  # met ahead as a cut-in is
     if side is None and "level" in f and not ahead and not behind:
         side = UNSPECIFIED["side_beside_a_person" if e.type in V.VULNERABLE_TYPES else "side_beside_a_vehicle"]
     if person and crossing and has_crosswalk and not behind and "off_crosswalk" not in f:
