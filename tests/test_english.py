@@ -10433,3 +10433,12 @@ def test_what_traffic_does_in_general_is_not_the_egos_doing():
 ])
 def test_moving_to_a_side_into_the_egos_lane_starts_in_the_lane_on_the_other_side(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "A man was on the crosswalk I was turning across.",
+    "Turning right on red, there was a man on the crosswalk I was turning across.",
+])
+def test_a_relative_with_no_that_keeps_the_speakers_verb_to_the_speaker(prompt):
+    said = agents(prompt)
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in said and len(said) == 2

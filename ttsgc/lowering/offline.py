@@ -3024,6 +3024,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             continue
         if link in RELATIVES and _main_verb_after_a_relative(current, units, k):
             close(",")  # "a lorry that I had been following for miles turned left": the lorry turned
+        elif _a_contact_relative(current, units, k):
+            close()  # "a man was on the crosswalk I was turning across": what the speaker did, of its own
         current.append(u)
         if condition and _ends_its_condition(units, k):
             close()  # "after the cyclist has passed ego turns right"
@@ -3051,6 +3053,22 @@ def _the_one_after(current: list[Unit], units: list[Unit], k: int) -> bool:
 
 
 RELATIVE_SUBJECTS = {"i", "we", "you", "he", "she", "they"}
+
+
+def _a_contact_relative(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'A man was on the crosswalk I was turning across': after a clause with its subject and verb, a place
+    followed by the speaker and a verb opens a relative with no 'that', whose verb is the speaker's alone ('behind
+    the bus I saw a cyclist': a place said first, no verb before it)."""
+    u = units[k]
+    if not (u.category == "agents" and u.meaning == "ego" and [t.word for t in u.tokens] in (["i"], ["we"])) or \
+            not current or current[-1].category != "positions" or \
+            current[-1].tokens[-1].sentence != u.tokens[0].sentence or not _has_agent(current[:-1]) or \
+            not any(x.category == "actions" or x.word in COPULAS for x in current[:-1]):
+        return False
+    verb = k + 1
+    while verb < len(units) and units[verb].category == "word" and units[verb].word in AUXILIARIES | {"just"}:
+        verb += 1
+    return verb < len(units) and units[verb].category == "actions"
 
 
 def _main_verb_after_a_relative(current: list[Unit], units: list[Unit], k: int) -> bool:
@@ -10531,7 +10549,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         action, direction = _intro_action(e)
         on_foot = bool(e.aliases & NAMED_ON_FOOT) or any(  # "a woman ... the pedestrian stopped": named as one on
             t.word in ON_FOOT_WITH for t in r.tokens[e.said_at + 1:e.said_at + 3]) or \
-            _waits_where_people_wait(r, e)  # foot; "a man pushing a pram"; "a woman waiting at the bus stop"
+            _waits_where_people_wait(r, e) or bool(e.features & {"crosswalk", "on_sidewalk"})
+        # foot; "a man pushing a pram"; "a woman waiting at the bus stop"; "a man on the crosswalk"
         if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and (action in VEHICLE_ONLY_ACTIONS or any(
                 a[4] == "horn" for a in e.actions)):
             e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
