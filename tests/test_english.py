@@ -10442,3 +10442,9 @@ def test_moving_to_a_side_into_the_egos_lane_starts_in_the_lane_on_the_other_sid
 def test_a_relative_with_no_that_keeps_the_speakers_verb_to_the_speaker(prompt):
     said = agents(prompt)
     assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in said and len(said) == 2
+
+
+def test_people_let_across_are_on_foot_in_the_scene():
+    assert agents("I was stopped at the crosswalk, letting people across.") == [
+        ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")]

@@ -4190,8 +4190,11 @@ KIN_NAMES = {"mom", "mum", "mommy", "mummy", "mama", "dad", "daddy", "papa", "gr
 
 
 def _on_foot_in_the_scene(units: list[Unit], head: int) -> bool:
-    """Whether the clause puts a person on the road, the pavement or a crossing ('my son was crossing')."""
-    return any(u.category == "actions" and u.meaning in ("cross", "walk") or u.category == "positions" and u.meaning
+    """Whether the clause puts a person on the road, the pavement or a crossing ('my son was crossing', 'letting
+    people across')."""
+    let_across = head + 1 < len(units) and units[head + 1].word in ("across", "over", "through") and any(
+        x.tokens[0].base in ("let", "wave") for x in units[max(0, head - 3):head])
+    return let_across or any(u.category == "actions" and u.meaning in ("cross", "walk") or u.category == "positions" and u.meaning
                in ("sidewalk", "crosswalk", "in_road", "shoulder") or u.category == "road" and u.meaning in
                V.CROSSWALK_OBJECTS for u in units[head + 1:])
 
