@@ -10448,3 +10448,9 @@ def test_people_let_across_are_on_foot_in_the_scene():
     assert agents("I was stopped at the crosswalk, letting people across.") == [
         ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
         ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_makers_name_after_on_or_onto_with_no_article_is_a_street():
+    assert agents("I was stopped at the red. An ambulance came across from the left, probably going to the hospital "
+                  "on Lincoln.") == [("ambulance", "go_straight", "road_of_left_turn"), ("car", "stop", "ego")]
+    assert ("motorcycle", "go_straight", "back_left") in agents("A guy on a Harley overtook me.")

@@ -4519,6 +4519,7 @@ def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: se
 
 
 NONE_VALUES = {"none", "no", "0", "zero", "nil", "n/a", "na", "nobody", "nothing"}
+STREET_BEFORE = {"on", "onto", "along", "down", "up", "into"}  # a street's name follows with no article
 
 
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
@@ -4535,6 +4536,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if first > lo + 2 and [x.word for x in units[first - 3:first]] in (["no", "need", "for"], ["not", "need", "any"]) \
             and not is_ego:
         count = 0  # "no need for NPC pedestrians in this one", "we don't need any cyclists"
+    if not is_ego and first == head and head > lo and units[head - 1].word in STREET_BEFORE and len(u.tokens) == 1 and \
+            u.base not in KIND_NOUNS and u.base not in bodies() and kind not in V.VULNERABLE_TYPES:
+        return NounPhrase(None, head, first)  # "going to the hospital on Lincoln", "turned onto Ford": a street
+        # named for a maker, no vehicle ("a guy on a Harley" has its article)
     value = u.tokens[-1].index + 1
     if not is_ego and value < len(r.tokens) and r.tokens[value].opened_by == ":" and \
             r.tokens[value].sentence != u.tokens[-1].sentence and r.tokens[value].word in NONE_VALUES:
