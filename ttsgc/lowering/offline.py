@@ -5758,6 +5758,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             # what it was doing is its action ("the other driver had to stop", said of nothing else, still stops)
         e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
                           0 if earlier else r.tick(), action, direction))
+        if action in ("lane_left", "lane_right") and not {"left", "right"} & {t.word for t in u.tokens}:
+            e.features.add("to_the_kerb")  # "pulled over", "pulled to the side": towards the kerb, no lane named
         if action == "lane_change" and {"middle", "center"} & {t.word for t in u.tokens}:
             e.features.add("to_the_middle")  # "moves into the middle lane": away from the side lane it is in
         if action == "go_straight" and "straight" in {t.word for t in u.tokens}:
@@ -8844,7 +8846,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
                                                                     f"from_{side}" in f):
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
         ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
-    if action in ("lane_left", "lane_right") and "into_ego_lane" in f and side is None and "ego_lane" not in f:
+    if action in ("lane_left", "lane_right") and "into_ego_lane" in f and side is None and \
+            not f & {"ego_lane", "to_the_kerb"}:
         side = OTHER_SIDE[action[5:]]  # "a truck moves left into the ego's lane": from the lane on its right,
         ahead = ahead or not behind and "level" not in f  # met ahead as a cut-in is
     if side is None and "level" in f and not ahead and not behind:
