@@ -4194,9 +4194,10 @@ def _on_foot_in_the_scene(units: list[Unit], head: int) -> bool:
     people across')."""
     let_across = head + 1 < len(units) and units[head + 1].word in ("across", "over", "through") and any(
         x.tokens[0].base in ("let", "wave") for x in units[max(0, head - 3):head])
-    return let_across or any(u.category == "actions" and u.meaning in ("cross", "walk") or u.category == "positions" and u.meaning
-               in ("sidewalk", "crosswalk", "in_road", "shoulder") or u.category == "road" and u.meaning in
-               V.CROSSWALK_OBJECTS for u in units[head + 1:])
+    return let_across or any(
+        u.category == "actions" and u.meaning in ("cross", "walk") or u.category == "positions" and u.meaning in (
+            "sidewalk", "crosswalk", "in_road", "shoulder") or u.category == "road" and u.meaning in
+        V.CROSSWALK_OBJECTS for u in units[head + 1:])
 
 
 def _of_a_group(units: list[Unit], first: int) -> bool:
@@ -4536,8 +4537,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if first > lo + 2 and [x.word for x in units[first - 3:first]] in (["no", "need", "for"], ["not", "need", "any"]) \
             and not is_ego:
         count = 0  # "no need for NPC pedestrians in this one", "we don't need any cyclists"
-    if not is_ego and first == head and head > lo and units[head - 1].word in STREET_BEFORE and len(u.tokens) == 1 and \
-            u.base not in KIND_NOUNS and u.base not in bodies() and kind not in V.VULNERABLE_TYPES:
+    if not is_ego and first == head and head > lo and units[head - 1].word in STREET_BEFORE and \
+            len(u.tokens) == 1 and u.base not in KIND_NOUNS and u.base not in bodies() and \
+            kind not in V.VULNERABLE_TYPES:
         return NounPhrase(None, head, first)  # "going to the hospital on Lincoln", "turned onto Ford": a street
         # named for a maker, no vehicle ("a guy on a Harley" has its article)
     value = u.tokens[-1].index + 1
@@ -5149,7 +5151,7 @@ def _picked_out_by_what_it_did(r: _Reader, u: Unit) -> bool:
             r.tokens[at].sentence != u.tokens[-1].sentence:
         return False
     nxt = r.tokens[at + 1]
-    return nxt.word not in SPEAKERS | PRONOUNS | {"the", "a", "an", "ego", "he", "she", "they", "it"}
+    return nxt.word not in SPEAKERS | PRONOUNS | {"the", "a", "an", "ego"}
 
 
 def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
@@ -7816,12 +7818,13 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 # "the vehicle on my left, a red minivan,": the vehicle is the minivan
             said_to_be = not prev.entity.is_ego and units[prev.first].word == "the" and len(between) >= 2 and \
                 between[-1].category == "word" and between[-1].word in COPULAS and \
-                units[np.first].word in ("a", "an") and (prev.entity.type == "pedestrian") == (np.entity.type == "pedestrian") and \
+                units[np.first].word in ("a", "an") and \
+                (prev.entity.type == "pedestrian") == (np.entity.type == "pedestrian") and \
                 between[0].category == "positions" and all(
                     u.category == "positions" or u.category == "agents" and u.meaning == "ego" or
                     u.word in ("the", "of", "on", "in", "to", "my", "our", "your") for u in between[:-1])
             # "the driver behind me was an idiot", "the car in the left lane was a taxi": what the one placed is
-            if placed or said_to_be:  # "the vehicle behind me, a white Ford Transit, failed to stop": the vehicle is the Ford
+            if placed or said_to_be:  # "the vehicle behind me, a white Ford Transit, failed to stop": the Ford
                 a, b = prev.entity, np.entity
                 a.head = b.head
                 a.aliases |= b.aliases | {b.head}
