@@ -10454,3 +10454,9 @@ def test_a_makers_name_after_on_or_onto_with_no_article_is_a_street():
     assert agents("I was stopped at the red. An ambulance came across from the left, probably going to the hospital "
                   "on Lincoln.") == [("ambulance", "go_straight", "road_of_left_turn"), ("car", "stop", "ego")]
     assert ("motorcycle", "go_straight", "back_left") in agents("A guy on a Harley overtook me.")
+
+
+def test_a_condition_ends_before_the_speaker_after_its_verb_and_particle():
+    assert stages("I was waiting to turn left at the lights. An ambulance came towards me from the other "
+                  "direction, so I just sat there and waited. Then once it had gone by I made my turn.") == [
+        [("ego", "stop", None), ("ambulance", "go_straight", "road_of_straight")], [("ego", "turn_left", None)]]

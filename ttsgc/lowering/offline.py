@@ -2845,9 +2845,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             close()
         prev_word = units[k - 1].tokens[-1].word if k and not new_sentence else ""
         # (the word right before, in this sentence: "stopped at the crossing. Once ..." is no "at once")
-        if condition and current and current[-1].category == "actions" and u.category == "agents" and \
+        verb_ended = current and (current[-1].category == "actions" or len(current) >= 2 and current[-1].word in (
+            "by", "past", "through", "clear", "away", "off") and current[-2].category == "actions")
+        if condition and verb_ended and u.category == "agents" and \
                 u.meaning == "ego" and (u.tokens[0].word in ("i", "we") or [t.word for t in u.tokens][-1:] == ["ego"]):
-            close()  # "once they passed i took over and made the left": the condition ends where its comma would
+            close()  # "once they passed i took over and made the left", "once it had gone by I made my turn": the
+            # condition ends where its comma would
         if u.category == "sequence" and (prev_word == "even" or u.word == "next" and len(u.tokens) == 1 and
                                          prev_word in ("the", "a", "this") or
                                          u.word == "later" and prev_word in ("bit", "little", "or", "maybe")):
