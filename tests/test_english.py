@@ -10460,3 +10460,9 @@ def test_a_condition_ends_before_the_speaker_after_its_verb_and_particle():
     assert stages("I was waiting to turn left at the lights. An ambulance came towards me from the other "
                   "direction, so I just sat there and waited. Then once it had gone by I made my turn.") == [
         [("ego", "stop", None), ("ambulance", "go_straight", "road_of_straight")], [("ego", "turn_left", None)]]
+
+
+def test_an_obligation_with_no_subject_in_a_speakers_account_is_the_speakers():
+    assert stages("A bus pulled out from a stop on my right, right in front of me. Had to take over, then braked "
+                  "all the way to a stop behind the bus.") == [
+        [("ego", "go_straight", None), ("bus", "change_lane_to_left", "front_right")], [("ego", "stop", None)]]

@@ -5998,6 +5998,16 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     return None
 
 
+def _the_speakers_obligation(r: _Reader, clause: Clause) -> bool:
+    """'Had to take over,', 'Needed to brake': a sentence opened by an obligation with no subject and no one named,
+    in a text a speaker tells, is the speaker's."""
+    units = clause.units
+    return len(units) >= 2 and [u.word for u in units[:2]] in (["had", "to"], ["have", "to"], ["needed", "to"],
+                                                                ["got", "to"]) and \
+        (units[0].start == 0 or r.tokens[units[0].start - 1].sentence != units[0].tokens[0].sentence) and \
+        not any(u.category == "agents" for u in units) and any(t.word in SPEAKERS for t in r.tokens)
+
+
 def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], recent: list[Entity],
                  pending: list[Entity] | None = None) -> list[Entity]:
     units = clause.units
@@ -9055,6 +9065,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             speaker = next((e for e in r.entities if e.is_ego), None)
             if speaker is not None:
                 previous = [speaker]  # a commentary's "once both are through, turning left": the speaker's doing
+        if _the_speakers_obligation(r, clause):
+            speaker = next((e for e in r.entities if e.is_ego), None)
+            previous = [speaker] if speaker is not None else previous  # "Had to take over, then braked": the
+            # speaker, whose subject a diary drops, does what follows
         before = len(r.entities)
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         said_until = r.order
