@@ -10466,3 +10466,9 @@ def test_an_obligation_with_no_subject_in_a_speakers_account_is_the_speakers():
     assert stages("A bus pulled out from a stop on my right, right in front of me. Had to take over, then braked "
                   "all the way to a stop behind the bus.") == [
         [("ego", "go_straight", None), ("bus", "change_lane_to_left", "front_right")], [("ego", "stop", None)]]
+
+
+def test_shortly_after_said_at_the_end_of_a_clause_is_when_it_happens_not_a_new_stage():
+    assert stages("At a four-way stop, a car arrives from the left shortly after and waits.") == [
+        [("ego", "go_straight", None), ("car", "stop", "road_of_left_turn")]]
+    assert len(stages("The ego stops. Shortly after, a car comes from the left.")) == 2

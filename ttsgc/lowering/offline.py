@@ -2867,6 +2867,12 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         if u.category == "sequence" and prev_word in RELATIVES and units[k - 1].category == "word":
             r.mark(u)
             continue  # "a motorcyclist who then overtakes it": the same clause, in order
+        if u.category == "sequence" and [t.word for t in u.tokens][-1:] == ["after"] and _has_verb(current) and \
+                ([t.word for t in u.tokens][:-1] or [prev_word])[0] in ("shortly", "soon", "just", "right") and \
+                (nxt is None or nxt.word == "and" or nxt.category == "comma" or
+                 nxt.tokens[0].sentence != u.tokens[0].sentence):
+            r.mark(u)
+            continue  # "a car arrives from the left shortly after and waits": when it comes, said of its clause
         if u.category == "sequence" and u.word == "after" and prev_word in ("one", "each") and nxt is not None and \
                 nxt.word in ("another", "the", "other"):
             r.mark(u)
