@@ -10472,3 +10472,11 @@ def test_shortly_after_said_at_the_end_of_a_clause_is_when_it_happens_not_a_new_
     assert stages("At a four-way stop, a car arrives from the left shortly after and waits.") == [
         [("ego", "go_straight", None), ("car", "stop", "road_of_left_turn")]]
     assert len(stages("The ego stops. Shortly after, a car comes from the left.")) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "A van double-parked ahead forces the ego to wait for oncoming traffic before passing it.",
+    "A van parked ahead means the ego must wait before passing it.",
+])
+def test_passing_it_after_the_ego_is_made_to_wait_is_the_egos_doing(prompt):
+    assert ("car", "stop", "front") in agents(prompt)

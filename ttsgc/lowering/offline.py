@@ -6004,6 +6004,19 @@ def _direction_after(r: _Reader, units: list[Unit], k: int) -> str | None:
     return None
 
 
+def _the_ego_acts_last(before: Clause, clause: Clause) -> bool:
+    """'before passing it' after 'a van ... forces the ego to wait': an -ing clause with no subject after a time
+    word, done to 'it' (the other), is done by the ego named after the other's verb, whose own verb came last
+    ('a truck lets the ego go before turning left' is the truck's turn)."""
+    units, prev = clause.units, before.units
+    if clause.link not in ("before", "after", "while", "without") or not units or units[0].category != "actions" \
+            or not units[0].tokens[0].word.endswith("ing") or not any(u.word in ("it", "them") for u in units[1:3]):
+        return False
+    ego_at = next((i for i, u in enumerate(prev) if u.category == "agents" and u.meaning == "ego"), None)
+    return bool(ego_at) and any(u.category == "actions" for u in prev[ego_at + 1:]) and any(
+        u.category == "agents" and u.meaning not in ("ego", "none") for u in prev[:ego_at])
+
+
 def _the_speakers_obligation(r: _Reader, clause: Clause) -> bool:
     """'Had to take over,', 'Needed to brake': a sentence opened by an obligation with no subject and no one named,
     in a text a speaker tells, is the speaker's."""
@@ -9071,6 +9084,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             speaker = next((e for e in r.entities if e.is_ego), None)
             if speaker is not None:
                 previous = [speaker]  # a commentary's "once both are through, turning left": the speaker's doing
+        if k > 0 and _the_ego_acts_last(clauses[k - 1], clause):
+            previous = [e for e in r.entities if e.is_ego][:1] or previous  # "a van parked ahead forces the ego
+            # to wait before passing it": the ego, whose verb came last, passes; not the van
         if _the_speakers_obligation(r, clause):
             speaker = next((e for e in r.entities if e.is_ego), None)
             previous = [speaker] if speaker is not None else previous  # "Had to take over, then braked": the
