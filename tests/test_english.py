@@ -10480,3 +10480,8 @@ def test_shortly_after_said_at_the_end_of_a_clause_is_when_it_happens_not_a_new_
 ])
 def test_passing_it_after_the_ego_is_made_to_wait_is_the_egos_doing(prompt):
     assert ("car", "stop", "front") in agents(prompt)
+
+
+def test_a_driver_who_is_standing_beside_the_vehicle_is_on_foot():
+    assert ("pedestrian", "stop", "front_right") in agents(
+        "A truck is parked on the hard shoulder and its driver is standing next to it.")

@@ -4180,8 +4180,9 @@ def _gets_out(units: list[Unit], head: int, walking: bool = True) -> bool:
     if walking and units[head + 1:head + 2] and units[head + 1].category == "actions" and \
             units[head + 1].tokens[0].base in ("walk", "stroll", "wander", "stride", "stagger"):
         return True  # "the driver walked out from in front of it": on foot
-    if walking and words[:1] in (["standing"], ["stood"]):
-        return True  # "its driver standing beside it on the shoulder": out of it, on foot
+    if walking and (words[1:2] if words[:1] in (["is"], ["was"]) else words[:1]) in (["standing"], ["stood"],
+                                                                                     ["stands"]):
+        return True  # "its driver (is) standing beside it on the shoulder": out of it, on foot
     words += [""]
     return any(w in verbs and nxt in ("out", "off", "down") and not (
         w in AUXILIARIES and (after == "of" or nxt == "down")) for w, nxt, after in zip(words, words[1:], words[2:]))
