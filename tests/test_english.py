@@ -10485,3 +10485,14 @@ def test_passing_it_after_the_ego_is_made_to_wait_is_the_egos_doing(prompt):
 def test_a_driver_who_is_standing_beside_the_vehicle_is_on_foot():
     assert ("pedestrian", "stop", "front_right") in agents(
         "A truck is parked on the hard shoulder and its driver is standing next to it.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car is parked on each side of the street.", [("car", "go_straight", "ego"), ("car", "stop", "front_left"),
+                                                      ("car", "stop", "front_right")]),
+    ("The ego is boxed in with a truck on either side of it.", [("car", "go_straight", "ego"),
+                                                                ("truck", "go_straight", "left"),
+                                                                ("truck", "go_straight", "right")]),
+])
+def test_one_on_each_side_is_two(prompt, expected):
+    assert agents(prompt) == expected

@@ -5551,6 +5551,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             _add_compass(r, e, u)
         else:
             e.features.add(u.meaning)
+            if u.meaning == "both_sides" and e.count == 1 and not e.is_ego and e.parent is None and \
+                    {t.word for t in u.tokens} & {"each", "either"}:
+                e.count = 2  # "a car parked on each side of the street": one on each side, two
     elif u.category == "actions" and u.meaning == "same":
         acted = [x for x in r.entities if x is not e and x.actions and x.parent is not e and e.parent is not x]
         model = max(acted, key=lambda x: max(a[3] for a in x.actions), default=None)  # the last one who acted
