@@ -10496,3 +10496,11 @@ def test_a_driver_who_is_standing_beside_the_vehicle_is_on_foot():
 ])
 def test_one_on_each_side_is_two(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A tractor is pulling out of a field on the left.", ("truck", "change_lane_to_right", "front_left")),
+    ("A van pulls out of a petrol station on the left.", ("car", "change_lane_to_right", "front_left")),
+])
+def test_out_of_a_field_or_a_petrol_station_joins_the_road_ahead(prompt, expected):
+    assert expected in agents(prompt)
