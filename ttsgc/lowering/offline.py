@@ -6017,7 +6017,7 @@ def _the_ego_acts_last(before: Clause, clause: Clause) -> bool:
             or not units[0].tokens[0].word.endswith("ing") or not any(u.word in ("it", "them") for u in units[1:3]):
         return False
     ego_at = next((i for i, u in enumerate(prev) if u.category == "agents" and u.meaning == "ego"), None)
-    return bool(ego_at) and any(u.category == "actions" for u in prev[ego_at + 1:]) and any(
+    return ego_at is not None and any(u.category == "actions" for u in prev[ego_at + 1:]) and any(
         u.category == "agents" and u.meaning not in ("ego", "none") for u in prev[:ego_at])
 
 
