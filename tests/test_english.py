@@ -10504,3 +10504,10 @@ def test_one_on_each_side_is_two(prompt, expected):
 ])
 def test_out_of_a_field_or_a_petrol_station_joins_the_road_ahead(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_holding_at_the_lights_is_waiting_there():
+    assert stages("The ego is holding at the traffic lights while an ambulance crosses from the right. Once the "
+                  "ambulance clears, the ego goes straight through.") == [
+        [("ego", "stop", None), ("ambulance", "go_straight", "road_of_right_turn")], [("ego", "go_straight", None)]]
+    assert road("The ego is holding at the traffic lights.").required_signals
