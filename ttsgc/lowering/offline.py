@@ -5160,8 +5160,8 @@ def _picked_out_by_what_it_did(r: _Reader, u: Unit) -> bool:
     if at + 1 >= len(r.tokens) or r.tokens[at].word not in ("that", "which") or \
             r.tokens[at].sentence != u.tokens[-1].sentence:
         return False
-    nxt = r.tokens[at + 1]
-    return nxt.word not in SPEAKERS | PRONOUNS | {"the", "a", "an", "ego"}
+    nxt = r.tokens[at + 1].word
+    return nxt not in SPEAKERS and nxt not in PRONOUNS and nxt not in ("the", "a", "an", "ego")
 
 
 def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
@@ -9088,12 +9088,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
             speaker = next((e for e in r.entities if e.is_ego), None)
             if speaker is not None:
                 previous = [speaker]  # a commentary's "once both are through, turning left": the speaker's doing
-        if k > 0 and _the_ego_acts_last(clauses[k - 1], clause):
-            previous = [e for e in r.entities if e.is_ego][:1] or previous  # "a van parked ahead forces the ego
-            # to wait before passing it": the ego, whose verb came last, passes; not the van
-        if _the_speakers_obligation(r, clause):
-            speaker = next((e for e in r.entities if e.is_ego), None)
-            previous = [speaker] if speaker is not None else previous  # "Had to take over, then braked": the
+        if k > 0 and _the_ego_acts_last(clauses[k - 1], clause) or _the_speakers_obligation(r, clause):
+            ego_entity = next((e for e in r.entities if e.is_ego), None)
+            previous = [ego_entity] if ego_entity is not None else previous  # "a van parked ahead forces the ego
+            # to wait before passing it": the ego passes, not the van; "Had to take over, then braked": the
             # speaker, whose subject a diary drops, does what follows
         before = len(r.entities)
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
