@@ -10511,3 +10511,48 @@ def test_holding_at_the_lights_is_waiting_there():
                   "ambulance clears, the ego goes straight through.") == [
         [("ego", "stop", None), ("ambulance", "go_straight", "road_of_right_turn")], [("ego", "go_straight", None)]]
     assert road("The ego is holding at the traffic lights.").required_signals
+
+
+@pytest.mark.parametrize("prompt", [
+    "A car passes the ego on the left, then cuts in.",
+    "A car overtakes the ego and then cuts in front of it.",
+])
+def test_a_pass_that_goes_on_into_a_cut_in_is_the_cut_in(prompt):
+    assert agents(prompt) == [("car", "change_lane_to_right", "back_left"), ("car", "go_straight", "ego")]
+
+
+def test_what_the_ego_is_told_after_another_passes_stays_the_egos():
+    assert ("motorcycle", "go_straight", "back_right") in agents(
+        "The ego is in the middle lane and a motorcycle comes speeding behind on the right. Once it has passed, "
+        "changes the ego lane to the right.")
+
+
+def test_one_in_the_blind_spot_is_behind_in_the_lane_the_ego_moves_into():
+    assert agents("The ego changes lanes to the right while a motorcycle is in its blind spot.") == [
+        ("car", "change_lane_to_right", "ego"), ("motorcycle", "go_straight", "back_right")]
+    assert ("car", "go_straight", "back") in agents("A car sits in the ego's blind spot.")
+
+
+def test_oncoming_said_of_traffic_places_no_one_named():
+    assert agents("The ego overtakes a slow truck despite oncoming traffic.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+
+
+def test_a_learner_on_the_pedals_is_at_the_wheel():
+    assert agents("Stop 15: estate roads by the park. Pupil covers the brake and creeps past an ice cream van "
+                  "parked ahead.") == [("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Event 7: a motorcycle turns left in front of the ego. Weather: rain.",
+     [("car", "go_straight", "ego"), ("motorcycle", "turn_left", "front")]),
+    ("Exercise 10: the occluded pedestrian. The ego drives straight along a street. A child steps out from between "
+     "two parked cars on the right.", [("car", "go_straight", "ego"), ("car", "stop", "front_right"),
+                                      ("car", "stop", "front_right"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("Hazard H-22: pedestrian emerging from behind parked vehicles. Triggering condition: a child steps out between "
+     "two parked cars on the right-hand side ahead. ODD: residential street.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front_right"), ("car", "stop", "front_right"),
+      ("pedestrian", "cross_the_road", "front_right")]),
+])
+def test_a_numbered_cases_key_and_title_are_no_scene_words(prompt, expected):
+    assert agents(prompt) == expected

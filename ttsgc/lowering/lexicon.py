@@ -410,6 +410,8 @@ TITLE_CASED = re.compile(r"\s*((?:[A-Za-z][\w'-]*\s+){1,9}[A-Za-z][\w'-]*)[.!?]\
 TITLE_SMALL_WORDS = {"a", "an", "the", "with", "of", "at", "in", "on", "and", "to", "for", "from", "by", "or", "vs"}
 NUMBERED_KEY = re.compile(r"\s*([A-Z][a-z]+ \d{1,3}[a-z]?|[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*)\s*:\s+")
 CASE_NUMBER = re.compile(r"[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*")  # 'TC-052', 'HZ-014': a case's number keys its title
+NUMBERED_CASE = re.compile(r"[a-z]+\s+#?(?:\d{1,4}[a-z]?|[a-z]{1,8}[-_]?\d+(?:[-_.]\d+)*)")  # 'hazard h-22', 'event 7'
+TRIGGER_KEYS = {"triggering condition", "trigger condition", "trigger", "triggering event", "trigger event"}
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
@@ -708,6 +710,13 @@ def _without_advice(text: str) -> str:
     return text
 
 
+def _verbless(phrase: str) -> bool:
+    """No verb but a participle before its noun ('the occluded pedestrian'): a name, not a sentence."""
+    found = matches(tokenize(phrase))
+    return not any(f.category == "actions" and not any(g.start == f.end and g.category == "agents" for g in found)
+                   for f in found)
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
@@ -729,8 +738,10 @@ def _lines(text: str) -> str:
         if numbered and numbered.group(1).split()[0].lower() in CASE_WORDS:
             text = text[numbered.end():]  # "Event 7: motorcycle at a junction. ...": which event, no scene word
             titled = TITLE_CASED.match(text)
-            if titled and all(w[0].isupper() or w.lower() in TITLE_SMALL_WORDS for w in titled.group(1).split()):
-                text = "\u00a7 " + text  # "Example 15: Right Turn With Oncoming Cyclist. The ego ...": its title
+            if titled and (all(w[0].isupper() or w.lower() in TITLE_SMALL_WORDS for w in titled.group(1).split())
+                           or _verbless(titled.group(1))):
+                text = "\u00a7 " + text  # "Example 15: Right Turn With Oncoming Cyclist. The ego ...", "Exercise
+                # 10: the occluded pedestrian. The ego drives ...": its title, named without a verb
         return _keyed_agents("\n".join(_without_outline_numbers([text])))
     out = []
     lines = _tables(_without_answer_choices(_without_outline_numbers(
@@ -769,6 +780,10 @@ def _lines(text: str) -> str:
             value = re.split(rf",?\s+(?:and\s+)?(?:{_later_words()})\b", value)[0]  # "Ego: follows HGV, then (after
             # that) pulls out": the phases
             # below tell what comes when; the line before them says who is there and how it starts
+        if lowered.split()[0] in CASE_WORDS and NUMBERED_CASE.fullmatch(lowered) or lowered in TRIGGER_KEYS:
+            out.append("\u00a7 " + value + "." if _verbless(value) else f"{key}: {value}.")  # "Exercise 10: the
+            continue  # occluded pedestrian.": the case's name; "Hazard H-22: pedestrian emerging from behind parked
+            # vehicles.", "Triggering condition: a child steps out": a heading over what it names
         told = "ego" in [w.lower() for w in value.split()[:2]] and len(value.split()) >= 5 and not gherkin
         # "Scene: ego turning left at a signalised intersection, one oncoming sedan going straight": the scene
         # itself, no title (but a Gherkin scenario's name, told again by its steps)

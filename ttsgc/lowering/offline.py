@@ -176,6 +176,8 @@ class Entity:
     # said to do otherwise ("one cyclist waits on the left and one on the right")
     waits_to_turn: tuple = ()  # "a car is waiting to turn right": (stage, action, direction) of the turn to come,
     # on its own way
+    goes_on: set = field(default_factory=set)  # later stages its own sentence goes on into ("passes the ego, then
+    # cuts in")
 
 
 @dataclass
@@ -5527,6 +5529,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if u.meaning == "side_left" and {t.word for t in u.tokens} & {"far", "farside"} and \
                 "lane" not in {t.word for t in u.tokens}:
             e.features.add("far_side")  # the far lane of a road, or across a junction: decided in _position
+        if u.meaning == "behind" and "blind" in {t.word for t in u.tokens}:
+            e.features.add("blind_spot")  # behind, in the lane beside: the one the ego moves into, if it does
         where = [t.word for t in r.tokens[u.end:u.end + 2]]
         if u.meaning in ("ahead", "behind") and where[:1] == ["where"] and where[1:] and where[1] in PRONOUNS:
             e.relative_to = e.relative_to or next(
@@ -6543,6 +6547,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             continue
         if any(np.first <= i < np.index for np in phrases):
             continue  # a premodifier, already given
+        if u.category == "positions" and len(u.tokens) == 1 and u.word in ADJECTIVE_POSITIONS and \
+                i + 1 < len(units) and units[i + 1].category == "agents" and units[i + 1].meaning == "none":
+            r.mark(u)  # "overtakes a slow truck despite oncoming traffic": the traffic's, which is no one named
+            continue
         if u.meaning in ("ahead", "behind") and [t.word for t in u.tokens] in (["front"], ["rear"], ["back"]) and \
                 u.start > 0 and r.tokens[u.start - 1].word == "the" and i + 1 < len(units) and \
                 units[i + 1].word == "of" and not any(x.category in ("agents", "actions") for x in units[:i]):
@@ -8769,6 +8777,11 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
 
 def _intro_action(e: Entity) -> tuple[str | None, str | None]:
     action = _action(e, e.stage)
+    if action[0] in ("move", "go_straight") and not e.is_ego:
+        later = _action(e)
+        if later[0] in LANE_MOVES and any(a[0] > e.stage and a[4] == later[0] and a[0] in e.goes_on
+                                          for a in e.actions):
+            return later  # "a car passes the ego on the left, then cuts in": the pass leads up to the cut-in
     if action[0] == "stop" and not e.is_ego and "straight_on" in e.features and any(
             a[4] == "go_straight" and a[1] == 2 and a[0] > e.stage for a in e.actions):
         return "go_straight", None  # "a cyclist waiting beside the ego ... when the light turns green, the ego lets
@@ -8798,7 +8811,7 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     person = e.type == "pedestrian" or crossing
     walking = e.type == "pedestrian" and not crossing and (
         action == "walk" or ("on_sidewalk" in f and action in (None, "stop", "move")))
-    if "target_lane" in f and target_side and not _side(e):
+    if f & {"target_lane", "blind_spot"} and target_side and not _side(e):
         f.add(f"side_{target_side}")
     if {"level", "behind"} <= f and "overtaking" not in f:
         f.discard("behind")  # "riding alongside on our right, in the blind spot": level is said, and the blind
@@ -9097,6 +9110,10 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         said_until = r.order
         subject = _read_clause(r, clause, previous, recent, pending)
+        if clause.stage > 0 and clause.units and clause.units[0].category == "actions" and subject == previous and \
+                len(subject) == 1 and subject[0].said_at >= 0 and \
+                tokens[subject[0].said_at].sentence == clause.units[0].tokens[0].sentence:
+            subject[0].goes_on.add(clause.stage)  # "a car passes the ego, then cuts in": the sentence goes on
         _gapped(r, clause, previous, r.entities[before:])
         aside = clause.link == "," and subject and all(e in r.entities[:before] for e in subject) and \
             not _has_verb(clause.units) and k > 0
@@ -9705,7 +9722,8 @@ def _the_speakers_vehicle_by_a_part(r: _Reader) -> None:
 
 
 LEARNERS = {"pupil", "learner", "student", "trainee", "apprentice"}
-DRIVING_LESSON = {"lesson", "lessons", "instructor", "mirrors", "handbrake", "manoeuvres", "maneuvers"}
+DRIVING_LESSON = {"lesson", "lessons", "instructor", "mirrors", "handbrake", "manoeuvres", "maneuvers", "clutch",
+                  "gears", "accelerator", "steering"}  # a lesson, or controls only the one at the wheel uses
 VEHICLE_MANOEUVRES = {"turn", "turn_left", "turn_right", "u_turn", "lane_change", "lane_left", "lane_right", "cut_in"}
 
 
@@ -9713,7 +9731,9 @@ def _the_learner_at_the_wheel(r: _Reader) -> None:
     """'Stop 1: Pupil turns left at the T-junction', 'Pupil goes straight across': a learner who turns, changes lane
     or goes straight, or who does anything but walk in a driving lesson ('Pupil approaches on amber, then stops'),
     is at the wheel of the vehicle the scene is told from, the ego, not on foot."""
-    lesson = bool({t.word for t in r.tokens} & DRIVING_LESSON)
+    lesson = bool({t.word for t in r.tokens} & DRIVING_LESSON) or any(
+        a.word in ("the", "her", "his", "their") and b.word in ("brake", "brakes", "gas", "throttle")
+        for a, b in zip(r.tokens, r.tokens[1:]))  # "Pupil covers the brake and creeps past": the pedals
     for e in list(r.entities):
         if e.is_ego or e.type != "pedestrian" or e.count != 1 or e.head not in LEARNERS or not (
                 any(a[4] in VEHICLE_MANOEUVRES | {"go_straight"} for a in e.actions) or lesson and e.actions and
@@ -10454,9 +10474,10 @@ def _title(prompt: str, tokens: list[Token]) -> range:
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
     if _title_names_the_agent(m.group(1), prompt[m.end(1):]):
         return range(0)
-    n = len(tokenize(m.group(1)))
-    if n > 12 or n >= len(tokens):
-        return range(0)
+    title = [t.word for t in tokenize(m.group(1))]
+    n = len(title)
+    if n > 12 or n >= len(tokens) or [t.word for t in tokens[:n]] != title:
+        return range(0)  # (a key the reading of lines took off already: "Event 7: a motorcycle turns left")
     return range(n)
 
 
