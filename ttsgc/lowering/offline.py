@@ -10439,10 +10439,17 @@ def _headline(prompt: str, tokens: list[Token]) -> range:
     if not words or len(words) > 8 or not all(w[0].isupper() or w[0].isdigit() or w.lower() in TITLE_SMALL_WORDS
                                              for w in words) or words[0].lower() in SUBJECT_PRONOUNS | {"i'm"}:
         return range(0)
-    n = len(tokenize(m.group(1)))
+    n = _opening(tokens, m.group(1))
     if n >= len(tokens) or any(t.base in ("be", "have") for t in tokens[:n]):
         return range(0)
     return range(n)
+
+
+def _opening(tokens: list[Token], title: str) -> int:
+    """How many tokens the title is, if the text's tokens open with it, else 0 (the reading of lines may have
+    taken it off already: "Event 7: a motorcycle turns left")."""
+    words = [t.word for t in tokenize(title)]
+    return len(words) if [t.word for t in tokens[:len(words)]] == words else 0
 
 
 def _title(prompt: str, tokens: list[Token]) -> range:
@@ -10474,10 +10481,9 @@ def _title(prompt: str, tokens: list[Token]) -> range:
         return range(0)  # "Oncoming traffic: a car and a motorcycle": where the listed agents are, no title
     if _title_names_the_agent(m.group(1), prompt[m.end(1):]):
         return range(0)
-    title = [t.word for t in tokenize(m.group(1))]
-    n = len(title)
-    if n > 12 or n >= len(tokens) or [t.word for t in tokens[:n]] != title:
-        return range(0)  # (a key the reading of lines took off already: "Event 7: a motorcycle turns left")
+    n = _opening(tokens, m.group(1))
+    if n > 12 or n >= len(tokens):
+        return range(0)
     return range(n)
 
 
