@@ -10556,3 +10556,19 @@ def test_a_learner_on_the_pedals_is_at_the_wheel():
 ])
 def test_a_numbered_cases_key_and_title_are_no_scene_words(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, kind", [
+    ("Two trucks, one in each adjacent lane, travel alongside the ego.", "truck"),
+    ("A car drives in each adjacent lane.", "car"),
+])
+def test_one_in_each_adjacent_lane_is_one_on_each_side(prompt, kind):
+    assert sorted(a for a in agents(prompt) if a[2] != "ego") == [(kind, "go_straight", "left"),
+                                                                 (kind, "go_straight", "right")]
+
+
+def test_the_doers_of_a_passive_said_as_a_bare_plural_are_in_the_scene():
+    assert agents("The ego is overtaken by trucks.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "back_left"), ("truck", "go_straight", "back_left")]
+    assert not [a for a in agents("A car from the left, which was hidden by vehicles parked near the junction, "
+                                  "pulls out.") if a[1] == "stop"]

@@ -4906,6 +4906,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         before -= 1  # "between parked cars"
     scenery = before >= lo and units[before].category == "word" and units[before].word in SCENERY_PREPOSITIONS or \
         any(m.category == "word" and m.word in SCENERY_PREPOSITIONS for m in modifiers)  # "from between parked cars"
+    if before > lo and units[before].word == "by" and units[before - 1].category == "actions" and first == head and \
+            units[before - 1].meaning != "relate" and not (head + 1 < len(units) and units[head + 1].meaning == "stop"):
+        scenery = False  # "the ego is overtaken by trucks": the passive's doers ("hidden by vehicles parked near the
+        # junction" is the scenery that hides)
     doing = head + 1 < len(units) and units[head + 1].category in ("actions", "positions") and \
         units[head + 1].tokens[0].word.endswith("ing")  # "a junction with cars coming from the right": agents
     again = plural and count is None and words == {"the"} and u.base in r.scenery and \
