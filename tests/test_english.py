@@ -10572,3 +10572,11 @@ def test_the_doers_of_a_passive_said_as_a_bare_plural_are_in_the_scene():
         ("car", "go_straight", "ego"), ("truck", "go_straight", "back_left"), ("truck", "go_straight", "back_left")]
     assert not [a for a in agents("A car from the left, which was hidden by vehicles parked near the junction, "
                                   "pulls out.") if a[1] == "stop"]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A car on the side road to the right pulls out in front of the ego.",
+    "The ego goes straight while a car waiting on the side street to our right pulls out in front of it.",
+])
+def test_a_side_road_to_one_side_is_the_road_on_that_side(prompt):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == [("car", "go_straight", "road_of_right_turn")]
