@@ -10580,3 +10580,20 @@ def test_the_doers_of_a_passive_said_as_a_bare_plural_are_in_the_scene():
 ])
 def test_a_side_road_to_one_side_is_the_road_on_that_side(prompt):
     assert [a for a in agents(prompt) if a[2] != "ego"] == [("car", "go_straight", "road_of_right_turn")]
+
+
+def test_a_manoeuvre_said_bare_is_no_lane_change():
+    assert agents("A pedestrian crosses the road in front of the ego. The ego must perform an emergency brake or an "
+                  "avoidance maneuver.") == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert road("The ego must perform an avoidance maneuver.").lanes < 2
+
+
+def test_one_that_prevents_an_evasive_manoeuvre_drives_where_it_is():
+    assert ("car", "go_straight", "front_left") in agents(
+        "If the truck ahead brakes to a halt while an oncoming car prevents an evasive manoeuvre, the AEB function "
+        "shall bring the subject vehicle to a stop behind the truck.")
+
+
+def test_a_scenario_class_named_for_what_crosses_puts_no_crossing_on_the_road():
+    assert not road("DynamicObjectCrossing. The ego vehicle drives straight along an urban road when a pedestrian "
+                    "emerges from behind a parked van and crosses the road.").required_objects
