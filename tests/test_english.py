@@ -10597,3 +10597,8 @@ def test_one_that_prevents_an_evasive_manoeuvre_drives_where_it_is():
 def test_a_scenario_class_named_for_what_crosses_puts_no_crossing_on_the_road():
     assert not road("DynamicObjectCrossing. The ego vehicle drives straight along an urban road when a pedestrian "
                     "emerges from behind a parked van and crosses the road.").required_objects
+
+
+def test_a_participle_after_the_object_of_a_denied_verb_is_the_objects():
+    assert agents("The ego turning right did not wait for a crowd crossing the street.") == [
+        ("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "front")]

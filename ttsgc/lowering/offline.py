@@ -6435,9 +6435,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         owner = _participle_owner(units, i, phrases, subject, verbs)
         if owner is not None and not main_verbs and participles and not any(v > i for v in verbs) and \
                 all(e in subject for owners in participles.values() for e in owners) and owner.entity not in subject \
-                and not (owner.first > 0 and units[owner.first - 1].word in ("with", "while")):
+                and not (owner.first > 0 and units[owner.first - 1].word in ("with", "while")) and \
+                (not units[i].tokens[0].word.endswith("ing") or units[i - 1].word in AUXILIARIES):
             owner = None  # "a cyclist riding ahead of it swerved left": the subject's participle, then its finite verb
-            # ("two cars parked, with a bus approaching": 'with' gives the bus its own participle)
+            # ("two cars parked, with a bus approaching": 'with' gives the bus its own participle; "the ego turning
+            # right did not wait for a crowd crossing": the crowd's, where the finite verb was denied)
         if owner is not None:
             participles[i] = [e for e in owner.group or [owner.entity] if e is not None]
             for e in owner.group or [owner.entity]:
