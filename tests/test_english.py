@@ -10600,5 +10600,5 @@ def test_a_scenario_class_named_for_what_crosses_puts_no_crossing_on_the_road():
 
 
 def test_a_participle_after_the_object_of_a_denied_verb_is_the_objects():
-    assert agents("The ego turning right did not wait for a crowd crossing the street.") == [
-        ("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert agents("The ego turning right did not wait for a crowd leaving the stadium that was still on the "
+                  "crosswalk.") == [("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
