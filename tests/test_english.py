@@ -10602,3 +10602,17 @@ def test_a_scenario_class_named_for_what_crosses_puts_no_crossing_on_the_road():
 def test_a_participle_after_the_object_of_a_denied_verb_is_the_objects():
     assert agents("The ego turning right did not wait for a crowd leaving the stadium that was still on the "
                   "crosswalk.") == [("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego overtakes a bus stopped at a bus stop.", [("bus", "stop", "front"), ("car", "go_straight", "ego")]),
+    ("The ego passes a truck parked on the right.", [("car", "go_straight", "ego"), ("truck", "stop", "front_right")]),
+    ("Hero overtakes a cyclist riding on the right shoulder ahead, staying in its lane.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_right")]),
+])
+def test_where_the_one_passed_stands_is_its_own_place(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_side_said_after_the_one_passed_is_the_side_of_the_pass():
+    assert ("car", "change_lane_to_left", "ego") in agents("The ego overtakes the standing bus over the left lane.")

@@ -5666,9 +5666,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "move" and e.is_ego and clause_units is not None and k is not None and (
                 set(u.base.split()) & OVERTAKING or k + 1 < len(clause_units)
                 and clause_units[k + 1].word in ("around", "round", "past")):  # "go around it on the left"
+            ahead = clause_units[k + 1:k + 8]
+            ahead = ahead[:next((j for j, x in enumerate(ahead) if x.category == "actions" and j > 0 and
+                                 ahead[j - 1].category == "agents"), len(ahead))]
             side = direction or _direction_after(r, clause_units, k) or next(  # "went around on the right": read once
-                (x.meaning[5:] for x in clause_units[k + 1:k + 8] if x.category == "positions"
-                 and x.meaning in ("side_left", "side_right")), None)
+                (x.meaning[5:] for x in ahead if x.category == "positions"  # (not "passes a truck parked on
+                 and x.meaning in ("side_left", "side_right")), None)  # the right": where the truck is)
             circulating = any(t.word in ("roundabout", "rotary", "circle") for x in clause_units for t in x.tokens) \
                 and not (k + 2 < len(clause_units) and (clause_units[k + 2].category == "agents" or
                                                        clause_units[k + 2].word in ("it", "him", "her", "them"))) \
@@ -6429,6 +6432,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     for i in verbs:
         if i > 1 and units[i - 1].word == "to" and i - 2 in participles:
             participles[i] = participles[i - 2]  # "behind a car waiting to turn left": the car's turn to come
+            for e in participles[i]:
+                _modify(r, e, units[i], stage, 1, units, i)
+            continue
+        if i - 1 in participles and units[i].tokens[0].word in ("at", "in", "on"):
+            participles[i] = participles[i - 1]  # "overtakes a bus stopped at a bus stop": where the bus stands
             for e in participles[i]:
                 _modify(r, e, units[i], stage, 1, units, i)
             continue
