@@ -10616,3 +10616,8 @@ def test_where_the_one_passed_stands_is_its_own_place(prompt, expected):
 
 def test_the_side_said_after_the_one_passed_is_the_side_of_the_pass():
     assert ("car", "change_lane_to_left", "ego") in agents("The ego overtakes the standing bus over the left lane.")
+
+
+def test_the_egos_lane_said_with_lane_after_its_side_places_the_others_by_it():
+    assert agents("Ego on rightmost lane of 3 lanes highway. One car in middle lane behind of ego.") == [
+        ("car", "go_straight", "back_left"), ("car", "go_straight", "ego")]

@@ -6645,8 +6645,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     u.start > 0 and r.tokens[u.start - 1].word in ("the", "its", "my", "our", "his", "her") and
                     u.end < len(r.tokens) and r.tokens[u.end].word == "of" or
                     u.start > 0 and r.tokens[u.start - 1].word in ("my", "our", "its"))
-                if u.meaning in ("side_left", "side_right") and {t.word for t in u.tokens} & LANE_WORDS and \
-                        not edge_after and not body_side:
+                lane_after = i + 1 < len(units) and units[i + 1].category == "word" and units[i + 1].word in ("lane", "lanes")
+                if u.meaning in ("side_left", "side_right") and ({t.word for t in u.tokens} & LANE_WORDS or
+                                                                 lane_after) and not edge_after and not body_side:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
                     e.features.add("in_lane_" + u.meaning[5:])  # which side: a move to the middle is away from it
                 later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
