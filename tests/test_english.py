@@ -10621,3 +10621,10 @@ def test_the_side_said_after_the_one_passed_is_the_side_of_the_pass():
 def test_the_egos_lane_said_with_lane_after_its_side_places_the_others_by_it():
     assert agents("Ego on rightmost lane of 3 lanes highway. One car in middle lane behind of ego.") == [
         ("car", "go_straight", "back_left"), ("car", "go_straight", "ego")]
+
+
+def test_a_lane_said_before_behind_and_whom_is_the_subjects_lane():
+    assert agents("The ego vehicle starts in the rightmost lane behind a slow-moving truck, while a sports car "
+                  "approaches at high speed from behind in the middle lane and overtakes it.") == [
+        ("car", "go_straight", "back_left"), ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+    assert ("car", "go_straight", "back_right") in agents("A car in the right lane behind the ego speeds up.")

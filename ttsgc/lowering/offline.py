@@ -386,9 +386,27 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
-                   _pulled_in_or_out, _one_more_of_the_kind):
+                   _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+def _a_lane_then_whom_it_is_behind(units: list[Unit]) -> list[Unit]:
+    """'starts in the rightmost lane behind a slow-moving truck': a lane said before 'behind' and the one it is
+    behind is the subject's lane, and 'behind' says whom it follows (not 'a car in the right lane behind',
+    a place of its own)."""
+    out = []
+    for k, u in enumerate(units):
+        words = [t.word for t in u.tokens]
+        after = units[k + 1:k + 4]
+        if u.category == "positions" and u.meaning in ("back_left", "back_right") and words[-1] == "behind" and \
+                "lane" in words and after and after[0].word in ("a", "an", "the") and any(
+                    x.category == "agents" and x.meaning not in ("ego", "none") for x in after[1:]):
+            side = Unit(u.start, u.end - 1, "positions", "side_" + u.meaning[5:], u.tokens[:-1])
+            out += [side, Unit(u.end - 1, u.end, "positions", "behind", u.tokens[-1:])]
+        else:
+            out.append(u)
+    return out
 
 
 def _one_more_of_the_kind(units: list[Unit]) -> list[Unit]:
