@@ -10628,3 +10628,12 @@ def test_a_lane_said_before_behind_and_whom_is_the_subjects_lane():
                   "approaches at high speed from behind in the middle lane and overtakes it.") == [
         ("car", "go_straight", "back_left"), ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
     assert ("car", "go_straight", "back_right") in agents("A car in the right lane behind the ego speeds up.")
+
+
+def test_pulling_in_to_a_stop_is_stopping_there():
+    assert agents("The bus in front pulls in to the bus stop.") == [("bus", "stop", "front"), ("car", "go_straight", "ego")]
+
+
+def test_one_on_a_horse_rides_along_the_road():
+    assert agents("A horse rider is on the road ahead.") == [("car", "go_straight", "ego"),
+                                                           ("cyclist", "go_straight", "front")]

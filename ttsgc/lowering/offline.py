@@ -438,6 +438,10 @@ def _pulled_in_or_out(units: list[Unit]) -> list[Unit]:
         if pulled and u.tokens[1].word in ("in", "over", "up") and place.category == "positions" and \
                 place.meaning == "shoulder" and place.tokens[0].word == "on":
             out[k] = Unit(u.start, u.end, "actions", "stop", u.tokens)
+        stop_after = [x for x in units[k + 1:k + 4] if x.tokens[0].sentence == u.tokens[0].sentence]
+        if pulled and u.tokens[1].word in ("in", "up") and place.word in ("to", "at") and any(
+                x.category == "agents" and x.meaning == "none" and x.tokens[-1].word == "stop" for x in stop_after):
+            out[k] = Unit(u.start, u.end, "actions", "stop", u.tokens)  # "pulls in to the bus stop": it stops there
         if pulled and u.tokens[1].word == "out" and place.word == "and" and k + 2 < len(units) and \
                 units[k + 2].category == "actions" and units[k + 2].meaning in ("sideways_left", "sideways_right"):
             out[k] = Unit(u.start, u.end, "word", "pulled out", u.tokens)
