@@ -10637,3 +10637,9 @@ def test_pulling_in_to_a_stop_is_stopping_there():
 def test_one_on_a_horse_rides_along_the_road():
     assert agents("A horse rider is on the road ahead.") == [("car", "go_straight", "ego"),
                                                            ("cyclist", "go_straight", "front")]
+
+
+def test_what_one_named_by_an_unknown_noun_does_is_not_the_egos():
+    assert agents("A pony trap pulls out in front of the ego.") == [("car", "go_straight", "ego")]
+    assert agents("A milk float pulls out in front of the ego.") == [("car", "change_lane_to_right", "front_left"),
+                                                                   ("car", "go_straight", "ego")]

@@ -7511,7 +7511,7 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
     named_otherwise = _named_by_an_unknown_noun(r, units, verbs[0])
     if named_otherwise is not None:
         return named_otherwise  # "A taxi pulled out. The cabbie then stopped": the taxi, by a word not known
-    if _someone_of_theirs(r, units, verbs[0]):
+    if _someone_of_theirs(r, units, verbs[0]) or _an_unknown_one(r, units, verbs[0]):
         return None
     if any(u.word in ("means", "meant") for u in units) and not any(u.category == "agents" for u in units):
         return None  # "Yield means yield.", "Stop means stop": what a sign means, said of no one
@@ -7519,6 +7519,25 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
             not units[verbs[0] - 1].meaning.startswith("time:"):
         return None  # "fog sitting over the bridge", "rain coming down": the weather's doing ("night ride" is not)
     return _ego_entity(r, stage)
+
+
+WHEN_AFTER = {"later", "earlier", "after", "ago", "on", "then", "again", "too", "also", "still", "further"}
+
+
+def _an_unknown_one(r: _Reader, units: list[Unit], verb: int) -> bool:
+    """'A milk float pulls out in front of the ego': a subject said with 'a' and a noun the lexicon does not know
+    (reported as unknown) does what its verb says; it is not the ego."""
+    tokens = r.tokens
+    k = units[verb].start - 1
+    words = []
+    while k >= 0 and tokens[k].sentence == tokens[units[verb].start].sentence and tokens[k].word.isalpha() and \
+            tokens[k].word not in ("a", "an") and len(words) < 2:
+        words.append(tokens[k])
+        k -= 1
+    return k >= 0 and tokens[k].word in ("a", "an") and bool(words) and words[0].word not in WHEN_AFTER and all(
+        (t.word,) not in lexicon().phrases and (t.base,) not in lexicon().phrases and
+        t.word not in lexicon().function_words for t in words) and (k == 0 or tokens[k - 1].sentence != tokens[k].sentence
+                                                                    or tokens[k - 1].word in (",", "and", "then"))
 
 
 def _someone_of_theirs(r: _Reader, units: list[Unit], verb: int) -> bool:
