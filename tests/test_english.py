@@ -10601,7 +10601,8 @@ def test_a_scenario_class_named_for_what_crosses_puts_no_crossing_on_the_road():
 
 def test_a_participle_after_the_object_of_a_denied_verb_is_the_objects():
     assert agents("The ego turning right did not wait for a crowd leaving the stadium that was still on the "
-                  "crosswalk.") == [("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+                  "crosswalk.") == [("car", "turn_right", "ego"),
+                                    ("pedestrian", "cross_the_road", "near_the_crosswalk")]
 
 
 @pytest.mark.parametrize("prompt, expected", [
@@ -10631,7 +10632,8 @@ def test_a_lane_said_before_behind_and_whom_is_the_subjects_lane():
 
 
 def test_pulling_in_to_a_stop_is_stopping_there():
-    assert agents("The bus in front pulls in to the bus stop.") == [("bus", "stop", "front"), ("car", "go_straight", "ego")]
+    assert agents("The bus in front pulls in to the bus stop.") == [("bus", "stop", "front"),
+                                                                   ("car", "go_straight", "ego")]
 
 
 def test_one_on_a_horse_rides_along_the_road():

@@ -438,9 +438,9 @@ def _pulled_in_or_out(units: list[Unit]) -> list[Unit]:
         if pulled and u.tokens[1].word in ("in", "over", "up") and place.category == "positions" and \
                 place.meaning == "shoulder" and place.tokens[0].word == "on":
             out[k] = Unit(u.start, u.end, "actions", "stop", u.tokens)
-        stop_after = [x for x in units[k + 1:k + 4] if x.tokens[0].sentence == u.tokens[0].sentence]
         if pulled and u.tokens[1].word in ("in", "up") and place.word in ("to", "at") and any(
-                x.category == "agents" and x.meaning == "none" and x.tokens[-1].word == "stop" for x in stop_after):
+                x.category == "agents" and x.meaning == "none" and x.tokens[-1].word == "stop" and
+                x.tokens[0].sentence == u.tokens[0].sentence for x in units[k + 1:k + 4]):
             out[k] = Unit(u.start, u.end, "actions", "stop", u.tokens)  # "pulls in to the bus stop": it stops there
         if pulled and u.tokens[1].word == "out" and place.word == "and" and k + 2 < len(units) and \
                 units[k + 2].category == "actions" and units[k + 2].meaning in ("sideways_left", "sideways_right"):
@@ -6667,7 +6667,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     u.start > 0 and r.tokens[u.start - 1].word in ("the", "its", "my", "our", "his", "her") and
                     u.end < len(r.tokens) and r.tokens[u.end].word == "of" or
                     u.start > 0 and r.tokens[u.start - 1].word in ("my", "our", "its"))
-                lane_after = i + 1 < len(units) and units[i + 1].category == "word" and units[i + 1].word in ("lane", "lanes")
+                lane_after = i + 1 < len(units) and units[i + 1].category == "word" and \
+                    units[i + 1].word in ("lane", "lanes")  # "on rightmost lane": the word after its side
                 if u.meaning in ("side_left", "side_right") and ({t.word for t in u.tokens} & LANE_WORDS or
                                                                  lane_after) and not edge_after and not body_side:
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
@@ -7525,19 +7526,20 @@ WHEN_AFTER = {"later", "earlier", "after", "ago", "on", "then", "again", "too", 
 
 
 def _an_unknown_one(r: _Reader, units: list[Unit], verb: int) -> bool:
-    """'A milk float pulls out in front of the ego': a subject said with 'a' and a noun the lexicon does not know
-    (reported as unknown) does what its verb says; it is not the ego."""
-    tokens = r.tokens
+    """'A pony trap pulls out in front of the ego': a subject that opens its clause with 'a' and nouns the lexicon
+    does not know (reported as unknown) is no one it can place; what it does is not the ego's."""
+    tokens, lex = r.tokens, lexicon()
     k = units[verb].start - 1
     words = []
     while k >= 0 and tokens[k].sentence == tokens[units[verb].start].sentence and tokens[k].word.isalpha() and \
             tokens[k].word not in ("a", "an") and len(words) < 2:
         words.append(tokens[k])
         k -= 1
-    return k >= 0 and tokens[k].word in ("a", "an") and bool(words) and words[0].word not in WHEN_AFTER and all(
-        (t.word,) not in lexicon().phrases and (t.base,) not in lexicon().phrases and
-        t.word not in lexicon().function_words for t in words) and (k == 0 or tokens[k - 1].sentence != tokens[k].sentence
-                                                                    or tokens[k - 1].word in (",", "and", "then"))
+    if k < 0 or tokens[k].word not in ("a", "an") or not words or words[0].word in WHEN_AFTER:
+        return False  # ("a second later brakes hard": when, not who)
+    opens = k == 0 or tokens[k - 1].sentence != tokens[k].sentence or tokens[k - 1].word in (",", "and", "then")
+    return opens and all((t.word,) not in lex.phrases and (t.base,) not in lex.phrases and
+                         t.word not in lex.function_words for t in words)
 
 
 def _someone_of_theirs(r: _Reader, units: list[Unit], verb: int) -> bool:
