@@ -7525,10 +7525,16 @@ def _implied(r: _Reader, units: list[Unit], stage: int, verbs: list[int], inside
 WHEN_AFTER = {"later", "earlier", "after", "ago", "on", "then", "again", "too", "also", "still", "further"}
 
 
+def _no_entry_of_its_own(t: Token) -> bool:
+    """A word the lexicon has no entry for as a word of its own (it may be part of a longer phrase)."""
+    lex = lexicon()
+    return (t.word,) not in lex.phrases and (t.base,) not in lex.phrases and t.word not in lex.function_words
+
+
 def _an_unknown_one(r: _Reader, units: list[Unit], verb: int) -> bool:
     """'A pony trap pulls out in front of the ego': a subject that opens its clause with 'a' and nouns the lexicon
-    does not know (reported as unknown) is no one it can place; what it does is not the ego's."""
-    tokens, lex = r.tokens, lexicon()
+    has no entry for is no one it can place; what it does is not the ego's."""
+    tokens = r.tokens
     k = units[verb].start - 1
     words = []
     while k >= 0 and tokens[k].sentence == tokens[units[verb].start].sentence and tokens[k].word.isalpha() and \
@@ -7538,8 +7544,7 @@ def _an_unknown_one(r: _Reader, units: list[Unit], verb: int) -> bool:
     if k < 0 or tokens[k].word not in ("a", "an") or not words or words[0].word in WHEN_AFTER:
         return False  # ("a second later brakes hard": when, not who)
     opens = k == 0 or tokens[k - 1].sentence != tokens[k].sentence or tokens[k - 1].word in (",", "and", "then")
-    return opens and all((t.word,) not in lex.phrases and (t.base,) not in lex.phrases and
-                         t.word not in lex.function_words for t in words)
+    return opens and all(_no_entry_of_its_own(t) for t in words)
 
 
 def _someone_of_theirs(r: _Reader, units: list[Unit], verb: int) -> bool:
@@ -7569,8 +7574,7 @@ def _named_by_an_unknown_noun(r: _Reader, units: list[Unit], verb: int) -> Entit
             ",", "and", "but", "so", "then", "when", "while", "as", "until", "before", "after"):
         return None  # the subject starts its clause ("that's the whole unprotected-left problem" is no subject)
     word = tokens[k]
-    if (word.word,) in lexicon().phrases or (word.base,) in lexicon().phrases or \
-            word.word in lexicon().function_words or word.misspelt or \
+    if not _no_entry_of_its_own(word) or word.misspelt or \
             word.word.endswith(("ly", "ing", "ed", "s")) or len(word.word) < 3 or not word.word.isalpha():
         return None
     opening = [t.word for t in tokens if t.word.isalpha()][:2]
