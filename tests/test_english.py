@@ -10645,3 +10645,50 @@ def test_what_one_named_by_an_unknown_noun_does_is_not_the_egos():
     assert agents("A pony trap pulls out in front of the ego.") == [("car", "go_straight", "ego")]
     assert agents("A milk float pulls out in front of the ego.") == [("car", "change_lane_to_right", "front_left"),
                                                                    ("car", "go_straight", "ego")]
+
+
+def test_the_driver_placed_behind_one_named_before_is_another():
+    assert agents("An oncoming car goes through the lights. The driver behind it stops.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "road_of_straight"), ("car", "stop", "road_of_straight")]
+    assert agents("I was turning left into Hill Street when a car coming towards me sped up and went through the "
+                  "lights on amber. The learner driver behind him stopped properly.") == [
+        ("car", "go_straight", "road_of_straight"), ("car", "stop", "road_of_straight"), ("car", "turn_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was on my scooter on the pavement when a van came straight at me.",
+    "I was on the pavement on my mobility scooter when a car turned left across me into a side road.",
+    "I was standing on the pavement when a van mounted the kerb in front of me.",
+])
+def test_a_witness_on_foot_met_by_the_vehicle_is_on_the_pavement(prompt):
+    found = agents(prompt)
+    assert found[0][1:] == ("go_straight", "ego") or found[0][1:] == ("turn_left", "ego")
+    assert ("pedestrian", "on_the_sidewalk", "left") in found and len(found) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "Riding along a street with cars parked on the left, a taxi ahead of me stopped suddenly, so I went round it.",
+    "A car in the lane to my right changed lane to the left right in front of me, and I had to grab a handful of "
+    "front brake.",
+])
+def test_a_teller_who_rides_or_grabs_the_front_brake_is_on_a_motorbike(prompt):
+    assert any(kind == "motorcycle" and where == "ego" for kind, _, where in agents(prompt))
+
+
+@pytest.mark.parametrize("prompt", [
+    "Actors: ego, truck\nPositions: truck ahead of ego\nManeuvers: truck stops\n",
+    "Actors: the ego, a truck\nPositions: truck ahead of ego\nManeuvers: truck stops\n",
+    "A truck. Truck ahead of ego. Truck stops.",
+])
+def test_an_agent_listed_then_placed_in_note_style_is_one(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("truck", "stop", "front")]
+
+
+def test_a_second_apposition_after_the_egos_names_another():
+    assert agents("Our ego, a bus, stops behind a truck.") == [("bus", "stop", "ego"), ("truck", "stop", "front")]
+
+
+def test_one_stepping_out_from_behind_it_comes_from_behind_what_stands():
+    assert agents("A truck is parked in the lane to the right of the ego and a pedestrian steps out from behind "
+                  "it.") == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right"),
+                             ("truck", "stop", "front_right")]

@@ -418,7 +418,11 @@ NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
 PLAIN_KEYS |= {"setup", "set up", "actors", "agents", "participants", "npcs", "road", "roads", "map", "route",
                "location", "description", "details", "steps", "notes", "trigger", "initial conditions",
                "initial state", "layout", "geometry", "infrastructure", "traffic", "other traffic", "situation",
-               "context", "given", "when", "then", "and", "scene description", "scenario description"}
+               "context", "given", "when", "then", "and", "scene description", "scenario description",
+               "positions", "initial positions", "start positions", "starting positions", "placement", "maneuvers",
+               "manoeuvres", "actions", "behaviours", "behaviors", "dynamics", "events", "sequence"}
+# ("Positions: truck ahead of ego", "Maneuvers: ego goes straight, truck stops": a field over what the agents
+# listed before do, each named again)
 ORACLE_KEYS = {"expected", "expected result", "expected behaviour", "expected behavior", "expected outcome", "ac",
                "acceptance", "acceptance criteria", "acceptance criterion", "pass criterion", "pass criteria",
                "success criteria", "success criterion", "kpi", "kpis", "metrics", "metric", "result", "outcome",
@@ -792,6 +796,10 @@ def _lines(text: str) -> str:
                 CASE_NUMBER.fullmatch(key) and not _names_agent(key) and not line.rstrip().endswith((".", "!", "?")):
             out.append("\u00a7 " + value + ".")  # read for the road and the weather only
         elif lowered in PLAIN_KEYS or lowered.split()[0] in ROAD_KEYS:
+            listed = value.split(", ")
+            if lowered.split()[-1] in LIST_HEADINGS and len(listed) > 1 and all(
+                    len(piece.split()) <= 4 and _agent_kinds(re.findall(r"[a-z]+", piece.lower())) for piece in listed):
+                value = "; ".join(listed)  # "Actors: the ego, a truck": a list, no apposition ("the ego, a bus,")
             if lowered.split()[0] in ROAD_KEYS and not re.search(r"\blimit", value, re.I):
                 value = BARE_SPEED.sub(r"\1 limit", value)  # "Road: urban street, 30 km/h": its speed limit
             out.append(value + ".")  # "Light: dusk, drizzle" is the weather, not a traffic light

@@ -4778,10 +4778,13 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             units[head + 1].category == "positions" and any(
                 (e.head.split()[-1] == u.base.split()[-1] or e.type == kind and
                  {e.head.split()[-1], u.base} <= {"car", "vehicle"}) and not e.is_ego and e.count == 1 and
-                units[head + 1].meaning in e.features and not (described and described not in {a[4] for a in e.actions})
+                (units[head + 1].meaning in e.features or e.head.split()[-1] == u.base.split()[-1] and
+                 not e.features & PLACE_FEATURES and not e.actions) and
+                not (described and described not in {a[4] for a in e.actions})
                 for e in r.entities):
         definite = True  # "Ego: follows HGV. Actors: HGV ahead in the ego lane": the HGV already placed there;
-        # "Lead vehicle braked ... car in front slammed on": a car and a vehicle, one in that place
+        # "Lead vehicle braked ... car in front slammed on": a car and a vehicle, one in that place; "Actors: ego,
+        # truck. Positions: truck ahead of ego": the truck only listed before, placed now
     if not words and count is None and not plural and not label and head + 1 < len(units) and \
             units[head + 1].category == "positions" and u.base not in GENERAL_BODIES and any(
                 u.base in e.aliases and not e.is_ego and e.count == 1 and not e.features & PLACE_FEATURES
@@ -4827,9 +4830,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         driven = _last_named(r, recent, lambda e: not e.is_ego and e.type != "pedestrian")
         place = next((x for x in units[head + 1:head + 3] if x.category == "positions"), None)
         if driven is not None and place is not None and place.meaning in ("behind", "ahead") and \
-                place.tokens[-1].word in SPEAKERS and place.meaning not in driven.features:
+                (place.tokens[-1].word in SPEAKERS and place.meaning not in driven.features or
+                 _placed_by_one_named_before(units, head + 1, ("it", "them", "him", "her"))):
             driven = None  # "waited for a motorcyclist on the road to the left. The driver waiting behind us
-            # honked": another, placed by the speaker where the one named before is not
+            # honked": another, placed by the speaker where the one named before is not; "the learner driver behind
+            # him stopped": another, placed by the one named before
         if driven is not None:  # "a coach came from the right ... The driver didn't indicate": the coach's driver
             return NounPhrase(driven, head, first)
         own = next((e for e in r.entities if e.is_ego and e.type not in V.VULNERABLE_TYPES), None)
@@ -5237,13 +5242,25 @@ def _place_in_the_name(units: list[Unit], head: int, first: int) -> str | None:
     return next((units[k].meaning for k in range(first, head) if units[k].category == "positions"), None)
 
 
+def _placed_by_one_named_before(units: list[Unit], k: int, pronouns: tuple[str, ...] = ("it", "them")) -> bool:
+    """'behind it', 'in front of them': a place taken from one named before by a pronoun."""
+    last = units[k + 1].word if units[k].tokens[-1].word in ("behind", "ahead") and k + 1 < len(units) else \
+        units[k].tokens[-1].word
+    return last in pronouns
+
+
 def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
     """'the car behind us' names another car than one already placed ahead."""
-    nxt = units[head + 1] if head + 1 < len(units) else None
+    after = head + 1 + (head + 1 < len(units) and units[head + 1].word in ("driver", "rider"))
+    driver = after > head + 1 or units[head].tokens[-1].word in ("driver", "rider", "learner")  # "the learner
+    # (driver) behind him": a person
+    nxt = units[after] if after < len(units) else None
     if nxt is None or nxt.category != "positions":
         return False
-    if nxt.tokens[-1].word in ("it", "them") and nxt.meaning in ("ahead", "behind", "level"):
-        return True  # "a taxi stops ... the car behind it": another car, placed by the taxi
+    if _placed_by_one_named_before(units, after, ("it", "them") + ("him", "her") * driver) and \
+            nxt.meaning in ("ahead", "behind", "level"):
+        return True  # "a taxi stops ... the car behind it": another car, placed by the taxi; "the learner driver
+        # behind him": another, placed by the one named before
     return bool(OPPOSITE_PLACES.get(nxt.meaning, set()) & e.features)
 
 
@@ -6622,7 +6639,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             r.mark(u)  # "a police car follows RV1 in the same lane": the lane of the one followed, not the ego's
             continue
         in_its_place = u.category == "positions" and u.meaning in ("ahead", "behind", "level") and (
-            u.tokens[-1].word in ("it", "them") or any(t.word in ("its", "their") for t in u.tokens))
+            _placed_by_one_named_before(units, i) or any(t.word in ("its", "their") for t in u.tokens))
+        # ("a biker behind it", "steps out from behind it")
         if u.category == "positions" and any(t.word == "its" for t in u.tokens) and owner and \
                 not any(e in subject for e in owner) and not in_its_place and not ego_as_it and \
                 not ([t.word for t in u.tokens[:2]] == ["in", "the"] and "lane" in {t.word for t in u.tokens}) and \
@@ -6642,8 +6660,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         targets = owner if owner else []
         if in_its_place and any(reference is t for t in targets):
             reference = None  # "and behind it two cars": 'it' is said before them, the cars are not their own place
-        if reference is None and in_its_place:  # "a biker behind it", "a cop car right on its tail"
-            reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it"
+        if in_its_place and (reference is None or reference.is_ego and u.tokens[0].word == "from"):
+            reference = _pronoun_in_place(units, i, phrases, recent, targets)  # "a biker behind it", "a cop car
+            # right on its tail", "steps out from behind it" (what stands, not the ego)
         ego_as_it = ego_as_it or reference is not None and reference.is_ego and (
             u.tokens[-1].word == "it" or i + 1 < len(units) and units[i + 1].word == "it")
 
@@ -8482,8 +8501,10 @@ def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
             return None
     before = [np.entity for np in phrases if np.index < i and np.entity is not None]
     for e in reversed(recent + before):
-        if e in owners or e.is_ego and _EGO_SPEAKS.get():
-            continue  # an ego the text calls "I" or "we" is never "it"
+        if e in owners or e.is_ego and (_EGO_SPEAKS.get() or units[i].tokens[0].word == "from"):
+            continue  # an ego the text calls "I" or "we" is never "it"; one steps out from behind what stands,
+            # not from behind the ego ("a truck parked to the right of the ego, and a child steps out from behind
+            # it")
         return None if e.is_ego else e
     return None
 
@@ -9817,6 +9838,10 @@ TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), (
 # a road-works operative's words for holding and releasing traffic: the teller is on foot at the roadside
 
 
+MET_BY = {"towards", "toward", "past", "beside", "at", "across", "round", "around", "into", "hit", "missed", "clipped",
+          "struck"}  # "came straight at me", "turned left across me", "nearly hit me": a witness in the way
+
+
 def _witness_on_foot(r: _Reader) -> None:
     """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
     and the vehicle the statement is about (the first that moves) is the ego."""
@@ -9842,8 +9867,10 @@ def _witness_on_foot(r: _Reader) -> None:
         _says_any([t.word for t in r.tokens], TRAFFIC_CONTROL)
     if controlling:  # "The number 7 bus was stopped at my board ... When I spun it to GO the bus pulled off"
         words = (words - AT_THE_WHEEL) | {"standing"}
-    if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL) or on_a_scooter and not words & CROSSING_ON_FOOT:
-        return  # ("halfway over the zebra crossing on my scooter": a mobility scooter, on the way over)
+    if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL) or \
+            on_a_scooter and not words & (CROSSING_ON_FOOT | FOOTWAYS):
+        return  # ("halfway over the zebra crossing on my scooter", "on my scooter on the pavement": a mobility
+        # scooter, on the way over or on the footway)
     own = [t for t in r.tokens if t.word in ("i", "i'm", "me", "my", "us", "we")]
     far_side = words & {"was across the street", "was across the road"}  # on the other side, watching
     crossing = bool(words & CROSSING_ON_FOOT) and not patrol and not far_side  # "I was halfway over the zebra in my
@@ -9884,7 +9911,7 @@ def _witness_on_foot(r: _Reader) -> None:
     place = "ahead" if "ahead" in first_sentence else "behind" if "behind" in first_sentence else None
     words = [t.word for t in r.tokens]
     placed = not controlling and (place is not None or any(
-        words[k + 1:k + 2] == ["me"] and w in ("towards", "toward", "past", "beside") or
+        words[k + 1:k + 2] == ["me"] and w in MET_BY or
         words[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(words)))  # (one at a works board: no one)
     if placed:
         ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
@@ -9957,7 +9984,9 @@ def _named_as_the_ego(r: _Reader) -> None:
             named = next((e for e in reversed(in_sentence) if e.said_at < k), None)  # "..., that's our ego"
         elif opens and (words[k - 1:k + 3] in (["our", "ego", ",", "a"], ["our", "ego", ",", "an"]) or
                         words[k + 1:k + 5] == ["for", "this", "one", "is"]):  # (not "ego, a bus behind": a list)
-            named = next((e for e in in_sentence if k < e.said_at <= k + 8), None)  # "Our ego, a green hatchback"
+            named = next((e for e in in_sentence if k < e.said_at <= k + 8 and "," not in words[k + 2:e.said_at]),
+                         None)  # "Our ego, a green hatchback" (not "Our ego, a bus, stops behind a truck": the bus
+            # was read as the ego's kind, and the truck is another)
         if named is not None:
             _now_the_ego(r, named, "the text names it so")
             return
@@ -10026,8 +10055,10 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
                                       t.index == 1 or r.tokens[t.index - 2].sentence != t.sentence or
                                       r.tokens[t.index - 2].word in (",", "and", "so", "then", "but"))) and
             t.index + 1 < len(r.tokens) and r.tokens[t.index + 1].sentence == t.sentence and
-            r.tokens[t.index + 1].word != "," and not r.tokens[t.index + 1].word.endswith("ing")
-            for t in r.tokens)]  # (not a commentary's "Car waiting to come out", a list's "Ego: SUV, turns right")
+            r.tokens[t.index + 1].word != "," and not r.tokens[t.index + 1].word.endswith("ing") and
+            not any(x.word in ("behind", "beside", "alongside") for x in r.tokens[t.index + 1:t.index + 3])
+            for t in r.tokens)]  # (not a commentary's "Car waiting to come out", a list's "Ego: SUV, turns right", a
+    # story's "the learner driver behind him stopped": one told apart by its place)
     if len(candidates) != 1:
         return
     vehicle = candidates[0]
@@ -10077,6 +10108,11 @@ FILTERING = {"filter", "filters", "filtering", "filtered"}
 RIDING = {"ride", "rides", "riding", "rode"}
 
 
+RIDERS_CONTROLS = (("front", "brake"), ("pillion",))
+# what only one on two wheels handles ('I had to grab a handful of front brake'), one on a bicycle read before (a
+# car's driver speaks of a throttle, a visor, rear brakes too)
+
+
 RIDE_HAILING = {"trip", "fare", "rating", "uber", "lyft", "rideshare", "passenger", "passengers"}
 
 
@@ -10095,7 +10131,9 @@ def _a_riders_ego(r: _Reader) -> None:
         {"in", "on", "with", "as"} | DETERMINERS | OWNERS)) and (
         words[k - 1:k] and words[k - 1] in said_of_the_ego or words[max(0, k - 2):k] in (
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
-        w in FILTERING and _opens_its_sentence(r.tokens, r.tokens[k]) or  # "Filtering past a queue"
+        w in FILTERING | {"riding"} and _opens_its_sentence(r.tokens, r.tokens[k]) and (
+            w in FILTERING or any(x in FIRST_PERSON for x in words)) or  # "Filtering past a queue", "Riding along
+        # a street ..., a taxi ahead of me stopped"
         not hailed and words[k - 1:k] == ["and"] and not (words[k + 1:k + 2] and words[k + 1] in AUXILIARIES) and any(
             words[j] in said_of_the_ego and r.tokens[j].sentence == r.tokens[k].sentence
             for j in range(max(0, k - 5), k - 1)))  # "you ease off and ride slowly"
@@ -10105,7 +10143,8 @@ def _a_riders_ego(r: _Reader) -> None:
             e.type in ("cyclist", "motorcycle") and 0 <= e.said_at < u.start for e in r.entities)
         for k, u in enumerate(r.units))  # "The rider comes round a bend and finds two cyclists": the subject an ego
     # was supplied for, with no one on two wheels named before it
-    if said or the_rider or ego.head == "rider":
+    geared = not hailed and any(x in FIRST_PERSON for x in words) and _says_any(words, RIDERS_CONTROLS)
+    if said or the_rider or geared or ego.head == "rider":
         ego.type = "motorcycle"
 
 
@@ -10168,6 +10207,7 @@ def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
     r.entities.insert(0, vehicle)
 
 
+FOOTWAYS = {"pavement", "footway", "sidewalk", "footpath"}
 CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheeling across", "in the crosswalk",
                     "across the road", "across the street", "over the zebra", "on the zebra", "across the zebra",
                     "green man", "walk signal"}
