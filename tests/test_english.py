@@ -10692,3 +10692,11 @@ def test_one_stepping_out_from_behind_it_comes_from_behind_what_stands():
     assert agents("A truck is parked in the lane to the right of the ego and a pedestrian steps out from behind "
                   "it.") == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right"),
                              ("truck", "stop", "front_right")]
+
+
+def test_a_teller_crossing_whose_wheelchair_is_named_later_is_on_foot():
+    assert agents("I was halfway across the road at the junction when a car coming from the road on my right turned "
+                  "left towards me, and the driver only saw my wheelchair at the last second and stopped.") == [
+        ("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert agents("As I crossed the road at the junction, a van turned left into the street and nearly hit me.") == [
+        ("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "front")]
