@@ -10700,3 +10700,45 @@ def test_a_teller_crossing_whose_wheelchair_is_named_later_is_on_foot():
         ("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "front")]
     assert agents("As I crossed the road at the junction, a van turned left into the street and nearly hit me.") == [
         ("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "OPERATOR: Police, fire or ambulance? / CALLER: Police. A car has just run the red light in front of me.",
+    "Caller: Police, please, there's a car driving the wrong way, it's coming straight at us.",
+])
+def test_the_service_a_call_asks_for_sends_no_one_into_the_scene(prompt):
+    assert [kind for kind, _, _ in agents(prompt)] == ["car", "car"]
+
+
+def test_a_teller_stepping_out_onto_the_crossing_is_on_foot():
+    assert agents("The silver car came up behind a black taxi that had stopped at the zebra crossing for me, pulled "
+                  "out to the right around it, and carried on straight through while I was stepping out from the "
+                  "left.") == [("car", "change_lane_to_right", "ego"), ("car", "stop", "front"),
+                               ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_caller_who_says_they_are_a_cyclist_reports_the_driver():
+    assert agents("Caller: I'm a cyclist, I was riding along Park Road and a white van has just overtaken me and "
+                  "turned left across me into a driveway. Dispatcher: Are you injured? Caller: My arm, I think.") == [
+        ("car", "turn_left", "ego"), ("cyclist", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, kind", [
+    ("At the crossroads a car coming from the right pulls out in front of the ego.", "car"),
+    ("At the crossroads a motorcyclist coming from the right ignored the stop sign and shot across in front of me "
+     "as I drove straight over.", "motorcycle"),
+])
+def test_one_that_came_along_a_side_road_and_shoots_across_crosses_the_junction(prompt, kind):
+    assert agents(prompt) == sorted([("car", "go_straight", "ego"), (kind, "go_straight", "road_of_right_turn")])
+    assert road(prompt).lanes < 2
+
+
+def test_one_cutting_in_from_a_side_at_a_junction_without_coming_along_it_changes_lane():
+    assert ("car", "change_lane_to_right", "front_left") in agents(
+        "At the signal an auto suddenly cut in from the left in front of the ego.")
+
+
+def test_a_cyclist_out_of_a_side_road_crosses_from_that_road():
+    prompt = "A cyclist emerged from a side road on our right and went straight across in front of us."
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "road_of_right_turn")]
+    assert road(prompt).junction

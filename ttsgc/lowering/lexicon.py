@@ -443,6 +443,18 @@ SCREEN_DIRECTIONS = re.compile(r"^[ \t]*(?:(?:CUT|DISSOLVE|SMASH CUT|MATCH CUT) 
                                r"|THE END)[ \t]*$", re.M)
 
 
+SERVICE = r"(?:police|fire(?: and rescue| brigade| service| department)?|ambulance(?: service)?|paramedics|coastguard)"
+SERVICES_ASKED = re.compile(rf"(?i)(\b(?:caller|operator|dispatcher|dispatch|call handler|call taker)\s*:\s*)"
+                            rf"(?:{SERVICE}(?:\s*(?:,|or|and|&)\s*(?:an?\s+)?{SERVICE})*(?:,?\s*(?:please|service))?"
+                            rf"\s*[,.?!]\s*)+(?=\S)")
+
+
+def _without_services_asked(text: str) -> str:
+    """'OPERATOR: Police, fire or ambulance? / CALLER: Police. A car has just run the red': an emergency call
+    opens on the service asked for, which sends no one into the scene."""
+    return SERVICES_ASKED.sub(r"\1", text)
+
+
 def _screenplay(text: str) -> str:
     """A screenplay's page: a scene heading ('EXT. HIGH STREET - NIGHT') says where and when, read like a title
     for the road and the weather ('DAY' is daytime; 'CONTINUOUS' and an interior place say nothing); lines
@@ -1411,8 +1423,8 @@ def tokenize(text: str) -> list[Token]:
     lex = lexicon()
     text = MARKDOWN_EMPHASIS.sub(r"\2", CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _restated(_comment_block(text)))))
     text = _without_members_described(
-        _scenario_identifiers(_lines(_screenplay(_without_tag_keys(_without_social_markup(
-            _emoji_breaks(_symbols_as_words(text))))))))
+        _scenario_identifiers(_lines(_screenplay(_without_services_asked(_without_tag_keys(_without_social_markup(
+            _emoji_breaks(_symbols_as_words(text)))))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))

@@ -178,6 +178,7 @@ class Entity:
     # on its own way
     goes_on: set = field(default_factory=set)  # later stages its own sentence goes on into ("passes the ego, then
     # cuts in")
+    came_along: bool = False  # "coming from the right": said to come along from a side (not "cut in from the left")
 
 
 @dataclass
@@ -5598,6 +5599,11 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             _add_compass(r, e, u)
         else:
             e.features.add(u.meaning)
+            if u.meaning in ("from_left", "from_right") and any(
+                    t.word in CAME_ALONG and t.sentence == u.tokens[0].sentence
+                    for t in [*r.tokens[max(0, u.start - 4):u.start], u.tokens[0]]):
+                e.came_along = True  # "a car coming from the right", "came off Quarry from my left": along the road
+                # on that side
             if u.meaning == "both_sides" and e.count == 1 and not e.is_ego and e.parent is None and \
                     {t.word for t in u.tokens} & {"each", "either"}:
                 e.count = 2  # "a car parked on each side of the street": one on each side, two
@@ -8944,13 +8950,16 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "destination" in f and not ("crosswalk" in f and crossing) and not turner_from_a_side:
         # "a motorbike from the left turning right into the street the player heads for": it comes from the left  # "on the crosswalk of the road it turns into"
         return "at_the_destination", False
-    if "cross_road" in f and not person:
+    if "cross_road" in f and e.type != "pedestrian":  # (a cyclist "emerged from a side road on our right")
         return f"road_of_{side or UNSPECIFIED['side_of_a_crossing_road']}_turn", False
     if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
         return "near_the_crosswalk", False
     from_side = next((s for s in SIDES if f"from_{s}" in f), None)
-    if from_side and e.type != "pedestrian" and junction and not lane_move:  # a cyclist crossing from the left
-        return f"road_of_{from_side}_turn", False
+    if from_side and e.type != "pedestrian" and junction and (not lane_move or action == "cut_in" and not f & {
+            "from_lane", "side_left", "side_right", "ego_lane", "into_ego_lane", "lane_said"} and e.came_along):
+        return f"road_of_{from_side}_turn", False  # a cyclist crossing from the left; at a crossroads, one coming
+        # from the right that shoots across in front, out of the road it came along (no lane named; not "cut in
+        # from the left at the signal")
     bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
     if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level", "overtaking"} \
             and e.type not in V.TWO_WHEELER_TYPES \
@@ -9045,6 +9054,8 @@ def _final_action(e: Entity, action: str | None, direction: str | None, position
     if action == "cut_in":
         if e.is_ego:
             return f"change_lane_to_{direction}" if direction else "go_straight"
+        if position.startswith("road_of_"):
+            return "go_straight"  # out of a side road, across in front: over the junction, no lane change
         if side_now is None and position == "front" and "moves_out" in e.features:
             return "change_lane_to_right" if _KEEPS_LEFT.get() else "change_lane_to_left"  # out, away from the kerb
         if side_now is None and position == "back" and "moves_out" in e.features:
@@ -9377,7 +9388,8 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
            "bench", "was across the street", "was across the road", "on the porch", "on my porch", "in the garden",
            "in my garden", "at the window", "at my window", "over the zebra", "on the zebra", "across the zebra",
            "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal", "cross at",
-           "crossed at", "cross the road", "cross the street", "crossed the road", "crossed the street"}
+           "crossed at", "cross the road", "cross the street", "crossed the road", "crossed the street",
+           "stepping out", "stepped out", "stepping off", "stepped off"}
 # (a wheelchair user, waiting to cross or on the way over; one watching from a bench, a porch or across the street;
 # not "I stopped for kids on the crossing")
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
@@ -9841,6 +9853,8 @@ TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), (
 
 OWN_MOBILITY_AIDS = (("my", "wheelchair"), ("my", "chair"), ("my", "power", "chair"), ("my", "mobility", "scooter"),
                      ("my", "walker"), ("my", "rollator"), ("my", "walking", "frame"), ("my", "white", "cane"))
+CAME_ALONG = {"coming", "came", "comes", "come", "approaching", "emerging", "travelling", "traveling", "driving",
+              "arriving", "heading", "riding"}
 MET_BY = {"towards", "toward", "past", "beside", "at", "across", "round", "around", "into", "hit", "missed", "clipped",
           "struck"}  # "came straight at me", "turned left across me", "nearly hit me": a witness in the way
 
@@ -9932,7 +9946,8 @@ def _witness_on_foot(r: _Reader) -> None:
 PEDAL_WORDS = {"bicycle", "pedalling", "pedaling", "pedalled", "pedaled", "handlebar", "handlebars", "pushbike",
                "toucan"}  # (not "a brake pedal")
 PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), ("i", "cycle"), ("cycle", "commuter"),
-                 ("my", "bicycle"), ("in", "the", "cycle", "lane"), ("in", "the", "bike", "lane"))  # (not "the cycle
+                 ("my", "bicycle"), ("in", "the", "cycle", "lane"), ("in", "the", "bike", "lane"),
+                 ("i'm", "a", "cyclist"), ("i", "am", "a", "cyclist"), ("i'm", "a", "cycle"))  # (not "the cycle
 # courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
 MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
 SEEN_THE_OTHER_WAY = {"ahead": "behind", "behind": "ahead", "side_left": "side_right", "side_right": "side_left",
@@ -9945,13 +9960,14 @@ SEEN_THE_OTHER_WAY = {"ahead": "behind", "behind": "ahead", "side_left": "side_r
 def _rider_reporting_a_driver(r: _Reader) -> None:
     """'I was riding in the middle of the lane when a silver hatchback came up behind me and overtook with half a
     metre to spare': a cyclist's report of a driver is told from the vehicle reported, the ego; the teller is a
-    cyclist, placed from there as the vehicle was placed from the teller (behind me: the cyclist ahead)."""
+    cyclist (also as 'you' to whom a call's operator speaks), placed from there as the vehicle was placed from the
+    teller (behind me: the cyclist ahead)."""
     ego = next((e for e in r.entities if e.is_ego), None)
     words = [t.word for t in r.tokens]
     on_a_bike = (set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES)) and not set(words) & MOTOR_WORDS and \
         not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")))
-    if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or ego.type != "car" or \
-            ego.aliases - FIRST_PERSON or not on_a_bike or \
+    if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or \
+            ego.type not in ("car", "motorcycle") or ego.aliases - FIRST_PERSON - {"you"} or not on_a_bike or \
             any(e.type == "cyclist" and not e.is_ego for e in r.entities):
         return
     movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
@@ -10217,7 +10233,8 @@ FOOTWAYS = {"pavement", "footway", "sidewalk", "footpath"}
 CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheeling across", "in the crosswalk",
                     "across the road", "across the street", "over the zebra", "on the zebra", "across the zebra",
                     "green man", "walk signal", "cross at", "crossed at", "cross the road", "cross the street",
-                    "crossed the road", "crossed the street"}
+                    "crossed the road", "crossed the street", "stepping out", "stepped out", "stepping off",
+                    "stepped off"}
 # what a teller on foot was doing: on the way over
 PATROLLING = (("lollipop",), ("crossing", "with", "me"), ("over", "with", "me"), ("across", "with", "me"),
               ("my", "crossing"), ("my", "stick"))
