@@ -10742,3 +10742,18 @@ def test_a_cyclist_out_of_a_side_road_crosses_from_that_road():
     prompt = "A cyclist emerged from a side road on our right and went straight across in front of us."
     assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "road_of_right_turn")]
     assert road(prompt).junction
+
+
+def test_the_bus_driver_named_by_passengers_drives_their_bus():
+    assert agents("A lorry coming towards us turned right across our front, and the bus driver slammed on so hard "
+                  "my shopping went everywhere.") == [("bus", "stop", "ego"), ("truck", "turn_right", "road_of_straight")]
+    assert ("bus", "go_straight", "front") in agents(
+        "We were stuck in traffic and the bus driver ahead of us got out.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "A lorry coming towards us swung right across our front.",
+    "An oncoming car swings right across the ego's path into a side road.",
+])
+def test_swinging_to_a_side_across_the_egos_front_is_a_turn(prompt):
+    assert agents(prompt)[1][1:] == ("turn_right", "road_of_straight")

@@ -779,6 +779,8 @@ def _verbs_around_an_adverb(tokens: list[Token], found: dict[int, Match]) -> tup
             if any(x.word == "," or x.sentence != t.sentence for x in span):
                 continue
             entry = _lookup(lex, span)
+            if entry == ("actions", "turn") and t.word in ("left", "right"):
+                entry = ("actions", f"turn_{t.word}")  # "swung right across our front": a turn to that side
             if entry is not None and entry[0] == "actions":
                 for k in [k for k in found if start <= k < i + 1 + n]:
                     del found[k]
@@ -4622,6 +4624,13 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if not is_ego and not plural and speakers and kind in V.EGO_TYPES and count is None and \
             u.meaning != "none" and not any(t.possessive for k in range(first, head) for t in units[k].tokens):
         is_ego = True  # "my little Fiat", "our battered old van": the speaker's own vehicle, however described
+    if not is_ego and not plural and count is None and kind == "bus" and words == {"the"} and \
+            "driver" in [t.word for t in r.tokens[u.tokens[-1].index:u.tokens[-1].index + 2]] and \
+            any(t.word in ("us", "we", "our") for t in r.tokens) and \
+            not any(e.type == "bus" for e in r.entities) and \
+            not (head + 1 < len(units) and units[head + 1].category == "positions") and \
+            all(e.head in SPEAKERS | FIRST_PERSON or _supplied(r, e) for e in r.entities if e.is_ego):
+        is_ego = True  # "a lorry swung across our front, and the bus driver slammed on": the bus we were on
     if plural and count == 1 and "of" in words and words & DEFINITE and head > first and \
             units[first].category == "numbers" and units[first].word == "one":
         plural, count = False, None  # "one of the other cars": a member of the group named before
