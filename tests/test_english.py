@@ -10746,7 +10746,8 @@ def test_a_cyclist_out_of_a_side_road_crosses_from_that_road():
 
 def test_the_bus_driver_named_by_passengers_drives_their_bus():
     assert agents("A lorry coming towards us turned right across our front, and the bus driver slammed on so hard "
-                  "my shopping went everywhere.") == [("bus", "stop", "ego"), ("truck", "turn_right", "road_of_straight")]
+                  "my shopping went everywhere.") == [("bus", "stop", "ego"),
+                                                      ("truck", "turn_right", "road_of_straight")]
     assert ("bus", "go_straight", "front") in agents(
         "We were stuck in traffic and the bus driver ahead of us got out.")
 
