@@ -10758,3 +10758,18 @@ def test_the_bus_driver_named_by_passengers_drives_their_bus():
 ])
 def test_swinging_to_a_side_across_the_egos_front_is_a_turn(prompt):
     assert agents(prompt)[1][1:] == ("turn_right", "road_of_straight")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A m/c overtook us on the offside.", ("motorcycle", "go_straight", "back_right")),
+    ("m/cycle came from the rd to our left and turned right across our bonnet.",
+     ("motorcycle", "turn_right", "road_of_left_turn")),
+])
+def test_a_police_logs_short_name_for_a_motorcycle(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_neither_one_nor_the_other_is_one_each_and_denies_the_verb():
+    assert agents("Neither the cyclist in the right lane nor the car behind the ego changes lane.") == [
+        ("car", "go_straight", "back"), ("car", "go_straight", "ego"), ("cyclist", "go_straight", "right")]
+    assert ("truck", "go_straight", "left") in agents("Neither the ego nor the truck beside it can change lanes.")

@@ -4594,7 +4594,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
     plural = u.tokens[-1].plural and not is_ego
-    if words & {"neither", "either"} and not plural:
+    if words & {"neither", "either"} and not plural and not words & {"the", "a", "an"}:  # (not "neither the cyclist
+        # nor the car": one each)
         words, plural = (words - {"neither", "either"}) | {"both"}, True  # "neither vehicle slows": the two named
     owner = first - 1  # "our little Fiat", "the ego's electric hatch": over the adjectives to whose it is
     while not words and owner > first - 3 and owner > 0 and units[owner].category == "word" and \
@@ -6972,6 +6973,9 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
     if any(u.category == "actions" and u.meaning == "try" and u.base in TALKED_ABOUT
            for u in units[max(0, i - 3):i]):
         return True
+    said_before = [u.word for u in units[:i]]
+    if "neither" in said_before and "nor" in said_before[said_before.index("neither"):]:
+        return True  # "neither the cyclist in the right lane nor the car behind the ego changes lane"
     for u in reversed(units[max(0, i - 4):i]):
         if u.word == "neither":
             return True  # "neither vehicle slows down"
