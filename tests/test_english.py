@@ -10773,3 +10773,8 @@ def test_neither_one_nor_the_other_is_one_each_and_denies_the_verb():
     assert agents("Neither the cyclist in the right lane nor the car behind the ego changes lane.") == [
         ("car", "go_straight", "back"), ("car", "go_straight", "ego"), ("cyclist", "go_straight", "right")]
     assert ("truck", "go_straight", "left") in agents("Neither the ego nor the truck beside it can change lanes.")
+
+
+def test_the_verb_after_one_let_and_placed_is_the_let_ones():
+    assert agents("Waiting at the junction, the test vehicle lets a car from the road on the left turn right in front "
+                  "of it.") == [("car", "stop", "ego"), ("car", "turn_right", "road_of_left_turn")]

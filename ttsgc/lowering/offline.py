@@ -7310,7 +7310,10 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
     if left:
         return left
     if i >= 2 and units[i - 1].word != "to":
-        np = next((p for p in phrases if p.index == i - 1 and p.entity is not None), None)
+        k = i - 1
+        while k > 1 and units[k].category == "positions":
+            k -= 1  # "lets a car from the road on the left turn right": the one let, placed before its verb
+        np = next((p for p in phrases if p.index == k and p.entity is not None), None)
         if np is not None and np.first > 0 and (units[np.first - 1].word in LETTING or units[np.first - 1].word in
                                                  MAKING and units[i].tokens[0].word == units[i].tokens[0].base):
             return np.group or [np.entity]  # ("make a scooter cutting in": the scene asked for)
