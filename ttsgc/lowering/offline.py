@@ -5561,6 +5561,10 @@ def _absorbed(r: _Reader, entity: Entity) -> bool:
 
 # -- clause reading -----------------------------------------------------------------------------------------
 
+CAME_ALONG = {"coming", "came", "comes", "come", "approaching", "emerging", "travelling", "traveling", "driving",
+              "arriving", "heading", "riding"}  # said before 'from the right' of one that came along that road
+
+
 def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_units: list[Unit] | None = None,
             k: int | None = None) -> None:
     """Give a modifier or a predicate to the entity it belongs to."""
@@ -9398,14 +9402,15 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     return Lowered(scenario, unknown, kind, notes)
 
 
+STEPPING_OVER = {"cross at", "crossed at", "cross the road", "cross the street", "crossed the road", "crossed the street",
+                 "stepping out", "stepped out", "stepping off", "stepped off"}  # a teller on foot, on the way over
 ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sidewalk", "footpath", "on foot",
            "a pedestrian", "jogging", "bus stop", "wheelchair", "chair", "to cross", "dropped curb", "at the curb",
            "crossing the road", "crossing the street", "in the crosswalk", "rolling across", "wheeling across",
            "bench", "was across the street", "was across the road", "on the porch", "on my porch", "in the garden",
            "in my garden", "at the window", "at my window", "over the zebra", "on the zebra", "across the zebra",
-           "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal", "cross at",
-           "crossed at", "cross the road", "cross the street", "crossed the road", "crossed the street",
-           "stepping out", "stepped out", "stepping off", "stepped off"}
+           "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal"} | \
+    STEPPING_OVER
 # (a wheelchair user, waiting to cross or on the way over; one watching from a bench, a porch or across the street;
 # not "I stopped for kids on the crossing")
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
@@ -9869,8 +9874,6 @@ TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), (
 
 OWN_MOBILITY_AIDS = (("my", "wheelchair"), ("my", "chair"), ("my", "power", "chair"), ("my", "mobility", "scooter"),
                      ("my", "walker"), ("my", "rollator"), ("my", "walking", "frame"), ("my", "white", "cane"))
-CAME_ALONG = {"coming", "came", "comes", "come", "approaching", "emerging", "travelling", "traveling", "driving",
-              "arriving", "heading", "riding"}
 MET_BY = {"towards", "toward", "past", "beside", "at", "across", "round", "around", "into", "hit", "missed", "clipped",
           "struck"}  # "came straight at me", "turned left across me", "nearly hit me": a witness in the way
 
@@ -9891,8 +9894,7 @@ def _witness_on_foot(r: _Reader) -> None:
          _opens_its_sentence(r.tokens, t)]  # "Sitting at the bus stop ..., I watched a car",
     # "From the bench outside the chemist's I watched"
     words = set().union(*said) if said else set()
-    all_words = [t.word for t in r.tokens]
-    if _says_any(all_words, OWN_MOBILITY_AIDS):
+    if _says_any([t.word for t in r.tokens], OWN_MOBILITY_AIDS):
         words.add("wheelchair")  # "the driver only saw my wheelchair at the last second": the teller is on foot
     if words & {"standing water", "standing traffic", "standing queue"}:
         words -= {"standing"}  # "I hit standing water": what stood, not the witness
@@ -10248,9 +10250,7 @@ def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
 FOOTWAYS = {"pavement", "footway", "sidewalk", "footpath"}
 CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheeling across", "in the crosswalk",
                     "across the road", "across the street", "over the zebra", "on the zebra", "across the zebra",
-                    "green man", "walk signal", "cross at", "crossed at", "cross the road", "cross the street",
-                    "crossed the road", "crossed the street", "stepping out", "stepped out", "stepping off",
-                    "stepped off"}
+                    "green man", "walk signal"} | STEPPING_OVER
 # what a teller on foot was doing: on the way over
 PATROLLING = (("lollipop",), ("crossing", "with", "me"), ("over", "with", "me"), ("across", "with", "me"),
               ("my", "crossing"), ("my", "stick"))
