@@ -10662,7 +10662,7 @@ def test_the_driver_placed_behind_one_named_before_is_another():
 ])
 def test_a_witness_on_foot_met_by_the_vehicle_is_on_the_pavement(prompt):
     found = agents(prompt)
-    assert found[0][1:] == ("go_straight", "ego") or found[0][1:] == ("turn_left", "ego")
+    assert found[0][1:] in {("go_straight", "ego"), ("turn_left", "ego")}
     assert ("pedestrian", "on_the_sidewalk", "left") in found and len(found) == 2
 
 

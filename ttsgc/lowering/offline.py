@@ -9402,8 +9402,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     return Lowered(scenario, unknown, kind, notes)
 
 
-STEPPING_OVER = {"cross at", "crossed at", "cross the road", "cross the street", "crossed the road", "crossed the street",
-                 "stepping out", "stepped out", "stepping off", "stepped off"}  # a teller on foot, on the way over
+STEPPING_OVER = {"cross at", "crossed at", "cross the road", "cross the street", "crossed the road",
+                 "crossed the street", "stepping out", "stepped out", "stepping off", "stepped off"}
+# a teller on foot, on the way over
 ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sidewalk", "footpath", "on foot",
            "a pedestrian", "jogging", "bus stop", "wheelchair", "chair", "to cross", "dropped curb", "at the curb",
            "crossing the road", "crossing the street", "in the crosswalk", "rolling across", "wheeling across",
