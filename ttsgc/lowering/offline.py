@@ -5341,7 +5341,8 @@ GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclis
                  "people", "child", "kid", "man", "woman", "guy"}
 
 
-SIDEWALK_WORDS = {"pavement", "sidewalk", "footway", "footpath", "kerb", "curb"}
+FOOTWAYS = {"pavement", "footway", "sidewalk", "footpath"}
+SIDEWALK_WORDS = FOOTWAYS | {"kerb", "curb"}
 WANTING = {"want", "need", "like", "expect", "wish", "prefer", "propose"}  # "I want a car to cut in": the car cuts in
 PERCEIVING = {"see", "saw", "seen", "observe", "notice", "watch", "spot", "witness", "hear", "heard", "noticed",
               "observed", "spotted", "watched", "witnessed"}
@@ -9883,11 +9884,11 @@ def _witness_on_foot(r: _Reader) -> None:
     """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
     and the vehicle the statement is about (the first that moves) is the ego."""
     ego = next((e for e in r.entities if e.is_ego), None)
-    told_by_me = ego is not None and (ego.head in FIRST_PERSON or ego.head == "ego" and not any(
-        t.word == "ego" for t in r.tokens) and any(t.word in FIRST_PERSON for t in r.tokens))  # ("Sitting at the bus
-    # stop ..., I watched": the teller, first as a participle's subject)
-    on_a_scooter = ego is not None and ego.type == "motorcycle" and _says_any([t.word for t in r.tokens],
-                                                                             (("my", "scooter"),))
+    text = [t.word for t in r.tokens]
+    told_by_me = ego is not None and (ego.head in FIRST_PERSON or ego.head == "ego" and "ego" not in text and any(
+        w in FIRST_PERSON for w in text))  # ("Sitting at the bus stop ..., I watched": the teller, first as a
+    # participle's subject)
+    on_a_scooter = ego is not None and ego.type == "motorcycle" and _says_any(text, (("my", "scooter"),))
     if not told_by_me or ego.type != "car" and not on_a_scooter:
         return  # ("I am a bus driver ... moving off from the bus stop": at the wheel of the bus)
     said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")] + \
@@ -9895,7 +9896,7 @@ def _witness_on_foot(r: _Reader) -> None:
          _opens_its_sentence(r.tokens, t)]  # "Sitting at the bus stop ..., I watched a car",
     # "From the bench outside the chemist's I watched"
     words = set().union(*said) if said else set()
-    if _says_any([t.word for t in r.tokens], OWN_MOBILITY_AIDS):
+    if _says_any(text, OWN_MOBILITY_AIDS):
         words.add("wheelchair")  # "the driver only saw my wheelchair at the last second": the teller is on foot
     if words & {"standing water", "standing traffic", "standing queue"}:
         words -= {"standing"}  # "I hit standing water": what stood, not the witness
@@ -9903,7 +9904,7 @@ def _witness_on_foot(r: _Reader) -> None:
         words -= {"stood", "standing"}  # "a give-way sign for me, so I stood still": halted, on foot only if said
     patrol = _speaker_on_the_crossing(r.tokens, strong=bool(ego.actions))
     controlling = not words & {"driving", "drove", "my car", "my van", "my vehicle", "in my"} and \
-        _says_any([t.word for t in r.tokens], TRAFFIC_CONTROL)
+        _says_any(text, TRAFFIC_CONTROL)
     if controlling:  # "The number 7 bus was stopped at my board ... When I spun it to GO the bus pulled off"
         words = (words - AT_THE_WHEEL) | {"standing"}
     if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL) or \
@@ -9948,10 +9949,9 @@ def _witness_on_foot(r: _Reader) -> None:
     first_sentence = [t.word for t in r.tokens if t.sentence == next(t.sentence for t in own)]
     side = "side_right" if "right" in first_sentence else "side_left"
     place = "ahead" if "ahead" in first_sentence else "behind" if "behind" in first_sentence else None
-    words = [t.word for t in r.tokens]
     placed = not controlling and (place is not None or any(
-        words[k + 1:k + 2] == ["me"] and w in MET_BY or
-        words[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(words)))  # (one at a works board: no one)
+        text[k + 1:k + 2] == ["me"] and w in MET_BY or
+        text[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(text)))  # (one at a works board: no one)
     if placed:
         ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
         ego.features = {"on_sidewalk", side} | ({place} if place else set())
@@ -10168,12 +10168,13 @@ def _a_riders_ego(r: _Reader) -> None:
     words = [t.word for t in r.tokens]
     said_of_the_ego = ("you", "i", "we", "you're", "i'm", "we're")
     hailed = bool(set(words) & RIDE_HAILING)  # "The rider hit his knee on the seat": the passenger of a ride hailed
+    told_by_me = bool(set(words) & FIRST_PERSON)
     said = any(w in RIDING | FILTERING and not (words[k + 1:k + 2] and words[k + 1] in (  # not "I ride the van"
         {"in", "on", "with", "as"} | DETERMINERS | OWNERS)) and (
         words[k - 1:k] and words[k - 1] in said_of_the_ego or words[max(0, k - 2):k] in (
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
         w in FILTERING | {"riding"} and _opens_its_sentence(r.tokens, r.tokens[k]) and (
-            w in FILTERING or any(x in FIRST_PERSON for x in words)) or  # "Filtering past a queue", "Riding along
+            w in FILTERING or told_by_me) or  # "Filtering past a queue", "Riding along
         # a street ..., a taxi ahead of me stopped"
         not hailed and words[k - 1:k] == ["and"] and not (words[k + 1:k + 2] and words[k + 1] in AUXILIARIES) and any(
             words[j] in said_of_the_ego and r.tokens[j].sentence == r.tokens[k].sentence
@@ -10184,7 +10185,7 @@ def _a_riders_ego(r: _Reader) -> None:
             e.type in ("cyclist", "motorcycle") and 0 <= e.said_at < u.start for e in r.entities)
         for k, u in enumerate(r.units))  # "The rider comes round a bend and finds two cyclists": the subject an ego
     # was supplied for, with no one on two wheels named before it
-    geared = not hailed and any(x in FIRST_PERSON for x in words) and _says_any(words, RIDERS_CONTROLS)
+    geared = not hailed and told_by_me and _says_any(words, RIDERS_CONTROLS)
     if said or the_rider or geared or ego.head == "rider":
         ego.type = "motorcycle"
 
@@ -10248,7 +10249,6 @@ def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
     r.entities.insert(0, vehicle)
 
 
-FOOTWAYS = {"pavement", "footway", "sidewalk", "footpath"}
 CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheeling across", "in the crosswalk",
                     "across the road", "across the street", "over the zebra", "on the zebra", "across the zebra",
                     "green man", "walk signal"} | STEPPING_OVER
