@@ -141,8 +141,8 @@ class Unit:
         return " ".join(t.base for t in self.tokens)
 
 
-@dataclass
-class Entity:
+@dataclass(eq=False)  # one entity is itself only (keys are never shared); comparing every field made each
+class Entity:  # `e in r.entities` cost more with every field added
     key: int
     type: str
     is_ego: bool
