@@ -10778,3 +10778,82 @@ def test_neither_one_nor_the_other_is_one_each_and_denies_the_verb():
 def test_the_verb_after_one_let_and_placed_is_the_let_ones():
     assert agents("Waiting at the junction, the test vehicle lets a car from the road on the left turn right in front "
                   "of it.") == [("car", "stop", "ego"), ("car", "turn_right", "road_of_left_turn")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego approaches the junction, and as soon as it reaches the junction it turns right.",
+    "The ego drives on. Then it turns right.",
+])
+def test_driving_up_to_a_turn_is_the_way_into_it(prompt):
+    assert agents(prompt) == [("car", "turn_right", "ego")]
+
+
+def test_going_straight_before_a_later_turn_stays_its_own_manoeuvre():
+    assert agents("The ego goes straight. Then it turns right.") == [("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The car ahead stops. The van in the left lane goes straight.",
+    "The car ahead of the SUT stops, whereas the van in the left lane ahead goes straight.",
+])
+def test_a_van_is_not_the_car_named_before(prompt):
+    assert ("car", "stop", "front") in agents(prompt)
+    assert len(agents(prompt)) == 3
+
+
+def test_a_vehicle_placed_ahead_is_not_the_one_that_came_from_behind():
+    assert agents("An ambulance approaches the AV from behind and goes straight. The van in the right lane ahead "
+                  "stops to let it pass.") == [("ambulance", "go_straight", "back"), ("car", "go_straight", "ego"),
+                                               ("car", "stop", "front_right")]
+
+
+def test_the_car_behind_is_not_the_one_that_cut_in():
+    assert agents("A van cuts in from the left lane. The car behind the ego goes straight.") == [
+        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "back"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The motorcycle that is between the ego and the police car changes lane right, and the police car stops.",
+    "The motorcycle between the ego and the police car changes lane right while the police car stops.",
+])
+def test_the_two_it_is_between_place_it_and_are_not_its_subjects(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_right", "front"),
+                              ("police", "stop", "front")]
+
+
+def test_the_car_between_the_ego_and_a_bus_is_the_one_that_stops():
+    assert agents("The car between the ego and the bus brakes hard and stops, while the bus goes straight.") == [
+        ("bus", "go_straight", "front"), ("car", "go_straight", "ego"), ("car", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt", ["The oncoming car goes straight.", "The parked car stops."])
+def test_a_car_placed_or_parked_named_first_with_the_is_not_the_ego(prompt):
+    assert len(agents(prompt)) == 2
+
+
+def test_going_straight_across_the_junction_is_at_a_junction():
+    prompt = "A truck coming from the left side road goes straight across the junction."
+    assert road(prompt).junction
+    assert ("truck", "go_straight", "road_of_left_turn") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Coming from a side road on the right, a truck turns left across the ego's path.",
+     ("truck", "turn_left", "road_of_right_turn")),
+    ("Parked in the right lane ahead, a truck blocks the lane.", ("truck", "block_the_ego", "front_right")),
+])
+def test_an_opening_participle_is_said_of_the_main_clauses_subject(prompt, expected):
+    assert expected in agents(prompt)
+    assert ("car", "go_straight", "ego") in agents(prompt)
+
+
+def test_a_tellers_opening_participle_stays_the_tellers():
+    assert ("motorcycle", "stop", "ego") in agents(
+        "OP here, on my motorcycle. Sitting at a red in the left lane, a Jeep in the right lane next to me just "
+        "starts drifting over into my lane.")
+
+
+def test_the_verb_after_letting_the_ego_is_the_egos():
+    assert agents("A car from the left and a bus from the right both stop at the junction, letting the ego go "
+                  "straight.") == [("bus", "stop", "road_of_right_turn"), ("car", "go_straight", "ego"),
+                                   ("car", "stop", "road_of_left_turn")]

@@ -2130,6 +2130,9 @@ def _road(r: _Reader) -> RoadSpec:
             r.mark(u)
             negated = False
             continue  # "he had no lights at all": the rider's own lamps
+        if u.category == "actions" and u.tokens[-1].word in ("junction", "intersection", "crossroads") and \
+                junction is None:
+            junction = True  # "goes straight across the junction": the path names the junction it crosses
         if u.category == "road":
             r.mark(u)
             meaning = u.meaning
@@ -2806,6 +2809,37 @@ class Clause:
     background: bool = False  # a relative on a noun whose own verb follows it: what the noun was, not what it does
 
 
+def _main_clause_before_its_opening_participle(clauses: list[Clause]) -> list[Clause]:
+    """'Coming from a side road on the right, a truck turns left', 'Having overtaken the ego, a van cuts in': a
+    sentence's opening participle is said of the subject of the clause after its comma, so that clause is read first
+    and the participle after it, joined by the comma, as said of the same subject."""
+    out = list(clauses)
+    for k in range(len(out) - 1):
+        opening, main = out[k], out[k + 1]
+        if opening.link or opening.condition or main.link != "," or main.condition or opening.stage != main.stage \
+                or not opening.units or not main.units:
+            continue
+        sentence = opening.units[0].tokens[0].sentence
+        if k > 0 and out[k - 1].units and out[k - 1].units[-1].tokens[0].sentence == sentence or \
+                main.units[0].tokens[0].sentence != sentence:
+            continue  # the sentence's first clause only
+        verb = 1 if opening.units[0].word == "having" else 0
+        participle = opening.units[verb] if verb < len(opening.units) else None
+        if participle is None or participle.category != "actions" or not (
+                participle.tokens[0].word.endswith("ing") or verb or participle.meaning == "stop" or
+                verb + 1 < len(opening.units) and opening.units[verb + 1].word == "by"):
+            continue  # "Parked in the right lane", "Overtaken by a van": a participle ("Moved out into the right
+            # lane", a note's verb with its subject left out, is none)
+        subject = next((i for i, u in enumerate(main.units) if u.category == "agents"), None)
+        if subject is None or subject > 2 or main.units[subject].meaning == "none" or \
+                any(u.category != "word" or u.word not in DETERMINERS for u in main.units[:subject]) or \
+                not any(u.category == "actions" for u in main.units[subject + 1:]):
+            continue
+        main.link, opening.link = "", ","
+        out[k], out[k + 1] = main, opening
+    return out
+
+
 def _listed_before_then(current: list[Unit], units: list[Unit], k: int) -> bool:
     """'it waited for 2 oncoming cars and a motorcycle then went': the last of the things waited for, not the
     subject of what follows 'then' (which is the waiter's)."""
@@ -3043,7 +3077,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             # moved across": a new subject with its verb, though the place before swallowed the first verb
             joined = not _has_verb(current) and not _new_subject_after_copula(current, units, k) and \
                 not _holds_the_green(current) and not pronoun_acts and not _another_lane_has(current, units, k)
-            if u.word in ("and", "or") and (joined or _listed_before_then(current, units, k)):
+            if u.word in ("and", "or") and (joined or _listed_before_then(current, units, k)) or \
+                    u.word == "and" and _between_one_and(current):
                 current.append(u)
                 continue
             if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
@@ -3075,6 +3110,18 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
     for c in out:  # "S5 was suggested ... after a near miss she observed. The ego vehicle travels ...": a later
         c.stage = max(0, c.stage - told)  # stage opened before anyone of the scene is named opens nothing
     return out
+
+
+def _between_one_and(current: list[Unit]) -> bool:
+    """'the motorcycle that is between the ego and the police car changes lane': the 'and' of 'between' joins the
+    two it is between, and opens no clause."""
+    at = len(current) - 1
+    if at < 0 or current[at].category != "agents":
+        return False
+    at -= 1
+    while at >= 0 and current[at].category == "word" and current[at].word in DETERMINERS:
+        at -= 1
+    return at >= 0 and current[at].word == "between"
 
 
 AFTER_OF_A_VERB = {"ask", "asks", "asked", "asking", "look", "looks", "looked", "looking", "named", "take", "takes",
@@ -4929,13 +4976,15 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             return NounPhrase(ego, head, first)  # "The test car turns right ... The car had to stop", "the
             # system holds the car in place"
         if ego is None and not plural and bodies().get(u.base) == "car" and "other" not in words and \
-                not _measured_by_others(units, after) and \
+                not _measured_by_others(units, after) and not any(
+                    m.category == "positions" or m.word == "parked" for m in modifiers) and \
                 not any(not e.is_ego and e.type not in V.VULNERABLE_TYPES for e in r.entities) and \
                 (nxt is None or nxt.category != "positions") and \
                 not _ego_object_follows(units, head) and not _placed_by_the_ego_in_its_relative(r, u) and \
                 not _ego_named_later_in_the_sentence(r, u):
             # ("the car overtakes us": the ego is named after it, so the car is another; "a pedestrian starts across
-            # ... it brings the car to a stop": no other vehicle, the car is the ego)
+            # ... it brings the car to a stop": no other vehicle, the car is the ego; "the oncoming car", "the parked
+            # car": placed against the one the scene is told from, another)
             ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
             r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
             return NounPhrase(ego, head, first)
@@ -5152,7 +5201,10 @@ def _sentence_adverb(u: Unit) -> bool:
     return u.category == "word" and (u.word in ADVERBS or u.word.endswith("ly") and len(u.word) > 4)
 
 
-OPPOSITE_PLACES = {"ahead": {"behind", "level"}, "behind": {"ahead", "overtaking", "level"},
+OPPOSITE_PLACES = {"ahead": {"behind", "level", "back_left", "back_right"},
+                   "behind": {"ahead", "overtaking", "level", "front_left", "front_right"},
+                   "front_left": {"behind", "back_left", "back_right"}, "front_right": {"behind", "back_left", "back_right"},
+                   "back_left": {"ahead", "front_left", "front_right"}, "back_right": {"ahead", "front_left", "front_right"},
                    "side_left": {"side_right"},
                    "side_right": {"side_left"}, "from_left": {"from_right", "road_right"},
                    "from_right": {"from_left", "road_left"}, "road_left": {"road_right", "from_right"},
@@ -5272,6 +5324,8 @@ def _placed_elsewhere(e: Entity, units: list[Unit], head: int) -> bool:
             nxt.meaning in ("ahead", "behind", "level"):
         return True  # "a taxi stops ... the car behind it": another car, placed by the taxi; "the learner driver
         # behind him": another, placed by the one named before
+    if nxt.meaning == "behind" and any(a[4] == "cut_in" for a in e.actions):
+        return True  # "a van cuts in from the left lane. The car behind the ego goes on": one cutting in is ahead
     return bool(OPPOSITE_PLACES.get(nxt.meaning, set()) & e.features)
 
 
@@ -5384,10 +5438,16 @@ CAR_BODIES = {"taxi": "taxi", "cab": "taxi", "minicab": "taxi", "van": "van", "m
               "campervan": "camper", "motorhome": "camper"}
 
 
+NOT_CALLED_CARS = {"van", "pickup", "camper"}  # bodies of the car type that nobody calls a car
+
+
 def _other_body(head: str, named: str) -> bool:
     """'a white van came round ... the taxi waiting behind me': two bodies of car, each said by its own name, are
-    two cars, not one named again."""
+    two cars, not one named again; 'the car ahead stops, and the van in the left lane goes on': a van is not what
+    anyone calls a car, so the van is not the car."""
     said, before = CAR_BODIES.get(head.split()[-1] if head else ""), CAR_BODIES.get(named.split()[-1] if named else "")
+    if said in NOT_CALLED_CARS and named.split()[-1:] == ["car"]:
+        return True
     return said is not None and before is not None and said != before
 
 
@@ -5403,7 +5463,7 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     if head and head not in GENERAL_NOUNS and not both and not plural:
         same = [e for e in pool if e.head.split()[-1] == head.split()[-1] or head in e.aliases
                 or len(e.head.split()) > 1 and e.head.split()[0] == head  # "a pickup truck ... the pickup"
-                or e.head in GENERAL_NOUNS and e.head != "vehicle"
+                or e.head in GENERAL_NOUNS and e.head != "vehicle" and not _other_body(head, e.head)
                 or e.type in V.TWO_WHEELER_TYPES and head in RIDDEN  # "a cyclist ... the bicycle": the same
                 or head.split()[-1] in GROUP_NOUNS and e.count > 1]  # "a crowd of fans ... the crowd": them
         named = [e for e in same if e.head.split()[-1] == head.split()[-1] or head in e.aliases or
@@ -6552,6 +6612,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             e.actions = [a for a in e.actions if a[0] != stage]
     for i in main_verbs:
         made = _made_to(units, i, phrases)
+        if not made and i > 0 and units[i - 1].category == "actions" and units[i - 1].tokens[0].base == "let" and \
+                units[i - 1].tokens[-1].word == "ego":
+            made = [_ego_entity(r, stage)]  # "stops, letting the ego go straight": the ego goes, the one letting stops
         for e in made or subject:
             _modify(r, e, units[i], stage, 0 if _only_possible(units, i) else strength, units, i)
             if e.is_ego and by is not None and units[i].meaning == "move" and units[i].base in STEERING:
@@ -8408,8 +8471,11 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
             return False  # "on the left-hand side a woman waits": a place, then the subject ("left of a van" places)
         return u.tokens[-1].word in PLACES_BEFORE_A_NOUN or units[np.first].word in ("of", "to")
         # "in my mirror a police car": a place that ends in its own noun is complete, the noun after it the subject
+    if u.word == "and" and _between_one_and(units[:k]):
+        return True  # "the car between the ego and the bus brakes": the bus places the car too
     return u.category == "word" and u.word in ("of", "than", "including", "past", "beside", "behind", "to", "by",
-                                               "towards", "toward", "for", "with", "besides", "from", "near")
+                                               "towards", "toward", "for", "with", "besides", "from", "near",
+                                               "between")
 
 
 def _placed_by_the_same_pronoun(r: _Reader, u: Unit) -> bool:
@@ -9168,6 +9234,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         skip |= set(asked[1])
         r.used.update(asked[1])
     clauses = _clauses(r, skip)
+    if not any(t.word in SPEAKERS for t in tokens):  # ("Sitting at a red in the left lane, Jeep in the right lane
+        # starts drifting": a teller's participle is often the teller's own)
+        clauses = _main_clause_before_its_opening_participle(clauses)
     r.staged = any(c.stage for c in clauses)
     previous: list[Entity] = []
     main_subject: list[Entity] = []  # the subject of the last clause that is not a relative one
@@ -10655,7 +10724,8 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
     first_act = 0  # "the light's gone green, and the ego is swinging left": nothing said of the ego before the
     # stage begins, so the turn it first makes is its action, on its line in the first stage (the ego's one route
     # binds a later turn only after a first-stage stop)
-    if ego_entity is not None and ego_action is None:
+    if ego_entity is not None and ego_action in (None, "move"):  # "approaches the junction, and as soon as it
+        # reaches it turns right": driving up to the junction is the way into the turn, not a manoeuvre of its own
         first_act = next((k for k in range(1, stage_count) if any(a[0] == k and a[1] == 2 and a[2] > 0
                                                                   for a in ego_entity.actions)), 0)
         if first_act and _ego_action(ego_entity, _ego_class(ego_entity, first_act, junction),
