@@ -5203,8 +5203,10 @@ def _sentence_adverb(u: Unit) -> bool:
 
 OPPOSITE_PLACES = {"ahead": {"behind", "level", "back_left", "back_right"},
                    "behind": {"ahead", "overtaking", "level", "front_left", "front_right"},
-                   "front_left": {"behind", "back_left", "back_right"}, "front_right": {"behind", "back_left", "back_right"},
-                   "back_left": {"ahead", "front_left", "front_right"}, "back_right": {"ahead", "front_left", "front_right"},
+                   "front_left": {"behind", "back_left", "back_right"},
+                   "front_right": {"behind", "back_left", "back_right"},
+                   "back_left": {"ahead", "front_left", "front_right"},
+                   "back_right": {"ahead", "front_left", "front_right"},
                    "side_left": {"side_right"},
                    "side_right": {"side_left"}, "from_left": {"from_right", "road_right"},
                    "from_right": {"from_left", "road_left"}, "road_left": {"road_right", "from_right"},
