@@ -10857,3 +10857,28 @@ def test_the_verb_after_letting_the_ego_is_the_egos():
     assert agents("A car from the left and a bus from the right both stop at the junction, letting the ego go "
                   "straight.") == [("bus", "stop", "road_of_right_turn"), ("car", "go_straight", "ego"),
                                    ("car", "stop", "road_of_left_turn")]
+
+
+@pytest.mark.parametrize("prompt", ["Around ten a school bus came up behind us and stopped.",
+                                    "At about ten a bus stopped behind us."])
+def test_a_number_before_an_article_is_a_time_and_counts_nothing(prompt):
+    assert agents(prompt) == [("bus", "stop", "back"), ("car", "go_straight", "ego")]
+
+
+def test_a_job_cards_cust_is_the_customer():
+    assert agents("Cust was turning left out of a side road.") == [("car", "turn_left", "ego")]
+
+
+def test_the_car_is_not_the_van_named_before():
+    assert agents("A van was blocking the left lane, so the car ahead of me swung out into my lane.") == [
+        ("car", "block_the_ego", "left"), ("car", "change_lane_to_left", "front"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", ["A truck is parked ahead. Does the ego stop?",
+                                    "A car is travelling along a street. Will the car stop in time?"])
+def test_a_question_whether_one_named_does_a_thing_tells_nothing(prompt):
+    assert ("car", "go_straight", "ego") in agents(prompt)
+
+
+def test_a_question_asking_for_one_still_asks_for_it():
+    assert ("car", "change_lane_to_right", "front_left") in agents("Can a car cut in front of the ego?")

@@ -3630,6 +3630,16 @@ def _what_if(tokens: list[Token], u: Unit) -> bool:
     return would_have and bool({"had", "were"} & set(clause))
 
 
+YES_NO_OPENINGS = {"does", "do", "did", "will", "would", "can", "could", "should", "is", "was", "are", "were"}
+
+
+def _asks_whether(tokens: list[Token], sentence: int) -> bool:
+    """'Does the car stop in time?', 'Will he hit the boy?': a question of whether one named before does something
+    asks the outcome; the scene does not tell it ('Can a car cut in here?' asks for one, and stays)."""
+    words = [x.word for x in _sentence(tokens, sentence)]
+    return len(words) > 2 and words[0] in YES_NO_OPENINGS and words[1] in ("the", "he", "she", "they")
+
+
 BELIEVING = {"thought", "believed", "assumed", "figured", "guessed", "presumed", "reckoned", "imagined", "expected"}
 
 
@@ -3688,6 +3698,8 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
             and first.word in QUESTION_WORDS:
         return True  # "How are you meant to merge when trucks do this?": trucks in general
+    if u.category == "actions" and t.question and _asks_whether(tokens, t.sentence):
+        return True  # "Does the car stop in time?": whether it does is asked, not told
     if not t.question:
         return False
     if first.word not in QUESTION_WORDS and not (t.sentence == 1 and first.opened_by == ":" and first.word in (
@@ -4148,6 +4160,8 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
         u = units[k]
         if k > lo and _clock_stamp(units[k - 1], u):
             break  # "00:05 Ambulance closes up behind": a log's time, no count
+        if u.category == "numbers" and words & {"a", "an"}:
+            break  # "around ten a school bus came up": a time before the article, no count
         if u.category == "numbers":
             count = int(u.meaning) if count is None else count
             if u.word in VAGUE_COUNTS:
@@ -5475,6 +5489,9 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
         if not same and not other and len(pool) == 1 and before == pool and not _other_body(head, pool[0].head):
             same = pool  # "a lorry ... the HGV", "a jogger ... the runner": the one of its kind named before
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
+    elif head.split()[-1:] == ["car"] and not both and not plural:
+        pool = [e for e in pool if not _other_body(e.head, head)]  # "a van was blocking the left lane, so the car
+        # ahead of me swung out": nobody calls a van a car
     if not pool and not any(e.type == kind for e in r.entities if not e.is_ego) and not both and not plural:
         loose = loose_names().get(head, frozenset())  # "a pickup ... the truck", "a motorbike ... the bike"
         pool = [e for e in r.entities if not e.is_ego and e.parent is None and (e.head in loose or e.head.split()[-1] in loose
