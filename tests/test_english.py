@@ -10882,3 +10882,21 @@ def test_a_question_whether_one_named_does_a_thing_tells_nothing(prompt):
 
 def test_a_question_asking_for_one_still_asks_for_it():
     assert ("car", "change_lane_to_right", "front_left") in agents("Can a car cut in front of the ego?")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego waits behind a truck at the red light. When the light turns green, the truck turns right.",
+     ("truck", "turn_right", "front")),
+    ("We wait at a red light behind a car. Once the light turns green, it turns left.", ("car", "turn_left", "front")),
+])
+def test_the_turn_one_waited_to_make_is_what_it_does(prompt, expected):
+    assert expected in agents(prompt)
+    assert road(prompt).junction
+
+
+@pytest.mark.parametrize("prompt", [
+    "A pedestrian stands on the sidewalk to the right. Neither of them enters the ego's lane.",
+    "A pedestrian stands on the sidewalk to the right. The pedestrian does not enter the ego's lane.",
+])
+def test_no_one_goes_where_a_denied_verb_goes(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]

@@ -6424,6 +6424,13 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         verbs = []  # "the light turns red": the subject is a signal, no agent acts ("the junction is entered by
         # two cars": a place is the subject of a passive, its agent acts)
     verbs = [i for i in verbs if not _signal_change(units, i)]
+    for i, u in enumerate(units):  # "neither of them enters the ego's lane": no one goes where a denied verb goes
+        if u.category == "actions" and i not in verbs and _denied_verb(units, i):
+            for place in units[i + 1:]:
+                if place.category in ("comma", "actions", "agents", "sequence"):
+                    break
+                if place.category == "positions" and place.meaning in WAYS_IN:
+                    place.meaning = "used"
     for i, u in enumerate(units):  # "instead of waiting behind him": no one waits there, nor is placed by it
         if u.category == "actions" and _instead_of(units, i):
             for place in units[i + 1:]:
@@ -8970,6 +8977,12 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     return best[4], best[5]
 
 
+WAYS_IN = {"into_ego_lane", "ego_lane", "target_lane", "in_road", "cross_road", "across_path"}  # where a move goes
+
+
+LATER_MANOEUVRES = {"turn", "turn_left", "turn_right", "lane_change", "lane_left", "lane_right", "cut_in"}
+
+
 def _intro_action(e: Entity) -> tuple[str | None, str | None]:
     action = _action(e, e.stage)
     if action[0] in ("move", "go_straight") and not e.is_ego:
@@ -8982,6 +8995,13 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
         return "go_straight", None  # "a cyclist waiting beside the ego ... when the light turns green, the ego lets
         # the cyclist go straight through first": the crossing it waited for is what it does ("we both moved off"
         # says no way, and it stood)
+    manoeuvre = max((a for a in e.actions if a[0] > e.stage and a[1] == 2 and a[4] in LATER_MANOEUVRES and (
+        a[5] is not None or a[4] in ("turn_left", "turn_right", "lane_left", "lane_right"))),
+                    key=lambda a: (a[0], a[3]), default=None)  # (to a side said: "it waited, then turned" tells of
+    # the one the text is told from as often as of the one waiting before it)
+    if action[0] == "stop" and not e.is_ego and manoeuvre is not None:
+        return manoeuvre[4], manoeuvre[5]  # "a truck waits at the red ahead of the ego; when the light turns green,
+        # the truck turns right": the turn it waited to make is what it does
     if action[0] is None or not any(a[1] == 2 for a in e.actions if a[0] == e.stage):
         later = _action(e)
         if action[0] == "stop" and later[0] in ("move", "go_straight"):
