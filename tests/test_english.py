@@ -10900,3 +10900,33 @@ def test_the_turn_one_waited_to_make_is_what_it_does(prompt, expected):
 ])
 def test_no_one_goes_where_a_denied_verb_goes(prompt):
     assert agents(prompt) == [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "What should the AV do when an oncoming motorcycle turns left across its path at 30 km/h?",
+    "If a car cuts in, what should the ego do?",
+])
+def test_the_case_a_question_asks_about_is_the_scene(prompt):
+    assert len(agents(prompt)) == 2
+
+
+def test_a_question_of_building_tells_no_case():
+    assert ("motorcycle", "go_straight", "back") in agents(
+        "At an unsignalised crossroads the ego goes straight while a motorcycle follows the ego in its lane. How do I "
+        "stop the cyclist from teleporting when it waits too long?")
+
+
+def test_the_former_and_the_latter_in_the_order_named():
+    assert agents("An ambulance and a car approach from behind the ego; the former changes lane left, the latter "
+                  "stops on the shoulder.") == [("ambulance", "change_lane_to_left", "back"),
+                                                ("car", "go_straight", "ego"), ("car", "stop", "back_right")]
+
+
+def test_the_role_set_off_after_a_noun_is_the_role_it_plays():
+    assert agents("A truck, the lead vehicle, brakes hard.") == [("car", "go_straight", "ego"),
+                                                                 ("truck", "stop", "front")]
+
+
+def test_what_one_asked_about_does_in_a_question_for_a_scene_stays():
+    assert ("bus", "turn_right", "road_of_straight") in agents(
+        "Can the ego handle a bus that turns right across its path?")

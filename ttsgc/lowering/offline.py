@@ -3040,6 +3040,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 all(x.category == "agents" or x.word in ("the", "a", "an") for x in units[k + 1:k + 3]) and \
                 (k + 3 >= len(units) or units[k + 2].category == "comma" or units[k + 3].category == "comma")
             # "across the path of Unit 1, the AV, which ...": the unit is named the ego
+            ego_named = ego_named or bool(current) and current[-1].category == "agents" and \
+                current[-1].meaning not in ("ego", "none") and k + 3 < len(units) and units[k + 1].word == "the" and \
+                units[k + 2].category == "agents" and units[k + 2].base in ROLE_NAMES and \
+                units[k + 3].category == "comma"  # "a truck, the lead vehicle, brakes": the role it plays
             bracketed = len(current) >= 3 and current[-1].category == "agents" and len(current[-1].tokens) == 1 \
                 and current[-1].base in ROLE_NAMES and current[-2].category == "comma" and \
                 current[-3].category == "agents" and not joined  # "a principal other vehicle (POV) stationary"
@@ -3487,6 +3491,20 @@ def _asks_what_to_do(tokens: list[Token], sentence: int) -> bool:
                                                              and {"get", "have"} & set(words[2:3])))
 
 
+CASE_OPENERS = {"when", "if", "while", "whilst", "once", "as"}
+
+
+def _in_the_questions_case(tokens: list[Token], t: Token) -> bool:
+    """'What should the AV do when an oncoming motorcycle turns left?', 'If a car cuts in, what should the ego do?':
+    the case the question is asked of is told as the scene; only the question itself is not."""
+    asked = _sentence(tokens, t.sentence)
+    if {x.word for x in asked[:3]} & {"i", "we", "you"}:
+        return False  # "How do I stop the cyclist from teleporting when it waits too long?": a question of building
+    opener = next((x for x in reversed(asked) if x.index < t.index and (x.word in CASE_OPENERS or x.word == ",")),
+                  None)
+    return opener is not None and opener.word in CASE_OPENERS
+
+
 def _rule_of_the_road(tokens: list[Token], sentence: int) -> bool:
     """'Once someone's on a zebra, you stop and you wait': advice for anyone at any time, no event of the scene."""
     words = [x.word for x in _sentence(tokens, sentence)]
@@ -3633,11 +3651,13 @@ def _what_if(tokens: list[Token], u: Unit) -> bool:
 YES_NO_OPENINGS = {"does", "do", "did", "will", "would", "can", "could", "should", "is", "was", "are", "were"}
 
 
-def _asks_whether(tokens: list[Token], sentence: int) -> bool:
+def _asks_whether(tokens: list[Token], t: Token) -> bool:
     """'Does the car stop in time?', 'Will he hit the boy?': a question of whether one named before does something
-    asks the outcome; the scene does not tell it ('Can a car cut in here?' asks for one, and stays)."""
-    words = [x.word for x in _sentence(tokens, sentence)]
-    return len(words) > 2 and words[0] in YES_NO_OPENINGS and words[1] in ("the", "he", "she", "they")
+    asks the outcome; the scene does not tell it ('Can a car cut in here?' asks for one, and stays; so does what a
+    new one does in it: 'Can the ego handle a bus that turns right?')."""
+    words = [x.word for x in _sentence(tokens, t.sentence) if x.index < t.index]
+    return len(words) > 2 and words[0] in YES_NO_OPENINGS and words[1] in ("the", "he", "she", "they") and \
+        not set(words) & (CASE_OPENERS | RELATIVES)
 
 
 BELIEVING = {"thought", "believed", "assumed", "figured", "guessed", "presumed", "reckoned", "imagined", "expected"}
@@ -3679,7 +3699,7 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     if u.category == "agents" and len(u.tokens) == 1 and t.word in ANYONE and not counted and (
             t.question or first.word in QUESTION_WORDS):
         return True
-    if t.question and _asks_what_to_do(tokens, t.sentence):
+    if t.question and _asks_what_to_do(tokens, t.sentence) and not _in_the_questions_case(tokens, t):
         return True
     after = [x.word for x in tokens[u.end:u.end + 3] if x.sentence == t.sentence]
     if u.category == "agents" and t.word in ANYONE and not counted and (
@@ -3698,7 +3718,7 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             (before is None or before.word not in ("my", "our", "his", "her", "their", "its")) and t.question \
             and first.word in QUESTION_WORDS:
         return True  # "How are you meant to merge when trucks do this?": trucks in general
-    if u.category == "actions" and t.question and _asks_whether(tokens, t.sentence):
+    if u.category == "actions" and t.question and _asks_whether(tokens, t):
         return True  # "Does the car stop in time?": whether it does is asked, not told
     if not t.question:
         return False
@@ -6391,7 +6411,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     group[0].features.add("screening")  # "two vans parked on my right ... ran out from between
                     # them": the vans a crosser emerges from
         elif u.word == "former" or u.word == "latter":
-            pool = [e for e in recent if not e.is_ego][-2:]
+            pool = sorted([e for e in recent if not e.is_ego][-2:], key=lambda e: e.said_at)  # in the order named,
+            # not as last mentioned ("the former changes lane, the latter stops": the first named is the former)
             if pool:
                 phrases.append(NounPhrase(pool[0] if u.word == "former" else pool[-1], i, i))
         else:
@@ -8121,6 +8142,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                     # "the ego, a pedestrian and a truck", "ego, a bus behind,"
                     or (between and prev.entity.head.split()[-1] in APPOSED_HEADS and not prev.entity.is_ego
                         and (units[np.first].word in ("a", "an") or bare and _closed_after(units, np.index)))
+                    or (between and not prev.entity.is_ego and np.entity.head in ROLE_NAMES and
+                        units[np.first].word == "the" and _closed_after(units, np.index))
+                    # "a truck, the lead vehicle, brakes hard": the role the truck plays
                     # "a third-party vehicle, a silver hatchback,", "POV, heavy truck, enters"
                     or (between and prev.entity.head in categories() and np.first == np.index and
                         np.entity.type in categories()[prev.entity.head])):  # "a VRU (cyclist)": which one it is
