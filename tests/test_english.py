@@ -10930,3 +10930,41 @@ def test_the_role_set_off_after_a_noun_is_the_role_it_plays():
 def test_what_one_asked_about_does_in_a_question_for_a_scene_stays():
     assert ("bus", "turn_right", "road_of_straight") in agents(
         "Can the ego handle a bus that turns right across its path?")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A truck that comes in front in sense contrary turns to the left.", ("truck", "turn_left", "road_of_straight")),
+    ("When it changes to green, a motorbike from the side street of the left passes.",
+     ("motorcycle", "go_straight", "road_of_left_turn")),
+    ("The ego goes by the highway and a car of the right lane puts itself in front very close.",
+     ("car", "change_lane_to_left", "right")),
+])
+def test_phrases_written_word_for_word_from_spanish_or_french(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_fires_at_a_crossroad_are_its_signals():
+    assert "traffic_light" in road("The ego arrives at a crossroad with fires which are green.").required_signals
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego car wants to turn left at a crossing without traffic lights. An oncoming car goes straight.",
+    "The ego car comes at a crossing without traffic lights. A car comes from the right side street.",
+])
+def test_a_crossing_with_no_one_on_foot_to_cross_it_is_a_junction(prompt):
+    assert road(prompt).junction
+    assert "crosswalk" not in road(prompt).required_objects
+
+
+def test_a_crossing_a_pedestrian_crosses_stays_a_crosswalk():
+    assert "crosswalk" in road("A pedestrian crosses at the crossing without traffic lights.").required_objects
+
+
+def test_a_correction_that_says_the_place_again_names_one():
+    assert agents("The ego drives behind a tractor, no sorry, behind a truck who drives very slow.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, kind", [("Ahead a car stands.", "car"), ("In front a bus stops.", "bus")])
+def test_a_clause_opened_by_ahead_places_its_subject(prompt, kind):
+    assert agents(prompt) == sorted([("car", "go_straight", "ego"), (kind, "stop", "front")])

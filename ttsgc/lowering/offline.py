@@ -967,7 +967,7 @@ def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
     return out
 
 
-CORRECTIONS = (("no", "wait"), ("wait", "no"), ("i", "mean"), ("or", "rather"), ("scratch", "that"),
+CORRECTIONS = (("no", "wait"), ("wait", "no"), ("no", "sorry"), ("i", "mean"), ("or", "rather"), ("scratch", "that"),
                ("make", "that"), ("no",), ("sorry",), ("wait",), ("actually",), ("rather",))
 NOUN_PHRASE_WORDS = {"a", "an", "the", "one", "some", "another", "this", "big", "small", "little", "white", "black",
                      "red", "blue", "silver", "grey", "gray", "green", "yellow", "dark", "parked", "stopped"}
@@ -1010,6 +1010,12 @@ def _retract_corrections(r: "_Reader") -> list[Unit]:
             continue
         j = end
         j += j < len(units) and units[j].category == "comma"
+        placed = k - 2
+        while placed >= 0 and units[placed].category == "word" and units[placed].word in NOUN_PHRASE_WORDS:
+            placed -= 1
+        if j < len(units) and units[j].category == "positions" and placed >= 0 and \
+                units[placed].category == "positions":
+            j += 1  # "behind a tractor, no sorry, behind a truck": the place said again with the noun
         n = j
         while n < len(units) and n - j < 4 and units[n].category in ("word", "number", "numbers") and \
                 (units[n].word in NOUN_PHRASE_WORDS or units[n].category != "word"):
@@ -1938,6 +1944,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     # "cyclist: on crosswalk at exit arm, crossing": a note's piece of its own about a person, what they do
     counted = len(span) > 1 and span[-1].word == "crossing" and (span[0].word in ("pedestrians", "peds") or (
         m.start > 0 and (_word_number(tokens[m.start - 1]) or 0) >= 1))  # "two pedestrians crossing": people
+    if m.category == "road" and [t.word for t in span] == ["crossing"] and prev is not None and \
+            prev.word in ("a", "the") and not any((lexicon().phrases.get((t.base,)) or ("", ""))[1] in
+                                                  V.VULNERABLE_TYPES for t in tokens):
+        return [Unit(m.start, m.end, "road", "junction", span)]  # "turns left at a crossing without traffic
+        # lights" ("Kreuzung", "cruce"), no one on foot or on a bicycle to cross: where roads cross
     if m.category == "road" and [t.word for t in span] == ["crossing"] and nxt and \
             (lexicon().phrases.get((tokens[m.end].base,)) or ("", ""))[1] in V.VULNERABLE_TYPES:
         return [Unit(m.start, m.end, "actions", "cross", span)]  # "a crossing cyclist": one who crosses, no crosswalk
@@ -8516,6 +8527,8 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
         if u.meaning in ("ahead", "behind") and len(u.tokens) == 1 and k > 0 and (
                 units[k - 1].word in DISTANCE_UNITS or units[k - 1].word in ("up", "further", "way", "just")):
             return False  # "twenty-five metres ahead a lorry sits", "up ahead a bus": a place, then the subject
+        if k == 0 and [t.word for t in u.tokens] in (["ahead"], ["in", "front"]):
+            return False  # "Ahead a car stands broken": the place the clause opens with, then its subject
         if u.meaning not in ("ahead", "behind", "level") and u.tokens[-1].word not in ("of", "to", "behind") and \
                 units[np.first].word not in ("of", "to"):
             return False  # "on the left-hand side a woman waits": a place, then the subject ("left of a van" places)
