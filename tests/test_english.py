@@ -10968,3 +10968,14 @@ def test_a_correction_that_says_the_place_again_names_one():
 @pytest.mark.parametrize("prompt, kind", [("Ahead a car stands.", "car"), ("In front a bus stops.", "bus")])
 def test_a_clause_opened_by_ahead_places_its_subject(prompt, kind):
     assert agents(prompt) == sorted([("car", "go_straight", "ego"), (kind, "stop", "front")])
+
+
+def test_the_lane_change_one_waited_to_make_from_a_side_lane_is_what_it_does():
+    assert ("motorcycle", "change_lane_to_right", "front_left") in agents(
+        "The ego waits at a red light in the right lane, and a motorcycle waits in the left lane next to it. When "
+        "the light turns green, the motorcycle changes lane right in front of the ego.")
+
+
+def test_the_driver_is_no_cyclists():
+    assert ("car", "stop", "back") in agents(
+        "A car is following the ego closely. The ego stops for the cyclist, and the driver behind also stops.")

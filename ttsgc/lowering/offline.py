@@ -4930,7 +4930,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         kind, definite = "pedestrian", False
         vehicle_left = _last_named(r, recent, lambda e: not e.is_ego and e.type not in V.VULNERABLE_TYPES)
     if definite and count is None and u.base in ("driver", "rider", "motorist") and not plural:
-        driven = _last_named(r, recent, lambda e: not e.is_ego and e.type != "pedestrian")
+        driven = _last_named(r, recent, lambda e: not e.is_ego and e.type != "pedestrian" and not (
+            e.type == "cyclist" and u.base != "rider"))  # ("the driver behind": no cyclist's)
         place = next((x for x in units[head + 1:head + 3] if x.category == "positions"), None)
         if driven is not None and place is not None and place.meaning in ("behind", "ahead") and \
                 (place.tokens[-1].word in SPEAKERS and place.meaning not in driven.features or
@@ -9033,7 +9034,8 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
         # the cyclist go straight through first": the crossing it waited for is what it does ("we both moved off"
         # says no way, and it stood)
     manoeuvre = max((a for a in e.actions if a[0] > e.stage and a[1] == 2 and a[4] in LATER_MANOEUVRES and (
-        a[5] is not None or a[4] in ("turn_left", "turn_right", "lane_left", "lane_right"))),
+        a[5] is not None or a[4] in ("turn_left", "turn_right", "lane_left", "lane_right") or
+        a[4] in ("lane_change", "cut_in") and _side(e) is not None)),
                     key=lambda a: (a[0], a[3]), default=None)  # (to a side said: "it waited, then turned" tells of
     # the one the text is told from as often as of the one waiting before it)
     if action[0] == "stop" and not e.is_ego and manoeuvre is not None:
