@@ -10979,3 +10979,14 @@ def test_the_lane_change_one_waited_to_make_from_a_side_lane_is_what_it_does():
 def test_the_driver_is_no_cyclists():
     assert ("car", "stop", "back") in agents(
         "A car is following the ego closely. The ego stops for the cyclist, and the driver behind also stops.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego: car, turn right | Actor 1: ped at crosswalk, cross road",
+     [("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("Ego: car, go straight | Actor 1: truck ahead, stop", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("Ego: car, lane change left | Actor 1: motorcycle left lane behind, go straight",
+     [("car", "change_lane_to_left", "ego"), ("motorcycle", "go_straight", "back_left")]),
+])
+def test_a_rows_cells_keyed_by_an_agent_are_that_agents(prompt, expected):
+    assert agents(prompt) == expected

@@ -906,12 +906,17 @@ def _first_named(key: str, before: str) -> str:
 EGO_KEYS = {"ego", "ego vehicle", "ego car", "subject vehicle"}
 
 
+CELL_BAR = re.compile(r"[ \t]+\|[ \t]+")
+
+
 def _keyed_agents(text: str) -> str:
     """'Ego: going straight. Van: stopped, front-right.' on one line: each key that names an agent is the
     subject of what follows it ('Van is stopped, front-right.'), when two keys do or the line opens with one;
     other keys are left to the title rule."""
     pieces = re.split(r"(?<=[.;|])\s+|\s+/\s+", text.strip())
-    if sum(1 for p in pieces if (m := KEY_LINE.match(p)) and _names_agent(m.group(1))) < 2 and not (
+    cells = CELL_BAR.search(text) is not None  # "Ego car, go straight | Actor 1: truck ahead, stop": a row's cells,
+    # one keyed by an agent enough (the ego's key was read with its value before: "Ego: car" is "Ego car")
+    if sum(1 for p in pieces if (m := KEY_LINE.match(p)) and _names_agent(m.group(1))) < 2 - cells and not (
             (m := KEY_LINE.match(pieces[0])) and _names_agent(m.group(1))
             and m.group(1).strip().lower().split()[0] not in TITLE_KEYS) and not any(
             (m := KEY_LINE.match(p)) and m.group(1).strip().lower() in EGO_KEYS for p in pieces):
@@ -920,10 +925,10 @@ def _keyed_agents(text: str) -> str:
     for k, piece in enumerate(pieces):
         m = KEY_LINE.match(piece)
         if m and _names_agent(m.group(1)) and m.group(2).strip():
-            value = m.group(2).strip().rstrip('.;')
+            value = m.group(2).strip().rstrip('.;| ')  # (a table's cell ends at its bar)
             out.append(f"{_keyed(_first_named(m.group(1).strip(), ' '.join(pieces[:k])), value)}.")
         else:
-            out.append(piece)
+            out.append(piece[:-1].rstrip() + ";" if piece.endswith("|") else piece)
     return " ".join(out)
 
 
