@@ -10990,3 +10990,10 @@ def test_the_driver_is_no_cyclists():
 ])
 def test_a_rows_cells_keyed_by_an_agent_are_that_agents(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", ["POV truck ahead. POV brakes.",
+                                    "Setup: ego on 3-lane hwy, LV truck ahead 40 m; Trigger: LV hard brake to stop"])
+def test_a_role_named_before_a_vehicle_names_it_again(prompt):
+    assert [a for a in agents(prompt) if a[0] != "car"] == [("truck", "stop", "front")]
+    assert len(agents(prompt)) == 2

@@ -5087,7 +5087,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                     headline=headline and not label, said_at=u.tokens[0].index)
     entity.uncounted = uncounted
     entity.definite = "the" in words
-    if u.base.split()[0] in ("lead", "leading"):
+    entity.aliases |= {m.base for m in modifiers if m.category == "agents" and m.base in ROLE_NAMES}  # "LV truck
+    # ahead ... LV hard brake": the role it is named by again
+    if u.base.split()[0] in ("lead", "leading") or "lead vehicle" in entity.aliases:
         entity.features.add("ahead")
     if first >= 1 and "of" in words and units[first - 1].tokens[-1].word in ("queue", "line", "row", "jam"):
         entity.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))  # "a queue of four cars"
@@ -5505,7 +5507,9 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
     drivers = head in ("driver", "drivers") and (both or plural)  # "both drivers": of the vehicles named
     pool = [e for e in r.entities if not e.is_ego and (e.type == kind or (generic and e.type in V.EGO_TYPES)
                                                         or (e.generic and kind in V.EGO_TYPES)
-                                                        or drivers and e.type not in V.VULNERABLE_TYPES)]
+                                                        or drivers and e.type not in V.VULNERABLE_TYPES
+                                                        or head in ROLE_NAMES and head in e.aliases)]
+    # ("LV truck ahead ... LV brakes": the truck, by the role it was named by)
     if len(head.split()) > 1 and head.split()[-1] in ("driver", "rider", "drivers", "riders"):
         head = " ".join(head.split()[:-1])  # "the van's driver", "the bus driver": the van, the bus
     if head and head not in GENERAL_NOUNS and not both and not plural:
