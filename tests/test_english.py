@@ -5036,7 +5036,8 @@ def test_kin_who_drives_is_no_pedestrian():
 
 
 @pytest.mark.parametrize("prompt, expected, crosswalk", [
-    ("One cyclist is coming from the left side road and crossing.", ("cyclist", "cross_the_road", "front_left"), False),
+    ("One cyclist is coming from the left side road and crossing.", ("cyclist", "cross_the_road", "road_of_left_turn"),
+     False),
     ("A boy was running along the footpath and crossing in front of ego.", ("pedestrian", "cross_the_road", "front"),
      False),
     ("The ego is approaching a junction with a light and crossing.", ("car", "go_straight", "ego"), True),

@@ -967,8 +967,8 @@ def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
     return out
 
 
-CORRECTIONS = (("no", "wait"), ("wait", "no"), ("no", "sorry"), ("i", "mean"), ("or", "rather"), ("scratch", "that"),
-               ("make", "that"), ("no",), ("sorry",), ("wait",), ("actually",), ("rather",))
+CORRECTIONS = (("no", "wait"), ("wait", "no"), ("no", "sorry"), ("i", "mean"), ("or", "rather"),
+               ("scratch", "that"), ("make", "that"), ("no",), ("sorry",), ("wait",), ("actually",), ("rather",))
 NOUN_PHRASE_WORDS = {"a", "an", "the", "one", "some", "another", "this", "big", "small", "little", "white", "black",
                      "red", "blue", "silver", "grey", "gray", "green", "yellow", "dark", "parked", "stopped"}
 
@@ -2842,13 +2842,23 @@ def _main_clause_before_its_opening_participle(clauses: list[Clause]) -> list[Cl
             continue  # "Parked in the right lane", "Overtaken by a van": a participle ("Moved out into the right
             # lane", a note's verb with its subject left out, is none)
         subject = next((i for i, u in enumerate(main.units) if u.category == "agents"), None)
-        if subject is None or subject > 2 or main.units[subject].meaning == "none" or \
+        verb = next((i for i, u in enumerate(main.units) if u.category == "actions" and subject is not None and
+                     i > subject), None)
+        if subject is None or subject > 2 or main.units[subject].meaning == "none" or verb is None or \
                 any(u.category != "word" or u.word not in DETERMINERS for u in main.units[:subject]) or \
-                not any(u.category == "actions" for u in main.units[subject + 1:]):
-            continue
+                any(u.word in COPULAS for u in main.units[subject + 1:verb]) or \
+                participle.meaning == "stop" and _told_in_the_past(main.units[verb]):
+            continue  # ("Going straight over the lights, a lorry is parked on the far side": a state the one
+            # driving sees, said as the scene before it; "stopped at the stop sign, a cyclist came blowing thru":
+            # an account in the past, whose stop is its teller's as often as not)
         main.link, opening.link = "", ","
         out[k], out[k + 1] = main, opening
     return out
+
+
+def _told_in_the_past(verb: Unit) -> bool:
+    t = verb.tokens[0]
+    return t.word != t.base and not t.word.endswith(("s", "ing"))  # "came", "turned" (not "turns", "turning")
 
 
 def _listed_before_then(current: list[Unit], units: list[Unit], k: int) -> bool:
@@ -3051,7 +3061,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 all(x.category == "agents" or x.word in ("the", "a", "an") for x in units[k + 1:k + 3]) and \
                 (k + 3 >= len(units) or units[k + 2].category == "comma" or units[k + 3].category == "comma")
             # "across the path of Unit 1, the AV, which ...": the unit is named the ego
-            ego_named = ego_named or bool(current) and current[-1].category == "agents" and \
+            role_named = bool(current) and current[-1].category == "agents" and \
                 current[-1].meaning not in ("ego", "none") and k + 3 < len(units) and units[k + 1].word == "the" and \
                 units[k + 2].category == "agents" and units[k + 2].base in ROLE_NAMES and \
                 units[k + 3].category == "comma"  # "a truck, the lead vehicle, brakes": the role it plays
@@ -3070,7 +3080,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if (_has_verb(current) or condition or new_noun or joined or order or relative_ends or the_one or
                     placed_aside or _another_lane_has(current, units, k)) \
                     and not short_name \
-                    and not ego_named \
+                    and not ego_named and not role_named \
                     and not bracketed and not ego_make and not _closed_apposition(current, units, k) \
                     and not _what_a_label_is(current, units, k):  # "followed by CV, a Jeep Wrangler."
                 close(",")
@@ -7098,6 +7108,9 @@ def _instead_of(units: list[Unit], i: int) -> bool:
     return any(said_before[-len(lead):] == list(lead) for lead in PASSED_OVER)
 
 
+WAYS_IN = {"into_ego_lane", "ego_lane", "target_lane", "in_road", "cross_road", "across_path"}  # where a move goes
+
+
 def _denied_verb(units: list[Unit], i: int) -> bool:
     """'don't try to pass him', 'never overtakes', 'must learn how to yield': a verb said not to happen, or
     only talked about ('does not move' is a phrase of its own)."""
@@ -9019,10 +9032,16 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
     return best[4], best[5]
 
 
-WAYS_IN = {"into_ego_lane", "ego_lane", "target_lane", "in_road", "cross_road", "across_path"}  # where a move goes
-
-
 LATER_MANOEUVRES = {"turn", "turn_left", "turn_right", "lane_change", "lane_left", "lane_right", "cut_in"}
+
+
+def _later_manoeuvre(e: Entity) -> tuple | None:
+    """The last turn or lane change told of an agent in a stage after the one it was named in, to a side said or
+    from a side lane ('it waited, then turned', with no side, tells of the one the text is told from as often as
+    of the one waiting before it)."""
+    return max((a for a in e.actions if a[0] > e.stage and a[1] == 2 and a[4] in LATER_MANOEUVRES and (
+        a[5] is not None or a[4] in ("turn_left", "turn_right", "lane_left", "lane_right") or
+        a[4] in ("lane_change", "cut_in") and _side(e) is not None)), key=lambda a: (a[0], a[3]), default=None)
 
 
 def _intro_action(e: Entity) -> tuple[str | None, str | None]:
@@ -9037,11 +9056,7 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
         return "go_straight", None  # "a cyclist waiting beside the ego ... when the light turns green, the ego lets
         # the cyclist go straight through first": the crossing it waited for is what it does ("we both moved off"
         # says no way, and it stood)
-    manoeuvre = max((a for a in e.actions if a[0] > e.stage and a[1] == 2 and a[4] in LATER_MANOEUVRES and (
-        a[5] is not None or a[4] in ("turn_left", "turn_right", "lane_left", "lane_right") or
-        a[4] in ("lane_change", "cut_in") and _side(e) is not None)),
-                    key=lambda a: (a[0], a[3]), default=None)  # (to a side said: "it waited, then turned" tells of
-    # the one the text is told from as often as of the one waiting before it)
+    manoeuvre = _later_manoeuvre(e)
     if action[0] == "stop" and not e.is_ego and manoeuvre is not None:
         return manoeuvre[4], manoeuvre[5]  # "a truck waits at the red ahead of the ego; when the light turns green,
         # the truck turns right": the turn it waited to make is what it does
