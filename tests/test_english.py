@@ -10903,12 +10903,13 @@ def test_no_one_goes_where_a_denied_verb_goes(prompt):
     assert agents(prompt) == [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "right")]
 
 
-@pytest.mark.parametrize("prompt", [
-    "What should the AV do when an oncoming motorcycle turns left across its path at 30 km/h?",
-    "If a car cuts in, what should the ego do?",
+@pytest.mark.parametrize("prompt, expected", [
+    ("What should the AV do when an oncoming motorcycle turns left across its path at 30 km/h?",
+     ("motorcycle", "turn_left", "road_of_straight")),
+    ("If a car cuts in, what should the ego do?", ("car", "change_lane_to_right", "front_left")),
 ])
-def test_the_case_a_question_asks_about_is_the_scene(prompt):
-    assert len(agents(prompt)) == 2
+def test_the_case_a_question_asks_about_is_the_scene(prompt, expected):
+    assert agents(prompt) == sorted([("car", "go_straight", "ego"), expected])
 
 
 def test_a_question_of_building_tells_no_case():
