@@ -10842,6 +10842,7 @@ def test_going_straight_across_the_junction_is_at_a_junction():
     ("Coming from a side road on the right, a truck turns left across the ego's path.",
      ("truck", "turn_left", "road_of_right_turn")),
     ("Parked in the right lane ahead, a truck blocks the lane.", ("truck", "block_the_ego", "front_right")),
+    ("Following the ego closely, a motorcycle changes lane left.", ("motorcycle", "change_lane_to_left", "back")),
 ])
 def test_an_opening_participle_is_said_of_the_main_clauses_subject(prompt, expected):
     assert expected in agents(prompt)

@@ -2836,9 +2836,11 @@ def _main_clause_before_its_opening_participle(clauses: list[Clause]) -> list[Cl
             continue  # the sentence's first clause only
         verb = 1 if opening.units[0].word == "having" else 0
         participle = opening.units[verb] if verb < len(opening.units) else None
-        if participle is None or participle.category != "actions" or not (
+        placing = participle is not None and participle.category == "positions" and \
+            participle.word in TRANSITIVE_POSITIONS  # "Following the ego closely, a motorcycle changes lane"
+        if not placing and (participle is None or participle.category != "actions" or not (
                 participle.tokens[0].word.endswith("ing") or verb or participle.meaning == "stop" or
-                verb + 1 < len(opening.units) and opening.units[verb + 1].word == "by"):
+                verb + 1 < len(opening.units) and opening.units[verb + 1].word == "by")):
             continue  # "Parked in the right lane", "Overtaken by a van": a participle ("Moved out into the right
             # lane", a note's verb with its subject left out, is none)
         subject = next((i for i, u in enumerate(main.units) if u.category == "agents"), None)
