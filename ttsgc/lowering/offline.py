@@ -2844,12 +2844,12 @@ def _main_clause_before_its_opening_participle(clauses: list[Clause]) -> list[Cl
             continue  # "Parked in the right lane", "Overtaken by a van": a participle ("Moved out into the right
             # lane", a note's verb with its subject left out, is none)
         subject = next((i for i, u in enumerate(main.units) if u.category == "agents"), None)
-        verb = next((i for i, u in enumerate(main.units) if u.category == "actions" and subject is not None and
-                     i > subject), None)
-        if subject is None or subject > 2 or main.units[subject].meaning == "none" or verb is None or \
+        main_verb = next((i for i, u in enumerate(main.units) if u.category == "actions" and subject is not None
+                          and i > subject), None)
+        if subject is None or subject > 2 or main.units[subject].meaning == "none" or main_verb is None or \
                 any(u.category != "word" or u.word not in DETERMINERS for u in main.units[:subject]) or \
-                any(u.word in COPULAS for u in main.units[subject + 1:verb]) or \
-                participle.meaning == "stop" and _told_in_the_past(main.units[verb]):
+                any(u.word in COPULAS for u in main.units[subject + 1:main_verb]) or \
+                participle.meaning == "stop" and _told_in_the_past(main.units[main_verb]):
             continue  # ("Going straight over the lights, a lorry is parked on the far side": a state the one
             # driving sees, said as the scene before it; "stopped at the stop sign, a cyclist came blowing thru":
             # an account in the past, whose stop is its teller's as often as not)
@@ -5508,8 +5508,9 @@ def _other_body(head: str, named: str) -> bool:
     two cars, not one named again; 'the car ahead stops, and the van in the left lane goes on': a van is not what
     anyone calls a car, so the van is not the car."""
     said, before = CAR_BODIES.get(head.split()[-1] if head else ""), CAR_BODIES.get(named.split()[-1] if named else "")
-    if said in NOT_CALLED_CARS and named.split()[-1:] == ["car"]:
-        return True
+    if said in NOT_CALLED_CARS and named.split()[-1:] == ["car"] or before in NOT_CALLED_CARS and \
+            head.split()[-1:] == ["car"]:
+        return True  # (either way round: "a van ... the car", "a car ... the van")
     return said is not None and before is not None and said != before
 
 
@@ -5538,7 +5539,7 @@ def _existing(r: _Reader, kind: str, generic: bool, plural: bool, other: bool, b
             same = pool  # "a lorry ... the HGV", "a jogger ... the runner": the one of its kind named before
         pool = same  # "the oncoming SUV and the pickup behind it": a pickup is not the SUV
     elif head.split()[-1:] == ["car"] and not both and not plural:
-        pool = [e for e in pool if not _other_body(e.head, head)]  # "a van was blocking the left lane, so the car
+        pool = [e for e in pool if not _other_body(head, e.head)]  # "a van was blocking the left lane, so the car
         # ahead of me swung out": nobody calls a van a car
     if not pool and not any(e.type == kind for e in r.entities if not e.is_ego) and not both and not plural:
         loose = loose_names().get(head, frozenset())  # "a pickup ... the truck", "a motorbike ... the bike"
@@ -6464,8 +6465,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     phrases = _members_listed(r, clause, phrases, recent)
     phrases = _relative_says_what_it_is(r, clause, phrases)
     _shared_premodifier(units, phrases)
+    denied = {i for i, u in enumerate(units) if u.category == "actions" and _denied_verb(units, i)}
     verbs = [i for i, u in enumerate(units) if u.category == "actions" and u.meaning not in ("try",)
-             and not any(np.first <= i < np.index for np in phrases) and not _denied_verb(units, i)
+             and not any(np.first <= i < np.index for np in phrases) and i not in denied
              and not _named_manoeuvre(units, i) and not _requested(units, i) and not _planned(units, i)
              and not _weighed(units, i)]
     if verbs and not any(np.index < verbs[0] and np.entity is not None for np in phrases) and any(
@@ -6473,13 +6475,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         verbs = []  # "the light turns red": the subject is a signal, no agent acts ("the junction is entered by
         # two cars": a place is the subject of a passive, its agent acts)
     verbs = [i for i in verbs if not _signal_change(units, i)]
-    for i, u in enumerate(units):  # "neither of them enters the ego's lane": no one goes where a denied verb goes
-        if u.category == "actions" and i not in verbs and _denied_verb(units, i):
-            for place in units[i + 1:]:
-                if place.category in ("comma", "actions", "agents", "sequence"):
-                    break
-                if place.category == "positions" and place.meaning in WAYS_IN:
-                    place.meaning = "used"
+    for i in sorted(denied):  # "neither of them enters the ego's lane": no one goes where a denied verb goes
+        for place in units[i + 1:]:
+            if place.category in ("comma", "actions", "agents", "sequence"):
+                break
+            if place.category == "positions" and place.meaning in WAYS_IN:
+                place.meaning = "used"
     for i, u in enumerate(units):  # "instead of waiting behind him": no one waits there, nor is placed by it
         if u.category == "actions" and _instead_of(units, i):
             for place in units[i + 1:]:
@@ -9058,8 +9059,7 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
         return "go_straight", None  # "a cyclist waiting beside the ego ... when the light turns green, the ego lets
         # the cyclist go straight through first": the crossing it waited for is what it does ("we both moved off"
         # says no way, and it stood)
-    manoeuvre = _later_manoeuvre(e)
-    if action[0] == "stop" and not e.is_ego and manoeuvre is not None:
+    if action[0] == "stop" and not e.is_ego and (manoeuvre := _later_manoeuvre(e)) is not None:
         return manoeuvre[4], manoeuvre[5]  # "a truck waits at the red ahead of the ego; when the light turns green,
         # the truck turns right": the turn it waited to make is what it does
     if action[0] is None or not any(a[1] == 2 for a in e.actions if a[0] == e.stage):
