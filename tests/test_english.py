@@ -10125,7 +10125,7 @@ def test_flashing_its_lights_is_said_of_the_one_that_flashes_and_ends_no_clause_
 
 def test_a_state_said_before_the_ego_is_the_egos():
     assert agents("A cyclist overtakes the stationary ego on the right and then turns right at the junction.") == [
-        ("car", "stop", "ego"), ("cyclist", "go_straight", "back_right")]
+        ("car", "stop", "ego"), ("cyclist", "turn_right", "back_right")]  # (the turn its sentence goes on to)
     assert ("truck", "go_straight", "back_right") in agents("A truck passed ego on the right.")
 
 
@@ -11000,3 +11000,68 @@ def test_a_rows_cells_keyed_by_an_agent_are_that_agents(prompt, expected):
 def test_a_role_named_before_a_vehicle_names_it_again(prompt):
     assert [a for a in agents(prompt) if a[0] != "car"] == [("truck", "stop", "front")]
     assert len(agents(prompt)) == 2
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego goes straight. A car and a bus ahead turn left and right respectively.",
+     [("bus", "turn_right", "front"), ("car", "go_straight", "ego"), ("car", "turn_left", "front")]),
+    ("The ego goes straight. A van and a truck behind it change lane left and right respectively.",
+     [("car", "change_lane_to_left", "back"), ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "back")]),
+    ("The ego goes straight while two cars coming from the opposite direction turn right and left respectively.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight"),
+      ("car", "turn_right", "road_of_straight")]),
+])
+def test_respectively_pairs_each_road_user_with_its_item(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_respectively_with_its_items_after_it():
+    from ttsgc.lowering.lexicon import _respectively
+    assert _respectively("a car and a bus, respectively ahead and behind, stop.") == \
+        "a car, ahead, stop, and a bus, behind, stop."
+    assert _respectively("speeds are 30 and 50 respectively.") == "speeds are 30 and 50 respectively."
+
+
+def test_a_pronoun_before_then_is_the_later_stages_subject():
+    assert agents("A van waits ahead of the ego. It then changes lane to the left.") == [
+        ("car", "change_lane_to_left", "front"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", ["The ego goes straight. A van and a car ahead change lane left. Neither of them "
+                                    "signals.",
+                                    "A cyclist rides ahead of the ego. The rider signals and turns left."])
+def test_one_who_signals_is_indicating_not_a_traffic_light(prompt):
+    assert "traffic_light" not in road(prompt).required_signals
+
+
+def test_a_turn_the_same_sentence_goes_on_to_is_what_it_does():
+    assert ("truck", "turn_right", "back_left") in agents("A truck overtakes the ego and then turns right.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Pedestrians stand at the crosswalk but nobody crosses. The ego goes straight.", "stop"),
+    ("Rather than stopping at the bus stop, the bus changes lane to the left in front of the ego.",
+     "change_lane_to_left"),
+    ("The ego follows a hatchback which indicates right but does not actually turn.", "go_straight"),
+])
+def test_a_denied_verb_is_not_done(prompt, expected):
+    found = agents(prompt)
+    assert ("car", "go_straight", "ego") in found
+    assert all(a[1] == expected for a in found if a[2] != "ego")
+
+
+def test_vehicles_ahead_counted_are_the_members_listed_after():
+    assert agents("Three vehicles ahead of the ego: a bus, a car and a motorcycle.") == [
+        ("bus", "go_straight", "front"), ("car", "go_straight", "ego"), ("car", "go_straight", "front"),
+        ("motorcycle", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car, a van and a truck wait ahead of the ego. The first turns right.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "turn_right", "front"),
+      ("truck", "stop", "front")]),
+    ("A car and a truck wait ahead of the ego. The first turns right, the second goes straight.",
+     [("car", "go_straight", "ego"), ("car", "turn_right", "front"), ("truck", "go_straight", "front")]),
+])
+def test_an_ordinal_names_one_of_those_listed_one_by_one(prompt, expected):
+    assert agents(prompt) == expected

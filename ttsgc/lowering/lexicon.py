@@ -270,6 +270,126 @@ def _without_calques(text: str) -> str:
     return text
 
 
+RESPECTIVE_NOUNS = {"lanes": "lane", "sides": "side", "roads": "road", "side roads": "side road",
+                    "directions": "direction", "arms": "arm", "exits": "exit"}
+LIST_ARTICLES = {"a", "an", "the", "one", "another"}
+WORD_OR_COMMA = re.compile(r"[a-z0-9][a-z0-9'-]*|,")
+
+
+def _respectively(text: str) -> str:
+    """'A car and a bus turn left and right respectively' -> 'a car turn left, and a bus turn right': each of a
+    list of road users paired with its item of a list said as long, one sentence per pair joined by 'and'."""
+    if "respectively" not in text:
+        return text
+    return re.sub(r"[^.;!?\n]*\brespectively\b[^.;!?\n]*", lambda m: _paired(m.group(0)) or m.group(0), text)
+
+
+def _paired(sentence: str) -> str | None:
+    words = [(m.group(), m.start(), m.end()) for m in WORD_OR_COMMA.finditer(sentence)]
+    said = [w for w, _, _ in words]
+    at = said.index("respectively")
+    found = _items_before(said, at) or _items_after(said, at)
+    if found is None:
+        return None
+    items, first, last, noun = found
+    after = first > at  # "a car and a bus, respectively ahead and behind, brake"
+    subjects = _subjects_before(said, at if after else first, len(items))
+    if subjects is None:
+        return None
+    (start, end), members = subjects
+    mid = sentence[words[end][2]:words[at if after else first][1]]
+    tail = sentence[words[last][2] if after else words[at][2]:]
+    shared = ""
+    if not mid.lstrip().startswith(","):  # "turn left and right respectively, then stop": the rest said once
+        comma = tail.find(",")
+        if comma >= 0:
+            tail, shared = tail[:comma], tail[comma:]
+    said_items = [" ".join(said[i] for i in item) + (" " + noun if noun else "") for item in items]
+    pairs = [re.sub(r"\s+", " ", f"{member}{mid}{' ' if after else ''}{item}{tail}").rstrip()
+             for member, item in zip(members, said_items)]
+    return sentence[:words[start][1]] + ", and ".join(pairs) + shared
+
+
+def _items_before(said: list[str], at: int):
+    """'left and right respectively', 'in the left and right lanes respectively', 'turn left and go straight
+    respectively': the items end where 'respectively' begins, each as many words long."""
+    j, noun = at - 1, ""
+    if j >= 1 and " ".join(said[j - 1:j + 1]) in RESPECTIVE_NOUNS:
+        noun, j = RESPECTIVE_NOUNS[" ".join(said[j - 1:j + 1])], j - 2
+    elif j >= 0 and said[j] in RESPECTIVE_NOUNS:
+        noun, j = RESPECTIVE_NOUNS[said[j]], j - 1
+    for n in (1, 2, 3):
+        items = _parallel(said, j, n)
+        if items:
+            return items, items[0][0], j, noun
+    return None
+
+
+def _parallel(said: list[str], j: int, n: int) -> list[list[int]] | None:
+    """Items of n words each, the list ending at j: 'x and y', 'x, y and z', 'x, y, and z'."""
+    last = list(range(j - n + 1, j + 1))
+    k = j - n
+    if k < n or said[k] != "and" or any(said[i] in ("and", ",") for i in last):
+        return None
+    k -= said[k - 1] == ","
+    items = [last]
+    while True:
+        item = list(range(k - n, k))
+        if item[0] < 0 or any(said[i] in ("and", ",", "respectively") for i in item):
+            return None
+        items.insert(0, item)
+        if item[0] >= 1 and said[item[0] - 1] == "," and len(items) < 4:
+            k = item[0] - 1
+            continue
+        return items
+
+
+def _items_after(said: list[str], at: int):
+    """'..., respectively ahead and behind, ...': the items right after it, up to a comma or the end."""
+    for n in (1, 2):
+        end = at + 2 * n + 2
+        if end <= len(said) and said[at + n + 1] == "and" and (end == len(said) or said[end] == ",") and \
+                not any(w in ("and", ",") for w in said[at + 1:at + n + 1] + said[at + n + 2:end]):
+            return [list(range(at + 1, at + n + 1)), list(range(at + n + 2, end))], at + 1, end - 1, ""
+    return None
+
+
+def _subjects_before(said: list[str], before: int, count: int):
+    """The list of road users the items pair with, its first and last word and its members: 'a car and a bus',
+    'the van, the truck and the bus', or a count said with its noun ('two cars'), each then one of them; the
+    nearest such list before the items ('two cars behind the ego ...': the cars)."""
+    for k in range(before - 1, -1, -1):
+        found = _listed_at(said, k, count)
+        if found is not None:
+            return found
+    return None
+
+
+def _listed_at(said: list[str], k: int, count: int):
+    lex = lexicon()
+    agent = lambda w: lex.phrases.get((lex.base(w)[0],), ("",))[0] == "agents"  # noqa: E731
+    if not agent(said[k]):
+        return None
+    base, plural = lex.base(said[k])
+    if plural:  # "two cars ... left and right respectively"
+        counted = k >= 1 and (said[k - 1] == str(count) or lex.phrases.get((said[k - 1],)) == ("numbers", str(count)))
+        return ((k - 1, k), [f"a {base}"] * count) if counted else None
+    members, i, start = [], k, k
+    while True:
+        first = next((j for j in range(i, max(-1, i - 4), -1) if said[j] in LIST_ARTICLES), None)
+        if first is None:
+            return None
+        members.insert(0, " ".join(said[first:i + 1]))
+        start = first
+        link = first - 1
+        if link < 1 or said[link] not in ("and", ","):
+            break
+        i = link - 1 - (said[link] == "and" and said[link - 1] == ",")
+        if i < 0 or not agent(said[i]) or lex.base(said[i])[1]:
+            break
+    return ((start, k), members) if len(members) == count else None
+
+
 @lru_cache(maxsize=8192)
 def _english(word: str) -> bool:
     """A word an English dictionary has: written as meant, whatever the lexicon knows of it."""
@@ -1433,7 +1553,7 @@ def tokenize(text: str) -> list[Token]:
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
-    text = _without_calques(text)
+    text = _respectively(_without_calques(text))
     text = AGENT_COMPOUND.sub(r"\1", text)  # "the ped-safety task", "a car-following model": no one on the road
     text = PERCEIVED.sub(r"\1", text)  # "keep three separate pedestrian tracks": a tracker's, no one on the road
     text = DEVICE_SWITCH.sub(r"\2", text)  # "turn fog on in the simulator", "turn your headlights on": no turn

@@ -320,8 +320,18 @@ def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
     return [Unit(u.start, u.end, "actions", "try", u.tokens)
             if k > 0 and u.category == "road" and len(u.tokens) == 1 and u.tokens[0].word in (
                 "signaled", "signalled", "signals", "signaling", "signalling")
-            and units[k - 1].category == "agents" and units[k - 1].meaning != "none" and not _signalled_to(units, k)
+            and _a_signaller_before(units, k) and not _signalled_to(units, k)
             else u for k, u in enumerate(units)]
+
+
+def _a_signaller_before(units: list[Unit], k: int) -> bool:
+    """Who signals: one named ('the van signals'), a pronoun ('neither of them signals'), or a noun read later
+    whose signal leads into its next move ('the rider signals and turns left')."""
+    before = units[k - 1]
+    return before.category == "agents" and before.meaning != "none" or \
+        before.word in ("it", "he", "she", "they", "them", "who") or \
+        before.category == "word" and k >= 2 and units[k - 2].word == "the" and k + 2 < len(units) and \
+        units[k + 1].category == "word" and units[k + 1].word == "and" and units[k + 2].category == "actions"
 
 
 def _signalled_to(units: list[Unit], k: int) -> bool:
@@ -2973,7 +2983,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             r.mark(u)
             continue  # "two cars stopped ahead after a minor collision", "parked just after the junction": when
             # or where that was, said after it; what comes next is no later stage
-        if u.category == "sequence" and u.meaning == "then" and u.word == "then" and _has_agent(current) and \
+        if u.category == "sequence" and u.meaning == "then" and u.word == "then" and (
+                _has_agent(current) or _only_a_pronoun(current)) and \
                 not any(x.category == "actions" and not x.tokens[0].word.endswith("ing") for x in current) and \
                 not any(x.category == "comma" for x in current) and \
                 nxt is not None and nxt.category == "actions" and \
@@ -3477,6 +3488,12 @@ def _starts_noun(units: list[Unit], k: int) -> bool:
 
 def _has_agent(units: list[Unit]) -> bool:
     return any(u.category == "agents" and u.meaning != "none" for u in units)
+
+
+def _only_a_pronoun(units: list[Unit]) -> bool:
+    """'it then changes lane', 'and he then cuts in': a pronoun as all the subject said before 'then'."""
+    words = [u.word for u in units if u.word not in ("and", "but")]
+    return len(words) == 1 and words[0] in ("it", "he", "she", "they")
 
 
 QUESTION_WORDS = {"what", "how", "why", "where", "which", "who"}
@@ -5092,10 +5109,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         r.notes.append(f"repaired: {count} {u.base}s is more than {MAX_AGENTS_PER_MENTION} in one mention; "
                        f"used {MAX_AGENTS_PER_MENTION}")
         count = MAX_AGENTS_PER_MENTION
-    if u.meaning == "generic" or u.base == "vehicle":  # "a vehicle": its type is left open
+    open_kind = u.meaning == "generic" or u.base in ("vehicle", "vehicle ahead")  # "three vehicles ahead: ..."
+    if open_kind:  # "a vehicle": its type is left open
         kind = UNSPECIFIED.agent_type(kind, len(r.entities))
     entity = Entity(r.new_key(), kind, False, stage, count=count, head=u.base,
-                    generic=(u.meaning == "generic" or u.base == "vehicle") and (count > 1 or plural), label=label,
+                    generic=open_kind and (count > 1 or plural), label=label,
                     headline=headline and not label, said_at=u.tokens[0].index)
     entity.uncounted = uncounted
     entity.definite = "the" in words
@@ -6313,7 +6331,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                                                                       "positions") \
                 and not _the_ego_is(units, lead - 1):
             # ("mine was the second one", "the ego is the last one": the ego's place among them, no member of its own)
-            member = _member(r, recent)  # "two motorbikes, the first on the left and the second on the right"
+            member = _member(r, recent) or _listed_single(r, u.word)  # "two motorbikes, the first on the left and
+            # the second on the right"; "a car and a truck wait; the first turns right"
             if member is not None:  # "three cars in a line; the first one brakes, the second one stops behind it"
                 r.mark(u)
                 if one_after:
@@ -7106,9 +7125,15 @@ PASSED_OVER = (("instead", "of"), ("rather", "than"), ("as", "opposed", "to"), (
 
 
 def _instead_of(units: list[Unit], i: int) -> bool:
-    """A verb said after 'instead of' or 'rather than': the manoeuvre that was not made."""
-    said_before = [t.word for u in units[max(0, i - 3):i] for t in u.tokens]
-    return any(said_before[-len(lead):] == list(lead) for lead in PASSED_OVER)
+    """A verb said after 'instead of' or 'rather than', or a verb phrase of the same clause after that one ('rather
+    than stopping at the bus stop'): the manoeuvre that was not made."""
+    for j in range(i, -1, -1):
+        if j < i and (units[j].category == "comma" or units[j].word in ("and", "but", "so", "then")):
+            return False
+        said_before = [t.word for u in units[max(0, j - 3):j] for t in u.tokens]
+        if units[j].category == "actions" and any(said_before[-len(lead):] == list(lead) for lead in PASSED_OVER):
+            return True
+    return False
 
 
 WAYS_IN = {"into_ego_lane", "ego_lane", "target_lane", "in_road", "cross_road", "across_path"}  # where a move goes
@@ -7140,7 +7165,8 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
         if u.word in ("it", "him", "her", "them") and k > 0 and units[k - 1].word in ("make", "made", "makes"):
             continue  # "didn't make it wait": the one made to, after the causative
         if u.category == "word" and u.word in ("not", "never", "cannot", "dont", "don", "failed", "fails", "fail",
-                                               "failing", "refused", "refuses", "without", "unable", "nowhere") or (
+                                               "failing", "refused", "refuses", "without", "unable", "nowhere",
+                                               "nobody") or (
                 u.category == "numbers" and u.meaning == "0"):
             return True
         if not (u.category == "word" and u.word in ("do", "does", "did", "to", "try", "will", "would", "should",
@@ -7151,7 +7177,7 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
                                                      "anyone", "anybody", "make", "makes", "made", "take",
                                                      "takes", "took", "perform", "performs", "performed", "just",
                                                      "simply", "easily", "safely", "then", "have", "has", "had",
-                                                     "need", "needs", "needed")) \
+                                                     "need", "needs", "needed", "actually", "yet")) \
                 and u.category != "actions" and not (u.category == "agents" and u.meaning == "ego"):
             # ("nowhere whatever for any of us to pull over", "no room for me to move over", "didn't have to stop")
             return False
@@ -7984,6 +8010,19 @@ def _member(r: _Reader, recent: list[Entity]) -> Entity | None:
         r.entities.append(member)
         return member
     return None
+
+
+def _listed_single(r: _Reader, ordinal: str) -> Entity | None:
+    """The nth of the road users last named one by one in a list ('a car, a van and a truck wait ahead; the first
+    turns right'): the latest sentence that named two or more, in the order named."""
+    named = sorted((e for e in r.entities if not e.is_ego and e.count == 1 and e.parent is None and e.said_at >= 0),
+                   key=lambda e: e.said_at)
+    by_sentence: dict[int, list[Entity]] = {}
+    for e in named:
+        by_sentence.setdefault(r.tokens[e.said_at].sentence, []).append(e)
+    listed = next((row for _, row in sorted(by_sentence.items(), reverse=True) if len(row) >= 2), [])
+    n = len(listed) if ordinal == "last" else 1 if ordinal == "first" else ORDINAL_NUMBERS.get(ordinal, 0)
+    return listed[n - 1] if 0 < n <= len(listed) else None
 
 
 RIDING_ON = (["on"], ["riding"], ["astride"], ["rides"], ["rode"], ["ride"], ["is", "riding"], ["was", "riding"],
@@ -9051,7 +9090,7 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
     action = _action(e, e.stage)
     if action[0] in ("move", "go_straight") and not e.is_ego:
         later = _action(e)
-        if later[0] in LANE_MOVES and any(a[0] > e.stage and a[4] == later[0] and a[0] in e.goes_on
+        if later[0] in LATER_MANOEUVRES and any(a[0] > e.stage and a[4] == later[0] and a[0] in e.goes_on
                                           for a in e.actions):
             return later  # "a car passes the ego on the left, then cuts in": the pass leads up to the cut-in
     if action[0] == "stop" and not e.is_ego and "straight_on" in e.features and any(
