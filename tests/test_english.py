@@ -11065,3 +11065,34 @@ def test_vehicles_ahead_counted_are_the_members_listed_after():
 ])
 def test_an_ordinal_names_one_of_those_listed_one_by_one(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A white car and a black car wait at the lights ahead of the ego. The white one turns left.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "turn_left", "front")]),
+    ("A red car and a blue car are ahead of the ego. The blue one changes lane to the left.",
+     [("car", "change_lane_to_left", "front"), ("car", "go_straight", "ego"), ("car", "go_straight", "front")]),
+])
+def test_the_one_with_a_paint_said_before_is_that_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_red_one_is_no_red_light():
+    prompt = "A red car drives ahead of the ego. The red one then stops."
+    assert "traffic_light" not in road(prompt).required_signals
+    assert len(agents(prompt)) == 2
+
+
+def test_a_make_said_before_another_noun_names_that_one_again():
+    assert agents("A white Volvo truck is parked on the right shoulder ahead of the test vehicle. The Volvo pulls out "
+                  "and changes lane left.") == [("car", "go_straight", "ego"), ("truck", "change_lane_to_left",
+                                                                                 "front_right")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A pedestrian waits at the crosswalk ahead of the ego. He then steps out and crosses the road.",
+    "A teenager on a bike waits at the side road on the left. He then pulls out and crosses the road in front of "
+    "the ego.",
+])
+def test_one_on_foot_or_on_a_bike_who_waited_then_crossed_crosses(prompt):
+    assert [a[1] for a in agents(prompt) if a[2] != "ego"] == ["cross_the_road"]

@@ -397,9 +397,21 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
-                   _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind):
+                   _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind, _paint_of_one):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+def _paint_of_one(units: list[Unit]) -> list[Unit]:
+    """'the red one turns right': a colour before 'one' is a vehicle's paint, not a traffic light's aspect."""
+    out = []
+    for k, u in enumerate(units):
+        if u.category == "road" and [t.word for t in u.tokens][:1] == ["the"] and len(u.tokens) == 2 and \
+                u.tokens[1].word in PAINT and k + 1 < len(units) and units[k + 1].word in ("one", "ones"):
+            out += [Unit(t.index, t.index + 1, "word", t.word, (t,)) for t in u.tokens]
+        else:
+            out.append(u)
+    return out
 
 
 def _a_lane_then_whom_it_is_behind(units: list[Unit]) -> list[Unit]:
@@ -3491,9 +3503,11 @@ def _has_agent(units: list[Unit]) -> bool:
 
 
 def _only_a_pronoun(units: list[Unit]) -> bool:
-    """'it then changes lane', 'and he then cuts in': a pronoun as all the subject said before 'then'."""
+    """'it then changes lane', 'and he then cuts in', 'the red one then turns': a pronoun, or 'one' with its
+    paint, as all the subject said before 'then'."""
     words = [u.word for u in units if u.word not in ("and", "but")]
-    return len(words) == 1 and words[0] in ("it", "he", "she", "they")
+    return len(words) == 1 and words[0] in ("it", "he", "she", "they") or \
+        len(words) == 3 and words[0] == "the" and words[1] in PAINT and words[2] == "one"
 
 
 QUESTION_WORDS = {"what", "how", "why", "where", "which", "who"}
@@ -5008,7 +5022,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         # names its adversary with 'the' the first time
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
-                          "both" in words, recent, u.base)
+                          "both" in words, recent, u.base) or _named_by_its_make(r, u)
         placed_after = units[head + 1].meaning if head + 1 < len(units) and units[head + 1].category == "positions" \
             else None
         there = [e for e in r.entities
@@ -6398,7 +6412,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 continue
             if _the_ego_is(units, i - 3) or _the_ego_is(units, i - 2):
                 continue  # "mine was the second one", "ego is last one": the ego's place among them, no member
-            placed_one = _the_one_placed(r, units, i)  # "the one in front slammed on his brakes": that member
+            placed_one = _the_one_placed(r, units, i) or _the_one_by_its_paint(r, units, i)  # "the one in front
+            # slammed on his brakes": that member; "a red car and a blue car ... the red one": that car
             extra = _one_more_of_a_placed_group(r, units, i, phrases) if placed_one is None else None
             member = placed_one or (None if extra else _member(r, recent))  # "two cars, one in front and one behind"
             if extra is not None:
@@ -7881,6 +7896,25 @@ def _the_one_placed(r: _Reader, units: list[Unit], i: int) -> Entity | None:
     return found[-1] if len(found) == 1 or found and found[-1].parent is not None else None
 
 
+def _named_by_its_make(r: _Reader, u: Unit) -> list[Entity]:
+    """'a white Volvo truck ... the Volvo pulls out': a make said before another noun names that one again."""
+    if len(u.tokens) != 1:
+        return []
+    found = [e for e in r.entities if not e.is_ego and e.count == 1 and e.said_at > 0 and e.head != u.base and
+             u.tokens[0].word in {t.word for t in r.tokens[max(0, e.said_at - 2):e.said_at]}]
+    return found if len(found) == 1 else []
+
+
+def _the_one_by_its_paint(r: _Reader, units: list[Unit], i: int) -> Entity | None:
+    """'the red one', 'the silver one': the one road user named before with that paint."""
+    if not (i > 1 and units[i - 2].word == "the" and units[i - 1].word in PAINT):
+        return None
+    paint = units[i - 1].word
+    found = [e for e in r.entities if not e.is_ego and e.count == 1 and e.said_at > 0 and
+             paint in {t.word for t in r.tokens[max(0, e.said_at - 3):e.said_at]}]
+    return found[0] if len(found) == 1 else None
+
+
 def _place_follows(units: list[Unit], i: int) -> bool:
     """'one on the left', 'one on my right': a place comes right after the word."""
     for u in units[i + 1:i + 4]:
@@ -9081,9 +9115,10 @@ def _later_manoeuvre(e: Entity) -> tuple | None:
     """The last turn or lane change told of an agent in a stage after the one it was named in, to a side said or
     from a side lane ('it waited, then turned', with no side, tells of the one the text is told from as often as
     of the one waiting before it)."""
-    return max((a for a in e.actions if a[0] > e.stage and a[1] == 2 and a[4] in LATER_MANOEUVRES and (
+    return max((a for a in e.actions if a[0] > e.stage and a[1] == 2 and (a[4] in LATER_MANOEUVRES and (
         a[5] is not None or a[4] in ("turn_left", "turn_right", "lane_left", "lane_right") or
-        a[4] in ("lane_change", "cut_in") and _side(e) is not None)), key=lambda a: (a[0], a[3]), default=None)
+        a[4] in ("lane_change", "cut_in") and _side(e) is not None) or
+        a[4] == "cross" and e.type in V.VULNERABLE_TYPES)), key=lambda a: (a[0], a[3]), default=None)
 
 
 def _intro_action(e: Entity) -> tuple[str | None, str | None]:
