@@ -11096,3 +11096,32 @@ def test_a_make_said_before_another_noun_names_that_one_again():
 ])
 def test_one_on_foot_or_on_a_bike_who_waited_then_crossed_crosses(prompt):
     assert [a[1] for a in agents(prompt) if a[2] != "ego"] == ["cross_the_road"]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego travels northbound. A truck in the adjacent lane to the east changes lane into its lane.",
+    "The ego is travelling southbound when a truck in the adjacent lane to the west changes lane into its lane.",
+])
+def test_the_lane_to_a_compass_point_is_a_side_lane(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "right")]
+    assert not road(prompt).junction
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("ego left turn unprotected, oncoming mc fast, dusk",
+     [("car", "turn_left", "ego"), ("motorcycle", "go_straight", "road_of_straight")]),
+    ("mc brakes hard in front of ego on wet road, heavy traffic",
+     [("car", "go_straight", "ego"), ("motorcycle", "stop", "front")]),
+])
+def test_shorthand_typed_in_a_hurry(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_ln_is_a_lane():
+    assert road("ego overtakes truck on 2 ln rural road, oncoming bus appears").lanes == 2
+
+
+def test_no_street_lights_is_dark_and_no_traffic_light():
+    prompt = "night, no street lights, ped walking on road edge, ego straight"
+    assert "traffic_light" not in road(prompt).required_signals
+    assert lower(prompt).scenario.weather.time == "night"

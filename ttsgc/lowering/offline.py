@@ -6040,7 +6040,8 @@ def _add_compass(r: _Reader, e: Entity, u: Unit) -> None:
         if not any(f.startswith("compassfrom_") for f in e.features):
             e.features.add("compassfrom_" + point)
         return
-    if bare and at(u.end) in COMPASS_SIDES:
+    if bare and (at(u.end) in COMPASS_SIDES or at(u.start - 3) in ("lane", "lanes") and
+                 (at(u.start - 2), at(u.start - 1)) == ("to", "the")):  # "in the adjacent lane to the east"
         if not any(f.startswith("compassat_") for f in e.features):
             e.features.add("compassat_" + point)
         return
