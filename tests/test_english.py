@@ -11125,3 +11125,14 @@ def test_no_street_lights_is_dark_and_no_traffic_light():
     prompt = "night, no street lights, ped walking on road edge, ego straight"
     assert "traffic_light" not in road(prompt).required_signals
     assert lower(prompt).scenario.weather.time == "night"
+
+
+def test_an_arrow_typed_as_two_marks_is_then():
+    assert agents("ego straight -> truck cuts in -> ego brakes") == [
+        ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "front_left")]
+
+
+@pytest.mark.parametrize("prompt", ["bus stops at bus stop, ego overtakes it, oncoming bike",
+                                    "rural road, bus stops suddenly, ego overtakes it"])
+def test_bus_stops_said_of_a_bus_is_its_stopping(prompt):
+    assert ("bus", "stop", "front") in agents(prompt)

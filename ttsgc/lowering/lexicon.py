@@ -1561,6 +1561,9 @@ def tokenize(text: str) -> list[Token]:
                   r"sedan|suv|pickup|lorry)s?\b)", r"\1 ", text)  # "an opposing through motorcycle": going on
     text = re.sub(r"\blet (him|her|them|it) (in|merge|over|out)( in)? (?:ahead of|in front of) (?:me|us)\b",
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
+    text = re.sub(r"(^|[,.;:!?]\s*|\b(?:a|the|then|and|when|once|as|while|school|city|the)\s)bus stops (?=(?:at|for|to|"
+                  r"in|behind|ahead|suddenly|abruptly|sharply|dead|short|right|just|outside|beside|next|and)\b|[,.;]|$)",
+                  r"\1bus comes to a stop ", text, flags=re.M)  # "bus stops at bus stop": the bus stops, no bus stops
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
     text = METRES_PER_SECOND.sub(lambda m: f"{round(float(m.group(1)) * 3.6)} km/h", text)  # "at 22 m/s": a speed
