@@ -11136,3 +11136,9 @@ def test_an_arrow_typed_as_two_marks_is_then():
                                     "rural road, bus stops suddenly, ego overtakes it"])
 def test_bus_stops_said_of_a_bus_is_its_stopping(prompt):
     assert ("bus", "stop", "front") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", ["Three cars wait ahead of the ego. All three turn right.",
+                                    "Three cars wait ahead of the ego. All of them turn right."])
+def test_all_of_a_group_named_before_do_what_is_said(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego")] + [("car", "turn_right", "front")] * 3

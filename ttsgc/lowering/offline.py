@@ -7973,15 +7973,17 @@ def _one_more_like(r: _Reader, kin: Entity, stage: int, why: str, listed_after: 
 
 
 def _names_them_together(units: list[Unit], i: int) -> bool:
-    """'the pair', 'the two (of them)', 'the duo', 'each (of them)' before a verb: those just named, together."""
+    """'the pair', 'the two (of them)', 'the duo', 'each (of them)', 'all three', 'all of them' before a verb: those
+    just named, together."""
     u = units[i]
     if u.category not in ("word", "numbers") or i + 1 >= len(units):
         return False
     after = i + 1 + 2 * ([x.word for x in units[i + 1:i + 3]] == ["of", "them"])
     acts = after < len(units) and (units[after].category == "actions" or units[after].word in AUXILIARIES)
-    if u.word == "each":
-        return acts and (i == 0 or units[i - 1].word in ("and", ",", "then"))
-    return acts and u.word in ("pair", "duo", "two", "three") and i > 0 and units[i - 1].word == "the"
+    if u.word in ("each", "all"):  # "each turns left", "all of them turn right"
+        return acts and (i == 0 or units[i - 1].word in ("and", ",", "then")) and (u.word == "each" or after > i + 1)
+    return acts and (u.word in ("pair", "duo", "two", "three") and i > 0 and units[i - 1].word == "the" or
+                     u.word in ("two", "three", "four", "five") and i > 0 and units[i - 1].word == "all")  # "all three"
 
 
 def _last_count(r: _Reader) -> int:
