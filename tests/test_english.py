@@ -11121,9 +11121,11 @@ def test_ln_is_a_lane():
     assert road("ego overtakes truck on 2 ln rural road, oncoming bus appears").lanes == 2
 
 
-def test_no_street_lights_is_dark_and_no_traffic_light():
-    prompt = "night, no street lights, ped walking on road edge, ego straight"
+@pytest.mark.parametrize("prompt", ["night, no street lights, ped walking on road edge, ego straight",
+                                    "Night time, no street light, my car going straight on country road."])
+def test_no_street_lights_is_dark_and_no_traffic_light(prompt):
     assert "traffic_light" not in road(prompt).required_signals
+    assert not road(prompt).junction
     assert lower(prompt).scenario.weather.time == "night"
 
 
