@@ -11144,3 +11144,9 @@ def test_bus_stops_said_of_a_bus_is_its_stopping(prompt):
                                     "Three cars wait ahead of the ego. All of them turn right."])
 def test_all_of_a_group_named_before_do_what_is_said(prompt):
     assert agents(prompt) == [("car", "go_straight", "ego")] + [("car", "turn_right", "front")] * 3
+
+
+@pytest.mark.parametrize("rest", ["the others", "the rest", "the remaining two"])
+def test_the_rest_of_a_group_some_were_told_apart_from(rest):
+    assert agents(f"Four cyclists ride ahead of the ego. Two of them turn left and {rest} stop.") == [
+        ("car", "go_straight", "ego")] + [("cyclist", "stop", "front")] * 2 + [("cyclist", "turn_left", "front")] * 2

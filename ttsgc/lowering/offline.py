@@ -6431,6 +6431,14 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 phrases.append(NounPhrase(member, i, i))
             continue
+        if u.word in ("others", "rest", "remaining") and i > 0 and units[i - 1].word == "the" and \
+                not any(np.first <= i <= np.index for np in phrases) and (rest := _rest_of_a_group(r)) is not None:
+            head = i + (i + 1 < len(units) and (units[i + 1].category in ("numbers", "number") or
+                                                units[i + 1].word == "ones"))  # "the remaining two"
+            for k in range(i, head + 1):
+                r.mark(units[k])
+            phrases.append(NounPhrase(rest, head, i - 1, plural=True))  # "two of them cross and the others wait"
+            continue
         if _names_them_together(units, i) and not any(np.first <= i <= np.index for np in phrases):
             together.add(i)  # "the pair turn left", "the two of them", "each turns left": they
             pronouns.append(i)
@@ -7984,6 +7992,12 @@ def _names_them_together(units: list[Unit], i: int) -> bool:
         return acts and (i == 0 or units[i - 1].word in ("and", ",", "then")) and (u.word == "each" or after > i + 1)
     return acts and (u.word in ("pair", "duo", "two", "three") and i > 0 and units[i - 1].word == "the" or
                      u.word in ("two", "three", "four", "five") and i > 0 and units[i - 1].word == "all")  # "all three"
+
+
+def _rest_of_a_group(r: _Reader) -> Entity | None:
+    """'the others', 'the rest', 'the remaining two': those of the last group some members were told apart from."""
+    return next((e for e in reversed(r.entities) if not e.is_ego and e.parent is None and e.count >= 1 and
+                 any(m.parent is e for m in r.entities)), None)
 
 
 def _last_count(r: _Reader) -> int:
