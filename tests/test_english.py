@@ -11150,3 +11150,8 @@ def test_all_of_a_group_named_before_do_what_is_said(prompt):
 def test_the_rest_of_a_group_some_were_told_apart_from(rest):
     assert agents(f"Four cyclists ride ahead of the ego. Two of them turn left and {rest} stop.") == [
         ("car", "go_straight", "ego")] + [("cyclist", "stop", "front")] * 2 + [("cyclist", "turn_left", "front")] * 2
+
+
+def test_neither_denies_past_a_count_and_a_place():
+    assert agents("Neither of the two oncoming trucks turns, and the ego turns left.") == [
+        ("car", "turn_left", "ego")] + [("truck", "go_straight", "road_of_straight")] * 2

@@ -7172,10 +7172,10 @@ def _denied_verb(units: list[Unit], i: int) -> bool:
     said_before = [u.word for u in units[:i]]
     if "neither" in said_before and "nor" in said_before[said_before.index("neither"):]:
         return True  # "neither the cyclist in the right lane nor the car behind the ego changes lane"
-    for u in reversed(units[max(0, i - 4):i]):
+    for u in reversed(units[max(0, i - 6):i]):
         if u.word == "neither":
-            return True  # "neither vehicle slows down"
-        if u.category not in ("agents", "word"):
+            return True  # "neither vehicle slows down", "neither of the two oncoming trucks turns"
+        if u.category not in ("agents", "word", "numbers", "positions"):
             break
     after = [u.word for u in units[i + 1:i + 4]]
     if after[:1] and after[0] in ("impossible", "prohibited", "forbidden", "banned") or \
