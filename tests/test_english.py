@@ -11155,3 +11155,14 @@ def test_the_rest_of_a_group_some_were_told_apart_from(rest):
 def test_neither_denies_past_a_count_and_a_place():
     assert agents("Neither of the two oncoming trucks turns, and the ego turns left.") == [
         ("car", "turn_left", "ego")] + [("truck", "go_straight", "road_of_straight")] * 2
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego goes straight. Two cars, one on each side, brake.",
+     [("car", "go_straight", "ego"), ("car", "stop", "left"), ("car", "stop", "right")]),
+    ("The ego is in the middle lane. Two cars, one in each adjacent lane, change lane into the ego's lane.",
+     [("car", "change_lane_to_left", "front_right"), ("car", "change_lane_to_right", "front_left"),
+      ("car", "go_straight", "ego")]),
+])
+def test_a_verb_after_an_apposition_is_its_subjects(prompt, expected):
+    assert agents(prompt) == expected

@@ -3076,8 +3076,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
             order = nxt is not None and _bare_verb(nxt) and _has_agent(current) and not any(
-                x.word in ("a", "an", "the", "this", "that") for x in current) and \
-                nxt.tokens[0].word not in SAME_IN_THE_PAST  # "bus ahead, overtake it"; not "a guy ..., cut in"
+                x.word in ("a", "an", "the", "this", "that") or x.category == "comma" for x in current) and \
+                nxt.tokens[0].word not in SAME_IN_THE_PAST  # "bus ahead, overtake it"; not "a guy ..., cut in", nor
+            # "two cars, one on each side, brake": the verb of a subject set off by an apposition
             short_name = bool(current) and current[-1].category == "agents" and nxt is not None and \
                 nxt.category == "agents" and len(nxt.tokens) == 1 and k + 2 < len(units) and \
                 units[k + 2].category == "comma" and not nxt.tokens[0].plural  # "a target (GVT), ..."
