@@ -11093,8 +11093,9 @@ def test_a_make_said_before_another_noun_names_that_one_again():
     "A pedestrian waits at the crosswalk ahead of the ego. He then steps out and crosses the road.",
     "A teenager on a bike waits at the side road on the left. He then pulls out and crosses the road in front of "
     "the ego.",
+    "A jogger runs along the sidewalk on the right of the ego. She then crosses the road in front of the ego car.",
 ])
-def test_one_on_foot_or_on_a_bike_who_waited_then_crossed_crosses(prompt):
+def test_one_on_foot_or_on_a_bike_who_waited_or_walked_then_crossed_crosses(prompt):
     assert [a[1] for a in agents(prompt) if a[2] != "ego"] == ["cross_the_road"]
 
 

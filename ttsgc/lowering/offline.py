@@ -9151,7 +9151,8 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
         return "go_straight", None  # "a cyclist waiting beside the ego ... when the light turns green, the ego lets
         # the cyclist go straight through first": the crossing it waited for is what it does ("we both moved off"
         # says no way, and it stood)
-    if action[0] == "stop" and not e.is_ego and (manoeuvre := _later_manoeuvre(e)) is not None:
+    if action[0] in ("stop", "walk") and not e.is_ego and (manoeuvre := _later_manoeuvre(e)) is not None and \
+            (action[0] == "stop" or manoeuvre[4] == "cross"):  # "a jogger runs along the sidewalk; she then crosses"
         return manoeuvre[4], manoeuvre[5]  # "a truck waits at the red ahead of the ego; when the light turns green,
         # the truck turns right": the turn it waited to make is what it does
     if action[0] is None or not any(a[1] == 2 for a in e.actions if a[0] == e.stage):
