@@ -2132,6 +2132,10 @@ def _road(r: _Reader) -> RoadSpec:
                 and any(x.category == "agents" for x in units[max(0, k - 3):k]) and not (
                     k > 0 and units[k - 1].word in ("a", "the", "at", "with", "no", "traffic")):
             continue  # "a cyclist signals and turns left": a hand signal, not a traffic light
+        if u.category == "road" and u.meaning == "traffic_light" and len(u.tokens) == 1 and \
+                u.tokens[0].word in ("signaled", "signalled") and k + 2 < len(units) and units[k + 1].word == "by" \
+                and units[k + 2].category in ("agents", "word"):
+            continue  # "was signalled by a police car to pull in": waved in by someone, not a traffic light
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[0].word in ("signal", "signals") and \
                 {x.word for x in units[max(0, k - 3):k + 4] if x.tokens[0].sentence == u.tokens[0].sentence} & {
                     "mirror", "mirrors", "maneuver", "manoeuvre", "position"}:
