@@ -285,6 +285,7 @@ def _respectively(text: str) -> str:
 
 
 def _paired(sentence: str) -> str | None:
+    """One sentence with 'respectively' said as its pairs, or None where its lists are not found."""
     words = [(m.group(), m.start(), m.end()) for m in WORD_OR_COMMA.finditer(sentence)]
     said = [w for w, _, _ in words]
     at = said.index("respectively")
@@ -366,8 +367,12 @@ def _subjects_before(said: list[str], before: int, count: int):
 
 
 def _listed_at(said: list[str], k: int, count: int):
+    """The list of `count` road users whose last noun is said[k], or None."""
     lex = lexicon()
-    agent = lambda w: lex.phrases.get((lex.base(w)[0],), ("",))[0] == "agents"  # noqa: E731
+
+    def agent(word: str) -> bool:
+        return lex.phrases.get((lex.base(word)[0],), ("",))[0] == "agents"
+
     if not agent(said[k]):
         return None
     base, plural = lex.base(said[k])
@@ -1537,6 +1542,11 @@ VERB_FIRST = re.compile(r"((?:\bthen\s+|(?:^|[.!?;]\s*)(?:after that|afterwards|
 # first, as in Swedish, German or Dutch, with the ego after it as its subject
 
 
+BUS_STOPPING = re.compile(r"(^|[,.;:!?]\s*|\b(?:a|the|then|and|when|once|as|while|school|city)\s)bus stops "
+                          r"(?=(?:at|for|to|in|behind|ahead|suddenly|abruptly|sharply|dead|short|right|just|outside|"
+                          r"beside|next|and)\b|[,.;]|$)", re.M)  # a bus that stops, said after what opens a clause
+
+
 ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*(?:m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?s)|(?:metres|meters) per second "
                           r"(?:squared|per second))")
 METRES_PER_SECOND = re.compile(r"\b(\d{1,3}(?:\.\d+)?)\s*(?:m\s?/\s?s|ms\^?-1|metres per second|meters per second)\b")
@@ -1561,9 +1571,7 @@ def tokenize(text: str) -> list[Token]:
                   r"sedan|suv|pickup|lorry)s?\b)", r"\1 ", text)  # "an opposing through motorcycle": going on
     text = re.sub(r"\blet (him|her|them|it) (in|merge|over|out)( in)? (?:ahead of|in front of) (?:me|us)\b",
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
-    text = re.sub(r"(^|[,.;:!?]\s*|\b(?:a|the|then|and|when|once|as|while|school|city|the)\s)bus stops (?=(?:at|for|to|"
-                  r"in|behind|ahead|suddenly|abruptly|sharply|dead|short|right|just|outside|beside|next|and)\b|[,.;]|$)",
-                  r"\1bus comes to a stop ", text, flags=re.M)  # "bus stops at bus stop": the bus stops, no bus stops
+    text = BUS_STOPPING.sub(r"\1bus comes to a stop ", text)  # "bus stops at bus stop": the bus stops, no bus stops
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
     text = METRES_PER_SECOND.sub(lambda m: f"{round(float(m.group(1)) * 3.6)} km/h", text)  # "at 22 m/s": a speed

@@ -6440,8 +6440,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 not any(np.first <= i <= np.index for np in phrases) and (rest := _rest_of_a_group(r)) is not None:
             head = i + (i + 1 < len(units) and (units[i + 1].category in ("numbers", "number") or
                                                 units[i + 1].word == "ones"))  # "the remaining two"
-            for k in range(i, head + 1):
-                r.mark(units[k])
+            for said in units[i:head + 1]:
+                r.mark(said)
             phrases.append(NounPhrase(rest, head, i - 1, plural=True))  # "two of them cross and the others wait"
             continue
         if _names_them_together(units, i) and not any(np.first <= i <= np.index for np in phrases):
@@ -9136,7 +9136,8 @@ LATER_MANOEUVRES = {"turn", "turn_left", "turn_right", "lane_change", "lane_left
 def _later_manoeuvre(e: Entity) -> tuple | None:
     """The last turn or lane change told of an agent in a stage after the one it was named in, to a side said or
     from a side lane ('it waited, then turned', with no side, tells of the one the text is told from as often as
-    of the one waiting before it)."""
+    of the one waiting before it), or the crossing of one on foot or on a bike ('waits at the kerb, then
+    crosses')."""
     return max((a for a in e.actions if a[0] > e.stage and a[1] == 2 and (a[4] in LATER_MANOEUVRES and (
         a[5] is not None or a[4] in ("turn_left", "turn_right", "lane_left", "lane_right") or
         a[4] in ("lane_change", "cut_in") and _side(e) is not None) or
@@ -9148,8 +9149,9 @@ def _intro_action(e: Entity) -> tuple[str | None, str | None]:
     if action[0] in ("move", "go_straight") and not e.is_ego:
         later = _action(e)
         if later[0] in LATER_MANOEUVRES and any(a[0] > e.stage and a[4] == later[0] and a[0] in e.goes_on
-                                          for a in e.actions):
-            return later  # "a car passes the ego on the left, then cuts in": the pass leads up to the cut-in
+                                                for a in e.actions):
+            return later  # "a car passes the ego on the left, then cuts in", "overtakes the ego and then turns
+            # right": the pass leads up to the manoeuvre its sentence goes on to
     if action[0] == "stop" and not e.is_ego and "straight_on" in e.features and any(
             a[4] == "go_straight" and a[1] == 2 and a[0] > e.stage for a in e.actions):
         return "go_straight", None  # "a cyclist waiting beside the ego ... when the light turns green, the ego lets
