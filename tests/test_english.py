@@ -11174,3 +11174,13 @@ def test_signalled_by_someone_is_no_traffic_light():
     assert "traffic_light" not in road("Was signalled by a police car to pull into a lay-by for a routine check.")\
         .required_signals
     assert "traffic_light" in road("The junction is signalled by lights.").required_signals
+
+
+@pytest.mark.parametrize("prompt, teller", [
+    ("I want to file a complaint. I was riding through the junction when a pickup coming from my left rolled "
+     "through his stop sign.", ("cyclist", "go_straight", "road_of_right_turn")),
+    ("I was turning left with my arm out when a car coming towards me went through the lights on amber.",
+     ("cyclist", "turn_left", "front")),
+])
+def test_a_rider_reporting_a_driver_with_no_word_of_pedals(prompt, teller):
+    assert agents(prompt) == [("car", "go_straight", "ego"), teller]

@@ -10230,12 +10230,14 @@ def _witness_on_foot(r: _Reader) -> None:
 
 
 PEDAL_WORDS = {"bicycle", "pedalling", "pedaling", "pedalled", "pedaled", "handlebar", "handlebars", "pushbike",
-               "toucan"}  # (not "a brake pedal")
+               "toucan", "cycling", "cycled", "pannier", "panniers"}  # (not "a brake pedal")
 PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), ("i", "cycle"), ("cycle", "commuter"),
                  ("my", "bicycle"), ("in", "the", "cycle", "lane"), ("in", "the", "bike", "lane"),
-                 ("i'm", "a", "cyclist"), ("i", "am", "a", "cyclist"), ("i'm", "a", "cycle"))  # (not "the cycle
+                 ("i'm", "a", "cyclist"), ("i", "am", "a", "cyclist"), ("i'm", "a", "cycle"), ("my", "arm", "out"),
+                 ("child", "seat", "on", "the", "back"))  # (not "the cycle
 # courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
 MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
+REPORTING_WORDS = {"reporting", "report", "complaint", "file"}
 SEEN_THE_OTHER_WAY = {"ahead": "behind", "behind": "ahead", "side_left": "side_right", "side_right": "side_left",
                       "front_left": "back_right", "back_right": "front_left", "front_right": "back_left",
                       "back_left": "front_right", "from_left": "from_right", "from_right": "from_left",
@@ -10250,7 +10252,10 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     teller (behind me: the cyclist ahead)."""
     ego = next((e for e in r.entities if e.is_ego), None)
     words = [t.word for t in r.tokens]
-    on_a_bike = (set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES)) and not set(words) & MOTOR_WORDS and \
+    reported_riding = set(words) & {"riding", "rode"} and set(words) & REPORTING_WORDS  # "I'm reporting a police
+    # patrol car ... it overtook me ... while I was riding past a line of parked cars": a rider's report of a driver
+    on_a_bike = (set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES) or reported_riding) and \
+        not set(words) & MOTOR_WORDS and \
         not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")))
     if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or \
             ego.type not in ("car", "motorcycle") or ego.aliases - FIRST_PERSON - {"you"} or not on_a_bike or \
