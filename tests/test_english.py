@@ -11171,8 +11171,8 @@ def test_a_verb_after_an_apposition_is_its_subjects(prompt, expected):
 
 
 def test_signalled_by_someone_is_no_traffic_light():
-    assert "traffic_light" not in road("Was signalled by a police car to pull into a lay-by for a routine check.")\
-        .required_signals
+    waved_in = road("Was signalled by a police car to pull into a lay-by for a routine check.")
+    assert "traffic_light" not in waved_in.required_signals
     assert "traffic_light" in road("The junction is signalled by lights.").required_signals
 
 
