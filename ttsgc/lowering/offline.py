@@ -6529,8 +6529,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 break
             if place.category == "positions" and place.meaning in WAYS_IN:
                 place.meaning = "used"
-    for i, u in enumerate(units):  # "instead of waiting behind him": no one waits there, nor is placed by it
-        if u.category == "actions" and _instead_of(units, i):
+    for i in sorted(denied):  # "instead of waiting behind him": no one waits there, nor is placed by it
+        if _instead_of(units, i):  # (a verb passed over is a denied one)
             for place in units[i + 1:]:
                 if place.category in ("comma", "actions", "agents", "sequence"):
                     break
@@ -7910,12 +7910,17 @@ def _the_one_placed(r: _Reader, units: list[Unit], i: int) -> Entity | None:
     return found[-1] if len(found) == 1 or found and found[-1].parent is not None else None
 
 
+def _named_with(r: _Reader, word: str, within: int) -> list[Entity]:
+    """The single road users whose noun had `word` said up to `within` words before it ('a white Volvo truck')."""
+    return [e for e in r.entities if not e.is_ego and e.count == 1 and e.said_at > 0 and
+            word in {t.word for t in r.tokens[max(0, e.said_at - within):e.said_at]}]
+
+
 def _named_by_its_make(r: _Reader, u: Unit) -> list[Entity]:
     """'a white Volvo truck ... the Volvo pulls out': a make said before another noun names that one again."""
     if len(u.tokens) != 1:
         return []
-    found = [e for e in r.entities if not e.is_ego and e.count == 1 and e.said_at > 0 and e.head != u.base and
-             u.tokens[0].word in {t.word for t in r.tokens[max(0, e.said_at - 2):e.said_at]}]
+    found = [e for e in _named_with(r, u.tokens[0].word, 2) if e.head != u.base]
     return found if len(found) == 1 else []
 
 
@@ -7923,9 +7928,7 @@ def _the_one_by_its_paint(r: _Reader, units: list[Unit], i: int) -> Entity | Non
     """'the red one', 'the silver one': the one road user named before with that paint."""
     if not (i > 1 and units[i - 2].word == "the" and units[i - 1].word in PAINT):
         return None
-    paint = units[i - 1].word
-    found = [e for e in r.entities if not e.is_ego and e.count == 1 and e.said_at > 0 and
-             paint in {t.word for t in r.tokens[max(0, e.said_at - 3):e.said_at]}]
+    found = _named_with(r, units[i - 1].word, 3)
     return found[0] if len(found) == 1 else None
 
 
