@@ -11184,3 +11184,72 @@ def test_signalled_by_someone_is_no_traffic_light():
 ])
 def test_a_rider_reporting_a_driver_with_no_word_of_pedals(prompt, teller):
     assert agents(prompt) == [("car", "go_straight", "ego"), teller]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Car 1 is the ego, waiting to turn left at a junction. Car 2 is oncoming and goes straight, and car 3 is "
+     "oncoming and turns right.", [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego"),
+                                   ("car", "turn_right", "road_of_straight")]),
+    ("Truck 1 is the ego and goes straight. Truck 2 comes from the left and turns right.",
+     [("truck", "go_straight", "ego"), ("truck", "turn_right", "road_of_left_turn")]),
+])
+def test_one_numbered_vehicle_declared_the_ego_leaves_the_others_numbered_alike(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_fleet_number_declared_the_ego_still_names_it_by_its_noun():
+    assert agents("Van 203 is the ego. The van turns left while a car comes from the left.") == [
+        ("car", "go_straight", "road_of_left_turn"), ("car", "turn_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt", ["ego turns right at junction; ped crossing side road crosswalk from the left",
+                                    "Ego turns right; ped crossing crosswalk on ego left side",
+                                    "ego turns right; ped crossing far-side crosswalk left to right"])
+def test_a_ped_crossing_what_a_note_names_without_its_article_is_a_person(prompt):
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", ["Ego goes straight through the pedestrian crossing near the school.",
+                                    "The ego approaches a pedestrian crossing side by side with a bus."])
+def test_a_pedestrian_crossing_with_its_article_is_still_a_crosswalk(prompt):
+    assert not any(kind == "pedestrian" for kind, _, _ in agents(prompt))
+    assert "crosswalk" in road(prompt).required_objects
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ego: straight through 4-way signalised junction on green; Actor 1: oncoming car turns left across path; "
+     "Road: 2 lanes per direction, TL controlled; Env: dry, daylight",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]),
+    ("Ego: right turn at unsignalised 4-way all-way stop; Actor 1: car from side road left goes straight; Actor 2: "
+     "oncoming car turns left; Road: 1 lane per approach, stop signs",
+     [("car", "go_straight", "road_of_left_turn"), ("car", "turn_left", "road_of_straight"),
+      ("car", "turn_right", "ego")]),
+])
+def test_numbered_actor_keys_run_on_in_one_line_each_key_one_road_user(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_note_says_the_side_road_and_then_its_side():
+    assert agents("The ego goes straight; truck from side road right turns right into ego lane ahead") == [
+        ("car", "go_straight", "ego"), ("truck", "turn_right", "road_of_right_turn")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("ego test veh EB straight, motorcycle overtaking from behind cut in front.",
+     [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back")]),
+    ("t=0.0 ego lane 2 of 3 v=12 straight; t=0.8 object#4 (truck) ahead lane 2 dist=35 braking",
+     [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+])
+def test_a_logs_short_words_name_no_other_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_logged_v_is_a_speed_in_metres_per_second():
+    ego = next(a for a in lower("t=0.0 ego lane 1 of 2 v=15 straight").scenario.agents() if a.is_ego)
+    assert ego.speed is not None and round(ego.speed.value) == 54
+
+
+def test_the_bare_noun_a_label_is_said_to_be_is_one_more_road_user():
+    assert agents("The ego turns right. Actor 1 is car from the left road, goes straight. Actor 2 is oncoming car, "
+                  "turns left.") == [("car", "go_straight", "road_of_left_turn"), ("car", "turn_left", "road_of_straight"),
+                                     ("car", "turn_right", "ego")]

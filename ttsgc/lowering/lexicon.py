@@ -805,7 +805,8 @@ def _tables(lines: list[str]) -> list[str]:
 
 
 OPENING_TITLE_KEY = re.compile(r"\s*([A-Za-z]+)[ \t]*:[ \t]*([^.:\n]{1,80})\.[ \t]+[A-Za-z]+[ \t]*:")
-INLINE_KEY = re.compile(r"(?<=[.;])[ \t]+(?=([A-Z][A-Za-z/-]*(?: [A-Za-z/-]+){0,2}):[ \t])")
+INLINE_KEY = re.compile(r"(?<=[.;])[ \t]+(?=((?!(?:In )?Lanes?\b)[A-Z][A-Za-z0-9/-]*(?: [A-Za-z0-9/-]+){0,2}):[ \t])")
+# ("Actor 1:" keys its line; "Lane 2:" is read with the lanes)
 
 
 def _inline_key_break(m: re.Match) -> str:
@@ -818,7 +819,7 @@ def _inline_key_break(m: re.Match) -> str:
 
 ADVICE_KEY = re.compile(r"(?:^|(?<=[.;!?]))[ \t]*(?:coach|coachable|coaching|recommendations?|tips?|takeaways?|"
                         r"lessons?(?: learned)?|corrective actions?|action taken)[ \t]*:", re.I | re.M)
-NEXT_KEY = re.compile(r"(?<=[.;])[ \t]+(?=[A-Z][A-Za-z/-]*(?: [A-Za-z/-]+){0,2}:[ \t])|\n")
+NEXT_KEY = re.compile(r"(?<=[.;])[ \t]+(?=(?!(?:In )?Lanes?\b)[A-Z][A-Za-z0-9/-]*(?: [A-Za-z0-9/-]+){0,2}:[ \t])|\n")
 
 
 LANE_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*(?:the\s+)?(lanes?\s+\d(?:\s+and\s+\d)?|(?:(?:left|right|middle|centre|"
@@ -1550,6 +1551,7 @@ BUS_STOPPING = re.compile(r"(^|[,.;:!?]\s*|\b(?:a|the|then|and|when|once|as|whil
 ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*(?:m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?s)|(?:metres|meters) per second "
                           r"(?:squared|per second))")
 METRES_PER_SECOND = re.compile(r"\b(\d{1,3}(?:\.\d+)?)\s*(?:m\s?/\s?s|ms\^?-1|metres per second|meters per second)\b")
+LOGGED_SPEED = re.compile(r"\bv\s?=\s?(\d{1,3}(?:\.\d+)?)(?!\s*(?:km|kph|mph|m\s?/|ms\b|[./]?\d))")  # "v=12"
 
 
 def tokenize(text: str) -> list[Token]:
@@ -1574,6 +1576,7 @@ def tokenize(text: str) -> list[Token]:
     text = BUS_STOPPING.sub(r"\1bus comes to a stop ", text)  # "bus stops at bus stop": the bus stops, no bus stops
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
+    text = LOGGED_SPEED.sub(r"at \1 m/s", text)  # "t=0.0 ego lane 2 v=12": a log's speed, in SI units
     text = METRES_PER_SECOND.sub(lambda m: f"{round(float(m.group(1)) * 3.6)} km/h", text)  # "at 22 m/s": a speed
     text = re.sub(r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1", text)  # "a 3+ lane highway": at least three lanes
     text = re.sub(r"\blane (\d) of (\d)\b(?! lanes?\b)", r"lane \1 of \2 lanes", text)  # "Lane 2 of 3": one of three

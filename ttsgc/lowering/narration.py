@@ -57,7 +57,7 @@ EGO_NOUN = {"car": "the ego", "truck": "the ego truck", "bus": "the ego bus", "m
 _NOUN = r"(van|cab|taxi|car|vehicle|minibus|pickup|suv|truck|lorry|hgv|bus|coach|motorcycle|motorbike|scooter|moped)"
 DECLARATION_PATTERN = (
     r"(?:,\s*|\b(?:with|using|having)\s+)?\b(?:(?:our|the|my|this|that)\s+)?(?:(?P<adjective>[a-z]+)\s+)?" + _NOUN +
-    r"(?:\s+(?:no\.?\s*|#)?\d+)?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+(?:the\s+|our\s+)?(?:EGO_ROLE)\b"
+    r"(?:\s+(?:no\.?\s*|#)?(?P<number>\d+))?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+(?:the\s+|our\s+)?(?:EGO_ROLE)\b"
     r"(?:\s+(?:vehicle|car))?(?:\s+for this)?(?:\s+please)?")
 ROLE_BODIES = {"bus", "truck", "lorry", "van", "motorcycle", "motorbike", "taxi", "cab", "shuttle", "coach"}
 
@@ -1114,6 +1114,7 @@ def _declared_ego(text: str, notes: list[str]) -> str:
     m = declaration.search(text)
     if m is not None:
         noun, kind = m.group(2).lower(), VEHICLE_NOUNS[m.group(2).lower()]  # the noun after the adjective
+        said = text  # ("Car 1 is the ego, waiting" keeps the ego where the text names it)
         text = declaration.sub("", text)
     else:  # "our tram is the ego", "with the ambulance as the ego": a vehicle the reader knows by another noun
         m = next((d for d in any_declaration.finditer(text) if _vehicle_kind(d.group(2).lower())), None)
@@ -1123,6 +1124,15 @@ def _declared_ego(text: str, notes: list[str]) -> str:
         text = text[:m.start()] + text[m.end():]
     ego = EGO_NOUN.get(kind, f"the ego {noun}")  # "the ego ambulance"
     notes.append(f"read the {noun} as the ego (said so)")
+    numbered = rf"\b{noun}\s+(?:no\.?\s*|#)?0*(\d+)\b" + NOT_A_QUANTITY
+    if m.group("number") is not None and any(int(n) != int(m.group("number")) for n in re.findall(numbered, said, re.I)):
+        declared = m.group(0).lstrip(", ")  # "Car 1 is the ego ... car 2 is oncoming": the others are numbered alike,
+        if not re.match(r"(?i)(?:with|using|having)\b", declared):  # and only car 1 is the ego
+            said = said[:m.start()] + m.group(0)[:len(m.group(0)) - len(declared)] + ego + said[m.end():]
+        else:
+            said = text  # ("with car 1 as the ego, ..." says no more)
+        return _named_driver(re.sub(numbered, lambda n: ego if int(n.group(1)) == int(m.group("number")) else n.group(0),
+                                    said, flags=re.I), notes)
     plural = noun + ("es" if noun.endswith("s") else "s")
     text = re.sub(rf"\bone of (?:our|my|the) (?:[a-z]+ )?{plural}\b", ego, text, flags=re.I)
     text = re.sub(rf"\b(?:{FLEET_NOUNS})\s+(?:no\.?\s*|#)?\d{{2,4}}\b" + NOT_A_QUANTITY +

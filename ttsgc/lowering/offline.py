@@ -1362,6 +1362,9 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
                        "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
                        "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead",
                        "very", "infront", "one", "front"}
+CROSSED_WITHOUT_ARTICLE = {"side", "far", "both", "target", "crosswalk", "crosswalks", "zebra", "roadway",
+                           "carriageway"}  # "ped crossing side road crosswalk", "ped crossing far-side crosswalk":
+# a note's person crossing, the article before what is crossed left out
 
 
 LANE_EDGES = {"kerb", "curb", "verge", "gutter", "centre", "center", "edge", "line", "lines", "kerbside", "curbside"}
@@ -1976,7 +1979,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         return [Unit(m.start, m.end, "actions", "cross", span)]  # "a crossing cyclist": one who crosses, no crosswalk
     if m.category == "road" and span[-1].word in ("crossing", "xing") and (
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
-            nxt in VERB_AFTER_CROSSING or on_a_crossing or lone_piece or counted or (len(span) == 1 and (
+            nxt in VERB_AFTER_CROSSING or on_a_crossing or nxt in CROSSED_WITHOUT_ARTICLE and nxt2 not in (
+                "by", "from", "of") and not (prev is not None and prev.word in ("a", "an", "the")) or lone_piece or counted or (len(span) == 1 and (
                 after_person or after_verb or _coordinated_participle(tokens, m)))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
                                          and len(span) == 1) and not (
@@ -4879,7 +4883,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if count is not None and 1 < count < TOO_LARGE and words & {"some", "more"}:  # "a few", "more than ten"
         count = UNSPECIFIED.vague_count(count, len(r.entities))
     bare = not words and count is None and not plural and not label and not (
-        head + 1 < len(units) and units[head + 1].category == "positions")  # "car opposite waiting": another
+        head + 1 < len(units) and units[head + 1].category == "positions") and not _what_a_label_names(units, first)
+    # ("car opposite waiting": another)
     placed_by = _place_in_the_name(units, head, first)
     doing = units[head + 1].meaning if first == lo and head + 1 < len(units) and \
         units[head + 1].category == "actions" and units[head + 1].tokens[0].word.endswith("ing") else None
@@ -8669,6 +8674,16 @@ def _placed_by_the_same_pronoun(r: _Reader, u: Unit) -> bool:
     sentence = u.tokens[0].sentence
     return any(x.category == "positions" and (x.tokens[-1].word == objects[u.word] or y.word == objects[u.word]) and
                y.start < u.start and x.tokens[0].sentence == sentence for x, y in zip(r.units, r.units[1:]))
+
+
+def _what_a_label_names(units: list[Unit], first: int) -> bool:
+    """'Actor 2: oncoming car turns left': the bare noun after a label and its colon says what the label is, one
+    more road user, not the car named before."""
+    k = first - 1
+    while k >= 0 and units[k].category == "positions":
+        k -= 1
+    return k >= 1 and units[k].word in COPULAS and units[k - 1].category == "agents" and \
+        bool(units[k - 1].tokens[-1].label)
 
 
 def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
