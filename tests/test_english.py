@@ -11253,3 +11253,36 @@ def test_the_bare_noun_a_label_is_said_to_be_is_one_more_road_user():
     assert agents("The ego turns right. Actor 1 is car from the left road, goes straight. Actor 2 is oncoming car, "
                   "turns left.") == [("car", "go_straight", "road_of_left_turn"), ("car", "turn_left", "road_of_straight"),
                                      ("car", "turn_right", "ego")]
+
+
+def test_a_place_name_after_next_says_which_and_opens_no_stage():
+    assert agents("Rainy day, ego car in right lane, one van from next lane overtake ego and cut in front of ego") \
+        == [("car", "change_lane_to_right", "back_left"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", ["The ego goes straight on the crossroad with lights, and a bus from the opposite "
+                                    "side is turning on the left in front of it",
+                                    "The ego goes straight, and an oncoming bus turns on the left."])
+def test_a_turn_said_on_a_side_is_a_turn_to_it(prompt):
+    assert ("bus", "turn_left", "road_of_straight") in agents(prompt)
+
+
+def test_a_verb_said_before_then_and_its_object_after():
+    assert agents("The ego is in the right lane; a motorbike overtakes it from behind and makes then a lane change in "
+                  "front of it") == [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_left", "back")]
+
+
+def test_a_pedestrian_lane_is_a_crosswalk():
+    prompt = "The ego is stopping at the pedestrian lane, there is a student crossing from the right."
+    assert agents(prompt) == [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+    assert "crosswalk" in road(prompt).required_objects
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego goes straight. A car comes from the left side road, and a cyclist comes from the same road.",
+     ("cyclist", "go_straight", "road_of_left_turn")),
+    ("The ego turns left. A truck is oncoming and a car comes out of the same road.",
+     ("car", "go_straight", "road_of_straight")),
+])
+def test_from_the_same_road_as_the_one_named_before(prompt, expected):
+    assert expected in agents(prompt)

@@ -1551,6 +1551,8 @@ BUS_STOPPING = re.compile(r"(^|[,.;:!?]\s*|\b(?:a|the|then|and|when|once|as|whil
 ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*(?:m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?s)|(?:metres|meters) per second "
                           r"(?:squared|per second))")
 METRES_PER_SECOND = re.compile(r"\b(\d{1,3}(?:\.\d+)?)\s*(?:m\s?/\s?s|ms\^?-1|metres per second|meters per second)\b")
+VERB_THEN = re.compile(r"\b(makes?|made|making|does|did|turns?|turned|changes?|changed) then "
+                       r"(?=(?:a|an|the|left|right|lanes?)\b)")
 LOGGED_SPEED = re.compile(r"\bv\s?=\s?(\d{1,3}(?:\.\d+)?)(?!\s*(?:km|kph|mph|m\s?/|ms\b|[./]?\d))")  # "v=12"
 
 
@@ -1595,6 +1597,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(it|that|there|he|she|what|who|here|where)'s\b", r"\1 is", text)
     text = re.sub(r"\blet's\b", "let us", text)
     text = VERB_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3)} {m.group(2)}", text)
+    text = VERB_THEN.sub(r"then \1 ", text)  # "makes then a lane change" ("macht dann"): then makes it
     text = _without_attribution(text)
     text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
     text = re.sub(r"\b([a-z]+) (?:down|along|up|through) the ((?:left|right|middle|outside|inside|fast|slow|overtaking)"

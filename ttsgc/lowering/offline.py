@@ -2965,8 +2965,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 u.meaning == "ego" and (u.tokens[0].word in ("i", "we") or [t.word for t in u.tokens][-1:] == ["ego"]):
             close()  # "once they passed i took over and made the left", "once it had gone by I made my turn": the
             # condition ends where its comma would
-        if u.category == "sequence" and (prev_word == "even" or u.word == "next" and len(u.tokens) == 1 and
-                                         prev_word in ("the", "a", "this") or
+        if u.category == "sequence" and (prev_word == "even" or _next_names_which(u, prev_word, nxt) or
                                          u.word == "later" and prev_word in ("bit", "little", "or", "maybe")):
             r.mark(u)
             continue  # "stop, even when it's clear": a concession; "the next bit was ...": which bit; "around 6pm,
@@ -3020,9 +3019,8 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                                              nxt.category in ("number", "numbers") and
                                              not _a_wait_of_minutes(units, k)) and not (
                 u.base == "after" and nxt is not None and nxt.base in ("the start", "start", "the beginning")) \
-                and prev_word not in ("for", "at", "all") and not (  # "for once", "at once"
-                u.word == "next" and len(u.tokens) == 1 and prev_word in ("the", "a", "this", "that", "its")):
-            # "into the next lane": which lane, not what comes next
+                and prev_word not in ("for", "at", "all") and not _next_names_which(u, prev_word, nxt):
+            # ("for once", "at once")
             r.mark(u)
             had_verb = _has_verb(current)
             noun_acts = link in RELATIVES and nxt is not None and _main_verb_after_a_relative(current, units, k + 1)
@@ -8676,6 +8674,15 @@ def _placed_by_the_same_pronoun(r: _Reader, u: Unit) -> bool:
                y.start < u.start and x.tokens[0].sentence == sentence for x, y in zip(r.units, r.units[1:]))
 
 
+def _next_names_which(u: Unit, prev_word: str, nxt: Unit | None) -> bool:
+    """'into the next lane', 'one van from next lane': which lane, not what comes next."""
+    return u.word == "next" and len(u.tokens) == 1 and (prev_word in ("the", "a", "this", "that", "its") or
+                                                        nxt is not None and nxt.tokens[0].word in PLACES_NEXT)
+
+
+PLACES_NEXT = {"lane", "lanes", "junction", "intersection", "exit", "road", "street", "crossing", "crosswalk"}
+
+
 def _what_a_label_names(units: list[Unit], first: int) -> bool:
     """'Actor 2: oncoming car turns left': the bare noun after a label and its colon says what the label is, one
     more road user, not the car named before."""
@@ -9616,6 +9623,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _screens_on_the_crossers_side(r)
     _out_from_the_parked_row(r)
     _numbered_lane_sides(r)
+    _from_the_same_place(r)
     _named_lane_sides(r)
     _included_and_listed_items_share(r)
     _members_keep_the_group_place(r)
@@ -10739,6 +10747,21 @@ def _named_lane_sides(r: _Reader) -> None:
         e.features.add(f"side_{side}")
         e.features |= {"ahead"} if ahead else {"behind"} if behind else set()
         r.notes.append(f"inferred: '{e.head}' in the {theirs} lane is to the {side} of the ego in the {own} lane")
+
+
+def _from_the_same_place(r: _Reader) -> None:
+    """'A car approaches from the left side road, and a cyclist approaches from the same road': from where the
+    last one named before it with a place came from."""
+    for e in r.entities:
+        if "same_place" not in e.features:
+            continue
+        e.features.discard("same_place")
+        before = [x for x in r.entities if x is not e and not x.is_ego and 0 <= x.said_at < e.said_at and
+                  x.features & PLACE_FEATURES]
+        if before:
+            model = max(before, key=lambda x: x.said_at)
+            e.features |= model.features & PLACE_FEATURES
+            r.notes.append(f"inferred: '{e.head}' comes from where '{model.head}' comes from")
 
 
 def _ego_placed_last(units: list[Unit]) -> bool:
