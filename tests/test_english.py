@@ -11286,3 +11286,47 @@ def test_a_pedestrian_lane_is_a_crosswalk():
 ])
 def test_from_the_same_road_as_the_one_named_before(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, kinds", [
+    ("Ego straight; bus stopped ahead pulls out; ped crosses in front of bus from the right", ["bus", "pedestrian"]),
+    ("VUT straight; school bus ahead stopped in same lane; child peds crossing in front of bus from right to left",
+     ["bus", "pedestrian", "pedestrian"]),
+])
+def test_a_bare_noun_after_in_front_of_is_the_one_named_before(prompt, kinds):
+    assert sorted(kind for kind, _, position in agents(prompt) if position != "ego") == kinds
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Signal pe ruka hua tha, peeche se ek truck aaya aur mere right side se nikal gaya.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "back_right")]),
+    ("Main left lane mein tha, ek bus right wali lane se mere aage ghus gayi.",
+     [("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+    ("Chaurahe pe maine right turn liya, saamne se ek car seedhi aa rahi thi.",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_right", "ego")]),
+    ("Zebra crossing pe ek aunty road cross kar rahi thi, maine gaadi rok di.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("Raat ko baarish ho rahi thi, aage wali car ne achanak brake maara.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Ek bike wala left side se aaya aur meri lane mein cut kiya.",
+     [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_right", "front_left")]),
+])
+def test_hinglish_is_read_as_the_english_meant(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_hinglish_weather_and_time_of_day():
+    weather = lower("Raat ko baarish ho rahi thi, aage wali car ne achanak brake maara.").scenario.weather
+    assert (weather.condition, weather.time) == ("mid_rain", "night")
+
+
+@pytest.mark.parametrize("prompt", ["The main road has two lanes and a car comes from the side road on the left.",
+                                    "Do not let the truck ahead of the ego turn; ek means nothing here."])
+def test_a_few_words_that_are_also_hindi_leave_english_as_it_is(prompt):
+    from ttsgc.lowering.lexicon import _hinglish
+    assert _hinglish(prompt.lower()) == prompt.lower()
+
+
+def test_a_clause_with_its_copula_before_a_comma_is_no_list_sharing_a_verb():
+    assert agents("I was in the left lane, a bus from the right lane cut in ahead of me.") == [
+        ("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]

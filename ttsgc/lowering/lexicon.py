@@ -270,6 +270,50 @@ def _without_calques(text: str) -> str:
     return text
 
 
+HINDI_MARKERS = {"hai", "tha", "thi", "se", "pe", "mein", "ek", "aur", "wala", "wali", "raha", "rahi", "gaya", "gayi",
+                 "ko", "bhi", "maine", "mere", "meri", "peeche", "aage", "saamne", "nahi", "ruk", "kiya", "karke",
+                 "liya", "wahan", "phir", "baarish", "raat", "gaadi", "hua", "diya"}
+PLACES_AFTER = {"peeche": "behind", "aage": "ahead of", "saamne": "in front of", "bagal mein": "beside",
+                "paas": "near"}
+PLACED_ONES = {"peeche": "behind", "aage": "ahead", "saamne": "oncoming"}
+HINDI_AFTER = {"mein": "in", "pe": "at", "se": "from"}  # a postposition said before its noun
+HELD_BY_PHRASES = {"lane", "side", "left", "right", "beech", "bagal", "gali", "road", "ke", "ki", "ka", "wali", "wala",
+                   "wale", "taraf", "usme", "isme", "jaldi", "tezi", "ekdum", "peeche", "aage", "saamne", "samne"}
+
+
+@lru_cache(maxsize=1)
+def _hindi_words() -> tuple[re.Pattern, dict[str, str]]:
+    """hinglish.txt as one pattern, its longest phrases first, and what each means."""
+    meant = {" ".join(words): meaning.lower() for meaning, words in _entries("hinglish")}
+    pattern = re.compile(r"\b(?:" + "|".join(re.escape(w).replace(r"\ ", r"[\s-]+")
+                                             for w in sorted(meant, key=len, reverse=True)) + r")\b")
+    return pattern, meant
+
+
+def _hinglish(text: str) -> str:
+    """Hindi in Latin letters among English words ('ek truck right wali lane mein mere aage chal raha tha'): read
+    as the English meant, in one pass, with a place said after its noun put before it ('bus ke peeche': behind
+    the bus; 'peeche wala truck': the truck behind). Only in a text with enough Hindi words to be Hinglish."""
+    if len(HINDI_MARKERS & set(re.findall(r"[a-z]+", text))) < 3:
+        return text
+    text = re.sub(r"\b(\w+) (?:ke|ki|ka) (just |theek |bilkul )?(peeche|aage|saamne|bagal mein|paas)\b",
+                  lambda m: f"{PLACES_AFTER[m.group(3)]} the {m.group(1)}", text)
+    text = re.sub(r"\b(?:(mere|hamare) )?(peeche|aage|saamne) wal[aei] (\w+)",
+                  lambda m: f"the {m.group(3)} {PLACED_ONES[m.group(2)]}" + (
+                      f" of {'me' if m.group(1) == 'mere' else 'us'}" if m.group(1) and m.group(2) != "saamne"
+                      else ""), text)
+    text = re.sub(r"\b(peeche|saamne|samne) se ((?:[a-z0-9-]+ ){1,8}?)(aa raha|aa rahi|aa rahe|aa gaya|aa gayi|aa gaye|"
+                  r"aaya|aayi|aaye|aata|aati)\b", lambda m: f"{m.group(2)}{m.group(3)} {m.group(1)} se", text)
+    # "peeche se ek truck aaya": a truck came from behind (not "from behind a truck")
+    text = re.sub(r"\b(?:main )?(?:[a-z]+ )?(bus|truck|taxi|auto|car|gaadi|tempo) chala(?:ta|ti) (?:hoon|hu|hun)\b",
+                  r"i drive a \1", text)  # "main DTC bus chalata hoon": the teller's own vehicle
+    pattern, meant = _hindi_words()
+    text = re.sub(r"\b([a-z][a-z-]*) (mein|pe|se)\b", lambda m: m.group(0) if m.group(1) in HELD_BY_PHRASES or
+                  " ".join(m.group(0).split()[-2:]) in meant or (m.group(1) + " " + m.group(2)) in meant
+                  else f"{HINDI_AFTER[m.group(2)]} {m.group(1)}", text)  # "andheri mein": in andheri
+    return re.sub(r"  +", " ", pattern.sub(lambda m: meant[" ".join(re.split(r"[\s-]+", m.group(0)))], text))
+
+
 RESPECTIVE_NOUNS = {"lanes": "lane", "sides": "side", "roads": "road", "side roads": "side road",
                     "directions": "direction", "arms": "arm", "exits": "exit"}
 LIST_ARTICLES = {"a", "an", "the", "one", "another"}
@@ -1567,7 +1611,7 @@ def tokenize(text: str) -> list[Token]:
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
-    text = _respectively(_without_calques(text))
+    text = _respectively(_without_calques(_hinglish(text)))
     text = AGENT_COMPOUND.sub(r"\1", text)  # "the ped-safety task", "a car-following model": no one on the road
     text = PERCEIVED.sub(r"\1", text)  # "keep three separate pedestrian tracks": a tracker's, no one on the road
     text = DEVICE_SWITCH.sub(r"\2", text)  # "turn fog on in the simulator", "turn your headlights on": no turn

@@ -3471,8 +3471,8 @@ def _a_list_sharing_a_plural_verb(current: list[Unit], units: list[Unit], k: int
     """'two cars, a motorbike are coming', 'the ego, a motorcycle on its left wait': a noun phrase, a comma and
     a singular noun phrase whose verb agrees only with both: a list without its 'and', no apposition, no clause."""
     if not _has_agent(current) or _has_verb(current) or any(x.category == "comma" for x in current) or \
-            not _starts_noun(units, k + 1):
-        return False
+            not _starts_noun(units, k + 1) or any(x.word in COPULAS for x in current):
+        return False  # ("I was in the left lane, a bus cut in": a clause of its own before the comma)
     head = next(j for j in range(k + 1, len(units)) if units[j].category == "agents")
     if units[head].tokens[-1].plural or units[head].meaning == "ego":
         return False
@@ -4881,8 +4881,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if count is not None and 1 < count < TOO_LARGE and words & {"some", "more"}:  # "a few", "more than ten"
         count = UNSPECIFIED.vague_count(count, len(r.entities))
     bare = not words and count is None and not plural and not label and not (
-        head + 1 < len(units) and units[head + 1].category == "positions") and not _what_a_label_names(units, first)
-    # ("car opposite waiting": another)
+        head + 1 < len(units) and units[head + 1].category == "positions" and not (
+            first > 0 and units[first - 1].tokens[-1].word == "of")) \
+        and not _what_a_label_names(units, first)
+    # ("car opposite waiting": another; "ped crosses in front of bus from the right": the bus named before)
     placed_by = _place_in_the_name(units, head, first)
     doing = units[head + 1].meaning if first == lo and head + 1 < len(units) and \
         units[head + 1].category == "actions" and units[head + 1].tokens[0].word.endswith("ing") else None
