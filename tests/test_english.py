@@ -11330,3 +11330,54 @@ def test_a_few_words_that_are_also_hindi_leave_english_as_it_is(prompt):
 def test_a_clause_with_its_copula_before_a_comma_is_no_list_sharing_a_verb():
     assert agents("I was in the left lane, a bus from the right lane cut in ahead of me.") == [
         ("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Night works on the motorway, right lane closed. A car in the left lane was sitting level with a lorry in the "
+     "right lane. At the taper the lorry went to merge left and the car would not let him in.",
+     [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "right")]),
+    ("Temp lights on red at the roadworks. A hatchback pulled up at the stop line, then a cyclist came round it from "
+     "behind and went straight through the red.", [("car", "stop", "ego"), ("cyclist", "go_straight", "back")]),
+])
+def test_a_report_from_road_works_is_told_about_the_first_vehicle_it_names(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_works_lorry_parked_on_the_shoulder_is_the_scene_the_ego_passes():
+    assert ("truck", "stop", "front_right") in agents("roadworks: lorry parked on the hard shoulder, worker walking "
+                                                       "across")
+
+
+def test_a_flaggers_stop_board_is_no_one_stopping():
+    assert agents("Flagging at the roadworks today, I had a van go straight through my stop board while a tipper "
+                  "came towards it.") == [("car", "go_straight", "ego"), ("truck", "go_straight", "front_left")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was riding my bicycle northbound in the bike lane when an oncoming SUV turned left across my path.",
+    "Shoutout to the Tesla that passed me from behind and then turned right straight across my bike lane.",
+])
+def test_a_cyclists_own_bicycle_and_bike_lane_tell_of_a_rider_reporting_a_driver(prompt):
+    said = agents(prompt)
+    assert said[0][2] == "ego" and said[0][1].startswith("turn") and ("cyclist", "go_straight") in [
+        (kind, action) for kind, action, _ in said]
+    assert len(said) == 2
+
+
+@pytest.mark.parametrize("prompt", [
+    "From the bus I saw a lorry ahead of us turn left at the junction while a cyclist on its inside went straight.",
+    "The school bus I ride was turning right at the lights while a kid on a bike came straight on the other way.",
+])
+def test_a_passenger_tells_of_the_bus_they_ride_by_more_names(prompt):
+    assert next(a for a in agents(prompt) if a[2] == "ego")[0] == "bus"
+
+
+def test_waiting_for_a_bus_is_not_riding_it():
+    assert next(a for a in agents("The bus I was waiting for was late. A red hatchback turned left at the junction "
+                                  "and a cyclist came the other way.") if a[2] == "ego")[0] == "car"
+
+
+@pytest.mark.parametrize("prompt", ["The ego goes straight. A red Ford Transit Custom van overtakes it.",
+                                    "The ego goes straight. A Toyota Hilux Invincible pickup overtakes it."])
+def test_a_model_its_trim_and_its_noun_are_one_vehicle(prompt):
+    assert len(agents(prompt)) == 2

@@ -220,7 +220,13 @@ ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|do
                       NOT_ITS_BODY +
                       r"|(?:i|we)\s+(?:rode|took|caught|got\s+on)\s+(?:the|our|a)\s+(?:bus|coach)\b" + NOT_ITS_BODY +
                       r"|(?:our|your)\s+(?:bus|coach)\b" + NOT_ITS_BODY + r"|overnight\s+coach|"
-                      r"(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b)", re.I)
+                      r"(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b|"
+                      r"(?:from|out\s+of)\s+the\s+(?:bus|coach)\s+window\b|"
+                      r"from\s+the\s+(?:bus|coach),?\s+(?:i|we)\s+(?:saw|watched|could\s+see|noticed)\b|"
+                      r"from\s+the\s+top\s+deck\b|the\s+(?:school\s+)?(?:bus|coach)\s+(?:i|we)\s+(?:(?:was|were|am|are)\s+"
+                      r"(?:on|in|riding|sitting|sat)|ride|rode|took|caught)\b|"
+                      r"on\s+which\s+(?:i|we)\s+(?:was|were)\s+(?:a\s+)?passengers?\b)", re.I)
+# ("from the bus window I watched", "the bus I was on", "the route 47 bus, on which I was a passenger")
 OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
 OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|city\s+|double[\s-]decker\s+)?"
                      r"(?:bus|coach|greyhound)\b" + NOT_ITS_BODY + r"|"

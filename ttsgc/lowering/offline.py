@@ -6288,7 +6288,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     r.last_mentions, r.clause_mentions = r.clause_mentions, []
     heads = [i for i, u in enumerate(units) if u.category == "agents" and not (  # "an adult pedestrian"
         u.meaning not in ("ego", "none") and i + 1 < len(units) and units[i + 1].category == "agents"
-        and units[i + 1].meaning not in ("ego", "none")) and not _model_named_before(units, i) and not (
+        and units[i + 1].meaning not in ("ego", "none")) and not _model_named_before(units, i) and \
+        not _a_model_then_its_noun(units, i) and not (
         u.tokens[-1].possessive and u.meaning in ("car", "pedestrian") and u.tokens[-1].base in DRIVING_PEOPLE | {"driver"} and
         i + 1 < len(units) and units[i + 1].category == "agents" and units[i + 1].meaning == "none")]
     # ("the other driver's passenger got out": the passenger, on board that car, no one on the road)
@@ -7919,6 +7920,18 @@ def _named_with(r: _Reader, word: str, within: int) -> list[Entity]:
     """The single road users whose noun had `word` said up to `within` words before it ('a white Volvo truck')."""
     return [e for e in r.entities if not e.is_ego and e.count == 1 and e.said_at > 0 and
             word in {t.word for t in r.tokens[max(0, e.said_at - within):e.said_at]}]
+
+
+def _a_model_then_its_noun(units: list[Unit], i: int) -> bool:
+    """'a red Ford Transit Custom van', 'a Toyota Hilux Invincible pickup': a make or model, a word of its trim
+    the lexicon does not know, then the vehicle's noun: one vehicle, named by the noun."""
+    if i + 2 >= len(units):
+        return False
+    u, trim, noun = units[i], units[i + 1], units[i + 2]
+    return u.category == noun.category == "agents" and u.meaning in V.EGO_TYPES and noun.meaning in V.EGO_TYPES \
+        and trim.category == "word" and len(trim.tokens) == 1 and trim.word not in lexicon().vocabulary and \
+        trim.word not in lexicon().function_words and trim.word not in PAINT and trim.word.isalpha() and \
+        not u.tokens[-1].plural
 
 
 def _named_by_its_make(r: _Reader, u: Unit) -> list[Entity]:
@@ -9610,6 +9623,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_ego_said_again(r)
     _the_speakers_vehicle_by_a_part(r)
     _the_learner_at_the_wheel(r)
+    _works_report(r)
     _witness_on_foot(r)
     _rider_reporting_a_driver(r)
     _the_patients_vehicle(r)
@@ -10165,7 +10179,7 @@ def _the_learner_at_the_wheel(r: _Reader) -> None:
 
 TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), ("stop", "slow", "bat"),
                    ("my", "stop", "go"), ("flagging",), ("my", "end"), ("to", "my", "red"), ("at", "my", "red"),
-                   ("spun", "the", "board"), ("spun", "it", "to"), ("waved", "through"))
+                   ("spun", "the", "board"), ("spun", "it", "to"), ("waved", "through"), ("speed", "gun"))
 # a road-works operative's words for holding and releasing traffic: the teller is on foot at the roadside
 
 
@@ -10173,6 +10187,28 @@ OWN_MOBILITY_AIDS = (("my", "wheelchair"), ("my", "chair"), ("my", "power", "cha
                      ("my", "walker"), ("my", "rollator"), ("my", "walking", "frame"), ("my", "white", "cane"))
 MET_BY = {"towards", "toward", "past", "beside", "at", "across", "round", "around", "into", "hit", "missed", "clipped",
           "struck"}  # "came straight at me", "turned left across me", "nearly hit me": a witness in the way
+
+
+WORKS_WORDS = (("roadworks",), ("road", "works"), ("night", "works"), ("taper",), ("flagger",), ("flagging",),
+               ("portaflow",), ("portaflows",), ("banksman",), ("temp", "lights"), ("temporary", "lights"),
+               ("stop", "go"), ("stop", "slow"), ("shuttle", "working"), ("speed", "gun"))
+
+
+def _works_report(r: _Reader) -> None:
+    """'Night works on the M1, right lane closed. Car in the left lane was sitting level with a semi ...', 'Temp
+    lights on red and a Micra pulled up at the stop line': a report from road works, by staff who name no one
+    at a wheel, is told about the first vehicle it names: the ego."""
+    words = [t.word for t in r.tokens]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if not _says_any(words, WORKS_WORDS) or ego is not None and ego.head != "ego" or \
+            any(u.category == "agents" and u.meaning == "ego" for u in r.units) or \
+            (FIRST_PERSON | {"we", "us", "our", "driving", "drove"}) & set(words):
+        return  # (a text that names the ego is told from there; a teller who says "I" or "my" is read as a witness)
+    first = min((e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and
+                 e.parent is None and e.said_at >= 0), key=lambda e: e.said_at, default=None)
+    if first is not None and first.road_type != "shoulder" and "parked" not in first.features:  # (a works lorry
+        # parked on the shoulder is the scene the ego passes)
+        _now_the_ego(r, first, "a report from road works is told about the first vehicle it names")
 
 
 def _witness_on_foot(r: _Reader) -> None:
@@ -10262,7 +10298,8 @@ PEDAL_WORDS = {"bicycle", "pedalling", "pedaling", "pedalled", "pedaled", "handl
 PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), ("i", "cycle"), ("cycle", "commuter"),
                  ("my", "bicycle"), ("in", "the", "cycle", "lane"), ("in", "the", "bike", "lane"),
                  ("i'm", "a", "cyclist"), ("i", "am", "a", "cyclist"), ("i'm", "a", "cycle"), ("my", "arm", "out"),
-                 ("child", "seat", "on", "the", "back"))  # (not "the cycle
+                 ("child", "seat", "on", "the", "back"), ("cycle", "lane"), ("bike", "lane"), ("cycle", "track"),
+                 ("bike", "path"), ("advanced", "stop", "box"))  # (not "the cycle
 # courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
 MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
 REPORTING_WORDS = {"reporting", "report", "complaint", "file"}
@@ -10280,6 +10317,9 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     teller (behind me: the cyclist ahead)."""
     ego = next((e for e in r.entities if e.is_ego), None)
     words = [t.word for t in r.tokens]
+    own_bikes = [e for e in r.entities if e.type == "cyclist" and not e.is_ego and e.said_at > 0 and
+                 r.tokens[e.said_at - 1].word in ("my", "our") and e.head in ("bicycle", "bike", "pushbike", "cycle",
+                                                                              "push bike")]
     reported_riding = set(words) & {"riding", "rode"} and set(words) & REPORTING_WORDS  # "I'm reporting a police
     # patrol car ... it overtook me ... while I was riding past a line of parked cars": a rider's report of a driver
     on_a_bike = (set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES) or reported_riding) and \
@@ -10287,8 +10327,12 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
         not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")))
     if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or \
             ego.type not in ("car", "motorcycle") or ego.aliases - FIRST_PERSON - {"you"} or not on_a_bike or \
-            any(e.type == "cyclist" and not e.is_ego for e in r.entities):
+            any(e.type == "cyclist" and not e.is_ego and e not in own_bikes for e in r.entities):
         return
+    for e in own_bikes:  # "I was riding my bicycle northbound", "I was on my bicycle on the roundabout, going
+        r.entities.remove(e)  # straight over": the teller's own bicycle, no one else, and what it did the teller did
+        ego.actions += e.actions
+        ego.features |= e.features
     movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
               and e.relative_to is None and any(a[4] not in ("stop", "try") for a in e.actions)]
     if not movers:
