@@ -11381,3 +11381,29 @@ def test_waiting_for_a_bus_is_not_riding_it():
                                     "The ego goes straight. A Toyota Hilux Invincible pickup overtakes it."])
 def test_a_model_its_trim_and_its_noun_are_one_vehicle(prompt):
     assert len(agents(prompt)) == 2
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("A lorry travelling at 15 m/s comes up behind a cyclist riding at 6 m/s. The lorry driver passes the cyclist at "
+     "a constant 15 m/s.", "truck"),
+    ("A fire engine goes through a red light at a crossroads at 18 m/s, coming from the road on the left. A car is "
+     "approaching the crossroads on green at 14 m/s when its driver hears the siren and brakes.", "car"),
+])
+def test_a_text_naming_no_ego_is_told_from_the_one_driver_at_the_controls(prompt, ego):
+    said = agents(prompt)
+    assert sum(1 for a in said if a[2] == "ego") == 1 and next(a for a in said if a[2] == "ego")[0] == ego
+    assert len(said) == 2
+
+
+def test_a_driver_who_only_claims_is_not_at_the_controls():
+    said = agents("Client was in the left lane. A Jeep in the right lane just ahead of client cut into client's lane "
+                  "right in front of her. Jeep driver claims client was tailgating.")
+    assert ("car", "change_lane_to_left", "front_right") in said
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was riding my e-scooter straight in the bike lane when a sedan pulled out in front of me.",
+    "On my e-scooter in the cycle lane going straight when a white van came past me.",
+])
+def test_the_tellers_own_e_scooter_is_ridden_as_a_scooter(prompt):
+    assert next(a for a in agents(prompt) if a[2] == "ego")[0] == "motorcycle"

@@ -9624,6 +9624,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_speakers_vehicle_by_a_part(r)
     _the_learner_at_the_wheel(r)
     _works_report(r)
+    _the_one_driver_spoken_of(r)
     _witness_on_foot(r)
     _rider_reporting_a_driver(r)
     _the_patients_vehicle(r)
@@ -10192,6 +10193,41 @@ MET_BY = {"towards", "toward", "past", "beside", "at", "across", "round", "aroun
 WORKS_WORDS = (("roadworks",), ("road", "works"), ("night", "works"), ("taper",), ("flagger",), ("flagging",),
                ("portaflow",), ("portaflows",), ("banksman",), ("temp", "lights"), ("temporary", "lights"),
                ("stop", "go"), ("stop", "slow"), ("shuttle", "working"), ("speed", "gun"))
+
+
+REACTING = {"reacts", "reacted", "notices", "noticed", "hears", "heard", "sees", "saw", "spots", "spotted", "brakes",
+            "braked", "applies", "applied", "takes", "took", "decides", "decided", "passes", "passed", "swerves",
+            "swerved", "steers", "steered", "accelerates", "accelerated", "slows", "slowed"}  # at the controls
+
+
+def _the_one_driver_spoken_of(r: _Reader) -> None:
+    """'A lorry ... comes up behind a cyclist. The lorry driver passes the cyclist', 'A car is approaching the
+    crossroads ... when its driver hears the siren': a text that names no ego (a word problem, a report told in
+    the third person) is told from the seat of the one driver it speaks of; that driver's vehicle is the ego."""
+    words = [t.word for t in r.tokens]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is not None and (ego.head != "ego" or ego.said_at >= 0) or \
+            any(u.category == "agents" and u.meaning == "ego" for u in r.units) or \
+            (FIRST_PERSON | {"we", "us", "our", "you", "your"}) & set(words):
+        return
+    vehicles = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
+                and e.said_at >= 0]
+    owners = []
+    for k, w in enumerate(words):
+        if w != "driver" or k == 0 or not set(words[k + 1:k + 3]) & REACTING:
+            continue  # ("the Jeep driver claims", "car driver walking wounded": no one at the controls)
+        before = words[k - 1]
+        if before in ("its", "her", "his"):
+            owner = max((e for e in vehicles if e.said_at < k), key=lambda e: e.said_at, default=None)
+        elif k + 2 < len(words) and words[k + 1] == "of" and before == "the":
+            owner = next((e for e in vehicles if words[k + 2] == e.head or words[k + 2] in e.aliases or
+                          k + 3 < len(words) and words[k + 3] in (e.head, *e.aliases)), None)
+        else:
+            owner = next((e for e in vehicles if before == e.head or before in e.aliases), None)
+        if owner is not None:
+            owners.append(owner)
+    if owners and all(o is owners[0] for o in owners):
+        _now_the_ego(r, owners[0], "the one driver the text speaks of drives it")
 
 
 def _works_report(r: _Reader) -> None:
