@@ -11299,7 +11299,7 @@ def test_a_bare_noun_after_in_front_of_is_the_one_named_before(prompt, kinds):
 
 @pytest.mark.parametrize("prompt, expected", [
     ("Signal pe ruka hua tha, peeche se ek truck aaya aur mere right side se nikal gaya.",
-     [("car", "go_straight", "ego"), ("truck", "go_straight", "back_right")]),
+     [("car", "stop", "ego"), ("truck", "go_straight", "back_right")]),
     ("Main left lane mein tha, ek bus right wali lane se mere aage ghus gayi.",
      [("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
     ("Chaurahe pe maine right turn liya, saamne se ek car seedhi aa rahi thi.",
@@ -11310,6 +11310,8 @@ def test_a_bare_noun_after_in_front_of_is_the_one_named_before(prompt, kinds):
      [("car", "go_straight", "ego"), ("car", "stop", "front")]),
     ("Ek bike wala left side se aaya aur meri lane mein cut kiya.",
      [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_right", "front_left")]),
+    ("Signal pe ruk gaya tha, ek auto left se aaya aur mere aage ruk gaya.",
+     [("car", "stop", "ego"), ("car", "stop", "front_left")]),
 ])
 def test_hinglish_is_read_as_the_english_meant(prompt, expected):
     assert agents(prompt) == expected
@@ -11407,3 +11409,31 @@ def test_a_driver_who_only_claims_is_not_at_the_controls():
 ])
 def test_the_tellers_own_e_scooter_is_ridden_as_a_scooter(prompt):
     assert next(a for a in agents(prompt) if a[2] == "ego")[0] == "motorcycle"
+
+
+@pytest.mark.parametrize("prompt", [
+    "My car in the left lane, the truck in the middle lane he change to the left lane in front of my car.",
+    "Test vehicle in left lane, the tricycle in right lane suddenly change lane in front of ego.",
+])
+def test_a_placed_road_user_before_a_comma_shares_no_verb_with_the_next(prompt):
+    assert [a for a in agents(prompt) if a[2] == "ego"] == [("car", "go_straight", "ego")]
+
+
+def test_pedestrian_lights_are_a_signal_not_a_pedestrian():
+    prompt = "The ego stops at a crosswalk with pedestrian lights. Two pedestrians cross from the left."
+    assert sum(1 for kind, _, _ in agents(prompt) if kind == "pedestrian") == 2
+    assert "traffic_light" in road(prompt).required_signals
+
+
+@pytest.mark.parametrize("prompt", ["Only after the cyclist had cleared the junction did the ego turn right.",
+                                    "The ego waited at the lights while a cyclist went straight. Only then did it "
+                                    "turn right."])
+def test_only_after_did_is_said_of_the_one_after_did(prompt):
+    said = agents(prompt)
+    assert ("cyclist", "go_straight") in [(kind, action) for kind, action, _ in said]
+    assert ("car", "turn_right", "ego") in said
+
+
+def test_a_conversion_to_a_side_is_a_turn():
+    assert ("car", "turn_left", "road_of_straight") in agents(
+        "The ego goes straight, but a taxi from the opposite direction makes the conversion to the left in front of it.")

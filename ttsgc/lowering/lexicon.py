@@ -277,6 +277,8 @@ PLACES_AFTER = {"peeche": "behind", "aage": "ahead of", "saamne": "in front of",
                 "paas": "near"}
 PLACED_ONES = {"peeche": "behind", "aage": "ahead", "saamne": "oncoming"}
 HINDI_AFTER = {"mein": "in", "pe": "at", "se": "from"}  # a postposition said before its noun
+HINDI_VERBS_MEANT = ("stopped", "stood", "came", "went past", "went", "drove", "turned left", "turned right",
+                     "changed lane", "cut in", "overtook", "crossed", "braked", "waited", "parked")
 HELD_BY_PHRASES = {"lane", "side", "left", "right", "beech", "bagal", "gali", "road", "ke", "ki", "ka", "wali", "wala",
                    "wale", "taraf", "usme", "isme", "jaldi", "tezi", "ekdum", "peeche", "aage", "saamne", "samne"}
 
@@ -311,7 +313,10 @@ def _hinglish(text: str) -> str:
     text = re.sub(r"\b([a-z][a-z-]*) (mein|pe|se)\b", lambda m: m.group(0) if m.group(1) in HELD_BY_PHRASES or
                   " ".join(m.group(0).split()[-2:]) in meant or (m.group(1) + " " + m.group(2)) in meant
                   else f"{HINDI_AFTER[m.group(2)]} {m.group(1)}", text)  # "andheri mein": in andheri
-    return re.sub(r"  +", " ", pattern.sub(lambda m: meant[" ".join(re.split(r"[\s-]+", m.group(0)))], text))
+    text = pattern.sub(lambda m: meant[" ".join(re.split(r"[\s-]+", m.group(0)))], text)
+    text = re.sub(r"\b((?:at|on|in|from) the [a-z]+(?: [a-z]+)?) (" + "|".join(HINDI_VERBS_MEANT) + r")\b",
+                  r"\2 \1", text)  # "signal pe ruk gaya": stopped at the signal, the verb before its place
+    return re.sub(r"  +", " ", text)
 
 
 RESPECTIVE_NOUNS = {"lanes": "lane", "sides": "side", "roads": "road", "side roads": "side road",
@@ -1597,6 +1602,8 @@ ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*(?:m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?
 METRES_PER_SECOND = re.compile(r"\b(\d{1,3}(?:\.\d+)?)\s*(?:m\s?/\s?s|ms\^?-1|metres per second|meters per second)\b")
 VERB_THEN = re.compile(r"\b(makes?|made|making|does|did|turns?|turned|changes?|changed) then "
                        r"(?=(?:a|an|the|left|right|lanes?)\b)")
+ONLY_THEN_DID = re.compile(r"\bonly (?:(after|once|when) ([^.;!?]*?),?|then) did ((?:the |my |our |his |her )?[a-z]+) "
+                           r"(?=[a-z])")
 LOGGED_SPEED = re.compile(r"\bv\s?=\s?(\d{1,3}(?:\.\d+)?)(?!\s*(?:km|kph|mph|m\s?/|ms\b|[./]?\d))")  # "v=12"
 
 
@@ -1642,6 +1649,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\blet's\b", "let us", text)
     text = VERB_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3)} {m.group(2)}", text)
     text = VERB_THEN.sub(r"then \1 ", text)  # "makes then a lane change" ("macht dann"): then makes it
+    text = ONLY_THEN_DID.sub(lambda m: (f"{m.group(1)} {m.group(2)}, " if m.group(1) else "then ") + m.group(3) + " ",
+                             text)  # "only after the cyclist had cleared did the ego turn": after it, the ego turns
     text = _without_attribution(text)
     text = re.sub(r"n't\b", " not", text).replace("can not", "cannot")
     text = re.sub(r"\b([a-z]+) (?:down|along|up|through) the ((?:left|right|middle|outside|inside|fast|slow|overtaking)"
