@@ -11437,3 +11437,13 @@ def test_only_after_did_is_said_of_the_one_after_did(prompt):
 def test_a_conversion_to_a_side_is_a_turn():
     assert ("car", "turn_left", "road_of_straight") in agents(
         "The ego goes straight, but a taxi from the opposite direction makes the conversion to the left in front of it.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("In front of the ego is a stopped van.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("The ego goes straight. Behind the ego is a truck.", [("car", "go_straight", "ego"), ("truck", "go_straight",
+                                                                                         "back")]),
+    ("My car is on the right lane, behind me is a bus.", [("bus", "go_straight", "back"), ("car", "go_straight", "ego")]),
+])
+def test_a_place_said_before_its_subject_and_a_copula(prompt, expected):
+    assert agents(prompt) == expected

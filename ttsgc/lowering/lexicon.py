@@ -1602,6 +1602,13 @@ ACCELERATION = re.compile(r"\b\d+(?:\.\d+)?\s*(?:m\s?/\s?s(?:\^?2|\u00b2|\s?/\s?
 METRES_PER_SECOND = re.compile(r"\b(\d{1,3}(?:\.\d+)?)\s*(?:m\s?/\s?s|ms\^?-1|metres per second|meters per second)\b")
 VERB_THEN = re.compile(r"\b(makes?|made|making|does|did|turns?|turned|changes?|changed) then "
                        r"(?=(?:a|an|the|left|right|lanes?)\b)")
+PLACE_THEN_SUBJECT = re.compile(
+    r"(^|[.;!?,]\s*|\band\s+|\bwhile\s+)((?:in front of|behind|ahead of|beside|next to|alongside|"
+    r"to the (?:left|right) of|(?:to|on) (?:its|my|our|his|her|their|the ego's) (?:left|right))"
+    r"(?: (?:the ego|me|us|it|him|her|them|the (?!wheel\b)[a-z]+))?)"
+    r" (is|was|are|were) ((?:(?:a|an|the|one|two|three|another)\s+)?[a-z]+"
+    r"(?:\s+(?!and\b|which\b|that\b|who\b|with\b)[a-z]+){0,3}?)"
+    r"(?=\s*(?:[,.;!?]|$|\band\b|\bwhich\b|\bthat\b|\bwho\b|\bwith\b))")  # a place said before its subject
 ONLY_THEN_DID = re.compile(r"\bonly (?:(after|once|when) ([^.;!?]*?),?|then) did ((?:the |my |our |his |her )?[a-z]+) "
                            r"(?=[a-z])")
 LOGGED_SPEED = re.compile(r"\bv\s?=\s?(\d{1,3}(?:\.\d+)?)(?!\s*(?:km|kph|mph|m\s?/|ms\b|[./]?\d))")  # "v=12"
@@ -1649,6 +1656,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\blet's\b", "let us", text)
     text = VERB_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3)} {m.group(2)}", text)
     text = VERB_THEN.sub(r"then \1 ", text)  # "makes then a lane change" ("macht dann"): then makes it
+    text = PLACE_THEN_SUBJECT.sub(lambda m: f"{m.group(1)}{m.group(4)} {m.group(3)} {m.group(2)}", text)
+    # "in front of the ego is a stopped van": a stopped van is in front of the ego
     text = ONLY_THEN_DID.sub(lambda m: (f"{m.group(1)} {m.group(2)}, " if m.group(1) else "then ") + m.group(3) + " ",
                              text)  # "only after the cyclist had cleared did the ego turn": after it, the ego turns
     text = _without_attribution(text)
