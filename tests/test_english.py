@@ -11447,3 +11447,8 @@ def test_a_conversion_to_a_side_is_a_turn():
 ])
 def test_a_place_said_before_its_subject_and_a_copula(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_one_behind_the_ego_overtaking_from_a_side_at_a_junction_passes_on_that_side():
+    assert agents("At the junction the ego turns left. A motorcycle behind the ego overtakes it from the left side.") \
+        == [("car", "turn_left", "ego"), ("motorcycle", "go_straight", "back_left")]

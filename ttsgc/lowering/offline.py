@@ -9281,11 +9281,12 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if "crosswalk" in f and e.type in V.VULNERABLE_TYPES and not walking:
         return "near_the_crosswalk", False
     from_side = next((s for s in SIDES if f"from_{s}" in f), None)
-    if from_side and e.type != "pedestrian" and junction and (not lane_move or action == "cut_in" and not f & {
+    if from_side and e.type != "pedestrian" and junction and not {"behind", "overtaking"} <= f and (
+            not lane_move or action == "cut_in" and not f & {
             "from_lane", "side_left", "side_right", "ego_lane", "into_ego_lane", "lane_said"} and e.came_along):
         return f"road_of_{from_side}_turn", False  # a cyclist crossing from the left; at a crossroads, one coming
         # from the right that shoots across in front, out of the road it came along (no lane named; not "cut in
-        # from the left at the signal")
+        # from the left at the signal", nor one behind the ego overtaking it from the left)
     bare = next((s for s in SIDES if f"bare_{s}" in f), None)  # "a minivan on your right" at a four-way stop
     if bare and not person and junction and not lane_move and not f & {"ahead", "behind", "level", "overtaking"} \
             and e.type not in V.TWO_WHEELER_TYPES \
