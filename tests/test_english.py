@@ -11251,8 +11251,8 @@ def test_a_logged_v_is_a_speed_in_metres_per_second():
 
 def test_the_bare_noun_a_label_is_said_to_be_is_one_more_road_user():
     assert agents("The ego turns right. Actor 1 is car from the left road, goes straight. Actor 2 is oncoming car, "
-                  "turns left.") == [("car", "go_straight", "road_of_left_turn"), ("car", "turn_left", "road_of_straight"),
-                                     ("car", "turn_right", "ego")]
+                  "turns left.") == [("car", "go_straight", "road_of_left_turn"),
+                                     ("car", "turn_left", "road_of_straight"), ("car", "turn_right", "ego")]
 
 
 def test_a_place_name_after_next_says_which_and_opens_no_stage():
@@ -11436,14 +11436,16 @@ def test_only_after_did_is_said_of_the_one_after_did(prompt):
 
 def test_a_conversion_to_a_side_is_a_turn():
     assert ("car", "turn_left", "road_of_straight") in agents(
-        "The ego goes straight, but a taxi from the opposite direction makes the conversion to the left in front of it.")
+        "The ego goes straight, but a taxi from the opposite direction makes the conversion to the left in front of "
+        "it.")
 
 
 @pytest.mark.parametrize("prompt, expected", [
     ("In front of the ego is a stopped van.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
     ("The ego goes straight. Behind the ego is a truck.", [("car", "go_straight", "ego"), ("truck", "go_straight",
                                                                                          "back")]),
-    ("My car is on the right lane, behind me is a bus.", [("bus", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("My car is on the right lane, behind me is a bus.",
+     [("bus", "go_straight", "back"), ("car", "go_straight", "ego")]),
 ])
 def test_a_place_said_before_its_subject_and_a_copula(prompt, expected):
     assert agents(prompt) == expected

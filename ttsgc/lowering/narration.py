@@ -57,7 +57,8 @@ EGO_NOUN = {"car": "the ego", "truck": "the ego truck", "bus": "the ego bus", "m
 _NOUN = r"(van|cab|taxi|car|vehicle|minibus|pickup|suv|truck|lorry|hgv|bus|coach|motorcycle|motorbike|scooter|moped)"
 DECLARATION_PATTERN = (
     r"(?:,\s*|\b(?:with|using|having)\s+)?\b(?:(?:our|the|my|this|that)\s+)?(?:(?P<adjective>[a-z]+)\s+)?" + _NOUN +
-    r"(?:\s+(?:no\.?\s*|#)?(?P<number>\d+))?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+(?:the\s+|our\s+)?(?:EGO_ROLE)\b"
+    r"(?:\s+(?:no\.?\s*|#)?(?P<number>\d+))?\s+(?:as|is|=|being|should be|will be|as the|to be)\s+"
+    r"(?:the\s+|our\s+)?(?:EGO_ROLE)\b"
     r"(?:\s+(?:vehicle|car))?(?:\s+for this)?(?:\s+please)?")
 ROLE_BODIES = {"bus", "truck", "lorry", "van", "motorcycle", "motorbike", "taxi", "cab", "shuttle", "coach"}
 
@@ -223,8 +224,8 @@ ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|do
                       r"(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b|"
                       r"(?:from|out\s+of)\s+the\s+(?:bus|coach)\s+window\b|"
                       r"from\s+the\s+(?:bus|coach),?\s+(?:i|we)\s+(?:saw|watched|could\s+see|noticed)\b|"
-                      r"from\s+the\s+top\s+deck\b|the\s+(?:school\s+)?(?:bus|coach)\s+(?:i|we)\s+(?:(?:was|were|am|are)\s+"
-                      r"(?:on|in|riding|sitting|sat)|ride|rode|took|caught)\b|"
+                      r"from\s+the\s+top\s+deck\b|the\s+(?:school\s+)?(?:bus|coach)\s+(?:i|we)\s+"
+                      r"(?:(?:was|were|am|are)\s+(?:on|in|riding|sitting|sat)|ride|rode|took|caught)\b|"
                       r"on\s+which\s+(?:i|we)\s+(?:was|were)\s+(?:a\s+)?passengers?\b)", re.I)
 # ("from the bus window I watched", "the bus I was on", "the route 47 bus, on which I was a passenger")
 OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
@@ -1131,14 +1132,15 @@ def _declared_ego(text: str, notes: list[str]) -> str:
     ego = EGO_NOUN.get(kind, f"the ego {noun}")  # "the ego ambulance"
     notes.append(f"read the {noun} as the ego (said so)")
     numbered = rf"\b{noun}\s+(?:no\.?\s*|#)?0*(\d+)\b" + NOT_A_QUANTITY
-    if m.group("number") is not None and any(int(n) != int(m.group("number")) for n in re.findall(numbered, said, re.I)):
+    number = int(m.group("number")) if m.group("number") is not None else None
+    if number is not None and any(int(n) != number for n in re.findall(numbered, said, re.I)):
         declared = m.group(0).lstrip(", ")  # "Car 1 is the ego ... car 2 is oncoming": the others are numbered alike,
         if not re.match(r"(?i)(?:with|using|having)\b", declared):  # and only car 1 is the ego
             said = said[:m.start()] + m.group(0)[:len(m.group(0)) - len(declared)] + ego + said[m.end():]
         else:
             said = text  # ("with car 1 as the ego, ..." says no more)
-        return _named_driver(re.sub(numbered, lambda n: ego if int(n.group(1)) == int(m.group("number")) else n.group(0),
-                                    said, flags=re.I), notes)
+        return _named_driver(re.sub(numbered, lambda n: ego if int(n.group(1)) == number else n.group(0), said,
+                                    flags=re.I), notes)
     plural = noun + ("es" if noun.endswith("s") else "s")
     text = re.sub(rf"\bone of (?:our|my|the) (?:[a-z]+ )?{plural}\b", ego, text, flags=re.I)
     text = re.sub(rf"\b(?:{FLEET_NOUNS})\s+(?:no\.?\s*|#)?\d{{2,4}}\b" + NOT_A_QUANTITY +

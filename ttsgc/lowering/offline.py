@@ -1980,8 +1980,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "road" and span[-1].word in ("crossing", "xing") and (
             len(span) == 1 or span[0].base in ("pedestrian", "ped")) and (
             nxt in VERB_AFTER_CROSSING or on_a_crossing or nxt in CROSSED_WITHOUT_ARTICLE and nxt2 not in (
-                "by", "from", "of") and not (prev is not None and prev.word in ("a", "an", "the")) or lone_piece or counted or (len(span) == 1 and (
-                after_person or after_verb or _coordinated_participle(tokens, m)))) and \
+                "by", "from", "of") and not (prev is not None and prev.word in ("a", "an", "the")) or lone_piece or
+            counted or (len(span) == 1 and (after_person or after_verb or _coordinated_participle(tokens, m)))) and \
             not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
                                          and len(span) == 1) and not (
                 nxt in ("without", "with") and nxt2 in UNCONTROLLED_BY):  # "pedestrian crossing without traffic
