@@ -11192,6 +11192,8 @@ def test_a_rider_reporting_a_driver_with_no_word_of_pedals(prompt, teller):
                                    ("car", "turn_right", "road_of_straight")]),
     ("Truck 1 is the ego and goes straight. Truck 2 comes from the left and turns right.",
      [("truck", "go_straight", "ego"), ("truck", "turn_right", "road_of_left_turn")]),
+    ("Our tram 1 is the ego. Tram 2 comes the other way.", [("bus", "go_straight", "ego"),
+                                                             ("bus", "go_straight", "front_left")]),
 ])
 def test_one_numbered_vehicle_declared_the_ego_leaves_the_others_numbered_alike(prompt, expected):
     assert agents(prompt) == expected

@@ -1118,10 +1118,10 @@ def _declared_ego(text: str, notes: list[str]) -> str:
     """'Our van is the ego', 'with the taxi as the ego', 'Van = ego': that vehicle, and its driver, are the ego
     wherever the text names them by role, by fleet name or by name."""
     declaration, any_declaration = _declarations()
+    said = text  # ("Car 1 is the ego, waiting" keeps the ego where the text names it)
     m = declaration.search(text)
     if m is not None:
         noun, kind = m.group(2).lower(), VEHICLE_NOUNS[m.group(2).lower()]  # the noun after the adjective
-        said = text  # ("Car 1 is the ego, waiting" keeps the ego where the text names it)
         text = declaration.sub("", text)
     else:  # "our tram is the ego", "with the ambulance as the ego": a vehicle the reader knows by another noun
         m = next((d for d in any_declaration.finditer(text) if _vehicle_kind(d.group(2).lower())), None)

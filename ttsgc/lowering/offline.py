@@ -8690,13 +8690,13 @@ def _placed_by_the_same_pronoun(r: _Reader, u: Unit) -> bool:
                y.start < u.start and x.tokens[0].sentence == sentence for x, y in zip(r.units, r.units[1:]))
 
 
+PLACES_NEXT = {"lane", "lanes", "junction", "intersection", "exit", "road", "street", "crossing", "crosswalk"}
+
+
 def _next_names_which(u: Unit, prev_word: str, nxt: Unit | None) -> bool:
     """'into the next lane', 'one van from next lane': which lane, not what comes next."""
     return u.word == "next" and len(u.tokens) == 1 and (prev_word in ("the", "a", "this", "that", "its") or
                                                         nxt is not None and nxt.tokens[0].word in PLACES_NEXT)
-
-
-PLACES_NEXT = {"lane", "lanes", "junction", "intersection", "exit", "road", "street", "crossing", "crosswalk"}
 
 
 def _what_a_label_names(units: list[Unit], first: int) -> bool:
@@ -10202,15 +10202,21 @@ REACTING = {"reacts", "reacted", "notices", "noticed", "hears", "heard", "sees",
             "swerved", "steers", "steered", "accelerates", "accelerated", "slows", "slowed"}  # at the controls
 
 
+def _names_no_ego(r: _Reader, words: list[str]) -> bool:
+    """No word names the ego, and no one speaks as a participant ('I', 'we', 'you'): a text told in the third
+    person of road users none of which is said to be the one under test."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    return (ego is None or ego.head == "ego" and ego.said_at < 0) and \
+        not any(u.category == "agents" and u.meaning == "ego" for u in r.units) and \
+        not (FIRST_PERSON | {"we", "us", "our", "you", "your"}) & set(words)
+
+
 def _the_one_driver_spoken_of(r: _Reader) -> None:
     """'A lorry ... comes up behind a cyclist. The lorry driver passes the cyclist', 'A car is approaching the
     crossroads ... when its driver hears the siren': a text that names no ego (a word problem, a report told in
     the third person) is told from the seat of the one driver it speaks of; that driver's vehicle is the ego."""
     words = [t.word for t in r.tokens]
-    ego = next((e for e in r.entities if e.is_ego), None)
-    if ego is not None and (ego.head != "ego" or ego.said_at >= 0) or \
-            any(u.category == "agents" and u.meaning == "ego" for u in r.units) or \
-            (FIRST_PERSON | {"we", "us", "our", "you", "your"}) & set(words):
+    if not _names_no_ego(r, words):
         return
     vehicles = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
                 and e.said_at >= 0]
@@ -10237,11 +10243,8 @@ def _works_report(r: _Reader) -> None:
     lights on red and a Micra pulled up at the stop line': a report from road works, by staff who name no one
     at a wheel, is told about the first vehicle it names: the ego."""
     words = [t.word for t in r.tokens]
-    ego = next((e for e in r.entities if e.is_ego), None)
-    if not _says_any(words, WORKS_WORDS) or ego is not None and ego.head != "ego" or \
-            any(u.category == "agents" and u.meaning == "ego" for u in r.units) or \
-            (FIRST_PERSON | {"we", "us", "our", "driving", "drove"}) & set(words):
-        return  # (a text that names the ego is told from there; a teller who says "I" or "my" is read as a witness)
+    if not _says_any(words, WORKS_WORDS) or not _names_no_ego(r, words) or {"driving", "drove"} & set(words):
+        return  # (a teller who says "I" or "my" is read as a witness: _witness_on_foot)
     first = min((e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and
                  e.parent is None and e.said_at >= 0), key=lambda e: e.said_at, default=None)
     if first is not None and first.road_type != "shoulder" and "parked" not in first.features:  # (a works lorry
