@@ -3471,9 +3471,11 @@ def _a_list_sharing_a_plural_verb(current: list[Unit], units: list[Unit], k: int
     """'two cars, a motorbike are coming', 'the ego, a motorcycle on its left wait': a noun phrase, a comma and
     a singular noun phrase whose verb agrees only with both: a list without its 'and', no apposition, no clause."""
     if not _has_agent(current) or _has_verb(current) or any(x.category == "comma" for x in current) or \
-            not _starts_noun(units, k + 1) or any(x.word in COPULAS or x.category == "positions" for x in current):
+            not _starts_noun(units, k + 1) or any(x.word in COPULAS for x in current) or \
+            any(x.category == "positions" for x in current) and units[k + 1].word in ("the", "a", "an"):
         return False  # ("I was in the left lane, a bus cut in", "my car in the left lane, the truck he change lane":
-        # a clause of its own before the comma, verbless or not)
+        # a clause of its own before the comma, verbless or not; "vehicle behind me, white Ford Transit, failed to
+        # stop" names one)
     head = next(j for j in range(k + 1, len(units)) if units[j].category == "agents")
     if units[head].tokens[-1].plural or units[head].meaning == "ego":
         return False
