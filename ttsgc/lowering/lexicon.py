@@ -311,7 +311,8 @@ def _hinglish(text: str) -> str:
                   r"i drive a \1", text)  # "main DTC bus chalata hoon": the teller's own vehicle
     pattern, meant = _hindi_words()
     text = re.sub(r"\b([a-z][a-z-]*) (mein|pe|se)\b", lambda m: m.group(0) if m.group(1) in HELD_BY_PHRASES or
-                  m.group(0) in meant else f"{HINDI_AFTER[m.group(2)]} {m.group(1)}", text)  # "andheri mein": in andheri
+                  m.group(0) in meant else f"{HINDI_AFTER[m.group(2)]} {m.group(1)}", text)
+    # ("andheri mein": in andheri)
     text = pattern.sub(lambda m: meant[" ".join(re.split(r"[\s-]+", m.group(0)))], text)
     text = re.sub(r"\b((?:at|on|in|from) the [a-z]+(?: [a-z]+)?) (" + "|".join(HINDI_VERBS_MEANT) + r")\b",
                   r"\2 \1", text)  # "signal pe ruk gaya": stopped at the signal, the verb before its place
