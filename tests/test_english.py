@@ -11456,3 +11456,214 @@ def test_a_place_said_before_its_subject_and_a_copula(prompt, expected):
 def test_one_behind_the_ego_overtaking_from_a_side_at_a_junction_passes_on_that_side():
     assert agents("At the junction the ego turns left. A motorcycle behind the ego overtakes it from the left side.") \
         == [("car", "turn_left", "ego"), ("motorcycle", "go_straight", "back_left")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A van on my right cuts across the front of my car.",
+    "A van on my right cuts across my front.",
+    "I'm in the artic. A white van comes up my offside and cuts straight across the front of the cab.",
+])
+def test_a_cut_across_the_egos_front_ends_there_and_starts_beside(prompt):
+    assert [a for a in agents(prompt) if a[2] != "ego"] == [("car", "change_lane_to_left", "right")]
+
+
+def test_a_vehicles_cab_is_part_of_it_not_a_taxi():
+    assert agents("At the lights a lorry next to you on the left is turning left. Don't sit beside its cab in the "
+                  "blind spot.") == [
+        ("car", "go_straight", "ego"), ("truck", "turn_left", "left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Job card 3320 - 2020 Hyundai Tucson. Customer states he was turning left at the intersection when an oncoming "
+     "SUV came through.", [("car", "go_straight", "road_of_straight"), ("car", "turn_left", "ego")]),
+    ("Job card 1178 - 2012 Nissan Leaf. Customer states she stopped at the four-way stop, then pulled out to go "
+     "straight across.", [("car", "go_straight", "ego"), ("car", "stop", "ego")]),
+])
+def test_a_job_cards_heading_names_the_customers_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("Tanker driver. Taking a left at the crossroads, I swung wide and a cyclist tried to go up my inside.", "truck"),
+    ("HGV driver here. On the motorway in lane one, a car cut in front of me.", "truck"),
+    ("Bus driver here, twenty years. A car cut in front of me.", "bus"),
+    ("Lorry driver. Turning right at the lights, there was a bus waiting opposite.", "truck"),
+])
+def test_a_first_line_saying_what_the_speaker_drives_names_the_ego(prompt, ego):
+    said = agents(prompt)
+    assert [a[0] for a in said if a[2] == "ego"] == [ego]
+    assert sum(1 for a in said if a[0] == ego) == 1 + (ego == "bus" and "bus waiting" in prompt)
+
+
+@pytest.mark.parametrize("prompt", ["Empty trailer, fog on the motorway at dawn. Kept her at 40.",
+                                    "Trucking on the interstate at night in the snow, nothing else about."])
+def test_a_truckers_words_tell_of_a_truck_with_no_speaker_named(prompt):
+    assert agents(prompt) == [("truck", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A pickup ahead of me spun across into my lane and stopped there broadside.",
+    "A red hatchback ahead of me aquaplaned, spun and came to rest in front of me.",
+])
+def test_one_come_to_rest_athwart_the_egos_lane_blocks_it(prompt):
+    assert ("car", "block_the_ego", "front") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, action", [
+    ("Control from Tango 4-2, we're northbound approaching junction 28, a silver Audi ahead of us is weaving.",
+     "go_straight"),
+    ("22:10 Bravo 1-1 stationary at red signal Queen St. A moped alongside on our left went through on red.", "stop"),
+    ("1318 Echo 4 turning right out of Abbey Rd, white van approaching from our right at speed.", "turn_right"),
+])
+def test_a_patrols_call_sign_tells_of_a_police_car(prompt, action):
+    assert ("police", action, "ego") in agents(prompt)
+
+
+def test_a_make_said_as_a_model_is_no_call_sign():
+    assert agents("My Golf 4 turned left at the junction.") == [("car", "turn_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Veh 1 white Transit tailgating a bus directly in front.", [("bus", "go_straight", "front"),
+                                                                 ("car", "go_straight", "ego")]),
+    ("V1 blue Ford Focus turning R into Forge Ln collided with V2 white Transit travelling SB.",
+     [("car", "go_straight", "front"), ("car", "turn_right", "ego")]),
+    ("V1 turns left. V2 white HGV goes straight.", [("car", "turn_left", "ego"), ("truck", "go_straight", "front")]),
+])
+def test_a_label_then_paint_and_a_noun_is_one_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Riding west into the low sun on Clifton Road when a Corsa coming the other way turned right across me.",
+     [("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_straight")]),
+    ("Yet again a delivery van parked right across the cycle lane, which forced me out into the traffic to get round "
+     "it.", [("car", "stop", "ego"), ("cyclist", "go_straight", "back")]),
+])
+def test_a_rider_with_no_bicycle_named_reports_a_driver(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_motorbike_reported_by_a_cyclist_is_the_ego():
+    said = agents("A moped rider came up behind me in the cycle lane and squeezed past at speed.")
+    assert [a[0] for a in said] == ["cyclist", "motorcycle"] and said[1][2] == "ego"
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was riding my e-scooter along the high street when a moped came up behind me.",
+    "Riding the lime scooter home when a taxi sat right on my back wheel.",
+])
+def test_a_rider_on_a_scooter_of_their_own_stays_the_ego(prompt):
+    assert next(a for a in agents(prompt) if a[2] == "ego")[0] == "motorcycle"
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I use a mobility scooter and was halfway over the zebra when a silver hatchback came straight through.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("I was already on the crossing in my wheelchair when a white van swung left across it.",
+     [("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+])
+def test_a_teller_in_a_wheelchair_on_the_crossing_is_met_there(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("Was on the 16 coming back from the hospital. A car from the left shot across in front of us, the driver did "
+     "well to stop.", "bus"),
+    ("Honestly the 42 driver is a menace. Swung into the left lane and a cyclist alongside us had to swerve.", "bus"),
+    ("We were on the 101 and the driver in front braked hard.", "car"),
+    ("I was on the 405 when the car in front of me braked hard.", "car"),
+])
+def test_a_bus_ridden_by_its_route_number(prompt, ego):
+    assert [a[0] for a in agents(prompt) if a[2] == "ego"][:1] == [ego]
+
+
+def test_a_word_before_the_next_sentences_verb_is_no_make():
+    assert agents("The ego bus is a menace. Swung into the left lane.") == [("bus", "change_lane_to_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I drove onto the roundabout, then came from the right a scooter that did not give way, and behind me drove a "
+     "police car.", [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "road_of_right_turn"),
+                     ("police", "go_straight", "back")]),
+    ("The ego waits at the lights. In front of it stood a lorry with its hazards on.",
+     [("car", "stop", "ego"), ("truck", "stop", "front")]),
+])
+def test_a_place_and_a_verb_said_before_the_one_who_moves(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_as_a_driver_of_a_kind_the_speaker_drives_one():
+    assert agents("As a bus driver on Victoria Road, I am routinely cut up by a car in the lane to my left that "
+                  "swerves in front of me.")[0] == ("bus", "go_straight", "ego")
+
+
+@pytest.mark.parametrize("prompt", [
+    "While I was on the crossing, a white SUV turning right came straight at me.",
+    "I was on the crossing when a white SUV turned right and came straight at me.",
+])
+def test_a_turn_said_as_a_participle_is_how_a_vehicle_came(prompt):
+    assert agents(prompt) == [("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A car is 20 m behind a cyclist. The car continues straight on.",
+     [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]),
+    ("A car moving at 10 m/s is 20 m behind a cyclist when the cyclist turns right into a side street.",
+     [("car", "go_straight", "ego"), ("cyclist", "turn_right", "front")]),
+])
+def test_a_vehicle_placed_by_a_rider_is_the_one_the_scene_is_told_from(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_going_by_motorbike_rides_one():
+    assert agents("I was going by motorbike in the left lane and in front of me a car suddenly braked.") == [
+        ("car", "stop", "front"), ("motorcycle", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, where", [
+    ("I was in the left lane and in front of me a car suddenly braked.", "front"),
+    ("I was in the left lane and behind me a white van was tailgating.", "back"),
+])
+def test_a_place_by_the_speaker_said_before_the_next_subject_is_that_ones(prompt, where):
+    assert [a[2] for a in agents(prompt) if a[2] != "ego"] == [where]
+
+
+def test_a_lettered_labels_possessive_names_the_same_one():
+    assert agents("Car A travels east. A pedestrian crosses ahead of it. Will the pedestrian be clear of car A's "
+                  "lane?") == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Guy overtakes a whole line of traffic on a blind bend and almost hits me head on.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "front_left")]),
+    ("The guy in the right lane sped up so I couldn't get in.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "right")]),
+    ("The guy next to me on the left runs the red light.", [("car", "go_straight", "ego"),
+                                                            ("car", "go_straight", "left")]),
+])
+def test_a_vague_person_in_a_lane_or_passing_drives(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_someone_opening_a_parked_cars_door_is_inside_it():
+    assert agents("Somebody flung open the door of a parked taxi just ahead on my left.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "front_left")]
+
+
+def test_an_obligation_with_no_subject_by_the_speakers_brakes_is_the_speakers():
+    assert agents("A bus came on from the right without slowing down, had to stand on my brakes.") == [
+        ("bus", "go_straight", "right"), ("car", "stop", "ego")]
+
+
+def test_the_vehicle_a_text_opens_on_placed_by_one_named_after_is_the_ego():
+    assert agents("A lorry moving at 18 m/s is 40 m behind car B, which is doing 12 m/s in the same lane.") == [
+        ("car", "go_straight", "front"), ("truck", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Car X turns right at a crossroads. A motorcycle comes from the road on car X's left.",
+    "A car turns right at a crossroads. A motorcycle comes from the road on the car's left.",
+])
+def test_the_road_on_a_named_vehicles_side_is_a_side_road(prompt):
+    assert agents(prompt) == [("car", "turn_right", "ego"), ("motorcycle", "go_straight", "road_of_left_turn")]

@@ -560,9 +560,11 @@ def loose_names() -> dict[str, frozenset[str]]:
 
 TURNING_WORDS = {"turn", "turns", "turned", "turning", "swing", "swings", "swung", "swinging", "bear", "bears", "bore",
                  "bearing", "veer", "veers", "veered", "veering", "hang", "hangs", "hung", "head", "heads", "headed"}
-TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z0-9]+|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
+TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z](?:'s)?\b|[a-z]+#[a-z0-9]+|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
+# (a lettered label's possessive, "car A's lane", is one word)
 LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bus|cyclist|bike|motorcycle|van|pedestrian|walker"
-                          r"|ped|pov|tv|npc|object))[ _]([A-H])\b(?![.'\u2019-]?[A-Za-z])")
+                          r"|ped|pov|tv|npc|object))[ _]([A-HJ-Z])\b(?![.-]?[A-Za-z]|['\u2019](?![sS]\b)[A-Za-z])")
+# (and its possessive: "car A's lane")
 SENTENCE_ENDS = {".", ";", "!", "?", ":"}
 
 
@@ -1609,6 +1611,16 @@ PLACE_THEN_SUBJECT = re.compile(
     r" (is|was|are|were) ((?:(?:a|an|the|one|two|three|another)\s+)?[a-z]+"
     r"(?:\s+(?!and\b|which\b|that\b|who\b|with\b)[a-z]+){0,3}?)"
     r"(?=\s*(?:[,.;!?]|$|\band\b|\bwhich\b|\bthat\b|\bwho\b|\bwith\b))")  # a place said before its subject
+MOVERS_PLACE = (r"(?:in front of|behind|ahead of|beside|next to|alongside|from behind|from the (?:left|right)|"
+                r"from (?:my|our|its|his|her) (?:left|right)|from the opposite (?:direction|side))"
+                r"(?: (?:the ego|me|us|it|him|her|them))?")
+MOVERS_VERB = r"(?:drove|drives|came|comes|stood|stands|sat|sits|rode|rides|ran|runs|was driving|was coming)"
+MOVER = (r"((?:a|an|the|one|two|three|another)\s+[a-z]+(?:\s+(?!and\b|which\b|that\b|who\b|with\b)[a-z]+){0,3}?)"
+         r"(?=\s*(?:[,.;!?]|$|\band\b|\bwhich\b|\bthat\b|\bwho\b|\bwith\b))")
+PLACE_VERB_MOVER = re.compile(rf"(^|[.;!?,]\s*|\band\s+|\bwhile\s+|\bthen\s+)({MOVERS_PLACE}) ({MOVERS_VERB}) {MOVER}")
+VERB_PLACE_MOVER = re.compile(rf"(^|[.;!?,]\s*|\band\s+|\bwhile\s+|\bthen\s+)({MOVERS_VERB}) ({MOVERS_PLACE}) {MOVER}")
+# "behind me drove a police car", "then came from the right a scooter": a place, and the verb of one moving or
+# standing, said before the one who does it (as in German, Dutch, Russian)
 ONLY_THEN_DID = re.compile(r"\bonly (?:(after|once|when) ([^.;!?]*?),?|then) did ((?:the |my |our |his |her )?[a-z]+) "
                            r"(?=[a-z])")
 LOGGED_SPEED = re.compile(r"\bv\s?=\s?(\d{1,3}(?:\.\d+)?)(?!\s*(?:km|kph|mph|m\s?/|ms\b|[./]?\d))")  # "v=12"
@@ -1658,6 +1670,12 @@ def tokenize(text: str) -> list[Token]:
     text = VERB_THEN.sub(r"then \1 ", text)  # "makes then a lane change" ("macht dann"): then makes it
     text = PLACE_THEN_SUBJECT.sub(lambda m: f"{m.group(1)}{m.group(4)} {m.group(3)} {m.group(2)}", text)
     # "in front of the ego is a stopped van": a stopped van is in front of the ego
+    text = PLACE_VERB_MOVER.sub(lambda m: f"{m.group(1)}{m.group(4)} {m.group(3)} {m.group(2)}", text)
+    text = VERB_PLACE_MOVER.sub(lambda m: f"{m.group(1)}{m.group(4)} {m.group(2)} {m.group(3)}", text)
+    text = re.sub(r"(,|\band|\bso)\s+(had to|needed to|have to)\s+"
+                  r"(?=[a-z' ]{0,30}\bmy (?:brakes?|horn|anchors|steering)\b)", r"\1 i \2 ", text)
+    # "a bus came on from the right, had to stand on my brakes": an obligation with no subject, by the speaker's
+    # own brakes, is the speaker's
     text = ONLY_THEN_DID.sub(lambda m: (f"{m.group(1)} {m.group(2)}, " if m.group(1) else "then ") + m.group(3) + " ",
                              text)  # "only after the cyclist had cleared did the ego turn": after it, the ego turns
     text = _without_attribution(text)

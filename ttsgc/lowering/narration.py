@@ -228,6 +228,12 @@ ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|do
                       r"(?:(?:was|were|am|are)\s+(?:on|in|riding|sitting|sat)|ride|rode|took|caught)\b|"
                       r"on\s+which\s+(?:i|we)\s+(?:was|were)\s+(?:a\s+)?passengers?\b)", re.I)
 # ("from the bus window I watched", "the bus I was on", "the route 47 bus, on which I was a passenger")
+ROUTE_RIDDEN = re.compile(r"\b(on|aboard)\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b(?![\s-]*(?:mph|km|kph|miles?|m|metres?|"
+                          r"meters?|feet|ft|yards?|%|am|pm|tonnes?|tons?|foot|lanes?|limit|zone|[:.]\d))", re.I)
+ROUTE_DRIVER = re.compile(r"\bthe\s+(?:number\s+)?\d{1,3}[a-z]?\s+driver\b", re.I)
+ROUTE_TOLD = re.compile(r"\b(?:upstairs|downstairs|top\s+deck|up\s+top|(?:our|your)\s+driver|the\s+driver(?!\s+(?:in|"
+                        r"ahead|behind|of|next|beside|to)\b)|passenger\s+on)\b", re.I)
+# a number ridden is a bus route when its driver is another ("the driver had to brake"; not "the driver in front")
 OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
 OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|city\s+|double[\s-]decker\s+)?"
                      r"(?:bus|coach|greyhound)\b" + NOT_ITS_BODY + r"|"
@@ -242,10 +248,14 @@ def _passengers_bus(text: str, notes: list[str]) -> str:
     """'I was sat upstairs at the front ... a hatchback swung in right in front of the bus. The driver slammed on':
     a passenger's account of the bus or coach they ride; the bus (by any name: 'the number 38', 'the 7', 'our
     coach') and its driver are the ego, which is a bus, and 'we' are on it."""
-    if not ON_A_BUS.search(text) or DRIVING_MYSELF.search(text) or OTHER_BUS.search(text) or \
+    by_route = bool(ROUTE_TOLD.search(text)) and bool(ROUTE_RIDDEN.search(text)) or bool(ROUTE_DRIVER.search(text))
+    if not (ON_A_BUS.search(text) or by_route) or DRIVING_MYSELF.search(text) or OTHER_BUS.search(text) or \
             re.search(r"\bego\b", text, re.I) or not re.search(r"\b(?:i|me|my|we|us|our)\b", text, re.I):
         return text
+    text, ridden = ROUTE_RIDDEN.subn(r"\1 the ego bus", text)  # "On the 55 this morning", "Was on the 16"
+    text, driven = ROUTE_DRIVER.subn("the ego bus", text)  # "the 42 driver is a menace"
     text, named = OUR_BUS.subn("the ego bus", text)
+    named += ridden + driven
     text = re.sub(r"\bthe\s+driver\s+(?:of|on)\s+the\s+ego\s+bus\b", "the ego bus", text, flags=re.I)
     text = BUS_DRIVER.sub("the ego", text)
     text = re.sub(r"\b(i|we)\s+(?:was|were|am|are|'m|'re)\s+(?:sat|sitting|seated|standing)\s+(?:right\s+)?"

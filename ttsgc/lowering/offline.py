@@ -397,9 +397,34 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
-                   _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind, _paint_of_one):
+                   _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind, _paint_of_one,
+                   _a_label_then_what_it_is):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+def _a_label_then_what_it_is(units: list[Unit]) -> list[Unit]:
+    """'collided with V2 white Transit travelling SB', 'veh 2 grey Astra coming from its R': a label, then paint
+    and a vehicle noun with no article, is one vehicle of that noun's kind, not two."""
+    out: list[Unit] = []
+    k = 0
+    while k < len(units):
+        u = units[k]
+        out.append(u)
+        k += 1
+        if u.category != "agents" or not u.tokens[-1].label or u.meaning not in ("car", "generic"):
+            continue
+        j = k
+        while j < len(units) and units[j].category == "word" and units[j].word in PAINT | {"light"}:
+            j += 1
+        if j == k or j >= len(units) or units[j].category != "agents" or \
+                units[j].meaning not in V.EGO_TYPES or units[j].tokens[-1].plural or units[j].tokens[-1].label:
+            continue
+        out[-1] = Unit(u.start, u.end, "agents", units[j].meaning, u.tokens)
+        while j < len(units) and units[j].category == "agents" and units[j].meaning in V.EGO_TYPES:
+            j += 1  # ("V1 blue Ford Focus": the make and the model both)
+        k = j  # the paint and the noun say what the labelled one is, and are read no further
+    return out
 
 
 def _paint_of_one(units: list[Unit]) -> list[Unit]:
@@ -659,8 +684,9 @@ def _unknown_makes(tokens: list[Token], units: list[Unit]) -> list[Unit]:
         t = u.tokens[0]
         if u.category != "word" or len(u.tokens) != 1 or not t.word.isalpha() or len(t.word) < 4 or t.misspelt or \
                 t.label or t.word in lex.vocabulary or t.base in lex.vocabulary or t.word in ORDINAL_MEMBERS or \
-                t.word in ORDINAL_NUMBERS or before.tokens[-1].sentence != t.sentence:
-            continue
+                t.word in ORDINAL_NUMBERS or before.tokens[-1].sentence != t.sentence or \
+                nxt.tokens[0].sentence != t.sentence:
+            continue  # (not "is a menace. Swung into the left lane": the next sentence's verb)
         painted = before.word in PAINT and (k == 1 or units[k - 2].word in ("a", "an", "the", "this", "his", "her",
                                                                             "their", "one", "some") and not (
             k > 2 and units[k - 3].word in ("in", "wearing", "with")) or units[k - 2].tokens[-1].sentence != t.sentence)
@@ -970,8 +996,19 @@ def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
     (or agent) noun right after the word ego, another name of the ego's role, or the ego's possessive is the ego's
     own noun, as in 'the ego truck', not another agent."""
     out: list[Unit] = []
-    for u in units:
+    paint: list[Unit] = []
+    for k, u in enumerate(units):
         prev = out[-1] if out else None
+        if prev is not None and prev.category == "agents" and prev.meaning == "ego" and \
+                prev.tokens[-1].word == "ego" and u.category == "word" and u.word in PAINT | {"light"} and \
+                k + 1 < len(units) and (units[k + 1].word in PAINT or units[k + 1].category == "agents" and
+                                        units[k + 1].meaning in V.EGO_TYPES and not units[k + 1].tokens[-1].plural):
+            paint.append(u)  # "V1 blue Ford Focus turning R": the ego's paint, then its noun
+            continue
+        if paint:
+            prev = out[-1] = Unit(prev.start, paint[-1].end, "agents", "ego",
+                                  prev.tokens + tuple(t for x in paint for t in x.tokens))
+            paint = []
         role = prev is not None and prev.category == "agents" and prev.meaning == "ego" and \
             prev.tokens[-1].word not in SELF_NAMES and not prev.tokens[-1].plural  # "the AV", not "we"
         if prev is not None and u.category == "agents" and (u.meaning in V.EGO_TYPES or role and u.meaning == "generic"
@@ -4185,9 +4222,10 @@ def _agent_type(u: Unit) -> tuple[str, bool]:
                             ("motorcycle", ("motorcycle", "motorbike"))):
             if set(nouns) & set(words):
                 return kind, True
-        own = lexicon().phrases.get(tuple(words[1:])) if words[:1] == ["ego"] else None
-        if own is not None and own[0] == "agents" and own[1] in V.EGO_TYPES:
-            return own[1], True  # "the ego LKW"
+        for k in range(1, len(words)) if words[:1] == ["ego"] else ():
+            own = lexicon().phrases.get(tuple(words[k:]))
+            if own is not None and own[0] == "agents" and own[1] in V.EGO_TYPES:
+                return own[1], True  # "the ego LKW", "V1 white Scania"
         return "car", True
     if u.meaning == "generic":
         return "car", False
@@ -5663,8 +5701,9 @@ def _named_in_the_heading(r: _Reader, entity: Entity, said: Token, words: set[st
             at -= 1
         if r.tokens[at].word in ("plus", "and", "also"):
             return None  # "Pedestrian standing by a crosswalk, not crossing, plus a jogger on the sidewalk": one more
-    if any(t.word == "ego" for t in first):
-        return None
+    if any(t.word == "ego" for t in first) or _a_job_card(r) and entity.head not in ("vehicle", "car"):
+        return None  # ("JOB CARD 3320 - 2020 Hyundai Tucson. Customer states ... an oncoming SUV": the heading's is
+        # the customer's, and the SUV another; "Customer states vehicle was stationary": the heading's)
     listed = any(t.word in HEADING_WORDS for t in first) or any(t.word == "," for t in first) or \
         said.sentence == 0 or len(first) <= 8 and not any(
             t.word != t.base and not t.word.endswith("ing") and not t.plural and
@@ -6270,10 +6309,13 @@ def _the_speakers_obligation(r: _Reader, clause: Clause) -> bool:
     """'Had to take over,', 'Needed to brake': a sentence opened by an obligation with no subject and no one named,
     in a text a speaker tells, is the speaker's."""
     units = clause.units
+    before = r.tokens[units[0].start - 1] if units and units[0].start > 0 else None
     return len(units) >= 2 and [u.word for u in units[:2]] in (["had", "to"], ["have", "to"], ["needed", "to"],
                                                                 ["got", "to"]) and \
-        (units[0].start == 0 or r.tokens[units[0].start - 1].sentence != units[0].tokens[0].sentence) and \
+        (before is None or before.sentence != units[0].tokens[0].sentence or
+         before.word == "," and any(u.word in ("my", "our") for u in units)) and \
         not any(u.category == "agents" for u in units) and any(t.word in SPEAKERS for t in r.tokens)
+    # ("a bus came on from the right, had to stand on my brakes": after a comma, the speaker's by their own brakes)
 
 
 def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], recent: list[Entity],
@@ -6843,10 +6885,16 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if possessor is not None and subject and possessor.entity not in subject:
             came = possessor.first > 0 and units[possessor.first - 1].word == "from" and \
                 u.meaning in ("side_left", "side_right")  # "approaches from the car's right": from that side
+            side_road = possessor.first > 2 and u.meaning in ("side_left", "side_right") and \
+                [x.word for x in units[possessor.first - 3:possessor.first]] in (
+                    ["road", "on", "the"], ["street", "on", "the"], ["road", "to", "the"]) or possessor.first > 1 and \
+                [x.word for x in units[possessor.first - 2:possessor.first]] in (["road", "on"], ["street", "on"],
+                                                                                 ["road", "to"])
             for e in subject:  # "children walk on the car's left": the car is where they are placed from
                 if e.relative_to is None and not e.is_ego:
-                    e.relative_to = possessor.entity
-                    e.relative_how = "from_" + u.meaning[5:] if came else u.meaning
+                    e.relative_to = possessor.entity  # ("comes from the road on car X's left": out of that road)
+                    e.relative_how = "road_" + u.meaning[5:] if side_road else \
+                        "from_" + u.meaning[5:] if came else u.meaning
             r.mark(u)
             continue
         owner = _let_in_place(units, i, phrases, recent) or \
@@ -6882,6 +6930,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             # right on its tail", "steps out from behind it" (what stands, not the ego)
         ego_as_it = ego_as_it or reference is not None and reference.is_ego and (
             u.tokens[-1].word == "it" or i + 1 < len(units) and units[i + 1].word == "it")
+        if targets and all(e.is_ego for e in targets) and u.category == "positions" and \
+                u.meaning in ("ahead", "behind") and u.tokens[-1].word in ("me", "us") and i + 2 < len(units) and \
+                units[i + 1].word in ("a", "an", "the", "one", "two", "three") and units[i + 2].category in (
+                    "agents", "word"):
+            targets = []  # "I was in the left lane and in front of me a car braked": the car's place, said first
 
         for e in targets:
             if e.is_ego and u.category == "positions":
@@ -7309,6 +7362,22 @@ OWNERS_AND_KINDS = {"his", "her", "my", "our", "their", "your", "every", "any", 
 def _anything_said_of(e: Entity) -> bool:
     return bool(e.features or e.actions or e.relative_to is not None or e.speed or e.gap_m or e.trigger or
                 e.behavior or e.label or e.road_type or e.parent is not None)
+
+
+DOOR_OPENING = {"open", "opens", "opened", "opening", "flung", "flings", "threw", "throws", "swung", "swings"}
+
+
+def _a_door_opened_from_inside(r: _Reader) -> None:
+    """'Somebody flung open the door of a parked taxi', 'someone opened a door on a parked car': one named by no
+    more than a vague word who does nothing but open a vehicle's door sits in that vehicle; no one on foot."""
+    for e in list(r.entities):
+        if e.is_ego or e.type != "pedestrian" or e.head not in ("someone", "somebody") or e.features or \
+                any(a[4] not in ("try",) for a in e.actions) or e.said_at < 0:
+            continue
+        after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 6]]
+        if "door" in after and set(after[:3]) & DOOR_OPENING:
+            r.entities.remove(e)
+            r.notes.append(f"read '{e.head}' who opens a door as one inside the vehicle, no one on foot")
 
 
 def _passing_mentions(r: _Reader) -> None:
@@ -8922,9 +8991,11 @@ def _swerves_in_front(units, i) -> bool:
                       units[j].category == "behaviours" and len(units[j].tokens) == 1 or
                       [t.word for t in units[j].tokens] == ["straight"] or
                       units[j].category == "positions" and units[j].meaning in ("ego_lane", "into_ego_lane") or
-                      units[j].category == "comma" and j + 1 < i and units[j + 1].word == "just"):
+                      units[j].category == "comma" and j + 1 < i and units[j + 1].word == "just" or
+                      j == i - 1 and [t.word for t in u.tokens] == ["front"] and units[j].word in ("the", "my", "our")):
         j -= 1  # "pulled sharply across in front of us", "cuts straight in front of me": a manner adverb between
-        # the verb and its path; "moves into your lane, just in front of you": the lane it ends in, said first
+        # the verb and its path; "moves into your lane, just in front of you": the lane it ends in, said first;
+        # "cuts across the front of my car", "across my front": the ego's front, where the cut ends
     verb = units[j] if j >= 0 else None
     if verb is None or verb.category != "actions" or not (
             verb.meaning in ("cut_in", "lane_change") or
@@ -8934,6 +9005,8 @@ def _swerves_in_front(units, i) -> bool:
     if u.tokens[-1].word in ("me", "us", "you", "ego"):
         return True  # "in front of me"
     nxt = units[i + 1] if i + 1 < len(units) else None
+    if nxt is not None and nxt.word == "of" and [t.word for t in u.tokens] == ["front"]:
+        nxt = units[i + 2] if i + 2 < len(units) else None  # "the front of my car", "the front of the cab"
     return nxt is None or nxt.category == "agents" and nxt.meaning == "ego" or nxt.category == "comma" or \
         nxt.word in ("my", "our")  # "dives in right in front of my bumper"
 
@@ -9160,6 +9233,10 @@ def _action(e: Entity, stage: int | None = None) -> tuple[str | None, str | None
         # manoeuvre (but "four wait ... one of them rides off" moves off)
         if inherited:
             best = max(inherited, key=lambda a: (a[2], a[3]))
+    if best[4] == "move" and best[1] == 2:
+        turning = [a for a in chosen if a[1] == 1 and a[4] in ("turn_left", "turn_right") and a[0] == best[0]]
+        if turning:  # "a white SUV turning right came straight at me": the turn is how it came
+            best = max(turning, key=lambda a: a[3])
     if best[4] == "cut_in" and any(a[4] == "stop" and a[1] == best[1] and a[3] > best[3] for a in chosen):
         return ("stop" if e.is_ego else "block"), None  # "swerves into its path and stops"; the ego pulls in and stops
     if best[4] == "cut_in" and {"ahead", "stops_abruptly"} <= e.features and any(
@@ -9650,6 +9727,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _members_keep_the_group_place(r)
     _place_in_queue(r)
     _sitting_behind_a_stopped_ego(r)
+    _a_door_opened_from_inside(r)
     _passing_mentions(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
@@ -9725,7 +9803,8 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
            "crossing the road", "crossing the street", "in the crosswalk", "rolling across", "wheeling across",
            "bench", "was across the street", "was across the road", "on the porch", "on my porch", "in the garden",
            "in my garden", "at the window", "at my window", "over the zebra", "on the zebra", "across the zebra",
-           "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal"} | \
+           "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal",
+           "on the crossing", "on the crosswalk", "halfway across", "halfway over"} | \
     STEPPING_OVER
 # (a wheelchair user, waiting to cross or on the way over; one watching from a bench, a porch or across the street;
 # not "I stopped for kids on the crossing")
@@ -9794,8 +9873,9 @@ def _what_i_was(tokens: list[Token], k: int, start: int | None = None) -> set[st
     start = k + 1 if start is None else start
     for t in tokens[start:start + 12]:
         if t.sentence != tokens[k].sentence or t.word in ("when", "while", "and", "as", "but", ",", "saw", "then",
-                                                         "for"):  # ("I stopped for a lady on the zebra": hers)
-            break
+                                                         "for") and not (  # ("I stopped for a lady on the zebra": hers)
+                t.word == "and" and t.index + 1 < len(tokens) and tokens[t.index + 1].word == "was"):
+            break  # ("I use a mobility scooter and was halfway over the zebra": both said of me)
         out.append(t.word)
     pairs = {" ".join(out[i:i + n]) for n in (2, 3, 4) for i in range(len(out) - n + 1)}
     if {"chair", "wheelchair"} & set(out):
@@ -9863,6 +9943,11 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if first is not None and not people_first and first.road_type != "shoulder" and _told_by_it(r, first):
         return first  # "Silver hatchback stopped at the red ... ped crosses in front of it ... hatchback proceeds":
         # a log of the vehicle it opens on, the others placed by 'it'
+    if first is not None and not people_first and first.relative_to is not None and \
+            first.relative_how in ("ahead", "behind") and first.relative_to.said_at > first.said_at and \
+            _may_drive_the_scene(replace(first, relative_to=None)):
+        return first  # "A car is 20 m behind a cyclist when the cyclist turns right", "A lorry moving at 18 m/s is
+        # 40 m behind car B": the one the text opens on, placed by one named after it, is the one it follows
     if first is None or not _may_drive_the_scene(first):
         return None
     earliest = min((a[0] for a in first.actions), default=0)
@@ -9931,6 +10016,10 @@ def _speaker_on_the_road(r: _Reader) -> bool:
     if speaker is not None and (speaker.actions or speaker.features):
         return True
     words = [t.word for t in r.tokens]
+    if _says_any(words, OWN_MOBILITY_AIDS) or any(
+            _what_i_was(r.tokens, k) & CROSSING_ON_FOOT - {"across the road", "across the street"}
+            for k, w in enumerate(words) if w == "i"):
+        return True  # "I was already on the crossing in my wheelchair when a white van swung left across it": met
     told = max((u.tokens[0].sentence for u in r.units if u.category == "agents" and u.meaning not in ("ego", "none")),
                default=-1)  # the last sentence that names someone of the scene: 'you' after it is advice to all
     for k, w in enumerate(words):
@@ -9976,7 +10065,8 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
         return
     supplied = next((e for e in r.entities if e.is_ego), None)
     if first.relative_to is not None:  # "a police car follows a red sedan": the sedan drives ahead of the ego
-        first.relative_to.features |= {"ahead", "followed"} if first.relative_how == "follows" else {"behind"}
+        first.relative_to.features |= {"ahead", "followed"} if first.relative_how == "follows" else {
+            SEEN_THE_OTHER_WAY.get(first.relative_how, "behind")}  # ("a car 20 m behind a cyclist": it is ahead)
         first.relative_to = None
     _placed_by_the_ego_now(r, first)
     if driver_named and supplied is not None:  # the driver is the ego, the vehicle theirs
@@ -10189,7 +10279,11 @@ TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), (
 
 
 OWN_MOBILITY_AIDS = (("my", "wheelchair"), ("my", "chair"), ("my", "power", "chair"), ("my", "mobility", "scooter"),
-                     ("my", "walker"), ("my", "rollator"), ("my", "walking", "frame"), ("my", "white", "cane"))
+                     ("my", "walker"), ("my", "rollator"), ("my", "walking", "frame"), ("my", "white", "cane"),
+                     ("use", "a", "wheelchair"), ("use", "a", "mobility", "scooter"), ("wheelchair", "user"),
+                     ("i'm", "in", "a", "wheelchair"), ("i", "am", "in", "a", "wheelchair"),
+                     ("on", "a", "mobility", "scooter"), ("on", "mobility", "scooters"),
+                     ("drive", "a", "mobility", "scooter"))
 MET_BY = {"towards", "toward", "past", "beside", "at", "across", "round", "around", "into", "hit", "missed", "clipped",
           "struck"}  # "came straight at me", "turned left across me", "nearly hit me": a witness in the way
 
@@ -10337,12 +10431,18 @@ def _witness_on_foot(r: _Reader) -> None:
 
 
 PEDAL_WORDS = {"bicycle", "pedalling", "pedaling", "pedalled", "pedaled", "handlebar", "handlebars", "pushbike",
-               "toucan", "cycling", "cycled", "pannier", "panniers"}  # (not "a brake pedal")
+               "toucan", "cycling", "cycled", "pannier", "panniers", "doored", "dooring", "chaingang", "cycleway",
+               "peloton", "cleats"}  # (not "a brake pedal")
 PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), ("i", "cycle"), ("cycle", "commuter"),
                  ("my", "bicycle"), ("in", "the", "cycle", "lane"), ("in", "the", "bike", "lane"),
                  ("i'm", "a", "cyclist"), ("i", "am", "a", "cyclist"), ("i'm", "a", "cycle"), ("my", "arm", "out"),
                  ("child", "seat", "on", "the", "back"), ("cycle", "lane"), ("bike", "lane"), ("cycle", "track"),
-                 ("bike", "path"), ("advanced", "stop", "box"))  # (not "the cycle
+                 ("bike", "path"), ("advanced", "stop", "box"), ("my", "bell"), ("front", "and", "rear", "lights"),
+                 ("my", "front", "wheel"), ("my", "back", "wheel"), ("in", "primary"), ("primary", "position"),
+                 ("two", "abreast"), ("club", "run"), ("club", "ride"), ("group", "ride"), ("ride", "leader"),
+                 ("back", "marker"), ("bar", "end"), ("my", "elbow"), ("my", "right", "elbow"), ("my", "left", "elbow"),
+                 ("my", "pedal"), ("into", "the", "gutter"), ("knocked", "me", "off"), ("took", "me", "off"))
+# (not "the cycle
 # courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
 MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
 REPORTING_WORDS = {"reporting", "report", "complaint", "file"}
@@ -10351,6 +10451,21 @@ SEEN_THE_OTHER_WAY = {"ahead": "behind", "behind": "ahead", "side_left": "side_r
                       "back_left": "front_right", "from_left": "from_right", "from_right": "from_left",
                       "road_left": "road_right", "road_right": "road_left", "road_straight": "road_straight",
                       "oncoming": "oncoming", "level": "level"}
+
+
+PASSING_ME = {"overtook", "overtakes", "overtaking", "passed", "passes", "passing", "buzzed", "squeezed", "cut",
+              "cuts", "clipped", "hit", "missed", "doored"}  # what a driver does to a rider it meets
+
+
+def _the_teller_rides(r: _Reader) -> bool:
+    """'I was riding', 'we were riding', 'I had to ride into the gutter', 'Riding west into the sun when ...': the
+    teller rides (not 'a pickup was riding my bumper', 'a boda boda was riding on the shoulder')."""
+    words = [t.word for t in r.tokens]
+    return any(w in RIDING and (
+        words[k - 1:k] in (["i"], ["we"], ["i'm"], ["we're"]) or words[max(0, k - 2):k] in (
+            ["i", "was"], ["we", "were"], ["i", "am"], ["we", "are"]) or words[max(0, k - 3):k] == ["i", "had", "to"]
+        or w == "riding" and _opens_its_sentence(r.tokens, r.tokens[k]) and bool(set(words) & FIRST_PERSON))
+        for k, w in enumerate(words))
 
 
 def _rider_reporting_a_driver(r: _Reader) -> None:
@@ -10365,9 +10480,17 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
                                                                               "push bike")]
     reported_riding = set(words) & {"riding", "rode"} and set(words) & REPORTING_WORDS  # "I'm reporting a police
     # patrol car ... it overtook me ... while I was riding past a line of parked cars": a rider's report of a driver
-    on_a_bike = (set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES) or reported_riding) and \
-        not set(words) & MOTOR_WORDS and \
-        not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")))
+    met = any(w in MET_BY | PASSING_ME and words[k + 1:k + 2] == ["me"] for k, w in enumerate(words))
+    plain = _says_any(words, PEDAL_PHRASES) or _the_teller_rides(r) and met  # "Riding west into the low sun when a
+    # Corsa ... turned right across me", "came up behind me in the cycle lane" (not "Riding along a street, a taxi
+    # ahead of me stopped, so I went round it": the teller's own ride, told of no one met)
+    own_motor = any(w in MOTOR_WORDS and set(words[max(0, k - 3):k]) & {"my", "our", "e", "on", "riding"}
+                    for k, w in enumerate(words))  # "on my e-scooter", "riding the lime scooter", "on a Bird scooter"
+    # (also "the guy on the moped", which leaves the teller as before: at a wheel)
+    motor = set(words) & (MOTOR_WORDS | FILTERING) and (own_motor or not (plain and any(
+        e.type == "motorcycle" and not e.is_ego for e in r.entities)))  # (not "a moped rider squeezed past me")
+    on_a_bike = (set(words) & PEDAL_WORDS or plain or reported_riding) and not motor and \
+        not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")) + RIDERS_CONTROLS)
     if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or \
             ego.type not in ("car", "motorcycle") or ego.aliases - FIRST_PERSON - {"you"} or not on_a_bike or \
             any(e.type == "cyclist" and not e.is_ego and e not in own_bikes for e in r.entities):
@@ -10376,8 +10499,11 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
         r.entities.remove(e)  # straight over": the teller's own bicycle, no one else, and what it did the teller did
         ego.actions += e.actions
         ego.features |= e.features
-    movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
-              and e.relative_to is None and any(a[4] not in ("stop", "try") for a in e.actions)]
+    vehicles = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES - V.VULNERABLE_TYPES and
+                e.count == 1 and e.parent is None and e.relative_to is None]
+    movers = [e for e in vehicles if any(a[4] not in ("stop", "try") for a in e.actions)] or vehicles[:1] * (
+        len(vehicles) == 1 and any(a[4] == "stop" for a in vehicles[0].actions))  # ("a delivery van parked right
+    # across the cycle lane": the one vehicle, standing)
     if not movers:
         return
     subject = movers[0]
@@ -10386,8 +10512,13 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
         own = {"crosswalk"}  # "I was crossing at the toucan crossing when a BMW ran the red": on the crossing
         ego.actions = [(0, 2, ACTION_RANK["cross"], r.tick(), "cross", None)]
     ego.is_ego, ego.type = False, "cyclist"
+    ego.actions = [a[:2] + (ACTION_RANK["move"], a[3], "move") + a[5:]
+                   if a[4] in ("lane_change", "lane_left", "lane_right", "cut_in") else a for a in ego.actions]
+    # ("I was passing along his right-hand side", "I had to swerve out round it": the rider keeps to its road)
+    standing = not any(a[4] not in ("stop", "try") for a in subject.actions)
     ego.features = (ego.features - own) | (own or {SEEN_THE_OTHER_WAY[f] for f in subject.features
-                                                   if f in SEEN_THE_OTHER_WAY}) or ego.features | {"ahead"}
+                                                   if f in SEEN_THE_OTHER_WAY}) or ego.features | {
+        "behind" if standing else "ahead"}  # ("a delivery van parked right across the cycle lane": come up to)
     _the_ego_now(r, subject)  # ("a taxi waiting behind him": behind the ego now)
     r.notes.append(f"inferred: the teller rides a bicycle; the '{subject.head}' reported is the ego")
 
@@ -10439,18 +10570,23 @@ def _now_the_ego(r: _Reader, vehicle: Entity, why: str) -> None:
 CUSTOMER_WORDS = {"customer", "customers", "owner"}
 
 
+def _a_job_card(r: _Reader) -> bool:
+    """'Customer states ...': a garage's note of what its customer told."""
+    words = [t.word for t in r.tokens]
+    return any(w in CUSTOMER_WORDS and words[k + 1:k + 2] and words[k + 1] in ("states", "stated", "reports", "says")
+               for k, w in enumerate(words))
+
+
 def _the_customers_vehicle(r: _Reader) -> None:
     """'JOB CARD 20417 - 2016 VW Golf ... Customer states vehicle was stationary ...': a garage's job card opens on
     the customer's vehicle (or says 'vehicle' of it), which the story is told from."""
-    words = [t.word for t in r.tokens]
-    if not any(w in CUSTOMER_WORDS and words[k + 1:k + 2] and words[k + 1] in ("states", "stated", "reports", "says")
-               for k, w in enumerate(words)):
+    if not _a_job_card(r):
         return
     ego = next((e for e in r.entities if e.is_ego), None)
     first = min((e for e in r.entities if e.said_at >= 0), key=lambda e: e.said_at, default=None)
     if first is None or first.is_ego or first.type not in V.EGO_TYPES or first.count != 1 or \
             not (r.tokens[first.said_at].sentence == 0 or first.head == "vehicle") or \
-            first.features - {"compass_north", "compass_south", "parked"} or \
+            first.features - {"compass_north", "compass_south", "parked", "moves_out", "straight_on"} or \
             ego is not None and ego.head not in FIRST_PERSON | {"ego", "we", "us", "vehicle", "he", "she"}:
         return
     _now_the_ego(r, first, "a job card opens on the customer's vehicle")
@@ -10897,7 +11033,8 @@ def _set_off_after_the_ego(tokens: list[Token], clause: Clause, before: list[Uni
 
 
 TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty", "trailer"), ("my", "trailer"),
-                  ("my", "rig"), ("the", "rig"), ("my", "load"), ("tachograph",), ("tacho",))
+                  ("my", "rig"), ("the", "rig"), ("my", "load"), ("tachograph",), ("tacho",), ("trucking", "on"),
+                  ("trucking", "along"), ("trucking", "down"), ("trucking", "through"))
 
 
 BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out"), (",", "arm", "out"), ("my", "bus"),
@@ -10906,19 +11043,65 @@ BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out
 # ("at the stop with the doors open"; not a cyclist's "with my arm out")
 
 
+def _a_drivers_introduction(r: _Reader) -> Entity | None:
+    """'Tanker driver. Taking a left ...', 'HGV driver here. On the M6 ...': a first line that says only what the
+    speaker drives, before a first-person account, names the ego's vehicle, not one more road user."""
+    line = []
+    for t in r.tokens:
+        if t.sentence > 0 or t.word in (",", ":", "-"):
+            break
+        line.append(t)
+    words = [t.word for t in line]
+    if words[:1] == ["as"] and words[1:2] in (["a"], ["an"]) and "driver" in words[3:5]:
+        line = line[2:words.index("driver", 3) + 1]  # "As a bus driver on Victoria Road, I am routinely cut up"
+    vehicles = [e for e in r.entities if not e.is_ego and line and line[0].index <= e.said_at <= line[-1].index]
+    if len(vehicles) != 1 or vehicles[0].count not in (0, 1) or vehicles[0].type not in V.EGO_TYPES or \
+            vehicles[0].actions or not {"driver", "here"} & {t.word for t in line} or \
+            not ({t.word for t in r.tokens[line[-1].index + 1:]} & SPEAKERS or not any(
+                e.is_ego and not _supplied(r, e) for e in r.entities)):
+        return None  # (the account in the first person, or with no subject: "Turning right at the lights, ...")
+    named = set(vehicles[0].head.split()) | {"driver", "here", "a", "an", "i'm", "im", "professional"}
+    return vehicles[0] if all(t.word in named or t.word in vehicles[0].aliases for t in line) else None
+
+
+CALL_SIGN_WORDS = {"alpha", "bravo", "charlie", "echo", "foxtrot", "kilo", "lima", "mike", "oscar", "papa", "tango",
+                   "uniform", "victor", "whiskey", "whisky", "yankee", "zulu"}  # (not golf, sierra, romeo: cars)
+
+
+def _a_patrols_call_sign(r: _Reader) -> bool:
+    """'Control from Tango 4-2, we're NB ...', '22:10 Bravo 1-1 stationary at red signal': a radio log whose
+    speaker gives a call sign (a phonetic letter and a number) is told from a patrol car."""
+    words = [t.word for t in r.tokens]
+    return any(w in CALL_SIGN_WORDS and k + 1 < len(words) and words[k + 1].isdigit() and (
+        k == 0 or words[k - 1] in ("from", "control", ",", ":", ".") or words[k - 1].isdigit())
+        for k, w in enumerate(words))
+
+
 def _a_drivers_trade(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
     the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name; one who puts out
-    a stop arm, or has passengers standing, drives a bus."""
+    a stop arm, or has passengers standing, drives a bus. 'HGV driver here.': one who says so."""
+    introduced = _a_drivers_introduction(r)
+    if introduced is not None:
+        introduced.count = 1  # ("as a bus driver": a role, counted as no one until it is the speaker's)
+        _now_the_ego(r, introduced, "the speaker says first what they drive")
+        return
     words = [t.word for t in r.tokens]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if (ego is None or ego.type == "car" and (ego.head in SPEAKING_SELF or _supplied(r, ego))) and \
+            _a_patrols_call_sign(r):
+        ego = _ego_entity(r, 0)
+        ego.type = "police"
+        r.notes.append("inferred: the speaker gives a patrol's call sign; the ego is a police car")
+        return
     told = [t.word for t in r.tokens if not t.question]  # (not "what's the rule when a school bus is stopped with
     # its stop arm out?")
     trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) else None
     if "ego" in words or trade is None or trade == "bus" and any(e.type == "bus" and not e.is_ego for e in r.entities):
         return  # ("stopped behind a school bus with its stop arm out": that bus's arm)
-    ego = next((e for e in r.entities if e.is_ego), None)
-    if ego is None and set(words) & SPEAKERS:
-        ego = _ego_entity(r, 0)  # "doing 65 ... in front of my bumper": the speaker, told of by no noun
+    if ego is None and (set(words) & SPEAKERS or trade == "truck"):
+        ego = _ego_entity(r, 0)  # "doing 65 ... in front of my bumper": the speaker, told of by no noun ("Empty
+        # trailer, fog down on the Pennines": a trucker's words are the speaker's own)
     if ego is not None and ego.type == "car" and ego.head in FIRST_PERSON | {"we", "us", "our", "ego"}:
         ego.type = trade
         r.notes.append(f"inferred: the speaker talks as a {trade} driver; the ego is a {trade}")
@@ -11190,6 +11373,12 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 and e.road_type not in ("sidewalk", "shoulder"):
             e.type = "car"  # "the guy behind me went into the back of me": a driver in the traffic queue
             r.notes.append(f"inferred: '{e.head}' behind or ahead in the lane drives a car")
+        elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and e.road_type is None and (
+                e.features & {"overtaking", "lane_said"} or
+                "level" in e.features and action in ("move", "go_straight")):
+            e.type = "car"  # "the guy in the right lane sped up", "guy overtakes a whole line of traffic", "the guy
+            # next to me on the left just runs the light": in a lane, passing, or level in traffic, at a wheel
+            r.notes.append(f"inferred: '{e.head}' in a lane of traffic drives a car")
         if e.type == "pedestrian" and action == "stop" and not e.features & {"crosswalk", "in_road", "waits_to_cross"} \
                 and _waits_where_people_wait(r, e):
             e.features.add("on_sidewalk")  # "a woman waiting at the bus stop": standing on the pavement
