@@ -11667,3 +11667,8 @@ def test_the_vehicle_a_text_opens_on_placed_by_one_named_after_is_the_ego():
 ])
 def test_the_road_on_a_named_vehicles_side_is_a_side_road(prompt):
     assert agents(prompt) == [("car", "turn_right", "ego"), ("motorcycle", "go_straight", "road_of_left_turn")]
+
+
+def test_a_numbered_labels_possessive_names_the_same_one():
+    assert agents("V1 was travelling north. V2, in the lane to V1's right, swerved into V1's lane.") == [
+        ("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]

@@ -560,8 +560,8 @@ def loose_names() -> dict[str, frozenset[str]]:
 
 TURNING_WORDS = {"turn", "turns", "turned", "turning", "swing", "swings", "swung", "swinging", "bear", "bears", "bore",
                  "bearing", "veer", "veers", "veered", "veering", "hang", "hangs", "hung", "head", "heads", "headed"}
-TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z](?:'s)?\b|[a-z]+#[a-z0-9]+|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
-# (a lettered label's possessive, "car A's lane", is one word)
+TOKEN = re.compile(r"\d+(?:\.\d+)?|[a-z]+#[a-z0-9]+(?:'s)?|[a-z]+(?:'s)?|[,.;:!?()\u00a7]")
+# (a label's possessive, "car A's lane", "V1's path", is one word)
 LETTER_LABEL = re.compile(r"\b((?i:car|vehicle|actor|agent|target|truck|lorry|bus|cyclist|bike|motorcycle|van|pedestrian|walker"
                           r"|ped|pov|tv|npc|object))[ _]([A-HJ-Z])\b(?![.-]?[A-Za-z]|['\u2019](?![sS]\b)[A-Za-z])")
 # (and its possessive: "car A's lane")
