@@ -11672,3 +11672,18 @@ def test_the_road_on_a_named_vehicles_side_is_a_side_road(prompt):
 def test_a_numbered_labels_possessive_names_the_same_one():
     assert agents("V1 was travelling north. V2, in the lane to V1's right, swerved into V1's lane.") == [
         ("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
+
+
+def test_a_vehicle_said_only_to_head_somewhere_is_on_its_way():
+    assert agents("Vehicle A was heading north on Main Street. Vehicle B was heading east on Oak Avenue and entered "
+                  "the intersection.") == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Car A travels at 20 m/s towards a stationary van 60 m ahead. What deceleration does car A need to stop just "
+     "short of the van?", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("A car travels at 13 m/s and a child runs out 18 m ahead. How far short of the child does it stop, if at all?",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+])
+def test_what_a_wh_question_asks_is_not_told(prompt, expected):
+    assert agents(prompt) == expected

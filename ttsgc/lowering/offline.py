@@ -3757,8 +3757,11 @@ def _asks_whether(tokens: list[Token], t: Token) -> bool:
     asks the outcome; the scene does not tell it ('Can a car cut in here?' asks for one, and stays; so does what a
     new one does in it: 'Can the ego handle a bus that turns right?')."""
     words = [x.word for x in _sentence(tokens, t.sentence) if x.index < t.index]
-    return len(words) > 2 and words[0] in YES_NO_OPENINGS and words[1] in ("the", "he", "she", "they") and \
-        not set(words) & (CASE_OPENERS | RELATIVES)
+    asked_how = len(words) > 3 and words[0] in ("what", "how") and any(  # "What deceleration does car A need to
+        w in YES_NO_OPENINGS and words[k + 1:k + 2] and words[k + 1] not in ("you", "i", "we")  # stop", "How far
+        for k, w in enumerate(words[1:], 1))  # short of the child does it stop?" (not "how do I stop")
+    return len(words) > 2 and (words[0] in YES_NO_OPENINGS and words[1] in ("the", "he", "she", "they") or
+                               asked_how) and not set(words) & (CASE_OPENERS | RELATIVES)
 
 
 BELIEVING = {"thought", "believed", "assumed", "figured", "guessed", "presumed", "reckoned", "imagined", "expected"}
@@ -9952,8 +9955,10 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
         return None
     earliest = min((a[0] for a in first.actions), default=0)
     opening = min((a for a in first.actions if a[0] == earliest), key=lambda a: a[3], default=None)
-    if not driver_named and not first.waits_to_turn and (not any(a[4] in OWN_WAY for a in first.actions) or
-                                                         opening is not None and opening[4] in ("stop", "block")):
+    heading = not first.actions and any(f.startswith("compass_") for f in first.features)  # "Car A is heading
+    # east towards a crossroads": on its way
+    if not driver_named and not first.waits_to_turn and not heading and (
+            not any(a[4] in OWN_WAY for a in first.actions) or opening is not None and opening[4] in ("stop", "block")):
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
         # pulled away": met by someone, who is the ego
     named = next((u for u in r.units if u.category == "agents" and u.meaning != "none"), None)
