@@ -11687,3 +11687,11 @@ def test_a_vehicle_said_only_to_head_somewhere_is_on_its_way():
 ])
 def test_what_a_wh_question_asks_is_not_told(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "Complaint about the 301: the bus just sat there at a green light, and the lorry behind us was leaning on its horn.",
+    "Dear First Bus, your driver on the 24 ran the red at Carlton Cross and a car coming from the right had to stop.",
+])
+def test_a_bus_named_by_its_route_in_a_complaint_is_the_ego(prompt):
+    assert [a[0] for a in agents(prompt) if a[2] == "ego"] == ["bus"]

@@ -228,8 +228,9 @@ ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|do
                       r"(?:(?:was|were|am|are)\s+(?:on|in|riding|sitting|sat)|ride|rode|took|caught)\b|"
                       r"on\s+which\s+(?:i|we)\s+(?:was|were)\s+(?:a\s+)?passengers?\b)", re.I)
 # ("from the bus window I watched", "the bus I was on", "the route 47 bus, on which I was a passenger")
-ROUTE_RIDDEN = re.compile(r"\b(on|aboard)\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b(?![\s-]*(?:mph|km|kph|miles?|m|metres?|"
-                          r"meters?|feet|ft|yards?|%|am|pm|tonnes?|tons?|foot|lanes?|limit|zone|[:.]\d))", re.I)
+ROUTE_RIDDEN = re.compile(r"\b(on|aboard|about|regarding)\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b(?![\s-]*(?:mph|km|"
+                          r"kph|miles?|m|metres?|meters?|feet|ft|yards?|%|am|pm|tonnes?|tons?|foot|lanes?|limit|zone|"
+                          r"[:.]\d))", re.I)
 ROUTE_DRIVER = re.compile(r"\bthe\s+(?:number\s+)?\d{1,3}[a-z]?\s+driver\b", re.I)
 ROUTE_TOLD = re.compile(r"\b(?:upstairs|downstairs|top\s+deck|up\s+top|(?:our|your)\s+driver|the\s+driver(?!\s+(?:in|"
                         r"ahead|behind|of|next|beside|to)\b)|passenger\s+on)\b", re.I)
@@ -249,8 +250,11 @@ def _passengers_bus(text: str, notes: list[str]) -> str:
     a passenger's account of the bus or coach they ride; the bus (by any name: 'the number 38', 'the 7', 'our
     coach') and its driver are the ego, which is a bus, and 'we' are on it."""
     by_route = bool(ROUTE_TOLD.search(text)) and bool(ROUTE_RIDDEN.search(text)) or bool(ROUTE_DRIVER.search(text))
+    routes_driver = re.search(r"\b(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b", text,
+                              re.I)  # "Dear First Bus, your driver on the 24 ran the red": the bus, whoever tells
     if not (ON_A_BUS.search(text) or by_route) or DRIVING_MYSELF.search(text) or OTHER_BUS.search(text) or \
-            re.search(r"\bego\b", text, re.I) or not re.search(r"\b(?:i|me|my|we|us|our)\b", text, re.I):
+            re.search(r"\bego\b", text, re.I) or not (re.search(r"\b(?:i|me|my|we|us|our)\b", text, re.I) or
+                                                       routes_driver):
         return text
     text, ridden = ROUTE_RIDDEN.subn(r"\1 the ego bus", text)  # "On the 55 this morning", "Was on the 16"
     text, driven = ROUTE_DRIVER.subn("the ego bus", text)  # "the 42 driver is a menace"
@@ -265,7 +269,8 @@ def _passengers_bus(text: str, notes: list[str]) -> str:
                   r"(?:up|down)stairs\b", "the passengers", text, flags=re.I)  # "the people standing downstairs went
     # flying": on board
     notes.append("read the bus the teller rides as the ego")
-    return text if named else "The ego is a bus. " + text
+    return text if named and not (ridden or driven) else "The ego is a bus. " + text  # (said first, when a route
+    # number is all that names it: "Complaint about the 301: the driver just sat there")
 
 
 RIDING = re.compile(r"\b(?:(?:i|we)(?:'m|'re|\s+am|\s+are|\s+was|\s+were)?\s+(?:riding|cycling|rode|cycled)|"
