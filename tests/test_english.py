@@ -11690,7 +11690,7 @@ def test_what_a_wh_question_asks_is_not_told(prompt, expected):
 
 
 @pytest.mark.parametrize("prompt", [
-    "Complaint about the 301: the bus just sat there at a green light, and the lorry behind us was leaning on its horn.",
+    "Complaint about the 301: the bus just sat there at a green light, and the lorry behind us leaned on its horn.",
     "Dear First Bus, your driver on the 24 ran the red at Carlton Cross and a car coming from the right had to stop.",
 ])
 def test_a_bus_named_by_its_route_in_a_complaint_is_the_ego(prompt):
