@@ -10447,8 +10447,7 @@ PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), 
                  ("two", "abreast"), ("club", "run"), ("club", "ride"), ("group", "ride"), ("ride", "leader"),
                  ("back", "marker"), ("bar", "end"), ("my", "elbow"), ("my", "right", "elbow"), ("my", "left", "elbow"),
                  ("my", "pedal"), ("into", "the", "gutter"), ("knocked", "me", "off"), ("took", "me", "off"))
-# (not "the cycle
-# courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
+# (not "the cycle courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
 MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
 REPORTING_WORDS = {"reporting", "report", "complaint", "file"}
 SEEN_THE_OTHER_WAY = {"ahead": "behind", "behind": "ahead", "side_left": "side_right", "side_right": "side_left",
