@@ -11695,3 +11695,12 @@ def test_what_a_wh_question_asks_is_not_told(prompt, expected):
 ])
 def test_a_bus_named_by_its_route_in_a_complaint_is_the_ego(prompt):
     assert [a[0] for a in agents(prompt) if a[2] == "ego"] == ["bus"]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A car is travelling at 13 m/s along a street. The driver reacts in 0.7 s and brakes with a deceleration of "
+    "7 m/s².",
+    "A car is travelling at 16 m/s. A bus pulls out in front of it, and the car driver brakes at 6 m/s^2.",
+])
+def test_a_rate_of_braking_in_a_word_problem_is_no_halt(prompt):
+    assert ("car", "go_straight", "ego") in agents(prompt)

@@ -1647,6 +1647,9 @@ def tokenize(text: str) -> list[Token]:
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
     text = BUS_STOPPING.sub(r"\1bus comes to a stop ", text)  # "bus stops at bus stop": the bus stops, no bus stops
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
+    text = re.sub(r"\b(?:brakes|braked|braking|brake|decelerates|decelerated|decelerating)(?:\s+hard)?\s+(?:at|with\s+a\s+"
+                  r"(?:constant\s+|uniform\s+|steady\s+)?deceleration\s+of)\s+(?=" + ACCELERATION.pattern + ")",
+                  "slows down at ", text)  # "brakes at 7 m/s²": a rate of slowing in a word problem, no halt said
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
     text = LOGGED_SPEED.sub(r"at \1 m/s", text)  # "t=0.0 ego lane 2 v=12": a log's speed, in SI units
     text = METRES_PER_SECOND.sub(lambda m: f"{round(float(m.group(1)) * 3.6)} km/h", text)  # "at 22 m/s": a speed
