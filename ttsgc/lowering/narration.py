@@ -215,13 +215,14 @@ def read_narration(prompt: str) -> Narration:
 
 
 NOT_ITS_BODY = r"(?!\s+(?:stop|stops|lane|lanes|bay|station|shelter|route|company)\b)"
+ROUTES_DRIVER = r"(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b"  # "your driver on the 24"
 ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|down)stairs\s+at\s+the|top\s+deck|"
                       r"(?:i|we)(?:'m|'re|\s+am|\s+are|\s+was|\s+were)\s+(?:sat\s+|sitting\s+|riding\s+|"
                       r"travelling\s+|traveling\s+)?(?:on|aboard)\s+(?:the|our|this|a)\s+(?:bus|coach)\b" +
                       NOT_ITS_BODY +
                       r"|(?:i|we)\s+(?:rode|took|caught|got\s+on)\s+(?:the|our|a)\s+(?:bus|coach)\b" + NOT_ITS_BODY +
                       r"|(?:our|your)\s+(?:bus|coach)\b" + NOT_ITS_BODY + r"|overnight\s+coach|"
-                      r"(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b|"
+                      + ROUTES_DRIVER + r"|"
                       r"(?:from|out\s+of)\s+the\s+(?:bus|coach)\s+window\b|"
                       r"from\s+the\s+(?:bus|coach),?\s+(?:i|we)\s+(?:saw|watched|could\s+see|noticed)\b|"
                       r"from\s+the\s+top\s+deck\b|the\s+(?:school\s+)?(?:bus|coach)\s+(?:i|we)\s+"
@@ -250,8 +251,8 @@ def _passengers_bus(text: str, notes: list[str]) -> str:
     a passenger's account of the bus or coach they ride; the bus (by any name: 'the number 38', 'the 7', 'our
     coach') and its driver are the ego, which is a bus, and 'we' are on it."""
     by_route = bool(ROUTE_TOLD.search(text)) and bool(ROUTE_RIDDEN.search(text)) or bool(ROUTE_DRIVER.search(text))
-    routes_driver = re.search(r"\b(?:your|the)\s+driver\s+(?:on|of)\s+the\s+(?:first\s+|last\s+)?\d{1,3}\b", text,
-                              re.I)  # "Dear First Bus, your driver on the 24 ran the red": the bus, whoever tells
+    routes_driver = re.search(r"\b" + ROUTES_DRIVER, text, re.I)  # "Dear First Bus, your driver on the 24 ran the
+    # red": the bus, whoever tells
     if not (ON_A_BUS.search(text) or by_route) or DRIVING_MYSELF.search(text) or OTHER_BUS.search(text) or \
             re.search(r"\bego\b", text, re.I) or not (re.search(r"\b(?:i|me|my|we|us|our)\b", text, re.I) or
                                                        routes_driver):
