@@ -6312,13 +6312,10 @@ def _the_speakers_obligation(r: _Reader, clause: Clause) -> bool:
     """'Had to take over,', 'Needed to brake': a sentence opened by an obligation with no subject and no one named,
     in a text a speaker tells, is the speaker's."""
     units = clause.units
-    before = r.tokens[units[0].start - 1] if units and units[0].start > 0 else None
     return len(units) >= 2 and [u.word for u in units[:2]] in (["had", "to"], ["have", "to"], ["needed", "to"],
                                                                 ["got", "to"]) and \
-        (before is None or before.sentence != units[0].tokens[0].sentence or
-         before.word == "," and any(u.word in ("my", "our") for u in units)) and \
+        (units[0].start == 0 or r.tokens[units[0].start - 1].sentence != units[0].tokens[0].sentence) and \
         not any(u.category == "agents" for u in units) and any(t.word in SPEAKERS for t in r.tokens)
-    # ("a bus came on from the right, had to stand on my brakes": after a comma, the speaker's by their own brakes)
 
 
 def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], recent: list[Entity],
