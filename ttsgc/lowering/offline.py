@@ -403,6 +403,18 @@ def _units(tokens: list[Token]) -> list[Unit]:
     return units
 
 
+def _noun_after_paint(units: list[Unit], k: int) -> int | None:
+    """Where a vehicle noun stands after one or more paint words right after unit k ('V2 white Transit', 'V1 blue
+    Ford Focus'), or None."""
+    j = k + 1
+    while j < len(units) and units[j].category == "word" and units[j].word in PAINT | {"light"}:
+        j += 1
+    if j == k + 1 or j >= len(units) or units[j].category != "agents" or units[j].meaning not in V.EGO_TYPES or \
+            units[j].tokens[-1].plural or units[j].tokens[-1].label:
+        return None
+    return j
+
+
 def _a_label_then_what_it_is(units: list[Unit]) -> list[Unit]:
     """'collided with V2 white Transit travelling SB', 'veh 2 grey Astra coming from its R': a label, then paint
     and a vehicle noun with no article, is one vehicle of that noun's kind, not two."""
@@ -414,11 +426,8 @@ def _a_label_then_what_it_is(units: list[Unit]) -> list[Unit]:
         k += 1
         if u.category != "agents" or not u.tokens[-1].label or u.meaning not in ("car", "generic"):
             continue
-        j = k
-        while j < len(units) and units[j].category == "word" and units[j].word in PAINT | {"light"}:
-            j += 1
-        if j == k or j >= len(units) or units[j].category != "agents" or \
-                units[j].meaning not in V.EGO_TYPES or units[j].tokens[-1].plural or units[j].tokens[-1].label:
+        j = _noun_after_paint(units, k - 1)
+        if j is None:
             continue
         out[-1] = Unit(u.start, u.end, "agents", units[j].meaning, u.tokens)
         while j < len(units) and units[j].category == "agents" and units[j].meaning in V.EGO_TYPES:
@@ -996,19 +1005,18 @@ def _ego_and_its_noun(units: list[Unit]) -> list[Unit]:
     (or agent) noun right after the word ego, another name of the ego's role, or the ego's possessive is the ego's
     own noun, as in 'the ego truck', not another agent."""
     out: list[Unit] = []
-    paint: list[Unit] = []
+    noun = 0
     for k, u in enumerate(units):
         prev = out[-1] if out else None
+        if k < noun:
+            continue  # (paint, taken into the ego's name)
         if prev is not None and prev.category == "agents" and prev.meaning == "ego" and \
-                prev.tokens[-1].word == "ego" and u.category == "word" and u.word in PAINT | {"light"} and \
-                k + 1 < len(units) and (units[k + 1].word in PAINT or units[k + 1].category == "agents" and
-                                        units[k + 1].meaning in V.EGO_TYPES and not units[k + 1].tokens[-1].plural):
-            paint.append(u)  # "V1 blue Ford Focus turning R": the ego's paint, then its noun
-            continue
-        if paint:
-            prev = out[-1] = Unit(prev.start, paint[-1].end, "agents", "ego",
-                                  prev.tokens + tuple(t for x in paint for t in x.tokens))
-            paint = []
+                prev.tokens[-1].word == "ego" and u.category == "word":
+            noun = _noun_after_paint(units, k - 1) or 0
+            if noun:  # "V1 blue Ford Focus turning R": the ego's paint, then its noun
+                prev = out[-1] = Unit(prev.start, units[noun - 1].end, "agents", "ego",
+                                      prev.tokens + tuple(t for x in units[k:noun] for t in x.tokens))
+                continue
         role = prev is not None and prev.category == "agents" and prev.meaning == "ego" and \
             prev.tokens[-1].word not in SELF_NAMES and not prev.tokens[-1].plural  # "the AV", not "we"
         if prev is not None and u.category == "agents" and (u.meaning in V.EGO_TYPES or role and u.meaning == "generic"
