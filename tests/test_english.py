@@ -2571,7 +2571,7 @@ def test_a_first_line_about_the_morning_is_no_greeting():
 def test_a_declared_ego_vehicle_its_fleet_number_and_its_named_driver_are_the_ego():
     prompt = ("Hi all,\n\nCoach 51 (driver: Piotr Zielinski) was in the right lane when a van in the lane to his left "
               "moved across in front of him. Piotr braked.\nPlease use our coach as the ego.\n\nThanks,\nMo")
-    assert agents(prompt) == [("bus", "go_straight", "ego"), ("car", "change_lane_to_right", "front_left")]
+    assert agents(prompt) == [("bus", "go_straight", "ego"), ("car", "change_lane_to_right", "left")]
     assert agents("Cab 3 (Li Wei driving) was waiting when a lorry came towards her. Use the cab as the ego.")[0] == \
         ("car", "stop", "ego")
     told = read_narration("The white van is the ego. The grey van ahead of the white van stops.").text
@@ -9442,7 +9442,7 @@ def test_the_vehicle_named_first_in_a_lane_of_its_own_is_the_one_the_others_are_
 @pytest.mark.parametrize("prompt, expected", [
     ("I was sat upstairs at the front. We were in the left lane and a hatchback that was in the lane to our right "
      "swung in right in front of the bus. The people standing downstairs were thrown about.",
-     [("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "front_right")]),
+     [("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "right")]),
     ("Travelling back on the overnight coach last night, three lanes and we were in the inside lane, and a lorry in "
      "the middle lane right beside us started drifting over into our lane.",
      [("bus", "go_straight", "ego"), ("truck", "change_lane_to_right", "left")]),
@@ -10318,7 +10318,7 @@ def test_a_clause_of_only_a_new_agent_after_one_placed_and_doing_says_the_same_o
 
 
 def test_a_lane_change_is_given_up_only_by_the_one_that_makes_it():
-    assert ("car", "change_lane_to_right", "front_left") in agents(
+    assert ("car", "change_lane_to_right", "left") in agents(
         "The ego is in the middle lane. A car on the left changes into the middle lane in front of the ego, and a "
         "truck on the right stays in its lane.")
     assert ("car", "change_lane_to_right", "ego") not in agents(
@@ -10974,7 +10974,7 @@ def test_a_clause_opened_by_ahead_places_its_subject(prompt, kind):
 
 
 def test_the_lane_change_one_waited_to_make_from_a_side_lane_is_what_it_does():
-    assert ("motorcycle", "change_lane_to_right", "front_left") in agents(
+    assert ("motorcycle", "change_lane_to_right", "left") in agents(
         "The ego waits at a red light in the right lane, and a motorcycle waits in the left lane next to it. When "
         "the light turns green, the motorcycle changes lane right in front of the ego.")
 
@@ -11704,3 +11704,138 @@ def test_a_bus_named_by_its_route_in_a_complaint_is_the_ego(prompt):
 ])
 def test_a_rate_of_braking_in_a_word_problem_is_no_halt(prompt):
     assert ("car", "go_straight", "ego") in agents(prompt)
+
+
+def test_a_counted_group_crossing_is_not_what_the_next_one_does():
+    assert agents("Ego approaching the crossing. Three schoolkids crossing on their green man and a mum with a buggy "
+                  "standing on the pavement.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+        ("pedestrian", "cross_the_road", "near_the_crosswalk"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+        ("pedestrian", "on_the_sidewalk", "near_the_crosswalk")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A car overtakes a lorry. The lorry is 16 m long.",
+    "A car passes a cyclist. The cyclist is 2 m wide.",
+])
+def test_a_size_in_metres_is_no_gap(prompt):
+    assert all(a.gap_m is None for a in lower(prompt).scenario.agents())
+
+
+@pytest.mark.parametrize("prompt", [
+    "A car approaches a crossroads.",
+    "A car is approaching a junction.",
+])
+def test_the_vehicle_a_text_opens_on_approaching_a_junction_is_the_ego(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A motorist sees a cyclist.",
+    "A motorist at 30 mph spots a cyclist.",
+])
+def test_one_who_opens_the_text_by_seeing_another_is_the_ego(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Our crash cushion truck was parked at the start of the lane 1 closure, beacons going, and a supermarket delivery "
+     "lorry in lane 1 went right into the back of it in the rain.",
+     [("truck", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("We had the left lane coned off on the interstate, our arrow board truck parked at the head of the taper; a semi "
+     "in the right lane started merging left into the taper before he saw it.",
+     [("truck", "change_lane_to_left", "ego"), ("truck", "stop", "front")]),
+])
+def test_a_works_crews_own_standing_lorry_is_what_the_driver_meets(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_patrols_own_car_in_a_closure_stays_the_ego():
+    assert agents("Our patrol car was parked in the closure with the cones out, and a van in lane 1 went past it.")[
+        -1] != ("police", "stop", "front")
+
+
+def test_the_end_of_a_shuttle_is_road_works_not_a_bus():
+    assert not any(a[0] == "bus" for a in agents(
+        "I had the stop board up at the south end of the shuttle when a white Transit carried on past the board."))
+
+
+@pytest.mark.parametrize("prompt", [
+    "I turned right at the crossroads on the GS and had to ease off for a woman pushing a pram.",
+    "I was on my Bonneville when a car pulled out of a side road on my left.",
+])
+def test_a_motorbike_named_by_its_model_is_the_riders_own(prompt):
+    assert [a[0] for a in agents(prompt) if a[2] == "ego"] == ["motorcycle"]
+
+
+def test_road_users_named_only_by_their_kind_in_a_habit_are_the_scene():
+    assert agents("Drivers turning left regularly cut across cyclists going straight on.") == [
+        ("car", "change_lane_to_left", "ego"), ("cyclist", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A police car leaving the station had to pull up sharply because a pedestrian stepped off the kerb directly in "
+     "front of it.", [("pedestrian", "cross_the_road", "front"), ("police", "stop", "ego")]),
+    ("An ambulance on a blue-light run had to wait behind a taxi that had stopped in front of it.",
+     [("ambulance", "stop", "ego"), ("car", "stop", "front")]),
+])
+def test_what_the_one_the_scene_is_told_from_is_made_to_do_it_does(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A BMW in the left lane swung right into my lane.", ("car", "change_lane_to_right", "left")),
+    ("I was cruising in lane two when a white BMW just ahead of me in lane one swung right into my lane.",
+     ("car", "change_lane_to_right", "front_left")),
+])
+def test_a_turn_into_a_lane_of_the_same_road_is_a_lane_change(prompt, expected):
+    assert expected in agents(prompt)
+    assert road(prompt).junction is not True
+
+
+def test_a_truckers_wagons_are_lorries():
+    assert agents("Three of us in convoy this morning, me leading in the DAF nice and slow and two more wagons off the "
+                  "same yard tucked in behind.") == [
+        ("truck", "go_straight", "back"), ("truck", "go_straight", "back"), ("truck", "go_straight", "ego")]
+
+
+def test_a_marked_unit_is_a_police_car():
+    assert [a[0] for a in agents("Unit 31, marked unit, I-5 SB, 3 lanes. Unit in #2 lane. Black Charger in the #1 "
+                                 "lane to the left of unit cut across in front of unit into the #3 lane.")
+            if a[2] == "ego"] == ["police"]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Entering the junction from the south, my car goes straight; a police car comes from the west, and a fire engine "
+     "comes from the north.", [("car", "go_straight", "ego"), ("firetruck", "go_straight", "road_of_straight"),
+                                ("police", "go_straight", "road_of_left_turn")]),
+    ("Northbound ego car turning right at an intersection; a southbound motorcycle proceeds straight.",
+     [("car", "turn_right", "ego"), ("motorcycle", "go_straight", "road_of_straight")]),
+])
+def test_the_egos_compass_heading_places_the_others(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_side_said_beats_a_compass_word_in_brackets():
+    assert ("car", "stop", "road_of_left_turn") in agents(
+        "The ego vehicle comes from south and drives straight over the crossroads. On the street from the left (west) "
+        "a car stands at the red light.")
+
+
+def test_cutting_in_right_in_front_of_the_ego_ends_there():
+    assert agents("A car in the left lane cuts in right in front of the ego vehicle.") == [
+        ("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Two cars are waiting at a red light with the ego SUV stopped behind them.",
+     [("car", "stop", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]),
+    ("A bus turns left with the ego waiting behind it.", [("bus", "turn_left", "front"), ("car", "stop", "ego")]),
+])
+def test_with_the_ego_and_its_own_state_and_place(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_waiting_at_a_pedestrian_crossing_names_no_pedestrian():
+    assert agents("The ego waits at a pedestrian crossing while three schoolchildren walk across.") == [
+        ("car", "stop", "ego")] + [("pedestrian", "cross_the_road", "near_the_crosswalk")] * 3

@@ -200,6 +200,7 @@ class _Reader:
     passive: object = None  # the last clause with a passive's doer ('overtaken by a van'): 'and a bus' may follow
     # past a clause break ("one car in front, one on the left and one on the right")
     owned: bool = False  # the text opened on the vehicle its teller owns: "the vehicle" is that one
+    typical: bool = False  # the text names road users only by their kinds, in what they habitually do
     staged: bool = False  # the text goes on to a later stage ("then", "once ...")
 
     def mark(self, unit: Unit) -> None:
@@ -1660,6 +1661,20 @@ def _heads_somewhere(tokens: list[Token], i: int) -> bool:
         "the", "a", "our", "my", "its", "this", "that")
 
 
+def _into_a_lane(tokens: list[Token], end: int) -> bool:
+    """'into my lane', 'into the outside lane', 'into lane two', 'across into the ego's lane': what follows a verb
+    ends in a lane of the road it is on."""
+    after = [t.word for t in tokens[end:end + 6] if t.sentence == tokens[end - 1].sentence]
+    if after[:1] == ["across"]:
+        after = after[1:]
+    if after[:1] != ["into"]:
+        return False
+    rest = after[1:]
+    return rest[:1] == ["lane"] or bool(rest) and (rest[0] in OWNERS | POSSESSIVES | {"the"} or
+                                                   rest[0].endswith("'s")) and "lane" in rest[1:4] and \
+        not {"turn", "turning", "bus", "cycle", "bike"} & set(rest[1:4])
+
+
 def _coordinated_participle(tokens: list[Token], m: Match) -> bool:
     """'a cyclist is coming from the side road and crossing': 'crossing' after 'and' that joins it to a verb in
     -ing of the same clause is that road user's second verb, not a crosswalk ('a light and crossing')."""
@@ -1792,6 +1807,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "the pillar blocks your view": of sight
     if m.category == "actions" and m.meaning == "cross" and _over_a_lane_marking(tokens, m.end):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "crossed the centre line": a drift, no crossing
+    if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and _into_a_lane(tokens, m.end):
+        return [Unit(m.start, m.end, "actions", "lane_" + m.meaning[5:], span)]  # "swung right into my lane",
+        # "swung left into lane one": into a lane of the same road, no junction
     if m.category == "actions" and m.meaning in ("turn_left", "turn_right") and m.end - m.start == 2 and \
             span[0].word in SIDES and span[1].word.startswith("turn") and m.start > 1 and \
             tokens[m.start - 1].word in OWNERS | POSSESSIVES | {"the"} and tokens[m.start - 2].word in ("on", "to", "from"):
@@ -1986,7 +2004,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                       "toddler", "pensioner", "cyclists", "bicyclist",
                                                       "target", "dummy") or \
         any((_lookup(lexicon(), list(tokens[m.start - n:m.start])) or ("", ""))[1] == "pedestrian"
-            for n in (2, 3) if m.start >= n)  # "EBT (bicycle target) crossing", "three little ones crossing"
+            for n in (1, 2, 3) if m.start >= n)  # "schoolkids crossing", "three little ones crossing"
     after_verb = prev is not None and prev.word in ("keep", "keeps", "kept", "is", "are", "was", "were", "be", "not",
                                                     "been", "start", "starts", "begin", "begins", "stop", "stops",
                                                     "finish", "finishes", "while", "when", "still", "already")
@@ -2012,6 +2030,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             (lexicon().phrases.get((t.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
             for t in tokens[:m.start] if t.sentence == span[0].sentence)
     # "cyclist: on crosswalk at exit arm, crossing": a note's piece of its own about a person, what they do
+    at_the_crossing = len(span) > 1 and m.start >= 2 and tokens[m.start - 1].word in ("a", "the") and \
+        tokens[m.start - 2].word in ("at", "near", "by", "approaching", "approaches", "reaches", "reaching") and \
+        nxt in ("while", "when", "as", "before", "after", ",", "and", "")  # "waits at a pedestrian crossing while
+    # three children walk across": the crosswalk, no person crossing
     counted = len(span) > 1 and span[-1].word == "crossing" and (span[0].word in ("pedestrians", "peds") or (
         m.start > 0 and (_word_number(tokens[m.start - 1]) or 0) >= 1))  # "two pedestrians crossing": people
     if m.category == "road" and [t.word for t in span] == ["crossing"] and prev is not None and \
@@ -2027,8 +2049,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             nxt in VERB_AFTER_CROSSING or on_a_crossing or nxt in CROSSED_WITHOUT_ARTICLE and nxt2 not in (
                 "by", "from", "of") and not (prev is not None and prev.word in ("a", "an", "the")) or lone_piece or
             counted or (len(span) == 1 and (after_person or after_verb or _coordinated_participle(tokens, m)))) and \
-            not place_then_verb and not (prev is not None and prev.word in ("no", "without", "any", "a", "the")
-                                         and len(span) == 1) and not (
+            not place_then_verb and not at_the_crossing and \
+            not (prev is not None and prev.word in ("no", "without", "any", "a", "the") and len(span) == 1) and not (
                 nxt in ("without", "with") and nxt2 in UNCONTROLLED_BY):  # "pedestrian crossing without traffic
         # light": the crossing and what it lacks ("crossing without looking": a person crossing)
         # the verb: "a pedestrian crossing the road"; the noun stays: "no crossing", "the pedestrian crossing ahead is"
@@ -2977,6 +2999,13 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
     if in_case_name and not any(u.category == "agents" and u.meaning != "none" for u in units):
         units = [u for u in r.units if u.start not in skip and not _hypothetical(r.tokens, u)
                  and not u.tokens[0].title]  # the case's name is all the prompt says of its agents: read it
+    if not any(u.category == "agents" and u.meaning != "none" for u in units) and any(
+            u.category == "agents" and _in_general(r.tokens, u) for u in r.units):
+        units = [u for k, u in enumerate(r.units) if u.start not in skip and (
+            not _hypothetical(r.tokens, u) or u.category == "agents" and _in_general(r.tokens, u)) and
+                 not u.tokens[0].title and k not in in_case_name]
+        r.typical = True  # "Drivers turning left regularly cut across cyclists going straight on": a kind of road
+        # user is all the text names; what it does habitually is the scene, one of each kind
     out: list[Clause] = []
     stage, current, condition, link = 0, [], False, ""
     sentence = units[0].tokens[0].sentence if units else 0
@@ -4758,6 +4787,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     u = units[head]
     r.mark(u)
     kind, is_ego = _agent_type(u)
+    if u.base == "wagon" and any(e.is_ego and e.type == "truck" for e in r.entities):
+        kind = "truck"  # "me leading in the DAF and two more wagons off the same yard": a trucker's lorries
     count, first, words, modifiers = _count_before(units, head, lo)
     if first > lo and units[first - 1].word == "not" and (words & {"a", "an", "single", "another"} or count == 1) and \
             not is_ego:
@@ -4788,6 +4819,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         if units[k].category in ("word", "numbers", "number"):
             r.mark(units[k])
     plural = u.tokens[-1].plural and not is_ego
+    if r.typical and plural and count is None and not words:
+        plural = False  # "drivers turning left cut across cyclists": one of each kind, as the scene to test
     if words & {"neither", "either"} and not plural and not words & {"the", "a", "an"}:  # (not "neither the cyclist
         # nor the car": one each)
         words, plural = (words - {"neither", "either"}) | {"both"}, True  # "neither vehicle slows": the two named
@@ -4811,7 +4844,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # heading's verb with no subject ("Lane-change reminder.") is that vehicle
     if fleets_one:
         is_ego, plural = True, False
-    on_the_bike = u.base in ("bike", "motorbike", "moped", "scooter", "motorcycle") and not plural and count is None and \
+    ridden = u.base in ("bike", "motorbike", "moped", "scooter", "motorcycle") or kind == "motorcycle" and \
+        not u.base.endswith(("ist", "er", "rider", "courier", "cop"))  # "on the GS", "my Bonneville": a machine
+    on_the_bike = ridden and not plural and count is None and \
         _the_riders_own(units, head, first, lo, words) and any(t.word in ("i", "me", "my", "i'm") for t in r.tokens) and \
         not any(e.is_ego and e.type not in ("car", "motorcycle") for e in r.entities)
     if on_the_bike:  # "coming up to the junction on the bike", "just me and the bike": the rider's own; one who speaks
@@ -4840,8 +4875,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         ego.aliases.add(u.base)  # every name the ego is given ("an automated shuttle bus ... the shuttle")
         _ego_listed_in_a_group(r, ego, units, first)
         for m in modifiers:
-            if m.category == "actions":
-                _modify(r, ego, m, stage, strength=1)  # "a cyclist overtakes the stationary ego": it stands
+            if m.category == "actions" or m.category == "positions" and m.meaning.startswith("compass_"):
+                _modify(r, ego, m, stage, strength=1)  # "a cyclist overtakes the stationary ego": it stands;
+                # "the northbound ego": its heading
         return NounPhrase(ego, head, first)
     if not is_ego and _scenery_only(units, head):
         return NounPhrase(None, head, first)  # "passengers waiting at the stop: scenery only"
@@ -6118,6 +6154,9 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
     left crosses from its right; one from the north or on the north side, where the ego heads east, is on its
     left."""
     heading = _heading(ego) if ego else None
+    came_from = [f[12:] for f in sorted(ego.features) if f.startswith("compassfrom_")] if ego else []
+    if heading is None and len(came_from) == 1 and came_from[0] in ("north", "south", "east", "west"):
+        heading = COMPASS_OPPOSITE["compass_" + came_from[0]]  # "entering the junction from the south": heading north
     if heading is None:
         return
     left, ahead = COMPASS_LEFT[heading][8:], heading[8:]
@@ -6145,7 +6184,7 @@ def _compass_places(others: list[Entity], ego: Entity | None) -> None:
             e.features.add("road_straight")
         elif own == back:
             e.features.add("road_straight")  # "V3 is northbound in the opposing lane" of a southbound ego
-        elif own in (left, right) and not e.features & {"road_left", "road_right"}:
+        elif own in (left, right) and not e.features & {"road_left", "road_right", "from_left", "from_right"}:
             e.features.add("road_right" if own == left else "road_left")  # westbound across a northbound ego:
             # it comes from the ego's right
 
@@ -6156,7 +6195,7 @@ PLACED_HOW = {"parked", "in_road", "ego_lane", "in_a_side_lane", "on_board", "on
 # features that place a vehicle by the ego or say it is met by one ('parked', 'in the ego's lane'): whoever has
 # one is not the one the scene is told from
 PLACE_FEATURES = HEADLINE_PLACES | {"front_left", "front_right", "back_left", "back_right", "cross_road", "crosswalk",
-                                    "toward", "across_path", "overtaking", "far_side", "junction_approach"}
+                                    "toward", "across_path", "overtaking", "far_side"}
 
 
 def _typology_places(r: _Reader, others: list[Entity]) -> None:
@@ -8901,6 +8940,10 @@ def _pronoun_in_place(units, i, phrases, recent, owners) -> Entity | None:
     return None
 
 
+STANDING_WORDS = {"stopped", "stationary", "parked", "waiting", "queued", "queuing", "queueing", "idling", "held",
+                  "stuck", "standing"}  # (not "sat", "sitting": "with the ego sitting in lane two" is where it is)
+
+
 def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     """A verb right after a noun, with a finite verb after it, modifies that noun: 'a cyclist riding alongside
     swerves', 'in front of a truck stopped on the shoulder'."""
@@ -8933,7 +8976,9 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
         "parked", "stopped", "stood", "stuck", "broken", "stationary", "idle", "motionless", "immobile") or light or \
         units[i].tokens[-1].word in ("parked", "stopped")  # "finds a van double-parked ahead"
     # "encounters a POV stationary in its lane": a state said of the object
-    if np.entity is not None and np.entity.is_ego and not light and not (
+    with_it = np.first > 0 and units[np.first - 1].word == "with" and i == k + 1 and word in STANDING_WORDS
+    # "two cars wait at the light with the ego stopped behind them": the ego's own state
+    if np.entity is not None and np.entity.is_ego and not light and not with_it and not (
             i == k + 1 and word.endswith("ing") and later and np is phrases[0] and np.first == 0):
         return None  # "the lead car ahead of the hero changed lane": the ego takes no participle, unless it opens
         # the clause with it ("a robotaxi travelling behind the truck stopped": the robotaxi stopped)
@@ -8977,6 +9022,9 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
         last = objects_between[-1]
         if last.introduced and not last.entity.is_ego:
             return [last.entity]
+        if last.entity.is_ego and last.first > 0 and units[last.first - 1].word == "with" and \
+                not any(x.category == "agents" for x in units[last.index + 1:i]):
+            return [last.entity]  # "two cars wait at the light with the ego stopped behind them": the ego's place
     made = next((p for p in before if p.index == last_verb - 2), None)
     if made is not None and units[last_verb - 1].word == "to" and made.first > 0 and \
             units[made.first - 1].word in CAUSATIVES:
@@ -9015,6 +9063,9 @@ def _swerves_in_front(units, i) -> bool:
     nxt = units[i + 1] if i + 1 < len(units) else None
     if nxt is not None and nxt.word == "of" and [t.word for t in u.tokens] == ["front"]:
         nxt = units[i + 2] if i + 2 < len(units) else None  # "the front of my car", "the front of the cab"
+    if nxt is not None and nxt.word == "the" and i + 2 < len(units) and units[i + 2].category == "agents" and \
+            units[i + 2].meaning == "ego":
+        nxt = units[i + 2]  # "cuts in right in front of the ego vehicle"
     return nxt is None or nxt.category == "agents" and nxt.meaning == "ego" or nxt.category == "comma" or \
         nxt.word in ("my", "our")  # "dives in right in front of my bumper"
 
@@ -9166,6 +9217,9 @@ QUANTITY_UNITS = {"kmh": "speed", "mph": "speed", "m": "distance", "meters": "di
                   "secs": "time"}
 
 
+SIZE_WORDS = {"long", "wide", "high", "tall", "across", "deep"}
+
+
 def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
     """Triggers, speeds and gaps said in numbers: 'within 15 m', 'after 2 seconds', 'at 50 km/h', '10 m ahead'."""
     for k, u in enumerate(units):
@@ -9208,6 +9262,9 @@ def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
             else:
                 r.notes.append(f"left out: a speed of {u.word} {unit_word} is above what the language allows")
             r.mark(u), r.mark(nxt)
+        elif unit_word in ("m", "meters", "meter", "metres") and k + 2 < len(units) and \
+                units[k + 2].tokens[0].word in SIZE_WORDS:
+            r.mark(u), r.mark(nxt)  # "the lorry is 18 m long", "the road is 7 m wide": a size, no gap
         elif unit_word in ("m", "meters", "meter", "metres") and V.GAP_RANGE_M[0] <= value <= V.GAP_RANGE_M[1]:
             for e in targets:
                 if not e.is_ego:
@@ -9713,6 +9770,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_speakers_vehicle_by_a_part(r)
     _the_learner_at_the_wheel(r)
     _works_report(r)
+    _the_crews_own_stands(r)
     _the_one_driver_spoken_of(r)
     _witness_on_foot(r)
     _rider_reporting_a_driver(r)
@@ -9888,6 +9946,8 @@ def _what_i_was(tokens: list[Token], k: int, start: int | None = None) -> set[st
     pairs = {" ".join(out[i:i + n]) for n in (2, 3, 4) for i in range(len(out) - n + 1)}
     if {"chair", "wheelchair"} & set(out):
         pairs.discard("in my")  # "in my chair": on foot, not at a wheel
+    if out[:2] == ["was", "crossing"] and out[2:3] in (["a"], ["the"]) and {"road", "street"} & set(out[3:6]):
+        pairs.add("crossing the road")  # "I was crossing a quiet street", "I was crossing the main road"
     return set(out) | pairs
 
 
@@ -9962,7 +10022,7 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     opening = min((a for a in first.actions if a[0] == earliest), key=lambda a: a[3], default=None)
     heading = not first.actions and any(f.startswith("compass_") for f in first.features)  # "Car A is heading
     # east towards a crossroads": on its way
-    if not driver_named and not first.waits_to_turn and not heading and (
+    if not driver_named and not first.waits_to_turn and not heading and not _sees_first(r, first) and (
             not any(a[4] in OWN_WAY for a in first.actions) or opening is not None and opening[4] in ("stop", "block")):
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
         # pulled away": met by someone, who is the ego
@@ -9976,6 +10036,21 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
     return first
+
+
+def _sees_first(r: _Reader, first: Entity) -> bool:
+    """'A motorist sees a cyclist 30 m ahead', 'a driver travelling at 13 m/s on a country road notices a child':
+    one who opens the text by seeing another is the one it is told from."""
+    if first.said_at < 0:
+        return False
+    others = {e.said_at for e in r.entities if e is not first}
+    for t in r.tokens[first.said_at + 1:first.said_at + 16]:
+        if t.sentence != r.tokens[first.said_at].sentence or t.index in others or \
+                t.word in (",", "and", "but", "who", "which", "that", "when", "while", "as"):
+            return False
+        if t.base in PERCEIVING:
+            return True
+    return False
 
 
 TOLD_BY_IT = (("in", "front", "of", "it"), ("ahead", "of", "it"), ("behind", "it"), ("on", "its", "right"),
@@ -10089,6 +10164,10 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
         first.actions += [a for a in supplied.actions if not any(b[0] == a[0] for b in first.actions)]
         _taken_over(r, supplied, first)
     first.is_ego = True
+    first.actions = [(a[0], 2, ACTION_RANK["stop"], a[3] or r.tick(), "stop", None) if a[4] == "stop" and
+                     a[1] == 1 and a[2] == ACTION_RANK["go_straight"] and a[3] == 0 else a for a in first.actions]
+    # "a bus heading into town has to stop whenever a lorry comes the other way": what the one the scene is told
+    # from is made to do is what it does (a reaction of another's is kept weak: _modify)
     if first.waits_to_turn:  # "a car is waiting to turn right": the ego's turn, as if said of the ego
         stage, action, direction = first.waits_to_turn
         first.actions.append((stage, 2, ACTION_RANK[action], r.tick(), action, direction))
@@ -10356,6 +10435,42 @@ def _works_report(r: _Reader) -> None:
     if first is not None and first.road_type != "shoulder" and "parked" not in first.features:  # (a works lorry
         # parked on the shoulder is the scene the ego passes)
         _now_the_ego(r, first, "a report from road works is told about the first vehicle it names")
+
+
+CREW_WORDS = WORKS_WORDS + (("closure",), ("closures",), ("coned",), ("cones",), ("stop", "board"),
+                           ("crash", "cushion"), ("ipv",), ("works",), ("operatives",), ("operative",))
+STANDING_STILL = {"stop", "block"}
+
+
+def _the_crews_own_stands(r: _Reader) -> None:
+    """'Our crash cushion truck was parked at the start of the closure and a lorry in lane 1 went into the back of
+    it', 'Sat in our IPV ... a silver Audi came down lane one far too fast': a works crew's own lorry or IPV,
+    standing where the crew work, is the scene the report is about a driver meeting; that driver's vehicle is the
+    ego (a patrol's own car stays theirs)."""
+    words = [t.word for t in r.tokens]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or not _says_any(words, CREW_WORDS) or {"driving", "drove", "drive", "drives"} & set(words) or \
+            any(a[4] not in STANDING_STILL for a in ego.actions) or not (ego.type == "truck" or "ipv" in ego.aliases) \
+            or not any(
+                t.base in {n.split()[-1] for n in ego.aliases | {ego.head}} and
+                {"our", "my"} & set(words[max(0, t.index - 4):t.index])
+                for t in r.tokens):
+        return
+    met = next((e for e in sorted(r.entities, key=lambda e: e.said_at) if not e.is_ego and e.count == 1 and
+                e.parent is None and e.type in V.EGO_TYPES and "parked" not in e.features and
+                any(a[4] in OWN_WAY or a[4] == "stop" for a in e.actions)), None)
+    if met is None:
+        return
+    ego.is_ego = False
+    ego.features = {"parked"} if not ego.actions else set()
+    if met.relative_to is ego and met.relative_how:
+        ego.features.add(SEEN_THE_OTHER_WAY.get(met.relative_how, "ahead"))  # "a Polo had to stop behind it"
+    else:
+        ego.features.add("ahead")  # the crew's vehicle stands where the driver is going
+    met.relative_to = None
+    ego.stage = met.stage
+    _the_ego_now(r, met)
+    r.notes.append(f"read the {met.head} as the ego: a works crew's own vehicle stands where the driver met it")
 
 
 def _witness_on_foot(r: _Reader) -> None:
