@@ -1984,7 +1984,7 @@ def test_mirror_images_read_alike_for_overtaking_then_blocking_and_merging_then_
 def test_a_grid_of_lane_manoeuvres_reads_alike_for_every_vehicle(noun, agent_type):
     for text, action, position in [
             ("in the left lane cuts in front of us", "change_lane_to_right", "left"),
-            ("from the right lane cuts in ahead of us", "change_lane_to_left", "front_right"),
+            ("from the right lane cuts in ahead of us", "change_lane_to_left", "right"),
             ("overtakes us on the left", "go_straight", "back_left"),
             ("swerves into our lane from the left and stops", "block_the_ego", "front_left"),
             ("is tailgating us", "go_straight", "back"),
@@ -6800,7 +6800,7 @@ def test_going_round_keeps_the_side_pulled_out_to_and_the_car_behind_a_queued_eg
 
 @pytest.mark.parametrize("prompt, expected", [
     ("#cutin #highway truck from the right lane", [("car", "go_straight", "ego"),
-                                                    ("truck", "change_lane_to_left", "front_right")]),
+                                                    ("truck", "change_lane_to_left", "right")]),
     ("Cut in test. A van in the left lane.", [("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]),
     ("A truck in the right lane. I cut in front of it.", [("car", "change_lane_to_left", "ego"),
                                                           ("truck", "go_straight", "right")]),
@@ -7075,7 +7075,7 @@ def test_the_car_steered_is_the_egos_a_member_placed_as_its_group_and_a_noun_wit
     ("Two lanes each way, and a white hatchback in the lane to my left cuts straight in front of me.",
      ("car", "change_lane_to_right", "left")),
     ("This van pulls out of the left lane and cuts straight in front of me.",
-     ("car", "change_lane_to_right", "front_left")),
+     ("car", "change_lane_to_right", "left")),
     ("Doing 65 in the right lane and a car in the left lane dives in right in front of my bumper.",
      ("car", "change_lane_to_right", "left")),
 ])
@@ -7769,9 +7769,9 @@ def test_a_lane_change_given_up_is_not_made():
 
 def test_both_after_two_named_in_the_clause_is_those_two():
     assert agents("The ego is in the middle lane. A car from the left lane and a motorcycle from the right lane both "
-                  "cut into the ego's lane.") == [("car", "change_lane_to_right", "front_left"),
+                  "cut into the ego's lane.") == [("car", "change_lane_to_right", "left"),
                                                   ("car", "go_straight", "ego"),
-                                                  ("motorcycle", "change_lane_to_left", "front_right")]
+                                                  ("motorcycle", "change_lane_to_left", "right")]
 
 
 def test_school_children_and_a_test_applicant():
@@ -7892,7 +7892,7 @@ def test_standing_still_in_a_lane_is_at_the_wheel_not_on_foot():
 
 def test_a_videos_time_stamp_is_no_count():
     assert agents("0:42 the van just swings into my lane from the left lane.") == [
-        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]
+        ("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]
 
 
 @pytest.mark.parametrize("prompt, ego", [
@@ -10810,7 +10810,7 @@ def test_a_vehicle_placed_ahead_is_not_the_one_that_came_from_behind():
 
 def test_the_car_behind_is_not_the_one_that_cut_in():
     assert agents("A van cuts in from the left lane. The car behind the ego goes straight.") == [
-        ("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "back"), ("car", "go_straight", "ego")]
+        ("car", "change_lane_to_right", "left"), ("car", "go_straight", "back"), ("car", "go_straight", "ego")]
 
 
 @pytest.mark.parametrize("prompt", [
@@ -11333,7 +11333,7 @@ def test_a_few_words_that_are_also_hindi_leave_english_as_it_is(prompt):
 
 def test_a_clause_with_its_copula_before_a_comma_is_no_list_sharing_a_verb():
     assert agents("I was in the left lane, a bus from the right lane cut in ahead of me.") == [
-        ("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
+        ("bus", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
 
 
 @pytest.mark.parametrize("prompt, expected", [

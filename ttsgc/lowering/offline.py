@@ -9459,8 +9459,10 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if (action == "cut_in" or action == "lane_change" and "from_lane" in f and "into_ego_lane" in f) and \
             not moving_out and not behind and "level" not in f and (side is None or "from_lane" in f or
                                                                     f"from_{side}" in f):
+        from_a_lane_said = side is not None and "from_lane" in f and "lane_said" in f
         side = side or UNSPECIFIED["side_of_a_cyclist_cut_in" if e.type == "cyclist" else "side_of_a_cut_in"]
-        ahead = True  # a cut-in from the lane beside starts ahead of the ego ("in the left lane": level)
+        ahead = ahead or not from_a_lane_said  # a cut-in from the lane beside starts ahead of the ego; from a lane
+        # said ("a car from the left lane cuts in", as "in the left lane that cuts in"): level, unless placed ahead
     if action in ("lane_left", "lane_right") and "into_ego_lane" in f and side is None and \
             not f & {"ego_lane", "to_the_kerb"}:
         side = OTHER_SIDE[action[5:]]  # "a truck moves left into the ego's lane": from the lane on its right,
