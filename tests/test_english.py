@@ -11839,3 +11839,18 @@ def test_with_the_ego_and_its_own_state_and_place(prompt, expected):
 def test_waiting_at_a_pedestrian_crossing_names_no_pedestrian():
     assert agents("The ego waits at a pedestrian crossing while three schoolchildren walk across.") == [
         ("car", "stop", "ego")] + [("pedestrian", "cross_the_road", "near_the_crosswalk")] * 3
+
+
+def test_it_after_the_narrator_reports_a_vehicle_is_that_vehicle():
+    assert agents("I'm reporting a white van. It overtook me while I was riding.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("As I go through the intersection a bus comes in from the left and turns right.",
+     [("bus", "turn_right", "road_of_left_turn"), ("car", "go_straight", "ego")]),
+    ("When I reached the junction a bus pulled out and turned left.",
+     [("bus", "turn_left", "front"), ("car", "go_straight", "ego")]),
+])
+def test_a_subordinate_clause_with_no_comma_ends_where_a_new_subject_and_verb_start(prompt, expected):
+    assert agents(prompt) == expected

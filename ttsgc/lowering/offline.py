@@ -3195,6 +3195,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             continue
         if condition and _main_clause_after_condition(current, units, k):
             close()  # "once you were past the lorry you moved back": the condition ends where its main clause starts
+        elif (condition or link in SUBORDINATE_LINKS) and u.category == "word" and u.word in ("a", "an") and \
+                _has_agent(current) and _has_verb(current) and current[-1].category in ("road", "positions", "agents") \
+                and current[-1].tokens[-1].word not in OBJECT_AWAITED and _subject_and_verb_follow(units, k):
+            close()  # "as I go through the intersection a bus comes in from the north and turns right": the
+            # subordinate clause said in full, then the main one's new subject and its verb
         if current and current[0].category == "actions" and current[0].tokens[0].word.endswith("ing") and \
                 not _has_agent(current) and _subject_and_verb_follow(units, k):
             close(",")  # "coming home last night a cop car pulled out": the narrator's opening participle with no
@@ -3525,6 +3530,12 @@ def _starts_subject(units: list[Unit], k: int) -> bool:
         if u.word in SUBJECT_PRONOUNS:
             return True
     return False
+
+
+SUBORDINATE_LINKS = {"as", "while", "when", "whilst"}
+OBJECT_AWAITED = {"of", "behind", "from", "past", "to", "into", "onto", "at", "in", "on", "by", "with", "towards",
+                  "toward", "across", "around", "round", "between", "beside", "alongside", "near", "passing", "passed"}
+# a place phrase that ends in one of these names its object next ("emerges from behind a van parked ...")
 
 
 def _subject_and_verb_follow(units: list[Unit], k: int) -> bool:
@@ -8875,7 +8886,8 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         single = [e for e in recent if e not in previous_subject and e.type not in V.VULNERABLE_TYPES]
         return single[-1] if single else next((e for e in recent if e.is_ego), None)
     if units[i].word == "it" and not as_object:  # "a cyclist undertook the AV as it was turning": the AV
-        things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES]
+        things = [e for e in previous_subject if e.type not in V.VULNERABLE_TYPES and not (
+            e.is_ego and e.head in SPEAKERS)]  # ("I'm reporting a white van. It overtook me": never the narrator)
         if things:
             return things[0]  # "a crowd streamed across the crosswalk it needed, and it waited": not the crowd
         if previous_subject:
