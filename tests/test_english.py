@@ -11854,3 +11854,21 @@ def test_it_after_the_narrator_reports_a_vehicle_is_that_vehicle():
 ])
 def test_a_subordinate_clause_with_no_comma_ends_where_a_new_subject_and_verb_start(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I had the stop board up when a white Transit carried on past the board and came straight at me.",
+     [("car", "go_straight", "ego"), ("pedestrian", "stop", "front")]),
+    ("I was holding the paddle on STOP and a pickup rolled right up to me and stopped two feet from my boots.",
+     [("car", "stop", "ego"), ("pedestrian", "stop", "front")]),
+    ("Stop/go on the single-lane section. Once the cement mixer was past me I spun the board to GO.",
+     [("truck", "go_straight", "ego")]),
+])
+def test_one_working_the_traffic_on_foot_is_placed_only_when_the_driver_comes_at_them(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_riders_who_say_we_ride_their_own_bike():
+    assert agents("We were two-up on the Africa Twin, sat at a red light behind a Honda Civic, when a kid on a "
+                  "pushbike shot across the junction from the left.") == [
+        ("car", "stop", "front"), ("cyclist", "cross_the_road", "road_of_left_turn"), ("motorcycle", "stop", "ego")]

@@ -4858,7 +4858,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     ridden = u.base in ("bike", "motorbike", "moped", "scooter", "motorcycle") or kind == "motorcycle" and \
         not u.base.endswith(("ist", "er", "rider", "courier", "cop"))  # "on the GS", "my Bonneville": a machine
     on_the_bike = ridden and not plural and count is None and \
-        _the_riders_own(units, head, first, lo, words) and any(t.word in ("i", "me", "my", "i'm") for t in r.tokens) and \
+        _the_riders_own(units, head, first, lo, words) and any(t.word in ("i", "me", "my", "i'm", "we", "us", "our")
+                                                               for t in r.tokens) and \
         not any(e.is_ego and e.type not in ("car", "motorcycle") for e in r.entities)
     if on_the_bike:  # "coming up to the junction on the bike", "just me and the bike": the rider's own; one who speaks
         is_ego, kind = True, "motorcycle"  # cannot be a cyclist ego, so the bike is a motorbike
@@ -10375,9 +10376,12 @@ def _the_learner_at_the_wheel(r: _Reader) -> None:
         r.notes.append(f"read the {e.head} who drives as the ego")
 
 
+COMING_AT_ME = (("at", "me"), ("towards", "me"), ("toward", "me"), ("up", "to", "me"), ("my", "boots"),
+                ("my", "feet"), ("hit", "me"), ("clipped", "me"), ("missed", "me"))
 TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), ("stop", "slow", "bat"),
                    ("my", "stop", "go"), ("flagging",), ("my", "end"), ("to", "my", "red"), ("at", "my", "red"),
-                   ("spun", "the", "board"), ("spun", "it", "to"), ("waved", "through"), ("speed", "gun"))
+                   ("spun", "the", "board"), ("spun", "it", "to"), ("waved", "through"), ("speed", "gun"),
+                   ("stop", "board"), ("the", "paddle"), ("stop", "slow"), ("go", "board"), ("my", "stop", "end"))
 # a road-works operative's words for holding and releasing traffic: the teller is on foot at the roadside
 
 
@@ -10558,7 +10562,16 @@ def _witness_on_foot(r: _Reader) -> None:
     place = "ahead" if "ahead" in first_sentence else "behind" if "behind" in first_sentence else None
     placed = not controlling and (place is not None or any(
         text[k + 1:k + 2] == ["me"] and w in MET_BY or
-        text[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(text)))  # (one at a works board: no one)
+        text[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(text)))  # (one at a works board: no one,
+    # unless the driver comes at them: "carried on past the board and came straight at me", "rolled right up to me")
+    in_the_way = controlling and _says_any(text, COMING_AT_ME)
+    if in_the_way:
+        ego.is_ego, ego.type, ego.road_type = False, "pedestrian", None
+        ego.features = {"ahead", "in_road"}
+        ego.actions = [(0, 2, ACTION_RANK["stop"], r.tick(), "stop", None)]
+        _the_ego_now(r, subject)
+        r.notes.append(f"inferred: the teller works the traffic on foot, in the way of the '{subject.head}', the ego")
+        return
     if placed:
         ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
         ego.features = {"on_sidewalk", side} | ({place} if place else set())
