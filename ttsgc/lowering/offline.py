@@ -10457,19 +10457,18 @@ def _works_report(r: _Reader) -> None:
 
 CREW_WORDS = WORKS_WORDS + (("closure",), ("closures",), ("coned",), ("cones",), ("stop", "board"),
                            ("crash", "cushion"), ("ipv",), ("works",), ("operatives",), ("operative",))
-STANDING_STILL = {"stop", "block"}
+STANDING_ACTIONS = {"stop", "block"}
 
 
 def _the_crews_own_stands(r: _Reader) -> None:
     """'Our crash cushion truck was parked at the start of the closure and a lorry in lane 1 went into the back of
-    it', 'Sat in our IPV ... a silver Audi came down lane one far too fast': a works crew's own lorry or IPV,
-    standing where the crew work, is the scene the report is about a driver meeting; that driver's vehicle is the
-    ego (a patrol's own car stays theirs)."""
+    it', 'our arrow board truck parked at the head of the taper; a semi in the right lane started merging left': a
+    works crew's own lorry, standing where the crew work, is the scene the report is about a driver meeting; that
+    driver's vehicle is the ego (a patrol's own car stays theirs)."""
     words = [t.word for t in r.tokens]
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None or not _says_any(words, CREW_WORDS) or {"driving", "drove", "drive", "drives"} & set(words) or \
-            any(a[4] not in STANDING_STILL for a in ego.actions) or not (ego.type == "truck" or "ipv" in ego.aliases) \
-            or not any(
+            any(a[4] not in STANDING_ACTIONS for a in ego.actions) or ego.type != "truck" or not any(
                 t.base in {n.split()[-1] for n in ego.aliases | {ego.head}} and
                 {"our", "my"} & set(words[max(0, t.index - 4):t.index])
                 for t in r.tokens):
