@@ -215,7 +215,7 @@ def test_in_tandem_is_how_they_travel_not_a_tandem_bicycle():
     ("Cut-in from left at 60 mph. Sedan in left lane moves into ego lane just ahead.",
      [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego")]),
     ("Cut-in from right lane. A white van swerves in front of the ego.",
-     [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+     [("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]),
     ("Aggressive cut-in from the right lane ahead.", [("car", "change_lane_to_left", "front_right"),
                                                       ("car", "go_straight", "ego")]),
 ])

@@ -50,9 +50,9 @@ def test_a_noun_set_off_after_the_ego_with_nothing_of_its_own_still_says_what_th
     ("ego stopped at the lights, oncoming car turning left, lead car braking",
      [("car", "stop", "ego"), ("car", "stop", "front"), ("car", "turn_left", "road_of_straight")]),
     ("ego going straight. lead car braking. car cutting in from the left lane",
-     [("car", "change_lane_to_right", "front_left"), ("car", "go_straight", "ego"), ("car", "stop", "front")]),
+     [("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego"), ("car", "stop", "front")]),
     ("my car changing lanes to the left; car cutting in from the left lane",
-     [("car", "change_lane_to_left", "ego"), ("car", "change_lane_to_right", "front_left")]),
+     [("car", "change_lane_to_left", "ego"), ("car", "change_lane_to_right", "left")]),
 ])
 def test_a_bare_noun_with_its_own_place_or_another_verb_is_not_the_one_named_before(prompt, expected):
     assert agents(prompt) == sorted(expected)
