@@ -644,7 +644,8 @@ def test_the_collision_check_is_linear_in_the_number_of_agents():
         J.criticality(trace, trace.bodies, "a000")
         return time.perf_counter() - t
     small, large = min(seconds(20) for _ in range(3)), min(seconds(100) for _ in range(3))
-    assert large < 8 * small  # 5x the agents; linear with slack for a shared machine
+    assert large < 12 * small  # 5x the agents: linear is ~5x, quadratic ~25x; slack for a shared machine (8x was
+    # seen exceeded once under load)
 
 
 def test_the_report_order_does_not_depend_on_the_order_of_the_trace():
