@@ -10490,6 +10490,16 @@ def _the_crews_own_stands(r: _Reader) -> None:
     r.notes.append(f"read the {met.head} as the ego: a works crew's own vehicle stands where the driver met it")
 
 
+def _the_teller_on_foot(r: _Reader, teller: Entity, vehicle: Entity, features: set[str], action: str,
+                        note: str) -> None:
+    """The teller, read at first as the ego, is on foot where the vehicle met them; that vehicle is the ego."""
+    teller.is_ego, teller.type, teller.road_type = False, "pedestrian", None
+    teller.features = features
+    teller.actions = [(0, 2, ACTION_RANK[action], r.tick(), action, None)]
+    _the_ego_now(r, vehicle)
+    r.notes.append(note)
+
+
 def _witness_on_foot(r: _Reader) -> None:
     """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
     and the vehicle the statement is about (the first that moves) is the ego."""
@@ -10534,24 +10544,19 @@ def _witness_on_foot(r: _Reader) -> None:
         subject = movers[0]  # "... when a silver hatchback pulled up and waited for me": the one met on the way over
         at_a_crossing = bool(words & {"crosswalk", "zebra", "pelican", "puffin", "toucan", "the crossing", "green man",
                                       "walk signal"})
-        ego.is_ego, ego.type, ego.road_type = False, "pedestrian", None
-        ego.features = {"crosswalk"} if at_a_crossing else {"ahead"}
         froze = any(a[4] == "stop" for a in ego.actions) and any(t.word in ("froze", "frozen") for t in r.tokens)
         # "I was on the zebra ... and I just froze in the middle"
-        ego.actions = [(0, 2, ACTION_RANK["stop" if froze else "cross"], r.tick(), "stop" if froze else "cross", None)]
-        _the_ego_now(r, subject)
-        r.notes.append(f"inferred: the teller was crossing on foot; the '{subject.head}' that met them is the ego")
+        _the_teller_on_foot(r, ego, subject, {"crosswalk"} if at_a_crossing else {"ahead"},
+                            "stop" if froze else "cross",
+                            f"inferred: the teller was crossing on foot; the '{subject.head}' that met them is the ego")
         return
     if patrol:
         subject = movers[0]
-        ego.is_ego, ego.type, ego.features, ego.road_type = False, "pedestrian", {"crosswalk"}, None
         waits = any(t.word in ("stood", "standing", "waiting", "waited") and r.tokens[k - 1].word in ("me", "i", "was")
                     for k, t in enumerate(r.tokens) if k)  # "with me stood on the kerb": waiting to cross
-        ego.actions = [(0, 2, ACTION_RANK["stop" if waits else "cross"], r.tick(), "stop" if waits else "cross",
-                        None)]
-        _the_ego_now(r, subject)
-        r.notes.append(f"inferred: the speaker sees people over a crossing, on foot; the '{subject.head}' that meets "
-                       "them is the ego")
+        _the_teller_on_foot(r, ego, subject, {"crosswalk"}, "stop" if waits else "cross",
+                            f"inferred: the speaker sees people over a crossing, on foot; the '{subject.head}' that "
+                            "meets them is the ego")
         return
     subject = movers[0]
     for e in [e for e in r.entities if not e.is_ego and e.head == "vehicle" and not e.actions and e is not subject]:
@@ -10565,11 +10570,9 @@ def _witness_on_foot(r: _Reader) -> None:
     # unless the driver comes at them: "carried on past the board and came straight at me", "rolled right up to me")
     in_the_way = controlling and _says_any(text, COMING_AT_ME)
     if in_the_way:
-        ego.is_ego, ego.type, ego.road_type = False, "pedestrian", None
-        ego.features = {"ahead", "in_road"}
-        ego.actions = [(0, 2, ACTION_RANK["stop"], r.tick(), "stop", None)]
-        _the_ego_now(r, subject)
-        r.notes.append(f"inferred: the teller works the traffic on foot, in the way of the '{subject.head}', the ego")
+        _the_teller_on_foot(r, ego, subject, {"ahead", "in_road"}, "stop",
+                            f"inferred: the teller works the traffic on foot, in the way of the '{subject.head}', the "
+                            "ego")
         return
     if placed:
         ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
