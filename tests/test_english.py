@@ -16,7 +16,7 @@ from ttsgc.evaluate import agent_accuracy, load_gold, road_accuracy, weather_acc
 from ttsgc.language import parse
 from ttsgc.lowering import lower_prompt
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
-from ttsgc.lowering.lexicon import FOLDER, TOO_LARGE, read_number, tokenize
+from ttsgc.lowering.lexicon import FOLDER, TOO_LARGE, one_line_records, read_number, tokenize
 from ttsgc.lowering.narration import read_narration
 from ttsgc.lowering.offline import lower
 from ttsgc.resources import resource_dir
@@ -11872,3 +11872,54 @@ def test_riders_who_say_we_ride_their_own_bike():
     assert agents("We were two-up on the Africa Twin, sat at a red light behind a Honda Civic, when a kid on a "
                   "pushbike shot across the junction from the left.") == [
         ("car", "stop", "front"), ("cyclist", "cross_the_road", "road_of_left_turn"), ("motorcycle", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Sat at the red on the A38 in the wagon when a cop car came up behind me on blues.",
+     [("police", "go_straight", "back"), ("truck", "stop", "ego")]),
+    ("Bobtailing back to the yard, I was stopped at a four way stop and a pickup from my right rolled through.",
+     [("car", "go_straight", "road_of_right_turn"), ("truck", "stop", "ego")]),
+])
+def test_a_truckers_own_words_for_the_truck_make_the_ego_a_truck(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("EGO: bus / turn right || NPC1: cyclist / from left road / straight || NPC2: car / oncoming / stopped || "
+     "Junction: signalised crossroads",
+     [("bus", "turn_right", "ego"), ("car", "stop", "road_of_straight"),
+      ("cyclist", "go_straight", "road_of_left_turn")]),
+    ("{ego: bus, straight} {npc: car, right lane just ahead, cuts in to the left} {weather: heavy rain, night}",
+     [("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "front_right")]),
+    ("ego=car:turn_right; a1=car:from opposite road:straight; junction=crossroads, no traffic lights",
+     [("car", "go_straight", "road_of_straight"), ("car", "turn_right", "ego")]),
+    ("ego_type=truck ego_manoeuvre=straight npc_1=police,behind,straight npc_2=car,same lane ahead,braking to a stop",
+     [("car", "stop", "front"), ("police", "go_straight", "back"), ("truck", "go_straight", "ego")]),
+])
+def test_a_record_of_keyed_fields_on_one_line_reads_a_field_a_line(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_list_of_tags_on_one_line_stays_a_list_of_tags():
+    assert one_line_records("ego: car | weather: fog | lanes: 3") == "ego: car | weather: fog | lanes: 3"
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A bloke in a black BMW swung left into Mill Lane while I was crossing the end of it in my powerchair.",
+     [("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("A lorry driver stopped well short of the zebra and waved me and my guide dog across.",
+     [("pedestrian", "cross_the_road", "near_the_crosswalk"), ("truck", "stop", "ego")]),
+    ("I was waiting at the zebra on my mobility scooter when a van parked right across it.",
+     [("car", "stop", "ego"), ("pedestrian", "stop", "near_the_crosswalk")]),
+])
+def test_a_teller_with_a_mobility_aid_is_on_foot_and_met_by_the_vehicle(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was crossing the zebra with my son when a van drove straight over it.",
+    "My daughter and I were halfway over the zebra when a taxi sailed through.",
+])
+def test_kin_crossing_with_the_teller_cross_too(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego")] + [
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")] * 2

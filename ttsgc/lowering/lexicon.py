@@ -1491,6 +1491,63 @@ def _tag_key_patterns() -> tuple[tuple[tuple[str, re.Pattern], ...], re.Pattern,
     return counts, label, piped_label
 
 
+RECORD_SEPARATORS = (re.compile(r"\s*\|\|\s*"), re.compile(r"\s*;;\s*"), re.compile(r"\s*\}\s*\{\s*"),
+                     re.compile(r"\s+\|\s+"), re.compile(r"\s*;\s*"))
+FIELD_KEY = re.compile(r"^([A-Za-z][A-Za-z0-9 _#'-]{0,24}?)\s*(?::|=|->|\||\s[-\u2013\u2014]\s)\s*(?=\S)")
+SPACED_TAG = re.compile(r"\s+(?=[A-Za-z][A-Za-z0-9_]*=)")
+INNER_SEPARATORS = re.compile(r"\s+[/|]\s+|\s+[-\u2013\u2014]\s+|(?<=[a-z0-9]):(?=[a-z])|(?<=[a-z]{3})/(?=[a-z]{3})")
+# ("ambulance/turn_left", "car:from opposite road:straight"; not "km/h", "a1/a2")
+
+
+def _records_of_agents(fields: list[str]) -> bool:
+    """Two fields or more keyed by an agent ('EGO:', 'NPC1:', 'a1='), one of them not the ego's with more than one
+    thing said of it ('cyclist / from left road / straight'): a record per agent, not a list of tags ('ego: car |
+    weather: fog')."""
+    keyed = [(m.group(1), field[m.end():]) for field in fields if (m := FIELD_KEY.match(field))]
+    agents = [(key, value) for key, value in keyed if key.lower().split()[0] == "ego" or _names_agent(key)]
+    return len(agents) >= 2 and any(key.lower().split()[0] != "ego" and len(re.split(r",|" + INNER_SEPARATORS.pattern,
+                                                                                     value)) >= 2
+                                    for key, value in agents)
+
+
+def one_line_records(text: str) -> str:
+    """'EGO: bus / turn right || NPC1: cyclist / from left road / straight', '{ego: bus, straight} {npc: car, ...}',
+    'ego=car:turn_right; a1=car:from opposite road:straight', 'ego_type=truck npc_1=police,behind,straight': a
+    record of keyed fields typed on one line reads as the same fields a line each ('NPC1: cyclist, from left road,
+    straight'), the keys an ego is named by ('ego_type', 'ego_manoeuvre') one line."""
+    line = text.strip().strip("{}").strip()
+    if "\n" in line or len(line) > 600:
+        return text
+    fields: list[str] = []
+    for separator in RECORD_SEPARATORS:
+        pieces = [p.strip(" {}") for p in separator.split(line) if p.strip(" {}")]
+        if len(pieces) >= 2 and all(len(p.split()) <= 16 for p in pieces) and _records_of_agents(pieces):
+            fields = pieces
+            break
+    if not fields and len(SPACED_TAG.findall(" " + line)) >= 3 and FIELD_KEY.match(line) and \
+            not re.search(r",\s*[A-Za-z][A-Za-z0-9_]*=", line):
+        fields = SPACED_TAG.split(line)  # "ego_type=truck ego_manoeuvre=straight npc_1=police,behind,straight" (tags
+        # with commas between, "ego=truck, lead=bus", are read as tags)
+    if not fields:
+        return text
+    lines: list[tuple[str, str]] = []
+    for field in fields:
+        m = FIELD_KEY.match(field)
+        if m is None:
+            lines.append(("", field))
+            continue
+        key = m.group(1).replace("_", " ").strip()
+        value = re.sub(r"\s*\(([^()]*)\)", r", \1", field[m.end():])  # "van (straight)", "car(turn_left)"
+        value = ", ".join(p for p in INNER_SEPARATORS.split(value) if p.strip())
+        value = re.sub(r"\s*,\s*", ", ", value)
+        if lines and key.lower().split()[0] == "ego" and lines[-1][0].lower().split()[:1] == ["ego"]:
+            lines[-1] = ("Ego", lines[-1][1] + ", " + value)  # "ego_type=truck ego_manoeuvre=straight": one ego
+            continue
+        lines.append(("Ego" if key.lower().split()[0] == "ego" and len(key.split()) == 2 and
+                      key.lower().split()[1] in ("type", "vehicle", "manoeuvre", "maneuver", "action") else key, value))
+    return "\n".join(f"{key}: {value}" if key else value for key, value in lines)
+
+
 def _without_tag_keys(text: str) -> str:
     """A scene typed as key=value tags ('ego=truck, lanes=2', 'weather: fog | lanes: 3') names each thing by its
     key: the pair reads as the tag it stands for ('the ego truck', '2 lanes'), not as a sentence the colon ends

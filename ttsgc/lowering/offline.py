@@ -32,8 +32,8 @@ from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
 from ttsgc.lowering.narration import OTHER_PEOPLE, read_narration
 from ttsgc.lowering.lexicon import (SIGNAL_COLOURS, TOO_LARGE, Match, Token, _lookup, _names_agent, _verbs, bodies,
-                                    categories, compound_heads, crews, lexicon, loose_names, matches, read_number,
-                                    rule_before_its_scene, tokenize, typologies)
+                                    categories, compound_heads, crews, lexicon, loose_names, matches, one_line_records,
+                                    read_number, rule_before_its_scene, tokenize, typologies)
 from ttsgc.lowering.sampling import OpenChoices
 from ttsgc.scenario import Agent, Comment, RoadSpec, Scenario, Speed, Stage, Trigger, Weather, find_problems
 
@@ -4471,6 +4471,12 @@ def _on_foot_in_the_scene(units: list[Unit], head: int) -> bool:
         V.CROSSWALK_OBJECTS for u in units[head + 1:])
 
 
+def _on_foot_with_someone(units: list[Unit], first: int) -> bool:
+    """'I was crossing the zebra with my son': kin who go with one crossing or walking go on foot too."""
+    return first > 0 and units[first - 1].word == "with" and any(
+        u.category == "actions" and u.meaning in ("cross", "walk") for u in units[max(0, first - 8):first - 1])
+
+
 def _of_a_group(units: list[Unit], first: int) -> bool:
     """'a whole crowd of people': the people are the crowd, counted as one; 'a bus full of people' are not."""
     k = first - 1 if units[first].word == "of" else first - 2
@@ -4905,7 +4911,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     told_to = "your" in owners and any(t.word == "i" for t in r.tokens)  # "I had to drive your grandfather": the
     # listener's kin, as a teller speaks to them
     if ((owners - {"your"} or told_to) and u.tokens[-1].base in KIN or not words and first == head and
-            u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head):
+            u.tokens[-1].word in KIN_NAMES) and not _on_foot_in_the_scene(units, head) and \
+            not _on_foot_with_someone(units, first):
         return NounPhrase(None, head, first)  # "taking my mother to her appointment": a passenger, no agent;
         # "mom said no more driving": kin named as a name, by a text's writer
     carried = kind == "pedestrian" and count is None and next(
@@ -9608,7 +9615,7 @@ def _name(prompt: str) -> str:
 def lower(prompt: str, seed: int = 0) -> Lowered:
     """Lower an English prompt into a Scenario; LoweringError when nothing in it can be read as a scene."""
     narration = read_narration(rule_before_its_scene(prompt))
-    prompt = narration.text
+    prompt = one_line_records(narration.text)
     tokens = tokenize(prompt)
     if not tokens:
         raise LoweringError("the prompt is empty")
@@ -9885,8 +9892,9 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
            "bench", "was across the street", "was across the road", "on the porch", "on my porch", "in the garden",
            "in my garden", "at the window", "at my window", "over the zebra", "on the zebra", "across the zebra",
            "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal",
-           "on the crossing", "on the crosswalk", "halfway across", "halfway over"} | \
-    STEPPING_OVER
+           "on the crossing", "on the crosswalk", "halfway across", "halfway over", "wheeled across", "wheeled over",
+           "rolled across", "crossed in front", "crossing in front", "crossing the zebra", "crossing the crosswalk",
+           "pushing the pram", "pushing the buggy", "pushing the stroller", "pushing the pushchair"} | STEPPING_OVER
 # (a wheelchair user, waiting to cross or on the way over; one watching from a bench, a porch or across the street;
 # not "I stopped for kids on the crossing")
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
@@ -9945,6 +9953,8 @@ def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
 
 
 STILL_PARTICIPLES = {"sitting", "sat", "standing", "stood", "waiting", "walking"}
+OPENING_ON_FOOT = STILL_PARTICIPLES | {"from", "crossing", "pushing", "wheeling"}  # "Crossing the zebra pushing the
+# pram, a Tesco lorry came towards us": the teller, first as an opening participle's subject
 
 
 def _what_i_was(tokens: list[Token], k: int, start: int | None = None) -> set[str]:
@@ -10390,7 +10400,10 @@ OWN_MOBILITY_AIDS = (("my", "wheelchair"), ("my", "chair"), ("my", "power", "cha
                      ("use", "a", "wheelchair"), ("use", "a", "mobility", "scooter"), ("wheelchair", "user"),
                      ("i'm", "in", "a", "wheelchair"), ("i", "am", "in", "a", "wheelchair"),
                      ("on", "a", "mobility", "scooter"), ("on", "mobility", "scooters"),
-                     ("drive", "a", "mobility", "scooter"))
+                     ("drive", "a", "mobility", "scooter"), ("my", "powerchair"), ("my", "frame"),
+                     ("my", "guide", "dog"), ("my", "pram"), ("my", "stroller"), ("my", "buggy"), ("my", "pushchair"),
+                     ("my", "walking", "stick"), ("my", "cane"), ("my", "crutches"), ("my", "zimmer"),
+                     ("me", "in", "the", "wheelchair"), ("me", "in", "my", "wheelchair"))
 MET_BY = {"towards", "toward", "past", "beside", "at", "across", "round", "around", "into", "hit", "missed", "clipped",
           "struck"}  # "came straight at me", "turned left across me", "nearly hit me": a witness in the way
 
@@ -10490,6 +10503,18 @@ def _the_crews_own_stands(r: _Reader) -> None:
     r.notes.append(f"read the {met.head} as the ego: a works crew's own vehicle stands where the driver met it")
 
 
+CROSSINGS = (("zebra",), ("crosswalk",), ("pelican",), ("puffin",), ("toucan",), ("the", "crossing"))
+ON_THE_WAY_OVER = {"across", "crossing", "crossed", "cross", "over", "halfway"}
+
+
+def _on_the_way_over(tokens: list[Token]) -> bool:
+    """'waved me and my guide dog across', 'while I crossed', 'as we were halfway across the side road': the
+    teller (or the teller's party) on the way over, said within a few words of naming them."""
+    return any(t.word in SPEAKING_SELF and any(
+        u.word in ON_THE_WAY_OVER and u.sentence == t.sentence for u in tokens[t.index + 1:t.index + 7])
+        for t in tokens)
+
+
 def _the_teller_on_foot(r: _Reader, teller: Entity, vehicle: Entity, features: set[str], action: str,
                         note: str) -> None:
     """The teller, read at first as the ego, is on foot where the vehicle met them; that vehicle is the ego."""
@@ -10512,12 +10537,16 @@ def _witness_on_foot(r: _Reader) -> None:
     if not told_by_me or ego.type != "car" and not on_a_scooter:
         return  # ("I am a bus driver ... moving off from the bus stop": at the wheel of the bus)
     said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")] + \
-        [_what_i_was(r.tokens, k, k) for k, t in enumerate(r.tokens) if t.word in STILL_PARTICIPLES | {"from"} and
+        [_what_i_was(r.tokens, k, k) for k, t in enumerate(r.tokens) if t.word in OPENING_ON_FOOT and
          _opens_its_sentence(r.tokens, t)]  # "Sitting at the bus stop ..., I watched a car",
     # "From the bench outside the chemist's I watched"
     words = set().union(*said) if said else set()
     if _says_any(text, OWN_MOBILITY_AIDS):
         words.add("wheelchair")  # "the driver only saw my wheelchair at the last second": the teller is on foot
+        words.discard("in my")  # ("while I was crossing the end of it in my powerchair": sat in it, on foot)
+        if _on_the_way_over(r.tokens) or not words & (FOOTWAYS | {"bus stop"}) and _says_any(text, CROSSINGS):
+            words.add("crossing")  # "waved me and my guide dog across", "a taxi sat right across the pelican
+            # crossing ..., so I had to shuffle round its front bumper": on the way over
     if words & {"standing water", "standing traffic", "standing queue"}:
         words -= {"standing"}  # "I hit standing water": what stood, not the witness
     if words & {"stood still", "stand still", "standing still"}:
@@ -10544,8 +10573,9 @@ def _witness_on_foot(r: _Reader) -> None:
         subject = movers[0]  # "... when a silver hatchback pulled up and waited for me": the one met on the way over
         at_a_crossing = bool(words & {"crosswalk", "zebra", "pelican", "puffin", "toucan", "the crossing", "green man",
                                       "walk signal"})
-        froze = any(a[4] == "stop" for a in ego.actions) and any(t.word in ("froze", "frozen") for t in r.tokens)
-        # "I was on the zebra ... and I just froze in the middle"
+        froze = any(a[4] == "stop" for a in ego.actions) and any(t.word in ("froze", "frozen") for t in r.tokens) \
+            or bool(words & {"waiting", "waited"})  # "I was on the zebra ... and I just froze in the middle",
+        # "I was stuck waiting there on my mobility scooter"
         _the_teller_on_foot(r, ego, subject, {"crosswalk"} if at_a_crossing else {"ahead"},
                             "stop" if froze else "cross",
                             f"inferred: the teller was crossing on foot; the '{subject.head}' that met them is the ego")
@@ -10926,6 +10956,7 @@ def _the_ego_now(r: _Reader, vehicle: Entity) -> None:
 
 
 CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheeling across", "in the crosswalk",
+                    "wheeled across", "wheeled over", "rolled across", "crossed in front",
                     "across the road", "across the street", "over the zebra", "on the zebra", "across the zebra",
                     "green man", "walk signal"} | STEPPING_OVER
 # what a teller on foot was doing: on the way over
@@ -11187,7 +11218,13 @@ def _set_off_after_the_ego(tokens: list[Token], clause: Clause, before: list[Uni
 
 TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty", "trailer"), ("my", "trailer"),
                   ("my", "rig"), ("the", "rig"), ("my", "load"), ("tachograph",), ("tacho",), ("trucking", "on"),
-                  ("trucking", "along"), ("trucking", "down"), ("trucking", "through"))
+                  ("trucking", "along"), ("trucking", "down"), ("trucking", "through"), ("my", "unit"),
+                  ("in", "the", "unit"), ("in", "the", "wagon"), ("my", "wagon"), ("in", "the", "artic"),
+                  ("my", "artic"), ("the", "rigid"), ("my", "rigid"), ("in", "the", "tipper"), ("my", "tipper"),
+                  ("the", "pete"), ("my", "pete"), ("my", "tractor", "trailer"), ("steer", "tire"), ("steer", "tyre"),
+                  ("bobtailing",), ("night", "trunk"), ("trunking",), ("multidrop",), ("multi", "drop"),
+                  ("the", "shipper"), ("the", "receiver"), ("my", "reefer"), ("in", "the", "truck"))
+# (a unit, a wagon, a rigid, a Pete: a trucker's own truck; not "struck the unit" of a fleet's van)
 
 
 BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out"), (",", "arm", "out"), ("my", "bus"),
