@@ -11923,3 +11923,58 @@ def test_a_teller_with_a_mobility_aid_is_on_foot_and_met_by_the_vehicle(prompt, 
 def test_kin_crossing_with_the_teller_cross_too(prompt):
     assert agents(prompt) == [("car", "go_straight", "ego")] + [
         ("pedestrian", "cross_the_road", "near_the_crosswalk")] * 2
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Dispatch, 4-Adam-3, we're sat in traffic on the Westway, boxed in by a bus in front.",
+     [("bus", "block_the_ego", "front"), ("police", "stop", "ego")]),
+    ("0845. On patrol in marked IRV, Church St. A male on a pedal cycle rode off the footway and crossed the road in "
+     "front of us.", [("cyclist", "cross_the_road", "front"), ("police", "go_straight", "ego")]),
+])
+def test_a_patrols_own_run_or_call_sign_makes_the_ego_a_police_car(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_an_opening_participle_on_foot_makes_the_teller_a_witness():
+    assert agents("Whilst on foot at the taxi rank, I saw a black cab turn right across the path of an oncoming "
+                  "moped.") == [("car", "turn_right", "ego"), ("motorcycle", "go_straight", "road_of_straight")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Amazon van, doing drops on Elm Street. I was parked on the right with my hazards on and a school bus went past "
+     "me.", [("bus", "go_straight", "back_left"), ("car", "stop", "ego")]),
+    ("Taxi stopped at the stop sign on Oak. A jogger went across in front of me.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("Car stopped at the lights. I went round it.", [("car", "change_lane_to_left", "ego"), ("car", "stop", "front")]),
+    ("Van on the hard shoulder. I moved over to the middle lane.",
+     [("car", "change_lane_to_left", "ego"), ("car", "stop", "front_right")]),
+])
+def test_a_text_opening_on_a_bare_standing_vehicle_opens_on_the_speakers_own(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_vehicle_words_kept_from_another_language():
+    assert agents("On highway I drive behind big tir, he go very slow, so I go to left lane for overtake him.") == [
+        ("car", "change_lane_to_left", "ego"), ("truck", "go_straight", "front")]
+    assert agents("Make scenario please: two otobüs waiting on red light in front of ego car, ego also stop.") == [
+        ("bus", "stop", "front"), ("bus", "stop", "front"), ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Riding along the cycle lane this morning and a tipper lorry comes alongside me then swings left into Tollington "
+    "Way.",
+    "Road: A6 northbound. Summary: The HGV overtook me at around 50mph and the draught nearly pulled me off the bike.",
+])
+def test_a_rider_said_of_no_noun_is_a_cyclist_met_by_the_vehicle_reported(prompt):
+    found = agents(prompt)
+    assert ("cyclist", "go_straight", "front") in found and found[-1][0] == "truck" and found[-1][2] == "ego"
+
+
+def test_a_summary_told_by_the_one_it_happened_to_is_the_scene_and_a_short_one_a_title():
+    assert agents("Summary: Unprotected left turn with oncoming traffic.") == [("car", "turn_left", "ego")]
+    assert len(agents("Road: A6. Summary: The van overtook me and cut in sharply right in front of my car.")) == 2
+
+
+def test_a_witness_on_the_pavement_a_vehicle_comes_towards_is_ahead_of_it_in_its_path():
+    assert agents("I was on the pavement outside the bakery when a white Transit mounted the kerb and came towards "
+                  "me.") == [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front")]

@@ -588,6 +588,9 @@ NUMBERED_KEY = re.compile(r"\s*([A-Z][a-z]+ \d{1,3}[a-z]?|[A-Za-z]{1,8}[-_]\d{2,
 CASE_NUMBER = re.compile(r"[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*")  # 'TC-052', 'HZ-014': a case's number keys its title
 NUMBERED_CASE = re.compile(r"[a-z]+\s+#?(?:\d{1,4}[a-z]?|[a-z]{1,8}[-_]?\d+(?:[-_.]\d+)*)")  # 'hazard h-22', 'event 7'
 TRIGGER_KEYS = {"triggering condition", "trigger condition", "trigger", "triggering event", "trigger event"}
+ACCOUNT_KEYS = {"summary", "report", "what happened", "narrative", "incident"}  # a field of a form
+# that tells what happened ("Summary: The HGV overtook me ..."): the scene, not its title, when told by the one it
+# happened to (not an auditor's "we")
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
@@ -977,7 +980,10 @@ def _lines(text: str) -> str:
             out.append("\u00a7 " + value + "." if _verbless(value) else f"{key}: {value}.")  # "Exercise 10: the
             continue  # occluded pedestrian.": the case's name; "Hazard H-22: pedestrian emerging from behind parked
             # vehicles.", "Triggering condition: a child steps out": a heading over what it names
-        told = "ego" in [w.lower() for w in value.split()[:2]] and len(value.split()) >= 5 and not gherkin
+        told = ("ego" in [w.lower() for w in value.split()[:2]] and len(value.split()) >= 5 or
+                lowered in ACCOUNT_KEYS and bool(
+                    {"i", "me", "my"} & {w.lower().strip(",.") for w in value.split()})) and \
+            not gherkin
         # "Scene: ego turning left at a signalised intersection, one oncoming sedan going straight": the scene
         # itself, no title (but a Gherkin scenario's name, told again by its steps)
         if lowered.split()[0] in TITLE_KEYS and lowered not in PLAIN_KEYS and not told or \

@@ -984,6 +984,9 @@ def _vehicle_numbers(text: str) -> str:
     vehicle or a place counts nothing and limits no speed."""
     text = re.sub(r"\b(?:the\s+)?(?:number|no\.|#)\s*\d+\s+" + _NOUN + r"\b", lambda m: "the " + m.group(1), text,
                   flags=re.I)
+    text = re.sub(r"\bthe\s+number\s+\d{1,3}[a-z]?(?=\s+(?:[a-z]+ed|came|went|ran|overtook|swung|cut|shot|drove|sped|"
+                  r"flew|hit|nipped|pulled|knelt)\b)", "the bus", text, flags=re.I)  # "the number 36 squeezed past
+    # me": a bus by its route, doing something (not "driving the number 37 service")
     text = re.sub(r"\b(?:Engine|Ladder|Quint)\s+\d{1,3}\b", "fire engine", text)  # a fire service's units by call sign
     text = re.sub(r"\bMedic\s+\d{1,3}\b", "ambulance", text)
     text = _numbered_alike(text)

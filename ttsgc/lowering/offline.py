@@ -9499,7 +9499,8 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if walking:
         if has_crosswalk and (side is None or "crosswalk" in f) and not f & {"ahead", "behind"}:
             return "near_the_crosswalk", False  # standing by the crossing ("on your left near the crossing")
-        side = side or UNSPECIFIED["side_of_a_sidewalk_walker"]
+        side = side or (None if "met_head_on" in f else UNSPECIFIED["side_of_a_sidewalk_walker"])  # (one the ego
+        # drives along the pavement towards is in its path)
     if side is not None:
         if person and crossing and not behind:
             return f"front_{side}", False
@@ -10395,6 +10396,8 @@ TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), (
 # a road-works operative's words for holding and releasing traffic: the teller is on foot at the roadside
 
 
+COMING_TOWARDS_ME = (("towards", "me"), ("toward", "me"), ("straight", "at", "me"), ("right", "at", "me"),
+                     ("towards", "us"), ("toward", "us"))
 OWN_MOBILITY_AIDS = (("my", "wheelchair"), ("my", "chair"), ("my", "power", "chair"), ("my", "mobility", "scooter"),
                      ("my", "walker"), ("my", "rollator"), ("my", "walking", "frame"), ("my", "white", "cane"),
                      ("use", "a", "wheelchair"), ("use", "a", "mobility", "scooter"), ("wheelchair", "user"),
@@ -10537,9 +10540,10 @@ def _witness_on_foot(r: _Reader) -> None:
     if not told_by_me or ego.type != "car" and not on_a_scooter:
         return  # ("I am a bus driver ... moving off from the bus stop": at the wheel of the bus)
     said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")] + \
-        [_what_i_was(r.tokens, k, k) for k, t in enumerate(r.tokens) if t.word in OPENING_ON_FOOT and
+        [_what_i_was(r.tokens, k, k) for k, t in enumerate(r.tokens) if (t.word in OPENING_ON_FOOT or t.word in (
+            "on", "whilst", "while") and "foot" in [u.word for u in r.tokens[k + 1:k + 3]]) and
          _opens_its_sentence(r.tokens, t)]  # "Sitting at the bus stop ..., I watched a car",
-    # "From the bench outside the chemist's I watched"
+    # "From the bench outside the chemist's I watched", "Whilst on foot at the taxi rank, I saw"
     words = set().union(*said) if said else set()
     if _says_any(text, OWN_MOBILITY_AIDS):
         words.add("wheelchair")  # "the driver only saw my wheelchair at the last second": the teller is on foot
@@ -10592,8 +10596,11 @@ def _witness_on_foot(r: _Reader) -> None:
     for e in [e for e in r.entities if not e.is_ego and e.head == "vehicle" and not e.actions and e is not subject]:
         r.entities.remove(e)  # "ahead of the vehicle concerned": the one the statement is about
     first_sentence = [t.word for t in r.tokens if t.sentence == next(t.sentence for t in own)]
-    side = "side_right" if "right" in first_sentence else "side_left"
-    place = "ahead" if "ahead" in first_sentence else "behind" if "behind" in first_sentence else None
+    coming = _says_any(text, COMING_TOWARDS_ME)  # "a white Transit mounted the kerb and came towards me": the
+    # teller is ahead of it, on no side unless one is said
+    side = "side_right" if "right" in first_sentence else "side_left" if not coming or {
+        "left", "nearside", "offside", "side"} & set(first_sentence) else None
+    place = "ahead" if "ahead" in first_sentence or coming else "behind" if "behind" in first_sentence else None
     placed = not controlling and (place is not None or any(
         text[k + 1:k + 2] == ["me"] and w in MET_BY or
         text[k:k + 4] == ["in", "front", "of", "me"] for k, w in enumerate(text)))  # (one at a works board: no one,
@@ -10606,7 +10613,7 @@ def _witness_on_foot(r: _Reader) -> None:
         return
     if placed:
         ego.is_ego, ego.type, ego.actions = False, "pedestrian", []
-        ego.features = {"on_sidewalk", side} | ({place} if place else set())
+        ego.features = {"on_sidewalk"} | ({side} if side else {"met_head_on"}) | ({place} if place else set())
     else:  # "I was waiting at the bus stop ... a red hatchback turned left": an onlooker, in no one's way
         r.entities.remove(ego)
     _the_ego_now(r, subject)
@@ -10637,7 +10644,7 @@ SEEN_THE_OTHER_WAY = {"ahead": "behind", "behind": "ahead", "side_left": "side_r
 
 
 PASSING_ME = {"overtook", "overtakes", "overtaking", "passed", "passes", "passing", "buzzed", "squeezed", "cut",
-              "cuts", "clipped", "hit", "missed", "doored"}  # what a driver does to a rider it meets
+              "cuts", "clipped", "hit", "missed", "doored", "alongside"}  # what a driver does to a rider it meets
 
 
 def _the_teller_rides(r: _Reader) -> bool:
@@ -10658,9 +10665,10 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     teller (behind me: the cyclist ahead)."""
     ego = next((e for e in r.entities if e.is_ego), None)
     words = [t.word for t in r.tokens]
-    own_bikes = [e for e in r.entities if e.type == "cyclist" and not e.is_ego and e.said_at > 0 and
-                 r.tokens[e.said_at - 1].word in ("my", "our") and e.head in ("bicycle", "bike", "pushbike", "cycle",
-                                                                              "push bike")]
+    own_bikes = [e for e in r.entities if e.type == "cyclist" and not e.is_ego and e.said_at > 1 and (
+                 r.tokens[e.said_at - 1].word in ("my", "our") or [t.word for t in r.tokens[e.said_at - 2:e.said_at]]
+                 in (["off", "the"], ["on", "the"])) and e.head in ("bicycle", "bike", "pushbike", "cycle", "push bike")]
+    # ("the draught nearly pulled me off the bike": the teller's own)
     reported_riding = set(words) & {"riding", "rode"} and set(words) & REPORTING_WORDS  # "I'm reporting a police
     # patrol car ... it overtook me ... while I was riding past a line of parked cars": a rider's report of a driver
     met = any(w in MET_BY | PASSING_ME and words[k + 1:k + 2] == ["me"] for k, w in enumerate(words))
@@ -10672,11 +10680,16 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # (also "the guy on the moped", which leaves the teller as before: at a wheel)
     motor = set(words) & (MOTOR_WORDS | FILTERING) and (own_motor or not (plain and any(
         e.type == "motorcycle" and not e.is_ego for e in r.entities)))  # (not "a moped rider squeezed past me")
-    on_a_bike = (set(words) & PEDAL_WORDS or plain or reported_riding) and not motor and \
+    on_a_bike = (set(words) & PEDAL_WORDS or plain or reported_riding or own_bikes) and not motor and \
         not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")) + RIDERS_CONTROLS)
+    others_ride = any(e.type == "cyclist" and not e.is_ego and e not in own_bikes for e in r.entities)
+    if ego is not None and ego.type in V.EGO_TYPES and ego.head not in FIRST_PERSON and not _supplied(r, ego) and \
+            on_a_bike and met and not others_ride and not any(e.head in SPEAKING_SELF for e in r.entities):
+        _the_teller_rides_by(r, ego, own_bikes)
+        return
     if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or \
             ego.type not in ("car", "motorcycle") or ego.aliases - FIRST_PERSON - {"you"} or not on_a_bike or \
-            any(e.type == "cyclist" and not e.is_ego and e not in own_bikes for e in r.entities):
+            others_ride:
         return
     for e in own_bikes:  # "I was riding my bicycle northbound", "I was on my bicycle on the roundabout, going
         r.entities.remove(e)  # straight over": the teller's own bicycle, no one else, and what it did the teller did
@@ -10704,6 +10717,18 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
         "behind" if standing else "ahead"}  # ("a delivery van parked right across the cycle lane": come up to)
     _the_ego_now(r, subject)  # ("a taxi waiting behind him": behind the ego now)
     r.notes.append(f"inferred: the teller rides a bicycle; the '{subject.head}' reported is the ego")
+
+
+def _the_teller_rides_by(r: _Reader, ego: Entity, own_bikes: list[Entity]) -> None:
+    """'Riding along the cycle lane ... a tipper lorry comes alongside me then swings left': the vehicle the rider
+    reports was read as the ego with the rider said of no noun; the rider is a cyclist, where the vehicle was placed
+    from it (ahead of one that comes up and past)."""
+    for e in own_bikes:
+        r.entities.remove(e)
+    features = {SEEN_THE_OTHER_WAY[f] for f in ego.features if f in SEEN_THE_OTHER_WAY} or {"ahead"}
+    r.entities.append(Entity(r.new_key(), "cyclist", False, ego.stage, head="i", features=features,
+                             actions=[(ego.stage, 1, ACTION_RANK["move"], r.tick(), "move", None)]))
+    r.notes.append(f"inferred: the teller rides a bicycle, met by the '{ego.head}' reported, the ego")
 
 
 def _named_as_the_ego(r: _Reader) -> None:
@@ -11254,24 +11279,63 @@ def _a_drivers_introduction(r: _Reader) -> Entity | None:
     return vehicles[0] if all(t.word in named or t.word in vehicles[0].aliases for t in line) else None
 
 
+OWN_VEHICLES_STATE = {"stop", "try"}  # "Taxi stopped at the stop sign on Oak.": where the speaker's own stands
+
+
+def _opens_on_the_speakers_vehicle(r: _Reader) -> Entity | None:
+    """'Amazon van, doing drops on Elm Street. I was parked ...', 'Double-decker, Oxford Street westbound. Two taxis
+    were parked in front of me', 'Taxi stopped at the stop sign on Oak. A jogger went across in front of me': a text
+    that opens on a vehicle named bare (no article), said to do nothing but stand, placed by nothing, before a
+    first-person account in a later sentence, opens on the speaker's own vehicle."""
+    first = min((e for e in r.entities if not e.is_ego and e.said_at >= 0), key=lambda e: e.said_at, default=None)
+    if first is None or first.type not in V.EGO_TYPES or first.count not in (0, 1) or \
+            first.features & (PLACE_FEATURES | PLACED_HOW | {"parked"}) or first.relative_to is not None or \
+            first.road_type is not None or \
+            any(a[4] not in OWN_VEHICLES_STATE for a in first.actions):
+        return None
+    opening = [t for t in r.tokens if t.sentence == r.tokens[first.said_at].sentence]
+    before = [t.word for t in opening if t.index < first.said_at]
+    if opening[0].index != 0 or any(w in DETERMINERS | {"a", "an", "one", "another", "some"} for w in before) or \
+            {t.word for t in opening} & SPEAKING_SELF or r.tokens[first.said_at].plural:
+        return None
+    later = [t.word for t in r.tokens if t.sentence > opening[-1].sentence]
+    if not set(later) & FIRST_PERSON or {"it", "its"} & set(later) or \
+            any(e is not first and not e.is_ego and e.type == first.type and e.count == 1 for e in r.entities):
+        return None  # ("Car stopped at the lights. I went round it": another's; "... a second taxi")
+    return first
+
+
 CALL_SIGN_WORDS = {"alpha", "bravo", "charlie", "echo", "foxtrot", "kilo", "lima", "mike", "oscar", "papa", "tango",
                    "uniform", "victor", "whiskey", "whisky", "yankee", "zulu"}  # (not golf, sierra, romeo: cars)
 
 
+PATROL_CALL_WORDS = {"adam", "boy", "charles", "david", "edward", "frank", "george", "henry", "ida", "john", "king",
+                     "lincoln", "mary", "nora", "ocean", "paul", "queen", "robert", "sam", "tom", "union", "william",
+                     "x", "young"}  # a US patrol's call sign ("2-David-14", "1-Lincoln-20")
+PATROLS_OWN_WORDS = (("we're", "running", "code"), ("we", "were", "running", "code"), ("marked", "car"), ("marked", "vehicle"), ("irv",), ("area", "car"),
+                     ("traffic", "car"), ("response", "car"), ("own", "vehicle"), ("police", "veh"), ("pnb",),
+                     ("we're", "on", "blues"), ("we", "were", "on", "blues"), ("we", "are", "on", "blues"))
+PATROLS_OPENINGS = (("blues", "and", "twos"), ("code", "3"), ("code", "three"), ("dispatch", ","), ("control", ","))
+# ("Blues and twos WB Lord St to a fail to stop", "Code 3 to a 10-50": a patrol's log opens on its own run)
+
+
 def _a_patrols_call_sign(r: _Reader) -> bool:
-    """'Control from Tango 4-2, we're NB ...', '22:10 Bravo 1-1 stationary at red signal': a radio log whose
-    speaker gives a call sign (a phonetic letter and a number) is told from a patrol car."""
+    """'Control from Tango 4-2, we're NB ...', '22:10 Bravo 1-1 stationary at red signal', 'Dispatch, 4-Adam-3,
+    we're sat in traffic', 'in marked car': a radio log whose speaker gives a call sign
+    (a phonetic letter and a number) or speaks of the patrol's own run is told from a patrol car."""
     words = [t.word for t in r.tokens]
     return any(w in CALL_SIGN_WORDS and k + 1 < len(words) and words[k + 1].isdigit() and (
-        k == 0 or words[k - 1] in ("from", "control", ",", ":", ".") or words[k - 1].isdigit())
-        for k, w in enumerate(words))
+        k == 0 or words[k - 1] in ("from", "control", ",", ":", ".") or words[k - 1].isdigit()) or
+        w in PATROL_CALL_WORDS and 0 < k < len(words) - 1 and words[k - 1].isdigit() and words[k + 1].isdigit()
+        for k, w in enumerate(words)) or _says_any(words, PATROLS_OWN_WORDS) or \
+        any(tuple(words[:len(p)]) == p for p in PATROLS_OPENINGS)
 
 
 def _a_drivers_trade(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
     the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name; one who puts out
     a stop arm, or has passengers standing, drives a bus. 'HGV driver here.': one who says so."""
-    introduced = _a_drivers_introduction(r)
+    introduced = _a_drivers_introduction(r) or _opens_on_the_speakers_vehicle(r)
     if introduced is not None:
         introduced.count = 1  # ("as a bus driver": a role, counted as no one until it is the speaker's)
         _now_the_ego(r, introduced, "the speaker says first what they drive")
