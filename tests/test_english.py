@@ -11978,3 +11978,17 @@ def test_a_summary_told_by_the_one_it_happened_to_is_the_scene_and_a_short_one_a
 def test_a_witness_on_the_pavement_a_vehicle_comes_towards_is_ahead_of_it_in_its_path():
     assert agents("I was on the pavement outside the bakery when a white Transit mounted the kerb and came towards "
                   "me.") == [("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front")]
+
+
+@pytest.mark.parametrize("prompt, riders", [
+    ("We were riding two abreast when a pickup came flying past us.", 2),
+    ("Three of us were riding single file when a Range Rover overtook us on a blind bend.", 3),
+    ("Our group of four was riding single file when a red Jeep passed us on a double yellow.", 4),
+])
+def test_a_party_of_riders_reporting_a_driver_is_that_many_cyclists_ahead_of_it(prompt, riders):
+    assert agents(prompt) == [("car", "go_straight", "ego")] + [("cyclist", "go_straight", "front")] * riders
+
+
+def test_a_rider_hooked_from_beside_the_turner_is_on_that_side():
+    assert agents("Left hook at King St. I was in the cycle lane level with the cab of a DPD van when he turned left "
+                  "straight across me.") == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "left")]

@@ -10398,6 +10398,8 @@ TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), (
 
 COMING_TOWARDS_ME = (("towards", "me"), ("toward", "me"), ("straight", "at", "me"), ("right", "at", "me"),
                      ("towards", "us"), ("toward", "us"))
+ONTO_THE_FOOTWAY = tuple((verb, "the", way) for verb in ("mounted", "up", "along", "onto")
+                         for way in ("kerb", "curb", "pavement", "sidewalk", "footway", "footpath"))
 OWN_MOBILITY_AIDS = (("my", "wheelchair"), ("my", "chair"), ("my", "power", "chair"), ("my", "mobility", "scooter"),
                      ("my", "walker"), ("my", "rollator"), ("my", "walking", "frame"), ("my", "white", "cane"),
                      ("use", "a", "wheelchair"), ("use", "a", "mobility", "scooter"), ("wheelchair", "user"),
@@ -10596,8 +10598,9 @@ def _witness_on_foot(r: _Reader) -> None:
     for e in [e for e in r.entities if not e.is_ego and e.head == "vehicle" and not e.actions and e is not subject]:
         r.entities.remove(e)  # "ahead of the vehicle concerned": the one the statement is about
     first_sentence = [t.word for t in r.tokens if t.sentence == next(t.sentence for t in own)]
-    coming = _says_any(text, COMING_TOWARDS_ME)  # "a white Transit mounted the kerb and came towards me": the
-    # teller is ahead of it, on no side unless one is said
+    coming = _says_any(text, COMING_TOWARDS_ME) and _says_any(text, ONTO_THE_FOOTWAY)  # "a white Transit mounted
+    # the kerb and came towards me": the teller is ahead of it on the footway it drives along, on no side unless one is
+    # said (one the vehicle travels towards along the road stands beside its way)
     side = "side_right" if "right" in first_sentence else "side_left" if not coming or {
         "left", "nearside", "offside", "side"} & set(first_sentence) else None
     place = "ahead" if "ahead" in first_sentence or coming else "behind" if "behind" in first_sentence else None
@@ -10632,7 +10635,8 @@ PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), 
                  ("my", "front", "wheel"), ("my", "back", "wheel"), ("in", "primary"), ("primary", "position"),
                  ("two", "abreast"), ("club", "run"), ("club", "ride"), ("group", "ride"), ("ride", "leader"),
                  ("back", "marker"), ("bar", "end"), ("my", "elbow"), ("my", "right", "elbow"), ("my", "left", "elbow"),
-                 ("my", "pedal"), ("into", "the", "gutter"), ("knocked", "me", "off"), ("took", "me", "off"))
+                 ("my", "pedal"), ("into", "the", "gutter"), ("knocked", "me", "off"), ("took", "me", "off"),
+                 ("riding", "single", "file"), ("riding", "in", "single", "file"))
 # (not "the cycle courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
 MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
 REPORTING_WORDS = {"reporting", "report", "complaint", "file"}
@@ -10687,8 +10691,8 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
             on_a_bike and met and not others_ride and not any(e.head in SPEAKING_SELF for e in r.entities):
         _the_teller_rides_by(r, ego, own_bikes)
         return
-    if ego is None or ego.head not in FIRST_PERSON and not _supplied(r, ego) or \
-            ego.type not in ("car", "motorcycle") or ego.aliases - FIRST_PERSON - {"you"} or not on_a_bike or \
+    if ego is None or ego.head not in SPEAKING_SELF and not _supplied(r, ego) or \
+            ego.type not in ("car", "motorcycle") or ego.aliases - SPEAKING_SELF - {"you"} or not on_a_bike or \
             others_ride:
         return
     for e in own_bikes:  # "I was riding my bicycle northbound", "I was on my bicycle on the roundabout, going
@@ -10715,8 +10719,40 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     ego.features = (ego.features - own) | (own or {SEEN_THE_OTHER_WAY[f] for f in subject.features
                                                    if f in SEEN_THE_OTHER_WAY}) or ego.features | {
         "behind" if standing else "ahead"}  # ("a delivery van parked right across the cycle lane": come up to)
+    hook = next((a[4][5:] for a in subject.actions if a[4] in ("turn_left", "turn_right")), None)
+    if hook and _says_any(words, LEVEL_WITH_THE_TURNER) and _says_any(words, ACROSS_THE_RIDER):
+        ego.features = (ego.features - set(SEEN_THE_OTHER_WAY) - {"ahead", "behind"}) | {f"side_{hook}", "level"}
+        ego.actions = [a for a in ego.actions if a[4] not in ("turn_left", "turn_right")] or [
+            (ego.stage, 1, ACTION_RANK["move"], r.tick(), "move", None)]  # "turned left straight across me while I
+        # was level with its cab": hooked from beside it, on that side, going on
     _the_ego_now(r, subject)  # ("a taxi waiting behind him": behind the ego now)
-    r.notes.append(f"inferred: the teller rides a bicycle; the '{subject.head}' reported is the ego")
+    riders = _riders_in_the_party(words)
+    for _ in range(riders - 1):  # "we were riding two abreast", "three of us": each of the party, where the teller is
+        r.entities.append(replace(ego, key=r.new_key(), features=set(ego.features), actions=list(ego.actions)))
+    r.notes.append(f"inferred: the teller rides a bicycle{f' (a party of {riders})' if riders > 1 else ''}; the "
+                   f"'{subject.head}' reported is the ego")
+
+
+LEVEL_WITH_THE_TURNER = (("alongside",), ("level", "with"), ("next", "to"), ("beside",), ("on", "his", "inside"),
+                         ("on", "her", "inside"), ("on", "its", "inside"), ("up", "the", "inside"))
+ACROSS_THE_RIDER = (("across", "me"), ("across", "my"), ("across", "the", "bike", "lane"), ("across", "the", "cycle"),
+                    ("left", "hook"), ("right", "hook"), ("left", "hooked"), ("right", "hooked"))
+PARTY_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "2": 2, "3": 3, "4": 4, "5": 5, "6": 6}
+COMPANIONS = {"partner", "buddy", "mate", "friend", "wife", "husband", "son", "daughter", "girlfriend", "boyfriend",
+              "brother", "sister", "dad", "mum", "mom", "pal"}
+
+
+def _riders_in_the_party(words: list[str]) -> int:
+    """How many ride with the teller: 'three of us', 'our group of four', 'two abreast', 'with my partner', 'both of
+    us'; a 'we' with no count is two."""
+    for k, w in enumerate(words):
+        if w in PARTY_COUNTS and (words[k + 1:k + 3] == ["of", "us"] or words[max(0, k - 3):k] in (
+                ["our", "group", "of"], ["a", "group", "of"]) or words[k + 1:k + 2] == ["abreast"]):
+            return PARTY_COUNTS[w]
+    if _says_any(words, (("both", "of", "us"),)) or any(
+            w in COMPANIONS and words[k - 1:k] == ["my"] and "with" in words[max(0, k - 3):k] for k, w in enumerate(words)):
+        return 2
+    return 2 if {"we", "us", "our"} & set(words) and not {"i", "me", "my"} & set(words) else 1
 
 
 def _the_teller_rides_by(r: _Reader, ego: Entity, own_bikes: list[Entity]) -> None:
