@@ -11992,3 +11992,37 @@ def test_a_party_of_riders_reporting_a_driver_is_that_many_cyclists_ahead_of_it(
 def test_a_rider_hooked_from_beside_the_turner_is_on_that_side():
     assert agents("Left hook at King St. I was in the cycle lane level with the cab of a DPD van when he turned left "
                   "straight across me.") == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "left")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Paramedic, night shift. We were stopped at the lights with the patient on board, a taxi waiting behind us.",
+     [("ambulance", "stop", "ego"), ("car", "stop", "back")]),
+    ("We were on our way to a house fire when a car ahead of us stopped dead in the lane.",
+     [("car", "stop", "front"), ("firetruck", "go_straight", "ego")]),
+])
+def test_a_crew_that_says_we_of_its_own_vehicle_drives_an_ambulance_or_a_fire_engine(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, people", [
+    ("We were halfway over the zebra when a taxi sailed through.", 2),
+    ("Walking my two to school, we were on the zebra outside St Mary's when a silver Audi drove straight through.", 3),
+])
+def test_a_tellers_party_on_the_way_over_is_that_many_people_crossing(prompt, people):
+    assert agents(prompt) == [("car", "go_straight", "ego")] + [
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")] * people
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Describe what happened: a group of schoolkids suddenly ran across the road in front of me outside the school.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front"),
+      ("pedestrian", "cross_the_road", "front")]),
+    ("Describe what happened: I was stationary at a red light when the vehicle behind failed to stop and struck the "
+     "rear of my car. Your vehicle: Ford Focus. Third party vehicle: Vauxhall Astra.",
+     [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("Your vehicle: 44t artic (HGV). Third party vehicle: silver Nissan Micra. Describe what happened: I was turning "
+     "left out of the depot when the Micra, travelling from my right, drove into the side of my trailer.",
+     [("car", "go_straight", "road_of_right_turn"), ("truck", "turn_left", "ego")]),
+])
+def test_a_claim_forms_fields_name_the_claimants_vehicle_and_its_account_is_the_scene(prompt, expected):
+    assert agents(prompt) == expected

@@ -588,12 +588,21 @@ NUMBERED_KEY = re.compile(r"\s*([A-Z][a-z]+ \d{1,3}[a-z]?|[A-Za-z]{1,8}[-_]\d{2,
 CASE_NUMBER = re.compile(r"[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*")  # 'TC-052', 'HZ-014': a case's number keys its title
 NUMBERED_CASE = re.compile(r"[a-z]+\s+#?(?:\d{1,4}[a-z]?|[a-z]{1,8}[-_]?\d+(?:[-_.]\d+)*)")  # 'hazard h-22', 'event 7'
 TRIGGER_KEYS = {"triggering condition", "trigger condition", "trigger", "triggering event", "trigger event"}
-ACCOUNT_KEYS = {"summary", "report", "what happened", "narrative", "incident"}  # a field of a form
+OWN_VEHICLE_KEYS = {"your vehicle", "my vehicle", "own vehicle", "insured vehicle", "policyholder vehicle",
+                    "your car", "my car", "vehicle driven", "vehicle you were driving"}
+THIRD_PARTY_KEYS = {"third party vehicle", "third party", "other vehicle", "other party vehicle", "other party",
+                    "tp vehicle", "third party's vehicle", "vehicle 2 details"}
+# a claim form's fields for the claimant's own vehicle and the other party's, the latter told of in the account
+FORM_ACCOUNT_KEYS = {"describe what happened", "what happened", "description of incident", "description of accident",
+                     "details of incident", "details of accident", "how did it happen", "incident description",
+                     "accident description", "circumstances", "account", "statement", "your account"}
+ACCOUNT_KEYS = {"summary", "report"}  # a field of a form
 # that tells what happened ("Summary: The HGV overtook me ..."): the scene, not its title, when told by the one it
 # happened to (not an auditor's "we")
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
+PLAIN_KEYS |= FORM_ACCOUNT_KEYS
 PLAIN_KEYS |= {"setup", "set up", "actors", "agents", "participants", "npcs", "road", "roads", "map", "route",
                "location", "description", "details", "steps", "notes", "trigger", "initial conditions",
                "initial state", "layout", "geometry", "infrastructure", "traffic", "other traffic", "situation",
@@ -963,6 +972,11 @@ def _lines(text: str) -> str:
         if key in speakers:
             out.append(value + ".")  # "HOST B: Zebra, so the stripy one.": what was said, not who said it
             continue
+        if lowered in THIRD_PARTY_KEYS:
+            continue  # "Third party vehicle: Vauxhall Astra": named again by the account of what happened
+        if lowered in OWN_VEHICLE_KEYS:
+            out.append(f"The ego is a {value}.")  # "Your vehicle: 44t artic (HGV)": what the claimant drove
+            continue
         if lowered in ORACLE_KEYS or lowered.split()[0] in ("expected", "acceptance", "pass", "success", "kpi"):
             continue
         if value.split()[:1] and value.split()[0].lower() in CHECKING:
@@ -1228,8 +1242,8 @@ ASIDES = (  # (pattern, replacement): what a text says around its scene, read fo
     (r"\b(?:leave|keep) (?:the |any |all )?([a-z]+s) out\b(?! of)", r"no \1"),  # "please leave pedestrians out"
     (r"\b(?:leave out|exclude|omit) (?:the |any |all )?([a-z]+s)\b", r"no \1"),
     (r"(?:^|(?<=[.!?]\s))(?:please )?(?:evaluate|assess|measure|verify|describe|discuss|explain)"
-     r"\b(?!\s*:)[^.!?\n]*[.!?]?", " "),  # "Evaluate the distance at which your vehicle yields.": the task set
-    # on the scene, no scene
+     r"\b(?!\s*:)[^.!?:\n]*[.!?:]?", " "),  # "Evaluate the distance at which your vehicle yields.": the task set
+    # on the scene, no scene ("Describe what happened: I was ...": a form's question, what follows it the scene)
     (r"\bego[ _]?(?:type|class|kind)\s*(?:==?|:|is)\s*'?([a-z]+)'?", r"the ego is a \1,"),  # a query's "ego_type =
     # 'bus'": what the ego is
 )
@@ -1510,7 +1524,8 @@ def _records_of_agents(fields: list[str]) -> bool:
     thing said of it ('cyclist / from left road / straight'): a record per agent, not a list of tags ('ego: car |
     weather: fog')."""
     keyed = [(m.group(1), field[m.end():]) for field in fields if (m := FIELD_KEY.match(field))]
-    agents = [(key, value) for key, value in keyed if key.lower().split()[0] == "ego" or _names_agent(key)]
+    agents = [(key, value) for key, value in keyed if key.lower().split()[0] == "ego" or _names_agent(key) or
+              re.fullmatch(r"[a-z]{1,6}[ _#-]?\d{1,2}", key.lower())]  # ("a1", "npc_2", "veh1")
     return len(agents) >= 2 and any(key.lower().split()[0] != "ego" and len(re.split(r",|" + INNER_SEPARATORS.pattern,
                                                                                      value)) >= 2
                                     for key, value in agents)
@@ -1531,7 +1546,7 @@ def one_line_records(text: str) -> str:
             fields = pieces
             break
     if not fields and len(SPACED_TAG.findall(" " + line)) >= 3 and FIELD_KEY.match(line) and \
-            not re.search(r",\s*[A-Za-z][A-Za-z0-9_]*=", line):
+            not re.search(r",\s*[A-Za-z][A-Za-z0-9_]*=", line) and _records_of_agents(SPACED_TAG.split(line)):
         fields = SPACED_TAG.split(line)  # "ego_type=truck ego_manoeuvre=straight npc_1=police,behind,straight" (tags
         # with commas between, "ego=truck, lead=bus", are read as tags)
     if not fields:
@@ -1716,6 +1731,7 @@ def tokenize(text: str) -> list[Token]:
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
     text = LOGGED_SPEED.sub(r"at \1 m/s", text)  # "t=0.0 ego lane 2 v=12": a log's speed, in SI units
     text = METRES_PER_SECOND.sub(lambda m: f"{round(float(m.group(1)) * 3.6)} km/h", text)  # "at 22 m/s": a speed
+    text = re.sub(r"\b(\d+(?:\.\d+)?)t\b", r"\1 tonne", text)  # "a 44t artic": its weight, no count
     text = re.sub(r"\b(\d)\s?\+(?=[- ]?lanes?\b)", r"\1", text)  # "a 3+ lane highway": at least three lanes
     text = re.sub(r"\blane (\d) of (\d)\b(?! lanes?\b)", r"lane \1 of \2 lanes", text)  # "Lane 2 of 3": one of three
     text = re.sub(r"\b(walks?|walked|walking|pushe?s?|pushed|pushing|wheels?|wheeled|wheeling) (his|her|their|a|the) "

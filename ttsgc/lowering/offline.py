@@ -10535,13 +10535,13 @@ def _witness_on_foot(r: _Reader) -> None:
     and the vehicle the statement is about (the first that moves) is the ego."""
     ego = next((e for e in r.entities if e.is_ego), None)
     text = [t.word for t in r.tokens]
-    told_by_me = ego is not None and (ego.head in FIRST_PERSON or ego.head == "ego" and "ego" not in text and any(
-        w in FIRST_PERSON for w in text))  # ("Sitting at the bus stop ..., I watched": the teller, first as a
-    # participle's subject)
+    told_by_me = ego is not None and (ego.head in SPEAKING_SELF or ego.head == "ego" and "ego" not in text and any(
+        w in SPEAKING_SELF for w in text))  # ("Sitting at the bus stop ..., I watched": the teller, first as a
+    # participle's subject; "we were on the zebra": the teller and company)
     on_a_scooter = ego is not None and ego.type == "motorcycle" and _says_any(text, (("my", "scooter"),))
     if not told_by_me or ego.type != "car" and not on_a_scooter:
         return  # ("I am a bus driver ... moving off from the bus stop": at the wheel of the bus)
-    said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm")] + \
+    said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm", "we")] + \
         [_what_i_was(r.tokens, k, k) for k, t in enumerate(r.tokens) if (t.word in OPENING_ON_FOOT or t.word in (
             "on", "whilst", "while") and "foot" in [u.word for u in r.tokens[k + 1:k + 3]]) and
          _opens_its_sentence(r.tokens, t)]  # "Sitting at the bus stop ..., I watched a car",
@@ -10585,6 +10585,10 @@ def _witness_on_foot(r: _Reader) -> None:
         _the_teller_on_foot(r, ego, subject, {"crosswalk"} if at_a_crossing else {"ahead"},
                             "stop" if froze else "cross",
                             f"inferred: the teller was crossing on foot; the '{subject.head}' that met them is the ego")
+        named = any(e.type == "pedestrian" and e is not ego for e in r.entities)  # (company named on its own)
+        for _ in range(0 if named else _the_tellers_party(text) - 1):  # "we were on the zebra when a silver Audi
+            # drove straight through": the teller's party, each on the way over
+            r.entities.append(replace(ego, key=r.new_key(), features=set(ego.features), actions=list(ego.actions)))
         return
     if patrol:
         subject = movers[0]
@@ -10726,7 +10730,7 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
             (ego.stage, 1, ACTION_RANK["move"], r.tick(), "move", None)]  # "turned left straight across me while I
         # was level with its cab": hooked from beside it, on that side, going on
     _the_ego_now(r, subject)  # ("a taxi waiting behind him": behind the ego now)
-    riders = _riders_in_the_party(words)
+    riders = _the_tellers_party(words)
     for _ in range(riders - 1):  # "we were riding two abreast", "three of us": each of the party, where the teller is
         r.entities.append(replace(ego, key=r.new_key(), features=set(ego.features), actions=list(ego.actions)))
     r.notes.append(f"inferred: the teller rides a bicycle{f' (a party of {riders})' if riders > 1 else ''}; the "
@@ -10742,15 +10746,17 @@ COMPANIONS = {"partner", "buddy", "mate", "friend", "wife", "husband", "son", "d
               "brother", "sister", "dad", "mum", "mom", "pal"}
 
 
-def _riders_in_the_party(words: list[str]) -> int:
-    """How many ride with the teller: 'three of us', 'our group of four', 'two abreast', 'with my partner', 'both of
-    us'; a 'we' with no count is two."""
+def _the_tellers_party(words: list[str]) -> int:
+    """How many go with the teller, the teller counted: 'three of us', 'our group of four', 'two abreast', 'with my
+    partner', 'both of us'; a 'we' with no count is two."""
     for k, w in enumerate(words):
         if w in PARTY_COUNTS and (words[k + 1:k + 3] == ["of", "us"] or words[max(0, k - 3):k] in (
                 ["our", "group", "of"], ["a", "group", "of"]) or words[k + 1:k + 2] == ["abreast"]):
             return PARTY_COUNTS[w]
-    if _says_any(words, (("both", "of", "us"),)) or any(
-            w in COMPANIONS and words[k - 1:k] == ["my"] and "with" in words[max(0, k - 3):k] for k, w in enumerate(words)):
+        if w in PARTY_COUNTS and words[k - 1:k] == ["my"] and k >= 2 and words[k - 2] in ("walking", "taking", "with"):
+            return PARTY_COUNTS[w] + 1  # "walking my two to school": the teller and two more
+    if _says_any(words, (("both", "of", "us"),)) or any(w in COMPANIONS and words[k - 1:k] == ["my"] and
+                                                        "with" in words[max(0, k - 3):k] for k, w in enumerate(words)):
         return 2
     return 2 if {"we", "us", "our"} & set(words) and not {"i", "me", "my"} & set(words) else 1
 
@@ -11294,6 +11300,16 @@ BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out
 # ("at the stop with the doors open"; not a cyclist's "with my arm out")
 
 
+AMBULANCE_CREWS_WORDS = (("ambo", "crew"), ("ambulance", "crew"), ("patient", "on", "board"), ("the", "patient"),
+                         ("cardiac", "arrest"), ("ems", "unit"), ("medic", "unit"), ("our", "ambulance"),
+                         ("paramedic",), ("paramedics",), ("running", "hot"), ("on", "a", "call"), ("to", "a", "call"))
+FIRE_CREWS_WORDS = (("structure", "fire"), ("the", "pump"), ("a", "shout"), ("fire", "appliance"), ("firefighter",),
+                    ("firefighters",), ("our", "engine"), ("our", "appliance"), ("the", "appliance"), ("fire", "call"),
+                    ("ladder", "truck"), ("house", "fire"))
+# ("Ambo crew, reds on ... the Honda in the left lane beside us", "Driving the pump back from a shout ... we stopped":
+# a crew that says "we" of the vehicle it works from)
+
+
 def _a_drivers_introduction(r: _Reader) -> Entity | None:
     """'Tanker driver. Taking a left ...', 'HGV driver here. On the M6 ...': a first line that says only what the
     speaker drives, before a first-person account, names the ego's vehicle, not one more road user."""
@@ -11348,9 +11364,10 @@ CALL_SIGN_WORDS = {"alpha", "bravo", "charlie", "echo", "foxtrot", "kilo", "lima
 PATROL_CALL_WORDS = {"adam", "boy", "charles", "david", "edward", "frank", "george", "henry", "ida", "john", "king",
                      "lincoln", "mary", "nora", "ocean", "paul", "queen", "robert", "sam", "tom", "union", "william",
                      "x", "young"}  # a US patrol's call sign ("2-David-14", "1-Lincoln-20")
-PATROLS_OWN_WORDS = (("we're", "running", "code"), ("we", "were", "running", "code"), ("marked", "car"), ("marked", "vehicle"), ("irv",), ("area", "car"),
-                     ("traffic", "car"), ("response", "car"), ("own", "vehicle"), ("police", "veh"), ("pnb",),
-                     ("we're", "on", "blues"), ("we", "were", "on", "blues"), ("we", "are", "on", "blues"))
+PATROLS_OWN_WORDS = (("we're", "running", "code"), ("we", "were", "running", "code"), ("in", "marked", "car"),
+                     ("in", "a", "marked", "car"), ("in", "the", "marked", "car"), ("our", "marked", "car"), ("irv",),
+                     ("area", "car"), ("traffic", "car"), ("response", "car"), ("own", "vehicle"), ("police", "veh"),
+                     ("pnb",), ("we're", "on", "blues"), ("we", "were", "on", "blues"), ("we", "are", "on", "blues"))
 PATROLS_OPENINGS = (("blues", "and", "twos"), ("code", "3"), ("code", "three"), ("dispatch", ","), ("control", ","))
 # ("Blues and twos WB Lord St to a fail to stop", "Code 3 to a 10-50": a patrol's log opens on its own run)
 
@@ -11386,8 +11403,12 @@ def _a_drivers_trade(r: _Reader) -> None:
         return
     told = [t.word for t in r.tokens if not t.question]  # (not "what's the rule when a school bus is stopped with
     # its stop arm out?")
-    trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) else None
-    if "ego" in words or trade is None or trade == "bus" and any(e.type == "bus" and not e.is_ego for e in r.entities):
+    crew = {"we", "us", "our"} & set(words)  # (a crew speaks as one)
+    trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) else \
+        "ambulance" if crew and _says_any(words, AMBULANCE_CREWS_WORDS) else \
+        "firetruck" if crew and _says_any(words, FIRE_CREWS_WORDS) else None
+    if "ego" in words or trade is None or trade != "truck" and any(e.type == trade and not e.is_ego
+                                                                   for e in r.entities):
         return  # ("stopped behind a school bus with its stop arm out": that bus's arm)
     if ego is None and (set(words) & SPEAKERS or trade == "truck"):
         ego = _ego_entity(r, 0)  # "doing 65 ... in front of my bumper": the speaker, told of by no noun ("Empty
