@@ -12026,3 +12026,29 @@ def test_a_tellers_party_on_the_way_over_is_that_many_people_crossing(prompt, pe
 ])
 def test_a_claim_forms_fields_name_the_claimants_vehicle_and_its_account_is_the_scene(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Sir, I watched as a double-decker bus swung right into Wharf Lane while a young woman was crossing that very "
+     "road with a pushchair.", [("bus", "turn_right", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("I watched the car in front of me brake hard.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+])
+def test_a_teller_who_only_looks_on_is_no_one_and_one_by_whom_others_are_placed_drives(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_police_who_report_are_no_one_and_police_who_drive_are():
+    assert agents("Police have released CCTV of a near miss in which a red hatchback went past a bus stationary at "
+                  "a stop.") == [("bus", "stop", "front"), ("car", "go_straight", "ego")]
+    assert ("police", "go_straight", "ego") in agents("Police were chasing a stolen car when it crashed.")
+
+
+def test_a_vehicle_turning_into_the_road_is_going_its_own_way_not_standing_in_it():
+    assert agents("A cement lorry swings right off the high street into the road while two kids are still on the "
+                  "zebra.") == [("pedestrian", "cross_the_road", "near_the_crosswalk")] * 2 + [
+        ("truck", "turn_right", "ego")]
+
+
+def test_a_vehicle_pulling_out_of_a_side_road_to_turn_goes_its_own_way():
+    assert agents("A hatchback pulled out of Orchard Close and turned right, and a cyclist approaching from the right "
+                  "had to brake.") == [("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_right_turn")]

@@ -3885,6 +3885,9 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
 
 
 INSTITUTIONS = {"police", "fire brigade", "fire service", "fire and rescue", "ambulance service", "paramedics"}
+INSTITUTIONS_SPEAKING = {"want", "wants", "said", "say", "says", "appealed", "appeal", "appeals", "believe",
+                         "believes", "released", "urged", "urge", "confirmed", "condemned", "arrested", "charged",
+                         "appealing", "investigating", "looking", "asking", "urging", "seeking", "issued", "launched"}
 ADDRESSED = {"to", "blame", "blamed", "call", "called", "ring", "rang", "phone", "phoned", "contact", "contacted",
              "inform", "informed", "tell", "told", "thank", "thanked", "praise", "dial", "dialled", "dialed",
              "notify", "notified", "alert", "alerted", "involve", "involved", "fault", "criticise", "criticize"}
@@ -4003,6 +4006,10 @@ def _only_talked_about(tokens: list[Token], u: Unit) -> bool:
     if said in INSTITUTIONS and lead and (lead[-1] in ADDRESSED or lead[-1] == "the" and len(lead) == 2
                                          and lead[0] in ADDRESSED):
         return True
+    if said in INSTITUTIONS and not before and after[:1] and (after[0].word in INSTITUTIONS_SPEAKING or after[
+            0].word in ("are", "were", "have", "has", "is") and after[1:2] and after[1].word in INSTITUTIONS_SPEAKING):
+        return True  # "Police are appealing for witnesses after ...", "Police have released CCTV": who reports it
+        # (not "Police were chasing a stolen car")
     bare = _bare_plural(tokens, u) or last.plural and before[-1].word == "than" and \
         not (len(before) > 1 and before[-2].word in ("more", "fewer"))  # "harder than people think"
     if bare and u.meaning not in ("ego", "none"):
@@ -9990,6 +9997,9 @@ def _may_drive_the_scene(e: Entity, own_lane: bool = False) -> bool:
     ambulance comes up behind it')."""
     lanes = {f for f in e.features if f.startswith("named_lane_")} if own_lane else set()
     features = e.features - lanes - {f"side_{f[len('named_lane_'):]}" for f in lanes}
+    if any(a[4] in ("turn", "turn_left", "turn_right") for a in e.actions):
+        features -= {"in_road", "moves_out"}  # "swings right into the road", "pulled out of Orchard Close and turned
+        # right": where it turns to and from, not where it stands or whom it meets
     return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and \
         not features & (PLACE_FEATURES | PLACED_HOW) and e.road_type != "shoulder" and \
         (e.relative_to is None or e.relative_how in RELATIONS_TO_THE_EGO) and e.parent is None and e.named_of is None
@@ -10530,6 +10540,14 @@ def _the_teller_on_foot(r: _Reader, teller: Entity, vehicle: Entity, features: s
     r.notes.append(note)
 
 
+def _only_looks_on(r: _Reader, ego: Entity, text: list[str]) -> bool:
+    """'I watched as a double-decker bus swung right into Wharf Lane', 'I saw a white van run the red': a teller who
+    does nothing but see, who is at no wheel and by whom no one is placed (not 'the car in front of me'), looks on."""
+    pairs = {" ".join(text[k:k + n]) for n in (1, 2) for k in range(len(text))}
+    return not ego.actions and not pairs & AT_THE_WHEEL and not {"me", "my", "us", "our", "we"} & set(text) and any(
+        w == "i" and text[k + 1:k + 2] and text[k + 1] in PERCEIVING for k, w in enumerate(text))
+
+
 def _witness_on_foot(r: _Reader) -> None:
     """'I was standing on the footway when I saw a van ...': a witness on foot is a pedestrian at the roadside,
     and the vehicle the statement is about (the first that moves) is the ego."""
@@ -10562,6 +10580,8 @@ def _witness_on_foot(r: _Reader) -> None:
         _says_any(text, TRAFFIC_CONTROL)
     if controlling:  # "The number 7 bus was stopped at my board ... When I spun it to GO the bus pulled off"
         words = (words - AT_THE_WHEEL) | {"standing"}
+    if _only_looks_on(r, ego, text):
+        words.add("a pedestrian")  # "I watched as a double-decker swung right into Wharf Lane": an onlooker
     if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL) or \
             on_a_scooter and not words & (CROSSING_ON_FOOT | FOOTWAYS):
         return  # ("halfway over the zebra crossing on my scooter", "on my scooter on the pavement": a mobility
