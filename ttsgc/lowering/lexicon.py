@@ -590,15 +590,14 @@ NUMBERED_CASE = re.compile(r"[a-z]+\s+#?(?:\d{1,4}[a-z]?|[a-z]{1,8}[-_]?\d+(?:[-
 TRIGGER_KEYS = {"triggering condition", "trigger condition", "trigger", "triggering event", "trigger event"}
 OWN_VEHICLE_KEYS = {"your vehicle", "my vehicle", "own vehicle", "insured vehicle", "policyholder vehicle",
                     "your car", "my car", "vehicle driven", "vehicle you were driving"}
-THIRD_PARTY_KEYS = {"third party vehicle", "third party", "other vehicle", "other party vehicle", "other party",
-                    "tp vehicle", "third party's vehicle", "vehicle 2 details"}
+THIRD_PARTY_KEYS = {"third party vehicle", "third party", "other party vehicle", "other party", "tp vehicle",
+                    "third party's vehicle"}
 # a claim form's fields for the claimant's own vehicle and the other party's, the latter told of in the account
 FORM_ACCOUNT_KEYS = {"describe what happened", "what happened", "description of incident", "description of accident",
                      "details of incident", "details of accident", "how did it happen", "incident description",
                      "accident description", "circumstances", "account", "statement", "your account"}
-ACCOUNT_KEYS = {"summary", "report"}  # a field of a form
-# that tells what happened ("Summary: The HGV overtook me ..."): the scene, not its title, when told by the one it
-# happened to (not an auditor's "we")
+ACCOUNT_KEYS = {"summary", "report"}  # a form's field that tells what happened ("Summary: The HGV overtook me
+# ..."): the scene, not its title, when told by the one it happened to (not an auditor's "we")
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
               "env", "visibility", "daylight", "when"}
 NOTHING = {"none", "n/a", "no", "-", "nil", "nothing", "0"}
@@ -972,10 +971,11 @@ def _lines(text: str) -> str:
         if key in speakers:
             out.append(value + ".")  # "HOST B: Zebra, so the stripy one.": what was said, not who said it
             continue
-        if lowered in THIRD_PARTY_KEYS:
+        if lowered in THIRD_PARTY_KEYS and _verbless(value):
             continue  # "Third party vehicle: Vauxhall Astra": named again by the account of what happened
-        if lowered in OWN_VEHICLE_KEYS:
-            out.append(f"The ego is a {value}.")  # "Your vehicle: 44t artic (HGV)": what the claimant drove
+        if lowered in OWN_VEHICLE_KEYS and _verbless(value):
+            article = "" if value.lower().split()[:1] in (["a"], ["an"], ["the"]) else "a "
+            out.append(f"The ego is {article}{value}.")  # "Your vehicle: 44t artic (HGV)": what the claimant drove
             continue
         if lowered in ORACLE_KEYS or lowered.split()[0] in ("expected", "acceptance", "pass", "success", "kpi"):
             continue

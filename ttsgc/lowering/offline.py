@@ -11322,12 +11322,12 @@ BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out
 
 AMBULANCE_CREWS_WORDS = (("ambo", "crew"), ("ambulance", "crew"), ("patient", "on", "board"), ("the", "patient"),
                          ("cardiac", "arrest"), ("ems", "unit"), ("medic", "unit"), ("our", "ambulance"),
-                         ("paramedic",), ("paramedics",), ("running", "hot"), ("on", "a", "call"), ("to", "a", "call"))
-FIRE_CREWS_WORDS = (("structure", "fire"), ("the", "pump"), ("a", "shout"), ("fire", "appliance"), ("firefighter",),
-                    ("firefighters",), ("our", "engine"), ("our", "appliance"), ("the", "appliance"), ("fire", "call"),
-                    ("ladder", "truck"), ("house", "fire"))
+                         ("running", "hot"))
+FIRE_CREWS_WORDS = (("structure", "fire"), ("driving", "the", "pump"), ("from", "a", "shout"), ("to", "a", "shout"),
+                    ("on", "a", "shout"), ("fire", "appliance"), ("our", "engine"), ("our", "appliance"),
+                    ("the", "appliance"), ("fire", "call"), ("ladder", "truck"), ("to", "a", "house", "fire"))
 # ("Ambo crew, reds on ... the Honda in the left lane beside us", "Driving the pump back from a shout ... we stopped":
-# a crew that says "we" of the vehicle it works from)
+# a crew that says "we" of the vehicle it works from; not "paramedics checked us over", "we were at the pump")
 
 
 def _a_drivers_introduction(r: _Reader) -> Entity | None:
@@ -11383,19 +11383,24 @@ CALL_SIGN_WORDS = {"alpha", "bravo", "charlie", "echo", "foxtrot", "kilo", "lima
 
 PATROL_CALL_WORDS = {"adam", "boy", "charles", "david", "edward", "frank", "george", "henry", "ida", "john", "king",
                      "lincoln", "mary", "nora", "ocean", "paul", "queen", "robert", "sam", "tom", "union", "william",
-                     "x", "young"}  # a US patrol's call sign ("2-David-14", "1-Lincoln-20")
-PATROLS_OWN_WORDS = (("we're", "running", "code"), ("we", "were", "running", "code"), ("in", "marked", "car"),
-                     ("in", "a", "marked", "car"), ("in", "the", "marked", "car"), ("our", "marked", "car"), ("irv",),
-                     ("area", "car"), ("traffic", "car"), ("response", "car"), ("own", "vehicle"), ("police", "veh"),
-                     ("pnb",), ("we're", "on", "blues"), ("we", "were", "on", "blues"), ("we", "are", "on", "blues"))
-PATROLS_OPENINGS = (("blues", "and", "twos"), ("code", "3"), ("code", "three"), ("dispatch", ","), ("control", ","))
-# ("Blues and twos WB Lord St to a fail to stop", "Code 3 to a 10-50": a patrol's log opens on its own run)
+                     "young"}  # a US patrol's call sign ("2-David-14", "1-Lincoln-20")
+PATROL_CARS = (("marked", "car"), ("marked", "vehicle"), ("marked", "irv"), ("marked", "unit"), ("irv",),
+               ("area", "car"), ("traffic", "car"), ("response", "car"), ("police", "veh"), ("police", "vehicle"))
+PATROLS_OWN_WORDS = tuple(lead + car for car in PATROL_CARS for lead in (("in",), ("in", "a"), ("in", "an"),
+                                                                         ("in", "the"), ("our",), ("my",))) + (
+    ("we're", "running", "code"), ("we", "were", "running", "code"), ("involving", "own", "vehicle"), ("pnb",),
+    ("we're", "on", "blues"), ("we", "were", "on", "blues"), ("we", "are", "on", "blues"))
+# ("in marked IRV", "our traffic car": the patrol's own; not "a traffic car pulled me over")
+PATROLS_OPENINGS = (("blues", "and", "twos"), ("code", "3"), ("code", "three"), ("dispatch", ","), ("control", ",")) \
+    + PATROL_CARS + tuple(("police",) + car for car in PATROL_CARS)
+# ("Blues and twos WB Lord St to a fail to stop", "Code 3 to a 10-50", "Police traffic car, grade 1.": a patrol's
+# log opens on its own run or its own car)
 
 
 def _a_patrols_call_sign(r: _Reader) -> bool:
     """'Control from Tango 4-2, we're NB ...', '22:10 Bravo 1-1 stationary at red signal', 'Dispatch, 4-Adam-3,
-    we're sat in traffic', 'in marked car': a radio log whose speaker gives a call sign
-    (a phonetic letter and a number) or speaks of the patrol's own run is told from a patrol car."""
+    we're sat in traffic', 'on patrol in marked IRV': a radio log whose speaker gives a call sign (a phonetic
+    letter and a number) or speaks of the patrol's own car or run is told from a patrol car."""
     words = [t.word for t in r.tokens]
     return any(w in CALL_SIGN_WORDS and k + 1 < len(words) and words[k + 1].isdigit() and (
         k == 0 or words[k - 1] in ("from", "control", ",", ":", ".") or words[k - 1].isdigit()) or
