@@ -12052,3 +12052,12 @@ def test_a_vehicle_turning_into_the_road_is_going_its_own_way_not_standing_in_it
 def test_a_vehicle_pulling_out_of_a_side_road_to_turn_goes_its_own_way():
     assert agents("A hatchback pulled out of Orchard Close and turned right, and a cyclist approaching from the right "
                   "had to brake.") == [("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_right_turn")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A traffic car pulled me over on the M6.",
+    "We were hit from behind at the lights and paramedics checked us over.",
+    "We were at the pump when a van reversed into us.",
+])
+def test_a_patrols_or_a_crews_words_said_of_others_leave_the_speaker_in_a_car(prompt):
+    assert [kind for kind, _, where in agents(prompt) if where == "ego"] == ["car"]
