@@ -10605,10 +10605,9 @@ def _witness_on_foot(r: _Reader) -> None:
         _the_teller_on_foot(r, ego, subject, {"crosswalk"} if at_a_crossing else {"ahead"},
                             "stop" if froze else "cross",
                             f"inferred: the teller was crossing on foot; the '{subject.head}' that met them is the ego")
-        named = any(e.type == "pedestrian" and e is not ego for e in r.entities)  # (company named on its own)
-        for _ in range(0 if named else _the_tellers_party(text) - 1):  # "we were on the zebra when a silver Audi
+        if not any(e.type == "pedestrian" and e is not ego for e in r.entities):  # (company named on its own)
+            _with_the_tellers_party(r, ego, _the_tellers_party(text))  # "we were on the zebra when a silver Audi
             # drove straight through": the teller's party, each on the way over
-            r.entities.append(replace(ego, key=r.new_key(), features=set(ego.features), actions=list(ego.actions)))
         return
     if patrol:
         subject = movers[0]
@@ -10751,8 +10750,7 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
         # was level with its cab": hooked from beside it, on that side, going on
     _the_ego_now(r, subject)  # ("a taxi waiting behind him": behind the ego now)
     riders = _the_tellers_party(words)
-    for _ in range(riders - 1):  # "we were riding two abreast", "three of us": each of the party, where the teller is
-        r.entities.append(replace(ego, key=r.new_key(), features=set(ego.features), actions=list(ego.actions)))
+    _with_the_tellers_party(r, ego, riders)  # "we were riding two abreast", "three of us"
     r.notes.append(f"inferred: the teller rides a bicycle{f' (a party of {riders})' if riders > 1 else ''}; the "
                    f"'{subject.head}' reported is the ego")
 
@@ -10779,6 +10777,12 @@ def _the_tellers_party(words: list[str]) -> int:
                                                         "with" in words[max(0, k - 3):k] for k, w in enumerate(words)):
         return 2
     return 2 if {"we", "us", "our"} & set(words) and not {"i", "me", "my"} & set(words) else 1
+
+
+def _with_the_tellers_party(r: _Reader, teller: Entity, party: int) -> None:
+    """The others of a teller's party of `party`, each where the teller is, doing what the teller does."""
+    for _ in range(party - 1):
+        r.entities.append(replace(teller, key=r.new_key(), features=set(teller.features), actions=list(teller.actions)))
 
 
 def _the_teller_rides_by(r: _Reader, ego: Entity, own_bikes: list[Entity]) -> None:
