@@ -12061,3 +12061,41 @@ def test_a_vehicle_pulling_out_of_a_side_road_to_turn_goes_its_own_way():
 ])
 def test_a_patrols_or_a_crews_words_said_of_others_leave_the_speaker_in_a_car(prompt):
     assert [kind for kind, _, where in agents(prompt) if where == "ego"] == ["car"]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A white Transit turned left out of the industrial estate into the path of a motorbike coming along the main "
+     "road from the right.", [("car", "turn_left", "ego"), ("motorcycle", "go_straight", "road_of_right_turn")]),
+    ("A lorry turned left out of a side road across the path of a car coming from the right.",
+     [("car", "go_straight", "road_of_right_turn"), ("truck", "turn_left", "ego")]),
+])
+def test_the_path_of_another_is_that_ones_not_the_egos(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_path_of_the_ego_is_the_egos():
+    assert agents("A child runs out from between parked cars into the path of the ego vehicle.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_a_teller_on_foot_drives_no_car_so_the_car_is_another():
+    assert agents("I was walking on the zebra when the car turned left.") == [
+        ("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_party_of_riders_is_counted_past_six():
+    assert agents("There were eight of us riding two abreast on Coldharbour Lane when a grey Volvo overtook the whole "
+                  "group.") == [("car", "go_straight", "ego")] + [("cyclist", "go_straight", "front")] * 8
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("When I stopped a van hit me from behind.", [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("As I went forward a car came out of the junction on my right and struck my car.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]),
+])
+def test_a_subordinate_clause_ends_where_its_left_out_comma_would(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_car_passed_and_parked_is_the_object_of_the_subordinate_clause():
+    assert ("car", "stop", "front_left") in agents("As I passed a car parked on the left, a cyclist came towards me.")

@@ -398,7 +398,7 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
-                   _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind, _paint_of_one,
+                   _the_path_of_another, _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind, _paint_of_one,
                    _a_label_then_what_it_is):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
@@ -482,6 +482,22 @@ def _one_more_of_the_kind(units: list[Unit]) -> list[Unit]:
         if named and not counted and sentence[named[-1] - 1].word in ("a", "an", "another") and \
                 not sentence[named[-1]].tokens[-1].plural:
             out[k] = Unit(u.start, u.end, "agents", sentence[named[-1]].meaning, u.tokens)
+    return out
+
+
+def _the_path_of_another(units: list[Unit]) -> list[Unit]:
+    """'turned left out of the estate into the path of a motorbike': the path is the motorbike's, not the ego's;
+    the one moving into it is placed by nothing here (but 'into the path of the ADS vehicle' is the ego's)."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "positions" or u.tokens[-1].word != "path" or k + 2 >= len(units) or units[k + 1].word != "of":
+            continue
+        j = k + 2
+        while j < min(len(units), k + 6) and (units[j].category == "word" or units[j].category == "positions" and
+                                             len(units[j].tokens) == 1):
+            j += 1  # "of an oncoming silver car"
+        if j < len(units) and units[j].category == "agents" and units[j].meaning not in ("ego", "none"):
+            out[k] = Unit(u.start, u.end, "word", u.word, u.tokens)
     return out
 
 
@@ -3039,6 +3055,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 u.meaning == "ego" and (u.tokens[0].word in ("i", "we") or [t.word for t in u.tokens][-1:] == ["ego"]):
             close()  # "once they passed i took over and made the left", "once it had gone by I made my turn": the
             # condition ends where its comma would
+        if link in SUBORDINATE_LINKS and _its_comma_left_out(current, units, k):
+            close()  # "As I went forward a car came out of the junction", "When I stopped a van hit me": the
+            # subordinate clause ends where its comma would
         if u.category == "sequence" and (prev_word == "even" or _next_names_which(u, prev_word, nxt) or
                                          u.word == "later" and prev_word in ("bit", "little", "or", "maybe")):
             r.mark(u)
@@ -3536,6 +3555,23 @@ SUBORDINATE_LINKS = {"as", "while", "when", "whilst"}
 OBJECT_AWAITED = {"of", "behind", "from", "past", "to", "into", "onto", "at", "in", "on", "by", "with", "towards",
                   "toward", "across", "around", "round", "between", "beside", "alongside", "near", "passing", "passed"}
 # a place phrase that ends in one of these names its object next ("emerges from behind a van parked ...")
+
+
+PARKED_STATES = {"park", "stop", "stall", "leave", "abandon", "break"}  # "passed a car parked ...": its state
+
+
+def _its_comma_left_out(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'[As] I went forward | a car came out': a clause with its subject and verb said, then a new indefinite
+    subject with a finite verb of its own (not 'I saw a car pull out', 'as I passed a car parked on the left')."""
+    if units[k].word not in ("a", "an") or not _has_agent(current) or not _has_verb(current) or \
+            current[-1].word in OBJECT_AWAITED or not _subject_and_verb_follow(units, k):
+        return False
+    verbs = [x for x in current if x.category == "actions"]
+    if any(t.base in PERCEIVING or t.base in ("let", "make", "help", "watch") for x in verbs for t in x.tokens):
+        return False
+    verb = next(x for x in units[k + 1:] if x.category == "actions").tokens[0]
+    transitive_before = current[-1].category == "actions"  # "as I passed a car ...": its object, unless it acts
+    return not verb.word.endswith("ing") and not (transitive_before and verb.base in PARKED_STATES)
 
 
 def _subject_and_verb_follow(units: list[Unit], k: int) -> bool:
@@ -5176,7 +5212,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             after += 1  # "the car still has to deal with him", "the car just holds its line"
         nxt = units[after] if after < len(units) else None
         if ego is not None and not plural and kind == ego.type and "other" not in words and \
-                not _picked_out_by_what_it_did(r, u) and \
+                not _picked_out_by_what_it_did(r, u) and not _the_teller_afoot(ego) and \
                 not any(m.category == "positions" for m in modifiers) and (  # ("the oncoming car": another)
                 u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
                 _names_the_ego_again(r, ego, u.base)) and not _measured_by_others(units, after) and (
@@ -5379,6 +5415,12 @@ def _measured_by_others(units: list[Unit], k: int) -> bool:
         return True
     return k + 2 < len(units) and units[k].category in ("numbers", "number") and units[k + 1].category == "agents" \
         and units[k + 2].category == "positions"
+
+
+def _the_teller_afoot(ego: Entity) -> bool:
+    """'I was walking on the zebra when the car turned left': a teller on foot drives no car, so 'the car' is
+    another."""
+    return ego.head in SPEAKERS | FIRST_PERSON and any(a[4] in ("walk", "cross") for a in ego.actions)
 
 
 GENERAL_BODIES = {"car", "vehicle", "truck", "bus", "machine", "motor"}  # (machine: an Italian or Russian "car")
@@ -10759,7 +10801,14 @@ LEVEL_WITH_THE_TURNER = (("alongside",), ("level", "with"), ("next", "to"), ("be
                          ("on", "her", "inside"), ("on", "its", "inside"), ("up", "the", "inside"))
 ACROSS_THE_RIDER = (("across", "me"), ("across", "my"), ("across", "the", "bike", "lane"), ("across", "the", "cycle"),
                     ("left", "hook"), ("right", "hook"), ("left", "hooked"), ("right", "hooked"))
-PARTY_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "2": 2, "3": 3, "4": 4, "5": 5, "6": 6}
+PARTY_SIZES = range(2, 13)  # a party counted as a party (not "two of us out of forty")
+
+
+def _party_count(word: str) -> int | None:
+    """'eight', '8': the size a teller gives their party, or None."""
+    said = lexicon().phrases.get((word,))
+    n = read_number(word) if said is None or said[0] != "numbers" else float(said[1])
+    return int(n) if n is not None and n in PARTY_SIZES else None
 COMPANIONS = {"partner", "buddy", "mate", "friend", "wife", "husband", "son", "daughter", "girlfriend", "boyfriend",
               "brother", "sister", "dad", "mum", "mom", "pal"}
 
@@ -10768,11 +10817,12 @@ def _the_tellers_party(words: list[str]) -> int:
     """How many go with the teller, the teller counted: 'three of us', 'our group of four', 'two abreast', 'with my
     partner', 'both of us'; a 'we' with no count is two."""
     for k, w in enumerate(words):
-        if w in PARTY_COUNTS and (words[k + 1:k + 3] == ["of", "us"] or words[max(0, k - 3):k] in (
+        n = _party_count(w)
+        if n and (words[k + 1:k + 3] == ["of", "us"] or words[max(0, k - 3):k] in (
                 ["our", "group", "of"], ["a", "group", "of"]) or words[k + 1:k + 2] == ["abreast"]):
-            return PARTY_COUNTS[w]
-        if w in PARTY_COUNTS and words[k - 1:k] == ["my"] and k >= 2 and words[k - 2] in ("walking", "taking", "with"):
-            return PARTY_COUNTS[w] + 1  # "walking my two to school": the teller and two more
+            return n
+        if n and words[k - 1:k] == ["my"] and k >= 2 and words[k - 2] in ("walking", "taking", "with"):
+            return n + 1  # "walking my two to school": the teller and two more
     if _says_any(words, (("both", "of", "us"),)) or any(w in COMPANIONS and words[k - 1:k] == ["my"] and
                                                         "with" in words[max(0, k - 3):k] for k, w in enumerate(words)):
         return 2
