@@ -12099,3 +12099,60 @@ def test_a_subordinate_clause_ends_where_its_left_out_comma_would(prompt, expect
 
 def test_a_car_passed_and_parked_is_the_object_of_the_subordinate_clause():
     assert ("car", "stop", "front_left") in agents("As I passed a car parked on the left, a cyclist came towards me.")
+
+
+def test_the_subject_of_a_passive_is_met_not_left_out():
+    assert agents("The cyclist was clipped by a van turning left.") == [
+        ("car", "turn_left", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_when_i_got_to_the_junction_ends_where_its_comma_would():
+    assert agents("When I got to the junction a lorry turned left in front of me.") == [
+        ("car", "go_straight", "ego"), ("truck", "turn_left", "front")]
+
+
+def test_up_the_inside_and_the_outside_are_sides_the_kerb_decides():
+    assert ("motorcycle", "go_straight", "right") in agents(
+        "I had already stopped for the red when a motorbike came up the inside.")
+    assert ("motorcycle", "go_straight", "back_right") in agents(
+        "At the pelican crossing on London Road I had stopped, and a moped came up the outside, behind me, and "
+        "went straight through the red.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The car I was following braked hard.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("The lorry I was behind turned left.", [("car", "go_straight", "ego"), ("truck", "turn_left", "front")]),
+    ("The lorry that I was behind turned left.", [("car", "go_straight", "ego"), ("truck", "turn_left", "front")]),
+    ("A van came out of the road on the left, and the car I was following had to stop dead.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn"), ("car", "stop", "front")]),
+])
+def test_a_relative_whose_subject_is_the_speaker_places_its_noun_ahead(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_vehicle_the_speaker_drives_is_the_ego():
+    assert agents("The taxi I was driving stopped at the lights.") == [("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Bus stops dead as schoolboy darts into road mid-block",
+     [("bus", "stop", "ego"), ("pedestrian", "cross_the_road", "front_left")]),
+    ("A bus stopped for a woman on the zebra.",
+     [("bus", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+])
+def test_one_that_stops_for_someone_is_the_one_the_scene_is_told_from(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_bus_stopped_for_its_passengers_is_met_standing():
+    assert agents("A bus stopped for passengers at the stop.") == [("bus", "stop", "front"), ("car", "go_straight", "ego")]
+
+
+def test_a_riders_elbow_is_a_part_not_a_side():
+    assert agents("A white transit came past so close his mirror clipped my right elbow. I was riding in primary.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_a_rider_said_only_by_the_bike_is_met_by_the_one_vehicle_named():
+    assert agents("For about a mile along Station Lane a pickup sat a few feet off my back wheel revving, then flew "
+                  "past with inches to spare.") == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]

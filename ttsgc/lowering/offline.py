@@ -301,7 +301,7 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
         kerb = "nearside" in words or "near" in words and "side" in words or "inside" in words or \
             bool({"kerb", "curb", "kerbside", "curbside"} & set(words)) or \
             "lane" in words and bool({"bike", "cycle", "bicycle"} & set(words))
-        far = "offside" in words or "off" in words and "side" in words or "median" in words
+        far = "offside" in words or "off" in words and "side" in words or "median" in words or "outside" in words
         if u.category == "positions" and u.meaning in swap and (kerb and u.meaning in ("side_right", "from_right")
                                                                or far and u.meaning in ("side_left", "from_left")):
             u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
@@ -394,7 +394,8 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
-    units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
+    units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_up_the_inside(
+        _read_units(tokens)))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
@@ -402,6 +403,20 @@ def _units(tokens: list[Token]) -> list[Unit]:
                    _a_label_then_what_it_is):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+def _up_the_inside(units: list[Unit]) -> list[Unit]:
+    """'a motorbike came up the inside', 'went down the outside of the queue': the verb took 'up', so 'the inside'
+    is read here as the side it says (the kerb's side, the nearside where traffic keeps left)."""
+    out = list(units)
+    for k, u in enumerate(units[:-2]):
+        side = {"inside": "side_right", "outside": "side_left"}.get(units[k + 2].word)
+        if u.category == "actions" and u.tokens[-1].word in ("up", "down") and units[k + 1].word == "the" and \
+                side and units[k + 2].category == "word" and (k + 3 == len(units) or units[k + 3].word != "lane"):
+            out[k + 1] = Unit(units[k + 1].start, units[k + 2].end, "positions", side,
+                              units[k + 1].tokens + units[k + 2].tokens)
+            out[k + 2] = None
+    return [u for u in out if u is not None]
 
 
 def _noun_after_paint(units: list[Unit], k: int) -> int | None:
@@ -1501,6 +1516,9 @@ def _body_part(tokens: list[Token], m: Match) -> bool:
 VEHICLE_PARTS = {"corner", "bumper", "fender", "wing", "door", "wheel", "tyre", "tire", "panel", "quarter", "mirror",
                  "headlight", "headlamp", "taillight", "lamp", "light", "lights", "indicator", "bodywork", "trailer"}
 
+RIDERS_PARTS = {"elbow", "knee", "leg", "hip", "foot", "ankle", "ear", "handlebar", "handlebars", "pedal", "pannier",
+                "panniers"}  # "his mirror clipped my right elbow" (not "shoulder", "arm": of a road too)
+
 
 def _a_vehicles_part(tokens: list[Token], m: Match) -> bool:
     """'V2's left rear trailer corner', 'my right front fender', 'the left rear tyre': the side names a part of a
@@ -1520,7 +1538,7 @@ def _part_after(tokens: list[Token], k: int) -> int | None:
     for j in range(k, min(k + 2, len(tokens))):
         if tokens[j].word == ",":
             return None  # "on our left, light bar going": the side ends at the comma
-        if tokens[j].word in VEHICLE_PARTS and not tokens[j].plural:
+        if tokens[j].word in VEHICLE_PARTS | RIDERS_PARTS and not tokens[j].plural:
             return j
     return None
 
@@ -3055,6 +3073,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                 u.meaning == "ego" and (u.tokens[0].word in ("i", "we") or [t.word for t in u.tokens][-1:] == ["ego"]):
             close()  # "once they passed i took over and made the left", "once it had gone by I made my turn": the
             # condition ends where its comma would
+        if _a_relative_with_its_pronoun_left_out(current, units, k):
+            close(next_link="that")  # "the car I was following braked": "the car (that) I was following"
+            current.append(u)
+            continue
         if link in SUBORDINATE_LINKS and _its_comma_left_out(current, units, k):
             close()  # "As I went forward a car came out of the junction", "When I stopped a van hit me": the
             # subordinate clause ends where its comma would
@@ -3314,6 +3336,11 @@ def _main_verb_after_a_relative(current: list[Unit], units: list[Unit], k: int) 
     finite verb comes, which is its noun's ('a lorry that I had been following turned left')."""
     u = units[k]
     first = 1 if current and current[0].word == "the" else 0  # "a truck that the ego is following brakes"
+    if u.word in ("had", "has") and [x.word for x in units[k + 1:k + 2]] == ["to"] and k + 2 < len(units) and \
+            units[k + 2].category == "actions" and len(current) >= first + 2 and \
+            current[-1].category in ("actions", "positions") and current[first].category == "agents" and (
+                current[first].tokens[0].word in RELATIVE_SUBJECTS or current[first].meaning == "ego"):
+        return True  # "the car I was following had to stop dead": the noun's own verb, said with "had to"
     if u.category != "actions" or len(current) < first + 2 or current[first].category != "agents" or not (
             current[first].tokens[0].word in RELATIVE_SUBJECTS or current[first].meaning == "ego"):
         return False
@@ -3557,13 +3584,31 @@ OBJECT_AWAITED = {"of", "behind", "from", "past", "to", "into", "onto", "at", "i
 # a place phrase that ends in one of these names its object next ("emerges from behind a van parked ...")
 
 
+def _a_relative_with_its_pronoun_left_out(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'The car I was following braked hard', 'the lorry we were stuck behind': a noun said with 'the' and no verb
+    yet, then 'I' or 'we' with a verb of their own, then the noun's own verb."""
+    u = units[k]
+    if u.category != "agents" or u.meaning != "ego" or u.word not in ("i", "we") or len(current) < 2 or \
+            current[-1].category != "agents" or current[-1].meaning in ("ego", "none") or _has_verb(current) or \
+            current[-2].word != "the":
+        return False
+    rest = [x for x in units[k + 1:k + 8] if x.tokens[0].sentence == u.tokens[0].sentence]
+    verbs = [j for j, x in enumerate(rest) if x.category == "actions" or x.category == "positions" and
+             x.meaning in ("behind", "ahead")]
+    own = {"driving", "drove", "riding", "rode", "in", "on", "sat", "sitting", "own", "owned", "hired", "borrowed"}
+    return len(verbs) >= 2 and (rest[0].word in ("was", "were", "had", "am", "'d") or rest[0].category == "actions") \
+        and not any(t.word in own for x in rest[:verbs[0] + 1] for t in x.tokens)  # ("the taxi I was driving": mine)
+
+
 PARKED_STATES = {"park", "stop", "stall", "leave", "abandon", "break"}  # "passed a car parked ...": its state
 
 
 def _its_comma_left_out(current: list[Unit], units: list[Unit], k: int) -> bool:
     """'[As] I went forward | a car came out': a clause with its subject and verb said, then a new indefinite
     subject with a finite verb of its own (not 'I saw a car pull out', 'as I passed a car parked on the left')."""
-    if units[k].word not in ("a", "an") or not _has_agent(current) or not _has_verb(current) or \
+    arrived = any(x.word in ("got", "get", "gets", "arrived", "arrive") for x in current)  # "When I got to the
+    # junction a lorry turned left": a verb the lexicon reads as no action
+    if units[k].word not in ("a", "an") or not _has_agent(current) or not (_has_verb(current) or arrived) or \
             current[-1].word in OBJECT_AWAITED or not _subject_and_verb_follow(units, k):
         return False
     verbs = [x for x in current if x.category == "actions"]
@@ -5532,6 +5577,10 @@ def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
             return False  # "the car cope with a motorbike coming up behind us": the motorbike's place
         if x.category == "positions" and {t.word for t in x.tokens} & {"us", "me", "ego", "you"}:
             return True  # "... then slams on its brakes in front of me"
+        if x.category == "agents" and x.meaning == "ego" and x.word in ("i", "we") and (
+                r.units[k - 1].start == u.start or r.units[k - 1].word in ("that", "which") and
+                r.units[k - 2].start == u.start):
+            return True  # "the car (that) I was following": the one the speaker follows, another
         if x.category == "agents" and x.meaning == "ego":
             before = k - 1
             while before >= 0 and r.units[before].word in ("the", "our", "my"):
@@ -7821,7 +7870,19 @@ def _object_of_a_deed(r: _Reader, e: Entity) -> bool:
     if k > 0 and r.tokens[k].word in ("with", "into", "past", "behind"):
         k -= 1
     return k >= 0 and r.tokens[k].sentence == r.tokens[e.said_at].sentence and r.tokens[k].base in _verbs() and \
-        r.tokens[k].base not in lexicon().function_words
+        r.tokens[k].base not in lexicon().function_words or _subject_of_a_passive(r, e)
+
+
+def _subject_of_a_passive(r: _Reader, e: Entity) -> bool:
+    """'The cyclist was clipped by a van turning left': the one a deed is done to, said first."""
+    k = e.said_at + 1
+    while k < len(r.tokens) and r.tokens[k].word in ("was", "were", "is", "are", "got", "gets", "had", "has", "been",
+                                                     "being", "just", "nearly", "almost", "then"):
+        k += 1
+    if k == e.said_at + 1 or k >= len(r.tokens) or r.tokens[k].base not in _verbs() or \
+            r.tokens[k].sentence != r.tokens[e.said_at].sentence:
+        return False
+    return any(t.word == "by" and t.sentence == r.tokens[k].sentence for t in r.tokens[k + 1:k + 4])
 
 
 def _an_unknown_verb_after(r: _Reader, e: Entity) -> bool:
@@ -9236,6 +9297,21 @@ def _the_one_at_the_stop(units: list[Unit], recent: list[Entity]) -> Entity | No
     return None
 
 
+def _placed_by_the_egos_relative(clause: Clause, subject: list[Entity]) -> None:
+    """'the lorry (that) I was stuck behind', 'the car we were following': a relative whose subject is the ego and
+    whose place or verb has no object of its own places its noun (ahead of the ego, which follows it)."""
+    noun = clause.antecedent
+    if clause.link not in RELATIVES or noun is None or noun.is_ego or len(subject) != 1 or not subject[0].is_ego or \
+            not clause.units:
+        return
+    last = clause.units[-1]
+    if last.category == "positions" and [t.word for t in last.tokens] == ["behind"] or \
+            last.category == "actions" and last.tokens[0].base in FOLLOWING and len(last.tokens) == 1:
+        noun.features |= {"ahead", "followed"}
+    elif last.category == "positions" and [t.word for t in last.tokens] in (["ahead", "of"], ["in", "front", "of"]):
+        noun.features.add("behind")  # "the van I was in front of"
+
+
 def _relational(verb: Unit, units, i, subject: list[Entity], phrases) -> None:
     """Places implied by verbs between an agent and the ego: following, leading, overtaking, hiding."""
     base = verb.tokens[0].base
@@ -9750,6 +9826,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         said_until = r.order
         subject = _read_clause(r, clause, previous, recent, pending)
+        _placed_by_the_egos_relative(clause, subject)
         if clause.stage > 0 and clause.units and clause.units[0].category == "actions" and subject == previous and \
                 len(subject) == 1 and subject[0].said_at >= 0 and \
                 tokens[subject[0].said_at].sentence == clause.units[0].tokens[0].sentence:
@@ -9818,8 +9895,9 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if subject and not aside:
             previous = subject
         if clause.antecedent is not None and not clause.antecedent.is_ego and clause.antecedent not in subject and \
-                k + 1 < len(clauses) and clauses[k + 1].link in (",", "") and clauses[k + 1].units and \
-                clauses[k + 1].units[0].category == "actions" and \
+                k + 1 < len(clauses) and clauses[k + 1].link in (",", "") and clauses[k + 1].units and (
+                    clauses[k + 1].units[0].category == "actions" or
+                    [x.word for x in clauses[k + 1].units[:2]] in (["had", "to"], ["has", "to"])) and \
                 not clauses[k + 1].units[0].tokens[0].word.endswith("ing") and \
                 clauses[k + 1].units[0].tokens[0].sentence == clause.units[-1].tokens[0].sentence:
             # "a man, whom I now know to be its driver, walked out": the man did; so "the bus I was stuck behind
@@ -10100,7 +10178,8 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     opening = min((a for a in first.actions if a[0] == earliest), key=lambda a: a[3], default=None)
     heading = not first.actions and any(f.startswith("compass_") for f in first.features)  # "Car A is heading
     # east towards a crossroads": on its way
-    if not driver_named and not first.waits_to_turn and not heading and not _sees_first(r, first) and (
+    if not driver_named and not first.waits_to_turn and not heading and not _sees_first(r, first) and \
+            not _stops_for_someone(r, first) and (
             not any(a[4] in OWN_WAY for a in first.actions) or opening is not None and opening[4] in ("stop", "block")):
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
         # pulled away": met by someone, who is the ego
@@ -10114,6 +10193,22 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
     return first
+
+
+def _stops_for_someone(r: _Reader, first: Entity) -> bool:
+    """'Bus stops dead as schoolboy darts into road', 'SUV stops for mum and pram on the zebra': one that stops for
+    another, named right after its stop, is the one the scene is told from, not one met standing."""
+    if first.said_at < 0:
+        return False
+    at = bisect_left(r.units, first.said_at, key=_unit_start)
+    for k, u in enumerate(r.units[at + 1:at + 4], start=at + 1):
+        if u.tokens[0].sentence != r.tokens[first.said_at].sentence or u.category == "agents":
+            return False
+        if u.category == "actions" and u.meaning == "stop":
+            after = [x for x in r.units[k + 1:k + 6] if x.word not in ("dead", "sharply", "suddenly", "hard", "short")]
+            return bool(after) and after[0].word in ("for", "as") and any(
+                x.category == "agents" and x.meaning in V.VULNERABLE_TYPES for x in after[1:3])
+    return False
 
 
 def _sees_first(r: _Reader, first: Entity) -> bool:
@@ -10741,6 +10836,8 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     reported_riding = set(words) & {"riding", "rode"} and set(words) & REPORTING_WORDS  # "I'm reporting a police
     # patrol car ... it overtook me ... while I was riding past a line of parked cars": a rider's report of a driver
     met = any(w in MET_BY | PASSING_ME and words[k + 1:k + 2] == ["me"] for k, w in enumerate(words))
+    met = met or _says_any(words, PEDAL_PHRASES) and bool(set(words) & (PASSING_ME | {"past"}))  # "sat off my back
+    # wheel, then flew past with inches to spare": passed, the rider said by the bike
     plain = _says_any(words, PEDAL_PHRASES) or _the_teller_rides(r) and met  # "Riding west into the low sun when a
     # Corsa ... turned right across me", "came up behind me in the cycle lane" (not "Riding along a street, a taxi
     # ahead of me stopped, so I went round it": the teller's own ride, told of no one met)
@@ -10755,6 +10852,12 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     if ego is not None and ego.type in V.EGO_TYPES and ego.head not in FIRST_PERSON and not _supplied(r, ego) and \
             on_a_bike and met and not others_ride and not any(e.head in SPEAKING_SELF for e in r.entities):
         _the_teller_rides_by(r, ego, own_bikes)
+        return
+    reported = [e for e in r.entities if e.type in V.EGO_TYPES - V.VULNERABLE_TYPES and e.count == 1 and
+                e.parent is None and not e.generic]
+    if ego is None and on_a_bike and met and not others_ride and len(reported) == 1:
+        _the_teller_rides_by(r, reported[0], own_bikes)  # "a pickup sat off my back wheel, then flew past": the
+        _the_ego_now(r, reported[0])  # rider said only by the bike, met by the one vehicle named
         return
     if ego is None or ego.head not in SPEAKING_SELF and not _supplied(r, ego) or \
             ego.type not in ("car", "motorcycle") or ego.aliases - SPEAKING_SELF - {"you"} or not on_a_bike or \
