@@ -12156,3 +12156,21 @@ def test_a_riders_elbow_is_a_part_not_a_side():
 def test_a_rider_said_only_by_the_bike_is_met_by_the_one_vehicle_named():
     assert agents("For about a mile along Station Lane a pickup sat a few feet off my back wheel revving, then flew "
                   "past with inches to spare.") == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, riders", [
+    ("Reporting on behalf of Wheelers CC. I was leading six riders (me included) along the B4009 when a tipper truck "
+     "passed the group within a foot of the back marker's shoulder.", 6),
+    ("Club ride of nine. A coach came past the whole group on the approach to Fleet services and then swung left into "
+     "the slip road right across our lead rider.", 9),
+    ("As ride captain I'm logging a near miss at the Hook roundabout: seven of us were already on the roundabout when "
+     "an Audi came on from the next entry, from our left, and drove into the middle of the group.", 7),
+])
+def test_a_party_of_riders_is_as_many_as_its_leader_counts(prompt, riders):
+    assert sum(kind == "cyclist" for kind, _, _ in agents(prompt)) == riders
+
+
+def test_a_rider_met_by_one_out_of_a_named_street_on_a_side_is_on_the_road_across():
+    assert agents("I was cycling north along Mill Road when a grey Vauxhall Astra emerged from Catharine Street on my "
+                  "left and turned right across my path.") == [
+        ("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_right_turn")]

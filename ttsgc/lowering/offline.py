@@ -10796,7 +10796,9 @@ PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), 
                  ("two", "abreast"), ("club", "run"), ("club", "ride"), ("group", "ride"), ("ride", "leader"),
                  ("back", "marker"), ("bar", "end"), ("my", "elbow"), ("my", "right", "elbow"), ("my", "left", "elbow"),
                  ("my", "pedal"), ("into", "the", "gutter"), ("knocked", "me", "off"), ("took", "me", "off"),
-                 ("riding", "single", "file"), ("riding", "in", "single", "file"))
+                 ("riding", "single", "file"), ("riding", "in", "single", "file"), ("ride", "captain"),
+                 ("training", "ride"), ("social", "ride"), ("club", "training"), ("sunday", "social"),
+                 ("saturday", "social"))
 # (not "the cycle courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
 MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
 REPORTING_WORDS = {"reporting", "report", "complaint", "file"}
@@ -10835,7 +10837,7 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # ("the draught nearly pulled me off the bike": the teller's own)
     reported_riding = set(words) & {"riding", "rode"} and set(words) & REPORTING_WORDS  # "I'm reporting a police
     # patrol car ... it overtook me ... while I was riding past a line of parked cars": a rider's report of a driver
-    met = any(w in MET_BY | PASSING_ME and words[k + 1:k + 2] == ["me"] for k, w in enumerate(words))
+    met = any(w in MET_BY | PASSING_ME and words[k + 1:k + 2] in (["me"], ["us"]) for k, w in enumerate(words))
     met = met or _says_any(words, PEDAL_PHRASES) and bool(set(words) & (PASSING_ME | {"past"}))  # "sat off my back
     # wheel, then flew past with inches to spare": passed, the rider said by the bike
     plain = _says_any(words, PEDAL_PHRASES) or _the_teller_rides(r) and met  # "Riding west into the low sun when a
@@ -10884,7 +10886,9 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
                    if a[4] in ("lane_change", "lane_left", "lane_right", "cut_in") else a for a in ego.actions]
     # ("I was passing along his right-hand side", "I had to swerve out round it": the rider keeps to its road)
     standing = not any(a[4] not in ("stop", "try") for a in subject.actions)
-    ego.features = (ego.features - own) | (own or {SEEN_THE_OTHER_WAY[f] for f in subject.features
+    seen = {f"road_{f[5:]}" if f.startswith("side_") and "cross_road" in subject.features else f
+            for f in subject.features}  # "emerged from Catharine Street on my left": out of the road on my left
+    ego.features = (ego.features - own) | (own or {SEEN_THE_OTHER_WAY[f] for f in seen
                                                    if f in SEEN_THE_OTHER_WAY}) or ego.features | {
         "behind" if standing else "ahead"}  # ("a delivery van parked right across the cycle lane": come up to)
     hook = next((a[4][5:] for a in subject.actions if a[4] in ("turn_left", "turn_right")), None)
@@ -10921,11 +10925,17 @@ def _the_tellers_party(words: list[str]) -> int:
     partner', 'both of us'; a 'we' with no count is two."""
     for k, w in enumerate(words):
         n = _party_count(w)
-        if n and (words[k + 1:k + 3] == ["of", "us"] or words[max(0, k - 3):k] in (
-                ["our", "group", "of"], ["a", "group", "of"]) or words[k + 1:k + 2] == ["abreast"]):
-            return n
-        if n and words[k - 1:k] == ["my"] and k >= 2 and words[k - 2] in ("walking", "taking", "with"):
+        if not n:
+            continue
+        after = words[k + 1:k + 6]
+        if after[:2] == ["of", "us"] or words[k - 2:k] in (["group", "of"], ["ride", "of"], ["run", "of"]) or \
+                after[:1] == ["abreast"] or after[:2] == ["in", "total"] or after[:1] in (["riders"], ["cyclists"]) and (
+                    _says_any(after, (("in", "total"), ("me", "included"), ("including", "me")))):
+            return n  # "our group of seven", "club ride of nine", "5 riders in total", "six riders (me included)"
+        if words[k - 1:k] == ["my"] and k >= 2 and words[k - 2] in ("walking", "taking", "with"):
             return n + 1  # "walking my two to school": the teller and two more
+        if words[k - 1:k] in (["leading"], ["with"]) and {"riders", "cyclists"} & set(after[:3]):
+            return n + 1  # "leading a ride with four new riders behind me": the leader and four more
     if _says_any(words, (("both", "of", "us"),)) or any(w in COMPANIONS and words[k - 1:k] == ["my"] and
                                                         "with" in words[max(0, k - 3):k] for k, w in enumerate(words)):
         return 2
