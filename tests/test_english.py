@@ -12174,3 +12174,43 @@ def test_a_rider_met_by_one_out_of_a_named_street_on_a_side_is_on_the_road_acros
     assert agents("I was cycling north along Mill Road when a grey Vauxhall Astra emerged from Catharine Street on my "
                   "left and turned right across my path.") == [
         ("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_right_turn")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "There I was on my scooter, about halfway across the zebra by the bank, and a grey car came right at me and "
+    "didn't slow down one little bit.",
+    "Going over the pelican crossing by the town hall on my scooter, the green man was on, and a white van went "
+    "straight through the red light just in front of me.",
+])
+def test_a_scooter_on_a_crossing_is_a_mobility_scooter_its_rider_on_foot(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_scooter_in_traffic_is_still_a_motorbike():
+    assert ("motorcycle", "go_straight", "ego") in agents("I was on my scooter at the lights when a van cut in front "
+                                                          "of me.")
+
+
+def test_right_at_me_is_straight_at_me_and_right_at_the_lights_a_turn():
+    assert agents("A car came right at me.") == [("car", "go_straight", "ego"), ("car", "go_straight", "front")]
+    assert agents("I turned right at the lights.") == [("car", "turn_right", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Put this one in the simulator. 2am, M6 northbound, me in the 40-tonner at 56 in the centre lane of three.",
+    "Running empty over the Pennines in thick fog about 5 this morning. Road to myself.",
+    "Swinging left out of the distribution park, fully loaded wagon, and a cyclist nips up my inside.",
+])
+def test_a_truckers_own_words_put_the_ego_in_a_truck(prompt):
+    assert [kind for kind, _, where in agents(prompt) if where == "ego"] == ["truck"]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Unit 7 on scene. V1 blue Ford Focus held at red light, stopped on the stop line. V2 grey Sprinter van behind "
+     "failed to stop and shunted into back of V1.", [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("Unit 9 (marked) responding to Grade 1, lights and sirens. Blue Golf slightly in front of unit in the n/s lane "
+     "moved across into our lane, no indication.",
+     [("car", "change_lane_to_right", "front_left"), ("police", "go_straight", "ego")]),
+])
+def test_a_patrols_unit_by_its_call_sign_is_no_crash_reports_vehicle(prompt, expected):
+    assert agents(prompt) == expected

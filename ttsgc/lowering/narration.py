@@ -1041,6 +1041,11 @@ def _designations_spelt_alike(text: str) -> str:
     """'Veh. 2', 'V-2', 'Vehicle 2', 'Unit 2' are one report's way of naming V2 (and 'Veh.' ends no sentence); a
     crash database's 'Participant 3' is its P3."""
     text = re.sub(r"\bparticipant\s?[#-]?\s?(\d{1,2})\b", r"P\1", text, flags=re.I)
+    patrols = set(re.findall(r"\bUnit\s+(\d{1,3})\b(?=\s*(?:at scene|on scene|attending|in attendance|arrived|"
+                             r"\(marked\)|,\s*marked\s*,))", text, flags=re.I))
+    for number in patrols:  # a patrol's own unit by its call sign ("Unit 7 on scene", "Unit 9 (marked) responding
+        text = re.sub(rf"\b(Unit)\s+{number}\b", r"\1", text, flags=re.I)  # ... Unit 9 continued"): no crash
+        # report's V7
     return SPELT_DESIGNATION.sub(r"V\1", text)
 
 

@@ -1883,6 +1883,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             "actions" in ((lexicon().phrases.get((tokens[m.start - 1].base,)) or ("", ""))[0],
                           (lexicon().phrases.get((tokens[m.start - 1].base, nxt)) or ("", ""))[0]):
         return [Unit(m.start, m.end, "word", "right", span)]  # "slows right down", "pulled right out": how far
+    if m.category == "positions" and [t.word for t in span] == ["right"] and nxt == "at" and \
+            [t.word for t in tokens[m.end + 1:m.end + 2]] in (["me"], ["us"], ["him"], ["her"], ["them"], ["you"]):
+        return [Unit(m.start, m.end, "word", "right", span)]  # "came right at me": straight at, no side
     if m.category == "actions" and m.meaning == "stop" and [t.word for t in span] == ["stop"] and m.start > 0 and \
             tokens[m.start - 1].word in ("says", "said", "reads", "read", "saying", "reading"):
         return [Unit(m.start, m.end, "road", "stop", span)]  # "the sign says stop": a stop sign, nobody stopping
@@ -10694,6 +10697,10 @@ def _witness_on_foot(r: _Reader) -> None:
         w in SPEAKING_SELF for w in text))  # ("Sitting at the bus stop ..., I watched": the teller, first as a
     # participle's subject; "we were on the zebra": the teller and company)
     on_a_scooter = ego is not None and ego.type == "motorcycle" and _says_any(text, (("my", "scooter"),))
+    aboard_on_a_crossing = on_a_scooter and _says_any(text, CROSSINGS) and (
+        _on_the_way_over(r.tokens) or _says_any(text, (("halfway",), ("green", "man"), ("going", "over"))))
+    told_by_me = told_by_me or aboard_on_a_crossing  # "There I was on my scooter, about halfway across the zebra":
+    # a mobility scooter, its rider on foot
     if not told_by_me or ego.type != "car" and not on_a_scooter:
         return  # ("I am a bus driver ... moving off from the bus stop": at the wheel of the bus)
     said = [_what_i_was(r.tokens, k) for k, t in enumerate(r.tokens) if t.word in ("i", "i'm", "we")] + \
@@ -10702,7 +10709,7 @@ def _witness_on_foot(r: _Reader) -> None:
          _opens_its_sentence(r.tokens, t)]  # "Sitting at the bus stop ..., I watched a car",
     # "From the bench outside the chemist's I watched", "Whilst on foot at the taxi rank, I saw"
     words = set().union(*said) if said else set()
-    if _says_any(text, OWN_MOBILITY_AIDS):
+    if _says_any(text, OWN_MOBILITY_AIDS) or aboard_on_a_crossing:
         words.add("wheelchair")  # "the driver only saw my wheelchair at the last second": the teller is on foot
         words.discard("in my")  # ("while I was crossing the end of it in my powerchair": sat in it, on foot)
         if _on_the_way_over(r.tokens) or not words & (FOOTWAYS | {"bus stop"}) and _says_any(text, CROSSINGS):
@@ -11477,7 +11484,10 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
                   ("my", "artic"), ("the", "rigid"), ("my", "rigid"), ("in", "the", "tipper"), ("my", "tipper"),
                   ("the", "pete"), ("my", "pete"), ("my", "tractor", "trailer"), ("steer", "tire"), ("steer", "tyre"),
                   ("bobtailing",), ("night", "trunk"), ("trunking",), ("multidrop",), ("multi", "drop"),
-                  ("the", "shipper"), ("the", "receiver"), ("my", "reefer"), ("in", "the", "truck"))
+                  ("the", "shipper"), ("the", "receiver"), ("my", "reefer"), ("in", "the", "truck"), ("tonner",),
+                  ("running", "empty"), ("trailer", "empty"), ("loaded", "wagon"), ("in", "the", "lorry"),
+                  ("my", "lorry"), ("in", "the", "hgv"), ("my", "hgv"), ("other", "wagons"), ("off", "our", "yard"),
+                  ("kerb", "mirror"), ("close", "proximity", "mirror"), ("trailer", "wheels"))
 # (a unit, a wagon, a rigid, a Pete: a trucker's own truck; not "struck the unit" of a fleet's van)
 
 
@@ -11558,10 +11568,11 @@ PATROLS_OWN_WORDS = tuple(lead + car for car in PATROL_CARS for lead in (("in",)
     ("we're", "running", "code"), ("we", "were", "running", "code"), ("involving", "own", "vehicle"), ("pnb",),
     ("we're", "on", "blues"), ("we", "were", "on", "blues"), ("we", "are", "on", "blues"))
 # ("in marked IRV", "our traffic car": the patrol's own; not "a traffic car pulled me over")
-PATROLS_OPENINGS = (("blues", "and", "twos"), ("code", "3"), ("code", "three"), ("dispatch", ","), ("control", ",")) \
+PATROLS_OPENINGS = (("blues", "and", "twos"), ("code", "3"), ("code", "three"), ("dispatch", ","), ("control", ","),
+                    ("unit", ",", "marked", ",")) \
     + PATROL_CARS + tuple(("police",) + car for car in PATROL_CARS)
-# ("Blues and twos WB Lord St to a fail to stop", "Code 3 to a 10-50", "Police traffic car, grade 1.": a patrol's
-# log opens on its own run or its own car)
+# ("Blues and twos WB Lord St to a fail to stop", "Code 3 to a 10-50", "Police traffic car, grade 1.", "Unit 9
+# (marked) responding": a patrol's log opens on its own run or its own car)
 
 
 def _a_patrols_call_sign(r: _Reader) -> bool:
