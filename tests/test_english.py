@@ -12214,3 +12214,24 @@ def test_a_truckers_own_words_put_the_ego_in_a_truck(prompt):
 ])
 def test_a_patrols_unit_by_its_call_sign_is_no_crash_reports_vehicle(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_riders_own_e_scooter_makes_a_motorbike_ego_and_anothers_a_cyclist():
+    assert agents("So I'm waiting at the stop sign at the end of Park Ave on the e-scooter and this lycra guy on a "
+                  "racing bike comes flying out of the road to my left and straight over.") == [
+        ("cyclist", "go_straight", "road_of_left_turn"), ("motorcycle", "stop", "ego")]
+    assert ("cyclist", "go_straight", "road_of_left_turn") in agents("A guy on an e-scooter came out of the road on "
+                                                                     "my left.")
+
+
+def test_glued_to_my_rear_wheel_is_behind():
+    assert ("car", "go_straight", "back") in agents("On the voi scooter heading home along Mill Road last night, and "
+                                                    "this cab was glued to my rear wheel the entire way.")
+
+
+def test_my_bike_is_a_bicycle_unless_a_motorbikes_pace_or_parts_are_said():
+    assert ("cyclist", "go_straight", "front_right") in agents(
+        "Marine Drive, two lanes each way. Me on the bike in the right lane; white box van just behind me in the left "
+        "lane. Van driver jerked over into my lane, no signal. Inches off my elbow.")
+    assert ("motorcycle", "go_straight", "ego") in agents("On the motorway on the bike doing about 70 when a van "
+                                                          "pulled into my lane.")

@@ -4952,7 +4952,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     # heading's verb with no subject ("Lane-change reminder.") is that vehicle
     if fleets_one:
         is_ego, plural = True, False
-    ridden = u.base in ("bike", "motorbike", "moped", "scooter", "motorcycle") or kind == "motorcycle" and \
+    ridden = u.base in ("bike", "motorbike", "moped", "scooter", "motorcycle", "e scooter", "electric scooter") or \
+        kind == "motorcycle" and \
         not u.base.endswith(("ist", "er", "rider", "courier", "cop"))  # "on the GS", "my Bonneville": a machine
     on_the_bike = ridden and not plural and count is None and \
         _the_riders_own(units, head, first, lo, words) and any(t.word in ("i", "me", "my", "i'm", "we", "us", "our")
@@ -10855,11 +10856,16 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # (also "the guy on the moped", which leaves the teller as before: at a wheel)
     motor = set(words) & (MOTOR_WORDS | FILTERING) and (own_motor or not (plain and any(
         e.type == "motorcycle" and not e.is_ego for e in r.entities)))  # (not "a moped rider squeezed past me")
-    on_a_bike = (set(words) & PEDAL_WORDS or plain or reported_riding or own_bikes) and not motor and \
+    own_bike = ego is not None and ego.type == "motorcycle" and ego.aliases & {"bike", "push bike"} and \
+        not ego.aliases & (MOTOR_WORDS | {"motor bike"}) and not _at_a_motors_pace(words) and \
+        not set(words) & MOTOR_CUES  # "Me on the bike in the right lane", "swung left in front of my bike": a
+    # bicycle unless a motorbike's pace or parts are said
+    on_a_bike = (set(words) & PEDAL_WORDS or plain or reported_riding or own_bikes or own_bike) and not motor and \
         not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")) + RIDERS_CONTROLS)
     others_ride = any(e.type == "cyclist" and not e.is_ego and e not in own_bikes for e in r.entities)
     if ego is not None and ego.type in V.EGO_TYPES and ego.head not in FIRST_PERSON and not _supplied(r, ego) and \
-            on_a_bike and met and not others_ride and not any(e.head in SPEAKING_SELF for e in r.entities):
+            on_a_bike and met and not others_ride and not any(e.head in SPEAKING_SELF for e in r.entities) and \
+            not own_bike:
         _the_teller_rides_by(r, ego, own_bikes)
         return
     reported = [e for e in r.entities if e.type in V.EGO_TYPES - V.VULNERABLE_TYPES and e.count == 1 and
@@ -10868,9 +10874,9 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
         _the_teller_rides_by(r, reported[0], own_bikes)  # "a pickup sat off my back wheel, then flew past": the
         _the_ego_now(r, reported[0])  # rider said only by the bike, met by the one vehicle named
         return
-    if ego is None or ego.head not in SPEAKING_SELF and not _supplied(r, ego) or \
-            ego.type not in ("car", "motorcycle") or ego.aliases - SPEAKING_SELF - {"you"} or not on_a_bike or \
-            others_ride:
+    if ego is None or ego.head not in SPEAKING_SELF and not _supplied(r, ego) and not own_bike or \
+            ego.type not in ("car", "motorcycle") or ego.aliases - SPEAKING_SELF - {"you", "bike", "push bike"} or \
+            not on_a_bike or others_ride:
         return
     for e in own_bikes:  # "I was riding my bicycle northbound", "I was on my bicycle on the roundabout, going
         r.entities.remove(e)  # straight over": the teller's own bicycle, no one else, and what it did the teller did
@@ -11113,6 +11119,15 @@ def _the_camera_car(r: _Reader) -> None:
 
 
 FILTERING = {"filter", "filters", "filtering", "filtered"}
+MOTOR_CUES = {"motorway", "throttle", "visor", "pillion", "revs", "cc", "125", "engine", "clutch", "gears", "lid",
+              "dual", "carriageway", "interstate", "freeway", "highway", "rider", "riders", "biker", "bikers"}
+
+
+def _at_a_motors_pace(words: list[str]) -> bool:
+    """'doing about 70', '60 mph': a pace no bicycle keeps."""
+    return any(w.isdigit() and int(w) >= 40 and (words[k + 1:k + 2] in (["mph"], ["kmh"], ["km"], ["kph"]) or
+                                                  words[k - 2:k] in (["doing", "about"], ["doing", "around"]) or
+                                                  words[k - 1:k] == ["doing"]) for k, w in enumerate(words))
 RIDING = {"ride", "rides", "riding", "rode"}
 
 
