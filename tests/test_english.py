@@ -12235,3 +12235,18 @@ def test_my_bike_is_a_bicycle_unless_a_motorbikes_pace_or_parts_are_said():
         "lane. Van driver jerked over into my lane, no signal. Inches off my elbow.")
     assert ("motorcycle", "go_straight", "ego") in agents("On the motorway on the bike doing about 70 when a van "
                                                           "pulled into my lane.")
+
+
+def test_what_an_instructor_says_of_the_throttle_puts_the_learner_on_a_motorbike():
+    assert ("motorcycle", "go_straight", "ego") in agents(
+        "Evening, fog coming down, town road and a zebra ahead. There's a mum with a buggy waiting on the pavement "
+        "next to it. You back off the throttle and take it slow on the approach.")
+    assert ("car", "go_straight", "ego") in agents("You are driving a car. A bike rider is in front of you. You stay "
+                                                   "behind the bike rider.")
+
+
+def test_passengers_on_the_top_deck_ride_in_the_bus_the_scene_is_told_from():
+    assert agents("I want to report something that happened on the 62 yesterday. I was on the top deck right at the "
+                  "front. We were in the inside lane of the dual carriageway and a white Golf in the lane next to us "
+                  "on the right just cut across in front of the bus without signalling.") == [
+        ("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "right")]

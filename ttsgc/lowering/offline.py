@@ -11136,6 +11136,9 @@ RIDERS_CONTROLS = (("front", "brake"), ("pillion",))
 # car's driver speaks of a throttle, a visor, rear brakes too)
 
 
+RIDERS_HANDLING = (("throttle",), ("roll", "off"), ("lead", "rider"), ("the", "bike", "goes"), ("your", "bike"),
+                   ("bikes", "behind"), ("front", "brake"), ("pillion",), ("visor",), ("group", "ride"))
+
 RIDE_HAILING = {"trip", "fare", "rating", "uber", "lyft", "rideshare", "passenger", "passengers"}
 
 
@@ -11168,7 +11171,9 @@ def _a_riders_ego(r: _Reader) -> None:
         for k, u in enumerate(r.units))  # "The rider comes round a bend and finds two cyclists": the subject an ego
     # was supplied for, with no one on two wheels named before it
     geared = not hailed and told_by_me and _says_any(words, RIDERS_CONTROLS)
-    if said or the_rider or geared or ego.head == "rider":
+    instructed = not hailed and bool({"you", "you're", "your"} & set(words)) and _says_any(words, RIDERS_HANDLING)
+    # "back off the throttle", "the bike goes round a left bend", "you're lead rider": said to one on a motorbike
+    if said or the_rider or geared or instructed or ego.head == "rider":
         ego.type = "motorcycle"
 
 
@@ -11512,6 +11517,12 @@ BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out
 # ("at the stop with the doors open"; not a cyclist's "with my arm out")
 
 
+BUS_PASSENGERS_WORDS = (("top", "deck"), ("lower", "deck"), ("upper", "deck"), ("bus", "driver"),
+                        ("coach", "driver"), ("night", "coach"), ("greyhound",), ("on", "the", "bus"),
+                        ("on", "the", "coach"), ("standing", "passengers"), ("passengers", "fell"),
+                        ("passengers", "were", "thrown"))
+
+
 AMBULANCE_CREWS_WORDS = (("ambo", "crew"), ("ambulance", "crew"), ("patient", "on", "board"), ("the", "patient"),
                          ("cardiac", "arrest"), ("ems", "unit"), ("medic", "unit"), ("our", "ambulance"),
                          ("running", "hot"))
@@ -11622,7 +11633,16 @@ def _a_drivers_trade(r: _Reader) -> None:
     told = [t.word for t in r.tokens if not t.question]  # (not "what's the rule when a school bus is stopped with
     # its stop arm out?")
     crew = {"we", "us", "our"} & set(words)  # (a crew speaks as one)
-    trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) else \
+    aboard_a_bus = bool(crew) and _says_any(told, BUS_PASSENGERS_WORDS)  # "we were in the inside lane ... I was on
+    # the top deck", "our driver braked": the bus its passengers ride in
+    if aboard_a_bus:
+        for e in [e for e in r.entities if e.type == "bus" and not e.is_ego and e.definite and e.count == 1 and
+                  not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None]:
+            if ego is not None:  # ("cut across in front of the bus": ours, named by what it is)
+                ego.actions += e.actions
+                r.entities.remove(e)
+    trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) or \
+        aboard_a_bus else \
         "ambulance" if crew and _says_any(words, AMBULANCE_CREWS_WORDS) else \
         "firetruck" if crew and _says_any(words, FIRE_CREWS_WORDS) else None
     if "ego" in words or trade is None or trade != "truck" and any(e.type == trade and not e.is_ego
