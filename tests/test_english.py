@@ -12250,3 +12250,11 @@ def test_passengers_on_the_top_deck_ride_in_the_bus_the_scene_is_told_from():
                   "front. We were in the inside lane of the dual carriageway and a white Golf in the lane next to us "
                   "on the right just cut across in front of the bus without signalling.") == [
         ("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "right")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A two-axle truck stopped ahead.", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
+    ("An 8-wheel tipper came the opposite way.", [("car", "go_straight", "ego"), ("truck", "go_straight", "front_left")]),
+])
+def test_what_a_vehicle_is_built_with_counts_no_vehicles(prompt, expected):
+    assert agents(prompt) == expected

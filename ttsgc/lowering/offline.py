@@ -4412,6 +4412,10 @@ def _clock_stamp(hours: Unit, minutes: Unit) -> bool:
         and minutes.tokens[0].index == hours.tokens[-1].index + 1
 
 
+MADE_WITH = {"wheel", "wheels", "wheeled", "wheeler", "axle", "axles", "axled", "seater", "seat", "door", "doors",
+             "berth", "cylinder", "litre", "liter", "speed", "deck", "decker", "storey", "tonne", "ton", "tonner"}
+
+
 def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, int, set[str], list[Unit]]:
     """The count, determiner words and premodifiers in front of a noun: 'the two dangerous oncoming cars'.
     Modifiers stand between the determiner and the noun; the determiner ends the phrase on the left."""
@@ -4426,7 +4430,9 @@ def _count_before(units: list[Unit], head: int, lo: int) -> tuple[int | None, in
             break  # "00:05 Ambulance closes up behind": a log's time, no count
         if u.category == "numbers" and words & {"a", "an"}:
             break  # "around ten a school bus came up": a time before the article, no count
-        if u.category == "numbers":
+        if u.category in ("numbers", "number") and k + 1 < head and units[k + 1].word in MADE_WITH:
+            modifiers.append(u)  # "our 8-wheel tipper", "a two-axle truck": what it is built with, no count
+        elif u.category == "numbers":
             count = int(u.meaning) if count is None else count
             if u.word in VAGUE_COUNTS:
                 words.add("some")
