@@ -12258,3 +12258,15 @@ def test_passengers_on_the_top_deck_ride_in_the_bus_the_scene_is_told_from():
 ])
 def test_what_a_vehicle_is_built_with_counts_no_vehicles(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A van veered left into Mill Road.", [("car", "turn_left", "ego")]),
+    ("A van cut left into the petrol station.", [("car", "turn_left", "ego")]),
+    ("A van moved left into the left lane.", [("car", "change_lane_to_left", "left"), ("car", "go_straight", "ego")]),
+    ("Highway, 3 lanes.\nHero in the middle lane, going straight.\nNPC in the right lane, level with the hero, does a "
+     "lane change left into the hero lane.\nSecond NPC right behind the hero, same lane.",
+     [("car", "change_lane_to_left", "right"), ("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+])
+def test_a_move_to_a_side_that_ends_in_a_road_is_a_turn_and_one_into_a_lane_a_lane_change(prompt, expected):
+    assert agents(prompt) == expected

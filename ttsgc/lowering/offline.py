@@ -399,10 +399,50 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
-                   _the_path_of_another, _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind, _paint_of_one,
+                   _the_path_of_another, _swerved_into_a_road, _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind, _paint_of_one,
                    _a_label_then_what_it_is):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+TURNED_INTO = {("petrol", "station"), ("gas", "station"), ("car", "park"), ("parking", "lot"), ("driveway",),
+               ("side", "road"), ("side", "street"), ("estate",), ("industrial", "estate"), ("retail", "park"),
+               ("yard",), ("entrance",), ("forecourt",), ("garage",), ("alley",), ("junction",)}
+ORDINAL_STREETS = {"first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth", "tenth"}
+
+
+def _into_a_road(units: list[Unit], k: int) -> bool:
+    """'into Mill Lane', 'onto 2nd', 'into the petrol station': a road or a place off it, not a lane."""
+    if k >= len(units) or units[k].category != "word" or units[k].word not in ("into", "onto"):
+        return False
+    rest = [x for x in units[k + 1:k + 4] if x.tokens[0].sentence == units[k].tokens[0].sentence]
+    words = [x.word for x in rest]
+    if words[:1] and words[0] in ORDINAL_STREETS or len(rest) >= 2 and rest[0].category == "word" and \
+            words[0] not in lexicon().function_words and words[1] in STREET_SUFFIXES - {"lane", "way"}:
+        return True  # "onto 2nd", "into Mill Road" (a lane may be one of the road's: "into outside lane")
+    if words[:1] in (["the"], ["a"]):
+        words = words[1:]
+    return any(tuple(words[:len(place)]) == place for place in TURNED_INTO)
+
+
+def _swerved_into_a_road(units: list[Unit]) -> list[Unit]:
+    """'veered left into Mill Lane', 'cut left onto 2nd', 'swerved left into the petrol station': a move to a side
+    that ends in a road or a place off it is a turn that way, not a lane change."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "actions":
+            continue
+        side = {"lane_left": "left", "lane_right": "right"}.get(u.meaning) if \
+            u.tokens[-1].word in ("left", "right") else None
+        after = k + 1
+        if side is None and u.meaning in ("cut_in", "lane_change", "move") and k + 1 < len(units) and \
+                units[k + 1].category == "positions" and [t.word for t in units[k + 1].tokens] in (["left"], ["right"]):
+            side, after = units[k + 1].tokens[0].word, k + 2
+        if side is not None and _into_a_road(units, after):
+            out[k] = Unit(u.start, u.end, "actions", f"turn_{side}", u.tokens)
+            if after == k + 2:
+                out[k + 1] = Unit(units[k + 1].start, units[k + 1].end, "word", side, units[k + 1].tokens)
+    return out
 
 
 def _up_the_inside(units: list[Unit]) -> list[Unit]:
