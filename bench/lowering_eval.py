@@ -8,7 +8,8 @@
 
 Suites: tests/corpus/{dev,test}/<voice>/*.txt with gold *.tsg beside (rules are written against dev only; test
 is read only here, to measure), tests/corpus/paper/ (the paper's ten ablation prompts, shown beside the paper's
-table), examples/ and tests/paraphrases/. WA scores a scene's weather as one property: condition and time of
+table), examples/, tests/paraphrases/, and tests/corpus/rewrites/ (dev prompts written again by other hands,
+scored against the dev gold they rewrite: how far the rules hold on wordings they were not written against). WA scores a scene's weather as one property: condition and time of
 day both right, or no weather where the gold has none. Timings are medians over the prompts.
 """
 
@@ -38,11 +39,21 @@ SUITES = (("dev", ROOT / "tests" / "corpus" / "dev"), ("test", ROOT / "tests" / 
           ("paraphrases", ROOT / "tests" / "paraphrases"))
 
 
-def score(prompt: Path, method: str) -> dict:
+REWRITES = ROOT / "tests" / "corpus" / "rewrites"
+REWRITE = re.compile(r"^KEY: (\S+)\nPROMPT: (.*)$", re.M)
+
+
+def rewrites() -> list[tuple[str, str]]:
+    """(dev key, prompt) of every rewrite; a written '\\n' is the writer's line break."""
+    return [(key, text.replace("\\n", "\n")) for path in sorted(REWRITES.glob("*.txt"))
+            for key, text in REWRITE.findall(path.read_text(encoding="utf-8"))]
+
+
+def score(prompt: Path, method: str, text: str | None = None) -> dict:
     gold = load_gold(prompt.with_suffix(".tsg"))
     start = time.perf_counter()
     try:
-        lowering = lower_prompt(prompt.read_text(encoding="utf-8"), method)
+        lowering = lower_prompt(prompt.read_text(encoding="utf-8") if text is None else text, method)
     except TtsgcError as exc:
         return {"AA": 0.0, "RA": 0.0, "WA": 0.0, "ms": 0.0, "miss": f"refused: {exc}", "tokens": 0}
     ms = (time.perf_counter() - start) * 1000
@@ -154,6 +165,15 @@ def main(argv: list[str] | None = None) -> int:
             for p, r in results.items():
                 if "miss" in r:
                     print(f"    {p.relative_to(folder)}: {r['miss']}")
+    if not args.only or "rewrites" in args.only:
+        scored = [(key, score(ROOT / "tests" / "corpus" / key, args.llm, text)) for key, text in rewrites()]
+        print(row("rewrites (of dev)", [r for _, r in scored]))
+        for voice in sorted({key.split("/")[1] for key, _ in scored}):
+            print(row(f"  {voice}", [r for key, r in scored if key.split("/")[1] == voice]))
+        if "rewrites" in args.misses:
+            for key, r in scored:
+                if "miss" in r:
+                    print(f"    {key}: {r['miss']}")
     return 0
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -129,3 +130,11 @@ def test_import_ttsg_xosc_synthesises_a_road_unless_told_not_to(shared, tmp_path
     assert main(args) == 0
     assert "synthesised synth_" in capsys.readouterr().err
     assert (tmp_path / "c.xosc").is_file() and list(tmp_path.glob("synth_*.xodr"))
+
+
+def test_every_rewrite_names_a_dev_prompt_with_its_gold():
+    corpus = Path(__file__).parent / "corpus"
+    keys = [line[len("KEY: "):] for path in sorted((corpus / "rewrites").glob("*.txt"))
+            for line in path.read_text(encoding="utf-8").splitlines() if line.startswith("KEY: ")]
+    assert len(keys) >= 600
+    assert all(key.startswith("dev/") and (corpus / key).with_suffix(".tsg").is_file() for key in keys)
