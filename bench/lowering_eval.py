@@ -3,14 +3,16 @@
     python bench/lowering_eval.py                 # offline rules on every suite
     python bench/lowering_eval.py --misses dev    # also list each prompt of the dev split that is not exact
     python bench/lowering_eval.py --only dev      # one suite only (repeatable)
+    python bench/lowering_eval.py --only rewrites --misses rewrites  # dev prompts as other hands wrote them
     python bench/lowering_eval.py --only dev --rephrased dev  # also: dev read mirrored and rephrased (bench/rephrasings.py)
     python bench/lowering_eval.py --llm anthropic # the LLM lowering (ANTHROPIC_API_KEY), with tokens per scene
 
 Suites: tests/corpus/{dev,test}/<voice>/*.txt with gold *.tsg beside (rules are written against dev only; test
 is read only here, to measure), tests/corpus/paper/ (the paper's ten ablation prompts, shown beside the paper's
 table), examples/, tests/paraphrases/, and tests/corpus/rewrites/ (dev prompts written again by other hands,
-scored against the dev gold they rewrite: how far the rules hold on wordings they were not written against). WA scores a scene's weather as one property: condition and time of
-day both right, or no weather where the gold has none. Timings are medians over the prompts.
+scored against the dev gold they rewrite: how far the rules hold on wordings they were not written against).
+WA scores a scene's weather as one property: condition and time of day both right, or no weather where the gold
+has none. Timings are medians over the prompts.
 """
 
 from __future__ import annotations

@@ -12145,7 +12145,8 @@ def test_one_that_stops_for_someone_is_the_one_the_scene_is_told_from(prompt, ex
 
 
 def test_a_bus_stopped_for_its_passengers_is_met_standing():
-    assert agents("A bus stopped for passengers at the stop.") == [("bus", "stop", "front"), ("car", "go_straight", "ego")]
+    assert agents("A bus stopped for passengers at the stop.") == [
+        ("bus", "stop", "front"), ("car", "go_straight", "ego")]
 
 
 def test_a_riders_elbow_is_a_part_not_a_side():
@@ -12254,7 +12255,8 @@ def test_passengers_on_the_top_deck_ride_in_the_bus_the_scene_is_told_from():
 
 @pytest.mark.parametrize("prompt, expected", [
     ("A two-axle truck stopped ahead.", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
-    ("An 8-wheel tipper came the opposite way.", [("car", "go_straight", "ego"), ("truck", "go_straight", "front_left")]),
+    ("An 8-wheel tipper came the opposite way.",
+     [("car", "go_straight", "ego"), ("truck", "go_straight", "front_left")]),
 ])
 def test_what_a_vehicle_is_built_with_counts_no_vehicles(prompt, expected):
     assert agents(prompt) == expected

@@ -399,8 +399,8 @@ def _units(tokens: list[Token]) -> list[Unit]:
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
-                   _the_path_of_another, _swerved_into_a_road, _pulled_in_or_out, _one_more_of_the_kind, _a_lane_then_whom_it_is_behind, _paint_of_one,
-                   _a_label_then_what_it_is):
+                   _the_path_of_another, _swerved_into_a_road, _pulled_in_or_out, _one_more_of_the_kind,
+                   _a_lane_then_whom_it_is_behind, _paint_of_one, _a_label_then_what_it_is):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
 
@@ -10987,9 +10987,10 @@ def _the_tellers_party(words: list[str]) -> int:
         if not n:
             continue
         after = words[k + 1:k + 6]
+        said_in_total = after[:1] in (["riders"], ["cyclists"]) and _says_any(
+            after, (("in", "total"), ("me", "included"), ("including", "me")))
         if after[:2] == ["of", "us"] or words[k - 2:k] in (["group", "of"], ["ride", "of"], ["run", "of"]) or \
-                after[:1] == ["abreast"] or after[:2] == ["in", "total"] or after[:1] in (["riders"], ["cyclists"]) and (
-                    _says_any(after, (("in", "total"), ("me", "included"), ("including", "me")))):
+                after[:1] == ["abreast"] or after[:2] == ["in", "total"] or said_in_total:
             return n  # "our group of seven", "club ride of nine", "5 riders in total", "six riders (me included)"
         if words[k - 1:k] == ["my"] and k >= 2 and words[k - 2] in ("walking", "taking", "with"):
             return n + 1  # "walking my two to school": the teller and two more
