@@ -12111,14 +12111,6 @@ def test_when_i_got_to_the_junction_ends_where_its_comma_would():
         ("car", "go_straight", "ego"), ("truck", "turn_left", "front")]
 
 
-def test_up_the_inside_and_the_outside_are_sides_the_kerb_decides():
-    assert ("motorcycle", "go_straight", "right") in agents(
-        "I had already stopped for the red when a motorbike came up the inside.")
-    assert ("motorcycle", "go_straight", "back_right") in agents(
-        "At the pelican crossing on London Road I had stopped, and a moped came up the outside, behind me, and "
-        "went straight through the red.")
-
-
 @pytest.mark.parametrize("prompt, expected", [
     ("The car I was following braked hard.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
     ("The lorry I was behind turned left.", [("car", "go_straight", "ego"), ("truck", "turn_left", "front")]),
@@ -12229,13 +12221,6 @@ def test_glued_to_my_rear_wheel_is_behind():
     assert ("car", "go_straight", "back") in agents("On the voi scooter heading home along Mill Road last night, and "
                                                     "this cab was glued to my rear wheel the entire way.")
 
-
-def test_my_bike_is_a_bicycle_unless_a_motorbikes_pace_or_parts_are_said():
-    assert ("cyclist", "go_straight", "front_right") in agents(
-        "Marine Drive, two lanes each way. Me on the bike in the right lane; white box van just behind me in the left "
-        "lane. Van driver jerked over into my lane, no signal. Inches off my elbow.")
-    assert ("motorcycle", "go_straight", "ego") in agents("On the motorway on the bike doing about 70 when a van "
-                                                          "pulled into my lane.")
 
 
 def test_what_an_instructor_says_of_the_throttle_puts_the_learner_on_a_motorbike():

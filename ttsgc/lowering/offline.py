@@ -301,7 +301,7 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
         kerb = "nearside" in words or "near" in words and "side" in words or "inside" in words or \
             bool({"kerb", "curb", "kerbside", "curbside"} & set(words)) or \
             "lane" in words and bool({"bike", "cycle", "bicycle"} & set(words))
-        far = "offside" in words or "off" in words and "side" in words or "median" in words or "outside" in words
+        far = "offside" in words or "off" in words and "side" in words or "median" in words
         if u.category == "positions" and u.meaning in swap and (kerb and u.meaning in ("side_right", "from_right")
                                                                or far and u.meaning in ("side_left", "from_left")):
             u = Unit(u.start, u.end, u.category, swap[u.meaning], u.tokens)
@@ -394,8 +394,7 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
-    units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_up_the_inside(
-        _read_units(tokens)))))))
+    units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
@@ -443,20 +442,6 @@ def _swerved_into_a_road(units: list[Unit]) -> list[Unit]:
             if after == k + 2:
                 out[k + 1] = Unit(units[k + 1].start, units[k + 1].end, "word", side, units[k + 1].tokens)
     return out
-
-
-def _up_the_inside(units: list[Unit]) -> list[Unit]:
-    """'a motorbike came up the inside', 'went down the outside of the queue': the verb took 'up', so 'the inside'
-    is read here as the side it says (the kerb's side, the nearside where traffic keeps left)."""
-    out = list(units)
-    for k, u in enumerate(units[:-2]):
-        side = {"inside": "side_right", "outside": "side_left"}.get(units[k + 2].word)
-        if u.category == "actions" and u.tokens[-1].word in ("up", "down") and units[k + 1].word == "the" and \
-                side and units[k + 2].category == "word" and (k + 3 == len(units) or units[k + 3].word != "lane"):
-            out[k + 1] = Unit(units[k + 1].start, units[k + 2].end, "positions", side,
-                              units[k + 1].tokens + units[k + 2].tokens)
-            out[k + 2] = None
-    return [u for u in out if u is not None]
 
 
 def _noun_after_paint(units: list[Unit], k: int) -> int | None:
@@ -551,7 +536,8 @@ def _the_path_of_another(units: list[Unit]) -> list[Unit]:
         while j < min(len(units), k + 6) and (units[j].category == "word" or units[j].category == "positions" and
                                              len(units[j].tokens) == 1):
             j += 1  # "of an oncoming silver car"
-        if j < len(units) and units[j].category == "agents" and units[j].meaning not in ("ego", "none"):
+        if j < len(units) and units[j].category == "agents" and units[j].meaning not in ("ego", "none") and \
+                not units[j].tokens[-1].label:  # ("across the path of Unit 1, the AV": a label, named the ego after)
             out[k] = Unit(u.start, u.end, "word", u.word, u.tokens)
     return out
 
@@ -3627,6 +3613,10 @@ OBJECT_AWAITED = {"of", "behind", "from", "past", "to", "into", "onto", "at", "i
 # a place phrase that ends in one of these names its object next ("emerges from behind a van parked ...")
 
 
+SPEAKERS_OWN = {"driving", "drove", "riding", "rode", "in", "on", "sat", "sitting", "own", "owned", "hired",
+                "borrowed"}  # "the taxi (that) I was driving": the speaker's own, no other
+
+
 def _a_relative_with_its_pronoun_left_out(current: list[Unit], units: list[Unit], k: int) -> bool:
     """'The car I was following braked hard', 'the lorry we were stuck behind': a noun said with 'the' and no verb
     yet, then 'I' or 'we' with a verb of their own, then the noun's own verb."""
@@ -3638,9 +3628,9 @@ def _a_relative_with_its_pronoun_left_out(current: list[Unit], units: list[Unit]
     rest = [x for x in units[k + 1:k + 8] if x.tokens[0].sentence == u.tokens[0].sentence]
     verbs = [j for j, x in enumerate(rest) if x.category == "actions" or x.category == "positions" and
              x.meaning in ("behind", "ahead")]
-    own = {"driving", "drove", "riding", "rode", "in", "on", "sat", "sitting", "own", "owned", "hired", "borrowed"}
     return len(verbs) >= 2 and (rest[0].word in ("was", "were", "had", "am", "'d") or rest[0].category == "actions") \
-        and not any(t.word in own for x in rest[:verbs[0] + 1] for t in x.tokens)  # ("the taxi I was driving": mine)
+        and not any(t.word in SPEAKERS_OWN for x in rest[:verbs[0] + 1] for t in x.tokens)  # ("the taxi I was
+    # driving": mine)
 
 
 PARKED_STATES = {"park", "stop", "stall", "leave", "abandon", "break"}  # "passed a car parked ...": its state
@@ -5629,8 +5619,10 @@ def _ego_named_later_in_the_sentence(r: _Reader, u: Unit) -> bool:
             return True  # "... then slams on its brakes in front of me"
         if x.category == "agents" and x.meaning == "ego" and x.word in ("i", "we") and (
                 r.units[k - 1].start == u.start or r.units[k - 1].word in ("that", "which") and
-                r.units[k - 2].start == u.start):
-            return True  # "the car (that) I was following": the one the speaker follows, another
+                r.units[k - 2].start == u.start) and not any(
+                t.word in SPEAKERS_OWN for y in r.units[k + 1:k + 4] for t in y.tokens):
+            return True  # "the car (that) I was following": the one the speaker follows, another (not "the car
+            # that I was driving")
         if x.category == "agents" and x.meaning == "ego":
             before = k - 1
             while before >= 0 and r.units[before].word in ("the", "our", "my"):
@@ -10902,16 +10894,11 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # (also "the guy on the moped", which leaves the teller as before: at a wheel)
     motor = set(words) & (MOTOR_WORDS | FILTERING) and (own_motor or not (plain and any(
         e.type == "motorcycle" and not e.is_ego for e in r.entities)))  # (not "a moped rider squeezed past me")
-    own_bike = ego is not None and ego.type == "motorcycle" and ego.aliases & {"bike", "push bike"} and \
-        not ego.aliases & (MOTOR_WORDS | {"motor bike"}) and not _at_a_motors_pace(words) and \
-        not set(words) & MOTOR_CUES  # "Me on the bike in the right lane", "swung left in front of my bike": a
-    # bicycle unless a motorbike's pace or parts are said
-    on_a_bike = (set(words) & PEDAL_WORDS or plain or reported_riding or own_bikes or own_bike) and not motor and \
+    on_a_bike = (set(words) & PEDAL_WORDS or plain or reported_riding or own_bikes) and not motor and \
         not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")) + RIDERS_CONTROLS)
     others_ride = any(e.type == "cyclist" and not e.is_ego and e not in own_bikes for e in r.entities)
     if ego is not None and ego.type in V.EGO_TYPES and ego.head not in FIRST_PERSON and not _supplied(r, ego) and \
-            on_a_bike and met and not others_ride and not any(e.head in SPEAKING_SELF for e in r.entities) and \
-            not own_bike:
+            on_a_bike and met and not others_ride and not any(e.head in SPEAKING_SELF for e in r.entities):
         _the_teller_rides_by(r, ego, own_bikes)
         return
     reported = [e for e in r.entities if e.type in V.EGO_TYPES - V.VULNERABLE_TYPES and e.count == 1 and
@@ -10920,9 +10907,9 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
         _the_teller_rides_by(r, reported[0], own_bikes)  # "a pickup sat off my back wheel, then flew past": the
         _the_ego_now(r, reported[0])  # rider said only by the bike, met by the one vehicle named
         return
-    if ego is None or ego.head not in SPEAKING_SELF and not _supplied(r, ego) and not own_bike or \
-            ego.type not in ("car", "motorcycle") or ego.aliases - SPEAKING_SELF - {"you", "bike", "push bike"} or \
-            not on_a_bike or others_ride:
+    if ego is None or ego.head not in SPEAKING_SELF and not _supplied(r, ego) or \
+            ego.type not in ("car", "motorcycle") or ego.aliases - SPEAKING_SELF - {"you"} or not on_a_bike or \
+            others_ride:
         return
     for e in own_bikes:  # "I was riding my bicycle northbound", "I was on my bicycle on the roundabout, going
         r.entities.remove(e)  # straight over": the teller's own bicycle, no one else, and what it did the teller did
@@ -11166,15 +11153,6 @@ def _the_camera_car(r: _Reader) -> None:
 
 
 FILTERING = {"filter", "filters", "filtering", "filtered"}
-MOTOR_CUES = {"motorway", "throttle", "visor", "pillion", "revs", "cc", "125", "engine", "clutch", "gears", "lid",
-              "dual", "carriageway", "interstate", "freeway", "highway", "rider", "riders", "biker", "bikers"}
-
-
-def _at_a_motors_pace(words: list[str]) -> bool:
-    """'doing about 70', '60 mph': a pace no bicycle keeps."""
-    return any(w.isdigit() and int(w) >= 40 and (words[k + 1:k + 2] in (["mph"], ["kmh"], ["km"], ["kph"]) or
-                                                  words[k - 2:k] in (["doing", "about"], ["doing", "around"]) or
-                                                  words[k - 1:k] == ["doing"]) for k, w in enumerate(words))
 RIDING = {"ride", "rides", "riding", "rode"}
 
 
