@@ -411,7 +411,7 @@ ORDINAL_STREETS = {"first", "second", "third", "fourth", "fifth", "sixth", "seve
 
 
 def _into_a_road(units: list[Unit], k: int) -> bool:
-    """'into Mill Lane', 'onto 2nd', 'into the petrol station': a road or a place off it, not a lane."""
+    """'into Mill Road', 'onto 2nd', 'into the petrol station': a road or a place off it, not a lane."""
     if k >= len(units) or units[k].category != "word" or units[k].word not in ("into", "onto"):
         return False
     rest = [x for x in units[k + 1:k + 4] if x.tokens[0].sentence == units[k].tokens[0].sentence]
@@ -425,7 +425,7 @@ def _into_a_road(units: list[Unit], k: int) -> bool:
 
 
 def _swerved_into_a_road(units: list[Unit]) -> list[Unit]:
-    """'veered left into Mill Lane', 'cut left onto 2nd', 'swerved left into the petrol station': a move to a side
+    """'veered left into Mill Road', 'cut left onto 2nd', 'swerved left into the petrol station': a move to a side
     that ends in a road or a place off it is a turn that way, not a lane change."""
     out = list(units)
     for k, u in enumerate(units):
@@ -4989,8 +4989,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if fleets_one:
         is_ego, plural = True, False
     ridden = u.base in ("bike", "motorbike", "moped", "scooter", "motorcycle", "e scooter", "electric scooter") or \
-        kind == "motorcycle" and \
-        not u.base.endswith(("ist", "er", "rider", "courier", "cop"))  # "on the GS", "my Bonneville": a machine
+        kind == "motorcycle" and not u.base.endswith(("ist", "er", "rider", "courier", "cop"))  # "on the GS", "my
+    # Bonneville": a machine (and "on the e-scooter": the rider's own)
     on_the_bike = ridden and not plural and count is None and \
         _the_riders_own(units, head, first, lo, words) and any(t.word in ("i", "me", "my", "i'm", "we", "us", "our")
                                                                for t in r.tokens) and \
@@ -11659,13 +11659,13 @@ def _a_drivers_trade(r: _Reader) -> None:
     # its stop arm out?")
     crew = {"we", "us", "our"} & set(words)  # (a crew speaks as one)
     aboard_a_bus = bool(crew) and _says_any(told, BUS_PASSENGERS_WORDS)  # "we were in the inside lane ... I was on
-    # the top deck", "our driver braked": the bus its passengers ride in
-    if aboard_a_bus:
+    # the top deck", "the coach driver hit the horn": the bus its passengers ride in
+    if aboard_a_bus and ego is not None and ego.type == "car" and ego.head in FIRST_PERSON | {"we", "us", "our"} \
+            and "ego" not in words:
         for e in [e for e in r.entities if e.type == "bus" and not e.is_ego and e.definite and e.count == 1 and
                   not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None]:
-            if ego is not None:  # ("cut across in front of the bus": ours, named by what it is)
-                ego.actions += e.actions
-                r.entities.remove(e)
+            ego.actions += e.actions  # ("cut across in front of the bus": ours, named by what it is)
+            r.entities.remove(e)
     trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) or \
         aboard_a_bus else \
         "ambulance" if crew and _says_any(words, AMBULANCE_CREWS_WORDS) else \
