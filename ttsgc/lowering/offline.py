@@ -11660,18 +11660,16 @@ def _a_drivers_trade(r: _Reader) -> None:
     crew = {"we", "us", "our"} & set(words)  # (a crew speaks as one)
     aboard_a_bus = bool(crew) and _says_any(told, BUS_PASSENGERS_WORDS)  # "we were in the inside lane ... I was on
     # the top deck", "the coach driver hit the horn": the bus its passengers ride in
-    if aboard_a_bus and ego is not None and ego.type == "car" and ego.head in FIRST_PERSON | {"we", "us", "our"} \
-            and "ego" not in words:
-        for e in [e for e in r.entities if e.type == "bus" and not e.is_ego and e.definite and e.count == 1 and
-                  not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None]:
-            ego.actions += e.actions  # ("cut across in front of the bus": ours, named by what it is)
-            r.entities.remove(e)
+    ours = [e for e in r.entities if e.type == "bus" and not e.is_ego and e.definite and e.count == 1 and
+            not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None] if aboard_a_bus and \
+        ego is not None and ego.head in FIRST_PERSON | {"we", "us", "our"} else []  # ("cut across in front of the
+    # bus": the passengers' own, named by what it is)
     trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) or \
         aboard_a_bus else \
         "ambulance" if crew and _says_any(words, AMBULANCE_CREWS_WORDS) else \
         "firetruck" if crew and _says_any(words, FIRE_CREWS_WORDS) else None
-    if "ego" in words or trade is None or trade != "truck" and any(e.type == trade and not e.is_ego
-                                                                   for e in r.entities):
+    if "ego" in words or trade is None or trade != "truck" and any(
+            e.type == trade and not e.is_ego and not any(e is o for o in ours) for e in r.entities):
         return  # ("stopped behind a school bus with its stop arm out": that bus's arm)
     if ego is None and (set(words) & SPEAKERS or trade == "truck"):
         ego = _ego_entity(r, 0)  # "doing 65 ... in front of my bumper": the speaker, told of by no noun ("Empty
@@ -11679,6 +11677,8 @@ def _a_drivers_trade(r: _Reader) -> None:
     if ego is not None and ego.type == "car" and ego.head in FIRST_PERSON | {"we", "us", "our", "ego"}:
         ego.type = trade
         r.notes.append(f"inferred: the speaker talks as a {trade} driver; the ego is a {trade}")
+        for e in ours if trade == "bus" else []:
+            _fold(r, ego, e)
 
 
 def _ego_lane_road(r: _Reader, road: RoadSpec) -> RoadSpec:
