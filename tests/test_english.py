@@ -12257,3 +12257,60 @@ def test_what_a_vehicle_is_built_with_counts_no_vehicles(prompt, expected):
 ])
 def test_a_move_to_a_side_that_ends_in_a_road_is_a_turn_and_one_into_a_lane_a_lane_change(prompt, expected):
     assert agents(prompt) == expected
+
+
+def test_a_person_opening_a_sentence_with_its_article_left_out_drives_the_vehicle_named_before():
+    assert agents("A box truck just ahead of me in the right lane cut across into my lane. Guy kept right on "
+                  "going.") == [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "front_right")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Site 4. A motorcyclist, as the subject vehicle, rides along Park Road and comes up behind a van stopped in its "
+     "lane. Afterwards the motorcyclist waits behind the van.",
+     [("car", "stop", "front"), ("motorcycle", "go_straight", "ego"), ("motorcycle", "stop", "ego")]),
+    ("Cam 3, T-junction, give-way. Subject motorbike waiting at the give-way line. Car approaching from subject's "
+     "right carries straight on. After the car passes, subject turns left.",
+     [("car", "go_straight", "road_of_right_turn"), ("motorcycle", "stop", "ego"), ("motorcycle", "turn_left", "ego")]),
+    ("Subject vehicle: turns right at the lights.", [("car", "turn_right", "ego")]),
+])
+def test_the_subject_said_in_passing_or_before_its_noun_is_the_ego(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Motorcyclist, 41M. Riding at about 30 when a van pulled out of a side road on his left and stopped in front "
+     "of him. GCS 15.", [("car", "block_the_ego", "front"), ("motorcycle", "go_straight", "ego")]),
+    ("Pt 27M moped rider, approx 20mph, moved into the left lane so an ambulance could pass from behind. Helmeted, "
+     "no LOC.", [("ambulance", "go_straight", "back"), ("motorcycle", "change_lane_to_left", "ego")]),
+])
+def test_a_handover_that_opens_on_a_rider_is_told_from_the_patients_motorbike(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm going straight on at the lights on a Lime scooter and a car turns left across me.",
+     [("car", "turn_left", "road_of_straight"), ("motorcycle", "go_straight", "ego")]),
+    ("Scooting down Park Lane after work when a minicab pulled out of a side road on my left.",
+     [("car", "go_straight", "road_of_left_turn"), ("motorcycle", "go_straight", "ego")]),
+    ("Stopped in traffic, a car next to me on my right and a man on a bike on my left.",
+     [("car", "go_straight", "right"), ("car", "stop", "ego"), ("cyclist", "go_straight", "left")]),
+])
+def test_the_speaker_on_a_scooter_rides_a_motorbike(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("Had the truck in the left lane of the interstate when a sedan alongside me in the right lane swerved in ahead "
+     "of the blade.", "truck"),
+    ("Had the plow sitting on a green at 3rd and Oak waiting to turn left while a pickup came through from the other "
+     "direction. After it had cleared I made my left.", "truck"),
+    ("A truck pulled out. I had the truck in front of me for miles.", "car"),
+])
+def test_a_vehicle_the_speaker_had_somewhere_or_doing_something_is_the_speakers(prompt, ego):
+    assert {a[0] for a in agents(prompt) if a[2] == "ego"} == {ego}
+
+
+def test_a_bus_named_bare_by_its_driver_at_the_stop_is_the_ego():
+    assert agents("Market Square stop. Bus was standing at the stop with the doors open. I pulled out into the right "
+                  "lane and a car came up behind me.") == [("bus", "change_lane_to_right", "ego"),
+                                                           ("car", "go_straight", "back")]

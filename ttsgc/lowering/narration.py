@@ -1138,10 +1138,26 @@ def _ego_made_a_kind(text: str) -> str:
     return EGO_MADE.sub("the ego is ", text)
 
 
+@lru_cache(maxsize=1)
+def _apposed_role() -> re.Pattern:
+    return re.compile(r"\b(?:a|an|the)\s+(?:[a-z]+\s+){0,2}?([a-z]+)\s*,\s*as\s+(?:the|our)\s+(?:" + _ego_roles() +
+                      r")\b(?:\s+(?:vehicle|car))?\s*(?=,)", re.I)
+
+
+def _role_in_apposition(text: str) -> str:
+    """'a motorcyclist, as the subject vehicle, riding along Queen Street': the role said in passing is declared
+    as 'the motorcyclist is the subject vehicle' would declare it."""
+    m = _apposed_role().search(text)
+    if m is None or _vehicle_kind(m.group(1).lower()) is None:
+        return text
+    return text[:m.start(1) + len(m.group(1))] + text[m.end():] + f" The {m.group(1).lower()} is the ego."
+
+
 def _declared_ego(text: str, notes: list[str]) -> str:
     """'Our van is the ego', 'with the taxi as the ego', 'Van = ego': that vehicle, and its driver, are the ego
     wherever the text names them by role, by fleet name or by name."""
     declaration, any_declaration = _declarations()
+    text = _role_in_apposition(text)
     said = text  # ("Car 1 is the ego, waiting" keeps the ego where the text names it)
     m = declaration.search(text)
     if m is not None:
@@ -1165,6 +1181,10 @@ def _declared_ego(text: str, notes: list[str]) -> str:
             said = text  # ("with car 1 as the ego, ..." says no more)
         return _named_driver(re.sub(numbered, lambda n: ego if int(n.group(1)) == number else n.group(0), said,
                                     flags=re.I), notes)
+    met = re.findall(rf"\b(?:a|an)\s+(?:[a-z]+\s+){{0,2}}?{noun}\b", text, flags=re.I)
+    if len(met) == 1 and re.match(r"(?:,\s*)?(?:(?:with|using|having)\s+)?the\b", m.group(0), re.I):
+        text = text.replace(met[0], ego, 1)  # "... just as a taxi in that lane draws alongside; the taxi is the
+        # subject vehicle": the one met is the one declared (not "with our van as ego": ours, not "an oncoming van")
     plural = noun + ("es" if noun.endswith("s") else "s")
     text = re.sub(rf"\bone of (?:our|my|the) (?:[a-z]+ )?{plural}\b", ego, text, flags=re.I)
     text = re.sub(rf"\b(?:{FLEET_NOUNS})\s+(?:no\.?\s*|#)?\d{{2,4}}\b" + NOT_A_QUANTITY +
@@ -1258,7 +1278,9 @@ THE_VEHICLE_ACTS = re.compile(r"\b[Tt]he vehicle\b(?!'s\b|\s+(?:ahead|in|on|to|b
 
 
 SUBJECT_ROLE = re.compile(r"\(the subject\)|(?:^|(?<=[.;:!?(]\s)|(?<=[.;:!?(]))\s*subject\s*[:,]|"
-                          r"(?<![\w'-])subject\s*[:=]|=\s*subject\b", re.I | re.M)
+                          r"(?<![\w'-])subject\s*[:=]|=\s*subject\b|(?:^|(?<=[.;:!?|]\s)|(?<=[.;:!?|]))\s*subject\s+"
+                          r"(?!vehicle\b)(?=(?:" + _NOUN[1:-1] + r"|motorcyclist|cyclist|rider)\b)", re.I | re.M)
+# ("Subject motorbike waiting at the give-way line": a log's subject named by what it is)
 SUBJECT_LABELLED = re.compile(r"(?:\bobj(?:ect)?\s+([A-Z])\s+|(#\d{1,3})\s+)?([a-z]+)\s*=\s*subject\b|"
                               r"(#\d{1,3})\s+subject\s*:", re.I)  # "obj A motorcycle = subject", "#1 subject: taxi":
 # the label it is called by
@@ -1286,6 +1308,8 @@ def _observed_subject(text: str, notes: list[str]) -> str:
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*:\s*", r"\1Ego: ", text, flags=re.I | re.M)
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*,\s*(?=(?:a|an|the)\b)", r"\1the ego, ", text, flags=re.I | re.M)
     text = re.sub(r"(?<![\w'-])subject\s*=\s*", "Ego: ", text, flags=re.I)  # "subject = white SUV (trk 77)"
+    text = re.sub(r"((?:^|[.;:!?|])\s*)subject\s+(?!vehicle\b)(?=(?:" + _NOUN[1:-1] +
+                  r"|motorcyclist|cyclist|rider)\b)", r"\1the ego ", text, flags=re.I | re.M)  # "Subject motorbike"
     text = re.sub(r"(?<=\s)subject\s*:\s*", "\nEgo: ", text, flags=re.I)  # "+0.0 s  Subject: box truck SB": a key,
     # on a line of its own
     return THE_SUBJECT.sub("the ego", text)

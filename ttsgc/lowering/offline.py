@@ -4913,12 +4913,16 @@ def _waits_where_people_wait(r: _Reader, e: Entity) -> bool:
 
 
 def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: set[str]) -> bool:
-    """'my bike', 'on the bike', 'just me and (the) bike', 'in front of me on bike': the speaker's own, not a bike
-    somewhere ahead."""
+    """'my bike', 'on the bike', 'just me and (the) bike', 'in front of me on bike', 'I'm turning left on a
+    scooter': the speaker's own, not a bike somewhere ahead."""
     after_me = first >= 2 and units[first - 2].tokens[-1].word in ("me", "i")  # "in front of me on bike"
+    # ("I'm turning left on a Lime scooter": the speaker, then what the speaker does, on it)
     someone_before = first >= 2 and units[first - 2].category == "agents" and units[first - 2].meaning != "ego"
+    speaker = max((k for k in range(first - 1) if units[k].tokens[-1].word in ("i", "i'm")), default=None)
     return "my" in words or first > lo and units[first - 1].word == "on" and not someone_before and (
-        "the" in words or not words) or \
+        "the" in words or not words or words <= {"a", "an"} and speaker is not None and not any(
+            x.category in ("agents", "comma", "positions") for x in units[speaker + 1:first - 1]) and (
+            head + 1 == len(units) or units[head + 1].category != "positions")) or \
         words <= {"the"} and first >= 2 and units[first - 1].word == "and" and after_me and \
         (head + 1 == len(units) or units[head + 1].category != "positions")
 
@@ -5241,8 +5245,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     at_the_wheel = _driven_by(r, units, head, recent) if count is None and not plural else None
     if at_the_wheel is not None:  # "a box truck ... the woman driving it stopped": the truck, by its driver
         return NounPhrase(at_the_wheel, head, first)
-    if definite and count is None and not plural and u.base in DRIVING_PEOPLE and not _gets_out(units, head) and \
-            not _on_foot_in_the_scene(units, head) and not any(e.type in V.VULNERABLE_TYPES for e in r.entities) and \
+    if (definite or _article_dropped(r, units, first, words)) and count is None and not plural and \
+            u.base in DRIVING_PEOPLE and not _gets_out(units, head) and not _on_foot_in_the_scene(units, head) and not any(e.type in V.VULNERABLE_TYPES for e in r.entities) and \
             (head + 1 == len(units) or units[head + 1].category != "positions"):
         driven = _last_named(r, recent, lambda e: not e.is_ego and e.type not in V.VULNERABLE_TYPES)
         if driven is not None:  # "a taxi pulled out ... the guy never looked": nobody on foot named, its driver
@@ -5457,6 +5461,13 @@ def _crewed_vehicle(r: _Reader, units: list[Unit], head: int, first: int, recent
                         for e in r.entities):
         return None
     return _last_named(r, recent, lambda e: not e.is_ego and e.type in types)
+
+
+def _article_dropped(r: _Reader, units: list[Unit], first: int, words: set) -> bool:
+    """'Guy ate a load of salt', 'Bloke ahead slammed his brakes on': a log's or a note's noun opening a sentence
+    with its article left out, as 'the' is."""
+    at = units[first].tokens[0].index
+    return not words and (at == 0 or r.tokens[at - 1].sentence != r.tokens[at].sentence)
 
 
 DRIVING_PEOPLE = {"guy", "dude", "man", "woman", "lady", "bloke", "chap", "fella", "fellow", "gentleman", "idiot",
@@ -8776,7 +8787,7 @@ ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", 
 
 
 HANDLING = {"move", "slow", "stop", "pull", "ease", "bring", "swing", "put", "park", "steer", "nose", "edge", "inch",
-            "reverse", "back", "turn", "drive"}  # what a driver does to the vehicle they drive
+            "reverse", "back", "turn", "drive", "slide"}  # what a driver does to the vehicle they drive
 
 
 PEOPLES_PLACES = {"school", "hospital", "playground", "park", "centre", "center", "home", "ward", "nursery", "club",
@@ -8813,9 +8824,12 @@ def _driven_with_no_subject(r: _Reader, units: list[Unit], np: NounPhrase) -> bo
                np.entity.type in V.TWO_WHEELER_TYPES) and units[first].word in ("the", "my", "our") and not (
         np.index + 1 < len(units) and units[np.index + 1].category in ("positions", "agents")) or \
         verb.tokens[-1].word in ("had", "have", "got") and units[first].word in ("the", "my", "our") and \
-        np.index + 1 < len(units) and \
-        units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith("ed")
-    # "I moved the truck over a lane", "slowed the truck down", "I had the truck stopped at the yield sign"
+        np.index + 1 < len(units) and (
+            units[np.index + 1].category == "actions" and units[np.index + 1].tokens[0].word.endswith(("ed", "ing"))
+            or units[np.index + 1].category == "positions" and units[np.index + 1].tokens[0].word == "in" and
+            units[np.index + 1].tokens[-1].word == "lane")  # (not "had the truck in front of me")
+    # "I moved the truck over a lane", "slowed the truck down", "I had the truck stopped at the yield sign", "Had the
+    # plow sitting on a green", "Had the truck in the right lane"
     if not handled and (verb.category != "actions" or verb.tokens[0].base != "drive") or len(verb.tokens) != 1:
         return False
     sentence = verb.tokens[0].sentence
@@ -11153,7 +11167,8 @@ def _the_camera_car(r: _Reader) -> None:
 
 
 FILTERING = {"filter", "filters", "filtering", "filtered"}
-RIDING = {"ride", "rides", "riding", "rode"}
+SCOOTING = {"scoot", "scoots", "scooted", "scooting"}  # ("scooted home down Station Rd": on an e-scooter)
+RIDING = {"ride", "rides", "riding", "rode"} | SCOOTING
 
 
 RIDERS_CONTROLS = (("front", "brake"), ("pillion",))
@@ -11172,8 +11187,8 @@ def _a_riders_ego(r: _Reader) -> None:
     named by no vehicle that filters through traffic, or is said to ride (not in or on something), rides a
     motorbike; one on a bicycle is no ego this language has."""
     ego = next((e for e in r.entities if e.is_ego), None)
-    if ego is None or ego.type != "car" or \
-            any(name.split()[-1] not in SELF_NAMES | {"ego", "rider"} for name in ego.aliases | {ego.head} if name):
+    if ego is not None and (ego.type != "car" or any(
+            name.split()[-1] not in SELF_NAMES | {"ego", "rider"} for name in ego.aliases | {ego.head} if name)):
         return
     words = [t.word for t in r.tokens]
     said_of_the_ego = ("you", "i", "we", "you're", "i'm", "we're")
@@ -11183,13 +11198,18 @@ def _a_riders_ego(r: _Reader) -> None:
         {"in", "on", "with", "as"} | DETERMINERS | OWNERS)) and (
         words[k - 1:k] and words[k - 1] in said_of_the_ego or words[max(0, k - 2):k] in (
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
-        w in FILTERING | {"riding"} and _opens_its_sentence(r.tokens, r.tokens[k]) and (
+        w in FILTERING | SCOOTING | {"riding"} and _opens_its_sentence(r.tokens, r.tokens[k]) and (
             w in FILTERING or told_by_me) or  # "Filtering past a queue", "Riding along
         # a street ..., a taxi ahead of me stopped"
         not hailed and words[k - 1:k] == ["and"] and not (words[k + 1:k + 2] and words[k + 1] in AUXILIARIES) and any(
             words[j] in said_of_the_ego and r.tokens[j].sentence == r.tokens[k].sentence
             for j in range(max(0, k - 5), k - 1)))  # "you ease off and ride slowly"
         for k, w in enumerate(words))
+    if ego is None:
+        if not said:
+            return
+        ego = _ego_entity(r, 0)  # "scooted down Park Lane after work and a minicab pulled out": the rider, said
+        # by a verb the lexicon does not know
     the_rider = _supplied(r, ego) and not hailed and any(
         u.category == "word" and u.word == "rider" and k > 0 and r.units[k - 1].word == "the" and not any(
             e.type in ("cyclist", "motorcycle") and 0 <= e.said_at < u.start for e in r.entities)
@@ -11217,7 +11237,8 @@ def _the_named_turn_is_anothers(r: _Reader) -> None:
             ego.actions.remove(a)
 
 
-PATIENT_WORDS = {"pt", "patient", "casualty", "moi", "atmist", "gcs", "injuries", "conveyance", "conveyed", "ems"}
+PATIENT_WORDS = {"pt", "patient", "casualty", "moi", "atmist", "gcs", "injuries", "conveyance", "conveyed", "ems",
+                 "loc", "handover", "spo2"}
 STRUCK_BY = (("struck", "by"), ("hit", "by"), ("knocked", "down", "by"), ("run", "over", "by"),
              ("knocked", "over", "by"), ("clipped", "by"))
 
@@ -11235,8 +11256,10 @@ def _the_patients_vehicle(r: _Reader) -> None:
                    e.type not in V.VULNERABLE_TYPES - {"motorcycle"} and e.said_at >= 2 and
                    any(words[k] in ("driver", "rider", "passenger") and words[k + 1] in ("of", "in")
                        for k in range(max(0, e.said_at - 4), e.said_at - 1))), None)
-    driven = driven or next((e for e in r.entities[:1] if not e.is_ego and e.head == "driver" and e.count == 1),
-                            None)  # "28F driver, stationary at red lights": the patient drove
+    driven = driven or next((e for e in r.entities[:1] if not e.is_ego and e.count == 1 and (
+        e.head == "driver" or e.type == "motorcycle" and r.tokens[e.said_at].sentence == 0)), None)
+    # "28F driver, stationary at red lights": the patient drove ("Motorcyclist, 34F.", "Pt 19F moped rider, approx
+    # 25mph": the patient rode)
     on_foot = any(e.type in V.VULNERABLE_TYPES and e.count == 1 for e in r.entities if not e.is_ego)
     striker = next((e for e in r.entities if not e.is_ego and e.count == 1 and e.type not in V.VULNERABLE_TYPES and
                     any(tuple(words[k:e.said_at]) in STRUCK_BY or tuple(words[k:e.said_at - 1]) in STRUCK_BY
@@ -11638,6 +11661,12 @@ def _a_patrols_call_sign(r: _Reader) -> bool:
         any(tuple(words[:len(p)]) == p for p in PATROLS_OPENINGS)
 
 
+def _said_with_a(r: _Reader, e: Entity) -> bool:
+    """'a bus', 'a red double-decker bus': first named as one more, not as one known or bare."""
+    said = [t for t in r.tokens[max(0, e.said_at - 4):e.said_at + 1] if t.sentence == r.tokens[e.said_at].sentence]
+    return any(t.word in INDEFINITE for t in said)
+
+
 def _a_drivers_trade(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
     the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name; one who puts out
@@ -11660,12 +11689,14 @@ def _a_drivers_trade(r: _Reader) -> None:
     crew = {"we", "us", "our"} & set(words)  # (a crew speaks as one)
     aboard_a_bus = bool(crew) and _says_any(told, BUS_PASSENGERS_WORDS)  # "we were in the inside lane ... I was on
     # the top deck", "the coach driver hit the horn": the bus its passengers ride in
-    ours = [e for e in r.entities if e.type == "bus" and not e.is_ego and e.definite and e.count == 1 and
-            not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None] if aboard_a_bus and \
-        ego is not None and ego.head in FIRST_PERSON | {"we", "us", "our"} else []  # ("cut across in front of the
-    # bus": the passengers' own, named by what it is)
-    trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if _says_any(told, BUS_DRIVERS_WORDS) or \
-        aboard_a_bus else \
+    at_its_wheel = _says_any(told, BUS_DRIVERS_WORDS)
+    ours = [e for e in r.entities if e.type == "bus" and not e.is_ego and e.count == 1 and
+            (e.definite or at_its_wheel and not _said_with_a(r, e)) and
+            not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None] if (aboard_a_bus or at_its_wheel) \
+        and ego is not None and (ego.head in FIRST_PERSON | {"we", "us", "our"} or _supplied(r, ego)) else []
+    # ("cut across in front of the bus": the passengers' own, named by what it is; "Bus was standing at the stop
+    # with the doors open": the driver's own)
+    trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if at_its_wheel or aboard_a_bus else \
         "ambulance" if crew and _says_any(words, AMBULANCE_CREWS_WORDS) else \
         "firetruck" if crew and _says_any(words, FIRE_CREWS_WORDS) else None
     if "ego" in words or trade is None or trade != "truck" and any(
@@ -11741,6 +11772,9 @@ def _headline(prompt: str, tokens: list[Token]) -> range:
     if not words or len(words) > 8 or not all(w[0].isupper() or w[0].isdigit() or w.lower() in TITLE_SMALL_WORDS
                                              for w in words) or words[0].lower() in SUBJECT_PRONOUNS | {"i'm"}:
         return range(0)
+    named = [w for w in words if not w.isdigit() and len(w) > 1]
+    if len(named) == 1 and named[0].lower() not in DRIVERS and _names_agent(named[0]):
+        return range(0)  # "Motorcyclist, 34F.", "Cyclist.": one road user (a handover's patient), no title
     n = _opening(tokens, m.group(1))
     if n >= len(tokens) or any(t.base in ("be", "have") for t in tokens[:n]):
         return range(0)
