@@ -5246,7 +5246,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if at_the_wheel is not None:  # "a box truck ... the woman driving it stopped": the truck, by its driver
         return NounPhrase(at_the_wheel, head, first)
     if (definite or _article_dropped(r, units, first, words)) and count is None and not plural and \
-            u.base in DRIVING_PEOPLE and not _gets_out(units, head) and not _on_foot_in_the_scene(units, head) and not any(e.type in V.VULNERABLE_TYPES for e in r.entities) and \
+            u.base in DRIVING_PEOPLE and not _gets_out(units, head) and not _on_foot_in_the_scene(units, head) and \
+            not any(e.type in V.VULNERABLE_TYPES for e in r.entities) and \
             (head + 1 == len(units) or units[head + 1].category != "positions"):
         driven = _last_named(r, recent, lambda e: not e.is_ego and e.type not in V.VULNERABLE_TYPES)
         if driven is not None:  # "a taxi pulled out ... the guy never looked": nobody on foot named, its driver
@@ -11692,8 +11693,9 @@ def _a_drivers_trade(r: _Reader) -> None:
     at_its_wheel = _says_any(told, BUS_DRIVERS_WORDS)
     ours = [e for e in r.entities if e.type == "bus" and not e.is_ego and e.count == 1 and
             (e.definite or at_its_wheel and not _said_with_a(r, e)) and
-            not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None] if (aboard_a_bus or at_its_wheel) \
-        and ego is not None and (ego.head in FIRST_PERSON | {"we", "us", "our"} or _supplied(r, ego)) else []
+            not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None] \
+        if (aboard_a_bus or at_its_wheel) and ego is not None and \
+        (ego.head in FIRST_PERSON | {"we", "us", "our"} or _supplied(r, ego)) else []
     # ("cut across in front of the bus": the passengers' own, named by what it is; "Bus was standing at the stop
     # with the doors open": the driver's own)
     trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if at_its_wheel or aboard_a_bus else \
