@@ -12314,3 +12314,52 @@ def test_a_bus_named_bare_by_its_driver_at_the_stop_is_the_ego():
     assert agents("Market Square stop. Bus was standing at the stop with the doors open. I pulled out into the right "
                   "lane and a car came up behind me.") == [("bus", "change_lane_to_right", "ego"),
                                                            ("car", "go_straight", "back")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Cam 4, 08:10: Route 12 bus NB on the high street, left lane. Taxi in the right lane alongside the bus cuts "
+     "sharply left across its front. Bus brakes hard, no contact.",
+     [("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "front_right")]),
+    ("A taxi cuts in ahead of me. I brake hard.", [("car", "change_lane_to_right", "front_left"),
+                                                    ("car", "go_straight", "ego")]),
+    ("The car ahead of me brakes hard and stops.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+])
+def test_braking_is_no_stop_of_the_ego_even_when_it_is_found_to_be_the_ego_later(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I was doing 30 and a black Astra sat right up my backside flashing at me.",
+     [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("A cyclist was heading my way.", [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_left")]),
+])
+def test_up_my_backside_is_behind_and_heading_my_way_is_oncoming(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The car stops at the stop line. A cane user is crossing ahead of it on the crossing.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("As a cyclist myself, I care about this one. An automated car is driving down a street.",
+     [("car", "go_straight", "ego")]),
+    ("A fire engine came up behind us. Then an ambulance did the same.",
+     [("ambulance", "go_straight", "back"), ("car", "go_straight", "ego"), ("firetruck", "go_straight", "back")]),
+])
+def test_a_cane_user_walks_the_writer_as_one_is_no_one_and_the_same_is_done_from_the_same_place(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_one_let_do_something_is_not_the_one_who_lets_it():
+    assert agents("Eastbound on High St, a bus pulled out ahead of us on the right. Shuttle eased off and let it "
+                  "merge.") == [("bus", "change_lane_to_left", "front_right"), ("bus", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I hung a right at the lights.", [("car", "turn_right", "ego")]),
+    ("I was pulling left out of the trading estate at the lights and a cyclist came down my nearside.",
+     [("car", "turn_left", "ego"), ("cyclist", "go_straight", "left")]),
+    ("A van pulled right out of a side road on my left.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),
+])
+def test_hung_a_right_and_pulling_left_out_of_a_place_are_turns(prompt, expected):
+    assert agents(prompt) == expected

@@ -861,13 +861,19 @@ BELIEF = re.compile(r"\b(?:i|we) (?:thought|figured|assumed|feared|was sure|were
                     r"(?=\s+(?:lmao|lol|haha|and then|but|turns out|turned out|then)\b|[.,;!?]|$)", re.I)
 
 
+AS_ONE_MYSELF = re.compile(r"\b(?:speaking\s+)?as\s+an?\s+(?:[a-z-]+\s+){0,3}?[a-z-]+\s+(?:myself|ourselves)\b\s*,?",
+                           re.I)
+
+
 def _asides(text: str) -> str:
     """'a big box truck, like a moving truck': a likeness is no second vehicle; 'a 2019 Harley': a model year
-    counts nothing; 'I thought I was getting pulled over': what the narrator feared did not happen."""
+    counts nothing; 'I thought I was getting pulled over': what the narrator feared did not happen; 'as a cyclist
+    myself': who the writer is, no one in the scene."""
     text = SIMILE.sub(lambda m: m.group(1) + m.group(2), text)
     text = BELIEF.sub("", text)
     text = re.sub(r"\b(?:it\s+)?turn(?:s|ed)\s+out\s+(?=(?:that|he|she|it|they|i|we|the|to)\b)", "", text,
                   flags=re.I)  # "turns out he was ...": what was learnt, no turn
+    text = AS_ONE_MYSELF.sub("", text)  # "As a guide dog user myself, I care about this one": who the writer is
     return re.sub(r"\b(a|an|the|my|his|her|their|our|your)\s+(?:19[5-9]\d|20[0-4]\d)\s+(?=[A-Za-z])", r"\1 ", text,
                   flags=re.I)
 

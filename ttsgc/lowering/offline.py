@@ -202,6 +202,8 @@ class _Reader:
     owned: bool = False  # the text opened on the vehicle its teller owns: "the vehicle" is that one
     typical: bool = False  # the text names road users only by their kinds, in what they habitually do
     staged: bool = False  # the text goes on to a later stage ("then", "once ...")
+    braked: set = field(default_factory=set)  # the order of each stop said only as braking ("the bus brakes hard"):
+    # no stop if that one turns out to be the ego
 
     def mark(self, unit: Unit) -> None:
         self.used.update(range(unit.start, unit.end))
@@ -6054,7 +6056,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 e.count = 2  # "a car parked on each side of the street": one on each side, two
     elif u.category == "actions" and u.meaning == "same":
         acted = [x for x in r.entities if x is not e and x.actions and x.parent is not e and e.parent is not x]
-        model = max(acted, key=lambda x: max(a[3] for a in x.actions), default=None)  # the last one who acted
+        model = max(acted, key=lambda x: max(a[3] for a in x.actions), default=None) or max(
+            (x for x in r.entities if x is not e and not x.is_ego and x.features and x.parent is not e and
+             e.parent is not x), key=lambda x: x.said_at, default=None)  # the last one who acted, or was placed
+        # ("a fire engine came up behind us. Then an ambulance did the same")
         if model is not None:  # "then a second taxi did exactly the same thing": its manoeuvre, from its place
             e.actions += [(stage, strength) + a[2:3] + (r.tick(),) + a[4:] for a in model.actions]
             if not model.is_ego:  # "the ego waits; two cars behind it do the same": they wait, where they are
@@ -6220,11 +6225,12 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                                                                   "stall", "stalled", "double", "abandon"}
                                  or {"bus", "stop"} <= {t.word for t in u.tokens}):  # "at a bus stop": at the kerb
             e.features.add("parked")
-        if action == "stop" and e.is_ego and {t.base for t in u.tokens} & {"brake", "brakes"} and not (
+        braking = action == "stop" and {t.base for t in u.tokens} & {"brake", "brakes"} and not (
                 {t.word for t in u.tokens} & {"halt", "stop", "standstill"}) and not (
                 clause_units is not None and k is not None and any(
                     x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])
-                or _in_time(clause_units[k + 1:k + 5])):
+                or _in_time(clause_units[k + 1:k + 5]))
+        if braking and e.is_ego:
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
         out_after = clause_units is not None and k is not None and k + 1 < len(clause_units) and \
             clause_units[k + 1].word == "out"
@@ -6274,6 +6280,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             # what it was doing is its action ("the other driver had to stop", said of nothing else, still stops)
         e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
                           0 if earlier else r.tick(), action, direction))
+        if braking and not earlier:
+            r.braked.add(r.order)
         if action in ("lane_left", "lane_right") and not {"left", "right"} & {t.word for t in u.tokens}:
             e.features.add("to_the_kerb")  # "pulled over", "pulled to the side": towards the kerb, no lane named
         if action == "lane_change" and {"middle", "center"} & {t.word for t in u.tokens}:
@@ -9043,8 +9051,10 @@ def _pronoun(units, i, phrases, previous_subject, recent) -> Entity | None:
         return people[-1] if people else drivers[-1] if drivers else None
     as_object = i > 0 and (units[i - 1].category in ("positions", "actions") or
                            (units[i - 1].category == "word" and units[i - 1].word in ("of", "to", "past", "behind"))
-                           or units[i - 1].word in CAUSATIVES and i + 1 < len(units) and units[i + 1].word == "to")
-    # "forcing it to stop": whom it forced
+                           or units[i - 1].word in CAUSATIVES and i + 1 < len(units) and units[i + 1].word == "to"
+                           or units[i - 1].word in LETTING and i + 1 < len(units) and
+                           units[i + 1].category == "actions")
+    # "forcing it to stop": whom it forced; "eased off and let it merge": whom it let
     named_here = [np.entity for np in phrases if np.index < i and np.entity is not None and not np.entity.is_ego
                   and np.entity.type not in V.VULNERABLE_TYPES]
     if units[i].word == "it" and not as_object and named_here and phrases[0].entity is named_here[0] and \
@@ -10009,6 +10019,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
                        "no template used")
     road = _ego_lane_road(r, road)
     _a_drivers_trade(r)
+    _the_egos_brake_is_no_stop(r)
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
         road.junction is None and "traffic_light" in road.required_signals and (any(
             f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
@@ -11660,6 +11671,14 @@ def _a_patrols_call_sign(r: _Reader) -> bool:
         w in PATROL_CALL_WORDS and 0 < k < len(words) - 1 and words[k - 1].isdigit() and words[k + 1].isdigit()
         for k, w in enumerate(words)) or _says_any(words, PATROLS_OWN_WORDS) or \
         any(tuple(words[:len(p)]) == p for p in PATROLS_OPENINGS)
+
+
+def _the_egos_brake_is_no_stop(r: _Reader) -> None:
+    """'Taxi cuts across the bus's front. Bus brakes hard, no contact.': braking said of one found only later to be
+    the ego is a reaction, not where the ego ends, as it is when said of the ego ('the AV braked')."""
+    for e in r.entities:
+        if e.is_ego:
+            e.actions = [a for a in e.actions if not (a[4] == "stop" and a[3] in r.braked)]
 
 
 def _said_with_a(r: _Reader, e: Entity) -> bool:
