@@ -4918,7 +4918,6 @@ def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: se
     """'my bike', 'on the bike', 'just me and (the) bike', 'in front of me on bike', 'I'm turning left on a
     scooter': the speaker's own, not a bike somewhere ahead."""
     after_me = first >= 2 and units[first - 2].tokens[-1].word in ("me", "i")  # "in front of me on bike"
-    # ("I'm turning left on a Lime scooter": the speaker, then what the speaker does, on it)
     someone_before = first >= 2 and units[first - 2].category == "agents" and units[first - 2].meaning != "ego"
     speaker = max((k for k in range(first - 1) if units[k].tokens[-1].word in ("i", "i'm")), default=None)
     return "my" in words or first > lo and units[first - 1].word == "on" and not someone_before and (
@@ -5467,8 +5466,8 @@ def _crewed_vehicle(r: _Reader, units: list[Unit], head: int, first: int, recent
 
 
 def _article_dropped(r: _Reader, units: list[Unit], first: int, words: set) -> bool:
-    """'Guy ate a load of salt', 'Bloke ahead slammed his brakes on': a log's or a note's noun opening a sentence
-    with its article left out, as 'the' is."""
+    """'Guy ate a load of salt', 'Bloke never looked': a log's or a note's noun opening a sentence with its article
+    left out, as 'the' is."""
     at = units[first].tokens[0].index
     return not words and (at == 0 or r.tokens[at - 1].sentence != r.tokens[at].sentence)
 
@@ -6227,9 +6226,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             e.features.add("parked")
         braking = action == "stop" and {t.base for t in u.tokens} & {"brake", "brakes"} and not (
                 {t.word for t in u.tokens} & {"halt", "stop", "standstill"}) and not (
-                clause_units is not None and k is not None and any(
+                clause_units is not None and k is not None and (any(
                     x.meaning == "stop" or x.word in ("halt", "stop", "standstill") for x in clause_units[k + 1:k + 5])
-                or _in_time(clause_units[k + 1:k + 5]))
+                    or _in_time(clause_units[k + 1:k + 5])))
         if braking and e.is_ego:
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
         out_after = clause_units is not None and k is not None and k + 1 < len(clause_units) and \
