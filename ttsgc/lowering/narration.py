@@ -1283,10 +1283,11 @@ THE_VEHICLE_ACTS = re.compile(r"\b[Tt]he vehicle\b(?!'s\b|\s+(?:ahead|in|on|to|b
                               r"parked|stopped)\b)")
 
 
-SUBJECT_ROLE = re.compile(r"\(the subject\)|(?:^|(?<=[.;:!?(]\s)|(?<=[.;:!?(]))\s*subject\s*[:,]|"
-                          r"(?<![\w'-])subject\s*[:=]|=\s*subject\b|(?:^|(?<=[.;:!?|]\s)|(?<=[.;:!?|]))\s*subject\s+"
-                          r"(?!vehicle\b)(?=(?:" + _NOUN[1:-1] + r"|motorcyclist|cyclist|rider)\b)", re.I | re.M)
+SUBJECT_BEFORE_ITS_NOUN = r"subject\s+(?!vehicle\b)(?=(?:" + _NOUN[1:-1] + r"|motorcyclist|cyclist|rider)\b)"
 # ("Subject motorbike waiting at the give-way line": a log's subject named by what it is)
+SUBJECT_ROLE = re.compile(r"\(the subject\)|(?:^|(?<=[.;:!?(]\s)|(?<=[.;:!?(]))\s*subject\s*[:,]|"
+                          r"(?<![\w'-])subject\s*[:=]|=\s*subject\b|(?:^|(?<=[.;:!?|]\s)|(?<=[.;:!?|]))\s*" +
+                          SUBJECT_BEFORE_ITS_NOUN, re.I | re.M)
 SUBJECT_LABELLED = re.compile(r"(?:\bobj(?:ect)?\s+([A-Z])\s+|(#\d{1,3})\s+)?([a-z]+)\s*=\s*subject\b|"
                               r"(#\d{1,3})\s+subject\s*:", re.I)  # "obj A motorcycle = subject", "#1 subject: taxi":
 # the label it is called by
@@ -1314,8 +1315,8 @@ def _observed_subject(text: str, notes: list[str]) -> str:
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*:\s*", r"\1Ego: ", text, flags=re.I | re.M)
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*,\s*(?=(?:a|an|the)\b)", r"\1the ego, ", text, flags=re.I | re.M)
     text = re.sub(r"(?<![\w'-])subject\s*=\s*", "Ego: ", text, flags=re.I)  # "subject = white SUV (trk 77)"
-    text = re.sub(r"((?:^|[.;:!?|])\s*)subject\s+(?!vehicle\b)(?=(?:" + _NOUN[1:-1] +
-                  r"|motorcyclist|cyclist|rider)\b)", r"\1the ego ", text, flags=re.I | re.M)  # "Subject motorbike"
+    text = re.sub(r"((?:^|[.;:!?|])\s*)" + SUBJECT_BEFORE_ITS_NOUN, r"\1the ego ", text,
+                  flags=re.I | re.M)  # "Subject motorbike"
     text = re.sub(r"(?<=\s)subject\s*:\s*", "\nEgo: ", text, flags=re.I)  # "+0.0 s  Subject: box truck SB": a key,
     # on a line of its own
     return THE_SUBJECT.sub("the ego", text)

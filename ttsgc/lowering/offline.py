@@ -5468,8 +5468,7 @@ def _crewed_vehicle(r: _Reader, units: list[Unit], head: int, first: int, recent
 def _article_dropped(r: _Reader, units: list[Unit], first: int, words: set) -> bool:
     """'Guy ate a load of salt', 'Bloke never looked': a log's or a note's noun opening a sentence with its article
     left out, as 'the' is."""
-    at = units[first].tokens[0].index
-    return not words and (at == 0 or r.tokens[at - 1].sentence != r.tokens[at].sentence)
+    return not words and _opens_its_sentence(r.tokens, units[first].tokens[0])
 
 
 DRIVING_PEOPLE = {"guy", "dude", "man", "woman", "lady", "bloke", "chap", "fella", "fellow", "gentleman", "idiot",
