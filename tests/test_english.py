@@ -12363,3 +12363,75 @@ def test_the_one_let_do_something_is_not_the_one_who_lets_it():
 ])
 def test_hung_a_right_and_pulling_left_out_of_a_place_are_turns(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("V1 stopped at the zebra crossing. V2 (Suzuki m/cycle) following V1, rider unable to stop, struck rear of V1.",
+     [("car", "stop", "ego"), ("motorcycle", "go_straight", "back")]),
+    ("The ego stops at the crossing. A truck, a white Scania, behind the ego.",
+     [("car", "stop", "ego"), ("truck", "go_straight", "back")]),
+    ("We stopped at the lights. A van, a white Transit, behind us, failed to stop.",
+     [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("A car, a bus, and a van.", [("bus", "go_straight", "front"), ("car", "go_straight", "ego"),
+                                  ("car", "go_straight", "front"), ("car", "go_straight", "front")]),
+])
+def test_a_noun_set_off_after_another_of_its_kind_then_placed_by_the_ego_is_that_one(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Client stopped for pedestrian at a crosswalk. Client stopped to let an elderly gentleman cross; following "
+     "vehicle did not stop and hit her from behind.",
+     [("car", "go_straight", "back"), ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("There was a pedestrian in the crosswalk. I failed to yield to a pedestrian in the crosswalk.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("A pedestrian crosses from the left. A pedestrian crosses from the right.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_left"),
+      ("pedestrian", "cross_the_road", "front_right")]),
+    ("A man crosses in front of the ego. A woman crosses in front of the ego.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front"),
+      ("pedestrian", "cross_the_road", "front")]),
+    ("A car stops in front of the ego. Then another car stops in front of the ego.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]),
+])
+def test_one_named_again_with_a_and_nothing_new_said_of_it_is_the_one_named_before(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Stopped at red signal. Rear-ended by Dodge Ram pickup. 10-y-o son in back seat, no injuries.",
+     [("car", "go_straight", "back"), ("car", "stop", "ego")]),
+    ("The driver had to brake hard and the people standing on the lower deck were thrown about.",
+     [("car", "go_straight", "ego")]),
+])
+def test_people_in_the_back_seat_or_on_a_deck_ride_on_board(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Parked cars down your right. A kid chases a ball out between them right in front of you. Ride so you can "
+     "stop.", [("motorcycle", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]),
+    ("A kid runs out in front of you. Keep your speed low so you are able to stop.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("A kid ran out in front of me. I was able to stop.", [("car", "stop", "ego"), ("pedestrian", "cross_the_road",
+                                                                                  "front")]),
+    ("A kid ran out. The car behind also can stop.",
+     [("car", "go_straight", "ego"), ("car", "stop", "back"), ("pedestrian", "cross_the_road", "front")]),
+    ("Minibus travelling 30mph ran into the back of a queue, 2 cars stopped in it. Pt is the minibus driver, 63M.",
+     [("bus", "go_straight", "ego"), ("car", "stop", "front"), ("car", "stop", "front")]),
+])
+def test_a_stop_one_could_make_and_a_queue_run_into_are_no_stop_of_its_own(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Portable lights showing red, Honda Jazz waiting at the stop line. After that a cyclist squeezed past her from "
+     "the back and rode through on red.", [("car", "stop", "ego"), ("cyclist", "go_straight", "back")]),
+    ("Temporary signals at red, and a little Fiesta pulled up right on the white stop line. Then a bloke on a bike "
+     "came up behind her and through the red.", [("car", "stop", "ego"), ("cyclist", "go_straight", "back")]),
+    ("Police are appealing for witnesses after a woman driving home was boxed in by two cars. She says one of them "
+     "stopped dead in front of her.", [("car", "block_the_ego", "front"), ("car", "go_straight", "ego"),
+                                       ("car", "stop", "front"), ("car", "stop", "front")]),
+])
+def test_a_vehicle_the_others_are_placed_by_as_her_or_him_is_the_one_told_from(prompt, expected):
+    assert agents(prompt) == expected

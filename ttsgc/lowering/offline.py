@@ -395,13 +395,25 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
     return out
 
 
+def _a_queue_run_into(units: list[Unit]) -> list[Unit]:
+    """'ran into the back of a queue', 'ploughed into the rear of the queue': the queue that was hit, a noun; those
+    in it wait, and the one that hit it did not stop to join it."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if k > 1 and u.category == "actions" and u.tokens[0].word in ("queue", "queues") and \
+                units[k - 1].word in ("a", "the") and [t.word for t in units[k - 2].tokens][-2:] in (
+                    ["back", "of"], ["rear", "of"], ["tail", "of"], ["end", "of"]) and units[k - 2].category == "actions":
+            out[k] = Unit(u.start, u.end, "word", u.tokens[0].word, u.tokens)
+    return out
+
+
 def _units(tokens: list[Token]) -> list[Unit]:
     units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
                    _the_path_of_another, _swerved_into_a_road, _pulled_in_or_out, _one_more_of_the_kind,
-                   _a_lane_then_whom_it_is_behind, _paint_of_one, _a_label_then_what_it_is):
+                   _a_lane_then_whom_it_is_behind, _paint_of_one, _a_label_then_what_it_is, _a_queue_run_into):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
 
@@ -1803,9 +1815,11 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     'parked right at the corner' says where exactly, not which side."""
     span = tuple(tokens[m.start:m.end])
     nxt = tokens[m.end].word if m.end < len(tokens) and tokens[m.end].sentence == span[-1].sentence else ""
-    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and \
-            tokens[m.start - 1].word.endswith("ed") and nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
-        return [Unit(m.start, m.end, "word", "right", span)]
+    if m.category == "positions" and len(span) == 1 and span[0].word == "right" and m.start > 0 and (
+            tokens[m.start - 1].word.endswith("ed") or m.start > 1 and tokens[m.start - 2].word.endswith("ed") and
+            tokens[m.start - 1].word in ("up", "in", "over", "down")) and \
+            nxt in ("at", "in", "by", "on", "next", "outside", "beside"):
+        return [Unit(m.start, m.end, "word", "right", span)]  # ("pulled up right on the line": exactly there)
     after = [t.word for t in tokens[m.end:m.end + 3]]
     if m.category == "actions" and m.end - m.start == 1 and span[0].word.endswith("ed") and \
             span[0].word != span[0].base and m.start > 0 and tokens[m.start - 1].word in ("a", "an", "one", "the") \
@@ -1960,6 +1974,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                 ["car"], ["vehicle"], ["van"], ["cab"], ["taxi"], ["suv"])):
         return [Unit(m.start, m.end, "positions", "on_board", span)]  # "kids arguing in the back", "two children
         # were in the back of the car": my passengers
+    if m.category == "positions" and m.meaning == "behind" and [t.word for t in span][:1] == ["in"] and \
+            span[-1].word in ("back", "rear") and after[:1] in (["seat"], ["seats"]):
+        return [Unit(m.start, m.end, "positions", "on_board", span)]  # "son in back seat", "kids in the rear seat"
     if m.category == "actions" and m.start > 1 and tokens[m.start - 1].word in ("parallel", "bay", "reverse") and \
             tokens[m.start - 2].word in OWNERS | POSSESSIVES | {"the", "a"}:
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "your parallel park was fine": a manoeuvre named
@@ -3194,6 +3211,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             stage += 1
             condition = True
             continue
+        if u.category == "comma" and _placed_by_the_ego_next(current, units, k):
+            current.append(u)  # "V2 (Suzuki m/cycle), following V1,": where the one just named is, no new subject
+            continue
         if u.category == "comma" and _a_place_said_after(out, current, link):
             out[-1].units.extend(current)  # "one car stopped at the light, on my left, and the ambulance went
             current, link = [], ","  # round it": where the car was, not where the ambulance went
@@ -3402,8 +3422,9 @@ def _what_a_label_is(current: list[Unit], units: list[Unit], k: int) -> bool:
 
 def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
     """'A pedestrian, a child, crosses', 'three pedestrians (two adults and a child) cross': nouns of the first
-    one's kind between two commas, as many as it counts, and then the verb, say what it is or who its members are;
-    a list goes on with 'and' or another noun ('a car, a bus and a van')."""
+    one's kind between two commas, as many as it counts, and then the verb or a place ('a van, a white Transit,
+    behind us'), say what it is or who its members are; a list goes on with 'and' or another noun ('a car, a bus
+    and a van')."""
     if not current or _has_verb(current) or current[-1].category != "agents" or current[-1].meaning in ("ego", "none"):
         return False
     group = current[-1]
@@ -3429,7 +3450,7 @@ def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
         elif x.category in ("numbers", "number") or x.word in ("a", "an"):
             count = _word_number(x.tokens[0]) if x.word not in ("a", "an") else 1
         elif x.category == "comma" and count is None:
-            return named == wanted and j + 1 < len(units) and units[j + 1].category == "actions"
+            return named == wanted and j + 1 < len(units) and _goes_on_with_its_verb_or_place(units[j + 1])
         elif not (x.word == "and" and count is None or x.category in ("word", "behaviours") and count is not None
                   and x.word not in lexicon().function_words):
             return False
@@ -3438,11 +3459,36 @@ def _closed_apposition(current: list[Unit], units: list[Unit], k: int) -> bool:
 
 
 def _closed_after(units: list[Unit], i: int) -> bool:
-    """From the noun at i, a tail with no verb or other agent up to a comma, and the verb right after it."""
+    """From the noun at i, a tail with no verb or other agent up to a comma, and the verb (or a place) right after
+    it."""
     j = i + 1
     while j < len(units) and units[j].category not in ("comma", "actions", "agents", "sequence"):
         j += 1
-    return j + 1 < len(units) and units[j].category == "comma" and units[j + 1].category == "actions"
+    return j + 1 < len(units) and units[j].category == "comma" and _goes_on_with_its_verb_or_place(units[j + 1])
+
+
+def _goes_on_with_its_verb_or_place(u: Unit) -> bool:
+    """After an apposition's closing comma, what the noun does ('brakes', 'failed to stop') or where it is ('behind
+    us'): the sentence goes on about the one named, no list goes on."""
+    return u.category in ("actions", "positions") or u.category == "word" and u.word.endswith("ed")
+
+
+def _placed_by_the_ego_next(current: list[Unit], units: list[Unit], k: int) -> bool:
+    """'a van, a white Transit, behind us,', 'V2 (motorcycle), following V1.': after a noun phrase with no verb, a
+    place said by the ego alone between commas (or up to the sentence's end) places that noun; the ego is only
+    where it is from."""
+    if not current or _has_verb(current) or current[-1].category != "agents" or current[-1].meaning == "ego" or \
+            k + 2 >= len(units) or units[k + 1].category != "positions":
+        return False
+    sentence = units[k].tokens[0].sentence
+    j = k + 1
+    if not (EGO_WORDS | SPEAKERS) & {t.word for t in units[j].tokens[1:]}:  # ("behind us" is one unit, "following V1" two)
+        j += 1
+        while j < len(units) and units[j].category == "word" and units[j].word in ("the", "my", "our", "of"):
+            j += 1
+        if j >= len(units) or units[j].category != "agents" or units[j].meaning != "ego":
+            return False
+    return j + 1 == len(units) or units[j + 1].category == "comma" or units[j + 1].tokens[0].sentence != sentence
 
 
 def _a_place_said_after(out: list[Clause], current: list[Unit], link: str) -> bool:
@@ -6116,6 +6162,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 clause_units[k - 1].word in UNABLE) and k + 1 < len(clause_units) and \
                 clause_units[k + 1].word in ("over", "across", "out", "into", "left", "right", "past", "around", "round"):
             return  # "so I can't move over": a lane change it could not make, not a stop ("couldn't move": stuck)
+        if action == "stop" and clause_units is not None and k is not None and u.tokens[0].word == "stop" and (
+                [x.word for x in clause_units[max(0, k - 1):k]] == ["can"] and
+                {"so", "what", "that"} & {t.word for t in r.tokens[max(0, u.start - 4):u.start - 1]} or
+                [x.word for x in clause_units[max(0, k - 2):k]] == ["able", "to"] and k > 2 and
+                clause_units[k - 3].word in ("be", "are", "is", "am", "re")):
+            return  # "ride so you can stop", "slow enough to be able to stop": a stop one could make, none made (not
+            # "car behind also can stop", where 'can' tells it did)
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
@@ -7602,6 +7655,36 @@ def _a_door_opened_from_inside(r: _Reader) -> None:
         if "door" in after and set(after[:3]) & DOOR_OPENING:
             r.entities.remove(e)
             r.notes.append(f"read '{e.head}' who opens a door as one inside the vehicle, no one on foot")
+
+
+ANY_PERSON = {"pedestrian", "ped", "person", "someone", "somebody"}
+ONE_MORE = {"another", "other", "second", "third", "more", "also", "too", "again", "different", "further", "extra"}
+
+
+def _the_same_one_again(r: _Reader) -> None:
+    """'Client stopped for a pedestrian ... let an elderly gentleman cross', 'Lead obj: car, sudden stop. Driver
+    note: Car in front just stopped sharp': one named again with 'a', or bare at its clause's start, in a later
+    sentence of the same stage, and said nothing new of (no place or doing the first was not said to have), is that
+    one; unless its sentence says it is one more ('another', 'a second', 'also'), or it is named by another noun
+    than the first ('a man' after 'a woman'; 'pedestrian', 'someone', 'vehicle' name any)."""
+    for e in list(r.entities):
+        if e.is_ego or e.count != 1 or e.said_at < 1 or e.definite or e.parent is not None or e.label or \
+                e.relative_to is not None or e not in r.entities:
+            continue
+        said = _sentence(r.tokens, r.tokens[e.said_at].sentence)
+        lead = [t.word for t in said if e.said_at - 3 <= t.index < e.said_at]
+        bare = said[0].index == e.said_at or r.tokens[e.said_at - 1].word in (",", ":")
+        if not ({"a", "an"} & set(lead) or bare) or ONE_MORE & {t.word for t in said}:
+            continue
+        done = {(a[4], a[5]) for a in e.actions}
+        first = next((x for x in r.entities if x is not e and not x.is_ego and x.type == e.type and x.count == 1 and
+                      0 <= x.said_at < said[0].index and x.stage == e.stage and x.parent is None and
+                      (x.head == e.head or {x.head, e.head} & (ANY_PERSON | {"vehicle"})) and
+                      e.features <= x.features and done <= {(a[4], a[5]) for a in x.actions}), None)
+        if first is not None:
+            first.aliases.add(e.head)
+            _taken_over(r, e, first)
+            r.notes.append(f"read '{e.head}' as the {first.head} named before: nothing new is said of it")
 
 
 def _passing_mentions(r: _Reader) -> None:
@@ -10009,6 +10092,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _place_in_queue(r)
     _sitting_behind_a_stopped_ego(r)
     _a_door_opened_from_inside(r)
+    _the_same_one_again(r)
     _passing_mentions(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
@@ -10294,7 +10378,12 @@ def _sees_first(r: _Reader, first: Entity) -> bool:
 
 TOLD_BY_IT = (("in", "front", "of", "it"), ("ahead", "of", "it"), ("behind", "it"), ("on", "its", "right"),
               ("on", "its", "left"), ("from", "its", "right"), ("from", "its", "left"), ("to", "its", "right"),
-              ("to", "its", "left"), ("its", "path"), ("across", "its", "front"))
+              ("to", "its", "left"), ("its", "path"), ("across", "its", "front"), ("alongside", "it"))
+TOLD_BY_ITS_DRIVER = tuple((*place, it) for it in ("her", "him") for place in (
+    ("in", "front", "of"), ("ahead", "of"), ("behind",), ("past",), ("round",), ("around",), ("alongside",))) + tuple(
+    (prep, its, side) for its in ("her", "his") for prep in ("on", "from", "to") for side in ("right", "left"))
+# ("a Jazz waiting at the stop line; a cyclist squeezed past her": the vehicle, as its driver, when no one was
+# named who 'her' could be)
 
 
 def _told_by_it(r: _Reader, first: Entity) -> bool:
@@ -10302,9 +10391,19 @@ def _told_by_it(r: _Reader, first: Entity) -> bool:
     'on its right'): the vehicle a log entry is about."""
     return first.type in V.EGO_TYPES and first.count == 1 and first.parent is None and not first.generic and \
         not first.features & (HEADLINE_PLACES | SIDE_PLACES) and first.relative_to is None and \
-        _says_any([t.word for t in r.tokens], TOLD_BY_IT) and \
+        (_says_any([t.word for t in r.tokens], TOLD_BY_IT) or _told_by_its_driver(r, first)) and \
         not any(e.is_ego and (e.aliases or e.type != "car") for e in r.entities) and \
         all(e is first or e.type in V.VULNERABLE_TYPES or e.key > first.key for e in r.entities if not e.is_ego)
+
+
+def _told_by_its_driver(r: _Reader, first: Entity) -> bool:
+    """'her' or 'him' placing another ('past her', 'on his left') names the vehicle by its driver where no person
+    (but a rider) was named before it, nor 'she' or 'he' said."""
+    words = [t.word for t in r.tokens]
+    at = next((k for k in range(len(words)) for p in TOLD_BY_ITS_DRIVER if tuple(words[k:k + len(p)]) == p), None)
+    return at is not None and first.said_at < at and not {"she", "he"} & set(words[:at]) and not any(
+        e.type == "pedestrian" or e.head in DRIVERS and e.type not in V.TWO_WHEELER_TYPES
+        for e in r.entities if 0 <= e.said_at < at)  # ("a bloke on a bike came up behind her": he rides)
 
 
 SIDE_PLACES = {"side_left", "side_right", "front_left", "front_right", "back_left", "back_right", "from_left",
