@@ -12435,3 +12435,71 @@ def test_a_stop_one_could_make_and_a_queue_run_into_are_no_stop_of_its_own(promp
 ])
 def test_a_vehicle_the_others_are_placed_by_as_her_or_him_is_the_one_told_from(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I honked at a cyclist. There was a cyclist riding on the shoulder on my right, a bit ahead of me, and I gave "
+     "him room.", [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_right")]),
+    ("I saw a van. A van pulled out of the side road on my left.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),
+])
+def test_one_first_named_with_nothing_said_of_it_is_the_one_named_again_where_it_is_told_of(prompt, expected):
+    assert agents(prompt) == expected
+
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The VUT approaches a stationary target vehicle in its own lane. Single target, nothing else in the scene.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("Restrained driver of car travelling approx 30mph, struck on passenger side by a van pulling out of a side road "
+     "on his left, van going straight across.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]),
+    ("MOI: pt front seat passenger in car that pulled out of a give way junction, turning right, and was T-boned "
+     "by a car coming along the main road from the left. Speed of other vehicle est 40mph.",
+     [("car", "turn_right", "ego"), ("car", "go_straight", "road_of_left_turn")]),
+    ("Pt rider of motorcycle on main road. Car coming the other way turned right across his path into a side road. "
+     "Car driver walking wounded, seen by 2nd crew.",
+     [("motorcycle", "go_straight", "ego"), ("car", "turn_right", "road_of_straight")]),
+])
+def test_one_named_again_bare_or_by_a_shorter_name_is_the_one_told_of(prompt, expected):
+    assert sorted(agents(prompt)) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Vehicle B (insured) was traveling in the left lane. Vehicle A, a bus, was stopped in the right lane ahead of "
+     "Vehicle B.", [("car", "go_straight", "ego"), ("bus", "stop", "front_right")]),
+    ("V1 (our insured, a 2019 Camry) turned left at the lights. V2 came the other way. Driver of the Camry states "
+     "the sun was in her eyes.", [("car", "turn_left", "ego"), ("car", "go_straight", "road_of_straight")]),
+    ("See sketch. V1, the insured's Honda, turned left at the lights. V2 came the other way.",
+     [("car", "turn_left", "ego"), ("car", "go_straight", "road_of_straight")]),
+])
+def test_the_insured_vehicle_of_a_claim_is_the_ego(prompt, expected):
+    assert sorted(agents(prompt)) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Missing: bus pulling out from a stop into ego lane, front right of SV.",
+     [("bus", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]),
+    ("LVB: the SV ahead in the ego lane decelerates to a standstill.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+])
+def test_the_subject_vehicle_beside_an_ego_lane_is_the_ego_unless_it_is_placed(prompt, expected):
+    assert sorted(agents(prompt)) == sorted(expected)
+
+
+def test_pulling_off_the_shoulder_into_the_lane_cuts_in():
+    assert sorted(agents("V1 was traveling in the right lane of a two-lane highway. V2, a pickup that had been "
+                         "disabled on the right shoulder ahead of V1, pulled suddenly off the shoulder into V1's "
+                         "lane.")) == [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
+
+
+def test_the_reporting_person_driving_a_car_named_bare_drives_it():
+    assert sorted(agents("RP driving grey Qashqai in middle lane, ambulance on blues came up behind her.")) == [
+        ("ambulance", "go_straight", "back"), ("car", "go_straight", "ego")]
+
+
+def test_the_turning_vehicle_is_the_one_told_to_turn():
+    assert sorted(agents("The vehicle under test shall be a goods vehicle. It shall make a right turn at the "
+                         "junction. A bicycle shall travel straight ahead alongside it on its right-hand side, so "
+                         "that it would be struck by the turning vehicle.")) == [
+        ("cyclist", "go_straight", "right"), ("truck", "turn_right", "ego")]

@@ -996,10 +996,12 @@ def _lines(text: str) -> str:
             # vehicles.", "Triggering condition: a child steps out": a heading over what it names
         told = ("ego" in [w.lower() for w in value.split()[:2]] and len(value.split()) >= 5 or
                 lowered in ACCOUNT_KEYS and bool(
-                    {"i", "me", "my"} & {w.lower().strip(",.") for w in value.split()})) and \
+                    {"i", "me", "my"} & {w.lower().strip(",.") for w in value.split()}) or
+                lowered in ("scene", "description") and len(value.split()) >= 8 and not _verbless(value)) and \
             not gherkin
         # "Scene: ego turning left at a signalised intersection, one oncoming sedan going straight": the scene
-        # itself, no title (but a Gherkin scenario's name, told again by its steps)
+        # itself, no title (but a Gherkin scenario's name, told again by its steps); so "Scene: the subject
+        # vehicle travels straight ..., and a pedestrian crosses", a scene told with its verbs
         if lowered.split()[0] in TITLE_KEYS and lowered not in PLAIN_KEYS and not told or \
                 lowered.startswith("crossing type") or k == 0 and \
                 CASE_NUMBER.fullmatch(key) and not _names_agent(key) and not line.rstrip().endswith((".", "!", "?")):

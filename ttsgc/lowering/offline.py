@@ -223,17 +223,41 @@ class _Reader:
 
 def _subject_vehicle_is_ego(tokens: list[Token]) -> bool:
     """Crash-typology papers call the vehicle under study the subject vehicle (SV) and the others principal other
-    vehicles (POV); scenario specs that also name an ego use SV1, SV2 for surrounding vehicles."""
+    vehicles (POV); scenario specs that also name an ego use SV1, SV2 for surrounding vehicles. 'Into the ego
+    lane, front right of SV' names a lane, not an ego; 'the SV ahead in the ego lane' places a surrounding one."""
+    placed = any(t.word == "sv" and k + 1 < len(tokens) and tokens[k + 1].word in (
+        "ahead", "behind", "in", "on", "beside", "alongside", "next", "travelling", "traveling", "drives", "driving")
+                 for k, t in enumerate(tokens))
     return any(t.word == "sv" and not t.label for t in tokens) and not any(
-        t.word == "ego" or (t.word == "sv" and t.label) for t in tokens)
+        t.word == "ego" and (placed or k + 1 == len(tokens) or tokens[k + 1].word not in ("lane", "lanes", "path"))
+        or (t.word == "sv" and t.label) for k, t in enumerate(tokens))
 
 
 def _first_numbered_vehicle(tokens: list[Token]) -> str:
     """Collision reports number the vehicles (V1, Vehicle 2, Unit 1) and tell the scene of V1: with no ego and no
-    speaker named, V1 is the ego ('' when the text names one, or numbers no vehicle 1)."""
-    if any(t.word in ("ego", "sv", "vut", "sut", "av") or t.word in SPEAKERS for t in tokens):
+    speaker named, V1 is the ego ('' when the text names one, or numbers no vehicle 1). An adjuster's 'Vehicle B
+    (insured)', 'V1 (our insured, a Camry)' names the one the claim is told from: that one is the ego, and 'our'
+    before the insured is no speaker on the road."""
+    insured = next((t.label for k, t in enumerate(tokens) if t.label and k + 2 < len(tokens) and
+                    tokens[k + 1].word == "," and "insured" in {x.word for x in tokens[k + 2:k + 4]}), "")
+    if any(t.word in ("ego", "sv", "vut", "sut", "av") or t.word in SPEAKERS and not (
+            insured and t.word == "our" and tokens[k + 1].word == "insured") for k, t in enumerate(tokens)):
         return ""
-    return "v1" if any(t.label == "v1" for t in tokens) else ""
+    return insured or ("v1" if any(t.label == "v1" for t in tokens) else "")
+
+
+def _without_the_insured_aside(tokens: list[Token]) -> list[Token]:
+    """'V1 (our insured, a Camry) was northbound': once V1 is read as the ego, the aside that made it so is said;
+    left in, it stands between the ego and what it is ('V1, a Camry, was')."""
+    for k, t in enumerate(tokens[:-3]):
+        if t.word == "ego" and tokens[k + 1].word == ",":
+            end = k + 2 + (tokens[k + 2].word in ("our", "the"))
+            if tokens[end].word == "insured" and not tokens[end].possessive:  # (not "V1, the insured's Honda,")
+                comma = end + 1 < len(tokens) and tokens[end + 1].word == ","
+                goes_on = comma and end + 2 < len(tokens) and tokens[end + 2].word in ("a", "an")  # "..., a Camry,"
+                kept = tokens[:k + 1 + goes_on] + tokens[end + 1 + comma:]
+                return [replace(x, index=i) for i, x in enumerate(kept)]
+    return tokens
 
 
 EMERGENCY_SIGNS = {"siren", "sirens", "blue", "blues", "emergency", "ambulance", "paramedic", "paramedics", "fire",
@@ -402,7 +426,8 @@ def _a_queue_run_into(units: list[Unit]) -> list[Unit]:
     for k, u in enumerate(units):
         if k > 1 and u.category == "actions" and u.tokens[0].word in ("queue", "queues") and \
                 units[k - 1].word in ("a", "the") and [t.word for t in units[k - 2].tokens][-2:] in (
-                    ["back", "of"], ["rear", "of"], ["tail", "of"], ["end", "of"]) and units[k - 2].category == "actions":
+                    ["back", "of"], ["rear", "of"], ["tail", "of"], ["end", "of"]) and \
+                units[k - 2].category == "actions":
             out[k] = Unit(u.start, u.end, "word", u.tokens[0].word, u.tokens)
     return out
 
@@ -3243,7 +3268,7 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             # "I was driving my vehicle, a grey Astra, west": what the ego is, not another car
             new_noun = _has_agent(current) and not only_ego and not labelled and _starts_noun(units, k + 1)
             new_noun = new_noun or _has_agent(current) and nxt is not None and nxt.word in (
-                "he", "she", "they") and k + 2 < len(units) and units[k + 2].word in COPULAS | {"be"}
+                "he", "she", "they", "there") and k + 2 < len(units) and units[k + 2].word in COPULAS | {"be"}
             # "I'm in lane 1, he's in lane 2 and starts drifting": a new subject
             joined = nxt is not None and nxt.category == "word" and _has_agent(current) and nxt.word in (
                 "and", "but", "while", "whilst", "so", "where", "which", "who")
@@ -3478,12 +3503,12 @@ def _placed_by_the_ego_next(current: list[Unit], units: list[Unit], k: int) -> b
     place said by the ego alone between commas (or up to the sentence's end) places that noun; the ego is only
     where it is from."""
     if not current or _has_verb(current) or current[-1].category != "agents" or current[-1].meaning == "ego" or \
-            k + 2 >= len(units) or units[k + 1].category != "positions":
+            k + 1 >= len(units) or units[k + 1].category != "positions":
         return False
     sentence = units[k].tokens[0].sentence
     j = k + 1
-    if not (EGO_WORDS | SPEAKERS) & {t.word for t in units[j].tokens[1:]}:  # ("behind us" is one unit, "following V1" two)
-        j += 1
+    if not (EGO_WORDS | SPEAKERS) & {t.word for t in units[j].tokens[1:]}:  # "behind us" is one unit
+        j += 1  # ("following V1" two)
         while j < len(units) and units[j].category == "word" and units[j].word in ("the", "my", "our", "of"):
             j += 1
         if j >= len(units) or units[j].category != "agents" or units[j].meaning != "ego":
@@ -6163,12 +6188,13 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                 clause_units[k + 1].word in ("over", "across", "out", "into", "left", "right", "past", "around", "round"):
             return  # "so I can't move over": a lane change it could not make, not a stop ("couldn't move": stuck)
         if action == "stop" and clause_units is not None and k is not None and u.tokens[0].word == "stop" and (
-                [x.word for x in clause_units[max(0, k - 1):k]] == ["can"] and
-                {"so", "what", "that"} & {t.word for t in r.tokens[max(0, u.start - 4):u.start - 1]} or
+                [x.word for x in clause_units[max(0, k - 1):k]] == ["can"] and (
+                    {"so", "what", "that"} & {t.word for t in r.tokens[max(0, u.start - 4):u.start - 1]} or
+                    [x.word for x in clause_units[k + 1:k + 3]] == ["in", "time"]) or
                 [x.word for x in clause_units[max(0, k - 2):k]] == ["able", "to"] and k > 2 and
                 clause_units[k - 3].word in ("be", "are", "is", "am", "re")):
-            return  # "ride so you can stop", "slow enough to be able to stop": a stop one could make, none made (not
-            # "car behind also can stop", where 'can' tells it did)
+            return  # "ride so you can stop", "slow enough to be able to stop", "at 25 you can stop in time": a stop
+            # one could make, none made (not "car behind also can stop", where 'can' tells it did)
         if e.is_ego and action in ("cut_in", "move", "lane_change") and clause_units is not None and k is not None \
                 and _towards_an_edge(clause_units[k + 1:k + 5]):
             action, direction = "move", None  # "you kept drifting over towards the kerb": within the lane
@@ -7665,26 +7691,84 @@ def _the_same_one_again(r: _Reader) -> None:
     """'Client stopped for a pedestrian ... let an elderly gentleman cross', 'Lead obj: car, sudden stop. Driver
     note: Car in front just stopped sharp': one named again with 'a', or bare at its clause's start, in a later
     sentence of the same stage, and said nothing new of (no place or doing the first was not said to have), is that
-    one; unless its sentence says it is one more ('another', 'a second', 'also'), or it is named by another noun
-    than the first ('a man' after 'a woman'; 'pedestrian', 'someone', 'vehicle' name any)."""
+    one; so is one of which the first mention said nothing ('honked at a cyclist ... a cyclist riding on the
+    shoulder'), told where it is said. Not when its sentence says it is one more ('another', 'a second', 'also'),
+    or when it is named by another noun than the first ('a man' after 'a woman'; 'pedestrian', 'someone',
+    'vehicle' name any)."""
     for e in list(r.entities):
         if e.is_ego or e.count != 1 or e.said_at < 1 or e.definite or e.parent is not None or e.label or \
                 e.relative_to is not None or e not in r.entities:
             continue
         said = _sentence(r.tokens, r.tokens[e.said_at].sentence)
         lead = [t.word for t in said if e.said_at - 3 <= t.index < e.said_at]
-        bare = said[0].index == e.said_at or r.tokens[e.said_at - 1].word in (",", ":")
-        if not ({"a", "an"} & set(lead) or bare) or ONE_MORE & {t.word for t in said}:
+        bare = said[0].index == e.said_at or r.tokens[e.said_at - 1].word in (",", ":") or \
+            r.tokens[e.said_at].word == "other" and r.tokens[e.said_at - 1].word not in ("an", "one", "any", "no")
+        if not ({"a", "an", "single"} & set(lead) or bare) or \
+                ONE_MORE & {t.word for t in said if t.index != e.said_at}:  # (its own 'other' is not the ego)
             continue
         done = {(a[4], a[5]) for a in e.actions}
         first = next((x for x in r.entities if x is not e and not x.is_ego and x.type == e.type and x.count == 1 and
                       0 <= x.said_at < said[0].index and x.stage == e.stage and x.parent is None and
-                      (x.head == e.head or {x.head, e.head} & (ANY_PERSON | {"vehicle"})) and
-                      e.features <= x.features and done <= {(a[4], a[5]) for a in x.actions}), None)
-        if first is not None:
+                      (_one_name_in_the_other(x.head, e.head) or {x.head, e.head} & (ANY_PERSON | {"vehicle"})) and
+                      (e.features <= x.features and done <= {(a[4], a[5]) for a in x.actions} or
+                       not x.features and not x.actions and x.relative_to is None)), None)
+        if first is None and bare:
+            first = _named_bare_again(r, e)
+            if first is not None:
+                _fold(r, first, e)
+                r.notes.append(f"read '{e.head}' as the {first.head} named before: named bare, as a note names "
+                               f"the one it speaks of")
+            continue
+        if first is None:
+            continue
+        if e.features <= first.features and done <= {(a[4], a[5]) for a in first.actions}:
             first.aliases.add(e.head)
             _taken_over(r, e, first)
             r.notes.append(f"read '{e.head}' as the {first.head} named before: nothing new is said of it")
+        else:  # "honked at a cyclist ... there was a cyclist riding on the shoulder": the first said nothing
+            e.aliases |= first.aliases | {first.head}
+            _taken_over(r, first, e)
+            r.notes.append(f"read the {first.head} named before as '{e.head}': nothing was said of it there")
+
+
+DOING_NAMES = {"turning": {"turn", "turn_left", "turn_right", "u_turn"},
+               "merging": {"cut_in", "lane_change", "lane_left", "lane_right"}}
+
+
+def _named_by_what_it_does(r: _Reader) -> None:
+    """'It shall make a right turn ... it would be struck by the turning vehicle': 'the turning vehicle' is the
+    one told to turn, where one alone is."""
+    for e in list(r.entities):
+        if e.is_ego or not e.definite or e.count != 1 or e.said_at < 2 or e.label or \
+                r.tokens[e.said_at - 2].word != "the" or r.tokens[e.said_at - 1].word not in DOING_NAMES:
+            continue
+        doing = DOING_NAMES[r.tokens[e.said_at - 1].word]
+        doers = [x for x in r.entities if x is not e and x.count == 1 and any(a[4] in doing for a in x.actions)]
+        if len(doers) == 1 and (doers[0].type == e.type or e.head in GENERAL_BODIES):
+            _taken_over(r, e, doers[0])
+            r.notes.append(f"read 'the {r.tokens[e.said_at - 1].word} {e.head}' as the one said to do so")
+
+
+def _named_bare_again(r: _Reader, e: Entity) -> Entity | None:
+    """'a van pulling out of a side road on his left, van going straight across', 'Car coming the other way
+    turned right ... Car driver walking wounded': a note names one it told of before bare, by the same noun, and
+    goes on with what it does; only where that noun named one alone and the new words place it nowhere else."""
+    other = e.head.split()[0] == "other"  # "Speed of other vehicle est 40mph": the one that is not the ego
+    same = [x for x in r.entities if x is not e and not x.is_ego and (
+        x.head == e.head or other and x.type == e.type and x.count == 1 and 0 <= x.said_at < e.said_at)]
+    if len(same) != 1:
+        return None
+    first = same[0]
+    ok = first.type == e.type and first.count == 1 and 0 <= first.said_at < e.said_at and \
+        first.stage == e.stage and first.parent is None and not first.label and \
+        e.features - {"straight_on", "moves_out"} <= first.features
+    return first if ok else None
+
+
+def _one_name_in_the_other(a: str, b: str) -> bool:
+    """'target' and 'target vehicle', 'van' and 'delivery van': one name said again shorter or longer."""
+    x, y = a.split(), b.split()
+    return bool(x and y) and (set(x) <= set(y) or set(y) <= set(x))
 
 
 def _passing_mentions(r: _Reader) -> None:
@@ -8531,7 +8615,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 out[-1] = np
             continue
         if prev is not None and np.entity is not None and np.entity.is_ego and prev.entity is not None and \
-                prev.entity.label and not prev.entity.is_ego and \
+                prev.entity.label and not prev.entity.is_ego and np.first > prev.index + 1 and \
                 all(u.category == "comma" for u in units[prev.index + 1: np.first]):
             np.entity.label = prev.entity.label  # "V1 (the AV)": V1 is the ego
             if prev.entity in r.entities:
@@ -8807,6 +8891,8 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
     between = units[before[k].index + 1: np.first]
     if np.first < np.index and units[np.first].word == "of":
         between.append(units[np.first])  # "at the wheel of the ambulance": 'of' was read into the noun phrase
+    while len(between) > 1 and between[-1].category == "word" and between[-1].word in COLOURS:
+        between.pop()  # "RP driving grey Qashqai": a note's noun with no article keeps its colour outside it
     inside_seat = set(range(seat.first, seat.index + 1)) if seat is not None else set()
     wheel = any(u.word == "wheel" for u in between)
     return bool(between) and all(
@@ -9897,6 +9983,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     numbered = _first_numbered_vehicle(tokens)
     if numbered:
         tokens = [replace(t, word="ego", base="ego", label="") if t.label == numbered else t for t in tokens]
+        tokens = _without_the_insured_aside(tokens)
     r = _Reader(tokens, _units(tokens), notes=list(narration.notes))
     if numbered:
         r.notes.append(f"read {numbered.upper()} as the ego: the report numbers its vehicles and names no ego")
@@ -10093,6 +10180,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _sitting_behind_a_stopped_ego(r)
     _a_door_opened_from_inside(r)
     _the_same_one_again(r)
+    _named_by_what_it_does(r)
     _passing_mentions(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
@@ -10608,8 +10696,9 @@ def _out_from_the_parked_row(r: _Reader) -> None:
             if "both" in (words[j] for j in span) or len(said) > 1:
                 return  # "parked cars on both sides": from either
             sides |= said
-    if len(sides) != 1 or any(not e.is_ego and "parked" in e.features for e in r.entities):
-        return  # (a parked vehicle named as an agent screens the crosser in its own way)
+    if len(sides) != 1 or any(not e.is_ego and "parked" in e.features and not e.uncounted for e in r.entities):
+        return  # (a parked vehicle named as an agent screens the crosser in its own way; "parked cars", never
+        # counted, are the row)
     side = sides.pop()
     for e in r.entities:
         if e.type != "pedestrian" or not any(a[4] == "cross" for a in e.actions) or \
