@@ -12503,3 +12503,67 @@ def test_the_turning_vehicle_is_the_one_told_to_turn():
                          "junction. A bicycle shall travel straight ahead alongside it on its right-hand side, so "
                          "that it would be struck by the turning vehicle.")) == [
         ("cyclist", "go_straight", "right"), ("truck", "turn_right", "ego")]
+
+
+def test_there_is_after_a_comma_opens_a_clause_of_its_own():
+    assert sorted(agents("I'm on I-75 southbound, there's a semi stopped on the right shoulder. I'm just driving, "
+                         "going past it in the right lane.")) == [("car", "go_straight", "ego"),
+                                                                  ("truck", "stop", "front_right")]
+
+
+def test_holding_ones_ground_is_going_on():
+    assert sorted(agents("You were in the middle lane, and that lorry just ahead of you in the left lane started "
+                         "coming over into your lane, and you hooted and held your ground.")) == [
+        ("car", "go_straight", "ego"), ("truck", "change_lane_to_right", "front_left")]
+
+
+def test_a_stop_anyone_could_make_in_time_is_none():
+    assert sorted(agents("Suppose you're driving down a street at 25 mph and a child suddenly dashes out from the "
+                         "right. At 25 you can stop in time.")) == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]
+
+
+def test_a_scene_key_told_with_its_verbs_is_the_scene_not_a_title():
+    assert sorted(agents("Triggering condition TC-07: low sun at dusk. Scene: the subject vehicle travels straight "
+                         "on a rural road, and a pedestrian crosses in front of it from the right. Hazardous "
+                         "behaviour: no braking is triggered.")) == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front_right")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "The ego drives on. A young man walks across the pedestrian crossing just in front of us.",
+    "The ego drives on. Two kids wait on the sidewalk ahead to the right, next to a zebra crossing. One of them "
+    "darts onto the crossing.",
+])
+def test_one_crossing_on_the_crossing_said_of_it_is_at_the_crosswalk(prompt):
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Carter drove his Audi straight across the crossroads against a red signal. A Corsa coming from his right had "
+     "a green light and was struck. Its driver, a 61-year-old grandmother, suffered a broken wrist.",
+     [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn")]),
+    ("Last week dad drove us to the cinema. At the crossroads we went straight on. A fire engine came from the road "
+     "on the left and turned left.",
+     [("car", "go_straight", "ego"), ("firetruck", "turn_left", "road_of_left_turn")]),
+])
+def test_a_person_who_says_who_someone_is_or_drives_the_teller_is_no_one_on_foot(prompt, expected):
+    assert sorted(agents(prompt)) == sorted(expected)
+
+
+def test_a_person_set_off_who_does_something_stays():
+    said = agents("The ego stops at the zebra. A woman, a mother of two, crosses in front of it.")
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in said
+
+
+def test_a_pedestrian_crossing_after_the_sentence_before_ends_is_a_person_crossing():
+    said = agents("Ego turns left at a 4-way intersection. One NPC car from the opposite lane going straight "
+                  "through; pedestrian crossing ahead on the crosswalk.")
+    assert ("pedestrian", "cross_the_road", "near_the_crosswalk") in said
+
+
+def test_i_and_you_said_only_inside_quotes_are_no_teller():
+    said = agents('The classic "sorry mate, I didn\'t see you". A driver is waiting to turn right at a crossroads '
+                  'with no lights. Once the oncoming car has gone by he turns.')
+    assert ("car", "turn_right", "ego") in said and ("car", "go_straight", "road_of_straight") in said
+    assert len(said) == 2

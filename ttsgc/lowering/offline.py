@@ -2141,6 +2141,13 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
         tokens[m.start - 2].word in ("at", "near", "by", "approaching", "approaches", "reaches", "reaching") and \
         nxt in ("while", "when", "as", "before", "after", ",", "and", "")  # "waits at a pedestrian crossing while
     # three children walk across": the crosswalk, no person crossing
+    at_the_crossing = at_the_crossing or len(span) > 1 and m.start >= 2 and nxt not in ("the", "a", "an", "from") and \
+        tokens[m.start - 2].sentence == span[0].sentence and (
+            tokens[m.start - 1].word == "the" and tokens[m.start - 2].word in (
+                "across", "over", "through", "onto", "into", "on", "along", "towards", "toward", "reaches",
+                "reaching", "approaching", "approaches") or tokens[m.start - 1].word in ("across", "over", "through",
+                                                                                         "onto"))
+    # "walks across the pedestrian crossing just in front of us", "goes through pedestrian crossing on red"
     counted = len(span) > 1 and span[-1].word == "crossing" and (span[0].word in ("pedestrians", "peds") or (
         m.start > 0 and (_word_number(tokens[m.start - 1]) or 0) >= 1))  # "two pedestrians crossing": people
     if m.category == "road" and [t.word for t in span] == ["crossing"] and prev is not None and \
@@ -6190,7 +6197,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and clause_units is not None and k is not None and u.tokens[0].word == "stop" and (
                 [x.word for x in clause_units[max(0, k - 1):k]] == ["can"] and (
                     {"so", "what", "that"} & {t.word for t in r.tokens[max(0, u.start - 4):u.start - 1]} or
-                    [x.word for x in clause_units[k + 1:k + 3]] == ["in", "time"]) or
+                    [x.word for x in clause_units[k + 1:k + 3]] == ["in", "time"] and
+                    [t.word for t in r.tokens[max(0, u.start - 2):u.start - 1]] == ["you"]) or
                 [x.word for x in clause_units[max(0, k - 2):k]] == ["able", "to"] and k > 2 and
                 clause_units[k - 3].word in ("be", "are", "is", "am", "re")):
             return  # "ride so you can stop", "slow enough to be able to stop", "at 25 you can stop in time": a stop
@@ -7788,6 +7796,33 @@ def _passing_mentions(r: _Reader) -> None:
             continue
         r.notes.append(f"read '{e.head}' as a passing mention: nothing is said of what it does or where it is")
         e.count = 0
+
+
+DRIVING_WORDS = {"drove", "drives", "drive", "driving"}
+
+
+def _people_said_in_passing(r: _Reader) -> None:
+    """'Its driver, a 61-year-old grandmother, suffered a broken wrist', 'Moss, a father of two, told
+    magistrates': a person set off after someone already named, of whom nothing is said, says who that one is;
+    'dad drove us to the cinema': one who drives the teller is at the ego's wheel. Neither is one on foot."""
+    if not any(not e.is_ego and e.count > 0 and _anything_said_of(e) for e in r.entities):
+        return
+    for e in r.entities:
+        if e.is_ego or e.type != "pedestrian" or e.count != 1 or e.said_at < 2 or e.features or \
+                e.relative_to is not None or any(x.relative_to is e for x in r.entities):
+            continue
+        said = _sentence(r.tokens, r.tokens[e.said_at].sentence)
+        before = [t.word for t in said if t.index < e.said_at]
+        after = [t.word for t in said if t.index > e.said_at + len(e.head.split()) - 1]
+        lead = next((k for k in range(len(before) - 1, -1, -1) if before[k] in ("a", "an")), None)
+        set_off = not e.actions and lead is not None and lead >= 2 and before[lead - 1] == "," and \
+            len(before) - lead <= 5 and (not after or after[0] in (",", "of"))
+        at_the_wheel = after[:1] and after[0] in DRIVING_WORDS and after[1:2] and after[1] in (
+            "us", "me", "my", "our") or after[:2] == ["was", "driving"] and after[2:3] and after[2] in ("us", "me")
+        if set_off or at_the_wheel and all(a[4] == "move" for a in e.actions):
+            e.count = 0
+            r.notes.append(f"left out: '{e.head}' " + ("says who someone named is" if set_off else
+                                                       "drives the teller's own vehicle"))
 
 
 def _in_its_sentence(r: _Reader, e: Entity, start: int, end: int) -> list[str]:
@@ -9774,6 +9809,10 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     lane_move = action in ("cut_in", "lane_change", "lane_left", "lane_right")
     if "screening" in f and side and action == "stop" and not f & {"behind", "level"}:
         return f"front_{side}", True  # parked at the kerb a crosser steps out from: no lane of the ego's direction
+    if crossing and "crosswalk" in e.features and "off_crosswalk" not in f and not f & {"behind", "back_left",
+                                                                                        "back_right"}:
+        return "near_the_crosswalk", False  # "two kids wait ahead to the right ... one darts onto the crossing": on
+        # the crossing said of it, wherever it waited
     for corner in ("front_left", "front_right", "back_left", "back_right"):
         if corner in f:
             return corner, False
@@ -9972,9 +10011,23 @@ def _name(prompt: str) -> str:
     return (" ".join(words[:10]) or "scene").lower().replace('"', "")[:80].strip()
 
 
+QUOTED = re.compile(r'["\u201c]([^"\u201d\n]{1,80})["\u201d]')
+FIRST_AND_SECOND_PERSON = re.compile(r"\b(?:i|me|we|us|you|my|our|your|i'm|i'd|i've|you're)\b", re.I)
+
+
+def _without_quoted_speakers(prompt: str) -> str:
+    """'The classic "sorry mate, I didn't see you". A driver is waiting to turn right ...': where 'I' and 'you'
+    are only ever said inside quotes, they are someone's words quoted, no teller in the scene."""
+    quotes = QUOTED.findall(prompt)
+    if not any(FIRST_AND_SECOND_PERSON.search(q) for q in quotes) or \
+            FIRST_AND_SECOND_PERSON.search(QUOTED.sub(" ", prompt)):
+        return prompt
+    return QUOTED.sub(lambda m: "" if FIRST_AND_SECOND_PERSON.search(m.group(1)) else m.group(0), prompt)
+
+
 def lower(prompt: str, seed: int = 0) -> Lowered:
     """Lower an English prompt into a Scenario; LoweringError when nothing in it can be read as a scene."""
-    narration = read_narration(rule_before_its_scene(prompt))
+    narration = read_narration(rule_before_its_scene(_without_quoted_speakers(prompt)))
     prompt = one_line_records(narration.text)
     tokens = tokenize(prompt)
     if not tokens:
@@ -10182,6 +10235,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_same_one_again(r)
     _named_by_what_it_does(r)
     _passing_mentions(r)
+    _people_said_in_passing(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
     if asked is not None and others:
