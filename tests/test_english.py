@@ -12567,3 +12567,21 @@ def test_i_and_you_said_only_inside_quotes_are_no_teller():
                   'with no lights. Once the oncoming car has gone by he turns.')
     assert ("car", "turn_right", "ego") in said and ("car", "go_straight", "road_of_straight") in said
     assert len(said) == 2
+
+
+def test_the_vehicle_an_account_opens_with_someone_riding_is_the_ego():
+    assert sorted(agents("Client was on his motorcycle heading west on Grand Ave. A white SUV in the adjacent left "
+                         "lane merged into his lane.")) == [("car", "change_lane_to_right", "left"),
+                                                             ("motorcycle", "go_straight", "ego")]
+
+
+def test_a_crews_log_names_its_own_vehicle_as_known():
+    assert sorted(agents("22:50, final loop. A runner darted out from between parked cars on our left and crossed "
+                         "directly in front of the shuttle. Hard stop.")) == [
+        ("bus", "stop", "ego"), ("pedestrian", "cross_the_road", "front_left")]
+
+
+def test_someone_on_board_is_no_one_on_the_road():
+    assert sorted(agents("We're in the left lane. An ambulance came up behind us with its sirens going. We moved "
+                         "over to the right lane. Someone on board filmed it.")) == [
+        ("ambulance", "go_straight", "back"), ("car", "change_lane_to_right", "ego")]

@@ -7801,6 +7801,25 @@ def _passing_mentions(r: _Reader) -> None:
 DRIVING_WORDS = {"drove", "drives", "drive", "driving"}
 
 
+def _the_crews_own(r: _Reader) -> None:
+    """'A runner ... crossed directly in front of the shuttle. Hard stop.': where the text speaks as 'we' and the
+    ego was supplied for a verb with no subject, a vehicle of another kind named with 'the' as one known, that
+    someone crosses in front of and that does nothing itself, is the crew's own: the ego is of its kind."""
+    ego = next((x for x in r.entities if x.is_ego), None)
+    if ego is None or ego.said_at >= 0 or ego.head != "ego" or not any(t.word in ("we", "us", "our")
+                                                                         for t in r.tokens):
+        return
+    for e in r.entities:
+        if e.is_ego or not e.definite or e.count != 1 or e.type == ego.type or e.type not in V.EGO_TYPES or \
+                e.features or e.actions or e.label or e.said_at < 3 or any(x.relative_to is e for x in r.entities) \
+                or [t.word for t in r.tokens[e.said_at - 3:e.said_at]] != ["front", "of", "the"]:
+            continue
+        ego.type = e.type
+        e.count = 0
+        r.notes.append(f"read 'the {e.head}' as the ego's own: a crew's log names it as known")
+        return
+
+
 def _people_said_in_passing(r: _Reader) -> None:
     """'Its driver, a 61-year-old grandmother, suffered a broken wrist', 'Moss, a father of two, told
     magistrates': a person set off after someone already named, of whom nothing is said, says who that one is;
@@ -10236,6 +10255,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _named_by_what_it_does(r)
     _passing_mentions(r)
     _people_said_in_passing(r)
+    _the_crews_own(r)
     others = [e for e in r.entities if not e.is_ego and e.count > 0]
     kind = asked[0] if asked is not None and not others else None
     if asked is not None and others:
@@ -10443,6 +10463,13 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if driver is not None and not driver_named:
         return driver  # "an eastbound driver on Park Road may not see a fire engine coming out": the one the case
         # is told from, as an audit or a rule names the road user it is about
+    ridden = next((e for e in ordered if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and
+                   e.said_at >= 2 and r.tokens[e.said_at - 1].word in ("his", "her", "their") and
+                   r.tokens[e.said_at - 2].word in ("on", "in", "riding", "driving") and
+                   r.tokens[e.said_at].sentence == r.tokens[0].sentence and
+                   not any(a[4] in ("stop", "block") for a in e.actions)), None)
+    if ridden is not None:
+        return ridden  # "Client was on his motorcycle heading west ...": the one the account opens riding
     named_first = next((e for e in ordered if not e.is_ego), None)
     anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e, own_lane=e is named_first) and (
         any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities) or
@@ -12179,6 +12206,12 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 _said_to_do_no_road_thing(r, e):
             e.count = 0  # "someone should fix that junction", "the workers at the depot say": nobody on the road
             r.notes.append(f"left out: '{e.head}' does nothing on the road")
+        if e.type == "pedestrian" and e.head in ANY_PERSON | {"passenger", "passengers"} and e.count == 1 and \
+                not e.actions and not e.features and not e.label and \
+                ([t.word for t in r.tokens[e.said_at + 1:e.said_at + 3]] == ["on", "board"] or
+                 [t.word for t in r.tokens[e.said_at + 1:e.said_at + 2]] == ["aboard"]):
+            e.count = 0  # "Someone on board filmed it": a passenger, nobody on the road
+            r.notes.append(f"left out: '{e.head}' is on board, not on the road")
         if e.type == "pedestrian" and (e.definite or _said_aboard(r, e)) and e.head in KIN and e.count > 0 and \
                 not e.actions and not e.features and not e.label and any(t.word in SPEAKERS for t in r.tokens):
             e.count = 0  # "we sat at the red light ... the kids were fascinated": the speaker's own, on board
