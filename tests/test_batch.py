@@ -130,6 +130,22 @@ def test_an_interrupted_batch_resumes_to_the_same_summary(one_worker, tmp_path, 
     _same_outputs(out, resumed)
 
 
+def test_a_pool_thread_left_running_does_not_hold_the_exit():
+    """The last guard after Ctrl-C: should an interrupted pool's thread not end in time, the process still
+    exits at once with its code and what it printed, where the interpreter would wait for the thread forever."""
+    program = ("import threading, sys\n"
+               "from ttsgc import runner\n"
+               "from ttsgc.cli import exit_process\n"
+               "stuck = threading.Thread(target=threading.Event().wait)\n"
+               "stuck.start()\n"
+               "runner._LEFT_RUNNING.append(stuck)\n"
+               "print('ttsgc: interrupted', file=sys.stderr)\n"
+               "exit_process(130)\n")
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    done = subprocess.run([sys.executable, "-c", program], env=env, capture_output=True, text=True, timeout=60)
+    assert (done.returncode, done.stderr) == (130, "ttsgc: interrupted\n")
+
+
 def test_json_lines_inputs_and_their_errors(tmp_path):
     good = tmp_path / "prompts.jsonl"
     scene = (EXAMPLES / "blocking.tsg").read_text()

@@ -7,7 +7,7 @@ from ttsgc.forward import forward
 
 code = forward(sys.argv[1:])
 if code is None:
-    from ttsgc.cli import main
+    from ttsgc.cli import exit_process, main
 
-    code = main(sys.argv[1:])
+    exit_process(main(sys.argv[1:]))
 sys.exit(code)

@@ -273,8 +273,9 @@ def run_batch(jobs: list[Job], out_dir: Path, workers: int | None = None, ray_ad
     durations = load_durations()
     todo = longest_first(todo, durations)
     took: dict[str, float] = {}
+    outcomes = runner.run(make_scene, todo, workers, ray_address, warm_up=warm_up)
     try:
-        for index, outcome in runner.run(make_scene, todo, workers, ray_address, warm_up=warm_up):
+        for index, outcome in outcomes:
             store(out_dir, outcome)
             rows[todo[index].id] = outcome.row
             if not outcome.finished:
@@ -285,6 +286,7 @@ def run_batch(jobs: list[Job], out_dir: Path, workers: int | None = None, ray_ad
             if progress:
                 progress(skipped + done, len(jobs), f"{todo[index].id}: {outcome.row['verdict']}")
     finally:
+        outcomes.close()
         save_durations(took)
     ordered = [rows[job.id] for job in jobs if job.id in rows]
     write_summary(out_dir, ordered)

@@ -749,6 +749,28 @@ def main(argv: list[str] | None = None) -> int:
             signal.signal(signal.SIGTERM, previous if previous is not None else signal.SIG_DFL)
 
 
+def command() -> None:
+    """The ttsgc command's entry point."""
+    exit_process(main())
+
+
+def exit_process(code: int) -> None:
+    """End this process with code: at once, streams flushed, when an interrupted pool's thread is still running,
+    as the interpreter would otherwise wait for it at exit without bound; else through the usual exit."""
+    import os
+
+    from ttsgc.runner import pool_left_running
+
+    if pool_left_running():
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except (OSError, ValueError):
+                pass
+        os._exit(code)
+    sys.exit(code)
+
+
 def _silence_stdout() -> None:
     """Point stdout at /dev/null so the interpreter's last flush does not fail on the closed pipe again."""
     import os

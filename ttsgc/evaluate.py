@@ -332,10 +332,14 @@ def evaluate(folder: Path, seeds: int = 5, maps=None, method: str = "offline", s
     jobs = [(case, seed, maps, method, simulate, synthesize) for case in cases for seed in range(seeds)]
     runs: list[Run | None] = [None] * len(jobs)
     warm_up = functools.partial(runner.warm_pipeline, maps)
-    for done, (index, run) in enumerate(runner.run(_run_job, jobs, workers, warm_up=warm_up), 1):
-        runs[index] = run
-        if progress:
-            progress(done, len(jobs), jobs[index][0].name)
+    outcomes = runner.run(_run_job, jobs, workers, warm_up=warm_up)
+    try:
+        for done, (index, run) in enumerate(outcomes, 1):
+            runs[index] = run
+            if progress:
+                progress(done, len(jobs), jobs[index][0].name)
+    finally:
+        outcomes.close()
     return runs
 
 

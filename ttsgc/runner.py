@@ -65,7 +65,9 @@ def warm_pipeline(maps=None, versions: tuple[str, ...] = ("1.3",)) -> None:
 def run(function: Callable[[Any], Any], jobs: Sequence[Any], workers: int | None = None,
         ray_address: str | None = None, warm_up: Callable[[], None] | None = None) -> Iterator[tuple[int, Any]]:
     """Yield (index in jobs, function(job)) as each job finishes. One worker runs in this process; more run
-    in a pool of spawned processes; ray_address ('local' starts a private Ray instance) sends them to Ray."""
+    in a pool of spawned processes; ray_address ('local' starts a private Ray instance) sends them to Ray.
+    The caller closes what this returns, even when stopped by an exception of its own: the workers end then,
+    not whenever the generator is collected, which may be after the interpreter has begun to wait for them."""
     if workers is not None and workers < 1:
         raise RunnerError(f"--workers must be at least 1, not {workers}")
     if ray_address:
@@ -102,21 +104,30 @@ def _on_pool(function, jobs, workers: int, warm_up) -> Iterator[tuple[int, Any]]
                 yield index, future.result()
         pool.shutdown(wait=True)  # idle workers exit at once, and no thread of the pool outlives it to stop a later fork
     except BaseException:  # interrupted, or the caller stopped: workers only compute, so end them at once
+        pool.shutdown(wait=False, cancel_futures=True)  # first, so that no job left is handed to a worker
         processes = list((getattr(pool, "_processes", None) or {}).values())
         for process in processes:
             process.terminate()
         for process in processes:
             process.join(timeout=5)
-        pool.shutdown(wait=False, cancel_futures=True)
         manager = getattr(pool, "_executor_manager_thread", None)
         if manager is not None:  # let the pool's own thread see them gone, so that it is not woken at the
-            manager.join(timeout=5)  # interpreter's exit through a pipe already closed (a traceback after Ctrl-C);
-            # bounded, as a worker ended holding the pool's queue lock can leave that thread waiting forever
+            manager.join(timeout=10)  # interpreter's exit through a pipe already closed (a traceback after Ctrl-C)
+            if manager.is_alive():  # a worker ended holding one of the pool's locks can leave it waiting forever
+                _LEFT_RUNNING.append(manager)
         raise
     finally:
         pool.shutdown(wait=False, cancel_futures=True)
         if forkable:
             gc.unfreeze()
+
+
+_LEFT_RUNNING: list = []  # the threads of interrupted pools that did not end in time
+
+
+def pool_left_running() -> bool:
+    """An interrupted pool's thread is still running: the interpreter, exiting, would wait for it unbounded."""
+    return any(thread.is_alive() for thread in _LEFT_RUNNING)
 
 
 def can_fork() -> bool:
