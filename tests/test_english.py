@@ -12238,6 +12238,17 @@ def test_passengers_on_the_top_deck_ride_in_the_bus_the_scene_is_told_from():
         ("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "right")]
 
 
+def test_passengers_of_a_driver_on_a_numbered_service_or_in_the_bus_lane_ride_a_bus():
+    said = ("At noon the 14 stopped at the zebra for an old man to cross, and the car behind us sat on its horn. Our "
+            "driver stayed calm and waited until he was over.")
+    assert ("bus", "stop", "ego") in agents(said)
+    assert ("bus", "change_lane_to_right", "ego") in agents(
+        "A van was parked in the bus lane again. Our driver had to pull out into the lane on the right.")
+    assert ("car", "change_lane_to_right", "ego") in agents(  # a ride with no service or bus lane: a car
+        "A van was parked on the shoulder again. Our driver had to pull out into the lane on the right.")
+    assert all(a[0] != "bus" for a in agents("Our driver took us along Route 9 and stopped at the red light."))
+
+
 @pytest.mark.parametrize("prompt, expected", [
     ("A two-axle truck stopped ahead.", [("car", "go_straight", "ego"), ("truck", "stop", "front")]),
     ("An 8-wheel tipper came the opposite way.",

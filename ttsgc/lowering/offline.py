@@ -11954,6 +11954,18 @@ def _said_with_a(r: _Reader, e: Entity) -> bool:
     return any(t.word in INDEFINITE for t in said)
 
 
+SERVICE_NUMBERED = {"route", "number", "no", "service"}
+SERVICE_GOES = {"stopped", "pulled", "was", "came", "went", "braked", "left", "out", "from", "into", "on", "today"}
+
+
+def _on_a_bus_route(words: list[str]) -> bool:
+    """'the 7 stopped at the zebra', 'the number 38', 'in the bus lane': a service named by its number, or the bus
+    lane it keeps to; with passengers who speak of their driver, what they ride is a bus, not a taxi."""
+    return any(w in SERVICE_NUMBERED and words[k + 1].isdigit() or w == "the" and words[k + 1].isdigit() and
+               k + 2 < len(words) and words[k + 2] in SERVICE_GOES or words[k:k + 2] == ["bus", "lane"]
+               for k, w in enumerate(words[:-1]))
+
+
 def _a_drivers_trade(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
     the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name; one who puts out
@@ -11974,8 +11986,10 @@ def _a_drivers_trade(r: _Reader) -> None:
     told = [t.word for t in r.tokens if not t.question]  # (not "what's the rule when a school bus is stopped with
     # its stop arm out?")
     crew = {"we", "us", "our"} & set(words)  # (a crew speaks as one)
-    aboard_a_bus = bool(crew) and _says_any(told, BUS_PASSENGERS_WORDS)  # "we were in the inside lane ... I was on
-    # the top deck", "the coach driver hit the horn": the bus its passengers ride in
+    driven = "read the narrator's driver as the ego" in r.notes and _on_a_bus_route(told)
+    aboard_a_bus = bool(crew) and _says_any(told, BUS_PASSENGERS_WORDS) or driven
+    # "we were in the inside lane ... I was on the top deck", "the coach driver hit the horn": the bus its
+    # passengers ride in; "the 7 stopped at the zebra ... Our driver stayed calm": the bus its driver drives
     at_its_wheel = _says_any(told, BUS_DRIVERS_WORDS)
     ours = [e for e in r.entities if e.type == "bus" and not e.is_ego and e.count == 1 and
             (e.definite or at_its_wheel and not _said_with_a(r, e)) and
@@ -11987,7 +12001,7 @@ def _a_drivers_trade(r: _Reader) -> None:
     trade = "truck" if _says_any(words, TRUCKERS_WORDS) else "bus" if at_its_wheel or aboard_a_bus else \
         "ambulance" if crew and _says_any(words, AMBULANCE_CREWS_WORDS) else \
         "firetruck" if crew and _says_any(words, FIRE_CREWS_WORDS) else None
-    if "ego" in words or trade is None or trade != "truck" and any(
+    if "ego" in words and not driven or trade is None or trade != "truck" and any(
             e.type == trade and not e.is_ego and not any(e is o for o in ours) for e in r.entities):
         return  # ("stopped behind a school bus with its stop arm out": that bus's arm)
     if ego is None and (set(words) & SPEAKERS or trade == "truck"):
