@@ -12238,6 +12238,16 @@ def test_passengers_on_the_top_deck_ride_in_the_bus_the_scene_is_told_from():
         ("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "right")]
 
 
+def test_what_the_teller_could_not_tell_had_happened_is_not_done():
+    assert agents("Car 31 stopped on a narrow street when a patrol car came up right behind it; it couldn't tell if it "
+                  "was being pulled over. The patrol car just passed it and kept going.") == [
+        ("car", "stop", "ego"), ("police", "go_straight", "back")]
+    assert agents("A patrol car came up right behind me; I wasn't sure if I was being pulled over. It passed me and "
+                  "kept going.") == [("car", "go_straight", "ego"), ("police", "go_straight", "back")]
+    assert ("car", "stop", "ego") in agents("A patrol car came up right behind me and I was sure it would pass. I "
+                                            "pulled over and stopped.")
+
+
 def test_passengers_of_a_driver_on_a_numbered_service_or_in_the_bus_lane_ride_a_bus():
     said = ("At noon the 14 stopped at the zebra for an old man to cross, and the car behind us sat on its horn. Our "
             "driver stayed calm and waited until he was over.")

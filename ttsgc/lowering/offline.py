@@ -4021,6 +4021,24 @@ def _believed(tokens: list[Token], t: Token) -> bool:
     return False
 
 
+DOUBTING = {"wondered", "wondering", "wonder", "unsure", "uncertain"}  # before 'if' or 'whether'
+DOUBTED_AFTER_NOT = {"tell", "know", "sure", "certain", "clear", "see"}  # 'could not tell if', 'was not sure whether'
+
+
+def _doubted(tokens: list[Token], t: Token) -> bool:
+    """A verb after 'could not tell if', 'was not sure whether', 'wondered if' in the same clause: what the teller
+    could not tell had happened, not what happened ('it couldn't tell if it was being pulled over')."""
+    k = t.index - 1
+    while k > 1 and tokens[k].sentence == t.sentence and t.index - k <= 8:
+        if tokens[k].word in (",", "but", "so", "and", "then", "because", "until", "when"):
+            return False
+        if tokens[k].word in ("if", "whether") and (tokens[k - 1].word in DOUBTING or tokens[k - 1].word in
+                                                   DOUBTED_AFTER_NOT and tokens[k - 2].word == "not"):
+            return True
+        k -= 1
+    return False
+
+
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
     """A question such as 'What happens if a truck runs a red light?' names no agent of the scene; the
     sentences after it describe the scene. 'Can someone explain this?', 'Why are people like this': the
@@ -4055,8 +4073,9 @@ def _hypothetical(tokens: list[Token], u: Unit) -> bool:
             before.word in ("once", "when", "whenever", "if") and any(
                 x.word == "you" for x in tokens[t.index + 1:] if x.sentence == t.sentence):
         return True  # "once someone's on a zebra, you stop": a rule of the road, anyone at any time
-    if u.category == "actions" and _believed(tokens, t):
-        return True  # "I thought the second one was turning": what the narrator wrongly expected
+    if u.category == "actions" and (_believed(tokens, t) or _doubted(tokens, t)):
+        return True  # "I thought the second one was turning": what the narrator wrongly expected; "wasn't sure
+        # if it was turning": what could not be told
     if u.category in ("actions", "sequence") and (_rule_of_the_road(tokens, t.sentence) or _counterfactual(tokens, t)
                                                   or _standing_advice(tokens, t.sentence)):
         return True  # "once someone's on a zebra, you stop and you wait"; "you'd have had to stop"
