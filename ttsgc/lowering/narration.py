@@ -1245,6 +1245,7 @@ def _named_driver(text: str, notes: list[str]) -> str:
     return _drivers_pronoun(text, notes) if names or "the ego" in text else text
 
 
+NARRATORS_DRIVER = "read the narrator's driver as the ego"  # the note that says a passenger tells the scene
 NOT_A_CAR_PART = r"(?![\s-]+(?:side|seat|door|window|mirror)\b)"  # "my driver side mirror": the car's, no person
 
 
@@ -1272,7 +1273,7 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
     for name in names:
         text = re.sub(rf"\b{re.escape(name)}'s\b", "the ego's", text)
         text = re.sub(rf"\b{re.escape(name)}\b", "the ego", text)
-    notes.append("read the narrator's driver as the ego")
+    notes.append(NARRATORS_DRIVER)
     return _drivers_pronoun(text, notes)
 
 

@@ -30,7 +30,7 @@ from functools import lru_cache
 from ttsgc import vocabulary as V
 from ttsgc.errors import ExitCode, TtsgcError
 from ttsgc.lowering.infer import infer_plan, language_allows_later_ego
-from ttsgc.lowering.narration import OTHER_PEOPLE, read_narration
+from ttsgc.lowering.narration import NARRATORS_DRIVER, OTHER_PEOPLE, read_narration
 from ttsgc.lowering.lexicon import (SIGNAL_COLOURS, TOO_LARGE, Match, Token, _lookup, _names_agent, _verbs, bodies,
                                     categories, compound_heads, crews, lexicon, loose_names, matches, one_line_records,
                                     read_number, rule_before_its_scene, tokenize, typologies)
@@ -4009,16 +4009,21 @@ def _asks_whether(tokens: list[Token], t: Token) -> bool:
 BELIEVING = {"thought", "believed", "assumed", "figured", "guessed", "presumed", "reckoned", "imagined", "expected"}
 
 
-def _believed(tokens: list[Token], t: Token) -> bool:
-    """A verb after 'I thought (that)' in the same clause: a belief of the narrator, not what happened."""
+def _opened_in_its_clause(tokens: list[Token], t: Token, opens) -> bool:
+    """opens(k) holds at one of the eight words before t in t's clause (no comma or conjunction between)."""
     k = t.index - 1
     while k > 0 and tokens[k].sentence == t.sentence and t.index - k <= 8:
         if tokens[k].word in (",", "but", "so", "and", "then", "because", "until", "when"):
             return False
-        if tokens[k].word in BELIEVING and tokens[k - 1].word in ("i", "we"):
+        if opens(k):
             return True
         k -= 1
     return False
+
+
+def _believed(tokens: list[Token], t: Token) -> bool:
+    """A verb after 'I thought (that)' in the same clause: a belief of the narrator, not what happened."""
+    return _opened_in_its_clause(tokens, t, lambda k: tokens[k].word in BELIEVING and tokens[k - 1].word in ("i", "we"))
 
 
 DOUBTING = {"wondered", "wondering", "wonder", "unsure", "uncertain"}  # before 'if' or 'whether'
@@ -4028,15 +4033,8 @@ DOUBTED_AFTER_NOT = {"tell", "know", "sure", "certain", "clear", "see"}  # 'coul
 def _doubted(tokens: list[Token], t: Token) -> bool:
     """A verb after 'could not tell if', 'was not sure whether', 'wondered if' in the same clause: what the teller
     could not tell had happened, not what happened ('it couldn't tell if it was being pulled over')."""
-    k = t.index - 1
-    while k > 1 and tokens[k].sentence == t.sentence and t.index - k <= 8:
-        if tokens[k].word in (",", "but", "so", "and", "then", "because", "until", "when"):
-            return False
-        if tokens[k].word in ("if", "whether") and (tokens[k - 1].word in DOUBTING or tokens[k - 1].word in
-                                                   DOUBTED_AFTER_NOT and tokens[k - 2].word == "not"):
-            return True
-        k -= 1
-    return False
+    return _opened_in_its_clause(tokens, t, lambda k: k > 1 and tokens[k].word in ("if", "whether") and (
+        tokens[k - 1].word in DOUBTING or tokens[k - 1].word in DOUBTED_AFTER_NOT and tokens[k - 2].word == "not"))
 
 
 def _hypothetical(tokens: list[Token], u: Unit) -> bool:
@@ -10236,7 +10234,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         pending = [e for e in r.entities[before:] if not e.is_ego] if verbless and clause.link in ("", ",") \
             else []
     _drivers_of_their_own(r)
-    if not ego_words or "read the narrator's driver as the ego" in narration.notes:
+    if not ego_words or NARRATORS_DRIVER in narration.notes:
         _protagonist_vehicle(r, driver_named=bool(ego_words))
     elif _EGO_SPEAKS.get() and not _speaker_on_the_road(r):
         _protagonist_vehicle(r, driver_named=False)  # "I watch drivers speed past the school ... a car speeding
@@ -12005,7 +12003,7 @@ def _a_drivers_trade(r: _Reader) -> None:
     told = [t.word for t in r.tokens if not t.question]  # (not "what's the rule when a school bus is stopped with
     # its stop arm out?")
     crew = {"we", "us", "our"} & set(words)  # (a crew speaks as one)
-    driven = "read the narrator's driver as the ego" in r.notes and _on_a_bus_route(told)
+    driven = NARRATORS_DRIVER in r.notes and _on_a_bus_route(told)
     aboard_a_bus = bool(crew) and _says_any(told, BUS_PASSENGERS_WORDS) or driven
     # "we were in the inside lane ... I was on the top deck", "the coach driver hit the horn": the bus its
     # passengers ride in; "the 7 stopped at the zebra ... Our driver stayed calm": the bus its driver drives
