@@ -12606,3 +12606,52 @@ def test_someone_on_board_is_no_one_on_the_road():
     assert sorted(agents("We're in the left lane. An ambulance came up behind us with its sirens going. We moved "
                          "over to the right lane. Someone on board filmed it.")) == [
         ("ambulance", "go_straight", "back"), ("car", "change_lane_to_right", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm creeping down the road, and the guy in front of me in a Subaru just stops dead.",
+     [("car", "go_straight", "ego"), ("car", "stop", "front")]),
+    ("The guy just behind us in a pickup honked.", [("car", "go_straight", "back"), ("car", "go_straight", "ego")]),
+])
+def test_a_driver_placed_then_in_his_vehicle_is_that_vehicle(prompt, expected):
+    assert sorted(agents(prompt)) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt", [
+    "A silver SUV waiting across the intersection is waving somebody through, nobody knows who.",
+    "A motorcycle sped past me. Half the claims started with someone misjudging the motorcycle's speed.",
+])
+def test_someone_nowhere_who_does_nothing_is_no_one_in_the_scene(prompt):
+    assert not [a for a in agents(prompt) if a[0] == "pedestrian"]
+
+
+def test_someone_placed_or_acting_stays():
+    assert ("pedestrian", "cross_the_road", "front") in agents("Someone is crossing in front of me.")
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("I'd had the semi eleven years. That morning a minivan was puttering along ahead of me, so I moved over to "
+     "the left lane to get round it.", ("truck", "change_lane_to_left", "ego")),
+    ("I've driven the bus for a good few years. A car pulled out in front of me.", ("bus", "go_straight", "ego")),
+])
+def test_the_vehicle_the_teller_has_had_for_years_is_the_ego(prompt, ego):
+    said = agents(prompt)
+    assert ego in said and len([a for a in said if a[2] == "ego"]) == 1
+
+
+def test_a_vehicle_had_in_front_for_years_is_not_the_tellers():
+    assert ("bus", "go_straight", "front") in agents("I had the bus in front of me for years.")
+
+
+@pytest.mark.parametrize("prompt, turn", [
+    ("Got to the big roundabout wanting to take the first exit, left. Cyclist already coming round from my right "
+     "so I waited for her. Then I went.", "turn_left"),
+    ("At the roundabout I took the third exit, right.", "turn_right"),
+])
+def test_a_roundabout_exit_said_by_side_turns_to_that_side(prompt, turn):
+    assert ("car", turn, "ego") in agents(prompt)
+
+
+def test_tucked_in_behind_is_following_not_cutting_in():
+    said = agents("A pickup leads through the closure slowly, ego tucked in right behind it.")
+    assert ("car", "go_straight", "ego") in said and ("car", "go_straight", "front") in said

@@ -341,6 +341,22 @@ def _kerb_sides(tokens: list[Token], units: list[Unit]) -> list[Unit]:
     return out
 
 
+def _exit_named_by_side(units: list[Unit]) -> list[Unit]:
+    """'take the first exit, left': a roundabout exit said by number, then by side; the side the text names is the
+    turn, whichever side the traffic keeps to."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "actions" or u.meaning not in EXIT_TURNS or "exit" not in [t.word for t in u.tokens] or \
+                {"left", "right"} & {t.word for t in u.tokens}:
+            continue
+        j = k + 1 + (k + 1 < len(units) and units[k + 1].category == "comma")
+        side = units[j] if j < len(units) else None
+        if side is not None and len(side.tokens) == 1 and side.tokens[0].word in ("left", "right"):
+            out[k] = Unit(u.start, u.end, u.category, f"turn_{side.word}", u.tokens)
+            out[j] = Unit(side.start, side.end, "word", side.word, side.tokens)  # said of the exit, no one's place
+    return out
+
+
 def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
     """'I signalled and moved out into the right lane', 'the host vehicle signals and changes lanes': 'signalled'
     right after the one who did it is their indicating, not a signalled junction."""
@@ -433,7 +449,8 @@ def _a_queue_run_into(units: list[Unit]) -> list[Unit]:
 
 
 def _units(tokens: list[Token]) -> list[Unit]:
-    units = _kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(_read_units(tokens))))))
+    units = _exit_named_by_side(_kerb_sides(tokens, _wanted_of_the_ego(_entering_in(_ages(_time_stamps(
+        _read_units(tokens)))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
@@ -596,6 +613,9 @@ def _pulled_in_or_out(units: list[Unit]) -> list[Unit]:
                 x.category == "agents" and x.meaning == "none" and x.tokens[-1].word == "stop" and
                 x.tokens[0].sentence == u.tokens[0].sentence for x in units[k + 1:k + 4]):
             out[k] = Unit(u.start, u.end, "actions", "stop", u.tokens)  # "pulls in to the bus stop": it stops there
+        if u.category == "actions" and u.meaning == "cut_in" and [t.base for t in u.tokens] in (
+                ["tuck", "in"], ["slot", "in"]) and place.category == "positions" and place.meaning == "behind":
+            out[k] = Unit(u.start, u.end, "actions", "move", u.tokens)  # "tucked in right behind it": following
         if pulled and u.tokens[1].word == "out" and place.word == "and" and k + 2 < len(units) and \
                 units[k + 2].category == "actions" and units[k + 2].meaning in ("sideways_left", "sideways_right"):
             out[k] = Unit(u.start, u.end, "word", "pulled out", u.tokens)
@@ -8652,6 +8672,24 @@ RIDING_ON = (["on"], ["riding"], ["astride"], ["rides"], ["rode"], ["ride"], ["i
              ["pedals"], ["pedalled"], ["pedaled"], ["pedaling"], ["pedalling"])  # "a man rides a bike": the cyclist
 
 
+def _placed_driver(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> NounPhrase | None:
+    """'the guy in front of me in a Subaru', 'some woman just behind us in a Prius': a driver placed, then 'in' the
+    vehicle he drives; the words between are only where he is (the ego named in them is no driver)."""
+    if not np.introduced or np.plural or np.entity is None or np.entity.type in V.VULNERABLE_TYPES:
+        return None
+    k = len(before) - 1
+    while k >= 0 and before[k].entity is not None and before[k].entity.is_ego:
+        k -= 1  # "in front of me": the ego in the place words
+    if k < 0 or before[k].entity is None or before[k].entity.head not in DRIVERS or before[k].entity.count != 1 \
+            or before[k].plural:
+        return None
+    between = units[before[k].index + 1: np.first]
+    placed = len(between) >= 2 and between[-1].word == "in" and any(u.category == "positions" for u in between) \
+        and all(u.category == "positions" or u.category == "agents" and u.meaning == "ego" or
+                u.word in ("of", "the", "to", "on", "at", "my", "our", "your") for u in between[:-1])
+    return before[k] if placed else None
+
+
 def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> list[NounPhrase]:
     """'VUT is a bus', 'the ego, a city bus,', 'SV1 is an oncoming truck, SV2 an oncoming car': the second noun
     says what the first is; it is no new agent."""
@@ -8662,6 +8700,10 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if np.entity in r.entities:  # "driving like a taxi driver", "it sounded like a truck": a comparison
                 r.entities.remove(np.entity)
             r.notes.append(f"left out: '{np.entity.head}' is only a comparison")
+            continue
+        driver = _placed_driver(units, out, np)
+        if driver is not None:  # "the guy in front of me in a Subaru": the Subaru, where the guy is
+            _fold(r, driver.entity, np.entity)
             continue
         prev = out[-1] if out else None
         if prev is not None and prev.entity is not None and np.entity is not None and np.introduced and \
@@ -8722,7 +8764,7 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             if np.entity in r.entities:  # "I was on patrol in a marked police vehicle": the ego's own vehicle
                 r.entities.remove(np.entity)
             continue
-        owned = np.introduced and _owned_by_the_teller(r, units, np)
+        owned = np.introduced and (_owned_by_the_teller(r, units, np) or _kept_for_years(units, np))
         if np.introduced and (_the_speakers_seat(r, units, np) or _the_one_the_speaker_was_on(units, np) or
                               _driven_with_no_subject(r, units, np) or owned):
             ego = _ego_entity(r, np.entity.stage)
@@ -9028,6 +9070,24 @@ def _owned_by_the_teller(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     return not any(e.is_ego and e.head not in FIRST_PERSON | {"ego"} or not e.is_ego and e is not np.entity and
                    e.type in V.EGO_TYPES for e in r.entities) and \
         all(t.sentence == sentence for t in r.tokens[:units[np.first].start] if t.word.isalpha())
+
+
+def _kept_for_years(units: list[Unit], np: NounPhrase) -> bool:
+    """'I'd had the semi eleven years', 'I've driven the bus for years': the vehicle the teller has long had or
+    driven is the one they tell of driving, the ego's own."""
+    if not _one_vehicle(np) or np.first < 2 or units[np.first].word not in ("the", "my", "our"):
+        return False
+    k = np.first - 1
+    if units[k].base not in ("have", "own", "drive"):
+        return False
+    while k > 0 and units[k - 1].category == "word" and units[k - 1].word in ("would", "have", "has", "had", "been"):
+        k -= 1
+    teller = k > 0 and units[k - 1].category == "agents" and units[k - 1].word in ("i", "we")
+    k = np.index + 1
+    while k < len(units) and (units[k].category == "numbers" or units[k].word in (
+            "for", "many", "a", "few", "some", "over", "nearly", "almost", "good")):
+        k += 1  # "for years", "eleven years", "for a good few years"
+    return teller and k < len(units) and units[k].word in ("years", "year", "months")
 
 
 ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", "sat", "driving"}
@@ -12252,6 +12312,11 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
                 e.head in NAMED_BY_ROLE:
             e.count = 0  # "driving like a proper lunatic he was", "the cop said it was 50/50": no one on foot
             r.notes.append(f"left out: '{e.head}' does nothing and is nowhere in the scene")
+        if e.type == "pedestrian" and e.head in ANYONE and e.count == 1 and not e.actions and not e.features and \
+                not e.label and e.relative_to is None and e.parent is None and \
+                not any(x.relative_to is e for x in r.entities):
+            e.count = 0  # "waving somebody through", "started with someone misjudging the speed": no one placed
+            r.notes.append(f"left out: '{e.head}' is no one in particular, doing nothing in the scene")
         if e.definite and e.count == 1 and e.type != "pedestrian" and not e.features and \
                 not [a for a in e.actions if a[2] > 0] and not e.label and e.relative_to is None and \
                 e.parent is None and e.named_of is None and not any(x.relative_to is e for x in r.entities) and \
