@@ -2263,7 +2263,7 @@ def test_coming_round_a_roundabout_is_driving_not_rounding_the_ego():
 
 
 def test_a_placed_vehicle_then_what_it_is_in_commas_is_one_agent():
-    assert agents("The car behind us, a grey hatchback, braked sharply.") == [
+    assert agents("The car behind us, a grey hatchback, braked sharply to a halt.") == [
         ("car", "go_straight", "ego"), ("car", "stop", "back")]
     assert len(agents("A car behind us, a bus and a van are all stopped.")) == 4  # a list, no apposition
 
@@ -12655,3 +12655,54 @@ def test_a_roundabout_exit_said_by_side_turns_to_that_side(prompt, turn):
 def test_tucked_in_behind_is_following_not_cutting_in():
     said = agents("A pickup leads through the closure slowly, ego tucked in right behind it.")
     assert ("car", "go_straight", "ego") in said and ("car", "go_straight", "front") in said
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A pickup following us also braked, no contact.", ("car", "go_straight", "back")),
+    ("At the crossroads a sedan coming from the left braked, TA 1.4 s.", ("car", "go_straight", "road_of_left_turn")),
+    ("The car in front braked hard.", ("car", "stop", "front")),
+    ("The car in front braked hard and stopped.", ("car", "stop", "front")),
+    ("The front car brake suddenly until stop.", ("car", "stop", "front")),
+    ("The car in front slammed on its brakes.", ("car", "stop", "front")),
+    ("The lead car brakes hard, down to a standstill.", ("car", "stop", "front")),
+])
+def test_braking_behind_or_across_slows_and_ahead_or_to_a_halt_stops(prompt, expected):
+    assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A pickup was coming from the road on our right. The pickup had to stop for us.",
+     ("car", "stop", "road_of_right_turn")),
+    ("A van came up behind me and had to stop.", ("car", "stop", "back")),
+    ("A van came up behind me and had to brake.", ("car", "go_straight", "back")),
+])
+def test_one_made_to_stop_stops_and_one_made_to_brake_drives_on(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_bare_verb_after_until_is_the_main_subjects():
+    said = lower("The ego follows the front car. The front car brakes suddenly until stop. Then the ego stops "
+                 "behind it.").scenario
+    assert [(a.name, a.action) for a in said.stages[0].agents] == [("ego", "go_straight"), ("c1", "stop")]
+    assert [(a.name, a.action) for a in said.stages[1].agents] == [("ego", "stop")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A postman stands on the footway to my right.", ("pedestrian", "on_the_sidewalk", "right")),
+    ("A postman pulled out in front of me.", ("car", "change_lane_to_right", "front_left")),
+])
+def test_people_named_by_their_round_are_on_foot_unless_at_a_wheel(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_the_system_is_the_egos_own_driving():
+    said = agents("A pickup in the center lane made a sudden cut-in directly in front of us. The system braked "
+                  "firmly and held its lane.")
+    assert ("car", "go_straight", "ego") in said and [a[1] for a in said if a[2] != "ego"] == ["change_lane_to_right"]
+
+
+def test_mines_before_a_street_suffix_is_a_street_not_the_teller():
+    said = agents("At the signalized intersection of the frontage road and Mines Rd the truck had a green light to turn "
+                  "right, but two pedestrians were walking across the crosswalk on Mines Rd, the street we were "
+                  "turning onto. The truck stopped at the corner, then made its right turn.")
+    assert [a for a in said if a[2] == "ego"] == [("truck", "stop", "ego"), ("truck", "turn_right", "ego")]

@@ -202,6 +202,7 @@ class _Reader:
     owned: bool = False  # the text opened on the vehicle its teller owns: "the vehicle" is that one
     typical: bool = False  # the text names road users only by their kinds, in what they habitually do
     staged: bool = False  # the text goes on to a later stage ("then", "once ...")
+    plain_brakes: set = field(default_factory=set)  # the tick of each stop said only as braking, with no halt
     braked: set = field(default_factory=set)  # the order of each stop said only as braking ("the bus brakes hard"):
     # no stop if that one turns out to be the ego
 
@@ -835,11 +836,13 @@ STREET_SUFFIXES = {"road", "street", "avenue", "drive", "way", "close", "crescen
 
 
 def _street_names(tokens: list[Token], units: list[Unit]) -> list[Unit]:
-    """'the gritter hasn't touched Park Lane', 'turned into Cross Street', 'at Northgate and Vicar Lane': a one-word
-    verb or person before a street's suffix, with no article before it, is the street's name."""
+    """'the gritter hasn't touched Park Lane', 'turned into Cross Street', 'at Northgate and Vicar Lane', 'Mines Rd':
+    a one-word verb or person (or 'mines') before a street's suffix, with no article before it, is the street's
+    name."""
     out = list(units)
     for k, u in enumerate(units):
-        if not (u.category == "actions" or u.category == "agents" and u.meaning == "pedestrian") or \
+        if not (u.category == "actions" or u.category == "agents" and u.meaning == "pedestrian" or
+                u.category == "agents" and u.meaning == "ego" and u.tokens[0].word == "mines") or \
                 len(u.tokens) != 1 or k + 1 >= len(units) or \
                 units[k + 1].tokens[0].word not in STREET_SUFFIXES or len(units[k + 1].tokens) != 1 or \
                 units[k + 1].tokens[0].sentence != u.tokens[0].sentence:
@@ -6354,6 +6357,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                     or _in_time(clause_units[k + 1:k + 5])))
         if braking and e.is_ego:
             return  # "the AV braked to avoid a collision": a reaction, not where the ego ends; "to a halt" is a stop
+        plain_brake = braking and {t.base for t in u.tokens} <= {"brake", "brakes", "hard", "harshly", "firmly"} and \
+            not any(x.meaning == "stop" or x.word in ("halt", "stop", "standstill", "stopped", "stationary")
+                    for x in [x for x in r.units if x.start > u.start and x.tokens[0].sentence == sentence][:12])
         out_after = clause_units is not None and k is not None and k + 1 < len(clause_units) and \
             clause_units[k + 1].word == "out"
         if action == "cut_in" and not e.is_ego and ([t.word for t in u.tokens][-1:] == ["out"] or out_after or
@@ -6393,17 +6399,22 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                                                                clause_units[max(0, k - 3) + 1:k + 1])) and \
             action == "stop"  # ("I had to stop dead" is no state before the story)
         # "a BMW that had been sitting in the outside lane cut us up": a state before the story, not its end
-        if action == "stop" and not e.is_ego and not earlier and clause_units is not None and k is not None and \
+        if plain_brake and not e.is_ego and clause_units is not None and k is not None and \
                 _forced_reaction(clause_units, k):
+            action = "move"  # "the guy behind had to brake hard too": slowed, and drove on
+        if action == "stop" and not e.is_ego and not earlier and clause_units is not None and k is not None and \
+                _forced_reaction(clause_units, k) and not {t.base for t in u.tokens} & {"stop", "halt"}:
             e.actions.append((stage, 1, ACTION_RANK["go_straight"], 0, action, direction))
             if _moving_in_a_place(clause_units[:k]):  # "came up behind me and had to wait": coming, said in its place
                 e.actions.append((stage, strength, ACTION_RANK["move"], r.tick(), "move", None))
             return  # "was closing fast and had to brake", "came up behind and had to wait": a reaction to another;
-            # what it was doing is its action ("the other driver had to stop", said of nothing else, still stops)
+            # what it was doing is its action; made to stop, it stops ("the pickup had to stop for us")
         e.actions.append((stage, strength, ACTION_RANK["go_straight"] if earlier else ACTION_RANK.get(action, 0),
                           0 if earlier else r.tick(), action, direction))
         if braking and not earlier:
             r.braked.add(r.order)
+        if plain_brake and not earlier and e.actions[-1][4] == "stop":
+            r.plain_brakes.add(e.actions[-1][3])
         if action in ("lane_left", "lane_right") and not {"left", "right"} & {t.word for t in u.tokens}:
             e.features.add("to_the_kerb")  # "pulled over", "pulled to the side": towards the kerb, no lane named
         if action == "lane_change" and {"middle", "center"} & {t.word for t in u.tokens}:
@@ -7050,6 +7061,9 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif previous_subject and clause.link in PARTICIPLE_LINKS and verbs and verbs[0] == 0 and \
                 units[0].tokens[0].word.endswith("ing"):
             subject = list(previous_subject)  # "a cyclist rode ahead of me before turning left": the cyclist turns
+        elif previous_subject and clause.link in ("until", "till") and verbs and verbs[0] == 0 and \
+                len(units) <= 2 and not units[0].tokens[0].word.endswith("ing"):
+            subject = list(previous_subject)  # "the front car brake suddenly until stop": until it stops
         elif previous_subject and clause.link == "" and verbs and verbs[0] == 0 and units[0].tokens[0].opened_by == ";" \
                 and not _bare_verb(units[0]):  # ("a truck stopped ahead; overtake it": an order to the ego)
             subject = list(previous_subject)  # "a car in the left lane; changes lane to the right": the same car
@@ -8037,11 +8051,14 @@ def _said_signals(r: _Reader) -> set[str]:
 
 VAGUE_PEOPLE = {"someone", "somebody", "guy", "dude", "person", "man", "woman", "lady", "people", "lad", "bloke",
                 "mate", "lunatic", "nutter", "maniac", "numpty", "muppet", "idiot", "jerk", "moron",
-                "chap", "fella", "fellow", "gentleman", "young man", "young woman", "teen", "teenager"}
+                "chap", "fella", "fellow", "gentleman", "young man", "young woman", "teen", "teenager", "postman"}
 ON_FOOT_WITH = {"pushing", "wheeling", "walking", "carrying", "pulling", "holding", "leading", "with"}
 NAMED_ON_FOOT = {"pedestrian", "ped", "walker", "jogger", "runner", "pedestrian target"}
 VEHICLE_ONLY_ACTIONS = {"cut_in", "lane_change", "lane_left", "lane_right", "turn", "turn_left", "turn_right", "u_turn",
                         "block"}
+DONE_AT_A_WHEEL = {"cut_in": "cuts in", "lane_change": "changes lane", "lane_left": "moves left",
+                   "lane_right": "moves right", "turn": "turns", "turn_left": "turns left", "turn_right": "turns right",
+                   "u_turn": "makes a U-turn", "block": "blocks", "horn": "sounds a horn"}  # for the note it leaves
 
 
 LETTING = {"let", "lets", "letting"}
@@ -9839,6 +9856,17 @@ def _later_manoeuvre(e: Entity) -> tuple | None:
         a[4] == "cross" and e.type in V.VULNERABLE_TYPES)), key=lambda a: (a[0], a[3]), default=None)
 
 
+FACING_THE_EGO = {"front", "front_left", "front_right"}  # where a vehicle braking is the ego's hazard
+
+
+def _only_braked(r: _Reader, e: Entity) -> bool:
+    """Every stop said of it is a plain 'braked' ('braked hard', not 'braked to a halt' or 'slammed on'), and it
+    did not cut in first (a brake check)."""
+    stops = [a for a in e.actions if a[4] == "stop"]
+    return bool(stops) and all(a[3] in r.plain_brakes for a in stops) and not any(
+        a[4] in ("cut_in", "lane_left", "lane_right", "lane_change", "block") for a in e.actions)
+
+
 def _intro_action(e: Entity) -> tuple[str | None, str | None]:
     action = _action(e, e.stage)
     if action[0] in ("move", "go_straight") and not e.is_ego:
@@ -11455,10 +11483,10 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
     if not any(t.word in ("we", "us", "our") for t in r.tokens):
         return  # (a story's "Joe turned right ... The van behind him stopped": no crew telling of its vehicle)
     if ego is not None and (
-            not (ego.head in ("we", "us", "i", "me", "op") or _supplied(r, ego)) or ego.type != "car" or
-            any(name.split()[-1] not in SELF_NAMES | {"ego", "op"} for name in ego.aliases if name)):
-        return  # the speakers, or an ego supplied for a verb with no subject, in no vehicle of their own ("I'm
-        # rolling up in the truck" is)
+            not (ego.head in ("we", "us", "i", "me", "op", "system") or _supplied(r, ego)) or ego.type != "car" or
+            any(name.split()[-1] not in SELF_NAMES | {"ego", "op", "system"} for name in ego.aliases if name)):
+        return  # the speakers, 'the system' driving, or an ego supplied for a verb with no subject, in no vehicle
+        # of their own ("I'm rolling up in the truck" is)
     own = {"lane_said", "overtaking", "parked", "straight_on", "middle_lane"} | {f"named_lane_{side}" for side in SIDES}
     candidates = [
         e for e in r.entities if not e.is_ego and e.count == 1 and e.type in ("car", "bus", "truck") and
@@ -12363,7 +12391,7 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and (action in VEHICLE_ONLY_ACTIONS or any(
                 a[4] == "horn" for a in e.actions)):
             e.type = "car"  # "someone's pulling out of a parking spot", "the guy behind me honked": someone driving
-            r.notes.append(f"inferred: '{e.head}' who {(action or 'horn').replace('_', ' ')}s drives a car")
+            r.notes.append(f"inferred: '{e.head}' who {DONE_AT_A_WHEEL.get(action or 'horn', 'drives')} drives a car")
         elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and (action in (
                 "move", "stop", "go_straight") or action is None and "behind" in e.features) and \
                 e.features & {"ahead", "behind"} and not e.features & {"on_sidewalk", "crosswalk", "in_road",
@@ -12469,6 +12497,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         action, direction = resolved[e.key]
         position = positions[e.key]
         final = _final_action(e, action, direction, position)
+        if final == "stop" and position not in FACING_THE_EGO and _only_braked(r, e):
+            final = "go_straight"  # "the pickup following us also braked", "the sedan from the left braked, TA 1.4 s":
+            # a reaction; it slows and drives on (one ahead braking is the hazard, its stop)
         road_type = e.road_type or V.default_road_type(e.type)
         if road_type not in V.ROAD_TYPES_BY_TYPE[e.type]:
             road_type = V.default_road_type(e.type)
