@@ -12706,3 +12706,13 @@ def test_mines_before_a_street_suffix_is_a_street_not_the_teller():
                   "right, but two pedestrians were walking across the crosswalk on Mines Rd, the street we were "
                   "turning onto. The truck stopped at the corner, then made its right turn.")
     assert [a for a in said if a[2] == "ego"] == [("truck", "stop", "ego"), ("truck", "turn_right", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Ambulance on blues came up behind me in my lane, moved over to the right lane to let them by.",
+     [("ambulance", "go_straight", "back"), ("car", "change_lane_to_right", "ego")]),
+    ("A van came up behind me in my lane, cut me up and braked.", [("car", "block_the_ego", "front"),
+                                                                    ("car", "go_straight", "ego")]),
+])
+def test_a_move_after_a_comma_to_let_them_by_is_the_egos(prompt, expected):
+    assert sorted(agents(prompt)) == sorted(expected)

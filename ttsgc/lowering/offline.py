@@ -6667,6 +6667,19 @@ def _the_ego_acts_last(before: Clause, clause: Clause) -> bool:
         u.category == "agents" and u.meaning not in ("ego", "none") for u in prev[:ego_at])
 
 
+MADE_WAY = {"by", "past", "through", "pass", "go", "overtake"}
+
+
+def _makes_way_for_the_subject(units: list[Unit], i: int) -> bool:
+    """'(an ambulance came up behind me in my lane,) moved over to the right lane to let them by': a verb after a
+    comma, made to let 'it' or 'them' by, is made for the clause's subject by another (the ego), not by it."""
+    if i < 1 or units[i - 1].category != "comma":
+        return False
+    return any(u.tokens[-1].word in ("let", "letting", "allow", "allowing") and
+               units[k + 1].word in ("it", "them", "him", "her") and units[k + 2].word in MADE_WAY
+               for k, u in enumerate(units[i + 1:i + 4], i + 1) if k + 2 < len(units))
+
+
 def _the_speakers_obligation(r: _Reader, clause: Clause) -> bool:
     """'Had to take over,', 'Needed to brake': a sentence opened by an obligation with no subject and no one named,
     in a text a speaker tells, is the speaker's."""
@@ -7152,6 +7165,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         if not made and i > 0 and units[i - 1].category == "actions" and units[i - 1].tokens[0].base == "let" and \
                 units[i - 1].tokens[-1].word == "ego":
             made = [_ego_entity(r, stage)]  # "stops, letting the ego go straight": the ego goes, the one letting stops
+        if not made and subject and not any(e.is_ego for e in subject) and _makes_way_for_the_subject(units, i):
+            made = [_ego_entity(r, stage)]  # "came up behind me, moved over to let them by": the ego moved over
         for e in made or subject:
             _modify(r, e, units[i], stage, 0 if _only_possible(units, i) else strength, units, i)
             if e.is_ego and by is not None and units[i].meaning == "move" and units[i].base in STEERING:
