@@ -12716,3 +12716,20 @@ def test_mines_before_a_street_suffix_is_a_street_not_the_teller():
 ])
 def test_a_move_after_a_comma_to_let_them_by_is_the_egos(prompt, expected):
     assert sorted(agents(prompt)) == sorted(expected)
+
+
+@pytest.mark.parametrize("prompt, kept", [
+    ("An ambulance comes up fast behind the ego, and the ego changes to the right lane. Maybe add a police car later "
+     "but not for v1.", False),
+    ("We could add a cyclist in a follow-up. The ego turns left.", False),
+    ("An ambulance comes up fast behind the ego. Add a police car behind the ambulance.", True),
+])
+def test_one_added_in_a_later_version_is_not_in_this_scene(prompt, kept):
+    said = agents(prompt)
+    assert any(a[0] in ("police", "cyclist") for a in said) == kept
+
+
+def test_police_closing_a_street_before_a_side_is_said_are_no_car():
+    said = agents("Police have closed Bank Street, and drivers are being sent left onto Mill Road instead. A reader "
+                  "says she turned left into Mill Road and then had to stop at the zebra crossing.")
+    assert not [a for a in said if a[0] == "police"]

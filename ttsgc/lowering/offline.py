@@ -4995,11 +4995,26 @@ APPEALING = TELLING | {"appeal", "appealing", "appealed", "urge", "urging", "urg
 AS_A_FORCE = {"police", "officers", "detectives", "the police"}  # the force, not a car of it
 
 
+LATER_VERSIONS = {"later", "v2", "followup", "follow", "future", "eventually"}
+
+
+def _left_for_later(r: _Reader, e: Entity) -> bool:
+    """'Maybe add a police car later but not for v1', 'we could add a cyclist in a follow-up': one the request adds
+    to a later version, placed nowhere and doing nothing, is not in this scene."""
+    if e.said_at < 0 or e.features or any(a[4] not in ("move",) for a in e.actions):
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    before = [t.word for t in r.tokens[max(0, e.said_at - 4):e.said_at] if t.sentence == sentence]
+    after = {t.word for t in r.tokens[e.said_at + 1:] if t.sentence == sentence}
+    return bool({"add", "adding"} & set(before)) and bool(after & LATER_VERSIONS)
+
+
 def _police_as_a_source(r: _Reader, e: Entity) -> bool:
     """'Police are appealing for witnesses', 'Leicestershire Police say they are aware', 'Police have closed Bank
     Street': a news item's police, placed nowhere and doing nothing on the road, speak of the scene or act off it."""
-    if not _help_placed_nowhere(e) or e.type != "police" or e.head not in AS_A_FORCE:
-        return False
+    if e.type != "police" or e.head not in AS_A_FORCE or not _help_placed_nowhere(
+            replace(e, features=e.features - {"bare_left", "bare_right", "side_left", "side_right"})):
+        return False  # (a side the sentence gives later, "drivers are being sent left", places no police)
     after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 3] if t.sentence == r.tokens[e.said_at].sentence]
     after = after[1:] if after[:1] and after[0] in ("are", "is", "have", "has", "had", "were", "was") else after
     return bool(after) and after[0] in APPEALING
@@ -12321,6 +12336,9 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.count > 0 and not e.is_ego and e.parent is None and not e.label and _said_of_a_habit(r, e):
             e.count = 0  # "Cyclists use this road a lot", "There's usually a lollipop lady there": what is usual
             r.notes.append(f"left out: '{e.head}' is said of what usually happens there, not of this scene")
+        if e.count > 0 and not e.is_ego and _left_for_later(r, e):
+            e.count = 0  # "Maybe add a police car later but not for v1": asked for another version, not this one
+            r.notes.append(f"left out: '{e.head}' is asked for later, not in this scene")
         if e.count > 0 and "no_part" in e.features:
             e.count = 0
             r.notes.append(f"left out: '{e.head}' is said to be no part of the scene")
