@@ -12733,3 +12733,24 @@ def test_police_closing_a_street_before_a_side_is_said_are_no_car():
     said = agents("Police have closed Bank Street, and drivers are being sent left onto Mill Road instead. A reader "
                   "says she turned left into Mill Road and then had to stop at the zebra crossing.")
     assert not [a for a in said if a[0] == "police"]
+
+
+@pytest.mark.parametrize("prompt, counts", [
+    ("Five vehicles including a truck come towards the ego.", {"car": 5, "truck": 1}),
+    ("Five cars including a taxi come towards the ego.", {"car": 6}),
+    ("Three vehicles including the ego wait at the light.", {"car": 3}),
+])
+def test_a_member_named_in_a_counted_group_is_taken_from_it_once(prompt, counts):
+    said = agents(prompt)
+    assert {t: sum(a[0] == t for a in said) for t in counts} == counts
+
+
+def test_a_member_at_the_back_of_its_group_is_among_them_not_behind_the_ego():
+    said = agents("A convoy of five vehicles including a concrete mixer at the back comes towards the ego.")
+    assert sum(a[0] == "car" for a in said) == 5 and ("truck", "go_straight", "back") not in said
+
+
+@pytest.mark.parametrize("noun", ["cattle hauler", "concrete mixer", "horsebox"])
+def test_heavy_vehicles_named_by_their_load_are_trucks(noun):
+    assert ("truck", "go_straight", "road_of_right_turn") in agents(
+        f"At the crossroads a {noun} was coming from the road on my right.")

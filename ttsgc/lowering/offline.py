@@ -358,6 +358,22 @@ def _exit_named_by_side(units: list[Unit]) -> list[Unit]:
     return out
 
 
+GROUP_ENDS = (["at", "the", "back"], ["at", "the", "rear"], ["at", "the", "end"], ["at", "the", "tail"],
+              ["at", "the", "front"], ["at", "the", "head"])
+
+
+def _at_an_end_of_the_group(units: list[Unit]) -> list[Unit]:
+    """'five vehicles including a concrete mixer at the back': the back of the five, where the member goes among
+    them, not behind the ego."""
+    out = list(units)
+    for k, u in enumerate(units[2:], 2):
+        if u.category == "positions" and [t.word for t in u.tokens] in GROUP_ENDS and \
+                units[k - 1].category == "agents" and \
+                any(x.word in ("including", "incl") for x in units[max(0, k - 4):k - 1]):
+            out[k] = Unit(u.start, u.end, "word", u.word, u.tokens)
+    return out
+
+
 def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
     """'I signalled and moved out into the right lane', 'the host vehicle signals and changes lanes': 'signalled'
     right after the one who did it is their indicating, not a signalled junction."""
@@ -454,6 +470,7 @@ def _units(tokens: list[Token]) -> list[Unit]:
         _read_units(tokens)))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
+                   _at_an_end_of_the_group,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
                    _the_path_of_another, _swerved_into_a_road, _pulled_in_or_out, _one_more_of_the_kind,
                    _a_lane_then_whom_it_is_behind, _paint_of_one, _a_label_then_what_it_is, _a_queue_run_into):
@@ -6109,12 +6126,13 @@ def _absorbed(r: _Reader, entity: Entity) -> bool:
     """A new agent of a counted group already introduced ('four vehicles: a car, a bus...') is one of it, and is
     what the group was said to be ('two oncoming vehicles (a bus and a van)': both oncoming)."""
     for group in reversed(r.entities):
-        if group.is_ego or group is entity or group.group_open <= 0:
+        if group.is_ego or group is entity or group.group_open <= 0 and group is not entity.named_of:
             continue
-        if group.generic or (group.includes_ego and group.type == entity.type):
-            taken = min(entity.count, group.group_open)
-            group.group_open -= taken
-            group.count -= taken
+        if group is entity.named_of or group.generic or (group.includes_ego and group.type == entity.type):
+            if group is not entity.named_of:  # ("five vehicles including a truck": taken from the five already)
+                taken = min(entity.count, group.group_open)
+                group.group_open -= taken
+                group.count -= taken
             entity.named_of = group  # "three cars including the ego. One car is stopped ...": one of them
             entity.features |= group.features
             entity.behavior = entity.behavior or group.behavior
