@@ -12754,3 +12754,20 @@ def test_a_member_at_the_back_of_its_group_is_among_them_not_behind_the_ego():
 def test_heavy_vehicles_named_by_their_load_are_trucks(noun):
     assert ("truck", "go_straight", "road_of_right_turn") in agents(
         f"At the crossroads a {noun} was coming from the road on my right.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm driving past this guy in a three-piece suit standing on the sidewalk on my right.",
+     ("pedestrian", "on_the_sidewalk", "right")),
+    ("I drive past a man in a red coat standing on the sidewalk.", ("pedestrian", "on_the_sidewalk", "right")),
+    ("A car was driving along when this chap in a hoodie suddenly darted out in front of it.",
+     ("pedestrian", "cross_the_road", "front")),
+])
+def test_what_a_person_wears_stands_between_them_and_their_participle(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_teacher_is_on_foot_and_one_only_named_is_no_one_in_the_scene():
+    assert ("pedestrian", "on_the_sidewalk", "left") in agents("A teacher is standing on the pavement to my left.")
+    assert not [a for a in agents("A cyclist was pedalling along in front of me. I hung back behind him, no way am I "
+                                  "honking at Freddie's teacher!") if a[0] == "pedestrian"]

@@ -4196,7 +4196,7 @@ def _opening_vocative(before: list[Token], after: list[Token], u: Unit) -> bool:
 
 
 NAMED_BY_ROLE = (DRIVERS - PLAIN_PEOPLE) | {"officer", "cop", "policeman", "policewoman", "warden", "marshal", "copper",
-                                           "trooper", "deputy", "constable"}
+                                           "trooper", "deputy", "constable", "teacher"}
 # a driver, an officer, a mate: someone by role or a word for a driver, who does nothing and is nowhere in the
 # scene, is no one on foot in it ("that's why mate", "the officer didn't ticket anybody")
 SPOKEN_TAGS = {"why", "honest", "innit", "yeah", "though", "eh", "ta", "seriously", "mind", "swear", "promise"}
@@ -9518,6 +9518,12 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     if k >= 3 and units[k].category == "comma" and units[k - 1].base in ROLE_NAMES and \
             units[k - 2].category == "comma":
         k -= 3  # "a principal other vehicle (POV) stationary in its lane": past the bracketed role
+    worn = next((j for j in range(k - 1, max(0, k - 6), -1) if units[j].word == "in" and
+                 units[j + 1].word in ("a", "an", "his", "her", "their", "dark", "black", "white") and
+                 all(x.category in ("word", "numbers", "behaviours") for x in units[j + 1:k + 1])), None)
+    if worn is not None and worn >= 1 and units[k].category == "word" and units[i].tokens[0].word.endswith("ing") and \
+            any(p.index == worn - 1 and p.entity is not None and p.entity.type == "pedestrian" for p in phrases):
+        k = worn - 1  # "this guy in a three-piece suit standing on the sidewalk": past what he wears
     if k < 0:
         return None
     np = next((p for p in phrases if p.index == k), None)
