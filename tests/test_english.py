@@ -12771,3 +12771,10 @@ def test_a_teacher_is_on_foot_and_one_only_named_is_no_one_in_the_scene():
     assert ("pedestrian", "on_the_sidewalk", "left") in agents("A teacher is standing on the pavement to my left.")
     assert not [a for a in agents("A cyclist was pedalling along in front of me. I hung back behind him, no way am I "
                                   "honking at Freddie's teacher!") if a[0] == "pedestrian"]
+
+
+def test_one_of_them_after_a_verbless_group_opens_a_clause_of_its_own():
+    said = agents("Two little kids on the footpath by the zebra crossing and one of them suddenly darts out across it.")
+    assert ("pedestrian", "on_the_sidewalk", "near_the_crosswalk") in said
+    assert [a[1] for a in said if a[0] == "pedestrian"].count("cross_the_road") == 1
+    assert ("bus", "stop", "front") in agents("A bus and one of the cars stop.")

@@ -3375,8 +3375,13 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             pronoun_acts = nxt is not None and nxt.word in ("he", "she", "they", "i", "we") and \
                 k + 2 < len(units) and units[k + 2].category == "actions"  # "an ambulance came up behind him and he
             # moved across": a new subject with its verb, though the place before swallowed the first verb
+            member_acts = nxt is not None and nxt.word in ("one", "both", "each") and k + 3 < len(units) and \
+                units[k + 2].word == "of" and units[k + 3].word in ("them", "those", "these") and \
+                any(x.category == "agents" and x.tokens[-1].plural for x in current)
+            # "two kids on the footpath and one of them darts out": one of the group just named, with its own verb
             joined = not _has_verb(current) and not _new_subject_after_copula(current, units, k) and \
-                not _holds_the_green(current) and not pronoun_acts and not _another_lane_has(current, units, k)
+                not _holds_the_green(current) and not pronoun_acts and not _another_lane_has(current, units, k) and \
+                not member_acts
             if u.word in ("and", "or") and (joined or _listed_before_then(current, units, k)) or \
                     u.word == "and" and _between_one_and(current):
                 current.append(u)
