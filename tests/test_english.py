@@ -12778,3 +12778,13 @@ def test_one_of_them_after_a_verbless_group_opens_a_clause_of_its_own():
     assert ("pedestrian", "on_the_sidewalk", "near_the_crosswalk") in said
     assert [a[1] for a in said if a[0] == "pedestrian"].count("cross_the_road") == 1
     assert ("bus", "stop", "front") in agents("A bus and one of the cars stop.")
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego moves from the left lane into the right lane.", ("car", "change_lane_to_right", "ego")),
+    ("The ego truck pulls from the right lane into the left lane to get round a stopped car.",
+     ("truck", "change_lane_to_left", "ego")),
+    ("The subject car moves from the right lane into the middle lane.", ("car", "change_lane_to_left", "ego")),
+])
+def test_a_move_from_one_lane_into_another_changes_lane_towards_the_second(prompt, expected):
+    assert expected in agents(prompt)

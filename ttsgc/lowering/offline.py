@@ -358,6 +358,38 @@ def _exit_named_by_side(units: list[Unit]) -> list[Unit]:
     return out
 
 
+LANE_MOVING = {"move", "pull", "go", "swing", "steer", "drift", "weave", "switch", "shift", "slide", "ease", "nudge",
+               "cut", "merge", "change"}
+
+
+def _from_one_lane_into_another(units: list[Unit]) -> list[Unit]:
+    """'moves from the left lane into the right lane', 'pulls from the right lane into the middle lane': a move said
+    with the lane it leaves and the one it enters is a lane change towards the second (the middle one lies away
+    from the side it leaves)."""
+    out = list(units)
+    for k, u in enumerate(units[:-2]):
+        source = units[k + 1]
+        moving = u.category == "actions" and u.meaning in ("move", "cut_in", "lane_change") or \
+            u.category == "word" and u.base in LANE_MOVING
+        if not moving or source.category != "positions" or source.tokens[0].word != "from" or \
+                source.tokens[-1].word != "lane":
+            continue
+        target: list[str] = []
+        for x in units[k + 2:k + 6]:
+            target += [t.word for t in x.tokens]
+            if "lane" in target:
+                break
+        if not target or target[0] not in ("into", "to", "onto") or "lane" not in target:
+            continue
+        leaves = {t.word for t in source.tokens} & {"left", "right"}
+        side = next((w for w in ("left", "right") if w in target), None)
+        if side is None and set(target) & {"middle", "centre", "center"} and len(leaves) == 1:
+            side = "right" if leaves == {"left"} else "left"
+        if side is not None:
+            out[k] = Unit(u.start, u.end, "actions", f"lane_{side}", u.tokens)
+    return out
+
+
 GROUP_ENDS = (["at", "the", "back"], ["at", "the", "rear"], ["at", "the", "end"], ["at", "the", "tail"],
               ["at", "the", "front"], ["at", "the", "head"])
 
@@ -470,7 +502,7 @@ def _units(tokens: list[Token]) -> list[Unit]:
         _read_units(tokens)))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
-                   _at_an_end_of_the_group,
+                   _at_an_end_of_the_group, _from_one_lane_into_another,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
                    _the_path_of_another, _swerved_into_a_road, _pulled_in_or_out, _one_more_of_the_kind,
                    _a_lane_then_whom_it_is_behind, _paint_of_one, _a_label_then_what_it_is, _a_queue_run_into):
