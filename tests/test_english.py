@@ -12788,3 +12788,13 @@ def test_one_of_them_after_a_verbless_group_opens_a_clause_of_its_own():
 ])
 def test_a_move_from_one_lane_into_another_changes_lane_towards_the_second(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The ego turns right into the main road. On the main road (the ego's destination road) a car drives through.",
+     ("car", "go_straight", "at_the_destination")),
+    ("I stop first, then I turn right. As I dey turn, one keke park for the road wey I dey enter.",
+     ("motorcycle", "stop", "at_the_destination")),
+])
+def test_the_destination_road_named_as_such_is_where_the_ego_heads(prompt, expected):
+    assert expected in agents(prompt)
