@@ -12798,3 +12798,14 @@ def test_a_move_from_one_lane_into_another_changes_lane_towards_the_second(promp
 ])
 def test_the_destination_road_named_as_such_is_where_the_ego_heads(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_a_threads_post_numbers_count_no_one():
+    said = agents("1/ Ego follows a bus on an urban road, two lanes in our direction. 2/ The bus halts at a bus stop. "
+                  "3/ The ego changes to the left lane to get around the bus.")
+    assert sorted(said) == [("bus", "stop", "front"), ("car", "change_lane_to_left", "ego")]
+
+
+def test_the_ego_wanted_to_be_a_bus_is_a_bus_not_a_second_one():
+    said = agents("We want the ego to be a bus for this batch: the ego bus turns right at a signalised junction.")
+    assert said == [("bus", "turn_right", "ego")]

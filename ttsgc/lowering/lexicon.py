@@ -1486,6 +1486,18 @@ def _emoji_breaks(text: str) -> str:
     return EMOJI_BETWEEN_WORDS.sub(". ", text)
 
 
+THREAD_NUMBER = re.compile(r"(?:^|(?<=\s))(\d{1,2})/(\d{1,2})?(?=\s)", re.M)
+
+
+def _without_thread_numbers(text: str) -> str:
+    """'1/ Bus-stop overtake ... 2/ The bus halts ...', '1/2 so this van ... 2/2 pouring with rain': a thread's post
+    numbers, counting from 1, start its posts; they count no road users ('2/ The bus' is no two buses)."""
+    found = THREAD_NUMBER.findall(text)
+    if len(found) < 2 or found[0][0] != "1":
+        return text
+    return THREAD_NUMBER.sub("\n", text)
+
+
 def _without_social_markup(text: str) -> str:
     """A post's handles ('@WestMidsPolice is it worth reporting') name whom it is addressed to, and the tags it
     ends with ('#cycling #schoolbus') file it under a topic: neither is a road user of the scene, whatever
@@ -1713,7 +1725,7 @@ def tokenize(text: str) -> list[Token]:
     text = MARKDOWN_EMPHASIS.sub(r"\2", CAMEL_CASE.sub(" ", CODE_SPAN.sub(" ", _restated(_comment_block(text)))))
     text = _without_members_described(
         _scenario_identifiers(_lines(_screenplay(_without_services_asked(_without_tag_keys(_without_social_markup(
-            _emoji_breaks(_symbols_as_words(text)))))))))
+            _emoji_breaks(_symbols_as_words(_without_thread_numbers(text))))))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))

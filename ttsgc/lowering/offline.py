@@ -8962,7 +8962,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 out.append(replace(np, entity=prev.entity, introduced=False))
                 continue
             bare = _undetermined(units, np)  # "SV1 is oncoming truck", "POV, heavy truck, enters": articles dropped
+            to_be = [u.word for u in between[-2:]] == ["to", "be"]  # "we want the ego to be a bus"
             if all((u.category == "word" and u.word in APPOSITION_WORDS | STATING_MODALS | {"like"}) or
+                   u.category == "word" and u.word == "to" and to_be or
                    u.category == "word" and u.word in PLACE_ADVERBS and copula or
                    # ("the only other car around was a Camry": where it was, then what it was)
                    u.category == "word" and u.word in ("a", "an") and copula and prev.entity.is_ego or
