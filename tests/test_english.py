@@ -12702,8 +12702,8 @@ def test_the_system_is_the_egos_own_driving():
 
 
 def test_mines_before_a_street_suffix_is_a_street_not_the_teller():
-    said = agents("At the signalized intersection of the frontage road and Mines Rd the truck had a green light to turn "
-                  "right, but two pedestrians were walking across the crosswalk on Mines Rd, the street we were "
+    said = agents("At the signalized intersection of the frontage road and Mines Rd the truck had a green light to "
+                  "turn right, but two pedestrians were walking across the crosswalk on Mines Rd, the street we were "
                   "turning onto. The truck stopped at the corner, then made its right turn.")
     assert [a for a in said if a[2] == "ego"] == [("truck", "stop", "ego"), ("truck", "turn_right", "ego")]
 
@@ -12809,3 +12809,19 @@ def test_a_threads_post_numbers_count_no_one():
 def test_the_ego_wanted_to_be_a_bus_is_a_bus_not_a_second_one():
     said = agents("We want the ego to be a bus for this batch: the ego bus turns right at a signalised junction.")
     assert said == [("bus", "turn_right", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "So I'm sitting at a four-way stop, it's a hostage negotiation with turn signals, and then I turn right.",
+    "A van cut in front of me and didn't use his signal.",
+    "A van pulled out with its right signal on.",
+])
+def test_a_turn_signal_is_an_indicator_no_turn_and_no_traffic_light(prompt):
+    scene = lower(prompt).scenario
+    assert "traffic_light" not in scene.road.required_signals
+    assert scene.ego.action != "turn_left"
+
+
+def test_our_signal_turning_green_is_the_light_facing_us():
+    road = lower("Our signal was green, so we turned right at the junction.").scenario.road
+    assert "traffic_light" in road.required_signals

@@ -406,6 +406,26 @@ def _at_an_end_of_the_group(units: list[Unit]) -> list[Unit]:
     return out
 
 
+OWN_SIGNAL = {"his", "her", "its", "their", "my", "your", "our"}  # "his signal": an indicator
+
+
+def _indicators_are_no_lights(units: list[Unit]) -> list[Unit]:
+    """'didn't use his signal', 'with its right signal on': a driver's own signal is the indicator, no traffic
+    light at the junction (but 'our signal was green' is the light facing us)."""
+    out = list(units)
+    for k, u in enumerate(units):
+        if u.category != "road" or u.meaning != "traffic_light" or [t.word for t in u.tokens] not in (
+                ["signal"], ["signals"]) or k == 0:
+            continue
+        before = [x.word for x in units[max(0, k - 2):k]]
+        if any(t.word in ("green", "red", "amber", "yellow") for x in units[k + 1:k + 4] for t in x.tokens):
+            continue  # "our signal was green": the light facing us
+        if before[-1:] and before[-1] in OWN_SIGNAL or before[-2:-1] and before[-2] in OWN_SIGNAL and \
+                before[-1] in ("left", "right", "indicator"):
+            out[k] = Unit(u.start, u.end, "word", u.word, u.tokens)
+    return out
+
+
 def _signalled_by_a_driver(units: list[Unit]) -> list[Unit]:
     """'I signalled and moved out into the right lane', 'the host vehicle signals and changes lanes': 'signalled'
     right after the one who did it is their indicating, not a signalled junction."""
@@ -502,7 +522,7 @@ def _units(tokens: list[Token]) -> list[Unit]:
         _read_units(tokens)))))))
     units = _unknown_makes(tokens, _street_names(tokens, _with_absolutes(units)))
     for reread in (_passengers_on_foot, _other_scenarios_named, _aborted_lane_changes, _signalled_by_a_driver,
-                   _at_an_end_of_the_group, _from_one_lane_into_another,
+                   _at_an_end_of_the_group, _from_one_lane_into_another, _indicators_are_no_lights,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
                    _the_path_of_another, _swerved_into_a_road, _pulled_in_or_out, _one_more_of_the_kind,
                    _a_lane_then_whom_it_is_behind, _paint_of_one, _a_label_then_what_it_is, _a_queue_run_into):
