@@ -12825,3 +12825,11 @@ def test_a_turn_signal_is_an_indicator_no_turn_and_no_traffic_light(prompt):
 def test_our_signal_turning_green_is_the_light_facing_us():
     road = lower("Our signal was green, so we turned right at the junction.").scenario.road
     assert "traffic_light" in road.required_signals
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Please add a sedan behind the ego that brakes hard; the ego should drive straight.", ("car", "stop", "back")),
+    ("My van slows down, with a taxi behind that brakes hard.", ("car", "stop", "back")),
+])
+def test_braking_asked_for_is_played_as_a_stop(prompt, expected):
+    assert expected in agents(prompt)

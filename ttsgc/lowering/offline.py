@@ -6503,8 +6503,9 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
                           0 if earlier else r.tick(), action, direction))
         if braking and not earlier:
             r.braked.add(r.order)
-        if plain_brake and not earlier and e.actions[-1][4] == "stop":
-            r.plain_brakes.add(e.actions[-1][3])
+        if plain_brake and u.tokens[0].word == "braked" and not earlier and e.actions[-1][4] == "stop":
+            r.plain_brakes.add(e.actions[-1][3])  # told as it happened ("the pickup behind also braked"); a scene
+            # asked for ("a taxi behind that brakes hard") wants the braking played, its stop
         if action in ("lane_left", "lane_right") and not {"left", "right"} & {t.word for t in u.tokens}:
             e.features.add("to_the_kerb")  # "pulled over", "pulled to the side": towards the kerb, no lane named
         if action == "lane_change" and {"middle", "center"} & {t.word for t in u.tokens}:
