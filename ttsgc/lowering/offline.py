@@ -5075,7 +5075,7 @@ LATER_VERSIONS = {"later", "v2", "followup", "follow", "future", "eventually"}
 def _left_for_later(r: _Reader, e: Entity) -> bool:
     """'Maybe add a police car later but not for v1', 'we could add a cyclist in a follow-up': one the request adds
     to a later version, placed nowhere and doing nothing, is not in this scene."""
-    if e.said_at < 0 or e.features or any(a[4] not in ("move",) for a in e.actions):
+    if e.said_at < 0 or e.features or any(a[4] != "move" for a in e.actions):
         return False
     sentence = r.tokens[e.said_at].sentence
     before = [t.word for t in r.tokens[max(0, e.said_at - 4):e.said_at] if t.sentence == sentence]
