@@ -12833,3 +12833,11 @@ def test_our_signal_turning_green_is_the_light_facing_us():
 ])
 def test_braking_asked_for_is_played_as_a_stop(prompt, expected):
     assert expected in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt", [
+    "A cyclist rides in the right lane slightly ahead of the ego. FAIL: lateral clearance to cyclist 0.6 m < 1.5 m.",
+    "A car drives ahead of the ego. Gap to car 2.5 m at the end.",
+])
+def test_a_decimal_after_a_noun_is_a_measure_not_a_name(prompt):
+    assert len(agents(prompt)) == 2

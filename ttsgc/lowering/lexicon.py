@@ -1883,10 +1883,10 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego|npc|adversary|hero)"
                   r" \((?:an? |the )?([a-z ]{2,30})"
                   r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
-    text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
+    text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?![.,]\d)(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
                   r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
     text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh|pov|sv|tv|"
-                  r"pedestrian|walker|cyclist|van|lorry|motorcycle|motorbike|person)[ _-](\d)\b"
+                  r"pedestrian|walker|cyclist|van|lorry|motorcycle|motorbike|person)[ _-](\d)\b(?![.,]\d)"
                   r"(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?|cars?))", r"\1\2",
                   text)  # "NPC_1", "Actor 2", "Walker 2" (a simulator's names)
     text = re.sub(r"\b(in|for|until|till) v\d{1,2}(?:\.\d{1,2})?\b", r"\1 this version", text)  # "left out in v1": a release
