@@ -12841,3 +12841,9 @@ def test_braking_asked_for_is_played_as_a_stop(prompt, expected):
 ])
 def test_a_decimal_after_a_noun_is_a_measure_not_a_name(prompt):
     assert len(agents(prompt)) == 2
+
+
+def test_a_name_said_before_a_road_users_noun_names_it():
+    said = agents("At the roundabout, npc1 car from left; npc2 bus directly behind npc1.")
+    assert sorted(said) == [("bus", "go_straight", "road_of_left_turn"), ("car", "go_straight", "ego"),
+                            ("car", "go_straight", "road_of_left_turn")]

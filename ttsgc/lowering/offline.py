@@ -8824,6 +8824,11 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                 r.entities.remove(np.entity)
             r.notes.append(f"left out: '{np.entity.head}' is only a comparison")
             continue
+        if np.entity is not None and not np.entity.label and not np.entity.is_ego and not np.plural:
+            name = next((u.tokens[0].label for u in units[np.first:np.index] if u.category == "agents" and
+                         u.meaning == "generic" and len(u.tokens) == 1 and u.tokens[0].label), None)
+            if name:
+                np.entity.label = name  # "npc1 car from left ... behind npc1": the car is the one named npc1
         driver = _placed_driver(units, out, np)
         if driver is not None:  # "the guy in front of me in a Subaru": the Subaru, where the guy is
             _fold(r, driver.entity, np.entity)
