@@ -406,9 +406,6 @@ def _at_an_end_of_the_group(units: list[Unit]) -> list[Unit]:
     return out
 
 
-OWN_SIGNAL = {"his", "her", "its", "their", "my", "your", "our"}  # "his signal": an indicator
-
-
 def _indicators_are_no_lights(units: list[Unit]) -> list[Unit]:
     """'didn't use his signal', 'with its right signal on': a driver's own signal is the indicator, no traffic
     light at the junction (but 'our signal was green' is the light facing us)."""
@@ -420,7 +417,8 @@ def _indicators_are_no_lights(units: list[Unit]) -> list[Unit]:
         before = [x.word for x in units[max(0, k - 2):k]]
         if any(t.word in ("green", "red", "amber", "yellow") for x in units[k + 1:k + 4] for t in x.tokens):
             continue  # "our signal was green": the light facing us
-        if before[-1:] and before[-1] in OWN_SIGNAL or before[-2:-1] and before[-2] in OWN_SIGNAL and \
+        owned = OWNERS | POSSESSIVES  # "his signal", "its right signal": an indicator
+        if before[-1:] and before[-1] in owned or before[-2:-1] and before[-2] in owned and \
                 before[-1] in ("left", "right", "indicator"):
             out[k] = Unit(u.start, u.end, "word", u.word, u.tokens)
     return out
@@ -4843,12 +4841,14 @@ UNREAL_IMPACT = {"not", "never", "avoid", "avoided", "without", "almost", "nearl
                  "no", "near", "avoiding", "before", "if", "may", "must", "shall", "should", "will", "can"}
 
 
-def _help_placed_nowhere(e: Entity) -> bool:
-    """An emergency service or a recovery truck said to do nothing but come, and placed nowhere: help that may have
-    come to the scene rather than be in it ('Tow truck is on the way')."""
+def _help_placed_nowhere(e: Entity, ignoring: frozenset[str] = frozenset()) -> bool:
+    """An emergency service or a recovery truck said to do nothing but come, and placed nowhere (but for the
+    features `ignoring` names): help that may have come to the scene rather than be in it ('Tow truck is on the
+    way')."""
     return (e.type in RESPONDERS or e.type == "pedestrian" and e.head in RESPONDING_PEOPLE or
             e.head in RECOVERY_VEHICLES) and not e.is_ego and \
-        not e.label and e.said_at >= 0 and not e.features and all(a[4] in ("move", "reach") for a in e.actions)
+        not e.label and e.said_at >= 0 and not e.features - ignoring and all(a[4] in ("move", "reach")
+                                                                           for a in e.actions)
 
 
 ABOARD_WORDS = (("in", "the", "car"), ("in", "my", "car"), ("in", "our", "car"), ("in", "the", "back"),
@@ -5087,7 +5087,7 @@ def _police_as_a_source(r: _Reader, e: Entity) -> bool:
     """'Police are appealing for witnesses', 'Leicestershire Police say they are aware', 'Police have closed Bank
     Street': a news item's police, placed nowhere and doing nothing on the road, speak of the scene or act off it."""
     if e.type != "police" or e.head not in AS_A_FORCE or not _help_placed_nowhere(
-            replace(e, features=e.features - {"bare_left", "bare_right", "side_left", "side_right"})):
+            e, ignoring=frozenset({"bare_left", "bare_right", "side_left", "side_right"})):
         return False  # (a side the sentence gives later, "drivers are being sent left", places no police)
     after = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 3] if t.sentence == r.tokens[e.said_at].sentence]
     after = after[1:] if after[:1] and after[0] in ("are", "is", "have", "has", "had", "were", "was") else after
@@ -9976,6 +9976,7 @@ def _later_manoeuvre(e: Entity) -> tuple | None:
 
 
 FACING_THE_EGO = {"front", "front_left", "front_right"}  # where a vehicle braking is the ego's hazard
+INTO_A_LANE = {"cut_in", "lane_left", "lane_right", "lane_change", "block"}  # moves into another lane, or across it
 
 
 def _only_braked(r: _Reader, e: Entity) -> bool:
@@ -9983,7 +9984,7 @@ def _only_braked(r: _Reader, e: Entity) -> bool:
     did not cut in first (a brake check)."""
     stops = [a for a in e.actions if a[4] == "stop"]
     return bool(stops) and all(a[3] in r.plain_brakes for a in stops) and not any(
-        a[4] in ("cut_in", "lane_left", "lane_right", "lane_change", "block") for a in e.actions)
+        a[4] in INTO_A_LANE for a in e.actions)
 
 
 def _intro_action(e: Entity) -> tuple[str | None, str | None]:
@@ -10913,7 +10914,7 @@ def _the_named_cut_in(r: _Reader) -> None:
         w == "cut" and words[k + 1:k + 2] == ["in"] and (r.tokens[k].title or r.tokens[k].label or k == 0 or
                                                        words[k + 2:k + 3] and words[k + 2] in SCENE_NAME_WORDS)
         for k, w in enumerate(words))
-    if not named or any(a[4] in ("cut_in", "lane_change", "lane_left", "lane_right", "block") for e in r.entities
+    if not named or any(a[4] in INTO_A_LANE for e in r.entities
                         for a in e.actions):
         return
     beside = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and e.count == 1 and
@@ -12458,15 +12459,12 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             e.count = 0  # "we sat at the red light ... the kids were fascinated": the speaker's own, on board
             r.notes.append(f"left out: 'the {e.head}', doing nothing on the road, ride with the speaker")
         if e.type in ("pedestrian", "police") and e.count > 0 and not e.actions and not e.features and \
-                not e.label and e.relative_to is None and e.parent is None and e.named_of is None and \
-                e.head in NAMED_BY_ROLE:
-            e.count = 0  # "driving like a proper lunatic he was", "the cop said it was 50/50": no one on foot
+                not e.label and e.relative_to is None and e.parent is None and (
+                    e.named_of is None and e.head in NAMED_BY_ROLE or e.type == "pedestrian" and e.head in ANYONE and
+                    e.count == 1 and not any(x.relative_to is e for x in r.entities)):
+            e.count = 0  # "driving like a proper lunatic he was", "the cop said it was 50/50": no one on foot;
+            # "waving somebody through", "started with someone misjudging the speed": no one in particular
             r.notes.append(f"left out: '{e.head}' does nothing and is nowhere in the scene")
-        if e.type == "pedestrian" and e.head in ANYONE and e.count == 1 and not e.actions and not e.features and \
-                not e.label and e.relative_to is None and e.parent is None and \
-                not any(x.relative_to is e for x in r.entities):
-            e.count = 0  # "waving somebody through", "started with someone misjudging the speed": no one placed
-            r.notes.append(f"left out: '{e.head}' is no one in particular, doing nothing in the scene")
         if e.definite and e.count == 1 and e.type != "pedestrian" and not e.features and \
                 not [a for a in e.actions if a[2] > 0] and not e.label and e.relative_to is None and \
                 e.parent is None and e.named_of is None and not any(x.relative_to is e for x in r.entities) and \
