@@ -12847,3 +12847,52 @@ def test_a_name_said_before_a_road_users_noun_names_it():
     said = agents("At the roundabout, npc1 car from left; npc2 bus directly behind npc1.")
     assert sorted(said) == [("bus", "go_straight", "road_of_left_turn"), ("car", "go_straight", "ego"),
                             ("car", "go_straight", "road_of_left_turn")]
+
+
+def test_a_partys_role_names_the_ego_in_any_case():
+    said = agents("Client was stopped behind a school bus on a county road. A pickup following client failed to stop "
+                  "and shoved client's car into the back of the bus.")
+    assert sorted(said) == [("bus", "stop", "front"), ("car", "go_straight", "back"), ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "I was doing 30, a van came out of a side road on my left across the junction and hit my nearside.",
+    "I was going along the main road. A van shot straight across from a side road on my left.",
+])
+def test_across_after_a_side_road_is_the_way_it_goes_not_where_it_comes_from(prompt):
+    assert ("car", "go_straight", "road_of_left_turn") in agents(prompt)
+
+
+@pytest.mark.parametrize("ending", ["Out of car unaided before we arrived.", "Walked from vehicle."])
+def test_a_handovers_bare_vehicle_left_is_the_patients_own(ending):
+    said = agents(f"Driver going along the main road at 30. A van shot out from a side road on his left. {ending}")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+
+
+def test_someone_climbing_out_of_a_car_leaves_another_car():
+    assert ("car", "go_straight", "front") in agents("I stopped. A woman climbed out of car and ran.")
+
+
+def test_you_could_hardly_see_is_anyone_not_the_ego():
+    said = agents("Foggy, you could hardly see across the road. I was sat on the bench outside the butcher's and saw a "
+                  "small blue car pull out of Mill Lane, turning left onto the high road.")
+    assert ("car", "turn_left", "ego") in said
+
+
+def test_the_bus_a_passenger_never_got_is_not_the_egos():
+    said = agents("I was at the junction. A silver Micra came up to it and turned left. Never did get my bus, ended "
+                  "up walking home.")
+    assert all(kind != "bus" for kind, _, _ in said)
+
+
+def test_a_witness_waiting_in_the_shelter_is_on_foot_and_not_at_a_crossing():
+    prompt = ("I was waiting in the shelter on Kings Road. White Toyota coming along and a fella in a black jacket "
+              "suddenly walks out between the parked cars right in front of it, not at a crossing or anything.")
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+    assert "crosswalk" not in road(prompt).required_objects + road(prompt).required_signals
+
+
+def test_a_vehicle_held_at_a_junction_that_then_turns_is_the_one_told_from():
+    said = agents("At a T-junction controlled by a stop sign, a car is initially stationary. Its driver then pulls "
+                  "away, turning right. In the road the car is joining, a pedestrian is walking across.")
+    assert ("car", "turn_right", "ego") in said and not any(pos == "front" and kind == "car" for kind, _, pos in said)

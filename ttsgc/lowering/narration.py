@@ -1425,7 +1425,10 @@ def _party_at_the_wheel(text: str, notes: list[str]) -> str:
     if not drivers:
         return text
 
-    def said(party: str) -> str:  # "Sarah Jennings", then "Mrs Jennings", "Jennings" or "Sarah"
+    def said(party: str) -> str:  # "Sarah Jennings", then "Mrs Jennings", "Jennings" or "Sarah"; a role in any
+        # case ("Client stopped ... a pickup following client")
+        if re.fullmatch(PARTY_ROLES, party):
+            return rf"(?i:(?:the\s+|my\s+|our\s+)?{re.escape(party.split()[-1])})"
         return rf"(?:{TITLE}?{re.escape(party)}|{TITLE}?(?:{'|'.join(map(re.escape, party.split()))}))" \
             if " " in party else re.escape(party)
 

@@ -1742,6 +1742,17 @@ TOLD_TO_THE_LISTENER = (("wo", "not", "believe"), ("would", "not", "believe"), (
                         ("know", "what"), ("guessed", "it"), ("can", "imagine"), ("could", "imagine"))
 
 
+SEEING_MODALS = {"could", "can", "couldn't", "can't", "cannot", "would", "wouldn't"}
+
+
+def _sees_in_general(tokens: list[Token], end: int) -> bool:
+    """'you could hardly see across the road', 'you couldn't see a thing': said of anyone, in a text told by an
+    'I' or a 'we'."""
+    after = [t.word for t in tokens[end:end + 4]]
+    return bool(after) and after[0] in SEEING_MODALS and any(w in ("see", "hear") for w in after[1:]) and \
+        any(t.word in ("i", "we", "i'm", "we're") for t in tokens)
+
+
 LEFT_AS_A_VERB_AFTER = {"never", "not", "had", "has", "have", "just", "finally", "eventually", "already", "then",
                         "he", "she", "it", "they", "who", "which", "that", "i", "we", "you"}
 
@@ -2058,6 +2069,10 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                  m.end == len(tokens) or tokens[m.end].sentence != span[0].sentence or tokens[m.end].word == ",")):
         return [Unit(m.start, m.end, "word", "you", span)]  # "You won't believe this, a guy on a motorcycle", "in
         # broad daylight, mind you": the listener, addressed, not the one driving
+    if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["you"] and \
+            _sees_in_general(tokens, m.end):
+        return [Unit(m.start, m.end, "word", "you", span)]  # "Foggy, you could hardly see across the road. I was
+        # sat on the bench": anyone there, not one at a wheel
     if m.category == "positions" and len(span) == 1 and span[0].word in ("backed", "backs", "backing") and \
             m.end < len(tokens) and tokens[m.end].word in ("off", "away"):
         return [Unit(m.start, m.end, "actions", "move", span)]  # "it just backed off smooth": it eased off, no place
@@ -5402,6 +5417,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not any(not e.is_ego and e.type == "car" for e in r.entities) and not listed and not placed_here:
         return NounPhrase(ego_now, head, first)  # "in front of vehicle", "vehicle's front left corner": the ego;
         # "my car turns right, car cutting in from the left": a list's item, another car
+    if words <= {"of", "from", "in"} and count is None and not plural and not label and ego_now is not None and \
+            u.base in ("vehicle", "car") and head - 2 == lo and \
+            [x.word for x in units[head - 2:head]] in (["out", "of"], ["walked", "from"], ["trapped", "in"]) and \
+            not any(not e.is_ego and e.head.split()[-1] in ("car", "vehicle") for e in r.entities):
+        return NounPhrase(ego_now, head, first)  # a handover's "Out of car unaided", "Walked from vehicle": the
+        # patient's own, the ego, with its subject and article dropped
     if (bare and first == head or definite and words <= {"the"} and first == head - 1) and first == lo and \
             ego_now is not None and kind != "car" and ego_now.type == kind and count is None and not plural and \
             not existential and not listed and not placed_here and \
@@ -7459,8 +7480,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 r.mark(u)
                 continue
             if u.meaning == "road_straight" and u.tokens[0].word == "across" and u.tokens[-1].word != "from" and \
-                    e.features & {"road_left", "road_right", "cross_road"} and i > 0 and \
-                    units[i - 1].category == "actions":
+                    e.features & {"road_left", "road_right", "cross_road"}:
                 r.mark(u)  # "comes from the road on the left and goes straight across the junction": the way it
                 continue  # goes, not where it comes from
             _modify(r, e, u, stage, 1)
@@ -10554,7 +10574,7 @@ STEPPING_OVER = {"cross at", "crossed at", "cross the road", "cross the street",
 ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sidewalk", "footpath", "on foot",
            "a pedestrian", "jogging", "bus stop", "wheelchair", "chair", "to cross", "dropped curb", "at the curb",
            "crossing the road", "crossing the street", "in the crosswalk", "rolling across", "wheeling across",
-           "bench", "was across the street", "was across the road", "on the porch", "on my porch", "in the garden",
+           "bench", "shelter", "was across the street", "was across the road", "on the porch", "on my porch", "in the garden",
            "in my garden", "at the window", "at my window", "over the zebra", "on the zebra", "across the zebra",
            "over the crossing", "across the crossing", "over the crosswalk", "green man", "walk signal",
            "on the crossing", "on the crosswalk", "halfway across", "halfway over", "wheeled across", "wheeled over",
@@ -10655,8 +10675,9 @@ def _may_drive_the_scene(e: Entity, own_lane: bool = False) -> bool:
     lanes = {f for f in e.features if f.startswith("named_lane_")} if own_lane else set()
     features = e.features - lanes - {f"side_{f[len('named_lane_'):]}" for f in lanes}
     if any(a[4] in ("turn", "turn_left", "turn_right") for a in e.actions):
-        features -= {"in_road", "moves_out"}  # "swings right into the road", "pulled out of Orchard Close and turned
-        # right": where it turns to and from, not where it stands or whom it meets
+        features -= {"in_road", "moves_out", "parked"}  # "swings right into the road", "pulled out of Orchard Close
+        # and turned right": where it turns to and from, not where it stands or whom it meets; "a car is stationary
+        # at the stop sign, then pulls away, turning right": held there, not parked
     return e.type in V.EGO_TYPES - {"motorcycle"} and e.count == 1 and not e.generic and \
         not features & (PLACE_FEATURES | PLACED_HOW) and e.road_type != "shoulder" and \
         (e.relative_to is None or e.relative_how in RELATIONS_TO_THE_EGO) and e.parent is None and e.named_of is None
@@ -10724,12 +10745,13 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     # east towards a crossroads": on its way
     if not driver_named and not first.waits_to_turn and not heading and not _sees_first(r, first) and \
             not _stops_for_someone(r, first) and (
-            not any(a[4] in OWN_WAY for a in first.actions) or opening is not None and opening[4] in ("stop", "block")):
+            not any(a[4] in OWN_WAY for a in first.actions) or opening is not None and opening[4] in ("stop", "block")
+            and not any(a[4] in ("turn_left", "turn_right", "u_turn") for a in first.actions)):
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
-        # pulled away": met by someone, who is the ego
+        # pulled away": met by someone, who is the ego (not "a car is stationary at the stop sign, then pulls away,
+        # turning right": a manoeuvre of its own)
     named = next((u for u in r.units if u.category == "agents" and u.meaning != "none"), None)
-    opens_on_it = named is not None and next(u for u in r.units if u.tokens[0].sentence == named.tokens[0].sentence
-                                             and u.category != "word" and not u.meaning.startswith("compass_")) is named
+    opens_on_it = named is not None and _opening_unit(r, named.tokens[0].sentence) is named
     if not people_first and not opens_on_it and not _the_speakers_vehicle_named_first(r):
         return None  # "the queue reaches the retail park, and a lorry is edging along": it opens on no vehicle
         # (but "At the signal the truck turned left ... the road we turned onto": the speakers' own, said first)
@@ -10737,6 +10759,20 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
     return first
+
+
+def _opening_unit(r: _Reader, sentence: int) -> Unit | None:
+    """The first unit of a sentence that says something, past a place said first ('At a T-junction controlled by
+    a stop sign, a car is stationary': the car)."""
+    placed = False
+    for u in r.units:
+        if u.tokens[0].sentence != sentence or u.category == "word" or u.meaning.startswith("compass_"):
+            continue
+        if u.category in ("road", "weather") or u.category == "comma" and placed:
+            placed = True
+            continue
+        return u
+    return None
 
 
 def _stops_for_someone(r: _Reader, first: Entity) -> bool:
@@ -12069,6 +12105,7 @@ BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out
 # ("at the stop with the doors open"; not a cyclist's "with my arm out")
 
 
+BUS_TAKEN = {"get", "got", "catch", "caught", "miss", "missed", "take", "took"}  # a passenger's bus, not a driver's
 BUS_PASSENGERS_WORDS = (("top", "deck"), ("lower", "deck"), ("upper", "deck"), ("bus", "driver"),
                         ("coach", "driver"), ("night", "coach"), ("greyhound",), ("on", "the", "bus"),
                         ("on", "the", "coach"), ("standing", "passengers"), ("passengers", "fell"),
@@ -12215,7 +12252,8 @@ def _a_drivers_trade(r: _Reader) -> None:
     aboard_a_bus = bool(crew) and _says_any(told, BUS_PASSENGERS_WORDS) or driven
     # "we were in the inside lane ... I was on the top deck", "the coach driver hit the horn": the bus its
     # passengers ride in; "the 7 stopped at the zebra ... Our driver stayed calm": the bus its driver drives
-    at_its_wheel = _says_any(told, BUS_DRIVERS_WORDS)
+    at_its_wheel = _says_any([w for k, w in enumerate(told) if not (
+        w == "my" and k and told[k - 1] in BUS_TAKEN)], BUS_DRIVERS_WORDS)  # (not "never did get my bus")
     ours = [e for e in r.entities if e.type == "bus" and not e.is_ego and e.count == 1 and
             (e.definite or at_its_wheel and not _said_with_a(r, e)) and
             not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None] \
