@@ -12896,3 +12896,35 @@ def test_a_vehicle_held_at_a_junction_that_then_turns_is_the_one_told_from():
     said = agents("At a T-junction controlled by a stop sign, a car is initially stationary. Its driver then pulls "
                   "away, turning right. In the road the car is joining, a pedestrian is walking across.")
     assert ("car", "turn_right", "ego") in said and not any(pos == "front" and kind == "car" for kind, _, pos in said)
+
+
+def test_other_bikes_riding_with_a_motorcycle_ego_are_motorbikes():
+    said = agents("You're leading a group ride on your motorbike with three other bikes following you in a line.")
+    assert said.count(("motorcycle", "go_straight", "back")) == 3
+
+
+def test_a_callers_vehicle_is_the_ego_when_the_caller_drives():
+    said = agents("Caller (F, driver) reports she is stopped at the red light. States a pickup came up in the lane "
+                  "next to her on the left and ran the red. Caller's veh not involved.")
+    assert sorted(said) == [("car", "go_straight", "left"), ("car", "stop", "ego")]
+
+
+@pytest.mark.parametrize("then, expected", [("A pickup in the lane to my left ran the red.",
+                                              [("car", "go_straight", "left"), ("car", "stop", "ego")]),
+                                             ("EMS + PD dispatched 14:03.", [("car", "stop", "ego")])])
+def test_first_in_line_puts_no_one_ahead(then, expected):
+    assert sorted(agents(f"I am stopped at the red light, first in line. {then}")) == expected
+
+
+def test_coach_before_a_name_is_a_title_not_a_bus():
+    said = agents("Hey Ethan, it's Coach Dana. When you did the right on red tonight, you came to a full stop first, "
+                  "and there was a motorcycle coming from your left.")
+    assert all(kind != "bus" for kind, _, _ in said)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I'm trying to get over into the left lane and the car beside me lets me in.", "change_lane_to_left"),
+    ("We got across into the right lane behind a lorry.", "change_lane_to_right"),
+])
+def test_getting_over_into_a_lane_changes_lane(prompt, expected):
+    assert ("car", expected, "ego") in agents(prompt)

@@ -186,7 +186,7 @@ def read_narration(prompt: str) -> Narration:
     text = _texting(text)
     text = _addressee(text, notes)
     text = _restarts(text, notes)
-    text = _asides(text)
+    text = _asides(_coach_as_a_title(text))
     text = _authors(text, notes)
     text = _expectations(text, notes)
     text = _topic(text, notes)
@@ -244,6 +244,14 @@ OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|c
                      r"had|at|into))", re.I)
 BUS_DRIVER = re.compile(r"\b(?:(?:our|your|my)\s+(?:bus\s+|coach\s+)?driver|the\s+(?:bus|coach)\s+driver)\b"
                         r"(?!\s+(?:of|in|ahead|behind|next)\b)", re.I)
+
+
+COACH_TITLE = re.compile(r"\bCoach\s+([A-Z][a-z]+)\b")
+
+
+def _coach_as_a_title(text: str) -> str:
+    """'it's Coach Dana': a title before a name, no coach on the road ('Coach Station' stays a place)."""
+    return COACH_TITLE.sub(lambda m: m.group(0) if known_word(m.group(1)) else m.group(1), text)
 
 
 def _passengers_bus(text: str, notes: list[str]) -> str:
@@ -1270,6 +1278,9 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
     text = re.sub(r"(^|[.!?,]\s+)(?:[Tt]he\s+)?[Cc]ar\s+(?=(?:was|is|smelled|smelt|smells|looked|looks|felt|feels)\s+"
                   r"(?!in\b|on\b|at\b|ahead\b|behind\b|next\b|beside\b|stopped\b|parked\b|coming\b|going\b|"
                   r"driving\b|turning\b|waiting\b|pulling\b))", r"\1the ego ", text)  # "Car was clean": the ride
+    role = re.search(r"\b([A-Z][a-z]+)\s*\([^()]*\bthe ego\s*\)", text)  # "Caller (F, driver) ... Caller's veh"
+    if role is not None and role.group(1) not in NOT_NAMES:
+        names.append(role.group(1))
     for name in names:
         text = re.sub(rf"\b{re.escape(name)}'s\b", "the ego's", text)
         text = re.sub(rf"\b{re.escape(name)}\b", "the ego", text)

@@ -8107,7 +8107,7 @@ def _place_in_queue(r: _Reader) -> None:
                 r.entities.append(behind)
         queued = [e for e in r.entities if not e.is_ego and e.type not in V.VULNERABLE_TYPES and e.count > 0 and
                   not e.features & {"behind", "side_left", "side_right", "road_straight", "toward", "road_left",
-                                    "road_right"}]
+                                    "road_right"}] if n > 1 else []  # (first in line: no one ahead)
         for e in queued:
             e.features.add("ahead")  # "fourth in line behind a bus": the bus is one of those ahead
         ahead = sum(e.count for e in queued)
@@ -10509,6 +10509,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     road = _ego_lane_road(r, road)
     _a_drivers_trade(r)
     _the_egos_brake_is_no_stop(r)
+    _other_bikes_like_the_egos(r)
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
         road.junction is None and "traffic_light" in road.required_signals and (any(
             f"from_{side}" in e.features and "from_lane" not in e.features for e in r.entities for side in SIDES)
@@ -10746,10 +10747,9 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if not driver_named and not first.waits_to_turn and not heading and not _sees_first(r, first) and \
             not _stops_for_someone(r, first) and (
             not any(a[4] in OWN_WAY for a in first.actions) or opening is not None and opening[4] in ("stop", "block")
-            and not any(a[4] in ("turn_left", "turn_right", "u_turn") for a in first.actions)):
+            and not _the_one_vehicle_turning(r, first)):
         return None  # "the bus has stopped with its lights flashing", "a car cuts in", "the bus stopped, then
-        # pulled away": met by someone, who is the ego (not "a car is stationary at the stop sign, then pulls away,
-        # turning right": a manoeuvre of its own)
+        # pulled away": met by someone, who is the ego
     named = next((u for u in r.units if u.category == "agents" and u.meaning != "none"), None)
     opens_on_it = named is not None and _opening_unit(r, named.tokens[0].sentence) is named
     if not people_first and not opens_on_it and not _the_speakers_vehicle_named_first(r):
@@ -10759,6 +10759,14 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
     return first
+
+
+def _the_one_vehicle_turning(r: _Reader, first: Entity) -> bool:
+    """'A car is stationary at the stop sign, then pulls away, turning right; a pedestrian is crossing': the only
+    vehicle named, held and then turning, makes a manoeuvre of its own (not 'a van and a truck wait at the
+    lights; the former turns left': one of several met there)."""
+    return any(a[4] in ("turn_left", "turn_right", "u_turn") for a in first.actions) and not any(
+        e is not first and not e.is_ego and e.type not in V.VULNERABLE_TYPES for e in r.entities)
 
 
 def _opening_unit(r: _Reader, sentence: int) -> Unit | None:
@@ -11058,6 +11066,18 @@ def _taken_over(r: _Reader, gone: Entity, into: Entity) -> None:
         if x.relative_to is gone:
             x.relative_to = into
     r.entities.remove(gone)
+
+
+def _other_bikes_like_the_egos(r: _Reader) -> None:
+    """'a group ride with three other bikes following you': other bikes beside a motorcycle ego are motorbikes."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or ego.type != "motorcycle":
+        return
+    for e in r.entities:
+        group = e.parent or e
+        if not e.is_ego and e.type == "cyclist" and group.head == "bike" and group.said_at >= 1 and \
+                "other" in [t.word for t in r.tokens[max(0, group.said_at - 3):group.said_at]]:
+            e.type = "motorcycle"
 
 
 def _the_ego_said_again(r: _Reader) -> None:
