@@ -12928,3 +12928,32 @@ def test_coach_before_a_name_is_a_title_not_a_bus():
 ])
 def test_getting_over_into_a_lane_changes_lane(prompt, expected):
     assert ("car", expected, "ego") in agents(prompt)
+
+
+def test_hoping_for_a_scene_asks_for_it_and_hoping_for_others_is_no_ones_act():
+    said = agents("Hi! I hope you can make a scene where the ego turns left at a junction and a cyclist crosses.")
+    assert sorted(said) == [("car", "turn_left", "ego"), ("cyclist", "cross_the_road", "front")]
+    said = agents("We were on the dual carriageway when an ambulance came up behind us. We moved across into the "
+                  "left-hand lane to let it by. I do hope whoever was waiting for it came to no harm.")
+    assert ("car", "change_lane_to_left", "ego") in said
+
+
+def test_the_tellers_family_at_the_wheel_is_the_ego():
+    said = agents("My husband and I were returning along the A38 dual carriageway when an ambulance came up behind "
+                  "us. My husband moved across into the left-hand lane to let it by.")
+    assert sorted(said) == [("ambulance", "go_straight", "back"), ("car", "change_lane_to_left", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I go round a left bend and a car comes the other way.", [("car", "go_straight", "ego"),
+                                                              ("car", "go_straight", "front_left")]),
+    ("A cyclist goes round a left-hand bend ahead of me.", [("car", "go_straight", "ego"),
+                                                            ("cyclist", "go_straight", "front")]),
+])
+def test_a_bend_named_by_its_side_is_the_roads_shape(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_moped_guy_rides_a_moped():
+    assert ("motorcycle", "stop", "back") in agents("Stopped at the zebra for a woman going across. Moped guy behind "
+                                                    "me also had to stop and leaned on his horn.")

@@ -203,7 +203,7 @@ def read_narration(prompt: str) -> Narration:
     text = _fleet_unit(text, notes)
     text = _numbered_protagonist(text, notes)
     text = _vehicle_numbers(_abbreviated_bodies(text))
-    text = _passengers_driver(text, notes)
+    text = _passengers_driver(_kin_at_the_wheel(text, notes), notes)
     text = _crews_vehicle(text, notes)
     text = _screenplay_driver(text, notes)
     text = _protagonist(text, notes)
@@ -633,7 +633,8 @@ def _authors(text: str, notes: list[str]) -> str:
     return AUTHORS.sub(lambda m: "", text)
 
 
-EXPECTATION = re.compile(r"(?:^|(?<=[.!?]\s))(?:(?:we|i) (?:would )?(?:expect|anticipate|hope)|(?:we|i) want to "
+EXPECTATION = re.compile(r"(?:^|(?<=[.!?]\s))(?:(?:we|i) (?:would )?(?:expect|anticipate|hope)(?!\s+(?:that\s+)?"
+                         r"(?:you|u|someone|somebody|anyone|this tool|the tool)\b)|(?:we|i) want to "
                          r"(?:see|verify|check|confirm) (?:whether|if|that)|the expected (?:behaviou?r|response|outcome) "
                          r"is)\b[^.!?]*[.!?]?\s*", re.I)
 
@@ -1286,6 +1287,23 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
         text = re.sub(rf"\b{re.escape(name)}\b", "the ego", text)
     notes.append(NARRATORS_DRIVER)
     return _drivers_pronoun(text, notes)
+
+
+KIN_AT_THE_WHEEL = r"husband|wife|partner|boyfriend|girlfriend|dad|father|mum|mom|mother|son|daughter|brother|sister"
+
+
+def _kin_at_the_wheel(text: str, notes: list[str]) -> str:
+    """'My husband and I were returning along the A38 ... My husband moved across into the left-hand lane': the
+    one of the teller's family who drives them is the ego."""
+    m = re.search(rf"\b[Mm]y ({KIN_AT_THE_WHEEL})\s+(?:[a-z]+ly\s+)?(?:{STORY_DRIVING}|moved|swerved|stopped|"
+                  rf"slammed|was at the wheel|was behind the wheel)\b", text)
+    if m is None or not re.search(r"\b(?:we|us|our)\b", text, re.I):
+        return text
+    kin = m.group(1)
+    text = re.sub(rf"\b(?:[Mm]y {kin} and I|[Mm]e and my {kin})\b", "we", text)
+    text = re.sub(rf"\b[Mm]y {kin}\b", "the ego", text)
+    notes.append(f"read the teller's {kin}, at the wheel, as the ego")
+    return text
 
 
 CREW = re.compile(r"\b(?:we|us|our)\b", re.I)

@@ -1737,6 +1737,7 @@ def _sits_in_moving_traffic(tokens: list[Token], i: int) -> bool:
 
 
 HEDGE_VERBS = {"think", "guess", "reckon", "believe", "suppose", "mean"}
+HOPING = {"hope", "pray", "trust"}  # "I do hope whoever was waiting for it came to no harm": of them, not of me
 TOLD_TO_THE_LISTENER = (("wo", "not", "believe"), ("would", "not", "believe"), ("will", "not", "believe"),
                         ("will", "never", "believe"), ("would", "never", "believe"), ("will", "never", "guess"),
                         ("know", "what"), ("guessed", "it"), ("can", "imagine"), ("could", "imagine"))
@@ -2061,7 +2062,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             _road_number(tokens, m.end):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "US-101", "I-70": a highway, not the narrators
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["i"] and \
-            m.end < len(tokens) and tokens[m.end].word in HEDGE_VERBS:
+            m.end < len(tokens) and (tokens[m.end].word in HEDGE_VERBS or tokens[m.end].word in HOPING or
+                                     tokens[m.end].word in ("do", "really", "just") and
+                                     m.end + 1 < len(tokens) and tokens[m.end + 1].word in HOPING):
         return [Unit(m.start, m.end, "word", "i", span)]  # "a truck, I think, pulls out": a hedge, not the ego acting
     if m.category == "agents" and m.meaning == "ego" and [t.word for t in span] == ["you"] and \
             (_says_any([t.word for t in tokens[m.end:m.end + 3]], TOLD_TO_THE_LISTENER) or
@@ -6396,7 +6399,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
             return  # "waiting for the light to change"
         if action == "move" and e.is_ego and clause_units is not None and k is not None and (
                 set(u.base.split()) & OVERTAKING or k + 1 < len(clause_units)
-                and clause_units[k + 1].word in ("around", "round", "past")):  # "go around it on the left"
+                and clause_units[k + 1].word in ("around", "round", "past")) and \
+                not _round_a_bend(clause_units, k):  # "go around it on the left"
             ahead = clause_units[k + 1:k + 8]
             ahead = ahead[:next((j for j, x in enumerate(ahead) if x.category == "actions" and j > 0 and
                                  ahead[j - 1].category == "agents"), len(ahead))]
@@ -10759,6 +10763,19 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if any(_bare_verb(u) or u.tokens[0].word in ("don't", "dont", "do", "never") for u in opening):
         return None  # "this pickup's doing forty. Don't pass him. Stay behind.": said to the one at the wheel
     return first
+
+
+BENDS = {"bend", "bends", "corner", "corners", "curve", "curves", "hairpin", "kink", "hander"}
+
+
+def _round_a_bend(units: list[Unit], k: int) -> bool:
+    """'go round a left bend', 'came round the corner': the road's shape the verb follows, no one gone round."""
+    for x in units[k + 1:k + 6]:
+        if x.category == "agents" or x.word in ("it", "him", "her", "them"):
+            return False
+        if {t.word for t in x.tokens} & BENDS:
+            return True
+    return False
 
 
 def _the_one_vehicle_turning(r: _Reader, first: Entity) -> bool:
