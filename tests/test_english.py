@@ -12957,3 +12957,28 @@ def test_a_bend_named_by_its_side_is_the_roads_shape(prompt, expected):
 def test_a_moped_guy_rides_a_moped():
     assert ("motorcycle", "stop", "back") in agents("Stopped at the zebra for a woman going across. Moped guy behind "
                                                     "me also had to stop and leaned on his horn.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "Reporting a dark grey Range Rover. I was riding straight across at the crossroads when the driver, heading "
+    "towards me from the far side, swung left directly in front of my bike. His wing mirror came within about 30 cm "
+    "of my bars.",
+    "Bike commuter here. Reporting a white Transit. I was cycling in the right-hand lane, the Transit was in the "
+    "left-hand lane slightly behind me, and a refuse truck had stopped in front of it. The driver pulled sharply "
+    "across into my lane.",
+])
+def test_a_cyclists_report_is_told_from_the_vehicle_reported(prompt):
+    said = agents(prompt)
+    assert any(kind == "car" and pos == "ego" for kind, _, pos in said)
+    assert any(kind == "cyclist" for kind, _, _ in said)
+
+
+@pytest.mark.parametrize("prompt", [
+    "Zebra in the 20 limit: our lot, four riders, all stopped while a grandma and a toddler cross, and the test car "
+    "arrives behind and stops with us.",
+    "Dusk. Test car approaching the signals at a toucan and two of our youth riders are pedalling across it, so it "
+    "has to stop.",
+])
+def test_a_clubs_riders_beside_the_test_car_are_cyclists(prompt):
+    said = agents(prompt)
+    assert ("car", "stop", "ego") in said and any(kind == "cyclist" for kind, _, _ in said)

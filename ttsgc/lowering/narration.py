@@ -286,7 +286,11 @@ RIDING = re.compile(r"\b(?:(?:i|we)(?:'m|'re|\s+am|\s+are|\s+was|\s+were)?\s+(?:
                     r"of\s+us\s+(?:riding|cycling|single|two\s+abreast|in\s+single)|"
                     r"(?:my|our)\s+(?:bicycles?|club|club\s+run|group\s+ride|riders|lads|juniors|back\s+wheel)|"
                     r"of\s+our\s+\w+\s+(?:is|are|was|were)\s+(?:riding|cycling)|on\s+(?:my|our)\s+bicycles?|"
-                    r"(?:the\s+last|the\s+front)\s+rider|back\s+marker|ride\s+leader|club\s+(?:run|route))\b",
+                    r"(?:the\s+last|the\s+front)\s+rider|back\s+marker|ride\s+leader|club\s+(?:run|route)|"
+                    r"(?:two|three|four|five|six|seven|eight|\d)\s+of\s+us|our\s+tail[\s-]end(?:er|\s+charlie)|"
+                    r"our\s+lot|of\s+ours|primary\s+position|"
+                    r"(?:take|takes|taken|taking|took)\s+the\s+lane|(?:saturday|sunday)\s+social|on\s+my\s+wheel|"
+                    r"youth\s+riders)\b",
                     re.I)  # the teller said to ride, or one of the teller's group
 DRIVING_MYSELF = re.compile(r"\b(?:i|we)(?:'m|\s+am|\s+was|\s+were|'re|\s+are)?\s+(?:driving|drove|drive)\b|"
                             r"\b(?:my|our)\s+(?:car|van|truck|lorry|test\s+car|test\s+vehicle)\b|"
@@ -306,6 +310,11 @@ GROUPS_OF_US = (  # a group's count, said of the riders (or walkers) in the thir
     (re.compile(rf"\bone\s+of\s+{OUR_PEOPLE}", re.I), "a cyclist"),
     (re.compile(rf"\bour\s+group\s+of\s+{NUMBER}\b", re.I), r"a group of \1 cyclists"),
     (re.compile(r"\b(?:the\s+lot|all|both)\s+of\s+us\b", re.I), "the cyclists"),
+    (re.compile(rf"\bour\s+lot,?\s+{NUMBER}\s+riders\b", re.I), r"\1 cyclists"),  # "our lot, four riders"
+    (re.compile(r"\bour\s+lot\b", re.I), "the cyclists"),
+    (re.compile(r"\bone\s+of\s+ours\b", re.I), "a cyclist"),
+    (re.compile(rf"\b{NUMBER}\s+(?:of\s+our\s+)?(?:youth\s+|junior\s+|club\s+)?(?:riders|juniors)\b", re.I),
+     r"\1 cyclists"),  # "three riders in a line", "two of our youth riders", "two juniors": the club's own
 )
 AS_ONE = {"i'm": "{} is", "i am": "{} is", "i was": "{} was", "i've": "{} has", "i'd": "{} had", "i": "{}",
           "me": "{}", "my": "{}'s", "myself": "{}"}

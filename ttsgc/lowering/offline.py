@@ -11435,7 +11435,11 @@ PEDAL_PHRASES = (("close", "pass"), ("helmet", "cam"), ("i", "was", "cycling"), 
                  ("my", "pedal"), ("into", "the", "gutter"), ("knocked", "me", "off"), ("took", "me", "off"),
                  ("riding", "single", "file"), ("riding", "in", "single", "file"), ("ride", "captain"),
                  ("training", "ride"), ("social", "ride"), ("club", "training"), ("sunday", "social"),
-                 ("saturday", "social"))
+                 ("saturday", "social"), ("my", "bars"), ("bike", "commuter"), ("taking", "the", "lane"),
+                 ("take", "the", "lane"), ("took", "the", "lane"), ("hand", "out"), ("kid", "on", "the", "back"),
+                 ("child", "seat"), ("lit", "up", "front", "and", "back"), ("lights", "on", "front", "and", "rear"),
+                 ("front", "and", "back", "lights"), ("lights", "front", "and", "rear"),
+                 ("pedalling", "across"), ("pedaling", "across"))
 # (not "the cycle courier was banned"; "I was riding" and "my bike" are a motorcyclist's words too)
 MOTOR_WORDS = {"motorbike", "motorcycle", "moped", "scooter", "motorcyclist", "biker"}
 REPORTING_WORDS = {"reporting", "report", "complaint", "file"}
@@ -11474,7 +11478,9 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # ("the draught nearly pulled me off the bike": the teller's own)
     reported_riding = set(words) & {"riding", "rode"} and set(words) & REPORTING_WORDS  # "I'm reporting a police
     # patrol car ... it overtook me ... while I was riding past a line of parked cars": a rider's report of a driver
-    met = any(w in MET_BY | PASSING_ME and words[k + 1:k + 2] in (["me"], ["us"]) for k, w in enumerate(words))
+    met = any(w in MET_BY | PASSING_ME and words[k + 1:k + 2] in (["me"], ["us"], ["my"]) or
+              words[k:k + 4] == ["in", "front", "of", "my"] for k, w in enumerate(words))
+    # ("swung left directly in front of my bike", "turns left across my line")
     met = met or _says_any(words, PEDAL_PHRASES) and bool(set(words) & (PASSING_ME | {"past"}))  # "sat off my back
     # wheel, then flew past with inches to spare": passed, the rider said by the bike
     plain = _says_any(words, PEDAL_PHRASES) or _the_teller_rides(r) and met  # "Riding west into the low sun when a
@@ -11499,7 +11505,7 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
         _the_ego_now(r, reported[0])  # rider said only by the bike, met by the one vehicle named
         return
     if ego is None or ego.head not in SPEAKING_SELF and not _supplied(r, ego) or \
-            ego.type not in ("car", "motorcycle") or ego.aliases - SPEAKING_SELF - {"you"} or not on_a_bike or \
+            ego.type not in ("car", "motorcycle") or ego.aliases - SPEAKING_SELF - {"you"} - BICYCLES or not on_a_bike or \
             others_ride:
         return
     for e in own_bikes:  # "I was riding my bicycle northbound", "I was on my bicycle on the roundabout, going
@@ -11513,7 +11519,7 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # across the cycle lane": the one vehicle, standing)
     if not movers:
         return
-    subject = movers[0]
+    subject = _the_one_reported(r, vehicles) or movers[0]
     own = ego.features & set(SEEN_THE_OTHER_WAY)
     if _says_any(words, (("i", "was", "crossing"), ("i", "crossed"), ("toucan",))):
         own = {"crosswalk"}  # "I was crossing at the toucan crossing when a BMW ran the red": on the crossing
@@ -11541,6 +11547,21 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
                    f"'{subject.head}' reported is the ego")
 
 
+REPORTED_BY = {"reporting", "report", "about", "complain", "complaining", "complaint"}
+
+
+def _the_one_reported(r: _Reader, vehicles: list[Entity]) -> Entity | None:
+    """'Reporting a white Transit ...', 'this report is about a police car': the vehicle the report names as its
+    subject, whatever else moves in it."""
+    for e in vehicles:
+        before = [t.word for t in r.tokens[max(0, e.said_at - 5):e.said_at]
+                  if t.sentence == r.tokens[e.said_at].sentence]
+        if set(before) & REPORTED_BY:
+            return e
+    return None
+
+
+BICYCLES = {"bike", "bicycle", "pushbike", "push bike", "cycle"}  # the teller's own, read first as a motorbike
 LEVEL_WITH_THE_TURNER = (("alongside",), ("level", "with"), ("next", "to"), ("beside",), ("on", "his", "inside"),
                          ("on", "her", "inside"), ("on", "its", "inside"), ("up", "the", "inside"))
 ACROSS_THE_RIDER = (("across", "me"), ("across", "my"), ("across", "the", "bike", "lane"), ("across", "the", "cycle"),
