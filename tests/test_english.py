@@ -12982,3 +12982,61 @@ def test_a_cyclists_report_is_told_from_the_vehicle_reported(prompt):
 def test_a_clubs_riders_beside_the_test_car_are_cyclists(prompt):
     said = agents(prompt)
     assert ("car", "stop", "ego") in said and any(kind == "cyclist" for kind, _, _ in said)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Shuttle lights on the A61 today. Grey Mercedes came up to my red and just kept on going, straight into the "
+     "coned-off single lane while our tipper lorry was heading towards him from the other end. Lorry had to pull "
+     "up sharp and stop.", [("car", "go_straight", "ego"), ("truck", "stop", "front_left")]),
+    ("Temp lights on red my side, traffic backing up. Some lad on a motorbike came up the outside of the line and "
+     "carried on through the red into the works section.", [("motorcycle", "go_straight", "ego")]),
+])
+def test_works_staff_tell_of_the_driver_at_their_signals(prompt, expected):
+    assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt, ego, speed", [
+    ("A lorry moving at 15 m/s catches up with a cyclist travelling at 6 m/s. The lorry overtakes without leaving "
+     "its lane.", "truck", 54),
+    ("Car A travels at 28 m/s in the left-hand lane of a two-lane motorway and is gaining on a lorry ahead of it in "
+     "that lane. The driver of car A moves out into the right-hand lane to overtake.", "car", 101),
+])
+def test_a_word_problems_overtaker_is_the_one_told_from_at_its_own_speed(prompt, ego, speed):
+    scene = lower(prompt).scenario
+    assert scene.ego.type == ego and round(scene.ego.speed.value) == speed
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("Green man at the pedestrian lights by the bank. I'm going over and a car turns right out of Station Road, "
+     "across right in front of me. The bus coming the other way stopped, good lad, but she didn't even look.",
+     ("car", "turn_right", "ego")),
+    ("Zebra crossing on the front, I'm more than halfway over, and a little silver Toyota drives straight through, "
+     "with a taxi right on its tail doing the same. Our Sandra says I shouldn't be out on the scooter.",
+     ("car", "go_straight", "ego")),
+])
+def test_a_teller_going_over_a_crossing_is_on_foot_and_the_vehicle_met_is_the_ego(prompt, ego):
+    said = agents(prompt)
+    assert ("pedestrian", "cross_the_road", "front") in said or \
+        ("pedestrian", "cross_the_road", "near_the_crosswalk") in said
+    assert [a for a in said if a[2] == "ego"] == [ego]
+    assert [kind for kind, _, _ in said].count("pedestrian") == 1
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Running empty over the Pennines in thick fog. Road to myself. Held 40 all the way over.",
+     [("truck", "go_straight", "ego")]),
+    ("In the artic pulling left out of the trading estate at the traffic lights, and a bloke on a pushbike shoots "
+     "down my nearside.", [("cyclist", "go_straight", "left"), ("truck", "turn_left", "ego")]),
+    ("This is why you keep your following distance, folks. I'm in the right lane at 65, and a four-wheeler in the "
+     "left lane guns it and cuts in right in front of my bumper.",
+     [("car", "change_lane_to_right", "left"), ("truck", "go_straight", "ego")]),
+])
+def test_a_truckers_own_words_put_the_speaker_in_the_truck(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_a_proposals_we_are_its_authors_not_a_vehicle():
+    said = agents("At the May consultation event residents said they feel unsafe turning right out of Ferry Lane. We "
+                  "propose to simulate a car in Ferry Lane making a right turn onto Harbour Road at the Give Way "
+                  "sign, with a bus approaching along Harbour Road from the left.")
+    assert sorted(said) == [("bus", "go_straight", "road_of_left_turn"), ("car", "turn_right", "ego")]

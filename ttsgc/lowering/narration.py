@@ -187,7 +187,7 @@ def read_narration(prompt: str) -> Narration:
     text = _addressee(text, notes)
     text = _restarts(text, notes)
     text = _asides(_coach_as_a_title(text))
-    text = _authors(text, notes)
+    text = _modelling_authors(_authors(text, notes), notes)
     text = _expectations(text, notes)
     text = _topic(text, notes)
     text = _passengers_bus(text, notes)
@@ -631,6 +631,23 @@ def _outline_example(lines: list[str]) -> list[str]:
 AUTHORS = re.compile(r"\b(?:(?:for|in) (?:our|this) (?:project|study|work|report|thesis|paper|assignment|"
                      r"coursework),?\s*)?\bwe (?:consider|examine|study|investigate|model|simulate|present|describe|analyse|analyze|"
                      r"look at|focus on|propose|choose|chose|selected|select)\s+", re.I)
+
+
+MODELLING = re.compile(r"\b(?:we|i)\s+(?:(?:would\s+)?(?:propose|intend|plan|want|would like|wish|aim)\s+(?:to\s+)?|"
+                       r"will\s+|shall\s+|would\s+)?(?:simulate|simulating|model|modelling|modeling|represent|"
+                       r"recreate|reconstruct)\b|\bwe\s+ask\s+that\s+the\s+(?:model|simulation)\b", re.I)
+AUTHORS_WORDS = {"we": "the authors", "us": "the authors", "our": "the authors'", "ours": "the authors'"}
+
+
+def _modelling_authors(text: str, notes: list[str]) -> str:
+    """'We propose to simulate a car in Ferry Lane making a right turn', 'We will model a westbound car ...': the
+    authors of a proposal say 'we' of their work and their office, never of a vehicle on the road."""
+    if not MODELLING.search(text) or DRIVING_MYSELF.search(text) or \
+            re.search(r"\b(?:we|i)(?:'re|'m|\s+were|\s+was|\s+are|\s+am)?\s+(?:riding|cycling|walking|crossing)\b",
+                      text, re.I):
+        return text
+    notes.append("read the proposal's 'we' as its authors")
+    return re.sub(r"\b(we|us|our|ours)\b", lambda m: AUTHORS_WORDS[m.group(1).lower()], text, flags=re.I)
 
 
 def _authors(text: str, notes: list[str]) -> str:

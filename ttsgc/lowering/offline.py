@@ -2139,6 +2139,13 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                           ["our", "line"]) or
             nxt == "the" and m.end + 1 < len(tokens) and tokens[m.end + 1].word in LANE_NAMES):
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "I held the middle, steady": kept to a lane
+    if m.category == "actions" and m.meaning == "stop" and [t.base for t in span] == ["hold"] and (
+            nxt is not None and read_number(nxt) is not None or nxt in ("a", "steady", "speed", "my", "our", "her",
+                                                                     "his", "its") and
+            any(t.word in ("speed", "steady", "mph", "kmh", "pace") or read_number(t.word) is not None
+                for t in tokens[m.end:m.end + 4])):
+        return [Unit(m.start, m.end, "actions", "go_straight", span)]  # "Held 40 all the way over", "holding a
+        # steady 15 m/s": a speed kept, no stop
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
             nxt == "back":
         return [Unit(m.start, m.end, "word", span[0].word, span)]  # "I sat back behind the bike": hung back, moving
@@ -9184,8 +9191,13 @@ def _the_speakers_seat(r: _Reader, units: list[Unit], np: NounPhrase) -> bool:
     """'I'm in the artic', 'coming through the village in the tipper', 'me leading in the DAF': in a first-person
     account, the vehicle the speaker is in ('in the', 'in my') is the ego's own, unless it is placed or acts; so is
     the one a speaker works with ('waiting to make my left with the plow'), unless met with ('collided with')."""
-    if not _one_vehicle(np) or np.first < 2 or units[np.first].word not in ("the", "my", "our"):
+    if not _one_vehicle(np) or np.first < 1 or units[np.first].word not in ("the", "my", "our"):
         return False
+    if np.first == 1:  # "In the artic pulling left out of the trading estate, and a bloke on a pushbike shoots
+        # down my nearside": a sentence opened in the vehicle, doing what the speaker does
+        return units[0].word == "in" and np.index + 1 < len(units) and units[np.index + 1].category == "actions" \
+            and units[np.index + 1].tokens[0].word.endswith("ing") and any(t.word in FIRST_PERSON for t in r.tokens) \
+            and not any(e.is_ego and e.head not in SPEAKING_SELF and not _supplied(r, e) for e in r.entities)
     if not (units[np.first - 1].word == "in" or units[np.first - 1].word == "with" and
             units[np.first - 2].category != "agents" and units[np.first - 2].tokens[-1].base not in MEETING_WITH):
         return False
@@ -9891,7 +9903,10 @@ SIZE_WORDS = {"long", "wide", "high", "tall", "across", "deep"}
 
 
 def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
-    """Triggers, speeds and gaps said in numbers: 'within 15 m', 'after 2 seconds', 'at 50 km/h', '10 m ahead'."""
+    """Triggers, speeds and gaps said in numbers: 'within 15 m', 'after 2 seconds', 'at 50 km/h', '10 m ahead'. Of
+    two speeds in one clause the subject's is the first ('a lorry moving at 15 m/s catches up with a cyclist
+    travelling at 6 m/s')."""
+    timed: list[Entity] = []
     for k, u in enumerate(units):
         if u.category != "number" or not subject:
             continue
@@ -9928,7 +9943,9 @@ def _numbers(r: _Reader, units: list[Unit], subject: list[Entity]) -> None:
             speed = Speed(value=value, unit="km/h" if unit_word == "kmh" else "mph")
             if speed.mps <= V.SPEED_RANGE_MPS[1]:
                 for e in subject:
-                    e.speed = speed
+                    if not any(e is x for x in timed):
+                        e.speed = speed
+                        timed.append(e)
             else:
                 r.notes.append(f"left out: a speed of {u.word} {unit_word} is above what the language allows")
             r.mark(u), r.mark(nxt)
@@ -10678,7 +10695,9 @@ def _may_drive_the_scene(e: Entity, own_lane: bool = False) -> bool:
     by the ego.) With own_lane, a lane it is named in is its own ('Car A is travelling in the right-hand lane. An
     ambulance comes up behind it')."""
     lanes = {f for f in e.features if f.startswith("named_lane_")} if own_lane else set()
-    features = e.features - lanes - {f"side_{f[len('named_lane_'):]}" for f in lanes}
+    features = e.features - lanes - {f"side_{f[len('named_lane_'):]}" for f in lanes} - (
+        {"overtaking"} if own_lane else set())  # ("A lorry ... catches up with a cyclist. The
+    # lorry overtakes": the text opens on the one overtaking, who is no one's overtaker but the scene's)
     if any(a[4] in ("turn", "turn_left", "turn_right") for a in e.actions):
         features -= {"in_road", "moves_out", "parked"}  # "swings right into the road", "pulled out of Orchard Close
         # and turned right": where it turns to and from, not where it stands or whom it meets; "a car is stationary
@@ -10742,7 +10761,7 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
             _may_drive_the_scene(replace(first, relative_to=None)):
         return first  # "A car is 20 m behind a cyclist when the cyclist turns right", "A lorry moving at 18 m/s is
         # 40 m behind car B": the one the text opens on, placed by one named after it, is the one it follows
-    if first is None or not _may_drive_the_scene(first):
+    if first is None or not _may_drive_the_scene(first, own_lane=True):
         return None
     earliest = min((a[0] for a in first.actions), default=0)
     opening = min((a for a in first.actions if a[0] == earliest), key=lambda a: a[3], default=None)
@@ -11172,7 +11191,8 @@ COMING_AT_ME = (("at", "me"), ("towards", "me"), ("toward", "me"), ("up", "to", 
 TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), ("stop", "slow", "bat"),
                    ("my", "stop", "go"), ("flagging",), ("my", "end"), ("to", "my", "red"), ("at", "my", "red"),
                    ("spun", "the", "board"), ("spun", "it", "to"), ("waved", "through"), ("speed", "gun"),
-                   ("stop", "board"), ("the", "paddle"), ("stop", "slow"), ("go", "board"), ("my", "stop", "end"))
+                   ("stop", "board"), ("the", "paddle"), ("stop", "slow"), ("go", "board"), ("my", "stop", "end"),
+                   ("through", "my", "red"), ("past", "my", "red"), ("up", "to", "my", "red"))
 # a road-works operative's words for holding and releasing traffic: the teller is on foot at the roadside
 
 
@@ -11195,7 +11215,8 @@ MET_BY = {"towards", "toward", "past", "beside", "at", "across", "round", "aroun
 
 WORKS_WORDS = (("roadworks",), ("road", "works"), ("night", "works"), ("taper",), ("flagger",), ("flagging",),
                ("portaflow",), ("portaflows",), ("banksman",), ("temp", "lights"), ("temporary", "lights"),
-               ("stop", "go"), ("stop", "slow"), ("shuttle", "working"), ("speed", "gun"))
+               ("stop", "go"), ("stop", "slow"), ("shuttle", "working"), ("speed", "gun"), ("portable", "signals"),
+               ("portable", "lights"), ("shuttle", "lights"), ("temp", "signals"), ("temporary", "signals"))
 
 
 REACTING = {"reacts", "reacted", "notices", "noticed", "hears", "heard", "sees", "saw", "spots", "spotted", "brakes",
@@ -11244,7 +11265,8 @@ def _works_report(r: _Reader) -> None:
     lights on red and a Micra pulled up at the stop line': a report from road works, by staff who name no one
     at a wheel, is told about the first vehicle it names: the ego."""
     words = [t.word for t in r.tokens]
-    if not _says_any(words, WORKS_WORDS) or not _names_no_ego(r, words) or {"driving", "drove"} & set(words):
+    if not _says_any(words, WORKS_WORDS) or {"driving", "drove"} & set(words) or \
+            not (_names_no_ego(r, words) or _only_the_controls_are_mine(r, words)):
         return  # (a teller who says "I" or "my" is read as a witness: _witness_on_foot)
     first = min((e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and
                  e.parent is None and e.said_at >= 0), key=lambda e: e.said_at, default=None)
@@ -11253,6 +11275,18 @@ def _works_report(r: _Reader) -> None:
         _now_the_ego(r, first, "a report from road works is told about the first vehicle it names")
 
 
+def _only_the_controls_are_mine(r: _Reader, words: list[str]) -> bool:
+    """'Temp lights on red my side', 'my end of the shuttle': staff who say 'my' only of the signals they work
+    name no one at a wheel."""
+    mine = [k for k, w in enumerate(words) if w in FIRST_PERSON | {"we", "us", "our", "you", "your"}]
+    return bool(mine) and not any(e.is_ego for e in r.entities) and \
+        all(words[k] == "my" and words[k + 1:k + 2] in (["side"], ["end"], ["red"], ["board"], ["lights"])
+            for k in mine)
+
+
+ONCOMING_IN_THE_WORKS = (("towards", "him"), ("towards", "her"), ("toward", "him"), ("toward", "her"),
+                         ("the", "other", "end"), ("the", "opposite", "way"), ("his", "way"), ("her", "way"),
+                         ("coming", "at", "him"), ("coming", "at", "her"))
 CREW_WORDS = WORKS_WORDS + (("closure",), ("closures",), ("coned",), ("cones",), ("stop", "board"),
                            ("crash", "cushion"), ("ipv",), ("works",), ("operatives",), ("operative",))
 STANDING_ACTIONS = {"stop", "block"}
@@ -11261,12 +11295,15 @@ STANDING_ACTIONS = {"stop", "block"}
 def _the_crews_own_stands(r: _Reader) -> None:
     """'Our crash cushion truck was parked at the start of the closure and a lorry in lane 1 went into the back of
     it', 'our arrow board truck parked at the head of the taper; a semi in the right lane started merging left': a
-    works crew's own lorry, standing where the crew work, is the scene the report is about a driver meeting; that
-    driver's vehicle is the ego (a patrol's own car stays theirs)."""
+    works crew's own lorry, standing where the crew work (or, when a driver is held at the crew's signals, coming
+    through the works), is the scene the report is about a driver meeting; that driver's vehicle is the ego (a
+    patrol's own car stays theirs)."""
     words = [t.word for t in r.tokens]
     ego = next((e for e in r.entities if e.is_ego), None)
+    held = _says_any(words, TRAFFIC_CONTROL)  # "Grey Mercedes came up to my red ... while our tipper lorry was
+    # heading towards him": the one held at the crew's signal is met by their lorry, moving or not
     if ego is None or not _says_any(words, CREW_WORDS) or {"driving", "drove", "drive", "drives"} & set(words) or \
-            any(a[4] not in STANDING_ACTIONS for a in ego.actions) or ego.type != "truck" or not any(
+            any(a[4] not in STANDING_ACTIONS for a in ego.actions) and not held or ego.type != "truck" or not any(
                 t.base in {n.split()[-1] for n in ego.aliases | {ego.head}} and
                 {"our", "my"} & set(words[max(0, t.index - 4):t.index])
                 for t in r.tokens):
@@ -11278,14 +11315,16 @@ def _the_crews_own_stands(r: _Reader) -> None:
         return
     ego.is_ego = False
     ego.features = {"parked"} if not ego.actions else set()
-    if met.relative_to is ego and met.relative_how:
+    if _says_any(words, ONCOMING_IN_THE_WORKS):
+        ego.features.add("road_straight")  # "heading towards him from the other end": through the works his way
+    elif met.relative_to is ego and met.relative_how:
         ego.features.add(SEEN_THE_OTHER_WAY.get(met.relative_how, "ahead"))  # "a Polo had to stop behind it"
     else:
         ego.features.add("ahead")  # the crew's vehicle stands where the driver is going
     met.relative_to = None
     ego.stage = met.stage
     _the_ego_now(r, met)
-    r.notes.append(f"read the {met.head} as the ego: a works crew's own vehicle stands where the driver met it")
+    r.notes.append(f"read the {met.head} as the ego: a works crew's own vehicle is where the driver met it")
 
 
 CROSSINGS = (("zebra",), ("crosswalk",), ("pelican",), ("puffin",), ("toucan",), ("the", "crossing"))
@@ -11326,7 +11365,8 @@ def _witness_on_foot(r: _Reader) -> None:
     told_by_me = ego is not None and (ego.head in SPEAKING_SELF or ego.head == "ego" and "ego" not in text and any(
         w in SPEAKING_SELF for w in text))  # ("Sitting at the bus stop ..., I watched": the teller, first as a
     # participle's subject; "we were on the zebra": the teller and company)
-    on_a_scooter = ego is not None and ego.type == "motorcycle" and _says_any(text, (("my", "scooter"),))
+    on_a_scooter = ego is not None and ego.type == "motorcycle" and _says_any(text, (("my", "scooter"),
+                                                                                  ("on", "the", "scooter")))
     aboard_on_a_crossing = on_a_scooter and _says_any(text, CROSSINGS) and (
         _on_the_way_over(r.tokens) or _says_any(text, (("halfway",), ("green", "man"), ("going", "over"))))
     told_by_me = told_by_me or aboard_on_a_crossing  # "There I was on my scooter, about halfway across the zebra":
@@ -11356,6 +11396,9 @@ def _witness_on_foot(r: _Reader) -> None:
         words = (words - AT_THE_WHEEL) | {"standing"}
     if _only_looks_on(r, ego, text):
         words.add("a pedestrian")  # "I watched as a double-decker swung right into Wharf Lane": an onlooker
+    if words & {"going over", "going across"} and _says_any(text, CROSSINGS + (("green", "man"),)):
+        words |= {"crossing", "on the crossing"}  # "Green man at the pedestrian lights. I'm going over and a car
+        # turns right"
     if not patrol and (not words & ON_FOOT or words & AT_THE_WHEEL) or \
             on_a_scooter and not words & (CROSSING_ON_FOOT | FOOTWAYS):
         return  # ("halfway over the zebra crossing on my scooter", "on my scooter on the pavement": a mobility
@@ -12328,8 +12371,9 @@ def _a_drivers_trade(r: _Reader) -> None:
     if ego is None and (set(words) & SPEAKERS or trade == "truck"):
         ego = _ego_entity(r, 0)  # "doing 65 ... in front of my bumper": the speaker, told of by no noun ("Empty
         # trailer, fog down on the Pennines": a trucker's words are the speaker's own)
-    if ego is not None and ego.type == "car" and ego.head in FIRST_PERSON | {"we", "us", "our", "ego"}:
-        ego.type = trade
+    if ego is not None and ego.type == "car" and (ego.head in FIRST_PERSON | {"we", "us", "our", "ego"} or
+                                                  ego.head == "you" and set(words) & FIRST_PERSON):
+        ego.type = trade  # ("This is why you keep your distance. I'm in the right lane at 65 ...": the speaker)
         r.notes.append(f"inferred: the speaker talks as a {trade} driver; the ego is a {trade}")
         for e in ours if trade == "bus" else []:
             _fold(r, ego, e)
