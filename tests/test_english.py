@@ -13040,3 +13040,33 @@ def test_a_proposals_we_are_its_authors_not_a_vehicle():
                   "propose to simulate a car in Ferry Lane making a right turn onto Harbour Road at the Give Way "
                   "sign, with a bus approaching along Harbour Road from the left.")
     assert sorted(said) == [("bus", "go_straight", "road_of_left_turn"), ("car", "turn_right", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Road three lanes is, ego car middle lane in going. Behind of ego car, one truck also coming.",
+     ("truck", "go_straight", "back")),
+    ("I in middle lane driving. My behind a big truck is coming.", ("truck", "go_straight", "back")),
+    ("I at four-way stop stopped. Left side road from one pickup came, straight went. It passed, then I to right "
+     "turned.", ("car", "turn_right", "ego")),
+    ("Intersection at, I left turn want. Opposite side from two cars coming.", ("car", "go_straight",
+                                                                                 "road_of_straight")),
+])
+def test_places_said_after_their_noun_as_turkish_says_them(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_that_before_a_noun_after_a_place_names_the_one_said_before():
+    said = agents("The ego passes a car that is stopped on the right shoulder. A police car is stopped behind that "
+                  "car, on the shoulder too.")
+    assert ("police", "stop", "front_right") in said
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("RP driving black Focus in the middle lane, ambulance on blues approached from behind.",
+     [("ambulance", "go_straight", "back"), ("car", "go_straight", "ego")]),
+    ("V1 advises he stopped at the stop sign, then continued straight through. V2, approaching from V1's right, "
+     "blew its stop.", [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn"),
+                        ("car", "stop", "ego")]),
+])
+def test_a_logs_note_style_names_the_reporting_car_and_a_stop_blown(prompt, expected):
+    assert sorted(agents(prompt)) == expected

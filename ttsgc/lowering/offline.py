@@ -3461,7 +3461,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
                     u.word == "and" and _between_one_and(current):
                 current.append(u)
                 continue
-            if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")):
+            if u.word == "that" and not (current and current[-1].category in ("agents", "positions", "behaviours")) \
+                    or u.word == "that" and current and current[-1].category == "positions" and nxt is not None and \
+                    nxt.category == "agents" and nxt.meaning != "ego":  # "stopped behind that car": which car
                 current.append(u)
                 continue
             if u.word == "as" and (nxt is not None and nxt.category == "word" and nxt.word in ("well", "soon", "if")
@@ -9165,7 +9167,7 @@ def _at_the_wheel_of(units: list[Unit], before: list[NounPhrase], np: NounPhrase
     between = units[before[k].index + 1: np.first]
     if np.first < np.index and units[np.first].word == "of":
         between.append(units[np.first])  # "at the wheel of the ambulance": 'of' was read into the noun phrase
-    while len(between) > 1 and between[-1].category == "word" and between[-1].word in COLOURS:
+    while len(between) > 1 and between[-1].category == "word" and between[-1].word in PAINT:
         between.pop()  # "RP driving grey Qashqai": a note's noun with no article keeps its colour outside it
     inside_seat = set(range(seat.first, seat.index + 1)) if seat is not None else set()
     wheel = any(u.word == "wheel" for u in between)
