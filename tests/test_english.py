@@ -13070,3 +13070,16 @@ def test_that_before_a_noun_after_a_place_names_the_one_said_before():
 ])
 def test_a_logs_note_style_names_the_reporting_car_and_a_stop_blown(prompt, expected):
     assert sorted(agents(prompt)) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("See me, ah'm headin intae the roondaboot at the Kingsway an this huge lorry comes tearin oot fae the road on "
+     "ma right, nae lookin at aw.", [("car", "go_straight", "ego"), ("truck", "go_straight", "road_of_right_turn")]),
+    ("Middle o' the night an a guy in a black hoodie steps oot in front o' me fae between parked motors.",
+     [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("Ah'm at the give way sign, indicatin left, an a wifie pushin a pram's crossin ower the road ah'm goin intae. "
+     "Ah waited, then ah turned left.", [("car", "stop", "ego"), ("car", "turn_left", "ego"),
+                                        ("pedestrian", "cross_the_road", "front")]),
+])
+def test_scots_an_ah_and_dropped_gs_read_as_meant(prompt, expected):
+    assert sorted(agents(prompt)) == expected
