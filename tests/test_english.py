@@ -13083,3 +13083,13 @@ def test_a_logs_note_style_names_the_reporting_car_and_a_stop_blown(prompt, expe
 ])
 def test_scots_an_ah_and_dropped_gs_read_as_meant(prompt, expected):
     assert sorted(agents(prompt)) == expected
+
+
+def test_family_said_to_be_driving_in_a_relative_clause_is_the_ego():
+    said = agents("An ambulance came up behind us with blue lights on and my son, who was driving, moved over into the "
+                  "left lane to let it through.")
+    assert ("car", "change_lane_to_left", "ego") in said and ("ambulance", "go_straight", "back") in said
+
+
+def test_a_dustcart_is_a_truck():
+    assert ("truck", "stop", "front") in agents("I was stationary behind the dustcart while the binmen did their round.")

@@ -1320,14 +1320,17 @@ KIN_AT_THE_WHEEL = r"husband|wife|partner|boyfriend|girlfriend|dad|father|mum|mo
 
 def _kin_at_the_wheel(text: str, notes: list[str]) -> str:
     """'My husband and I were returning along the A38 ... My husband moved across into the left-hand lane': the
-    one of the teller's family who drives them is the ego."""
-    m = re.search(rf"\b[Mm]y ({KIN_AT_THE_WHEEL})\s+(?:[a-z]+ly\s+)?(?:{STORY_DRIVING}|moved|swerved|stopped|"
-                  rf"slammed|was at the wheel|was behind the wheel)\b", text)
+    one of the teller's family who drives them is the ego, the 'we' of the teller's party."""
+    m = re.search(rf"\b[Mm]y ({KIN_AT_THE_WHEEL})(?:,\s*who\s+was\s+(?:driving|at\s+the\s+wheel),)?\s+"
+                  rf"(?:[a-z]+ly\s+)?(?:{STORY_DRIVING}|moved|swerved|stopped|slammed|was at the wheel|"
+                  rf"was behind the wheel)\b", text)  # ("my son, who was driving, moved over")
     if m is None or not re.search(r"\b(?:we|us|our)\b", text, re.I):
         return text
     kin = m.group(1)
     text = re.sub(rf"\b(?:[Mm]y {kin} and I|[Mm]e and my {kin})\b", "we", text)
-    text = re.sub(rf"\b[Mm]y {kin}\b", "the ego", text)
+    text = re.sub(rf"\b[Mm]y {kin}'s\b", "our", text)
+    text = re.sub(rf"\b[Mm]y {kin}(?:,\s*who\s+was\s+(?:driving|at\s+the\s+wheel),)?", "we", text)  # (the ego
+    # as the teller's party says it)
     notes.append(f"read the teller's {kin}, at the wheel, as the ego")
     return text
 
