@@ -13093,3 +13093,9 @@ def test_family_said_to_be_driving_in_a_relative_clause_is_the_ego():
 
 def test_a_dustcart_is_a_truck():
     assert ("truck", "stop", "front") in agents("I was stationary behind the dustcart while the binmen did their round.")
+
+
+def test_the_bus_one_waits_for_at_a_stop_is_not_the_egos():
+    said = agents("I was stood at the bus stop on Mill Lane. A blue Fiesta came along to the crossroads and went left "
+                  "down Chapel Road. Still no sign of my bus, of course.")
+    assert said == [("car", "turn_left", "ego")]

@@ -190,7 +190,7 @@ def read_narration(prompt: str) -> Narration:
     text = _modelling_authors(_authors(text, notes), notes)
     text = _expectations(text, notes)
     text = _topic(text, notes)
-    text = _passengers_bus(text, notes)
+    text = _passengers_bus(_awaited_bus(text), notes)
     text = _street_corners(text)
     text = _ages(text)
     text = _side_street_named(_street_names(text))
@@ -252,6 +252,17 @@ COACH_TITLE = re.compile(r"\bCoach\s+([A-Z][a-z]+)\b")
 def _coach_as_a_title(text: str) -> str:
     """'it's Coach Dana': a title before a name, no coach on the road ('Coach Station' stays a place)."""
     return COACH_TITLE.sub(lambda m: m.group(0) if known_word(m.group(1)) else m.group(1), text)
+
+
+AT_A_STOP = re.compile(r"\b(?:i|we)(?:'d|'m|\s+was|\s+were|\s+had|\s+am)?(?:\s+been)?(?:\s+(?:stood|standing|waiting|"
+                       r"sat|sitting))?\s+(?:at|in|by)\s+(?:the|my|our)\s+(?:bus\s+)?(?:stop|shelter)\b", re.I)
+
+
+def _awaited_bus(text: str) -> str:
+    """'I was stood at the bus stop ... still no sign of my bus', 'My bus was stood at the stop': the bus one
+    waiting at a stop calls theirs is one they wait for, not one they drive."""
+    return re.sub(r"\b([Mm])y bus\b", lambda m: "The bus" if m.group(1) == "M" else "the bus", text) \
+        if AT_A_STOP.search(text) else text
 
 
 def _passengers_bus(text: str, notes: list[str]) -> str:
