@@ -13099,3 +13099,4 @@ def test_the_bus_one_waits_for_at_a_stop_is_not_the_egos():
     said = agents("I was stood at the bus stop on Mill Lane. A blue Fiesta came along to the crossroads and went left "
                   "down Chapel Road. Still no sign of my bus, of course.")
     assert said == [("car", "turn_left", "ego")]
+

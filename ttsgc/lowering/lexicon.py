@@ -168,7 +168,8 @@ def _corrected(lex: "Lexicon", word: str) -> str | None:
 def _run_together(lex: "Lexicon", word: str) -> str | None:
     """Two words typed without the space between them ("stopsign", "turnsleft", "straightahead"), read apart when
     they begin a phrase of the lexicon other than an agent's name; a word of English stays whole."""
-    if len(word) < 5 or not word.isalpha() or _english(word) or word.endswith("in") and word + "g" in _known_forms(lex):
+    if len(word) < 5 or not word.isalpha() or _english(word) or \
+            word.endswith("in") and word + "g" in _known_forms(lex):
         return None  # ("pushin", "crossin": a g dropped, one word)
     for k in range(2, len(word) - 1):
         first, second = word[:k], word[k:]
