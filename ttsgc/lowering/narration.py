@@ -1335,7 +1335,7 @@ def _kin_at_the_wheel(text: str, notes: list[str]) -> str:
     m = re.search(rf"\b[Mm]y ({KIN_AT_THE_WHEEL})(?:,\s*who\s+was\s+(?:driving|at\s+the\s+wheel),)?\s+"
                   rf"(?:[a-z]+ly\s+)?(?:{STORY_DRIVING}|moved|swerved|stopped|slammed|was at the wheel|"
                   rf"was behind the wheel)\b", text)  # ("my son, who was driving, moved over")
-    if m is None or not re.search(r"\b(?:we|us|our)\b", text, re.I) or WALKING.search(text) or RIDING.search(text):
+    if m is None or not CREW.search(text) or WALKING.search(text) or RIDING.search(text):
         return text  # (not a party on foot or on bikes: "my son and I were crossing ... my son turned back")
     kin = m.group(1)
     text = re.sub(rf"\b(?:[Mm]y {kin} and I|[Mm]e and my {kin})\b", "we", text)

@@ -11194,7 +11194,7 @@ TRAFFIC_CONTROL = (("my", "board"), ("my", "paddle"), ("stop", "go", "board"), (
                    ("my", "stop", "go"), ("flagging",), ("my", "end"), ("to", "my", "red"), ("at", "my", "red"),
                    ("spun", "the", "board"), ("spun", "it", "to"), ("waved", "through"), ("speed", "gun"),
                    ("stop", "board"), ("the", "paddle"), ("stop", "slow"), ("go", "board"), ("my", "stop", "end"),
-                   ("through", "my", "red"), ("past", "my", "red"), ("up", "to", "my", "red"))
+                   ("through", "my", "red"), ("past", "my", "red"))
 # a road-works operative's words for holding and releasing traffic: the teller is on foot at the roadside
 
 
@@ -11280,7 +11280,7 @@ def _works_report(r: _Reader) -> None:
 def _only_the_controls_are_mine(r: _Reader, words: list[str]) -> bool:
     """'Temp lights on red my side', 'my end of the shuttle': staff who say 'my' only of the signals they work
     name no one at a wheel."""
-    mine = [k for k, w in enumerate(words) if w in FIRST_PERSON | {"we", "us", "our", "you", "your"}]
+    mine = [k for k, w in enumerate(words) if w in SPEAKING_SELF | {"you", "your"}]
     return bool(mine) and not any(e.is_ego for e in r.entities) and \
         all(words[k] == "my" and words[k + 1:k + 2] in (["side"], ["end"], ["red"], ["board"], ["lights"])
             for k in mine)
