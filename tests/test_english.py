@@ -13100,3 +13100,86 @@ def test_the_bus_one_waits_for_at_a_stop_is_not_the_egos():
                   "down Chapel Road. Still no sign of my bus, of course.")
     assert said == [("car", "turn_left", "ego")]
 
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The test car follows the van through the works, and a cyclist is riding towards them.",
+     ("cyclist", "go_straight", "front_left")),
+    ("Three of us strung out single file, test car behind the back rider. A tanker is climbing towards us.",
+     ("truck", "go_straight", "front_left")),
+])
+def test_one_coming_towards_those_ahead_of_the_ego_is_oncoming(prompt, expected):
+    assert expected in agents(prompt)
+
+
+def test_a_riders_line_strung_out_ahead_of_the_test_car_stays_in_the_scene():
+    said = agents("Three of us strung out single file, test car behind the back rider. A van comes up the hill.")
+    assert said.count(("cyclist", "go_straight", "front")) == 3
+
+
+@pytest.mark.parametrize("prompt", [
+    "You're filtering up the outside of a long queue. An oncoming car turns right through a gap, across you.",
+    "I was filtering up the outside of a long queue when a pedestrian stepped out between the cars.",
+])
+def test_a_queue_filtered_past_is_no_stop(prompt):
+    said = agents(prompt)
+    assert ("motorcycle", "go_straight", "ego") in said and ("motorcycle", "stop", "ego") not in said
+
+
+def test_a_make_after_off_names_a_street():
+    said = agents("I was halfway across the zebra when a pickup swung left off Lincoln towards me.")
+    assert [a for a in said if a[2] != "ego" and a[0] == "car"] == []
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Route 5 inbound: a van parked in our lane, hazards on. Shuttle halted behind it, then moved over left and went "
+     "round.", [("bus", "change_lane_to_left", "ego"), ("bus", "stop", "ego"), ("car", "stop", "front")]),
+    ("Three lanes our way, shuttle in the middle lane. A fire engine came up behind us. Shuttle indicated and moved "
+     "over into the left lane.", [("bus", "change_lane_to_left", "ego"), ("firetruck", "go_straight", "back")]),
+])
+def test_a_crews_log_names_its_shuttle_halting_behind_or_moving_to_a_lane(prompt, expected):
+    assert sorted(agents(prompt)) == expected
+
+
+def test_a_vehicle_left_in_the_lane_stands_there():
+    assert ("truck", "stop", "front") in agents("A delivery lorry left in our lane with nobody in it, so we stopped "
+                                                "behind it.")
+
+
+@pytest.mark.parametrize("prompt", [
+    "Pulled up at the Market Street stop loading passengers. A cyclist came past on the right.",
+    "Came to a full stop at the four-way stop. As I moved off to go straight through, a van from my left ran its stop "
+    "sign. Missed the back of the bus by about 3 feet.",
+    "Number 9, dual carriageway, bus in the right lane. A van alongside us on the left drifted into our lane and "
+    "standing passengers fell over.",
+])
+def test_a_bus_driver_or_its_passengers_speak_from_the_bus(prompt):
+    assert [a[0] for a in agents(prompt) if a[2] == "ego"][:1] == ["bus"]
+
+
+@pytest.mark.parametrize("prompt, ego", [
+    ("Four-way stop outside Tulsa on a rented Harley. A pickup on my left went first, then I turned right.",
+     "motorcycle"),
+    ("Stuck at the lights on red, scooter, a little Toyota waiting next to me on my right.", "motorcycle"),
+    ("I was stopped at the lights when a guy on a moped pulled up beside me.", "car"),
+])
+def test_the_motorbike_a_teller_is_on_is_the_egos(prompt, ego):
+    assert {a[0] for a in agents(prompt) if a[2] == "ego"} == {ego}
+
+
+def test_someone_coming_the_other_way_who_floors_it_drives():
+    said = agents("Green arrow for me, I'm halfway into my left, and this guy coming the other way just floors it "
+                  "straight through his red light.")
+    assert ("car", "go_straight", "road_of_straight") in said and not any(a[0] == "pedestrian" for a in said)
+
+
+def test_family_said_to_sit_in_the_rear_are_passengers():
+    said = agents("Owner says he was going straight over a crossroads and a pickup from the left hit him on the "
+                  "driver's side. Daughter in rear, fine.")
+    assert not any(a[0] == "pedestrian" for a in said)
+
+
+def test_a_job_cards_customer_car_said_bare_is_the_ego():
+    said = agents("JOB CARD 4410 - 2015 Vauxhall Corsa, reg AB15 XYZ.\nCust. reports car was stopped at red traffic "
+                  "lights and a lorry ran into the back of it.\nDamage: rear bumper, tailgate.")
+    assert sorted(said) == [("car", "stop", "ego"), ("truck", "go_straight", "back")]

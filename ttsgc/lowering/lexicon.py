@@ -1796,6 +1796,7 @@ def tokenize(text: str) -> list[Token]:
                   text)  # "moves from lane 2 to lane 3, on its right, to clear the lane": the side of that lane
     text = re.sub(r"\bincl\.?(?=\s)", "including", text)  # a tester's notes: "3 cars incl. ego" (no sentence end)
     text = re.sub(r"\bapprox\.?(?=\s)", "about", text)
+    text = re.sub(r"\bcust\.?(?=\s)", "customer", text)  # a job card's "Cust. reports car was stopped"
     text = re.sub(r"\btl(s?)\b", r"traffic light\1", text)  # "stopped at a red TL", "when the TL goes green"
     text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
     text = re.sub(r"\b(?:can|could|would|will)\s+(?:you|u)\s+(?:please\s+|pls\s+|plz\s+)?(?=(?:make|create|build|"

@@ -502,15 +502,27 @@ def _cut_in_named_as_a_case(units: list[Unit]) -> list[Unit]:
     return out
 
 
+QUEUE_PASSED = {"of", "past", "along", "alongside", "beside", "by", "through", "passing", "overtaking", "round",
+                "around"}  # a queue after these is a noun: the place one passes, not a verb of one's own
+
+
 def _a_queue_run_into(units: list[Unit]) -> list[Unit]:
-    """'ran into the back of a queue', 'ploughed into the rear of the queue': the queue that was hit, a noun; those
-    in it wait, and the one that hit it did not stop to join it."""
+    """'ran into the back of a queue', 'ploughed into the rear of the queue', 'filtering up the outside of a long
+    queue', 'past the queue': the queue that was hit or passed, a noun; those in it wait, and the one that hit or
+    passed it did not stop to join it."""
     out = list(units)
     for k, u in enumerate(units):
-        if k > 1 and u.category == "actions" and u.tokens[0].word in ("queue", "queues") and \
-                units[k - 1].word in ("a", "the") and [t.word for t in units[k - 2].tokens][-2:] in (
-                    ["back", "of"], ["rear", "of"], ["tail", "of"], ["end", "of"]) and \
-                units[k - 2].category == "actions":
+        if k < 2 or u.category != "actions" or u.tokens[0].word not in ("queue", "queues"):
+            continue
+        j = k - 1
+        while j > 0 and units[j].category == "word" and units[j].word not in ("a", "the") and \
+                units[j].word.isalpha() and j > k - 3:
+            j -= 1  # "a long queue", "the stationary queue": its adjectives
+        if units[j].word not in ("a", "the", "this", "that"):
+            continue
+        before = [t.word for t in units[j - 1].tokens]
+        if before[-2:] in (["back", "of"], ["rear", "of"], ["tail", "of"], ["end", "of"]) and \
+                units[j - 1].category == "actions" or before[-1] in QUEUE_PASSED:
             out[k] = Unit(u.start, u.end, "word", u.tokens[0].word, u.tokens)
     return out
 
@@ -2102,11 +2114,13 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     if m.category == "positions" and m.meaning == "level" and after[:1] in (["a"], ["the"]) and \
             after[1:2] in (["crosswalk"], ["crossing"], ["zebra"]):
         return [Unit(m.start, m.end, "positions", "crosswalk", span)]  # "standing right next to a crosswalk": by it
-    if m.category == "positions" and m.meaning == "behind" and [t.word for t in span] == ["in", "the", "back"] and \
+    if m.category == "positions" and m.meaning == "behind" and ([t.word for t in span] == ["in", "the", "back"] or [
+            t.word for t in span] in (["in", "back"], ["in", "the", "rear"], ["in", "rear"]) and m.start > 0 and
+            tokens[m.start - 1].base in KIN) and \
             (m.end >= len(tokens) or tokens[m.end].word != "of" or [t.word for t in tokens[m.end + 2:m.end + 3]] in (
                 ["car"], ["vehicle"], ["van"], ["cab"], ["taxi"], ["suv"])):
         return [Unit(m.start, m.end, "positions", "on_board", span)]  # "kids arguing in the back", "two children
-        # were in the back of the car": my passengers
+        # were in the back of the car", "Daughter in rear, fine": my passengers
     if m.category == "positions" and m.meaning == "behind" and [t.word for t in span][:1] == ["in"] and \
             span[-1].word in ("back", "rear") and after[:1] in (["seat"], ["seats"]):
         return [Unit(m.start, m.end, "positions", "on_board", span)]  # "son in back seat", "kids in the rear seat"
@@ -5163,7 +5177,7 @@ def _the_riders_own(units: list[Unit], head: int, first: int, lo: int, words: se
 
 
 NONE_VALUES = {"none", "no", "0", "zero", "nil", "n/a", "na", "nobody", "nothing"}
-STREET_BEFORE = {"on", "onto", "along", "down", "up", "into"}  # a street's name follows with no article
+STREET_BEFORE = {"on", "onto", "along", "down", "up", "into", "off"}  # a street's name follows with no article
 
 
 def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, recent: list[Entity]) -> NounPhrase:
@@ -10505,6 +10519,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_logs_own_vehicle(r)
     _the_named_turn_is_anothers(r)
     _a_riders_ego(r)
+    _the_tellers_mount(r)
     _the_camera_car(r)
     _an_instance_given(r)
     _taken_back(r)
@@ -11720,17 +11735,25 @@ def _a_job_card(r: _Reader) -> bool:
 
 def _the_customers_vehicle(r: _Reader) -> None:
     """'JOB CARD 20417 - 2016 VW Golf ... Customer states vehicle was stationary ...': a garage's job card opens on
-    the customer's vehicle (or says 'vehicle' of it), which the story is told from."""
+    the customer's vehicle (or says 'vehicle' or 'car' of it), which the story is told from."""
     if not _a_job_card(r):
         return
     ego = next((e for e in r.entities if e.is_ego), None)
     first = min((e for e in r.entities if e.said_at >= 0), key=lambda e: e.said_at, default=None)
     if first is None or first.is_ego or first.type not in V.EGO_TYPES or first.count != 1 or \
-            not (r.tokens[first.said_at].sentence == 0 or first.head == "vehicle") or \
+            not (r.tokens[first.said_at].sentence == 0 or first.head == "vehicle" or
+                 first.head == "car" and r.tokens[first.said_at - 1].word not in INDEFINITE) or \
             first.features - {"compass_north", "compass_south", "parked", "moves_out", "straight_on"} or \
             ego is not None and ego.head not in FIRST_PERSON | {"ego", "we", "us", "vehicle", "he", "she"}:
         return
     _now_the_ego(r, first, "a job card opens on the customer's vehicle")
+
+
+def _its_own_lane(e: Entity, feature: str) -> bool:
+    """'bus in the left lane', 'the shuttle in lane 2': a lane the vehicle is said to keep, which places it by no
+    one else."""
+    return feature in ("lane_said", "middle_lane") or feature.startswith("named_lane_") or \
+        feature.startswith("side_") and f"named_lane_{feature[5:]}" in e.features
 
 
 def _the_logs_own_vehicle(r: _Reader) -> None:
@@ -11746,14 +11769,14 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
             any(name.split()[-1] not in SELF_NAMES | {"ego", "op", "system"} for name in ego.aliases if name)):
         return  # the speakers, 'the system' driving, or an ego supplied for a verb with no subject, in no vehicle
         # of their own ("I'm rolling up in the truck" is)
-    own = {"lane_said", "overtaking", "parked", "straight_on", "middle_lane"} | {f"named_lane_{side}" for side in SIDES}
+    own = {"overtaking", "parked", "straight_on"}
     candidates = [
         e for e in r.entities if not e.is_ego and e.count == 1 and e.type in ("car", "bus", "truck") and
         (e.actions or any(f.startswith("named_lane_") for f in e.features)) and not e.label and
-        not any(a[4] == "cut_in" for a in e.actions) and not any(  # ("the car in the left lane cuts in front of us")
+        not any(a[4] == "cut_in" and a[5] is None for a in e.actions) and not any(  # ("the car in the left lane
+        # cuts in front of us"; not "moved over into the right lane", a lane named)
             x is not e and not x.is_ego and x.head == e.head for x in r.entities) and
-        all(f in own or f.startswith("compass_") or f.startswith("side_") and f"named_lane_{f[5:]}" in e.features
-            for f in e.features) and
+        all(f in own or f.startswith("compass_") or _its_own_lane(e, f) for f in e.features) and
         (e.relative_to is None or e.relative_how == "behind" and not e.relative_to.is_ego) and any(
             t.word == e.head and (t.index == 0 or r.tokens[t.index - 1].sentence != t.sentence or
                                   e.definite and r.tokens[t.index - 1].word == "the" and (
@@ -11761,9 +11784,11 @@ def _the_logs_own_vehicle(r: _Reader) -> None:
                                       r.tokens[t.index - 2].word in (",", "and", "so", "then", "but"))) and
             t.index + 1 < len(r.tokens) and r.tokens[t.index + 1].sentence == t.sentence and
             r.tokens[t.index + 1].word != "," and not r.tokens[t.index + 1].word.endswith("ing") and
-            not any(x.word in ("behind", "beside", "alongside") for x in r.tokens[t.index + 1:t.index + 3])
+            not any(x.word in ("behind", "beside", "alongside") for x in r.tokens[t.index + 1:t.index + 3]
+                    if x.index == t.index + 1 or not r.tokens[t.index + 1].word.endswith("ed"))
             for t in r.tokens)]  # (not a commentary's "Car waiting to come out", a list's "Ego: SUV, turns right", a
-    # story's "the learner driver behind him stopped": one told apart by its place)
+    # story's "the learner driver behind him stopped": one told apart by its place; "Shuttle halted behind it" is
+    # its own stop)
     if len(candidates) != 1:
         return
     vehicle = candidates[0]
@@ -11864,6 +11889,43 @@ def _a_riders_ego(r: _Reader) -> None:
     if said or the_rider or geared or instructed or ego.head == "rider":
         ego.type = "motorcycle"
 
+
+
+MOUNTED_BY = {"me", "i", "i'm", "im", "was", "we", "we're", "us", ","}  # the teller said just before 'on a ...'
+
+
+def _the_tellers_mount(r: _Reader) -> None:
+    """'Four way stop in New Mexico on a rental Harley', 'me on my moped turning left', 'at the lights on red,
+    scooter, a Toyota next to me': a motorbike of which nothing else is said, which the teller is said to be on (or
+    which is named bare between commas, as a label), is what the teller rides; the ego is a motorbike."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or ego.type != "car" or not (ego.head in SELF_NAMES or _supplied(r, ego)) or any(
+            name.split()[-1] not in SELF_NAMES | {"ego"} for name in ego.aliases if name) or \
+            not {t.word for t in r.tokens} & FIRST_PERSON:
+        return
+    words = [t.word for t in r.tokens]
+
+    def mounted(e: Entity) -> bool:
+        k = e.said_at
+        sentence = r.tokens[k].sentence
+        if k < 1 or r.tokens[k].plural:
+            return False
+        if words[k - 1] == "," and k + 1 < len(words) and words[k + 1] == ",":
+            return True  # "stuck at the lights on red, scooter, little Toyota next to me": a label
+        on = next((j for j in range(k - 1, max(0, k - 4) - 1, -1) if words[j] == "on"), None)
+        if on is None or not all(words[j] in ("a", "an", "my", "the", "rental", "rented", "hired", "hire", "borrowed", "new", "old")
+                                 for j in range(on + 1, k)):
+            return False
+        start = next(t.index for t in r.tokens if t.sentence == sentence)
+        return words[on - 1] in MOUNTED_BY or not any(start <= x.said_at < on for x in r.entities if x is not e)
+        # ("Four way stop in New Mexico on a rental Harley": no one else named before it in its sentence)
+    mounts = [e for e in r.entities if not e.is_ego and e.type == "motorcycle" and e.count == 1 and
+              e.said_at >= 0 and not e.generic and not _anything_said_of(e)]
+    if len(mounts) == 1 and mounted(mounts[0]):
+        ego.type = "motorcycle"
+        ego.aliases.add(mounts[0].head)
+        r.entities.remove(mounts[0])
+        r.notes.append(f"read the '{mounts[0].head}' the teller is on as the ego's")
 
 def _the_named_turn_is_anothers(r: _Reader) -> None:
     """'Left Turn Across Path, HV going straight. ... RV1 turns left across the HV's path', 'I go straight ... The
@@ -12204,8 +12266,11 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
 
 BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out"), (",", "arm", "out"), ("my", "bus"),
                      ("standing", "passengers"), ("passengers", "were", "standing"), ("passengers", "on", "board"),
-                     ("doors", "open"), ("the", "terminus"), ("my", "route"))
-# ("at the stop with the doors open"; not a cyclist's "with my arm out")
+                     ("doors", "open"), ("the", "terminus"), ("my", "route"), ("loading", "passengers"),
+                     ("picking", "up", "passengers"), ("letting", "passengers", "off"), ("open", "for", "boarding"),
+                     ("back", "of", "the", "bus"), ("front", "of", "the", "bus"), ("side", "of", "the", "bus"))
+# ("at the stop with the doors open", "missed the back of the bus by a foot": a bus no other is; not a cyclist's
+# "with my arm out")
 
 
 BUS_TAKEN = {"get", "got", "catch", "caught", "miss", "missed", "take", "took"}  # a passenger's bus, not a driver's
@@ -12358,8 +12423,9 @@ def _a_drivers_trade(r: _Reader) -> None:
     at_its_wheel = _says_any([w for k, w in enumerate(told) if not (
         w == "my" and k and told[k - 1] in BUS_TAKEN)], BUS_DRIVERS_WORDS)  # (not "never did get my bus")
     ours = [e for e in r.entities if e.type == "bus" and not e.is_ego and e.count == 1 and
-            (e.definite or at_its_wheel and not _said_with_a(r, e)) and
-            not e.features & (PLACE_FEATURES | PLACED_HOW) and e.relative_to is None] \
+            (e.definite or (at_its_wheel or aboard_a_bus) and not _said_with_a(r, e)) and
+            not {f for f in e.features if not _its_own_lane(e, f)} & (PLACE_FEATURES | PLACED_HOW) and
+            e.relative_to is None] \
         if (aboard_a_bus or at_its_wheel) and ego is not None and \
         (ego.head in FIRST_PERSON | {"we", "us", "our"} or _supplied(r, ego)) else []
     # ("cut across in front of the bus": the passengers' own, named by what it is; "Bus was standing at the stop
@@ -12663,9 +12729,10 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
             r.notes.append(f"inferred: '{e.head}' behind or ahead in the lane drives a car")
         elif e.type == "pedestrian" and e.head in VAGUE_PEOPLE and not on_foot and e.road_type is None and (
                 e.features & {"overtaking", "lane_said"} or
-                "level" in e.features and action in ("move", "go_straight")):
+                e.features & {"level", "road_straight"} and action in ("move", "go_straight")):
             e.type = "car"  # "the guy in the right lane sped up", "guy overtakes a whole line of traffic", "the guy
-            # next to me on the left just runs the light": in a lane, passing, or level in traffic, at a wheel
+            # next to me on the left just runs the light", "this guy coming the other way just floors it": in a lane,
+            # passing, level in traffic or coming the other way, at a wheel
             r.notes.append(f"inferred: '{e.head}' in a lane of traffic drives a car")
         if e.type == "pedestrian" and action == "stop" and not e.features & {"crosswalk", "in_road", "waits_to_cross"} \
                 and _waits_where_people_wait(r, e):
