@@ -13183,3 +13183,55 @@ def test_a_job_cards_customer_car_said_bare_is_the_ego():
     said = agents("JOB CARD 4410 - 2015 Vauxhall Corsa, reg AB15 XYZ.\nCust. reports car was stopped at red traffic "
                   "lights and a lorry ran into the back of it.\nDamage: rear bumper, tailgate.")
     assert sorted(said) == [("car", "stop", "ego"), ("truck", "go_straight", "back")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Q is driving west on Elm at 45 in a 30 zone. R, on foot, steps off the curb into the crosswalk ahead of Q. Q "
+     "does not brake.", [("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("M waits at a red light on Oak, planning to turn right onto Main. N is walking on the sidewalk to M's right. M "
+     "then turns right on red.", [("car", "stop", "ego"), ("car", "turn_right", "ego"),
+                                  ("pedestrian", "on_the_sidewalk", "right")]),
+    ("J drives her pickup along a rural road. Ahead on the right a school bus is stopped on the shoulder. K, age six, "
+     "darts out from in front of the bus into J's path.", [("bus", "stop", "front_right"), ("car", "go_straight", "ego"),
+                                                           ("pedestrian", "cross_the_road", "front_right")]),
+])
+def test_a_cases_lettered_parties_are_read_by_what_is_said_of_them(prompt, expected):
+    assert sorted(agents(prompt)) == expected
+
+
+def test_lettered_parties_named_together_or_off_the_road_add_no_one():
+    said = agents("D is stopped at the stop line as B and C, two friends, walk across the crosswalk in front of her. "
+                  "D then goes straight ahead. R, the van's owner, had left the keys in it.")
+    assert sorted(said) == [("car", "go_straight", "ego"), ("car", "stop", "ego"),
+                            ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+                            ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Highway pe teen lane hai, main beech wali lane mein tha. Aage right lane mein ek truck tha, usne achanak meri "
+     "lane mein cut maara.", [("car", "go_straight", "ego"), ("truck", "change_lane_to_left", "front_right")]),
+    ("Expressway pe baarish ho rahi thi. Right lane wala ek Creta bina signal ke meri lane mein aa ghusa. Maine "
+     "turant left lane le li.", [("car", "change_lane_to_left", "ego"), ("car", "change_lane_to_left", "right")]),
+    ("Market ki gali mein left turn liya, corner ke turant baad ek chhota truck khada tha, maal utar raha tha.",
+     [("car", "turn_left", "ego"), ("truck", "stop", "at_the_destination")]),
+    ("Signal pe ruka tha. Peeche ek bus bhi ruki thi aur lagaatar horn maar rahi thi.",
+     [("bus", "stop", "back"), ("car", "stop", "ego")]),
+])
+def test_hinglish_places_said_alone_and_lanes_taken(prompt, expected):
+    assert sorted(agents(prompt)) == expected
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("Wet today, so it was walk, don't run, on the crossing for all of them. The number 9 bus turned right out of "
+     "Station Road and then stopped for us well back.", [("bus", "stop", "ego"), ("bus", "turn_right", "ego"),
+                                                        ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+    ("Quiet morning. Only one van came by and it pulled up for me and the Patel twins on the crossing.",
+     [("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]),
+])
+def test_a_patrol_that_walks_its_crossing_tells_of_the_vehicle_that_stops_for_it(prompt, expected):
+    assert sorted(agents(prompt)) == expected
+
+
+def test_a_route_number_that_drives_is_a_bus():
+    assert {a[0] for a in agents("The 47 sailed through the red while the kids were still on the zebra.")
+            if a[2] == "ego"} == {"bus"}

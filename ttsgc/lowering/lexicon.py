@@ -275,7 +275,8 @@ HINDI_MARKERS = {"hai", "tha", "thi", "se", "pe", "mein", "ek", "aur", "wala", "
                  "ko", "bhi", "maine", "mere", "meri", "peeche", "aage", "saamne", "nahi", "ruk", "kiya", "karke",
                  "liya", "wahan", "phir", "baarish", "raat", "gaadi", "hua", "diya"}
 PLACES_AFTER = {"peeche": "behind", "aage": "ahead of", "saamne": "in front of", "bagal mein": "beside",
-                "paas": "near"}
+                "paas": "near", "left side mein": "on the left of", "right side mein": "on the right of",
+                "left side pe": "on the left of", "right side pe": "on the right of"}
 PLACED_ONES = {"peeche": "behind", "aage": "ahead", "saamne": "oncoming"}
 HINDI_AFTER = {"mein": "in", "pe": "at", "se": "from"}  # a postposition said before its noun
 HINDI_VERBS_MEANT = ("stopped", "stood", "came", "went past", "went", "drove", "turned left", "turned right",
@@ -299,7 +300,8 @@ def _hinglish(text: str) -> str:
     the bus; 'peeche wala truck': the truck behind). Only in a text with enough Hindi words to be Hinglish."""
     if len(HINDI_MARKERS & set(re.findall(r"[a-z]+", text))) < 3:
         return text
-    text = re.sub(r"\b(\w+) (?:ke|ki|ka) (just |theek |bilkul )?(peeche|aage|saamne|bagal mein|paas)\b",
+    text = re.sub(r"\b(\w+) (?:ke|ki|ka) (just |theek |bilkul )?(peeche|aage|saamne|bagal mein|paas|"
+                  r"(?:left|right) side (?:mein|pe))\b",
                   lambda m: f"{PLACES_AFTER[m.group(3)]} the {m.group(1)}", text)
     text = re.sub(r"\b(?:(mere|hamare) )?(peeche|aage|saamne) wal[aei] (\w+)",
                   lambda m: f"the {m.group(3)} {PLACED_ONES[m.group(2)]}" + (

@@ -191,7 +191,7 @@ def read_narration(prompt: str) -> Narration:
     text = _expectations(text, notes)
     text = _topic(text, notes)
     text = _passengers_bus(_awaited_bus(text), notes)
-    text = _street_corners(text)
+    text = _street_corners(_route_numbers(text))
     text = _ages(text)
     text = _side_street_named(_street_names(text))
     text = _designated_ego(_designations_spelt_alike(text), notes)
@@ -244,6 +244,18 @@ OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|c
                      r"had|at|into))", re.I)
 BUS_DRIVER = re.compile(r"\b(?:(?:our|your|my)\s+(?:bus\s+|coach\s+)?driver|the\s+(?:bus|coach)\s+driver)\b"
                         r"(?!\s+(?:of|in|ahead|behind|next)\b)", re.I)
+
+
+ROUTE_NUMBER = re.compile(r"\b([Tt])he (\d{2,3}[a-z]?) (?=(?:turned|pulled|stopped|came|went|braked|drove|moved|"
+                          r"set off|swung|cut|overtook|ran|sailed|flew|sped)\b)")
+
+
+def _route_numbers(text: str) -> str:
+    """'The 23 turned left out of Park Road and pulled up for us': a service named by its number, doing what
+    vehicles do, is a bus (one its passengers tell of, 'our driver', is read with them)."""
+    if ROUTE_TOLD.search(text):
+        return text
+    return ROUTE_NUMBER.sub(lambda m: f"{m.group(1)}he number {m.group(2)} bus ", text)
 
 
 COACH_TITLE = re.compile(r"\bCoach\s+([A-Z][a-z]+)\b")
@@ -1462,12 +1474,14 @@ FIRST_PERSON = re.compile(r"\b(?:i|me|my|we|us|our|ego)\b", re.I)
 PARTY_ROLES = r"(?:[Tt]he |[Mm]y |[Oo]ur )?(?:[Cc]lient|[Cc]laimant|[Ii]nsured|[Pp]olicyholder|[Dd]efendant|" \
               r"[Pp]laintiff|[Cc]omplainant)"
 PARTY_LETTER = r"\b(?:[B-HJ-Z]|[A-Z]{2,3})\b(?!\.)"  # "D", "P", "IV" ("A" and "I" are words; "J. Smith" an initial)
-AFTER_A_LINK = "|".join(rf"(?<=\b{w}\s)" for w in ("when", "as", "while", "then", "and", "but", "that"))
+AFTER_A_LINK = "|".join(rf"(?<=\b{w}\s)" for w in ("when", "as", "while", "then", "and", "but", "that", "Suppose",
+                                                    "suppose", "Assume", "assume", "Imagine", "imagine"))
 TITLE = r"(?:(?:Mr|Mrs|Ms|Miss|Dr)\.?\s+)"
 PARTY_DRIVING = re.compile(
     rf"(?:^|(?<=[.!?;:,]\s)|{AFTER_A_LINK})({PARTY_LETTER}|{TITLE}?{FULL_NAME}|{PARTY_ROLES})"
     rf"(?:,[^,.]{{1,60}},|\s*\([^()]{{1,60}}\))?\s+(?:[a-z]+ly\s+)?(?:{STORY_DRIVING}|wants to turn|waits|"
-    rf"was waiting|is waiting|was stopped|is stopped|stops|stopped|was changing lanes|changes lanes|"
+    rf"was waiting|is waiting|was stopped|is stopped|stops|stopped|was changing lanes|changes lanes|travels|"
+    rf"proceeds|intends to (?:turn|make)|begins a (?:left|right) turn|has the green|has a green light|is doing|"
     rf"(?:is|was) (?:riding|driving|approaching|travelling|traveling|going|proceeding|heading|speeding)|"
     rf"rides (?:his|her|their)|rode (?:his|her|their)|"
     rf"(?P<told>(?:states|says|reports|told us|stated|said) (?:that )?(?:she|he) (?:was|is|had)))\b")
@@ -1508,7 +1522,69 @@ def _party_at_the_wheel(text: str, notes: list[str]) -> str:
     text = re.sub(rf"\b{said(ego)}'(?!s\b)", "the ego's", text)  # "Mrs Jennings' two children"
     text = re.sub(rf"\b{said(ego)}\b", "the ego", text)  # ("D's left": the ego's left)
     notes.append(f"read {ego} as the ego's driver")
+    if re.fullmatch(PARTY_LETTER, ego) and len(ego) == 1:
+        text = _lettered_parties(text, notes)
     return _drivers_pronoun(text, notes) if len(drivers) == 1 else text  # (of several, whose 'her' is unsaid)
+
+
+LETTERED = re.compile(r"(?<![\w.'-])([B-HJ-Z])(?![\w.'-])('s)?")  # a party named by one capital letter ("P", "X's")
+PARTY_KINDS = (  # what a lettered party is, by the words said with it first (the nearest wins; None: no one on the
+    # road, "R, the sedan's owner, had left the keys in it", "X's passenger")
+    (r"owner|passenger|witness\w*|employer|insurer|sues|sued", None),
+    (r"on foot|walk(?:s|ing|ed)?|steps?|stepped|darts?|darted|dashe[sd]|dash|cross(?:es|ing|ed)?|stroll\w*|"
+     r"pedestrian|jogg\w*|age \w+|(?:\w+-)?years?-old|child|boy|girl", "pedestrian"),
+    (r"motorcycle|motorbike|moped|scooter|vespa|harley", "motorcyclist"),
+    (r"bicycle|bike|cycling|cyclist", "cyclist"),
+    (r"cruiser|squad car|patrol car|police car|officer|deputy|trooper", "police car"),
+    (r"ambulance", "ambulance"), (r"fire (?:engine|truck)", "fire engine"),
+    (r"bus", "bus"), (r"semi|eighteen-wheeler|18-wheeler|truck|lorry|rig|tractor-trailer", "truck"),
+    (r"car|sedan|coupe|hatchback|suv|pickup|van|jeep|vehicle|driving|drives|driver", "car"),
+)
+NAMED_KIND = re.compile(r"\b(?:[Pp]edestrian|[Oo]fficer|[Dd]eputy|[Tt]rooper|[Dd]river|[Mm]otorist|[Cc]yclist|"
+                        r"[Mm]otorcyclist|[Rr]ider|[Pp]assenger|[Ww]itness|[Pp]laintiff|[Dd]efendant),?\s+$")
+
+
+def _lettered_parties(text: str, notes: list[str]) -> str:
+    """'P, on foot, steps into the crosswalk ahead of D', 'T's eighteen-wheeler is coming from D's left', 'W is
+    walking on the sidewalk to V's right': a case that names its parties by letters names each other party by
+    what the words said with it first make it (on foot, on a motorcycle, in a sedan); its vehicle said as the
+    party's ('T's eighteen-wheeler', 'E's vehicle') is the party itself. A party said only to witness or to sue
+    is no one on the road."""
+    firsts: dict[str, re.Match] = {}
+    for m in LETTERED.finditer(text):
+        firsts.setdefault(m.group(1), m)
+    for letter, first in sorted(firsts.items(), key=lambda x: -x[1].start()):
+        if NAMED_KIND.search(text[max(0, first.start() - 14):first.start()]) or \
+                re.search(r"\b(?:driven|ridden|operated)\s+by\s+$", text[max(0, first.start() - 14):first.start()]):
+            continue  # "Pedestrian P", "Officer P", "a tractor-trailer driven by T": named with its kind
+        end = re.search(r"[.;!?]", text[first.end():])
+        said = text[first.end():first.end() + (end.start() if end else len(text))]
+        if first.group(2):
+            said = " ".join(said.split()[:3])  # "T's eighteen-wheeler": what it owns, right after it (not "D's
+            # left, O's cruiser close behind")
+        hits = [(m.start(), kind) for pattern, kind in PARTY_KINDS for m in re.finditer(rf"\b(?:{pattern})\b", said,
+                                                                                       re.I)]
+        if not hits:
+            continue
+        at, kind = min(hits, key=lambda h: (h[1] is not None or h[0] > 30, h[0]))  # ("R, the sedan's owner,")
+        if kind is None or re.search(rf"\b[B-HJ-Z]\s+and\s+$", text[max(0, first.start() - 6):first.start()]) or \
+                re.match(r"\s+and\s+[B-HJ-Z]\b", text[first.end():]):
+            continue  # ("P and Q, two friends, walk across": named together by what follows)
+        if re.search(r"\b(?:an?|his|her|their)\s+(?:[\w-]+\s+){0,2}$", said[:at]) and kind != "pedestrian":
+            continue  # "P is riding a motorcycle toward D", "D, in his pickup": the vehicle is named, the party at it
+        owned = re.compile(rf"(?<![\w.'-]){letter}'s\s+(?:[\w-]+\s+){{0,2}}?(?:car|sedan|coupe|hatchback|suv|pickup|"
+                           rf"van|vehicle|truck|semi|rig|eighteen-wheeler|cruiser|squad car|motorcycle|motorbike|"
+                           rf"moped|bike|bicycle|bus)\b")
+        if kind not in ("pedestrian", "cyclist", "motorcyclist"):
+            text = owned.sub(letter, text)  # "E's vehicle", "O's squad car": the party, at its wheel
+            text = text[:first.end()] + re.sub(r"^((?:\s+\w+){1,3}?)\s+(?:his|her|their)\s+(?:car|sedan|van|truck|"
+                                               r"pickup|vehicle)\b", r"\1", text[first.end():])  # "X has stopped his car"
+        m = next(LETTERED.finditer(text, first.start() - 1 if first.start() else 0), None)
+        if m is None or m.group(1) != letter:
+            continue
+        text = text[:m.start()] + f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} {letter}" + text[m.start() + 1:]
+        notes.append(f"read {letter} as a {kind}")
+    return text
 
 
 def _storys_driver(text: str, notes: list[str]) -> str:

@@ -11406,7 +11406,8 @@ def _witness_on_foot(r: _Reader) -> None:
         words -= {"standing"}  # "I hit standing water": what stood, not the witness
     if words & {"stood still", "stand still", "standing still"}:
         words -= {"stood", "standing"}  # "a give-way sign for me, so I stood still": halted, on foot only if said
-    patrol = _speaker_on_the_crossing(r.tokens, strong=bool(ego.actions))
+    patrol = _speaker_on_the_crossing(r.tokens, strong=any(a[4] not in ("walk", "cross") for a in ego.actions))
+    # (one said only to walk or cross does nothing at a wheel)
     controlling = not words & {"driving", "drove", "my car", "my van", "my vehicle", "in my"} and \
         _says_any(text, TRAFFIC_CONTROL)
     if controlling:  # "The number 7 bus was stopped at my board ... When I spun it to GO the bus pulled off"
@@ -11996,7 +11997,9 @@ CROSSING_ON_FOOT = {"halfway", "crossing", "crosswalk", "rolling across", "wheel
 # what a teller on foot was doing: on the way over
 PATROLLING = (("lollipop",), ("crossing", "with", "me"), ("over", "with", "me"), ("across", "with", "me"),
               ("my", "crossing"), ("my", "stick"))
-STOPPED_FOR_ME = (("stopped", "for", "me"), ("stops", "for", "me"), ("stopped", "for", "us"), ("stops", "for", "us"))
+STOPPED_FOR_ME = tuple((verb,) + up + ("for", who) for verb, up in (
+    ("stopped", ()), ("stops", ()), ("stopping", ()), ("pulled", ("up",)), ("pulls", ("up",)), ("pulling", ("up",)),
+    ("waited", ()), ("waits", ())) for who in ("me", "us"))  # ("it pulled up for me and the two girls")
 
 
 def _speaker_on_the_crossing(tokens: list[Token], strong: bool) -> bool:
