@@ -12340,7 +12340,7 @@ def test_a_bus_named_bare_by_its_driver_at_the_stop_is_the_ego():
 @pytest.mark.parametrize("prompt, expected", [
     ("Cam 4, 08:10: Route 12 bus NB on the high street, left lane. Taxi in the right lane alongside the bus cuts "
      "sharply left across its front. Bus brakes hard, no contact.",
-     [("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "front_right")]),
+     [("bus", "go_straight", "ego"), ("car", "change_lane_to_left", "right")]),
     ("A taxi cuts in ahead of me. I brake hard.", [("car", "change_lane_to_right", "front_left"),
                                                     ("car", "go_straight", "ego")]),
     ("The car ahead of me brakes hard and stops.", [("car", "go_straight", "ego"), ("car", "stop", "front")]),
@@ -13235,3 +13235,21 @@ def test_a_patrol_that_walks_its_crossing_tells_of_the_vehicle_that_stops_for_it
 def test_a_route_number_that_drives_is_a_bus():
     assert {a[0] for a in agents("The 47 sailed through the red while the kids were still on the zebra.")
             if a[2] == "ego"} == {"bus"}
+
+
+@pytest.mark.parametrize("prompt", [
+    "I'm in the left lane. A van level with me in the right lane cuts sharply left across my front.",
+    "Two lanes. A grey Astra in the right-hand lane alongside me swerved suddenly into my lane in front of me.",
+])
+def test_one_level_with_the_ego_that_cuts_across_its_front_starts_beside_it(prompt):
+    assert ("car", "change_lane_to_left", "right") in agents(prompt)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("We all turn left at the crossroads. Just round the corner in the road you're going into there's a parked van.",
+     ("car", "stop", "at_the_destination")),
+    ("The car pulls away from the stop sign, turning right. In the road the car is joining, a woman is walking "
+     "across.", ("pedestrian", "cross_the_road", "at_the_destination")),
+])
+def test_the_road_the_ego_goes_into_said_by_a_relative_clause(prompt, expected):
+    assert expected in agents(prompt)

@@ -1799,6 +1799,12 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\bincl\.?(?=\s)", "including", text)  # a tester's notes: "3 cars incl. ego" (no sentence end)
     text = re.sub(r"\bapprox\.?(?=\s)", "about", text)
     text = re.sub(r"\bcust\.?(?=\s)", "customer", text)  # a job card's "Cust. reports car was stopped"
+    text = re.sub(r"\b(the (?:road|street|side road|lane|one)) (?:that |which )?(?:i|we|you|he|she|they|the car|"
+                  r"the ego)(?:'re|'m| are| am| is| was| were)? (?:(?:going|goes|go|turning (?:left |right )?|turns? "
+                  r"(?:left |right )?|turned (?:left |right )?|heading|heads) (?:into|onto)|(?:joining|joins|entering|"
+                  r"enters)(?: into| onto)?)\b",
+                  r"\1 it turns into", text)  # "in the road you're going into", "crossing the road she turns
+    # right into", "in the road the car is joining": where the ego goes, said by a relative clause
     text = re.sub(r"\btl(s?)\b", r"traffic light\1", text)  # "stopped at a red TL", "when the TL goes green"
     text = re.sub(r"\bu[\s-]*turn(s|ed|ing)?\b", "uturn", text)  # not "you turn"
     text = re.sub(r"\b(?:can|could|would|will)\s+(?:you|u)\s+(?:please\s+|pls\s+|plz\s+)?(?=(?:make|create|build|"

@@ -10090,8 +10090,11 @@ def _position(e: Entity, action: str | None, junction: bool, has_crosswalk: bool
     if {"level", "behind"} <= f and "overtaking" not in f:
         f.discard("behind")  # "riding alongside on our right, in the blind spot": level is said, and the blind
         # spot only says where the mirror cannot see it
-    if {"level", "ahead", "into_ego_lane"} <= f:
-        f.discard("ahead")  # "in the left lane, level with Ego, swerves into Ego's lane just ahead": where it ends
+    side = _side_of(f)
+    if {"level", "ahead"} <= f and ("into_ego_lane" in f or side and action in (
+            "cut_in", "lane_change", "lane_left" if side == "right" else "lane_right")):
+        f.discard("ahead")  # "in the left lane, level with Ego, swerves into Ego's lane just ahead", "alongside the
+        # bus, cuts left across its front": where it ends
     if crossing and e.type == "pedestrian" and has_crosswalk and "off_crosswalk" not in f:
         f.add("crosswalk")  # "Mrs. Feeney was in that crosswalk? ... She was crossing from my left": on the one
         # crosswalk the road has, said in another sentence
