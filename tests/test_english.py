@@ -13253,3 +13253,74 @@ def test_one_level_with_the_ego_that_cuts_across_its_front_starts_beside_it(prom
 ])
 def test_the_road_the_ego_goes_into_said_by_a_relative_clause(prompt, expected):
     assert expected in agents(prompt)
+
+
+def test_not_once_is_never_and_no_link_of_stages():
+    assert agents("A woman walked onto a zebra crossing, not once looking our way. The robotaxi stopped.") == [
+        ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_polis_motor_is_a_police_car():
+    assert ("police", "go_straight", "back") in agents("At the lights, an a polis motor comes up ahint me.")
+
+
+def test_what_one_wears_names_no_vehicle():
+    assert agents("Then this guy in a Leafs jersey comes running across.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_a_tellers_this_brings_in_one_not_named_before():
+    assert [a for a in agents("A pair of kids head across, so I stop. Then this guy comes running across.")
+            if a[0] == "pedestrian"] == [("pedestrian", "cross_the_road", "front")] * 3
+
+
+def test_a_logs_time_stamp_counts_no_one():
+    assert agents("t=0 ego stopped at the line. t=3 car from the left turns right.") == [
+        ("car", "stop", "ego"), ("car", "turn_right", "road_of_left_turn")]
+
+
+def test_a_logs_bound_is_a_heading_and_its_subject_after_another_key_is_the_ego():
+    assert agents("Ego: box truck, WB, full stop at stop line.") == [("truck", "stop", "ego")]
+    assert {a for a in agents("Event 1123: subject = delivery box truck, full stop at stop line (t=0).")
+            if a[2] == "ego"} == {("truck", "stop", "ego")}
+
+
+def test_the_one_of_its_kind_named_again_by_its_kind_in_note_style():
+    assert agents("A motorcyclist cut in ahead of me. M/C continued northbound at high speed, footage held on "
+                  "dashcam.") == [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_right", "front_left")]
+
+
+def test_the_cab_of_a_lorry_driver_is_his_lorry_no_taxi():
+    assert agents("HGV driver on phone, driving lane 2. Reports motorcyclist level with his n/s in lane 1 darted "
+                  "into lane 2 directly ahead of his cab.") == [("motorcycle", "change_lane_to_right", "left"),
+                                                                ("truck", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt", ["A woman was riding towards us on a bicycle.", "A man came towards me on a bike."])
+def test_one_who_rides_towards_the_ego_on_a_bicycle_is_a_cyclist(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_left")]
+
+
+def test_a_sentence_opened_by_opposite_direction_from_tells_an_oncoming_one():
+    assert agents("Road narrow. In front right shoulder on one bicycle man slowly going. Opposite direction from one "
+                  "lorry coming.") == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_right"),
+                                       ("truck", "go_straight", "front_left")]
+
+
+@pytest.mark.parametrize("prompt", [
+    "A cyclist rode through on red. Got a few shouts from the lads.",
+    "A cyclist rode through on red. Please fix this before a child gets hurt.",
+])
+def test_ones_feared_or_only_heard_are_no_agents(prompt):
+    assert agents(prompt) == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_the_siren_after_the_ego_named_again_is_the_emergency_vehicles():
+    assert agents("The automated car is waiting while a man crosses. An ambulance comes up behind the car with its "
+                  "siren blaring.") == [("ambulance", "go_straight", "back"), ("car", "stop", "ego"),
+                                        ("pedestrian", "cross_the_road", "front")]
+
+
+def test_one_named_in_the_egos_own_named_lane_with_nothing_more_is_ahead():
+    assert agents("Three cars stopped in the left lane. The ego is in the left lane.") == [
+        ("car", "go_straight", "ego")] + [("car", "stop", "front")] * 3

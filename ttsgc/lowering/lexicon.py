@@ -1605,6 +1605,7 @@ LONGEST_SENTENCE = 100  # tokens; the corpus's longest sentence has 71. A run-on
 # comma past this, or at twice this, so that what is read per sentence stays bounded
 
 
+CAB_OWNER = {"his": "him", "her": "her", "my": "me", "our": "us"}  # whose lorry's cab, said by its driver
 COMPASS_BOUND = {"n": "northbound", "s": "southbound", "e": "eastbound", "w": "westbound"}
 
 
@@ -1730,6 +1731,7 @@ def tokenize(text: str) -> list[Token]:
         _scenario_identifiers(_lines(_screenplay(_without_services_asked(_without_tag_keys(_without_social_markup(
             _emoji_breaks(_symbols_as_words(_without_thread_numbers(text))))))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
+    text = re.sub(r"\b([NSEW])B\b(?!:)", lambda m: COMPASS_BOUND[m.group(1).lower()], text)  # a log's "WB": westbound
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _respectively(_without_calques(_hinglish(text)))
@@ -1742,10 +1744,15 @@ def tokenize(text: str) -> list[Token]:
                   r"let \1 \2\3", text)  # "braked and let him in ahead of me": where it goes, once let in
     text = BUS_STOPPING.sub(r"\1bus comes to a stop ", text)  # "bus stops at bus stop": the bus stops, no bus stops
     text = re.sub(r"\b([nsew])/b\b", lambda m: COMPASS_BOUND[m.group(1)], text)  # a report's "N/B": northbound
+    text = re.sub(r"\b(in|wearing|wears|wore|sporting) (a|an|his|her|their) (?:[a-z0-9'-]+ ){1,2}(jersey|shirt|t-shirt|"
+                  r"tee|hoodie|cap|beanie|jacket|raincoat|anorak|scarf|sweater|sweatshirt|jumper|vest|tracksuit)\b",
+                  r"\1 \2 \3", text)  # "this guy in a Leafs jersey": what one wears, no Leaf or Harley on the road
     text = re.sub(r"\b(?:brakes|braked|braking|brake|decelerates|decelerated|decelerating)(?:\s+hard)?\s+(?:at|with\s+a\s+"
                   r"(?:constant\s+|uniform\s+|steady\s+)?deceleration\s+of)\s+(?=" + ACCELERATION.pattern + ")",
                   "slows down at ", text)  # "brakes at 7 m/s²": a rate of slowing in a word problem, no halt said
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
+    text = re.sub(r"\bt\s?=\s?(\d+(?:\.\d+)?)(?![\d.]|\s*(?:s|sec|secs|seconds)\b)", r"t=\1 s",
+                  text)  # "t=3.5 car from the right turns": a log's time stamp in seconds, no count of cars
     text = LOGGED_SPEED.sub(r"at \1 m/s", text)  # "t=0.0 ego lane 2 v=12": a log's speed, in SI units
     text = METRES_PER_SECOND.sub(lambda m: f"{round(float(m.group(1)) * 3.6)} km/h", text)  # "at 22 m/s": a speed
     text = re.sub(r"\b(\d+(?:\.\d+)?)t\b", r"\1 tonne", text)  # "a 44t artic": its weight, no count
@@ -1798,6 +1805,24 @@ def tokenize(text: str) -> list[Token]:
                   text)  # "moves from lane 2 to lane 3, on its right, to clear the lane": the side of that lane
     text = re.sub(r"\bincl\.?(?=\s)", "including", text)  # a tester's notes: "3 cars incl. ego" (no sentence end)
     text = re.sub(r"\bapprox\.?(?=\s)", "about", text)
+    text = re.sub(r"\b(footage|video|recording|clip|cctv|images?)\s+(?:is |was |has been |been )?(?:held|kept|retained|"
+                  r"saved|secured|obtained|seized)\b", r"\1 on file", text)  # "footage held on dashcam": no one held
+    if re.search(r"\b(?:hgvs?|lorry|lorries|artics?|articulated|semis?|tractor units?|wagon|big rig|18 wheeler)\b",
+                 text) and not re.search(r"\b(?:taxis?|cabbie|minicab|(?:a|an|another)(?: [a-z]+)? cab)\b", text):
+        text = re.sub(r"\b(ahead of|in front of|the front of|across|past|alongside|beside|behind) (his|her|my|our) cab\b"
+                      r"(?! (?:driver|rank|office|firm|company))",
+                      lambda m: f"{m.group(1)} {CAB_OWNER[m.group(2)]}", text)  # "darted in ahead of his cab": of him
+    text = re.sub(r"(^|[.;!?\n]\s*)opposite (direction|side) from\b", r"\1from the opposite \2", text)  # "Opposite
+    # direction from one lorry coming": a sentence opened word for word from another language
+    text = re.sub(r"\b(before|until|till) (?:a|any|some|another|one of the|one of our) (?:child|kid|person|pedestrian|"
+                  r"cyclist|rider|driver|one|body|pupil|student|old person|toddler)\s+(?:gets|is|will be|has been) (?:hurt|"
+                  r"killed|injured|hit|run over|knocked down|badly hurt|seriously hurt)\b",
+                  r"\1 someone gets hurt", text)  # "review this before a child gets hurt": one feared, not in the scene
+    text = re.sub(r"\b(shouts?|abuse|cheers?|stares?|comments?|waves?|a wave|a shout|a thumbs up|jeers?|banter|grief|"
+                  r"stick) from (?:the|some|a few|a couple of|a load of) (?:lads|guys|blokes|boys|crew|workers|men|team|"
+                  r"gang|onlookers|locals|regulars)\b", r"\1", text)  # "got a few shouts from the lads": heard, no one on
+    # the road
+    text = re.sub(r"\bnot (?:even )?once\b", "never", text, flags=re.I)  # "not once looking our way": no "once" link
     text = re.sub(r"\bcust\.?(?=\s)", "customer", text)  # a job card's "Cust. reports car was stopped"
     text = re.sub(r"\b(the (?:road|street|side road|lane|one)) (?:that |which )?(?:i|we|you|he|she|they|the car|"
                   r"the ego)(?:'re|'m| are| am| is| was| were)? (?:(?:going|goes|go|turning (?:left |right )?|turns? "

@@ -5405,6 +5405,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) and
             not _placed_apart(placed_here, e) for e in r.entities):
         definite = True  # "Pickup ahead of me. Truck braked": the pickup, in note style
+    if bare and u.base == kind and kind in ("motorcycle", "cyclist", "truck", "bus") and [
+            e.head for e in r.entities if e.type == kind and not e.is_ego and e.count == 1] and all(
+            not _placed_apart(placed_here, e) for e in r.entities if e.type == kind and not e.is_ego) and \
+            sum(1 for e in r.entities if e.type == kind and not e.is_ego) == 1:
+        definite = True  # "reports motorcyclist ... darted into lane 2 ... M/C continued NB": the one of its kind,
+        # named again by its kind in note style
     speaker_ego = next((e for e in r.entities if e.is_ego and (e.head in SPEAKERS | {"i'm"} or e.aliases & SPEAKERS)),
                        None)  # ("FSD did something sketchy ... I'm in the middle lane": named first by its system)
     named_ego = next((e for e in r.entities if e.is_ego and e.type == "car"), None)
@@ -5525,6 +5531,12 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if definite and adversarial and not any("adversarial" in e.aliases for e in r.entities):
         definite = False  # "behind a stopped bus ... the adversarial vehicle in the left lane swerves": the benchmark
         # names its adversary with 'the' the first time
+    said_after = units[first].tokens[0].index
+    if words == {"this"} and count is None and not plural and said_after > 0 and r.tokens[said_after - 1].word in (
+            "then", "suddenly", "and", "when", "until", "till", "but", "next") and not any(
+            u.base == e.head or u.base in e.aliases or e.head.split()[-1] == u.base for e in r.entities):
+        definite = False  # "a pair of kids head across ... then this guy comes running": a teller's 'this'
+        # brings in one not named before
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base) or _named_by_its_make(r, u)
@@ -5562,7 +5574,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
                 _names_the_ego_again(r, ego, u.base)) and not _measured_by_others(units, after) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
-                or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)
+                or _anothers_siren(r, units, after) or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)
                 or first > 0 and units[first - 1].tokens[0].base in CONTROLLING or
                 first > 0 and units[first - 1].category == "positions" and u.base not in GENERAL_BODIES and
                 _names_the_ego_again(r, ego, u.base)):  # "our ego, a green hatchback, ... a motorcycle riding
@@ -8842,6 +8854,25 @@ RIDING_ON = (["on"], ["riding"], ["astride"], ["rides"], ["rode"], ["ride"], ["i
              ["pedals"], ["pedalled"], ["pedaled"], ["pedaling"], ["pedalling"])  # "a man rides a bike": the cyclist
 
 
+RODE = {"was", "is", "were", "are", "riding", "rode", "rides", "came", "comes", "coming", "cycling", "pedalling",
+        "pedaling", "slowly", "quickly", "along", "down", "up", "the", "road", "street", "lane", "just", "then"}
+
+
+def _rode_on(between: list[Unit]) -> bool:
+    """'riding towards us on', 'came down the road on': words of riding and of where, then 'on' the two-wheeler."""
+    return len(between) >= 2 and between[-1].word == "on" and any(
+        u.word in ("riding", "rode", "rides", "cycling", "pedalling", "pedaling", "came", "comes", "coming")
+        for u in between) and all(u.category in ("positions", "behaviours") or u.category == "agents" and
+                                  u.meaning == "ego" or u.word in RODE for u in between[:-1])
+
+
+def _anothers_siren(r: _Reader, units: list[Unit], after: int) -> bool:
+    """'an ambulance comes up behind the car with its siren blaring': the siren is the emergency vehicle's, so
+    'the car' is not set apart by it."""
+    return units[after].word == "with" and any(e.type in V.EMERGENCY_TYPES for e in r.entities) and any(
+        t.word in ("siren", "sirens", "blues", "beacons") for u in units[after + 1:after + 4] for t in u.tokens)
+
+
 def _placed_driver(units: list[Unit], before: list[NounPhrase], np: NounPhrase) -> NounPhrase | None:
     """'the guy in front of me in a Subaru', 'some woman just behind us in a Prius': a driver placed, then 'in' the
     vehicle he drives; the words between are only where he is (the ego named in them is no driver)."""
@@ -8977,8 +9008,9 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
                       np.entity.type in V.TWO_WHEELER_TYPES) and (seat in (
                 ["in"], ["driving"], ["on"], ["of"]) or not between and units[np.first].word == "of") or (
                 # "the driver of a stopped bus": the bus
-                prev.entity.type == "pedestrian" and [u.word for u in between] in RIDING_ON
-                and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist
+                prev.entity.type == "pedestrian" and ([u.word for u in between] in RIDING_ON or _rode_on(between))
+                and np.entity.type in V.TWO_WHEELER_TYPES)  # "a lad on a bike": the cyclist; "a woman riding
+            # towards us on a bicycle": one who rides it
             placed = not prev.entity.is_ego and prev.entity.head.split()[-1] in APPOSED_HEADS | {"car"} and \
                 len(between) >= 2 and between[-1].category == "comma" and (
                     units[np.first].word in ("a", "an") or _undetermined(units, np)) and \
@@ -12188,8 +12220,9 @@ def _named_lane_sides(r: _Reader) -> None:
         e.features -= placed | {"middle_lane", "bare_left", "bare_right"}
         if theirs == own:
             e.features |= {"ahead"} if ahead else {"behind"} if behind else set()
-            if not ahead and not behind:
-                e.features.add("level")
+            if not ahead and not behind and "level" not in e.features:
+                e.features.add("ahead")  # "three cars stopped in the left lane ... the ego is in the left lane":
+                # one lane holds no two level, and the one the ego meets in it is ahead
             r.notes.append(f"inferred: '{e.head}' in the {theirs} lane is in the ego's own lane")
             continue
         side = "left" if NAMED_LANES.index(theirs) < NAMED_LANES.index(own) else "right"
