@@ -13324,3 +13324,13 @@ def test_the_siren_after_the_ego_named_again_is_the_emergency_vehicles():
 def test_one_named_in_the_egos_own_named_lane_with_nothing_more_is_ahead():
     assert agents("Three cars stopped in the left lane. The ego is in the left lane.") == [
         ("car", "go_straight", "ego")] + [("car", "stop", "front")] * 3
+
+
+def test_passengers_who_leg_it_across_the_road_cross_it():
+    assert agents("Three passengers hopped off and legged it across the road.") == [
+        ("car", "go_straight", "ego")] + [("pedestrian", "cross_the_road", "front")] * 3
+
+
+def test_a_hired_scooter_by_its_operators_name_and_one_waiting_on_the_other_side_of_a_junction():
+    assert agents("4 way stop, me on a Bird turning left. A patrol car sitting at the stop sign on the other side "
+                  "waved me through.") == [("motorcycle", "turn_left", "ego"), ("police", "stop", "road_of_straight")]

@@ -1822,6 +1822,8 @@ def tokenize(text: str) -> list[Token]:
                   r"stick) from (?:the|some|a few|a couple of|a load of) (?:lads|guys|blokes|boys|crew|workers|men|team|"
                   r"gang|onlookers|locals|regulars)\b", r"\1", text)  # "got a few shouts from the lads": heard, no one on
     # the road
+    text = re.sub(r"\bon (a|my|the|her|his|their|our) (?:bird|lime|voi|tier|dott)(?: scooter)?\b", r"on \1 scooter",
+                  text)  # "me on a Bird turning left": a hired scooter by its operator's name
     text = re.sub(r"\bnot (?:even )?once\b", "never", text, flags=re.I)  # "not once looking our way": no "once" link
     text = re.sub(r"\bcust\.?(?=\s)", "customer", text)  # a job card's "Cust. reports car was stopped"
     text = re.sub(r"\b(the (?:road|street|side road|lane|one)) (?:that |which )?(?:i|we|you|he|she|they|the car|"
