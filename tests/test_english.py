@@ -13334,3 +13334,30 @@ def test_passengers_who_leg_it_across_the_road_cross_it():
 def test_a_hired_scooter_by_its_operators_name_and_one_waiting_on_the_other_side_of_a_junction():
     assert agents("4 way stop, me on a Bird turning left. A patrol car sitting at the stop sign on the other side "
                   "waved me through.") == [("motorcycle", "turn_left", "ego"), ("police", "stop", "road_of_straight")]
+
+
+def test_a_units_own_line_after_the_time_and_the_light_is_the_patrol():
+    assert agents("0040 hrs, dark, very heavy rain. Unit 6 (marked) NB Station Rd. Ped came out between parked "
+                  "vehicles and walked across in front of unit. Unit then stopped.") == [
+        ("pedestrian", "cross_the_road", "front"), ("police", "go_straight", "ego"), ("police", "stop", "ego")]
+
+
+def test_a_log_of_offsets_with_a_route_bus_as_its_subject_named_bare_again():
+    assert agents("+0.0 subject = route 7 bus, waiting at the stop line on red (SB)\n+2.1 car stationary behind "
+                  "subject, queued\n+8.7 SB still red, bus still held") == [("bus", "stop", "ego"),
+                                                                             ("car", "stop", "back")]
+
+
+@pytest.mark.parametrize("prompt", ["A delivery van was double parked so I went around it into the oncoming lane.",
+                                    "A van was stopped so I went into the oncoming lane to get round it."])
+def test_going_round_one_stopped_by_the_oncoming_lane_is_a_move_left(prompt):
+    assert agents(prompt) == [("car", "change_lane_to_left", "ego"), ("car", "stop", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("The car ahead indicated right then suddenly turned left without warning.",
+     [("car", "go_straight", "ego"), ("car", "turn_left", "front")]),
+    ("TOV then moved left into lane 1.", [("car", "change_lane_to_left", "ego")]),
+])
+def test_a_past_verb_after_then_goes_on_telling_of_the_one_before_it(prompt, expected):
+    assert agents(prompt) == expected

@@ -1751,6 +1751,11 @@ def tokenize(text: str) -> list[Token]:
                   r"(?:constant\s+|uniform\s+|steady\s+)?deceleration\s+of)\s+(?=" + ACCELERATION.pattern + ")",
                   "slows down at ", text)  # "brakes at 7 m/s²": a rate of slowing in a word problem, no halt said
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
+    text = re.sub(r"\broute (?:(\d+) )?(bus|coach)\b", lambda m: f"number {m.group(1)} {m.group(2)}" if m.group(1)
+                  else m.group(2), text)  # "the ego is a route 7 bus": the bus of that service
+    text = re.sub(r"(?<![\w.+])\+(\d+(?:\.\d+)?)(?:\s*(?:s|sec|secs|seconds)\b)?(?!\s*(?:km|kph|mph|m\b|metres|meters|"
+                  r"ft|feet|%|lanes?\b|[.\d]))", r"t=\1 s", text)  # "+2.1 car stationary behind subject": a log line's
+    # offset in seconds
     text = re.sub(r"\bt\s?=\s?(\d+(?:\.\d+)?)(?![\d.]|\s*(?:s|sec|secs|seconds)\b)", r"t=\1 s",
                   text)  # "t=3.5 car from the right turns": a log's time stamp in seconds, no count of cars
     text = LOGGED_SPEED.sub(r"at \1 m/s", text)  # "t=0.0 ego lane 2 v=12": a log's speed, in SI units
@@ -1824,6 +1829,9 @@ def tokenize(text: str) -> list[Token]:
     # the road
     text = re.sub(r"\bon (a|my|the|her|his|their|our) (?:bird|lime|voi|tier|dott)(?: scooter)?\b", r"on \1 scooter",
                   text)  # "me on a Bird turning left": a hired scooter by its operator's name
+    text = re.sub(r"\b((?:around|round|past) (?:it|him|her|them|the [a-z]+)) (?:into|onto|through|via) the (?:oncoming|opposing)"
+                  r" lane\b", r"\1", text)  # "went around it into the oncoming lane": round it, on the side one
+    # passes on
     text = re.sub(r"\bnot (?:even )?once\b", "never", text, flags=re.I)  # "not once looking our way": no "once" link
     text = re.sub(r"\bcust\.?(?=\s)", "customer", text)  # a job card's "Cust. reports car was stopped"
     text = re.sub(r"\b(the (?:road|street|side road|lane|one)) (?:that |which )?(?:i|we|you|he|she|they|the car|"

@@ -1396,8 +1396,9 @@ def _observed_subject(text: str, notes: list[str]) -> str:
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*:\s*(?=(?:a|an)\b)", r"\1The ego is ", text, flags=re.I | re.M)
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*:\s*", r"\1Ego: ", text, flags=re.I | re.M)
     text = re.sub(r"((?:^|[.;:!?(])\s*)subject\s*,\s*(?=(?:a|an|the)\b)", r"\1the ego, ", text, flags=re.I | re.M)
-    text = re.sub(r"(?<=:\s)subject\s*=\s*(?!(?:a|an|the)\b)", "the ego is a ", text, flags=re.I)  # "Event 1123:
-    # subject = delivery box truck": a key after another key on its line, said as a sentence
+    text = re.sub(r"((?::|^\s*\+?\d+(?:\.\d+)?\s*s?)\s+)subject\s*=\s*(?!(?:a|an|the)\b)", r"\1the ego is a ", text,
+                  flags=re.I | re.M)  # "Event 1123: subject = delivery box truck", "+0.0 subject = route 7 bus":
+    # after another key or a time stamp on its line, said as a sentence
     text = re.sub(r"(?<![\w'-])subject\s*=\s*", "Ego: ", text, flags=re.I)  # "subject = white SUV (trk 77)"
     text = re.sub(r"((?:^|[.;:!?|])\s*)" + SUBJECT_BEFORE_ITS_NOUN, r"\1the ego ", text,
                   flags=re.I | re.M)  # "Subject motorbike"

@@ -5419,6 +5419,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not listed and not any(not e.is_ego and e.type == "car" for e in r.entities):
         definite = True  # "I'm in the middle lane ... Car braked and moved over": the speaker's car, note style;
         # "AV turning right ... vehicle waited for them": the AV, as an operator's log names it again
+    ego_of_kind = next((e for e in r.entities if e.is_ego and e.type == kind), None)
+    if bare and ego_of_kind is not None and kind in ("bus", "truck") and not placed_here and \
+            not listed and _names_the_ego_again(r, ego_of_kind, u.base) and \
+            not any(not e.is_ego and e.type == kind for e in r.entities):
+        definite = True  # "subject = route 7 bus ... SB still red, bus still held": the ego, in a log's note style
     if bare and u.base in RIDING_PEOPLE and any(e.type in V.TWO_WHEELER_TYPES for e in r.entities):
         definite = True  # "cut off a cyclist. Guy was riding straight": the rider, named as a texter names him
     if bare and u.base in ("driver", "rider") and any(not e.is_ego and e.type not in V.VULNERABLE_TYPES
@@ -5796,6 +5801,34 @@ def _named_by_a_vehicle_noun(ego: Entity) -> bool:
     """'The test car ... the sedan': an ego told of by a vehicle noun may be named again by another noun of its
     body; a narrator's 'I' or 'we' is not, and 'the sedan' in their account is someone else's."""
     return any(name.split()[-1] not in SELF_NAMES for name in ego.aliases | {ego.head} if name)
+
+
+PAST_WITHOUT_ED = {"went", "cut", "came", "ran", "swung", "hit", "drove", "rode", "took", "made", "pulled", "shot",
+                   "sped", "stuck", "began", "kept", "left", "got", "slid", "spun", "flew", "stole", "threw"}
+
+
+PREDICATE_ENDS = {"left", "right", "straight", "ahead", "first", "lane", "lanes", "off", "out", "in", "over", "up", "down",
+                  "hard", "again", "away", "back", "forward", "on", "signal", "indicator", "lights", "horn", "brakes"}
+
+
+def _ends_a_predicate(word: str) -> bool:
+    """'indicated right', 'slowed down', 'braked', 'suddenly': a word a predicate ends on, not a subject ('TOV then
+    moved', 'she then made')."""
+    return word in PREDICATE_ENDS or word.endswith(("ed", "ly")) and len(word) > 3
+
+
+def _goes_on_in_the_past(r: _Reader, units: list[Unit], verbs: list[int], previous_subject: list) -> bool:
+    """'The car ahead indicated right then suddenly turned left': after 'then' in the same sentence, a past verb with
+    no subject goes on telling of the one before it (not the ego's, as an order or a note's next line would be)."""
+    at = units[0].start if units else 0
+    if not verbs or any(e.is_ego for e in previous_subject) or at < 2 or r.tokens[at - 1].word != "then" or \
+            not _ends_a_predicate(r.tokens[at - 2].word) or r.tokens[at - 1].sentence != r.tokens[at].sentence or \
+            r.tokens[at - 2].sentence != r.tokens[at].sentence:
+        return False
+    if any(u.category not in ("behaviours",) and u.word not in ADVERBS for u in units[:verbs[0]]):
+        return False
+    word = units[verbs[0]].tokens[0].word
+    return word.endswith("ed") or word in PAST_WITHOUT_ED
 
 
 def _past_tense_verb(u: Unit) -> bool:
@@ -7217,7 +7250,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                            first_verb - 3 <= np.index < first_verb for np in phrases):
             verbs = []  # "a bus stops and a dog runs out": a new subject that names no agent; the bus did not run
             # (but "sirens going, and turned left": the same one goes on)
-        elif previous_subject and clause.link in ("and", "or", ",", "but", "so") and not clause.after_subordinate \
+        elif previous_subject and (clause.link in ("and", "or", ",", "but", "so") or clause.link in ("then", "") and
+                _goes_on_in_the_past(r, units, verbs, previous_subject)) and not clause.after_subordinate \
                 and not _imperative_on(units, verbs, phrases, previous_subject) \
                 and not (r.after_verbless and verbs and verbs[0] == 0 and _bare_verb(units[0])):
             # "ambulance behind with siren, pull over to the right": an order after a verbless description
@@ -12406,7 +12440,10 @@ def _a_patrols_call_sign(r: _Reader) -> bool:
         k == 0 or words[k - 1] in ("from", "control", ",", ":", ".") or words[k - 1].isdigit()) or
         w in PATROL_CALL_WORDS and 0 < k < len(words) - 1 and words[k - 1].isdigit() and words[k + 1].isdigit()
         for k, w in enumerate(words)) or _says_any(words, PATROLS_OWN_WORDS) or \
-        any(tuple(words[:len(p)]) == p for p in PATROLS_OPENINGS)
+        any(tuple(words[:len(p)]) == p for p in PATROLS_OPENINGS) or any(
+            tuple(words[k:k + 4]) == ("unit", ",", "marked", ",") and (k == 0 or r.tokens[k - 1].sentence !=
+                                                                       r.tokens[k].sentence) for k in range(len(words)))
+    # ("0040 hrs, dark. Unit 6 (marked) NB Station Rd": the unit's own line, after the time and the light)
 
 
 def _the_egos_brake_is_no_stop(r: _Reader) -> None:
