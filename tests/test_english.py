@@ -13361,3 +13361,34 @@ def test_going_round_one_stopped_by_the_oncoming_lane_is_a_move_left(prompt):
 ])
 def test_a_past_verb_after_then_goes_on_telling_of_the_one_before_it(prompt, expected):
     assert agents(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", ["A pedestrian crossing against the lights was hit by a van.",
+                                    "A pedestrian crossing on red was hit by a van."])
+def test_a_pedestrian_crossing_against_the_light_is_a_person(prompt):
+    assert ("pedestrian", "cross_the_road", "front") in agents(prompt)
+
+
+def test_the_crosswalk_named_pedestrian_crossing_stays_a_place():
+    assert agents("I stopped at the pedestrian crossing on red.") == [("car", "stop", "ego")]
+
+
+def test_one_reversing_towards_the_ego_stays_where_it_is():
+    assert agents("The lorry in front of me was reversing towards me so I beeped.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("A pedestrian steps out; the ego brakes and stops; the pedestrian finishes crossing; the ego drives on.",
+     [("car", "go_straight", "ego"), ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]),
+    ("Event 1123: subject = delivery box truck, WB, full stop at stop line (t=0). t=3.5 car from subject's right "
+     "turns right onto Lake. t=8.4 subject proceeds straight.",
+     [("car", "turn_right", "road_of_right_turn"), ("truck", "go_straight", "ego"), ("truck", "stop", "ego")]),
+])
+def test_the_ego_going_on_after_a_halt_in_a_sentence_of_its_own_is_the_next_stage(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_ego_going_on_with_no_halt_before_is_one_stage():
+    assert agents("The ego drives along a street. A cyclist rides ahead. The ego continues.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]

@@ -1722,6 +1722,24 @@ ONLY_THEN_DID = re.compile(r"\bonly (?:(after|once|when) ([^.;!?]*?),?|then) did
 LOGGED_SPEED = re.compile(r"\bv\s?=\s?(\d{1,3}(?:\.\d+)?)(?!\s*(?:km|kph|mph|m\s?/|ms\b|[./]?\d))")  # "v=12"
 
 
+HELD = re.compile(r"\b(?:stops|stopped|halts|halted|waits|waited|full stop|comes to a stop|came to a stop|comes to a "
+                  r"halt|came to a halt|gives way|gave way|yields|yielded|is stationary|was stationary|is held|was "
+                  r"held)\b")
+RESUMED = re.compile(r"(^|[.;!?]\s+)((?:t=[\d.]+ s:?\s+)?)(the ego|ego|the av|the test car|i|we|subject|the subject)"
+                     r"\s+(?:then\s+)?(?=(?:drives on|drove on|moves off|moved off|pulls away|pulled away|sets off|set off|proceeds|"
+                     r"proceeded|continues|continued|carries on|carried on|moves on|moved on|goes on|went on|drives off|"
+                     r"drove off)\b)", re.M)
+
+
+def _resumed(text: str) -> str:
+    """'... the ego brakes and stops; the pedestrian finishes crossing; the ego drives on': after a halt, the ego
+    going on in a sentence of its own is the next stage, as if 'then' were said."""
+    held = HELD.search(text)
+    if held is None:
+        return text
+    return text[:held.end()] + RESUMED.sub(r"\1\2then \3 ", text[held.end():])
+
+
 def tokenize(text: str) -> list[Token]:
     """Text -> tokens with base forms; commas (and brackets) stay as ',' tokens, for clause boundaries;
     the sentence number advances at . ; ! ? : and blank lines."""
@@ -1832,6 +1850,10 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b((?:around|round|past) (?:it|him|her|them|the [a-z]+)) (?:into|onto|through|via) the (?:oncoming|opposing)"
                   r" lane\b", r"\1", text)  # "went around it into the oncoming lane": round it, on the side one
     # passes on
+    text = re.sub(r"\b(revers(?:e|es|ed|ing)|back(?:s|ed|ing)? up|roll(?:s|ed|ing)? back)( slowly| quickly)? (?:back )?"
+                  r"(?:towards|toward|at) (?:me|us|the ego|my car|our car)\b", r"\1\2", text)  # "the lorry in front was
+    # reversing towards me": backing up where it is, not coming the other way
+    text = _resumed(text)
     text = re.sub(r"\bnot (?:even )?once\b", "never", text, flags=re.I)  # "not once looking our way": no "once" link
     text = re.sub(r"\bcust\.?(?=\s)", "customer", text)  # a job card's "Cust. reports car was stopped"
     text = re.sub(r"\b(the (?:road|street|side road|lane|one)) (?:that |which )?(?:i|we|you|he|she|they|the car|"

@@ -1605,7 +1605,8 @@ VERB_AFTER_CROSSING = {"the", "a", "an", "road", "street", "in", "from", "over",
                        "slowly", "quickly", "suddenly", "carelessly", "directly", "between", "across", "at", "when",
                        "while", "as", "diagonally", "illegally", "right", "left", "just", "without", "outside",
                        "mid", "lanes", "it", "its", "his", "her", "their", "before", "behind", "ahead",
-                       "very", "infront", "one", "front"}
+                       "very", "infront", "one", "front", "against", "despite", "during"}  # "a pedestrian crossing
+# against the red light": a person crossing
 CROSSED_WITHOUT_ARTICLE = {"side", "far", "both", "target", "crosswalk", "crosswalks", "zebra", "roadway",
                            "carriageway"}  # "ped crossing side road crosswalk", "ped crossing far-side crosswalk":
 # a note's person crossing, the article before what is crossed left out
@@ -2260,7 +2261,8 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
     nxt2 = tokens[m.end + 1].word if m.end + 1 < len(tokens) else ""
     place_then_verb = nxt in ("ahead", "behind") and nxt2 in ("is", "was", "are", "were", "has", "had")
     on_a_crossing = nxt in ("on", "along") and bool({t.word for t in tokens[m.end + 1:m.end + 4]} & {
-        "crosswalk", "crosswalks", "zebra", "crossing"})  # "ped crossing on the crosswalk": a person crossing at it
+        "crosswalk", "crosswalks", "zebra", "crossing"}) or nxt == "on" and nxt2 == "red"  # "ped crossing on the
+    # crosswalk": a person crossing at it; "a pedestrian crossing on red": crossing while the light is red
     lone_piece = len(span) == 1 and m.start > 0 and tokens[m.start - 1].word == "," and (
         m.end >= len(tokens) or tokens[m.end].sentence != span[0].sentence or tokens[m.end].word == ",") and any(
             (lexicon().phrases.get((t.base,)) or ("", ""))[1] in V.VULNERABLE_TYPES
