@@ -13392,3 +13392,23 @@ def test_the_ego_going_on_after_a_halt_in_a_sentence_of_its_own_is_the_next_stag
 def test_the_ego_going_on_with_no_halt_before_is_one_stage():
     assert agents("The ego drives along a street. A cyclist rides ahead. The ego continues.") == [
         ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+
+
+def test_a_key_of_where_they_come_from_said_with_its_participle_and_a_lists_after_them():
+    assert agents("Ego turns left. Coming from opposite: two car, after them one motorcycle also.") == [
+        ("car", "go_straight", "road_of_straight"), ("car", "go_straight", "road_of_straight"),
+        ("car", "turn_left", "ego"), ("motorcycle", "go_straight", "road_of_straight")]
+
+
+@pytest.mark.parametrize("prompt, junction, without", [
+    ("I on straight road slow going, junction not have.", False, ()),
+    ("Ego is at a junction. Traffic light there is not.", True, ("traffic_light",)),
+])
+def test_an_absence_said_in_another_languages_order(prompt, junction, without):
+    road = lower(prompt).scenario.road
+    assert (road.junction, road.without_signals) == (junction, without)
+
+
+def test_a_vehicles_signal_none_is_no_absence_of_a_road_signal():
+    assert agents("Three lanes, I was in the centre one; a sedan on my left, its signal none, swerved right in front "
+                  "of me.") == [("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]

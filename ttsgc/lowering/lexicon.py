@@ -1854,6 +1854,16 @@ def tokenize(text: str) -> list[Token]:
                   r"(?:towards|toward|at) (?:me|us|the ego|my car|our car)\b", r"\1\2", text)  # "the lorry in front was
     # reversing towards me": backing up where it is, not coming the other way
     text = _resumed(text)
+    text = re.sub(r"(?<!its )(?<!his )(?<!her )(?<!their )\b((?:junction|intersection|crossroad|crossing|traffic light|"
+                  r"traffic signal|crosswalk|zebra|roundabout|stop sign|road marking|marking)s?) (?:not have|not has|no have|not there|not exist|not exists|"
+                  r"there is not|there isn't|is not there)\b", r"no \1", text)  # "crossroad not have", "traffic
+    # light there is not": the thing's absence, said in another language's order
+    text = re.sub(r",\s*after (them|him|her|it),? ((?:one|a|an|another|two|three|some) [a-z]+(?: [a-z]+)?)"
+                  r"(?=(?: also| too| as well)?\s*(?:[.,;!?]|$))", r", behind \1 \2", text)  # "two car, after them one
+    # motorcycle also": a list's next one, following them
+    text = re.sub(r"(^|[.;!?\n]\s*)(?:coming|approaching|arriving|driving|travelling|traveling|riding|walking)\s+"
+                  r"(from [a-z' ]{1,40}):", r"\1\2:", text, flags=re.M)  # "Coming from opposite: two car": a key of
+    # where those listed after it come from, as "From the left: a cyclist"
     text = re.sub(r"\bnot (?:even )?once\b", "never", text, flags=re.I)  # "not once looking our way": no "once" link
     text = re.sub(r"\bcust\.?(?=\s)", "customer", text)  # a job card's "Cust. reports car was stopped"
     text = re.sub(r"\b(the (?:road|street|side road|lane|one)) (?:that |which )?(?:i|we|you|he|she|they|the car|"
