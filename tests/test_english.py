@@ -13412,3 +13412,55 @@ def test_an_absence_said_in_another_languages_order(prompt, junction, without):
 def test_a_vehicles_signal_none_is_no_absence_of_a_road_signal():
     assert agents("Three lanes, I was in the centre one; a sedan on my left, its signal none, swerved right in front "
                   "of me.") == [("car", "change_lane_to_right", "left"), ("car", "go_straight", "ego")]
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("I let the car merge in front of me.", [("car", "change_lane_to_right", "front_left"),
+                                              ("car", "go_straight", "ego")]),
+    ("I let the car on my right merge in front of me.", [("car", "change_lane_to_left", "right"),
+                                                          ("car", "go_straight", "ego")]),
+])
+def test_the_one_the_speaker_lets_merge_is_another_placed_before_its_verb(prompt, expected):
+    assert agents(prompt) == expected
+
+
+def test_the_next_right_taken_is_a_turn():
+    assert ("car", "turn_right", "ego") in agents("Take the next right at the crossroads.")
+
+
+def test_an_officer_who_reports_what_was_seen_is_no_one_on_the_road():
+    assert agents("Officer observed a motorcycle in the right lane, slightly behind the ego vehicle, overtaking it at "
+                  "high speed.") == [("car", "go_straight", "ego"), ("motorcycle", "go_straight", "back_right")]
+
+
+def test_the_ego_named_last_in_brackets_with_its_description():
+    assert agents("Vehicle 1 (silver hatchback, ego) was travelling northbound when Vehicle 2, a black pickup "
+                  "approaching from the opposite direction, turned left across its path at the intersection.") == [
+        ("car", "go_straight", "ego"), ("car", "turn_left", "road_of_straight")]
+
+
+def test_a_motorist_a_report_opens_on_is_the_one_it_is_told_from():
+    assert agents("A motorist had a lucky escape when an articulated lorry, just ahead of her in the right-hand "
+                  "lane, drifted into her lane.") == [("car", "go_straight", "ego"),
+                                                      ("truck", "change_lane_to_left", "front_right")]
+
+
+def test_a_progressive_goes_on_after_and_in_a_reason_and_passengers_of_a_service_by_its_number():
+    assert agents("Sat at the front of the 47 and our driver had to stop because a fire engine was coming out of "
+                  "the road on the right and turning left in front of us.") == [
+        ("bus", "stop", "ego"), ("firetruck", "turn_left", "road_of_right_turn")]
+
+
+def test_an_onlookers_account_of_the_one_that_stops_to_let_someone_cross():
+    assert agents("From the pavement I saw a silver car stop to let a jogger cross in front of it.") == [
+        ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_kin_who_had_to_go_round_one_drives_the_teller():
+    assert agents("the scooter in front of us just stopped randomly n my mum had to go round it into the left "
+                  "lane") == [("car", "change_lane_to_left", "ego"), ("motorcycle", "stop", "front")]
+
+
+def test_the_one_who_waited_while_others_went_then_acts():
+    assert ("car", "turn_left", "ego") in agents("Today she waited patiently while two elderly ladies crossed at the "
+                                                 "zebra, then turned left.")

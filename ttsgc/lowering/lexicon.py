@@ -1753,6 +1753,8 @@ def tokenize(text: str) -> list[Token]:
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _respectively(_without_calques(_hinglish(text)))
+    text = re.sub(r"\(([^()]{1,60}?),\s*((?:the )?(?:ego|ego vehicle|ego car|subject vehicle|sv|vut))\s*\)", r"(\2, \1)",
+                  text)  # "Vehicle 1 (silver hatchback, ego)": its role first, as "(ego, silver hatchback)"
     text = AGENT_COMPOUND.sub(r"\1", text)  # "the ped-safety task", "a car-following model": no one on the road
     text = PERCEIVED.sub(r"\1", text)  # "keep three separate pedestrian tracks": a tracker's, no one on the road
     text = DEVICE_SWITCH.sub(r"\2", text)  # "turn fog on in the simulator", "turn your headlights on": no turn

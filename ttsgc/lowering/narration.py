@@ -1346,7 +1346,8 @@ def _kin_at_the_wheel(text: str, notes: list[str]) -> str:
     one of the teller's family who drives them is the ego, the 'we' of the teller's party."""
     m = re.search(rf"\b[Mm]y ({KIN_AT_THE_WHEEL})(?:,\s*who\s+was\s+(?:driving|at\s+the\s+wheel),)?\s+"
                   rf"(?:[a-z]+ly\s+)?(?:{STORY_DRIVING}|moved|swerved|stopped|slammed|was at the wheel|"
-                  rf"was behind the wheel)\b", text)  # ("my son, who was driving, moved over")
+                  rf"was behind the wheel|went round|went around|had to (?:go|stop|brake|swerve|pull|slam|turn))\b",
+                  text)  # ("my son, who was driving, moved over", "my mum had to go round it")
     if m is None or not CREW.search(text) or WALKING.search(text) or RIDING.search(text):
         return text  # (not a party on foot or on bikes: "my son and I were crossing ... my son turned back")
     kin = m.group(1)

@@ -5325,6 +5325,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             _minds_a_thing(units, head) and not any(m.category == "actions" and m.meaning != "try"
                                                      for m in units[head + 2:]):
         return NounPhrase(None, head, first)  # "the traffic warden saw nothing": one who saw or said, no agent
+    if not plural and count is None and words <= {"the", "reporting", "attending"} and first == lo and \
+            u.base in WATCHERS and head + 2 < len(units) and units[head + 1].tokens[0].base in PERCEIVING and \
+            (units[head + 2].word in INDEFINITE | {"two", "three", "four"} or units[head + 2].category == "agents"):
+        return NounPhrase(None, head, first)  # "Officer observed a motorcycle in the right lane ... overtaking": the
+        # one who reports what was seen, no one on the road
     if u.tokens[-1].word in ("people", "folks", "drivers", "motorists") and count is None and \
             not words - {"of"} and first > 0 and (units[first - 1].word in GENERIC_AFTER or units[first].word == "of") \
             and not _of_a_group(units, first):
@@ -5577,6 +5582,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
         nxt = units[after] if after < len(units) else None
         if ego is not None and not plural and kind == ego.type and "other" not in words and \
                 not _picked_out_by_what_it_did(r, u) and not _the_teller_afoot(ego) and \
+                not (first > 0 and units[first - 1].word in LETTING and ego.head in SPEAKERS) and \
                 not any(m.category == "positions" for m in modifiers) and (  # ("the oncoming car": another)
                 u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
                 _names_the_ego_again(r, ego, u.base)) and not _measured_by_others(units, after) and (
@@ -5817,6 +5823,20 @@ def _ends_a_predicate(word: str) -> bool:
     """'indicated right', 'slowed down', 'braked', 'suddenly': a word a predicate ends on, not a subject ('TOV then
     moved', 'she then made')."""
     return word in PREDICATE_ENDS or word.endswith(("ed", "ly")) and len(word) > 3
+
+
+def _after_then(tokens: list[Token], clause: Clause) -> bool:
+    """The clause opens right after ', then' ('waited while two ladies crossed, then turned left')."""
+    at = clause.units[0].start if clause.units else 0
+    return at >= 2 and tokens[at - 1].word == "then" and tokens[at - 2].word == ","
+
+
+def _progressive_goes_on(before: Clause, clause: Clause) -> bool:
+    """'... because a fire engine was coming out of the road on the right and turning left': an '-ing' after 'and'
+    goes on with the progressive before it, of the same subject."""
+    words = [u.tokens[0].word for u in before.units]
+    return clause.link == "and" and clause.units[0].tokens[0].word.endswith("ing") and any(
+        w in ("was", "were", "is", "are") and nxt.endswith("ing") for w, nxt in zip(words, words[1:]))
 
 
 def _goes_on_in_the_past(r: _Reader, units: list[Unit], verbs: list[int], previous_subject: list) -> bool:
@@ -6062,6 +6082,8 @@ GENERAL_NOUNS = {"car", "vehicle", "truck", "bus", "motorcycle", "bike", "cyclis
 FOOTWAYS = {"pavement", "footway", "sidewalk", "footpath"}
 SIDEWALK_WORDS = FOOTWAYS | {"kerb", "curb"}
 WANTING = {"want", "need", "like", "expect", "wish", "prefer", "propose"}  # "I want a car to cut in": the car cuts in
+WATCHERS = {"officer", "constable", "pc", "trooper", "deputy", "witness", "observer", "examiner", "instructor",
+            "inspector", "marshal", "steward", "warden", "investigator", "analyst", "reviewer"}  # who report seeing
 PERCEIVING = {"see", "saw", "seen", "observe", "notice", "watch", "spot", "witness", "hear", "heard", "noticed",
               "observed", "spotted", "watched", "witnessed"}
 RIDDEN = {"bike", "bicycle", "pushbike", "push bike", "pedal cycle", "motorbike", "motorcycle", "moped", "scooter"}
@@ -8291,8 +8313,10 @@ def _made_to(units: list[Unit], i: int, phrases: list[NounPhrase]) -> list[Entit
         return left
     if i >= 2 and units[i - 1].word != "to":
         k = i - 1
-        while k > 1 and units[k].category == "positions":
-            k -= 1  # "lets a car from the road on the left turn right": the one let, placed before its verb
+        while k > 1 and (units[k].category == "positions" or units[k].word in (
+                "on", "to", "in", "at", "the", "my", "our", "its", "his", "her", "their")):
+            k -= 1  # "lets a car from the road on the left turn right", "let a van on my right merge": the one let,
+            # placed before its verb
         np = next((p for p in phrases if p.index == k and p.entity is not None), None)
         if np is not None and np.first > 0 and (units[np.first - 1].word in LETTING or units[np.first - 1].word in
                                                  MAKING and units[i].tokens[0].word == units[i].tokens[0].base):
@@ -10437,6 +10461,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     pending: list[Entity] = []
     header: list[Unit] = []
     boxed: dict = {}  # sentence -> the ego's block action told in the passive there, with no one said to do it
+    subjects: list[list[Entity]] = []  # each clause's subject, in order
     for k, clause in enumerate(clauses):
         if clause.link == "," and k > 0 and recent and len(clause.units) > 2 and \
                 _the_one_after(clauses[k - 1].units, clause.units, 0):
@@ -10462,9 +10487,14 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         if k > 0 and clauses[k - 1].antecedent is not None and previous == [clauses[k - 1].antecedent] and \
                 main_subject and _returns_to_the_main_subject(clause.units):
             previous = main_subject  # "waits behind a bus that is stopped, then overtakes it": the ego overtakes
-        if k > 0 and clauses[k - 1].link in SIDE_LINKS and main_subject and clause.units and (
+        if k > 1 and clauses[k - 1].link in ("while", "whilst") and _after_then(tokens, clause) and \
+                clause.units[0].category == "actions" and subjects[k - 2]:
+            previous = subjects[k - 2]  # "she waited while two ladies crossed, then turned left": the one who
+            # waited goes on, not those she waited for
+        elif k > 0 and clauses[k - 1].link in SIDE_LINKS and main_subject and clause.units and (
                 clause.units[0].category == "actions" or clause.units[0].word in DOING_A_MANOEUVRE and
-                any(u.category == "actions" for u in clause.units[1:3])):  # ("..., and then make the lane change")
+                any(u.category == "actions" for u in clause.units[1:3])) and \
+                not _progressive_goes_on(clauses[k - 1], clause):  # ("..., and then make the lane change")
             previous = main_subject  # "held position until the pickup had passed, then completed the left": the
             # one who waited acts again, not the one waited for
         if k > 0 and clauses[k - 1].condition and not clause.condition and outside_condition and clause.units and \
@@ -10486,6 +10516,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
         ego_blocked = [e for e in r.entities if e.is_ego and any(a[4] == "block" for a in e.actions)]
         said_until = r.order
         subject = _read_clause(r, clause, previous, recent, pending)
+        subjects.append(subject)
         _placed_by_the_egos_relative(clause, subject)
         if clause.stage > 0 and clause.units and clause.units[0].category == "actions" and subject == previous and \
                 len(subject) == 1 and subject[0].said_at >= 0 and \
@@ -10815,7 +10846,7 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if not driver_named and any(t.word == "ego" for t in r.tokens):
         return None  # "a lorry swings wide, crossing into the ego's lane": the ego is named, if only by its lane
     ordered = sorted(r.entities, key=lambda e: e.key)
-    driver = next((e for e in ordered if not e.is_ego and e.head == "driver" and _may_drive_the_scene(e) and (
+    driver = next((e for e in ordered if not e.is_ego and e.head in ("driver", "motorist") and _may_drive_the_scene(e) and (
         not e.definite or [t.word for t in r.tokens[e.said_at + 1:e.said_at + 3]] in (["of", "a"], ["of", "an"]))),
                   None)  # (so "the driver of a silver Corolla": named here for the first time)
     if driver is not None and not driver_named:
@@ -10905,6 +10936,16 @@ def _opening_unit(r: _Reader, sentence: int) -> Unit | None:
             continue
         return u
     return None
+
+
+def _stops_to_let_by(r: _Reader, e: Entity) -> bool:
+    """'a silver car stop to let a jogger cross', 'a van stopped for a woman with a pram': it gives way to someone."""
+    if e.said_at < 0:
+        return False
+    words = [t.word for t in r.tokens[e.said_at + 1:e.said_at + 8] if t.sentence == r.tokens[e.said_at].sentence]
+    return any(w in ("stop", "stops", "stopped", "stopping", "pulled", "waited", "waits") and
+               words[k + 1:k + 3] in (["to", "let"], ["for", "a"], ["for", "the"], ["to", "allow"])
+               for k, w in enumerate(words))
 
 
 def _stops_for_someone(r: _Reader, first: Entity) -> bool:
@@ -11499,7 +11540,11 @@ def _witness_on_foot(r: _Reader) -> None:
     movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and e.parent is None
               and any(a[4] not in ("stop", "try") or patrol or crossing or controlling for a in e.actions)]
     # (those held at a works board are the scene as much as those that go; "a van stops for
-    if not movers:  # us": the one met at the crossing)
+    if not movers and "a pedestrian" in words:  # us": the one met at the crossing)
+        movers = [e for e in r.entities if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and
+                  e.parent is None and _stops_to_let_by(r, e)]  # "From the pavement I saw a silver car stop to let
+        # a jogger cross": an onlooker's account of the one that gave way
+    if not movers:
         return
     if crossing:
         subject = movers[0]  # "... when a silver hatchback pulled up and waited for me": the one met on the way over
@@ -12463,6 +12508,8 @@ def _said_with_a(r: _Reader, e: Entity) -> bool:
 
 
 SERVICE_NUMBERED = {"route", "number", "no", "service"}
+SERVICE_BOARDED = {"of", "on", "off", "caught", "took", "missed", "boarded", "onto", "aboard"}  # "at the front of the
+# 47", "caught the 9 home": a service its passengers ride
 SERVICE_GOES = {"stopped", "pulled", "was", "came", "went", "braked", "left", "out", "from", "into", "on", "today"}
 
 
@@ -12470,7 +12517,10 @@ def _on_a_bus_route(words: list[str]) -> bool:
     """'the 7 stopped at the zebra', 'the number 38', 'in the bus lane': a service named by its number, or the bus
     lane it keeps to; with passengers who speak of their driver, what they ride is a bus, not a taxi."""
     return any(w in SERVICE_NUMBERED and words[k + 1].isdigit() or w == "the" and words[k + 1].isdigit() and
-               k + 2 < len(words) and words[k + 2] in SERVICE_GOES or words[k:k + 2] == ["bus", "lane"]
+               k + 2 < len(words) and words[k + 2] in SERVICE_GOES or words[k:k + 2] == ["bus", "lane"] or
+               w == "the" and words[k + 1].isdigit() and k > 0 and words[k - 1] in SERVICE_BOARDED and
+               (k + 2 == len(words) or words[k + 2] in (",", "and", "when", "as", "because", "today", "yesterday",
+                                                        "this", "last", "into", "from", "to", "home"))
                for k, w in enumerate(words[:-1]))
 
 
