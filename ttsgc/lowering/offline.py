@@ -5587,7 +5587,8 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
                 u.base in GENERAL_BODIES or u.base in bodies() and _named_by_a_vehicle_noun(ego) or
                 _names_the_ego_again(r, ego, u.base)) and not _measured_by_others(units, after) and (
                 nxt is None or nxt.category not in ("positions", "word") or nxt.word in AUXILIARIES
-                or _anothers_siren(r, units, after) or u.tokens[-1].possessive or _past_tense_verb(nxt) or _verb_before_its_object(units, after)
+                or _anothers_siren(r, units, after) or u.tokens[-1].possessive or _past_tense_verb(nxt)
+                or _verb_before_its_object(units, after)
                 or first > 0 and units[first - 1].tokens[0].base in CONTROLLING or
                 first > 0 and units[first - 1].category == "positions" and u.base not in GENERAL_BODIES and
                 _names_the_ego_again(r, ego, u.base)):  # "our ego, a green hatchback, ... a motorcycle riding
@@ -10846,7 +10847,8 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
     if not driver_named and any(t.word == "ego" for t in r.tokens):
         return None  # "a lorry swings wide, crossing into the ego's lane": the ego is named, if only by its lane
     ordered = sorted(r.entities, key=lambda e: e.key)
-    driver = next((e for e in ordered if not e.is_ego and e.head in ("driver", "motorist") and _may_drive_the_scene(e) and (
+    driver = next((e for e in ordered if not e.is_ego and e.head in ("driver", "motorist") and
+                   _may_drive_the_scene(e) and (
         not e.definite or [t.word for t in r.tokens[e.said_at + 1:e.said_at + 3]] in (["of", "a"], ["of", "an"]))),
                   None)  # (so "the driver of a silver Corolla": named here for the first time)
     if driver is not None and not driver_named:
