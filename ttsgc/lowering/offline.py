@@ -5412,10 +5412,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not e.is_ego and e.count == 1 and (e.head in loose or e.head.split()[-1] in loose) and
             not _placed_apart(placed_here, e) for e in r.entities):
         definite = True  # "Pickup ahead of me. Truck braked": the pickup, in note style
-    if bare and u.base == kind and kind in ("motorcycle", "cyclist", "truck", "bus") and [
-            e.head for e in r.entities if e.type == kind and not e.is_ego and e.count == 1] and all(
-            not _placed_apart(placed_here, e) for e in r.entities if e.type == kind and not e.is_ego) and \
-            sum(1 for e in r.entities if e.type == kind and not e.is_ego) == 1:
+    of_its_kind = [e for e in r.entities if e.type == kind and not e.is_ego]
+    if bare and u.base == kind and kind in ("motorcycle", "cyclist", "truck", "bus") and len(of_its_kind) == 1 and \
+            of_its_kind[0].count == 1 and not _placed_apart(placed_here, of_its_kind[0]):
         definite = True  # "reports motorcyclist ... darted into lane 2 ... M/C continued NB": the one of its kind,
         # named again by its kind in note style
     speaker_ego = next((e for e in r.entities if e.is_ego and (e.head in SPEAKERS | {"i'm"} or e.aliases & SPEAKERS)),
