@@ -13464,3 +13464,131 @@ def test_kin_who_had_to_go_round_one_drives_the_teller():
 def test_the_one_who_waited_while_others_went_then_acts():
     assert ("car", "turn_left", "ego") in agents("Today she waited patiently while two elderly ladies crossed at the "
                                                  "zebra, then turned left.")
+
+
+def test_a_weight_in_tonnes_after_a_space_counts_no_trucks():
+    assert agents("Ego truck (40 t HGV), right lane of a three-lane motorway. A car in the middle lane, just ahead "
+                  "of the truck, cuts in to the right in front of it.") == [
+        ("car", "change_lane_to_right", "front_left"), ("truck", "go_straight", "ego")]
+
+
+def test_those_waiting_in_the_queue_behind_the_ego_are_behind_it():
+    assert agents("Ego stopped at a red light with two cars waiting in the queue behind it.") == [
+        ("car", "stop", "back"), ("car", "stop", "back"), ("car", "stop", "ego")]
+
+
+def test_both_after_two_placed_names_them_not_a_place_ahead_of_one():
+    assert agents("Double cut-in at 90 km/h: POV1 from the left lane ahead and POV2 from the right lane ahead both "
+                  "merge into the ego lane in front of the ego.") == [
+        ("car", "change_lane_to_left", "front_right"), ("car", "change_lane_to_right", "front_left"),
+        ("car", "go_straight", "ego")]
+
+
+def test_the_lane_the_test_vehicle_turns_into_is_its_destination():
+    assert ("car", "stop", "at_the_destination") in agents(
+        "T-junction: VUT turns right into the main road. A van is stopped on the main road just past the junction, "
+        "in the lane the VUT turns into, and a car on the main road coming from the left drives straight on.")
+
+
+def test_a_bracketed_make_after_with_keeps_the_state_its_own():
+    assert agents("V1 (Toyota Prius, private hire) was stationary in a queue at the traffic lights, with V2 "
+                  "(Vauxhall Astra) stationary directly in front of it.") == [
+        ("car", "stop", "ego"), ("car", "stop", "front")]
+
+
+def test_the_two_vehicles_after_two_are_told_of_are_those_two():
+    assert agents("Our policyholder was moving into the right-hand lane when the other party's pickup, travelling "
+                  "level with her in that lane, accelerated instead of letting her in, and the two vehicles "
+                  "touched.") == [("car", "change_lane_to_right", "ego"), ("car", "go_straight", "right")]
+
+
+def test_a_side_of_another_after_a_participle_places_the_participles_subject():
+    assert agents("The appellant's taxi was stopped at the give-way line of a T-junction when a scooter, travelling "
+                  "along the main road from the taxi's right, collided with a lorry coming from the taxi's "
+                  "left.") == [("car", "stop", "ego"), ("motorcycle", "go_straight", "road_of_right_turn"),
+                               ("truck", "go_straight", "road_of_left_turn")]
+
+
+def test_an_adjacent_lane_keyed_on_a_line_is_no_lane_of_the_ego():
+    assert agents("SV: 100 km/h\nAdjacent left lane: empty\nAdjacent right lane: car 20 m behind the SV, "
+                  "100 km/h") == [("car", "go_straight", "back_right"), ("car", "go_straight", "ego")]
+
+
+def test_a_driver_standing_at_a_stop_sign_is_held_there_not_on_foot():
+    assert agents("Today I am standing at a stop sign and from the left street comes a car and turns right directly "
+                  "in front of my nose, without looking.") == [("car", "stop", "ego"),
+                                                               ("car", "turn_right", "road_of_left_turn")]
+
+
+def test_a_simile_of_standing_still_is_no_halt_and_a_learners_status_no_car():
+    assert agents("My son (learner) was driving us home and we were doing about 40 in the left lane of the dual "
+                  "carriageway when a Porsche came flying up the right lane from behind and went past like we "
+                  "were standing still.") == [("car", "go_straight", "back_right"), ("car", "go_straight", "ego")]
+
+
+def test_whose_turn_it_was_is_no_manoeuvre():
+    assert agents("At the 4-way stop by my house I was stopped and it was clearly my turn, then the guy across "
+                  "from me just went straight through anyway.") == [("car", "go_straight", "road_of_straight"),
+                                                                     ("car", "stop", "ego")]
+
+
+def test_the_route_a_teller_drives_is_a_bus_where_a_bus_is_spoken_of():
+    assert agents("Driving the 42 down Queen St this morning and a moped in front of me suddenly braked to a halt "
+                  "in the middle of the road. Nearly had him under the bus.") == [
+        ("bus", "go_straight", "ego"), ("motorcycle", "stop", "front")]
+    assert ("car", "go_straight", "ego") in agents("Driving the 405 south this morning and a moped in front of me "
+                                                   "braked to a halt.")
+
+
+def test_a_box_truck_the_teller_works_in_is_the_ego():
+    assert ("truck", "turn_right", "ego") in agents("Doing my last drop in the box truck, turning right onto Oak, "
+                                                    "and there's two guys crossing Oak in the crosswalk.")
+
+
+def test_one_named_by_the_vehicle_they_ride_is_that_vehicle():
+    assert agents("On the flyover one motorbike fellow came from the lane on my left side and suddenly cut in "
+                  "front of my cab.") == [("car", "go_straight", "ego"), ("motorcycle", "change_lane_to_right", "left")]
+
+
+def test_a_bus_stop_of_the_bus_waited_behind_puts_no_teller_on_foot():
+    assert agents("I was waiting behind a bus which was stopped at the bus stop, and I could not pass it because "
+                  "a truck was coming in the other sense.") == [("bus", "stop", "front"), ("car", "stop", "ego"),
+                                                                ("truck", "go_straight", "front_left")]
+
+
+def test_right_across_the_road_is_how_far_not_a_side():
+    assert agents("Came round the bend and there was a fire engine right across the road in front of me, blocking "
+                  "my way completely.") == [("car", "go_straight", "ego"), ("firetruck", "block_the_ego", "front")]
+
+
+def test_an_apposition_with_who_drove_it_and_a_kind_of_place_named_by_a_plural():
+    assert agents("The subject vehicle, an HGV driven by the defendant, turned left into the entrance of a "
+                  "builders' merchant on Station Road. The deceased was cycling alongside the HGV on its left at the "
+                  "time.") == [("cyclist", "go_straight", "left"), ("truck", "turn_left", "ego")]
+
+
+def test_a_fleet_logs_one_numbered_unit_is_the_ego():
+    assert agents("LDW + FCW event. Vehicle 22 (HGV) drifted out of its lane into the left-hand lane at 88 km/h "
+                  "without indicating. A broken-down car was stopped in the left-hand lane 40 m ahead of the HGV at "
+                  "the time.") == [("car", "stop", "front_left"), ("truck", "change_lane_to_left", "ego")]
+    assert ("bus", "go_straight", "ego") in agents("Near-miss logged - Bus 88, Route 12. A pedestrian stepped off "
+                                                   "the kerb from the left into the path of the bus mid-block.")
+
+
+def test_the_vehicle_is_the_only_one_there_whatever_its_kind():
+    assert agents("The ego bus drives on. A pedestrian walks across 4 m in front of the vehicle.") == [
+        ("bus", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_a_lane_keyed_bullet_list_places_each_by_the_egos_numbered_lane():
+    assert agents("Dense highway, 4 lanes numbered from the left; ego in lane 2.\n"
+                  "- Lane 1: car cruising level with the ego\n- Lane 2: truck cruising ahead of the ego\n"
+                  "- Lane 3: bus cruising behind the ego\n- Lane 3: car ahead of the ego, changes into lane 2") == [
+        ("bus", "go_straight", "back_right"), ("car", "change_lane_to_left", "front_right"),
+        ("car", "go_straight", "ego"), ("car", "go_straight", "left"), ("truck", "go_straight", "front")]
+
+
+def test_a_road_feature_said_only_in_a_title_gives_way_to_the_body():
+    r = road("scenario: ped_crossing_night\nego: VUT, 30 km/h, straight\nvru: 1x child pedestrian, crossing from "
+             "the left between parked cars\nroad: 1 lane, no crosswalk\nweather: clear, night")
+    assert "crosswalk" in r.without_objects and "crosswalk" not in r.required_objects

@@ -887,7 +887,7 @@ ADVICE_KEY = re.compile(r"(?:^|(?<=[.;!?]))[ \t]*(?:coach|coachable|coaching|rec
 NEXT_KEY = re.compile(r"(?<=[.;])[ \t]+(?=(?!(?:In )?Lanes?\b)[A-Z][A-Za-z0-9/-]*(?: [A-Za-z0-9/-]+){0,2}:[ \t])|\n")
 
 
-LANE_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*(?:the\s+)?(lanes?\s+\d(?:\s+and\s+\d)?|(?:(?:left|right|middle|centre|"
+LANE_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*(?:[-*•][ \t]+)?(?:the\s+)?(lanes?\s+\d(?:\s+and\s+\d)?|(?:(?:left|right|middle|centre|"
                       r"center|inside|outside|fast|slow|overtaking|ego's|ego|same|nearside|offside)\s+lane)|"
                       r"(?:(?:left|right|hard)\s+)?shoulder)((?:\s+(?:ahead|behind))?)[ \t]*:", re.I | re.M)
 MOVING_FROM_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*([A-Z][a-z]+ing)\s+(from the (?:left|right))[ \t]*:"
@@ -1054,7 +1054,8 @@ def _speakers(lines: list[str]) -> set[str]:
         if m and re.search(r"[a-z]{2,}.*[ .!?,\u2014-]", m.group(2)):
             keys[m.group(1).strip()] = keys.get(m.group(1).strip(), 0) + 1
     plain = {key for key in keys if not _names_agent(key) and key.lower() not in PLAIN_KEYS | ORACLE_KEYS and
-             key.lower().split()[0] not in TITLE_KEYS | {"stage", "step", "phase", "expected", "acceptance"}}
+             key.lower().split()[0] not in TITLE_KEYS | {"stage", "step", "phase", "expected", "acceptance"} and
+             not re.match(r"(?:[-*\u2022]\s*)?(?:in|on)\s", key, re.I)}  # ("In lane 3:" twice: a place, no speaker)
     repeated = {key for key in plain if keys[key] >= 2}
     return repeated | {key for key in plain if any(  # "HOST B: Together?" once, beside "HOST A" who speaks often
         key.split()[0] == other.split()[0] or key.isupper() and other.isupper() for other in repeated)}
@@ -1867,10 +1868,20 @@ def tokenize(text: str) -> list[Token]:
                   r"(from [a-z' ]{1,40}):", r"\1\2:", text, flags=re.M)  # "Coming from opposite: two car": a key of
     # where those listed after it come from, as "From the left: a cyclist"
     text = re.sub(r"\bnot (?:even )?once\b", "never", text, flags=re.I)  # "not once looking our way": no "once" link
+    text = re.sub(r"\b(son|daughter|wife|husband|partner|brother|sister|mum|mom|dad|friend|kid|boy|girl)\s*\("
+                  r"(?:a |the )?learner(?: driver)?\)", r"\1", text)  # "my son (learner) was driving": who he is,
+    # no learner car of his own
+    text = re.sub(r"\b(it was|it's|it is)( clearly| definitely| obviously)? (?:my|our|your|his|her|their) "
+                  r"turn\b(?! (?:left|right|into|onto|off))", r"\1\2 fine", text)  # "it was clearly my turn" (to go at
+    # a four-way stop): whose go it was, no manoeuvre
+    text = re.sub(r",? (?:like|as if|as though) (?:we|i|you|he|she|they|it|the ego)(?:'d| had)? (?:were|was|are|is|"
+                  r"been) (?:standing still|stood still|parked|stationary|stopped|not moving|going backwards?)\b",
+                  "", text)  # "went past like we were standing still": how fast it went, no halt of ours
     text = re.sub(r"\bcust\.?(?=\s)", "customer", text)  # a job card's "Cust. reports car was stopped"
-    text = re.sub(r"\b(the (?:road|street|side road|lane|one)) (?:that |which )?(?:i|we|you|he|she|they|the car|"
-                  r"the ego)(?:'re|'m| are| am| is| was| were)? (?:(?:going|goes|go|turning (?:left |right )?|turns? "
-                  r"(?:left |right )?|turned (?:left |right )?|heading|heads) (?:into|onto)|(?:joining|joins|entering|"
+    text = re.sub(r"\b(the (?:road|street|side road|lane)) (?:that |which )?(?:i|we|you|he|she|they|the car|"
+                  r"the ego(?: vehicle| car)?|the (?:vut|sut|av|sv|host vehicle|subject vehicle|test vehicle))"
+                  r"(?:'re|'m| are| am| is| was| were)? (?:(?:going|goes|go|turning(?: left| right)?|turns?"
+                  r"(?: left| right)?|turned(?: left| right)?|heading|heads) (?:into|onto)|(?:joining|joins|entering|"
                   r"enters)(?: into| onto)?)\b",
                   r"\1 it turns into", text)  # "in the road you're going into", "crossing the road she turns
     # right into", "in the road the car is joining": where the ego goes, said by a relative clause
@@ -1962,6 +1973,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(vehicle|car|agent|actor|road user|party|vru|target|pov|sv|ego|npc|adversary|hero)"
                   r" \((?:an? |the )?([a-z ]{2,30})"
                   r"((?:, [^()]*)?)\)", r"\1 , a \2 \3 ,", text)  # "third-party vehicle (silver hatchback)": what it is
+    text = re.sub(r"\b(witness(?:es)?) (?:w ?)?\d\b", r"\1", text)  # "Witness W1 states": a statement's number
     text = re.sub(r"\b(?:vehicle|veh|unit) (\d)\b(?![.,]\d)(?! (?:km|mph|kph|m\b|metres|meters|seconds|s\b|lanes?))",
                   r"v\1", text)  # "vehicle 1 (the AV)", "Unit 2": police-report labels, as V1 and V2
     text = re.sub(r"\b(npc|actor|agent|target|obj|object|adversary|vru|ped|car|truck|bus|bike|veh|pov|sv|tv|"

@@ -250,11 +250,19 @@ ROUTE_NUMBER = re.compile(r"\b([Tt])he (\d{2,3}[a-z]?) (?=(?:turned|pulled|stopp
                           r"set off|swung|cut|overtook|ran|sailed|flew|sped)\b)")
 
 
+ROUTE_DRIVEN = re.compile(r"\b(driving|drove|drive|drives|driven)\s+the\s+(\d{1,3}[a-z]?)\b(?![\s-]*(?:mph|km|kph|"
+                          r"miles?|m\b|metres?|meters?|feet|ft|yards?|%|am\b|pm\b|tonnes?|tons?|lanes?|[:.]\d))", re.I)
+
+
 def _route_numbers(text: str) -> str:
     """'The 23 turned left out of Park Road and pulled up for us': a service named by its number, doing what
-    vehicles do, is a bus (one its passengers tell of, 'our driver', is read with them)."""
+    vehicles do, is a bus (one its passengers tell of, 'our driver', is read with them); so is the one a teller
+    drives in a text that speaks of a bus ('Driving the 42 down Queen St ... under the bus'; 'driving the 405' with
+    no bus is a freeway)."""
     if ROUTE_TOLD.search(text):
         return text
+    if re.search(r"\b(?:bus|buses|passengers?)\b", text, re.I):
+        text = ROUTE_DRIVEN.sub(r"\1 the number \2 bus", text)
     return ROUTE_NUMBER.sub(lambda m: f"{m.group(1)}he number {m.group(2)} bus ", text)
 
 
@@ -959,7 +967,7 @@ AGE = re.compile(rf"\b{AGE_NUMBER}(?:[\s-]+(?:years?|yrs?)[\s-]+old(?P<noun>s)?|
 
 MEASURE = re.compile(r"\b\d+(?:\.\d+)?-(?:tonnes?|tons?|tonner|t|foot|feet|ft|metres?|meters?|m|seaters?|axles?|"
                      r"doors?|wheeled|passengers?|cylinders?|litres?|liters?)\b(?=\s+[a-z])|"
-                     r"\b\d+(?:\.\d+)?\s+(?:tonnes?|tons?|tonner|seaters?|axles?)\b(?=\s+[a-z])|"
+                     r"\b\d+(?:\.\d+)?\s+(?:tonnes?|tons?|tonner|t|seaters?|axles?)\b(?=\s+[a-z])|"
                      r"\b\d+\s+wheelers?\b(?=\s+(?:trucks?|lorry|lorries|rigs?|semis?|trailers?)\b)", re.I)
 # ('a 7.5 tonne lorry': a weight said apart from its number is no distance, as '10 metres ahead' is; 'an 18
 # wheeler was broken down' names the truck itself)
@@ -1023,8 +1031,9 @@ def _abbreviated_bodies(text: str) -> str:
     return re.sub(r"\bsport[- ]utility vehicle(s?)\b", r"SUV\1", text, flags=re.I)
 
 
-NUMBERED_VEHICLE = re.compile(r"(?:^|(?<=[.:;!?\n])\s*)(car|vehicle|av|robotaxi|shuttle|van|bus|truck)\s+#?(\d{1,5})\b"
-                              + NOT_A_QUANTITY + r"(?=\s+[a-z])", re.I)
+NUMBERED_VEHICLE = re.compile(r"(?:^|(?<=[.:;!?\n])\s*|(?<=\s[-–—])\s*)(car|vehicle|av|robotaxi|shuttle|van|bus|truck|"
+                              r"unit)\s+#?(\d{1,5})\b" + NOT_A_QUANTITY + r"(?=\s+[a-z]|\s*\(|,)", re.I)
+# ("Vehicle 22 (HGV) drifted", "Near-miss logged - Bus 88, Route 12.")
 ANY_NUMBERED = re.compile(r"\b(?:" + FLEET_NOUNS + r"|av|robotaxi|shuttle|v|veh)\s*#?\s*(\d{1,5})\b" + NOT_A_QUANTITY,
                           re.I)
 

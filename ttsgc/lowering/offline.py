@@ -535,9 +535,60 @@ def _units(tokens: list[Token]) -> list[Unit]:
                    _at_an_end_of_the_group, _from_one_lane_into_another, _indicators_are_no_lights,
                    _relations_on_the_pavement, _cut_in_named_as_a_case, _lane_change_to_a_side_said_after,
                    _the_path_of_another, _swerved_into_a_road, _pulled_in_or_out, _one_more_of_the_kind,
-                   _a_lane_then_whom_it_is_behind, _paint_of_one, _a_label_then_what_it_is, _a_queue_run_into):
+                   _a_lane_then_whom_it_is_behind, _paint_of_one, _a_label_then_what_it_is, _a_queue_run_into,
+                   _one_named_by_what_they_ride, _words_said_of_a_noun):
         units = reread(units)  # a unit read again by its neighbours, in this order
     return units
+
+
+ACROSS_WAYS = {"across", "over", "through", "outside", "beside", "alongside"}
+
+
+def _words_said_of_a_noun(units: list[Unit]) -> list[Unit]:
+    """'a fire engine right across the road', 'parked right outside': 'right' before a preposition after the one
+    placed is how far, no side ('turned right across the road' keeps its turn); 'driven by' after a noun says
+    who drove it, no verb; a plural's possessive after 'a' names a kind of place."""
+    for k, u in enumerate(units[1:-1], 1):
+        if u.category == "actions" and [t.word for t in u.tokens] in (["driven", "by"], ["ridden", "by"]) and \
+                units[k - 1].category == "agents" and units[k + 1].word not in ("me", "us", "i", "we", "myself"):
+            units[k] = Unit(u.start, u.end, "word", "driven", u.tokens)  # "an HGV driven by the defendant": who
+            # was at its wheel, said of the noun, no verb of the clause, and no one of the scene ("a sedan driven by
+            # U": not 'you')
+            j = k + 1 + (k + 1 < len(units) and units[k + 1].word in DEFINITE | INDEFINITE | OWNERS)
+            if j < len(units) and (units[j].category == "word" or units[j].category == "agents" and
+                                   units[j].meaning in ("ego", "pedestrian", "none")):
+                units[j] = Unit(units[j].start, units[j].end, "word", "driver", units[j].tokens)
+        if u.category == "agents" and u.tokens[-1].plural and u.tokens[-1].possessive and \
+                units[k - 1].word in ("a", "an") and units[k + 1].category == "word":
+            units[k] = Unit(u.start, u.end, "word", u.word, u.tokens)  # "a builders' merchant", "a children's
+            # playground": the kind of place, nobody in it
+        if u.category == "positions" and [t.word for t in u.tokens] == ["right"] and \
+                units[k + 1].word in ACROSS_WAYS and (units[k - 1].category == "agents" or units[k - 1].word in (
+                    "was", "were", "is", "are", "stood", "sat", "parked", "stopped", "stationary")):
+            units[k] = Unit(u.start, u.end, "word", "just", u.tokens)
+    return units
+
+
+RIDERS_NAMES = {"guy", "fellow", "fella", "man", "lad", "dude", "bloke", "chap", "wala", "walla", "wallah", "uncle",
+                "bhaiya", "woman", "lady", "boy", "kid"}
+RIDDEN_TYPES = {"car", "truck", "bus", "motorcycle", "cyclist"}
+
+
+def _one_named_by_what_they_ride(units: list[Unit]) -> list[Unit]:
+    """'one motorbike fellow', 'a scooter guy', 'the auto wala': one named by the vehicle before them is that
+    vehicle's rider or driver, the vehicle on the road (not 'a police man', on foot)."""
+    out: list[Unit] = []
+    for u in units:
+        last = out[-1] if len(out) > 1 else None
+        counted = last is not None and (out[-2].word in DEFINITE | INDEFINITE or out[-2].category == "numbers")
+        if counted and u.category == "agents" and u.base in RIDERS_NAMES and last.category == "agents" and \
+                last.meaning in RIDDEN_TYPES and not last.tokens[-1].plural and not last.tokens[-1].possessive and \
+                u.start == last.end and u.tokens[0].sentence == last.tokens[-1].sentence:  # (not "on the bike.
+            # Woman with her lads": bare, and a sentence apart)
+            out[-1] = Unit(last.start, u.end, "agents", last.meaning, last.tokens + u.tokens)
+            continue
+        out.append(u)
+    return out
 
 
 TURNED_INTO = {("petrol", "station"), ("gas", "station"), ("car", "park"), ("parking", "lot"), ("driveway",),
@@ -2381,16 +2432,25 @@ def _road(r: _Reader) -> RoadSpec:
     negated = False
     units = r.units
 
+    titled: set[str] = set()  # said only in a title ("scenario: ped_crossing_night"): the body's word wins
+    in_title = False
+
     def put(word: str, forbidden: bool) -> None:
         group = "signals" if word in V.SIGNALS else "objects"
         target = fields[f"{'without' if forbidden else 'required'}_{group}"]
         other = fields[f"{'required' if forbidden else 'without'}_{group}"]
+        if word in other and word in titled and not in_title:
+            other.remove(word)  # "scenario: ped_crossing_night ... road: 1 lane, no crosswalk": none there
+            titled.discard(word)
         if word not in target and word not in other:
             target.append(word)
+            if in_title:
+                titled.add(word)
 
     negated_in, removing = -1, False
     uncontrolled: list[list[str]] = []
     for k, u in enumerate(units):
+        in_title = u.tokens[0].title
         if negated and u.tokens[0].sentence != negated_in:
             negated = False  # "no crossing. Road: mid-block": a denial ends with its sentence
         if u.category == "actions" and len(u.tokens) > 2:
@@ -5472,6 +5532,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             not any(not e.is_ego and e.type == kind for e in r.entities):
         return NounPhrase(ego_now, head, first)  # "Subject: a city bus in the centre lane ... Bus braked": the ego,
         # named again by its type, as a note does
+    if definite and words <= {"the"} and u.base == "vehicle" and ego_now is not None and ego_now.type != "car" and \
+            count is None and not plural and not existential and not any(
+                not e.is_ego and e.type in V.EGO_TYPES for e in r.entities):
+        return NounPhrase(ego_now, head, first)  # "the ego minibus ... a pedestrian walked across in front of the
+        # vehicle": the only vehicle there is, whatever its kind
     if ego_now is not None and u.base == "vehicle" and head > 0 and units[head - 1].word in DRIVER_CONTROLS and \
             count is None and not plural and not label and not any(not e.is_ego and e.type == "car" for e in r.entities):
         return NounPhrase(ego_now, head, head)  # "operator kept vehicle stopped": the one at the controls drives it
@@ -5535,6 +5600,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     counted = _counted_again(r, kind, u.base, count) if definite and count is not None and count > 1 else None
     if counted:  # "Two lads dash onto the crossing ... the two lads run out": the same two
         return NounPhrase(counted[0], head, first, plural=True, group=counted if len(counted) > 1 else [])
+    if definite and count == 2 and u.base in ("vehicle", "car", "motor") and units[first].word == "the" and \
+            units[first + 1].category in ("numbers", "number"):  # (not "two of the cars behind me": others)
+        pair = _existing(r, kind, True, True, False, True, recent, u.base)
+        if pair:  # "... and the two vehicles touched": the two just told of, the ego one of them, as "both"
+            return NounPhrase(pair[0], head, first, plural=True, group=pair if len(pair) > 1 else [])
     if definite and count is None and r.owned and u.base == "vehicle" and not plural and ego_now is not None and \
             (head + 1 == len(units) or units[head + 1].category != "positions"):
         return NounPhrase(ego_now, head, first)  # "I own a GMC Terrain ... then the vehicle braked by itself"
@@ -7468,7 +7538,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         possessor = next((np for np in phrases if np.index == i - 1 and np.entity is not None and
                           not np.entity.is_ego), None) if u.category == "positions" and u.meaning in (
             "side_left", "side_right", "ahead", "behind") and i > 0 and units[i - 1].tokens[-1].possessive else None
-        if possessor is not None and subject and possessor.entity not in subject:
+        last_verb = max([v for v in main_verbs if v < i] + [v for v in participles if v < i], default=None)
+        placed = participles[last_verb] if possessor is not None and last_verb in participles and not any(
+            e in subject for e in participles[last_verb]) else subject  # ("collided with a lorry coming from the
+        # taxi's left": the lorry's side, not the subject's)
+        if possessor is not None and placed and possessor.entity not in placed:
             came = possessor.first > 0 and units[possessor.first - 1].word == "from" and \
                 u.meaning in ("side_left", "side_right")  # "approaches from the car's right": from that side
             side_road = possessor.first > 2 and u.meaning in ("side_left", "side_right") and \
@@ -7476,7 +7550,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     ["road", "on", "the"], ["street", "on", "the"], ["road", "to", "the"]) or possessor.first > 1 and \
                 [x.word for x in units[possessor.first - 2:possessor.first]] in (["road", "on"], ["street", "on"],
                                                                                  ["road", "to"])
-            for e in subject:  # "children walk on the car's left": the car is where they are placed from
+            for e in placed:  # "children walk on the car's left": the car is where they are placed from
                 if e.relative_to is None and not e.is_ego:
                     e.relative_to = possessor.entity  # ("comes from the road on car X's left": out of that road)
                     e.relative_how = "road_" + u.meaning[5:] if side_road else \
@@ -7544,8 +7618,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                     u.start > 0 and r.tokens[u.start - 1].word in ("my", "our", "its"))
                 lane_after = i + 1 < len(units) and units[i + 1].category == "word" and \
                     units[i + 1].word in ("lane", "lanes")  # "on rightmost lane": the word after its side
+                beside_it = {t.word for t in u.tokens} & {"adjacent", "next", "neighbouring", "neighboring"}
                 if u.meaning in ("side_left", "side_right") and ({t.word for t in u.tokens} & LANE_WORDS or
-                                                                 lane_after) and not edge_after and not body_side:
+                                                                 lane_after) and not edge_after and not body_side \
+                        and not beside_it:  # ("Adjacent right lane: car 20 m behind the SV": the lane beside it)
                     e.features.add("in_a_side_lane")  # "I'm in the slow lane": the road has lanes beside it
                     e.features.add("in_lane_" + u.meaning[5:])  # which side: a move to the middle is away from it
                 later = reference is not None and bool(reference.features & {"ahead", "behind", "level"}) and (
@@ -9727,6 +9803,12 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     if k >= 3 and units[k].category == "comma" and units[k - 1].base in ROLE_NAMES and \
             units[k - 2].category == "comma":
         k -= 3  # "a principal other vehicle (POV) stationary in its lane": past the bracketed role
+    elif k >= 3 and units[k].category == "comma" and units[k - 1].category == "agents":
+        opening = next((j for j in range(k - 2, max(0, k - 5), -1) if units[j].category == "comma"), None)
+        outer = next((p for p in phrases if opening is not None and p.index == opening - 1), None)
+        if outer is not None and outer.entity is not None and outer.first > 0 and \
+                units[outer.first - 1].word == "with":
+            k = outer.index  # "with V2 (Vauxhall Astra) stationary in front of it": past the bracketed make
     worn = next((j for j in range(k - 1, max(0, k - 6), -1) if units[j].word == "in" and
                  units[j + 1].word in ("a", "an", "his", "her", "their", "dark", "black", "white") and
                  all(x.category in ("word", "numbers", "behaviours") for x in units[j + 1:k + 1])), None)
@@ -9771,6 +9853,8 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
                 any(x.category == "comma" for x in units[before[-1].index + 1:i])):
         before.pop()  # "with a truck alongside it in the right lane": the truck's lane, not its; "a pickup across
         # from it, on the opposite road,": the pickup's road
+    main_verbs = [v for v in main_verbs if not _queue_as_a_noun(units, v)]  # "two cars waiting in the queue
+    # behind it": the place of those waiting, not of the one the clause began with
     last_verb = max([v for v in main_verbs if v < i] + [v for v in (participles or {}) if v < i], default=None)
     if last_verb is not None and participles and last_verb in participles:
         return participles[last_verb]  # "a van stopped beside it in the right lane": the van's
@@ -9806,6 +9890,11 @@ def _modifier_owner(units, i, phrases, subject, main_verbs, participles=None) ->
         return made.group or [made.entity]  # "a van double-parked on the right forces the ego to pass it in the
         # oncoming lane": the lane is where the one made to pass goes
     return subject
+
+
+def _queue_as_a_noun(units, v) -> bool:
+    """'in the queue', 'in a jam': a stop said by the place one stands in, no verb of its own."""
+    return units[v].tokens[0].base in QUEUE_NOUNS and v > 0 and units[v - 1].word in DEFINITE | INDEFINITE
 
 
 SWERVE_ADVERBS = {"right", "left", "across", "over", "out", "in", "sharply", "suddenly", "just", "straight"}
@@ -9890,8 +9979,8 @@ def _let_in_place(units, i, phrases, recent) -> list[Entity]:
 
 def _reference_after(units, i, phrases) -> Entity | None:
     np = next((p for p in phrases if p.first in (i + 1, i + 2) or p.index == i + 1), None)
-    if np is None:
-        return None
+    if np is None or units[np.first].word in ("both", "all", "each"):
+        return None  # ("POV1 from the left lane ahead and POV2 from the right lane ahead both merge": those said)
     between = units[i + 1: np.first] + units[np.first:np.index]
     if all((u.category == "word" and (u.word in ("of", "the", "a", "an", "to", "that", "this")
                                       or u.word not in lexicon().function_words))
@@ -10726,7 +10815,8 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
 AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
                 "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked",
                 "right lane", "left lane", "middle lane", "inside lane", "outside lane", "fast lane", "slow lane",
-                "the lane", "moving off", "moved off", "pulling away", "pulled away", "pulling off", "pulled off"}
+                "the lane", "moving off", "moved off", "pulling away", "pulled away", "pulling off", "pulled off",
+                "stop sign", "stop line", "red light", "give way"}  # ("I am standing at a stop sign": a driver held)
 # ("I stood still in the right lane": standing in traffic, at the wheel, not "Brook Lane"; "moving off from the
 # bus stop")
 FIRST_PERSON = {"i", "me", "my", "i'm"}
@@ -10790,7 +10880,8 @@ def _what_i_was(tokens: list[Token], k: int, start: int | None = None) -> set[st
     start = k + 1 if start is None else start
     for t in tokens[start:start + 12]:
         if t.sentence != tokens[k].sentence or t.word in ("when", "while", "and", "as", "but", ",", "saw", "then",
-                                                         "for") and not (  # ("I stopped for a lady on the zebra": hers)
+                                                         "for", "which", "who") and not (  # ("I stopped for a lady
+            # on the zebra": hers; "waiting behind a bus which was stopped at the bus stop": the bus's stop)
                 t.word == "and" and t.index + 1 < len(tokens) and tokens[t.index + 1].word == "was"):
             break  # ("I use a mobility scooter and was halfway over the zebra": both said of me)
         out.append(t.word)
@@ -12381,7 +12472,8 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
                   ("the", "shipper"), ("the", "receiver"), ("my", "reefer"), ("in", "the", "truck"), ("tonner",),
                   ("running", "empty"), ("trailer", "empty"), ("loaded", "wagon"), ("in", "the", "lorry"),
                   ("my", "lorry"), ("in", "the", "hgv"), ("my", "hgv"), ("other", "wagons"), ("off", "our", "yard"),
-                  ("kerb", "mirror"), ("close", "proximity", "mirror"), ("trailer", "wheels"))
+                  ("kerb", "mirror"), ("close", "proximity", "mirror"), ("trailer", "wheels"),
+                  ("in", "the", "box", "truck"), ("my", "box", "truck"), ("in", "the", "semi"), ("my", "semi"))
 # (a unit, a wagon, a rigid, a Pete: a trucker's own truck; not "struck the unit" of a fleet's van)
 
 
