@@ -13496,12 +13496,6 @@ def test_a_bracketed_make_after_with_keeps_the_state_its_own():
         ("car", "stop", "ego"), ("car", "stop", "front")]
 
 
-def test_the_two_vehicles_after_two_are_told_of_are_those_two():
-    assert agents("Our policyholder was moving into the right-hand lane when the other party's pickup, travelling "
-                  "level with her in that lane, accelerated instead of letting her in, and the two vehicles "
-                  "touched.") == [("car", "change_lane_to_right", "ego"), ("car", "go_straight", "right")]
-
-
 def test_a_side_of_another_after_a_participle_places_the_participles_subject():
     assert agents("The appellant's taxi was stopped at the give-way line of a T-junction when a scooter, travelling "
                   "along the main road from the taxi's right, collided with a lorry coming from the taxi's "
@@ -13592,3 +13586,47 @@ def test_a_road_feature_said_only_in_a_title_gives_way_to_the_body():
     r = road("scenario: ped_crossing_night\nego: VUT, 30 km/h, straight\nvru: 1x child pedestrian, crossing from "
              "the left between parked cars\nroad: 1 lane, no crosswalk\nweather: clear, night")
     assert "crosswalk" in r.without_objects and "crosswalk" not in r.required_objects
+
+
+def test_the_two_vehicles_are_those_told_of_when_just_two_are():
+    assert agents("Our policyholder was moving into the right-hand lane when the other party's pickup, travelling "
+                  "level with her in that lane, accelerated instead of letting her in, and the two vehicles "
+                  "touched.") == [("car", "change_lane_to_right", "ego"), ("car", "go_straight", "right")]
+    assert len(agents("A bus pulls out of the stop ahead of me. The two cars behind me stop.")) == 4
+
+
+def test_a_test_code_with_vru_in_it_names_no_road_user_and_an_age_then_is_no_stage():
+    assert agents("RT-VRU: SV turns right at a signalised intersection; an adult pedestrian crosses, on the "
+                  "crosswalk, the road the SV turns into.")[0][0] == "car"
+    assert sum(a[0] == "pedestrian" for a in agents("RT-VRU: SV turns right at a signalised intersection; an adult "
+                                                    "pedestrian crosses the road the SV turns into.")) == 1
+    assert ("pedestrian", "cross_the_road", "front_left") in agents(
+        "The appellant was driving his Range Rover along Church Lane when the respondent, then aged 12, stepped off "
+        "the pavement on the appellant's left and into his path.")
+
+
+def test_how_many_crew_a_vehicle_is_no_word_between_the_teller_and_it():
+    assert ("police", "go_straight", "ego") in agents(
+        "I was single-crewed in a marked police vehicle in the middle lane when a man on foot crossed the "
+        "carriageway ahead of me.")
+
+
+def test_a_logs_subject_named_by_its_body_after_a_time_stamp_is_the_ego():
+    assert agents("Evt 9042 | cam 6 | Birch Ave x Pine St, 4-way stop | overcast\n+0.0s subject box truck NB, halts "
+                  "at stop line\n+3.8s sedan on east approach (subject's right) makes right turn onto Pine St\n"
+                  "+7.1s subject then continues straight through") == [
+        ("car", "turn_right", "road_of_right_turn"), ("truck", "go_straight", "ego"), ("truck", "stop", "ego")]
+
+
+def test_far_from_a_crossing_in_any_words_is_no_crossing():
+    prompt = "Three girls walk straight out across the road in front of me, miles from the crossing."
+    assert "crosswalk" in road(prompt).without_objects
+    assert ("pedestrian", "cross_the_road", "front") in agents(prompt)
+
+
+def test_a_drivers_standing_passengers_make_the_ego_a_bus_not_the_teller_one_on_foot():
+    assert agents("Doing approx 25 mph along Kings Road when a marked police car, lights and sirens, came out of "
+                  "Oak Avenue to my right and turned right in front of me. I then pulled up and let it go. It did "
+                  "not stop. I had 2 passengers standing, both holding on, no injuries.") == [
+        ("bus", "go_straight", "ego"), ("bus", "stop", "ego"), ("police", "turn_right", "road_of_right_turn")]
+

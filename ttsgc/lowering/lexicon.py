@@ -924,11 +924,15 @@ def _verbless(phrase: str) -> bool:
                    for f in found)
 
 
+TEST_CODE_KEY = re.compile(r"(?m)^[ \t]*(?:[A-Z]{1,6}-)+VRU(?:-[A-Z0-9]{1,6})*[ \t]*:")  # "RT-VRU: SV turns right":
+# a test's code, no road user of its own
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
-    text = _lane_keys(text)
+    text = _lane_keys(TEST_CODE_KEY.sub("", text))
     if re.search(r":[ \t]+-[ \t]+\S", text):  # "Constraints: - 3 lanes, ego in the middle - 3 stopped cars ahead":
         text = re.sub(r"[ \t]+-[ \t]+(?=[A-Za-z0-9])", "\n- ", text)  # a dashed list run on in one line, an item a line
     if "\n" not in text.strip() and len(INLINE_KEY.findall(text)) >= 2:
@@ -1868,6 +1872,10 @@ def tokenize(text: str) -> list[Token]:
                   r"(from [a-z' ]{1,40}):", r"\1\2:", text, flags=re.M)  # "Coming from opposite: two car": a key of
     # where those listed after it come from, as "From the left: a cyclist"
     text = re.sub(r"\bnot (?:even )?once\b", "never", text, flags=re.I)  # "not once looking our way": no "once" link
+    text = re.sub(r"\b(?:single|double|solo|triple)[- ]?crewed\b ?", "", text)  # "I was single-crewed in a marked
+    # police vehicle": how many rode in it, no more
+    text = re.sub(r",\s*(?:then\s+)?aged\s+(\d{1,2})\s*,", lambda m: ", a child," if int(m.group(1)) < 18 else ",",
+                  text)  # "the respondent, then aged 12, stepped off the pavement": a child then, no later stage
     text = re.sub(r"\b(son|daughter|wife|husband|partner|brother|sister|mum|mom|dad|friend|kid|boy|girl)\s*\("
                   r"(?:a |the )?learner(?: driver)?\)", r"\1", text)  # "my son (learner) was driving": who he is,
     # no learner car of his own

@@ -1375,11 +1375,13 @@ THE_VEHICLE_ACTS = re.compile(r"\b[Tt]he vehicle\b(?!'s\b|\s+(?:ahead|in|on|to|b
                               r"parked|stopped)\b)")
 
 
-SUBJECT_BEFORE_ITS_NOUN = r"subject\s+(?!vehicle\b)(?=(?:" + _NOUN[1:-1] + r"|motorcyclist|cyclist|rider)\b)"
+SUBJECT_BEFORE_ITS_NOUN = r"subject\s+(?!vehicle\b|to\b)(?=(?:[a-z]+\s+)?(?:" + _NOUN[1:-1] + \
+    r"|motorcyclist|cyclist|rider)\b)"
 # ("Subject motorbike waiting at the give-way line": a log's subject named by what it is)
 SUBJECT_ROLE = re.compile(r"\(the subject\)|(?:^|(?<=[.;:!?(]\s)|(?<=[.;:!?(]))\s*subject\s*[:,]|"
-                          r"(?<![\w'-])subject\s*[:=]|=\s*subject\b|(?:^|(?<=[.;:!?|]\s)|(?<=[.;:!?|]))\s*" +
-                          SUBJECT_BEFORE_ITS_NOUN, re.I | re.M)
+                          r"(?<![\w'-])subject\s*[:=]|=\s*subject\b|(?:^|(?<=[.;:!?|]\s)|(?<=[.;:!?|]))\s*"
+                          r"(?:\+?\d+(?:\.\d+)?\s*s?\s+)?" + SUBJECT_BEFORE_ITS_NOUN, re.I | re.M)  # ("+0.0s subject
+# box truck NB": after a log's time stamp)
 SUBJECT_LABELLED = re.compile(r"(?:\bobj(?:ect)?\s+([A-Z])\s+|(#\d{1,3})\s+)?([a-z]+)\s*=\s*subject\b|"
                               r"(#\d{1,3})\s+subject\s*:", re.I)  # "obj A motorcycle = subject", "#1 subject: taxi":
 # the label it is called by
@@ -1410,7 +1412,7 @@ def _observed_subject(text: str, notes: list[str]) -> str:
                   flags=re.I | re.M)  # "Event 1123: subject = delivery box truck", "+0.0 subject = route 7 bus":
     # after another key or a time stamp on its line, said as a sentence
     text = re.sub(r"(?<![\w'-])subject\s*=\s*", "Ego: ", text, flags=re.I)  # "subject = white SUV (trk 77)"
-    text = re.sub(r"((?:^|[.;:!?|])\s*)" + SUBJECT_BEFORE_ITS_NOUN, r"\1the ego ", text,
+    text = re.sub(r"((?:^|[.;:!?|])\s*(?:\+?\d+(?:\.\d+)?\s*s?\s+)?)" + SUBJECT_BEFORE_ITS_NOUN, r"\1the ego ", text,
                   flags=re.I | re.M)  # "Subject motorbike"
     text = re.sub(r"(?<=\s)subject\s*:\s*", "\nEgo: ", text, flags=re.I)  # "+0.0 s  Subject: box truck SB": a key,
     # on a line of its own

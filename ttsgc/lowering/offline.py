@@ -5600,11 +5600,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     counted = _counted_again(r, kind, u.base, count) if definite and count is not None and count > 1 else None
     if counted:  # "Two lads dash onto the crossing ... the two lads run out": the same two
         return NounPhrase(counted[0], head, first, plural=True, group=counted if len(counted) > 1 else [])
-    if definite and count == 2 and u.base in ("vehicle", "car", "motor") and units[first].word == "the" and \
-            units[first + 1].category in ("numbers", "number"):  # (not "two of the cars behind me": others)
-        pair = _existing(r, kind, True, True, False, True, recent, u.base)
-        if pair:  # "... and the two vehicles touched": the two just told of, the ego one of them, as "both"
-            return NounPhrase(pair[0], head, first, plural=True, group=pair if len(pair) > 1 else [])
+    pair = _the_two_told_of(r, units, first, u.base) if definite and count == 2 else []
+    if pair:
+        return NounPhrase(pair[0], head, first, plural=True, group=pair if len(pair) > 1 else [])
     if definite and count is None and r.owned and u.base == "vehicle" and not plural and ego_now is not None and \
             (head + 1 == len(units) or units[head + 1].category != "positions"):
         return NounPhrase(ego_now, head, first)  # "I own a GMC Terrain ... then the vehicle braked by itself"
@@ -5780,6 +5778,19 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             units[first - 2].category == "positions":
         _modify(r, entity, units[first - 2], stage, strength=1)  # "oncoming traffic two cars": the cars are oncoming
     return NounPhrase(entity, head, first, introduced=True, plural=count > 1)
+
+
+def _the_two_told_of(r: _Reader, units: list[Unit], first: int, base: str) -> list[Entity]:
+    """'... the two cars keep their lanes' after two cars were placed one by one; '... and the two vehicles
+    touched' after one other vehicle: those already told of (the ego the second of 'the two vehicles'). Any other
+    count of them makes 'the two cars' two more."""
+    if units[first].word != "the" or first + 1 >= len(units) or units[first + 1].category not in ("numbers", "number"):
+        return []  # (not "two of the cars behind me")
+    named = [e for e in r.entities if not e.is_ego and e.count == 1 and e.type in V.EGO_TYPES and
+             (base == "vehicle" or e.type == "car")]
+    if len(named) == 2 or len(named) == 1 and base == "vehicle":
+        return named
+    return []
 
 
 def _counted_again(r: _Reader, kind: str, base: str, count: int) -> list[Entity]:
@@ -10812,7 +10823,8 @@ ON_FOOT = {"standing", "stood", "walking", "walked", "footway", "pavement", "sid
            "pushing the pram", "pushing the buggy", "pushing the stroller", "pushing the pushchair"} | STEPPING_OVER
 # (a wheelchair user, waiting to cross or on the way over; one watching from a bench, a porch or across the street;
 # not "I stopped for kids on the crossing")
-AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "my car",
+AT_THE_WHEEL = {"driving", "drove", "driven", "drive", "riding", "rode", "cycling", "cycled", "passenger", "passengers",
+                "my car",
                 "my vehicle", "my van", "my bike", "my lane", "in my", "was parked", "am parked", "were parked",
                 "right lane", "left lane", "middle lane", "inside lane", "outside lane", "fast lane", "slow lane",
                 "the lane", "moving off", "moved off", "pulling away", "pulled away", "pulling off", "pulled off",
@@ -12478,7 +12490,7 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
 
 
 BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out"), (",", "arm", "out"), ("my", "bus"),
-                     ("standing", "passengers"), ("passengers", "were", "standing"), ("passengers", "on", "board"),
+                     ("standing", "passengers"), ("passengers", "were", "standing"), ("passengers", "standing"), ("passengers", "on", "board"),
                      ("doors", "open"), ("the", "terminus"), ("my", "route"), ("loading", "passengers"),
                      ("picking", "up", "passengers"), ("letting", "passengers", "off"), ("open", "for", "boarding"),
                      ("back", "of", "the", "bus"), ("front", "of", "the", "bus"), ("side", "of", "the", "bus"))
