@@ -13630,3 +13630,81 @@ def test_a_drivers_standing_passengers_make_the_ego_a_bus_not_the_teller_one_on_
                   "not stop. I had 2 passengers standing, both holding on, no injuries.") == [
         ("bus", "go_straight", "ego"), ("bus", "stop", "ego"), ("police", "turn_right", "road_of_right_turn")]
 
+
+
+def test_a_first_impression_of_what_someone_was_is_no_denial_of_them():
+    assert ("pedestrian", "cross_the_road", "front") in agents(
+        "Middle o' the night, dark as a coal hole, an a guy in a black hoodie — thought it wis a deer at first — "
+        "steps oot in front o' me fae between parked motors.")
+
+
+def test_riders_named_bare_by_what_they_ride_are_a_vague_group():
+    assert agents("I stop for the stop line because traffic light don red. Small time, ambulance wey dey blow siren "
+                  "comot from the left road, turn right cross for front of my car. Nobody move, even okada men "
+                  "respect am that day.") == [("ambulance", "turn_right", "road_of_left_turn"), ("car", "stop", "ego")]
+
+
+def test_an_adult_male_riding_a_bike_is_its_rider():
+    assert agents("An adult male riding a mountain bike on the hard shoulder a short way ahead.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "front_right")]
+
+
+def test_a_street_named_by_a_colour_is_no_signal_and_a_left_hander_no_turn():
+    assert road("The ego drives on Green Lane.").required_signals == ()
+    assert "traffic_light" in road("The ego goes straight on green.").required_signals
+    assert ("car", "turn_left", "ego") not in agents(
+        "Round a left-hander you come up on two cyclists riding ahead of you, and there's a car coming towards you.")
+
+
+def test_a_drivers_comment_key_keeps_the_first_person_and_the_side_before_through():
+    assert agents("Event: Harsh Braking | 10:22:36 | Veh: Unit 40 | Signal: green | Spd 50 -> 0 km/h. Driver comment: "
+                  "I had a green, two fire engines on blue lights came out of the road on my right through their "
+                  "red. Braked hard and waited stopped till both were past.") == [
+        ("car", "stop", "ego"), ("firetruck", "go_straight", "road_of_right_turn"),
+        ("firetruck", "go_straight", "road_of_right_turn")]
+
+
+def test_a_vehicle_only_towed_after_the_collision_is_no_one_new():
+    assert not any(a[1:] == ("go_straight", "front") for a in agents(
+        "Client was waiting at a red light behind a city bus. A patrol car entered the intersection from client's "
+        "left on a red and hit the front of client's car. Vehicle was towed from the scene. We have requested the "
+        "police report."))
+
+
+def test_the_driver_of_a_route_number_drives_the_bus_its_passengers_ride():
+    assert ("bus", "stop", "ego") in agents(
+        "driver of the 9 came into the stop far too fast today, the front went up over the kerb on the right where a "
+        "guy was standing just in front of us. i was in the front seat and i actually screamed out loud")
+
+
+def test_a_clause_opening_on_up_ahead_then_names_its_subject():
+    assert agents("I'm cruising in the middle lane, and up ahead a FedEx semi is stopped dead in my lane with its "
+                  "hazards on.") == [("car", "go_straight", "ego"), ("truck", "stop", "front")]
+
+
+def test_a_vehicle_kept_in_a_yard_or_a_shop_is_no_part_of_the_scene():
+    assert agents("Rain hammered the windscreen as Mara eased the old Volvo towards the crossroads and let it roll "
+                  "to a stop at the line. A dark hatchback slid through from the road on her right, its wipers "
+                  "flailing, and was gone. Somewhere behind the houses a dog howled, and she thought of the two cars "
+                  "rusting in her father's yard. Then, with the road finally clear, she turned left.") == [
+        ("car", "go_straight", "road_of_right_turn"), ("car", "stop", "ego"), ("car", "turn_left", "ego")]
+    assert ("car", "stop", "front_left") in agents("A van was parked at the shop on my left.")
+
+
+def test_she_who_placed_another_in_the_sentence_before_is_named_again():
+    assert agents("Clip review #14 for the driving school channel. Our learner is in a red Corsa, approaching a "
+                  "signalised crossroads in the right-hand lane of two. A cyclist is riding straight on in the lane "
+                  "to her left, level with her. Watch - she turns right on the green arrow, perfectly.") == [
+        ("car", "turn_right", "ego"), ("cyclist", "go_straight", "left")]
+
+
+def test_who_a_vehicle_was_driven_by_is_no_one_on_the_road():
+    assert not any(a[0] == "pedestrian" for a in agents(
+        "The ego vehicle was changing from the right lane into the left lane. It was struck by a Mazda travelling "
+        "in the left lane behind it. The former was driven by an off-duty nurse."))
+
+
+def test_records_pasted_on_one_line_with_slashes_are_read_as_lines():
+    assert agents("LEAD_BRAKE_01 / SUT: sedan, centre lane, lane keep, v=60 km/h / POV: lorry, in SUT lane, gap 40 m, "
+                  "brakes to standstill / road: highway 3 lanes") == [("car", "go_straight", "ego"),
+                                                                       ("truck", "stop", "front")]

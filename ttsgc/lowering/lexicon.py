@@ -598,7 +598,10 @@ THIRD_PARTY_KEYS = {"third party vehicle", "third party", "other party vehicle",
 # a claim form's fields for the claimant's own vehicle and the other party's, the latter told of in the account
 FORM_ACCOUNT_KEYS = {"describe what happened", "what happened", "description of incident", "description of accident",
                      "details of incident", "details of accident", "how did it happen", "incident description",
-                     "accident description", "circumstances", "account", "statement", "your account"}
+                     "accident description", "circumstances", "account", "statement", "your account",
+                     "driver comment", "driver comments", "driver statement", "driver's comment", "driver's statement",
+                     "driver remarks", "driver notes", "driver note", "driver report", "driver account", "comment",
+                     "comments", "remarks"}  # ("Driver comment: I had a green": what the ego's driver told)
 ACCOUNT_KEYS = {"summary", "report"}  # a form's field that tells what happened ("Summary: The HGV overtook me
 # ..."): the scene, not its title, when told by the one it happened to (not an auditor's "we")
 PLAIN_KEYS = {"light", "lighting", "time", "time of day", "conditions", "condition", "environment", "weather",
@@ -784,12 +787,15 @@ TITLE_MARK = re.compile(r"\s[-\u2013\u2014]\s|[\"\u201c\u201d\[]")  # "Bus Caree
 def _heading_line(lines: list[str]) -> bool:
     """A first line with no full stop that names the piece ('Ambulance Sim - Shift 2, Call 4', 'LEVEL 3 -
     "GREEN MEANS GO"') over a blank line, or marked as a title (a spaced dash, quotes, a tag in square
-    brackets) over prose: the piece's title, read for the road and the weather only."""
+    brackets) over prose, or a case's identifier ('LEAD_BRAKE_01'): the piece's title, read for the road and the
+    weather only."""
     first = lines[0]
     if first.rstrip().endswith((".", "!", "?")) or len(first.split()) > 12 or len(lines) < 2:
         return False
     if len(lines) > 2 and not lines[1].strip():
         return True
+    if re.fullmatch(r"\s*[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)+\s*", first):
+        return True  # "LEAD_BRAKE_01", "unprot_left_02": a case's identifier over its lines
     return TITLE_MARK.search(first) is not None and lines[1].rstrip().endswith((".", "!", "?"))
 COLUMNS = {  # a table's header words, by what the cells under them say
     "actor": {"actor", "agent", "id", "name", "vehicle", "object", "entity", "participant", "who", "label", "obj"},
@@ -932,6 +938,8 @@ def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
+    text = re.sub(r"\b[vV]\s?=\s?(\d{1,3}(?:\.\d+)?)\s?(km/h|kph|kmh|mph|m/s)", r"at \1 \2", text)  # "lane keep,
+    # v=60 km/h": a speed, no vehicle called v
     text = _lane_keys(TEST_CODE_KEY.sub("", text))
     if re.search(r":[ \t]+-[ \t]+\S", text):  # "Constraints: - 3 lanes, ego in the middle - 3 stopped cars ahead":
         text = re.sub(r"[ \t]+-[ \t]+(?=[A-Za-z0-9])", "\n- ", text)  # a dashed list run on in one line, an item a line
@@ -1561,6 +1569,10 @@ def one_line_records(text: str) -> str:
     line = text.strip().strip("{}").strip()
     if "\n" in line or len(line) > 600:
         return text
+    if line.count(" / ") >= 2 and "||" not in line and sum(":" in part or part.count(",") >= 2
+                                                           for part in line.split(" / ")) >= 2:
+        return line.replace(" / ", "\n")  # "id,class,lane / ego,car,2 / lv1,truck,ahead", "SUT: sedan / POV: lorry":
+        # lines pasted onto one, a slash between them
     fields: list[str] = []
     for separator in RECORD_SEPARATORS:
         pieces = [p.strip(" {}") for p in separator.split(line) if p.strip(" {}")]
@@ -1872,6 +1884,10 @@ def tokenize(text: str) -> list[Token]:
                   r"(from [a-z' ]{1,40}):", r"\1\2:", text, flags=re.M)  # "Coming from opposite: two car": a key of
     # where those listed after it come from, as "From the left: a cyclist"
     text = re.sub(r"\bnot (?:even )?once\b", "never", text, flags=re.I)  # "not once looking our way": no "once" link
+    text = re.sub(r"\b(?:adult|elderly|young|teenage|older) (male|female)\b(?= (?:riding|cycling|pedalling|pedaling|"
+                  r"on an? (?:[a-z]+ )?(?:bike|bicycle|pushbike|scooter|moped|motorbike|motorcycle)))",
+                  lambda m: "man" if m.group(1) == "male" else "woman", text)  # "adult male riding a mountain bike":
+    # a rider, told as a report tells of people
     text = re.sub(r"\b(?:single|double|solo|triple)[- ]?crewed\b ?", "", text)  # "I was single-crewed in a marked
     # police vehicle": how many rode in it, no more
     text = re.sub(r",\s*(?:then\s+)?aged\s+(\d{1,2})\s*,", lambda m: ", a child," if int(m.group(1)) < 18 else ",",

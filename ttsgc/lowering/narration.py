@@ -232,7 +232,8 @@ ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|do
 ROUTE_RIDDEN = re.compile(r"\b(on|aboard|about|regarding)\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b(?![\s-]*(?:mph|km|"
                           r"kph|miles?|m|metres?|meters?|feet|ft|yards?|%|am|pm|tonnes?|tons?|foot|lanes?|limit|zone|"
                           r"[:.]\d))", re.I)
-ROUTE_DRIVER = re.compile(r"\bthe\s+(?:number\s+)?\d{1,3}[a-z]?\s+driver\b", re.I)
+ROUTE_DRIVER = re.compile(r"\bthe\s+(?:number\s+)?\d{1,3}[a-z]?\s+driver\b|"
+                          r"\bdriver\s+of\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b" + NOT_A_QUANTITY, re.I)  # "the 22 driver", "driver of the 9 came into the stop"
 ROUTE_TOLD = re.compile(r"\b(?:upstairs|downstairs|top\s+deck|up\s+top|(?:our|your)\s+driver|the\s+driver(?!\s+(?:in|"
                         r"ahead|behind|of|next|beside|to)\b)|passenger\s+on)\b", re.I)
 # a number ridden is a bus route when its driver is another ("the driver had to brake"; not "the driver in front")
@@ -1316,12 +1317,17 @@ NARRATORS_DRIVER = "read the narrator's driver as the ego"  # the note that says
 NOT_A_CAR_PART = r"(?![\s-]+(?:side|seat|door|window|mirror)\b)"  # "my driver side mirror": the car's, no person
 
 
+DRIVERS_WORDS_KEY = r"(?!\s*(?:comments?|statement|remarks?|notes?|account|report|says?)\s*:\s*(?:i|we|my|our)\b)"
+# ("Driver comment: I had a green": the key of what the driver said, in the first person; "Driver comment: followed
+# a bus", "Driver: going through on green" are the ego's own lines)
+
+
 def _passengers_driver(text: str, notes: list[str]) -> str:
     """'my driver eased off', 'Driver slowed way down': a passenger's account; whoever drives the narrator is the
     ego, named by role ('my driver', 'the driver' when no other vehicle is named before) or by name."""
     said = re.search(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b" + NOT_A_CAR_PART +
                      r"(?:\s*,?\s*(" + FULL_NAME + r"))?", text)
-    bare = re.search(r"(?:^|[.!?,]\s+)(?:the\s+)?[Dd]river\b(?!\s+of\b)", text)
+    bare = re.search(r"(?:^|[.!?,]\s+)(?:the\s+)?[Dd]river\b(?!\s+of\b)" + DRIVERS_WORDS_KEY, text)
     if said is None and bare is None:
         return text
     before = text[:(said or bare).start()]
@@ -1333,7 +1339,7 @@ def _passengers_driver(text: str, notes: list[str]) -> str:
     names = [w for w in (said.group(1).split() if said and said.group(1) else []) if w not in NOT_NAMES]
     text = re.sub(r"\b(?i:my|our)\s+(?:uber\s+|lyft\s+|cab\s+|taxi\s+)?driver\b" + NOT_A_CAR_PART +
                   r"(?:\s*,?\s*" + FULL_NAME + r")?", "the ego", text) if said else text
-    text = re.sub(r"(^|[.!?,]\s+)(?:[Tt]he\s+)?[Dd]river\b(?!\s+of\b)", r"\1the ego", text)
+    text = re.sub(r"(^|[.!?,]\s+)(?:[Tt]he\s+)?[Dd]river\b(?!\s+of\b)" + DRIVERS_WORDS_KEY, r"\1the ego", text)
     text = re.sub(r"(^|[.!?,]\s+)(?:[Tt]he\s+)?[Cc]ar\s+(?=(?:was|is|smelled|smelt|smells|looked|looks|felt|feels)\s+"
                   r"(?!in\b|on\b|at\b|ahead\b|behind\b|next\b|beside\b|stopped\b|parked\b|coming\b|going\b|"
                   r"driving\b|turning\b|waiting\b|pulling\b))", r"\1the ego ", text)  # "Car was clean": the ride
@@ -1450,7 +1456,8 @@ def _fleet_unit(text: str, notes: list[str]) -> str:
     notes.append("read the record's unit as the ego")
     body = FLEET_UNIT.search(text).group(2) or ""
     text = FLEET_UNIT.sub(lambda m: f"the ego {m.group(2)}" if m.group(2) else "the ego", text, count=1)
-    text = re.sub(r"(?:^|(?<=[.;!?]\s))[Dd]river\b", "the ego", text, flags=re.M)  # "Driver braked", said bare
+    text = re.sub(r"(?:^|(?<=[.;!?]\s))[Dd]river\b" + DRIVERS_WORDS_KEY, "the ego", text, flags=re.M)  # "Driver
+    # braked", said bare (not "Driver comment: I had a green", the key of what the driver told)
     if re.search(r"truck|trailer|lorry|semi|hgv|rig\b", body, re.I):
         text = re.sub(r"\bthe (?:cab|trailer|tractor)\b", "the ego", text, flags=re.I)  # "level with the cab": its own
 

@@ -549,14 +549,20 @@ def _words_said_of_a_noun(units: list[Unit]) -> list[Unit]:
     placed is how far, no side ('turned right across the road' keeps its turn); 'driven by' after a noun says
     who drove it, no verb; a plural's possessive after 'a' names a kind of place."""
     for k, u in enumerate(units[1:-1], 1):
-        if u.category == "actions" and [t.word for t in u.tokens] in (["driven", "by"], ["ridden", "by"]) and \
-                units[k - 1].category == "agents" and units[k + 1].word not in ("me", "us", "i", "we", "myself"):
-            units[k] = Unit(u.start, u.end, "word", "driven", u.tokens)  # "an HGV driven by the defendant": who
-            # was at its wheel, said of the noun, no verb of the clause, and no one of the scene ("a sedan driven by
-            # U": not 'you')
-            j = k + 1 + (k + 1 < len(units) and units[k + 1].word in DEFINITE | INDEFINITE | OWNERS)
-            if j < len(units) and (units[j].category == "word" or units[j].category == "agents" and
-                                   units[j].meaning in ("ego", "pedestrian", "none")):
+        said = [t.word for t in u.tokens]
+        after = k + 1 + (said in (["driven"], ["ridden"]))  # the first unit after "driven by"
+        by = said in (["driven", "by"], ["ridden", "by"]) or \
+            said in (["driven"], ["ridden"]) and units[k + 1].word == "by"
+        if u.category == "actions" and by and after < len(units) and \
+                (units[k - 1].category == "agents" or units[k - 1].word in ("was", "is", "were", "are")) and \
+                units[after].word not in ("me", "us", "i", "we", "myself"):
+            units[k] = Unit(u.start, u.end, "word", "driven", u.tokens)  # "an HGV driven by the defendant", "the
+            # former was driven by a nurse": who was at its wheel, said of the noun, no verb of the clause, and no
+            # one of the scene ("a sedan driven by U": not 'you')
+            j = after
+            while j < len(units) and j < after + 4 and units[j].category == "word":
+                j += 1  # "by an off-duty nurse": over its article and adjectives
+            if j < len(units) and units[j].category == "agents" and units[j].meaning in ("ego", "pedestrian", "none"):
                 units[j] = Unit(units[j].start, units[j].end, "word", "driver", units[j].tokens)
         if u.category == "agents" and u.tokens[-1].plural and u.tokens[-1].possessive and \
                 units[k - 1].word in ("a", "an") and units[k + 1].category == "word":
@@ -580,7 +586,8 @@ def _one_named_by_what_they_ride(units: list[Unit]) -> list[Unit]:
     out: list[Unit] = []
     for u in units:
         last = out[-1] if len(out) > 1 else None
-        counted = last is not None and (out[-2].word in DEFINITE | INDEFINITE or out[-2].category == "numbers")
+        counted = last is not None and (out[-2].word in DEFINITE | INDEFINITE or out[-2].category == "numbers" or
+                                        u.tokens[-1].plural)  # ("even okada men respect am": riders, said bare)
         if counted and u.category == "agents" and u.base in RIDERS_NAMES and last.category == "agents" and \
                 last.meaning in RIDDEN_TYPES and not last.tokens[-1].plural and not last.tokens[-1].possessive and \
                 u.start == last.end and u.tokens[0].sentence == last.tokens[-1].sentence:  # (not "on the bike.
@@ -1057,7 +1064,8 @@ def _inside_a_verb(tokens: list[Token], i: int) -> bool:
     """A word that may stand between a verb and its particle: a manner adverb ('pulled sharply across'), or 'right'
     before the particle ('dives right across in front of me': how far, no side)."""
     return _manner_adverb(tokens[i]) or tokens[i].word == "right" and i + 1 < len(tokens) and \
-        tokens[i + 1].word in ("across", "over", "through", "out")
+        tokens[i + 1].word in ("across", "over", "through", "out") and not (
+            i > 0 and tokens[i - 1].word in OWNERS | {"its", "the"})  # ("on my right through their red": a side)
 
 
 def _units_of_one_word(tokens: list[Token], i: int) -> list[Unit]:
@@ -2193,7 +2201,9 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
             after[:1] in (["there"], ["through"]) or after[:3] in (["in", "the", "middle"], ["in", "the", "centre"],
                                                                   ["in", "the", "center"])) and \
             tokens[m.start - 1].base not in STEERING - {"slide", "skid"} | {"turn", "bear", "indicate", "signal", "cut",
-                                                                           "merge"}:  # "slid right through": straight
+                                                                           "merge"} and \
+            tokens[m.start - 1].word not in OWNERS | {"its", "the"}:  # "slid right through": straight (not "on my
+        # right through their red": a side)
         return [Unit(m.start, m.end, "word", "right", span)]  # "riding right in the middle of the lane": exactly
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
             [t.word for t in tokens[m.end:m.end + 2]] == ["in", "the"] and m.end + 3 < len(tokens) and \
@@ -2530,7 +2540,9 @@ def _road(r: _Reader) -> RoadSpec:
             r.mark(u)
             continue  # "a crossing guard holding a stop sign": a hand-held sign, not the road's
         if u.category == "word" and u.word in SIGNAL_COLOURS and k > 0 and \
-                units[k - 1].tokens[-1].word in ("on", "through", "against"):
+                units[k - 1].tokens[-1].word in ("on", "through", "against") and not (
+                    k + 1 < len(units) and units[k + 1].word in STREET_SUFFIXES and
+                    units[k + 1].tokens[0].sentence == u.tokens[0].sentence):  # (not "on Green Lane": a street)
             put("traffic_light", False)  # "goes straight on green": the phrase took the "on", the colour is a signal's
         if u.category == "road" and u.meaning == "traffic_light" and u.tokens[-1].word in ("light", "lights") and (
                 any(x.word in POSSESSIVES for x in units[max(0, k - 2):k]) and not _runs_a_light(units, k) or
@@ -5057,8 +5069,11 @@ def _says_no_part(units: list[Unit], tokens: list[Token]) -> bool:
     named = copula + 1 if copula is not None else len(units)
     named += named < len(units) and units[named].word in ("a", "an", "the", "our", "my", "their", "your")
     nobody = named < len(units) and units[named].category == "agents" and units[named].meaning == "none" and any(
-        u.category == "agents" and u.meaning != "none" for u in units[:copula])
+        u.category == "agents" and u.meaning != "none" for u in units[:copula]) and not any(
+        u.word in BELIEVING for u in units[:copula])  # ("a guy in a black hoodie, thought it was a deer at first,":
+    # a first impression, no denial)
     return denied or nobody
+
 
 
 HABIT = (("usually",), ("normally",), ("generally",), ("typically",), ("often",), ("a", "lot"), ("all", "the", "time"),
@@ -5084,6 +5099,46 @@ def _said_of_a_habit(r: _Reader, e: Entity) -> bool:
 
 PAST_FORMS = {"was", "were", "came", "went", "drove", "saw", "ran", "had", "got", "stood", "sat", "rode", "swung",
               "shot", "flew", "spun", "slid"}  # irregular; a regular past ends in -ed
+
+
+OFF_THE_ROAD_PLACES = {"yard", "garage", "shop", "driveway", "home", "depot", "workshop", "showroom", "garden"}
+
+
+def _kept_off_the_road(r: _Reader, e: Entity) -> bool:
+    """'my sister's jeep is still in the shop', 'the two cars rusting in her father's yard', 'my oke at home has
+    two more bakkies': a vehicle placed by no side, said to be kept at home, in a yard or a shop, is no part of the
+    scene ('a van parked at the shop on my left' is: at it, and placed)."""
+    if e.is_ego or e.features - {"ahead", "behind"} or e.said_at < 0 or e.type in V.VULNERABLE_TYPES or \
+            any(a[4] not in ("move", "stop") for a in e.actions):
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    near = [t for t in r.tokens[max(0, e.said_at - 6):e.said_at + 8] if t.sentence == sentence]
+    words = [t.word for t in near]
+    for k, w in enumerate(words):
+        if w not in OFF_THE_ROAD_PLACES:
+            continue
+        opener = next((words[j] for j in range(k - 1, max(-1, k - 4), -1) if words[j] in ("in", "at")), None)
+        between = words[words.index(opener, max(0, k - 3)) + 1:k] if opener else []
+        if opener == "in" or opener == "at" and w in ("home", "yard") or \
+                opener and all(x in ("the", "my", "his", "her", "their", "our", "your") or near[words.index(x)].possessive
+                               for x in between) and w == "yard":
+            return True
+    return False
+
+
+TOWED = {"towed", "impounded", "recovered", "tow", "towing"}
+
+
+def _towed_away(r: _Reader, e: Entity) -> bool:
+    """'Vehicle was towed from the scene', 'V2 not drivable, recovered': a vehicle first named, placed nowhere and
+    doing nothing, in a sentence after the collision that says it was towed, is one of those that crashed, or none."""
+    if e.is_ego or e.label or e.said_at < 0 or e.features or e.type in V.VULNERABLE_TYPES or \
+            any(a[4] not in ("move", "stop") for a in e.actions):
+        return False
+    sentence = r.tokens[e.said_at].sentence
+    if not any(t.word in TOWED for t in r.tokens[e.said_at:] if t.sentence == sentence):
+        return False
+    return any(t.word in IMPACTS for t in r.tokens[:e.said_at] if t.sentence < sentence)
 
 
 def _came_after_the_crash(r: _Reader, e: Entity) -> bool:
@@ -7374,7 +7429,8 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                 _said_of_another(r, units[verbs[0]].tokens[0], previous_subject):
             subject = list(previous_subject)  # "He swerves in front of me and stops dead. Sits there honking": him
         elif verbs and any(np.entity is None and (units[np.index].meaning == "none" or _said_not_there(units, np)) and
-                           first_verb - 3 <= np.index < first_verb for np in phrases):
+                           first_verb - 3 <= np.index < first_verb and
+                           not any(x.category == "comma" for x in units[np.index:first_verb]) for np in phrases):
             verbs = []  # "a deer ran out": its subject names no agent; nobody of the scene ran; nor did "no
             # vehicles are parked on the street"
         elif verbs:
@@ -9636,8 +9692,11 @@ def _is_reference(units: list[Unit], np: NounPhrase) -> bool:
         if u.meaning in ("ahead", "behind") and len(u.tokens) == 1 and k > 0 and (
                 units[k - 1].word in DISTANCE_UNITS or units[k - 1].word in ("up", "further", "way", "just")):
             return False  # "twenty-five metres ahead a lorry sits", "up ahead a bus": a place, then the subject
-        if k == 0 and [t.word for t in u.tokens] in (["ahead"], ["in", "front"]):
-            return False  # "Ahead a car stands broken": the place the clause opens with, then its subject
+        opening = all(x.category == "comma" or x.word in ("and", "but", "so", "then") for x in units[:k])
+        if opening and [t.word for t in u.tokens] in (["ahead"], ["in", "front"], ["up", "ahead"], ["just", "ahead"],
+                                                      ["further", "ahead"], ["straight", "ahead"]):
+            return False  # "Ahead a car stands broken", "..., and up ahead a semi is stopped": the place the clause
+            # opens with, then its subject
         if u.meaning not in ("ahead", "behind", "level") and u.tokens[-1].word not in ("of", "to", "behind") and \
                 units[np.first].word not in ("of", "to"):
             return False  # "on the left-hand side a woman waits": a place, then the subject ("left of a van" places)
@@ -9658,7 +9717,9 @@ def _placed_by_the_same_pronoun(r: _Reader, u: Unit) -> bool:
         return False
     sentence = u.tokens[0].sentence
     return any(x.category == "positions" and (x.tokens[-1].word == objects[u.word] or y.word == objects[u.word]) and
-               y.start < u.start and x.tokens[0].sentence == sentence for x, y in zip(r.units, r.units[1:]))
+               y.start < u.start and sentence - 1 <= x.tokens[0].sentence <= sentence
+               for x, y in zip(r.units, r.units[1:]))  # (or in the sentence before: "A cyclist is in the lane to her
+    # left, level with her. Watch - she turns right")
 
 
 PLACES_NEXT = {"lane", "lanes", "junction", "intersection", "exit", "road", "street", "crossing", "crosswalk"}
@@ -12876,6 +12937,12 @@ def _compose(r: _Reader, junction: bool, has_crosswalk: bool) -> tuple[list[list
         if e.count > 0 and _came_after_the_crash(r, e):
             e.count = 0  # "a car ran the red and hit me. An ambulance came later": help after it, not the scene
             r.notes.append(f"left out: '{e.head}' came after the collision the text tells of")
+        elif e.count > 0 and _kept_off_the_road(r, e):
+            e.count = 0  # "my sister's jeep is still in the shop", "two cars rusting in her father's yard"
+            r.notes.append(f"left out: '{e.head}' is kept off the road, at home or in a yard")
+        elif e.count > 0 and _towed_away(r, e):
+            e.count = 0  # "... hit the front of client's car. Vehicle was towed from the scene.": after it, no one new
+            r.notes.append(f"left out: '{e.head}' is only towed away after the collision")
         elif e.count > 0 and _called_out(r, e):
             e.count = 0  # "EMS + PD dispatched 14:03": called to the scene, not in it
             r.notes.append(f"left out: '{e.head}' is only called out to the scene")
