@@ -13708,3 +13708,27 @@ def test_records_pasted_on_one_line_with_slashes_are_read_as_lines():
     assert agents("LEAD_BRAKE_01 / SUT: sedan, centre lane, lane keep, v=60 km/h / POV: lorry, in SUT lane, gap 40 m, "
                   "brakes to standstill / road: highway 3 lanes") == [("car", "go_straight", "ego"),
                                                                        ("truck", "stop", "front")]
+
+
+def test_people_counted_in_one_vehicle_are_that_vehicle():
+    assert agents("Two lads in a Golf come up on my right from behind and fly past me.") == [
+        ("car", "go_straight", "back_right"), ("car", "go_straight", "ego")]
+
+
+def test_the_van_a_teller_took_with_no_subject_is_the_ego():
+    assert agents("Tuesday. Took the van to the depot as usual. On the ring road a lorry in the lane to my left "
+                  "indicated and pulled across into my lane.") == [("car", "go_straight", "ego"),
+                                                                   ("truck", "change_lane_to_right", "left")]
+
+
+def test_a_red_light_runner_is_a_vehicle_and_a_headings_one_names_the_case():
+    assert agents("Signalized junction right turn with a red-light runner. The hero vehicle turns right at a "
+                  "signalized intersection at night on a wet road. An adversary vehicle approaches from the left "
+                  "road and runs the red light, crossing the junction straight ahead.") == [
+        ("car", "go_straight", "road_of_left_turn"), ("car", "turn_right", "ego")]
+
+
+def test_two_that_there_were_share_what_follows_them():
+    assert agents("There was a mum and a toddler walking on the pavement just ahead on my left the whole time.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front_left"),
+        ("pedestrian", "on_the_sidewalk", "front_left")]

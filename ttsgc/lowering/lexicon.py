@@ -1888,6 +1888,8 @@ def tokenize(text: str) -> list[Token]:
                   r"on an? (?:[a-z]+ )?(?:bike|bicycle|pushbike|scooter|moped|motorbike|motorcycle)))",
                   lambda m: "man" if m.group(1) == "male" else "woman", text)  # "adult male riding a mountain bike":
     # a rider, told as a report tells of people
+    text = re.sub(r"\bred[- ]light runner(s?)\b", r"light runner\1", text)  # "a red-light runner": a vehicle that
+    # runs the red, no signal or runner on foot of its own
     text = re.sub(r"\b(?:single|double|solo|triple)[- ]?crewed\b ?", "", text)  # "I was single-crewed in a marked
     # police vehicle": how many rode in it, no more
     text = re.sub(r",\s*(?:then\s+)?aged\s+(\d{1,2})\s*,", lambda m: ", a child," if int(m.group(1)) < 18 else ",",

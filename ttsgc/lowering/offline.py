@@ -3818,6 +3818,10 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
         return False
     if rest[0].word == "there" and len(rest) > 1 and rest[1].word in COPULAS:
         return True  # "I was in the right lane and there was a police car stopped on the shoulder": its own clause
+    if [x.word for x in current[:2]] in (["there", c] for c in COPULAS) and all(
+            x.category in ("agents", "numbers", "number", "behaviours") or x.category == "word" and
+            x.word in DETERMINERS | INDEFINITE for x in current[2:]):
+        return False  # "There was a mum and a toddler walking on the pavement": the two that there were
     starts = rest[0].category == "agents" and (rest[0].meaning == "ego" or bool(rest[0].tokens[-1].label)) or \
         rest[0].word in SUBJECT_PRONOUNS or (  # "V2 is eastbound and V3 is westbound": a named one's own clause
         (rest[0].word in ("the", "a", "an", "this", "that", "some", "another") or rest[0].category in (
@@ -5038,7 +5042,8 @@ def _names_the_case_in_a_heading(r: _Reader, e: Entity) -> bool:
     named = before in ("", "of") and bool(set(words) & CASE_HEADINGS) or before in ("a", "an") and bool(
         set(after) & CASE_NOUNS)  # "Scenario of pedestrian rush-out", "a pedestrian-at-night case"
     named = named or t.sentence == 0 and before in ("a", "an") and e.said_at > 1 and \
-        r.tokens[e.said_at - 2].word == "of" and len(words) <= 8  # "Abrupt stop of a taxi. ... A taxi ahead stops"
+        r.tokens[e.said_at - 2].word in ("of", "with") and len(words) <= 10  # "Abrupt stop of a taxi. ... A taxi
+    # ahead stops", "Signalized junction right turn with a red-light runner. ... An adversary vehicle ... runs the red"
     return (keyed and before == "" or triggered and before in ("a", "an") or named) and any(
         f is not e and not f.is_ego and f.type == e.type and f.said_at >= 0 and
         r.tokens[f.said_at].sentence > t.sentence for f in r.entities)
@@ -9185,6 +9190,14 @@ def _appositions(r: _Reader, units: list[Unit], phrases: list[NounPhrase]) -> li
             r.notes.append(f"read 'the {np.entity.head}' the speaker rides in as the ego's")
             out.append(NounPhrase(ego, np.index, np.first))
             continue
+        if prev is not None and np.introduced and prev.plural and not np.plural and prev.entity is not None and \
+                np.entity is not None and not prev.entity.is_ego and prev.entity.type == "pedestrian" and \
+                prev.entity.head in DRIVERS and np.entity.type in V.EGO_TYPES and \
+                [u.word for u in units[prev.index + 1:np.first]] == ["in"]:
+            if prev.entity in r.entities:  # "two lads in a Golf come up on my right": one car, its people inside
+                r.entities.remove(prev.entity)
+            out[-1] = np
+            continue
         if prev is not None and np.introduced and prev.entity is not None and np.entity is not None \
                 and not prev.plural and not np.plural and not (prev.entity.label and np.entity.label):  # "ped_1, ped_2"
             between = units[prev.index + 1: np.first]
@@ -9511,7 +9524,7 @@ ABOARD = {"on", "in", "aboard", "riding", "travelling", "traveling", "sitting", 
 
 
 HANDLING = {"move", "slow", "stop", "pull", "ease", "bring", "swing", "put", "park", "steer", "nose", "edge", "inch",
-            "reverse", "back", "turn", "drive", "slide"}  # what a driver does to the vehicle they drive
+            "reverse", "back", "turn", "drive", "slide", "take"}  # what a driver does to the vehicle they drive
 
 
 PEOPLES_PLACES = {"school", "hospital", "playground", "park", "centre", "center", "home", "ward", "nursery", "club",
