@@ -13732,3 +13732,11 @@ def test_two_that_there_were_share_what_follows_them():
     assert agents("There was a mum and a toddler walking on the pavement just ahead on my left the whole time.") == [
         ("car", "go_straight", "ego"), ("pedestrian", "on_the_sidewalk", "front_left"),
         ("pedestrian", "on_the_sidewalk", "front_left")]
+
+
+def test_the_one_we_call_the_subject_vehicle_is_the_ego_and_a_dark_body_no_night():
+    assert ("car", "turn_right", "ego") in agents(
+        "Camera 3, 02:13. A dark sedan - we'll call it the subject vehicle - enters frame and stops at the crossing. "
+        "A person in a hoodie crosses the road in front of it on the crossing. The sedan then turns right and leaves "
+        "frame.")
+    assert lower("A dark sedan pulls out in front of me.").scenario.weather is None

@@ -1976,6 +1976,10 @@ def tokenize(text: str) -> list[Token]:
     # vehicle a brief is about
     text = re.sub(r"\b((?:insured|claimant|subject|host|third party|other|target) vehicle) \([a-z]{2,3}\)", r"\1",
                   text)  # "Insured vehicle (IV), a 2018 Toyota Camry,": its short name, said once
+    text = re.sub(r"\b(?:a|an|the)\s+((?:[\w-]+\s+){0,3}?[\w-]+)\s*[-\u2013\u2014(,]\s*(?:we'?ll|we will|let'?s|i'?ll|"
+                  r"i will)\s+call\s+(?:it|him|her|this one)\s+(?:the\s+)?(?:subject vehicle|subject|ego vehicle|ego|sv|"
+                  r"vut|hero)\s*[-\u2013\u2014),]", r"the ego, a \1,", text)  # "A dark sedan - we'll call it the subject
+    # vehicle - enters frame": the one named the ego
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag

@@ -547,7 +547,7 @@ ACROSS_WAYS = {"across", "over", "through", "outside", "beside", "alongside"}
 def _words_said_of_a_noun(units: list[Unit]) -> list[Unit]:
     """'a fire engine right across the road', 'parked right outside': 'right' before a preposition after the one
     placed is how far, no side ('turned right across the road' keeps its turn); 'driven by' after a noun says
-    who drove it, no verb; a plural's possessive after 'a' names a kind of place."""
+    who drove it, no verb; a plural's possessive after 'a' names a kind of place; 'a dark sedan' is its colour."""
     for k, u in enumerate(units[1:-1], 1):
         said = [t.word for t in u.tokens]
         after = k + 1 + (said in (["driven"], ["ridden"]))  # the first unit after "driven by"
@@ -564,6 +564,9 @@ def _words_said_of_a_noun(units: list[Unit]) -> list[Unit]:
                 j += 1  # "by an off-duty nurse": over its article and adjectives
             if j < len(units) and units[j].category == "agents" and units[j].meaning in ("ego", "pedestrian", "none"):
                 units[j] = Unit(units[j].start, units[j].end, "word", "driver", units[j].tokens)
+        if u.category == "weather" and [t.word for t in u.tokens] in (["dark"], ["light"]) and \
+                units[k + 1].category == "agents" and units[k - 1].word in DEFINITE | INDEFINITE:
+            units[k] = Unit(u.start, u.end, "word", u.word, u.tokens)  # "a dark sedan": its colour, no night
         if u.category == "agents" and u.tokens[-1].plural and u.tokens[-1].possessive and \
                 units[k - 1].word in ("a", "an") and units[k + 1].category == "word":
             units[k] = Unit(u.start, u.end, "word", u.word, u.tokens)  # "a builders' merchant", "a children's
