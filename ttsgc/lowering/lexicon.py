@@ -893,7 +893,8 @@ ADVICE_KEY = re.compile(r"(?:^|(?<=[.;!?]))[ \t]*(?:coach|coachable|coaching|rec
 NEXT_KEY = re.compile(r"(?<=[.;])[ \t]+(?=(?!(?:In )?Lanes?\b)[A-Z][A-Za-z0-9/-]*(?: [A-Za-z0-9/-]+){0,2}:[ \t])|\n")
 
 
-LANE_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*(?:[-*•][ \t]+)?(?:the\s+)?(lanes?\s+\d(?:\s+and\s+\d)?|(?:(?:left|right|middle|centre|"
+LANE_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*(?:[-*•][ \t]+)?(?:the\s+)?(lanes?\s+\d(?:\s+and\s+\d)?|"
+                      r"(?:(?:left|right|middle|centre|"
                       r"center|inside|outside|fast|slow|overtaking|ego's|ego|same|nearside|offside)\s+lane)|"
                       r"(?:(?:left|right|hard)\s+)?shoulder)((?:\s+(?:ahead|behind))?)[ \t]*:", re.I | re.M)
 MOVING_FROM_KEY = re.compile(r"(?:^|(?<=[.;]\s))[ \t]*([A-Z][a-z]+ing)\s+(from the (?:left|right))[ \t]*:"
@@ -1976,10 +1977,10 @@ def tokenize(text: str) -> list[Token]:
     # vehicle a brief is about
     text = re.sub(r"\b((?:insured|claimant|subject|host|third party|other|target) vehicle) \([a-z]{2,3}\)", r"\1",
                   text)  # "Insured vehicle (IV), a 2018 Toyota Camry,": its short name, said once
-    text = re.sub(r"\b(?:a|an|the)\s+((?:[\w-]+\s+){0,3}?[\w-]+)\s*[-\u2013\u2014(,]\s*(?:we'?ll|we will|let'?s|i'?ll|"
-                  r"i will)\s+call\s+(?:it|him|her|this one)\s+(?:the\s+)?(?:subject vehicle|subject|ego vehicle|ego|sv|"
-                  r"vut|hero)\s*[-\u2013\u2014),]", r"the ego, a \1,", text)  # "A dark sedan - we'll call it the subject
-    # vehicle - enters frame": the one named the ego
+    text = re.sub(r"\b(?:a|an|the)\s+((?:[\w-]+\s+){0,3}?[\w-]+)\s*[-\u2013\u2014(,]\s*(?:we'?ll|we will|let'?s|"
+                  r"i'?ll|i will)\s+call\s+(?:it|him|her|this one)\s+(?:the\s+)?(?:subject vehicle|subject|"
+                  r"ego vehicle|ego|sv|vut|hero)\s*[-\u2013\u2014),]", r"the ego, a \1,", text)  # "A dark sedan - we'll
+    # call it the subject vehicle - enters frame": the one named the ego
     text = re.sub(r" \((?:the |= ?)?(?:ego|hero|vut|sut|ego vehicle)\)", " ego", text)  # "the ALKS vehicle (ego)"
     text = re.sub(r" \((?:an? |the )?(?:npc|adversary|actor|agent|target|nonplayer|background)[ _#]?[a-z0-9]{0,3}"
                   r"(?:, [^()]*)?\)", "", text)  # "a bus (NPC1)", "fire engine (NPC, sirens on)": a role tag

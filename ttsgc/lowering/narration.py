@@ -233,7 +233,8 @@ ROUTE_RIDDEN = re.compile(r"\b(on|aboard|about|regarding)\s+the\s+(?:number\s+)?
                           r"kph|miles?|m|metres?|meters?|feet|ft|yards?|%|am|pm|tonnes?|tons?|foot|lanes?|limit|zone|"
                           r"[:.]\d))", re.I)
 ROUTE_DRIVER = re.compile(r"\bthe\s+(?:number\s+)?\d{1,3}[a-z]?\s+driver\b|"
-                          r"\bdriver\s+of\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b" + NOT_A_QUANTITY, re.I)  # "the 22 driver", "driver of the 9 came into the stop"
+                          r"\bdriver\s+of\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b" + NOT_A_QUANTITY, re.I)
+# ("the 22 driver", "driver of the 9 came into the stop")
 ROUTE_TOLD = re.compile(r"\b(?:upstairs|downstairs|top\s+deck|up\s+top|(?:our|your)\s+driver|the\s+driver(?!\s+(?:in|"
                         r"ahead|behind|of|next|beside|to)\b)|passenger\s+on)\b", re.I)
 # a number ridden is a bus route when its driver is another ("the driver had to brake"; not "the driver in front")
@@ -1032,8 +1033,8 @@ def _abbreviated_bodies(text: str) -> str:
     return re.sub(r"\bsport[- ]utility vehicle(s?)\b", r"SUV\1", text, flags=re.I)
 
 
-NUMBERED_VEHICLE = re.compile(r"(?:^|(?<=[.:;!?\n])\s*|(?<=\s[-–—])\s*)(car|vehicle|av|robotaxi|shuttle|van|bus|truck|"
-                              r"unit)\s+#?(\d{1,5})\b" + NOT_A_QUANTITY + r"(?=\s+[a-z]|\s*\(|,)", re.I)
+NUMBERED_VEHICLE = re.compile(r"(?:^|(?<=[.:;!?\n])\s*|(?<=\s[-–—])\s*)(car|vehicle|av|robotaxi|shuttle|van|bus|"
+                              r"truck|unit)\s+#?(\d{1,5})\b" + NOT_A_QUANTITY + r"(?=\s+[a-z]|\s*\(|,)", re.I)
 # ("Vehicle 22 (HGV) drifted", "Near-miss logged - Bus 88, Route 12.")
 ANY_NUMBERED = re.compile(r"\b(?:" + FLEET_NOUNS + r"|av|robotaxi|shuttle|v|veh)\s*#?\s*(\d{1,5})\b" + NOT_A_QUANTITY,
                           re.I)

@@ -5120,17 +5120,11 @@ def _kept_off_the_road(r: _Reader, e: Entity) -> bool:
             any(a[4] not in ("move", "stop") for a in e.actions):
         return False
     sentence = r.tokens[e.said_at].sentence
-    near = [t for t in r.tokens[max(0, e.said_at - 6):e.said_at + 8] if t.sentence == sentence]
-    words = [t.word for t in near]
+    words = [t.word for t in r.tokens[max(0, e.said_at - 6):e.said_at + 8] if t.sentence == sentence]
     for k, w in enumerate(words):
-        if w not in OFF_THE_ROAD_PLACES:
-            continue
         opener = next((words[j] for j in range(k - 1, max(-1, k - 4), -1) if words[j] in ("in", "at")), None)
-        between = words[words.index(opener, max(0, k - 3)) + 1:k] if opener else []
-        if opener == "in" or opener == "at" and w in ("home", "yard") or \
-                opener and all(x in ("the", "my", "his", "her", "their", "our", "your") or near[words.index(x)].possessive
-                               for x in between) and w == "yard":
-            return True
+        if w in OFF_THE_ROAD_PLACES and (opener == "in" or opener == "at" and w in ("home", "yard")):
+            return True  # ("parked at the shop": at it, on the road)
     return False
 
 
@@ -12567,7 +12561,8 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
 
 
 BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out"), (",", "arm", "out"), ("my", "bus"),
-                     ("standing", "passengers"), ("passengers", "were", "standing"), ("passengers", "standing"), ("passengers", "on", "board"),
+                     ("standing", "passengers"), ("passengers", "were", "standing"), ("passengers", "standing"),
+                     ("passengers", "on", "board"),
                      ("doors", "open"), ("the", "terminus"), ("my", "route"), ("loading", "passengers"),
                      ("picking", "up", "passengers"), ("letting", "passengers", "off"), ("open", "for", "boarding"),
                      ("back", "of", "the", "bus"), ("front", "of", "the", "bus"), ("side", "of", "the", "bus"))
