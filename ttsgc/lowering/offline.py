@@ -574,7 +574,7 @@ def _words_said_of_a_noun(units: list[Unit]) -> list[Unit]:
         if u.category == "positions" and [t.word for t in u.tokens] == ["right"] and \
                 units[k + 1].word in ACROSS_WAYS and (units[k - 1].category == "agents" or units[k - 1].word in (
                     "was", "were", "is", "are", "stood", "sat", "parked", "stopped", "stationary")):
-            units[k] = Unit(u.start, u.end, "word", "just", u.tokens)
+            units[k] = Unit(u.start, u.end, "word", "just", u.tokens)  # "a fire engine right across the road"
     return units
 
 
@@ -3821,7 +3821,7 @@ def _new_subject_after_copula(current: list[Unit], units: list[Unit], k: int) ->
         return False
     if rest[0].word == "there" and len(rest) > 1 and rest[1].word in COPULAS:
         return True  # "I was in the right lane and there was a police car stopped on the shoulder": its own clause
-    if [x.word for x in current[:2]] in (["there", c] for c in COPULAS) and all(
+    if len(current) > 1 and current[0].word == "there" and current[1].word in COPULAS and all(
             x.category in ("agents", "numbers", "number", "behaviours") or x.category == "word" and
             x.word in DETERMINERS | INDEFINITE for x in current[2:]):
         return False  # "There was a mum and a toddler walking on the pavement": the two that there were
@@ -5081,7 +5081,6 @@ def _says_no_part(units: list[Unit], tokens: list[Token]) -> bool:
         u.word in BELIEVING for u in units[:copula])  # ("a guy in a black hoodie, thought it was a deer at first,":
     # a first impression, no denial)
     return denied or nobody
-
 
 
 HABIT = (("usually",), ("normally",), ("generally",), ("typically",), ("often",), ("a", "lot"), ("all", "the", "time"),
