@@ -13597,7 +13597,8 @@ def test_the_two_vehicles_are_those_told_of_when_just_two_are():
 
 def test_a_test_code_with_vru_in_it_names_no_road_user_and_an_age_then_is_no_stage():
     assert agents("RT-VRU: SV turns right at a signalised intersection; an adult pedestrian crosses, on the "
-                  "crosswalk, the road the SV turns into.")[0][0] == "car"
+                  "crosswalk, the road the SV turns into.") == [("car", "turn_right", "ego"),
+                                                                ("pedestrian", "cross_the_road", "near_the_crosswalk")]
     assert sum(a[0] == "pedestrian" for a in agents("RT-VRU: SV turns right at a signalised intersection; an adult "
                                                     "pedestrian crosses the road the SV turns into.")) == 1
     assert ("pedestrian", "cross_the_road", "front_left") in agents(
