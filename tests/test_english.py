@@ -13741,3 +13741,9 @@ def test_the_one_we_call_the_subject_vehicle_is_the_ego_and_a_dark_body_no_night
         "A person in a hoodie crosses the road in front of it on the crossing. The sedan then turns right and leaves "
         "frame.")
     assert lower("A dark sedan pulls out in front of me.").scenario.weather is None
+
+
+def test_l_plates_are_a_learners_not_a_side():
+    said = agents("A man was on the crossing when a car with L plates came along, and the learner pulled up well "
+                  "back from him.")
+    assert not any(a[2] in ("left", "front_left", "back_left") for a in said) and len(said) == 3

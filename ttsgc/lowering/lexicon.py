@@ -1889,6 +1889,7 @@ def tokenize(text: str) -> list[Token]:
                   r"on an? (?:[a-z]+ )?(?:bike|bicycle|pushbike|scooter|moped|motorbike|motorcycle)))",
                   lambda m: "man" if m.group(1) == "male" else "woman", text)  # "adult male riding a mountain bike":
     # a rider, told as a report tells of people
+    text = re.sub(r"\b[lp][- ](plates?)\b", r"\1", text)  # "a car with L plates": a learner's, no side
     text = re.sub(r"\bred[- ]light runner(s?)\b", r"light runner\1", text)  # "a red-light runner": a vehicle that
     # runs the red, no signal or runner on foot of its own
     text = re.sub(r"\b(?:single|double|solo|triple)[- ]?crewed\b ?", "", text)  # "I was single-crewed in a marked
