@@ -13747,3 +13747,9 @@ def test_l_plates_are_a_learners_not_a_side():
     said = agents("A man was on the crossing when a car with L plates came along, and the learner pulled up well "
                   "back from him.")
     assert not any(a[2] in ("left", "front_left", "back_left") for a in said) and len(said) == 3
+
+
+def test_people_who_follow_another_across_cross_too():
+    assert agents("A woman crosses in front of me and her two kids follow her across.") == [
+        ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front"),
+        ("pedestrian", "cross_the_road", "front"), ("pedestrian", "cross_the_road", "front")]

@@ -547,7 +547,8 @@ ACROSS_WAYS = {"across", "over", "through", "outside", "beside", "alongside"}
 def _words_said_of_a_noun(units: list[Unit]) -> list[Unit]:
     """'a fire engine right across the road', 'parked right outside': 'right' before a preposition after the one
     placed is how far, no side ('turned right across the road' keeps its turn); 'driven by' after a noun says
-    who drove it, no verb; a plural's possessive after 'a' names a kind of place; 'a dark sedan' is its colour."""
+    who drove it, no verb; a plural's possessive after 'a' names a kind of place; 'a dark sedan' is its colour;
+    people who 'follow ... across' cross."""
     for k, u in enumerate(units[1:-1], 1):
         said = [t.word for t in u.tokens]
         after = k + 1 + (said in (["driven"], ["ridden"]))  # the first unit after "driven by"
@@ -564,6 +565,12 @@ def _words_said_of_a_noun(units: list[Unit]) -> list[Unit]:
                 j += 1  # "by an off-duty nurse": over its article and adjectives
             if j < len(units) and units[j].category == "agents" and units[j].meaning in ("ego", "pedestrian", "none"):
                 units[j] = Unit(units[j].start, units[j].end, "word", "driver", units[j].tokens)
+        if u.category == "actions" and u.tokens[0].base == "follow" and any(
+                x.word in ("across", "over") and x.tokens[0].sentence == u.tokens[0].sentence
+                for x in units[k + 1:k + 4]) and any(
+                x.category == "agents" and x.meaning in ("pedestrian", "cyclist") for x in units[max(0, k - 3):k]):
+            units[k] = Unit(u.start, u.end, "actions", "cross", u.tokens)  # "two cyclists follow the person
+            # across": they cross too
         if u.category == "weather" and [t.word for t in u.tokens] in (["dark"], ["light"]) and \
                 units[k + 1].category == "agents" and units[k - 1].word in DEFINITE | INDEFINITE:
             units[k] = Unit(u.start, u.end, "word", u.word, u.tokens)  # "a dark sedan": its colour, no night
