@@ -1074,8 +1074,13 @@ def _inside_a_verb(tokens: list[Token], i: int) -> bool:
     """A word that may stand between a verb and its particle: a manner adverb ('pulled sharply across'), or 'right'
     before the particle ('dives right across in front of me': how far, no side)."""
     return _manner_adverb(tokens[i]) or tokens[i].word == "right" and i + 1 < len(tokens) and \
-        tokens[i + 1].word in ("across", "over", "through", "out") and not (
-            i > 0 and tokens[i - 1].word in OWNERS | {"its", "the"})  # ("on my right through their red": a side)
+        tokens[i + 1].word in ("across", "over", "through", "out") and not _a_side_owned(tokens, i)
+
+
+def _a_side_owned(tokens: list[Token], i: int) -> bool:
+    """'on my right through their red', 'to the right over the line': 'right' said with whose side it is is that
+    side, never 'right' meaning how far."""
+    return i > 0 and tokens[i - 1].word in OWNERS | {"its", "the"}
 
 
 def _units_of_one_word(tokens: list[Token], i: int) -> list[Unit]:
@@ -2212,8 +2217,7 @@ def _disambiguate(tokens: list[Token], m: Match) -> list[Unit]:
                                                                   ["in", "the", "center"])) and \
             tokens[m.start - 1].base not in STEERING - {"slide", "skid"} | {"turn", "bear", "indicate", "signal", "cut",
                                                                            "merge"} and \
-            tokens[m.start - 1].word not in OWNERS | {"its", "the"}:  # "slid right through": straight (not "on my
-        # right through their red": a side)
+            not _a_side_owned(tokens, m.start):  # "slid right through": straight (not "on my right through")
         return [Unit(m.start, m.end, "word", "right", span)]  # "riding right in the middle of the lane": exactly
     if m.category == "actions" and m.meaning == "stop" and len(span) == 1 and span[0].base == "sit" and \
             [t.word for t in tokens[m.end:m.end + 2]] == ["in", "the"] and m.end + 3 < len(tokens) and \
