@@ -13753,3 +13753,65 @@ def test_people_who_follow_another_across_cross_too():
     assert agents("A woman crosses in front of me and her two kids follow her across.") == [
         ("car", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front"),
         ("pedestrian", "cross_the_road", "front"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_the_tellers_own_vehicle_moved_by_them_is_the_ego_moving():
+    assert agents("Semi pulled over on the right shoulder up ahead. I moved the truck over a lane to the left to give "
+                  "him room.") == [("truck", "change_lane_to_left", "ego"), ("truck", "stop", "front_right")]
+    assert agents("I eased the van over into the right lane.") == [("car", "change_lane_to_right", "ego")]
+
+
+def test_the_road_where_one_turns_is_the_road_turned_into():
+    assert agents("At the junction I turn to the right, and in the street where I enter there is one car "
+                  "stopped.") == [("car", "stop", "at_the_destination"), ("car", "turn_right", "ego")]
+
+
+def test_a_side_or_direction_said_after_its_noun_as_other_languages_do():
+    assert agents("I entered the roundabout and a bus was coming in the road of the right side.") == [
+        ("bus", "go_straight", "road_of_right_turn"), ("car", "go_straight", "ego")]
+    assert ("ambulance", "go_straight", "front_left") in agents(
+        "An ambulance is coming in contrary direction, I am going straight.")
+
+
+def test_green_that_comes_is_the_signal_turning_green():
+    assert agents("I am waiting in red light, there is a cyclist waiting beside me on right. Then I turn left when "
+                  "green come.") == [("car", "stop", "ego"), ("car", "turn_left", "ego"), ("cyclist", "stop", "right")]
+
+
+def test_a_gapped_clause_with_a_place_of_its_own_does_what_the_one_before_did():
+    assert agents("I stand at the red traffic light as first car. Behind me stands a bus and behind the bus a "
+                  "taxi.") == [("bus", "stop", "back"), ("car", "stop", "back"), ("car", "stop", "ego")]
+
+
+def test_one_named_at_the_wheel_and_told_of_as_he_or_she_is_the_ego():
+    assert agents("Our daughter Zoe borrowed the work van. At the end of our road a cyclist was coming from the left, "
+                  "so she waited for him to pass, then turned right.") == [
+        ("car", "stop", "ego"), ("car", "turn_right", "ego"), ("cyclist", "go_straight", "road_of_left_turn")]
+    assert agents("Bus driver Janet Lowe stopped at the zebra while two children crossed in front of her.") == [
+        ("bus", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+    assert ("car", "change_lane_to_left", "ego") in agents(
+        "On the interstate, Hannah in the right lane. Ahead on the right shoulder a trooper was stopped behind a car "
+        "he had pulled over, so she moved over into the left lane.")  # ('he' there is the trooper)
+
+
+def test_a_capitalised_verb_or_a_titled_name_is_no_driver_named():
+    assert ("car", "go_straight", "front") in agents("Ambulance behind. Prius? Stays in the left lane at 45.")
+    assert agents("Mrs. Feeney was in that crosswalk when the bus turned left.")[0][2] == "ego"
+
+
+def test_one_watching_from_off_the_road_tells_of_the_first_vehicle_it_names():
+    assert agents("From my shop window I saw a red pickup stop on the double yellows right outside my door, and the "
+                  "bus behind it had to wait.") == [("bus", "stop", "back"), ("car", "stop", "ego")]
+    assert agents("I'm the flagger on the resurfacing job. I turned the board to STOP and the tipper lorry at the "
+                  "head of the queue pulled up at the line, with a motorbike stopping right behind it.") == [
+        ("motorcycle", "stop", "back"), ("truck", "stop", "ego")]
+
+
+def test_a_skip_lorry_is_a_lorry_and_the_time_of_a_bus_no_count():
+    assert agents("Camera 6 picks up a skip lorry turning right into the industrial estate; a cyclist coming the "
+                  "other way goes straight on.") == [
+        ("cyclist", "go_straight", "road_of_straight"), ("truck", "turn_right", "ego")]
+    assert agents("The 8.15 school bus turned left as the twins crossed the road it turned into.") == [
+        ("bus", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination"),
+        ("pedestrian", "cross_the_road", "at_the_destination")]

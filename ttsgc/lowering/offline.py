@@ -4551,7 +4551,8 @@ def _set_aside(tokens: list[Token], u: Unit) -> bool:
         said = next((p for p in LEAVING_OUT if tuple(words[k:k + len(p)]) == p), None)
         nxt = sentence[k + len(said)] if said and k + len(said) < len(words) else None
         leaving = said is not None and nxt is not None and nxt.word != "off" and nxt.word not in INDEFINITE \
-            and _word_number(nxt) is None
+            and _word_number(nxt) is None and (lexicon().phrases.get((nxt.base,)) or ("",))[0] != "agents"
+        # ("a skip lorry": a lorry of its kind, nothing left out)
         # "drop off the kids" is no leaving out, nor is "drop two vans ahead of the player" (a game's spawn)
         if not leaving and words[k] not in PROPOSING:
             continue
@@ -8617,12 +8618,20 @@ GAPPING_WORDS = {"then", "and", "too", "also", "as", "well", "after", "that", "b
 
 def _gapped(r: _Reader, clause: "Clause", previous: list[Entity], new: list[Entity]) -> None:
     """'two oncoming cars pass, then a cyclist': a clause of only a new agent, after a clause that said where its
-    subject was and what it did, says the same of the new one (the verb and the place are gapped)."""
-    if len(new) != 1 or new[0].is_ego or new[0].features or new[0].actions or len(previous) != 1 or \
-            previous[0].is_ego or previous[0].type in V.VULNERABLE_TYPES and new[0].type not in V.VULNERABLE_TYPES:
+    subject was and what it did, says the same of the new one (the verb and the place are gapped). One with a
+    place of its own ('a bus is stopped behind me, and behind the bus a taxi') does what the subject did, there."""
+    placed_here = any(u.category == "positions" for u in clause.units)
+    if len(new) != 1 or new[0].is_ego or new[0].actions or len(previous) != 1 or previous[0].is_ego or \
+            previous[0].type in V.VULNERABLE_TYPES and new[0].type not in V.VULNERABLE_TYPES or \
+            (not (new[0].features or new[0].relative_to) if placed_here else new[0].features):
         return
-    if any(u.category not in ("agents", "word", "comma", "sequence", "numbers") or
-           u.category == "word" and u.word not in GAPPING_WORDS for u in clause.units):
+    units = [u for u in clause.units if u.category != "comma" and u.word != "and"]
+    if placed_here and not (units[0].category == "positions" and units[-1].category == "agents" and
+                            units[-1].start <= new[0].said_at < units[-1].end):
+        return  # (the place first, the one placed last: "a cyclist coming up behind me" has a verb of its own)
+    allowed = {"agents", "word", "comma", "sequence", "numbers"} | ({"positions"} if placed_here else set())
+    if any(u.category not in allowed or u.category == "word" and u.word not in GAPPING_WORDS and
+           not (placed_here and u.word == "the") for u in clause.units):
         return
     last = clause.units[-1]
     if not (clause.link in ("and", "then") or clause.stage > previous[0].stage or any(
@@ -8632,11 +8641,12 @@ def _gapped(r: _Reader, clause: "Clause", previous: list[Entity], new: list[Enti
     model = previous[0]
     places = {f for f in model.features if f in PLACE_FEATURES or f in ("ahead", "behind", "level", "toward")}
     said = [a for a in model.actions if a[1] == 2 and a[0] == model.stage]
-    if not places or not said:
+    if not (places or placed_here) or not said:
         return
-    new[0].features |= model.features - {"no_part", "on_board", "followed", "headline"}
+    if not placed_here:
+        new[0].features |= model.features - {"no_part", "on_board", "followed", "headline"}
     new[0].actions += [(new[0].stage, 2, a[2], r.tick(), a[4], a[5]) for a in said]
-    r.notes.append(f"read '{new[0].head}' as doing what '{model.head}' did, where it did")
+    r.notes.append(f"read '{new[0].head}' as doing what '{model.head}' did" + ("" if placed_here else ", where it did"))
 
 
 TAKING_BACK = (["actually", "no"], ["scratch", "that"], ["scrap", "that"], ["never", "mind"], ["forget", "that"],
@@ -11044,6 +11054,11 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
                    not any(a[4] in ("stop", "block") for a in e.actions)), None)
     if ridden is not None:
         return ridden  # "Client was on his motorcycle heading west ...": the one the account opens riding
+    if not driver_named and _watched_from_off_the_road(r):
+        watched = next((e for e in ordered if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and
+                        not e.generic and e.parent is None and e.named_of is None), None)
+        if watched is not None:
+            return watched  # the first vehicle one watching from off the road tells of, whatever it does
     named_first = next((e for e in ordered if not e.is_ego), None)
     anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e, own_lane=e is named_first) and (
         any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities) or
@@ -11214,19 +11229,37 @@ SEEN_FROM_A_SEAT = {"saw", "see", "noticed", "notice", "spotted", "spot", "heard
                     "clocked", "caught"}
 SENT_TO = {"sent", "forwarded", "emailed", "posted", "submitted", "shared", "reported", "handed", "given", "shown",
            "uploaded", "passed", "mailed", "delivered", "supplied", "provided"}
+OFF_ROAD_VANTAGES = (("helicopter",), ("chopper",), ("sky", "eye"), ("eye", "in", "the", "sky"), ("shop", "window"),
+                     ("from", "my", "window"), ("from", "my", "shop"), ("from", "my", "office"), ("from", "my", "flat"),
+                     ("from", "my", "house"), ("from", "my", "balcony"), ("from", "my", "porch"), ("from", "my", "desk"),
+                     ("from", "the", "footbridge"), ("from", "the", "overpass"), ("control", "room"),
+                     ("traffic", "control"), ("the", "flagger"), ("a", "flagger"), ("stop", "go", "board"),
+                     ("marshalling",), ("marshaling",), ("cctv",), ("we", "observed"), ("we", "recorded"),
+                     ("we", "noted"), ("site", "visit"), ("during", "our", "visit"))
 SPEAKER_PLACES = {"of", "behind", "beside", "past", "passed", "to", "at", "into", "towards", "toward", "overtook",
                   "overtakes", "overtake", "hit", "cut", "followed", "follows", "by", "alongside", "round", "around",
                   "with", "near"}  # "in front of me", "cut us up", "came at me": someone is placed by the speaker
+
+
+def _watched_from_off_the_road(r: _Reader) -> bool:
+    """'From up here in the helicopter I can see a lorry ...', 'From my shop window I saw', 'I'm the flagger ... I
+    turned the board to STOP', 'camera 6 picks up a skip lorry': the teller watches from off the road, and is in no
+    vehicle of the scene; so do auditors ('we observed an articulated lorry ...')."""
+    words = [t.word for t in r.tokens]
+    return _says_any(words, OFF_ROAD_VANTAGES) or any(w == "camera" and r.tokens[k + 1].number is not None
+                                                      for k, w in enumerate(words[:-1]))
 
 
 def _speaker_on_the_road(r: _Reader) -> bool:
     """Whether the one who says 'I' or 'we' is in the scene: does something there, is someone's reference ('in
     front of me', 'my lane'), or is spoken to ('you'). 'I watch drivers do thirty past the school. Please recreate
     it: a car speeding past ...' is said by an onlooker; the scene is the car's."""
+    if _watched_from_off_the_road(r):
+        return False
+    words = [t.word for t in r.tokens]
     speaker = next((e for e in r.entities if e.is_ego and e.head in SPEAKING_SELF), None)
     if speaker is not None and (speaker.actions or speaker.features):
         return True
-    words = [t.word for t in r.tokens]
     if _says_any(words, OWN_MOBILITY_AIDS) or any(
             _what_i_was(r.tokens, k) & CROSSING_ON_FOOT - {"across the road", "across the street"}
             for k, w in enumerate(words) if w == "i"):
@@ -11286,6 +11319,8 @@ def _protagonist_vehicle(r: _Reader, driver_named: bool) -> None:
         _taken_over(r, first, supplied)
         r.notes.append(f"read the {first.head} as the ego's: the text names the ego only as its driver")
         return
+    if supplied is not None and _watched_from_off_the_road(r):
+        supplied.actions = []  # ("I'm the flagger ... I turned the board to STOP": the watcher's doings are not its)
     if supplied is not None:  # made for a verb with no subject, or a turn the text implies
         first.actions += [a for a in supplied.actions if not any(b[0] == a[0] for b in first.actions)]
         _taken_over(r, supplied, first)
