@@ -13815,3 +13815,34 @@ def test_a_skip_lorry_is_a_lorry_and_the_time_of_a_bus_no_count():
     assert agents("The 8.15 school bus turned left as the twins crossed the road it turned into.") == [
         ("bus", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination"),
         ("pedestrian", "cross_the_road", "at_the_destination")]
+
+
+def test_leaving_at_an_exit_said_by_side_turns_to_that_side():
+    assert agents("The car enters a roundabout and leaves at the first exit to the right.") == [
+        ("car", "turn_right", "ego")]
+
+
+def test_phrases_from_other_languages_own_car_no_there_is_and_waiting_the_bus():
+    assert agents("Me and my family was going in car, suddenly one truck came in front and blocked our way.") == [
+        ("car", "go_straight", "ego"), ("truck", "block_the_ego", "front")]
+    assert lower("An ambulance is coming the other way, I am going straight. No there is any intersection "
+                 "here.").scenario.road.junction is False
+    assert ("bus", "go_straight", "front") not in agents(
+        "I was on the sidewalk waiting the bus, and a red car turned right at the corner.")
+
+
+def test_a_verb_of_the_third_person_after_an_adverb_goes_on_with_the_one_before():
+    assert agents("A taxi in front of me just turns right. No signal. Just turns. And I nearly went into the back of "
+                  "him.") == [("car", "go_straight", "ego"), ("car", "turn_right", "front")]
+
+
+def test_a_courtesy_car_and_a_wheel_count_name_no_one_and_a_keyed_unit_said_again_is_the_ego():
+    assert agents("Your vehicle: Yamaha motorcycle\nWhat happened: I was riding straight on along Station Road when "
+                  "a silver SUV came out of the side road on my left.\nCourtesy vehicle: not required.") == [
+        ("car", "go_straight", "road_of_left_turn"), ("motorcycle", "go_straight", "ego")]
+    assert agents("Vehicle involved: 8-wheel tipper lorry\nThe tipper was turning right out of the site gate when a "
+                  "worker walked across in front of it.") == [
+        ("pedestrian", "cross_the_road", "front"), ("truck", "turn_right", "ego")]
+    assert agents("Unit: Van 31 | Event: harsh braking | Notes: dashcam shows Van 31 going straight through a "
+                  "crossroads when a cyclist crossed from the right.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "road_of_right_turn")]

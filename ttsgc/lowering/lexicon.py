@@ -592,7 +592,9 @@ CASE_NUMBER = re.compile(r"[A-Za-z]{1,8}[-_]\d{2,}(?:[-_.]\d+)*")  # 'TC-052', '
 NUMBERED_CASE = re.compile(r"[a-z]+\s+#?(?:\d{1,4}[a-z]?|[a-z]{1,8}[-_]?\d+(?:[-_.]\d+)*)")  # 'hazard h-22', 'event 7'
 TRIGGER_KEYS = {"triggering condition", "trigger condition", "trigger", "triggering event", "trigger event"}
 OWN_VEHICLE_KEYS = {"your vehicle", "my vehicle", "own vehicle", "insured vehicle", "policyholder vehicle",
-                    "your car", "my car", "vehicle driven", "vehicle you were driving"}
+                    "your car", "my car", "vehicle driven", "vehicle you were driving", "vehicle involved",
+                    "claimant vehicle", "claimant's vehicle", "insured's vehicle", "our vehicle", "reporting vehicle",
+                    "vehicle in question"}
 THIRD_PARTY_KEYS = {"third party vehicle", "third party", "other party vehicle", "other party", "tp vehicle",
                     "third party's vehicle"}
 # a claim form's fields for the claimant's own vehicle and the other party's, the latter told of in the account
@@ -1895,6 +1897,15 @@ def tokenize(text: str) -> list[Token]:
                   r"(?:constant\s+|uniform\s+|steady\s+)?deceleration\s+of)\s+(?=" + ACCELERATION.pattern + ")",
                   "slows down at ", text)  # "brakes at 7 m/s²": a rate of slowing in a word problem, no halt said
     text = ACCELERATION.sub(" ", text)  # "accelerating at 2.5 m/s²": how fast speed changes, no place or speed
+    text = re.sub(r"\b(going|travell?ing|driving|riding|sitting|was|were|are|am|is|been) in (car|van|taxi)\b"
+                  r"(?!\s*(?:\d|#|park|parks|wash|lot)\b)", r"\1 in my \2", text)  # "we was going in car": the
+    # teller's own car, no second one
+    text = re.sub(r"\b(?:\d{1,2}|four|six|eight|ten|twelve)[- ]wheel(?:ed)? (?=[a-z])", "", text)  # "an 8-wheel tipper
+    # lorry": how many wheels, no count
+    text = re.sub(r"\b(?:leaves|leave|leaving|exits|exit|exited|exiting) (?:at|by|via|through) the (first|second|third) "
+                  r"exit\b", r"takes the \1 exit", text)  # "leaves at the first exit": the exit is its manoeuvre
+    text = re.sub(r"\bno,? there (is|are|was|were) (?:any |an? )?", r"there \1 no ", text)  # "No there is any
+    # intersection here": there is none
     text = re.sub(r"\b(the|my|our|his|her|their) (?:year \d{1,2} )?twins\b", r"\1 two children",
                   text)  # "the Year 3 twins": two children
     text = re.sub(r"\b(the|a|an|my|our|this|that) \d{1,2}[.:][0-5]\d (?=(?:[a-z]+ )?(?:bus|coach|service|shuttle|"

@@ -1044,6 +1044,10 @@ def _numbered_protagonist(text: str, notes: list[str]) -> str:
     """'Car 12 called in at an all-way stop ... it went straight through', 'Robotaxi 9 requested help': an
     operator's note opens a sentence on the one vehicle it numbers, the one it is about: the ego. Not where the
     text names the ego, or numbers more than one vehicle (a crash report's Car 1 and Car 2)."""
+    keyed = re.search(r"\bego\s*:\s*(" + FLEET_NOUNS + r")\s+#?(\d{1,5})\b", text, re.I)
+    if keyed is not None:  # "Ego: Van 31 (Mercedes Sprinter) ... dashcam shows Van 31 going straight": said again
+        return text[:keyed.end()] + re.sub(rf"\b{re.escape(keyed.group(1))}\s+#?{keyed.group(2)}\b", "the ego",
+                                           text[keyed.end():], flags=re.I)
     found = NUMBERED_VEHICLE.search(text)
     if found is None or re.search(r"\bego\b", text, re.I) or \
             {m.group(1) for m in ANY_NUMBERED.finditer(text)} != {found.group(2)}:
@@ -1051,7 +1055,9 @@ def _numbered_protagonist(text: str, notes: list[str]) -> str:
     notes.append(f"read {found.group(1)} {found.group(2)} as the ego")
     body = found.group(1).lower()
     ego = "the ego " + body if body in ("bus", "truck", "shuttle") else "the ego"
-    return text[:found.start(1)] + ego + text[found.end(2):]
+    text = text[:found.start(1)] + ego + text[found.end(2):]
+    return re.sub(rf"\b{re.escape(found.group(1))}\s+#?{found.group(2)}\b", "the ego", text,
+                  flags=re.I)  # ("Unit: Van 31. ... dashcam shows Van 31 going straight": the same, said again)
 
 
 def _vehicle_numbers(text: str) -> str:

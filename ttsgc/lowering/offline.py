@@ -8570,7 +8570,9 @@ def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) ->
         verb.word.endswith("ed")  # "a guy on a motorcycle. Passed me on the left": the speaker is its object
     return first_person and len(previous_subject) == 1 and not previous_subject[0].is_ego and (
         verb.word.endswith("s") and not verb.word.endswith("ss") and verb.base != verb.word or done_to_me) and \
-        not any(t.word.isalpha() for t in r.tokens[:verb.index] if t.sentence == verb.sentence)  # (after a time stamp)
+        not any(t.word.isalpha() and t.word not in ADVERBS for t in r.tokens[:verb.index]
+                if t.sentence == verb.sentence)
+    # (after a time stamp, or an adverb: "Just turns.")
 
 
 INSTANCE_OPENINGS = (["for", "example"], ["for", "instance"], ["e", "g"], ["one", "instance"],
