@@ -1902,8 +1902,8 @@ def tokenize(text: str) -> list[Token]:
     # teller's own car, no second one
     text = re.sub(r"\b(?:\d{1,2}|four|six|eight|ten|twelve)[- ]wheel(?:ed)? (?=[a-z])", "", text)  # "an 8-wheel tipper
     # lorry": how many wheels, no count
-    text = re.sub(r"\b(?:leaves|leave|leaving|exits|exit|exited|exiting) (?:at|by|via|through) the (first|second|third) "
-                  r"exit\b", r"takes the \1 exit", text)  # "leaves at the first exit": the exit is its manoeuvre
+    text = re.sub(r"\b(?:leaves|leave|leaving|exits|exit|exited|exiting) (?:at|by|via|through) the "
+                  r"(first|second|third) exit\b", r"takes the \1 exit", text)  # "leaves at the first exit": the exit is its manoeuvre
     text = re.sub(r"\bno,? there (is|are|was|were) (?:any |an? )?", r"there \1 no ", text)  # "No there is any
     # intersection here": there is none
     text = re.sub(r"\b(the|my|our|his|her|their) (?:year \d{1,2} )?twins\b", r"\1 two children",
