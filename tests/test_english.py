@@ -13846,3 +13846,17 @@ def test_a_courtesy_car_and_a_wheel_count_name_no_one_and_a_keyed_unit_said_agai
     assert agents("Unit: Van 31 | Event: harsh braking | Notes: dashcam shows Van 31 going straight through a "
                   "crossroads when a cyclist crossed from the right.") == [
         ("car", "go_straight", "ego"), ("cyclist", "cross_the_road", "road_of_right_turn")]
+
+
+def test_a_party_named_by_role_at_the_wheel_is_the_teller_however_the_role_is_written():
+    assert agents("Client riding northbound on Halsted, 2 lanes each way. Dark SUV in the lane to his left swerved "
+                  "into his lane and clipped him. Witness: client's buddy, also on a motorcycle, who was ahead of him "
+                  "in the same lane.") == [
+        ("car", "change_lane_to_right", "left"), ("motorcycle", "go_straight", "ego"),
+        ("motorcycle", "go_straight", "front")]
+
+
+def test_a_rider_named_with_their_role_is_the_teller_on_that_vehicle():
+    assert agents("Witnesses said motorcyclist Carla Reyes was riding in the right lane when a semi in the left lane, "
+                  "just ahead of her, drifted into her lane. Reyes eased off.") == [
+        ("motorcycle", "go_straight", "ego"), ("truck", "change_lane_to_right", "front_left")]

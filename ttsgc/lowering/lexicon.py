@@ -693,104 +693,6 @@ def driver_named(m: re.Match) -> str:
     the wheel of the ego; a word the lexicon knows ('A BUS', 'Then', 'Buses') is no name."""
     word = m.group(1)
     return word if known_word(word) or lexicon().base(word.lower())[0] in lexicon().vocabulary else "the ego"
-NAME = (r"(?:[A-Z]\. )?[A-Z\u00c0-\u00de][a-z\u00df-\u00ff]+(?:[-'][A-Z][a-z]+)?"
-        r"(?: [A-Z][a-z\u00df-\u00ff]+(?:-[A-Z][a-z]+)?)?")  # "Tyler", "M. Kowalski", "Tomás Ruiz", "O'Neil"
-DRIVER_ROLES = "driver|trainee|student|pupil|learner|motorist|motorcyclist|biker|rider|cyclist|trucker|cabbie|chauffeur"
-VEHICLE_ROLES = {"bus", "coach", "taxi", "cab", "cabbie", "lorry", "truck", "trucker", "haulage", "hgv", "van",
-                 "delivery", "motorcyclist", "motorcycle", "motorbike", "biker", "rider", "cyclist", "scooter",
-                 "minibus"}  # a role that says what is driven ("Bus driver Janet Lowe")
-AT_THE_WHEEL = (
-    "drove|drives|drive|driving|rode|rides|riding|pulled|turned|stopped|moved|changed|braked|waited|eased|signall?ed|"
-    "indicated|merged|overtook|slowed|stayed|kept|carried|went|took|borrowed|heading|travell?ing|approaching|"
-    "approached|taking|following|going|coming|sitting|waiting|queuing|queueing|behind the wheel|at the wheel|"
-    "stopping|turning|pulling|reversing|overtaking|crept|edged|nosed|inched|steered|swerved|reversed|entered|joined|"
-    "came|headed|had to|has to|offered to drive|agreed to drive|set off|moved off|creeping|cruising|crawling|rolling|"
-    "(?<=was )(?:in|on) (?!(?:that|the|a) (?:crosswalk|crossing|zebra|road|street|pavement|sidewalk)\b)|"
-    "(?<!, )in the (?:left|right|middle|inside|outside|fast|slow)(?:-hand)? lane")  # ("Hannah in the right lane")
-NAMED_DRIVER = re.compile(
-    rf"(?P<role>(?:(?:[Mm]y|[Oo]ur) (?:[A-Za-z-]+ ){{0,2}}?[a-z-]+,? |(?:(?i:{'|'.join(sorted(VEHICLE_ROLES))}|"
-    rf"learner) )?(?i:{DRIVER_ROLES}) ))?(?<![\w'\u00c0-\u00ff])(?P<name>{NAME})"
-    rf"(?P<aside>(?:, (?:[^,.;]{{1,40}}),)?)(?:,? |(?='s first (?:time|drive|lesson)))"
-    rf"(?P<verb>'s first|(?:who (?:still |now )?|has |had |was |is |then |just |carefully |slowly )*"
-    rf"(?:{AT_THE_WHEEL})\b)")  # the role before the name ("our daughter Zoe"), an aside after it (", 58,")
-SHE_ROLES = {"wife", "daughter", "girlfriend", "mum", "mom", "mother", "sister", "gran", "grandma", "nan", "aunt",
-             "niece", "fiancee"}
-HE_ROLES = {"husband", "son", "boyfriend", "dad", "father", "brother", "grandad", "grandpa", "uncle", "nephew",
-            "fiance"}
-AS_THE_TELLER = {"he": {"he": "I", "him": "me", "his": "my", "himself": "myself"},
-                 "she": {"she": "I", "her": None, "hers": "mine", "herself": "myself"}}
-
-
-def _named_driver_as_teller(text: str) -> str:
-    """'Tyler was in the left lane when he signalled and moved over', 'Bus driver Janet Lowe pulled out': one named
-    at the wheel, told of in the third person, is read as a teller telling their own drive ('I was in the left
-    lane when I signalled ...'): the reading of a teller's drive places everyone by them. Only the first one named
-    at the wheel, and only in a text with no ego named otherwise."""
-    if re.search(r"(?i)\bego\b|\b(?:i|we) (?:was |were |am |are )?(?:driving|drove|drive)\b", text):
-        return text
-    m = next((m for m in NAMED_DRIVER.finditer(text) if _a_persons_name(m, text)), None)
-    if m is None:
-        return text
-    role = (m.group("role") or "").strip(" ,")
-    role_words = set(role.lower().split())
-    teller = f"I, a {role.lower().split(' ', 1)[1] if role_words & {'my', 'our'} else role.lower()}," \
-        if role_words & VEHICLE_ROLES else "I"
-    parts = m.group("name").split()
-    names = {m.group("name")} | {p for p in parts if len(p) > 2}
-    said = re.compile(r"\b(" + "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True)) + r")('s)?\b")
-    rest = text[m.end("name"):]
-    opening_a_clause = re.search(r"(?i)(?:^|[.,;:!?]|\b(?:and|so|but|then|when|while|once|until|before|after|as|"
-                                 r"because|that|where))\s+(he|she)\b", rest)  # ("a car he'd stopped": another's)
-    said_of = opening_a_clause or re.search(r"(?i)\b(he|she|him|his|her|himself|herself)\b", rest)
-    gender = "she" if role_words & SHE_ROLES else "he" if role_words & HE_ROLES else None if said_of is None else \
-        "she" if said_of.group(1).lower() in ("she", "her", "herself") else "he"
-    rest = said.sub(lambda n: "my" if n.group(2) else "I", rest)
-    if gender is not None:
-        table = AS_THE_TELLER[gender]
-        rest = re.sub(r"\b(" + "|".join(table) + r")\b(?=(\W+\w+)?)", lambda p: _as_the_teller(p, table), rest,
-                      flags=re.I)
-    if rest.startswith("'s"):  # "Mia's first time on the beltway"
-        teller, rest = "my", rest[2:]
-    opening = re.sub(r"\b(?:[Mm]y|[Oo]ur|[Hh]is|[Hh]er|[Tt]heir) $", "", text[:m.start()])  # ("our Kayla turned")
-    return opening + (teller.rstrip(",") if rest[:1] == "," else teller) + rest
-
-
-def _a_persons_name(m: re.Match, text: str) -> bool:
-    """A name said as a person's: not a street ('Canal Street'), a make ('a black BMW'), a known word, or one that
-    opens a sentence and is a word the reader knows ('Then', 'Will')."""
-    name = m.group("name")
-    before = text[:m.start("name")].rstrip()
-    if re.search(r"(?i)\b(?:a|an|the|on|in|at|into|onto|from|to|along|via|near|past|towards|of|off|behind|by|"
-                 r"mrs?\.?|ms\.?|miss|dr\.?|officer|pc|sergeant|constable)(?: \d+-year-old)?$",
-                 before) or before.endswith("'s") or name.isupper() or text[:m.start()].rstrip().endswith(" of"):
-        return False
-    word_before = re.search(r"([A-Za-z]+)\W*$", before)
-    if not m.group("role") and word_before and before[-1:].isalpha() and \
-            word_before.group(1).lower() not in BEFORE_A_NAME_AT_THE_WHEEL:
-        return False  # "a silver Zafira pulled out": a make said after its colour
-    return bool(m.group("role")) or not any(known_word(p) or lexicon().base(p.lower())[0] in lexicon().vocabulary
-                                            for p in name.split())
-
-
-BEFORE_A_NAME_AT_THE_WHEEL = {"and", "but", "so", "then", "when", "while", "as", "after", "before", "until",
-                              "because", "once", "night", "today", "yesterday", "morning", "afternoon", "evening",
-                              "let", "with", "support", "says", "said", "that", "where", "if", "though", "although",
-                              "old"}  # ("34-year-old Daniel Okafor was on Harbour Road")
-
-
-def _as_the_teller(p: re.Match, table: dict[str, str | None]) -> str:
-    """The pronoun of the one named at the wheel, as the teller says it of themself."""
-    word, after = p.group(1), p.group(2) or ""
-    said = table[word.lower()]
-    if said is None:  # 'her': 'my' before what she owns ('her lane'), else 'me' ('behind her')
-        nxt = after.strip(" \t").lower()
-        said = "me" if not nxt or not nxt[0].isalpha() or nxt in FUNCTION_AFTER_HER else "my"
-    return said
-
-
-FUNCTION_AFTER_HER = {"and", "to", "in", "on", "at", "with", "as", "so", "until", "when", "while", "but", "then",
-                      "from", "for", "too", "by", "into", "onto", "off", "out", "up", "down", "go", "pass", "through",
-                      "over", "across", "past", "about", "that", "again", "first"}
 CHOICE_BOX = re.compile(r"\s*(?:\[\s*[xX\u2713]?\s*\]|[\u2610\u2611\u2612])")  # "[ ] Wave them across"
 CHOICE_MARK = re.compile(r"\s*\(?([A-Fa-f]|[1-6])(?:[.)]\s*|\s{2,}|\s+(?=[A-Z]))")  # "A. You do", "(b) Stop", "1) A, B"
 CHOICE_INSTRUCTION = re.compile(r"\s*(?:mark|select|choose|tick|pick|circle)\s+(?:one|two|three|all|the|an?)\b"
@@ -1875,7 +1777,6 @@ def tokenize(text: str) -> list[Token]:
             _emoji_breaks(_symbols_as_words(_without_thread_numbers(text))))))))))
     text = LETTER_LABEL.sub(r"\1#\2", text)  # "Car A", "Actor B": a diagram's or a catalogue's names
     text = re.sub(r"\b([NSEW])B\b(?!:)", lambda m: COMPASS_BOUND[m.group(1).lower()], text)  # a log's "WB": westbound
-    text = _named_driver_as_teller(text)
     names = {w.lower() for w in PROPER_NAME.findall(text)}  # never read as a slip of a known word
     text = fold_letters(text.lower().replace("\u2019", "'").replace("`", "'"))
     text = _respectively(_without_calques(_hinglish(text)))
