@@ -13860,3 +13860,19 @@ def test_a_rider_named_with_their_role_is_the_teller_on_that_vehicle():
     assert agents("Witnesses said motorcyclist Carla Reyes was riding in the right lane when a semi in the left lane, "
                   "just ahead of her, drifted into her lane. Reyes eased off.") == [
         ("motorcycle", "go_straight", "ego"), ("truck", "change_lane_to_right", "front_left")]
+
+
+def test_a_verb_with_no_subject_that_comes_from_the_tellers_side_is_the_one_named_before():
+    assert agents("Nearly got taken out by a scooter. Came from my right, from the side road, and turned left onto "
+                  "my road.") == [("car", "go_straight", "ego"), ("motorcycle", "turn_left", "road_of_right_turn")]
+
+
+def test_one_said_to_be_in_a_vehicle_between_commas_is_that_vehicle():
+    assert agents("I'm going straight across the four-way stop, and the guy from the left, in a pickup, he just goes. "
+                  "Doesn't stop.") == [("car", "go_straight", "ego"), ("car", "go_straight", "road_of_left_turn")]
+
+
+def test_a_records_one_vehicle_key_names_its_own_vehicle():
+    assert agents("Bus: yellow school bus, route 3\nThe bus was stopped with the stop arm out. A pupil was crossing "
+                  "in front of the bus. A pickup truck coming the opposite way did not stop.") == [
+        ("bus", "stop", "ego"), ("car", "go_straight", "front_left"), ("pedestrian", "cross_the_road", "front")]

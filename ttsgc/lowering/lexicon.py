@@ -595,6 +595,8 @@ OWN_VEHICLE_KEYS = {"your vehicle", "my vehicle", "own vehicle", "insured vehicl
                     "your car", "my car", "vehicle driven", "vehicle you were driving", "vehicle involved",
                     "claimant vehicle", "claimant's vehicle", "insured's vehicle", "our vehicle", "reporting vehicle",
                     "vehicle in question"}
+LONE_VEHICLE_KEYS = {"vehicle", "asset", "bus", "coach", "truck", "lorry", "van", "bike", "motorcycle", "taxi"}
+# a record's one vehicle key ("Vehicle: coach RR-07", "Asset: TRK-0088 (Volvo FH)"): its own vehicle, when alone
 THIRD_PARTY_KEYS = {"third party vehicle", "third party", "other party vehicle", "other party", "tp vehicle",
                     "third party's vehicle"}
 # a claim form's fields for the claimant's own vehicle and the other party's, the latter told of in the account
@@ -937,6 +939,13 @@ TEST_CODE_KEY = re.compile(r"(?m)^[ \t]*(?:[A-Z]{1,6}-)+VRU(?:-[A-Z0-9]{1,6})*[ 
 # a test's code, no road user of its own
 
 
+def _one_vehicle_keyed(lines: list[str]) -> bool:
+    """A record with one vehicle key and no numbered parties (a police report's 'Vehicle 1:', 'V2:')."""
+    keys = [m.group(1).strip().lower() for m in map(KEY_LINE.match, lines) if m]
+    return sum(k in LONE_VEHICLE_KEYS | OWN_VEHICLE_KEYS for k in keys) == 1 and \
+        not re.search(r"(?i)\b(?:v|veh|vehicle|unit)\s?#?\d\b", "\n".join(lines))
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
@@ -991,7 +1000,8 @@ def _lines(text: str) -> str:
             continue
         if lowered in THIRD_PARTY_KEYS and _verbless(value):
             continue  # "Third party vehicle: Vauxhall Astra": named again by the account of what happened
-        if lowered in OWN_VEHICLE_KEYS and _verbless(value):
+        if (lowered in OWN_VEHICLE_KEYS or lowered in LONE_VEHICLE_KEYS and _one_vehicle_keyed(lines)) and \
+                _verbless(value):
             article = "" if value.lower().split()[:1] in (["a"], ["an"], ["the"]) else "a "
             out.append(f"The ego is {article}{value}.")  # "Your vehicle: 44t artic (HGV)": what the claimant drove
             continue
@@ -1801,6 +1811,9 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(going|travell?ing|driving|riding|sitting|was|were|are|am|is|been) in (car|van|taxi)\b"
                   r"(?!\s*(?:\d|#|park|parks|wash|lot)\b)", r"\1 in my \2", text)  # "we was going in car": the
     # teller's own car, no second one
+    text = re.sub(r"\b(guy|man|woman|lady|bloke|dude|lad|fella|chap|idiot|driver|person|someone|somebody)((?: [a-z]+)"
+                  r"{0,4}), ((?:in|on) (?:an?|the|his|her|their) [a-z]+(?: [a-z]+)?),", r"\1\2 \3",
+                  text)  # "the guy from the left, in a pickup, he just goes": the guy in the pickup
     text = re.sub(r"\b(?:\d{1,2}|four|six|eight|ten|twelve)[- ]wheel(?:ed)? (?=[a-z])", "", text)  # "an 8-wheel tipper
     # lorry": how many wheels, no count
     text = re.sub(r"\b(?:leaves|leave|leaving|exits|exit|exited|exiting) (?:at|by|via|through) the "

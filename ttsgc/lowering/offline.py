@@ -7441,6 +7441,11 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
         elif previous_subject and clause.link == "" and verbs and \
                 _said_of_another(r, units[verbs[0]].tokens[0], previous_subject):
             subject = list(previous_subject)  # "He swerves in front of me and stops dead. Sits there honking": him
+        elif verbs and verbs[0] == 0 and clause.link == "" and _from_the_tellers_side(units) and \
+                any(not e.is_ego and e.type not in V.VULNERABLE_TYPES for e in r.last_mentions):
+            subject = [next(e for e in reversed(r.last_mentions) if not e.is_ego and e.type not in
+                            V.VULNERABLE_TYPES)]  # "Nearly got taken out by a scooter. Came from my right": no
+            # teller comes from their own side; the one named last did
         elif verbs and any(np.entity is None and (units[np.index].meaning == "none" or _said_not_there(units, np)) and
                            first_verb - 3 <= np.index < first_verb and
                            not any(x.category == "comma" for x in units[np.index:first_verb]) for np in phrases):
@@ -8560,6 +8565,17 @@ def _said_not_there(units: list[Unit], np: NounPhrase) -> bool:
 def _scenery_only(units: list[Unit], head: int) -> bool:
     """'passengers waiting at the stop: scenery only': road users said, right after, to be scenery."""
     return any(x.word == "scenery" for x in units[head + 1:head + 6])
+
+
+def _from_the_tellers_side(units: list[Unit]) -> bool:
+    """'came from my right': a place said from the teller's side, of someone else (the verb's, before anyone named:
+    not 'stopped for a car coming from my left')."""
+    for u in units:
+        if u.category == "agents":
+            return False
+        if u.category == "positions" and u.tokens[0].word == "from" and any(t.word in ("my", "our") for t in u.tokens):
+            return True
+    return False
 
 
 def _said_of_another(r: _Reader, verb: Token, previous_subject: list[Entity]) -> bool:
