@@ -13876,3 +13876,12 @@ def test_a_records_one_vehicle_key_names_its_own_vehicle():
     assert agents("Bus: yellow school bus, route 3\nThe bus was stopped with the stop arm out. A pupil was crossing "
                   "in front of the bus. A pickup truck coming the opposite way did not stop.") == [
         ("bus", "stop", "ego"), ("car", "go_straight", "front_left"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_a_fleet_number_keyed_and_a_vehicle_followed_from_the_air_keep_their_readings():
+    assert agents("ALERT - Harsh braking event.\nVehicle: HGV-0412. Time: 14:03.\nDashcam review: a car travelling in "
+                  "the adjacent right-hand lane, level with the truck, cut in sharply into the truck's lane.") == [
+        ("car", "change_lane_to_left", "right"), ("truck", "go_straight", "ego")]
+    assert ("truck", "go_straight", "ego") not in agents(
+        "Live from the chopper: we're following the getaway car, a silver Camry, heading west in the left lane. "
+        "Ahead of it in the center lane, a tanker truck is just rolling along. Then the Camry swerves right.")

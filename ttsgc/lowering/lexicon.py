@@ -939,6 +939,10 @@ TEST_CODE_KEY = re.compile(r"(?m)^[ \t]*(?:[A-Z]{1,6}-)+VRU(?:-[A-Z0-9]{1,6})*[ 
 # a test's code, no road user of its own
 
 
+def _says_an_agent(value: str) -> bool:
+    return any(f.category == "agents" and f.meaning not in ("ego", "none") for f in matches(tokenize(value)))
+
+
 def _one_vehicle_keyed(lines: list[str]) -> bool:
     """A record with one vehicle key and no numbered parties (a police report's 'Vehicle 1:', 'V2:')."""
     keys = [m.group(1).strip().lower() for m in map(KEY_LINE.match, lines) if m]
@@ -1000,8 +1004,9 @@ def _lines(text: str) -> str:
             continue
         if lowered in THIRD_PARTY_KEYS and _verbless(value):
             continue  # "Third party vehicle: Vauxhall Astra": named again by the account of what happened
-        if (lowered in OWN_VEHICLE_KEYS or lowered in LONE_VEHICLE_KEYS and _one_vehicle_keyed(lines)) and \
-                _verbless(value):
+        if (lowered in OWN_VEHICLE_KEYS or lowered in LONE_VEHICLE_KEYS and _one_vehicle_keyed(lines) and
+                _says_an_agent(re.sub(r"\b[A-Za-z]+-\d+\b", "", value))) and _verbless(value):  # (not "HGV-0412": a
+            # fleet number, read as one below)
             article = "" if value.lower().split()[:1] in (["a"], ["an"], ["the"]) else "a "
             out.append(f"The ego is {article}{value}.")  # "Your vehicle: 44t artic (HGV)": what the claimant drove
             continue

@@ -11072,11 +11072,13 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
                    not any(a[4] in ("stop", "block") for a in e.actions)), None)
     if ridden is not None:
         return ridden  # "Client was on his motorcycle heading west ...": the one the account opens riding
-    if not driver_named and _watched_from_off_the_road(r):
+    if not driver_named and _watched_from_off_the_road(r) and not _says_any(
+            [t.word for t in r.tokens], (("we", "are", "following"), ("i", "am", "following"))):
         watched = next((e for e in ordered if not e.is_ego and e.type in V.EGO_TYPES and e.count == 1 and
-                        not e.generic and e.parent is None and e.named_of is None), None)
+                        not e.generic and e.parent is None), None)
         if watched is not None:
-            return watched  # the first vehicle one watching from off the road tells of, whatever it does
+            return watched  # the first vehicle one watching from off the road tells of, whatever it does (one
+            # "we are following" from the air is read as the speakers' own)
     named_first = next((e for e in ordered if not e.is_ego), None)
     anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e, own_lane=e is named_first) and (
         any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities) or
