@@ -13885,3 +13885,15 @@ def test_a_fleet_number_keyed_and_a_vehicle_followed_from_the_air_keep_their_rea
     assert ("truck", "go_straight", "ego") not in agents(
         "Live from the chopper: we're following the getaway car, a silver Camry, heading west in the left lane. "
         "Ahead of it in the center lane, a tanker truck is just rolling along. Then the Camry swerves right.")
+
+
+def test_one_of_our_fleet_is_the_vehicle_the_teller_is_in():
+    assert agents("I was heading north on the A14 in one of our HGVs when a red hatchback in the lane to my left "
+                  "suddenly swung in front of me.") == [
+        ("car", "change_lane_to_right", "left"), ("truck", "go_straight", "ego")]
+
+
+def test_one_walking_home_who_saw_it_tells_of_the_first_vehicle_named():
+    assert agents("Walking home along the lane in the dark, I saw a hatchback overtake a cyclist just as a lorry came "
+                  "the other way.") == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front"),
+                                        ("truck", "go_straight", "front_left")]

@@ -1816,6 +1816,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(going|travell?ing|driving|riding|sitting|was|were|are|am|is|been) in (car|van|taxi)\b"
                   r"(?!\s*(?:\d|#|park|parks|wash|lot)\b)", r"\1 in my \2", text)  # "we was going in car": the
     # teller's own car, no second one
+    text = re.sub(r"\b(in|on|driving|riding) one of (our|my|the company's|the firm's|the depot's) ([a-z]+?)(?:e?s)\b",
+                  r"\1 \2 \3", text)  # "heading north in one of our HGVs": in our HGV
     text = re.sub(r"\b(guy|man|woman|lady|bloke|dude|lad|fella|chap|idiot|driver|person|someone|somebody)((?: [a-z]+)"
                   r"{0,4}), ((?:in|on) (?:an?|the|his|her|their) [a-z]+(?: [a-z]+)?),", r"\1\2 \3",
                   text)  # "the guy from the left, in a pickup, he just goes": the guy in the pickup

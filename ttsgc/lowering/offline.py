@@ -11254,7 +11254,8 @@ OFF_ROAD_VANTAGES = (("helicopter",), ("chopper",), ("sky", "eye"), ("eye", "in"
                      ("from", "my", "house"), ("from", "my", "balcony"), ("from", "my", "porch"), ("from", "my", "desk"),
                      ("from", "the", "footbridge"), ("from", "the", "overpass"), ("control", "room"),
                      ("traffic", "control"), ("the", "flagger"), ("a", "flagger"), ("stop", "go", "board"),
-                     ("marshalling",), ("marshaling",), ("cctv",), ("we", "observed"), ("we", "recorded"),
+                     ("marshalling",), ("marshaling",), ("cctv",), ("waiting", "for", "my", "lift"),
+                     ("walking", "home"), ("walking", "the", "dog"), ("we", "observed"), ("we", "recorded"),
                      ("we", "noted"), ("site", "visit"), ("during", "our", "visit"))
 SPEAKER_PLACES = {"of", "behind", "beside", "past", "passed", "to", "at", "into", "towards", "toward", "overtook",
                   "overtakes", "overtake", "hit", "cut", "followed", "follows", "by", "alongside", "round", "around",
