@@ -940,6 +940,7 @@ TEST_CODE_KEY = re.compile(r"(?m)^[ \t]*(?:[A-Z]{1,6}-)+VRU(?:-[A-Z0-9]{1,6})*[ 
 
 
 def _says_an_agent(value: str) -> bool:
+    """'yellow school bus, route 3': a value that names a road user other than the ego."""
     return any(f.category == "agents" and f.meaning not in ("ego", "none") for f in matches(tokenize(value)))
 
 
@@ -1824,7 +1825,8 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\b(?:\d{1,2}|four|six|eight|ten|twelve)[- ]wheel(?:ed)? (?=[a-z])", "", text)  # "an 8-wheel tipper
     # lorry": how many wheels, no count
     text = re.sub(r"\b(?:leaves|leave|leaving|exits|exit|exited|exiting) (?:at|by|via|through) the "
-                  r"(first|second|third) exit\b", r"takes the \1 exit", text)  # "leaves at the first exit": the exit is its manoeuvre
+                  r"(first|second|third) exit\b", r"takes the \1 exit", text)  # "leaves at the first exit": the
+    # exit is its manoeuvre
     text = re.sub(r"\bno,? there (is|are|was|were) (?:any |an? )?", r"there \1 no ", text)  # "No there is any
     # intersection here": there is none
     text = re.sub(r"\b(the|my|our|his|her|their) (?:year \d{1,2} )?twins\b", r"\1 two children",
