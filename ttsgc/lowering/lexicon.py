@@ -1754,8 +1754,8 @@ VERB_PLACE_MOVER = re.compile(rf"(^|[.;!?,]\s*|\band\s+|\bwhile\s+|\bthen\s+)({M
 # "behind me drove a police car", "then came from the right a scooter": a place, and the verb of one moving or
 # standing, said before the one who does it (as in German, Dutch, Russian)
 OWN_VEHICLE_MOVED = re.compile(
-    r"\b(i|we|you) ((?:mov|eas|nos|edg|guid)(?:e|es|ed|ing)|(?:pull|steer|inch|roll)(?:s|es|ed|ing)?|swung|swing(?:s|ing)?|"
-    r"drove|drive[sn]?|driving) (the|my|our|your) ((?:[a-z-]+ )?(?:car|truck|van|bus|lorry|rig|semi|motorbike|bike|"
+    r"\b(i|we|you) ((?:mov|eas|nos|edg|guid)(?:e|es|ed|ing)|(?:pull|steer|inch|roll)(?:s|es|ed|ing)?|swung|"
+    r"swing(?:s|ing)?|drove|drive[sn]?|driving) (the|my|our|your) ((?:[a-z-]+ )?(?:car|truck|van|bus|lorry|rig|semi|motorbike|bike|"
     r"motorcycle|cab|taxi|coach|minibus|pickup|suv|hatchback|sedan|tractor|artic|hgv|tanker|jeep|estate|saloon|plow|"
     r"plough|ambulance|cruiser|shuttle|moped|scooter|vehicle|wagon))\s+(?=(?:over|across|out|into|onto|in|to|left|"
     r"right|back|through|round|around|up|off|forward|towards|toward|alongside|along|down|straight)\b)")
@@ -1854,8 +1854,8 @@ def tokenize(text: str) -> list[Token]:
                   r"((?:is |am |are |was |were )?(?:turning|turns|turned|turn)) (left|right) (into|onto)\b",
                   r"\1\2 \3 \5, while \2 \3 \4", text)  # "into the same street the ego is turning left into":
     # the street the ego turns into, and the ego's turn
-    text = re.sub(r"\b((?:road|street|side road|side street|avenue) )where ((?:i|we|you|the ego|ego) )(turn(?:s|ed|ing)?|"
-                  r"enter(?:s|ed|ing)?)\b(?! (?:into|onto|in)\b)", lambda m: m.group(1) + m.group(2) + m.group(3) +
+    text = re.sub(r"\b((?:road|street|side road|side street|avenue) )where ((?:i|we|you|the ego|ego) )"
+                  r"(turn(?:s|ed|ing)?|enter(?:s|ed|ing)?)\b(?! (?:into|onto|in)\b)", lambda m: m.group(1) + m.group(2) + m.group(3) +
                   (" into" if m.group(3).startswith("turn") else ""), text)  # "on the road where I turn is standing
     # truck": the road turned into
     text = OWN_VEHICLE_MOVED.sub(lambda m: f"{m.group(1)}, in {OWNED_BY[m.group(1)]} {m.group(4)}, {m.group(2)} ",

@@ -11250,8 +11250,9 @@ SEEN_FROM_A_SEAT = {"saw", "see", "noticed", "notice", "spotted", "spot", "heard
 SENT_TO = {"sent", "forwarded", "emailed", "posted", "submitted", "shared", "reported", "handed", "given", "shown",
            "uploaded", "passed", "mailed", "delivered", "supplied", "provided"}
 OFF_ROAD_VANTAGES = (("helicopter",), ("chopper",), ("sky", "eye"), ("eye", "in", "the", "sky"), ("shop", "window"),
-                     ("from", "my", "window"), ("from", "my", "shop"), ("from", "my", "office"), ("from", "my", "flat"),
-                     ("from", "my", "house"), ("from", "my", "balcony"), ("from", "my", "porch"), ("from", "my", "desk"),
+                     ("from", "my", "window"), ("from", "my", "shop"), ("from", "my", "office"),
+                     ("from", "my", "flat"), ("from", "my", "house"), ("from", "my", "balcony"), ("from", "my", "porch"),
+                     ("from", "my", "desk"),
                      ("from", "the", "footbridge"), ("from", "the", "overpass"), ("control", "room"),
                      ("traffic", "control"), ("the", "flagger"), ("a", "flagger"), ("stop", "go", "board"),
                      ("marshalling",), ("marshaling",), ("cctv",), ("waiting", "for", "my", "lift"),
