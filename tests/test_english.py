@@ -13897,3 +13897,8 @@ def test_one_walking_home_who_saw_it_tells_of_the_first_vehicle_named():
     assert agents("Walking home along the lane in the dark, I saw a hatchback overtake a cyclist just as a lorry came "
                   "the other way.") == [("car", "go_straight", "ego"), ("cyclist", "go_straight", "front"),
                                         ("truck", "go_straight", "front_left")]
+
+
+def test_one_parked_that_pulls_into_my_lane_cuts_in():
+    assert agents("A van that had been parked on the right shoulder just ahead of me suddenly pulled into my "
+                  "lane.") == [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
