@@ -1044,11 +1044,11 @@ ANY_NUMBERED = re.compile(r"\b(?:" + FLEET_NOUNS + r"|av|robotaxi|shuttle|v|veh)
 def _numbered_protagonist(text: str, notes: list[str]) -> str:
     """'Car 12 called in at an all-way stop ... it went straight through', 'Robotaxi 9 requested help': an
     operator's note opens a sentence on the one vehicle it numbers, the one it is about: the ego. Not where the
-    text names the ego, or numbers more than one vehicle (a crash report's Car 1 and Car 2)."""
+    text names the ego, or numbers more than one vehicle (a crash report's Car 1 and Car 2). A numbered vehicle
+    keyed as the ego ('Ego: Van 31 (Mercedes Sprinter)') is the ego wherever it is named again."""
     keyed = re.search(r"\bego\s*:\s*(" + FLEET_NOUNS + r")\s+#?(\d{1,5})\b", text, re.I)
-    if keyed is not None:  # "Ego: Van 31 (Mercedes Sprinter) ... dashcam shows Van 31 going straight": said again
-        return text[:keyed.end()] + re.sub(rf"\b{re.escape(keyed.group(1))}\s+#?{keyed.group(2)}\b", "the ego",
-                                           text[keyed.end():], flags=re.I)
+    if keyed is not None:
+        return text[:keyed.end()] + _said_again_as_the_ego(text[keyed.end():], keyed.group(1), keyed.group(2))
     found = NUMBERED_VEHICLE.search(text)
     if found is None or re.search(r"\bego\b", text, re.I) or \
             {m.group(1) for m in ANY_NUMBERED.finditer(text)} != {found.group(2)}:
@@ -1057,8 +1057,12 @@ def _numbered_protagonist(text: str, notes: list[str]) -> str:
     body = found.group(1).lower()
     ego = "the ego " + body if body in ("bus", "truck", "shuttle") else "the ego"
     text = text[:found.start(1)] + ego + text[found.end(2):]
-    return re.sub(rf"\b{re.escape(found.group(1))}\s+#?{found.group(2)}\b", "the ego", text,
-                  flags=re.I)  # ("Unit: Van 31. ... dashcam shows Van 31 going straight": the same, said again)
+    return _said_again_as_the_ego(text, found.group(1), found.group(2))
+
+
+def _said_again_as_the_ego(text: str, noun: str, number: str) -> str:
+    """'Unit: Van 31 ... dashcam shows Van 31 going straight': the numbered vehicle named again is the ego."""
+    return re.sub(rf"\b{re.escape(noun)}\s+#?{number}\b", "the ego", text, flags=re.I)
 
 
 def _vehicle_numbers(text: str) -> str:
@@ -1459,13 +1463,9 @@ def _as_the_teller(p: re.Match, table: dict[str, str | None]) -> str:
     said = table[word.lower()]
     if said is None:  # 'her': 'my' before what she owns ('her lane'), else 'me' ('behind her')
         nxt = after.strip(" \t").lower()
-        said = "me" if not nxt or not nxt[0].isalpha() or nxt in FUNCTION_AFTER_HER else "my"
+        said = "me" if not nxt or not nxt[0].isalpha() or re.fullmatch(AFTER_AN_OBJECT, nxt) else "my"  # (as
+        # _drivers_pronoun tells 'her' the owner from 'her' the one done to)
     return said
-
-
-FUNCTION_AFTER_HER = {"and", "to", "in", "on", "at", "with", "as", "so", "until", "when", "while", "but", "then",
-                      "from", "for", "too", "by", "into", "onto", "off", "out", "up", "down", "go", "pass", "through",
-                      "over", "across", "past", "about", "that", "again", "first"}
 
 
 def _kin_at_the_wheel(text: str, notes: list[str]) -> str:
