@@ -13902,3 +13902,74 @@ def test_one_walking_home_who_saw_it_tells_of_the_first_vehicle_named():
 def test_one_parked_that_pulls_into_my_lane_cuts_in():
     assert agents("A van that had been parked on the right shoulder just ahead of me suddenly pulled into my "
                   "lane.") == [("car", "change_lane_to_left", "front_right"), ("car", "go_straight", "ego")]
+
+
+def test_the_vehicle_the_speaker_drives_is_the_ego():
+    assert agents("Driving the 46A bus into town, absolutely lashing. Some eejit in a Yaris pulls out right in front "
+                  "of me and stops in the middle of the lane.") == [
+        ("bus", "go_straight", "ego"), ("car", "block_the_ego", "front")]
+    assert agents("Running a reefer outta Salinas about 3am. Sitting at the red at Main and Alisal waiting to hang a "
+                  "left, and an oncoming pickup runs the red straight through the intersection.") == [
+        ("car", "go_straight", "road_of_straight"), ("truck", "turn_left", "ego")]
+    assert agents("So I'm in the Freightliner hauling up I-5 in the right lane behind a Prius doing 50.") == [
+        ("car", "go_straight", "front"), ("truck", "go_straight", "ego")]
+    assert ("bus", "stop", "front") in agents("I was driving behind the bus when it stopped.")
+
+
+def test_a_vehicle_named_first_as_a_label_is_the_speakers_own():
+    assert agents("Coach full of Year 6s on the way back from the zoo. Waited on red at the lights on the A38 behind "
+                  "a cement mixer, then turned left into Bristol Road.") == [
+        ("bus", "stop", "ego"), ("bus", "turn_left", "ego"), ("truck", "stop", "front")]
+    assert agents("Bin lorry, Tuesday round on Elm Close. We're stopped for the bins and some bloke in an Audi sat "
+                  "right behind me leaning on his horn.") == [("car", "go_straight", "back"), ("truck", "stop", "ego")]
+    assert ("truck", "go_straight", "ego") in agents(
+        "18-wheeler, I-95 northbound outside Richmond, three lanes. I'm in the middle, there's a Greyhound in the "
+        "right lane a little ahead of me.")
+
+
+def test_a_logs_call_sign_with_what_it_is_names_the_ego():
+    assert agents("C3 (marked car) NB Mill Rd. 1610: pedal cyclist crossed the c/w in front of C3 without looking, "
+                  "C3 braked to a stop.") == [("cyclist", "cross_the_road", "front"), ("police", "stop", "ego")]
+    assert agents("J5 (patrol car) at give-way, T-jct Mill Ln / B4012, waiting to turn L. Then turned L once clear. "
+                  "Before that: motorbike from our R on the B4012 straight past at speed.") == [
+        ("motorcycle", "go_straight", "road_of_right_turn"), ("police", "stop", "ego"), ("police", "turn_left", "ego")]
+    assert agents("0344 RPU2 (traffic car) M1 NB. Coach stationary on the hard shoulder, hazards on. RPU2 pulled up "
+                  "on the hard shoulder behind it.")[-1] == ("police", "stop", "ego")
+
+
+def test_a_logs_times_to_the_second_and_sensor_names_count_no_one():
+    assert agents("INC 0457 / E21 (fire engine) mobile on blues EB Harbour Rd\n0457:30 car directly ahead of E21 in "
+                  "same lane stopped dead and would not move\n0458:10 E21 forced to stop behind it\n0458:15 ambulance "
+                  "A7 also following directly behind E21") == [
+        ("ambulance", "go_straight", "back"), ("car", "stop", "front"), ("firetruck", "stop", "ego")]
+    assert agents("14:04:00 XING_07 VEH id=ego class=HGV STOPPED at stop line\n14:04:02 XING_07 PED count=2 "
+                  "ON_CROSSING").count(("pedestrian", "cross_the_road", "near_the_crosswalk")) == 1
+
+
+def test_a_riders_test_names_the_ego_a_motorbike():
+    assert agents("Did the road ride part of my CBT today. At the first roundabout I stopped to let a lorry coming from "
+                  "the right go round, then went left.") == [
+        ("motorcycle", "stop", "ego"), ("motorcycle", "turn_left", "ego"),
+        ("truck", "go_straight", "road_of_right_turn")]
+
+
+def test_a_runner_or_one_in_a_shelter_watches_from_off_the_road():
+    assert agents("Sat in the shelter outside the General this afternoon and watched a Deliveroo moped go straight "
+                  "through the junction while an ambulance with its lights on was crossing from the left.") == [
+        ("ambulance", "go_straight", "road_of_left_turn"), ("motorcycle", "go_straight", "ego")]
+    assert agents("Out for my morning run along Ridgeway Road and a grey Audi overtook a cyclist right on the blind "
+                  "bend.")[0] == ("car", "go_straight", "ego")
+
+
+def test_a_calques_place_is_not_read_before_a_parts_name():
+    assert agents("The car entered in my front and braked.") == [
+        ("car", "block_the_ego", "front"), ("car", "go_straight", "ego")]
+    assert agents("Van man pulled out of a side road on my left, straight across my front wheel.") == [
+        ("car", "go_straight", "ego"), ("cyclist", "go_straight", "road_of_right_turn")]  # a rider's own wheel
+
+
+def test_right_into_me_said_alone_is_no_turn():
+    assert agents("I'm sitting at the red light, first in line, totally stopped, and this minivan behind me just "
+                  "doesn't stop. Bam. Right into my rear bumper.") == [
+        ("car", "go_straight", "back"), ("car", "stop", "ego")]
+    assert agents("At the junction I turned. Right into the high street.") == [("car", "turn_right", "ego")]

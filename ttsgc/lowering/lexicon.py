@@ -232,6 +232,11 @@ def inflected(word: str, suffix: str) -> str:
     return word + suffix
 
 
+NOT_A_PARTS_NAME = r"(?![\s-]+(?:wheels?|tyres?|tires?|bumpers?|doors?|wings?|end|brakes?|lights?|seats?|windows?|" \
+                   r"windscreen|windshield|fork|forks|mudguard|panniers?|basket|garden|yard|porch|gate)\b)"
+# ("my front wheel", "my behind seat": a part named, not the place a calque says)
+
+
 @lru_cache(maxsize=1)
 def _calques() -> tuple[tuple[re.Pattern, str, dict], ...]:
     """Phrases a speaker of another language writes word for word ("doubles the car", "in the opposite sense"),
@@ -245,7 +250,7 @@ def _calques() -> tuple[tuple[re.Pattern, str, dict], ...]:
         forms = {inflected(words[0], suffix): suffix for suffix in ("s", "ed", "ing")} | {words[0]: ""} | {
             form: "" for form, base in lexicon().irregular.items() if base == words[0]}  # "goes", "went": the base
         pattern = re.compile(r"\b(?P<first>" + "|".join(re.escape(f) for f in sorted(forms, key=len, reverse=True))
-                             + ")" + "".join(r"[\s/-]+" + re.escape(w) for w in words[1:]) + r"\b")
+                             + ")" + "".join(r"[\s/-]+" + re.escape(w) for w in words[1:]) + r"\b" + NOT_A_PARTS_NAME)
         found.append((-len(words), pattern.pattern, pattern, meant, forms))
     return tuple((pattern, meant, forms) for *_, pattern, meant, forms in sorted(found, key=lambda x: x[:2]))
     # the longest phrase first
@@ -1995,12 +2000,17 @@ def tokenize(text: str) -> list[Token]:
                   text)  # "crossing L to R"
     text = re.sub(r"\b(turn\w*|lane|chang\w*|from|to|on|go|goes|going|went|merg\w*|mov\w*|swerv\w*|veer\w*|"
                   r"hard|unprotected|protected|pull\w*|cut\w*|head\w*|bear\w*|exit\w*|filter\w*|ego|sidewalk|"
-                  r"pavement|shoulder|kerb|curb|side|lanes?|ahead|behind|front|rear|back) (l|r)\b(?![#\d])",
+                  r"pavement|shoulder|kerb|curb|side|lanes?|ahead|behind|front|rear|back|our|my|his|her|its|their) "
+                  r"(l|r)\b(?![#\d])",
                   lambda m: f"{m.group(1)} {'left' if m.group(2) == 'l' else 'right'}", text)  # "changed lane L"
     text = re.sub(r"\b(l|r) (lane|turn|side|kerb|curb|arm|road)\b",
                   lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
     text = re.sub(r"\bmiles? (?:an|a|per) hour\b", "mph", text)  # "a twenty mile an hour limit", as said aloud
+    text = re.sub(r"(^|[.!?]\s+)right (into|onto|through|across) (?=(?:my|me|our|us|his|her|him|its|their|them|the "
+                  r"(?:back|rear|side))\b)", r"\1\2 ", text)  # "Bam. Right into my rear bumper.": said hard, no turn
+    text = re.sub(r"\b(on|the) way back(?= (?:from|to|home|into|after)\b)", r"\1 way home", text)  # "on the way back
+    # from the zoo": a journey, no place behind
     text = re.sub(r"\b(?:on|at|along|near) the (?:left|right|near|far|outer|inner) (?:edge|border|margin|rim) of the "
                   r"(?:road|street|lane|carriageway|roadway)\b", " ", text)  # riding at the road's edge: its own lane
     text = re.sub(r"\b([ap])\.\s?m\.?(?=\s|$|[,;!?)])", r"\1m", text)  # "after 10 p.m. and": no sentence end

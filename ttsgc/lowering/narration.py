@@ -139,11 +139,17 @@ def _dictated(text: str, notes: list[str]) -> str:
 RECORD_VEHICLE_KEY = re.compile(r"(?<![\w-])(?:veh|vehicle|unit|asset|subject)\s*:\s*(?=[^\s|])", re.I)
 
 
+STATION = re.compile(r"\b([A-Z]{2,})_\d+\b")
+
+
 def _event_record(text: str, notes: list[str]) -> str:
     """'Event: Harsh Braking | 2024-05-14 14:32:07 | Veh: Bus #77 | Spd 62 -> 19 km/h (x3)': a fleet system's
     record dates itself and counts its alerts (no agents), and its vehicle field names the vehicle the record is
     about, the ego; so do a report form's 'Vehicle:' field and a use case's 'Actor:'."""
     text = re.sub(r"\b(\d{1,2}:\d{2}):\d{2}(?:\.\d+)?\b", r"\1", text)  # seconds of a time stamp
+    text = re.sub(r"\b([01]\d|2[0-3])([0-5]\d):[0-5]\d\b", r"\1\2 hrs", text)  # "0457:30": a log's time to the second
+    text = STATION.sub(lambda m: m.group(0) if lexicon().phrases.get((m.group(1).lower(),), ("",))[0] == "agents"
+                       else m.group(1), text)  # "XING_07 PED count=2": a sensor's name, no count (not "NPC_1")
     text = re.sub(r"\b(\d{1,2}:\d{2})\s*[-\u2013]\s*\d{1,2}:\d{2}\b", r"\1", text)  # a span of time
     text = re.sub(r"\b(?:\d{4}-\d{2}-\d{2}|\d{1,2}/\d{1,2}/\d{2,4})\b", " ", text)  # a date
     text = re.sub(r"\(\s*x\s?\d+\s*\)", " ", text)  # "(x3)": an alert's repeats
@@ -201,7 +207,7 @@ def read_narration(prompt: str) -> Narration:
     text = _declared_ego(_ego_made_a_kind(text), notes)
     text = _observed_subject(text, notes)
     text = _learning_agent(text, notes)
-    text = _fleet_unit(text, notes)
+    text = _call_sign_unit(_fleet_unit(text, notes), notes)
     text = _numbered_protagonist(text, notes)
     text = _vehicle_numbers(_abbreviated_bodies(text))
     text = _passengers_driver(_kin_at_the_wheel(text, notes), notes)
@@ -1579,6 +1585,27 @@ def _fleet_unit(text: str, notes: list[str]) -> str:
             return m.group(0)
         return "the ego" if m.group(1) is None or m.group(1).lower() == "the" else f"{m.group(1)} the ego"
     return THE_UNIT.sub(own, text)
+
+
+CALL_SIGN = re.compile(r"(?<![\w/-])((?:[A-Z]{1,5}-?\d{1,3}[A-Z]?|[A-Z][a-z]+-\d{1,3})(?:-\d{1,2})?)\s*\(([^()]{1,40})\)")
+SIGNS_VEHICLE = re.compile(r"\b(?:car|van|ambulance|engine|appliance|pump|tender|bus|coach|lorry|truck|hgv|tanker|"
+                           r"artic|tipper|minibus|cruiser|suv|irv|rpu|patrol|traffic|vehicle|unit|motorcycle|bike)s?\b",
+                           re.I)  # what a call sign's brackets say it is ("MP21 (marked patrol car)", "E21 (fire engine)")
+
+
+def _call_sign_unit(text: str, notes: list[str]) -> str:
+    """'2214 MP21 (marked patrol car) WB Station Rd ... passed us', 'INC 0457 / E21 (fire engine) mobile on blues ...
+    car directly ahead of E21': a radio or dispatch log names the unit it follows by a call sign, with what it is in
+    brackets, and says the sign again for it: that unit is the ego. Only one sign so described, in a text with no
+    ego, numbered vehicle or fleet unit of its own (a crash report's 'V2 (Royal Mail van)' labels a vehicle)."""
+    signs = {m.group(1) for m in CALL_SIGN.finditer(text) if SIGNS_VEHICLE.search(m.group(2))}
+    if len(signs) != 1 or re.search(r"\bego\b|\b(?:v|veh|vehicle)\s?#?\d\b|\bsubject\s+veh|\bunit\b", text, re.I):
+        return text
+    sign = signs.pop()
+    notes.append(f"read the log's unit {sign} as the ego")
+    first = next(m for m in CALL_SIGN.finditer(text) if m.group(1) == sign)
+    text = text[:first.start()] + f"the ego, a {first.group(2)}," + text[first.end():]
+    return re.sub(rf"(?<![\w/-])(?:the\s+)?{re.escape(sign)}(?![\w-])", "the ego", text)
 
 
 def _crews_vehicle(text: str, notes: list[str]) -> str:

@@ -11257,7 +11257,10 @@ OFF_ROAD_VANTAGES = (("helicopter",), ("chopper",), ("sky", "eye"), ("eye", "in"
                      ("traffic", "control"), ("the", "flagger"), ("a", "flagger"), ("stop", "go", "board"),
                      ("marshalling",), ("marshaling",), ("cctv",), ("waiting", "for", "my", "lift"),
                      ("walking", "home"), ("walking", "the", "dog"), ("we", "observed"), ("we", "recorded"),
-                     ("we", "noted"), ("site", "visit"), ("during", "our", "visit"))
+                     ("we", "noted"), ("site", "visit"), ("during", "our", "visit"), ("sat", "in", "the", "shelter"),
+                     ("from", "the", "shelter"), ("out", "for", "my", "morning", "run"), ("out", "for", "a", "run"),
+                     ("out", "for", "my", "run"), ("on", "my", "morning", "run"), ("jogger", "here"),
+                     ("i", "was", "out", "running"), ("i", "was", "jogging"), ("while", "jogging"))
 SPEAKER_PLACES = {"of", "behind", "beside", "past", "passed", "to", "at", "into", "towards", "toward", "overtook",
                   "overtakes", "overtake", "hit", "cut", "followed", "follows", "by", "alongside", "round", "around",
                   "with", "near"}  # "in front of me", "cut us up", "came at me": someone is placed by the speaker
@@ -12193,14 +12196,16 @@ def _the_camera_car(r: _Reader) -> None:
         _now_the_ego(r, filmers[0], "the clip is filmed from its camera")
 
 
-FILTERING = {"filter", "filters", "filtering", "filtered"}
+FILTERING = {"filter", "filters", "filtering", "filtered", "splitting"}  # ("Splitting on the 5 at maybe 30")
 SCOOTING = {"scoot", "scoots", "scooted", "scooting"}  # ("scooted home down Station Rd": on an e-scooter)
 RIDING = {"ride", "rides", "riding", "rode"} | SCOOTING
 
 
-RIDERS_CONTROLS = (("front", "brake"), ("pillion",))
-# what only one on two wheels handles ('I had to grab a handful of front brake'), one on a bicycle read before (a
-# car's driver speaks of a throttle, a visor, rear brakes too)
+RIDERS_CONTROLS = (("front", "brake"), ("pillion",), ("cbt",), ("mod", "1"), ("mod", "2"), ("mod", "two"),
+                   ("bike", "test"), ("moped", "test"), ("motorcycle", "test"), ("motorbike", "test"))
+# what only one on two wheels handles ('I had to grab a handful of front brake') or sits a test on ('the road ride
+# part of my CBT', 'PASSED MY MOD 2'), one on a bicycle read before (a car's driver speaks of a throttle, a visor,
+# rear brakes too)
 
 
 RIDERS_HANDLING = (("throttle",), ("roll", "off"), ("lead", "rider"), ("the", "bike", "goes"), ("your", "bike"),
@@ -12675,7 +12680,51 @@ def _a_drivers_introduction(r: _Reader) -> Entity | None:
     return vehicles[0] if all(t.word in named or t.word in vehicles[0].aliases for t in line) else None
 
 
-OWN_VEHICLES_STATE = {"stop", "try"}  # "Taxi stopped at the stop sign on Oak.": where the speaker's own stands
+DRIVEN_BY = {"driving", "drivin", "drive", "drove", "running", "run", "ran", "had", "bobtailing", "piloting",
+             "operating", "crewing"}  # "Driving the 46A bus", "Running a reefer", "Had the coach today"
+TELLER_IN = {"i'm", "im", "we're", "i", "we", "was", "were", "am", "are", "sat", "sitting", "me", "us"}  # "I'm in the
+# Freightliner", "we were sat in the ambulance"
+NOT_OF_A_VEHICLE_NAMED = {",", ".", "behind", "past", "beside", "by", "after", "of", "to", "into", "from", "at", "for",
+                          "round", "around", "over", "alongside", "than", "and", "with", "on", "off", "up", "down",
+                          "out", "towards", "toward", "near", "next", "front", "lane", "me", "us", "him", "her",
+                          "when", "as", "while", "whilst", "then", "but", "so", "because", "until", "till", "before",
+                          "if", "that", "which", "who", "where", "once", "since", "like", "through", "along"}
+# (what ends the words naming the vehicle: "driving behind the bus", "running into the back of a lorry", "I was
+# driving when a car pulled out")
+
+
+def _driven_by_the_speaker(r: _Reader) -> Entity | None:
+    """'Driving the 46A bus into town ...', 'Running a reefer outta Salinas ...', 'Had the coach today', 'I'm in the
+    Freightliner ...': one vehicle the speaker (said as 'I' or 'we', or by no subject at a sentence's opening) drives,
+    runs or sits in is the speaker's own, the ego, whatever it is (not 'he was driving the truck', 'the man
+    driving the van', 'behind the bus I was driving' placed by another)."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    words = [t.word for t in r.tokens]
+    if "ego" in words or ego is not None and ego.head not in SPEAKING_SELF and not _supplied(r, ego) or \
+            not set(words) & (SPEAKING_SELF | {"i'm", "we're"}) and ego is not None and not _supplied(r, ego):
+        return None  # (an account of no one named may be the speaker's: "Running a reefer ... Sitting at the red")
+    driven = []
+    for e in r.entities:
+        k = e.said_at
+        if e.is_ego or e.count not in (0, 1) or e.generic or k < 1 or r.tokens[k].plural or e.relative_to is not None or \
+                e.type not in V.EGO_TYPES - V.VULNERABLE_TYPES or e.features & (PLACE_FEATURES | PLACED_HOW):
+            continue
+        j = k - 1
+        while j > 0 and k - j < 6 and words[j] not in DRIVEN_BY | {"in"} | NOT_OF_A_VEHICLE_NAMED:
+            j -= 1  # ("the 46A bus", "the marked police X5", "a 26-foot box truck")
+        verb = words[j]
+        before = words[max(0, j - 2):j]
+        if r.tokens[j].sentence != r.tokens[k].sentence:
+            continue
+        by_the_speaker = before[-1:] and before[-1] in SPEAKING_SELF | {"i'm", "we're"} or \
+            before in (["i", "was"], ["we", "were"], ["i", "am"], ["we", "are"]) or \
+            _opens_its_sentence(r.tokens, r.tokens[j])
+        if verb in DRIVEN_BY and by_the_speaker or verb == "in" and before[-1:] and before[-1] in TELLER_IN:
+            driven.append(e)
+    return driven[0] if len(driven) == 1 else None
+
+
+OWN_VEHICLES_STATE = {"stop", "try", "relate"}  # "Taxi stopped at the stop sign on Oak.": where the speaker's own stands
 
 
 def _opens_on_the_speakers_vehicle(r: _Reader) -> Entity | None:
@@ -12692,10 +12741,14 @@ def _opens_on_the_speakers_vehicle(r: _Reader) -> Entity | None:
     opening = [t for t in r.tokens if t.sentence == r.tokens[first.said_at].sentence]
     before = [t.word for t in opening if t.index < first.said_at]
     if opening[0].index != 0 or any(w in DETERMINERS | {"a", "an", "one", "another", "some"} for w in before) or \
-            {t.word for t in opening} & SPEAKING_SELF or r.tokens[first.said_at].plural:
+            {t.word for t in opening if not (t.word == "i" and t.index + 1 < len(r.tokens) and
+                                                r.tokens[t.index + 1].word.isdigit())} & SPEAKING_SELF \
+            or r.tokens[first.said_at].plural:  # (not "I-95": a road's number)
         return None
     later = [t.word for t in r.tokens if t.sentence > opening[-1].sentence]
-    if not set(later) & FIRST_PERSON or {"it", "its"} & set(later) or \
+    ego = next((e for e in r.entities if e.is_ego), None)
+    told_by_no_one = ego is not None and _supplied(r, ego)  # ("Coach full of Year 6s. Waited on red ...")
+    if not (set(later) & FIRST_PERSON or told_by_no_one) or {"it", "its"} & set(later) or \
             any(e is not first and not e.is_ego and e.type == first.type and e.count == 1 for e in r.entities):
         return None  # ("Car stopped at the lights. I went round it": another's; "... a second taxi")
     return first
@@ -12772,8 +12825,11 @@ def _a_drivers_trade(r: _Reader) -> None:
     """'Empty trailer, fog down on the Pennines', 'some four-wheeler dives in front of my bumper', 'in lane one on
     the limiter': a speaker who talks as a truck driver drives a truck, told of by no other name; one who puts out
     a stop arm, or has passengers standing, drives a bus. 'HGV driver here.': one who says so."""
-    introduced = _a_drivers_introduction(r) or _opens_on_the_speakers_vehicle(r)
+    introduced = _a_drivers_introduction(r) or _opens_on_the_speakers_vehicle(r) or _driven_by_the_speaker(r)
     if introduced is not None:
+        if any(e.is_ego and e.actions for e in r.entities):
+            introduced.actions = [a for a in introduced.actions if a[4] not in ("move", "relate")]  # ("Running a
+            # reefer ... waiting to hang a left": the driving is the ego's, told by what it did)
         introduced.count = 1  # ("as a bus driver": a role, counted as no one until it is the speaker's)
         _now_the_ego(r, introduced, "the speaker says first what they drive")
         return
