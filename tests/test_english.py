@@ -13973,3 +13973,29 @@ def test_right_into_me_said_alone_is_no_turn():
                   "doesn't stop. Bam. Right into my rear bumper.") == [
         ("car", "go_straight", "back"), ("car", "stop", "ego")]
     assert agents("At the junction I turned. Right into the high street.") == [("car", "turn_right", "ego")]
+
+
+def test_a_tables_lane_and_relative_cells_place_each_row():
+    assert agents("actor,vehicle,lane,rel_pos,action\nEGO,car,middle,-,straight\nnpc_1,lorry,left,ahead,straight\n"
+                  "npc_2,car,right,level,straight\nnpc_3,car,left,behind ego,straight") == [
+        ("car", "go_straight", "back_left"), ("car", "go_straight", "ego"), ("car", "go_straight", "right"),
+        ("truck", "go_straight", "front_left")]
+
+
+def test_nested_keys_are_one_road_user_each():
+    assert agents("test_case: TC-114\ntitle: cut-in from right\nego:\n  type: car\n  action: keep lane, straight\n"
+                  "actors:\n  - id: npc1\n    type: SUV\n    start: right lane, level with ego\n"
+                  "    action: cuts in to ego lane (lane change left)") == [
+        ("car", "change_lane_to_left", "right"), ("car", "go_straight", "ego")]
+    assert agents('scenario: T-junction, ego on the minor arm\nego: {type: car, action: "stop at give-way line, then '
+                  'turn left"}\nnpc:\n  - {type: truck, from: main road on ego\'s right, action: straight across '
+                  'ego\'s path}') == [
+        ("car", "stop", "ego"), ("car", "turn_left", "ego"), ("truck", "go_straight", "road_of_right_turn")]
+
+
+def test_a_close_pass_is_told_by_a_rider_of_the_vehicle_that_passed():
+    assert agents("Non-emergency ambulance (no lights, no siren) overtook me on a single-track lane near Hawes with "
+                  "about a foot to spare.") == [("ambulance", "go_straight", "ego"), ("cyclist", "go_straight", "front")]
+    assert agents("I had pulled over onto the shoulder and come to a stop so an ambulance running its siren could "
+                  "get by. A red Toyota was right behind the ambulance and didn't ease off at all, just tore past me "
+                  "with less than a foot to spare.")[1] == ("car", "go_straight", "ego")

@@ -813,11 +813,35 @@ COLUMNS = {  # a table's header words, by what the cells under them say
     "role": {"role", "purpose", "function"},
     "speed": {"speed", "velocity", "v", "speed kph", "speed kmh", "speed mph", "speed km h", "init speed",
               "initial speed", "target speed", "v0"},
-    "other": {"start", "start pos", "start position", "position", "pos", "lane", "location", "manoeuvre",
+    "lane": {"lane", "start lane", "lane id", "current lane", "initial lane"},
+    "relative": {"rel", "rel pos", "rel position", "relative position", "relative pos", "position rel ego",
+                 "rel to ego", "relative to ego", "position relative to ego", "rel ego"},
+    "other": {"start", "start pos", "start position", "position", "pos", "location", "manoeuvre",
               "maneuver", "action", "actions", "intent", "behaviour", "behavior", "what", "notes", "note",
               "trigger", "init", "initial", "initial state", "end", "goal", "route", "path", "description", "does",
-              "event", "events", "state", "where", "start lane", "heading", "direction", "origin", "from", "to"},
+              "event", "events", "state", "where", "heading", "direction", "origin", "from", "to"},
 }
+LANE_CELLS = {"left", "right", "middle", "centre", "center", "inside", "outside", "fast", "slow", "nearside",
+              "offside", "overtaking", "passing", "leftmost", "rightmost"}
+OWN_LANE_CELLS = {"same", "ego", "ego lane", "same as ego", "same lane", "ego's", "ego's lane", "own"}
+RELATIVE_CELLS = {"ahead": "ahead of the ego", "behind": "behind the ego", "level": "level with the ego",
+                  "alongside": "level with the ego", "beside": "level with the ego", "abreast": "level with the ego"}
+
+
+def _cell_said(kind: str | None, value: str) -> str:
+    """A lane or a place relative to the ego said bare in its column ('right' under 'lane', 'level' under
+    'rel_pos'), said as a sentence would say it."""
+    bare = value.strip().lower()
+    if kind == "lane":
+        if bare in LANE_CELLS:
+            return f"in the {bare} lane"
+        if bare in OWN_LANE_CELLS:
+            return "in the ego's lane"
+        if bare.isdigit():
+            return f"in lane {bare}"
+    if kind == "relative" and bare in RELATIVE_CELLS:
+        return RELATIVE_CELLS[bare]
+    return value
 SEPARATOR_ROW = re.compile(r"^[\s|:+=-]*-[\s|:+=-]*$")
 
 
@@ -868,7 +892,7 @@ def _tables(lines: list[str]) -> list[str]:
                 if kind == "speed" and re.fullmatch(r"\d+(?:\.\d+)?", value):
                     unit = re.search(r"mph|kph|kmh|km ?/ ?h|m ?/ ?s", name.lower())
                     value = f"{value} {unit.group(0) if unit else 'km/h'}"
-                said.append(value)
+                said.append(_cell_said(kind, value))
             subject = cell.get("actor") or ""
             if not subject and said:
                 subject = said.pop(0)
@@ -956,13 +980,82 @@ def _one_vehicle_keyed(lines: list[str]) -> bool:
         not re.search(r"(?i)\b(?:v|veh|vehicle|unit)\s?#?\d\b", "\n".join(lines))
 
 
+NESTED_LINE = re.compile(r"^([ \t]*)(-[ \t]+)?([A-Za-z_][\w -]{0,30}?)[ \t]*:[ \t]*(.*?)[ \t]*$")
+FLOW_PAIR = re.compile(r"\s*([A-Za-z_][\w ]{0,30}?)\s*:\s*(\"[^\"]*\"|'[^']*'|[^,]*)\s*(?:,|$)")
+KEPT_KEY_WORDS = {"from", "to", "towards", "toward", "into", "behind", "ahead"}  # "from: main road on ego's right"
+
+
+def _pairs_said(subject: str, pairs: list[tuple[str, str]]) -> str:
+    """A record's keys and values as one line: 'npc1: SUV, in the right lane, level with ego, cuts in'; its id or
+    name is the subject (else the key it hangs under, else its type), its type said first."""
+    kinds = [(_column(key), key, value.strip().strip("\"'")) for key, value in pairs]
+    named = next((v for kind, _, v in kinds if kind == "actor" and v), "") or subject
+    types = [v for kind, _, v in kinds if kind == "type" and v]
+    rest = [f"{key} {v}" if key.lower() in KEPT_KEY_WORDS else _cell_said(kind, v) for kind, key, v in kinds
+            if kind not in ("actor", "type") and v]
+    if not named:
+        named, types = (types[0], types[1:]) if types else ("", types)
+    said = ", ".join(types + rest)
+    return f"{named}: {said}" if named and said else named or said
+
+
+def _nested_keys(text: str) -> str:
+    """A record written as nested keys ('ego:' over '  type: car' and '  action: straight'; 'actors:' over '  - id:
+    npc1' and its keys; '{type: truck, from: main road on ego's right}') read as one line a road user, as a
+    table's rows are."""
+    lines = text.splitlines()
+    out: list[str] = []
+    k = 0
+    while k < len(lines):
+        m = NESTED_LINE.match(lines[k])
+        flow = m and re.fullmatch(r"\{(.*)\}", m.group(4)) if m else re.fullmatch(r"\s*-\s*\{(.*)\}\s*", lines[k])
+        if flow:
+            pairs = FLOW_PAIR.findall(flow.group(1))
+            out.append(_pairs_said(m.group(3) if m and not m.group(2) else "", pairs))  # "ego: {type: car, ...}"
+            k += 1
+            continue
+        if m is None or m.group(4) or m.group(2):
+            out.append(lines[k])
+            k += 1
+            continue
+        indent = len(m.group(1).expandtabs())
+        children = []
+        j = k + 1
+        while j < len(lines) and (not lines[j].strip() or len(lines[j]) - len(lines[j].lstrip()) > indent):
+            children.append(lines[j])
+            j += 1
+        children = [c for c in children if c.strip()]
+        if not children or not all(NESTED_LINE.match(c) or re.fullmatch(r"\s*-\s*\{.*\}\s*", c) for c in children):
+            out.append(lines[k])
+            k += 1
+            continue
+        if any(c.lstrip().startswith("-") for c in children):  # "actors:" over items: each item a line of its own
+            item: list[tuple[str, str]] = []
+            for c in children:
+                cm = NESTED_LINE.match(c)
+                if cm is None:
+                    out.extend([_pairs_said("", item)] if item else [])
+                    item = []
+                    out.append(_nested_keys(c))
+                    continue
+                if cm.group(2) and item:
+                    out.append(_pairs_said("", item))
+                    item = []
+                item.append((cm.group(3), cm.group(4)))
+            out.extend([_pairs_said("", item)] if item else [])
+        else:  # "ego:" over its keys
+            out.append(_pairs_said(m.group(3), [(cm.group(3), cm.group(4)) for cm in map(NESTED_LINE.match, children)]))
+        k = j
+    return "\n".join(out)
+
+
 def _lines(text: str) -> str:
     """Notes written one item a line ('Ego: straight', 'Child| runs into road', '- fire engine: behind ego')
     read as sentences: the key is the subject of its line ('Ego is straight'); 'Stage 2:' starts a stage;
     'Other actors: none' says there are none; a title line ('Case: child after ball') is dropped."""
     text = re.sub(r"\b[vV]\s?=\s?(\d{1,3}(?:\.\d+)?)\s?(km/h|kph|kmh|mph|m/s)", r"at \1 \2", text)  # "lane keep,
     # v=60 km/h": a speed, no vehicle called v
-    text = _lane_keys(TEST_CODE_KEY.sub("", text))
+    text = _lane_keys(TEST_CODE_KEY.sub("", _nested_keys(text) if "\n" in text else text))
     if re.search(r":[ \t]+-[ \t]+\S", text):  # "Constraints: - 3 lanes, ego in the middle - 3 stopped cars ahead":
         text = re.sub(r"[ \t]+-[ \t]+(?=[A-Za-z0-9])", "\n- ", text)  # a dashed list run on in one line, an item a line
     if "\n" not in text.strip() and len(INLINE_KEY.findall(text)) >= 2:

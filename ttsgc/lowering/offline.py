@@ -11876,6 +11876,37 @@ PASSING_ME = {"overtook", "overtakes", "overtaking", "passed", "passes", "passin
               "cuts", "clipped", "hit", "missed", "doored", "alongside"}  # what a driver does to a rider it meets
 
 
+CLEARANCES = (("inches",), ("inch",), ("a", "foot"), ("a", "hand's", "width"), ("cm",), ("half", "a", "metre"),
+              ("half", "a", "meter"), ("to", "spare"), ("barely", "any", "room"), ("hardly", "any", "room"),
+              ("barely", "any", "gap"), ("hardly", "any", "gap"), ("no", "room"), ("a", "whisker"),
+              ("had", "me", "off"), ("into", "the", "verge"), ("into", "the", "gutter"), ("off", "my", "shoulder"),
+              ("off", "my", "elbow"), ("of", "clearance"))
+PASSED = {"overtook", "overtaking", "passed", "passing", "buzzed", "squeezed", "past"}
+
+
+def _passed_too_close(r: _Reader) -> int | None:
+    """'A grey BMW overtook me leaving about a hand's width', 'came past me with literally inches to spare', 'passed
+    me ... close enough that the spray nearly had me off': a close pass, told by the one passed, who rides (a
+    driver passed is not measured in inches); the sentence it is told in, or None."""
+    words = [t.word for t in r.tokens]
+    for k, w in enumerate(words):
+        if w in PASSED and words[k + 1:k + 2] in (["me"], ["us"]):
+            sentence = [t.word for t in r.tokens if t.sentence == r.tokens[k].sentence]
+            if _says_any(sentence, CLEARANCES):
+                return r.tokens[k].sentence
+    return None
+
+
+def _the_close_passer(r: _Reader) -> Entity | None:
+    """'A red Toyota was right behind the ambulance and just tore past me with less than a foot to spare': the
+    vehicle a close pass is told of is the first named in its sentence, wherever it is placed."""
+    sentence = _passed_too_close(r)
+    return None if sentence is None else next(
+        (e for e in sorted(r.entities, key=lambda e: e.said_at) if not e.is_ego and e.said_at >= 0 and
+         e.type in V.EGO_TYPES - V.VULNERABLE_TYPES and e.count == 1 and e.parent is None and
+         r.tokens[e.said_at].sentence == sentence and any(a[4] not in ("stop", "try") for a in e.actions)), None)
+
+
 def _the_teller_rides(r: _Reader) -> bool:
     """'I was riding', 'we were riding', 'I had to ride into the gutter', 'Riding west into the sun when ...': the
     teller rides (not 'a pickup was riding my bumper', 'a boda boda was riding on the shoulder')."""
@@ -11905,9 +11936,9 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # ("swung left directly in front of my bike", "turns left across my line")
     met = met or _says_any(words, PEDAL_PHRASES) and bool(set(words) & (PASSING_ME | {"past"}))  # "sat off my back
     # wheel, then flew past with inches to spare": passed, the rider said by the bike
-    plain = _says_any(words, PEDAL_PHRASES) or _the_teller_rides(r) and met  # "Riding west into the low sun when a
-    # Corsa ... turned right across me", "came up behind me in the cycle lane" (not "Riding along a street, a taxi
-    # ahead of me stopped, so I went round it": the teller's own ride, told of no one met)
+    plain = _says_any(words, PEDAL_PHRASES) or _passed_too_close(r) is not None or _the_teller_rides(r) and met
+    # ("Riding west into the low sun when a Corsa ... turned right across me", "came up behind me in the cycle lane";
+    # not "Riding along a street, a taxi ahead of me stopped, so I went round it": the teller's own ride, no one met)
     own_motor = any(w in MOTOR_WORDS and set(words[max(0, k - 3):k]) & {"my", "our", "e", "on", "riding"}
                     for k, w in enumerate(words))  # "on my e-scooter", "riding the lime scooter", "on a Bird scooter"
     # (also "the guy on the moped", which leaves the teller as before: at a wheel)
@@ -11941,7 +11972,7 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # across the cycle lane": the one vehicle, standing)
     if not movers:
         return
-    subject = _the_one_reported(r, vehicles) or movers[0]
+    subject = _the_one_reported(r, vehicles) or _the_close_passer(r) or movers[0]
     own = ego.features & set(SEEN_THE_OTHER_WAY)
     if _says_any(words, (("i", "was", "crossing"), ("i", "crossed"), ("toucan",))):
         own = {"crosswalk"}  # "I was crossing at the toucan crossing when a BMW ran the red": on the crossing
