@@ -13999,3 +13999,45 @@ def test_a_close_pass_is_told_by_a_rider_of_the_vehicle_that_passed():
     assert agents("I had pulled over onto the shoulder and come to a stop so an ambulance running its siren could "
                   "get by. A red Toyota was right behind the ambulance and didn't ease off at all, just tore past me "
                   "with less than a foot to spare.")[1] == ("car", "go_straight", "ego")
+
+
+def test_the_bike_the_teller_rides_with_no_word_of_pedals_is_a_motorbike():
+    assert agents("Jogger with headphones in ran out from between parked vans on my left, right in front of the bike. "
+                  "Locked the back up and stopped with about a foot to spare.") == [
+        ("motorcycle", "stop", "ego"), ("pedestrian", "cross_the_road", "front_left")]
+    assert ("motorcycle", "go_straight", "back_right") in agents(
+        "Tonight on the dual carriageway, the motorbike that came up behind you in the right-hand lane and went past, "
+        "you didn't spot it in your mirror at all, did you?")
+
+
+def test_the_one_named_first_behind_one_named_after_it_is_the_ego():
+    assert agents("A car travels in the left lane behind a lorry.") == [
+        ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+    assert agents("In the picture, a fire engine with its blue lights on is coming up fast behind the red car on a "
+                  "dual carriageway. The red car moves into the left lane to let it through.") == [
+        ("car", "change_lane_to_left", "ego"), ("firetruck", "go_straight", "back")]
+
+
+def test_a_problems_reaction_time_keeps_the_subject_of_the_next_verb():
+    assert agents("Car A is travelling at 22 m/s in the right-hand lane of a two-lane dual carriageway. An ambulance "
+                  "comes up behind it in the same lane at 34 m/s. When the ambulance is 150 m behind, the driver of car "
+                  "A notices it and, after a reaction time of 1.2 s, moves over into the left-hand lane.") == [
+        ("ambulance", "go_straight", "back"), ("car", "change_lane_to_left", "ego")]
+
+
+def test_a_patrols_unit_said_with_its_car_in_brackets_is_the_ego():
+    assert agents("Unit 4 (marked car) en route NB A38. Red Audi A3 just ahead of us in the n/s lane pulled out "
+                  "into our lane.") == [("car", "change_lane_to_right", "front_left"), ("police", "go_straight", "ego")]
+    assert agents("0040 hrs, dark, very heavy rain. Unit 6 (marked) NB Station Rd, 30 mph limit. Ped, IC3 female, "
+                  "dark coat, came out between parked vehicles and walked across in front of unit. Unit then stopped, "
+                  "no contact.") == [
+        ("pedestrian", "cross_the_road", "front"), ("police", "go_straight", "ego"), ("police", "stop", "ego")]
+    assert ("truck", "go_straight", "front") in agents(
+        "Unit 22 (marked ARV) on blues to Grade 1, A14 WB, 2 lanes, unit in lane 1. Slow skip lorry ahead in lane 1, "
+        "unit pulled out into lane 2 to pass.")
+
+
+def test_a_route_ridden_with_its_driver_said_bare_is_the_ego_bus():
+    assert agents("Riding the 22 down Mission this afternoon and a kid on a bike came flying out of a driveway on the "
+                  "right and straight across the street in front of us. Driver hit the brakes and we stopped maybe "
+                  "two feet from him.") == [("bus", "stop", "ego"), ("cyclist", "go_straight", "front_right")]

@@ -2100,6 +2100,9 @@ def tokenize(text: str) -> list[Token]:
                   lambda m: f"{'left' if m.group(1) == 'l' else 'right'} {m.group(2)}", text)  # "R kerb", "L lane"
     text = re.sub(r"km\s*/\s*h|kmph|kph", " kmh ", text)
     text = re.sub(r"\bmiles? (?:an|a|per) hour\b", "mph", text)  # "a twenty mile an hour limit", as said aloud
+    text = re.sub(r",?\s*after (?:a (?:reaction|thinking|perception[- ]reaction) time of|reacting for|a delay of) "
+                  r"[\d.]+ ?s(?:ec(?:ond)?s?)?\b,?", " ", text)  # "notices it and, after a reaction time of 1.2 s,
+    # moves over": a problem's timing, between a verb and its subject's next one
     text = re.sub(r"(^|[.!?]\s+)right (into|onto|through|across) (?=(?:my|me|our|us|his|her|him|its|their|them|the "
                   r"(?:back|rear|side))\b)", r"\1\2 ", text)  # "Bam. Right into my rear bumper.": said hard, no turn
     text = re.sub(r"\b(on|the) way back(?= (?:from|to|home|into|after)\b)", r"\1 way home", text)  # "on the way back

@@ -236,14 +236,15 @@ ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|do
                       r"(?:(?:was|were|am|are)\s+(?:on|in|riding|sitting|sat)|ride|rode|took|caught)\b|"
                       r"on\s+which\s+(?:i|we)\s+(?:was|were)\s+(?:a\s+)?passengers?\b)", re.I)
 # ("from the bus window I watched", "the bus I was on", "the route 47 bus, on which I was a passenger")
-ROUTE_RIDDEN = re.compile(r"\b(on|aboard|about|regarding)\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b(?![\s-]*(?:mph|km|"
+ROUTE_RIDDEN = re.compile(r"\b(on|aboard|about|regarding|riding|rode|caught|boarded)\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b(?![\s-]*(?:mph|km|"
                           r"kph|miles?|m|metres?|meters?|feet|ft|yards?|%|am|pm|tonnes?|tons?|foot|lanes?|limit|zone|"
                           r"[:.]\d))", re.I)
 ROUTE_DRIVER = re.compile(r"\bthe\s+(?:number\s+)?\d{1,3}[a-z]?\s+driver\b|"
                           r"\bdriver\s+of\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b" + NOT_A_QUANTITY, re.I)
 # ("the 22 driver", "driver of the 9 came into the stop")
 ROUTE_TOLD = re.compile(r"\b(?:upstairs|downstairs|top\s+deck|up\s+top|(?:our|your)\s+driver|the\s+driver(?!\s+(?:in|"
-                        r"ahead|behind|of|next|beside|to)\b)|passenger\s+on)\b", re.I)
+                        r"ahead|behind|of|next|beside|to)\b)|passenger\s+on|(?:^|(?<=[.!?]\s))driver(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b))\b",
+                        re.I)  # ("Driver hit the brakes": a sentence that opens on the driver, unnamed)
 # a number ridden is a bus route when its driver is another ("the driver had to brake"; not "the driver in front")
 OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
 OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|city\s+|double[\s-]decker\s+)?"
@@ -251,8 +252,9 @@ OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|c
                      r"\b(?:the\s+)?number\s+\d{1,3}[a-z]?(?:\s+bus)?\b|\broute\s+\d{1,3}\b(?:\s+bus)?|"
                      r"\bthe\s+(?:first\s+|last\s+)?\d{1,3}[a-z]?\b(?=\s+(?:on|out|from|today|this|stopped|pulled|was|"
                      r"had|at|into))", re.I)
-BUS_DRIVER = re.compile(r"\b(?:(?:our|your|my)\s+(?:bus\s+|coach\s+)?driver|the\s+(?:bus|coach)\s+driver)\b"
-                        r"(?!\s+(?:of|in|ahead|behind|next)\b)", re.I)
+BUS_DRIVER = re.compile(r"\b(?:(?:our|your|my)\s+(?:bus\s+|coach\s+)?driver|the\s+(?:bus|coach)\s+driver|"
+                        r"(?:^|(?<=[.!?]\s))driver)\b(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b)", re.I)
+# ("Driver hit the brakes": the passengers' driver, said bare at a sentence's opening)
 
 
 ROUTE_NUMBER = re.compile(r"\b([Tt])he (\d{2,3}[a-z]?) (?=(?:turned|pulled|stopped|came|went|braked|drove|moved|"
@@ -1134,7 +1136,8 @@ def _designations_spelt_alike(text: str) -> str:
     crash database's 'Participant 3' is its P3."""
     text = re.sub(r"\bparticipant\s?[#-]?\s?(\d{1,2})\b", r"P\1", text, flags=re.I)
     patrols = set(re.findall(r"\bUnit\s+(\d{1,3})\b(?=\s*(?:at scene|on scene|attending|in attendance|arrived|"
-                             r"\(marked\)|,\s*marked\s*,))", text, flags=re.I))
+                             r"\((?:marked|traffic|area|response|patrol|police|arv|irv|rpu)\b[^()]*\)|,\s*marked\s*,))",
+                             text, flags=re.I))  # ("Unit 9 (marked car)", "Unit 22 (traffic car)")
     for number in patrols:  # a patrol's own unit by its call sign ("Unit 7 on scene", "Unit 9 (marked) responding
         text = re.sub(rf"\b(Unit)\s+{number}\b", r"\1", text, flags=re.I)  # ... Unit 9 continued"): no crash
         # report's V7
@@ -1558,7 +1561,8 @@ def _learning_agent(text: str, notes: list[str]) -> str:
     return THE_AGENT.sub("the ego", text)
 
 
-FLEET_UNIT = re.compile(r"\bunit\s*(?:no\.?\s*|#\s*)?(\d{1,5})\b(?:\s*\(([^()]{1,40})\))?", re.I)
+FLEET_UNIT = re.compile(r"\bunit\s*(?:(?:no\.?\s*|#\s*)?(\d{1,5})\b|(?=\())(?:\s*\(([^()]{1,40})\))?", re.I)
+# ("Unit 4417 (tractor-trailer)"; "Unit (marked car)": a patrol's call sign, its number taken off before)
 THE_UNIT = re.compile(r"(?<![\w-])(?:(the|of|behind|beside|past|around|passed|struck|hit|towards|toward|to|with|at|"
                       r"alongside)\s+)?unit\b(?!\s*(?:no\.?\s*|#\s*)?\d)", re.I)
 
@@ -1567,20 +1571,21 @@ def _fleet_unit(text: str, notes: list[str]) -> str:
     """'Unit 4417 (tractor-trailer) in right lane ... cut in ahead of the unit. Driver braked': a fleet's record
     names its own vehicle by a unit number, and that vehicle is the ego; only where the text names no ego, no
     numbered vehicle and one unit alone (a crash report's Unit 1 and Unit 2 are its vehicles' labels)."""
-    units = {m.group(1) for m in FLEET_UNIT.finditer(text)}
+    units = {m.group(1) for m in FLEET_UNIT.finditer(text) if m.group(1) or SIGNS_VEHICLE.search(m.group(2) or "")}
     if len(units) != 1 or re.search(r"\bego\b|\b(?:v|veh|vehicle)\s?#?\d\b|\bsubject\s+veh", text, re.I) or \
             re.search(FLEET_UNIT.pattern + r"\s*(?:reports|reporting|at scene|on scene|attend)", text, re.I):
         return text  # ("Unit 12 at scene ... V1 stationary at red": the unit reports a crash of vehicles it numbers)
     notes.append("read the record's unit as the ego")
     body = FLEET_UNIT.search(text).group(2) or ""
-    text = FLEET_UNIT.sub(lambda m: f"the ego {m.group(2)}" if m.group(2) else "the ego", text, count=1)
+    text = FLEET_UNIT.sub(lambda m: "the ego" if not m.group(2) else f"the ego {m.group(2)}" if m.group(1) else
+                          f"the ego, a {m.group(2)},", text, count=1)  # ("Unit (marked car)": a patrol's own car)
     text = re.sub(r"(?:^|(?<=[.;!?]\s))[Dd]river\b" + DRIVERS_WORDS_KEY, "the ego", text, flags=re.M)  # "Driver
     # braked", said bare (not "Driver comment: I had a green", the key of what the driver told)
     if re.search(r"truck|trailer|lorry|semi|hgv|rig\b", body, re.I):
         text = re.sub(r"\bthe (?:cab|trailer|tractor)\b", "the ego", text, flags=re.I)  # "level with the cab": its own
 
     def own(m: re.Match) -> str:  # "the unit", "in front of unit", "Unit then braked"; not "a tractor unit"
-        opening = not text[:m.start()].rstrip() or text[:m.start()].rstrip()[-1] in ".;:!?"
+        opening = not text[:m.start()].rstrip() or text[:m.start()].rstrip()[-1] in ".;:!?,"  # (", unit pulled out")
         if m.group(1) is None and not opening:
             return m.group(0)
         return "the ego" if m.group(1) is None or m.group(1).lower() == "the" else f"{m.group(1)} the ego"
@@ -1589,7 +1594,7 @@ def _fleet_unit(text: str, notes: list[str]) -> str:
 
 CALL_SIGN = re.compile(r"(?<![\w/-])((?:[A-Z]{1,5}-?\d{1,3}[A-Z]?|[A-Z][a-z]+-\d{1,3})(?:-\d{1,2})?)\s*\(([^()]{1,40})\)")
 SIGNS_VEHICLE = re.compile(r"\b(?:car|van|ambulance|engine|appliance|pump|tender|bus|coach|lorry|truck|hgv|tanker|"
-                           r"artic|tipper|minibus|cruiser|suv|irv|rpu|patrol|traffic|vehicle|unit|motorcycle|bike)s?\b",
+                           r"artic|tipper|minibus|cruiser|suv|irv|arv|rpu|patrol|traffic|vehicle|unit|motorcycle|bike)s?\b",
                            re.I)  # what a call sign's brackets say it is ("MP21 (marked patrol car)", "E21 (fire engine)")
 
 

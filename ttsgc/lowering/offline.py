@@ -10831,6 +10831,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _the_named_turn_is_anothers(r)
     _a_riders_ego(r)
     _the_tellers_mount(r)
+    _the_tellers_bike(r)
     _the_camera_car(r)
     _an_instance_given(r)
     _taken_back(r)
@@ -11080,6 +11081,14 @@ def _the_one_told_from(r: _Reader, driver_named: bool) -> Entity | None:
             return watched  # the first vehicle one watching from off the road tells of, whatever it does (one
             # "we are following" from the air is read as the speakers' own)
     named_first = next((e for e in ordered if not e.is_ego), None)
+    if named_first is not None and named_first.type not in V.VULNERABLE_TYPES and \
+            named_first.relative_to is not None and named_first.relative_how in ("ahead", "behind") and \
+            named_first.relative_to.said_at > named_first.said_at and not named_first.relative_to.definite and \
+            any(a[4] not in ("stop", "try") for a in named_first.actions) and \
+            _may_drive_the_scene(replace(named_first, relative_to=None), own_lane=True):
+        return named_first  # "Car A travels in the left lane of a motorway behind a lorry": the one the text opens
+        # on, moving, placed by one named after it, is the one it follows (not the lorry, as an anchor; but "a fire
+        # engine is coming up behind the red car": one said with 'the' is the one the scene knows)
     anchor = next((e for e in ordered if not e.is_ego and _may_drive_the_scene(e, own_lane=e is named_first) and (
         any(o.relative_to is e and o.relative_how not in RELATIONS_TO_THE_EGO for o in r.entities) or
         e.said_at >= 0 and any(t.possessive and t.word == e.head and r.tokens[t.index - 1].word == "the"
@@ -12284,6 +12293,38 @@ def _a_riders_ego(r: _Reader) -> None:
     if said or the_rider or geared or instructed or ego.head == "rider":
         ego.type = "motorcycle"
 
+
+
+TELLERS_BIKE = {"bike", "motorbike", "motorcycle", "moto"}
+
+
+def _the_tellers_bike(r: _Reader) -> None:
+    """'Jogger ran out right in front of the bike. Locked the back up and stopped', 'like an idiot I took the bike in',
+    'keep the bike upright' (said to 'you'): a bike named with 'the' or 'my' by one who tells their own ride, with no
+    one on two wheels named before it and no word of pedals, is the teller's motorbike: the ego (a bicycle rider's
+    report of a driver is read before, by its pedals, cycle lanes, close passes)."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    words = [t.word for t in r.tokens]
+    if ego is None or ego.type != "car" or not (ego.head in SELF_NAMES or _supplied(r, ego)) or any(
+            name.split()[-1] not in SELF_NAMES | {"ego"} for name in ego.aliases if name) or \
+            not set(words) & (SPEAKING_SELF | {"you", "your", "you're"}) or set(words) & PEDAL_WORDS or \
+            _says_any(words, PEDAL_PHRASES):
+        return
+    bikes = [e for e in r.entities if not e.is_ego and e.type in ("cyclist", "motorcycle") and e.head in TELLERS_BIKE
+             and e.count == 1 and e.said_at > 0 and not r.tokens[e.said_at].plural and
+             r.tokens[e.said_at - 1].word in ("the", "my", "our", "your") and not e.features and
+             not any(a[4] not in ("move", "try") for a in e.actions)]  # (not "the motorbike that came up behind you")
+    if len(bikes) != 1 or any(e.type in ("cyclist", "motorcycle") and e is not bikes[0] and
+                              0 <= e.said_at < bikes[0].said_at for e in r.entities):
+        return  # ("a cyclist ... the bike": one named before, said again)
+    bike = bikes[0]
+    for e in r.entities:
+        if e.relative_to is bike:
+            e.relative_to = ego  # "ran out right in front of the bike": in front of the teller
+    ego.type = "motorcycle"
+    ego.actions += [a for a in bike.actions if not any(b[0] == a[0] for b in ego.actions)]
+    r.entities.remove(bike)
+    r.notes.append(f"read the '{bike.head}' the teller rides as the ego's, a motorbike")
 
 
 MOUNTED_BY = {"me", "i", "i'm", "im", "was", "we", "we're", "us", ","}  # the teller said just before 'on a ...'
