@@ -14041,3 +14041,26 @@ def test_a_route_ridden_with_its_driver_said_bare_is_the_ego_bus():
     assert agents("Riding the 22 down Mission this afternoon and a kid on a bike came flying out of a driveway on the "
                   "right and straight across the street in front of us. Driver hit the brakes and we stopped maybe "
                   "two feet from him.") == [("bus", "stop", "ego"), ("cyclist", "go_straight", "front_right")]
+
+
+def test_a_flagger_at_the_board_watches_from_off_the_road():
+    assert agents("Lakeshore between 5th and 6th, parking lane's coned off for the vault work so traffic's running "
+                  "right along the curb. Box truck rolled through and his mirror came within a foot of a jogger on "
+                  "the sidewalk right next to him on his right. Told the foreman we need to move the barrels "
+                  "out.")[-1] == ("truck", "go_straight", "ego")
+
+
+def test_brought_to_rest_is_a_stop():
+    assert agents("A car is travelling at 15 m/s along a straight country road when its driver hears the siren of a "
+                  "fire engine coming towards it at 22 m/s. The two vehicles are 180 m apart at this moment. After a "
+                  "reaction time of 0.9 s the driver brakes uniformly and brings the car to rest in 30 m.") == [
+        ("car", "stop", "ego"), ("firetruck", "go_straight", "front_left")]
+
+
+def test_one_filtering_in_a_cycle_lane_rides_a_bicycle():
+    assert agents("Left hook on Park Row this morning, 8:20ish. Traffic was crawling and I was filtering up the inside "
+                  "in the cycle lane. I was level with the passenger door of a silver Skoda when it turned left into "
+                  "the Co-op car park across me.") == [("car", "turn_left", "ego"), ("cyclist", "go_straight", "left")]
+    assert agents("Bloke stepped out from between the stationary traffic on Euston Road right in front of me while I "
+                  "was filtering at walking pace. Inches from my front wheel.") == [
+        ("motorcycle", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]

@@ -11264,6 +11264,9 @@ OFF_ROAD_VANTAGES = (("helicopter",), ("chopper",), ("sky", "eye"), ("eye", "in"
                      ("from", "my", "desk"),
                      ("from", "the", "footbridge"), ("from", "the", "overpass"), ("control", "room"),
                      ("traffic", "control"), ("the", "flagger"), ("a", "flagger"), ("stop", "go", "board"),
+                     ("stop", "go"), ("stop", "slow"), ("my", "paddle"), ("stop", "paddle"), ("my", "board"),
+                     ("my", "stop", "board"), ("stop", "bat"), ("my", "stop", "bat"), ("banksman",), ("the", "foreman"),
+                     ("on", "the", "gate"), ("kerb", "gang"), ("paving", "crew"),
                      ("marshalling",), ("marshaling",), ("cctv",), ("waiting", "for", "my", "lift"),
                      ("walking", "home"), ("walking", "the", "dog"), ("we", "observed"), ("we", "recorded"),
                      ("we", "noted"), ("site", "visit"), ("during", "our", "visit"), ("sat", "in", "the", "shelter"),
@@ -11951,7 +11954,8 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     own_motor = any(w in MOTOR_WORDS and set(words[max(0, k - 3):k]) & {"my", "our", "e", "on", "riding"}
                     for k, w in enumerate(words))  # "on my e-scooter", "riding the lime scooter", "on a Bird scooter"
     # (also "the guy on the moped", which leaves the teller as before: at a wheel)
-    motor = set(words) & (MOTOR_WORDS | FILTERING) and (own_motor or not (plain and any(
+    pedalled = _pedalled(words)
+    motor = (set(words) & MOTOR_WORDS or set(words) & FILTERING and not pedalled) and (own_motor or not (plain and any(
         e.type == "motorcycle" and not e.is_ego for e in r.entities)))  # (not "a moped rider squeezed past me")
     on_a_bike = (set(words) & PEDAL_WORDS or plain or reported_riding or own_bikes) and not motor and \
         not _says_any(words, (("my", "car"), ("i", "was", "driving"), ("i", "drove"), ("my", "van")) + RIDERS_CONTROLS)
@@ -12236,6 +12240,16 @@ def _the_camera_car(r: _Reader) -> None:
         _now_the_ego(r, filmers[0], "the clip is filmed from its camera")
 
 
+CYCLE_WAYS = (("cycle", "lane"), ("bike", "lane"), ("cycle", "track"), ("bike", "path"), ("bike", "box"),
+              ("advanced", "stop", "box"))
+
+
+def _pedalled(words: list[str]) -> bool:
+    """'filtering up the inside in the cycle lane', 'pedalling past the queue': a rider who filters on a bicycle
+    (not 'inches from my front wheel', said on a motorbike too)."""
+    return bool(set(words) & PEDAL_WORDS) or _says_any(words, CYCLE_WAYS)
+
+
 FILTERING = {"filter", "filters", "filtering", "filtered", "splitting"}  # ("Splitting on the 5 at maybe 30")
 SCOOTING = {"scoot", "scoots", "scooted", "scooting"}  # ("scooted home down Station Rd": on an e-scooter)
 RIDING = {"ride", "rides", "riding", "rode"} | SCOOTING
@@ -12266,12 +12280,13 @@ def _a_riders_ego(r: _Reader) -> None:
     said_of_the_ego = ("you", "i", "we", "you're", "i'm", "we're")
     hailed = bool(set(words) & RIDE_HAILING)  # "The rider hit his knee on the seat": the passenger of a ride hailed
     told_by_me = bool(set(words) & FIRST_PERSON)
-    said = any(w in RIDING | FILTERING and not (words[k + 1:k + 2] and words[k + 1] in (  # not "I ride the van"
+    filters = set() if _pedalled(words) else FILTERING
+    said = any(w in RIDING | filters and not (words[k + 1:k + 2] and words[k + 1] in (  # not "I ride the van"
         {"in", "on", "with", "as"} | DETERMINERS | OWNERS)) and (
         words[k - 1:k] and words[k - 1] in said_of_the_ego or words[max(0, k - 2):k] in (
             ["you", "are"], ["i", "am"], ["i", "was"], ["we", "are"], ["we", "were"], ["you", "were"]) or
-        w in FILTERING | SCOOTING | {"riding"} and _opens_its_sentence(r.tokens, r.tokens[k]) and (
-            w in FILTERING or told_by_me) or  # "Filtering past a queue", "Riding along
+        w in filters | SCOOTING | {"riding"} and _opens_its_sentence(r.tokens, r.tokens[k]) and (
+            w in filters or told_by_me) or  # "Filtering past a queue", "Riding along
         # a street ..., a taxi ahead of me stopped"
         not hailed and words[k - 1:k] == ["and"] and not (words[k + 1:k + 2] and words[k + 1] in AUXILIARIES) and any(
             words[j] in said_of_the_ego and r.tokens[j].sentence == r.tokens[k].sentence
