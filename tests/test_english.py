@@ -14064,3 +14064,15 @@ def test_one_filtering_in_a_cycle_lane_rides_a_bicycle():
     assert agents("Bloke stepped out from between the stationary traffic on Euston Road right in front of me while I "
                   "was filtering at walking pace. Inches from my front wheel.") == [
         ("motorcycle", "go_straight", "ego"), ("pedestrian", "cross_the_road", "front")]
+
+
+def test_dialect_and_word_order_calques_say_the_lane_and_side():
+    assert ("bus", "go_straight", "front_left") in agents(
+        "I'm on the quays, yeah, and there's a bus in the bus lane on me left, just ahead of me.")
+    assert ("car", "change_lane_to_left", "ego") in agents(
+        "Road two lanes, very full. In front of me one bus slowly going, uphill. Then I to left lane changed, the bus "
+        "to overtake.")
+    assert agents("Light green for me but I stopped, because from right road fire brigade truck siren with is coming, "
+                  "red light passing.") == [("car", "stop", "ego"), ("firetruck", "go_straight", "road_of_right_turn")]
+    assert ("car", "stop", "ego") in agents("I'm first at the lights on Old Street, yeah, and a moped pulls up right "
+                                            "next to me.")

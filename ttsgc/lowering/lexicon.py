@@ -2105,6 +2105,8 @@ def tokenize(text: str) -> list[Token]:
     # moves over": a problem's timing, between a verb and its subject's next one
     text = re.sub(r"(^|[.!?]\s+)right (into|onto|through|across) (?=(?:my|me|our|us|his|her|him|its|their|them|the "
                   r"(?:back|rear|side))\b)", r"\1\2 ", text)  # "Bam. Right into my rear bumper.": said hard, no turn
+    text = re.sub(r"\b(on|to|in|into|at|off|from|down|past) me (left|right|nearside|offside|inside|outside|lane)\b",
+                  r"\1 my \2", text)  # "a bus in the bus lane on me left": my, as said in much of Britain and Ireland
     text = re.sub(r"\b(on|the) way back(?= (?:from|to|home|into|after)\b)", r"\1 way home", text)  # "on the way back
     # from the zoo": a journey, no place behind
     text = re.sub(r"\b(?:on|at|along|near) the (?:left|right|near|far|outer|inner) (?:edge|border|margin|rim) of the "
