@@ -14076,3 +14076,9 @@ def test_dialect_and_word_order_calques_say_the_lane_and_side():
                   "red light passing.") == [("car", "stop", "ego"), ("firetruck", "go_straight", "road_of_right_turn")]
     assert ("car", "stop", "ego") in agents("I'm first at the lights on Old Street, yeah, and a moped pulls up right "
                                             "next to me.")
+
+
+def test_the_ego_pulling_out_at_a_junction_turns():
+    assert agents("At the T-junction I waited for a bus from the right, then pulled out left.") == [
+        ("bus", "go_straight", "road_of_right_turn"), ("car", "stop", "ego"), ("car", "turn_left", "ego")]
+    assert agents("At the lights I pulled out right to get round the bus.")[-1] == ("car", "change_lane_to_right", "ego")

@@ -10988,6 +10988,16 @@ def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
         if "pulls_out" in e.features:
             e.actions = [(a[0], a[1], ACTION_RANK["turn_left"], a[3], "turn_" + a[4][5:], None)
                          if a[4] in ("lane_left", "lane_right") else a for a in e.actions]
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is not None and not {t.word for t in r.tokens} & (GOING_ROUND | {"lane", "lanes"}):
+        ego.actions = [(a[0], a[1], ACTION_RANK["turn_left"], a[3], "turn_" + a[5], None)
+                       if a[4] == "cut_in" and a[5] in SIDES else a for a in ego.actions]  # "waited for a bus from the
+        # right, then pulled out left": the ego out of the junction's side road, turning (not "pulled out right to
+        # get round the bus", "moved across into the left lane")
+
+
+GOING_ROUND = {"overtake", "overtakes", "overtaking", "overtook", "pass", "passed", "passing", "past", "round",
+               "around"}
 
 
 STILL_PARTICIPLES = {"sitting", "sat", "standing", "stood", "waiting", "walking"}
