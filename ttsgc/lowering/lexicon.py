@@ -842,6 +842,8 @@ def _cell_said(kind: str | None, value: str) -> str:
     if kind == "relative" and bare in RELATIVE_CELLS:
         return RELATIVE_CELLS[bare]
     return value
+
+
 SEPARATOR_ROW = re.compile(r"^[\s|:+=-]*-[\s|:+=-]*$")
 
 
@@ -1044,7 +1046,8 @@ def _nested_keys(text: str) -> str:
                 item.append((cm.group(3), cm.group(4)))
             out.extend([_pairs_said("", item)] if item else [])
         else:  # "ego:" over its keys
-            out.append(_pairs_said(m.group(3), [(cm.group(3), cm.group(4)) for cm in map(NESTED_LINE.match, children)]))
+            out.append(_pairs_said(m.group(3), [(cm.group(3), cm.group(4))
+                                                for cm in map(NESTED_LINE.match, children)]))
         k = j
     return "\n".join(out)
 

@@ -236,14 +236,15 @@ ON_A_BUS = re.compile(r"\b(?:(?:sat|sitting|seated)\s+(?:up|down)stairs|(?:up|do
                       r"(?:(?:was|were|am|are)\s+(?:on|in|riding|sitting|sat)|ride|rode|took|caught)\b|"
                       r"on\s+which\s+(?:i|we)\s+(?:was|were)\s+(?:a\s+)?passengers?\b)", re.I)
 # ("from the bus window I watched", "the bus I was on", "the route 47 bus, on which I was a passenger")
-ROUTE_RIDDEN = re.compile(r"\b(on|aboard|about|regarding|riding|rode|caught|boarded)\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b(?![\s-]*(?:mph|km|"
-                          r"kph|miles?|m|metres?|meters?|feet|ft|yards?|%|am|pm|tonnes?|tons?|foot|lanes?|limit|zone|"
-                          r"[:.]\d))", re.I)
+ROUTE_RIDDEN = re.compile(r"\b(on|aboard|about|regarding|riding|rode|caught|boarded)\s+the\s+(?:number\s+)?"
+                          r"\d{1,3}[a-z]?\b(?![\s-]*(?:mph|km|kph|miles?|m|metres?|meters?|feet|ft|yards?|%|am|pm|"
+                          r"tonnes?|tons?|foot|lanes?|limit|zone|[:.]\d))", re.I)
 ROUTE_DRIVER = re.compile(r"\bthe\s+(?:number\s+)?\d{1,3}[a-z]?\s+driver\b|"
                           r"\bdriver\s+of\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b" + NOT_A_QUANTITY, re.I)
 # ("the 22 driver", "driver of the 9 came into the stop")
 ROUTE_TOLD = re.compile(r"\b(?:upstairs|downstairs|top\s+deck|up\s+top|(?:our|your)\s+driver|the\s+driver(?!\s+(?:in|"
-                        r"ahead|behind|of|next|beside|to)\b)|passenger\s+on|(?:^|(?<=[.!?]\s))driver(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b))\b",
+                        r"ahead|behind|of|next|beside|to)\b)|passenger\s+on|"
+                        r"(?:^|(?<=[.!?]\s))driver(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b))\b",
                         re.I)  # ("Driver hit the brakes": a sentence that opens on the driver, unnamed)
 # a number ridden is a bus route when its driver is another ("the driver had to brake"; not "the driver in front")
 OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
@@ -1592,10 +1593,11 @@ def _fleet_unit(text: str, notes: list[str]) -> str:
     return THE_UNIT.sub(own, text)
 
 
-CALL_SIGN = re.compile(r"(?<![\w/-])((?:[A-Z]{1,5}-?\d{1,3}[A-Z]?|[A-Z][a-z]+-\d{1,3})(?:-\d{1,2})?)\s*\(([^()]{1,40})\)")
+CALL_SIGN = re.compile(r"(?<![\w/-])((?:[A-Z]{1,5}-?\d{1,3}[A-Z]?|[A-Z][a-z]+-\d{1,3})(?:-\d{1,2})?)"
+                       r"\s*\(([^()]{1,40})\)")  # "MP21 (marked patrol car)", "E21 (fire engine)", "Tango-6 (...)"
 SIGNS_VEHICLE = re.compile(r"\b(?:car|van|ambulance|engine|appliance|pump|tender|bus|coach|lorry|truck|hgv|tanker|"
-                           r"artic|tipper|minibus|cruiser|suv|irv|arv|rpu|patrol|traffic|vehicle|unit|motorcycle|bike)s?\b",
-                           re.I)  # what a call sign's brackets say it is ("MP21 (marked patrol car)", "E21 (fire engine)")
+                           r"artic|tipper|minibus|cruiser|suv|irv|arv|rpu|patrol|traffic|vehicle|unit|motorcycle|"
+                           r"bike)s?\b", re.I)  # what a call sign's brackets say it is
 
 
 def _call_sign_unit(text: str, notes: list[str]) -> str:

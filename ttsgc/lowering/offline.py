@@ -10982,8 +10982,8 @@ def _returns_to_the_main_subject(units: list[Unit]) -> bool:
 
 
 def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
-    """'Pulls out to the left from the give-way line': out of a side road at a junction, a turn, not a lane
-    change (on an open road the same words change lane)."""
+    """'Pulls out to the left from the give-way line', 'I waited for a bus, then pulled out left': out of a side road
+    at a junction, a turn, not a lane change (on an open road the same words change lane)."""
     for e in r.entities:
         if "pulls_out" in e.features:
             e.actions = [(a[0], a[1], ACTION_RANK["turn_left"], a[3], "turn_" + a[4][5:], None)
@@ -12320,6 +12320,13 @@ def _a_riders_ego(r: _Reader) -> None:
 
 
 
+def _at_no_named_wheel(r: _Reader, ego: Entity | None) -> bool:
+    """An ego read as a car only because it is the teller ('I', 'we') or was supplied for a verb with no subject:
+    what the teller rides may still be told."""
+    return ego is not None and ego.type == "car" and (ego.head in SELF_NAMES or _supplied(r, ego)) and not any(
+        name.split()[-1] not in SELF_NAMES | {"ego"} for name in ego.aliases if name)
+
+
 TELLERS_BIKE = {"bike", "motorbike", "motorcycle", "moto"}
 
 
@@ -12330,10 +12337,8 @@ def _the_tellers_bike(r: _Reader) -> None:
     report of a driver is read before, by its pedals, cycle lanes, close passes)."""
     ego = next((e for e in r.entities if e.is_ego), None)
     words = [t.word for t in r.tokens]
-    if ego is None or ego.type != "car" or not (ego.head in SELF_NAMES or _supplied(r, ego)) or any(
-            name.split()[-1] not in SELF_NAMES | {"ego"} for name in ego.aliases if name) or \
-            not set(words) & (SPEAKING_SELF | {"you", "your", "you're"}) or set(words) & PEDAL_WORDS or \
-            _says_any(words, PEDAL_PHRASES):
+    if not _at_no_named_wheel(r, ego) or not set(words) & (SPEAKING_SELF | {"you", "your", "you're"}) or \
+            set(words) & PEDAL_WORDS or _says_any(words, PEDAL_PHRASES):
         return
     bikes = [e for e in r.entities if not e.is_ego and e.type in ("cyclist", "motorcycle") and e.head in TELLERS_BIKE
              and e.count == 1 and e.said_at > 0 and not r.tokens[e.said_at].plural and
@@ -12360,9 +12365,7 @@ def _the_tellers_mount(r: _Reader) -> None:
     scooter, a Toyota next to me': a motorbike of which nothing else is said, which the teller is said to be on (or
     which is named bare between commas, as a label), is what the teller rides; the ego is a motorbike."""
     ego = next((e for e in r.entities if e.is_ego), None)
-    if ego is None or ego.type != "car" or not (ego.head in SELF_NAMES or _supplied(r, ego)) or any(
-            name.split()[-1] not in SELF_NAMES | {"ego"} for name in ego.aliases if name) or \
-            not {t.word for t in r.tokens} & FIRST_PERSON:
+    if not _at_no_named_wheel(r, ego) or not {t.word for t in r.tokens} & FIRST_PERSON:
         return
     words = [t.word for t in r.tokens]
 
@@ -12803,8 +12806,9 @@ def _driven_by_the_speaker(r: _Reader) -> Entity | None:
     driven = []
     for e in r.entities:
         k = e.said_at
-        if e.is_ego or e.count not in (0, 1) or e.generic or k < 1 or r.tokens[k].plural or e.relative_to is not None or \
-                e.type not in V.EGO_TYPES - V.VULNERABLE_TYPES or e.features & (PLACE_FEATURES | PLACED_HOW):
+        if e.is_ego or e.count not in (0, 1) or e.generic or k < 1 or r.tokens[k].plural or \
+                e.relative_to is not None or e.type not in V.EGO_TYPES - V.VULNERABLE_TYPES or \
+                e.features & (PLACE_FEATURES | PLACED_HOW):
             continue
         j = k - 1
         while j > 0 and k - j < 6 and words[j] not in DRIVEN_BY | {"in"} | NOT_OF_A_VEHICLE_NAMED:
@@ -12821,7 +12825,8 @@ def _driven_by_the_speaker(r: _Reader) -> Entity | None:
     return driven[0] if len(driven) == 1 else None
 
 
-OWN_VEHICLES_STATE = {"stop", "try", "relate"}  # "Taxi stopped at the stop sign on Oak.": where the speaker's own stands
+OWN_VEHICLES_STATE = {"stop", "try", "relate"}  # "Taxi stopped at the stop sign on Oak.": where the speaker's own
+# stands ("Bin lorry, Tuesday round on Elm Close": on its round, no move)
 
 
 def _opens_on_the_speakers_vehicle(r: _Reader) -> Entity | None:
