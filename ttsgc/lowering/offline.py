@@ -11919,10 +11919,10 @@ def _passed_too_close(r: _Reader) -> int | None:
     return None
 
 
-def _the_close_passer(r: _Reader) -> Entity | None:
+def _the_close_passer(r: _Reader, sentence: int | None) -> Entity | None:
     """'A red Toyota was right behind the ambulance and just tore past me with less than a foot to spare': the
-    vehicle a close pass is told of is the first named in its sentence, wherever it is placed."""
-    sentence = _passed_too_close(r)
+    vehicle a close pass is told of (in `sentence`, from _passed_too_close) is the first named in its sentence,
+    wherever it is placed."""
     return None if sentence is None else next(
         (e for e in sorted(r.entities, key=lambda e: e.said_at) if not e.is_ego and e.said_at >= 0 and
          e.type in V.EGO_TYPES - V.VULNERABLE_TYPES and e.count == 1 and e.parent is None and
@@ -11958,7 +11958,8 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # ("swung left directly in front of my bike", "turns left across my line")
     met = met or _says_any(words, PEDAL_PHRASES) and bool(set(words) & (PASSING_ME | {"past"}))  # "sat off my back
     # wheel, then flew past with inches to spare": passed, the rider said by the bike
-    plain = _says_any(words, PEDAL_PHRASES) or _passed_too_close(r) is not None or _the_teller_rides(r) and met
+    close_pass = _passed_too_close(r)
+    plain = _says_any(words, PEDAL_PHRASES) or close_pass is not None or _the_teller_rides(r) and met
     # ("Riding west into the low sun when a Corsa ... turned right across me", "came up behind me in the cycle lane";
     # not "Riding along a street, a taxi ahead of me stopped, so I went round it": the teller's own ride, no one met)
     own_motor = any(w in MOTOR_WORDS and set(words[max(0, k - 3):k]) & {"my", "our", "e", "on", "riding"}
@@ -11995,7 +11996,7 @@ def _rider_reporting_a_driver(r: _Reader) -> None:
     # across the cycle lane": the one vehicle, standing)
     if not movers:
         return
-    subject = _the_one_reported(r, vehicles) or _the_close_passer(r) or movers[0]
+    subject = _the_one_reported(r, vehicles) or _the_close_passer(r, close_pass) or movers[0]
     own = ego.features & set(SEEN_THE_OTHER_WAY)
     if _says_any(words, (("i", "was", "crossing"), ("i", "crossed"), ("toucan",))):
         own = {"crosswalk"}  # "I was crossing at the toucan crossing when a BMW ran the red": on the crossing
