@@ -14082,3 +14082,55 @@ def test_the_ego_pulling_out_at_a_junction_turns():
     assert agents("At the T-junction I waited for a bus from the right, then pulled out left.") == [
         ("bus", "go_straight", "road_of_right_turn"), ("car", "stop", "ego"), ("car", "turn_left", "ego")]
     assert agents("At the lights I pulled out right to get round the bus.")[-1] == ("car", "change_lane_to_right", "ego")
+
+
+def test_a_named_street_the_ego_turns_into_is_the_destination_when_crossed_or_left():
+    assert agents("The ego turns left into Victoria Rd. 2 peds are walking across Victoria Rd.") == [
+        ("car", "turn_left", "ego"), ("pedestrian", "cross_the_road", "at_the_destination"),
+        ("pedestrian", "cross_the_road", "at_the_destination")]
+    assert ("cyclist", "go_straight", "at_the_destination") in agents(
+        "Test car turns left into Queen Street. A cyclist is exiting Queen Street towards the junction.")
+    assert ("pedestrian", "cross_the_road", "at_the_destination") in agents(
+        "I turned right onto Elm Street while a jogger was crossing Elm Street.")
+
+
+def test_one_waiting_behind_the_ego_is_not_there_where_the_ego_turns():
+    assert ("car", "stop", "back") in agents(
+        "I was waiting at the red to turn right onto Main while an old man crossed Main in the crosswalk in front of "
+        "me, and the pickup behind me sat there laying on the horn.")
+    assert ("car", "stop", "back") in agents(
+        "I'm at the light waiting to turn right, there's a bus stopped on the street I'm turning onto, and the van "
+        "behind me just sits there honking.")
+
+
+def test_a_timelines_stamps_and_the_unit_under_test():
+    assert agents("T+0: UUT cruising at 30 km/h toward a zebra crossing. T+2: two pedestrians step onto the crossing. "
+                  "T+4: UUT at standstill before the crossing. T+9: once both pedestrians have reached the far side, "
+                  "the UUT pulls away.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_the_ego_first_named_the_car_is_the_car_again_after_another_car():
+    assert agents("At an all-way stop, the car comes to a full stop. A minivan arrives from the right-hand road. "
+                  "Then the car proceeds straight through the intersection.") == [
+        ("car", "go_straight", "ego"), ("car", "go_straight", "road_of_right_turn"), ("car", "stop", "ego")]
+
+
+def test_a_manoeuvre_named_with_its_adjectives_is_nobodys_act():
+    assert agents("Unit 61 (refuse truck) stopped at a 4-way stop. A fire engine came from the right and turned left. "
+                  "Driver remained stopped until it cleared, then proceeded straight. Flagged on the initial stop; no "
+                  "issue.")[-2:] == [("truck", "go_straight", "ego"), ("truck", "stop", "ego")]
+
+
+def test_a_bus_passengers_driver_said_again_and_pulling_away_from_the_stop():
+    assert agents("Just want to say the driver on the first 12 out of Hillside was brilliant. We were sitting at the "
+                  "stop on Park Road and a black BMW came up behind us in the right hand lane and shot past. Once it "
+                  "had gone the driver pulled out and carried on.") == [
+        ("bus", "go_straight", "ego"), ("bus", "stop", "ego"), ("car", "go_straight", "back_right")]
+
+
+def test_those_a_memo_is_addressed_to_are_no_agents():
+    assert agents("SAFETY MEMO - all drivers. Last Tuesday one of our delivery vans was turning left on a green light "
+                  "at the Fifth and Main intersection when a speeding motorcycle coming the other way went straight "
+                  "through.") == [("car", "turn_left", "ego"), ("motorcycle", "go_straight", "road_of_straight")]

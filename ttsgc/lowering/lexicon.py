@@ -2134,6 +2134,7 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"(\d)\s*%\s*(?:of\s+(?:the\s+)?(?:[a-z]+\s+)?(?:width|length|overlap)\b)?", r"\1 percent ", text)
     # "at 25% of the vehicle width": an offset, no count of vehicles
     text = re.sub(r"\bm/(?:cycle|c|bike)s?\b(?= +[a-z]|\))", "motorcycle", text)  # a police log's 'm/c', 'm/cycle'
+    text = re.sub(r"\bt ?\+ ?\d+(?:\.\d+)? ?s?\b", " ", text)  # "T+4: UUT at standstill": a time line's stamp
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
     text = re.sub(r"\b(v\d|vehicle \d|unit \d) \(([^()]*)\)", r"\1 , \2 ,", text)  # "vehicle 1 (the AV)": apposition
     text = re.sub(r"\bthe subject (is|was|will be) (a|an) ", r"the ego \1 \2 ", text)  # "the subject is a bus": the

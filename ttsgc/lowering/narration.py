@@ -314,6 +314,9 @@ def _passengers_bus(text: str, notes: list[str]) -> str:
     named += ridden + driven
     text = re.sub(r"\bthe\s+driver\s+(?:of|on)\s+the\s+ego\s+bus\b", "the ego bus", text, flags=re.I)
     text = BUS_DRIVER.sub("the ego", text)
+    if routes_driver:  # "the driver on the first 12 was brilliant ... once it had gone the driver pulled out": theirs
+        text = re.sub(r"\bthe\s+driver\b(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b)", "the ego", text,
+                      flags=re.I)
     text = re.sub(r"\b(i|we)\s+(?:was|were|am|are|'m|'re)\s+(?:sat|sitting|seated|standing)\s+(?:right\s+)?"
                   r"(?:up|down)stairs\b(?:\s+(?:at|by|near)\s+the\s+(?:front|back|window))?", r"\1 was on board", text,
                   flags=re.I)  # "I was sat upstairs at the front": where on the bus, not the bus standing

@@ -1521,7 +1521,7 @@ def _turned_into(units: list[Unit]) -> list[Unit]:
 
 
 ROAD_NOUNS = {"road", "street", "avenue", "lane", "drive", "close", "boulevard", "crescent", "entrance", "driveway",
-              "way", "terrace", "place", "row", "parade"}
+              "way", "terrace", "place", "row", "parade", "rd", "st", "ave", "blvd"}
 INTO_THE_ROAD = {"across", "inside", "in", "into", "over"}  # "walked across it", "parked inside it" (not "along it")
 
 
@@ -1563,9 +1563,12 @@ def _again_the_road_turned_into(units: list[Unit]) -> list[Unit]:
             k = end + 1
             until = sentence + 1
             continue
-        if name and u.category == "word" and (u.word in ("on", "in", "along", "down", "up", "from") or u.word == "of"
-                                              and k and units[k - 1].tokens[-1].word == "out") and k + 1 < len(units):
-            # ("turning right into Cedar Close ... a van came out of Cedar Close": from where the ego heads)
+        if name and (u.category == "word" and (u.word in ("on", "in", "along", "down", "up", "from", "across") or
+                                               u.word == "of" and k and units[k - 1].tokens[-1].word == "out") or
+                     u.category == "actions" and (u.meaning == "cross" or u.tokens[0].base in ("exit", "leave"))) \
+                and k + 1 < len(units):
+            # ("turning right into Cedar Close ... a van came out of Cedar Close": from where the ego heads;
+            # "... into Victoria St ... a man crossing Victoria St", "a cyclist exiting Victoria St")
             first = k + 1 + (units[k + 1].word == "the")
             span = list(itertools.takewhile(lambda x: x.tokens[0].sentence == sentence, units[first:first + 4]))
             words = [t.word for x in span for t in x.tokens]
@@ -5446,6 +5449,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if plural and count is None and not words and not is_ego and any(
             units[k].base in SYSTEM_SKILLS for k in (first - 1, first) if 0 <= k < head):
         return NounPhrase(None, head, first)  # "isn't it supposed to detect emergency vehicles now?": any such
+    if plural and count is None and words == {"all"} and not is_ego and \
+            u.tokens[-1].word in ("drivers", "riders", "motorists", "staff", "operators", "crews"):
+        return NounPhrase(None, head, first)  # "SAFETY MEMO - all drivers": those it is addressed to
     if plural and count is None and not words and not is_ego and _owned_by_all(units, head):
         return NounPhrase(None, head, first)  # "truck drivers have huge blind spots": road users in general
     if not plural and count is None and words & {"the", "this", "that"} and kind == "pedestrian" and \
@@ -5687,6 +5693,11 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base) or _named_by_its_make(r, u)
+        first_named = next((e for e in r.entities if e.is_ego and f"the {u.base}" in e.aliases), None)
+        if first_named is not None and words == {"the"} and not plural and not modifiers and not any(
+                not e.is_ego and (e.head.split()[-1] == u.base or u.base in e.aliases) for e in r.entities):
+            found = [first_named]  # "the car comes to a stop ... a minivan arrives ... then the car proceeds": the
+            # ego, by the very name it was first given (not the minivan named last)
         placed_after = units[head + 1].meaning if head + 1 < len(units) and units[head + 1].category == "positions" \
             else None
         there = [e for e in r.entities
@@ -5741,6 +5752,7 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             # ... it brings the car to a stop": no other vehicle, the car is the ego; "the oncoming car", "the parked
             # car": placed against the one the scene is told from, another)
             ego = _ego_entity(r, stage)  # "The vehicle had been travelling at 30 km/h when ...": the protagonist
+            ego.aliases.add(f"the {u.base}")
             r.notes.append(f"inferred: 'the {u.base}', named before anyone else, is the ego")
             return NounPhrase(ego, head, first)
     before = first - 1
@@ -7771,8 +7783,8 @@ def _there(units: list[Unit], subject: list[Entity], previous: list[Entity]) -> 
                  set())
     if said and place:
         for e in subject:
-            if not e.is_ego and e not in previous and not e.features & JUNCTION_PLACES:
-                e.features |= place
+            if not e.is_ego and e not in previous and not e.features & (JUNCTION_PLACES | {"behind"}):
+                e.features |= place  # (not "the pickup behind me sat there": behind the ego, where it waits)
 
 
 INVERTING_VERBS = {"come", "follow", "stand", "sit", "wait", "drive", "go", "ride", "walk", "run", "stop", "park",
@@ -7913,6 +7925,14 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
                 i + 1 == len(units) or units[i + 1].category == "comma" or
                 units[i + 1].tokens[0].sentence != units[i].tokens[-1].sentence):
         return True  # "the one that scares me is the cut-in.": the kind of scene talked about, nobody's act
+    j = i - 1
+    while j > 0 and i - j <= 2 and units[j].category == "word" and len(units[j].tokens) == 1 and \
+            units[j].word not in lexicon().function_words and units[j - 1].category == "word":
+        j -= 1  # "flagged on the initial stop", "after a long, slow turn": the manoeuvre's adjectives
+    if j < i - 1 and j >= 1 and units[j].word in ("the", "a", "an", "this", "that", "its", "their", "his", "her") \
+            and units[j - 1].word in ("of", "during", "at", "before", "after", "throughout", "until", "since", "on") \
+            and units[i].word in ("stop", "turn", "brake", "merge", "overtake", "lane change", "manoeuvre", "maneuver"):
+        return True
     return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
         units[i - 2].word in ("of", "during", "at", "before", "after", "throughout", "until", "since") or \
         i >= 1 and units[i - 1].word in ("of", "during", "throughout") and units[i].tokens[0].word in (
@@ -10867,6 +10887,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     # "a cyclist running the red light from the left", "an oncoming car at the lights": a signalised junction
     if junction_words or "stop_line" in road.required_objects:
         _pulling_out_of_a_junction_turns(r)
+    _pulling_away_after_a_stop(r)
     turns = any((_intro_action(e)[0] or "").startswith("turn") for e in r.entities) or any(
         (_action(e, st)[0] or "").startswith("turn") for e in r.entities if e.is_ego
         for st in {a[0] for a in e.actions})  # "once it turns green we turn left": a later turn is at a junction
@@ -10994,6 +11015,19 @@ def _pulling_out_of_a_junction_turns(r: _Reader) -> None:
                        if a[4] == "cut_in" and a[5] in SIDES else a for a in ego.actions]  # "waited for a bus from the
         # right, then pulled out left": the ego out of the junction's side road, turning (not "pulled out right to
         # get round the bus", "moved across into the left lane")
+
+
+def _pulling_away_after_a_stop(r: _Reader) -> None:
+    """'We were sitting at the stop ... the driver pulled out and carried on': the ego pulling out, with no side, lane
+    or vehicle to get round said, after it stood, moves off on its way; it changes no lane."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    pulled = {t.sentence for k, t in enumerate(r.tokens[:-1]) if t.base == "pull" and r.tokens[k + 1].word == "out"}
+    if ego is None or {t.word for t in r.tokens if t.sentence in pulled} & (GOING_ROUND | {"lane", "lanes"}):
+        return
+    stopped = [a[3] for a in ego.actions if a[4] == "stop"]
+    ego.actions = [(a[0], a[1], ACTION_RANK["go_straight"], a[3], "move", None)
+                   if a[4] == "cut_in" and a[5] not in SIDES and stopped and min(stopped) < a[3] else a
+                   for a in ego.actions]
 
 
 GOING_ROUND = {"overtake", "overtakes", "overtaking", "overtook", "pass", "passed", "passing", "past", "round",
