@@ -14134,3 +14134,41 @@ def test_those_a_memo_is_addressed_to_are_no_agents():
     assert agents("SAFETY MEMO - all drivers. Last Tuesday one of our delivery vans was turning left on a green light "
                   "at the Fifth and Main intersection when a speeding motorcycle coming the other way went straight "
                   "through.") == [("car", "turn_left", "ego"), ("motorcycle", "go_straight", "road_of_straight")]
+
+
+def test_a_scooter_ridden_as_a_verb_and_the_guy_on_a_moped_is_no_one_on_foot():
+    assert agents("Scootering down Castle St in the drizzle and I stopped at the zebra for two schoolkids and their "
+                  "mum crossing. But the guy on the moped behind me, who had to stop too, beeped at me.") == [
+        ("motorcycle", "stop", "back"), ("motorcycle", "stop", "ego")] + [
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")] * 3
+
+
+def test_another_bike_beside_a_motorbike_ego_and_a_motor_courier_are_motorbikes():
+    assert agents("I was riding my motorcycle on the A1. My friend was riding ahead of me in the same lane on another "
+                  "bike.") == [("motorcycle", "go_straight", "ego"), ("motorcycle", "go_straight", "front")]
+    assert ("motorcycle", "go_straight", "back_right") in agents(
+        "Traffic jam, road two lanes. In front of me a Doblo van stopped. A motor courier from behind fast came, "
+        "between lanes my right side from passed.")
+
+
+def test_a_condition_without_its_comma_ends_where_the_teller_speaks_again():
+    assert agents("I was waiting to turn left. An oncoming SUV went past. Once he was clear I made the turn.") == [
+        ("car", "go_straight", "road_of_straight"), ("car", "stop", "ego"), ("car", "turn_left", "ego")]
+    assert agents("Waiting at the light to make the right onto Broadway, two kids were crossing Broadway in the "
+                  "crosswalk. Once they got across I made my turn.")[:2] == [("car", "stop", "ego"),
+                                                                              ("car", "turn_right", "ego")]
+
+
+def test_a_stop_or_turn_named_as_a_noun_after_for_is_nobodys_act():
+    assert agents("All-way stop at Pine & 3rd. Shuttle stopped at the sign; a pickup coming from our right had got there "
+                  "first, so we let it turn left in front of us. Then the shuttle carried straight on through. 2 pax, "
+                  "both for the hospital stop.") == [
+        ("bus", "go_straight", "ego"), ("bus", "stop", "ego"), ("car", "turn_left", "road_of_right_turn")]
+    assert ("car", "stop", "road_of_straight") in agents(
+        "At a signalised intersection the ego turns left. An oncoming car waits in the opposite approach for its own "
+        "turn.")
+
+
+def test_pulling_off_after_a_stop_moves_on():
+    assert agents("I stopped at the lights. When the lights changed I pulled off.") == [
+        ("car", "go_straight", "ego"), ("car", "stop", "ego")]

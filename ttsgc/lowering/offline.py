@@ -3368,7 +3368,9 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         prev_word = units[k - 1].tokens[-1].word if k and not new_sentence else ""
         # (the word right before, in this sentence: "stopped at the crossing. Once ..." is no "at once")
         verb_ended = current and (current[-1].category == "actions" or len(current) >= 2 and current[-1].word in (
-            "by", "past", "through", "clear", "away", "off") and current[-2].category == "actions")
+            "by", "past", "through", "clear", "away", "off", "across", "over") and (
+                current[-2].category == "actions" or current[-2].word in COPULAS | {"got", "get", "gets"}))
+        # ("once he was clear I made the turn", "once they got across I went")
         if condition and verb_ended and u.category == "agents" and \
                 u.meaning == "ego" and (u.tokens[0].word in ("i", "we") or [t.word for t in u.tokens][-1:] == ["ego"]):
             close()  # "once they passed i took over and made the left", "once it had gone by I made my turn": the
@@ -3443,8 +3445,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if out or current:
                 close()
                 stage += 1
-            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"}
-            # "when the light goes green", "when it is safe": said in full
+            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"} or \
+                u.meaning == "once" and u.tokens[-1].base in ("change", "turn", "flip", "switch") and len(u.tokens) > 2 \
+                and not (nxt is not None and nxt.tokens[0].sentence == u.tokens[0].sentence and (
+                    nxt.word in SIGNAL_COLOURS | {"to", "into"} or nxt.category == "road"))
+            # "when the light goes green", "when it is safe", "when the lights changed I moved off": said in full
             joined_on = (prev_word in ("and", ",", "but") or u.tokens[0].word == "and" or u.word == "then" and
                          nxt is not None and nxt.category == "actions" and had_verb and not noun_acts) and \
                 not new_sentence and not _starts_subject(units, k + 1)  # "indicates right and then turns"; "a
@@ -4927,6 +4932,13 @@ def _on_foot_in_the_scene(units: list[Unit], head: int) -> bool:
         V.CROSSWALK_OBJECTS for u in units[head + 1:])
 
 
+def _on_a_machine(units: list[Unit], head: int) -> bool:
+    """'the guy on the moped', 'the woman in the van': a person named by the vehicle they ride or drive."""
+    j = head + 2 + (head + 2 < len(units) and units[head + 2].word in ("a", "an", "the", "his", "her", "that"))
+    return head + 1 < len(units) and units[head + 1].word in ("on", "in") and j < len(units) and \
+        units[j].category == "agents" and units[j].meaning in V.EGO_TYPES | V.TWO_WHEELER_TYPES
+
+
 def _on_foot_with_someone(units: list[Unit], first: int) -> bool:
     """'I was crossing the zebra with my son': kin who go with one crossing or walking go on foot too."""
     return first > 0 and units[first - 1].word == "with" and any(
@@ -5690,6 +5702,9 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
             u.base == e.head or u.base in e.aliases or e.head.split()[-1] == u.base for e in r.entities):
         definite = False  # "a pair of kids head across ... then this guy comes running": a teller's 'this'
         # brings in one not named before
+    if definite and count is None and kind == "pedestrian" and not plural and _on_a_machine(units, head):
+        definite = False  # "two kids and their mum crossing ... the guy on the moped behind me": its rider, no one
+        # on foot named before
     if definite and count is None:
         found = _existing(r, kind, u.meaning == "generic" or u.base == "vehicle", plural, "other" in words,
                           "both" in words, recent, u.base) or _named_by_its_make(r, u)
@@ -7928,9 +7943,10 @@ def _named_manoeuvre(units: list[Unit], i: int) -> bool:
     j = i - 1
     while j > 0 and i - j <= 2 and units[j].category == "word" and len(units[j].tokens) == 1 and \
             units[j].word not in lexicon().function_words and units[j - 1].category == "word":
-        j -= 1  # "flagged on the initial stop", "after a long, slow turn": the manoeuvre's adjectives
+        j -= 1  # "flagged on the initial stop", "2 pax, both for the hospital stop": the manoeuvre's adjectives
     if j < i - 1 and j >= 1 and units[j].word in ("the", "a", "an", "this", "that", "its", "their", "his", "her") \
-            and units[j - 1].word in ("of", "during", "at", "before", "after", "throughout", "until", "since", "on") \
+            and units[j - 1].word in ("of", "during", "at", "before", "after", "throughout", "until", "since", "on",
+                                      "for") \
             and units[i].word in ("stop", "turn", "brake", "merge", "overtake", "lane change", "manoeuvre", "maneuver"):
         return True
     return i >= 2 and units[i - 1].word in ("the", "a", "an", "this", "that", "its", "their") and \
@@ -11535,15 +11551,16 @@ def _taken_over(r: _Reader, gone: Entity, into: Entity) -> None:
 
 
 def _other_bikes_like_the_egos(r: _Reader) -> None:
-    """'a group ride with three other bikes following you': other bikes beside a motorcycle ego are motorbikes."""
+    """'a group ride with three other bikes following you', 'on another bike': other bikes beside a motorcycle ego
+    are motorbikes."""
     ego = next((e for e in r.entities if e.is_ego), None)
     if ego is None or ego.type != "motorcycle":
         return
     for e in r.entities:
         group = e.parent or e
         if not e.is_ego and e.type == "cyclist" and group.head == "bike" and group.said_at >= 1 and \
-                "other" in [t.word for t in r.tokens[max(0, group.said_at - 3):group.said_at]]:
-            e.type = "motorcycle"
+                {"other", "another"} & {t.word for t in r.tokens[max(0, group.said_at - 3):group.said_at]}:
+            e.type = "motorcycle"  # ("my friend was riding ahead of me on another bike")
 
 
 def _the_ego_said_again(r: _Reader) -> None:
