@@ -3368,10 +3368,11 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
         prev_word = units[k - 1].tokens[-1].word if k and not new_sentence else ""
         # (the word right before, in this sentence: "stopped at the crossing. Once ..." is no "at once")
         verb_ended = current and (current[-1].category == "actions" or len(current) >= 2 and current[-1].word in (
-            "by", "past", "through", "clear", "away", "off", "across", "over") and (
-                current[-2].category == "actions" or current[-2].word in COPULAS | {"got", "get", "gets"}))
-        # ("once he was clear I made the turn", "once they got across I went")
-        if condition and verb_ended and u.category == "agents" and \
+            "by", "past", "through", "clear", "away", "off") and current[-2].category == "actions")
+        state_ended = len(current) >= 2 and current[-1].word in ("clear", "past", "across", "over", "through") and \
+            current[-2].word in COPULAS | {"got", "get", "gets"} and u.tokens[0].word in ("i", "we")
+        # ("once he was clear I made the turn", "once they got across I went"; not "once it is past the ego")
+        if condition and (verb_ended or state_ended) and u.category == "agents" and \
                 u.meaning == "ego" and (u.tokens[0].word in ("i", "we") or [t.word for t in u.tokens][-1:] == ["ego"]):
             close()  # "once they passed i took over and made the left", "once it had gone by I made my turn": the
             # condition ends where its comma would
