@@ -14172,3 +14172,45 @@ def test_a_stop_or_turn_named_as_a_noun_after_for_is_nobodys_act():
 def test_pulling_off_after_a_stop_moves_on():
     assert agents("I stopped at the lights. When the lights changed I pulled off.") == [
         ("car", "go_straight", "ego"), ("car", "stop", "ego")]
+
+
+def test_you_all_and_we_all_take_the_egos_company_along():
+    assert agents("You're leading a group ride with three other bikes following you in a line, and you all turn left "
+                  "at an uncontrolled crossroads.") == [("motorcycle", "turn_left", "back")] * 3 + [
+        ("motorcycle", "turn_left", "ego")]
+
+
+def test_too_fast_to_stop_is_no_stop():
+    assert agents("Filtering past a long queue on a wet evening. A car coming the other way turns right through a gap "
+                  "in the queue, across your path. Don't be going too fast to stop.") == [
+        ("car", "turn_right", "road_of_straight"), ("motorcycle", "go_straight", "ego")]
+
+
+def test_with_one_placed_in_a_lane_its_participle_is_its_own():
+    assert agents("Portaflows on red at my end and a queue building. A motorbike came right up the outside of the "
+                  "queue and went straight through on red, with a cyclist already in the shuttle lane coming towards "
+                  "him.") == [("cyclist", "go_straight", "front_left"), ("motorcycle", "go_straight", "ego")]
+
+
+def test_diving_left_into_a_lane_changes_lane():
+    assert ("car", "change_lane_to_left", "ego") in agents(
+        "The ego is in lane three. Then at the last second it dived left into lane two, right behind a coach.")
+
+
+def test_one_that_followed_it_round_goes_the_same_way_behind_it():
+    assert agents("The ego turned right across the junction. A police car followed it round.") == [
+        ("car", "turn_right", "ego"), ("police", "turn_right", "back")]
+    assert agents("I was at the kerb outside the bank, waiting to cross Station Road, when a black cab jumped the red "
+                  "and turned right across the junction. A police car followed it round.") == [
+        ("car", "turn_right", "ego"), ("police", "turn_right", "back")]
+
+
+def test_one_coming_the_other_way_that_had_to_wait_for_a_turner_stops():
+    assert agents("The bus turned right at the lights. A car coming the other way had to wait for it.") == [
+        ("bus", "turn_right", "ego"), ("car", "stop", "road_of_straight")]
+
+
+def test_the_ego_moving_into_a_numbered_lane_changes_towards_it():
+    assert ("car", "change_lane_to_right", "ego") in agents(
+        "Patrolling M4 eastbound, lane 1, in the TOV. A white Transit came straight into lane 1 just ahead of us, so "
+        "we moved out into lane 2 to avoid it.")

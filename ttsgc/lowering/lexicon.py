@@ -2135,6 +2135,8 @@ def tokenize(text: str) -> list[Token]:
     # "at 25% of the vehicle width": an offset, no count of vehicles
     text = re.sub(r"\bm/(?:cycle|c|bike)s?\b(?= +[a-z]|\))", "motorcycle", text)  # a police log's 'm/c', 'm/cycle'
     text = re.sub(r"\bt ?\+ ?\d+(?:\.\d+)? ?s?\b", " ", text)  # "T+4: UUT at standstill": a time line's stamp
+    text = re.sub(r"\b(follow(?:s|ed)?) (it|him|her|them) (?:round|around|through)\b", r"\1 \2 and did the same",
+                  text)  # "a police car followed it round": behind it, the way it went
     text = text.replace("+", " and ").replace("&", " and ").replace("w/o", "without").replace("w/", "with ")
     text = re.sub(r"\b(v\d|vehicle \d|unit \d) \(([^()]*)\)", r"\1 , \2 ,", text)  # "vehicle 1 (the AV)": apposition
     text = re.sub(r"\bthe subject (is|was|will be) (a|an) ", r"the ego \1 \2 ", text)  # "the subject is a bus": the

@@ -106,8 +106,7 @@ LANE_WORDS = {"lane", "lanes", "adjacent", "outside", "inside", "fast", "slow", 
 INVERSE = {"behind": "ahead", "ahead": "behind", "side_left": "side_right", "side_right": "side_left",
            "level": "level"}
 LANE_STEERING = {"move", "steer", "veer", "swerve", "pull", "ease", "inch", "creep", "slide", "skid", "swing", "duck",
-                 "tuck", "slip", "hop", "nip"}  # "... into the
-# left lane": a lane change
+                 "tuck", "slip", "hop", "nip", "dive"}  # "... into the left lane": a lane change
 STEERING = {"move", "steer", "ease", "inch", "creep", "slide", "skid", "veer", "swerve", "pull", "merge", "shift", "go",
             "head", "drift", "swing"}
 RUSHING = {"run", "dash", "dart", "rush", "sprint", "race", "speed", "zoom", "barge", "jump", "barrel", "hurtle",
@@ -6561,7 +6560,8 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         # ("a fire engine came up behind us. Then an ambulance did the same")
         if model is not None:  # "then a second taxi did exactly the same thing": its manoeuvre, from its place
             e.actions += [(stage, strength) + a[2:3] + (r.tick(),) + a[4:] for a in model.actions]
-            if not model.is_ego:  # "the ego waits; two cars behind it do the same": they wait, where they are
+            if not model.is_ego and e.relative_to is not model:  # "the ego waits; two cars behind it do the same":
+                # they wait, where they are (one that "followed it round" is behind it, not where it is)
                 e.features |= model.features
                 e.relative_to = e.relative_to or model.relative_to
             r.notes.append(f"inferred: '{e.head}' does what '{model.head}' did")
@@ -6789,7 +6789,10 @@ def _modify(r: _Reader, e: Entity, u: Unit, stage: int, strength: int, clause_un
         if action == "stop" and not e.is_ego and not earlier and clause_units is not None and k is not None and \
                 _forced_reaction(clause_units, k) and not {t.base for t in u.tokens} & {"stop", "halt"}:
             e.actions.append((stage, 1, ACTION_RANK["go_straight"], 0, action, direction))
-            if _moving_in_a_place(clause_units[:k]):  # "came up behind me and had to wait": coming, said in its place
+            if _moving_in_a_place(clause_units[:k]) and not any(
+                    x.category == "positions" and x.meaning in JUNCTION_PLACES for x in clause_units[:k]):
+                # "came up behind me and had to wait": coming, said in its place (one "coming the other way" that
+                # "had to wait for it" yields at the junction: it stops)
                 e.actions.append((stage, strength, ACTION_RANK["move"], r.tick(), "move", None))
             return  # "was closing fast and had to brake", "came up behind and had to wait": a reaction to another;
             # what it was doing is its action; made to stop, it stops ("the pickup had to stop for us")
@@ -7256,6 +7259,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
             together.add(i)  # "the pair turn left", "the two of them", "each turns left": they
             pronouns.append(i)
             continue
+        if u.category == "word" and u.word == "all" and i > 0 and units[i - 1].category == "agents" and \
+                units[i - 1].word in ("we", "you") and not any(np.first <= i <= np.index for np in phrases):
+            pronouns.append(i)  # "three other bikes following you ... you all turn left": the ego and its company
+            continue
         if u.category == "word" and u.word in PRONOUNS and not any(np.first <= i <= np.index for np in phrases):
             if u.word == "both" and i + 1 < len(units) and units[i + 1].category in ("agents", "word") and \
                     (units[i + 1].category == "agents" or units[i + 1].word in DEFINITE):
@@ -7295,6 +7302,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                         group[0].type not in V.VULNERABLE_TYPES:
                     group[0].features.add("screening")  # "two vans parked on my right ... ran out from between
                     # them": the vans a crosser emerges from
+        elif u.word == "all":
+            company = [e for e in recent if not e.is_ego and e.type != "pedestrian"]
+            if company:
+                phrases.append(NounPhrase(company[0], i, i, plural=True, group=company))
         elif u.word == "former" or u.word == "latter":
             pool = sorted([e for e in recent if not e.is_ego][-2:], key=lambda e: e.said_at)  # in the order named,
             # not as last mentioned ("the former changes lane, the latter stops": the first named is the former)
@@ -9969,6 +9980,14 @@ def _participle_owner(units, i, phrases, subject, verbs) -> NounPhrase | None:
     worn = next((j for j in range(k - 1, max(0, k - 6), -1) if units[j].word == "in" and
                  units[j + 1].word in ("a", "an", "his", "her", "their", "dark", "black", "white") and
                  all(x.category in ("word", "numbers", "behaviours") for x in units[j + 1:k + 1])), None)
+    where = next((j for j in range(k, max(0, k - 5), -1) if units[j].word in ("in", "on", "along") and
+                  units[j].category == "word"), None)
+    given = None if where is None else where - 1 - (units[where - 1].word in ("already", "still", "also"))
+    if where is not None and where < k and units[i].tokens[0].word.endswith("ing") and all(
+            x.category in ("word", "numbers") or x.meaning == "none" for x in units[where + 1:k + 1]) and any(
+            p.index == given and p.entity is not None and p.first > 0 and units[p.first - 1].word == "with"
+            for p in phrases):
+        k = given  # "with a cyclist (already) in the single lane coming towards him": past where the one given it is
     if worn is not None and worn >= 1 and units[k].category == "word" and units[i].tokens[0].word.endswith("ing") and \
             any(p.index == worn - 1 and p.entity is not None and p.entity.type == "pedestrian" for p in phrases):
         k = worn - 1  # "this guy in a three-piece suit standing on the sidewalk": past what he wears
@@ -12635,6 +12654,7 @@ def _numbered_lane_sides(r: _Reader) -> None:
         own = _lane_said_of_no_one(r.units)
     if own is None:
         return
+    _ego_into_a_numbered_lane(r, own)
     for e in r.entities:
         theirs = number(e) if not e.is_ego else None
         if theirs is None or theirs == own or e.features & {"side_left", "side_right", "from_left", "from_right",
@@ -12645,19 +12665,41 @@ def _numbered_lane_sides(r: _Reader) -> None:
         r.notes.append(f"inferred: '{e.head}' in lane {theirs} is to the {side[5:]} of the ego in lane {own}")
 
 
+def _ego_into_a_numbered_lane(r: _Reader, own: int) -> None:
+    """'Patrolling in lane 1 ... so we moved out into lane 2': the ego moving into another numbered lane changes lane
+    towards it (lanes count from the kerb), unless a side was said."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None or any(a[4] in ("lane_left", "lane_right") or a[4] in ("lane_change", "cut_in") and a[5]
+                          for a in ego.actions):
+        return
+    for k, u in enumerate(r.units):
+        into = re.fullmatch(r"into_lane_(\d+)", u.meaning) if u.category == "positions" else None
+        before = [x for x in r.units[max(0, k - 4):k] if x.tokens[0].sentence == u.tokens[0].sentence]
+        moved = next((a for a in reversed(ego.actions) if a[4] in ("move", "lane_change", "cut_in")), None)
+        if into and int(into[1]) != own and moved is not None and any(
+                x.category == "agents" and x.meaning == "ego" for x in before) and any(
+                x.category == "actions" and x.meaning in ("move", "lane_change", "cut_in") for x in before):
+            ego.actions.append((moved[0], 2, ACTION_RANK["cut_in"] + 1, r.tick(),
+                                "lane_right" if int(into[1]) > own else "lane_left", None))
+            return
+
+
 def _lane_said_of_no_one(units: list[Unit]) -> int | None:
     """'Approaching in lane 2 in the TOV, saw a van stopped in lane 1': a numbered lane a sentence places before it
     names anyone is the teller's own (not 'attended lane 1 obstruction': where the obstruction was)."""
     for k, u in enumerate(units):
-        if u.category != "positions" or not re.fullmatch(r"lane_\d+", u.meaning):
+        listed = u.category == "word" and u.word == "lane" and 0 < k < len(units) - 2 and \
+            units[k - 1].category == "comma" and units[k + 1].category == "number" and units[k + 2].category == "comma"
+        # ("Patrolling M4 eastbound, lane 1, in the TOV": a note's item)
+        if not listed and (u.category != "positions" or not re.fullmatch(r"lane_\d+", u.meaning)):
             continue
         sentence = u.tokens[0].sentence
         before = [x for x in units[:k] if x.tokens[0].sentence == sentence]
-        after = units[k + 1].word if k + 1 < len(units) else ""
+        after = units[k + 1 + listed].word if k + 1 + listed < len(units) else ""
         if not any(x.category == "agents" and x.meaning not in ("none", "ego") for x in before) and \
                 after not in ("obstruction", "closure", "closed", "blocked", "shut") and \
                 not any(x.word in ("attended", "attend", "closed", "shut") for x in before[-2:]):
-            return int(u.meaning[5:])
+            return int(units[k + 1].word) if listed else int(u.meaning[5:])
     return None
 
 
