@@ -14214,3 +14214,26 @@ def test_the_ego_moving_into_a_numbered_lane_changes_towards_it():
     assert ("car", "change_lane_to_right", "ego") in agents(
         "Patrolling M4 eastbound, lane 1, in the TOV. A white Transit came straight into lane 1 just ahead of us, so "
         "we moved out into lane 2 to avoid it.")
+
+
+def test_a_ploughs_blade_and_spinner_are_its_drivers_truck():
+    assert agents("Three lanes on the turnpike, I'm doing the center lane with the spinner going and a box truck just "
+                  "ahead of me in the right lane cuts over into my lane right in front of the blade.") == [
+        ("truck", "change_lane_to_left", "front_right"), ("truck", "go_straight", "ego")]
+
+
+def test_a_caller_who_drives_a_vehicle_tells_from_it():
+    assert ("bus", "go_straight", "ego") in agents(
+        "Caller is driver of city bus, route 42. Says he was pulling away from the stop on Grand Ave when a cyclist "
+        "came up on his left side and swerved in front of the bus.")
+    assert agents("Caller is taxi driver w/ fare on board, at the 4-way stop Cedar/Hill. Says he was stopped at the "
+                  "sign waiting his turn when a car from his right and a van from the opposite side both went at the "
+                  "same time.") == [
+        ("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_straight"), ("car", "stop", "ego")]
+
+
+def test_someone_said_again_of_the_same_place_is_the_one_named_before():
+    assert agents("On Friday one of our vans stopped at a red light and then turned right on red while a woman was "
+                  "crossing, in the crosswalk, the street it was turning into. A right on red is never worth it with "
+                  "someone in the crosswalk.") == [
+        ("car", "stop", "ego"), ("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]

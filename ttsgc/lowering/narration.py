@@ -204,7 +204,7 @@ def read_narration(prompt: str) -> Narration:
     text = _designated_ego(_designations_spelt_alike(text), notes)
     text = _designated_groups(text, notes)
     text = _bare_appositions(text)
-    text = _declared_ego(_ego_made_a_kind(text), notes)
+    text = _declared_ego(_ego_made_a_kind(_caller_at_the_wheel(text, notes)), notes)
     text = _observed_subject(text, notes)
     text = _learning_agent(text, notes)
     text = _call_sign_unit(_fleet_unit(text, notes), notes)
@@ -1640,6 +1640,24 @@ STORY_DRIVING = (r"came|drove|pulled|turned|braked|slowed|crept|eased|steered|in
                  r"slows|creeps|eases|steers|indicates|swings|edges|merges|follows|accelerates|heads|is driving")
 STORY_DRIVER = re.compile(rf"\b(she|he)\s+(?:[a-z]+ly\s+)?(?:{STORY_DRIVING})\b", re.I)
 FIRST_PERSON = re.compile(r"\b(?:i|me|my|we|us|our|ego)\b", re.I)
+
+
+CALLER_AT_THE_WHEEL = re.compile(r"\b(?:the\s+)?(?:caller|client|claimant|complainant|customer|informant|insured|rp)"
+                                 r"\s+(?:is|was)\s+(?:(?:the\s+)?driver\s+of\s+(?:an?\s+|the\s+)?"
+                                 r"(?P<of>(?:[a-z-]+\s+){0,2}?" + _NOUN + r")|"
+                                 r"(?:an?\s+)?(?P<by>(?:[a-z-]+\s+){0,2}?" + _NOUN + r")\s+driver)\b", re.I)
+# ("Caller is driver of city bus", "Caller is taxi driver w/ fare on board")
+
+
+def _caller_at_the_wheel(text: str, notes: list[str]) -> str:
+    """'Caller is driver of city bus, route 42. Says he was pulling away from the stop': the one who tells, said to
+    be the driver of a vehicle, tells from that vehicle: it is the ego."""
+    m = CALLER_AT_THE_WHEEL.search(text)
+    if m is None:
+        return text
+    vehicle = m["of"] or m["by"]
+    notes.append(f"read the {vehicle.lower()} the teller drives as the ego")
+    return text[:m.start()] + f"The ego is a {vehicle}" + text[m.end():]
 
 
 PARTY_ROLES = r"(?:[Tt]he |[Mm]y |[Oo]ur )?(?:[Cc]lient|[Cc]laimant|[Ii]nsured|[Pp]olicyholder|[Dd]efendant|" \

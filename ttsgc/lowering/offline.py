@@ -8194,8 +8194,9 @@ def _the_same_one_again(r: _Reader) -> None:
         lead = [t.word for t in said if e.said_at - 3 <= t.index < e.said_at]
         bare = said[0].index == e.said_at or r.tokens[e.said_at - 1].word in (",", ":") or \
             r.tokens[e.said_at].word == "other" and r.tokens[e.said_at - 1].word not in ("an", "one", "any", "no")
-        if not ({"a", "an", "single"} & set(lead) or bare) or \
-                ONE_MORE & {t.word for t in said if t.index != e.said_at}:  # (its own 'other' is not the ego)
+        if not ({"a", "an", "single"} & set(lead) or bare or r.tokens[e.said_at].word in ("someone", "somebody")) or \
+                ONE_MORE & {t.word for t in said if t.index != e.said_at}:  # (its own 'other' is not the ego;
+            # "someone" is as indefinite as "a person")
             continue
         done = {(a[4], a[5]) for a in e.actions}
         first = next((x for x in r.entities if x is not e and not x.is_ego and x.type == e.type and x.count == 1 and
@@ -12823,8 +12824,11 @@ TRUCKERS_WORDS = (("limiter",), ("four", "wheeler"), ("fourwheeler",), ("empty",
                   ("running", "empty"), ("trailer", "empty"), ("loaded", "wagon"), ("in", "the", "lorry"),
                   ("my", "lorry"), ("in", "the", "hgv"), ("my", "hgv"), ("other", "wagons"), ("off", "our", "yard"),
                   ("kerb", "mirror"), ("close", "proximity", "mirror"), ("trailer", "wheels"),
-                  ("in", "the", "box", "truck"), ("my", "box", "truck"), ("in", "the", "semi"), ("my", "semi"))
-# (a unit, a wagon, a rigid, a Pete: a trucker's own truck; not "struck the unit" of a fleet's van)
+                  ("in", "the", "box", "truck"), ("my", "box", "truck"), ("in", "the", "semi"), ("my", "semi"),
+                  ("my", "blade"), ("the", "blade"), ("wing", "down"), ("the", "spinner"), ("plowing",),
+                  ("ploughing",))
+# (a unit, a wagon, a rigid, a Pete: a trucker's own truck; not "struck the unit" of a fleet's van; a plough's
+# blade, wing and spinner: its driver's)
 
 
 BUS_DRIVERS_WORDS = (("stop", "arm"), ("the", "arm", "out"), ("and", "arm", "out"), (",", "arm", "out"), ("my", "bus"),
