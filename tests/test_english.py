@@ -13921,7 +13921,7 @@ def test_a_vehicle_named_first_as_a_label_is_the_speakers_own():
                   "a cement mixer, then turned left into Bristol Road.") == [
         ("bus", "stop", "ego"), ("bus", "turn_left", "ego"), ("truck", "stop", "front")]
     assert agents("Bin lorry, Tuesday round on Elm Close. We're stopped for the bins and some bloke in an Audi sat "
-                  "right behind me leaning on his horn.") == [("car", "go_straight", "back"), ("truck", "stop", "ego")]
+                  "right behind me leaning on his horn.") == [("car", "stop", "back"), ("truck", "stop", "ego")]
     assert ("truck", "go_straight", "ego") in agents(
         "18-wheeler, I-95 northbound outside Richmond, three lanes. I'm in the middle, there's a Greyhound in the "
         "right lane a little ahead of me.")
@@ -14237,3 +14237,10 @@ def test_someone_said_again_of_the_same_place_is_the_one_named_before():
                   "crossing, in the crosswalk, the street it was turning into. A right on red is never worth it with "
                   "someone in the crosswalk.") == [
         ("car", "stop", "ego"), ("car", "turn_right", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_one_behind_the_stopped_ego_that_only_honks_stands_behind_it():
+    assert agents("I'm stopped at a zebra crossing for a couple crossing, and the Audi behind me is sat right on my "
+                  "bumper leaning on his horn.") == [
+        ("car", "stop", "back"), ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
+        ("pedestrian", "cross_the_road", "near_the_crosswalk")]

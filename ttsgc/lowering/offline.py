@@ -10916,6 +10916,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     road = _ego_lane_road(r, road)
     _a_drivers_trade(r)
     _the_egos_brake_is_no_stop(r)
+    _waiting_behind_the_stopped_ego(r)
     _other_bikes_like_the_egos(r)
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
         road.junction is None and "traffic_light" in road.required_signals and (any(
@@ -11569,6 +11570,21 @@ def _taken_over(r: _Reader, gone: Entity, into: Entity) -> None:
         if x.relative_to is gone:
             x.relative_to = into
     r.entities.remove(gone)
+
+
+def _waiting_behind_the_stopped_ego(r: _Reader) -> None:
+    """'I'm stopped at a zebra ... the Audi behind me is sat right on my bumper leaning on his horn', 'a taxi sat
+    behind us honking': one behind the ego that only sounds its horn, while the ego stands, stands behind it."""
+    ego = next((e for e in r.entities if e.is_ego), None)
+    if ego is None:
+        return
+    for e in r.entities:
+        if e.is_ego or "behind" not in e.features or e.type in V.VULNERABLE_TYPES or \
+                not any(a[4] == "horn" for a in e.actions) or any(a[4] not in ("horn", "try") for a in e.actions):
+            continue
+        stage = min(a[0] for a in e.actions)
+        if any(a[4] == "stop" and a[0] == stage for a in ego.actions):
+            e.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
 
 
 def _other_bikes_like_the_egos(r: _Reader) -> None:
