@@ -8098,7 +8098,8 @@ def test_an_auto_fail_and_a_human_driver_are_no_cars(aside):
 def test_vehicles_said_after_the_ones_named_are_those_again():
     assert agents("I was stopped at the sign when a car from my right and a van from the opposite side both went at "
                   "the same time and collided in the middle. Nobody hurt, vehicles blocking the intersection.") == [
-        ("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_straight"), ("car", "stop", "ego")]
+        ("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_straight"),
+        ("car", "stop", "ego")]
 
 
 def test_not_making_someone_wait_is_no_stop():
@@ -14160,9 +14161,9 @@ def test_a_condition_without_its_comma_ends_where_the_teller_speaks_again():
 
 
 def test_a_stop_or_turn_named_as_a_noun_after_for_is_nobodys_act():
-    assert agents("All-way stop at Pine & 3rd. Shuttle stopped at the sign; a pickup coming from our right had got there "
-                  "first, so we let it turn left in front of us. Then the shuttle carried straight on through. 2 pax, "
-                  "both for the hospital stop.") == [
+    assert agents("All-way stop at Pine & 3rd. Shuttle stopped at the sign; a pickup coming from our right had got "
+                  "there first, so we let it turn left in front of us. Then the shuttle carried straight on "
+                  "through. 2 pax, both for the hospital stop.") == [
         ("bus", "go_straight", "ego"), ("bus", "stop", "ego"), ("car", "turn_left", "road_of_right_turn")]
     assert ("car", "stop", "road_of_straight") in agents(
         "At a signalised intersection the ego turns left. An oncoming car waits in the opposite approach for its own "
@@ -14229,7 +14230,8 @@ def test_a_caller_who_drives_a_vehicle_tells_from_it():
     assert agents("Caller is taxi driver w/ fare on board, at the 4-way stop Cedar/Hill. Says he was stopped at the "
                   "sign waiting his turn when a car from his right and a van from the opposite side both went at the "
                   "same time.") == [
-        ("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_straight"), ("car", "stop", "ego")]
+        ("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_straight"),
+        ("car", "stop", "ego")]
 
 
 def test_someone_said_again_of_the_same_place_is_the_one_named_before():

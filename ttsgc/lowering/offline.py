@@ -3445,10 +3445,10 @@ def _clauses(r: _Reader, skip: set[int]) -> list[Clause]:
             if out or current:
                 close()
                 stage += 1
-            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"} or \
-                u.meaning == "once" and u.tokens[-1].base in ("change", "turn", "flip", "switch") and len(u.tokens) > 2 \
-                and not (nxt is not None and nxt.tokens[0].sentence == u.tokens[0].sentence and (
+            changed = u.meaning == "once" and u.tokens[-1].base in ("change", "turn", "flip", "switch") and \
+                len(u.tokens) > 2 and not (nxt is not None and nxt.tokens[0].sentence == u.tokens[0].sentence and (
                     nxt.word in SIGNAL_COLOURS | {"to", "into"} or nxt.category == "road"))
+            whole = u.tokens[-1].word in SIGNAL_COLOURS | {"clear", "safe", "so", "gap", "appears"} or changed
             # "when the light goes green", "when it is safe", "when the lights changed I moved off": said in full
             joined_on = (prev_word in ("and", ",", "but") or u.tokens[0].word == "and" or u.word == "then" and
                          nxt is not None and nxt.category == "actions" and had_verb and not noun_acts) and \
