@@ -14246,3 +14246,33 @@ def test_one_behind_the_stopped_ego_that_only_honks_stands_behind_it():
                   "bumper leaning on his horn.") == [
         ("car", "stop", "back"), ("car", "stop", "ego"), ("pedestrian", "cross_the_road", "near_the_crosswalk"),
         ("pedestrian", "cross_the_road", "near_the_crosswalk")]
+
+
+def test_a_subject_that_is_no_agent_goes_on_in_its_next_verb():
+    assert agents("I was stopped on the shoulder at the box when the fire truck came flying up behind me, lights and "
+                  "siren, and went on by. A deer stood in the ditch the whole time and never moved.") == [
+        ("car", "stop", "ego"), ("firetruck", "go_straight", "back")]
+
+
+def test_services_called_and_records_kept_are_no_agents():
+    assert agents("CALLER: I need police and an ambulance, there's been a crash right in front of me. I'm stopped at "
+                  "the red in my car. A pickup ran the red from the road on my left.") == [
+        ("car", "go_straight", "road_of_left_turn"), ("car", "stop", "ego")]
+    assert agents("I was stopped at a red light in the HGV. A fire engine came through the junction from my left. The "
+                  "supervisor asks us to log all emergency vehicle incidents.") == [
+        ("firetruck", "go_straight", "road_of_left_turn"), ("truck", "stop", "ego")]
+
+
+def test_one_from_the_same_direction_comes_from_where_the_one_before_came():
+    assert agents("The ego is stopped at a red light. A fire engine crosses the intersection from the right. Then an "
+                  "ambulance follows from the same direction.") == [
+        ("ambulance", "go_straight", "road_of_right_turn"), ("car", "stop", "ego"),
+        ("firetruck", "go_straight", "road_of_right_turn")]
+
+
+def test_into_the_other_lane_changes_lane_and_holding_at_the_green_waits():
+    assert agents("There was a big lorry in front of us and it was going realy slow. Then dad went in to the other "
+                  "lane on the right and went past it.") == [
+        ("car", "change_lane_to_right", "ego"), ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
+    assert ("car", "stop", "ego") in agents("Our ego is holding at the green, because an ambulance is barreling "
+                                             "across. Once the ambulance clears, the sedan goes straight through.")

@@ -193,6 +193,7 @@ class _Reader:
     scenery: set = field(default_factory=set)  # nouns said as scenery ("between parked cars"), said so again later
     last_mentions: list = field(default_factory=list)  # those named in the clause read before
     after_verbless: bool = False  # the clause before named agents without a verb ("ambulance behind, ...")
+    unnamed_subject: bool = False  # the clause before had a subject that is no agent ("a deer stood in the ditch")
     surface: list = field(default_factory=list)  # the last clause's grammatical subject (the ego, in "the ego is
     # overtaken by a motorcycle before it turns": "it" is the ego)
     listed_one: tuple | None = None  # (agent, sentence) last named as a 'one ...' list item: the list may go on
@@ -5461,6 +5462,10 @@ def _resolve(r: _Reader, units: list[Unit], head: int, lo: int, stage: int, rece
     if plural and count is None and not words and not is_ego and any(
             units[k].base in SYSTEM_SKILLS for k in (first - 1, first) if 0 <= k < head):
         return NounPhrase(None, head, first)  # "isn't it supposed to detect emergency vehicles now?": any such
+    if not is_ego and count is None and head + 1 < len(units) and units[head + 1].word in TALLIED:
+        return NounPhrase(None, head, first)  # "log all emergency vehicle incidents": a kind of record, no agent
+    if not is_ego and kind in V.EMERGENCY_TYPES and count is None and _services_called(units, first):
+        return NounPhrase(None, head, first)  # "I need police and an ambulance": a service called, not on the road
     if plural and count is None and words == {"all"} and not is_ego and \
             u.tokens[-1].word in ("drivers", "riders", "motorists", "staff", "operators", "crews"):
         return NounPhrase(None, head, first)  # "SAFETY MEMO - all drivers": those it is addressed to
@@ -6194,6 +6199,20 @@ PLACES_IN_A_GROUP = {"first", "second", "third", "fourth", "fifth", "sixth", "2n
 
 
 CRASH_NAMES = {"collision", "crash", "accident", "rtc", "rta", "incident", "pile", "smash", "shunt", "prang"}
+TALLIED = {"incidents", "collisions", "crashes", "accidents", "calls", "callouts", "jobs", "cases", "events"}
+# ("all emergency vehicle incidents", "bus crashes are rare": what is counted, of that kind)
+CALLING = {"need", "needs", "needed", "call", "calls", "called", "calling", "send", "sent", "request", "requested"}
+
+
+def _services_called(units: list[Unit], first: int) -> bool:
+    """'I need police and an ambulance', 'called an ambulance': a service asked for, after a verb of calling, with
+    no doing of its own in the clause."""
+    k = first - 1
+    while k >= 0 and (units[k].word in ("and", "an", "a", "the", "some") or units[k].category == "agents" and
+                      units[k].meaning in V.EMERGENCY_TYPES):
+        k -= 1
+    return k >= 0 and units[k].tokens[-1].word in CALLING and \
+        not any(u.category == "actions" for u in units[first:])
 
 
 def _counts_the_crash(units: list[Unit], head: int) -> bool:
@@ -7452,6 +7471,7 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
     placed_last = next((e for e in reversed(r.last_mentions) if not e.is_ego), None) if afterthought else None
     if placed_last is not None:
         subject = [placed_last]  # "driving with two people walking on the pavement on her right, a bit ahead": theirs
+    unnamed = False
     if not subject:
         if clause.antecedent is not None:
             subject = [clause.antecedent]
@@ -7462,6 +7482,10 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                            first_verb - 3 <= np.index < first_verb for np in phrases):
             verbs = []  # "a bus stops and a dog runs out": a new subject that names no agent; the bus did not run
             # (but "sirens going, and turned left": the same one goes on)
+            unnamed = True
+        elif verbs and r.unnamed_subject and clause.link in ("and", ",", "but") and verbs[0] == 0:
+            verbs = []  # "a deer stood in the ditch and never moved": the deer goes on
+            unnamed = True
         elif previous_subject and (clause.link in ("and", "or", ",", "but", "so") or clause.link in ("then", "") and
                 _goes_on_in_the_past(r, units, verbs, previous_subject)) and not clause.after_subordinate \
                 and not _imperative_on(units, verbs, phrases, previous_subject) \
@@ -7490,9 +7514,12 @@ def _read_clause(r: _Reader, clause: Clause, previous_subject: list[Entity], rec
                            not any(x.category == "comma" for x in units[np.index:first_verb]) for np in phrases):
             verbs = []  # "a deer ran out": its subject names no agent; nobody of the scene ran; nor did "no
             # vehicles are parked on the street"
+            unnamed = True
         elif verbs:
             inside = frozenset(k for np in phrases for k in range(np.first, np.index + 1))
             subject = [e for e in [_implied(r, units, stage, verbs, inside)] if e is not None]
+    r.unnamed_subject = unnamed or not subject and r.unnamed_subject and not verbs and not any(
+        np.entity is not None for np in phrases)
     if any(e.includes_ego for e in subject):  # "three cars including the ego wait": the ego waits too
         subject = subject + [_ego_entity(r, stage)]
     if clause.condition or clause.background:
@@ -10917,6 +10944,7 @@ def lower(prompt: str, seed: int = 0) -> Lowered:
     _a_drivers_trade(r)
     _the_egos_brake_is_no_stop(r)
     _waiting_behind_the_stopped_ego(r)
+    _from_the_same_direction(r)
     _other_bikes_like_the_egos(r)
     junction_words = road.junction is True or bool({"stop", "yield"} & set(road.required_signals)) or (
         road.junction is None and "traffic_light" in road.required_signals and (any(
@@ -11585,6 +11613,25 @@ def _waiting_behind_the_stopped_ego(r: _Reader) -> None:
         stage = min(a[0] for a in e.actions)
         if any(a[4] == "stop" and a[0] == stage for a in ego.actions):
             e.actions.append((stage, 1, ACTION_RANK["stop"], r.tick(), "stop", None))
+
+
+SAME_WAY = {"direction", "side", "way", "road"}
+COME_FROM = {"from_left", "from_right", "road_left", "road_right", "road_straight", "toward", "oncoming"}
+
+
+def _from_the_same_direction(r: _Reader) -> None:
+    """'A fire engine crosses from the right. Then an ambulance follows from the same direction': it comes from
+    where the one named before it came from."""
+    for k, e in enumerate(r.entities):
+        if e.is_ego or e.said_at < 0 or e.features & COME_FROM:
+            continue
+        said = [t.word for t in _sentence(r.tokens, r.tokens[e.said_at].sentence) if t.index > e.said_at]
+        if not any(said[j:j + 3] == ["from", "the", "same"] and said[j + 3:j + 4] and said[j + 3] in SAME_WAY
+                   for j in range(len(said))):
+            continue
+        model = next((x for x in reversed(r.entities[:k]) if not x.is_ego and x.features & COME_FROM), None)
+        if model is not None:
+            e.features |= model.features & COME_FROM
 
 
 def _other_bikes_like_the_egos(r: _Reader) -> None:
