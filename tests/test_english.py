@@ -14215,6 +14215,11 @@ def test_the_ego_moving_into_a_numbered_lane_changes_towards_it():
     assert ("car", "change_lane_to_right", "ego") in agents(
         "Patrolling M4 eastbound, lane 1, in the TOV. A white Transit came straight into lane 1 just ahead of us, so "
         "we moved out into lane 2 to avoid it.")
+    assert agents("Inc 1553, M18 northbound, two lanes. Running in lane 2 in the TOV when an ambulance on blues and "
+                  "twos came up behind us in lane 2. Moved over into lane 1 behind a Corsa to let the ambulance "
+                  "through, then followed the ambo to the RTC.") == [
+        ("ambulance", "go_straight", "back"), ("car", "change_lane_to_left", "ego"), ("car", "go_straight", "ego"),
+        ("car", "go_straight", "front_left")]
 
 
 def test_a_ploughs_blade_and_spinner_are_its_drivers_truck():
@@ -14276,3 +14281,10 @@ def test_into_the_other_lane_changes_lane_and_holding_at_the_green_waits():
         ("car", "change_lane_to_right", "ego"), ("car", "go_straight", "ego"), ("truck", "go_straight", "front")]
     assert ("car", "stop", "ego") in agents("Our ego is holding at the green, because an ambulance is barreling "
                                              "across. Once the ambulance clears, the sedan goes straight through.")
+
+
+def test_just_beyond_one_ahead_is_ahead():
+    assert ("pedestrian", "on_the_sidewalk", "front_left") in agents(
+        "On a clear evening a westbound driver is looking straight into the setting sun and may not see a car "
+        "queuing ahead of them for the garden centre, or a pedestrian walking along the footway on their left just "
+        "beyond it.")

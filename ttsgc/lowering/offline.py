@@ -12738,10 +12738,17 @@ def _ego_into_a_numbered_lane(r: _Reader, own: int) -> None:
         return
     for k, u in enumerate(r.units):
         into = re.fullmatch(r"into_lane_(\d+)", u.meaning) if u.category == "positions" else None
+        if u.word == "lane" and k > 0 and k + 1 < len(r.units) and r.units[k + 1].category == "number" and \
+                r.units[k - 1].category == "actions" and r.units[k - 1].tokens[-1].word in ("into", "to", "onto"):
+            into = re.fullmatch(r"(\d+)", r.units[k + 1].word)  # "moved over into lane 1": the verb took its 'into'
         before = [x for x in r.units[max(0, k - 4):k] if x.tokens[0].sentence == u.tokens[0].sentence]
-        moved = next((a for a in reversed(ego.actions) if a[4] in ("move", "lane_change", "cut_in")), None)
-        if into and int(into[1]) != own and moved is not None and any(
-                x.category == "agents" and x.meaning == "ego" for x in before) and any(
+        moved = next((a for a in reversed(ego.actions) if a[4] in ("lane_change", "cut_in")), None) or next(
+            (a for a in reversed(ego.actions) if a[4] == "move"), None)
+        opened = bool(before) and before[0].category == "actions" and (
+            r.units.index(before[0]) == 0 or r.units[r.units.index(before[0]) - 1].tokens[0].sentence !=
+            u.tokens[0].sentence)  # "Moved over into lane 1": the teller's, said with no subject
+        if into and int(into[1]) != own and moved is not None and (opened or any(
+                x.category == "agents" and x.meaning == "ego" for x in before)) and any(
                 x.category == "actions" and x.meaning in ("move", "lane_change", "cut_in") for x in before):
             ego.actions.append((moved[0], 2, ACTION_RANK["cut_in"] + 1, r.tick(),
                                 "lane_right" if int(into[1]) > own else "lane_left", None))
