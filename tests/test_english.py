@@ -14288,3 +14288,8 @@ def test_just_beyond_one_ahead_is_ahead():
         "On a clear evening a westbound driver is looking straight into the setting sun and may not see a car "
         "queuing ahead of them for the garden centre, or a pedestrian walking along the footway on their left just "
         "beyond it.")
+
+
+def test_when_in_the_past_perfect_opens_a_later_stage():
+    assert agents("I was waiting to turn right while a Land Rover came towards me. When it had passed, I turned.") == [
+        ("car", "go_straight", "road_of_straight"), ("car", "stop", "ego"), ("car", "turn_right", "ego")]

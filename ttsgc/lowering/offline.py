@@ -4694,13 +4694,13 @@ def _reaching(units: list[Unit], k: int) -> bool:
 
 def _completed(units: list[Unit], k: int) -> bool:
     """'when the bus has cleared the junction', 'when they have gone by': a condition told in the present perfect
-    holds once a deed is done, the start of a later stage (as 'once' is); a subject, then has / have and a
-    participle."""
+    holds once a deed is done, the start of a later stage (as 'once' is); so does one in the past perfect told in
+    the past; a subject, then has / have / had and a participle."""
     window = units[k:k + 6]
     for j, u in enumerate(window):
         if u.category == "comma" or u.tokens[0].sentence != units[k].tokens[0].sentence or u.category == "actions":
             return False
-        if u.category == "word" and u.word in ("has", "have"):
+        if u.category == "word" and u.word in ("has", "have", "had"):  # ("when it had passed, I began my turn")
             said = [x for x in window[j + 1:j + 3] if x.word not in ADVERBS | {"fully", "completely", "safely"}]
             subject = any(x.category == "agents" or x.word in PRONOUNS for x in window[:j])
             return subject and bool(said) and (said[0].category == "actions" or said[0].category == "word" and
