@@ -8098,8 +8098,7 @@ def test_an_auto_fail_and_a_human_driver_are_no_cars(aside):
 def test_vehicles_said_after_the_ones_named_are_those_again():
     assert agents("I was stopped at the sign when a car from my right and a van from the opposite side both went at "
                   "the same time and collided in the middle. Nobody hurt, vehicles blocking the intersection.") == [
-        ("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_straight"),
-        ("car", "stop", "ego")]
+        ("car", "go_straight", "road_of_right_turn"), ("car", "go_straight", "road_of_straight"), ("car", "stop", "ego")]
 
 
 def test_not_making_someone_wait_is_no_stop():
