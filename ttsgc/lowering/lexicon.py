@@ -983,6 +983,7 @@ def _one_vehicle_keyed(lines: list[str]) -> bool:
 
 
 NESTED_LINE = re.compile(r"^([ \t]*)(-[ \t]+)?([A-Za-z_][\w -]{0,30}?)[ \t]*:[ \t]*(.*?)[ \t]*$")
+FLOW_ITEM = re.compile(r"\s*-\s*\{(.*)\}\s*")  # "  - {type: truck, from: ...}": a list's item, written in one line
 FLOW_PAIR = re.compile(r"\s*([A-Za-z_][\w ]{0,30}?)\s*:\s*(\"[^\"]*\"|'[^']*'|[^,]*)\s*(?:,|$)")
 KEPT_KEY_WORDS = {"from", "to", "towards", "toward", "into", "behind", "ahead"}  # "from: main road on ego's right"
 
@@ -1010,7 +1011,7 @@ def _nested_keys(text: str) -> str:
     k = 0
     while k < len(lines):
         m = NESTED_LINE.match(lines[k])
-        flow = m and re.fullmatch(r"\{(.*)\}", m.group(4)) if m else re.fullmatch(r"\s*-\s*\{(.*)\}\s*", lines[k])
+        flow = m and re.fullmatch(r"\{(.*)\}", m.group(4)) if m else FLOW_ITEM.fullmatch(lines[k])
         if flow:
             pairs = FLOW_PAIR.findall(flow.group(1))
             out.append(_pairs_said(m.group(3) if m and not m.group(2) else "", pairs))  # "ego: {type: car, ...}"
@@ -1027,7 +1028,7 @@ def _nested_keys(text: str) -> str:
             children.append(lines[j])
             j += 1
         children = [c for c in children if c.strip()]
-        if not children or not all(NESTED_LINE.match(c) or re.fullmatch(r"\s*-\s*\{.*\}\s*", c) for c in children):
+        if not children or not all(NESTED_LINE.match(c) or FLOW_ITEM.fullmatch(c) for c in children):
             out.append(lines[k])
             k += 1
             continue

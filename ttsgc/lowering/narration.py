@@ -242,9 +242,11 @@ ROUTE_RIDDEN = re.compile(r"\b(on|aboard|about|regarding|riding|rode|caught|boar
 ROUTE_DRIVER = re.compile(r"\bthe\s+(?:number\s+)?\d{1,3}[a-z]?\s+driver\b|"
                           r"\bdriver\s+of\s+the\s+(?:number\s+)?\d{1,3}[a-z]?\b" + NOT_A_QUANTITY, re.I)
 # ("the 22 driver", "driver of the 9 came into the stop")
+NOT_ANOTHERS_DRIVER = r"(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b)"  # (not "the driver of the van",
+# "the driver in front")
 ROUTE_TOLD = re.compile(r"\b(?:upstairs|downstairs|top\s+deck|up\s+top|(?:our|your)\s+driver|the\s+driver(?!\s+(?:in|"
                         r"ahead|behind|of|next|beside|to)\b)|passenger\s+on|"
-                        r"(?:^|(?<=[.!?]\s))driver(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b))\b",
+                        r"(?:^|(?<=[.!?]\s))driver" + NOT_ANOTHERS_DRIVER + r")\b",
                         re.I)  # ("Driver hit the brakes": a sentence that opens on the driver, unnamed)
 # a number ridden is a bus route when its driver is another ("the driver had to brake"; not "the driver in front")
 OTHER_BUS = re.compile(r"(?<!on )\b(?:an?|another|other|second)\s+(?:[\w-]+\s+)?(?:bus|coach|buses|coaches)\b", re.I)
@@ -254,7 +256,7 @@ OUR_BUS = re.compile(r"\b(?:the|our|this)\s+(?:overnight\s+|night\s+|school\s+|c
                      r"\bthe\s+(?:first\s+|last\s+)?\d{1,3}[a-z]?\b(?=\s+(?:on|out|from|today|this|stopped|pulled|was|"
                      r"had|at|into))", re.I)
 BUS_DRIVER = re.compile(r"\b(?:(?:our|your|my)\s+(?:bus\s+|coach\s+)?driver|the\s+(?:bus|coach)\s+driver|"
-                        r"(?:^|(?<=[.!?]\s))driver)\b(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b)", re.I)
+                        r"(?:^|(?<=[.!?]\s))driver)\b" + NOT_ANOTHERS_DRIVER, re.I)
 # ("Driver hit the brakes": the passengers' driver, said bare at a sentence's opening)
 
 
@@ -315,8 +317,7 @@ def _passengers_bus(text: str, notes: list[str]) -> str:
     text = re.sub(r"\bthe\s+driver\s+(?:of|on)\s+the\s+ego\s+bus\b", "the ego bus", text, flags=re.I)
     text = BUS_DRIVER.sub("the ego", text)
     if routes_driver:  # "the driver on the first 12 was brilliant ... once it had gone the driver pulled out": theirs
-        text = re.sub(r"\bthe\s+driver\b(?!\s+(?:of|in|ahead|behind|next|beside|to|here)\b)", "the ego", text,
-                      flags=re.I)
+        text = re.sub(r"\bthe\s+driver\b" + NOT_ANOTHERS_DRIVER, "the ego", text, flags=re.I)
     text = re.sub(r"\b(i|we)\s+(?:was|were|am|are|'m|'re)\s+(?:sat|sitting|seated|standing)\s+(?:right\s+)?"
                   r"(?:up|down)stairs\b(?:\s+(?:at|by|near)\s+the\s+(?:front|back|window))?", r"\1 was on board", text,
                   flags=re.I)  # "I was sat upstairs at the front": where on the bus, not the bus standing

@@ -12736,19 +12736,23 @@ def _ego_into_a_numbered_lane(r: _Reader, own: int) -> None:
     if ego is None or any(a[4] in ("lane_left", "lane_right") or a[4] in ("lane_change", "cut_in") and a[5]
                           for a in ego.actions):
         return
+    moved = next((a for a in reversed(ego.actions) if a[4] in ("lane_change", "cut_in")), None) or next(
+        (a for a in reversed(ego.actions) if a[4] == "move"), None)
+    if moved is None:
+        return
     for k, u in enumerate(r.units):
         into = re.fullmatch(r"into_lane_(\d+)", u.meaning) if u.category == "positions" else None
         if u.word == "lane" and k > 0 and k + 1 < len(r.units) and r.units[k + 1].category == "number" and \
                 r.units[k - 1].category == "actions" and r.units[k - 1].tokens[-1].word in ("into", "to", "onto"):
             into = re.fullmatch(r"(\d+)", r.units[k + 1].word)  # "moved over into lane 1": the verb took its 'into'
+        if not into or int(into[1]) == own:
+            continue
         start = next((j for j in range(max(0, k - 4), k) if r.units[j].tokens[0].sentence == u.tokens[0].sentence), k)
         before = r.units[start:k]
-        moved = next((a for a in reversed(ego.actions) if a[4] in ("lane_change", "cut_in")), None) or next(
-            (a for a in reversed(ego.actions) if a[4] == "move"), None)
         opened = start < k and r.units[start].category == "actions" and (
             start == 0 or r.units[start - 1].tokens[0].sentence != u.tokens[0].sentence)  # "Moved over into lane 1":
         # the teller's, said with no subject
-        if into and int(into[1]) != own and moved is not None and (opened or any(
+        if (opened or any(
                 x.category == "agents" and x.meaning == "ego" for x in before)) and any(
                 x.category == "actions" and x.meaning in ("move", "lane_change", "cut_in") for x in before):
             ego.actions.append((moved[0], 2, ACTION_RANK["cut_in"] + 1, r.tick(),
